@@ -1,0 +1,60 @@
+"""Run every example program on the built-in default machine and draw one plot per program.
+
+Used by ``make run``. Sub-programs (files that a main program calls) are listed
+in each dialect folder's ``main.txt`` when only some files are main programs.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+from ncvm.api import run
+from ncvm.diagnostics import UsageError
+from ncvm.dialects import EXTENSIONS
+from ncvm.runtime.session import RunOptions
+from ncvm.sinks.plot import plot_toolpath
+
+HERE = Path(__file__).parent
+
+
+def main_programs(folder: Path) -> list[Path]:
+    listing = folder / "main.txt"
+    if listing.is_file():
+        return [folder / name.strip() for name in listing.read_text().splitlines() if name.strip()]
+    return sorted(p for p in folder.iterdir() if p.suffix.lower() in EXTENSIONS)
+
+
+def main() -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--out", default="out")
+    args = ap.parse_args()
+    out = Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    failures = 0
+    for folder in sorted(p for p in HERE.iterdir() if p.is_dir() and p.name != "machines"):
+        for program in main_programs(folder):
+            machine = folder / "machine.toml"
+            try:
+                result, session = run(program, machine=machine if machine.is_file() else None,
+                                      options=RunOptions(state_dir=out / ".ncvm"))
+            except UsageError as e:
+                print(f"{program}: {e}", file=sys.stderr)
+                failures += 1
+                continue
+            plot = out / f"{folder.name}_{program.stem}.png"
+            plot_toolpath(session.recorder, plot, title=f"{program.name} ({result['dialect']})")
+            m = result["motion"]
+            status = result["status"] if not result["error"] else f"error {result['error']['code']}: " \
+                                                                   f"{result['error']['message']}"
+            print(f"{program.relative_to(HERE)}: {status}; {m['rapid_moves'] + m['feed_moves'] + m['arc_moves']} "
+                  f"moves, feed path {m['feed_length']:.1f} mm, cycle time {result['cycle_time_s']:.1f} s -> {plot}")
+            for line in result["output"][:5]:
+                print(f"    | {line}")
+            failures += result["status"] != "ok"
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,68 @@
+"""The public Python API: load a machine, check, run and compile programs."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from .diagnostics import CompileFailed, Diagnostic, UsageError
+from .dialects import detect_dialect, get_dialect
+from .machine.config import load_machine
+from .machine.model import Machine
+from .runtime.session import RunOptions, Session, run_guarded
+
+
+def read_source(path: str | Path) -> str:
+    try:
+        # the controls used 8-bit character sets; latin-1 reads every byte
+        return Path(path).read_text(encoding="latin-1")
+    except OSError as e:
+        raise UsageError(f"cannot read {path}: {e.strerror}") from None
+
+
+def resolve(path: str | Path, dialect: str | None) -> tuple[str, str]:
+    text = read_source(path)
+    return text, dialect or detect_dialect(path, text)
+
+
+def machine_for(path: str | Path, machine: Machine | str | Path | None, state_dir: Path = Path(".ncvm")) -> Machine:
+    """The given machine, or the built-in default with the program's folder on its program path.
+
+    The built-in machine keeps the controller's files under the state directory.
+    """
+    if isinstance(machine, Machine):
+        return machine
+    m = load_machine(machine, base_dir=Path(path).parent)
+    if machine is None:
+        m.program_path = [Path(path).parent]
+        m.file_root = state_dir / "files"
+    return m
+
+
+def check(path: str | Path, dialect: str | None = None, machine: Machine | str | Path | None = None,
+          all_errors: bool = False) -> list[Diagnostic]:
+    text, d = resolve(path, dialect)
+    return get_dialect(d).check(str(path), text, machine_for(path, machine), all_errors)
+
+
+def run(path: str | Path, dialect: str | None = None, machine: Machine | str | Path | None = None,
+        options: RunOptions | None = None) -> tuple[dict, Session]:
+    """Run a program; returns the result document of ``ncvm run --json`` and the session."""
+    text, d = resolve(path, dialect)
+    front = get_dialect(d)
+    options = options or RunOptions()
+    session = Session(machine_for(path, machine, options.state_dir), options, dialect=d)
+    error: Diagnostic | None
+    try:
+        error = run_guarded(session, lambda: front.run(str(path), text, session))
+    except CompileFailed as e:
+        error = e.diagnostics[0]
+    finally:
+        session.close()
+    return session.result(error), session
+
+
+def compile_program(path: str | Path, out: str | Path | None = None, xref: str | Path | None = None,
+                    dialect: str | None = None, machine: Machine | str | Path | None = None) -> Path:
+    text, d = resolve(path, dialect)
+    return get_dialect(d).compile(str(path), text, machine_for(path, machine),
+                                  Path(out) if out else None, Path(xref) if xref else None)

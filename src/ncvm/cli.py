@@ -1,0 +1,209 @@
+"""The ``ncvm`` command: run, check and compile programs of the legacy CNC languages.
+
+Exit codes of ``run``: 0 normal end, 1 compile errors or a run-time fault,
+2 usage error, 70 internal error (a bug in ncvm: please report it).
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import sys
+import threading
+from pathlib import Path
+
+import click
+
+from . import __version__
+from .diagnostics import CompileFailed, UsageError
+
+EXIT_OK, EXIT_FAULT, EXIT_USAGE, EXIT_INTERNAL = 0, 1, 2, 70
+
+
+def _internal_error(exc: BaseException) -> None:
+    if os.environ.get("NCVM_DEBUG") == "1":
+        import traceback
+
+        traceback.print_exception(exc)
+    click.echo(f"ncvm: internal error: {type(exc).__name__}: {exc}", err=True)
+    click.echo("This is a bug in ncvm, not in your program. Please report it with the program and the "
+               "command line (NCVM_DEBUG=1 shows the traceback).", err=True)
+
+
+class _Guarded(click.Group):
+    """Turns usage errors into exit 2 and unexpected exceptions into exit 70 without a traceback."""
+
+    def invoke(self, ctx):
+        try:
+            return super().invoke(ctx)
+        except UsageError as e:
+            click.echo(f"ncvm: error: {e}", err=True)
+            ctx.exit(EXIT_USAGE)
+        except (click.exceptions.Exit, click.exceptions.Abort, click.ClickException):
+            raise
+        except Exception as e:  # noqa: BLE001 - the last line of defence
+            _internal_error(e)
+            ctx.exit(EXIT_INTERNAL)
+
+
+@click.group(cls=_Guarded, context_settings={"help_option_names": ["-h", "--help"]})
+@click.version_option(__version__, prog_name="ncvm")
+def cli():
+    """Check, run and compile programs of Bosch Rexroth CPL, Siemens CL 800 / SINUMERIK 800,
+    ADDI-DATA rw_SymPas and plain DIN 66025 on a simulated controller."""
+
+
+DIALECT_OPT = click.option("--dialect", "-d", type=click.Choice(["din", "cpl", "cl800", "sin800", "sympas"]),
+                           help="Language of the program (default: from the file name, else the content).")
+MACHINE_OPT = click.option("--machine", "-m", type=click.Path(dir_okay=False), help="Machine file (TOML).")
+
+
+class _Progress:
+    """A progress line on stderr for runs longer than about a second, when stderr is a terminal."""
+
+    def __init__(self, enabled: bool):
+        self.enabled = enabled
+        self.session = None
+        self._stop = threading.Event()
+        self._thread = None
+
+    def __enter__(self):
+        if self.enabled:
+            self._thread = threading.Thread(target=self._loop, daemon=True)
+            self._thread.start()
+        return self
+
+    def _loop(self):
+        if self._stop.wait(1.0):
+            return
+        from rich.console import Console
+
+        console = Console(stderr=True)
+        with console.status("running") as status:
+            while not self._stop.wait(0.2):
+                s = self.session
+                if s is not None:
+                    status.update(f"running: {s.steps.steps:,} steps, {len(s.recorder.kinds):,} moves, "
+                                  f"{s.machine.clock.now:.1f} s machine time")
+
+    def __exit__(self, *exc):
+        self._stop.set()
+        if self._thread:
+            self._thread.join()
+
+
+@cli.command()
+@click.argument("program", type=click.Path(dir_okay=False))
+@DIALECT_OPT
+@MACHINE_OPT
+@click.option("--state", "state_dir", type=click.Path(file_okay=False), default=".ncvm", show_default=True,
+              help="State directory (permanent store, controller files).")
+@click.option("--json", "as_json", is_flag=True, help="Print one JSON document with the whole result.")
+@click.option("--trace", type=click.Path(dir_okay=False), help="Write every canon call as JSON lines.")
+@click.option("--gcode", type=click.Path(dir_okay=False), help="Write the motion as flat G-code.")
+@click.option("--plot", type=click.Path(dir_okay=False), help="Draw the toolpath (.svg or .png).")
+@click.option("--max-steps", type=click.IntRange(min=1), default=100_000_000, show_default=True,
+              help="Stop a runaway program after this many statements and blocks.")
+def run(program, dialect, machine, state_dir, as_json, trace, gcode, plot, max_steps):
+    """Run PROGRAM on the simulated controller."""
+    from .api import run as api_run
+    from .runtime.session import RunOptions
+
+    if not Path(program).is_file():
+        raise UsageError(f"no such program: {program}")
+    options = RunOptions(state_dir=Path(state_dir), max_steps=max_steps, trace=Path(trace) if trace else None,
+                         gcode=Path(gcode) if gcode else None, echo=not as_json)
+    progress = _Progress(enabled=sys.stderr.isatty() and not as_json)
+    options.on_session = lambda s: setattr(progress, "session", s)
+    with progress:
+        result, session = api_run(program, dialect, machine, options)
+    if plot:
+        from .sinks.plot import plot_toolpath
+
+        plot_toolpath(session.recorder, plot, title=f"{Path(program).name} ({result['dialect']})")
+    if as_json:
+        click.echo(json.dumps(result, indent=2))
+    else:
+        if result["error"]:
+            from .diagnostics import Diagnostic, Span
+
+            e = result["error"]
+            span = Span(e["file"], e["line"], e["column"]) if e["file"] and e["line"] else None
+            click.echo(Diagnostic(e["code"], e["message"], span, notes=e.get("stack", [])).render(), err=True)
+        for v in result["limit_violations"]:
+            click.echo(f"warning: {v}", err=True)
+        click.echo(_summary(result), err=True)
+    sys.exit(EXIT_FAULT if result["error"] else EXIT_OK)
+
+
+def _summary(result: dict) -> str:
+    m = result["motion"]
+    bounds = " ".join(f"{a}[{lo:.3f},{hi:.3f}]" for a, (lo, hi) in m["bounds"].items())
+    status = "ended normally" if result["status"] == "ok" else f"stopped with error {result['error']['code']}"
+    return (f"ncvm: {status}: {result['steps']:,} steps, {m['rapid_moves']} rapid / {m['feed_moves']} feed / "
+            f"{m['arc_moves']} arc moves, path {m['rapid_length'] + m['feed_length']:.3f} mm "
+            f"(feed {m['feed_length']:.3f}), cycle time {_hms(result['cycle_time_s'])}"
+            + (f", bounds {bounds}" if bounds else ""))
+
+
+def _hms(seconds: float) -> str:
+    m, s = divmod(seconds, 60.0)
+    h, m = divmod(int(m), 60)
+    return f"{h}:{m:02d}:{s:06.3f}" if h else f"{m}:{s:06.3f}"
+
+
+@cli.command()
+@click.argument("programs", nargs=-1, required=True, type=click.Path(dir_okay=False))
+@DIALECT_OPT
+@MACHINE_OPT
+@click.option("--json", "as_json", is_flag=True, help="Diagnostics as one JSON document.")
+@click.option("--all", "all_errors", is_flag=True, help="Go on after the first error and list every one.")
+def check(programs, dialect, machine, as_json, all_errors):
+    """Check programs for every error the control would report; exit 1 when any was found."""
+    from .api import check as api_check
+
+    report, failed = [], False
+    for program in programs:
+        if not Path(program).is_file():
+            raise UsageError(f"no such program: {program}")
+        try:
+            diags = api_check(program, dialect, machine, all_errors)
+        except CompileFailed as e:
+            diags = e.diagnostics
+        errors = [d for d in diags if d.severity == "error"]
+        failed |= bool(errors)
+        report.append({"file": program, "ok": not errors, "diagnostics": [d.to_json() for d in diags]})
+        if not as_json:
+            for d in diags:
+                click.echo(d.render(), err=True)
+    if as_json:
+        click.echo(json.dumps({"files": report}, indent=2))
+    else:
+        n = sum(len(r["diagnostics"]) for r in report)
+        click.echo(f"ncvm: {len(programs)} program(s) checked, {n} diagnostic(s)", err=True)
+    sys.exit(EXIT_FAULT if failed else EXIT_OK)
+
+
+@cli.command(name="compile")
+@click.argument("source", type=click.Path(dir_okay=False))
+@click.option("-o", "out", type=click.Path(dir_okay=False), help="Object program to write.")
+@click.option("--xref", type=click.Path(dir_okay=False), help="Cross-reference listing to write.")
+@DIALECT_OPT
+@MACHINE_OPT
+def compile_cmd(source, out, xref, dialect, machine):
+    """Compile SOURCE (CL 800 to @ code)."""
+    from .api import compile_program
+
+    if not Path(source).is_file():
+        raise UsageError(f"no such program: {source}")
+    try:
+        path = compile_program(source, out, xref, dialect, machine)
+    except CompileFailed as e:
+        for d in e.diagnostics:
+            click.echo(d.render(), err=True)
+        sys.exit(EXIT_FAULT)
+    click.echo(f"ncvm: wrote {path}", err=True)
+
+
+def main() -> None:
+    cli(prog_name="ncvm")

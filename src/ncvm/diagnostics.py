@@ -1,0 +1,137 @@
+"""Positions, diagnostics and run-time faults shared by every dialect.
+
+A user mistake never reaches the user as a Python traceback: the front ends
+raise :class:`CompileFailed` (carrying :class:`Diagnostic` s) and the runtime
+raises :class:`RuntimeFault` (carrying the manual's run-time error number, the
+position and the call stack). Both render as ``path:line:col: error CODE: msg``
+followed by the source line and a caret.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from pathlib import Path
+
+
+@dataclass(frozen=True, slots=True)
+class Span:
+    """A place in a source file: 1-based physical line, 1-based column (or None)."""
+
+    file: str
+    line: int
+    column: int | None = None
+    end_column: int | None = None
+
+    def __str__(self) -> str:
+        if self.column is None:
+            return f"{self.file}:{self.line}"
+        return f"{self.file}:{self.line}:{self.column}"
+
+
+@dataclass(slots=True)
+class Diagnostic:
+    """One problem found while reading, checking or linking a program."""
+
+    code: str
+    message: str
+    span: Span | None
+    severity: str = "error"
+    notes: list[str] = field(default_factory=list)
+
+    def render(self, source_lines: list[str] | None = None) -> str:
+        where = f"{self.span}: " if self.span else ""
+        text = f"{where}{self.severity} {self.code}: {self.message}"
+        if self.span and source_lines is None:
+            source_lines = read_lines(self.span.file)
+        if self.span and source_lines and 1 <= self.span.line <= len(source_lines):
+            src = source_lines[self.span.line - 1].rstrip("\r\n")
+            text += f"\n    {src}"
+            if self.span.column:
+                width = max(1, (self.span.end_column or self.span.column + 1) - self.span.column)
+                pad = "".join(c if c == "\t" else " " for c in src[: self.span.column - 1])
+                text += f"\n    {pad}{'^' * width}"
+        for note in self.notes:
+            text += f"\n    note: {note}"
+        return text
+
+    def to_json(self) -> dict:
+        return {
+            "severity": self.severity,
+            "code": self.code,
+            "message": self.message,
+            "file": self.span.file if self.span else None,
+            "line": self.span.line if self.span else None,
+            "column": self.span.column if self.span else None,
+            "notes": list(self.notes),
+        }
+
+
+def read_lines(path: str) -> list[str] | None:
+    try:
+        return Path(path).read_text(encoding="latin-1").splitlines()
+    except OSError:
+        return None
+
+
+class NcvmError(Exception):
+    """Base of every error that is the user's (or the program's) doing."""
+
+
+class CompileFailed(NcvmError):
+    """A program could not be read, checked or linked."""
+
+    def __init__(self, diagnostics: list[Diagnostic]):
+        self.diagnostics = diagnostics
+        super().__init__("; ".join(f"{d.code}: {d.message}" for d in diagnostics))
+
+
+@dataclass(slots=True)
+class Frame:
+    """One entry of a run-time call stack, innermost last."""
+
+    unit: str
+    span: Span | None
+
+    def __str__(self) -> str:
+        return f"{self.unit} at {self.span}" if self.span else self.unit
+
+
+class RuntimeFault(NcvmError):
+    """The running program stopped with an error the control would report.
+
+    ``code`` is the manual's error number (e.g. ``"2167"`` for CPL, ``"E017"``);
+    project-specific codes are listed in :data:`NCVM_CODES`.
+    """
+
+    def __init__(self, code: str, message: str, span: Span | None = None, stack: list[Frame] | None = None):
+        self.code = code
+        self.message = message
+        self.span = span
+        self.stack = stack or []
+        super().__init__(f"{code}: {message}")
+
+    def diagnostic(self) -> Diagnostic:
+        notes = [f"called from {f}" for f in reversed(self.stack[:-1])] if len(self.stack) > 1 else []
+        return Diagnostic(self.code, self.message, self.span, notes=notes)
+
+
+class UsageError(NcvmError):
+    """The command line or the machine file is wrong (exit code 2)."""
+
+
+# Codes that are ncvm's own, where no manual has a number. Each dialect keeps
+# its manual's codes in its own table; these are shared by all of them.
+NCVM_CODES = {
+    "NC001": "syntax error in NC block",
+    "NC002": "arc radius mismatch between start and end point",
+    "NC003": "arc needs a centre (I/J/K) or a radius (R)",
+    "NC004": "unsupported G or M code",
+    "NC005": "cutter radius compensation not yet supported",
+    "NC006": "feed rate is zero for a feed move",
+    "NC007": "unknown address letter",
+    "NC008": "tool not in tool table",
+    "LIM001": "travel limit exceeded",
+    "RUN001": "step limit reached (runaway program?)",
+    "RUN002": "sub-program not found",
+    "IO001": "file access outside the controller's file root",
+}

@@ -1,0 +1,124 @@
+"""The simulated controller's state, as plain data.
+
+Everything a program can read or change about "the machine" lives here:
+axes with their soft limits and dynamics, zero-offset tables, the tool table,
+machine data and setting data, the PLC image, alarms and the simulated clock.
+Dialects read and write it through these objects only; the SQLite store
+(:mod:`ncvm.machine.store`) keeps what the control would keep permanently.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+
+@dataclass(slots=True)
+class Axis:
+    """One machine axis. Feeds and rapids in mm/min (deg/min rotary), acceleration in mm/s^2."""
+
+    name: str
+    kind: str = "linear"  # "linear" or "rotary"
+    min: float = -1.0e9
+    max: float = 1.0e9
+    rapid: float = 10000.0
+    max_feed: float = 5000.0
+    accel: float = 1000.0
+
+    @property
+    def rotary(self) -> bool:
+        return self.kind == "rotary"
+
+
+@dataclass(slots=True)
+class Tool:
+    number: int
+    length: float = 0.0
+    radius: float = 0.0
+    name: str = ""
+
+
+@dataclass(slots=True)
+class SimClock:
+    """Simulated time in seconds. Programs never see the wall clock, so runs repeat exactly."""
+
+    now: float = 0.0
+    start_epoch: float = 1_700_000_000.0  # the controller's calendar at power-on (machine file: clock.start)
+
+    def advance(self, seconds: float) -> None:
+        if seconds > 0.0:
+            self.now += seconds
+
+
+@dataclass(slots=True)
+class PlcImage:
+    """PLC interface image: inputs, outputs, flags (markers) and data words, by address."""
+
+    inputs: dict[str, Any] = field(default_factory=dict)
+    outputs: dict[str, Any] = field(default_factory=dict)
+    flags: dict[str, Any] = field(default_factory=dict)
+    words: dict[str, Any] = field(default_factory=dict)
+
+
+@dataclass(slots=True)
+class ScenarioEvent:
+    """Something that happens to the machine at a simulated time (an input changes, a probe triggers)."""
+
+    time: float
+    kind: str  # "input", "probe", "alarm", ...
+    data: dict[str, Any]
+
+
+@dataclass
+class Machine:
+    """A simulated controller: the data a real control holds about its machine."""
+
+    name: str = "machine"
+    axes: list[Axis] = field(default_factory=list)
+    #: zero offsets by name ("G54".."G59" and dialect-specific tables), one value per axis
+    offsets: dict[str, list[float]] = field(default_factory=dict)
+    tools: dict[int, Tool] = field(default_factory=dict)
+    machine_data: dict[str, Any] = field(default_factory=dict)
+    setting_data: dict[str, Any] = field(default_factory=dict)
+    plc: PlcImage = field(default_factory=PlcImage)
+    alarms: list[str] = field(default_factory=list)
+    clock: SimClock = field(default_factory=SimClock)
+    start_position: list[float] | None = None
+    program_path: list[Path] = field(default_factory=lambda: [Path(".")])
+    file_root: Path = Path("files")
+    scenario: list[ScenarioEvent] = field(default_factory=list)
+    #: raw TOML tables of dialect-specific sections ([cpl], [sin800], [sympas], ...)
+    sections: dict[str, Any] = field(default_factory=dict)
+    source: str = "<built-in>"
+
+    # -- derived lookups -------------------------------------------------
+    @property
+    def axis_names(self) -> tuple[str, ...]:
+        return tuple(a.name for a in self.axes)
+
+    def axis_index(self, name: str) -> int:
+        for i, a in enumerate(self.axes):
+            if a.name == name:
+                return i
+        raise KeyError(name)
+
+    def offset(self, table: str) -> list[float]:
+        """The zero offset ``table`` (e.g. "G54"), zeros when the machine file leaves it out."""
+        return self.offsets.setdefault(table, [0.0] * len(self.axes))
+
+    def find_program(self, name: str, extensions: tuple[str, ...] = ()) -> Path | None:
+        """Search the program path for ``name`` as written, then with each extension."""
+        candidates = [name] + [name + ext for ext in extensions if not name.lower().endswith(ext)]
+        for folder in self.program_path:
+            for cand in candidates:
+                p = folder / cand
+                if p.is_file():
+                    return p
+                # controls of the era were case-insensitive
+                if folder.is_dir():
+                    low = cand.lower()
+                    for q in folder.iterdir():
+                        if q.name.lower() == low and q.is_file():
+                            return q
+        return None

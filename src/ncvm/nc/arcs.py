@@ -1,0 +1,125 @@
+"""Arc geometry: centres from I/J/K or R, sweep angles, lengths, exact extents, sample points."""
+
+from __future__ import annotations
+
+import math
+
+TWO_PI = 2.0 * math.pi
+#: a full circle is programmed by an end point equal to the start point (within this, mm)
+SAME_POINT = 1e-9
+#: end radius may differ from start radius by this much (mm) *or* this fraction before it is a fault
+RADIUS_ABS_TOL = 0.002
+RADIUS_REL_TOL = 0.001
+
+
+class ArcError(ValueError):
+    """Geometry that no control would accept (radius mismatch, impossible R)."""
+
+
+def center_from_radius(sa: float, sb: float, ea: float, eb: float, r: float, cw: bool) -> tuple[float, float]:
+    """Centre of the arc of signed radius ``r`` from (sa, sb) to (ea, eb).
+
+    As in DIN 66025 and LinuxCNC: r > 0 takes the arc of at most 180 degrees,
+    r < 0 the one of more than 180 degrees.
+    """
+    dx, dy = ea - sa, eb - sb
+    chord = math.hypot(dx, dy)
+    if chord < SAME_POINT:
+        raise ArcError("a radius-format arc needs an end point different from its start point")
+    half = chord / 2.0
+    rad = abs(r)
+    if rad < half - RADIUS_ABS_TOL:
+        raise ArcError(f"radius {rad:g} is too small for a chord of {chord:g}")
+    h = math.sqrt(max(rad * rad - half * half, 0.0))
+    mx, my = sa + dx / 2.0, sb + dy / 2.0
+    # unit normal to the chord, pointing left of the travel direction
+    nx, ny = -dy / chord, dx / chord
+    # for a CW short arc the centre lies right of the chord; flip for CCW or long arcs
+    side = -1.0 if cw else 1.0
+    if r < 0:
+        side = -side
+    return mx + side * h * nx, my + side * h * ny
+
+
+def sweep(sa: float, sb: float, ea: float, eb: float, ca: float, cb: float, cw: bool, turns: int = 0) -> float:
+    """Signed sweep angle (radians, negative for CW) from start to end around the centre."""
+    a0 = math.atan2(sb - cb, sa - ca)
+    a1 = math.atan2(eb - cb, ea - ca)
+    d = a1 - a0
+    if cw:
+        while d >= -1e-12:
+            d -= TWO_PI
+        if d < -TWO_PI:
+            d += TWO_PI
+        if math.hypot(ea - sa, eb - sb) < SAME_POINT:
+            d = -TWO_PI
+        return d - TWO_PI * turns
+    while d <= 1e-12:
+        d += TWO_PI
+    if d > TWO_PI:
+        d -= TWO_PI
+    if math.hypot(ea - sa, eb - sb) < SAME_POINT:
+        d = TWO_PI
+    return d + TWO_PI * turns
+
+
+def check_radii(sa, sb, ea, eb, ca, cb) -> float:
+    """Start radius; raises :class:`ArcError` when the end lies on another radius."""
+    r0 = math.hypot(sa - ca, sb - cb)
+    r1 = math.hypot(ea - ca, eb - cb)
+    diff = abs(r0 - r1)
+    if diff > RADIUS_ABS_TOL and diff > RADIUS_REL_TOL * r0:
+        raise ArcError(f"radius to end of arc differs from radius to start: start radius {r0:.4f}, end radius "
+                       f"{r1:.4f}, difference {diff:.4f}")
+    if r0 < SAME_POINT:
+        raise ArcError("zero radius arc")
+    return r0
+
+
+def arc_length(radius: float, angle: float, helix: float = 0.0) -> float:
+    """Length of an arc (or helix with linear travel ``helix``) of ``angle`` radians."""
+    planar = abs(angle) * radius
+    return math.hypot(planar, helix) if helix else planar
+
+
+def arc_plane_extent(sa, sb, ca, cb, radius, angle) -> tuple[float, float, float, float]:
+    """(min_a, max_a, min_b, max_b) of the arc including the quadrant points it passes."""
+    a0 = math.atan2(sb - cb, sa - ca)
+    a1 = a0 + angle
+    ea, eb = ca + radius * math.cos(a1), cb + radius * math.sin(a1)
+    lo_a, hi_a = min(sa, ea), max(sa, ea)
+    lo_b, hi_b = min(sb, eb), max(sb, eb)
+    if abs(angle) >= TWO_PI - 1e-12:
+        return ca - radius, ca + radius, cb - radius, cb + radius
+    lo, hi = (a0, a1) if angle >= 0 else (a1, a0)
+    k = math.ceil(lo / (math.pi / 2))
+    while k * (math.pi / 2) <= hi:
+        q = k % 4
+        if q == 0:
+            hi_a = ca + radius
+        elif q == 1:
+            hi_b = cb + radius
+        elif q == 2:
+            lo_a = ca - radius
+        else:
+            lo_b = cb - radius
+        k += 1
+    return lo_a, hi_a, lo_b, hi_b
+
+
+def arc_points(start, end, spec, max_seg_deg: float = 5.0):
+    """Sample points along an arc (start excluded, end included), for plots."""
+    a, b = spec.a, spec.b
+    ca, cb = spec.center
+    ang = sweep(start[a], start[b], end[a], end[b], ca, cb, spec.cw, spec.turns)
+    n = max(2, int(abs(math.degrees(ang)) / max_seg_deg) + 1)
+    a0 = math.atan2(start[b] - cb, start[a] - ca)
+    pts = []
+    for i in range(1, n + 1):
+        t = i / n
+        p = [s + (e - s) * t for s, e in zip(start, end)]
+        p[a] = ca + spec.radius * math.cos(a0 + ang * t)
+        p[b] = cb + spec.radius * math.sin(a0 + ang * t)
+        pts.append(p)
+    pts[-1] = list(end)
+    return pts

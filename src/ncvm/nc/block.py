@@ -1,0 +1,137 @@
+"""DIN 66025 blocks: the words of one NC block, and the reader for plain DIN text.
+
+A :class:`Block` is what every front end hands to the kernel: G and M codes,
+address words (``X``, ``F``, extended axis addresses such as ``Q1``), the
+block number, a message. Front ends that compute word values at run time
+(CPL ``X[expr]``, SINUMERIK ``X=R91``) build a Block per execution; constant
+blocks are built once at compile time and reused.
+"""
+
+from __future__ import annotations
+
+import re
+
+from ..diagnostics import Diagnostic, Span
+from .canon import Src
+
+
+class Block:
+    """One NC block, ready for the kernel."""
+
+    __slots__ = ("g", "m", "words", "n", "msg", "src")
+
+    def __init__(self, g=(), m=(), words=None, n=None, msg=None, src: Src | None = None):
+        self.g = g  # tuple of G numbers (floats allowed: 54.1)
+        self.m = m  # tuple of M numbers
+        self.words = words if words is not None else {}  # address -> float
+        self.n = n
+        self.msg = msg
+        self.src = src
+
+    def __repr__(self) -> str:
+        return f"Block(g={self.g}, m={self.m}, words={self.words}, n={self.n})"
+
+
+# One address word: letter(s) with optional digits (extended address like Q1) and '=' for
+# the Siemens form, then a number. The plain case is a single letter followed by a number.
+WORD = re.compile(r"\s*([A-Z])\s*([-+]?(?:\d+\.?\d*|\.\d+))")
+COMMENT = re.compile(r"\(([^)]*)\)")
+
+
+class DinSyntaxError(Exception):
+    def __init__(self, column: int, message: str):
+        self.column = column
+        self.message = message
+
+
+def parse_din_line(text: str, src: Src) -> Block | None:
+    """Read one line of plain DIN 66025 / ISO 6983; None for a line with nothing to do.
+
+    Returns a :class:`Block` (with ``msg`` set for ``(MSG, ...)`` comments), or
+    raises :class:`DinSyntaxError` with the column of the first bad character.
+    """
+    line = text.rstrip("\r\n")
+    msg = None
+    if "(" in line or ";" in line:
+        body, msg, col_map = _strip_comments(line)
+    else:
+        body, col_map = line, None
+    s = body.upper()
+    i, n = 0, len(s)
+    while i < n and s[i] in " \t":
+        i += 1
+    if i < n and s[i] == "%":
+        return None
+    g: list[float] = []
+    m: list[int] = []
+    words: dict[str, float] = {}
+    nno = None
+    pos = i
+    while pos < n:
+        mt = WORD.match(s, pos)
+        if mt is None:
+            rest = s[pos:]
+            if not rest.strip():
+                break
+            col = pos + len(rest) - len(rest.lstrip()) + 1
+            raise DinSyntaxError(col_map[col - 1] + 1 if col_map else col, f"cannot read '{rest.strip()[:20]}'")
+        letter, num = mt.group(1), mt.group(2)
+        pos = mt.end()
+        if letter == "G":
+            v = float(num)
+            g.append(int(v) if v == int(v) else v)
+        elif letter == "M":
+            m.append(int(float(num)))
+        elif letter == "N":
+            nno = int(float(num))
+        else:
+            if letter in words:
+                col = mt.start(1) + 1
+                raise DinSyntaxError(col_map[col - 1] + 1 if col_map else col, f"address {letter} twice in one block")
+            words[letter] = float(num)
+    if not g and not m and not words and msg is None:
+        return None
+    return Block(tuple(g), tuple(m), words, nno, msg, src)
+
+
+def _strip_comments(line: str):
+    """Remove (comments) and ;comments; keep a map from new column to original column."""
+    out, cols = [], []
+    msg = None
+    i, n = 0, len(line)
+    while i < n:
+        c = line[i]
+        if c == "(":
+            j = line.find(")", i)
+            if j < 0:
+                raise DinSyntaxError(i + 1, "comment not closed with ')'")
+            inner = line[i + 1:j].strip()
+            if inner.upper().startswith("MSG,"):
+                msg = inner[4:].strip()
+            i = j + 1
+            continue
+        if c == ";":
+            break
+        out.append(c)
+        cols.append(i)
+        i += 1
+    return "".join(out), msg, cols
+
+
+def read_din_program(path: str, text: str) -> tuple[list[tuple[Block, bool]], list[Diagnostic]]:
+    """Read a whole plain DIN program: (block, block-skip flag) per executable line, plus diagnostics."""
+    blocks: list[tuple[Block, bool]] = []
+    diags: list[Diagnostic] = []
+    for lineno, line in enumerate(text.splitlines(), 1):
+        stripped = line.lstrip()
+        skip = stripped.startswith("/")
+        if skip:
+            line = line.replace("/", " ", 1)
+        try:
+            blk = parse_din_line(line, Src(path, lineno))
+        except DinSyntaxError as e:
+            diags.append(Diagnostic("NC001", e.message, Span(path, lineno, e.column)))
+            continue
+        if blk is not None:
+            blocks.append((blk, skip))
+    return blocks, diags

@@ -1,0 +1,126 @@
+"""The canonical machining interface: the only way motion leaves an interpreter.
+
+As in LinuxCNC's ``canon.hh``, every interpreter (the DIN kernel, the CPL and
+CL 800 / SINUMERIK front ends, the rw_SymPas card) calls these methods and
+knows nothing about who listens. Sinks (toolpath recorder, trace, G-code
+writer, cycle-time estimate, limit check, plot) subclass :class:`CanonSink`.
+
+Positions are tuples with one float per machine axis, in axis order, in
+*machine* coordinates (all offsets applied): what the machine really does.
+``src`` is a :class:`Src` naming the file and physical line that caused the call.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import NamedTuple
+
+
+class Src(NamedTuple):
+    """Where a canon call came from."""
+
+    file: str
+    line: int
+
+
+@dataclass(frozen=True, slots=True)
+class ArcSpec:
+    """A circular (or helical) move in the plane spanned by axes ``a`` and ``b``.
+
+    ``center`` is in machine coordinates of the plane axes; ``cw`` is the
+    direction seen from the positive end of the plane normal, as in G2; ``turns``
+    counts extra full circles (0 for an ordinary arc). Axes other than ``a`` and
+    ``b`` move linearly from start to end (helix).
+    """
+
+    a: int
+    b: int
+    center: tuple[float, float]
+    cw: bool
+    radius: float
+    turns: int = 0
+
+
+class CanonSink:
+    """Receiver of canonical machining calls. Every method is a no-op here."""
+
+    def begin(self, axis_names: tuple[str, ...], start: tuple[float, ...]) -> None:
+        """Called once before the first move: the axes and the machine position at start."""
+
+    def rapid(self, start: tuple, end: tuple, src: Src) -> None:
+        """Positioning at rapid rate (G0)."""
+
+    def feed(self, start: tuple, end: tuple, feed: float, src: Src) -> None:
+        """Straight move at ``feed`` (mm/min)."""
+
+    def arc(self, start: tuple, end: tuple, spec: ArcSpec, feed: float, src: Src) -> None:
+        """Circular or helical move at ``feed`` (mm/min)."""
+
+    def dwell(self, seconds: float, src: Src) -> None:
+        """Wait with axes standing still."""
+
+    def tool_change(self, tool: int, src: Src) -> None:
+        """Tool ``tool`` is now in the spindle."""
+
+    def tool_offset(self, length: float, src: Src) -> None:
+        """Active tool length compensation changed."""
+
+    def spindle(self, speed: float, direction: int, src: Src) -> None:
+        """Spindle: direction 1 clockwise (M3), -1 counter-clockwise (M4), 0 stopped (M5)."""
+
+    def coolant(self, mode: str, src: Src) -> None:
+        """Coolant: "flood", "mist" or "off"."""
+
+    def aux(self, code: str, src: Src) -> None:
+        """An auxiliary function handed to the PLC (e.g. a machine-specific M function)."""
+
+    def message(self, text: str, src: Src) -> None:
+        """An operator message (MSG, comment directed at the operator)."""
+
+    def stop(self, kind: str, src: Src) -> None:
+        """Program stop: "M0" (stop), "M1" (optional stop)."""
+
+    def program_end(self, src: Src) -> None:
+        """End of the main program (M2, M30, END)."""
+
+    def end(self) -> None:
+        """The run is over (normally or by a fault): flush files."""
+
+
+_METHODS = ("begin", "rapid", "feed", "arc", "dwell", "tool_change", "tool_offset", "spindle", "coolant",
+            "aux", "message", "stop", "program_end", "end")
+
+
+class Canon:
+    """Fans each canon call out to the sinks that override it.
+
+    Methods are bound once at construction, so a call costs one Python call per
+    interested sink and nothing for sinks that do not care.
+    """
+
+    def __init__(self, sinks: list[CanonSink]):
+        self.sinks = list(sinks)
+        for name in _METHODS:
+            bound = [getattr(s, name) for s in self.sinks if getattr(type(s), name) is not getattr(CanonSink, name)]
+            setattr(self, name, _fan_out(bound))
+
+
+def _fan_out(bound):
+    if not bound:
+        return lambda *args: None
+    if len(bound) == 1:
+        return bound[0]
+    if len(bound) == 2:
+        f, g = bound
+
+        def two(*args):
+            f(*args)
+            g(*args)
+
+        return two
+
+    def many(*args):
+        for f in bound:
+            f(*args)
+
+    return many

@@ -1,0 +1,55 @@
+"""How long a move takes on the machine: trapezoidal velocity profiles.
+
+Each move starts and ends at rest (no look-ahead blending, as a conservative
+control without it would run). The path speed is the programmed feed (or
+rapid rate), capped so no axis exceeds its own maximum; the path acceleration
+is capped the same way by each axis's acceleration.
+"""
+
+from __future__ import annotations
+
+import math
+
+
+class AxisDynamics:
+    """Per-axis limits of one machine, in mm/s and mm/s^2."""
+
+    __slots__ = ("rapid", "max_feed", "accel")
+
+    def __init__(self, axes):
+        self.rapid = tuple(a.rapid / 60.0 for a in axes)
+        self.max_feed = tuple(a.max_feed / 60.0 for a in axes)
+        self.accel = tuple(a.accel for a in axes)
+
+
+def trapezoid_time(length: float, v: float, a: float) -> float:
+    """Time to travel ``length`` from rest to rest with speed limit ``v`` and acceleration ``a``."""
+    if length <= 0.0:
+        return 0.0
+    if v <= 0.0:
+        return math.inf
+    if a <= 0.0 or a == math.inf:
+        return length / v
+    if length * a >= v * v:  # reaches full speed: accelerate, cruise, decelerate
+        return length / v + v / a
+    return 2.0 * math.sqrt(length / a)
+
+
+def move_time(deltas, length: float, speed: float, limits: tuple, accel: tuple) -> float:
+    """Time for a straight move with per-axis ``deltas`` and path ``length`` (mm).
+
+    ``speed`` is the requested path speed in mm/s; ``limits`` and ``accel`` the
+    per-axis speed and acceleration limits.
+    """
+    if length <= 0.0:
+        return 0.0
+    v = speed
+    a = math.inf
+    for d, vmax, amax in zip(deltas, limits, accel):
+        if d:
+            share = abs(d) / length
+            if vmax < v * share:
+                v = vmax / share
+            if amax < a * share:
+                a = amax / share
+    return trapezoid_time(length, v, a)

@@ -1,0 +1,290 @@
+"""The DIN 66025 kernel: modal state, offsets and the conversion of blocks into canon calls.
+
+Like LinuxCNC's rs274ngc ``convert_*`` stage, :meth:`NcKernel.execute` takes a
+read block, checks it against the modal state and turns it into calls of the
+canonical machining interface, in a fixed order: message, feed, speed, tool
+select and change, spindle, coolant, dwell, plane, units, compensation,
+tool length, coordinate system, distance mode, set position, motion, stop/end.
+
+Coordinates: the kernel keeps the *programmed* position (workpiece
+coordinates, mm) and the sum of active offsets per axis; machine position =
+programmed + offsets. Canon calls carry machine positions.
+"""
+
+from __future__ import annotations
+
+import math
+
+from ..diagnostics import RuntimeFault, Span
+from ..machine.model import Machine
+from . import arcs
+from .canon import ArcSpec, Canon, Src
+from .dynamics import AxisDynamics, move_time
+
+INCH = 25.4
+#: plane G number -> (first axis, second axis, normal axis, first centre word, second centre word)
+PLANES = {17: ("X", "Y", "Z", "I", "J"), 18: ("Z", "X", "Y", "K", "I"), 19: ("Y", "Z", "X", "J", "K")}
+WORK_OFFSETS = {54: "G54", 55: "G55", 56: "G56", 57: "G57", 58: "G58", 59: "G59"}
+NON_AXIS = frozenset("FSTDHIJKRPLN")
+
+
+class NcKernel:
+    """Executes blocks on a :class:`Machine`, reporting motion through a :class:`Canon`."""
+
+    def __init__(self, machine: Machine, canon: Canon):
+        self.machine = machine
+        self.canon = canon
+        names = machine.axis_names
+        self.axis_names = names
+        self.axis_of = {n: i for i, n in enumerate(names)}
+        self.n_axes = len(names)
+        self.dyn = AxisDynamics(machine.axes)
+        # modal state
+        self.motion = 0
+        self.plane = 17
+        self.absolute = True
+        self.scale = 1.0  # 1.0 mm, 25.4 inch
+        self.feed = 0.0  # mm/min
+        self.speed = 0.0
+        self.spindle_dir = 0
+        self.tool = 0  # tool in spindle
+        self.next_tool = 0
+        self.work_offset = "G54"
+        self.tool_length = 0.0
+        self.tool_axis = self.axis_of.get("Z")
+        self.g92 = [0.0] * self.n_axes
+        # positions
+        start = list(machine.start_position or [0.0] * self.n_axes)
+        self.machine_pos = tuple(start)
+        self.offset_vec = [0.0] * self.n_axes
+        self._recompute_offsets()
+        self.prog = [m - o for m, o in zip(start, self.offset_vec)]
+        self.ended = False
+        self.stopped_at: str | None = None
+        canon.begin(names, self.machine_pos)
+
+    # -- offsets ---------------------------------------------------------
+    def _recompute_offsets(self) -> None:
+        wo = self.machine.offset(self.work_offset) if self.work_offset else [0.0] * self.n_axes
+        vec = [w + g for w, g in zip(wo, self.g92)]
+        if self.tool_axis is not None:
+            vec[self.tool_axis] += self.tool_length
+        self.offset_vec = vec
+
+    def _set_offsets_keep_machine(self) -> None:
+        """After an offset change the tool stays put; the programmed position moves."""
+        self._recompute_offsets()
+        self.prog = [m - o for m, o in zip(self.machine_pos, self.offset_vec)]
+
+    def set_work_offset(self, name: str | None) -> None:
+        self.work_offset = name
+        self._set_offsets_keep_machine()
+
+    def set_tool_length(self, length: float, src: Src) -> None:
+        self.tool_length = length
+        self._set_offsets_keep_machine()
+        self.canon.tool_offset(length, src)
+
+    def workpiece_position(self) -> dict[str, float]:
+        """Programmed position per axis in the current unit, as a program sees it."""
+        return {n: p / self.scale for n, p in zip(self.axis_names, self.prog)}
+
+    # -- faults ----------------------------------------------------------
+    def fault(self, code: str, message: str, src: Src | None):
+        span = Span(src.file, src.line) if src else None
+        raise RuntimeFault(code, message, span)
+
+    # -- the block -------------------------------------------------------
+    def execute(self, block) -> None:
+        src = block.src
+        words = block.words
+        canon = self.canon
+        if block.msg is not None:
+            canon.message(block.msg, src)
+        dwell_block = False
+        set_position = False
+        machine_coords = False
+        motion = self.motion
+        for g in block.g:
+            if g in (0, 1, 2, 3):
+                motion = g
+            elif g == 4:
+                dwell_block = True
+            elif g in (17, 18, 19):
+                self.plane = g
+            elif g == 90:
+                self.absolute = True
+            elif g == 91:
+                self.absolute = False
+            elif g in (70, 20):
+                self.scale = INCH
+            elif g in (71, 21):
+                self.scale = 1.0
+            elif g in WORK_OFFSETS:
+                self.set_work_offset(WORK_OFFSETS[g])
+            elif g == 53:
+                machine_coords = True
+            elif g == 40 or g == 94 or g == 80 or g == 64 or g == 60:
+                pass
+            elif g in (41, 42):
+                self.fault("NC005", f"G{g}: cutter radius compensation not yet supported", src)
+            elif g == 43 or g == 44:
+                number = int(words.get("H", words.get("D", self.tool)))
+                length = self._tool(number, src).length if number else 0.0
+                self.set_tool_length(length if g == 43 else -length, src)
+            elif g == 49:
+                self.set_tool_length(0.0, src)
+            elif g == 92:
+                set_position = True
+            else:
+                self.fault("NC004", f"G{g} is not supported", src)
+        if "F" in words and not dwell_block:
+            self.feed = words["F"] * self.scale if self.scale != 1.0 else words["F"]
+        if "S" in words:
+            self.speed = words["S"]
+            if self.spindle_dir:
+                canon.spindle(self.speed, self.spindle_dir, src)
+        if "T" in words:
+            self.next_tool = int(words["T"])
+        for mc in block.m:
+            self._m_before(mc, src)
+        if dwell_block:
+            # LinuxCNC writes the time as P, SINUMERIK and DIN controls as X or F (seconds)
+            seconds = words.get("P", words.get("X", words.get("F", 0.0)))
+            self.machine.clock.advance(seconds)
+            canon.dwell(seconds, src)
+        elif set_position:
+            self._set_position(words)
+        else:
+            self.motion = motion
+            self._move(motion, words, machine_coords, src)
+        for mc in block.m:
+            self._m_after(mc, src)
+
+    def _tool(self, number: int, src: Src):
+        tool = self.machine.tools.get(number)
+        if tool is None:
+            self.fault("NC008", f"tool {number} is not in the tool table", src)
+        return tool
+
+    def _m_before(self, mc: int, src: Src) -> None:
+        canon = self.canon
+        if mc == 6:
+            if self.next_tool and self.next_tool not in self.machine.tools:
+                self.fault("NC008", f"tool {self.next_tool} is not in the tool table", src)
+            self.tool = self.next_tool
+            canon.tool_change(self.tool, src)
+        elif mc == 3 or mc == 4:
+            self.spindle_dir = 1 if mc == 3 else -1
+            canon.spindle(self.speed, self.spindle_dir, src)
+        elif mc == 5:
+            self.spindle_dir = 0
+            canon.spindle(0.0, 0, src)
+        elif mc == 7:
+            canon.coolant("mist", src)
+        elif mc == 8:
+            canon.coolant("flood", src)
+        elif mc == 9:
+            canon.coolant("off", src)
+        elif mc in (0, 1, 2, 30):
+            pass
+        else:
+            self.machine.plc.outputs[f"M{mc}"] = True
+            canon.aux(f"M{mc}", src)
+
+    def _m_after(self, mc: int, src: Src) -> None:
+        if mc == 0 or mc == 1:
+            self.stopped_at = f"M{mc}"
+            self.canon.stop(f"M{mc}", src)
+        elif mc == 2 or mc == 30:
+            self.end_program(src)
+
+    def end_program(self, src: Src) -> None:
+        if not self.ended:
+            self.ended = True
+            self.canon.program_end(src)
+
+    def _set_position(self, words) -> None:
+        for name, i in self.axis_of.items():
+            if name in words:
+                value = words[name] * self.scale
+                self.g92[i] = self.machine_pos[i] - (self.offset_vec[i] - self.g92[i]) - value
+        self._set_offsets_keep_machine()
+
+    # -- motion ----------------------------------------------------------
+    def _target(self, words, machine_coords: bool) -> tuple[list[float], bool]:
+        prog = list(self.prog)
+        moved = False
+        scale = self.scale
+        for name, i in self.axis_of.items():
+            if name in words:
+                v = words[name] * scale
+                if machine_coords:
+                    prog[i] = v - self.offset_vec[i]
+                elif self.absolute:
+                    prog[i] = v
+                else:
+                    prog[i] += v
+                moved = True
+        return prog, moved
+
+    def _move(self, motion: int, words, machine_coords: bool, src: Src) -> None:
+        prog, moved = self._target(words, machine_coords)
+        is_arc = motion in (2, 3)
+        if not moved and not (is_arc and ("I" in words or "J" in words or "K" in words)):
+            return
+        start = self.machine_pos
+        end = tuple(p + o for p, o in zip(prog, self.offset_vec))
+        if motion == 0:
+            self._advance(start, end, None, src)
+            self.canon.rapid(start, end, src)
+        elif motion == 1:
+            if self.feed <= 0.0:
+                self.fault("NC006", "G1 with feed rate 0 (program an F word)", src)
+            self._advance(start, end, self.feed, src)
+            self.canon.feed(start, end, self.feed, src)
+        else:
+            self._arc(motion == 2, start, end, words, src)
+        self.prog = prog
+        self.machine_pos = end
+
+    def _advance(self, start, end, feed: float | None, src: Src) -> None:
+        deltas = [e - s for s, e in zip(start, end)]
+        length = math.sqrt(sum(d * d for d in deltas))
+        dyn = self.dyn
+        if feed is None:
+            t = move_time(deltas, length, math.inf, dyn.rapid, dyn.accel)
+        else:
+            t = move_time(deltas, length, feed / 60.0, dyn.max_feed, dyn.accel)
+        self.machine.clock.advance(t)
+
+    def _arc(self, cw: bool, start, end, words, src: Src) -> None:
+        if self.feed <= 0.0:
+            self.fault("NC006", f"G{2 if cw else 3} with feed rate 0 (program an F word)", src)
+        an, bn, _nn, iw, jw = PLANES[self.plane]
+        if an not in self.axis_of or bn not in self.axis_of:
+            self.fault("NC004", f"plane G{self.plane} needs axes {an} and {bn}", src)
+        a, b = self.axis_of[an], self.axis_of[bn]
+        sa, sb, ea, eb = start[a], start[b], end[a], end[b]
+        try:
+            if "R" in words and iw not in words and jw not in words:
+                ca, cb = arcs.center_from_radius(sa, sb, ea, eb, words["R"] * self.scale, cw)
+            elif iw in words or jw in words:
+                ca = sa + words.get(iw, 0.0) * self.scale
+                cb = sb + words.get(jw, 0.0) * self.scale
+            else:
+                self.fault("NC003", f"G{2 if cw else 3} needs a centre ({iw}/{jw}) or a radius (R)", src)
+            radius = arcs.check_radii(sa, sb, ea, eb, ca, cb)
+        except arcs.ArcError as e:
+            self.fault("NC002", str(e), src)
+        turns = max(0, int(words.get("P", 1)) - 1)
+        spec = ArcSpec(a, b, (ca, cb), cw, radius, turns)
+        angle = arcs.sweep(sa, sb, ea, eb, ca, cb, cw, turns)
+        helix = math.sqrt(sum((e - s) ** 2 for i, (s, e) in enumerate(zip(start, end)) if i != a and i != b))
+        length = arcs.arc_length(radius, angle, helix)
+        # an arc moves both plane axes at once: time it as a straight move of the same length
+        chord = [0.0] * self.n_axes
+        chord[a] = chord[b] = length / math.sqrt(2.0)
+        t = move_time(chord, length, self.feed / 60.0, self.dyn.max_feed, self.dyn.accel)
+        self.machine.clock.advance(t)
+        self.canon.arc(start, end, spec, self.feed, src)

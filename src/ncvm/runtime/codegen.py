@@ -1,0 +1,75 @@
+"""Turning a lowered program into Python source, compiling it once, caching it by content.
+
+Front ends emit Python lines through :class:`PySource`, tagging each with the
+source line it came from. The compiled code object is cached by the hash of
+the generated text (the analogue of a control's link table), and the line map
+turns a Python traceback back into the program's file and line when a fault
+happens, so generated code need not track its position at run time.
+"""
+
+from __future__ import annotations
+
+import hashlib
+from contextlib import contextmanager
+from types import CodeType, TracebackType
+
+_CODE_CACHE: dict[str, CodeType] = {}
+
+
+class PySource:
+    """Python source under construction, with a map from generated line to program line."""
+
+    def __init__(self, filename: str):
+        self.filename = filename
+        self.lines: list[str] = []
+        self.line_map: list[int] = []  # index = generated line - 1 -> source line (0 = none)
+        self._indent = 0
+        self.current_line = 0
+
+    def emit(self, text: str, src_line: int | None = None) -> None:
+        if src_line is not None:
+            self.current_line = src_line
+        self.lines.append("    " * self._indent + text)
+        self.line_map.append(self.current_line)
+
+    @contextmanager
+    def block(self, header: str, src_line: int | None = None):
+        """``with src.block("while x:"):`` emits the header and indents its body."""
+        self.emit(header, src_line)
+        self._indent += 1
+        start = len(self.lines)
+        yield
+        if len(self.lines) == start:
+            self.emit("pass")
+        self._indent -= 1
+
+    def text(self) -> str:
+        return "\n".join(self.lines) + "\n"
+
+    def compile(self) -> CodeType:
+        return compile_cached(self.text(), self.filename)
+
+    def source_line(self, py_line: int) -> int:
+        if 1 <= py_line <= len(self.line_map):
+            return self.line_map[py_line - 1]
+        return 0
+
+
+def compile_cached(text: str, filename: str) -> CodeType:
+    """``compile(text)`` once per distinct text and file name."""
+    key = hashlib.sha256((filename + "\0" + text).encode()).hexdigest()
+    code = _CODE_CACHE.get(key)
+    if code is None:
+        code = compile(text, filename, "exec")
+        _CODE_CACHE[key] = code
+    return code
+
+
+def program_lines(tb: TracebackType | None, filename: str) -> list[int]:
+    """The generated-code line numbers of ``filename`` in a traceback, outermost first."""
+    out = []
+    while tb is not None:
+        if tb.tb_frame.f_code.co_filename == filename:
+            out.append(tb.tb_lineno)
+        tb = tb.tb_next
+    return out

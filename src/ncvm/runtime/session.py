@@ -1,0 +1,150 @@
+"""One run of one program on one simulated controller.
+
+A :class:`Session` wires the machine, the permanent store, the NC kernel and
+the canon sinks together, gives the front ends what they share (operator
+output, step counter, variables to report) and turns the outcome into the
+result of ``ncvm run`` (see :meth:`Session.result`).
+"""
+
+from __future__ import annotations
+
+import sys
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any, Callable
+
+from ..diagnostics import Diagnostic, NcvmError, RuntimeFault
+from ..machine.model import Machine
+from ..machine.store import Store
+from ..nc.canon import Canon, CanonSink
+from ..nc.kernel import NcKernel
+from ..sinks.limits import LimitCheck
+from ..sinks.toolpath import ToolpathRecorder
+from .steps import DEFAULT_MAX_STEPS, StepCounter, StepHook
+
+
+@dataclass
+class RunOptions:
+    state_dir: Path = Path(".ncvm")
+    max_steps: int = DEFAULT_MAX_STEPS
+    trace: Path | None = None
+    gcode: Path | None = None
+    echo: bool = False  # print operator output to stdout as it happens
+    hook: StepHook | None = None
+    extra_sinks: list[CanonSink] = field(default_factory=list)
+    keys: Path | None = None
+    scenario: Path | None = None
+    on_session: Callable[["Session"], None] | None = None  # told of the session as soon as it exists
+
+
+class Session:
+    """Everything one run shares between a front end, the kernel and the sinks."""
+
+    def __init__(self, machine: Machine, options: RunOptions | None = None, dialect: str = ""):
+        self.machine = machine
+        self.options = options or RunOptions()
+        self.dialect = dialect
+        self.output: list[str] = []
+        self.variables: dict[str, Any] = {}
+        self.steps = StepCounter(self.options.max_steps, self.options.hook)
+        self.recorder = ToolpathRecorder()
+        self.limits = LimitCheck(machine.axes)
+        sinks: list[CanonSink] = [self.recorder, self.limits]
+        if self.options.trace:
+            from ..sinks.trace import JsonlTrace
+            sinks.append(JsonlTrace(self.options.trace))
+        if self.options.gcode:
+            from ..sinks.gcode import GcodeWriter
+            sinks.append(GcodeWriter(self.options.gcode))
+        sinks.extend(self.options.extra_sinks)
+        self.sinks = sinks
+        self.canon = Canon(sinks)
+        self.canon.message = self._message_fanout(self.canon.message)
+        self.kernel = NcKernel(machine, self.canon)
+        self._store: Store | None = None
+        if self.options.on_session:
+            self.options.on_session(self)
+
+    # -- shared services -------------------------------------------------
+    @property
+    def store(self) -> Store:
+        """The permanent store, opened on first use (runs that keep nothing create nothing)."""
+        if self._store is None:
+            self._store = Store(self.options.state_dir)
+        return self._store
+
+    def say(self, text: str) -> None:
+        """A line shown to the operator (screen, message window)."""
+        for line in str(text).split("\n"):
+            self.output.append(line)
+            if self.options.echo:
+                print(line, flush=True)
+
+    def _message_fanout(self, inner):
+        def message(text, src):
+            self.say(text)
+            inner(text, src)
+
+        return message
+
+    # -- the run ---------------------------------------------------------
+    def close(self) -> None:
+        for s in self.sinks:
+            s.end()
+        if self._store is not None:
+            self._store.close()
+            self._store = None
+
+    def result(self, error: Diagnostic | None) -> dict:
+        """The JSON document of ``ncvm run --json``."""
+        motion = self.recorder.summary()
+        out = {
+            "status": "error" if error else "ok",
+            "dialect": self.dialect,
+            "error": None,
+            "output": list(self.output),
+            "variables": {k: _jsonable(v) for k, v in self.variables.items()},
+            "position": self.kernel.workpiece_position(),
+            "motion": motion.to_json(),
+            "cycle_time_s": self.machine.clock.now,
+            "steps": self.steps.steps,
+            "limit_violations": [v.message() for v in self.limits.first()],
+        }
+        if error:
+            out["error"] = {"code": error.code, "message": error.message,
+                            "file": error.span.file if error.span else None,
+                            "line": error.span.line if error.span else None,
+                            "column": error.span.column if error.span else None}
+            if error.notes:
+                out["error"]["stack"] = list(error.notes)
+        return out
+
+
+def _jsonable(v: Any) -> Any:
+    if isinstance(v, (bool, int, str)) or v is None:
+        return v
+    if isinstance(v, float):
+        return v if v == v and v not in (float("inf"), float("-inf")) else str(v)
+    if isinstance(v, (list, tuple)):
+        return [_jsonable(x) for x in v]
+    if isinstance(v, dict):
+        return {str(k): _jsonable(x) for k, x in v.items()}
+    if hasattr(v, "item"):  # numpy scalars
+        return _jsonable(v.item())
+    return str(v)
+
+
+def run_guarded(session: Session, runner) -> Diagnostic | None:
+    """Call ``runner()``; a user-level fault becomes a Diagnostic, everything else propagates."""
+    try:
+        runner()
+    except RuntimeFault as f:
+        return f.diagnostic()
+    except NcvmError as e:  # CompileFailed is handled by the caller
+        raise e
+    except RecursionError:
+        return Diagnostic("RUN003", "call nesting too deep (recursion without end?)", None)
+    except KeyboardInterrupt:
+        print("interrupted", file=sys.stderr)
+        return Diagnostic("RUN004", "run interrupted by the user", None)
+    return None

@@ -1,0 +1,1 @@
+"""Canon sinks: what the machine would do, recorded, written, drawn and checked."""

@@ -1,0 +1,118 @@
+"""Toolpath recorder: every move as rows of numpy arrays, with exact lengths and extents."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..nc import arcs
+from ..nc.canon import ArcSpec, CanonSink, Src
+
+RAPID, FEED, ARC = 0, 1, 2
+
+
+@dataclass
+class MotionSummary:
+    rapid_moves: int
+    feed_moves: int
+    arc_moves: int
+    rapid_length: float
+    feed_length: float
+    bounds: dict[str, list[float]]
+
+    def to_json(self) -> dict:
+        return {"rapid_moves": self.rapid_moves, "feed_moves": self.feed_moves, "arc_moves": self.arc_moves,
+                "rapid_length": self.rapid_length, "feed_length": self.feed_length, "bounds": self.bounds}
+
+
+class ToolpathRecorder(CanonSink):
+    """Records moves; :meth:`arrays` gives ``kind``, ``start``, ``end``, ``tool``, ``line`` as numpy arrays.
+
+    Arcs keep their :class:`ArcSpec` so plots can draw them and extents include
+    the quadrant points an arc passes through.
+    """
+
+    def __init__(self):
+        self.axis_names: tuple[str, ...] = ()
+        self.start_point: tuple = ()
+        self.kinds: list[int] = []
+        self.ends: list[tuple] = []
+        self.lines: list[int] = []
+        self.tools: list[int] = []
+        self.arcs: dict[int, ArcSpec] = {}
+        self.arc_length = 0.0
+        self.arc_extent: list[list[float]] | None = None  # per axis [lo, hi]
+        self.tool = 0
+
+    def begin(self, axis_names, start):
+        self.axis_names = tuple(axis_names)
+        self.start_point = tuple(start)
+
+    def rapid(self, start, end, src: Src):
+        self.kinds.append(RAPID)
+        self.ends.append(end)
+        self.lines.append(src.line)
+        self.tools.append(self.tool)
+
+    def feed(self, start, end, feed, src: Src):
+        self.kinds.append(FEED)
+        self.ends.append(end)
+        self.lines.append(src.line)
+        self.tools.append(self.tool)
+
+    def arc(self, start, end, spec: ArcSpec, feed, src: Src):
+        self.arcs[len(self.kinds)] = spec
+        self.kinds.append(ARC)
+        self.ends.append(end)
+        self.lines.append(src.line)
+        self.tools.append(self.tool)
+        a, b = spec.a, spec.b
+        ca, cb = spec.center
+        angle = arcs.sweep(start[a], start[b], end[a], end[b], ca, cb, spec.cw, spec.turns)
+        helix = math.sqrt(sum((e - s) ** 2 for i, (s, e) in enumerate(zip(start, end)) if i not in (a, b)))
+        self.arc_length += arcs.arc_length(spec.radius, angle, helix)
+        lo_a, hi_a, lo_b, hi_b = arcs.arc_plane_extent(start[a], start[b], ca, cb, spec.radius, angle)
+        ext = self.arc_extent
+        if ext is None:
+            ext = self.arc_extent = [[math.inf, -math.inf] for _ in self.axis_names]
+        ext[a][0], ext[a][1] = min(ext[a][0], lo_a), max(ext[a][1], hi_a)
+        ext[b][0], ext[b][1] = min(ext[b][0], lo_b), max(ext[b][1], hi_b)
+
+    def tool_change(self, tool, src):
+        self.tool = tool
+
+    # -- results ---------------------------------------------------------
+    def arrays(self) -> dict[str, np.ndarray]:
+        n_axes = len(self.axis_names)
+        ends = np.asarray(self.ends, dtype=float).reshape(-1, n_axes)
+        starts = np.vstack([np.asarray(self.start_point, dtype=float).reshape(1, n_axes), ends[:-1]]) if len(
+            ends) else ends
+        return {"kind": np.asarray(self.kinds, dtype=np.int8), "start": starts, "end": ends,
+                "tool": np.asarray(self.tools, dtype=np.int32), "line": np.asarray(self.lines, dtype=np.int32)}
+
+    def summary(self) -> MotionSummary:
+        arr = self.arrays()
+        kind, start, end = arr["kind"], arr["start"], arr["end"]
+        seg = np.sqrt(((end - start) ** 2).sum(axis=1)) if len(kind) else np.zeros(0)
+        rapid_len = float(seg[kind == RAPID].sum())
+        feed_len = float(seg[kind == FEED].sum()) + self.arc_length
+        bounds = {}
+        if len(kind):
+            lo = np.minimum(start.min(axis=0), end.min(axis=0))
+            hi = np.maximum(start.max(axis=0), end.max(axis=0))
+            for i, name in enumerate(self.axis_names):
+                l, h = float(lo[i]), float(hi[i])
+                if self.arc_extent is not None:
+                    l, h = min(l, self.arc_extent[i][0]), max(h, self.arc_extent[i][1])
+                bounds[name] = [l, h]
+        return MotionSummary(int((kind == RAPID).sum()), int((kind == FEED).sum()), int((kind == ARC).sum()),
+                             rapid_len, feed_len, bounds)
+
+    def polyline(self, index: int, start, end) -> list:
+        """Points of move ``index`` for drawing (arcs sampled)."""
+        spec = self.arcs.get(index)
+        if spec is None:
+            return [list(end)]
+        return arcs.arc_points(start, end, spec)
