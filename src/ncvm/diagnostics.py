@@ -133,5 +133,7 @@ NCVM_CODES = {
     "LIM001": "travel limit exceeded",
     "RUN001": "step limit reached (runaway program?)",
     "RUN002": "sub-program not found",
+    "RUN003": "call nesting too deep",
+    "RUN004": "run interrupted by the user",
     "IO001": "file access outside the controller's file root",
 }

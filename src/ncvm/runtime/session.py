@@ -13,7 +13,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Callable
 
-from ..diagnostics import Diagnostic, NcvmError, RuntimeFault
+from ..diagnostics import Diagnostic, RuntimeFault
 from ..machine.model import Machine
 from ..machine.store import Store
 from ..nc.canon import Canon, CanonSink
@@ -135,13 +135,11 @@ def _jsonable(v: Any) -> Any:
 
 
 def run_guarded(session: Session, runner) -> Diagnostic | None:
-    """Call ``runner()``; a user-level fault becomes a Diagnostic, everything else propagates."""
+    """Call ``runner()``; a run-time fault becomes a Diagnostic. CompileFailed and bugs propagate."""
     try:
         runner()
     except RuntimeFault as f:
         return f.diagnostic()
-    except NcvmError as e:  # CompileFailed is handled by the caller
-        raise e
     except RecursionError:
         return Diagnostic("RUN003", "call nesting too deep (recursion without end?)", None)
     except KeyboardInterrupt:
