@@ -127,3 +127,18 @@ def test_feed_without_f_faults(run_text):
 def test_syntax_error_has_column(run_text):
     r = run_text("G1 X10 F100\nG1 X1 Y2 ?? \n")
     assert r["error"]["code"] == "NC001" and r["error"]["line"] == 2 and r["error"]["column"] == 10
+
+
+def test_g10_l2_sets_a_zero_offset_table_and_g92_1_cancels_g92(run_text):
+    # G10 L2 P2 writes G55; selecting it moves the program origin, not the tool
+    r = run_text("G10 L2 P2 X100 Y-20\nG55 G0 X1 Y1\nG92 X0\nG0 X5\nG92.1\nG0 X5\n")
+    assert r["status"] == "ok"
+    # machine X: 101 after line 2; G92 X0 there makes X5 -> 106; after G92.1, X5 in G55 -> 105
+    assert r["motion"]["bounds"]["X"] == pytest.approx([0, 106])
+    assert r["position"]["X"] == pytest.approx(5.0)
+    assert r["motion"]["bounds"]["Y"] == pytest.approx([-19, 0])
+
+
+def test_g10_other_forms_fault(run_text):
+    r = run_text("G10 L1 P1 X3\n")
+    assert r["error"]["code"] == "NC004" and "G10 L2" in r["error"]["message"]

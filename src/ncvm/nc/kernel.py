@@ -136,6 +136,12 @@ class NcKernel:
                 self.set_tool_length(0.0, src)
             elif g == 92:
                 set_position = True
+            elif g == 92.1:
+                self.g92 = [0.0] * self.n_axes
+                self._set_offsets_keep_machine()
+            elif g == 10:
+                self._set_offset_table(words, src)
+                return
             else:
                 self.fault("NC004", f"G{g} is not supported", src)
         if "F" in words and not dwell_block:
@@ -203,6 +209,17 @@ class NcKernel:
         if not self.ended:
             self.ended = True
             self.canon.program_end(src)
+
+    def _set_offset_table(self, words, src: Src) -> None:
+        """G10 L2 P<n>: write zero offset table n (1 = G54 ... 6 = G59) from the axis words, no motion."""
+        number = int(words.get("P", 0))
+        if int(words.get("L", 0)) != 2 or not 1 <= number <= 6:
+            self.fault("NC004", "G10 is supported as G10 L2 P1..P6 (set zero offset G54..G59)", src)
+        table = self.machine.offset(f"G{53 + number}")
+        for name, i in self.axis_of.items():
+            if name in words:
+                table[i] = words[name] * self.scale
+        self._set_offsets_keep_machine()
 
     def _set_position(self, words) -> None:
         for name, i in self.axis_of.items():

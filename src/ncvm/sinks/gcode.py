@@ -44,7 +44,11 @@ class GcodeWriter(CanonSink):
         self._line("(written by ncvm: flat G-code in machine coordinates)")
         if extra:
             self._line(f"(axes {' '.join(extra)} have no ISO address and are left out)")
-        self._line("G21 G90 G17 G94 G40 G49 G80")
+        # every offset cleared, so the numbers below are machine coordinates on the receiving control too
+        zero = " ".join(f"{n}0" for n in self.names if n in ISO_AXES)
+        self._line("G21 G90 G17 G94 G40 G49 G80 G92.1")
+        self._line(f"G10 L2 P1 {zero}")
+        self._line("G54")
 
     def rapid(self, start, end, src):
         self._line(f"G0 {self._axes(end)}")
