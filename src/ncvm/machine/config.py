@@ -18,6 +18,14 @@ AXIS_KEYS = {"name": str, "kind": str, "min": float, "max": float, "rapid": floa
 TOP_KEYS = {"machine", "axis", "offsets", "tool", "machine_data", "setting_data", "plc", "paths", "clock", "scenario",
             "cpl", "cl800", "sin800", "sympas", "din"}
 DIALECT_SECTIONS = ("cpl", "cl800", "sin800", "sympas", "din")
+#: the keys each fixed table may hold; anything else is a typo the user should hear about
+TABLE_KEYS = {
+    "machine": {"name", "units", "start_position"},
+    "paths": {"program_path", "file_root"},
+    "clock": {"start"},
+    "plc": {"inputs", "outputs", "flags", "words"},
+}
+TOOL_KEYS = {"number", "length", "radius", "name"}
 
 
 def default_machine_text() -> str:
@@ -61,7 +69,12 @@ def machine_from_dict(data: dict, where: str = "<dict>", folder: Path = Path("."
     for key in data:
         if key not in TOP_KEYS:
             raise UsageError(f"{where}: unknown key '{key}' (known: {', '.join(sorted(TOP_KEYS))})")
+    for table, allowed in TABLE_KEYS.items():
+        _only(where, table, data.get(table, {}), allowed)
     head = data.get("machine", {})
+    if head.get("units", "mm") != "mm":
+        raise UsageError(f"{where}: key 'machine.units' must be \"mm\" (machine files are metric; "
+                         f"programs switch to inch with G70/G20)")
     m = Machine(name=str(head.get("name", "machine")), source=where)
 
     axes = data.get("axis")
@@ -95,6 +108,7 @@ def machine_from_dict(data: dict, where: str = "<dict>", folder: Path = Path("."
         m.start_position = _axis_vector(where, "machine.start_position", head["start_position"], n)
 
     for i, t in enumerate(data.get("tool", [])):
+        _only(where, f"tool[{i}]", t, TOOL_KEYS)
         if "number" not in t:
             raise UsageError(f"{where}: key 'tool[{i}].number' is missing")
         tool = Tool(number=_num(where, f"tool[{i}].number", t["number"], int),
@@ -126,6 +140,14 @@ def machine_from_dict(data: dict, where: str = "<dict>", folder: Path = Path("."
         if sec in data:
             m.sections[sec] = data[sec]
     return m
+
+
+def _only(where: str, table: str, value: Any, allowed: set[str]) -> None:
+    if not isinstance(value, dict):
+        raise UsageError(f"{where}: key '{table}' must be a table")
+    for key in value:
+        if key not in allowed:
+            raise UsageError(f"{where}: unknown key '{table}.{key}' (known: {', '.join(sorted(allowed))})")
 
 
 def _axis_vector(where: str, key: str, values: Any, n: int) -> list[float]:
