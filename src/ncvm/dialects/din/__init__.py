@@ -35,6 +35,7 @@ class DinDialect(Dialect):
         skip_active = bool(session.machine.setting_data.get("block_skip", True))
         counter = session.steps
         limit = counter.limit - counter.steps
+        hook = counter.hook  # single-block stepping and breakpoints; None unless a debugger is attached
         done = 0
         try:
             for blk, skip in blocks:
@@ -44,6 +45,8 @@ class DinDialect(Dialect):
                 if done > limit:
                     done -= 1
                     counter.runaway(blk.src.file, blk.src.line)
+                if hook is not None:
+                    hook(blk.src.file, blk.src.line, kernel.workpiece_position())
                 execute(blk)
                 if kernel.ended:
                     break
