@@ -36,6 +36,8 @@ class Block:
 # the Siemens form, then a number. The plain case is a single letter followed by a number.
 WORD = re.compile(r"\s*([A-Z])\s*([-+]?(?:\d+\.?\d*|\.\d+))")
 COMMENT = re.compile(r"\(([^)]*)\)")
+WORD_PAIRS = re.compile(r"([A-Z])\s*([-+]?(?:\d+\.?\d*|\.\d+))")
+CLEAN_BODY = re.compile(r"(?:\s*[A-Z]\s*[-+]?(?:\d+\.?\d*|\.\d+))*\s*")
 
 
 class DinSyntaxError(Exception):
@@ -66,6 +68,25 @@ def parse_din_line(text: str, src: Src) -> Block | None:
     m: list[int] = []
     words: dict[str, float] = {}
     nno = None
+    if CLEAN_BODY.fullmatch(s, i):
+        # the common case: nothing but well-formed words, read in one regex call
+        for letter, num in WORD_PAIRS.findall(s, i):
+            if letter == "G":
+                v = float(num)
+                g.append(int(v) if v == int(v) else v)
+            elif letter == "M":
+                m.append(int(float(num)))
+            elif letter == "N":
+                nno = int(float(num))
+            elif letter in words:
+                break  # reported with its column by the careful reader below
+            else:
+                words[letter] = float(num)
+        else:
+            if not g and not m and not words and msg is None:
+                return None
+            return Block(tuple(g), tuple(m), words, nno, msg, src)
+        g, m, words, nno = [], [], {}, None
     pos = i
     while pos < n:
         mt = WORD.match(s, pos)
