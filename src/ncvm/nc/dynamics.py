@@ -9,6 +9,7 @@ is capped the same way by each axis's acceleration.
 from __future__ import annotations
 
 import math
+from operator import sub
 
 
 class AxisDynamics:
@@ -20,6 +21,12 @@ class AxisDynamics:
         self.rapid = tuple(a.rapid / 60.0 for a in axes)
         self.max_feed = tuple(a.max_feed / 60.0 for a in axes)
         self.accel = tuple(a.accel for a in axes)
+
+    def straight_time(self, start, end, speed: float, rapid: bool) -> float:
+        """Time of a straight move from ``start`` to ``end`` at path speed ``speed`` (mm/s)."""
+        deltas = tuple(map(sub, end, start))
+        length = math.sqrt(sum(d * d for d in deltas))
+        return move_time(deltas, length, speed, self.rapid if rapid else self.max_feed, self.accel)
 
 
 def trapezoid_time(length: float, v: float, a: float) -> float:

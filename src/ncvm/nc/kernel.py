@@ -14,6 +14,7 @@ programmed + offsets. Canon calls carry machine positions.
 from __future__ import annotations
 
 import math
+from operator import add
 
 from ..diagnostics import RuntimeFault, Span
 from ..machine.model import Machine
@@ -233,47 +234,40 @@ class NcKernel:
         prog = list(self.prog)
         moved = False
         scale = self.scale
-        for name, i in self.axis_of.items():
-            if name in words:
-                v = words[name] * scale
-                if machine_coords:
-                    prog[i] = v - self.offset_vec[i]
-                elif self.absolute:
-                    prog[i] = v
-                else:
-                    prog[i] += v
-                moved = True
+        axis_of = self.axis_of
+        for name, v in words.items():
+            i = axis_of.get(name)
+            if i is None:
+                continue
+            if scale != 1.0:
+                v *= scale
+            if machine_coords:
+                prog[i] = v - self.offset_vec[i]
+            elif self.absolute:
+                prog[i] = v
+            else:
+                prog[i] += v
+            moved = True
         return prog, moved
 
     def _move(self, motion: int, words, machine_coords: bool, src: Src) -> None:
         prog, moved = self._target(words, machine_coords)
-        is_arc = motion in (2, 3)
-        if not moved and not (is_arc and ("I" in words or "J" in words or "K" in words)):
+        if not moved and not (motion >= 2 and ("I" in words or "J" in words or "K" in words)):
             return
         start = self.machine_pos
-        end = tuple(p + o for p, o in zip(prog, self.offset_vec))
+        end = tuple(map(add, prog, self.offset_vec))
         if motion == 0:
-            self._advance(start, end, None, src)
+            self.machine.clock.advance(self.dyn.straight_time(start, end, math.inf, rapid=True))
             self.canon.rapid(start, end, src)
         elif motion == 1:
             if self.feed <= 0.0:
                 self.fault("NC006", "G1 with feed rate 0 (program an F word)", src)
-            self._advance(start, end, self.feed, src)
+            self.machine.clock.advance(self.dyn.straight_time(start, end, self.feed / 60.0, rapid=False))
             self.canon.feed(start, end, self.feed, src)
         else:
             self._arc(motion == 2, start, end, words, src)
         self.prog = prog
         self.machine_pos = end
-
-    def _advance(self, start, end, feed: float | None, src: Src) -> None:
-        deltas = [e - s for s, e in zip(start, end)]
-        length = math.sqrt(sum(d * d for d in deltas))
-        dyn = self.dyn
-        if feed is None:
-            t = move_time(deltas, length, math.inf, dyn.rapid, dyn.accel)
-        else:
-            t = move_time(deltas, length, feed / 60.0, dyn.max_feed, dyn.accel)
-        self.machine.clock.advance(t)
 
     def _arc(self, cw: bool, start, end, words, src: Src) -> None:
         if self.feed <= 0.0:

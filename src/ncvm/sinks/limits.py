@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from dataclasses import dataclass
+from operator import le
 
 from ..nc import arcs
 from ..nc.canon import CanonSink
@@ -28,24 +29,28 @@ class LimitCheck(CanonSink):
     def __init__(self, axes):
         self.axes = axes
         self.violations: dict[str, LimitViolation] = {}
+        self._mins = tuple(ax.min - 1e-9 for ax in axes)
+        self._maxs = tuple(ax.max + 1e-9 for ax in axes)
 
     def _check(self, lo, hi, src):
         for i, ax in enumerate(self.axes):
             if ax.name in self.violations:
                 continue
-            if lo[i] < ax.min - 1e-9:
+            if lo[i] < self._mins[i]:
                 self.violations[ax.name] = LimitViolation(ax.name, lo[i], ax.min, src.file, src.line)
-            elif hi[i] > ax.max + 1e-9:
+            elif hi[i] > self._maxs[i]:
                 self.violations[ax.name] = LimitViolation(ax.name, hi[i], ax.max, src.file, src.line)
 
     def begin(self, axis_names, start):
         pass
 
     def rapid(self, start, end, src):
-        self._check(end, end, src)
+        # a straight move stays inside the box when its end point does (the start was checked before)
+        if not (all(map(le, self._mins, end)) and all(map(le, end, self._maxs))):
+            self._check(end, end, src)
 
     def feed(self, start, end, feed, src):
-        self._check(end, end, src)
+        self.rapid(start, end, src)
 
     def arc(self, start, end, spec, feed, src):
         a, b = spec.a, spec.b
