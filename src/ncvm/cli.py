@@ -83,7 +83,9 @@ class _Progress:
             while not self._stop.wait(0.2):
                 s = self.session
                 if s is not None:
-                    status.update(f"running: {s.steps.steps:,} steps, {len(s.recorder.kinds):,} moves, "
+                    # front ends that count steps in batches (din) report them only at the end
+                    steps = f"{s.steps.steps:,} steps, " if s.steps.steps else ""
+                    status.update(f"running: {steps}{len(s.recorder.kinds):,} moves, "
                                   f"{s.machine.clock.now:.1f} s machine time")
 
     def __exit__(self, *exc):
