@@ -142,3 +142,9 @@ def test_g10_l2_sets_a_zero_offset_table_and_g92_1_cancels_g92(run_text):
 def test_g10_other_forms_fault(run_text):
     r = run_text("G10 L1 P1 X3\n")
     assert r["error"]["code"] == "NC004" and "G10 L2" in r["error"]["message"]
+
+
+def test_repeated_address_reports_the_second_word(run_text):
+    r = run_text("(set up) G1 X10 (again) X20 F100\n")
+    assert r["error"]["code"] == "NC001" and r["error"]["column"] == 25
+    assert "address X twice" in r["error"]["message"]

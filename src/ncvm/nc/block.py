@@ -32,11 +32,9 @@ class Block:
         return f"Block(g={self.g}, m={self.m}, words={self.words}, n={self.n})"
 
 
-# One address word: letter(s) with optional digits (extended address like Q1) and '=' for
-# the Siemens form, then a number. The plain case is a single letter followed by a number.
+#: one address word of plain DIN: a letter and a number (front ends with richer blocks read their own)
 WORD = re.compile(r"\s*([A-Z])\s*([-+]?(?:\d+\.?\d*|\.\d+))")
-COMMENT = re.compile(r"\(([^)]*)\)")
-WORD_PAIRS = re.compile(r"([A-Z])\s*([-+]?(?:\d+\.?\d*|\.\d+))")
+#: a line body made of nothing but words: checked in one regex call before the words are read
 CLEAN_BODY = re.compile(r"(?:\s*[A-Z]\s*[-+]?(?:\d+\.?\d*|\.\d+))*\s*")
 
 
@@ -64,40 +62,13 @@ def parse_din_line(text: str, src: Src) -> Block | None:
         i += 1
     if i < n and s[i] == "%":
         return None
+    if not CLEAN_BODY.fullmatch(s, i):
+        _raise_at_bad_character(s, i, col_map)
     g: list[float] = []
     m: list[int] = []
     words: dict[str, float] = {}
     nno = None
-    if CLEAN_BODY.fullmatch(s, i):
-        # the common case: nothing but well-formed words, read in one regex call
-        for letter, num in WORD_PAIRS.findall(s, i):
-            if letter == "G":
-                v = float(num)
-                g.append(int(v) if v == int(v) else v)
-            elif letter == "M":
-                m.append(int(float(num)))
-            elif letter == "N":
-                nno = int(float(num))
-            elif letter in words:
-                break  # reported with its column by the careful reader below
-            else:
-                words[letter] = float(num)
-        else:
-            if not g and not m and not words and msg is None:
-                return None
-            return Block(tuple(g), tuple(m), words, nno, msg, src)
-        g, m, words, nno = [], [], {}, None
-    pos = i
-    while pos < n:
-        mt = WORD.match(s, pos)
-        if mt is None:
-            rest = s[pos:]
-            if not rest.strip():
-                break
-            col = pos + len(rest) - len(rest.lstrip()) + 1
-            raise DinSyntaxError(col_map[col - 1] + 1 if col_map else col, f"cannot read '{rest.strip()[:20]}'")
-        letter, num = mt.group(1), mt.group(2)
-        pos = mt.end()
+    for letter, num in WORD.findall(s, i):
         if letter == "G":
             v = float(num)
             g.append(int(v) if v == int(v) else v)
@@ -105,14 +76,23 @@ def parse_din_line(text: str, src: Src) -> Block | None:
             m.append(int(float(num)))
         elif letter == "N":
             nno = int(float(num))
+        elif letter in words:
+            col = [mt.start(1) for mt in WORD.finditer(s, i) if mt.group(1) == letter][1] + 1
+            raise DinSyntaxError(col_map[col - 1] + 1 if col_map else col, f"address {letter} twice in one block")
         else:
-            if letter in words:
-                col = mt.start(1) + 1
-                raise DinSyntaxError(col_map[col - 1] + 1 if col_map else col, f"address {letter} twice in one block")
             words[letter] = float(num)
     if not g and not m and not words and msg is None:
         return None
     return Block(tuple(g), tuple(m), words, nno, msg, src)
+
+
+def _raise_at_bad_character(s: str, pos: int, col_map) -> None:
+    """The line is not all words: find the first thing that is not one and report its column."""
+    while (mt := WORD.match(s, pos)) is not None:
+        pos = mt.end()
+    rest = s[pos:]
+    col = pos + len(rest) - len(rest.lstrip()) + 1
+    raise DinSyntaxError(col_map[col - 1] + 1 if col_map else col, f"cannot read '{rest.strip()[:20]}'")
 
 
 def _strip_comments(line: str):
