@@ -53,6 +53,9 @@ class NcKernel:
         self.tool_length = 0.0
         self.tool_axis = self.axis_of.get("Z")
         self.g92 = [0.0] * self.n_axes
+        #: offsets a control adds on top of the selected work offset (SINUMERIK programmable, external,
+        #: DRF and PRESET offsets), one value per axis; set with set_additive_offset
+        self.additive = [0.0] * self.n_axes
         # positions
         start = list(machine.start_position or [0.0] * self.n_axes)
         self.machine_pos = tuple(start)
@@ -66,7 +69,7 @@ class NcKernel:
     # -- offsets ---------------------------------------------------------
     def _recompute_offsets(self) -> None:
         wo = self.machine.offset(self.work_offset) if self.work_offset else [0.0] * self.n_axes
-        vec = [w + g for w, g in zip(wo, self.g92)]
+        vec = [w + g + a for w, g, a in zip(wo, self.g92, self.additive)]
         if self.tool_axis is not None:
             vec[self.tool_axis] += self.tool_length
         self.offset_vec = vec
@@ -80,7 +83,16 @@ class NcKernel:
         self.work_offset = name
         self._set_offsets_keep_machine()
 
-    def set_tool_length(self, length: float, src: Src) -> None:
+    def set_additive_offset(self, vec) -> None:
+        """Offsets added to the selected work offset (per axis); the tool stays where it is."""
+        self.additive = [float(v) for v in vec]
+        self._set_offsets_keep_machine()
+
+    def refresh_offsets(self) -> None:
+        """Re-read the work offset tables after a program changed them; the tool stays where it is."""
+        self._set_offsets_keep_machine()
+
+    def set_tool_length, length: float, src: Src) -> None:
         self.tool_length = length
         self._set_offsets_keep_machine()
         self.canon.tool_offset(length, src)
