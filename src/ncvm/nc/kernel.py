@@ -92,7 +92,7 @@ class NcKernel:
         """Re-read the work offset tables after a program changed them; the tool stays where it is."""
         self._set_offsets_keep_machine()
 
-    def set_tool_length, length: float, src: Src) -> None:
+    def set_tool_length(self, length: float, src: Src) -> None:
         self.tool_length = length
         self._set_offsets_keep_machine()
         self.canon.tool_offset(length, src)
