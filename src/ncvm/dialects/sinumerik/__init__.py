@@ -13,7 +13,7 @@ import re
 from dataclasses import dataclass
 from pathlib import Path
 
-from ...diagnostics import CompileFailed, Diagnostic
+from ...diagnostics import CompileFailed
 from ...runtime.codegen import PySource
 from ..base import Dialect
 from .codegen import UnitCodegen
