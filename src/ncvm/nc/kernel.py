@@ -20,6 +20,7 @@ from ..machine.model import Machine
 from . import arcs
 from .canon import ArcSpec, Canon, Src
 from .dynamics import AxisDynamics, move_time
+from .fastmove import make_linear
 
 INCH = 25.4
 #: plane G number -> (first axis, second axis, normal axis, first centre word, second centre word)
@@ -39,6 +40,7 @@ class NcKernel:
         self.axis_of = {n: i for i, n in enumerate(names)}
         self.n_axes = len(names)
         self.dyn = AxisDynamics(machine.axes)
+        self._linear = make_linear(names, self.dyn)
         # modal state
         self.motion = 0
         self.plane = 17
@@ -241,6 +243,9 @@ class NcKernel:
         return prog, moved
 
     def _move(self, motion: int, words, machine_coords: bool, src: Src) -> None:
+        if motion < 2 and not machine_coords:
+            self._linear(self, motion, words, src)
+            return
         prog, moved = self._target(words, machine_coords)
         is_arc = motion in (2, 3)
         if not moved and not (is_arc and ("I" in words or "J" in words or "K" in words)):
