@@ -28,6 +28,7 @@ class LimitCheck(CanonSink):
     def __init__(self, axes):
         self.axes = axes
         self.violations: dict[str, LimitViolation] = {}
+        self._bounds = tuple((ax.min - 1e-9, ax.max + 1e-9) for ax in axes)
 
     def _check(self, lo, hi, src):
         for i, ax in enumerate(self.axes):
@@ -42,10 +43,16 @@ class LimitCheck(CanonSink):
         pass
 
     def rapid(self, start, end, src):
-        self._check(end, end, src)
+        for v, (lo, hi) in zip(end, self._bounds):
+            if v < lo or v > hi:
+                self._check(end, end, src)
+                return
 
     def feed(self, start, end, feed, src):
-        self._check(end, end, src)
+        for v, (lo, hi) in zip(end, self._bounds):
+            if v < lo or v > hi:
+                self._check(end, end, src)
+                return
 
     def arc(self, start, end, spec, feed, src):
         a, b = spec.a, spec.b
