@@ -121,7 +121,7 @@ class UnitCodegen:
         src = self.src
         src.emit("def _unit(_rt):", 0)
         src._indent = 1
-        src.emit("_R = _rt.R; _ex = _rt.execute; _K = _rt.kernel; _ctr = _rt.counter")
+        src.emit("_R = _rt.R; _ex = _rt.execute; _K = _rt.kernel; _ctr = _rt.counter; _lin = _K._linear")
         src.emit("_lim = _ctr.limit - _ctr.steps; _st = 0; _blk = 0")
         used = sorted(self.used)
         sync_in = "; ".join(f"r{n} = _R[{n}]" for n in used) or "pass"
@@ -479,7 +479,20 @@ class _Record:
             words = []
         if self.d is not None:
             out.emit(f"_rt.select_d({self.d}, {line})", line)
-        if g or m or words or self.msg is not None:
+        axis_keys = {repr(a) for a in cg.axes}
+        fast = (not m and self.msg is None and len(g) <= 1 and all(x in (0, 1) for x in g) and words
+                and all(k in axis_keys for k, _v, _c in words))
+        if fast:
+            # a plain G0/G1 block: straight to the kernel's move path, as execute() would do
+            d = ", ".join(f"{k}: {v}" for k, v, _c in words)
+            srcname = cg.const(src, "_S")
+            if g:
+                out.emit(f"_K.motion = {g[0]}; _lin(_K, {g[0]}, {{{d}}}, {srcname})", line)
+            else:
+                out.emit("_mo = _K.motion", line)
+                out.emit(f"if _mo < 2: _lin(_K, _mo, {{{d}}}, {srcname})", line)
+                out.emit(f"else: _ex(_Block((), (), {{{d}}}, {self.blk.n!r}, None, {srcname}))", line)
+        elif g or m or words or self.msg is not None:
             if all(c for _k, _v, c in words):
                 blk = Block(tuple(g), tuple(m), {eval(k): float(v) for k, v, _c in words}, self.blk.n,
                             self.msg, src)
