@@ -46,12 +46,13 @@ def make_linear(axis_names: tuple[str, ...], dyn):
               "        v = feed / 60.0",
               "    t = 0.0",
               "    if length > 0.0:",
-              "        a = _INF"]
+              "        a = _INF",
+              "        inv = 1.0 / length"]
     for i in idx:
         # the machine's limits are constants of the generated code
         rapid, feed, acc = float(dyn.rapid[i]), float(dyn.max_feed[i]), float(dyn.accel[i])
         lines += [f"        if d{i}:",
-                  f"            share = abs(d{i}) / length",
+                  f"            share = abs(d{i}) * inv",
                   f"            vmax = {rapid!r} if motion == 0 else {feed!r}",
                   "            if vmax < v * share:",
                   "                v = vmax / share",
