@@ -161,3 +161,30 @@ def test_tool_offset_d_word(tmp_path):
     r = _run(tmp_path, "%MPF1\nD3 G0 Z0\nM30\n", machine=machine)
     assert r["motion"]["bounds"]["Z"][1] == pytest.approx(41.5)
     assert math.isclose(r["position"]["Z"], 0.0, abs_tol=1e-9)
+
+
+def test_prep_ref_int_sec_manual_example(tmp_path):
+    """Manual L4212-4252: contour L20 from (X750, Y50), path along Y250 from X750 to X0: X = 320, Y = 250."""
+    contour = "L20\nN5 X400 Y50 B100\nN10 X300 Y300\nN15 X100 Y400 M17\n"
+    main = ("%MPF30\nG0 Y250 X750\nR50=20 R52=750 R51=50 R53=1 R70=0\n"
+            "N3001 @131 R70 K0 K3002 @710 R54 R50\n@711 R70 R54 R62 Y250 X0 @100 K-3001\nN3002 M30\n")
+    r = _run(tmp_path, main, files={"L20.spf": contour})
+    assert r["status"] == "ok", r["error"]
+    assert R(r, 70) == 1.0 and R(r, 71) == 250.0 and R(r, 72) == pytest.approx(320.0)
+    # the element found is the second one: (Y50, X400) -> (Y300, X300), G1, not the last
+    assert [R(r, n) for n in range(54, 62)] == [50.0, 400.0, 300.0, 300.0, 0.0, 0.0, 1.0, 0.0]
+    assert r["position"]["X"] == 750.0  # INT SEC's destination words do not move the axes
+
+
+def test_acas_after_g16_and_prep_cyc(tmp_path):
+    r = _run(tmp_path, "%MPF1\nG16 X Y Z-\n@367 R10 K0 @713 R20\nM30\n")
+    assert [R(r, n) for n in range(10, 15)] == [1.0, 2.0, 131.0, 0.0, 1.0]
+    assert R(r, 20) == 1.0 and R(r, 21) == 1.0
+
+
+def test_meas_m_stops_at_probe_trigger(tmp_path):
+    machine = MACHINE + ('[[scenario]]\ntime = 0.0\nkind = "probe"\ninput = 1\nposition = { X = 42.5, Y = 10.0 }\n')
+    r = _run(tmp_path, "%MPF1\nG1 F1000 Y10\n@720 R93 K1 X100 Y10\n@714 R1=R93\nM30\n", machine=machine)
+    assert r["status"] == "ok", r["error"]
+    assert R(r, 93) == 42.5 and R(r, 94) == 10.0 and R(r, 1) == 42.5
+    assert r["position"]["X"] == 42.5

@@ -232,6 +232,14 @@ class UnitCodegen:
         if code == "706":
             rec.machine_coords = True
             return True
+        if code == "711":  # INT SEC works on the destination written in the same block
+            if has_ptr:
+                emit("@SYNC_OUT", line)
+            rec.int_sec = (self._ref(ops[0]), self._ref(ops[1]))
+            return True
+        if code == "720":  # MEAS M cuts the motion of its own block at the probe's trigger point
+            rec.meas = (self._ref(ops[0]), self.val(ops[1]))
+            return True
         lines = self._statement(code, ops, line)
         for text in lines:
             emit(text, line)
@@ -293,8 +301,8 @@ class UnitCodegen:
                                  f"({args}{',' if args else ''}))", "@SYNC_IN"]
         if g == "4" or g == "a" or g == "7":
             args = ", ".join(v(o) for o in ops)
-            if code in ("710", "711", "713", "720"):
-                refs = ", ".join(self._ref(o) if i == 0 or code in ("710", "711") else v(o)
+            if code in ("710", "713"):
+                refs = ", ".join(self._ref(o) if i == 0 or code == "710" else v(o)
                                  for i, o in enumerate(ops))
                 return ["@SYNC_OUT", f"_rt.nc_function({code!r}, ({refs},), {line})", "@SYNC_IN"]
             if code == "a27":
@@ -382,6 +390,8 @@ class _Record:
         self.passes = "1"
         self.d: str | None = None
         self.g16: list[tuple[str, bool]] = []
+        self.int_sec: tuple[str, str] | None = None
+        self.meas: tuple[str, str] | None = None
         self._captured = 0
 
     def note(self, it: Note) -> None:
@@ -393,7 +403,7 @@ class _Record:
         a = w.address
         if w.value is None and w.rref is None:
             if 16 in self.g or self.g16:
-                self.g16.append((a, False))
+                self.g16.append((a.rstrip("-"), a.endswith("-")))
                 return
             out.emit(f"_rt.fault('SIN001', 'address {a} without a value', {self.blk.line})")
             return
@@ -479,6 +489,20 @@ class _Record:
             words = []
         if self.d is not None:
             out.emit(f"_rt.select_d({self.d}, {line})", line)
+        if self.int_sec is not None:
+            pairs = ", ".join(f"{k}: {v}" for k, v, _c in words)
+            out.emit("@SYNC_OUT", line)
+            out.emit(f"_rt.int_sec({self.int_sec[0]}, {self.int_sec[1]}, {{{pairs}}}, {line})", line)
+            out.emit("@SYNC_IN", line)
+            words = []
+        if self.meas is not None:
+            pairs = ", ".join(f"{k}: {v}" for k, v, _c in words)
+            out.emit("@SYNC_OUT", line)
+            out.emit(f"_wm = _rt.meas({self.meas[0]}, {self.meas[1]}, {{{pairs}}}, {line})", line)
+            out.emit("@SYNC_IN", line)
+            srcname = cg.const(src, "_S")
+            out.emit(f"_ex(_Block({tuple(g)!r}, {tuple(m)!r}, _wm, {self.blk.n!r}, {self.msg!r}, {srcname}))", line)
+            g, m, words = [], [], []
         axis_keys = {repr(a) for a in cg.axes}
         fast = (not m and self.msg is None and len(g) <= 1 and all(x in (0, 1) for x in g) and words
                 and all(k in axis_keys for k, _v, _c in words))

@@ -300,12 +300,13 @@ def _read_word(s: str, i: int, items: list) -> int:
         v, k = _number(s, k)
         items.append(Word(address, sign * v, None, col))
         return k
-    if k < n and (s[k] in _NUMCH or s[k] in "+-"):
+    if k < n and (s[k] in _NUMCH or (s[k] in "+-" and k + 1 < n and s[k + 1] in _NUMCH)):
         v, k = _number(s, k)
         items.append(Word(address, v, None, col))
         return k
     # an address letter alone: only the G16 axis list uses it (G16 X Y Z-)
     if k < n and s[k] == "-":
         k += 1
+        address += "-"  # G16 Z-: length compensation in the minus direction
     items.append(Word(address, None, None, col))
     return k

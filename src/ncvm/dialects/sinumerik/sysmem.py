@@ -11,6 +11,7 @@ from __future__ import annotations
 import math
 
 from ...diagnostics import RuntimeFault
+from .contour import check_window, contour_elements, intersect
 from .ncdata import Cl800Error, int_to_pattern, pattern_to_int
 
 #: code -> (area, width, (lo, hi) address range); width: word, byte, bit
@@ -54,6 +55,7 @@ class SysMem:
 
     def __init__(self):
         self.probes: list[dict] = []
+        self.contours: dict[int, list] = {}
         self.g16_plane: tuple[int, int, int] | None = None
         self.g16_minus = (False, False, False)
         self._paths: list[str] = []
@@ -123,7 +125,10 @@ class SysMem:
             raise Cl800Error("G16 needs at least two axes")
         while len(axes) < 3:
             axes.append(0)
+        while len(minus) < 3:
+            minus.append(False)
         self.g16_plane = tuple(axes[:3])
+        self.g16_minus = tuple(minus[:3])
         plane = {(1, 2): 17, (3, 1): 18, (2, 3): 19}.get((axes[0], axes[1]))
         if plane:
             self.kernel.plane = plane
@@ -497,15 +502,87 @@ class SysMem:
             bit = _i(args[2])
             self.wait_input(_i(args[1]), abs(bit), bit >= 0, "INTA")
             return
-        if code == "720":
-            self._meas(int(args[0]), _i(args[1]))
+        if code == "710":
+            self.prep_ref(int(args[0]), int(args[1]))
             return
-        raise RuntimeFault("SIN005", f"@{code} ({'PREP REF' if code == '710' else 'INT SEC'}) is not "
-                                     f"implemented by this NC model")
+        raise Cl800Error(f"@{code} is not available")
 
-    def _meas(self, target: int, probe: int) -> None:
+    # -- PREP REF / INT SEC ------------------------------------------------
+    def _plane_axes(self) -> tuple[str, str]:
+        k = self.kernel
+        if self.g16_plane:
+            h, v = self.g16_plane[0], self.g16_plane[1]
+            return k.axis_names[h - 1], k.axis_names[v - 1]
+        from ...nc.kernel import PLANES
+        a, b = PLANES[k.plane][:2]
+        return a, b
+
+    def prep_ref(self, rn: int, rm: int) -> None:
+        """@710 Rn Rm: the next contour element of sub-program R[m] into Rn..Rn+7."""
+        check_window(rm, 4, ((0, 197), (900, 997)), "PREP REF input")
+        check_window(rn, 8, ((0, 192), (900, 992)), "PREP REF output")
+        R = self.R
+        cursor = self.contours.get(rm)
+        if R[rm + 3] == 1.0 or cursor is None:
+            number = _i(R[rm])
+            unit = self.loader(number)
+            if unit is None:
+                raise RuntimeFault("RUN002", f"PREP REF: contour sub-program L{number} not found")
+            cursor = [contour_elements(unit.program, self._plane_axes(), (R[rm + 1], R[rm + 2]), R), 0]
+            self.contours[rm] = cursor
+            R[rm + 3] = 0.0
+        elements, i = cursor
+        if i >= len(elements):
+            last = elements[-1] if elements else [R[rm + 1], R[rm + 2]] * 2 + [0.0, 0.0, 1.0, 2.0]
+            R[rn:rn + 8] = last[2:4] + last[2:4] + [0.0, 0.0, last[6], 2.0]
+            return
+        R[rn:rn + 8] = elements[i]
+        cursor[1] = i + 1
+
+    def int_sec(self, rm: int, rn: int, words: dict, line: int) -> None:
+        """@711 Rm Rn Rr: intersect element Rn..Rn+7 with the path to this block's destination."""
+        check_window(rn, 8, ((0, 192), (900, 992)), "INT SEC input")
+        check_window(rm, 3, ((0, 197), (900, 997)), "INT SEC output")
+        h_name, v_name = self._plane_axes()
+        if h_name not in words or v_name not in words:
+            raise Cl800Error(f"INT SEC needs both axes {v_name} and {h_name} of the destination in its block")
+        pos = self.kernel.workpiece_position()
+        here = (pos[v_name], pos[h_name])
+        hit = intersect(self.R[rn:rn + 8], here, (words[v_name], words[h_name]))
+        R = self.R
+        if hit is None:
+            R[rm] = 0.0
+        else:
+            R[rm], R[rm + 1], R[rm + 2] = 1.0, hit[0], hit[1]
+
+    # -- MEAS M --------------------------------------------------------------
+    def meas(self, target: int, probe: float, words: dict, line: int) -> dict:
+        """@720: the block's axes move until the probe switches; machine positions go to R<target>..."""
+        probe = _i(probe)
+        k = self.kernel
         if probe not in (1, 2):
             raise Cl800Error(f"MEAS M: probe input {probe} is not 1 or 2")
+        moving = sorted((n for n in words if n in k.axis_of), key=k.axis_of.get)
+        if len(moving) > 2:
+            raise Cl800Error("MEAS M: at most 2 axes may move in the measuring block")
+        if k.motion not in (0, 1):
+            raise Cl800Error("MEAS M needs G00 or G01")
+        hit = self._probe_hit(probe)
+        pos = hit.get("position", {})
+        out = dict(words)
+        reg = target
+        for name in moving:
+            if name not in pos:
+                raise RuntimeFault("SIN007", f"MEAS M: the probe event gives no position for axis {name}")
+            machine_value = float(pos[name])
+            i = k.axis_of[name]
+            self.R[reg] = machine_value / k.scale
+            reg += 1
+            prog = machine_value - k.offset_vec[i]
+            out[name] = prog / k.scale if k.absolute else (prog - k.prog[i]) / k.scale
+        return out
+
+    def _probe_hit(self, probe: int) -> dict:
         self.advance_scenario()
         for i, ev in enumerate(self._scenario):
             if ev.kind == "probe" and int(ev.data.get("input", 1)) == probe:
@@ -517,9 +594,7 @@ class SysMem:
             raise RuntimeFault("SIN007", f"MEAS M: probe {probe} never switches (no probe event in the scenario)")
         hit = hits[0]
         self.probes.remove(hit)
-        pos = hit.get("position", {})
-        for k, name in enumerate(sorted(pos, key=lambda a: self.kernel.axis_of.get(a, 99))):
-            self.R[target + k] = float(pos[name])
+        return hit
 
     # -- main group a: operator panel and V24 -------------------------------
     def io(self, code: str, args: tuple) -> None:
