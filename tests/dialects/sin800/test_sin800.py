@@ -89,7 +89,7 @@ def test_canonical_object_examples_run(tmp_path):
     assert r["motion"]["feed_moves"] == 20 and r["motion"]["rapid_moves"] == 11  # Z0 (G91) feeds count too
     assert r["position"]["X"] == pytest.approx(1000.0)
     assert r["position"]["Z"] == 0.0
-    assert "R50" not in r["variables"]  # popped back to the caller's 0
+    assert r["variables"]["R50"] == 0.0  # written by the loop, popped back to the caller's 0
 
 
 def test_case_and_pointer_examples(tmp_path):

@@ -34,17 +34,19 @@ class Unit:
     program: PartProgram
     source: PySource
     fn: object
+    written: frozenset[int] = frozenset()
 
 
 def compile_unit(path: str, text: str, axis_names: tuple[str, ...], name: str) -> Unit:
     prog, diags = read_program(path, text)
     if diags:
         raise CompileFailed(diags)
-    source, consts = UnitCodegen(prog, name, axis_names).build()
+    gen = UnitCodegen(prog, name, axis_names)
+    source, consts = gen.build()
     namespace = dict(NAMESPACE_GLOBALS)
     namespace.update(consts)
     exec(source.compile(), namespace)
-    return Unit(path, prog, source, namespace["_unit"])
+    return Unit(path, prog, source, namespace["_unit"], frozenset(gen.written))
 
 
 class SubProgramLibrary:
@@ -110,6 +112,7 @@ class Sin800Dialect(Dialect):
         library = SubProgramLibrary(machine, path)
         channel = Channel(session, data, library)
         name = f"%{unit.program.kind}{unit.program.number}" if unit.program.kind else Path(path).name
+        initial = list(channel.R)
         try:
             channel.run_unit(unit, name, None)
             if not session.kernel.ended and not channel.halted:
@@ -117,9 +120,14 @@ class Sin800Dialect(Dialect):
                 last = unit.program.blocks[-1].line if unit.program.blocks else 1
                 session.kernel.end_program(Src(path, last))
         finally:
-            self._finish(session, channel, data, store)
+            written = set(unit.written)
+            for sub in library.units.values():
+                if sub is not None:
+                    written |= sub.written
+            self._finish(session, channel, data, store, initial, written)
 
-    def _finish(self, session, channel: Channel, data: NcData, store) -> None:
+    def _finish(self, session, channel: Channel, data: NcData, store, initial: list, written: set) -> None:
+        """Persist what the NC keeps; report R parameters that are non-zero, changed or written."""
         R = channel.R
         central = {str(n): R[n] for n in range(900, 1000) if R[n] != 0.0 or str(n) in data.central_r}
         if central != data.central_r:
@@ -128,7 +136,8 @@ class Sin800Dialect(Dialect):
         with store.batch():
             for key, value in data.persisted().items():
                 store.put(NAMESPACE, key, value)
-        session.variables = {f"R{n}": R[n] for n in range(1000) if R[n] != 0.0}
+        session.variables = {f"R{n}": R[n] for n in range(1000)
+                             if R[n] != 0.0 or R[n] != initial[n] or n in written}
         if channel.v24:
             session.variables["V24"] = list(channel.v24)
 

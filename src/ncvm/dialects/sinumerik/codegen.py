@@ -40,6 +40,7 @@ class UnitCodegen:
         self.used: set[int] = set()
         self.labels: dict[int, int] = {}  # block index -> label ordinal
         self.dynamic_jumps = False
+        self.written: set[int] = set()  # R parameters the program writes by number
         self._tmp = 0
 
     # -- constants and R names -------------------------------------------
@@ -66,6 +67,7 @@ class UnitCodegen:
     def store(self, op: Operand, expr: str) -> list[str]:
         """Python lines storing ``expr`` into a <Var>."""
         if op.kind == "R":
+            self.written.add(int(op.value))
             return [f"{self.r(int(op.value))} = {expr}"]
         return [f"_R[_ptr({self.r(int(op.value))})] = {expr}", "@SYNC_IN"]
 
@@ -175,6 +177,7 @@ class UnitCodegen:
                 expr = f"-{v}" if op == "-" else v
             else:
                 expr = f"({expr} {op} {v})"
+        self.written.add(it.target)
         return f"{self.r(it.target)} = {expr}"
 
     def _jump(self, out: PySource, idx: int, blk: NcBlock, number: int, rec: "_Record") -> None:
@@ -295,6 +298,7 @@ class UnitCodegen:
         if g == "3":
             args = ", ".join(v(o) for o in ops[1:])
             if ops[0].kind == "R":
+                self.written.add(int(ops[0].value))
                 return ["@SYNC_OUT", f"_rt.read({code!r}, {int(ops[0].value)}, ({args}{',' if args else ''}))",
                         "@SYNC_IN"]
             return ["@SYNC_OUT", f"_rt.read({code!r}, _ptr({self.r(int(ops[0].value))}), "

@@ -158,6 +158,9 @@ def read_block(line: str, lineno: int) -> NcBlock:
         else:
             raise ReadError(col, f"cannot read '{s[i:i + 20].strip()}'")
         first = False
+    bare = [w for w in items if isinstance(w, Word) and w.value is None and w.rref is None]
+    if bare and not any(isinstance(w, Word) and w.address == "G" and w.value == 16 for w in items):
+        raise ReadError(bare[0].col, f"address {bare[0].address.rstrip('-')} without a value")
     return blk
 
 
