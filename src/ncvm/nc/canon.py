@@ -12,6 +12,7 @@ Positions are tuples with one float per machine axis, in axis order, in
 
 from __future__ import annotations
 
+import inspect
 from dataclasses import dataclass
 from typing import NamedTuple
 
@@ -102,14 +103,20 @@ class Canon:
         self.sinks = list(sinks)
         for name in _METHODS:
             bound = [getattr(s, name) for s in self.sinks if getattr(type(s), name) is not getattr(CanonSink, name)]
-            setattr(self, name, _fan_out(bound))
+            setattr(self, name, _fan_out(bound, name))
 
 
-def _fan_out(bound):
+def _fan_out(bound, name: str = ""):
     if not bound:
         return lambda *args: None
     if len(bound) == 1:
         return bound[0]
+    if len(bound) == 2 and name:
+        # spelled-out parameters: no *args packing on the hot path (every move calls this)
+        params = ", ".join(p for p in inspect.signature(getattr(CanonSink, name)).parameters if p != "self")
+        namespace = {"f": bound[0], "g": bound[1]}
+        exec(f"def two({params}):\n    f({params})\n    g({params})\n", namespace)
+        return namespace["two"]
     if len(bound) == 2:
         f, g = bound
 

@@ -21,6 +21,7 @@ from ..machine.model import Machine
 from . import arcs
 from .canon import ArcSpec, Canon, Src
 from .dynamics import AxisDynamics, move_time
+from .fastmove import make_linear
 
 INCH = 25.4
 #: plane G number -> (first axis, second axis, normal axis, first centre word, second centre word)
@@ -40,6 +41,7 @@ class NcKernel:
         self.axis_of = {n: i for i, n in enumerate(names)}
         self.n_axes = len(names)
         self.dyn = AxisDynamics(machine.axes)
+        self._linear = make_linear(names, self.dyn)
         # modal state
         self.motion = 0
         self.plane = 17
@@ -54,6 +56,9 @@ class NcKernel:
         self.tool_length = 0.0
         self.tool_axis = self.axis_of.get("Z")
         self.g92 = [0.0] * self.n_axes
+        #: offsets a control adds on top of the selected work offset (SINUMERIK programmable, external,
+        #: DRF and PRESET offsets), one value per axis; set with set_additive_offset
+        self.additive = [0.0] * self.n_axes
         # positions
         start = list(machine.start_position or [0.0] * self.n_axes)
         self.machine_pos = tuple(start)
@@ -67,7 +72,7 @@ class NcKernel:
     # -- offsets ---------------------------------------------------------
     def _recompute_offsets(self) -> None:
         wo = self.machine.offset(self.work_offset) if self.work_offset else [0.0] * self.n_axes
-        vec = [w + g for w, g in zip(wo, self.g92)]
+        vec = [w + g + a for w, g, a in zip(wo, self.g92, self.additive)]
         if self.tool_axis is not None:
             vec[self.tool_axis] += self.tool_length
         self.offset_vec = vec
@@ -79,6 +84,15 @@ class NcKernel:
 
     def set_work_offset(self, name: str | None) -> None:
         self.work_offset = name
+        self._set_offsets_keep_machine()
+
+    def set_additive_offset(self, vec) -> None:
+        """Offsets added to the selected work offset (per axis); the tool stays where it is."""
+        self.additive = [float(v) for v in vec]
+        self._set_offsets_keep_machine()
+
+    def refresh_offsets(self) -> None:
+        """Re-read the work offset tables after a program changed them; the tool stays where it is."""
         self._set_offsets_keep_machine()
 
     def set_tool_length(self, length: float, src: Src) -> None:
@@ -251,6 +265,9 @@ class NcKernel:
         return prog, moved
 
     def _move(self, motion: int, words, machine_coords: bool, src: Src) -> None:
+        if motion < 2 and not machine_coords:
+            self._linear(self, motion, words, src)
+            return
         prog, moved = self._target(words, machine_coords)
         if not moved and not (motion >= 2 and ("I" in words or "J" in words or "K" in words)):
             return

@@ -1,0 +1,29 @@
+"""SINUMERIK 800 cases: the peer loops (loop_arith.ngc, loop_motion.ngc) written as @ code programs."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from benchlib import PEERS, WORK, Case, rs274_case
+
+from ncvm.api import run
+from ncvm.runtime.session import RunOptions
+
+HERE = Path(__file__).parent / "sin800"
+
+
+def _runner(name: str):
+    def run_once() -> None:
+        result, _ = run(HERE / name, dialect="sin800", options=RunOptions(state_dir=WORK / ".ncvm"))
+        assert result["status"] == "ok", result["error"]
+
+    return run_once
+
+
+def cases() -> dict[str, Case]:
+    return {
+        "sin800_loop_arith": Case(_runner("loop_arith.mpf"), 100_000, "iterations/s"),
+        "sin800_loop_motion": Case(_runner("loop_motion.mpf"), 100_000, "G1/s"),
+        "rs274_loop_arith": rs274_case(PEERS / "loop_arith.ngc", 100_000, "iterations/s"),
+        "rs274_loop_motion": rs274_case(PEERS / "loop_motion.ngc", 100_000, "G1/s"),
+    }

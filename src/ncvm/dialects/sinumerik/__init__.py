@@ -1,0 +1,145 @@
+"""SINUMERIK 800 NC (dialect ``sin800``): runs @ code part programs and the DIN blocks around them.
+
+Main programs (``%MPF<n>``, ``.mpf``) and sub-programs (``%SPF<n>``, ``.spf``,
+the object text the CL 800 compiler writes) are read into blocks, compiled to
+one Python function each (codegen) and run on one NC channel (runtime) that
+drives the shared NC kernel. Sub-programs ``L<n>`` are found as ``L<n>.spf``
+or as a file starting ``%SPF<n>`` along the machine's program path.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from pathlib import Path
+
+from ...diagnostics import CompileFailed
+from ...runtime.codegen import PySource
+from ..base import Dialect
+from .codegen import UnitCodegen
+from .ncdata import NAMESPACE, NcData
+from .reader import PartProgram, read_program
+from .runtime import NAMESPACE_GLOBALS, Channel
+
+_HEADER = re.compile(r"^\s*%\s*(SPF|MPF)\s*(\d+)\s*$", re.I | re.M)
+_AT = re.compile(r"@[0-9a-f]{3}\b", re.I)
+_SPF_NAME = re.compile(r"^(?:L|SPF)?0*(\d+)$", re.I)
+
+
+@dataclass
+class Unit:
+    """One compiled part program."""
+
+    path: str
+    program: PartProgram
+    source: PySource
+    fn: object
+    written: frozenset[int] = frozenset()
+
+
+def compile_unit(path: str, text: str, axis_names: tuple[str, ...], name: str) -> Unit:
+    prog, diags = read_program(path, text)
+    if diags:
+        raise CompileFailed(diags)
+    gen = UnitCodegen(prog, name, axis_names)
+    source, consts = gen.build()
+    namespace = dict(NAMESPACE_GLOBALS)
+    namespace.update(consts)
+    exec(source.compile(), namespace)
+    return Unit(path, prog, source, namespace["_unit"], frozenset(gen.written))
+
+
+class SubProgramLibrary:
+    """Finds, reads and compiles sub-programs L<n> along the program path, once each."""
+
+    def __init__(self, machine, main_path: str):
+        self.machine = machine
+        self.main_path = main_path
+        self.units: dict[int, Unit | None] = {}
+
+    def __call__(self, number: int) -> Unit | None:
+        if number not in self.units:
+            path = self.find(number)
+            if path is None:
+                self.units[number] = None
+            else:
+                text = path.read_text(encoding="latin-1")
+                self.units[number] = compile_unit(str(path), text, self.machine.axis_names, f"L{number}")
+        return self.units[number]
+
+    def find(self, number: int) -> Path | None:
+        for name in (f"L{number}", f"SPF{number}", f"{number}"):
+            p = self.machine.find_program(name, (".spf", ".SPF"))
+            if p is not None:
+                return p
+        for folder in self.machine.program_path:
+            if not folder.is_dir():
+                continue
+            for p in sorted(folder.iterdir()):
+                if p.is_file() and p.suffix.lower() in (".spf", ".mpf", ".txt", ""):
+                    try:
+                        head = p.read_text(encoding="latin-1")[:200]
+                    except OSError:
+                        continue
+                    m = _HEADER.search(head)
+                    if m and m.group(1).upper() == "SPF" and int(m.group(2)) == number:
+                        return p
+        return None
+
+
+class Sin800Dialect(Dialect):
+    id = "sin800"
+    title = "SINUMERIK 800 NC: @ code and DIN part programs (%MPF/%SPF)"
+    extensions = (".mpf", ".spf")
+
+    def sniff(self, text: str) -> int:
+        head = text.lstrip()[:20].upper().replace(" ", "")
+        if head.startswith("%SPF") or head.startswith("%MPF"):
+            return 95
+        return 70 if _AT.search(text) else 0
+
+    def check(self, path, text, machine, all_errors=False):
+        diags = read_program(path, text)[1]
+        return diags if all_errors else diags[:1] if diags else []
+
+    def run(self, path, text, session):
+        """Run a main program or @ code object text (``%SPF<n>`` / ``%MPF<n>``, digest §5.3)."""
+        machine = session.machine
+        unit = compile_unit(path, text, machine.axis_names, "main")
+        data = NcData.from_machine(machine)
+        store = session.store
+        data.overlay(store.items(NAMESPACE))
+        library = SubProgramLibrary(machine, path)
+        channel = Channel(session, data, library)
+        name = f"%{unit.program.kind}{unit.program.number}" if unit.program.kind else Path(path).name
+        initial = list(channel.R)
+        try:
+            channel.run_unit(unit, name, None)
+            if not session.kernel.ended and not channel.halted:
+                from ...nc.canon import Src
+                last = unit.program.blocks[-1].line if unit.program.blocks else 1
+                session.kernel.end_program(Src(path, last))
+        finally:
+            written = set(unit.written)
+            for sub in library.units.values():
+                if sub is not None:
+                    written |= sub.written
+            self._finish(session, channel, data, store, initial, written)
+
+    def _finish(self, session, channel: Channel, data: NcData, store, initial: list, written: set) -> None:
+        """Persist what the NC keeps; report R parameters that are non-zero, changed or written."""
+        R = channel.R
+        central = {str(n): R[n] for n in range(900, 1000) if R[n] != 0.0 or str(n) in data.central_r}
+        if central != data.central_r:
+            data.central_r = central
+            data.dirty.add("central_r")
+        with store.batch():
+            for key, value in data.persisted().items():
+                store.put(NAMESPACE, key, value)
+        session.variables = {f"R{n}": R[n] for n in range(1000)
+                             if R[n] != 0.0 or R[n] != initial[n] or n in written}
+        if channel.v24:
+            session.variables["V24"] = list(channel.v24)
+
+
+DIALECT = Sin800Dialect()

@@ -1,0 +1,544 @@
+"""Compiling a SINUMERIK part program to one Python function (a basic-block dispatch loop).
+
+Every NC block becomes straight-line Python: @ code and R arithmetic run at
+decode time, in block order; DIN words are collected into the block record
+and handed to the NC kernel at the end of the block (or when a jump is taken
+part-way through it: the words read so far stay in the block, the rest is
+ignored; digest §10.3). Jump targets become entry labels of a
+``while True: if _blk <= k: ...`` chain, so ``@100 K-N`` loops are a
+``continue``. R parameters the program names are Python locals, written back
+to the channel's R array (``_R``) around anything that reaches R parameters
+by number (pointers, push/pop, sub-program calls, multi-register results).
+"""
+
+from __future__ import annotations
+
+from ...nc.block import Block
+from ...nc.canon import Src
+from ...runtime.codegen import PySource
+from .atcodes import COMPARE
+from .reader import Arith, AtInstr, NcBlock, Note, Operand, PartProgram, Word
+
+#: internal G group of each G number the block record keeps, for G58/G59 (programmable ZO) and G16
+PROG_ZO = {58: 1, 59: 2}
+AXIS_CENTRE = {"X": "I", "Y": "J", "Z": "K"}
+
+
+def _num(v: float) -> str:
+    return repr(float(v))
+
+
+class UnitCodegen:
+    """Turns one :class:`PartProgram` into Python source for ``_unit(_rt)``."""
+
+    def __init__(self, prog: PartProgram, unit: str, axis_names: tuple[str, ...]):
+        self.prog = prog
+        self.unit = unit
+        self.axes = axis_names
+        self.src = PySource(f"<sin800 {unit} {prog.path}>")
+        self.consts: dict[str, object] = {}
+        self.used: set[int] = set()
+        self.labels: dict[int, int] = {}  # block index -> label ordinal
+        self.dynamic_jumps = False
+        self.written: set[int] = set()  # R parameters the program writes by number
+        self._tmp = 0
+
+    # -- constants and R names -------------------------------------------
+    def const(self, value: object, prefix: str = "_C") -> str:
+        name = f"{prefix}{len(self.consts)}"
+        self.consts[name] = value
+        return name
+
+    def r(self, n: int) -> str:
+        self.used.add(n)
+        return f"r{n}"
+
+    def val(self, op: Operand) -> str:
+        """Python expression reading a <Value>."""
+        if op.kind == "K":
+            return _num(op.value)
+        if op.kind == "R":
+            return self.r(int(op.value))
+        return f"_R[_ptr({self.r(int(op.value))})]"
+
+    def ival(self, op: Operand) -> str:
+        return f"_int({self.val(op)})" if op.kind != "K" else str(int(op.value))
+
+    def store(self, op: Operand, expr: str) -> list[str]:
+        """Python lines storing ``expr`` into a <Var>."""
+        if op.kind == "R":
+            self.written.add(int(op.value))
+            return [f"{self.r(int(op.value))} = {expr}"]
+        return [f"_R[_ptr({self.r(int(op.value))})] = {expr}", "@SYNC_IN"]
+
+    # -- jump targets ----------------------------------------------------
+    def find_target(self, index: int, number: int) -> int | None:
+        """Block index of N|number| searched forward (number >= 0) or backward (< 0) from block ``index``."""
+        blocks = self.prog.blocks
+        if number < 0:
+            want = -number
+            for i in range(index, -1, -1):
+                if blocks[i].n == want:
+                    return i
+            return None
+        for i in range(index + 1, len(blocks)):
+            if blocks[i].n == number:
+                return i
+        return None
+
+    def _scan_labels(self) -> None:
+        self.labels[0] = 0
+        targets = set()
+        for idx, blk in enumerate(self.prog.blocks):
+            for it in blk.items:
+                if not isinstance(it, AtInstr):
+                    continue
+                for number in _jump_numbers(it):
+                    if number is None:
+                        self.dynamic_jumps = True
+                        continue
+                    t = self.find_target(idx, number)
+                    if t is not None:
+                        targets.add(t)
+        if self.dynamic_jumps:
+            targets.update(i for i, b in enumerate(self.prog.blocks) if b.n is not None)
+        for t in sorted(targets):
+            if t not in self.labels:
+                self.labels[t] = len(self.labels)
+        # ordinals must grow with the block index for the `_blk <= k` chain
+        ordered = sorted(self.labels)
+        self.labels = {b: k for k, b in enumerate(ordered)}
+
+    # -- the unit --------------------------------------------------------
+    def build(self) -> tuple[PySource, dict]:
+        self._scan_labels()
+        body = PySource(self.src.filename)
+        body._indent = 4
+        for idx, blk in enumerate(self.prog.blocks):
+            if idx in self.labels:
+                body._indent = 3
+                body.emit(f"if _blk <= {self.labels[idx]}:", blk.line)
+                body._indent = 4
+            self._block(body, idx, blk)
+        src = self.src
+        src.emit("def _unit(_rt):", 0)
+        src._indent = 1
+        src.emit("_R = _rt.R; _ex = _rt.execute; _K = _rt.kernel; _ctr = _rt.counter; _lin = _K._linear")
+        src.emit("_lim = _ctr.limit - _ctr.steps; _st = 0; _blk = 0")
+        used = sorted(self.used)
+        sync_in = "; ".join(f"r{n} = _R[{n}]" for n in used) or "pass"
+        sync_out = "; ".join(f"_R[{n}] = r{n}" for n in used) or "pass"
+        src.emit(sync_in)
+        src.emit("try:")
+        src._indent = 2
+        src.emit("while True:")
+        for text, line in zip(body.lines, body.line_map):
+            text = text.replace("@SYNC_IN", sync_in).replace("@SYNC_OUT", sync_out)
+            src.lines.append(text)
+            src.line_map.append(line)
+        src._indent = 3
+        src.emit("return 0", self.prog.blocks[-1].line if self.prog.blocks else 0)
+        src._indent = 1
+        src.emit("finally:")
+        src._indent = 2
+        src.emit(sync_out)
+        src.emit("_ctr.steps += _st")
+        return src, self.consts
+
+    # -- one block -------------------------------------------------------
+    def _block(self, out: PySource, idx: int, blk: NcBlock) -> None:
+        line = blk.line
+        if blk.skip:
+            out.emit("if not _rt.block_skip:", line)
+            out._indent += 1
+        out.emit("_st += 1", line)
+        rec = _Record(self, blk)
+        for it in blk.items:
+            if isinstance(it, Word):
+                rec.word(out, it)
+            elif isinstance(it, Arith):
+                out.emit(self._arith(it), line)
+                rec.changed = True
+            elif isinstance(it, Note):
+                rec.note(it)
+            elif isinstance(it, AtInstr):
+                if not self._at(out, idx, blk, it, rec):
+                    break  # an unconditional jump: the rest of the block is never read
+        else:
+            rec.finish(out)
+        if blk.skip:
+            out._indent -= 1
+
+    def _arith(self, it: Arith) -> str:
+        expr = ""
+        for k, (op, term) in enumerate(it.terms):
+            v = self.val(term)
+            if k == 0:
+                expr = f"-{v}" if op == "-" else v
+            else:
+                expr = f"({expr} {op} {v})"
+        self.written.add(it.target)
+        return f"{self.r(it.target)} = {expr}"
+
+    def _jump(self, out: PySource, idx: int, blk: NcBlock, number: int, rec: "_Record") -> None:
+        """Lines that leave the block for block ``number`` (±, digest §5.3 rule 4)."""
+        rec.finish(out, jumping=True)
+        target = self.find_target(idx, number)
+        if target is None:
+            out.emit(f"_rt.no_block({number}, {blk.line})")
+            return
+        if target <= idx:
+            out.emit(f"if _st > _lim: _rt.runaway({blk.line})")
+        out.emit(f"_blk = {self.labels[target]}; continue")
+
+    def _at(self, out: PySource, idx: int, blk: NcBlock, it: AtInstr, rec: "_Record") -> bool:
+        code, ops = it.code, it.operands
+        line = blk.line
+        emit = out.emit
+        has_ptr = any(o.kind == "P" for o in ops)
+        if has_ptr:
+            emit("@SYNC_OUT", line)
+        g = code[0]
+        if code == "100":
+            if ops[0].kind == "K":
+                self._jump(out, idx, blk, int(ops[0].value), rec)
+            else:
+                rec.finish(out, jumping=True)
+                table = self.const({b.n: [] for b in self.prog.blocks if b.n is not None}, "_T")
+                for i, b in enumerate(self.prog.blocks):
+                    if b.n is not None:
+                        self.consts[table][b.n].append((i, self.labels[i]))
+                emit(f"_blk = _rt.dynamic_target({table}, {self.val(ops[0])}, {idx}, {line})")
+                emit(f"if _st > _lim: _rt.runaway({line})")
+                emit("continue")
+            return False
+        if code == "111":
+            var = self.val(ops[0])
+            first = True
+            for value, target in zip(ops[1::2], ops[2::2]):
+                emit(f"{'if' if first else 'elif'} {var} == {self.val(value)}:", line)
+                first = False
+                out._indent += 1
+                self._jump(out, idx, blk, int(target.value), rec)
+                out._indent -= 1
+            return True
+        if g == "1":
+            cond = self._condition(code, ops)
+            emit(f"if {cond}:", line)
+            out._indent += 1
+            self._jump(out, idx, blk, int(ops[2].value), rec)
+            out._indent -= 1
+            return True
+        if g == "4" and code[1] == "4":
+            rec.setpoint(out, code, ops)
+            return True
+        if code == "706":
+            rec.machine_coords = True
+            return True
+        if code == "711":  # INT SEC works on the destination written in the same block
+            if has_ptr:
+                emit("@SYNC_OUT", line)
+            rec.int_sec = (self._ref(ops[0]), self._ref(ops[1]))
+            return True
+        if code == "720":  # MEAS M cuts the motion of its own block at the probe's trigger point
+            rec.meas = (self._ref(ops[0]), self.val(ops[1]))
+            return True
+        lines = self._statement(code, ops, line)
+        for text in lines:
+            emit(text, line)
+        rec.changed = True
+        if has_ptr:
+            emit("@SYNC_IN", line)
+        return True
+
+    def _condition(self, code: str, ops: list[Operand]) -> str:
+        """The condition under which the branch code *jumps* (digest §11 A48)."""
+        a, b = self.val(ops[0]), self.val(ops[1])
+        if code[1] in "234":
+            return f"not ({a} {COMPARE[code[2]]} {b})"
+        if code == "151":
+            return f"{a} > {b}"
+        if code == "161":
+            return f"{a} < {b}"
+        if code in ("187", "197"):
+            return f"not _rt.ext_input({a}, {b})"
+        return f"_rt.ext_input({a}, {b})"  # 188, 198: continue while the input reads 0
+
+    def _statement(self, code: str, ops: list[Operand], line: int) -> list[str]:
+        v = self.val
+        g = code[0]
+        if code == "00f":
+            return ["_rt.ess()"]
+        if code in ("040", "041", "042", "043"):
+            regs = [int(o.value) for o in ops[1:]] if code in ("040", "042") else \
+                list(range(int(ops[0].value), int(ops[1].value) + 1))
+            regs_c = self.const(tuple(regs), "_P")
+            fn = "push" if code in ("040", "041") else "pop"
+            return ["@SYNC_OUT", f"_rt.{fn}({regs_c}, {line})", "@SYNC_IN"]
+        if g == "2":
+            if code == "200":
+                return self.store(ops[0], "0.0")
+            if code == "201":
+                return self.store(ops[0], v(ops[1]))
+            if code == "202":
+                if ops[0].kind == "R" and ops[1].kind == "R":
+                    a, b = v(ops[0]), v(ops[1])
+                    return [f"{a}, {b} = {b}, {a}"]
+                return [f"_rt.xchg({self._ref(ops[0])}, {self._ref(ops[1])})", "@SYNC_IN"]
+            if code == "203":
+                return self.store(ops[0], f"_rt.bit({v(ops[1])}, {int(ops[2].value)})")
+            if code == "210":
+                return [f"_rt.mib_clear({v(ops[0])}, {v(ops[1])})"]
+            if code == "211":
+                return self.store(ops[0], f"_rt.mib_read({v(ops[1])})")
+            if code == "212":
+                return [f"_rt.mib_write({v(ops[0])}, {v(ops[1])})"]
+        if g == "6":
+            return self._math(code, ops)
+        if g == "3":
+            args = ", ".join(v(o) for o in ops[1:])
+            if ops[0].kind == "R":
+                self.written.add(int(ops[0].value))
+                return ["@SYNC_OUT", f"_rt.read({code!r}, {int(ops[0].value)}, ({args}{',' if args else ''}))",
+                        "@SYNC_IN"]
+            return ["@SYNC_OUT", f"_rt.read({code!r}, _ptr({self.r(int(ops[0].value))}), "
+                                 f"({args}{',' if args else ''}))", "@SYNC_IN"]
+        if g == "4" or g == "a" or g == "7":
+            args = ", ".join(v(o) for o in ops)
+            if code in ("710", "713"):
+                refs = ", ".join(self._ref(o) if i == 0 or code == "710" else v(o)
+                                 for i, o in enumerate(ops))
+                return ["@SYNC_OUT", f"_rt.nc_function({code!r}, ({refs},), {line})", "@SYNC_IN"]
+            if code == "a27":
+                return ["@SYNC_OUT", f"_rt.io({code!r}, ({args},))"]
+            fn = "write" if g == "4" else ("io" if g == "a" else "nc_function")
+            extra = f", {line}" if g == "7" else ""
+            return [f"_rt.{fn}({code!r}, ({args}{',' if args else ''}){extra})"]
+        raise AssertionError(code)
+
+    def _ref(self, op: Operand) -> str:
+        """The R number an operand designates (pointers resolved at run time)."""
+        if op.kind == "R":
+            return str(int(op.value))
+        return f"_ptr({self.r(int(op.value))})"
+
+    def _math(self, code: str, ops: list[Operand]) -> list[str]:
+        v = self.val
+        x = v(ops[1]) if len(ops) > 1 else None
+        y = v(ops[2]) if len(ops) > 2 else None
+        target = ops[0]
+        exprs = {
+            "610": lambda: f"abs({x})",
+            "613": lambda: f"_sqrt({x})",
+            "614": lambda: f"_hypot({x}, {y})",
+            "630": lambda: f"_sin({x} * _DEG)",
+            "631": lambda: f"_cos({x} * _DEG)",
+            "632": lambda: f"_rt.tan({x})",
+            "634": lambda: f"_asin({x}) / _DEG",
+            "637": lambda: f"_rt.angle({x}, {y})",
+            "640": lambda: f"_log({x})",
+            "641": lambda: f"_exp({x})",
+            "650": lambda: f"_rt.pattern_op('OR', {x}, {y})",
+            "651": lambda: f"_rt.pattern_op('XOR', {x}, {y})",
+            "652": lambda: f"_rt.pattern_op('AND', {x}, {y})",
+            "653": lambda: f"_rt.pattern_op('NAND', {x}, {y})",
+            "654": lambda: f"_rt.pattern_op('NOT', {x}, 0.0)",
+            "655": lambda: f"(1.0 if ({x} != 0.0 or {y} != 0.0) else 0.0)",
+            "656": lambda: f"(1.0 if (({x} != 0.0) != ({y} != 0.0)) else 0.0)",
+            "657": lambda: f"(1.0 if ({x} != 0.0 and {y} != 0.0) else 0.0)",
+            "658": lambda: f"(0.0 if ({x} != 0.0 and {y} != 0.0) else 1.0)",
+            "659": lambda: f"(0.0 if {x} != 0.0 else 1.0)",
+        }
+        me = v(target)
+        if code in exprs:
+            return self.store(target, exprs[code]())
+        if code == "620":
+            return self.store(target, f"{me} + 1.0")
+        if code == "621":
+            return self.store(target, f"{me} - 1.0")
+        if code == "622":
+            return self.store(target, f"float(_trunc({me}))")
+        if code in ("660", "661"):
+            return self.store(target, f"_rt.set_bit({me}, {int(ops[1].value)}, {1 if code == '661' else 0})")
+        if code.startswith("67"):
+            if code == "670":
+                return self.store(target, f"(1.0 if {x} != 0.0 else 0.0)")
+            return self.store(target, f"(1.0 if {x} {COMPARE[code[2]]} {y} else 0.0)")
+        raise AssertionError(code)
+
+
+def _jump_numbers(it: AtInstr):
+    code, ops = it.code, it.operands
+    if code == "100":
+        yield int(ops[0].value) if ops[0].kind == "K" else None
+    elif code == "111":
+        for t in it.operands[2::2]:
+            yield int(t.value)
+    elif code[0] == "1":
+        yield int(ops[2].value)
+
+
+class _Record:
+    """The block record under construction: DIN words, setpoints from @44x, the L call."""
+
+    def __init__(self, cg: UnitCodegen, blk: NcBlock):
+        self.cg = cg
+        self.blk = blk
+        self.g: list[float] = []
+        self.m: list[int] = []
+        self.words: list[tuple[str, str, bool]] = []  # (key expr, value expr, constant?)
+        self.msg: str | None = None
+        self.changed = False  # an @ code or R word ran since the last word was read
+        self.machine_coords = False
+        self.call: str | None = None
+        self.passes = "1"
+        self.d: str | None = None
+        self.g16: list[tuple[str, bool]] = []
+        self.int_sec: tuple[str, str] | None = None
+        self.meas: tuple[str, str] | None = None
+        self._captured = 0
+
+    def note(self, it: Note) -> None:
+        if it.text.upper().startswith("MSG"):
+            self.msg = it.text[3:].lstrip(" ,:").strip()
+
+    def word(self, out: PySource, w: Word) -> None:
+        cg = self.cg
+        a = w.address
+        if w.value is None and w.rref is None:
+            if 16 in self.g or self.g16:
+                self.g16.append((a.rstrip("-"), a.endswith("-")))
+                return
+            out.emit(f"_rt.fault('SIN001', 'address {a} without a value', {self.blk.line})")
+            return
+        if w.rref is not None:
+            sign, n = w.rref
+            expr = cg.r(n) if sign > 0 else f"-{cg.r(n)}"
+            const = False
+        else:
+            expr = _num(w.value)
+            const = True
+        if a == "G" or a == "M":
+            if not const:
+                out.emit(f"_rt.fault('SIN001', '{a}=R{w.rref[1]}: G and M words take numbers only', "
+                         f"{self.blk.line})")
+                return
+            if a == "G":
+                gv = float(w.value)
+                self.g.append(int(gv) if gv == int(gv) else gv)
+            else:
+                self.m.append(int(w.value))
+            return
+        if a == "L":
+            self.call = f"_int({expr})" if not const else str(int(w.value))
+            return
+        if a == "D":
+            self.d = expr
+            return
+        if a == "B" and "B" not in cg.axes:
+            a = "R"  # SINUMERIK 8xx radius address for circles (B100, L4237)
+        if not const:
+            # values are captured when the word is read; later @ code in the block may change R
+            tmp = f"_w{self._captured}"
+            self._captured += 1
+            out.emit(f"{tmp} = {expr}", self.blk.line)
+            expr = tmp
+        self.words.append((repr(a), expr, const))
+
+    def setpoint(self, out: PySource, code: str, ops: list[Operand]) -> None:
+        """@440 PRAP, @442 PRSS, @446 PRAD, @447 PANG, @448 PRIP, @44b/@44c control bits."""
+        cg = self.cg
+        line = self.blk.line
+        value = cg.val(ops[-1])
+        tmp = f"_w{self._captured}"
+        self._captured += 1
+        out.emit(f"{tmp} = {value}", line)
+        if code in ("440", "448"):
+            axis = cg.val(ops[0])
+            key = f"_rt.axis_name({axis}, {line})"
+            if code == "448":
+                key = f"_rt.centre_name({axis}, {line})"
+            self.words.append((key, tmp, False))
+        elif code == "442":
+            self.words.append(("'S'", tmp, False))
+        elif code == "446":
+            self.words.append(("'R'", tmp, False))
+        elif code == "447":
+            out.emit(f"_rt.fault('SIN005', 'PANG (angle address in the block) is not supported by this NC "
+                     f"model', {line})", line)
+        else:
+            out.emit(f"_rt.write({code!r}, ({', '.join(cg.val(o) for o in ops)},))", line)
+
+    def finish(self, out: PySource, jumping: bool = False) -> None:
+        """Lines that execute the block record collected so far."""
+        cg = self.cg
+        line = self.blk.line
+        g = [x for x in self.g if x not in (58, 59, 16)]
+        if self.machine_coords:
+            g.append(53)
+        m17 = 17 in self.m
+        m = [x for x in self.m if x != 17]
+        src = Src(cg.prog.path, line)
+        words = self.words
+        if self.call is not None:
+            words = [w for w in words if w[0] != "'P'"]
+            passes = [w for w in self.words if w[0] == "'P'"]
+            self.passes = f"_int({passes[-1][1]})" if passes else "1"
+        if self.g16:
+            out.emit(f"_rt.g16({self.g16!r}, {line})", line)
+        if any(x in (58, 59) for x in self.g):
+            group = 1 if 58 in self.g else 2
+            pairs = ", ".join(f"({k}, {v})" for k, v, _c in words)
+            out.emit(f"_rt.programmable_zo({group}, [{pairs}], {line})", line)
+            words = []
+        if self.d is not None:
+            out.emit(f"_rt.select_d({self.d}, {line})", line)
+        if self.int_sec is not None:
+            pairs = ", ".join(f"{k}: {v}" for k, v, _c in words)
+            out.emit("@SYNC_OUT", line)
+            out.emit(f"_rt.int_sec({self.int_sec[0]}, {self.int_sec[1]}, {{{pairs}}}, {line})", line)
+            out.emit("@SYNC_IN", line)
+            words = []
+        if self.meas is not None:
+            pairs = ", ".join(f"{k}: {v}" for k, v, _c in words)
+            out.emit("@SYNC_OUT", line)
+            out.emit(f"_wm = _rt.meas({self.meas[0]}, {self.meas[1]}, {{{pairs}}}, {line})", line)
+            out.emit("@SYNC_IN", line)
+            srcname = cg.const(src, "_S")
+            out.emit(f"_ex(_Block({tuple(g)!r}, {tuple(m)!r}, _wm, {self.blk.n!r}, {self.msg!r}, {srcname}))", line)
+            g, m, words = [], [], []
+        axis_keys = {repr(a) for a in cg.axes}
+        fast = (not m and self.msg is None and len(g) <= 1 and all(x in (0, 1) for x in g) and words
+                and all(k in axis_keys for k, _v, _c in words))
+        if fast:
+            # a plain G0/G1 block: straight to the kernel's move path, as execute() would do
+            d = ", ".join(f"{k}: {v}" for k, v, _c in words)
+            srcname = cg.const(src, "_S")
+            if g:
+                out.emit(f"_K.motion = {g[0]}; _lin(_K, {g[0]}, {{{d}}}, {srcname})", line)
+            else:
+                out.emit("_mo = _K.motion", line)
+                out.emit(f"if _mo < 2: _lin(_K, _mo, {{{d}}}, {srcname})", line)
+                out.emit(f"else: _ex(_Block((), (), {{{d}}}, {self.blk.n!r}, None, {srcname}))", line)
+        elif g or m or words or self.msg is not None:
+            if all(c for _k, _v, c in words):
+                blk = Block(tuple(g), tuple(m), {eval(k): float(v) for k, v, _c in words}, self.blk.n,
+                            self.msg, src)
+                name = cg.const(blk, "_B")
+                out.emit(f"_ex({name})", line)
+            else:
+                srcname = cg.const(src, "_S")
+                d = ", ".join(f"{k}: {v}" for k, v, _c in words)
+                out.emit(f"_ex(_Block({tuple(g)!r}, {tuple(m)!r}, {{{d}}}, {self.blk.n!r}, {self.msg!r}, "
+                         f"{srcname}))", line)
+            if any(x in (0, 1, 2, 30) for x in m):
+                out.emit("if (_K.ended or _K.stopped_at) and _rt.halt(): return 1", line)
+        if self.call is not None:
+            out.emit("_ctr.steps += _st; _st = 0", line)
+            out.emit("@SYNC_OUT", line)
+            out.emit(f"_rt.call({self.call}, {self.passes}, {line})", line)
+            out.emit("@SYNC_IN", line)
+            out.emit("_lim = _ctr.limit - _ctr.steps", line)
+            out.emit("if _K.ended or _rt.halted: return 1", line)
+        if m17 and not jumping:
+            out.emit("return 0", line)

@@ -1,0 +1,159 @@
+"""The NC's data: machine and setting data, tool and zero offsets, MIB, PLC, inputs, alarms.
+
+Loaded from the machine file's ``[sin800]`` section (docs/sin800.md), then
+overlaid with what earlier runs stored (the NC keeps these in battery-backed
+memory: here the SQLite store, namespace ``sin800``). Bytes are held as
+digit-coded patterns (``00010010`` is the number 10010, digest §2.1).
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from ...diagnostics import UsageError
+
+NAMESPACE = "sin800"
+#: data areas kept by address (word or byte address -> number)
+AREAS = ("nc_md", "cycle_md", "plc_md", "drive_md", "nc_sd", "cycle_sd")
+KNOWN_KEYS = {"control", "channel", "m0", "block_skip", "max_call_depth", "r", "mib", "tool_offsets",
+              "zero_offsets", "rotation", "inputs", "plc", "alarms", "sob", "cycle_alarm_stop", "to_area",
+              *AREAS}
+PERSISTED = (*AREAS, "to", "zo", "rot", "mib", "central_r")
+
+
+class Cl800Error(Exception):
+    """The NC alarm "CL 800 error" (manual L725-728, digest §8): the channel stops."""
+
+
+def pattern_to_int(value: float) -> int:
+    """A digit-coded pattern (e.g. 10010.0) as its 8-bit integer."""
+    if value < 0 or value != int(value):
+        raise Cl800Error(f"{value:g} is not a bit pattern")
+    text = str(int(value))
+    if len(text) > 8 or any(c not in "01" for c in text):
+        raise Cl800Error(f"{text} is not a bit pattern (at most 8 digits 0/1)")
+    return int(text, 2)
+
+
+def int_to_pattern(bits: int) -> float:
+    return float(int(bin(bits & 0xFF)[2:]))
+
+
+def _pattern_value(where: str, key: str, v: Any) -> float:
+    if isinstance(v, str):
+        text = v.strip()
+        if text.upper().startswith("B"):
+            text = text[1:]
+        if not text or any(c not in "01" for c in text) or len(text) > 8:
+            raise UsageError(f"{where}: key '{key}' must be a bit pattern like \"00010010\"")
+        return float(int(text))
+    if isinstance(v, (int, float)) and not isinstance(v, bool):
+        return float(v)
+    raise UsageError(f"{where}: key '{key}' must be a number or a bit pattern string")
+
+
+class NcData:
+    """Everything a program reaches through main groups 2, 3 and 4 besides the R parameters."""
+
+    def __init__(self, n_axes: int):
+        self.n_axes = n_axes
+        self.control = "880"
+        self.channel = 1
+        self.areas: dict[str, dict[str, float]] = {a: {} for a in AREAS}
+        self.to: dict[str, list[float]] = {}  # "area:d" -> P0..P15
+        self.to_area = 0
+        # zero offsets: settable G54..G57 coarse/fine, programmable G58/G59, external, DRF, PRESET
+        self.zo: dict[str, list[float]] = {}
+        self.rot: dict[str, float] = {}  # "settable:g" / "programmable:g" -> angle
+        self.mib = [0.0] * 500
+        self.inputs = [0, 0, 0]  # external input bytes 1 and 2 (index 0 unused)
+        self.plc: dict[int, dict[str, dict]] = {}
+        self.alarms: list[tuple[int, int]] = []  # (number, channel)
+        self.sob: dict[str, float] = {}
+        self.central_r: dict[str, float] = {}
+        self.dirty: set[str] = set()
+
+    # -- loading ---------------------------------------------------------
+    @classmethod
+    def from_machine(cls, machine) -> "NcData":
+        data = cls(len(machine.axes))
+        sec = machine.sections.get("sin800", {})
+        where = f"{machine.source}: [sin800]"
+        for key in sec:
+            if key not in KNOWN_KEYS:
+                raise UsageError(f"{where}: unknown key 'sin800.{key}' (known: {', '.join(sorted(KNOWN_KEYS))})")
+        data.control = str(sec.get("control", "880"))
+        if data.control not in ("810", "820", "850", "880"):
+            raise UsageError(f"{where}: key 'sin800.control' must be \"810\", \"820\", \"850\" or \"880\"")
+        data.channel = int(sec.get("channel", 1))
+        data.to_area = int(sec.get("to_area", 0))
+        for area in AREAS:
+            for addr, v in sec.get(area, {}).items():
+                data.areas[area][str(addr)] = _pattern_value(where, f"sin800.{area}.{addr}", v)
+        for i, t in enumerate(sec.get("tool_offsets", [])):
+            if "d" not in t or "p" not in t:
+                raise UsageError(f"{where}: key 'sin800.tool_offsets[{i}]' needs 'd' and 'p' (P0..P15)")
+            p = [float(x) for x in t["p"]] + [0.0] * 16
+            data.to[f"{int(t.get('area', 0))}:{int(t['d'])}"] = p[:16]
+        for name, v in sec.get("zero_offsets", {}).items():
+            if isinstance(v, dict):
+                for part in ("coarse", "fine"):
+                    if part in v:
+                        data.zo[f"{name.upper()}.{part}"] = data._vector(where, f"zero_offsets.{name}.{part}",
+                                                                         v[part])
+            else:
+                data.zo[name.upper()] = data._vector(where, f"zero_offsets.{name}", v)
+        for kind, angles in sec.get("rotation", {}).items():
+            for g, a in enumerate(angles, 1):
+                data.rot[f"{kind}:{g}"] = float(a)
+        for addr, v in sec.get("mib", {}).items():
+            data.mib[int(addr)] = float(v)
+        for byte, v in sec.get("inputs", {}).items():
+            data.inputs[int(byte)] = pattern_to_int(_pattern_value(where, f"sin800.inputs.{byte}", v))
+        for plc_no, areas in sec.get("plc", {}).items():
+            data.plc[int(plc_no)] = {k.upper(): dict(v) for k, v in areas.items()}
+        for a in sec.get("alarms", []):
+            data.alarms.append((int(a), data.channel))
+        data.sob = {str(k): float(v) for k, v in sec.get("sob", {}).items()}
+        for name, v in sec.get("r", {}).items():
+            n = int(str(name).upper().lstrip("R"))
+            if n >= 900:
+                data.central_r[str(n)] = float(v)
+        return data
+
+    def _vector(self, where: str, key: str, v) -> list[float]:
+        if not isinstance(v, list) or len(v) != self.n_axes:
+            raise UsageError(f"{where}: key 'sin800.{key}' must be a list of {self.n_axes} numbers")
+        return [float(x) for x in v]
+
+    def overlay(self, stored: dict[str, Any]) -> None:
+        """What earlier runs left in the store wins over the machine file."""
+        for area in AREAS:
+            self.areas[area].update(stored.get(area, {}))
+        self.to.update(stored.get("to", {}))
+        self.zo.update(stored.get("zo", {}))
+        self.rot.update(stored.get("rot", {}))
+        self.central_r.update(stored.get("central_r", {}))
+        if "mib" in stored:
+            self.mib = [float(x) for x in stored["mib"]]
+
+    def persisted(self) -> dict[str, Any]:
+        out: dict[str, Any] = {}
+        for key in self.dirty:
+            if key in self.areas:
+                out[key] = self.areas[key]
+            elif key in ("to", "zo", "rot", "central_r", "mib"):
+                out[key] = getattr(self, key)
+        return out
+
+    # -- zero offsets ----------------------------------------------------
+    def zo_vec(self, name: str) -> list[float]:
+        return self.zo.setdefault(name, [0.0] * self.n_axes)
+
+    def additive(self) -> list[float]:
+        """Programmable (G58 + G59), external, DRF and PRESET offsets, summed per axis."""
+        out = [0.0] * self.n_axes
+        for name in ("G58", "G59", "EXTERNAL", "DRF", "PRESET"):
+            if name in self.zo:
+                out = [a + b for a, b in zip(out, self.zo[name])]
+        return out

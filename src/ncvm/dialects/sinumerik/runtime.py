@@ -1,0 +1,285 @@
+"""The channel at run time: R parameters, push stack, calls, and the helpers generated code calls.
+
+One :class:`Channel` per run. Generated units (see codegen) receive it as
+``_rt``; hot operations (R arithmetic, jumps, comparisons) are inline Python,
+everything that touches NC data goes through the methods here.
+"""
+
+from __future__ import annotations
+
+import math
+import sys
+
+from ...diagnostics import Frame, RuntimeFault, Span
+from ...nc.block import Block
+from ...runtime.codegen import program_lines
+from .ncdata import Cl800Error, NcData, int_to_pattern, pattern_to_int
+from .sysmem import SysMem
+
+DEG = math.pi / 180.0
+#: project alarm codes (the manual names only "CL 800 error" and the cycle alarms 4000-5299)
+ALARMS = {
+    "CL800": "CL 800 error (operand out of range, missing data, arithmetic error)",
+    "SIN001": "block cannot be read",
+    "SIN002": "unknown @ code",
+    "SIN003": "wrong operands for the @ code",
+    "SIN004": "jump target block not found in the search direction",
+    "SIN005": "function not available in this NC model",
+    "SIN006": "push/pop stack error",
+    "SIN007": "waiting for an input that never changes",
+    "RUN002": "sub-program not found",
+    "RUN003": "sub-program nesting too deep",
+}
+
+
+def _ptr(value: float) -> int:
+    n = int(value)
+    if n != value or not 0 <= n <= 999:
+        raise Cl800Error(f"pointer value {value:g} is not an R parameter number (0-999)")
+    return n
+
+
+def _int(value: float) -> int:
+    n = int(value)
+    if n != value:
+        raise Cl800Error(f"{value:g} is not a whole number")
+    return n
+
+
+NAMESPACE_GLOBALS = {
+    "_Block": Block, "_int": _int, "_ptr": _ptr, "_sqrt": math.sqrt, "_hypot": math.hypot, "_sin": math.sin,
+    "_cos": math.cos, "_asin": math.asin, "_log": math.log, "_exp": math.exp, "_trunc": math.trunc, "_DEG": DEG,
+}
+
+
+class Halt(Exception):
+    """M0 / M2 / M30 reached inside a sub-program: unwind every level."""
+
+
+class Channel(SysMem):
+    """One NC channel running a main program and its sub-programs."""
+
+    def __init__(self, session, data: NcData, loader):
+        self.session = session
+        self.kernel = session.kernel
+        self.execute = session.kernel.execute
+        self.counter = session.steps
+        self.data = data
+        self.loader = loader  # number -> compiled unit (or None)
+        sec = session.machine.sections.get("sin800", {})
+        self.block_skip = bool(sec.get("block_skip", session.machine.setting_data.get("block_skip", True)))
+        self.m0_stops = str(sec.get("m0", "stop")) == "stop"
+        self.max_depth = int(sec.get("max_call_depth", 8))
+        self.cycle_alarm_stop = bool(sec.get("cycle_alarm_stop", True))
+        self.R = [0.0] * 1000
+        self.written: set[int] = set()
+        for name, v in sec.get("r", {}).items():
+            self.R[int(str(name).upper().lstrip("R"))] = float(v)
+        for k, v in data.central_r.items():
+            self.R[int(k)] = float(v)
+        self.push_stack: list[tuple[tuple[int, ...], list[float]]] = []
+        self.frames: list[Frame] = []
+        self.halted = False
+        self.ess_enabled = False
+        self.panel: list[str] = []
+        self.v24: list[str] = []
+        self.tool_d = 0
+        SysMem.__init__(self)
+        self._scenario = list(session.machine.scenario)
+        self.apply_offsets()
+
+    # -- running units ---------------------------------------------------
+    def run_unit(self, unit, frame_name: str, call_span: Span | None) -> int:
+        """Run a compiled unit; faults get the unit's line and the call stack."""
+        self.frames.append(Frame(frame_name, call_span))
+        self._paths.append(unit.path)
+        try:
+            return unit.fn(self)
+        except RuntimeFault as f:
+            self._locate(f, unit)
+            raise
+        except Cl800Error as e:
+            f = RuntimeFault("CL800", f"CL 800 error: {e}")
+            self._locate(f, unit)
+            raise f from None
+        except (ZeroDivisionError, ValueError, OverflowError) as e:
+            text = "division by zero" if isinstance(e, ZeroDivisionError) else f"arithmetic error ({e})"
+            f = RuntimeFault("CL800", f"CL 800 error: {text}")
+            self._locate(f, unit)
+            raise f from None
+        finally:
+            self.frames.pop()
+            self._paths.pop()
+
+    def _locate(self, f: RuntimeFault, unit) -> None:
+        if f.span is None:
+            lines = program_lines(sys.exc_info()[2], unit.source.filename)
+            if lines:
+                f.span = Span(unit.path, unit.source.source_line(lines[-1]))
+        if not f.stack:
+            f.stack = [Frame(fr.unit, None) for fr in self.frames]
+            for i in range(len(self.frames) - 1):
+                f.stack[i] = Frame(self.frames[i].unit, self.frames[i + 1].span)
+            f.stack[-1] = Frame(self.frames[-1].unit, f.span)
+
+    def call(self, number: int, passes: int, line: int) -> None:
+        """``L<n> P<k>``: run sub-program n k times (digest §10.3)."""
+        span = Span(self._current_path(), line)
+        if len(self.frames) > self.max_depth:
+            raise RuntimeFault("RUN003", f"L{number}: sub-program nesting deeper than {self.max_depth} levels",
+                               span)
+        unit = self.loader(number)
+        if unit is None:
+            raise RuntimeFault("RUN002", f"sub-program L{number} not found (looked for L{number}.spf and "
+                                         f"%SPF{number} files along the program path)", span)
+        for _ in range(max(1, passes)):
+            if self.run_unit(unit, f"L{number}", span):
+                self.halted = True
+                return
+
+    def _current_path(self) -> str:
+        return self._paths[-1] if self._paths else ""
+
+    def halt(self) -> bool:
+        """After M0/M1/M2/M30: True when the run stops here."""
+        k = self.kernel
+        if k.ended:
+            self.halted = True
+            return True
+        if k.stopped_at == "M0" and self.m0_stops:
+            self.halted = True
+            self.session.say("program stopped at M0")
+            return True
+        k.stopped_at = None
+        return False
+
+    def runaway(self, line: int):
+        self.counter.runaway(self._current_path(), line)
+
+    def no_block(self, number: int, line: int):
+        direction = "backward" if number < 0 else "forward"
+        raise RuntimeFault("SIN004", f"@100: block N{abs(number)} not found searching {direction}")
+
+    def dynamic_target(self, table: dict, value: float, index: int, line: int) -> int:
+        number = _int(value)
+        candidates = table.get(abs(number), [])
+        if number < 0:
+            for i, label in reversed(candidates):
+                if i <= index:
+                    return label
+        else:
+            for i, label in candidates:
+                if i > index:
+                    return label
+        self.no_block(number, line)
+
+    def fault(self, code: str, message: str, line: int):
+        raise RuntimeFault(code, message)
+
+    # -- main groups 0 and 2 ---------------------------------------------
+    def ess(self) -> None:
+        self.ess_enabled = True
+
+    def push(self, regs: tuple[int, ...], line: int) -> None:
+        R = self.R
+        self.push_stack.append((regs, [R[n] for n in regs]))
+        for n in regs:
+            R[n] = 0.0
+
+    def pop(self, regs: tuple[int, ...], line: int) -> None:
+        if not self.push_stack:
+            raise RuntimeFault("SIN006", "pop (@042/@043) with an empty push stack")
+        saved, values = self.push_stack.pop()
+        if saved != regs:
+            raise RuntimeFault("SIN006", f"pop of R{regs[0]}.. does not match the last push of R{saved[0]}..")
+        for n, v in zip(regs, values):
+            self.R[n] = v
+
+    def xchg(self, a: int, b: int) -> None:
+        R = self.R
+        R[a], R[b] = R[b], R[a]
+
+    def bit(self, pattern: float, k: int) -> float:
+        if not 0 <= k <= 7:
+            raise Cl800Error(f"bit number {k} is not 0-7")
+        return float((pattern_to_int(pattern) >> k) & 1)
+
+    def set_bit(self, pattern: float, k: int, value: int) -> float:
+        if not 0 <= k <= 7:
+            raise Cl800Error(f"bit number {k} is not 0-7")
+        bits = pattern_to_int(pattern)
+        bits = bits | (1 << k) if value else bits & ~(1 << k)
+        return int_to_pattern(bits)
+
+    def pattern_op(self, op: str, a: float, b: float) -> float:
+        x, y = pattern_to_int(a), pattern_to_int(b)
+        r = {"OR": x | y, "XOR": x ^ y, "AND": x & y, "NAND": ~(x & y), "NOT": ~x}[op]
+        return int_to_pattern(r & 0xFF)
+
+    def _mib_index(self, v: float) -> int:
+        n = _int(v)
+        top = 499 if self.data.control in ("850", "880") else 249
+        if not 0 <= n <= top:
+            raise Cl800Error(f"MIB address {n} outside 0-{top}")
+        return n
+
+    def mib_clear(self, a: float, b: float) -> None:
+        lo, hi = self._mib_index(a), self._mib_index(b)
+        for i in range(lo, hi + 1):
+            self.data.mib[i] = 0.0
+        self.data.dirty.add("mib")
+
+    def mib_read(self, a: float) -> float:
+        return self.data.mib[self._mib_index(a)]
+
+    def mib_write(self, a: float, v: float) -> None:
+        self.data.mib[self._mib_index(a)] = v
+        self.data.dirty.add("mib")
+
+    # -- main group 6 helpers --------------------------------------------
+    def tan(self, x: float) -> float:
+        c = math.cos(x * DEG)
+        if abs(c) < 1e-12:
+            raise Cl800Error(f"TAN({x:g}) is not defined")
+        return math.sin(x * DEG) / c
+
+    def angle(self, a: float, b: float) -> float:
+        d = math.degrees(math.atan2(a, b))
+        return d + 360.0 if d < 0.0 else d
+
+    # -- external inputs and the scenario --------------------------------
+    def advance_scenario(self) -> None:
+        now = self.session.machine.clock.now
+        while self._scenario and self._scenario[0].time <= now:
+            self._apply_event(self._scenario.pop(0))
+
+    def _apply_event(self, ev) -> None:
+        d = ev.data
+        if ev.kind == "input":
+            byte, bit, value = int(d.get("byte", 1)), int(d.get("bit", 0)), int(d.get("value", 1))
+            if value:
+                self.data.inputs[byte] |= 1 << bit
+            else:
+                self.data.inputs[byte] &= ~(1 << bit)
+        elif ev.kind == "plc":
+            self.plc_set_event(d)
+        elif ev.kind == "alarm":
+            self.data.alarms.append((int(d.get("number", 0)), self.data.channel))
+        elif ev.kind == "probe":
+            self.probes.append(d)
+
+    def ext_input(self, byte: float, bit: float) -> bool:
+        b, k = _int(byte), _int(bit)
+        if b not in (1, 2) or not 0 <= k <= 7:
+            raise Cl800Error(f"external input {b}.{k} does not exist (byte 1/2, bit 0-7)")
+        self.advance_scenario()
+        return bool((self.data.inputs[b] >> k) & 1)
+
+    def wait_input(self, byte: int, bit: int, level: bool, what: str) -> None:
+        """Simulated time runs on until the scripted input reaches ``level``."""
+        clock = self.session.machine.clock
+        while self.ext_input(byte, bit) != level:
+            if not self._scenario:
+                raise RuntimeFault("SIN007", f"{what}: input {byte}.{bit} never becomes {int(level)} "
+                                             f"(no further scenario event)")
+            clock.advance(self._scenario[0].time - clock.now)

@@ -1,0 +1,649 @@
+"""Main groups 3, 4, 7 and a: system memory <-> R parameters, NC functions, I/O (digest §4.3-4.7).
+
+Reads are ``read(code, target, args)`` (the result goes to R<target>, and on
+for multi-register results); writes are ``write(code, args)`` with the value
+last. Each table row names the data area, the access width and the address
+range of manual ch.10; a value outside a range is the NC alarm "CL 800 error".
+"""
+
+from __future__ import annotations
+
+import math
+
+from ...diagnostics import RuntimeFault
+from .contour import check_window, contour_elements, intersect
+from .ncdata import Cl800Error, int_to_pattern, pattern_to_int
+
+#: code -> (area, width, (lo, hi) address range); width: word, byte, bit
+MD_SD = {
+    "0": ("nc_md", "word", (0, 4999)), "1": ("nc_md", "byte", (5000, 6999)), "2": ("nc_md", "bit", (5000, 6999)),
+    "3": ("cycle_md", "word", (0, 4149)), "4": ("cycle_md", "byte", (800, 8049)),
+    "5": ("cycle_md", "bit", (800, 8049)),
+    "6": ("plc_md", "word", (0, 5999)), "7": ("plc_md", "byte", (2000, 8999)), "8": ("plc_md", "bit", (2000, 8999)),
+    "9": ("drive_md", "word", (0, 4960)), "a": ("drive_md", "byte", (2440, 4630)),
+    "b": ("drive_md", "bit", (2440, 4630)),
+}
+SD = {
+    "0": ("nc_sd", "word", (0, 4999)), "1": ("nc_sd", "byte", (5000, 9999)), "2": ("nc_sd", "bit", (5000, 9999)),
+    "3": ("cycle_sd", "word", (0, 499)), "4": ("cycle_sd", "byte", (800, 949)), "5": ("cycle_sd", "bit", (800, 949)),
+}
+CHANNEL_ARG = {"cycle_md", "cycle_sd"}  # first argument is the channel (0 = own)
+PLC_BIT_AREA = {"380": "I", "381": "Q", "382": "F", "482": "F"}
+PLC_BYTE_AREA = {"390": "I", "391": "Q", "392": "P", "393": "F", "493": "F"}
+PLC_WORD_AREA = {"3a0": "I", "3a1": "Q", "3a2": "P", "3a3": "F", "4a3": "F"}
+ACG_GROUPS = {0: (0, 1, 10, 11, 2, 3, 33, 34, 35, 6, 12, 13, 5, 7), 1: (9,), 2: (17, 18, 19, 16), 3: (40, 41, 42),
+              4: (53,), 5: (54, 55, 56, 57), 6: (4, 25, 26, 58, 59, 92, 74), 7: (60, 63, 64, 62), 8: (70, 71),
+              9: tuple(range(80, 90)), 10: (90, 91, 68), 11: (94, 95, 96, 97), 13: (50, 51)}
+
+
+def _i(v: float) -> int:
+    n = int(v)
+    if n != v:
+        raise Cl800Error(f"{v:g} is not a whole number")
+    return n
+
+
+def _rng(what: str, v: float, lo: int, hi: int) -> int:
+    n = _i(v)
+    if not lo <= n <= hi:
+        raise Cl800Error(f"{what} {n} outside {lo}-{hi}")
+    return n
+
+
+class SysMem:
+    """Mixed into the channel: system memory access, NC functions and I/O."""
+
+    def __init__(self):
+        self.probes: list[dict] = []
+        self.contours: dict[int, list] = {}
+        self.g16_plane: tuple[int, int, int] | None = None
+        self.g16_minus = (False, False, False)
+        self._paths: list[str] = []
+
+    # -- axes --------------------------------------------------------------
+    def _axis(self, v: float) -> int:
+        """Axis number 1..n (manual: 1-24 on the 880) -> axis index."""
+        return _rng("axis number", v, 1, self.kernel.n_axes) - 1
+
+    def axis_name(self, v: float, line: int) -> str:
+        return self.kernel.axis_names[self._axis(v)]
+
+    def centre_name(self, v: float, line: int) -> str:
+        name = self.axis_name(v, line)
+        centre = {"X": "I", "Y": "J", "Z": "K"}.get(name)
+        if centre is None:
+            raise Cl800Error(f"PRIP: axis {name} has no interpolation parameter")
+        return centre
+
+    # -- offsets ---------------------------------------------------------
+    def apply_offsets(self) -> None:
+        """Settable ZO = coarse + fine into the machine's G54..G57; the rest as additive offsets."""
+        m = self.session.machine
+        d = self.data
+        for g in (54, 55, 56, 57):
+            name = f"G{g}"
+            if f"{name}.coarse" in d.zo or f"{name}.fine" in d.zo:
+                c, f = d.zo_vec(f"{name}.coarse"), d.zo_vec(f"{name}.fine")
+                m.offsets[name] = [a + b for a, b in zip(c, f)]
+        self.kernel.set_additive_offset(d.additive())
+
+    def _zo_changed(self) -> None:
+        self.data.dirty.add("zo")
+        self.apply_offsets()
+
+    def programmable_zo(self, group: int, words: list, line: int) -> None:
+        vec = self.data.zo_vec(f"G{57 + group}")
+        for name, value in words:
+            if name not in self.kernel.axis_of:
+                raise Cl800Error(f"G{57 + group}: {name} is not an axis")
+            vec[self.kernel.axis_of[name]] = value * self.kernel.scale
+        self._zo_changed()
+
+    def select_d(self, d: float, line: int) -> None:
+        """D word: tool offset D of the channel's TO area; length = P2 + P5 + P8 on the tool axis."""
+        n = _i(d)
+        self.tool_d = n
+        if n == 0:
+            length = 0.0
+        else:
+            p = self.data.to.get(f"{self.data.to_area}:{n}")
+            if p is None:
+                raise RuntimeFault("NC008", f"D{n}: no tool offset D{n} in TO area {self.data.to_area}")
+            tool_type = int(p[1])
+            length = p[3] + p[6] + p[9] if 1 <= tool_type <= 9 else p[2] + p[5] + p[8]
+        self.kernel.set_tool_length(length, _src(self, line))
+
+    def g16(self, letters: list, line: int) -> None:
+        axes = []
+        minus = []
+        for name, neg in letters:
+            if name not in self.kernel.axis_of:
+                raise Cl800Error(f"G16: {name} is not an axis")
+            axes.append(self.kernel.axis_of[name] + 1)
+            minus.append(neg)
+        if len(axes) < 2:
+            raise Cl800Error("G16 needs at least two axes")
+        while len(axes) < 3:
+            axes.append(0)
+        while len(minus) < 3:
+            minus.append(False)
+        self.g16_plane = tuple(axes[:3])
+        self.g16_minus = tuple(minus[:3])
+        plane = {(1, 2): 17, (3, 1): 18, (2, 3): 19}.get((axes[0], axes[1]))
+        if plane:
+            self.kernel.plane = plane
+
+    # -- reads (main group 3) ---------------------------------------------
+    def read(self, code: str, target: int, args: tuple) -> None:
+        value = self._read(code, target, args)
+        R = self.R
+        if isinstance(value, list):
+            if target + len(value) > 1000:
+                raise Cl800Error(f"result registers R{target}..R{target + len(value) - 1} do not exist")
+            for i, v in enumerate(value):
+                R[target + i] = float(v)
+        else:
+            R[target] = float(value)
+
+    def _read(self, code: str, target: int, args: tuple):
+        sub, fn = code[1], code[2]
+        d = self.data
+        if sub == "0":
+            return self._mem_read(*MD_SD[fn], args)
+        if sub == "1":
+            return self._mem_read(*SD[fn], args)
+        if code == "320":
+            return self._to(args)[_rng("TO parameter P", args[2], 0, 15)]
+        if sub == "3":
+            return self._zo_read(code, args)
+        if code == "342":
+            return self.kernel.speed
+        if code == "345":
+            return 0.0
+        if code in ("34b", "34c", "3e1", "3e2", "3e3"):
+            return self._drive_bit(code, args)
+        if code == "360":
+            return self.kernel.workpiece_position()[self.kernel.axis_names[self._axis(args[0])]]
+        if code in ("361", "362"):
+            i = self._axis(args[0])
+            pos = self.kernel.machine_pos[i] / self.kernel.scale
+            if self.session.machine.axes[i].rotary:
+                return [pos % 360.0, float(math.floor(pos / 360.0))]
+            return pos
+        if code in ("363", "364"):
+            return self.kernel.speed if code == "364" else 0.0
+        if code == "367":
+            plane = self.g16_plane or {17: (1, 2, 3), 18: (3, 1, 2), 19: (2, 3, 1)}[self.kernel.plane]
+            out = [float(a + (128 if m else 0)) for a, m in zip(plane, self.g16_minus)]
+            return out + [0.0, 1.0]
+        if code == "36a":
+            return float(self.tool_d)
+        if code == "36b":
+            return self._acg(_rng("G group", args[1], 0, 23))
+        if code == "371":
+            return d.sob.get(f"{_i(args[0])}:{_i(args[1])}", d.sob.get(str(_i(args[1])), 0.0))
+        if code == "372":
+            return float(d.channel)
+        if sub in "89ab":
+            return self.plc_read(code, args)
+        if code == "3c0":
+            return [n + ch / 100.0 for n, ch in d.alarms] or 0.0
+        if code == "3d0":
+            return float(len(d.alarms))
+        if code == "3e4":
+            return 1.0
+        raise Cl800Error(f"@{code} is not available")
+
+    def _mem_read(self, area: str, width: str, rng: tuple, args: tuple):
+        args = self._channel_args(area, args)
+        table = self.data.areas[area]
+        addr = _rng(f"{area} address", args[0], *rng)
+        if width == "word":
+            return table.get(str(addr), 0.0)
+        if area == "drive_md":  # MDDBY(w, hl): low (0) / high (1) byte of a word
+            word = int(table.get(str(addr), 0.0))
+            hl = _rng("byte (0 low / 1 high)", args[1], 0, 1)
+            byte = (word >> (8 * hl)) & 0xFF
+            if width == "byte":
+                return int_to_pattern(byte)
+            return float((byte >> _rng("bit", args[2], 0, 7)) & 1)
+        pattern = table.get(str(addr), 0.0)
+        if width == "byte":
+            return pattern
+        return float((pattern_to_int(pattern) >> _rng("bit", args[1], 0, 7)) & 1)
+
+    def _channel_args(self, area: str, args: tuple) -> tuple:
+        if area in CHANNEL_ARG:
+            ch = _rng("channel", args[0], 0, 16)
+            if ch not in (0, self.data.channel):
+                raise Cl800Error(f"channel {ch} is not on this NC CPU")
+            return args[1:]
+        return args
+
+    def _to(self, args: tuple) -> list[float]:
+        top_area = {"810": 0, "820": 0, "850": 8, "880": 16}[self.data.control]
+        area = _rng("TO area", args[0], 0, top_area)
+        if area == 0:
+            area = self.data.to_area
+        d = _rng("D number", args[1], 1, {"810": 99, "820": 99, "850": 409, "880": 818}[self.data.control])
+        key = f"{area}:{d}"
+        if key not in self.data.to:
+            self.data.to[key] = [0.0] * 16
+        return self.data.to[key]
+
+    def _zo_read(self, code: str, args: tuple) -> float:
+        d = self.data
+        if code == "330":
+            g = _rng("ZO group", args[0], 1, 4)
+            cf = _rng("coarse/fine", args[2], 0, 1)
+            return d.zo_vec(f"G{53 + g}.{'fine' if cf else 'coarse'}")[self._axis(args[1])] \
+                if f"G{53 + g}.coarse" in d.zo or f"G{53 + g}.fine" in d.zo or cf == 1 \
+                else (self.session.machine.offset(f"G{53 + g}")[self._axis(args[1])] if cf == 0 else 0.0)
+        if code == "331":
+            return d.zo_vec(f"G{57 + _rng('ZO group', args[0], 1, 2)}")[self._axis(args[1])]
+        if code in ("332", "333", "334"):
+            name = {"332": "EXTERNAL", "333": "DRF", "334": "PRESET"}[code]
+            return d.zo_vec(name)[self._axis(args[0])]
+        if code == "336":
+            i = self._axis(args[0])
+            k = self.kernel
+            wo = self.session.machine.offset(k.work_offset)[i] if k.work_offset else 0.0
+            total = wo + sum(d.zo.get(n, [0.0] * d.n_axes)[i] for n in ("G58", "G59", "EXTERNAL"))
+            if i == k.tool_axis:
+                total += k.tool_length
+            return total
+        if code in ("337", "338"):
+            self._channel_args("cycle_md", args[:1])
+            kind = "settable" if code == "337" else "programmable"
+            g = _rng("rotation group", args[1], 1, 4 if code == "337" else 2)
+            return d.rot.get(f"{kind}:{g}", 0.0)
+        raise Cl800Error(f"@{code} is not available")
+
+    def _acg(self, group: int) -> float:
+        k = self.kernel
+        state = {0: k.motion, 2: k.plane, 5: int(k.work_offset[1:]) if k.work_offset else 0,
+                 8: 70 if k.scale != 1.0 else 71, 10: 90 if k.absolute else 91}
+        if group in state:
+            return float(state[group])
+        return float(ACG_GROUPS.get(group, (0,))[0])
+
+    def _drive_bit(self, code: str, args: tuple) -> float:
+        key = f"{code}:{':'.join(str(_i(a)) for a in args)}"
+        return self.data.sob.get(key, 0.0)
+
+    # -- writes (main group 4) -------------------------------------------
+    def write(self, code: str, args: tuple) -> None:
+        sub, fn = code[1], code[2]
+        d = self.data
+        *where, value = args
+        if sub in "01":
+            area, width, rng = (MD_SD if sub == "0" else SD)[fn]
+            where = self._channel_args(area, tuple(where))
+            addr = _rng(f"{area} address", where[0], *rng)
+            table = d.areas[area]
+            if width == "word":
+                table[str(addr)] = float(value)
+            elif width == "byte":
+                pattern_to_int(value)
+                table[str(addr)] = float(value)
+            else:
+                bit = _rng("bit", where[1], 0, 7)
+                if value not in (0.0, 1.0):
+                    raise Cl800Error(f"bit value {value:g} is not 0 or 1")
+                bits = pattern_to_int(table.get(str(addr), 0.0))
+                bits = bits | (1 << bit) if value else bits & ~(1 << bit)
+                table[str(addr)] = int_to_pattern(bits)
+            d.dirty.add(area)
+            return
+        if code in ("420", "423"):
+            p = self._to(tuple(where))
+            i = _rng("TO parameter P", where[2], 0, 15)
+            p[i] = value if code == "420" else p[i] + value
+            d.dirty.add("to")
+            if self.tool_d and _i(where[1]) == self.tool_d:
+                self.select_d(self.tool_d, 0)
+            return
+        if sub == "3":
+            self._zo_write(code, where, value)
+            return
+        if code in ("44b", "44c", "4e1"):
+            d.sob[f"{code}:{':'.join(str(_i(a)) for a in where)}"] = float(value)
+            return
+        if sub in "89ab":
+            self.plc_write(code, tuple(where), value)
+            return
+        if code == "4c0":
+            self.cycle_alarm(value)
+            return
+        raise Cl800Error(f"@{code} is not available")
+
+    def _zo_write(self, code: str, where: list, value: float) -> None:
+        d = self.data
+        if code in ("430", "431"):
+            g = _rng("ZO group", where[0], 1, 4)
+            i = self._axis(where[1])
+            cf = _rng("coarse/fine", where[2], 0, 1)
+            name = f"G{53 + g}"
+            if f"{name}.coarse" not in d.zo:
+                d.zo[f"{name}.coarse"] = list(self.session.machine.offset(name))
+            vec = d.zo_vec(f"{name}.{'fine' if cf else 'coarse'}")
+            vec[i] = value if code == "430" else vec[i] + value
+        elif code == "432":
+            d.zo_vec(f"G{57 + _rng('ZO group', where[0], 1, 2)}")[self._axis(where[1])] = value
+        elif code in ("434", "435"):
+            d.zo_vec("DRF" if code == "434" else "PRESET")[self._axis(where[0])] = value
+        elif code in ("437", "438", "439", "43a"):
+            self._channel_args("cycle_md", tuple(where[:1]))
+            kind = "settable" if code in ("437", "438") else "programmable"
+            g = _rng("rotation group", where[1], 1, 4 if kind == "settable" else 2)
+            key = f"{kind}:{g}"
+            d.rot[key] = value if code in ("437", "439") else d.rot.get(key, 0.0) + value
+            d.dirty.add("rot")
+            return
+        self._zo_changed()
+
+    def cycle_alarm(self, value: float) -> None:
+        n = _i(value)
+        top5 = 5299 if self.data.control == "880" else 5099
+        if not (4000 <= n <= 4299 or 5000 <= n <= top5):
+            raise Cl800Error(f"cycle alarm {n} outside 4000-4299, 5000-{top5}")
+        self.data.alarms.append((n, self.data.channel))
+        self.session.say(f"cycle alarm {n}")
+        if n <= 4299 and self.cycle_alarm_stop:
+            raise RuntimeFault(str(n), f"cycle alarm {n} (ALNZ)")
+
+    # -- PLC (850/880) -----------------------------------------------------
+    def _plc(self, v: float) -> dict:
+        if self.data.control not in ("850", "880"):
+            raise Cl800Error("PLC access needs a SINUMERIK 850 or 880")
+        n = _rng("PLC number", v, 1, 4 if self.data.control == "880" else 2)
+        return self.data.plc.setdefault(n, {})
+
+    def _byte(self, plc: dict, area: str, byte: int, writing: bool = False) -> int:
+        table = plc.setdefault(area, {})
+        if str(byte) not in table:
+            if area == "P" and not writing:
+                raise Cl800Error(f"peripheral byte {byte} does not exist: the PLC goes to STOP")
+            return 0
+        v = table[str(byte)]
+        return pattern_to_int(float(v)) if isinstance(v, (int, float)) else int(str(v), 2)
+
+    def _dw(self, plc: dict, db: float, dw: float) -> int:
+        b = _i(db)
+        if not (1 <= b <= 255 or 1000 <= b <= 1255):
+            raise Cl800Error(f"data block {b} outside DB 1-255 / DX 1000-1255")
+        words = plc.setdefault("DB", {}).get(str(b))
+        n = _rng("data word", dw, 0, 2043)
+        if words is None or n >= len(words):
+            raise Cl800Error(f"DB{b} DW{n} does not exist in the PLC")
+        return int(words[n]) & 0xFFFF
+
+    def plc_read(self, code: str, args: tuple):
+        plc = self._plc(args[0])
+        if code in PLC_BIT_AREA:
+            top = 255 if PLC_BIT_AREA[code] == "F" else 127
+            return float((self._byte(plc, PLC_BIT_AREA[code], _rng("byte", args[1], 0, top))
+                          >> _rng("bit", args[2], 0, 7)) & 1)
+        if code == "383":
+            return float((self._dw(plc, args[1], args[2]) >> _rng("bit", args[3], 0, 15)) & 1)
+        if code in PLC_BYTE_AREA:
+            top = 255 if PLC_BYTE_AREA[code] == "F" else 127
+            return int_to_pattern(self._byte(plc, PLC_BYTE_AREA[code], _rng("byte", args[1], 0, top)))
+        if code in ("394", "395"):
+            w = self._dw(plc, args[1], args[2])
+            return int_to_pattern(w >> 8 if code == "394" else w & 0xFF)
+        if code in PLC_WORD_AREA:
+            area = PLC_WORD_AREA[code]
+            n = _rng("word", args[1], 0, 254 if area == "F" else 126)
+            word = (self._byte(plc, area, n) << 8) | self._byte(plc, area, n + 1)
+            return _from_dim(word, 16, _i(args[2]))
+        if code in ("3a4", "3a5"):
+            table = plc.setdefault("T" if code == "3a4" else "C", {})
+            return float(table.get(str(_rng("number", args[1], 0, 255)), 0.0))
+        if code in ("3b0", "3b1", "3b2"):
+            n = _i(args[3]) if code != "3b2" else 2
+            words = [self._dw(plc, args[1], args[2] + k) for k in range(n)]
+            if code == "3b2":
+                import struct
+                return struct.unpack(">f", struct.pack(">HH", *words))[0]
+            if code == "3b1":
+                digits = "".join(f"{w:04x}" for w in words)
+                if any(c not in "0123456789" for c in digits):
+                    raise Cl800Error(f"DB data {digits} is not BCD")
+                return _scale(int(digits), _i(args[4]) % 100)
+            raw = 0
+            for w in words:
+                raw = (raw << 16) | w
+            return _from_dim(raw, 16 * n, _i(args[4]) % 10)
+        raise Cl800Error(f"@{code} is not available")
+
+    def plc_write(self, code: str, where: tuple, value: float) -> None:
+        plc = self._plc(where[0])
+        if code == "482":
+            byte = _rng("byte", where[1], 0, 255)
+            if value not in (0.0, 1.0):
+                raise Cl800Error(f"bit value {value:g} is not 0 or 1")
+            bits = self._byte(plc, "F", byte, True)
+            k = _rng("bit", where[2], 0, 7)
+            bits = bits | (1 << k) if value else bits & ~(1 << k)
+            plc.setdefault("F", {})[str(byte)] = int_to_pattern(bits)
+        elif code == "483":
+            w = self._dw(plc, where[1], where[2])
+            k = _rng("bit", where[3], 0, 15)
+            if value not in (0.0, 1.0):
+                raise Cl800Error(f"bit value {value:g} is not 0 or 1")
+            self._set_dw(plc, where[1], where[2], w | (1 << k) if value else w & ~(1 << k))
+        elif code == "493":
+            pattern_to_int(value)
+            plc.setdefault("F", {})[str(_rng("byte", where[1], 0, 255))] = value
+        elif code in ("494", "495"):
+            w = self._dw(plc, where[1], where[2])
+            b = pattern_to_int(value)
+            w = (b << 8) | (w & 0xFF) if code == "494" else (w & 0xFF00) | b
+            self._set_dw(plc, where[1], where[2], w)
+        elif code == "4a3":
+            n = _rng("word", where[1], 0, 254)
+            raw = _to_dim(value, 16, _i(where[2]))
+            plc.setdefault("F", {})[str(n)] = int_to_pattern(raw >> 8)
+            plc["F"][str(n + 1)] = int_to_pattern(raw & 0xFF)
+        elif code in ("4b0", "4b1", "4b2"):
+            if code == "4b2":
+                import struct
+                words = list(struct.unpack(">HH", struct.pack(">f", value)))
+            elif code == "4b1":
+                n = _rng("number of data words", where[3], 1, 3)
+                v = round(abs(value) * 10 ** max(0, _i(where[4]) % 100 - 1))
+                digits = f"{v:0{4 * n}d}"
+                if len(digits) > 4 * n:
+                    raise Cl800Error(f"{value:g} does not fit {n} BCD data words")
+                words = [int(digits[4 * k:4 * k + 4], 16) for k in range(n)]
+            else:
+                n = _rng("number of data words", where[3], 1, 2)
+                raw = _to_dim(value, 16 * n, _i(where[4]) % 10)
+                words = [(raw >> (16 * (n - 1 - k))) & 0xFFFF for k in range(n)]
+            for k, w in enumerate(words):
+                self._dw(plc, where[1], where[2] + k)
+                self._set_dw(plc, where[1], where[2] + k, w)
+        else:
+            raise Cl800Error(f"@{code} is not available")
+
+    def _set_dw(self, plc: dict, db: float, dw: float, value: int) -> None:
+        plc["DB"][str(_i(db))][_i(dw)] = value & 0xFFFF
+
+    def plc_set_event(self, d: dict) -> None:
+        plc = self.data.plc.setdefault(int(d.get("plc", 1)), {})
+        area = str(d.get("area", "I")).upper()
+        table = plc.setdefault(area, {})
+        byte = str(int(d.get("byte", 0)))
+        if "bit" in d:
+            bits = self._byte(plc, area, int(byte), True)
+            k = int(d["bit"])
+            bits = bits | (1 << k) if d.get("value", 1) else bits & ~(1 << k)
+            table[byte] = int_to_pattern(bits)
+        else:
+            table[byte] = float(d.get("value", 0))
+
+    # -- main group 7 ------------------------------------------------------
+    def nc_function(self, code: str, args: tuple, line: int) -> None:
+        if code in ("714", "715"):
+            return  # lockstep execution: decoding never runs ahead (digest §10.5)
+        if code == "713":
+            target = args[0]
+            if target > 998:
+                raise Cl800Error("PREP CYC needs two result registers")
+            self.R[target] = 1.0 if self.kernel.scale == 1.0 else 0.03937
+            diameter = self.data.areas["nc_md"].get("diameter_axis1", 0.0)
+            self.R[target + 1] = 2.0 if diameter else 1.0
+            return
+        if code == "730":
+            self.wait_input(_i(args[0]), _i(args[1]), True, "REL")
+            return
+        if code == "736":
+            bit = _i(args[2])
+            self.wait_input(_i(args[1]), abs(bit), bit >= 0, "INTA")
+            return
+        if code == "710":
+            self.prep_ref(int(args[0]), int(args[1]))
+            return
+        raise Cl800Error(f"@{code} is not available")
+
+    # -- PREP REF / INT SEC ------------------------------------------------
+    def _plane_axes(self) -> tuple[str, str]:
+        k = self.kernel
+        if self.g16_plane:
+            h, v = self.g16_plane[0], self.g16_plane[1]
+            return k.axis_names[h - 1], k.axis_names[v - 1]
+        from ...nc.kernel import PLANES
+        a, b = PLANES[k.plane][:2]
+        return a, b
+
+    def prep_ref(self, rn: int, rm: int) -> None:
+        """@710 Rn Rm: the next contour element of sub-program R[m] into Rn..Rn+7."""
+        check_window(rm, 4, ((0, 197), (900, 997)), "PREP REF input")
+        check_window(rn, 8, ((0, 192), (900, 992)), "PREP REF output")
+        R = self.R
+        cursor = self.contours.get(rm)
+        if R[rm + 3] == 1.0 or cursor is None:
+            number = _i(R[rm])
+            unit = self.loader(number)
+            if unit is None:
+                raise RuntimeFault("RUN002", f"PREP REF: contour sub-program L{number} not found")
+            cursor = [contour_elements(unit.program, self._plane_axes(), (R[rm + 1], R[rm + 2]), R), 0]
+            self.contours[rm] = cursor
+            R[rm + 3] = 0.0
+        elements, i = cursor
+        if i >= len(elements):
+            last = elements[-1] if elements else [R[rm + 1], R[rm + 2]] * 2 + [0.0, 0.0, 1.0, 2.0]
+            R[rn:rn + 8] = last[2:4] + last[2:4] + [0.0, 0.0, last[6], 2.0]
+            return
+        R[rn:rn + 8] = elements[i]
+        cursor[1] = i + 1
+
+    def int_sec(self, rm: int, rn: int, words: dict, line: int) -> None:
+        """@711 Rm Rn Rr: intersect element Rn..Rn+7 with the path to this block's destination."""
+        check_window(rn, 8, ((0, 192), (900, 992)), "INT SEC input")
+        check_window(rm, 3, ((0, 197), (900, 997)), "INT SEC output")
+        h_name, v_name = self._plane_axes()
+        if h_name not in words or v_name not in words:
+            raise Cl800Error(f"INT SEC needs both axes {v_name} and {h_name} of the destination in its block")
+        pos = self.kernel.workpiece_position()
+        here = (pos[v_name], pos[h_name])
+        hit = intersect(self.R[rn:rn + 8], here, (words[v_name], words[h_name]))
+        R = self.R
+        if hit is None:
+            R[rm] = 0.0
+        else:
+            R[rm], R[rm + 1], R[rm + 2] = 1.0, hit[0], hit[1]
+
+    # -- MEAS M --------------------------------------------------------------
+    def meas(self, target: int, probe: float, words: dict, line: int) -> dict:
+        """@720: the block's axes move until the probe switches; machine positions go to R<target>..."""
+        probe = _i(probe)
+        k = self.kernel
+        if probe not in (1, 2):
+            raise Cl800Error(f"MEAS M: probe input {probe} is not 1 or 2")
+        moving = sorted((n for n in words if n in k.axis_of), key=k.axis_of.get)
+        if len(moving) > 2:
+            raise Cl800Error("MEAS M: at most 2 axes may move in the measuring block")
+        if k.motion not in (0, 1):
+            raise Cl800Error("MEAS M needs G00 or G01")
+        hit = self._probe_hit(probe)
+        pos = hit.get("position", {})
+        out = dict(words)
+        reg = target
+        for name in moving:
+            if name not in pos:
+                raise RuntimeFault("SIN007", f"MEAS M: the probe event gives no position for axis {name}")
+            machine_value = float(pos[name])
+            i = k.axis_of[name]
+            self.R[reg] = machine_value / k.scale
+            reg += 1
+            prog = machine_value - k.offset_vec[i]
+            out[name] = prog / k.scale if k.absolute else (prog - k.prog[i]) / k.scale
+        return out
+
+    def _probe_hit(self, probe: int) -> dict:
+        self.advance_scenario()
+        for i, ev in enumerate(self._scenario):
+            if ev.kind == "probe" and int(ev.data.get("input", 1)) == probe:
+                self._scenario.pop(i)
+                self.probes.append(ev.data)
+                break
+        hits = [p for p in self.probes if int(p.get("input", 1)) == probe]
+        if not hits:
+            raise RuntimeFault("SIN007", f"MEAS M: probe {probe} never switches (no probe event in the scenario)")
+        hit = hits[0]
+        self.probes.remove(hit)
+        return hit
+
+    # -- main group a: operator panel and V24 -------------------------------
+    def io(self, code: str, args: tuple) -> None:
+        if code == "a15":
+            self.panel.append(f"menu {_i(args[1])} ({'standard' if args[0] else 'user'})")
+            self.session.say(f"[panel] menu {_i(args[1])}")
+        elif code == "a1b":
+            if self.panel:
+                self.panel.pop()
+        elif code == "a20":
+            self.v24.append(f"PORT {_rng('V24 interface', args[0], 1, 4)}")
+        elif code == "a27":
+            lo, hi = _rng("R number", args[1], 0, 999), _rng("R number", args[2], 0, 999)
+            for n in range(lo, hi + 1):
+                self.v24.append(f"R{n}={self.R[n]:g}")
+        elif code == "a29":
+            self.v24.append("\x03")
+        elif code == "a40":
+            self.panel.append(f"channel {_rng('channel', args[0], 1, 16)}")
+        else:
+            self.v24.append(f"@{code} " + " ".join(f"{a:g}" for a in args))
+
+
+def _scale(raw: int, dim: int) -> float:
+    return float(raw) if dim <= 1 else raw / 10 ** (dim - 1)
+
+
+def _from_dim(raw: int, bits: int, dim: int) -> float:
+    if dim >= 100:
+        digits = f"{raw:0{bits // 4}x}"
+        if any(c not in "0123456789" for c in digits):
+            raise Cl800Error(f"{digits} is not BCD")
+        return _scale(int(digits), dim - 100)
+    if raw >= 1 << (bits - 1):
+        raw -= 1 << bits
+    return _scale(raw, dim % 10)
+
+
+def _to_dim(value: float, bits: int, dim: int) -> int:
+    if dim >= 100:
+        v = round(abs(value) * 10 ** max(0, dim - 101))
+        return int(f"{v:0{bits // 4}d}", 16)
+    raw = round(value * 10 ** max(0, dim % 10 - 1))
+    if not -(1 << (bits - 1)) <= raw < (1 << (bits - 1)):
+        raise Cl800Error(f"{value:g} overflows a {bits}-bit PLC value")
+    return raw & ((1 << bits) - 1)
+
+
+def _src(channel, line: int):
+    from ...nc.canon import Src
+
+    return Src(channel._current_path(), line)

@@ -1,0 +1,79 @@
+"""The straight-move hot path (G0/G1), generated per machine with one unrolled line per axis.
+
+Straight moves are most of what any program does, so the kernel compiles this
+function once for its machine's axes instead of looping over axis lists:
+target from the block's words, machine end point, and the move time of
+:func:`ncvm.nc.dynamics.move_time` (same formula, unrolled).
+"""
+
+from __future__ import annotations
+
+import math
+
+
+def make_linear(axis_names: tuple[str, ...], dyn):
+    """``linear(kernel, motion, words, src)`` for these axes; same result as the general path."""
+    n = len(axis_names)
+    idx = range(n)
+    lines = ["def linear(k, motion, words, src):",
+             "    get = words.get",
+             "    sc = k.scale",
+             "    ab = k.absolute",
+             f"    {', '.join(f'p{i}' for i in idx)}{',' if n == 1 else ''} = k.prog",
+             "    moved = False"]
+    for i, name in enumerate(axis_names):
+        lines += [f"    v = get({name!r})",
+                  "    if v is not None:",
+                  "        moved = True",
+                  "        if sc != 1.0:",
+                  "            v *= sc",
+                  f"        p{i} = v if ab else p{i} + v"]
+    lines += ["    if not moved:",
+              "        return",
+              f"    {', '.join(f'o{i}' for i in idx)}{',' if n == 1 else ''} = k.offset_vec",
+              "    start = k.machine_pos",
+              f"    {', '.join(f's{i}' for i in idx)}{',' if n == 1 else ''} = start",
+              *(f"    e{i} = p{i} + o{i}" for i in idx),
+              f"    end = ({', '.join(f'e{i}' for i in idx)},)",
+              *(f"    d{i} = e{i} - s{i}" for i in idx),
+              f"    length = _sqrt({' + '.join(f'd{i} * d{i}' for i in idx)})",
+              "    if motion == 0:",
+              "        v = _INF",
+              "    else:",
+              "        feed = k.feed",
+              "        if feed <= 0.0:",
+              "            k.fault('NC006', 'G1 with feed rate 0 (program an F word)', src)",
+              "        v = feed / 60.0",
+              "    t = 0.0",
+              "    if length > 0.0:",
+              "        a = _INF",
+              "        inv = 1.0 / length"]
+    for i in idx:
+        # the machine's limits are constants of the generated code
+        rapid, feed, acc = float(dyn.rapid[i]), float(dyn.max_feed[i]), float(dyn.accel[i])
+        lines += [f"        if d{i}:",
+                  f"            share = abs(d{i}) * inv",
+                  f"            vmax = {rapid!r} if motion == 0 else {feed!r}",
+                  "            if vmax < v * share:",
+                  "                v = vmax / share",
+                  f"            if {acc!r} < a * share:",
+                  f"                a = {acc!r} / share"]
+    lines += ["        if v <= 0.0:",
+              "            t = _INF",
+              "        elif a <= 0.0 or a == _INF:",
+              "            t = length / v",
+              "        elif length * a >= v * v:",
+              "            t = length / v + v / a",
+              "        else:",
+              "            t = 2.0 * _sqrt(length / a)",
+              "        if t > 0.0:",
+              "            k.machine.clock.now += t",
+              "    if motion == 0:",
+              "        k.canon.rapid(start, end, src)",
+              "    else:",
+              "        k.canon.feed(start, end, feed, src)",
+              f"    k.prog = [{', '.join(f'p{i}' for i in idx)}]",
+              "    k.machine_pos = end"]
+    namespace = {"_sqrt": math.sqrt, "_INF": math.inf}
+    exec(compile("\n".join(lines) + "\n", f"<ncvm linear move {'/'.join(axis_names)}>", "exec"), namespace)
+    return namespace["linear"]
