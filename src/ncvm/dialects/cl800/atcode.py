@@ -426,7 +426,7 @@ class Compiler:
             item += " " + p
         self.emit(item)
         self.emit(f"@100 K{other or cont}")
-        for (val, body, line), n in zip(st.alts, alts):
+        for (_val, body, line), n in zip(st.alts, alts):
             self.numbered(n, line)
             self.statements(body)
             self.emit(f"@100 K{cont}", line)

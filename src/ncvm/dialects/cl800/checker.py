@@ -65,16 +65,16 @@ class Checker:
     # -- declarations --------------------------------------------------------
     def check(self) -> Symbols:
         prog = self.prog
-        if not 1 <= prog.number <= 9999:
+        if prog.number != -1 and not 1 <= prog.number <= 9999:
             self.err("E027", prog, "program number 1..9999")
         for ref in prog.list_refs:
             self.load_list(*ref)
         for d in prog.decls:
             self.declare(d)
-        for key, (num, line, col, raw) in prog.consts.items():
+        for key, (_num, line, col, _raw) in prog.consts.items():
             if key in self.sym.by_name:
                 self.errors.append(Cl800Error("E036", self.path, line, col))
-        for key, (line, col, raw) in prog.labels.items():
+        for key, (line, col, _raw) in prog.labels.items():
             if key in self.sym.by_name or key in prog.consts:
                 self.errors.append(Cl800Error("E036", self.path, line, col))
         self.block(prog.body, top=True)
@@ -134,7 +134,7 @@ class Checker:
         if term2 is not None and term2.upper() != name.upper():
             self.err("E034", where, f'list "{name}" is identified as "{term2}"')
             return
-        for kind_seen, name_seen, _p, lst in self.sym.lists:
+        for kind_seen, _name_seen, _p, lst in self.sym.lists:
             if kind_seen == kind == "CENTRAL" or (kind == "GLOBAL" == kind_seen and
                                                   (lst.channel == 0) == (unit.channel == 0)):
                 self.err("E035", where, f"a second {kind} list")
@@ -203,7 +203,7 @@ class Checker:
         elif isinstance(st, ast.Compound):
             self.block(st.body, top)
         elif isinstance(st, ast.If):
-            st.cond = self.value(st.cond)
+            st.cond = self.condition(st.cond)
             self.block(st.then)
             self.block(st.orelse or [])
         elif isinstance(st, (ast.IfInt, ast.WhileInt)):
@@ -220,17 +220,27 @@ class Checker:
                 self.block(body)
             self.block(st.otherwise or [])
         elif isinstance(st, ast.While):
-            st.cond = self.value(st.cond)
+            st.cond = self.condition(st.cond)
             self.block(st.body)
         elif isinstance(st, ast.Repeat):
             self.block(st.body)
-            st.cond = self.value(st.cond)
+            st.cond = self.condition(st.cond)
         elif isinstance(st, ast.For):
             self.target(st.var)
             st.start, st.stop = self.value(st.start), self.value(st.stop)
             self.block(st.body)
         elif isinstance(st, ast.Goto):
             self.gotos.append(st)
+
+    def condition(self, e):
+        """A condition must be BOOLEAN: a comparison, a boolean variable, a bit or a boolean chain (L4730-4748)."""
+        e = self.value(e)
+        arithmetic = isinstance(e, (ast.Num, ast.Call)) or (
+            isinstance(e, ast.Binary) and e.op in ("+", "-", "*", "/", "OR", "XOR", "AND", "NAND")) or (
+            isinstance(e, ast.Unary) and e.op in ("-", "NOT"))
+        if arithmetic:
+            self.err("E030", e)
+        return e
 
     def nc_function(self, target: ast.Operand, call: ast.Call) -> None:
         code, kinds, _n = NC_FUNCTIONS[call.name]

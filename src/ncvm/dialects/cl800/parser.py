@@ -142,7 +142,7 @@ class Parser:
 
     def program(self) -> ast.Program:
         t = self.advance()
-        prog = ast.Program(t.line, t.col, 0, 0)
+        prog = ast.Program(t.line, t.col, -1, 0)
         try:
             prog.number = self.uint(header=True)
             self.expect_sym(";", "E001")
@@ -229,7 +229,9 @@ class Parser:
                 raise self.fail("E028")
             s = self.advance()
             name = s.value.strip()
-            if not name or len(name) > 8 or not name[0].isalpha():
+            if not name:
+                raise self.fail("E029", s)
+            if len(name) > 8 or not name[0].isalpha():
                 raise self.fail("E034", s)
             if self.is_sym(",") or (self.tok.kind == "STRING"):
                 raise self.fail("E035")
@@ -349,7 +351,7 @@ class Parser:
         out: list = []
         while True:
             t = self.tok
-            if t.kind == "EOF" or t.is_kw(*stops) or (case_alt and self.is_sym("=")):
+            if t.kind == "EOF" or t.is_kw(*stops) or t.is_kw(*CLOSERS) or (case_alt and self.is_sym("=")):
                 return out
             if self.accept_sym(";"):
                 continue
@@ -536,6 +538,8 @@ class Parser:
         t = self.tok
         if t.kind == "NAME" and t.text in ("PREP", "INT", "MEAS"):
             name = self.two_word()
+            if name not in NC_FUNCTIONS:
+                raise self.fail("E021", t)
             code, kinds, _n = NC_FUNCTIONS[name]
             args = self.args(len(kinds)) if kinds else []
             return ast.Call(t.line, t.col, name, args)
