@@ -50,6 +50,7 @@ class Token:
 
 _SYMBOLS = (":=", "<>", ">=", "<=", ";", ",", ":", "=", "(", ")", "[", "]", ".", "+", "-", "*", "/", "<", ">")
 _NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
+_NAME_REST = re.compile(r"[A-Za-z0-9_]*")
 _RPAR = re.compile(r"R[ \t]*(\d+)(?![A-Za-z0-9_])")
 _PATTERN = re.compile(r"B([01]+)(?![A-Za-z0-9_])")
 _NUMBER = re.compile(r"\d+(?:\.\d+)?")
@@ -193,8 +194,7 @@ class Lexer:
         while self.legacy and j < len(text) and text[j] == "." and text[i:j] not in KEYWORDS:
             nxt = text[j + 1] if j + 1 < len(text) else "\n"
             if nxt.isalpha() or nxt == "_":
-                k = _NAME.match(text, j + 1)
-                j = k.end()
+                j = _NAME_REST.match(text, j + 1).end()
             elif not nxt.isdigit() and nxt != ".":
                 j += 1
                 break
