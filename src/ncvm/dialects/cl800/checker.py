@@ -83,7 +83,9 @@ class Checker:
             if key not in prog.labels:
                 self.err("S050", g, f"{g.target} is not a declared label")
             elif key not in self.placed:
-                self.err("S075", g, g.target)
+                # known only when END. is reached: reported there, naming the GOTO's line
+                end = ast.Node(prog.end_line or g.line, None)
+                self.err("S075", end, f"{g.target}, GOTO in line {g.line}")
         return self.sym
 
     def declare(self, d: ast.Decl, file: str | None = None) -> None:

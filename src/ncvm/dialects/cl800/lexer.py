@@ -93,6 +93,8 @@ class Lexer:
                 if end < 0:
                     self.err("E060", line, col, "comment (* is not closed")
                     break
+                if "\n" in text[i:end]:
+                    self.err("W001", line, col)
                 for k in range(i, end):
                     if text[k] == "\n":
                         line, bol = line + 1, k + 1
@@ -111,6 +113,8 @@ class Lexer:
                 else:
                     stop = end + 2
                 raw = text[i + 2:end]
+                if "\n" in raw:
+                    self.err("W002", line, col)
                 din = re.sub(r"\s*\n\s*", " ", raw).strip()
                 out.append(Token("DIN", din, line, col, din))
                 for k in range(i, stop):
