@@ -141,22 +141,19 @@ class Checker:
                                                   (lst.channel == 0) == (unit.channel == 0)):
                 self.err("E035", where, f"a second {kind} list")
                 return
-        if kind == "GLOBAL":
-            if unit.channel is None:
-                self.errors.append(Cl800Error("E012", str(p), unit.line, unit.col))
-                return
-            if unit.channel and unit.channel != self.prog.channel:
-                self.err("E034", where, f"list for channel {unit.channel}, program for channel {self.prog.channel}")
-                return
+        wrong = [d for d in unit.decls if d.cls != kind]
+        if wrong:
+            self.errors.append(Cl800Error("E016" if kind == "GLOBAL" else "E015", str(p), wrong[0].line, wrong[0].col))
+            return
+        list_errors = check_list(str(p), unit)
+        if list_errors:
+            self.errors.append(list_errors[0])
+            return
+        if kind == "GLOBAL" and unit.channel and unit.channel != self.prog.channel:
+            self.err("E034", where, f"list for channel {unit.channel}, program for channel {self.prog.channel}")
+            return
         self.sym.lists.append((kind, name, p, unit))
         for d in unit.decls:
-            if d.cls != kind:
-                self.errors.append(Cl800Error("E016" if kind == "GLOBAL" else "E015", str(p), d.line, d.col))
-                continue
-            if kind == "GLOBAL" and unit.channel == 0 and d.r < 150 or kind == "GLOBAL" and unit.channel and d.r >= 150:
-                self.errors.append(Cl800Error("E054", str(p), d.line, d.col,
-                                              "R100..R149 per channel, R150..R199 in a CHANNEL NC 0 list"))
-                continue
             self.declare(d, str(p))
 
     # -- statements ----------------------------------------------------------
@@ -333,6 +330,25 @@ class Checker:
         return e
 
 
+def check_list(path: str, lst: ast.ExtList) -> list[Cl800Error]:
+    """A list on its own: R ranges per class and channel, no R number or name twice (digest §1.5)."""
+    errors, by_r, by_name = [], set(), set()
+    for d in lst.decls:
+        if d.cls == "GLOBAL" and lst.channel is None:
+            errors.append(Cl800Error("E012", path, d.line, d.col, "GLOBAL lists need CHANNEL NC"))
+        elif not any(d.r in rng for rng in RANGES[d.cls]) or d.cls == "GLOBAL" and (lst.channel == 0) != (d.r >= 150):
+            errors.append(Cl800Error("E054", path, d.line, d.col,
+                                     "R100..R149 per channel, R150..R199 in a CHANNEL NC 0 list, R900..R999 central"))
+        elif d.r in by_r:
+            errors.append(Cl800Error("E042", path, d.line, d.col, f"R{d.r}"))
+        elif d.name and norm(d.name) in by_name:
+            errors.append(Cl800Error("E036", path, d.line, d.col, d.name))
+        by_r.add(d.r)
+        if d.name:
+            by_name.add(norm(d.name))
+    return errors
+
+
 def check_program(path: str, text: str, search: list[Path]):
     """Parse and check; returns (Program or None, Symbols or None, errors sorted by position)."""
     unit, errors = parse_source(path, text)
@@ -341,6 +357,8 @@ def check_program(path: str, text: str, search: list[Path]):
         checker = Checker(path, unit, search)
         sym = checker.check()
         errors += checker.errors
+    elif isinstance(unit, ast.ExtList):
+        errors += check_list(path, unit)
     here = [e for e in errors if e.file == path]
     other = [e for e in errors if e.file != path]
     here.sort(key=lambda e: (e.line, e.col or 0))
