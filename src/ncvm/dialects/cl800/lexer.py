@@ -30,6 +30,12 @@ AGS SATC
 
 KEYWORDS_UPPER = frozenset(k.upper() for k in KEYWORDS)
 
+#: two-word keywords written as one word: "Blank or other separator expected" (E031)
+JOINED = frozenset("""
+ARCSIN INVLN PREPREF PREPCYC INTSEC STOPDEC STOPDEC1 MEASM POSMSYS CLEARBIT SETBIT CLEARMIB WRTPIC
+RECALLPIC OUTPZOA OUTPDATA OUTPPARA OUTPETX IFINT WHILEINT
+""".split())
+
 
 @dataclass(slots=True)
 class Token:
@@ -205,6 +211,8 @@ class Lexer:
             else:
                 break
         word = text[i:j]
+        if word in JOINED:
+            self.err("E031", line, col, f"{word} is two words")
         if len(word) > 25:
             self.err("E038", line, col)
         out.append(Token("NAME", word, line, col))
