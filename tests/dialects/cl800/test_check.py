@@ -4,7 +4,10 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import pytest
+
 from ncvm.api import check
+from ncvm.diagnostics import UsageError
 from ncvm.dialects import get_dialect
 from ncvm.machine.model import Machine
 
@@ -67,3 +70,19 @@ def test_lists_on_the_program_path(tmp_path: Path):
     p = tmp_path / "p.cl8"
     assert get_dialect("cl800").check(str(p), text, m) == []
     assert get_dialect("cl800").build(str(p), text, m).text() == "%SPF81\n@201 R900 K5 M17\n"
+
+
+def test_strict_mode_drops_the_leniencies(tmp_path: Path):
+    m = Machine()
+    m.sections["cl800"] = {"strict": True}
+    d = get_dialect("cl800")
+    p = str(tmp_path / "p.cl8")
+    head = "PROGRAM 9;\nCHANNEL NC 0;\nLOCAL REAL: R60:=a_b;\nBEGIN\n"
+    assert d.check(p, head + "  R60 = 1\nEND.\n", Machine()) == []
+    assert [x.code for x in d.check(p, head + "  R60 = 1\nEND.\n", m)] == ["E001"]
+    assert [x.code for x in d.check(p, head + "  R60 := 1;\nEND.\n", m)] == ["E004"]
+    assert [x.code for x in d.check(p, head + "  a_b. = 1;\nEND.\n", m)] == ["E047"]  # read as a bit access
+    assert d.check(p, head + "  a_b. = 1;\nEND.\n", Machine()) == []
+    m.sections["cl800"] = {"stict": True}
+    with pytest.raises(UsageError, match="cl800.stict"):
+        d.check(p, head + "END.\n", m)

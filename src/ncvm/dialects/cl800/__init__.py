@@ -30,6 +30,21 @@ def search_path(path: str, machine) -> list[Path]:
     return folders
 
 
+#: the machine file's [cl800] keys and their defaults (docs/cl800.md)
+OPTIONS = {"strict": False}
+
+
+def options(machine) -> dict:
+    """The [cl800] section of the machine file; an unknown key or a wrong type is a usage error."""
+    section = dict(getattr(machine, "sections", {}).get("cl800", {}) or {})
+    for key, value in section.items():
+        if key not in OPTIONS:
+            raise UsageError(f"machine file: unknown key 'cl800.{key}' (known: {', '.join(OPTIONS)})")
+        if not isinstance(value, type(OPTIONS[key])):
+            raise UsageError(f"machine file: key 'cl800.{key}' must be {type(OPTIONS[key]).__name__}")
+    return {**OPTIONS, **section}
+
+
 class Cl800Dialect(Dialect):
     id = "cl800"
     title = "Siemens CL 800 cycle language (compiled to SINUMERIK 800 @ code)"
@@ -40,7 +55,7 @@ class Cl800Dialect(Dialect):
         return min(100, 30 * hits)
 
     def analyse(self, path: str, text: str, machine):
-        prog, sym, errors = check_program(path, text, search_path(path, machine))
+        prog, sym, errors = check_program(path, text, search_path(path, machine), options(machine)["strict"])
         return prog, sym, errors
 
     def check(self, path, text, machine, all_errors=False):

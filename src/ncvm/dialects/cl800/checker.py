@@ -42,11 +42,12 @@ class Symbols:
     lists: list = field(default_factory=list)  # (kind, name, path, ExtList)
 
 
-def parse_source(path: str, text: str):
-    """Scan and parse one file; returns (unit or None, errors)."""
-    lexer = Lexer(path, text)
+def parse_source(path: str, text: str, strict: bool = False):
+    """Scan and parse one file; returns (unit or None, errors). ``strict`` drops the leniencies for
+    the manual's own examples (dotted names, ``:=`` assignments, ``;`` missing before END/ELSE/...)."""
+    lexer = Lexer(path, text, legacy_names=not strict)
     toks = lexer.tokens()
-    parser = Parser(path, toks, text)
+    parser = Parser(path, toks, text, strict)
     unit = parser.parse()
     return unit, lexer.errors + parser.errors
 
@@ -349,9 +350,9 @@ def check_list(path: str, lst: ast.ExtList) -> list[Cl800Error]:
     return errors
 
 
-def check_program(path: str, text: str, search: list[Path]):
+def check_program(path: str, text: str, search: list[Path], strict: bool = False):
     """Parse and check; returns (Program or None, Symbols or None, errors sorted by position)."""
-    unit, errors = parse_source(path, text)
+    unit, errors = parse_source(path, text, strict)
     sym = None
     if isinstance(unit, ast.Program):
         checker = Checker(path, unit, search)

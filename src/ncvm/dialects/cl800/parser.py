@@ -21,8 +21,8 @@ MAX_INT = 99_999_999
 
 
 class Parser:
-    def __init__(self, path: str, tokens: list[Token], source: str):
-        self.path, self.toks, self.pos = path, tokens, 0
+    def __init__(self, path: str, tokens: list[Token], source: str, strict: bool = False):
+        self.path, self.toks, self.pos, self.strict = path, tokens, 0, strict
         self.lines = source.replace("\r", "").split("\n")
         self.errors: list[Cl800Error] = []
         self.consts: set[str] = set()
@@ -361,7 +361,8 @@ class Parser:
                     out.append(st)
                 if self.accept_sym(";"):
                     continue
-                if self.tok.kind == "EOF" or self.tok.is_kw(*CLOSERS) or (case_alt and self.is_sym("=")):
+                if not self.strict and (self.tok.kind == "EOF" or self.tok.is_kw(*CLOSERS) or
+                                        (case_alt and self.is_sym("="))):
                     continue
                 raise self.fail("E001")
             except Cl800Error as e:
@@ -530,7 +531,7 @@ class Parser:
         target = self.operand()
         if self.is_sym("."):
             raise self.fail("E047")
-        if not (self.accept_sym("=") or self.accept_sym(":=")):
+        if not (self.accept_sym("=") or (not self.strict and self.accept_sym(":="))):
             raise self.fail("E004")
         return ast.Assign(target.line, target.col, target, self.rhs())
 
@@ -615,7 +616,7 @@ class Parser:
     def for_stmt(self, depth: int):
         t = self.advance()
         var = self.operand()
-        if not (self.accept_sym(":=") or self.accept_sym("=")):
+        if not (self.accept_sym(":=") or (not self.strict and self.accept_sym("="))):
             raise self.fail("E003")
         start = self.expr()
         if not self.is_kw("TO", "DOWNTO"):
