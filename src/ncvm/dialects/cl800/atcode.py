@@ -14,6 +14,7 @@ from dataclasses import dataclass, field
 
 from . import ast
 from .checker import Symbols
+from .lexer import norm
 from .messages import Cl800Error
 from .tables import FUNCTIONS, LOGIC, NC_FUNCTIONS, PROCEDURES, RELOPS, SYS_READS, SYS_WRITES
 
@@ -250,7 +251,7 @@ class Compiler:
             self.emit("@00f")
         push = self.push or []
         if push:
-            self.emit(push_code("4", push), prog.begin_line)
+            self.emit(push_code(True, push), prog.begin_line)
         first = self.cur
         for i, st in enumerate(prog.body):
             self.stmt_index = i
@@ -259,7 +260,7 @@ class Compiler:
         if first is not None and self.cur is first and push:
             self.end_block()  # the push and the pop of a program never share a block
         if push:
-            self.emit(push_code("pop", push), prog.end_line)
+            self.emit(push_code(False, push), prog.end_line)
         self.emit("M17", prog.end_line)
         return ObjectProgram(prog.number, prog.line, self.blocks)
 
@@ -267,7 +268,7 @@ class Compiler:
         """Source order index of top-level statements, to tell forward from backward GOTOs."""
         for i, st in enumerate(body):
             if st.label:
-                self.label_index[st.label.upper().rstrip(".")[:8]] = i
+                self.label_index[norm(st.label)] = i
 
     def statements(self, body: list) -> None:
         for st in body:
@@ -277,7 +278,7 @@ class Compiler:
         self.line = st.line
         mark = len(self.in_use)
         if st.label:
-            key = st.label.upper().rstrip(".")[:8]
+            key = norm(st.label)
             self.numbered(self.label_numbers[key], st.line)
         if isinstance(st, ast.Assign):
             self.assign(st)
@@ -332,7 +333,7 @@ class Compiler:
         elif isinstance(st, ast.Case):
             self.case_stmt(st)
         elif isinstance(st, ast.Goto):
-            key = st.target.upper().rstrip(".")[:8]
+            key = norm(st.target)
             n = self.label_numbers[key]
             backward = self.label_index.get(key, 1 << 30) <= self.stmt_index
             self.emit(f"@100 K-{n}" if backward else f"@100 K{n}")
@@ -436,20 +437,17 @@ class Compiler:
         self.numbered(cont, st.end_line or st.line)
 
 
-def push_code(kind: str, regs: list[int]) -> str:
+def push_code(push: bool, regs: list[int]) -> str:
     """@041/@043 Ra Rb for one contiguous range of 2 or more, else @040/@042 Kn R... (digest §5.8)."""
     regs = sorted(regs)
-    contiguous = len(regs) > 1 and regs[-1] - regs[0] == len(regs) - 1
-    if kind == "4":
-        return f"@041 R{regs[0]} R{regs[-1]}" if contiguous else "@040 K%d %s" % (
-            len(regs), " ".join(f"R{r}" for r in regs))
-    return f"@043 R{regs[0]} R{regs[-1]}" if contiguous else "@042 K%d %s" % (
-        len(regs), " ".join(f"R{r}" for r in regs))
+    if len(regs) > 1 and regs[-1] - regs[0] == len(regs) - 1:
+        return f"@{'041' if push else '043'} R{regs[0]} R{regs[-1]}"
+    return f"@{'040' if push else '042'} K{len(regs)} " + " ".join(f"R{r}" for r in regs)
 
 
 def compile_program(path: str, prog: ast.Program, sym: Symbols) -> ObjectProgram:
     """Two passes: the first finds the temporaries, the second emits with the full push set."""
-    probe = Compiler(path, prog, sym, push=sorted(sym.locals) or [50])
+    probe = Compiler(path, prog, sym, push=sorted(sym.locals))
     probe.compile()
     push = sorted(sym.locals | probe.temps_used)
     return Compiler(path, prog, sym, push=push).compile()
