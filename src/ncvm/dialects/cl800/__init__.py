@@ -1,0 +1,102 @@
+"""Siemens CL 800 cycle language (WS 800 A): check, compile to @ code, run on the SINUMERIK 800 NC.
+
+``check`` reports the WS 800 A's messages (the first error, or all with
+``--all``); ``compile`` writes the object program ``%SPF<n>`` and optionally the
+cross-reference listing; ``run`` compiles and hands the @ code to the ``sin800``
+dialect, as the object program was loaded into the NC.
+"""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+from ...diagnostics import CompileFailed, UsageError
+from ..base import Dialect
+from . import ast
+from .atcode import ObjectProgram, compile_program
+from .checker import check_program
+from .messages import Cl800Error
+
+_SNIFF = re.compile(r"^\s*(PROGRAM\s+\d+\s*;|EXTERNAL\s+\d+\s*;|CHANNEL\s+NC\s+\d+|BEGIN\b|END\.|ENDEXTERN)", re.M)
+
+
+def search_path(path: str, machine) -> list[Path]:
+    """Where GLOBAL/CENTRAL lists are looked for: next to the program, then the machine's program path."""
+    folders = [Path(path).parent]
+    for p in getattr(machine, "program_path", []) or []:
+        if Path(p) not in folders:
+            folders.append(Path(p))
+    return folders
+
+
+#: the machine file's [cl800] keys and their defaults (docs/cl800.md)
+OPTIONS = {"strict": False}
+
+
+def options(machine) -> dict:
+    """The [cl800] section of the machine file; an unknown key or a wrong type is a usage error."""
+    section = dict(getattr(machine, "sections", {}).get("cl800", {}) or {})
+    for key, value in section.items():
+        if key not in OPTIONS:
+            raise UsageError(f"machine file: unknown key 'cl800.{key}' (known: {', '.join(OPTIONS)})")
+        if not isinstance(value, type(OPTIONS[key])):
+            raise UsageError(f"machine file: key 'cl800.{key}' must be {type(OPTIONS[key]).__name__}")
+    return {**OPTIONS, **section}
+
+
+class Cl800Dialect(Dialect):
+    id = "cl800"
+    title = "Siemens CL 800 cycle language (compiled to SINUMERIK 800 @ code)"
+    extensions = (".cl8", ".cl800")
+
+    def sniff(self, text: str) -> int:
+        hits = len(_SNIFF.findall(text[:20000]))
+        return min(100, 30 * hits)
+
+    def analyse(self, path: str, text: str, machine):
+        prog, sym, errors = check_program(path, text, search_path(path, machine), options(machine)["strict"])
+        return prog, sym, errors
+
+    def check(self, path, text, machine, all_errors=False):
+        prog, sym, errors = self.analyse(path, text, machine)
+        diags = [e.diagnostic() for e in errors]
+        errs = [d for d in diags if d.severity == "error"]
+        if not all_errors and errs:
+            return [errs[0]]
+        if not errs and isinstance(prog, ast.Program):
+            try:
+                compile_program(path, prog, sym)  # S064, S120, S125-S127 show only while generating code
+            except Cl800Error as e:
+                diags.append(e.diagnostic())
+        return diags
+
+    def build(self, path: str, text: str, machine) -> ObjectProgram:
+        prog, sym, errors = self.analyse(path, text, machine)
+        errs = [e for e in errors if not e.code.startswith("W")]
+        if errs:
+            raise CompileFailed([errs[0].diagnostic()])
+        if isinstance(prog, ast.ExtList):
+            raise UsageError(f"{path}: external lists are not compiled (WS 800 A compiles programs only)")
+        try:
+            return compile_program(path, prog, sym)
+        except Cl800Error as e:
+            raise CompileFailed([e.diagnostic()]) from None
+
+    def compile(self, path, text, machine, out, xref):
+        obj = self.build(path, text, machine)
+        target = Path(out) if out else Path(path).with_name(f"L{obj.number}.spf")
+        target.write_text(obj.text(), encoding="latin-1")
+        if xref:
+            Path(xref).write_text(obj.xref(), encoding="latin-1")
+        return target
+
+    def run(self, path, text, session):
+        from .. import get_dialect
+
+        obj = self.build(path, text, session.machine)
+        obj_path = str(Path(path).with_name(f"L{obj.number}.spf"))
+        get_dialect("sin800").run(obj_path, obj.text(), session)
+
+
+DIALECT = Cl800Dialect()

@@ -1,0 +1,88 @@
+"""The WS 800 A stops at the first error and reports its line; ``check --all`` lists every error."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from ncvm.api import check
+from ncvm.diagnostics import UsageError
+from ncvm.dialects import get_dialect
+from ncvm.machine.model import Machine
+
+PROG = """\
+PROGRAM 9;
+CHANNEL NC 0;
+LOCAL REAL: R60:=depth;
+BEGIN
+  depht = 1;
+  R61 = 2;
+  depth = (1 + 2;
+  IF depth > 1 THEN INC (depth) ENDCASE;
+END.
+"""
+
+
+def _check(tmp_path: Path, text: str, all_errors: bool):
+    p = tmp_path / "p.cl8"
+    p.write_text(text)
+    return check(p, all_errors=all_errors)
+
+
+def test_first_error_only(tmp_path: Path):
+    diags = _check(tmp_path, PROG, all_errors=False)
+    assert [(d.code, d.span.line, d.span.column) for d in diags] == [("E037", 5, 3)]
+    assert diags[0].message.startswith("Variable name not declared")
+
+
+def test_all_errors(tmp_path: Path):
+    diags = _check(tmp_path, PROG, all_errors=True)
+    assert [(d.code, d.span.line) for d in diags] == [("E037", 5), ("E041", 6), ("E006", 7), ("E019", 8)]
+
+
+def test_clean_program_has_no_diagnostics(tmp_path: Path):
+    assert _check(tmp_path, PROG.replace("  depht = 1;\n  R61 = 2;\n  depth = (1 + 2;\n", "")
+                  .replace("ENDCASE", "ENDIF"), all_errors=True) == []
+
+
+def test_lists_found_next_to_the_program(tmp_path: Path):
+    (tmp_path / "KAPLIST").write_text("EXTERNAL 60;\nCHANNEL NC 0;\nID (0-KAPLIST-03.04.85-KUB);\n"
+                                      "GLOBAL REAL: R150:=refpl;\nENDEXTERN\n")
+    (tmp_path / "CENLIST.cl8").write_text("EXTERNAL 10;\nID (0-CENLIST-28.03.85-KUB);\n"
+                                          "CENTRAL REAL: R900:=Load_1,R950:=Read_3;\nENDEXTERN\n")
+    text = ('PROGRAM 81;\nCHANNEL NC 1;\nGLOBAL: "KAPLIST";\nCENTRAL: "CENLIST";\n'
+            'LOCAL REAL: R60:=start_Z;\nBEGIN\n  start_Z = refpl + Load_1; read_3 = start_Z;\nEND.\n')
+    assert _check(tmp_path, text, all_errors=True) == []
+    out = get_dialect("cl800").build(str(tmp_path / "p.cl8"), text, Machine())
+    # one local: @040 K1 (a "range" needs two registers); push and pop never share the first block
+    assert out.text() == "%SPF81\n@040 K1 R60 R60=R150+R900 @201 R950 R60\n@042 K1 R60 M17\n"
+
+
+def test_lists_on_the_program_path(tmp_path: Path):
+    lists = tmp_path / "lists"
+    lists.mkdir()
+    (lists / "CENLIST").write_text("EXTERNAL 10;\nID (0-CENLIST-28.03.85-KUB);\nCENTRAL REAL: R900:=Load_1;\n"
+                                   "ENDEXTERN\n")
+    m = Machine()
+    m.program_path = [lists]
+    text = 'PROGRAM 81;\nCHANNEL NC 1;\nCENTRAL: "CENLIST";\nBEGIN\n  Load_1 = 5;\nEND.\n'
+    p = tmp_path / "p.cl8"
+    assert get_dialect("cl800").check(str(p), text, m) == []
+    assert get_dialect("cl800").build(str(p), text, m).text() == "%SPF81\n@201 R900 K5 M17\n"
+
+
+def test_strict_mode_drops_the_leniencies(tmp_path: Path):
+    m = Machine()
+    m.sections["cl800"] = {"strict": True}
+    d = get_dialect("cl800")
+    p = str(tmp_path / "p.cl8")
+    head = "PROGRAM 9;\nCHANNEL NC 0;\nLOCAL REAL: R60:=a_b;\nBEGIN\n"
+    assert d.check(p, head + "  R60 = 1\nEND.\n", Machine()) == []
+    assert [x.code for x in d.check(p, head + "  R60 = 1\nEND.\n", m)] == ["E001"]
+    assert [x.code for x in d.check(p, head + "  R60 := 1;\nEND.\n", m)] == ["E004"]
+    assert [x.code for x in d.check(p, head + "  a_b. = 1;\nEND.\n", m)] == ["E047"]  # read as a bit access
+    assert d.check(p, head + "  a_b. = 1;\nEND.\n", Machine()) == []
+    m.sections["cl800"] = {"stict": True}
+    with pytest.raises(UsageError, match="cl800.stict"):
+        d.check(p, head + "END.\n", m)

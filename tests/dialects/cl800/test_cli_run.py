@@ -1,0 +1,69 @@
+"""The command line (compile, --xref, check --all) and the run() hand-over to the sin800 NC."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from click.testing import CliRunner
+
+from ncvm import dialects
+from ncvm.api import run
+from ncvm.cli import cli
+from ncvm.runtime.session import RunOptions
+
+GOLDEN = Path(__file__).parent / "golden"
+
+
+def test_compile_command_writes_object_and_listing(tmp_path: Path):
+    src = tmp_path / "if.cl8"
+    src.write_text((GOLDEN / "b_if_then_else.cl8").read_text())
+    res = CliRunner().invoke(cli, ["compile", str(src), "--xref", str(tmp_path / "if.lst")])
+    assert res.exit_code == 0, res.output
+    assert (tmp_path / "L505.spf").read_text() == (GOLDEN / "b_if_then_else.spf").read_text()
+    assert (tmp_path / "if.lst").read_text() == (GOLDEN / "b_if_then_else.lst").read_text()
+
+
+def test_compile_command_reports_the_first_error(tmp_path: Path):
+    src = tmp_path / "bad.cl8"
+    src.write_text("PROGRAM 9;\nCHANNEL NC 0;\nBEGIN\n  R60 = 1;\n  R61 = 2;\nEND.\n")
+    res = CliRunner().invoke(cli, ["compile", str(src)])
+    assert res.exit_code == 1
+    assert "bad.cl8:4:3: error E041: Parameter not declared (R60)" in res.output
+    assert "R61" not in res.output
+    assert not (tmp_path / "L9.spf").exists()
+    res = CliRunner().invoke(cli, ["check", "--all", str(src)])
+    assert "E041" in res.output and "(R61)" in res.output
+
+
+class _RecordingNc:
+    """Stands in for the sin800 dialect: records what the CL 800 front end hands over."""
+
+    def __init__(self):
+        self.calls = []
+
+    def run(self, path, text, session):
+        self.calls.append((path, text, session))
+        session.variables["handed_over"] = 1
+
+
+def test_run_hands_the_object_program_to_sin800(tmp_path: Path, monkeypatch):
+    nc = _RecordingNc()
+    monkeypatch.setitem(dialects._LOADED, "sin800", nc)
+    src = tmp_path / "for.cl8"
+    src.write_text((GOLDEN / "c_for_to.cl8").read_text())
+    result, session = run(src, options=RunOptions(state_dir=tmp_path / ".ncvm"))
+    assert result["status"] == "ok" and result["dialect"] == "cl800"
+    [(path, text, sess)] = nc.calls
+    assert path == str(tmp_path / "L502.spf")
+    assert text == (GOLDEN / "c_for_to.spf").read_text()
+    assert sess is session and result["variables"] == {"handed_over": 1}
+
+
+def test_run_stops_before_the_nc_on_a_compile_error(tmp_path: Path, monkeypatch):
+    nc = _RecordingNc()
+    monkeypatch.setitem(dialects._LOADED, "sin800", nc)
+    src = tmp_path / "bad.cl8"
+    src.write_text("PROGRAM 9;\nCHANNEL NC 0;\nBEGIN\n  R60 = 1;\nEND.\n")
+    result, _ = run(src, options=RunOptions(state_dir=tmp_path / ".ncvm"))
+    assert result["error"]["code"] == "E041" and result["error"]["line"] == 4
+    assert nc.calls == []
