@@ -43,10 +43,14 @@ def f_round(x):
 
 
 def f_sqrt(x):
-    x = _num(x, "SQRT")
-    if x < 0:
-        raise CplError("CPL029", f"SQRT of the negative number {x}")
-    return math.sqrt(x)
+    try:
+        return _msqrt(x)
+    except (ValueError, TypeError):
+        x = _num(x, "SQRT")
+        raise CplError("CPL029", f"SQRT of the negative number {x}") from None
+
+
+_msqrt = math.sqrt
 
 
 _RAD = math.pi / 180.0

@@ -204,6 +204,8 @@ class Gen:
             res = types[0] if types[0] in NUMERIC else "?"
         elif res == "RD":
             res = "D" if types[0] in ("D", "?") else "R"
+        if len(codes) == 1 and types[0] in NUMERIC and e.name in INLINE:
+            return INLINE[e.name].format(codes[0]), res
         fn = f"_F_{e.name.replace('$', '_S')}"
         args = ", ".join((["_rt"] if b.rt else []) + codes)
         return f"{fn}({args})", res
@@ -335,6 +337,11 @@ class Gen:
             if dims is None:
                 if tv.index:
                     raise GenError("CPL035", f"{v.display} is used with an index but never DIMensioned")
+                if v.type == "I" and ty == "I" and isinstance(e, (A.Bin, A.Unary)):
+                    # INTEGER arithmetic: check the 32-bit range inline (cheaper than a call)
+                    self.emit(f"{name} = {code}", line)
+                    self.emit(f"if not -2147483648 <= {name} <= 2147483647: {name} = _toi({name})", line)
+                    return
                 value = self.convert(v.type, e, code, ty)
                 self.emit(f"{name} = {value}", line)
                 return
@@ -927,11 +934,20 @@ def _tname(ty: str) -> str:
             "?": "unknown"}.get(ty, ty)
 
 
+#: built-ins with a numeric argument known at compile time, written inline (no call, no type check)
+INLINE = {
+    "ABS": "abs({0})",
+    "INT": "int({0})",
+    "SIN": "_msin({0} * 0.017453292519943295)",
+    "COS": "_mcos({0} * 0.017453292519943295)",
+    "ATAN": "(_matan({0}) * 57.29577951308232)",
+}
+
 HELPER_NAMES = (
     "_rt", "_st", "_G", "_PM", "_EP", "_f32", "_toi", "_tor", "_tod", "_tob", "_tos", "_bad_assign", "_cond",
     "_logic", "_lnot", "_ix", "_sv", "_view", "_setf", "_midw", "_dim", "_pdim", "_gfield", "_gset_s", "_par",
     "_call", "_q", "_drain", "_wait", "_prn", "_Block", "_loose", "_word", "_mval", "_modal", "_modal_call",
-    "_runaway", "_hook", "_caseval",
+    "_runaway", "_hook", "_caseval", "_msin", "_mcos", "_matan",
 ) + tuple(f"_F_{name.replace('$', '_S')}" for name in FUNCTIONS)
 
 

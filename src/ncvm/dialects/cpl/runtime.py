@@ -8,6 +8,7 @@ therefore see the executed position, stale without a WAIT, exactly as the manual
 
 from __future__ import annotations
 
+import math
 import traceback
 from collections import deque
 from pathlib import Path
@@ -43,6 +44,7 @@ class CplRuntime:
         self.perm = Permanents(session)
         self.queue: deque = deque()
         self.modal = [None]
+        self._modal_busy = False
         self.stack: list[tuple[str, int]] = []  # (path, line of the call) for each active sub-program
         self.active: list[str] = []
         self.hook = session.options.hook
@@ -98,6 +100,7 @@ class CplRuntime:
             "_modal_call": lambda line: self.modal_call(path, line),
             "_runaway": lambda line: self.session.steps.runaway(path, line),
             "_hook": self._hook_for(path), "_caseval": _caseval,
+            "_msin": math.sin, "_mcos": math.cos, "_matan": math.atan,
         }
         for name, b in FUNCTIONS.items():
             h[f"_F_{name.replace('$', '_S')}"] = b.impl
@@ -222,8 +225,15 @@ class CplRuntime:
                 return
 
     def modal_call(self, caller: str, line: int) -> None:
+        """After a traversing block: run the modal sub-program again, but not from inside itself."""
         name, args = self.modal[0]
-        self.call(caller, name, args, False, line)
+        if self._modal_busy:
+            return
+        self._modal_busy = True
+        try:
+            self.call(caller, name, args, False, line)
+        finally:
+            self._modal_busy = False
 
     # -- globals ------------------------------------------------------------------------------
     def gfield(self, key: str):
