@@ -743,10 +743,12 @@ class Gen:
                 if info["otherwise"] is not None:
                     leaders.add(info["otherwise"] + 1)
                 leaders.add(info["end"] + 1)
-            elif t in (A.For, A.While):
+            elif t is A.For:
                 leaders.add(pair[i]["end"] + 1)
                 leaders.add(("t", i))
-                leaders.add(i + 1)
+            elif t is A.While:
+                leaders.add(i)
+                leaders.add(pair[i]["end"] + 1)
             elif t is A.Repeat:
                 leaders.add(i + 1)
         order = sorted((x for x in leaders if isinstance(x, int)))
