@@ -529,9 +529,9 @@ class Gen:
                 if isinstance(w.expr, (A.Var, A.Func)) or ty == "?":
                     code = f"_word({code})"
                 if w.address == "G":
-                    g_dyn.append(code)
+                    g_dyn.append(f"_nocall('G', {code})")
                 elif w.address == "M":
-                    m_dyn.append(code)
+                    m_dyn.append(f"_nocall('M', {code})")
                 else:
                     words_dyn.append((w.address, code))
         ends = s.ends
@@ -949,7 +949,7 @@ HELPER_NAMES = (
     "_rt", "_st", "_G", "_PM", "_EP", "_f32", "_toi", "_tor", "_tod", "_tob", "_tos", "_bad_assign", "_cond",
     "_logic", "_lnot", "_ix", "_sv", "_view", "_setf", "_midw", "_dim", "_pdim", "_gfield", "_gset_s", "_par",
     "_call", "_q", "_drain", "_wait", "_prn", "_Block", "_loose", "_word", "_mval", "_modal", "_modal_call",
-    "_runaway", "_hook", "_caseval", "_msin", "_mcos", "_matan",
+    "_runaway", "_hook", "_caseval", "_nocall", "_msin", "_mcos", "_matan",
 ) + tuple(f"_F_{name.replace('$', '_S')}" for name in FUNCTIONS)
 
 

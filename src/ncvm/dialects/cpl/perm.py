@@ -120,7 +120,7 @@ class Permanents:
         self.decls = read_declarations(self.root)
         existing = store.items(NS)
         with store.batch():
-            for key, val in existing.items():
+            for key, val in list(existing.items()):
                 if key.startswith("@") and not key[1:].isdigit() and not key.startswith("@_R("):
                     name = key[1:]
                     decl = self.decls.get(name)

@@ -20,7 +20,7 @@ from . import values as V
 from .builtins import FUNCTIONS
 from .codegen import HELPER_NAMES, generate
 from .errors import CplError, fault, message
-from .linker import SUB_EXTENSIONS, LinkResult, link_one
+from .linker import SUB_EXTENSIONS, LinkResult, call_table, link_one
 from .perm import DeclError, Permanents
 
 MAX_NESTING = 7  # sub-program levels below the main program (manual §2.1 L323)
@@ -44,6 +44,7 @@ class CplRuntime:
         self.perm = Permanents(session)
         self.queue: deque = deque()
         self.modal = [None]
+        self.calls = call_table(self.machine)
         self._modal_busy = False
         self.stack: list[tuple[str, int]] = []  # (path, line of the call) for each active sub-program
         self.active: list[str] = []
@@ -99,7 +100,7 @@ class CplRuntime:
             "_word": V.word, "_mval": _mval, "_modal": self.modal,
             "_modal_call": lambda line: self.modal_call(path, line),
             "_runaway": lambda line: self.session.steps.runaway(path, line),
-            "_hook": self._hook_for(path), "_caseval": _caseval,
+            "_hook": self._hook_for(path), "_caseval": _caseval, "_nocall": self.nocall,
             "_msin": math.sin, "_mcos": math.cos, "_matan": math.atan,
         }
         for name, b in FUNCTIONS.items():
@@ -223,6 +224,14 @@ class CplRuntime:
                 self.drain()
             if s.ends:
                 return
+
+    def nocall(self, address: str, value):
+        """An address that calls a sub-program may not take its value from [ ] (manual §2.1.1 L371)."""
+        value = V.word(value)
+        key = f"{address}{int(value) if value == int(value) else value}"
+        if key in self.calls:
+            raise CplError("CPL013", f"{address}[...] gives {key}, which calls {self.calls[key][0]}")
+        return value
 
     def modal_call(self, caller: str, line: int) -> None:
         """After a traversing block: run the modal sub-program again, but not from inside itself."""
