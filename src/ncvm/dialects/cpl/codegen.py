@@ -15,6 +15,8 @@ from .errors import diag
 from .lexer import VarName
 from .values import f32
 
+#: parameter Pn seen through its suffix (digest §4.8): the conversion applied to the passed value
+PARAM_VIEW = {"%": "_pint", "": "_tor", "!": "_tod", "?": "_tob", "$": "_tos"}
 SUFFIX_TAG = {"%": "i", "": "r", "!": "d", "?": "b", "$": "s"}
 CONVERT = {"I": "_toi", "R": "_tor", "D": "_tod", "B": "_tob", "S": "_tos"}
 AXIS_LETTERS = set("XYZABCUVW")
@@ -55,6 +57,7 @@ class Gen:
         self.fields = ln.fields
         self.diags: list = []
         self.cur = None
+        self.max_param = 0
 
     # -- names -----------------------------------------------------------------
     def local(self, v: VarName) -> str:
@@ -243,7 +246,9 @@ class Gen:
         if v.cls == "A":
             if idx:
                 raise GenError("CPL001", f"parameter {v.display} has no index")
-            return f"_par(P, {v.name}, {v.suffix!r})", ty
+            k = int(v.name)
+            self.max_param = max(self.max_param, k)
+            return f"{PARAM_VIEW[v.suffix]}(P[{k - 1}])", ty
         raise GenError("CPL012", v.display)
 
     def _field_read(self, base: str, v: VarName, dims: int, idx: list[str]) -> str:
@@ -886,6 +891,8 @@ class Gen:
         src._indent = 2
         for name in sorted(set(self.locals.values())):
             src.emit(f"{name} = None")
+        if self.max_param:
+            src.emit(f"if len(P) < {self.max_param}: P = P + (None,) * ({self.max_param} - len(P))")
         src.emit("_n = 0")
         src.emit("_lim = _st.limit - _st.steps")
         src.emit("try:")
@@ -947,7 +954,7 @@ INLINE = {
 
 HELPER_NAMES = (
     "_rt", "_st", "_G", "_PM", "_EP", "_f32", "_toi", "_tor", "_tod", "_tob", "_tos", "_bad_assign", "_cond",
-    "_logic", "_lnot", "_ix", "_sv", "_view", "_setf", "_midw", "_dim", "_pdim", "_gfield", "_gset_s", "_par",
+    "_logic", "_lnot", "_ix", "_sv", "_view", "_setf", "_midw", "_dim", "_pdim", "_gfield", "_gset_s", "_pint",
     "_call", "_q", "_drain", "_wait", "_prn", "_Block", "_loose", "_word", "_mval", "_modal", "_modal_call",
     "_runaway", "_hook", "_caseval", "_nocall", "_msin", "_mcos", "_matan",
 ) + tuple(f"_F_{name.replace('$', '_S')}" for name in FUNCTIONS)

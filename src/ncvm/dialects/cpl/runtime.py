@@ -93,7 +93,7 @@ class CplRuntime:
             "_f32": V.f32, "_toi": V.to_int, "_tor": V.to_real, "_tod": V.to_double, "_tob": V.to_bool,
             "_tos": V.to_str, "_bad_assign": _bad_assign, "_cond": V.cond, "_logic": V.logic, "_lnot": V.lnot,
             "_ix": V.index, "_sv": V.sv, "_view": _view, "_setf": _setf, "_midw": V.mid_write, "_dim": _dim,
-            "_pdim": _pdim, "_gfield": self.gfield, "_gset_s": self.gset_s, "_par": _par,
+            "_pdim": _pdim, "_gfield": self.gfield, "_gset_s": self.gset_s, "_pint": _pint,
             "_call": lambda name, args, din, line: self.call(path, name, args, din, line),
             "_q": self.queue.append if self.lookahead <= 0 else self.queue_limited,
             "_drain": self.drain, "_wait": self.wait, "_prn": self.prn, "_Block": Block, "_loose": self.loose,
@@ -191,7 +191,6 @@ class CplRuntime:
             target = str(found)
         if target in self.active:
             raise CplError("CPL006", name)
-        args = tuple(V.sv(a) for a in args)
         self.stack.append((caller, line))
         self.active.append(target)
         try:
@@ -434,22 +433,11 @@ def _pdim(params: tuple, n: int, size: int) -> None:
         raise CplError("CPL026", f"PDIM P{n}$({size}) for {v!r}")
 
 
-def _par(params: tuple, n: int, suffix: str):
-    """Parameter Pn seen through the suffix: P2% INTEGER, P1 REAL, P1! DOUBLE, P1$ string, P1? BOOLEAN."""
-    v = params[n - 1] if n <= len(params) else None
-    if v is None:
-        return None
-    if suffix == "%":
-        if v.__class__ is float and v.is_integer():
-            return int(v)
-        return V.to_int(v)
-    if suffix == "":
-        return V.to_real(v)
-    if suffix == "!":
-        return V.to_double(v)
-    if suffix == "?":
-        return V.to_bool(v)
-    return V.to_str(v)
+def _pint(v):
+    """Parameter Pn% (digest §4.8): a whole-numbered REAL passes as INTEGER, other REAL values do not."""
+    if v.__class__ is float and v.is_integer():
+        return int(v)
+    return V.to_int(v)
 
 
 def _mval(v) -> int:
