@@ -210,3 +210,22 @@ def test_goto_out_of_loops_and_case(run_text):
     r = run_text(text, name="p.cpl")
     v = r["variables"]
     assert (v["N%"], v["I%"], v["DONE?"]) == (6, 7, True)
+
+
+def test_global_fields_are_shared_with_sub_programs(tmp_path, run_text):
+    (tmp_path / "FILL.cpl").write_text('10 FOR I% = 1 TO 3\n20 #TAB(I%) = I% * 1.5\n30 NEXT\n40 #NAME$ = "FILLED"\n'
+                                       '50 MID$(#NAME$, 7) = "!"\n')
+    r = run_text("10 DIM #TAB(3) : DIM #NAME$(10)\n20 CALL FILL\n30 S = #TAB(1) + #TAB(2) + #TAB(3)\nM30\n",
+                 name="p.cpl", machine=mill(tmp_path))
+    assert r["status"] == "ok", r["error"]
+    assert r["variables"]["S"] == 9.0
+    assert r["variables"]["#NAME$"] == "FILLED!"
+
+
+def test_parameters_not_passed_are_nul_and_views_convert(tmp_path, run_text):
+    (tmp_path / "VIEW.cpl").write_text('10 #A% = P1% : #B! = P1! : #MISSING? = P3 = NUL : #S$ = P2$\n')
+    r = run_text('10 CALL VIEW [4, "TXT"]\nM30\n', name="p.cpl", machine=mill(tmp_path))
+    v = r["variables"]
+    assert (v["#A%"], v["#B!"], v["#MISSING?"], v["#S$"]) == (4, 4.0, True, "TXT")
+    r = run_text('10 CALL VIEW [2.5, "TXT"]\nM30\n', name="q.cpl", machine=mill(tmp_path))
+    assert r["error"]["code"] == "CPL021"

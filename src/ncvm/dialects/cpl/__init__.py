@@ -45,7 +45,7 @@ class CplDialect(Dialect):
 
     def check(self, path, text, machine, all_errors=False):
         _, diags = self.link(path, text, machine)
-        return diags if all_errors else diags[:1] if diags and False else diags
+        return diags
 
     def run(self, path, text, session):
         from .runtime import CplRuntime
