@@ -84,6 +84,8 @@ class Gen:
         t = type(e)
         if t is A.Num:
             return repr(e.value), e.type
+        if t is _Raw:
+            return e.code, e.ty
         if t is A.Str:
             return repr(e.value), "S"
         if t is A.BoolLit:
@@ -542,12 +544,10 @@ class Gen:
         ends = s.ends
         m_sub = [m for m in m_const if m not in (2, 30)]
         has_motion = any(k[0] in AXIS_LETTERS for k in words_const) or any(a[0] in AXIS_LETTERS for a, _ in words_dyn)
-        pre = "if not _rt.block_skip: " if s.skip else ""
         if s.skip:
             self.emit("if not _rt.block_skip:", line)
             self.src._indent += 1
         queued = bool(g_const or m_const or words_const or g_dyn or m_dyn or words_dyn or s.loose or s.msg is not None)
-        del pre
         if queued:
             dynamic = bool(g_dyn or m_dyn or words_dyn or s.loose)
             if not dynamic:
@@ -919,18 +919,6 @@ class _Raw:
     def __init__(self, code: str, ty: str):
         self.code = code
         self.ty = ty
-
-
-_orig_ex = Gen.ex
-
-
-def _ex_with_raw(self, e):
-    if isinstance(e, _Raw):
-        return e.code, e.ty
-    return _orig_ex(self, e)
-
-
-Gen.ex = _ex_with_raw
 
 
 def _maybe_nul(e) -> bool:

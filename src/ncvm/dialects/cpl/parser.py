@@ -306,7 +306,7 @@ class BlockParser:
             if self.at("op", "("):
                 self.next()
                 paren = True
-            ic = self.expect("kw", "IC", "IC(...)")
+            self.expect("kw", "IC", "IC(...)")
             self.expect("op", "(", "'('")
             w.ic = self.arg_list(")")
             self.expect("op", ")", "')'")
@@ -315,7 +315,6 @@ class BlockParser:
             if self.at("op", "="):
                 self.next()
                 w.state = self.expr()
-            del ic
         if self.at("op", ","):
             self.next()
             if not self.at("op", ",") and not self.at("op", ")"):
@@ -511,8 +510,6 @@ def parse_nc(text: str, lineno: int, calls: dict) -> A.NcBlock:
         if j < n and s[j] == "[":
             k = _close_bracket(s, j, lineno)
             e = _nc_expr(s[j + 1:k], lineno, j + 1)
-            if addr in ("G", "M") and calls:
-                pass  # a called address may not use [ ] (L371): checked when the value is known
             blk.words.append(A.NcWord(addr, None, e))
             i = k + 1
             continue
