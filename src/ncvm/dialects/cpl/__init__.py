@@ -1,0 +1,59 @@
+"""Bosch Rexroth CPL (Customer Programming Language, Typ3 osa / PNC): CPL blocks mixed with DIN 66025 NC blocks.
+
+Pipeline: lexer (line classification, tokens) -> parser (flat statements) -> linker (structure pairing,
+jump targets, sub-programs; cached by content) -> codegen (Python source) -> runtime (motion queue,
+permanents, calls) -> NC kernel.
+"""
+
+from __future__ import annotations
+
+import re
+
+from ...diagnostics import CompileFailed
+from ..base import Dialect
+from .codegen import generate
+from .linker import link
+
+_CPL_LINE = re.compile(r"^\s*\d+\s*(REM|IF|FOR|WHILE|GOTO|CALL|DIM|CASE|[A-Z#@][A-Z0-9_]*[%!?$]?\s*(\(.*\))?\s*=)",
+                       re.I)
+
+
+class CplDialect(Dialect):
+    id = "cpl"
+    title = "Bosch Rexroth CPL (Typ3 osa / PNC)"
+    extensions = (".cpl",)
+
+    def sniff(self, text: str) -> int:
+        lines = [ln for ln in text.splitlines()[:200] if ln.strip()]
+        if not lines:
+            return 0
+        hits = sum(1 for ln in lines if _CPL_LINE.match(ln))
+        return min(100, int(300 * hits / len(lines)))
+
+    def link(self, path, text, machine):
+        res = link(path, text, machine)
+        diags = list(res.diagnostics)
+        if not diags:
+            for ln in res.units.values():
+                if ln.unit is None:
+                    uc, more = generate(ln)
+                    if more:
+                        diags.extend(more)
+                    else:
+                        ln.unit = uc
+        return res, diags
+
+    def check(self, path, text, machine, all_errors=False):
+        _, diags = self.link(path, text, machine)
+        return diags
+
+    def run(self, path, text, session):
+        from .runtime import CplRuntime
+
+        res, diags = self.link(path, text, session.machine)
+        if diags:
+            raise CompileFailed(diags)
+        CplRuntime(session, res).run_main()
+
+
+DIALECT = CplDialect()

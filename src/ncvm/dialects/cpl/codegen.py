@@ -1,0 +1,958 @@
+"""CPL program -> Python source (one function per program), through runtime.codegen.PySource.
+
+Programs without GOTO become structured Python (if/while); programs with GOTO become a basic-block
+dispatch loop (``while True: if _pc == k: ...``) so a jump may leave any structure. Local variables
+are Python locals; NUL is ``None``. Types are known from the suffixes, so most conversions and the
+REAL (binary32) comparison rule of digest §4.2 are decided here, not at run time.
+"""
+
+from __future__ import annotations
+
+from ...runtime.codegen import PySource
+from . import ast as A
+from .builtins import FUNCTIONS
+from .errors import diag
+from .lexer import VarName
+from .values import f32
+
+#: parameter Pn seen through its suffix (digest §4.8): the conversion applied to the passed value
+PARAM_VIEW = {"%": "_pint", "": "_tor", "!": "_tod", "?": "_tob", "$": "_tos"}
+SUFFIX_TAG = {"%": "i", "": "r", "!": "d", "?": "b", "$": "s"}
+CONVERT = {"I": "_toi", "R": "_tor", "D": "_tod", "B": "_tob", "S": "_tos"}
+AXIS_LETTERS = set("XYZABCUVW")
+NUMERIC = ("I", "R", "D")
+
+
+class GenError(Exception):
+    def __init__(self, code: str, detail: str, stmt: A.Stmt | None = None):
+        self.code = code
+        self.detail = detail
+        self.stmt = stmt
+
+
+class UnitCode:
+    """The generated code of one program: source text, line map, constants and reported variable names."""
+
+    def __init__(self, path: str, src: PySource, consts: list, cpl_lines: dict, report: list):
+        self.path = path
+        self.src = src
+        self.text = src.text()
+        self.code = src.compile()
+        self.consts = consts
+        self.cpl_lines = cpl_lines  # physical line -> CPL line number
+        self.report = report  # (python name, shown name)
+
+
+class Gen:
+    def __init__(self, ln, hook: bool = False):
+        self.ln = ln
+        self.prog = ln.prog
+        self.stmts = ln.prog.stmts
+        self.path = ln.prog.path
+        self.src = PySource(self.path)
+        self.hook = hook
+        self.locals: dict[VarName, str] = {}
+        self.consts: list = []
+        self.tmp = 0
+        self.fields = ln.fields
+        self.diags: list = []
+        self.cur = None
+        self.max_param = 0
+
+    # -- names -----------------------------------------------------------------
+    def local(self, v: VarName) -> str:
+        name = self.locals.get(v)
+        if name is None:
+            name = f"v_{v.name}_{SUFFIX_TAG[v.suffix]}"
+            self.locals[v] = name
+        return name
+
+    def const(self, value) -> str:
+        self.consts.append(value)
+        return f"_K[{len(self.consts) - 1}]"
+
+    def temp(self, base: str) -> str:
+        self.tmp += 1
+        return f"_{base}{self.tmp}"
+
+    def emit(self, text: str, line: int | None = None) -> None:
+        self.src.emit(text, line)
+
+    # -- expressions -------------------------------------------------------------
+    def ex(self, e) -> tuple[str, str]:
+        """(python expression, type) with type in I R D B S, N (NUL) or ? (known only at run time)."""
+        t = type(e)
+        if t is A.Num:
+            return repr(e.value), e.type
+        if t is _Raw:
+            return e.code, e.ty
+        if t is A.Str:
+            return repr(e.value), "S"
+        if t is A.BoolLit:
+            return ("True" if e.value else "False"), "B"
+        if t is A.Nul:
+            return "None", "N"
+        if t is A.Var:
+            return self.read(e)
+        if t is A.Unary:
+            code, ty = self.ex(e.operand)
+            if e.op == "NOT":
+                if ty == "B":
+                    return f"(not _cond({code}))" if _maybe_nul(e.operand) else f"(not {code})", "B"
+                if ty == "I":
+                    return f"(~{code})", "I"
+                if ty in ("?",):
+                    return f"_lnot({code})", "?"
+                raise GenError("CPL032", f"NOT of a {_tname(ty)} value")
+            if ty not in NUMERIC + ("?",):
+                raise GenError("CPL032", f"sign of a {_tname(ty)} value")
+            return (f"(-{code})" if e.op == "-" else code), ty
+        if t is A.Func:
+            return self.func(e)
+        if t is A.Bin:
+            return self.binary(e)
+        raise GenError("CPL001", f"cannot compile {e!r}")
+
+    def binary(self, e: A.Bin) -> tuple[str, str]:
+        op = e.op
+        if op in ("=", "<>") and (isinstance(e.right, A.Nul) or isinstance(e.left, A.Nul)):
+            other = e.left if isinstance(e.right, A.Nul) else e.right
+            code, _ = self.ex(other)
+            return (f"({code} is None)" if op == "=" else f"({code} is not None)"), "B"
+        if op == "+" and self._is_string(e):
+            parts = self._chain(e)
+            if len(parts) > 3:
+                raise GenError("2153", f"string chaining of {len(parts)} operands (at most 3)")
+            codes = []
+            for p in parts:
+                c, ty = self.ex(p)
+                if ty not in ("S", "?"):
+                    raise GenError("CPL032", f"'+' joins strings, not a {_tname(ty)} value")
+                codes.append(c)
+            return "(" + " + ".join(codes) + ")", "S"
+        lc, lt = self.ex(e.left)
+        rc, rt = self.ex(e.right)
+        if op in ("AND", "OR", "XOR"):
+            pyop = {"AND": "&", "OR": "|", "XOR": "^"}[op]
+            if lt == rt and lt in ("B", "I"):
+                if lt == "B" and (_maybe_nul(e.left) or _maybe_nul(e.right)):
+                    return f"_logic({op!r}, {lc}, {rc})", "B"
+                return f"({lc} {pyop} {rc})", lt
+            if "?" in (lt, rt) and {lt, rt} <= {"B", "I", "?"}:
+                return f"_logic({op!r}, {lc}, {rc})", (lt if lt != "?" else rt)
+            raise GenError("CPL032", f"{op} of {_tname(lt)} and {_tname(rt)}")
+        if op in ("+", "-", "*", "/"):
+            for ty in (lt, rt):
+                if ty not in NUMERIC + ("?",):
+                    raise GenError("CPL032", f"'{op}' of a {_tname(ty)} value")
+            if op == "/":
+                ty = "D" if "D" in (lt, rt) or "?" in (lt, rt) else "R"
+                return f"({lc} / {rc})", ty
+            if lt == "I" and rt == "I":
+                return f"({lc} {op} {rc})", "I"
+            if "?" in (lt, rt):
+                return f"({lc} {op} {rc})", "?"
+            return f"({lc} {op} {rc})", ("D" if "D" in (lt, rt) else "R")
+        # relational
+        pyop = {"=": "==", "<>": "!=", "<": "<", ">": ">", "<=": "<=", ">=": ">="}[op]
+        if lt in NUMERIC and rt in NUMERIC:
+            if "D" not in (lt, rt) and "R" in (lt, rt):
+                lc, rc = self._single(e.left, lc, lt), self._single(e.right, rc, rt)
+            return f"({lc} {pyop} {rc})", "B"
+        if lt == rt or "?" in (lt, rt):
+            if lt == "B" and pyop not in ("==", "!="):
+                raise GenError("CPL032", f"'{op}' on BOOLEAN values")
+            return f"({lc} {pyop} {rc})", "B"
+        raise GenError("CPL032", f"comparison of {_tname(lt)} with {_tname(rt)}")
+
+    def _single(self, e, code: str, ty: str) -> str:
+        """An operand of a REAL comparison rounded to binary32 (digest §4.2), unless it already is."""
+        if isinstance(e, A.Num):
+            return repr(f32(e.value))
+        if ty == "I":
+            return code
+        if isinstance(e, A.Var) and ty == "R" and e.var.cls != "A":
+            return code  # REAL variables hold binary32 values already
+        return f"_f32({code})"
+
+    def _is_string(self, e) -> bool:
+        if isinstance(e, A.Bin) and e.op == "+":
+            return self._is_string(e.left) or self._is_string(e.right)
+        try:
+            return self.ex(e)[1] == "S"
+        except GenError:
+            return False
+
+    def _chain(self, e) -> list:
+        if isinstance(e, A.Bin) and e.op == "+":
+            return self._chain(e.left) + self._chain(e.right)
+        return [e]
+
+    def func(self, e: A.Func) -> tuple[str, str]:
+        b = FUNCTIONS.get(e.name)
+        if b is None:
+            raise GenError("CPL037", f"{e.name} (chapters 4-9 of the manual come in a later version)")
+        n = len(e.args)
+        if not b.min_args <= n <= b.max_args:
+            raise GenError("CPL001", f"{e.name} takes {b.min_args}..{b.max_args} arguments, not {n}")
+        codes, types = [], []
+        for a in e.args:
+            if a is None:
+                codes.append("None")
+                types.append("N")
+                continue
+            c, ty = self.ex(a)
+            codes.append(c)
+            types.append(ty)
+        res = b.result
+        if res == "=":
+            res = types[0] if types[0] in NUMERIC else "?"
+        elif res == "RD":
+            res = "D" if types[0] in ("D", "?") else "R"
+        if len(codes) == 1 and types[0] in NUMERIC and e.name in INLINE:
+            return INLINE[e.name].format(codes[0]), res
+        fn = f"_F_{e.name.replace('$', '_S')}"
+        args = ", ".join((["_rt"] if b.rt else []) + codes)
+        return f"{fn}({args})", res
+
+    # -- variables ----------------------------------------------------------------
+    def read(self, e: A.Var) -> tuple[str, str]:
+        v = e.var
+        ty = v.type
+        idx = [self.index(i) for i in e.index] if e.index else []
+        if v.cls == "L":
+            name = self.local(v)
+            dims = self.fields.get(v)
+            if dims is None:
+                if idx:
+                    raise GenError("CPL035", f"{v.display} is used with an index but never DIMensioned")
+                if ty == "S":
+                    return f"_sv({name})", "S"
+                return name, ty
+            return self._field_read(name, v, dims, idx), ty
+        if v.cls == "G":
+            key = repr(v.display)
+            if not idx:
+                return (f"_sv(_G.get({key}))" if ty == "S" else f"_G.get({key})"), ty
+            return self._field_read(f"_gfield({key})", v, len(idx) if ty != "S" else len(idx) + 1, idx), ty
+        if v.cls == "P":
+            if idx:
+                raise GenError("CPL001", f"{v.display} is not a field")
+            return f"_PM.get_n({v.name})", "I"
+        if v.cls == "R":
+            if len(idx) != 1:
+                raise GenError("CPL001", "@_R needs one index (1..100)")
+            return f"_PM.get_r({idx[0]})", "D"
+        if v.cls == "D":
+            return f"_PM.get_d({v.name!r}, {v.suffix!r}, ({', '.join(idx)}{',' if idx else ''}))", ty
+        if v.cls == "A":
+            if idx:
+                raise GenError("CPL001", f"parameter {v.display} has no index")
+            k = int(v.name)
+            self.max_param = max(self.max_param, k)
+            return f"{PARAM_VIEW[v.suffix]}(P[{k - 1}])", ty
+        raise GenError("CPL012", v.display)
+
+    def _field_read(self, base: str, v: VarName, dims: int, idx: list[str]) -> str:
+        if v.suffix == "$":
+            if dims == 1:
+                if idx:
+                    raise GenError("CPL001", f"{v.display} is a 1-dimensional character field: no index")
+                return f"_sv({base})"
+            if len(idx) != 1:
+                raise GenError("CPL001", f"{v.display}: one index selects a string of the 2-dimensional field")
+            return f"{base}[{idx[0]}].s"
+        if len(idx) != dims:
+            raise GenError("CPL001", f"{v.display} needs {dims} ind{'ex' if dims == 1 else 'ices'}")
+        return base + "".join(f"[{i}]" for i in idx)
+
+    def index(self, e) -> str:
+        code, ty = self.ex(e)
+        if isinstance(e, A.Num) and ty == "I":
+            return code
+        if ty not in ("I", "?"):
+            raise GenError("CPL031", f"index must be INTEGER, not {_tname(ty)}")
+        return f"_ix({code})"
+
+    # -- assignment --------------------------------------------------------------
+    def convert(self, target_type: str, e, code: str, ty: str) -> str:
+        """Python expression storing value ``code`` (type ``ty``) into a variable of ``target_type``."""
+        if ty == "N":
+            return "None"
+        if target_type == "I":
+            if ty == "I":
+                if isinstance(e, (A.Num, A.Var, A.Func)):
+                    return code
+                return f"_toi({code})"
+            if ty in ("R", "D"):
+                return "_bad_assign('REAL value assigned to an INTEGER variable (use INT or ROUND)')"
+            if ty in ("B", "S"):
+                raise GenError("CPL021", f"{_tname(ty)} value assigned to an INTEGER variable")
+            return f"_toi({code})"
+        if target_type == "R":
+            if ty in ("B", "S"):
+                raise GenError("CPL021", f"{_tname(ty)} value assigned to a REAL variable")
+            if ty == "R" and isinstance(e, A.Var) and e.var.cls != "A":
+                return code
+            if isinstance(e, A.Num):
+                return repr(f32(e.value))
+            return f"_f32({code})" if ty != "?" else f"_tor({code})"
+        if target_type == "D":
+            if ty in ("B", "S"):
+                raise GenError("CPL021", f"{_tname(ty)} value assigned to a DOUBLE variable")
+            if isinstance(e, A.Num):
+                return repr(float(e.value))
+            if ty == "I":
+                return f"float({code})"
+            return code if ty in ("R", "D") else f"_tod({code})"
+        if target_type == "B":
+            if ty in NUMERIC or ty == "S":
+                raise GenError("CPL021", f"{_tname(ty)} value assigned to a BOOLEAN variable")
+            return code if ty == "B" and not _maybe_nul(e) else f"_tob({code})"
+        if target_type == "S":
+            if ty in NUMERIC or ty == "B":
+                raise GenError("CPL021", f"{_tname(ty)} value assigned to a CHARACTER variable")
+            return code
+        raise GenError("CPL001", "bad target")
+
+    def assign(self, s: A.Assign) -> None:
+        tv = s.target
+        v = tv.var
+        line = s.line
+        if s.mid is not None:
+            self.mid_write(s)
+            return
+        if v.cls == "A":
+            raise GenError("CPL036", f"{v.display} = ...")
+        e = s.expr
+        # string rules: concatenation / STR$ / TRIM$ of a chain only into character fields (manual §5)
+        is_field_target = self._is_char_field(tv)
+        if v.suffix == "$" and not is_field_target and v.cls in ("L",) and self._needs_field(e):
+            raise GenError("CPL025", f"{v.display} is not DIMensioned; '+' results go to character fields only")
+        if v.suffix == "$" and v.cls == "L" and not is_field_target and isinstance(e, A.Func) and e.name == "MID$" \
+                and isinstance(e.args[0], A.Var) and self._is_char_field(e.args[0]) and e.args[0].var.cls == "L":
+            # a live view into the field (manual L3373-3401)
+            src = self.local(e.args[0].var)
+            start = self.ex(e.args[1])[0]
+            count = self.ex(e.args[2])[0] if len(e.args) > 2 and e.args[2] is not None else "None"
+            self.emit(f"{self.local(v)} = _view({src}, {start}, {count})", line)
+            return
+        code, ty = self.ex(e)
+        if v.cls == "L":
+            name = self.local(v)
+            dims = self.fields.get(v)
+            if dims is None:
+                if tv.index:
+                    raise GenError("CPL035", f"{v.display} is used with an index but never DIMensioned")
+                if v.type == "I" and ty == "I" and isinstance(e, (A.Bin, A.Unary)):
+                    # INTEGER arithmetic: check the 32-bit range inline (cheaper than a call)
+                    self.emit(f"{name} = {code}", line)
+                    self.emit(f"if not -2147483648 <= {name} <= 2147483647: {name} = _toi({name})", line)
+                    return
+                value = self.convert(v.type, e, code, ty)
+                self.emit(f"{name} = {value}", line)
+                return
+            idx = [self.index(i) for i in tv.index] if tv.index else []
+            if v.suffix == "$":
+                if dims == 1:
+                    if idx:
+                        raise GenError("CPL001", f"{v.display} is a 1-dimensional character field: no index")
+                    self.emit(f"_setf({name}, {self.convert('S', e, code, ty)})", line)
+                else:
+                    if len(idx) != 1:
+                        raise GenError("CPL001", f"{v.display}: one index selects a string of the field")
+                    self.emit(f"_setf({name}[{idx[0]}], {self.convert('S', e, code, ty)})", line)
+                return
+            if len(idx) != dims:
+                raise GenError("CPL001", f"{v.display} needs {dims} ind{'ex' if dims == 1 else 'ices'}")
+            self.emit(f"{name}{''.join(f'[{i}]' for i in idx)} = {self.convert(v.type, e, code, ty)}", line)
+            return
+        if v.cls == "G":
+            key = repr(v.display)
+            if ty == "N" and not tv.index:
+                self.emit(f"_G.pop({key}, None)", line)
+                return
+            value = self.convert(v.type, e, code, ty)
+            if not tv.index:
+                if v.suffix == "$":
+                    self.emit(f"_gset_s({key}, {value}, {self._needs_field(e)})", line)
+                else:
+                    self.emit(f"_G[{key}] = {value}", line)
+                return
+            idx = [self.index(i) for i in tv.index]
+            if v.suffix == "$":
+                self.emit(f"_setf(_gfield({key})[{idx[0]}], {value})", line)
+            else:
+                self.emit(f"_gfield({key}){''.join(f'[{i}]' for i in idx)} = {value}", line)
+            return
+        if v.cls == "P":
+            self.emit(f"_PM.set_n({v.name}, {code})", line)
+            return
+        if v.cls == "R":
+            if not tv.index or len(tv.index) != 1:
+                raise GenError("CPL001", "@_R needs one index (1..100)")
+            self.emit(f"_PM.set_r({self.index(tv.index[0])}, {code})", line)
+            return
+        if v.cls == "D":
+            idx = [self.index(i) for i in tv.index] if tv.index else []
+            self.emit(f"_PM.set_d({v.name!r}, {v.suffix!r}, ({', '.join(idx)}{',' if idx else ''}), {code})", line)
+            return
+        raise GenError("CPL012", v.display)
+
+    def _is_char_field(self, tv: A.Var) -> bool:
+        v = tv.var
+        if v.suffix != "$":
+            return False
+        if v.cls == "L":
+            return v in self.fields
+        return v.cls in ("G", "D")  # decided at run time
+
+    def _needs_field(self, e) -> bool:
+        """Results that only a character field may receive: '+' chains, STR$, MID$/TRIM$ of a chain."""
+        if isinstance(e, A.Bin) and e.op == "+":
+            return True
+        if isinstance(e, A.Func) and e.name == "STR$":
+            return True
+        if isinstance(e, A.Func) and e.name in ("MID$", "TRIM$") and e.args and isinstance(e.args[0], A.Bin):
+            return True
+        return False
+
+    def mid_write(self, s: A.Assign) -> None:
+        tv = s.target
+        v = tv.var
+        if v.suffix != "$":
+            raise GenError("CPL032", "MID$(...) = needs a character field")
+        if v.cls == "L":
+            if v not in self.fields:
+                raise GenError("CPL025", f"MID$({v.display},...)= : {v.display} is not DIMensioned")
+            base = self.local(v)
+            if tv.index:
+                base += f"[{self.index(tv.index[0])}]"
+        elif v.cls == "G":
+            base = f"_G.get({v.display!r})"
+            if tv.index:
+                base = f"_gfield({v.display!r})[{self.index(tv.index[0])}]"
+        else:
+            raise GenError("CPL037", "MID$ write on permanent variables")
+        start = self.ex(s.mid[0])[0]
+        count = self.ex(s.mid[1])[0] if s.mid[1] is not None else "None"
+        code, ty = self.ex(s.expr)
+        if ty not in ("S", "?"):
+            raise GenError("CPL032", "MID$(...) = needs a string")
+        self.emit(f"_midw({base}, {start}, {count}, {code})", s.line)
+
+    def store(self, tv: A.Var, value_code: str, value_type: str, line: int) -> None:
+        """Assign an already computed value (WAIT result, FOR counter)."""
+        self.assign(A.Assign(line=line, target=tv, expr=_Raw(value_code, value_type)))
+
+    # -- statements -----------------------------------------------------------------
+    def simple(self, i: int, s) -> None:
+        self.cur = s
+        t = type(s)
+        line = s.line
+        if self.hook:
+            self.emit(f"_hook({line}, locals())", line)
+        if t is A.Assign:
+            self.assign(s)
+        elif t is A.LabelDef:
+            pass
+        elif t is A.CallStmt:
+            args = ", ".join(self.arg(a) for a in s.args)
+            self.emit("_st.steps += _n; _n = 0", line)
+            self.emit(f"_call({s.name!r}, ({args}{',' if s.args else ''}), {s.din}, {line})", line)
+            self.emit("_lim = _st.limit - _st.steps", line)
+        elif t is A.Dim:
+            for var, sizes in s.items:
+                kind = "S" if var.suffix == "$" else var.type
+                if var.cls == "L":
+                    name = self.local(var)
+                    self.emit(f"{name} = _dim({name}, {tuple(sizes)!r}, {kind!r})", line)
+                else:
+                    key = repr(var.display)
+                    self.emit(f"_G[{key}] = _dim(_G.get({key}), {tuple(sizes)!r}, {kind!r})", line)
+        elif t is A.Pdim:
+            self.emit(f"_pdim(P, {s.var.name}, {s.size})", line)
+        elif t is A.Wait:
+            self.wait(s)
+        elif t is A.Proc:
+            self.proc(s)
+        elif t is A.NcBlock:
+            self.nc(s)
+        else:
+            raise GenError("CPL001", f"unexpected {t.__name__}")
+
+    def arg(self, e) -> str:
+        if e is None:
+            return "None"
+        code, ty = self.ex(e)
+        return code
+
+    def wait(self, s: A.Wait) -> None:
+        line = s.line
+        if s.plain:
+            self.emit("_drain()", line)
+            return
+        ic = "None"
+        if s.ic is not None:
+            ic = "(" + ", ".join(self.arg(a) for a in s.ic) + ("," if s.ic else "") + ")"
+        state = self.arg(s.state) if s.state is not None else "True"
+        dur = self.arg(s.duration) if s.duration is not None else "None"
+        r = self.temp("w")
+        self.emit(f"{r} = _wait({ic}, {s.neg}, {state}, {dur})", line)
+        if s.result is not None:
+            self.store(s.result, r, "I", line)
+
+    def proc(self, s: A.Proc) -> None:
+        line = s.line
+        if s.name in ("LJUST", "NJUST"):
+            self.emit(f"_rt.justify = {s.name[0]!r}", line)
+            return
+        if s.name == "PRN#":
+            if not s.args:
+                raise GenError("CPL001", "PRN# needs a file number")
+            args = ", ".join(self.arg(a) for a in s.args)
+            self.emit(f"_prn({args})", line)
+            return
+        raise GenError("CPL037", f"{s.name} (chapters 4-9 of the manual come in a later version)")
+
+    def nc(self, s: A.NcBlock) -> None:
+        line = s.line
+        src = self.const(("src", line))
+        g_const, m_const, g_dyn, m_dyn = [], [], [], []
+        words_const, words_dyn = {}, []
+        for w in s.words:
+            if w.expr is None:
+                if w.address == "G":
+                    v = w.value
+                    g_const.append(int(v) if v == int(v) else v)
+                elif w.address == "M":
+                    m_const.append(int(w.value))
+                else:
+                    words_const[w.address] = w.value
+            else:
+                code, ty = self.ex(w.expr)
+                if ty not in NUMERIC + ("?",):
+                    raise GenError("CPL032", f"[ ] value of address {w.address} is {_tname(ty)}")
+                if isinstance(w.expr, (A.Var, A.Func)) or ty == "?":
+                    code = f"_word({code})"
+                if w.address == "G":
+                    g_dyn.append(f"_nocall('G', {code})")
+                elif w.address == "M":
+                    m_dyn.append(f"_nocall('M', {code})")
+                else:
+                    words_dyn.append((w.address, code))
+        ends = s.ends
+        m_sub = [m for m in m_const if m not in (2, 30)]
+        has_motion = any(k[0] in AXIS_LETTERS for k in words_const) or any(a[0] in AXIS_LETTERS for a, _ in words_dyn)
+        if s.skip:
+            self.emit("if not _rt.block_skip:", line)
+            self.src._indent += 1
+        queued = bool(g_const or m_const or words_const or g_dyn or m_dyn or words_dyn or s.loose or s.msg is not None)
+        if queued:
+            dynamic = bool(g_dyn or m_dyn or words_dyn or s.loose)
+            if not dynamic:
+                blk = self.const(("block", tuple(g_const), tuple(m_const), dict(words_const), s.n, s.msg, line))
+                if ends and m_sub != m_const:
+                    blk_sub = self.const(("block", tuple(g_const), tuple(m_sub), dict(words_const), s.n, s.msg, line))
+                    self.emit(f"_q({blk} if _main else {blk_sub})", line)
+                else:
+                    self.emit(f"_q({blk})", line)
+            else:
+                g = "(" + ", ".join([repr(x) for x in g_const] + g_dyn) + ("," if (g_const or g_dyn) else "") + ")"
+                m_list = [repr(x) for x in m_const]
+                m = "(" + ", ".join(m_list + [f"_mval({c})" for c in m_dyn]) + ("," if (m_list or m_dyn) else "") + ")"
+                if ends and m_sub != m_const:
+                    m_sub_list = [repr(x) for x in m_sub]
+                    m_s = "(" + ", ".join(m_sub_list + [f"_mval({c})" for c in m_dyn]) + \
+                          ("," if (m_sub_list or m_dyn) else "") + ")"
+                    m = f"({m} if _main else {m_s})"
+                items = [f"{k!r}: {v!r}" for k, v in words_const.items()] + [f"{k!r}: {c}" for k, c in words_dyn]
+                words = "{" + ", ".join(items) + "}"
+                if s.loose:
+                    loose = "(" + ", ".join(self.arg(x) for x in s.loose) + ",)"
+                    self.emit(f"_q(_loose({g}, {m}, {words}, {loose}, {s.n!r}, {s.msg!r}, {src}))", line)
+                else:
+                    self.emit(f"_q(_Block({g}, {m}, {words}, {s.n!r}, {s.msg!r}, {src}))", line)
+            if 80 in g_const:
+                self.emit("_modal[0] = None", line)
+            elif has_motion:
+                self.emit(f"if _modal[0] is not None: _modal_call({line})", line)
+        if s.wait:
+            self.emit("_drain()", line)
+        if s.call is not None:
+            name, args, modal = s.call
+            argc = ", ".join(self.arg(a) for a in args)
+            self.emit("_st.steps += _n; _n = 0", line)
+            self.emit(f"_call({name!r}, ({argc}{',' if args else ''}), False, {line})", line)
+            self.emit("_lim = _st.limit - _st.steps", line)
+            if modal:
+                self.emit(f"_modal[0] = ({name!r}, ({argc}{',' if args else ''}))", line)
+        if ends:
+            self.emit("raise _EP", line)
+        if s.skip:
+            self.src._indent -= 1
+
+    # -- structured code (programs without GOTO) ----------------------------------------
+    def count(self, a: int, b: int) -> int:
+        """Statements executed on one straight pass through [a, b) (nested bodies not counted)."""
+        n, i = 0, a
+        pair = self.ln.pair
+        while i < b:
+            s = self.stmts[i]
+            if not isinstance(s, A.LabelDef):
+                n += 1
+            i = pair[i]["end"] + 1 if type(s) in (A.If, A.Case, A.For, A.While, A.Repeat) else i + 1
+        return n
+
+    def structured(self, a: int, b: int) -> None:
+        k = self.count(a, b)
+        if k:
+            self.emit(f"_n += {k}")
+        i = a
+        pair = self.ln.pair
+        while i < b:
+            s = self.stmts[i]
+            self.cur = s
+            t = type(s)
+            if t is A.If:
+                info = pair[i]
+                cond = self.condition(s.cond)
+                with self.src.block(f"if {cond}:", s.line):
+                    self.structured(i + 1, info["else"] if info["else"] is not None else info["end"])
+                if info["else"] is not None:
+                    with self.src.block("else:", self.stmts[info["else"]].line):
+                        self.structured(info["else"] + 1, info["end"])
+                i = info["end"] + 1
+            elif t is A.Case:
+                info = pair[i]
+                sel = self.temp("c")
+                code, ty = self.ex(s.expr)
+                if ty not in ("I", "?"):
+                    raise GenError("CPL032", f"CASE needs an INTEGER expression, not {_tname(ty)}")
+                self.emit(f"{sel} = _caseval({code})", s.line)
+                arms = info["arms"]
+                bounds = arms + ([info["otherwise"]] if info["otherwise"] is not None else []) + [info["end"]]
+                kw = "if"
+                for j, arm in enumerate(arms):
+                    vals = self.stmts[arm].values
+                    test = f"{sel} == {vals[0]}" if len(vals) == 1 else f"{sel} in {tuple(vals)!r}"
+                    with self.src.block(f"{kw} {test}:", self.stmts[arm].line):
+                        self.structured(arm + 1, bounds[j + 1])
+                    kw = "elif"
+                if info["otherwise"] is not None:
+                    ow = info["otherwise"]
+                    with self.src.block("else:" if arms else "if True:", self.stmts[ow].line):
+                        self.structured(ow + 1, info["end"])
+                i = info["end"] + 1
+            elif t is A.For:
+                end = pair[i]["end"]
+                self.for_loop(i, s, end)
+                i = end + 1
+            elif t is A.While:
+                end = pair[i]["end"]
+                cond = self.condition(s.cond)
+                with self.src.block(f"while {cond}:", s.line):
+                    self.structured(i + 1, end)
+                    self.emit("_n += 1")
+                    self.emit(f"if _n > _lim: _runaway({s.line})", self.stmts[end].line)
+                i = end + 1
+            elif t is A.Repeat:
+                end = pair[i]["end"]
+                with self.src.block("while True:", s.line):
+                    self.structured(i + 1, end)
+                    self.emit(f"if _n > _lim: _runaway({s.line})", self.stmts[end].line)
+                    self.emit(f"if {self.condition(self.stmts[end].cond)}: break", self.stmts[end].line)
+                i = end + 1
+            elif t in (A.Else, A.EndIf, A.CaseLabel, A.Otherwise, A.EndCase, A.Next, A.WEnd, A.Until):
+                i += 1
+            else:
+                self.simple(i, s)
+                i += 1
+
+    def condition(self, e) -> str:
+        code, ty = self.ex(e)
+        if ty == "B":
+            return f"_cond({code})" if _maybe_nul(e) else code
+        if ty == "?":
+            return f"_cond({code})"
+        raise GenError("CPL032", f"condition must be BOOLEAN, not {_tname(ty)}")
+
+    def for_parts(self, i: int, s: A.For):
+        v = s.var
+        if v.index or v.var.cls not in ("L", "G") or v.var.type not in NUMERIC:
+            raise GenError("CPL001", "FOR needs a simple numeric variable")
+        ctype = v.var.type
+        start_code, start_ty = self.ex(s.start)
+        end_code, end_ty = self.ex(s.end)
+        if end_ty not in NUMERIC + ("?",):
+            raise GenError("CPL032", "FOR end value must be a number")
+        step = s.step
+        const_step = None
+        if step is None:
+            const_step = 1
+        elif isinstance(step, A.Num):
+            const_step = step.value
+        elif isinstance(step, A.Unary) and step.op == "-" and isinstance(step.operand, A.Num):
+            const_step = -step.operand.value
+        return v, ctype, (start_code, start_ty), end_code, const_step
+
+    def for_loop(self, i: int, s: A.For, end: int) -> None:
+        v, ctype, start, end_code, const_step = self.for_parts(i, s)
+        fe = self.temp("fe")
+        fs = self.temp("fs")
+        self.store(v, start[0], start[1], s.line)
+        self.emit(f"{fe} = {end_code}", s.line)
+        counter, _ = self.read(v)
+        if const_step is not None:
+            test = f"{counter} <= {fe}" if const_step >= 0 else f"{counter} >= {fe}"
+            step_code = repr(const_step)
+            step_ty = "I" if isinstance(const_step, int) else "R"
+        else:
+            step_code, step_ty = self.ex(s.step)
+            self.emit(f"{fs} = {step_code}", s.line)
+            test = f"({counter} <= {fe} if {fs} >= 0 else {counter} >= {fe})"
+        nxt = self.stmts[end]
+        with self.src.block(f"while {test}:", s.line):
+            self.structured(i + 1, end)
+            if const_step is not None:
+                inc_code = f"({counter} + {step_code})"
+            else:
+                self.emit(f"{fs} = {step_code}", nxt.line)
+                inc_code = f"({counter} + {fs})"
+            inc_ty = "I" if ctype == "I" and step_ty == "I" else ("D" if "D" in (ctype, step_ty) else "R")
+            if ctype == "I" and inc_ty == "I" and v.var.cls == "L":
+                self.emit(f"{counter} = {inc_code}", nxt.line)
+            else:
+                self.store(v, inc_code, inc_ty, nxt.line)
+            self.emit("_n += 1")
+            self.emit(f"if _n > _lim: _runaway({s.line})", nxt.line)
+
+    # -- dispatch code (programs with GOTO) ---------------------------------------------------
+    def dispatch(self) -> None:
+        stmts = self.stmts
+        pair = self.ln.pair
+        n = len(stmts)
+        leaders = {0}
+        for i, s in enumerate(stmts):
+            t = type(s)
+            if t is A.Goto:
+                leaders.add(self.ln.jumps[i])
+            elif t is A.If:
+                info = pair[i]
+                leaders.add(info["else"] + 1 if info["else"] is not None else info["end"] + 1)
+                leaders.add(info["end"] + 1)
+            elif t is A.Case:
+                info = pair[i]
+                for arm in info["arms"]:
+                    leaders.add(arm + 1)
+                if info["otherwise"] is not None:
+                    leaders.add(info["otherwise"] + 1)
+                leaders.add(info["end"] + 1)
+            elif t is A.For:
+                leaders.add(pair[i]["end"] + 1)
+                leaders.add(("t", i))
+            elif t is A.While:
+                leaders.add(i)
+                leaders.add(pair[i]["end"] + 1)
+            elif t is A.Repeat:
+                leaders.add(i + 1)
+        order = sorted((x for x in leaders if isinstance(x, int)))
+        pc: dict = {}
+        for x in order:
+            pc[x] = len(pc)
+        for x in leaders:
+            if not isinstance(x, int):
+                pc[x] = len(pc)
+        self.pc = pc
+        self.emit("_pc = 0")
+        with self.src.block("while True:"):
+            self._open(0)
+            for i, s in enumerate(stmts):
+                if i in pc and i != 0:
+                    self._close(pc[i])
+                    self._open(pc[i])
+                self.lower(i, s)
+            if n in pc and n != 0:
+                self._close(pc[n])
+                self._open(pc[n])
+            self.emit("break")
+            self.src._indent -= 1
+
+    def _open(self, k: int) -> None:
+        self.emit(f"if _pc == {k}:")
+        self.src._indent += 1
+        self._chunk_start = len(self.src.lines)
+
+    def _close(self, nxt: int) -> None:
+        self.emit(f"_pc = {nxt}")
+        self.src._indent -= 1
+
+    def jump(self, key, line: int) -> str:
+        return f"_pc = {self.pc[key]}; _n += 1\n" + f"if _n > _lim: _runaway({line})\ncontinue"
+
+    def emit_jump(self, key, line: int) -> None:
+        for part in self.jump(key, line).split("\n"):
+            self.emit(part, line)
+
+    def lower(self, i: int, s) -> None:
+        self.cur = s
+        t = type(s)
+        pair = self.ln.pair
+        line = s.line
+        if t is A.Goto:
+            self.emit_jump(self.ln.jumps[i], line)
+        elif t is A.If:
+            info = pair[i]
+            target = info["else"] + 1 if info["else"] is not None else info["end"] + 1
+            self.emit("_n += 1", line)
+            with self.src.block(f"if not {self.condition(s.cond)}:", line):
+                self.emit_jump(target, line)
+        elif t is A.Else:
+            self.emit_jump(pair[i]["end"] + 1, line)
+        elif t is A.Case:
+            info = pair[i]
+            sel = self.temp("c")
+            code, ty = self.ex(s.expr)
+            if ty not in ("I", "?"):
+                raise GenError("CPL032", f"CASE needs an INTEGER expression, not {_tname(ty)}")
+            self.emit(f"{sel} = _caseval({code}); _n += 1", line)
+            for arm in info["arms"]:
+                vals = self.stmts[arm].values
+                with self.src.block(f"if {sel} in {tuple(vals)!r}:", line):
+                    self.emit_jump(arm + 1, line)
+            other = info["otherwise"] + 1 if info["otherwise"] is not None else info["end"] + 1
+            self.emit_jump(other, line)
+        elif t in (A.CaseLabel, A.Otherwise):
+            self.emit_jump(pair[i]["end"] + 1, line)
+        elif t is A.For:
+            v, ctype, start, end_code, const_step = self.for_parts(i, s)
+            fe, fs = f"_fe{i}", f"_fs{i}"
+            self.store(v, start[0], start[1], line)
+            self.emit(f"{fe} = {end_code}", line)
+            if const_step is not None:
+                self.emit(f"{fs} = {const_step!r}", line)
+            else:
+                self.emit(f"{fs} = {self.ex(s.step)[0]}", line)
+            self._close(self.pc[("t", i)])
+            self._open(self.pc[("t", i)])
+            counter = self.read(v)[0]
+            self.emit("_n += 1", line)
+            with self.src.block(f"if not ({counter} <= {fe} if {fs} >= 0 else {counter} >= {fe}):", line):
+                self.emit_jump(pair[i]["end"] + 1, line)
+        elif t is A.Next:
+            j = pair[i]["for"]
+            f = self.stmts[j]
+            v, ctype, start, end_code, const_step = self.for_parts(j, f)
+            fs = f"_fs{j}"
+            if const_step is None:
+                self.emit(f"{fs} = {self.ex(f.step)[0]}", line)
+            counter = self.read(v)[0]
+            step_ty = "I" if isinstance(const_step, int) else ("R" if const_step is not None else self.ex(f.step)[1])
+            inc_ty = "I" if ctype == "I" and step_ty == "I" else ("D" if "D" in (ctype, step_ty) else "R")
+            self.store(v, f"({counter} + {fs})", inc_ty, line)
+            self.emit_jump(("t", j), line)
+        elif t is A.While:
+            self.emit("_n += 1", line)
+            with self.src.block(f"if not {self.condition(s.cond)}:", line):
+                self.emit_jump(pair[i]["end"] + 1, line)
+        elif t is A.WEnd:
+            self.emit_jump(pair[i]["while"], line)
+        elif t is A.Repeat:
+            pass
+        elif t is A.Until:
+            self.emit("_n += 1", line)
+            with self.src.block(f"if not {self.condition(s.cond)}:", line):
+                self.emit_jump(pair[i]["repeat"] + 1, line)
+        elif t in (A.EndIf, A.EndCase, A.LabelDef):
+            pass
+        else:
+            self.emit("_n += 1", line)
+            self.simple(i, s)
+
+    # -- the unit ------------------------------------------------------------------------
+    def generate(self) -> UnitCode:
+        body = PySource(self.path)
+        outer = self.src
+        self.src = body
+        body._indent = 3
+        try:
+            if self.ln.uses_goto:
+                self.dispatch()
+            else:
+                self.structured(0, len(self.stmts))
+        finally:
+            self.src = outer
+        src = self.src
+        src.emit("def make(_H, _K):")
+        src._indent = 1
+        for name in HELPER_NAMES:
+            src.emit(f"{name} = _H[{name!r}]")
+        src.emit("def unit(P, _main):")
+        src._indent = 2
+        for name in sorted(set(self.locals.values())):
+            src.emit(f"{name} = None")
+        if self.max_param:
+            src.emit(f"if len(P) < {self.max_param}: P = P + (None,) * ({self.max_param} - len(P))")
+        src.emit("_n = 0")
+        src.emit("_lim = _st.limit - _st.steps")
+        src.emit("try:")
+        for text, ln in zip(body.lines, body.line_map):
+            src.lines.append(text)
+            src.line_map.append(ln)
+        if not body.lines:
+            src.emit("    pass")
+        src.emit("except _EP:")
+        src.emit("    pass")
+        src.emit("_st.steps += _n")
+        report = sorted(((py, v.display) for v, py in self.locals.items()), key=lambda x: x[1])
+        items = ", ".join(f"{shown!r}: {py}" for py, shown in report)
+        src.emit(f"return {{{items}}}")
+        src._indent = 1
+        src.emit("return unit")
+        cpl_lines = {s.line: s.cpl for s in self.stmts if s.cpl is not None}
+        return UnitCode(self.path, src, self.consts, cpl_lines, report)
+
+
+class _Raw:
+    """An already compiled value (used to store WAIT results and FOR counters through the assignment rules)."""
+
+    def __init__(self, code: str, ty: str):
+        self.code = code
+        self.ty = ty
+
+
+def _maybe_nul(e) -> bool:
+    """Can the BOOLEAN expression be NUL (a variable read) rather than a computed TRUE/FALSE?"""
+    return isinstance(e, (A.Var, A.Func))
+
+
+def _tname(ty: str) -> str:
+    return {"I": "INTEGER", "R": "REAL", "D": "DOUBLE", "B": "BOOLEAN", "S": "CHARACTER", "N": "NUL",
+            "?": "unknown"}.get(ty, ty)
+
+
+#: built-ins with a numeric argument known at compile time, written inline (no call, no type check)
+INLINE = {
+    "ABS": "abs({0})",
+    "INT": "int({0})",
+    "SIN": "_msin({0} * 0.017453292519943295)",
+    "COS": "_mcos({0} * 0.017453292519943295)",
+    "ATAN": "(_matan({0}) * 57.29577951308232)",
+}
+
+HELPER_NAMES = (
+    "_rt", "_st", "_G", "_PM", "_EP", "_f32", "_toi", "_tor", "_tod", "_tob", "_tos", "_bad_assign", "_cond",
+    "_logic", "_lnot", "_ix", "_sv", "_view", "_setf", "_midw", "_dim", "_pdim", "_gfield", "_gset_s", "_pint",
+    "_call", "_q", "_drain", "_wait", "_prn", "_Block", "_loose", "_word", "_mval", "_modal", "_modal_call",
+    "_runaway", "_hook", "_caseval", "_nocall", "_msin", "_mcos", "_matan",
+) + tuple(f"_F_{name.replace('$', '_S')}" for name in FUNCTIONS)
+
+
+def generate(ln, hook: bool = False) -> tuple[UnitCode | None, list]:
+    """Generate the unit for a linked program; diagnostics for errors only code generation sees (types)."""
+    g = Gen(ln, hook)
+    try:
+        return g.generate(), []
+    except GenError as e:
+        s = e.stmt or g.cur
+        return None, [diag(e.code, e.detail, ln.prog.path, s.line if s else 1, None, s.cpl if s else None)]

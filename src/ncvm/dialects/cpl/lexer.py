@@ -1,0 +1,307 @@
+"""CPL lines and tokens: which physical line is a CPL block, an NC block or a continuation (digest §1.2),
+and the tokens of a CPL block (digest §2).
+
+A line whose first non-blank character is a digit is a CPL block (the digits are its line number); a line
+after a CPL block that ended in ``:`` outside a REM continues that block; every other line is an NC block.
+Keywords and names are case-insensitive; a keyword with a type suffix (``STEP%``, ``END%``) is a variable.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+#: reserved words (manual §2.4.1, cleaned up in digest §2.3), plus TO, SCSL and the unused ones
+KEYWORDS = frozenset("""
+ABS ACOS AND APOS ASC ASIN ATAN AXO AXP BCD BIN BMP CALL CASE CHR$ CIR CLG CLOCK CLOSE CLR CLS COF COL COM COS
+CPOS CPROBE CSF DATE DIM DLF DLG DO DPC DSP ELSE END ENDCASE ENDDLG ENDIF EOF ERASE FALSE FIL FILEACCESS FILEDATE
+FILEPOS FILESIZE FIX FIXB FIXE FOR FXC FXCR FXDEL FXINS GETERR GMD GOTO GPR GWD IC IF INKEY INP INP# INSTR INT
+LABEL LEN LIN LJUST MCA MCODS MCOPS MIC MID$ MMC MPOS MWD NCF NEXT NJUST NOT NUL OF OPENR OPENW OR OTHERWISE PDIM
+PLC PPOS PRN PRN# PROBE REM REPEAT REWRITE RGB ROUND SCL SCS SCSL SD SDR SEEK SFK SIN SPOS SQRT STEP STR$ TAN TC
+TD TDA TDR TFO THEN TIME TRIM$ TRUE TXT$ UNTIL VAL WAIT WHILE WPOS XOR TO
+""".split())
+
+SUFFIXES = "%!?$"
+TYPE_OF_SUFFIX = {"%": "I", "": "R", "!": "D", "?": "B", "$": "S"}
+OPS2 = ("<>", "<=", ">=")
+OPS1 = "+-*/=<>(),[];:"
+
+
+class LexError(Exception):
+    def __init__(self, line: int, column: int, message: str):
+        self.line = line
+        self.column = column
+        self.message = message
+
+
+@dataclass(slots=True)
+class Tok:
+    kind: str  # num str kw var label op name
+    val: object
+    line: int
+    col: int
+    text: str = ""
+
+
+@dataclass(frozen=True, slots=True)
+class VarName:
+    """A variable as the program names it: class, significant name, type suffix."""
+
+    cls: str  # L local, G global #, P numbered permanent @n, R @_R field, D definable @NAME, A parameter Pn
+    name: str  # significant name without suffix (for P/A the number as text)
+    suffix: str = ""
+
+    @property
+    def type(self) -> str:
+        if self.cls == "P":
+            return "I"
+        if self.cls == "R":
+            return "D"
+        return TYPE_OF_SUFFIX[self.suffix]
+
+    @property
+    def display(self) -> str:
+        if self.cls == "G":
+            return f"#{self.name}{self.suffix}"
+        if self.cls == "P":
+            return f"@{self.name}"
+        if self.cls == "R":
+            return "@_R"
+        if self.cls == "D":
+            return f"@{self.name}{self.suffix}"
+        if self.cls == "A":
+            return f"P{self.name}{self.suffix}"
+        return f"{self.name}{self.suffix}"
+
+
+@dataclass(slots=True)
+class Line:
+    """One physical line of the program, classified."""
+
+    kind: str  # "cpl", "cont" (continuation of a CPL block), "nc", "blank"
+    number: int | None  # CPL line number
+    text: str  # the text after the line number (CPL) or the whole line (NC)
+    offset: int  # column offset of ``text`` in the physical line (0-based)
+    lineno: int  # physical line, 1-based
+
+
+@dataclass(slots=True)
+class CplBlock:
+    """One CPL block: its line number and tokens over one or more physical lines (continuations)."""
+
+    number: int
+    lineno: int
+    tokens: list[Tok] = field(default_factory=list)
+    lines: list[int] = field(default_factory=list)
+    has_colon: bool = False
+
+
+def classify(text: str) -> list[Line]:
+    out: list[Line] = []
+    cont = False
+    for i, raw in enumerate(text.splitlines(), 1):
+        line = raw.rstrip("\r\n")
+        stripped = line.strip()
+        if not stripped:
+            out.append(Line("blank", None, "", 0, i))
+            cont = False if not cont else cont
+            continue
+        if cont:
+            out.append(Line("cont", None, line, 0, i))
+            cont = _ends_with_colon(line)
+            continue
+        lead = len(line) - len(line.lstrip())
+        if stripped[0].isdigit():
+            j = lead
+            while j < len(line) and line[j].isdigit():
+                j += 1
+            out.append(Line("cpl", int(line[lead:j]), line[j:], j, i))
+            cont = _ends_with_colon(line[j:])
+        else:
+            out.append(Line("nc", None, line, 0, i))
+            cont = False
+    return out
+
+
+def _ends_with_colon(text: str) -> bool:
+    """True when the text ends in ':' outside strings and without a REM on the line."""
+    in_str = False
+    last = ""
+    up = text.upper()
+    i = 0
+    while i < len(text):
+        c = text[i]
+        if c == '"':
+            in_str = not in_str
+        elif not in_str:
+            if up.startswith("REM", i) and (i == 0 or not (up[i - 1].isalnum() or up[i - 1] in "_#@")) \
+                    and not (i + 3 < len(up) and (up[i + 3].isalnum() or up[i + 3] in "_" + SUFFIXES)):
+                return False
+            if not c.isspace():
+                last = c
+        i += 1
+    return last == ":"
+
+
+def tokenize(text: str, lineno: int, offset: int) -> list[Tok]:
+    """Tokens of one physical line's CPL text; REM ends the line (colons in it are text)."""
+    toks: list[Tok] = []
+    up = text.upper()
+    n = len(text)
+    i = 0
+    while i < n:
+        c = up[i]
+        col = offset + i + 1
+        if c in " \t":
+            i += 1
+            continue
+        if c == '"':
+            j = text.find('"', i + 1)
+            if j < 0:
+                raise LexError(lineno, col, "string not closed with '\"'")
+            toks.append(Tok("str", text[i + 1:j], lineno, col))
+            i = j + 1
+            continue
+        if c.isdigit() or (c == "." and i + 1 < n and up[i + 1].isdigit()):
+            j = i
+            while j < n and up[j].isdigit():
+                j += 1
+            is_real = False
+            if j < n and up[j] == ".":
+                is_real = True
+                j += 1
+                while j < n and up[j].isdigit():
+                    j += 1
+            lit = up[i:j]
+            toks.append(Tok("num", float(lit) if is_real else int(lit), lineno, col, lit))
+            i = j
+            continue
+        if c == ".":
+            j = i + 1
+            while j < n and up[j] == " ":
+                j += 1
+            if j < n and up[j].isalpha():
+                k = j
+                while k < n and (up[k].isalnum() or up[k] == "_"):
+                    k += 1
+                toks.append(Tok("label", up[j:k], lineno, col))
+                i = k
+                continue
+            raise LexError(lineno, col, "'.' must start a label (.NAME) or a number")
+        if c == "#":
+            j = i + 1
+            if j < n and up[j].isalpha():
+                k, word, suffix = _word(up, j)
+                toks.append(Tok("var", VarName("G", ("#" + word)[:8][1:], suffix), lineno, col, up[i:k]))
+                i = k
+                continue
+            raise LexError(lineno, col, "'#' must start a global variable name")
+        if c == "@":
+            j = i + 1
+            if j < n and up[j].isdigit():
+                k = j
+                while k < n and up[k].isdigit():
+                    k += 1
+                num = int(up[j:k])
+                while k < n and (up[k].isalnum() or up[k] == "_"):
+                    k += 1
+                if k < n and up[k] == "%":
+                    k += 1
+                if not 1 <= num <= 100:
+                    raise LexError(lineno, col, f"permanent variable @{num}: only @1 to @100 exist")
+                toks.append(Tok("var", VarName("P", str(num), ""), lineno, col, up[i:k]))
+                i = k
+                continue
+            if up.startswith("_R", j) and not (j + 2 < n and (up[j + 2].isalnum() or up[j + 2] == "_")):
+                toks.append(Tok("var", VarName("R", "_R", ""), lineno, col, "@_R"))
+                i = j + 2
+                continue
+            if j < n and up[j].isalpha():
+                k, word, suffix = _word(up, j)
+                toks.append(Tok("var", VarName("D", word[:16], suffix), lineno, col, up[i:k]))
+                i = k
+                continue
+            raise LexError(lineno, col, "'@' must start a permanent variable name")
+        if c.isalpha():
+            k, word, suffix = _word(up, i)
+            if word == "REM" and not suffix:
+                break  # the rest of the physical line is a remark
+            if suffix in ("$", "#") and word + suffix in KEYWORDS:
+                toks.append(Tok("kw", word + suffix, lineno, col))
+            elif suffix == "#":
+                raise LexError(lineno, col, f"'{word}#' is not a keyword")
+            elif not suffix and word in KEYWORDS:
+                toks.append(Tok("kw", word, lineno, col))
+                if word == "CALL":
+                    i = _call_name(text, up, k, lineno, offset, toks)
+                    continue
+            elif word[0] == "P" and len(word) > 1 and word[1].isdigit():
+                m = 1
+                while m < len(word) and word[m].isdigit():
+                    m += 1
+                toks.append(Tok("var", VarName("A", str(int(word[1:m])), suffix), lineno, col, up[i:k]))
+            else:
+                toks.append(Tok("var", VarName("L", word[:8], suffix), lineno, col, up[i:k]))
+            i = k
+            continue
+        two = up[i:i + 2]
+        if two in OPS2:
+            toks.append(Tok("op", two, lineno, col))
+            i += 2
+            continue
+        if c in OPS1:
+            toks.append(Tok("op", c, lineno, col))
+            i += 1
+            continue
+        raise LexError(lineno, col, f"unexpected character '{text[i]}'")
+    return toks
+
+
+def _word(up: str, i: int) -> tuple[int, str, str]:
+    k = i
+    n = len(up)
+    while k < n and (up[k].isalnum() or up[k] == "_"):
+        k += 1
+    word = up[i:k]
+    suffix = ""
+    if k < n and up[k] in SUFFIXES:
+        suffix = up[k]
+        k += 1
+    elif k < n and up[k] == "#" and word in ("INP", "PRN"):
+        suffix = "#"
+        k += 1
+    return k, word, suffix
+
+
+def _call_name(text: str, up: str, i: int, lineno: int, offset: int, toks: list[Tok]) -> int:
+    """After CALL: the program name as written (file names are case-sensitive), up to blank, '[' or ':'."""
+    n = len(text)
+    while i < n and text[i] in " \t":
+        i += 1
+    j = i
+    while j < n and text[j] not in " \t[:":
+        j += 1
+    if j > i:
+        toks.append(Tok("name", text[i:j], lineno, offset + i + 1))
+    return j
+
+
+def cpl_blocks(lines: list[Line]) -> list[tuple[str, object]]:
+    """The program as a sequence of ("cpl", CplBlock) and ("nc", Line) items (blank lines dropped)."""
+    out: list[tuple[str, object]] = []
+    current: CplBlock | None = None
+    for ln in lines:
+        if ln.kind == "cpl":
+            current = CplBlock(ln.number, ln.lineno)
+            current.tokens.extend(tokenize(ln.text, ln.lineno, ln.offset))
+            current.lines.append(ln.lineno)
+            out.append(("cpl", current))
+        elif ln.kind == "cont" and current is not None:
+            current.tokens.extend(tokenize(ln.text, ln.lineno, ln.offset))
+            current.lines.append(ln.lineno)
+        elif ln.kind == "nc":
+            current = None
+            out.append(("nc", ln))
+    for kind, item in out:
+        if kind == "cpl":
+            item.has_colon = any(t.kind == "op" and t.val == ":" for t in item.tokens)
+    return out

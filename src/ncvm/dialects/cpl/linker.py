@@ -1,0 +1,267 @@
+"""Linking, as the control does it before a program may start (manual §2.3, digest §1.3).
+
+For the program and every sub-program it reaches: syntax, structure pairing (IF/ELSE/ENDIF,
+CASE/LABEL/OTHERWISE/ENDCASE, FOR/NEXT, WHILE/END, REPEAT/UNTIL), jump targets, sub-program existence,
+no recursion. The result of a program (its "link table") is cached by content, so an unchanged program
+is not linked again.
+"""
+
+from __future__ import annotations
+
+import hashlib
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from ...diagnostics import Diagnostic
+from ...machine.model import Machine
+from . import ast as A
+from .errors import diag
+from .parser import parse_program
+
+MAX_CASE_NESTING = 10
+SUB_EXTENSIONS = (".cpl",)
+
+#: how often a program was really linked (tests check that unchanged programs are taken from the cache)
+LINK_STATS = {"linked": 0}
+
+
+@dataclass
+class Linked:
+    """A linked program: statements, structure pairs, resolved jumps, called programs."""
+
+    prog: A.Program
+    key: str
+    pair: dict = field(default_factory=dict)  # stmt index -> dict of partner indices
+    jumps: dict = field(default_factory=dict)  # Goto stmt index -> target stmt index
+    calls: list = field(default_factory=list)  # (program name as written, din flag, stmt)
+    fields: dict = field(default_factory=dict)  # local VarName -> dims count, for every DIMed local
+    uses_goto: bool = False
+    diagnostics: list = field(default_factory=list)
+    unit: object = None  # the generated code (set by codegen, cached with the link table)
+
+
+_CACHE: dict[str, Linked] = {}
+
+
+def call_table(machine: Machine) -> dict:
+    """[cpl] calls: address -> program, with the modal flag (e.g. G81 = {program = "CYC81", modal = true})."""
+    out = {}
+    for key, val in (machine.sections.get("cpl", {}).get("calls", {}) or {}).items():
+        if isinstance(val, str):
+            out[key.upper()] = (val, False)
+        else:
+            out[key.upper()] = (str(val["program"]), bool(val.get("modal", False)))
+    return out
+
+
+def link_one(path: str, text: str, calls: dict) -> Linked:
+    key = hashlib.sha256(("\0".join([path, repr(sorted(calls.items())), text])).encode("latin-1", "replace"))
+    key = key.hexdigest()
+    hit = _CACHE.get(key)
+    if hit is not None:
+        return hit
+    LINK_STATS["linked"] += 1
+    prog = parse_program(path, text, calls)
+    ln = Linked(prog, key)
+    ln.diagnostics.extend(prog.diagnostics)
+    if not prog.diagnostics:
+        _pair(ln)
+        _jumps(ln)
+        _collect(ln)
+    _CACHE[key] = ln
+    return ln
+
+
+def _err(ln: Linked, code: str, detail: str, s: A.Stmt) -> None:
+    ln.diagnostics.append(diag(code, detail, ln.prog.path, s.line, s.col or None, s.cpl))
+
+
+def _pair(ln: Linked) -> None:
+    stmts = ln.prog.stmts
+    stack: list[int] = []
+    fors: list[int] = []
+    ln.prog_fors = {}
+    case_depth = 0
+    for i, s in enumerate(stmts):
+        ln.prog_fors[i] = tuple(fors)
+        t = type(s)
+        top = stmts[stack[-1]] if stack else None
+        if t is A.If:
+            stack.append(i)
+            ln.pair[i] = {"else": None, "end": None}
+        elif t is A.Else:
+            if not isinstance(top, A.If) or ln.pair[stack[-1]]["else"] is not None:
+                _err(ln, "CPL004", "ELSE without IF ... THEN", s)
+                continue
+            ln.pair[stack[-1]]["else"] = i
+            ln.pair[i] = {"if": stack[-1]}
+        elif t is A.EndIf:
+            if not isinstance(top, A.If):
+                _err(ln, "CPL004", "ENDIF without IF", s)
+                continue
+            j = stack.pop()
+            ln.pair[j]["end"] = i
+            e = ln.pair[j]["else"]
+            if e is not None:
+                ln.pair[e]["end"] = i
+        elif t is A.Case:
+            case_depth += 1
+            if case_depth > MAX_CASE_NESTING:
+                _err(ln, "CPL008", f"CASE nesting {case_depth}", s)
+            stack.append(i)
+            ln.pair[i] = {"arms": [], "otherwise": None, "end": None, "seen": set()}
+        elif t is A.CaseLabel or t is A.Otherwise:
+            if not isinstance(top, A.Case):
+                _err(ln, "CPL004", f"{'LABEL' if t is A.CaseLabel else 'OTHERWISE'} outside CASE ... ENDCASE", s)
+                continue
+            info = ln.pair[stack[-1]]
+            if info["otherwise"] is not None:
+                _err(ln, "CPL004", "OTHERWISE must be the last arm of CASE", s)
+                continue
+            if t is A.CaseLabel:
+                for v in s.values:
+                    if v in info["seen"]:
+                        _err(ln, "CPL011", f"LABEL {v} twice", s)
+                    info["seen"].add(v)
+                info["arms"].append(i)
+            else:
+                info["otherwise"] = i
+            ln.pair[i] = {"case": stack[-1]}
+        elif t is A.EndCase:
+            if not isinstance(top, A.Case):
+                _err(ln, "CPL004", "ENDCASE without CASE", s)
+                continue
+            j = stack.pop()
+            case_depth -= 1
+            ln.pair[j]["end"] = i
+            for arm in ln.pair[j]["arms"] + ([ln.pair[j]["otherwise"]] if ln.pair[j]["otherwise"] else []):
+                ln.pair[arm]["end"] = i
+            first = min(ln.pair[j]["arms"] + [ln.pair[j]["otherwise"] or i])
+            for k in range(j + 1, first):
+                if not isinstance(stmts[k], A.LabelDef):
+                    _err(ln, "CPL004", "statement between CASE ... OF and the first LABEL", stmts[k])
+                    break
+        elif t is A.For:
+            stack.append(i)
+            fors.append(i)
+            ln.pair[i] = {"end": None}
+        elif t is A.Next:
+            if not isinstance(top, A.For):
+                _err(ln, "CPL004", "NEXT without FOR", s)
+                continue
+            if s.var is not None and s.var.var != top.var.var:
+                _err(ln, "CPL004", f"NEXT {s.var.var.display} does not match FOR {top.var.var.display}", s)
+            j = stack.pop()
+            fors.pop()
+            ln.pair[j]["end"] = i
+            ln.pair[i] = {"for": j}
+        elif t is A.While:
+            stack.append(i)
+            ln.pair[i] = {"end": None}
+        elif t is A.WEnd:
+            if not isinstance(top, A.While):
+                _err(ln, "CPL004", "END without WHILE", s)
+                continue
+            j = stack.pop()
+            ln.pair[j]["end"] = i
+            ln.pair[i] = {"while": j}
+        elif t is A.Repeat:
+            stack.append(i)
+            ln.pair[i] = {"end": None}
+        elif t is A.Until:
+            if not isinstance(top, A.Repeat):
+                _err(ln, "CPL004", "UNTIL without REPEAT", s)
+                continue
+            j = stack.pop()
+            ln.pair[j]["end"] = i
+            ln.pair[i] = {"repeat": j}
+    ln.prog_fors[len(stmts)] = tuple(fors)
+    closers = {A.If: "ENDIF", A.Case: "ENDCASE", A.For: "NEXT", A.While: "END", A.Repeat: "UNTIL"}
+    for j in stack:
+        s = stmts[j]
+        _err(ln, "CPL004", f"{type(s).__name__.upper()} without {closers[type(s)]}", s)
+
+
+def _jumps(ln: Linked) -> None:
+    prog = ln.prog
+    for i, s in enumerate(prog.stmts):
+        if not isinstance(s, A.Goto):
+            continue
+        ln.uses_goto = True
+        table, shown = {"line": (prog.lines, str(s.target)), "n": (prog.nblocks, f"N{s.target}"),
+                        "label": (prog.labels, f".{s.target}")}[s.kind]
+        where = table.get(s.target, [])
+        if not where:
+            _err(ln, "CPL002", f"GOTO {shown}", s)
+            continue
+        if len(where) > 1:
+            _err(ln, "CPL003", f"GOTO {shown}: {len(where)} blocks carry it", s)
+            continue
+        t = where[0]
+        inner = set(ln.prog_fors.get(t, ())) - set(ln.prog_fors.get(i, ()))
+        if inner:
+            _err(ln, "CPL010", f"GOTO {shown}", s)
+            continue
+        ln.jumps[i] = t
+
+
+def _collect(ln: Linked) -> None:
+    for s in ln.prog.stmts:
+        if isinstance(s, A.CallStmt):
+            ln.calls.append((s.name, s.din, s))
+        elif isinstance(s, A.NcBlock) and s.call is not None:
+            ln.calls.append((s.call[0], False, s))
+        elif isinstance(s, A.Dim):
+            for var, sizes in s.items:
+                if var.cls == "L":
+                    ln.fields[var] = len(sizes)
+
+
+@dataclass
+class LinkResult:
+    main: Linked
+    units: dict  # resolved path -> Linked
+    resolve: dict  # (caller path, name as written) -> resolved path, or None for an unlinked (DIN) program
+    diagnostics: list
+
+
+def link(path: str, text: str, machine: Machine) -> LinkResult:
+    """Link ``path`` and every sub-program it reaches; diagnostics for everything that is wrong."""
+    calls = call_table(machine)
+    main = link_one(path, text, calls)
+    units = {path: main}
+    resolve: dict = {}
+    diags: list[Diagnostic] = list(main.diagnostics)
+
+    def visit(ln: Linked, chain: list[str]) -> None:
+        for name, din, s in ln.calls:
+            found = machine.find_program(name, SUB_EXTENSIONS)
+            if found is None:
+                diags.append(diag("CPL005", f"{name} (program path: "
+                                  f"{', '.join(str(p) for p in machine.program_path)})",
+                                  ln.prog.path, s.line, s.col or None, s.cpl))
+                continue
+            sub_path = str(found)
+            resolve[(ln.prog.path, name)] = sub_path
+            if din:
+                continue
+            if sub_path in chain or Path(sub_path).resolve() == Path(ln.prog.path).resolve():
+                diags.append(diag("CPL006", f"{name} calls itself (via {' -> '.join(Path(c).name for c in chain)})",
+                                  ln.prog.path, s.line, s.col or None, s.cpl))
+                continue
+            if sub_path in units:
+                continue
+            try:
+                sub_text = Path(sub_path).read_text(encoding="latin-1")
+            except OSError as e:
+                diags.append(diag("CPL005", f"{name}: {e.strerror}", ln.prog.path, s.line, None, s.cpl))
+                continue
+            sub = link_one(sub_path, sub_text, calls)
+            if sub.prog.din_only:
+                continue  # excluded from linking by "(DIN)" in its first line (manual §3.3)
+            units[sub_path] = sub
+            diags.extend(sub.diagnostics)
+            visit(sub, chain + [sub_path])
+
+    visit(main, [path])
+    return LinkResult(main, units, resolve, diags)

@@ -1,0 +1,456 @@
+"""Running linked CPL programs: call frames, globals, permanents, the motion queue, WAIT, faults.
+
+Block preparation runs ahead of block execution (manual §4.1, digest §1.5): CPL statements run at once,
+NC blocks go into a motion queue that the NC kernel executes in simulated time only when a WAIT, the
+program end or the configured look-ahead depth ([cpl] lookahead) drains it. Functions such as MPOS
+therefore see the executed position, stale without a WAIT, exactly as the manual's WAIT example says.
+"""
+
+from __future__ import annotations
+
+import math
+import traceback
+from collections import deque
+from pathlib import Path
+
+from ...diagnostics import Frame, RuntimeFault, Span
+from ...nc.block import Block, DinSyntaxError, parse_din_line
+from ...nc.canon import Src
+from . import values as V
+from .builtins import FUNCTIONS
+from .codegen import HELPER_NAMES, generate
+from .errors import CplError, fault, message
+from .linker import SUB_EXTENSIONS, LinkResult, call_table, link_one
+from .perm import DeclError, Permanents
+
+MAX_NESTING = 7  # sub-program levels below the main program (manual §2.1 L323)
+
+
+class EndProgram(Exception):
+    """M2/M30 reached: the program (or sub-program) ends here."""
+
+
+class CplRuntime:
+    def __init__(self, session, linked: LinkResult):
+        self.session = session
+        self.machine = session.machine
+        self.kernel = session.kernel
+        self.linked = linked
+        cfg = self.machine.sections.get("cpl", {}) or {}
+        self.lookahead = int(cfg.get("lookahead", 0))
+        self.block_skip = bool(self.machine.setting_data.get("block_skip", True))
+        self.justify = "N"
+        self.globals: dict = {}
+        self.perm = Permanents(session)
+        self.queue: deque = deque()
+        self.modal = [None]
+        self.calls = call_table(self.machine)
+        self._modal_busy = False
+        self.stack: list[tuple[str, int]] = []  # (path, line of the call) for each active sub-program
+        self.active: list[str] = []
+        self.hook = session.options.hook
+        self._fns: dict = {}
+        self._codes: dict = {}
+        self.t_prep = self.machine.clock.now
+        self._events = [e for e in self.machine.scenario if e.kind == "input"]
+        self._next_event = 0
+
+    # -- units ----------------------------------------------------------------------
+    def unit(self, path: str):
+        fn = self._fns.get(path)
+        if fn is not None:
+            return fn
+        ln = self.linked.units[path]
+        hook = self.hook is not None
+        uc = ln.unit if not hook else None
+        if uc is None:
+            uc, diags = generate(ln, hook)
+            if diags:
+                from ...diagnostics import CompileFailed
+                raise CompileFailed(diags)
+            if not hook:
+                ln.unit = uc
+        ns: dict = {}
+        exec(uc.code, ns)
+        fn = ns["make"](self.helpers(path), self.constants(path, uc.consts))
+        self._fns[path] = fn
+        self._codes[path] = uc
+        return fn
+
+    def constants(self, path: str, consts: list) -> list:
+        out = []
+        for c in consts:
+            if c[0] == "src":
+                out.append(Src(path, c[1]))
+            else:
+                _, g, m, words, n, msg, line = c
+                out.append(Block(g, m, dict(words), n, msg, Src(path, line)))
+        return out
+
+    def helpers(self, path: str) -> dict:
+        h = {
+            "_rt": self, "_st": self.session.steps, "_G": self.globals, "_PM": self.perm, "_EP": EndProgram,
+            "_f32": V.f32, "_toi": V.to_int, "_tor": V.to_real, "_tod": V.to_double, "_tob": V.to_bool,
+            "_tos": V.to_str, "_bad_assign": _bad_assign, "_cond": V.cond, "_logic": V.logic, "_lnot": V.lnot,
+            "_ix": V.index, "_sv": V.sv, "_view": _view, "_setf": _setf, "_midw": V.mid_write, "_dim": _dim,
+            "_pdim": _pdim, "_gfield": self.gfield, "_gset_s": self.gset_s, "_pint": _pint,
+            "_call": lambda name, args, din, line: self.call(path, name, args, din, line),
+            "_q": self.queue.append if self.lookahead <= 0 else self.queue_limited,
+            "_drain": self.drain, "_wait": self.wait, "_prn": self.prn, "_Block": Block, "_loose": self.loose,
+            "_word": V.word, "_mval": _mval, "_modal": self.modal,
+            "_modal_call": lambda line: self.modal_call(path, line),
+            "_runaway": lambda line: self.session.steps.runaway(path, line),
+            "_hook": self._hook_for(path), "_caseval": _caseval, "_nocall": self.nocall,
+            "_msin": math.sin, "_mcos": math.cos, "_matan": math.atan,
+        }
+        for name, b in FUNCTIONS.items():
+            h[f"_F_{name.replace('$', '_S')}"] = b.impl
+        assert set(h) == set(HELPER_NAMES), set(h) ^ set(HELPER_NAMES)
+        return h
+
+    def _hook_for(self, path: str):
+        hook = self.hook
+        if hook is None:
+            return None
+
+        def call(line: int, local_vars: dict) -> None:
+            uc = self._codes.get(path)
+            shown = {s: V.report(local_vars.get(py)) for py, s in (uc.report if uc else [])
+                     if local_vars.get(py) is not None}
+            hook(path, line, shown)
+
+        return call
+
+    # -- the run ----------------------------------------------------------------------
+    def run_main(self) -> None:
+        main = self.linked.main.prog.path
+        result: dict = {}
+        try:
+            try:
+                result = self.unit(main)((), True)
+            finally:
+                self.session.variables = self.report(result)
+            self.drain()
+            self.kernel.end_program(Src(main, max(1, len(self.linked.main.prog.stmts) and
+                                                     self.linked.main.prog.stmts[-1].line)))
+        except RuntimeFault as f:
+            if f.span is None:
+                f.span = Span(main, 1)
+            raise
+        except DeclError as e:
+            raise RuntimeFault(e.code, message(e.code, e.message), Span(e.file, max(e.line, 1))) from None
+        except Exception as e:  # noqa: BLE001 - every failure of generated code becomes a RUNTIME ERROR
+            raise self.to_fault(e) from None
+
+    def report(self, result: dict) -> dict:
+        out = {k: V.report(v) for k, v in result.items() if v is not None}
+        for k, v in self.globals.items():
+            out[k] = V.report(v)
+        out.update(self.perm.report())
+        return out
+
+    def to_fault(self, e: BaseException) -> RuntimeFault:
+        if isinstance(e, CplError):
+            code, detail = e.code, e.detail
+        elif isinstance(e, TypeError):
+            code, detail = "CPL020", "NUL used in an expression"
+        elif isinstance(e, ZeroDivisionError):
+            code, detail = "CPL028", ""
+        elif isinstance(e, AttributeError) or isinstance(e, KeyError):
+            code, detail = "CPL035", "a field is used before its DIM"
+        elif isinstance(e, IndexError):
+            code, detail = "CPL031", ""
+        elif isinstance(e, OverflowError):
+            code, detail = "CPL027", "number too large"
+        elif isinstance(e, RecursionError):
+            code, detail = "CPL007", ""
+        else:
+            raise e
+        frames = []
+        for fs in traceback.extract_tb(e.__traceback__):
+            uc = self._codes.get(fs.filename)
+            if uc is not None:
+                line = uc.src.source_line(fs.lineno)
+                frames.append((fs.filename, line, uc.cpl_lines.get(line)))
+        if not frames:
+            return RuntimeFault(code, message(code, detail), None)
+        file, line, cpl = frames[-1]
+        f = fault(code, detail, file, line, cpl)
+        f.stack = [Frame(Path(p).name, Span(p, ln)) for p, ln, _ in frames]
+        return f
+
+    # -- sub-programs -----------------------------------------------------------------------
+    def call(self, caller: str, name: str, args: tuple, din: bool, line: int) -> None:
+        if len(self.stack) >= MAX_NESTING:
+            raise CplError("CPL007", f"CALL {name}")
+        target = self.linked.resolve.get((caller, name))
+        if target is None:
+            found = self.machine.find_program(name, SUB_EXTENSIONS)
+            if found is None:
+                raise CplError("CPL005", name)
+            target = str(found)
+        if target in self.active:
+            raise CplError("CPL006", name)
+        self.stack.append((caller, line))
+        self.active.append(target)
+        try:
+            if target in self.linked.units and not din:
+                try:
+                    self.unit(target)(args, False)
+                except EndProgram:
+                    pass
+            else:
+                self.run_unlinked(target, name)
+        finally:
+            self.stack.pop()
+            self.active.pop()
+
+    def run_unlinked(self, target: str, name: str) -> None:
+        """A program excluded from linking (CALL ... DIN or "(DIN)"): only NC blocks may be in it (§3.3)."""
+        text = Path(target).read_text(encoding="latin-1")
+        ln = link_one(target, text, {})
+        if ln.prog.has_cpl or ln.prog.diagnostics:
+            raise CplError("CPL030", f"{name} contains CPL blocks")
+        for s in ln.prog.stmts:
+            if s.skip and self.block_skip:
+                continue
+            words = {w.address: w.value for w in s.words if w.address not in ("G", "M")}
+            g = tuple(int(w.value) if w.value == int(w.value) else w.value for w in s.words if w.address == "G")
+            m = tuple(int(w.value) for w in s.words if w.address == "M" and w.value not in (2, 30))
+            if g or m or words or s.msg is not None:
+                self.queue.append(Block(g, m, words, s.n, s.msg, Src(target, s.line)))
+            if s.wait:
+                self.drain()
+            if s.ends:
+                return
+
+    def nocall(self, address: str, value):
+        """An address that calls a sub-program may not take its value from [ ] (manual §2.1.1 L371)."""
+        value = V.word(value)
+        key = f"{address}{int(value) if value == int(value) else value}"
+        if key in self.calls:
+            raise CplError("CPL013", f"{address}[...] gives {key}, which calls {self.calls[key][0]}")
+        return value
+
+    def modal_call(self, caller: str, line: int) -> None:
+        """After a traversing block: run the modal sub-program again, but not from inside itself."""
+        name, args = self.modal[0]
+        if self._modal_busy:
+            return
+        self._modal_busy = True
+        try:
+            self.call(caller, name, args, False, line)
+        finally:
+            self._modal_busy = False
+
+    # -- globals ------------------------------------------------------------------------------
+    def gfield(self, key: str):
+        f = self.globals.get(key)
+        if f is None or not isinstance(f, (list, V.CharField)):
+            raise CplError("CPL035", f"{key} is not DIMensioned")
+        return f
+
+    def gset_s(self, key: str, value, chained: bool) -> None:
+        cur = self.globals.get(key)
+        if isinstance(cur, V.CharField):
+            cur.set(value)
+        elif chained:
+            raise CplError("CPL025", f"{key} is not DIMensioned")
+        elif value is None:
+            self.globals.pop(key, None)
+        else:
+            self.globals[key] = value
+
+    # -- NC blocks and the motion queue ---------------------------------------------------------
+    def queue_limited(self, blk) -> None:
+        self.queue.append(blk)
+        if len(self.queue) > self.lookahead:
+            self.execute_one()
+
+    def execute_one(self) -> None:
+        blk = self.queue.popleft()
+        if not self.kernel.ended:
+            self.kernel.execute(blk)
+
+    def drain(self) -> None:
+        """WAIT without parameters: stop preparation until every block before it has been executed."""
+        q = self.queue
+        execute = self.kernel.execute
+        kernel = self.kernel
+        while q:
+            blk = q.popleft()
+            if kernel.ended:
+                q.clear()
+                break
+            execute(blk)
+        self.t_prep = max(self.t_prep, self.machine.clock.now)
+
+    def loose(self, g, m, words, loose, n, msg, src):
+        """A block with standalone [A$] words: each value is NC text such as "G1" (manual L2110)."""
+        g, m, words = list(g), list(m), dict(words)
+        for val in loose:
+            val = V.sv(val)
+            if val.__class__ is not str:
+                if val is None:
+                    raise TypeError("NUL")
+                raise CplError("CPL032", "a standalone [ ] in an NC block must give NC text")
+            try:
+                blk = parse_din_line(val, src)
+            except DinSyntaxError as e:
+                raise CplError("CPL001", f"NC text {val!r}: {e.message}") from None
+            if blk is None:
+                continue
+            g.extend(blk.g)
+            m.extend(blk.m)
+            words.update(blk.words)
+        return Block(tuple(g), tuple(m), words, n, msg, src)
+
+    def machine_position(self, sel) -> float:
+        names = self.kernel.axis_names
+        if isinstance(sel, str):
+            if sel.upper() not in names:
+                raise CplError("CPL029", f"axis {sel!r} is not configured")
+            i = names.index(sel.upper())
+        elif sel.__class__ is int and 1 <= sel <= len(names):
+            i = sel - 1
+        else:
+            raise CplError("CPL029", f"axis index {sel!r} is not configured")
+        return self.kernel.machine_pos[i] / self.kernel.scale
+
+    # -- WAIT with parameters (manual §4.1) ---------------------------------------------------
+    def advance(self, t_end: float) -> None:
+        """Let execution run until simulated time ``t_end`` (queued motion progresses), then idle."""
+        clock = self.machine.clock
+        while self.queue and clock.now < t_end and not self.kernel.ended:
+            self.execute_one()
+        if clock.now < t_end:
+            clock.now = t_end
+        self.t_prep = t_end
+
+    def ic(self, args: tuple) -> bool:
+        key = "IC(" + ",".join(str(a) for a in args) + ")"
+        self._apply_events(self.machine.clock.now)
+        return bool(self.machine.plc.inputs.get(key, False))
+
+    def _apply_events(self, t: float) -> None:
+        while self._next_event < len(self._events) and self._events[self._next_event].time <= t:
+            ev = self._events[self._next_event]
+            self.machine.plc.inputs[str(ev.data.get("address"))] = ev.data.get("value")
+            self._next_event += 1
+
+    def wait(self, ic, neg: bool, state, duration):
+        """0: condition met at the call; 1: the duration ran out; 2: the condition became true while waiting."""
+        if duration is not None and (duration.__class__ is not int or duration < 0):
+            if duration is None:
+                raise TypeError("NUL")
+            raise CplError("CPL023", f"WAIT duration {duration!r}: an INTEGER number of milliseconds")
+        start = max(self.t_prep, self.machine.clock.now) if not self.queue else self.t_prep
+        deadline = None if duration is None else start + duration / 1000.0
+        if ic is None:
+            self.advance(deadline)
+            return 1
+        if state is None:
+            raise TypeError("NUL")
+
+        def met() -> bool:
+            v = self.ic(ic)
+            return (not v if neg else v) == state
+
+        if met():
+            return 0
+        for k in range(self._next_event, len(self._events)):
+            te = self._events[k].time
+            if deadline is not None and te > deadline:
+                break
+            self.advance(max(te, start))
+            if met():
+                return 2
+        if deadline is not None:
+            self.advance(deadline)
+            return 1
+        raise CplError("CPL039", "no scenario event sets the input")
+
+    # -- PRN#(0, ...) -------------------------------------------------------------------------
+    def prn(self, channel, *items) -> None:
+        if channel != 0:
+            raise CplError("CPL037", "PRN# to files (chapter 6) comes in a later version; PRN#(0,...) writes "
+                                     "to the message window")
+        self.session.say("".join(_format(V.sv(x)) for x in items))
+
+
+def _format(v) -> str:
+    if v is None:
+        return ""
+    if v is True or v is False:
+        return "TRUE" if v else "FALSE"
+    if isinstance(v, float):
+        return f"{v:.3f}"
+    return str(v)
+
+
+def _bad_assign(detail: str):
+    raise CplError("CPL021", detail)
+
+
+def _view(field, start, count):
+    if not isinstance(field, V.CharField):
+        return V.mid(field, start, count)
+    V.check_pos(start, "MID$ start")
+    if count is not None:
+        V.check_pos(count, "MID$ count")
+    return V.MidView(field, start, count)
+
+
+def _setf(field, value) -> None:
+    if field.__class__ is not V.CharField:
+        raise CplError("CPL035", "character field used before its DIM")
+    field.set(value)
+
+
+def _dim(current, sizes: tuple, kind: str):
+    """DIM: a second DIM with the same sizes keeps the field; other sizes are an error (digest §4.6)."""
+    if current is not None and (isinstance(current, (list, V.CharField))):
+        have = _sizes(current)
+        if have == list(sizes):
+            return current
+        raise CplError("CPL022", f"field already DIMensioned with sizes {have}")
+    return V.new_field(list(sizes), kind)
+
+
+def _sizes(f) -> list[int]:
+    if isinstance(f, V.CharField):
+        return [f.size]
+    if f and isinstance(f[0], V.CharField):
+        return [len(f) - 1, f[0].size]
+    if f and isinstance(f[0], list):
+        return [len(f) - 1, len(f[0]) - 1]
+    return [len(f) - 1]
+
+
+def _pdim(params: tuple, n: int, size: int) -> None:
+    v = params[n - 1] if n <= len(params) else None
+    if v is not None and (not isinstance(v, str) or len(v) > size):
+        raise CplError("CPL026", f"PDIM P{n}$({size}) for {v!r}")
+
+
+def _pint(v):
+    """Parameter Pn% (digest §4.8): a whole-numbered REAL passes as INTEGER, other REAL values do not."""
+    if v.__class__ is float and v.is_integer():
+        return int(v)
+    return V.to_int(v)
+
+
+def _mval(v) -> int:
+    if v.__class__ is float and v.is_integer():
+        return int(v)
+    if v.__class__ is int:
+        return v
+    raise CplError("CPL032", f"M value {v!r}")
+
+
+def _caseval(v):
+    if v.__class__ is int:
+        return v
+    if v is None:
+        raise TypeError("NUL")
+    raise CplError("CPL032", f"CASE selector {v!r} is not INTEGER")
