@@ -12,6 +12,7 @@ import re
 from pathlib import Path
 
 from ...diagnostics import CompileFailed, Diagnostic, UsageError
+from ...nc.canon import Src
 from ..base import Dialect
 from .card import Card
 from .checker import Checker
@@ -37,14 +38,24 @@ class Unit:
         self.locs = locs
         self.code = src.compile()
         self.task = prog.task
+        self.srcs = [Src(f, line) for f, line in locs]
 
     def namespace(self, card) -> dict:
         ns = namespace(card)
         exec(self.code, ns)
         return ns
 
-    def variables(self, ns: dict) -> dict:
-        return {v.name: ns.get(v.py) for v in self.checker.globals}
+    def variables(self, tk) -> dict:
+        """The main block's variables by declared name: shared ones from the namespace, the rest from
+        the block's locals (kept when it ended, failed, or is still suspended)."""
+        local = tk.main_locals
+        if local is None and tk.gen is not None and tk.gen.gi_frame is not None:
+            local = tk.gen.gi_frame.f_locals
+        local = local or {}
+        out = {}
+        for v in self.checker.globals:
+            out[v.name] = tk.ns.get(v.py) if v.in_routine else local.get(v.py, tk.ns.get(v.py))
+        return out
 
 
 def compile_units(path: str, text: str, machine, warnings: list | None = None) -> list[Unit]:
@@ -127,7 +138,7 @@ class SympasDialect(Dialect):
                     session.say(tk.line)  # an unterminated WRITE string is still shown
                     tk.tskinfo |= 2
             if main_task.ns is not None:
-                session.variables = main.variables(main_task.ns)
+                session.variables = main.variables(main_task)
             kernel = session.kernel
             pos = tuple(a.m for a in card.axes)
             kernel.machine_pos = pos

@@ -91,6 +91,10 @@ class Card(Commands):
         for ev in machine.scenario:
             self.add_timed(ev.time * TICKS_PER_S, self._scenario_action(ev))
         self.irq_count = 0
+        self.live: set = set()  # moves that have not retired yet
+        self.solo = None  # the only running task, when there is just one
+        self.counts = float(cfg["counts_per_unit"])
+        self.refused_mask = 1 << cfg["axst_bits"]["refused"]
         session.canon_started = True
 
     # -- timed actions -----------------------------------------------------------------------------
@@ -313,6 +317,7 @@ class Card(Commands):
         self._finish(mv)
 
     def _finish(self, mv: Move) -> None:
+        self.live.discard(mv)
         fin = mv.final()
         for k, ax in enumerate(mv.axes):
             a = self.axes[ax]
@@ -372,6 +377,7 @@ class Card(Commands):
             a = self.axes[ax]
             a.flags &= ~bit
         mv.start(t, length, v, acc)
+        self.live.add(mv)
         for k, ax in enumerate(mv.axes):
             a = self.axes[ax]
             a.move = mv
@@ -443,6 +449,7 @@ class Card(Commands):
             if not running:
                 return
             tk = min(running, key=lambda t: (t.time, t.number))
+            self.solo = tk if len(running) == 1 else None
             self.apply_timed(tk.time)
             horizon = math.inf
             for o in running:
@@ -458,18 +465,33 @@ class Card(Commands):
             except StopIteration:
                 tk.state = ENDED
                 tk.enabled.clear()
-            except RuntimeFault as e:
-                tk.state = ERROR
-                raise self.locate(tk, e) from None
-            except RecursionError:
-                tk.state = ERROR
-                raise self.locate(tk, RuntimeFault("8", "stack overflow: calls nested too deep")) from None
-            except _task_end() as e:
-                tk.enabled.clear()
-                if e.restart:
-                    tk.start(tk.time)
-                else:
-                    tk.state = ENDED
+            except BaseException as e:  # noqa: B036 - every way a task stops is handled or re-raised
+                self.capture_locals(tk, e.__traceback__)
+                from .task import TaskEnd
+                if isinstance(e, TaskEnd):
+                    tk.enabled.clear()
+                    if e.restart:
+                        tk.start(tk.time)
+                    else:
+                        tk.state = ENDED
+                    continue
+                if isinstance(e, RuntimeFault):
+                    tk.state = ERROR
+                    raise self.locate(tk, e) from None
+                if isinstance(e, RecursionError):
+                    tk.state = ERROR
+                    fault8 = RuntimeFault("8", "stack overflow: calls nested too deep")
+                    fault8.__traceback__ = e.__traceback__
+                    raise self.locate(tk, fault8) from None
+                raise
+
+    def capture_locals(self, tk, tb) -> None:
+        """Keep the main block's locals (its variables) when the task stops by an exception."""
+        while tb is not None:
+            code = tb.tb_frame.f_code
+            if code.co_name == "_main" and tk.unit and code.co_filename == tk.unit.pyname:
+                tk.main_locals = dict(tb.tb_frame.f_locals)
+            tb = tb.tb_next
 
     def locate(self, tk, e: RuntimeFault) -> RuntimeFault:
         if e.span is not None and getattr(e, "number", None) is None:
@@ -499,11 +521,6 @@ class Card(Commands):
         self.steps = 0
         raise RuntimeFault("RUN001", f"step limit of {self.session.steps.limit:,} statements reached "
                                      "(runaway program? raise it with --max-steps)")
-
-
-def _task_end():
-    from .task import TaskEnd
-    return TaskEnd
 
 
 _ = (STEP, f32, Src)

@@ -10,8 +10,25 @@ from __future__ import annotations
 from . import ast as A
 from .errors import SympasError
 from .lexer import INT_MAX
-from .symbols import (BIT_QUALIFIERS, BUILTINS, CASTS, EVENTS, INTLIKE, NUMERIC, QUALIFIER_ALIASES, QUALIFIERS,
-                      REAL, AxisSpec, Builtin, Const, Label, Routine, SysParam, Var, sysparam)
+from .symbols import (
+    BIT_QUALIFIERS,
+    BUILTINS,
+    CASTS,
+    EVENTS,
+    INTLIKE,
+    NUMERIC,
+    QUALIFIER_ALIASES,
+    QUALIFIERS,
+    REAL,
+    AxisSpec,
+    Builtin,
+    Const,
+    Label,
+    Routine,
+    SysParam,
+    Var,
+    sysparam,
+)
 
 
 def assignable(dst: str, src: str) -> bool:
@@ -296,6 +313,7 @@ class Checker:
                 self.err("SP006", f"'{t.name}' cannot be assigned", t)
             elif sym.ty == "axis":
                 self.err("SP003", f"an AXIS variable is set through its number: {t.name}.an := ...", t)
+            self.touch(sym)
             t.sym, t.ty = sym, sym.ty
             return sym.ty
         return self.qual(t, write=True)
@@ -308,6 +326,7 @@ class Checker:
         if not (isinstance(sym, AxisSpec) or isinstance(sym, Var) and sym.ty == "axis"):
             self.err("SP003", f"'{ax.name}' is not an axis specifier or AXIS variable", ax)
         ax.sym = sym
+        self.touch(sym)
         name = QUALIFIER_ALIASES.get(q.qual, q.qual)
         if q.qual in QUALIFIER_ALIASES and q.qual == "jtvf":
             self.warn("W031", "qualifier 'jtvf' read as 'jtv' (L1464)", q)
@@ -448,6 +467,11 @@ class Checker:
             if t == "axis":
                 self.err("SP003", f"{c.name}: an AXIS cannot be written", a)
 
+    def touch(self, sym) -> None:
+        """Remember globals a routine uses: the others can be fast locals of the main block."""
+        if isinstance(sym, Var) and sym.is_global and self.scope.routine is not None:
+            sym.in_routine = True
+
     def axis_item(self, a, c) -> None:
         node = a if isinstance(a, A.Name) else a
         sym = self.scope.lookup(node.name)
@@ -466,6 +490,7 @@ class Checker:
             if not isinstance(a, A.Name):
                 self.err("SP005", f"{c.name} takes axis specifiers only (no ':=' values)", a)
             a.sym = self.axis_item(a, c)
+            self.touch(a.sym)
             if a.name in seen:
                 self.err("SP005", f"{c.name}: axis '{a.name}' is named twice", a)
             seen.add(a.name)
@@ -496,6 +521,7 @@ class Checker:
             if sym is None and sysparam(a.name) is not None:
                 self.err("SP005", f"{c.name} does not take system parameter {a.name}", a)
             a.sym = self.axis_item(a, c)
+            self.touch(a.sym)
             if a.name in seen:
                 self.err("SP005", f"{c.name}: axis '{a.name}' is named twice", a)
             seen.add(a.name)
@@ -563,6 +589,7 @@ class Checker:
             self.err("3", f"'{e.name}' is not declared (or used before its declaration)", e)
         e.sym = sym
         if isinstance(sym, (Var, Const)):
+            self.touch(sym)
             return sym.ty
         if isinstance(sym, Routine):
             r = self.scope.routine

@@ -51,8 +51,9 @@ class CodeGen:
         self.main()
         return self.src
 
-    def global_names(self) -> list[str]:
-        return [v.py for v in self.chk.globals]
+    def global_names(self, main: bool = False) -> list[str]:
+        """Globals the unit's functions share; in the main block only those a routine also uses."""
+        return [v.py for v in self.chk.globals if v.in_routine or not main]
 
     def routine(self, r: Routine) -> None:
         d = r.node
@@ -70,7 +71,7 @@ class CodeGen:
                 self.emit(f"{v.py} = {zero(v.ty)}")
             if r.result:
                 self.emit(f"l__result = {zero(r.result)}")
-            self.emit("_n = 0")
+            self.emit("_n = 0; _card = tk.card")
             self.emit("tk.depth += 1")
             self.emit("if tk.depth > tk.max_depth: _fault(8, 'stack overflow: calls nested deeper than ' "
                       "+ str(tk.max_depth))")
@@ -83,14 +84,15 @@ class CodeGen:
     def main(self) -> None:
         body = self.unit.body
         with self.src.block("def _main(tk):", self.loc(body)):
-            gl = self.global_names()
+            gl = self.global_names(main=True)
             if gl:
                 self.emit("global " + ", ".join(gl))
             for v in self.chk.globals:
                 self.emit(f"{v.py} = {zero(v.ty)}")
-            self.emit("_n = 0")
+            self.emit("_n = 0; _card = tk.card")
             self.block_body(body)
             self.emit("tk.flush(_n)")
+            self.emit("tk.main_locals = locals()")
             self.emit("return None")
             self.emit("yield")
 
@@ -118,8 +120,21 @@ class CodeGen:
                 self.emit("pass")
 
     def stmts(self, body: list) -> None:
-        for s in body:
-            self.stmt(s)
+        i = 0
+        while i < len(body):
+            j = i
+            while j < len(body) and isinstance(body[j], A.Assign) and body[j].label is None \
+                    and not needs_time(body[j].value):
+                j += 1
+            if j - i > 1:
+                # a run of plain assignments: count them once
+                self.emit(f"_n += {j - i}", body[i])
+                for s in body[i:j]:
+                    self.assign(s.target, self.expr(s.value), s.value.ty, s)
+                i = j
+            else:
+                self.stmt(body[i])
+                i += 1
 
     def stmt(self, s) -> None:
         if isinstance(s, A.Assign):
@@ -251,7 +266,7 @@ class CodeGen:
             self.emit("    yield from tk.stopped()", node)
         elif b.form == "S":
             axes = ", ".join(self.axis_ref(a) for a in c.axes)
-            self.emit(f"_g = tk.card.cmd_{name.lower()}(tk, ({axes},), {loc})", node)
+            self.emit(f"_g = _card.cmd_{name.lower()}(tk, ({axes},), {loc})", node)
             self.emit("if _g is not None: yield from _g", node)
         else:
             for p in c.params:
@@ -261,7 +276,7 @@ class CodeGen:
             flags = {p.name for p in c.params}
             target = "DTCA1" in flags or "DTCA2" in flags or "DTCA3" in flags
             base = name.lower()
-            self.emit(f"_g = tk.card.cmd_{base}(tk, ({items},), {loc}{', True' if target else ''})", node)
+            self.emit(f"_g = _card.cmd_{base}(tk, ({items},), {loc}{', True' if target else ''})", node)
             self.emit("if _g is not None: yield from _g", node)
 
     def write_item(self, a) -> str:
@@ -341,6 +356,10 @@ class CodeGen:
         args = ", ".join(self.arg(a, p) for a, p in zip(c.args, b.params))
         if c.name.startswith("RDCB"):
             return f"tk.{c.name.lower()}({args})"
+        if c.name == "SQRT":
+            return f"(_msqrt(_t) if (_t := {args}) >= 0 else _NAN)"
+        if c.name == "ABS":
+            return f"abs({args})" if c.args[0].ty == "double" else f"float(abs({args}))"
         return f"_F_{c.name}({args})"
 
     def binary(self, e: A.Bin) -> str:
@@ -372,9 +391,13 @@ class CodeGen:
         if ty == "integer":
             if "timer" in (lt, rt):
                 a, b = (f"_t2i({a})" if lt == "timer" else a), (f"_t2i({b})" if rt == "timer" else b)
+            const_b = isinstance(e.right, A.Num) and e.right.value > 0
             if op == "/":
                 return f"_idiv({a}, {b})"
             if op == "mod":
+                if const_b:
+                    return f"({a} % {b} if (_t := {a}) >= 0 else -(-_t % {b}))" if isinstance(
+                        e.left, A.Name) else f"_imod({a}, {b})"
                 return f"_imod({a}, {b})"
             if op == "shl":
                 return INT_WRAP.format(f"{a} << ({b} & 31)")
@@ -383,6 +406,8 @@ class CodeGen:
             return INT_WRAP.format(f"{a} {op} {b}")
         # real arithmetic runs in binary64 (digest A-11)
         if op == "/":
+            if isinstance(e.right, A.Num) and e.right.value != 0:
+                return f"({a} / {b})"
             return f"_rdiv({a}, {b})"
         return f"({a} {op} {b})"
 
@@ -420,7 +445,7 @@ def cast(code: str, src: str, dst: str) -> str:
         return f"({code} != 0)" if src != "boolean" else code
     if dst == "integer":
         if src in ("single", "double"):
-            return f"_toint({code})"
+            return f"(int(_t) if -2147483648.0 < (_t := {code}) < 2147483648.0 else _toint(_t))"
         if src == "timer":
             return f"_t2i({code})"
         return f"int({code})"

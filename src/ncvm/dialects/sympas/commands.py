@@ -9,17 +9,25 @@ units for jog and home commands (§6.3.1.2, L1351).
 from __future__ import annotations
 
 import math
+from operator import attrgetter
 
 from ...nc.canon import Src
 from .motion import Move
 from .values import fault
 
+_GET_M = attrgetter("m")
+
 
 class Commands:
     # -- helpers ------------------------------------------------------------------------------------
     def src(self, tk, loc: int) -> Src:
-        f, line = tk.unit.locs[loc]
-        return Src(f, line)
+        return tk.unit.srcs[loc]
+
+    def others_running(self, tk) -> bool:
+        for t in self.tasks:
+            if t.state == "RUNNING" and t is not tk:
+                return True
+        return False
 
     def _user_to_machine(self, tk, items, relative: bool, start, scale: float):
         axes = tuple(ax for ax, _ in items)
@@ -37,7 +45,55 @@ class Commands:
         return self.wait_axes(tk, axes) if wait else None
 
     # -- linear interpolation (§6.6.43-46) ---------------------------------------------------------------
+    def _linear_fast(self, tk, items, loc, relative: bool) -> bool:
+        """MLAW/MLRW when nothing else can happen during the move (one task, no events, idle axes, no
+        timed action before its end, mm and s): the same profile and canon call as the general path,
+        without the bookkeeping of a running move."""
+        sysp = tk.sysp
+        v = sysp["TRVL"] * tk.ovr
+        acc = sysp["TRAC"]
+        if v <= 0 or acc <= 0 or self.live or self.active_zo or not tk.plain_units:
+            return False
+        axes = self.axes
+        pos = list(map(_GET_M, axes))
+        start = tuple(pos)
+        c = self.counts
+        n = len(axes)
+        l2 = 0.0
+        exact = self.sys["MODEREG"] & 0x100
+        for ax, val in items:
+            if not 0 <= ax < n:
+                return False
+            a = axes[ax]
+            p = a.target + val if relative else val + a.ref + a.zerooffset
+            if not exact:
+                p = round(p * c) / c
+            d = p - pos[ax]
+            l2 += d * d
+            pos[ax] = p
+        if l2 == 0.0:
+            return False
+        length = math.sqrt(l2)
+        if length * acc >= v * v:
+            end_t = tk.time + (length / v + v / acc) * 15625.0
+        else:
+            v = math.sqrt(length * acc)
+            end_t = tk.time + 2.0 * length / v * 15625.0
+        timed = self.timed
+        if timed and timed[0][0] <= end_t:
+            return False
+        for ax, _ in items:
+            a = axes[ax]
+            a.m = a.target = pos[ax]
+            if a.flags:
+                a.flags &= ~self.refused_mask
+        tk.time = end_t
+        self.canon.feed(start, tuple(pos), v * 60.0, tk.unit.srcs[loc])
+        return True
+
     def _linear(self, tk, items, loc, relative: bool, wait: bool):
+        if wait and self.solo is tk and not tk.enabled and self._linear_fast(tk, items, loc, relative):
+            return None
         axes = tuple(ax for ax, _ in items)
         start = self.prepare(tk, axes, loc)
         if start is None:
@@ -58,12 +114,16 @@ class Commands:
         return self._linear(tk, items, loc, False, False)
 
     def cmd_mlaw(self, tk, items, loc):
+        if self.solo is tk and not tk.enabled and self._linear_fast(tk, items, loc, False):
+            return None
         return self._linear(tk, items, loc, False, True)
 
     def cmd_mlr(self, tk, items, loc):
         return self._linear(tk, items, loc, True, False)
 
     def cmd_mlrw(self, tk, items, loc):
+        if self.solo is tk and not tk.enabled and self._linear_fast(tk, items, loc, True):
+            return None
         return self._linear(tk, items, loc, True, True)
 
     # -- circles and helices (§6.6.31-42) -------------------------------------------------------------------
@@ -74,7 +134,6 @@ class Commands:
             return None
         f, _ = self.units(tk)
         p0 = tuple(start[ax] for ax in axes)
-        i_ax, j_ax = axes[0], axes[1]
         sh = [self.user_shift(self.axes[ax]) for ax in axes]
         vals = [v * f for _, v in items]
         phi_deg = tk.sysp["PHI"]
@@ -321,6 +380,7 @@ class Commands:
                 continue
             mv.start(t, abs(p1 - p0), vel, acc)
             a.move = mv
+            self.live.add(mv)
             a.target = p1
         return self._wait(tk, axes, wait)
 
@@ -366,6 +426,7 @@ class Commands:
             if abs(ref - p0) > 0:
                 mv.start(t, abs(ref - p0), a.q["hvl"], a.q["hac"])
                 a.move = mv
+                self.live.add(mv)
             a.target = ref
             if ok:
                 a.flags &= ~failed

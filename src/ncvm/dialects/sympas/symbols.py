@@ -20,6 +20,7 @@ class Var:
     ty: str
     py: str
     is_global: bool
+    in_routine: bool = False
 
 
 @dataclass(eq=False)

@@ -41,6 +41,7 @@ class Task:
         self.budget = 1
         self.check_at = 0.0
         self.depth = 0
+        self.main_locals = None
         self.max_depth = int(card.cfg["max_call_depth"])
         self.reset_state()
 
@@ -62,6 +63,7 @@ class Task:
         self.step_once = False
         self.depth = 0
         self.ovr = 1.0
+        self.plain_units = not (self.sysp["PU"] or self.sysp["TU"])
 
     # -- time ------------------------------------------------------------------------------
     def flush(self, n: int) -> None:
@@ -156,6 +158,8 @@ class Task:
     def set_sys(self, name: str, value) -> None:
         if name in self.sysp:
             self.sysp[name] = value
+            if name in ("PU", "TU", "NFRAX"):
+                self.plain_units = not (self.sysp["PU"] or self.sysp["TU"] or self.sysp["NFRAX"])
         else:
             self.card.set_sys(self, name, value)
 
@@ -242,6 +246,7 @@ class Task:
 
     def contcnct(self, n: int):
         t = self._task(n)
+        self.card.solo = None
         if t.state in (STOPPED, STEP) and t is not self:
             t.state = RUNNING
             t.time = max(t.time, self.time)
@@ -249,6 +254,7 @@ class Task:
 
     def stepcnct(self, n: int):
         t = self._task(n)
+        self.card.solo = None
         if t.state in (STOPPED, STEP) and t is not self:
             t.state = RUNNING
             t.step_once = True
@@ -281,8 +287,10 @@ class Task:
         self.state = READY
 
     def start(self, at: float) -> None:
+        self.card.solo = None
         self.reset_state()
         self.ns = self.unit.namespace(self.card)
         self.gen = self.ns["_main"](self)
+        self.main_locals = None
         self.time = at
         self.state = RUNNING

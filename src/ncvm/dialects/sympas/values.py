@@ -121,7 +121,7 @@ def namespace(card) -> dict:
         return wrap32(x)
 
     ns = {"_ovf": ovf, "_idiv": idiv, "_imod": imod, "_rdiv": rdiv, "_f32": f32, "_t2i": t2i, "_toint": toint,
-          "_fmt": fmt, "_DIGITS": int(card.cfg["write_digits"]), "_fault": fault, "_Goto": Goto, "_GOTO": GOTO, "__builtins__": __builtins__}
+          "_msqrt": math.sqrt, "_NAN": math.nan, "_fmt": fmt, "_DIGITS": int(card.cfg["write_digits"]), "_fault": fault, "_Goto": Goto, "_GOTO": GOTO, "__builtins__": __builtins__}
     for name, fn in MATH.items():
         ns["_F_" + name] = fn
     return ns
