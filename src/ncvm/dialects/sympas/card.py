@@ -509,6 +509,17 @@ class Card(Commands):
         from ...diagnostics import Frame
         stack = [Frame(n, Span(f, ln)) for n, (f, ln) in frames]
         span = stack[-1].span if stack else None
+        if e.code == "8" and len(stack) >= 2:
+            span = stack[-2].span  # the call that did not fit, not the routine's header
+            stack = stack[:-1]
+        if len(stack) > 20:
+            stack = stack[:5] + [Frame(f"... {len(stack) - 20} more calls ...", None)] + stack[-15:]
+        # statements counted but not yet handed to the task when the fault struck
+        tb = e.__traceback__
+        while tb is not None:
+            if tb.tb_frame.f_code.co_filename == unit.pyname:
+                self.steps += int(tb.tb_frame.f_locals.get("_n", 0) or 0)
+            tb = tb.tb_next
         tk.error |= int(e.code) if e.code.isdigit() else 0
         tk.error_line = span.line if span else 0
         msg = e.message

@@ -134,7 +134,11 @@ class Lexer:
                 continue
             raise SympasError("SP001", f"character {c!r} is not allowed here", path, line, col)
         if depth == 0:
-            out.append(Token("eof", None, path, line, i - col0 + 1))
+            if out:
+                last = out[-1]
+                out.append(Token("eof", None, last.file, last.line, last.col + len(last.text or str(last.value))))
+            else:
+                out.append(Token("eof", None, path, line, i - col0 + 1))
         return out
 
     def _number(self, text, i, path, line, col, out) -> int:
