@@ -336,6 +336,8 @@ class Commands:
                     if e[1] == codes["spool_halt"]:
                         for ax in e_axes:
                             self.axes[ax].spool_halted = True
+                    elif t <= saved_t:
+                        self._ssf_action(e[1], e[2])()  # at the spooler head now: runs at once
                     else:
                         self.add_timed(t, self._ssf_action(e[1], e[2]))
                     continue
