@@ -1,0 +1,148 @@
+"""ADDI-DATA rw_SymPas: stand-alone programs (SAP) for the APCI-8001/8008 card, in 4 CNC tasks.
+
+check: lexer -> parser -> checker (compile errors with the manual's numbers).
+run: each program compiles to Python generator functions (codegen), loaded
+into its task ({$TASK n}) on the simulated card, which runs the tasks on one
+deterministic 64 us clock and sends the path through the canon interface.
+"""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+from ...diagnostics import CompileFailed, Diagnostic, UsageError
+from ...nc.canon import Src
+from ..base import Dialect
+from .card import Card
+from .checker import Checker
+from .codegen import CodeGen
+from .config import sympas_config
+from .errors import SympasError
+from .lexer import Lexer
+from .motion import TICKS_PER_S
+from .parser import Parser
+from .values import namespace
+
+_SNIFF = re.compile(r"\b(begin|end\.|procedure|writeln|MLAW?|MLRW?|JAW?|STARTCNCT|\{\$TASK)\b", re.I)
+
+
+class Unit:
+    """One compiled program: its Python code and the map back to the source."""
+
+    def __init__(self, prog, checker, src, pyname: str, locs):
+        self.prog = prog
+        self.checker = checker
+        self.src = src
+        self.pyname = pyname
+        self.locs = locs
+        self.code = src.compile()
+        self.task = prog.task
+        self.srcs = [Src(f, line) for f, line in locs]
+
+    def namespace(self, card) -> dict:
+        ns = namespace(card)
+        exec(self.code, ns)
+        return ns
+
+    def variables(self, tk) -> dict:
+        """The main block's variables by declared name: shared ones from the namespace, the rest from
+        the block's locals (kept when it ended, failed, or is still suspended)."""
+        local = tk.main_locals
+        if local is None and tk.gen is not None and tk.gen.gi_frame is not None:
+            local = tk.gen.gi_frame.f_locals
+        local = local or {}
+        out = {}
+        for v in self.checker.globals:
+            out[v.name] = tk.ns.get(v.py) if v.in_routine else local.get(v.py, tk.ns.get(v.py))
+        return out
+
+
+def compile_units(path: str, text: str, machine, warnings: list | None = None) -> list[Unit]:
+    cfg = sympas_config(machine)
+
+    def warn(code, msg, node):
+        if warnings is not None:
+            warnings.append(Diagnostic(code, msg, _span(node), severity="warning"))
+
+    def finder(name):
+        p = machine.find_program(name)
+        return p
+
+    toks = Lexer(finder, warn).tokens(path, text)
+    progs = Parser(toks, warn).programs()
+    units = []
+    for k, prog in enumerate(progs):
+        chk = Checker(cfg["axis_names"], warn)
+        chk.program(prog)
+        pyname = f"<sympas:{path}#{k}>"
+        gen = CodeGen(pyname, chk, prog)
+        src = gen.generate()
+        units.append(Unit(prog, chk, src, pyname, gen.locs))
+    return units
+
+
+def _span(node):
+    from ...diagnostics import Span
+    return Span(node.file, node.line, node.col)
+
+
+class SympasDialect(Dialect):
+    id = "sympas"
+    title = "ADDI-DATA rw_SymPas (APCI-8001/8008)"
+    extensions = (".pas", ".sym", ".sap")
+
+    def sniff(self, text: str) -> int:
+        hits = len(_SNIFF.findall(text[:20000]))
+        return min(100, hits * 15)
+
+    def check(self, path, text, machine, all_errors=False):
+        warnings: list[Diagnostic] = []
+        try:
+            compile_units(path, text, machine, warnings)
+        except SympasError as e:
+            return warnings + [e.diagnostic()]
+        return warnings
+
+    def run(self, path, text, session):
+        try:
+            units = compile_units(path, text, session.machine)
+            cfg = sympas_config(session.machine)
+            for extra in cfg["load"]:
+                p = session.machine.find_program(extra) or Path(path).parent / extra
+                if not p.is_file():
+                    raise UsageError(f"sympas.load: program '{extra}' not found")
+                units += compile_units(str(p), p.read_text(encoding="latin-1"), session.machine)
+        except SympasError as e:
+            raise CompileFailed([e.diagnostic()]) from None
+        card = Card(session, cfg)
+        session.card = card
+        main = units[0]
+        for u in units:
+            n = u.task if u.task is not None else 0
+            if card.tasks[n].unit is not None:
+                raise CompileFailed([Diagnostic("SP010", f"two programs are loaded into task {n}",
+                                                _span(u.prog))])
+            card.tasks[n].load(u)
+        main_task = card.tasks[main.task if main.task is not None else 0]
+        main_task.start(0.0)
+        try:
+            card.run()
+        finally:
+            session.steps.steps += card.steps
+            card.steps = 0
+            end = card.finish()
+            session.machine.clock.now = end / TICKS_PER_S
+            for tk in card.tasks:
+                if tk.line and not tk.tskinfo & 2:
+                    session.say(tk.line)  # an unterminated WRITE string is still shown
+                    tk.tskinfo |= 2
+            if main_task.ns is not None:
+                session.variables = main.variables(main_task)
+            kernel = session.kernel
+            pos = tuple(a.m for a in card.axes)
+            kernel.machine_pos = pos
+            kernel.prog = [m - card.user_shift(a) for m, a in zip(pos, card.axes)]
+
+
+DIALECT = SympasDialect()

@@ -1,0 +1,578 @@
+"""The card's axis commands (§6.6): path moves, jog and home, stops, spooler, zero points, filters.
+
+Each ``cmd_<name>(tk, items, loc[, target])`` gets the axis numbers (form S) or
+(axis, value) pairs (forms SP/SP+) and returns None, or a generator the task
+runs to wait (the W variants). Values are in PU for path moves and in axis
+units for jog and home commands (§6.3.1.2, L1351).
+"""
+
+from __future__ import annotations
+
+import math
+from operator import attrgetter
+
+from ...nc.canon import Src
+from .motion import Move
+from .values import fault
+
+_GET_M = attrgetter("m")
+
+
+class Commands:
+    # -- helpers ------------------------------------------------------------------------------------
+    def src(self, tk, loc: int) -> Src:
+        return tk.unit.srcs[loc]
+
+    def others_running(self, tk) -> bool:
+        for t in self.tasks:
+            if t.state == "RUNNING" and t is not tk:
+                return True
+        return False
+
+    def _user_to_machine(self, tk, items, relative: bool, start, scale: float):
+        axes = tuple(ax for ax, _ in items)
+        p0 = tuple(start[ax] for ax in axes)
+        p1 = []
+        for ax, v in items:
+            a = self.axes[ax]
+            if relative:
+                p1.append(a.target + v * scale)
+            else:
+                p1.append(v * scale + self.user_shift(a))
+        return axes, p0, tuple(p1)
+
+    def _wait(self, tk, axes, wait: bool):
+        return self.wait_axes(tk, axes) if wait else None
+
+    # -- linear interpolation (§6.6.43-46) ---------------------------------------------------------------
+    def _linear_fast(self, tk, items, loc, relative: bool) -> bool:
+        """MLAW/MLRW when nothing else can happen during the move (one task, no events, idle axes, no
+        timed action before its end, mm and s): the same profile and canon call as the general path,
+        without the bookkeeping of a running move."""
+        sysp = tk.sysp
+        v = sysp["TRVL"] * tk.ovr
+        acc = sysp["TRAC"]
+        if v <= 0 or acc <= 0 or self.live or self.active_zo or not tk.plain_units:
+            return False
+        axes = self.axes
+        pos = list(map(_GET_M, axes))
+        start = tuple(pos)
+        c = self.counts
+        n = len(axes)
+        l2 = 0.0
+        exact = self.sys["MODEREG"] & 0x100
+        for ax, val in items:
+            if not 0 <= ax < n:
+                return False
+            a = axes[ax]
+            p = a.target + val if relative else val + a.ref + a.zerooffset
+            if not exact:
+                p = round(p * c) / c
+            d = p - pos[ax]
+            l2 += d * d
+            pos[ax] = p
+        if l2 == 0.0:
+            return False
+        length = math.sqrt(l2)
+        if length * acc >= v * v:
+            end_t = tk.time + (length / v + v / acc) * 15625.0
+        else:
+            v = math.sqrt(length * acc)
+            end_t = tk.time + 2.0 * length / v * 15625.0
+        timed = self.timed
+        if timed and timed[0][0] <= end_t:
+            return False
+        for ax, _ in items:
+            a = axes[ax]
+            a.m = a.target = pos[ax]
+            if a.flags:
+                a.flags &= ~self.refused_mask
+        tk.time = end_t
+        self.canon.feed(start, tuple(pos), v * 60.0, tk.unit.srcs[loc])
+        return True
+
+    def _linear(self, tk, items, loc, relative: bool, wait: bool):
+        if wait and self.solo is tk and not tk.enabled and self._linear_fast(tk, items, loc, relative):
+            return None
+        axes = tuple(ax for ax, _ in items)
+        start = self.prepare(tk, axes, loc)
+        if start is None:
+            return None
+        f, _ = self.units(tk)
+        axes, p0, p1 = self._user_to_machine(tk, items, relative, start, f)
+        p1 = tuple(self.round_counts(x) for x in p1)
+        nfrax = int(tk.sysp["NFRAX"])
+        length = math.sqrt(sum((b - a) ** 2 for ax, a, b in zip(axes, p0, p1) if not nfrax >> ax & 1))
+        if length == 0.0:
+            length = max((abs(b - a) for a, b in zip(p0, p1)), default=0.0)
+        mv = Move(axes, p0, p1, "line", self.src(tk, loc), start)
+        if not self.start_path(tk, mv, length, loc):
+            return None
+        return self._wait(tk, axes, wait)
+
+    def cmd_mla(self, tk, items, loc):
+        return self._linear(tk, items, loc, False, False)
+
+    def cmd_mlaw(self, tk, items, loc):
+        if self.solo is tk and not tk.enabled and self._linear_fast(tk, items, loc, False):
+            return None
+        return self._linear(tk, items, loc, False, True)
+
+    def cmd_mlr(self, tk, items, loc):
+        return self._linear(tk, items, loc, True, False)
+
+    def cmd_mlrw(self, tk, items, loc):
+        if self.solo is tk and not tk.enabled and self._linear_fast(tk, items, loc, True):
+            return None
+        return self._linear(tk, items, loc, True, True)
+
+    # -- circles and helices (§6.6.31-42) -------------------------------------------------------------------
+    def _circle(self, tk, items, loc, relative: bool, wait: bool, target: bool = False):
+        axes = tuple(ax for ax, _ in items)
+        start = self.prepare(tk, axes, loc)
+        if start is None:
+            return None
+        f, _ = self.units(tk)
+        p0 = tuple(start[ax] for ax in axes)
+        sh = [self.user_shift(self.axes[ax]) for ax in axes]
+        vals = [v * f for _, v in items]
+        phi_deg = tk.sysp["PHI"]
+        if target:
+            # target-point mode: the circle items give the end point, DTCA1/2 the centre (digest A-37, A-40)
+            rel_center = relative or bool(self.cfg["dtca_always_relative"])
+            d1, d2 = tk.sysp["DTCA1"] * f, tk.sysp["DTCA2"] * f
+            c = (p0[0] + d1, p0[1] + d2) if rel_center else (d1 + sh[0], d2 + sh[1])
+            e = (p0[0] + vals[0], p0[1] + vals[1]) if relative else (vals[0] + sh[0], vals[1] + sh[1])
+            r0 = math.hypot(p0[0] - c[0], p0[1] - c[1])
+            r1 = math.hypot(e[0] - c[0], e[1] - c[1])
+            if r0 == 0 or abs(r1 - r0) > 1e-3 * r0 + 1e-9:
+                for ax in axes:
+                    self.axes[ax].flags |= 1 << self.cfg["axst_bits"]["refused"]
+                return None
+            a0 = math.atan2(p0[1] - c[1], p0[0] - c[0])
+            a1 = math.atan2(e[1] - c[1], e[0] - c[0])
+            d = a1 - a0
+            if phi_deg >= 0:
+                while d <= 1e-12:
+                    d += 2 * math.pi
+                if d > 2 * math.pi + 1e-12:
+                    d -= 2 * math.pi
+            else:
+                while d >= -1e-12:
+                    d -= 2 * math.pi
+                if d < -2 * math.pi - 1e-12:
+                    d += 2 * math.pi
+            phi = d
+        else:
+            c = (p0[0] + vals[0], p0[1] + vals[1]) if relative else (vals[0] + sh[0], vals[1] + sh[1])
+            phi = math.radians(phi_deg)
+            a0 = math.atan2(p0[1] - c[1], p0[0] - c[0])
+            r0 = math.hypot(p0[0] - c[0], p0[1] - c[1])
+        radius = r0
+        a_end = a0 + phi
+        p1 = [c[0] + radius * math.cos(a_end), c[1] + radius * math.sin(a_end)]
+        for k in range(2, len(axes)):
+            p1.append(p0[k] + vals[k] if relative else vals[k] + sh[k])
+        p1 = tuple(self.round_counts(x) for x in p1)
+        nfrax = int(tk.sysp["NFRAX"])
+        lin2 = sum((p1[k] - p0[k]) ** 2 for k in range(2, len(axes)) if not nfrax >> axes[k] & 1)
+        length = math.sqrt((radius * phi) ** 2 + lin2)
+        mv = Move(axes, p0, p1, "arc", self.src(tk, loc), start)
+        mv.center, mv.radius, mv.a0, mv.phi, mv.plane = c, radius, a0, phi, (0, 1)
+        if not self.start_path(tk, mv, length, loc):
+            return None
+        return self._wait(tk, axes, wait)
+
+    def cmd_mca(self, tk, items, loc, target=False):
+        return self._circle(tk, items, loc, False, False, target)
+
+    def cmd_mcaw(self, tk, items, loc, target=False):
+        return self._circle(tk, items, loc, False, True, target)
+
+    def cmd_mcr(self, tk, items, loc, target=False):
+        return self._circle(tk, items, loc, True, False, target)
+
+    def cmd_mcrw(self, tk, items, loc, target=False):
+        return self._circle(tk, items, loc, True, True, target)
+
+    cmd_mha, cmd_mhaw, cmd_mhr, cmd_mhrw = cmd_mca, cmd_mcaw, cmd_mcr, cmd_mcrw
+
+    def _circle3d(self, tk, items, loc, relative: bool, wait: bool, target: bool = False):
+        axes = tuple(ax for ax, _ in items)
+        start = self.prepare(tk, axes, loc)
+        if start is None:
+            return None
+        f, _ = self.units(tk)
+        p0 = tuple(start[ax] for ax in axes)
+        sh = [self.user_shift(self.axes[ax]) for ax in axes]
+        vals = [v * f for _, v in items]
+        n = (tk.sysp["PN1"], tk.sysp["PN2"], tk.sysp["PN3"])
+        nl = math.sqrt(sum(x * x for x in n))
+        if nl == 0:
+            for ax in axes:
+                self.axes[ax].flags |= 1 << self.cfg["axst_bits"]["refused"]
+            return None
+        n = tuple(x / nl for x in n)
+        c = tuple(p0[k] + vals[k] if relative else vals[k] + sh[k] for k in range(3))
+        # the centre is projected into the plane through p0 (digest §10.5: parallel plane through p0)
+        off = sum((p0[k] - c[k]) * n[k] for k in range(3))
+        c = tuple(c[k] + off * n[k] for k in range(3))
+        phi = math.radians(tk.sysp["PHI"])
+        radius = math.sqrt(sum((p0[k] - c[k]) ** 2 for k in range(3)))
+        from .motion import rotate
+        p1 = tuple(self.round_counts(x) for x in rotate(p0, c, n, phi))
+        mv = Move(axes, p0, p1, "arc3d", self.src(tk, loc), start)
+        mv.center, mv.radius, mv.phi, mv.normal = c, radius, phi, n
+        if not self.start_path(tk, mv, abs(radius * phi), loc):
+            return None
+        return self._wait(tk, axes, wait)
+
+    def cmd_mca3d(self, tk, items, loc, target=False):
+        return self._circle3d(tk, items, loc, False, False)
+
+    def cmd_mca3dw(self, tk, items, loc, target=False):
+        return self._circle3d(tk, items, loc, False, True)
+
+    def cmd_mcr3d(self, tk, items, loc, target=False):
+        return self._circle3d(tk, items, loc, True, False)
+
+    def cmd_mcr3dw(self, tk, items, loc, target=False):
+        return self._circle3d(tk, items, loc, True, True)
+
+    # -- spooled moves (SMLA ... SMHR, SSF, SSMS) ----------------------------------------------------------------
+    def _spool(self, tk, items, loc, kind: str, target: bool = False):
+        axes = tuple(ax for ax, _ in items)
+        for ax in axes:
+            self.check_axis(ax)
+        sysp = dict(tk.sysp)
+        entry = ("move", kind, tuple(items), loc, target, sysp)
+        for ax in axes:
+            self.axes[ax].spool.append(entry)
+        if any(len(self.axes[ax].spool) >= int(self.cfg["spool_capacity"]) for ax in axes):
+            return self.cmd_ssms(tk, axes, loc)  # AutoSpool (MODEREG bit 5); without it the task blocks (A-59)
+        return None
+
+    def cmd_smla(self, tk, items, loc):
+        return self._spool(tk, items, loc, "mla")
+
+    def cmd_smlr(self, tk, items, loc):
+        return self._spool(tk, items, loc, "mlr")
+
+    def cmd_smca(self, tk, items, loc, target=False):
+        return self._spool(tk, items, loc, "mca", target)
+
+    def cmd_smcr(self, tk, items, loc, target=False):
+        return self._spool(tk, items, loc, "mcr", target)
+
+    def cmd_smha(self, tk, items, loc, target=False):
+        return self._spool(tk, items, loc, "mha", target)
+
+    def cmd_smhr(self, tk, items, loc, target=False):
+        return self._spool(tk, items, loc, "mhr", target)
+
+    def cmd_smca3d(self, tk, items, loc, target=False):
+        return self._spool(tk, items, loc, "mca3d", target)
+
+    def cmd_smcr3d(self, tk, items, loc, target=False):
+        return self._spool(tk, items, loc, "mcr3d", target)
+
+    def cmd_ssf(self, tk, items, loc):
+        code = int(tk.sysp["SSFP"])
+        entry = ("ssf", code, tuple(items), loc)
+        for ax, _ in items:
+            self.check_axis(ax).spool.append(entry)
+        return None
+
+    def _ssf_action(self, code: int, items):
+        codes = self.cfg["ssf_codes"]
+
+        def act():
+            for ax, v in items:
+                if code == codes["write_ci"]:
+                    self.ci[int(self.cfg["ssf_ci_index"])] = int(v)
+                elif code == codes["set_output"]:
+                    bit = int(v)
+                    if 1 <= bit <= 32:
+                        self.axes[ax].digo |= 1 << (bit - 1)
+        return act
+
+    def cmd_ssms(self, tk, axes, loc):
+        for ax in axes:
+            self.check_axis(ax).spool_halted = False
+        self._chain(tk, axes, loc)
+        return None
+
+    def cmd_ssmsw(self, tk, axes, loc):
+        self.cmd_ssms(tk, axes, loc)
+        return self.wait_axes(tk, axes)
+
+    def _chain(self, tk, axes, loc):
+        """Spooled segments run back to back: each starts when the previous one on its axes ends."""
+        codes = self.cfg["ssf_codes"]
+        saved_sysp, saved_t = tk.sysp, tk.time
+        t = tk.time
+        for ax in axes:
+            mv = self.axes[ax].move
+            if mv is not None:
+                t = max(t, mv.t1)
+        busy = self.cfg["busy_move"]
+        self.cfg["busy_move"] = "override"
+        try:
+            while True:
+                e = None
+                for ax in axes:
+                    sp = self.axes[ax].spool
+                    if sp and not self.axes[ax].spool_halted:
+                        e = sp[0]
+                        break
+                if e is None:
+                    break
+                e_axes = [ax for ax, _ in e[2]]
+                for ax in e_axes:
+                    sp = self.axes[ax].spool
+                    if e in sp:
+                        sp.remove(e)
+                if e[0] == "ssf":
+                    if e[1] == codes["spool_halt"]:
+                        for ax in e_axes:
+                            self.axes[ax].spool_halted = True
+                    elif t <= saved_t:
+                        self._ssf_action(e[1], e[2])()  # at the spooler head now: runs at once
+                    else:
+                        self.add_timed(t, self._ssf_action(e[1], e[2]))
+                    continue
+                _, kind, items, eloc, target, sysp = e
+                tk.sysp = sysp
+                tk.time = t
+                for ax in e_axes:
+                    a = self.axes[ax]
+                    if a.move is not None and a.move.t1 <= t:
+                        self._finish(a.move)
+                fn = getattr(self, "cmd_" + kind)
+                if kind[:2] in ("mc", "mh"):
+                    fn(tk, items, eloc, target)
+                else:
+                    fn(tk, items, eloc)
+                for ax in e_axes:
+                    mv = self.axes[ax].move
+                    if mv is not None:
+                        t = max(t, mv.t1)
+        finally:
+            self.cfg["busy_move"] = busy
+            tk.sysp, tk.time = saved_sysp, saved_t
+
+    # -- jog and home (§6.6.16-28), axis units ---------------------------------------------------------------------------
+    def _jog(self, tk, items, loc, relative: bool, wait: bool):
+        t = tk.time
+        axes = tuple(ax for ax, _ in items)
+        start = self.prepare(tk, axes, loc)
+        if start is None:
+            return None
+        src = self.src(tk, loc)
+        for ax, v in items:
+            a = self.axes[ax]
+            p0 = start[ax]
+            p1 = self.round_counts(a.target + v if relative else v + self.user_shift(a))
+            mv = Move((ax,), (p0,), (p1,), "line", src, start)
+            mv.jog = True
+            vel = a.q["jvl"] * a.q["jovr"]
+            acc = a.q["jac"]
+            if abs(p1 - p0) == 0 or vel <= 0 or acc <= 0:
+                a.target = p1
+                continue
+            mv.start(t, abs(p1 - p0), vel, acc)
+            a.move = mv
+            self.live.add(mv)
+            a.target = p1
+        return self._wait(tk, axes, wait)
+
+    def cmd_ja(self, tk, items, loc):
+        return self._jog(tk, items, loc, False, False)
+
+    def cmd_jaw(self, tk, items, loc):
+        return self._jog(tk, items, loc, False, True)
+
+    def cmd_jr(self, tk, items, loc):
+        return self._jog(tk, items, loc, True, False)
+
+    def cmd_jrw(self, tk, items, loc):
+        return self._jog(tk, items, loc, True, True)
+
+    def _home(self, tk, axes, loc, direction: int, wait: bool, limits=None):
+        """JHL/JHR: move toward the REF switch at hvl, then REF becomes the axis zero (digest §10.5)."""
+        t = tk.time
+        start = self.prepare(tk, axes, loc)
+        if start is None:
+            return None
+        src = self.src(tk, loc)
+        refs = self.cfg["ref_positions"]
+        failed = 1 << self.cfg["axst_bits"]["home_failed"]
+        for k, ax in enumerate(axes):
+            a = self.axes[ax]
+            p0 = start[ax]
+            if limits is None:
+                ref = float(refs.get(a.name, 0.0))
+                ok = (ref - p0) * direction >= 0
+            else:
+                period = float(self.cfg["index_period"])
+                d = 1 if limits[k] >= 0 else -1
+                ref = (math.floor(p0 / period) + 1) * period if d > 0 else (math.ceil(p0 / period) - 1) * period
+                ok = abs(ref - p0) <= abs(limits[k])
+                if not ok:
+                    ref = p0 + limits[k]
+            mv = Move((ax,), (p0,), (ref,), "line", src, start)
+            mv.jog = True
+            if not ok and limits is None:
+                a.flags |= failed
+                continue
+            if abs(ref - p0) > 0:
+                mv.start(t, abs(ref - p0), a.q["hvl"], a.q["hac"])
+                a.move = mv
+                self.live.add(mv)
+            a.target = ref
+            if ok:
+                a.flags &= ~failed
+                a.homed = True
+                a.zerooffset = 0.0
+                a.ref = ref
+                if limits is None:
+                    a.q["lp"] = 0.0
+                else:
+                    a.q["lpndx"] = 0.0
+            else:
+                a.flags |= failed
+        return self._wait(tk, axes, wait)
+
+    def cmd_jhl(self, tk, axes, loc):
+        return self._home(tk, axes, loc, -1, False)
+
+    def cmd_jhlw(self, tk, axes, loc):
+        return self._home(tk, axes, loc, -1, True)
+
+    def cmd_jhr(self, tk, axes, loc):
+        return self._home(tk, axes, loc, 1, False)
+
+    def cmd_jhrw(self, tk, axes, loc):
+        return self._home(tk, axes, loc, 1, True)
+
+    def cmd_jhi(self, tk, items, loc):
+        return self._home(tk, tuple(ax for ax, _ in items), loc, 1, False, [v for _, v in items])
+
+    def cmd_jhiw(self, tk, items, loc):
+        return self._home(tk, tuple(ax for ax, _ in items), loc, 1, True, [v for _, v in items])
+
+    # -- stops ---------------------------------------------------------------------------------------------------------------
+    def _stop(self, tk, axes, wait: bool, path: bool):
+        t = tk.time
+        for ax in axes:
+            a = self.check_axis(ax)
+            mv = a.move
+            if mv is not None and mv.t1 > t:
+                if path and self.sys["MODEREG"] & 0x8000:
+                    f, ts = self.units(tk)
+                    dec = tk.sysp["TRAC"] * f / (ts * ts)
+                else:
+                    dec = min(self.axes[x].q["sdec"] for x in mv.axes)
+                mv.stop(t, dec)
+                for x in mv.axes:
+                    self.axes[x].target = mv.final()[mv.axes.index(x)]
+            a.spool.clear()
+        return self._wait(tk, axes, wait)
+
+    def cmd_js(self, tk, axes, loc):
+        return self._stop(tk, axes, False, False)
+
+    def cmd_jsw(self, tk, axes, loc):
+        return self._stop(tk, axes, True, False)
+
+    def cmd_ms(self, tk, axes, loc):
+        return self._stop(tk, axes, False, True)
+
+    def cmd_msw(self, tk, axes, loc):
+        return self._stop(tk, axes, True, True)
+
+    # -- loop, reset, positions (§6.6.8-9, 49, 51, 55, 57, 70-71) ----------------------------------------------------------------
+    def cmd_cl(self, tk, axes, loc):
+        for ax in axes:
+            a = self.check_axis(ax)
+            a.closed = True
+            a.poserr = 0.0  # bumpless: dp := rp
+        return None
+
+    cmd_clv = cmd_cl
+
+    def cmd_ol(self, tk, axes, loc):
+        for ax in axes:
+            a = self.check_axis(ax)
+            self._retire(a, tk.time)
+            a.target = a.m
+            a.closed = False
+        return None
+
+    def cmd_ra(self, tk, axes, loc):
+        for ax in axes:
+            a = self.check_axis(ax)
+            self._retire(a, tk.time)
+            a.target = a.m
+            a.spool.clear()
+            a.flags = 0
+            a.digi = a.digi
+            a.ifs = 0
+            a.closed = False
+        return None
+
+    def cmd_rptodp(self, tk, axes, loc):
+        for ax in axes:
+            a = self.check_axis(ax)
+            if self.busy(a, tk.time):
+                fault(256, f"RPTODP: axis {a.name} is in a profile")
+            a.m = a.target = a.m - a.poserr
+            a.poserr = 0.0
+        return None
+
+    def cmd_shp(self, tk, items, loc):
+        for ax, v in items:
+            a = self.check_axis(ax)
+            self.settle((ax,), tk.time)
+            m = self.mpos(a, tk.time)
+            a.ref = m - v - a.zerooffset - (self.user_shift(a) - a.ref - a.zerooffset)
+            a.homed = True
+        return None
+
+    def cmd_szpa(self, tk, items, loc):
+        for ax, v in items:
+            a = self.check_axis(ax)
+            if self.sys["MODEREG"] & (1 << 27):
+                a.ref += v - a.zerooffset
+                a.zerooffset = 0.0
+            else:
+                a.zerooffset = v
+        return None
+
+    def cmd_szpr(self, tk, items, loc):
+        for ax, v in items:
+            a = self.check_axis(ax)
+            if self.sys["MODEREG"] & (1 << 27):
+                a.ref += v
+            else:
+                a.zerooffset += v
+        return None
+
+    def cmd_uf(self, tk, axes, loc):
+        for ax in axes:
+            a = self.check_axis(ax)
+            a.active = dict(a.staged)
+        return None
+
+    def cmd_utrovr(self, tk, axes, loc):
+        for ax in axes:
+            self.check_axis(ax)
+        tk.ovr = float(tk.sysp["TROVR"])  # later path segments of this task run with the new factor
+        return None
+
+    def cmd_lpr(self, tk, axes, loc):
+        for ax in axes:
+            self.check_axis(ax)
+        return None
+
+    cmd_lprs = cmd_lpr

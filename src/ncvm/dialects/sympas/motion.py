@@ -1,0 +1,212 @@
+"""Motion profiles of the simulated card: one path parameter s(t) per move, trapezoidal in time.
+
+A :class:`Move` is a straight line, a circle/helix in a plane, or a 3-D circle
+over a group of axes, in machine coordinates and axis units (mm, deg), with a
+rest-to-rest trapezoidal velocity profile (digest §10.5). Positions at any
+simulated time are computed from the profile, so waits, CLOCK and events see
+the axes where they really are. A move is reported to the canon interface when
+it retires (ends, is stopped, or the run ends), with the geometry it really ran.
+"""
+
+from __future__ import annotations
+
+import math
+
+from ...nc.canon import ArcSpec, Src
+
+TICKS_PER_S = 15625.0
+TWO_PI = 2.0 * math.pi
+
+
+class Profile:
+    """Path parameter s(t) (t in seconds from the start): accelerate, cruise, decelerate."""
+
+    __slots__ = ("length", "v", "a", "t_acc", "t_cruise", "duration", "s_acc")
+
+    def __init__(self, length: float, v: float, a: float):
+        self.length, self.v, self.a = length, v, a
+        if length <= 0.0:
+            self.t_acc = self.t_cruise = self.duration = self.s_acc = 0.0
+            return
+        if a <= 0 or a == math.inf:
+            self.t_acc, self.s_acc = 0.0, 0.0
+            self.t_cruise = length / v
+        elif length * a >= v * v:
+            self.t_acc = v / a
+            self.s_acc = 0.5 * v * self.t_acc
+            self.t_cruise = (length - 2.0 * self.s_acc) / v
+        else:
+            self.t_acc = math.sqrt(length / a)
+            self.v = a * self.t_acc
+            self.s_acc = length / 2.0
+            self.t_cruise = 0.0
+        self.duration = 2.0 * self.t_acc + self.t_cruise
+
+    def s(self, t: float) -> float:
+        if t >= self.duration:
+            return self.length
+        if t <= 0.0:
+            return 0.0
+        ta = self.t_acc
+        if t < ta:
+            return 0.5 * self.a * t * t
+        if t < ta + self.t_cruise:
+            return self.s_acc + self.v * (t - ta)
+        r = self.duration - t
+        return self.length - 0.5 * self.a * r * r
+
+    def speed(self, t: float) -> float:
+        if t <= 0.0 or t >= self.duration:
+            return 0.0
+        ta = self.t_acc
+        if t < ta:
+            return self.a * t
+        if t < ta + self.t_cruise:
+            return self.v
+        return self.a * (self.duration - t)
+
+
+class Move:
+    """One profile over a group of axes (indices into the card's axes)."""
+
+    __slots__ = ("axes", "p0", "p1", "kind", "t0", "t1", "prof", "center", "radius", "a0", "phi", "plane",
+                 "normal", "lin", "src", "start_all", "feed", "stop_s", "stop_t", "stop_dec", "retired", "jog")
+
+    def __init__(self, axes, p0, p1, kind, src: Src, start_all):
+        self.axes = axes
+        self.p0 = p0
+        self.p1 = p1
+        self.kind = kind  # "line", "arc", "arc3d"
+        self.src = src
+        self.start_all = start_all
+        self.stop_s = None
+        self.retired = False
+        self.jog = False
+
+    def start(self, t0_ticks: float, length: float, v: float, a: float) -> None:
+        self.prof = Profile(length, v, a)
+        self.t0 = t0_ticks
+        self.t1 = t0_ticks + self.prof.duration * TICKS_PER_S
+        self.feed = self.prof.v * 60.0
+
+    # -- geometry -------------------------------------------------------------------------
+    def point(self, s: float) -> tuple:
+        L = self.prof.length
+        f = s / L if L > 0 else 1.0
+        if self.kind == "line":
+            if f >= 1.0:
+                return self.p1
+            return tuple(a + (b - a) * f for a, b in zip(self.p0, self.p1))
+        if self.kind == "arc":
+            i, j = self.plane
+            ang = self.a0 + self.phi * f
+            out = [a + (b - a) * f for a, b in zip(self.p0, self.p1)]
+            if f >= 1.0:
+                out = list(self.p1)
+            else:
+                out[i] = self.center[0] + self.radius * math.cos(ang)
+                out[j] = self.center[1] + self.radius * math.sin(ang)
+            return tuple(out)
+        # 3-D circle: rotate (p0 - c) about the unit normal by phi*f (Rodrigues)
+        if f >= 1.0:
+            return self.p1
+        return rotate(self.p0, self.center, self.normal, self.phi * f)
+
+    def s_at(self, t_ticks: float) -> float:
+        dt = (t_ticks - self.t0) / TICKS_PER_S
+        if self.stop_s is not None and t_ticks >= self.stop_t:
+            d = self.stop_dec
+            v0 = self.prof.speed((self.stop_t - self.t0) / TICKS_PER_S)
+            s0 = self.prof.s((self.stop_t - self.t0) / TICKS_PER_S)
+            tt = (t_ticks - self.stop_t) / TICKS_PER_S
+            if d <= 0 or tt * d >= v0:
+                return self.stop_s
+            return s0 + v0 * tt - 0.5 * d * tt * tt
+        return self.prof.s(dt)
+
+    def pos(self, t_ticks: float) -> tuple:
+        if t_ticks >= self.t1:
+            return self.point(self.stop_s if self.stop_s is not None else self.prof.length)
+        return self.point(self.s_at(t_ticks))
+
+    def speed_at(self, t_ticks: float) -> float:
+        if t_ticks >= self.t1:
+            return 0.0
+        if self.stop_s is not None and t_ticks >= self.stop_t:
+            v0 = self.prof.speed((self.stop_t - self.t0) / TICKS_PER_S)
+            return max(0.0, v0 - self.stop_dec * (t_ticks - self.stop_t) / TICKS_PER_S)
+        return self.prof.speed((t_ticks - self.t0) / TICKS_PER_S)
+
+    def stop(self, t_ticks: float, dec: float) -> None:
+        """Decelerate along the path with ``dec`` from ``t_ticks`` (JS, MS)."""
+        if t_ticks >= self.t1:
+            return
+        s0 = self.s_at(t_ticks)
+        v0 = self.speed_at(t_ticks)
+        if dec <= 0 or dec == math.inf:
+            self.stop_s, self.stop_t, self.stop_dec = s0, t_ticks, math.inf
+            self.t1 = t_ticks
+            return
+        self.stop_t = t_ticks
+        self.stop_dec = dec
+        self.stop_s = min(self.prof.length, s0 + v0 * v0 / (2.0 * dec))
+        self.t1 = t_ticks + v0 / dec * TICKS_PER_S
+
+    def final(self) -> tuple:
+        return self.point(self.stop_s if self.stop_s is not None else self.prof.length)
+
+    # -- reporting ----------------------------------------------------------------------------
+    def emit(self, canon, names_count: int) -> None:
+        """Tell the canon interface what this move really ran (called once, when it retires)."""
+        if self.retired:
+            return
+        self.retired = True
+        start = list(self.start_all)
+        end = list(self.start_all)
+        fin = self.final()
+        for k, ax in enumerate(self.axes):
+            start[ax] = self.p0[k]
+            end[ax] = fin[k]
+        start, end = tuple(start), tuple(end)
+        if self.jog:
+            canon.rapid(start, end, self.src)
+            return
+        if self.kind == "line":
+            canon.feed(start, end, self.feed, self.src)
+            return
+        s_end = self.stop_s if self.stop_s is not None else self.prof.length
+        if self.kind == "arc":
+            i, j = self.plane
+            frac = s_end / self.prof.length if self.prof.length > 0 else 1.0
+            swept = self.phi * frac
+            n_full = abs(swept) / TWO_PI
+            whole = math.floor(n_full + 1e-9)
+            if whole >= 1 and abs(n_full - round(n_full)) < 1e-9:
+                turns = int(round(n_full)) - 1
+            else:
+                turns = int(whole)
+            if abs(swept) < 1e-12:
+                canon.feed(start, end, self.feed, self.src)
+                return
+            spec = ArcSpec(self.axes[i], self.axes[j], self.center, swept < 0, self.radius, turns)
+            canon.arc(start, end, spec, self.feed, self.src)
+            return
+        # 3-D circle: a polyline of feeds, at most 5 degrees per segment
+        n = max(1, int(math.ceil(abs(self.phi) * s_end / max(self.prof.length, 1e-12) / math.radians(5.0))))
+        prev = start
+        for k in range(1, n + 1):
+            p = self.point(s_end * k / n)
+            cur = list(self.start_all)
+            for m, ax in enumerate(self.axes):
+                cur[ax] = p[m]
+            cur = tuple(cur)
+            canon.feed(prev, cur, self.feed, self.src)
+            prev = cur
+
+
+def rotate(p, c, n, ang):
+    v = [p[k] - c[k] for k in range(3)]
+    cs, sn = math.cos(ang), math.sin(ang)
+    dot = n[0] * v[0] + n[1] * v[1] + n[2] * v[2]
+    cross = (n[1] * v[2] - n[2] * v[1], n[2] * v[0] - n[0] * v[2], n[0] * v[1] - n[1] * v[0])
+    return tuple(c[k] + v[k] * cs + cross[k] * sn + n[k] * dot * (1 - cs) for k in range(3))

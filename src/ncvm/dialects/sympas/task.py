@@ -1,0 +1,296 @@
+"""One CNC task of the card (0..3): state, time, common buffer, string output, events.
+
+Generated code calls these methods; waits and task switches are generators the
+code runs with ``yield from``. Time is in 64 us ticks (float); each executed
+statement costs 1/Q tick (digest §10.1).
+"""
+
+from __future__ import annotations
+
+import math
+import struct
+
+from .symbols import EVENTS
+from .values import fault
+
+RUNNING, STOPPED, STEP, ENDED, ERROR, READY, EMPTY = "RUNNING", "STOPPED", "STEP", "ENDED", "ERROR", "READY", "EMPTY"
+TASK_SYS = ("DTCA1", "DTCA2", "DTCA3", "LET", "LST", "PHI", "PN1", "PN2", "PN3", "TRAC", "TROVR", "TROVRST",
+            "TRTVL", "TRVL", "NFRAX", "PU", "SSFP", "TU")
+_I32 = struct.Struct("<i")
+_F32 = struct.Struct("<f")
+_F64 = struct.Struct("<d")
+
+
+class TaskEnd(Exception):
+    """ABORT, or the task restarted itself with STARTCNCT."""
+
+    def __init__(self, restart: bool = False):
+        self.restart = restart
+
+
+class Task:
+    def __init__(self, card, number: int):
+        self.card = card
+        self.number = number
+        self.state = EMPTY
+        self.unit = None
+        self.ns: dict | None = None
+        self.gen = None
+        self.time = 0.0
+        self.iq = 1.0 / card.q
+        self.budget = 1
+        self.check_at = 0.0
+        self.depth = 0
+        self.main_locals = None
+        self.max_depth = int(card.cfg["max_call_depth"])
+        self.reset_state()
+
+    def reset_state(self) -> None:
+        cfg = self.card.cfg
+        self.sysp = {n: 0.0 for n in TASK_SYS}
+        self.sysp.update(TRVL=float(cfg["trvl"]), TRAC=float(cfg["trac"]), TRTVL=float(cfg["trtvl"]),
+                         TROVR=float(cfg["trovr"]), PU=int(cfg["pu"]), TU=int(cfg["tu"]), NFRAX=0, SSFP=0,
+                         PN3=1.0)
+        self.cb = bytearray(1000)
+        self.line = ""
+        self.tskinfo = 0
+        self.enabled: dict[str, object] = {}
+        self.in_handler = False
+        self.active_before: set[str] = set()
+        self.axmap = list(range(len(self.card.axes)))
+        self.error = 0
+        self.error_line = 0
+        self.step_once = False
+        self.depth = 0
+        self.ovr = 1.0
+        self.plain_units = not (self.sysp["PU"] or self.sysp["TU"])
+
+    # -- time ------------------------------------------------------------------------------
+    def flush(self, n: int) -> None:
+        if n:
+            self.time += n * self.iq
+            self.card.steps += n
+
+    def clock(self, n: int) -> int:
+        return (int(self.time + n * self.iq) + self.card.clock0) & 0xFFFFFFFF
+
+    def set_budget(self) -> None:
+        room = (self.check_at - self.time) * self.card.q
+        left = self.card.step_limit - self.card.steps + 1
+        self.budget = max(1, min(int(room) if room < 1e15 else 1 << 60, left))
+
+    def checkin(self, n: int):
+        """A loop back-edge: account the statements, let other tasks run, poll events."""
+        self.flush(n)
+        card = self.card
+        if card.steps > card.step_limit:
+            card.runaway()
+        if self.time >= self.check_at or self.step_once:
+            if self.step_once:
+                self.step_once = False
+                self.state = STEP
+            yield
+        if self.enabled and not self.in_handler:
+            yield from self.poll_events()
+        self.set_budget()
+
+    def poll_events(self):
+        """Run the highest-priority enabled event whose condition holds (§6.4, L1598-1610)."""
+        card = self.card
+        edge = card.cfg["event_trigger"] == "edge"
+        for name in EVENTS:
+            fn = self.enabled.get(name)
+            if fn is None:
+                continue
+            active = card.event_active(name, self.time)
+            if edge:
+                was = name in self.active_before
+                if active:
+                    self.active_before.add(name)
+                else:
+                    self.active_before.discard(name)
+                if not active or was:
+                    continue
+            elif not active:
+                continue
+            self.in_handler = True
+            try:
+                yield from fn(self)
+            finally:
+                self.in_handler = False
+            return
+
+    def others_running(self) -> bool:
+        return any(t.state == RUNNING and t is not self for t in self.card.tasks)
+
+    def wait_until(self, tick: float, poll: bool = True):
+        servo = self.card.servo
+        while self.time < tick:
+            step = tick
+            if poll and self.enabled:
+                step = min(tick, (math.floor(self.time / servo) + 1) * servo)
+            self.time = step
+            yield
+            if poll and self.enabled and not self.in_handler:
+                yield from self.poll_events()
+
+    def fast_wait(self, tick: float, poll: bool = True) -> bool:
+        """Advance to ``tick`` at once when nothing can happen before (no other task, no timed action)."""
+        if (poll and self.enabled) or self.others_running() or self.card.next_timed() <= tick:
+            return False
+        if tick > self.time:
+            self.time = tick
+        return True
+
+    def wt(self, ticks: int):
+        """WT(n): sleep n x 64 us; events are not processed meanwhile (L2232)."""
+        target = self.time + (ticks if ticks > 0 else 1)
+        if self.fast_wait(target, poll=False):
+            return None
+        return self.wait_until(target, poll=False)
+
+    # -- system parameters -----------------------------------------------------------------------
+    def get_sys(self, name: str):
+        if name in self.sysp:
+            return self.sysp[name]
+        return self.card.get_sys(name)
+
+    def set_sys(self, name: str, value) -> None:
+        if name in self.sysp:
+            self.sysp[name] = value
+            if name in ("PU", "TU", "NFRAX"):
+                self.plain_units = not (self.sysp["PU"] or self.sysp["TU"] or self.sysp["NFRAX"])
+        else:
+            self.card.set_sys(self, name, value)
+
+    # -- common buffer (§6.6.52-54, 76-78) ---------------------------------------------------------
+    def _cb(self, offset: int, size: int) -> int:
+        if size == 8 and offset % 8:
+            fault(2048, f"common buffer offset {offset} is not divisible by 8")
+        if offset % 4:
+            fault(256, f"common buffer offset {offset} is not divisible by 4")
+        if not 0 <= offset <= 1000 - size:
+            fault(256, f"common buffer offset {offset} outside 0..{1000 - size}")
+        return offset
+
+    def rdcbd(self, off):
+        return _F64.unpack_from(self.cb, self._cb(off, 8))[0]
+
+    def rdcbi(self, off):
+        return _I32.unpack_from(self.cb, self._cb(off, 4))[0]
+
+    def rdcbs(self, off):
+        return _F32.unpack_from(self.cb, self._cb(off, 4))[0]
+
+    def wrcbd(self, off, v):
+        _F64.pack_into(self.cb, self._cb(off, 8), v)
+
+    def wrcbi(self, off, v):
+        _I32.pack_into(self.cb, self._cb(off, 4), v)
+
+    def wrcbs(self, off, v):
+        _F32.pack_into(self.cb, self._cb(off, 4), v)
+
+    # -- string output (§6.6.79-80) ------------------------------------------------------------------
+    def write(self, items: tuple, newline: bool) -> bool:
+        if self.tskinfo & 2:
+            self.line = ""
+            self.tskinfo = 0
+        self.line += "".join(items)
+        self.tskinfo |= 1
+        if newline:
+            self.tskinfo |= 2
+            self.card.session.say(self.line[:255])
+            if self.card.sys["MODEREG"] & (1 << 26):
+                self.state = STOPPED
+                return True
+        return False
+
+    def stopped(self):
+        yield
+
+    # -- task control (§6.6.2, 10, 56, 65-69) ------------------------------------------------------------
+    def abort(self):
+        raise TaskEnd()
+        yield  # pragma: no cover
+
+    def stop(self):
+        self.state = STOPPED
+        yield
+
+    def rs(self):
+        self.card.reset_system(self.time)
+        yield
+
+    def _task(self, n: int) -> Task:
+        if not 0 <= n <= 3:
+            fault(256, f"task number {n} outside 0..3")
+        return self.card.tasks[n]
+
+    def startcnct(self, n: int):
+        t = self._task(n)
+        if t.unit is None:
+            fault(256, f"STARTCNCT({n}): no program is loaded in task {n}")
+        if t is self:
+            raise TaskEnd(restart=True)
+        t.start(self.time)
+        yield
+
+    def stopcnct(self, n: int):
+        t = self._task(n)
+        if t.state in (RUNNING, STEP):
+            t.state = STOPPED
+        if t is self:
+            yield
+        yield
+
+    def contcnct(self, n: int):
+        t = self._task(n)
+        self.card.solo = None
+        if t.state in (STOPPED, STEP) and t is not self:
+            t.state = RUNNING
+            t.time = max(t.time, self.time)
+        yield
+
+    def stepcnct(self, n: int):
+        t = self._task(n)
+        self.card.solo = None
+        if t.state in (STOPPED, STEP) and t is not self:
+            t.state = RUNNING
+            t.step_once = True
+            t.time = max(t.time, self.time)
+        yield
+
+    def stoptoss(self, n: int):
+        t = self._task(n)
+        if t.state == STOPPED:
+            t.state = STEP
+        yield
+
+    def azo(self, n: int):
+        if not 0 <= n <= 4:
+            fault(256, f"AZO({n}): zero offset set outside 0..4")
+        self.card.active_zo = n
+        yield
+
+    # -- events ---------------------------------------------------------------------------------------
+    def enev(self, name: str, fn) -> None:
+        self.enabled[name] = fn
+
+    def disev(self, name: str, fn) -> None:
+        self.enabled.pop(name, None)
+        self.active_before.discard(name)
+
+    # -- life cycle -----------------------------------------------------------------------------------
+    def load(self, unit) -> None:
+        self.unit = unit
+        self.state = READY
+
+    def start(self, at: float) -> None:
+        self.card.solo = None
+        self.reset_state()
+        self.ns = self.unit.namespace(self.card)
+        self.gen = self.ns["_main"](self)
+        self.main_locals = None
+        self.time = at
+        self.state = RUNNING

@@ -1,0 +1,127 @@
+"""Run-time helpers the generated code calls: 32-bit integer and timer arithmetic, conversions,
+math functions (§6.6, radians, double results) and WRITE number formatting (digest A-57)."""
+
+from __future__ import annotations
+
+import math
+import struct
+
+from ...diagnostics import RuntimeFault
+
+_F32 = struct.Struct("<f")
+
+
+class TaskFault(RuntimeFault):
+    """A run-time error of the manual's table 40; the task runner adds file, line and call stack."""
+
+    def __init__(self, number: int, message: str):
+        super().__init__(str(number), message)
+        self.number = number
+
+
+def fault(number: int, message: str):
+    raise TaskFault(number, message)
+
+
+class Goto(Exception):
+    """A goto out of a loop inside a dispatch block (the target is already in ``_pc``)."""
+
+
+GOTO = Goto()
+
+
+def wrap32(x: int) -> int:
+    return ((x + 0x80000000) & 0xFFFFFFFF) - 0x80000000
+
+
+def idiv(a: int, b: int) -> int:
+    """Integer '/' truncates toward zero (L852-856, digest A-12); /0 is error 32768."""
+    if b == 0:
+        fault(32768, "integer division by 0")
+    q = abs(a) // abs(b)
+    q = q if (a >= 0) == (b >= 0) else -q
+    return wrap32(q)
+
+
+def imod(a: int, b: int) -> int:
+    """``i mod j = i - (i/j)*j``: the result has the sign of the dividend."""
+    if b == 0:
+        fault(32768, "mod 0")
+    r = abs(a) % abs(b)
+    return r if a >= 0 else -r
+
+
+def rdiv(a, b) -> float:
+    if b == 0:
+        fault(32768, "division by 0")
+    return a / b
+
+
+def f32(x) -> float:
+    """Round to IEEE binary32 when stored into a ``single`` (digest A-11)."""
+    try:
+        return _F32.unpack(_F32.pack(x))[0]
+    except OverflowError:
+        return math.copysign(math.inf, x)
+
+
+def t2i(t: int) -> int:
+    """Timer -> Integer: the same 32 bits read as signed."""
+    return t - 0x100000000 if t & 0x80000000 else t
+
+
+def toint(x: float) -> int:
+    """INTEGER(real): truncate toward zero, saturate to the 32-bit range (digest A-26)."""
+    if x != x:
+        return 0
+    if x >= 2147483647:
+        return 2147483647
+    if x <= -2147483648:
+        return -2147483648
+    return int(x)
+
+
+def fmt(x: float, digits: int = 10) -> str:
+    """Single and Double in WRITE: C's %g with 10 significant digits (digest A-57)."""
+    return "%.*g" % (digits, x)
+
+
+def _safe(fn):
+    def call(*args):
+        try:
+            return float(fn(*args))
+        except (ValueError, ZeroDivisionError):
+            return math.nan
+        except OverflowError:
+            return math.inf
+    call.__name__ = fn.__name__
+    return call
+
+
+#: math functions (§6.6.3 ff.): name -> implementation; invalid arguments give NaN/inf, no error
+MATH = {
+    "ABS": lambda x: abs(float(x)),
+    "ACOS": _safe(math.acos), "ASIN": _safe(math.asin), "ATAN": _safe(math.atan),
+    "COS": _safe(math.cos), "COSH": _safe(math.cosh), "EXP": _safe(math.exp),
+    "LN": _safe(lambda x: math.log(x) if x > 0 else (math.nan if x < 0 else -math.inf)),
+    "POWER": _safe(math.pow), "SIN": _safe(math.sin), "SINH": _safe(math.sinh),
+    "SQR": lambda x: float(x) * x, "SQRT": _safe(math.sqrt), "TAN": _safe(math.tan), "TANH": _safe(math.tanh),
+}
+MATH["COS"] = math.cos  # fast paths: these cannot fail on finite input
+MATH["SIN"] = math.sin
+MATH["ATAN"] = math.atan
+MATH["TANH"] = math.tanh
+
+
+def namespace(card) -> dict:
+    """The globals every generated unit runs in."""
+
+    def ovf(x: int) -> int:
+        card.sys["ERRORREG"] |= 1 << 30  # simulator flag: integer overflow (digest A-15)
+        return wrap32(x)
+
+    ns = {"_ovf": ovf, "_idiv": idiv, "_imod": imod, "_rdiv": rdiv, "_f32": f32, "_t2i": t2i, "_toint": toint,
+          "_msqrt": math.sqrt, "_NAN": math.nan, "_fmt": fmt, "_DIGITS": int(card.cfg["write_digits"]), "_fault": fault, "_Goto": Goto, "_GOTO": GOTO, "__builtins__": __builtins__}
+    for name, fn in MATH.items():
+        ns["_F_" + name] = fn
+    return ns

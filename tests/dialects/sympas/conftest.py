@@ -1,0 +1,55 @@
+"""Helpers for the rw_SymPas tests: run a program text on the default machine or a given one."""
+
+from __future__ import annotations
+
+import pytest
+
+from ncvm.api import check, run
+from ncvm.runtime.session import RunOptions
+
+
+@pytest.fixture
+def sap(tmp_path):
+    """sap(text, machine_toml=None, **options) -> result dict of ``ncvm run --json``."""
+
+    def _run(text: str, machine_toml: str | None = None, name: str = "prog.sap", **opts):
+        path = tmp_path / name
+        path.write_text(text, encoding="latin-1")
+        machine = None
+        if machine_toml is not None:
+            machine = tmp_path / "machine.toml"
+            machine.write_text(MACHINE_HEAD + machine_toml, encoding="utf-8")
+        result, _ = run(path, machine=machine, options=RunOptions(state_dir=tmp_path / ".ncvm", **opts))
+        return result
+
+    return _run
+
+
+@pytest.fixture
+def sap_check(tmp_path):
+    """sap_check(text) -> list of (code, line) of the errors ``ncvm check`` reports."""
+
+    def _check(text: str, name: str = "prog.sap", files: dict | None = None):
+        for fname, body in (files or {}).items():
+            (tmp_path / fname).write_text(body, encoding="latin-1")
+        path = tmp_path / name
+        path.write_text(text, encoding="latin-1")
+        return [(d.code, d.span.line if d.span else None) for d in check(path) if d.severity == "error"]
+
+    return _check
+
+
+MACHINE_HEAD = """
+[[axis]]
+name = "X"
+min = -1000.0
+max = 1000.0
+[[axis]]
+name = "Y"
+min = -1000.0
+max = 1000.0
+[[axis]]
+name = "Z"
+min = -1000.0
+max = 1000.0
+"""
