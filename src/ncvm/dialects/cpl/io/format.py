@@ -131,3 +131,16 @@ def format_items(items: Iterable, *, ljust: bool = False, on_overflow: str = "st
         else:
             pieces.append(standard_text(item, kind, ljust=ljust))
     return Formatted("".join(pieces), overflows)
+
+
+@dataclass(slots=True)
+class OutputMode:
+    """Program-wide output state shared by PRN#, DSP and PRN: LJUST on/off (L3997-4003)."""
+
+    ljust: bool = False
+
+    def LJUST(self) -> None:  # noqa: N802 - the CPL statement
+        self.ljust = True
+
+    def NJUST(self) -> None:  # noqa: N802 - the CPL statement
+        self.ljust = False
