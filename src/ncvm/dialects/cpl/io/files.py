@@ -1,0 +1,528 @@
+"""Chapter 6: CPL files on real files under the machine's file root (manual L3835-4457, digest §6.15, §8.8).
+
+On disk a CPL file is what the control kept: records of latin-1 text, each ended by LF (not part of
+its length), then the EOF marker ``ETX LF``. A random file's records all have the record length,
+padded with blanks. Byte offsets, record numbers and record offsets are 1-based; the EOF position is
+data size + 1. Files written by other tools (no marker, CR LF line ends) are read as well and are put
+into this form when they are opened for writing.
+
+Durability (docs/decisions.md, "CPL files"): every completed record -- a PRN# without ``;``, a
+CHR$(13) inside the output, a random record written in place -- and every REWRITE and CLOSE is
+written, flushed and ``os.fsync`` ed before PRN# returns, so what a program wrote survives a crash of
+ncvm. The text of a record still open with ``;`` is kept in memory until the record is completed.
+
+The class :class:`CplFiles` is one program run's file table (logical numbers 1..9). Its methods are
+named after the CPL statements; arguments follow the CPL argument order (omitted = None).
+"""
+
+from __future__ import annotations
+
+import os
+import stat
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Callable
+
+from ....machine.files import FileRootError, resolve_in_root
+from .errors import CplRuntimeError, CplWarning, WarnFn, fail, warning
+from .format import OutputMode, format_items
+from .strings import CharacterField, StringView, scan_number
+from .values import text_of
+
+EOF_MARKER = "\x03\n"
+MAX_RECORD = 1024
+MAX_NAME = 30
+MIN_RESERVED = 130
+REAL_MAX = 3.4028234663852886e38
+INT_MIN, INT_MAX = -(2**31), 2**31 - 1
+
+
+@dataclass
+class Handle:
+    """One open logical file: its records in memory, the pointer, and (for writing) the disk file."""
+
+    number: int
+    name: str
+    path: Path
+    writing: bool
+    reclen: int | None
+    records: list[str]
+    rec: int = 0  # 0-based record index; len(records) = on the EOF marker
+    off: int = 0  # 0-based offset inside the record
+    pending: str | None = None  # sequential: text of a record still open with ';'
+    remark: str = ""
+    reserved: int = MIN_RESERVED
+    data_size: int = 0  # bytes before the EOF marker
+
+    @property
+    def random(self) -> bool:
+        return self.reclen is not None
+
+    def byte_of(self, rec: int) -> int:
+        """0-based byte offset of record ``rec``."""
+        if self.random:
+            return rec * (self.reclen + 1)
+        return sum(len(r) + 1 for r in self.records[:rec])
+
+
+@dataclass
+class CplFiles:
+    """The file table of one CPL program run.
+
+    ``root``: the machine's file root; ``cwd``: the current directory inside it (names without a
+    path are looked up there); ``clock``: an object with ``now`` (simulated seconds) and
+    ``start_epoch``, used as the modification time of files the program writes; ``message``: where
+    PRN#(0,...) goes (the message window); ``warn``: receives :class:`CplWarning` s;
+    ``active``: paths of programs that are running (ERASE answers 3, FILEACCESS sets bit 5).
+    """
+
+    root: Path
+    clock: object | None = None
+    message: Callable[[str], None] | None = None
+    warn: WarnFn | None = None
+    mode: OutputMode = field(default_factory=OutputMode)
+    cwd: str = ""
+    active: set[Path] = field(default_factory=set)
+    #: the NC block selected in the editor when the program runs as an editor dialog (PRN#(0)/INP#(0))
+    editor_block: str | None = None
+    durable: bool = True
+    handles: dict[int, Handle] = field(default_factory=dict)
+    messages: list[str] = field(default_factory=list)
+    warnings: list[CplWarning] = field(default_factory=list)
+    _message_pending: str = ""
+
+    # -- names ---------------------------------------------------------------------------
+    def path_of(self, name) -> tuple[str, Path]:
+        """The control's file name (a string, or an INTEGER n meaning "P<n>", digest D2) and its path."""
+        if isinstance(name, int) and not isinstance(name, bool):
+            name = f"P{name}"
+        text = text_of(name)
+        if not text or not text.strip():
+            raise fail("INVALID_FILE_NAME", repr(text))
+        text = text.strip()
+        base = text.replace("\\", "/").rstrip("/").split("/")[-1]
+        if len(base) > MAX_NAME or base in (".", ".."):
+            raise fail("INVALID_FILE_NAME", text)
+        relative = text if text.startswith(("/", "\\")) or text[1:2] == ":" else f"{self.cwd}/{text}"
+        try:
+            return text, resolve_in_root(Path(self.root), relative)
+        except FileRootError:
+            raise fail("INVALID_FILE_NAME", f"{text} lies outside the file root") from None
+
+    @staticmethod
+    def _check_number(n, error: str = "INVALID_LOGICAL_NUMBER") -> int:
+        if not isinstance(n, int) or isinstance(n, bool) or not 1 <= n <= 9:
+            raise fail(error, repr(n))
+        return n
+
+    def _handle(self, n, error: str = "INVALID_LOGICAL_NUMBER") -> Handle:
+        n = self._check_number(n, error)
+        if n not in self.handles:
+            raise fail("FILE_NOT_OPEN", f"logical number {n}")
+        return self.handles[n]
+
+    # -- reading a file into records -------------------------------------------------------
+    @staticmethod
+    def _read_records(path: Path) -> tuple[list[str], bool]:
+        """The records of a file and whether it was already in the control's exact form."""
+        raw = path.read_bytes().decode("latin-1")
+        canonical = raw.endswith(EOF_MARKER) and "\r" not in raw
+        body = raw
+        cut = body.find("\x03")
+        if cut >= 0:
+            body = body[:cut]
+        if not body:
+            return [], canonical and cut == len(raw) - 2
+        lines = body.split("\n")
+        if lines[-1] == "":
+            lines.pop()
+        records = [line[:-1] if line.endswith("\r") else line for line in lines]
+        return records, canonical
+
+    @staticmethod
+    def _check_reclen(records: list[str], reclen: int | None, name: str) -> None:
+        if reclen is None:
+            return
+        if not isinstance(reclen, int) or isinstance(reclen, bool) or not 1 <= reclen <= MAX_RECORD:
+            raise fail("INVALID_COMPONENT_LENGTH", f"record length {reclen!r} (1..{MAX_RECORD})")
+        for i, r in enumerate(records, 1):
+            if len(r) != reclen:
+                raise fail("INVALID_COMPONENT_LENGTH",
+                           f"{name}: record {i} has {len(r)} characters, not {reclen}")
+
+    # -- opening and closing ----------------------------------------------------------------
+    def OPENW(self, n, name, *rest) -> None:  # noqa: N802
+        """``OPENW(n,name[,length][,remark][,reclen])``; a 4th argument that is a number is reclen."""
+        n = self._check_number(n)
+        length, remark, reclen = (list(rest) + [None, None, None])[:3]
+        if isinstance(remark, int) and not isinstance(remark, bool):
+            if reclen is not None:
+                raise fail("INVALID_PARAMETER", "OPENW: remark must be a string")
+            remark, reclen = None, remark
+        if length is None:
+            length = MIN_RESERVED
+        if not isinstance(length, int) or isinstance(length, bool) or length < MIN_RESERVED:
+            raise fail("ILLEGAL_FILE_SIZE", f"{length!r} bytes, at least {MIN_RESERVED}")
+        shown, path = self.path_of(name)
+        if n in self.handles:
+            raise fail("INVALID_LOGICAL_NUMBER", f"{n} is already open")
+        if any(h.writing and h.path == path for h in self.handles.values()):
+            raise fail("FILE_ALREADY_OPEN", shown)
+        if path.is_dir():
+            raise fail("INVALID_FILE_NAME", f"{shown} is a directory")
+        if path.exists():
+            records, canonical = self._read_records(path)
+        else:
+            path.parent.mkdir(parents=True, exist_ok=True)
+            records, canonical = [], False
+        self._check_reclen(records, reclen, shown)
+        h = Handle(n, shown, path, True, reclen, records, rec=len(records), remark=text_of(remark) or "",
+                   reserved=length)
+        h.data_size = sum(len(r) + 1 for r in records)
+        if not canonical:
+            self._rewrite_all(h)
+        self.handles[n] = h
+
+    def OPENR(self, n, name, reclen=None) -> None:  # noqa: N802
+        """``OPENR(n,name[,reclen])``: the pointer on record 1; with reclen every record must have it."""
+        n = self._check_number(n)
+        shown, path = self.path_of(name)
+        if n in self.handles:
+            raise fail("INVALID_LOGICAL_NUMBER", f"{n} is already open")
+        if not path.is_file():
+            raise fail("FILE_NOT_FOUND", shown)
+        records, _ = self._read_records(path)
+        self._check_reclen(records, reclen, shown)
+        h = Handle(n, shown, path, False, reclen, records)
+        h.data_size = sum(len(r) + 1 for r in records)
+        self.handles[n] = h
+
+    def CLOSE(self, n) -> None:  # noqa: N802
+        """``CLOSE(n)``: a record still open with ``;`` is ended, the file is synced (closing a closed number
+        does nothing)."""
+        n = self._check_number(n)
+        h = self.handles.pop(n, None)
+        if h is not None and h.writing and h.pending is not None:
+            self._append_record(h, h.pending)
+            h.pending = None
+
+    def close_all(self) -> None:
+        """End of the program: every file still open is closed as by CLOSE."""
+        for n in list(self.handles):
+            self.CLOSE(n)
+
+    def REWRITE(self, n) -> None:  # noqa: N802
+        """``REWRITE(n)``: the data of a file open for writing is overwritten from the start."""
+        h = self._handle(n)
+        if not h.writing:
+            raise fail("WRONG_ACCESS", f"REWRITE needs OPENW ({h.name})")
+        h.records, h.rec, h.off, h.pending, h.data_size = [], 0, 0, None, 0
+        self._rewrite_all(h)
+
+    # -- writing to disk -------------------------------------------------------------------
+    def _stamp(self, fd: int, path: Path) -> None:
+        if self.durable:
+            os.fsync(fd)
+        if self.clock is not None:
+            t = float(getattr(self.clock, "start_epoch", 0.0)) + float(getattr(self.clock, "now", 0.0))
+            os.utime(path, (t, t))
+
+    def _rewrite_all(self, h: Handle) -> None:
+        data = "".join(r + "\n" for r in h.records) + EOF_MARKER
+        with open(h.path, "wb") as f:
+            f.write(data.encode("latin-1"))
+            f.flush()
+            self._stamp(f.fileno(), h.path)
+
+    def _append_record(self, h: Handle, text: str) -> None:
+        """A completed record at the EOF marker (sequential files): written over the old marker."""
+        if len(text) > MAX_RECORD:
+            raise fail("BLOCK_EXCEEDS_1024", f"{len(text)} characters")
+        with open(h.path, "r+b") as f:
+            f.seek(h.data_size)
+            f.write((text + "\n" + EOF_MARKER).encode("latin-1"))
+            f.truncate()
+            f.flush()
+            self._stamp(f.fileno(), h.path)
+        h.records.append(text)
+        h.data_size += len(text) + 1
+        h.rec, h.off = len(h.records), 0
+
+    def _put_random(self, h: Handle, rec: int, image: str) -> None:
+        """Record ``rec`` of a random file written in place (or appended at the EOF marker)."""
+        with open(h.path, "r+b") as f:
+            f.seek(h.byte_of(rec))
+            tail = EOF_MARKER if rec >= len(h.records) else ""
+            f.write((image + "\n" + tail).encode("latin-1"))
+            f.flush()
+            self._stamp(f.fileno(), h.path)
+        if rec >= len(h.records):
+            h.records.append(image)
+            h.data_size += len(image) + 1
+        else:
+            h.records[rec] = image
+
+    # -- PRN# ------------------------------------------------------------------------------
+    def PRN(self, n, *items, semicolon: bool = False) -> None:  # noqa: N802 - PRN#
+        """``PRN#(n,e1,e2,...[;])``: the items concatenated by the rules of format.py; n = 0 is the
+        message window (or the editor block in an editor dialog)."""
+        if n == 0:
+            self._prn_message(items, semicolon)
+            return
+        h = self._handle(n)
+        if not h.writing:
+            raise fail("WRONG_ACCESS", f"PRN# needs OPENW ({h.name})")
+        text = self._format(items)
+        segments = text.split("\r")  # CHR$(13) starts a new record
+        for i, seg in enumerate(segments):
+            last = i == len(segments) - 1
+            complete = not (last and semicolon)
+            if len(seg) > MAX_RECORD:
+                raise fail("BLOCK_EXCEEDS_1024", f"{len(seg)} characters")
+            if h.random:
+                self._prn_random(h, seg, complete, keep_tail=semicolon and last)
+            else:
+                pending = (h.pending or "") + seg
+                if complete:
+                    h.pending = None
+                    self._append_record(h, pending)
+                else:
+                    if len(pending) > MAX_RECORD:
+                        raise fail("BLOCK_EXCEEDS_1024", f"{len(pending)} characters")
+                    h.pending = pending
+
+    def _prn_random(self, h: Handle, seg: str, complete: bool, keep_tail: bool) -> None:
+        rec = h.rec
+        old = h.records[rec] if rec < len(h.records) else " " * h.reclen
+        head = old[: h.off]
+        if keep_tail:  # with ';' the rest of the old record stays (L4025)
+            image = (head + seg + old[len(head) + len(seg):])[: h.reclen]
+        else:  # without ';' the rest is blanked
+            image = (head + seg)[: h.reclen]
+        image = image.ljust(h.reclen)
+        self._put_random(h, rec, image)
+        if complete:
+            h.rec, h.off = rec + 1, 0
+        else:
+            h.off = min(h.off + len(seg), h.reclen)
+            if h.off >= h.reclen:
+                h.rec, h.off = rec + 1, 0
+
+    def _format(self, items) -> str:
+        result = format_items(items, ljust=self.mode.ljust, on_overflow="star")
+        if result.overflows:
+            self._warn(warning("PRN_FORMAT_INCORRECT", result.text))
+        return result.text
+
+    def _prn_message(self, items, semicolon: bool) -> None:
+        text = self._message_pending + self._format(items)
+        if semicolon:
+            self._message_pending = text
+            return
+        self._message_pending = ""
+        if self.editor_block is not None:
+            self.editor_block = text.replace("\r", "")
+            return
+        for line in text.split("\r"):
+            self.messages.append(line)
+            if self.message is not None:
+                self.message(line)
+
+    def _warn(self, w: CplWarning) -> None:
+        self.warnings.append(w)
+        if self.warn is not None:
+            self.warn(w)
+
+    # -- INP# ------------------------------------------------------------------------------
+    def INP(self, n, *targets, semicolon: bool = False) -> list:  # noqa: N802 - INP#
+        """``INP#(n,v1,v2,...[;])``: read values from the current record.
+
+        Each target says what is read: a type letter ``"I"``, ``"R"``, ``"D"``, ``"B"`` or ``"S"``
+        (a non-dimensioned variable), a :class:`CharacterField` (filled in place, as many characters
+        as its DIM size) or a :class:`StringView` (``MID$(E$,s,c)``: c characters written into E$ at
+        s). Returns one value per target (None = NUL), which the caller stores into plain variables.
+        A number or BOOLEAN that cannot be read gives NUL and leaves the position where it is.
+        """
+        if n == 0:
+            return self._inp_editor(targets)
+        h = self._handle(n)
+        if h.writing:
+            raise fail("WRONG_ACCESS", f"INP# needs OPENR ({h.name})")
+        values = []
+        for target in targets:
+            if h.rec >= len(h.records):
+                values.append(None)
+                continue
+            record = h.records[h.rec]
+            value, h.off = self._read_one(record, h.off, target)
+            values.append(value)
+        if h.rec < len(h.records) and (not semicolon or h.off >= len(h.records[h.rec])):
+            h.rec, h.off = h.rec + 1, 0  # with ';' the pointer stays until the record is used up
+        return values
+
+    @staticmethod
+    def _read_one(record: str, off: int, target):
+        if isinstance(target, CharacterField):
+            text = record[off: off + target.size]
+            target.assign(text)
+            return text, off + len(text)
+        if isinstance(target, StringView):
+            count = target.count if target.count is not None else target.source.size - target.start + 1
+            text = record[off: off + count]
+            target.source.write(target.start, count, text)
+            return text, off + len(text)
+        if target == "S":  # a non-dimensioned string takes the rest of the record (digest D9)
+            return record[off:], len(record)
+        if target == "B":
+            rest = record[off:].lstrip(" ")
+            for word, value in (("TRUE", True), ("FALSE", False)):
+                if rest.upper().startswith(word):
+                    return value, len(record) - len(rest) + len(word)
+            return None, off
+        if target not in ("I", "R", "D"):
+            raise TypeError(f"INP# target {target!r}")
+        found = scan_number(record[: _integer_end(record, off)] if target == "I" else record, off)
+        if found is None:
+            return None, off
+        value, end = found
+        if target == "I":
+            if not INT_MIN <= value <= INT_MAX:
+                raise fail("INVALID_INTEGER_VALUE", record[off:end].strip())
+            return int(value), end
+        value = float(value)
+        if (target == "R" and abs(value) > REAL_MAX) or value in (float("inf"), float("-inf")):
+            raise fail("INVALID_FLOAT_VALUE", record[off:end].strip())
+        return value, end
+
+    def _inp_editor(self, targets) -> list:
+        """``INP#(0,P1,...)`` in an editor dialog: the call parameters ``[a,b,...]`` of the selected block."""
+        block = self.editor_block or ""
+        inside = block[block.find("[") + 1: block.rfind("]")] if "[" in block and "]" in block else ""
+        params = [p.strip() for p in inside.split(",")] if inside else []
+        values = []
+        for i, target in enumerate(targets):
+            text = params[i] if i < len(params) else ""
+            value, _ = self._read_one(text, 0, target) if text else (None, 0)
+            values.append(value)
+        return values
+
+    # -- positions -------------------------------------------------------------------------
+    def EOF(self, n) -> bool:  # noqa: N802
+        """``EOF(n)``: TRUE when the pointer is on the EOF marker (at once for an empty file)."""
+        h = self._handle(n)
+        return h.rec >= len(h.records)
+
+    def FILEPOS(self, n, mode=None) -> int:  # noqa: N802
+        """``FILEPOS(n[,mode])``: random 1 byte, 2 record (default), 3 offset in the record; sequential 1 byte."""
+        h = self._handle(n, "INVALID_FILE_NUMBER")
+        allowed = (1, 2, 3) if h.random else (1,)
+        if mode is None:
+            mode = 2 if h.random else 1
+        if mode not in allowed:
+            raise fail("INVALID_PARAMETER", f"FILEPOS mode {mode!r}")
+        if mode == 1:
+            return h.byte_of(h.rec) + h.off + 1
+        if mode == 2:
+            return h.rec + 1
+        return h.off + 1  # 1 on the EOF marker
+
+    def SEEK(self, n, k, o=None) -> None:  # noqa: N802
+        """``SEEK(n,k[,o])``: record k (random) or byte k (sequential), 0 = the EOF marker; o = offset in
+        the record (random only)."""
+        h = self._handle(n, "INVALID_FILE_NUMBER")
+        if not isinstance(k, int) or isinstance(k, bool):
+            raise fail("INVALID_COMPONENT", repr(k))
+        if not h.random:
+            if h.writing:
+                raise fail("WRONG_ACCESS", f"SEEK on a sequential file needs OPENR ({h.name})")
+            if o is not None:
+                raise fail("INVALID_PARAMETER", "record offset on a sequential file")
+            if k == 0:
+                h.rec, h.off = len(h.records), 0
+                return
+            if not 1 <= k <= h.data_size:
+                raise fail("INVALID_COMPONENT", f"byte {k} of {h.data_size}")
+            byte = k - 1
+            for i, r in enumerate(h.records):
+                if byte <= len(r):
+                    h.rec, h.off = i, byte
+                    return
+                byte -= len(r) + 1
+            return
+        if o is not None and (not isinstance(o, int) or not 1 <= o <= h.reclen + 1):
+            raise fail("INVALID_PARAMETER", f"record offset {o!r} (1..{h.reclen + 1})")
+        if k == 0:
+            k = len(h.records) + 1
+        if not 1 <= k <= len(h.records) + 1:
+            raise fail("INVALID_COMPONENT", f"record {k} of {len(h.records)}")
+        h.rec, h.off = k - 1, (o or 1) - 1
+
+    def FILESIZE(self, n, k=None) -> int:  # noqa: N802
+        """``FILESIZE(n[,k])`` on a file opened with OPENR: 1 bytes used, 2 bytes before the EOF marker,
+        3 records that fit (random), 4 records up to EOF (random)."""
+        h = self._handle(n, "INVALID_FILE_NUMBER")
+        if h.writing:
+            raise fail("WRONG_ACCESS", f"FILESIZE needs OPENR ({h.name})")
+        k = 1 if k is None else k
+        if k not in ((1, 2, 3, 4) if h.random else (1, 2)):
+            raise fail("INVALID_PARAMETER", f"FILESIZE k {k!r}")
+        used = h.data_size + len(EOF_MARKER)
+        return {1: used, 2: h.data_size, 3: used // ((h.reclen or 1) + 1), 4: len(h.records)}[k]
+
+    # -- the file system -------------------------------------------------------------------
+    def _is_active(self, path: Path) -> bool:
+        resolved = path.resolve()
+        return any(h.path.resolve() == resolved for h in self.handles.values()) or \
+            any(Path(p).resolve() == resolved for p in self.active)
+
+    def ERASE(self, name) -> int:  # noqa: N802
+        """``ERASE(name)``: 0 erased, 1 does not exist, 2 erase-protected, 3 active; 1-3 also warn."""
+        shown, path = self.path_of(name)
+        if not path.is_file():
+            code = 1
+        elif not path.stat().st_mode & stat.S_IWUSR:
+            code = 2
+        elif self._is_active(path):
+            code = 3
+        else:
+            path.unlink()
+            return 0
+        reason = {1: "does not exist", 2: "is erase-protected", 3: "is active"}[code]
+        self._warn(warning("FILE_NOT_ERASED", f"{shown} {reason}"))
+        return code
+
+    def FILEACCESS(self, name) -> int:  # noqa: N802
+        """``FILEACCESS(name)``: -1 missing, else bits 1 X, 2 W, 4 R, 8 directory, 16 active program."""
+        try:
+            _, path = self.path_of(name)
+            mode = path.stat().st_mode
+        except (OSError, CplRuntimeError):  # a bad name also means "does not exist"
+            return -1
+        bits = 0
+        bits |= 1 if mode & stat.S_IXUSR and not stat.S_ISDIR(mode) else 0
+        bits |= 2 if mode & stat.S_IWUSR else 0
+        bits |= 4 if mode & stat.S_IRUSR else 0
+        bits |= 8 if stat.S_ISDIR(mode) else 0
+        bits |= 16 if stat.S_ISREG(mode) and self._is_active(path) else 0
+        return bits
+
+    def FILEDATE(self, name, mode=None) -> str:  # noqa: N802
+        """``FILEDATE(name[,mode])``: 1 "dd.mm.yy" (default), 2 "hh.mm.ss"; "" on any access error."""
+        try:
+            _, path = self.path_of(name)
+            mtime = path.stat().st_mtime
+        except Exception:  # noqa: BLE001 - the manual: an access error gives "", never an error
+            return ""
+        t = time.gmtime(mtime)
+        if mode in (None, 1):
+            return f"{t.tm_mday:02d}.{t.tm_mon:02d}.{t.tm_year % 100:02d}"
+        if mode == 2:
+            return f"{t.tm_hour:02d}.{t.tm_min:02d}.{t.tm_sec:02d}"
+        return ""
+
+
+def _integer_end(record: str, off: int) -> int:
+    """For an INTEGER target the number ends at a decimal point."""
+    cut = record.find(".", off)
+    return len(record) if cut < 0 else cut

@@ -1,0 +1,146 @@
+"""Formatted output shared by PRN#, DSP, PRN and STR$ (manual L4015-4040, L4539-4612, L3514-3539).
+
+A *format template* is a run of ``#`` with at most one ``.`` between ``#`` s (``###.###``,
+``##``) inside a STRING argument. Every template of every string argument joins one queue;
+each numeric argument takes the first waiting template and is printed *there*; a numeric
+argument with no template waiting prints in its standard format where it stands. BOOLEAN and
+STRING arguments are never formatted. Templates left over print as the ``#`` text itself.
+
+Standard formats (digest D7): INTEGER 9 positions, REAL ``####.###`` (8), DOUBLE
+``#########.######`` (16), right-justified with leading blanks; BOOLEAN prints TRUE/FALSE;
+NUL prints nothing. A value too large for its standard format is printed whole (never cut).
+Rounding is half away from zero on the decimal digits the value really has (a REAL is read
+as the shortest decimal that gives back the same binary32 number, so 1.231 stays 1.231).
+"""
+
+from __future__ import annotations
+
+import re
+import struct
+from collections import deque
+from dataclasses import dataclass
+from decimal import ROUND_HALF_UP, Decimal
+from typing import Iterable
+
+from .errors import fail
+from .values import kind_of, text_of
+
+TEMPLATE = re.compile(r"#+(?:\.#+)?")
+
+#: type letter -> (digits before the point, digits after it)
+STANDARD = {"I": (9, 0), "R": (4, 3), "D": (9, 6)}
+
+
+def real_decimal(value: float) -> Decimal:
+    """The shortest decimal that names the same binary32 number as ``value`` (a REAL has ~7 digits)."""
+    try:
+        target = struct.unpack("<f", struct.pack("<f", value))[0]
+    except OverflowError:
+        return Decimal(repr(value))
+    for digits in range(6, 10):
+        text = f"{target:.{digits}g}"
+        if struct.unpack("<f", struct.pack("<f", float(text)))[0] == target:
+            return Decimal(text)
+    return Decimal(repr(target))
+
+
+def decimal_of(value, kind: str) -> Decimal:
+    if kind == "I":
+        return Decimal(int(value))
+    if kind == "R":
+        return real_decimal(float(value))
+    return Decimal(repr(float(value)))
+
+
+def format_number(value, kind: str, int_digits: int, decimals: int, *, pad: bool = True) -> str | None:
+    """``value`` with ``decimals`` decimals in ``int_digits`` positions before the point.
+
+    Returns None when the integer part (with its minus sign, which takes a ``#``) does not fit.
+    """
+    if kind != "I" and (value != value or value in (float("inf"), float("-inf"))):
+        return None
+    q = decimal_of(value, kind).quantize(Decimal(1).scaleb(-decimals), rounding=ROUND_HALF_UP)
+    if q.is_zero():
+        q = abs(q)  # no "-0.00"
+    text = format(q, f".{decimals}f")
+    if len(text.split(".")[0]) > int_digits:
+        return None
+    width = int_digits + (decimals + 1 if decimals else 0)
+    return text.rjust(width) if pad else text
+
+
+def template_shape(template: str) -> tuple[int, int]:
+    before, _, after = template.partition(".")
+    return len(before), len(after)
+
+
+def standard_text(value, kind: str, *, ljust: bool = False) -> str:
+    """``value`` in the standard format of its type (widened, never cut, if it is too large)."""
+    if kind == "B":
+        return "TRUE" if value else "FALSE"
+    if kind == "N":
+        return ""
+    if kind == "S":
+        return text_of(value) or ""
+    int_digits, decimals = STANDARD[kind]
+    text = format_number(value, kind, int_digits, decimals, pad=not ljust)
+    if text is None:
+        text = format_number(value, kind, 400, decimals, pad=False) or "*"
+    return text.lstrip() if ljust else text
+
+
+@dataclass(slots=True)
+class Formatted:
+    text: str
+    overflows: int  # templates that got '*' because the value did not fit
+
+
+def format_items(items: Iterable, *, ljust: bool = False, on_overflow: str = "star") -> Formatted:
+    """Concatenate the arguments of PRN#/DSP/PRN/STR$ by the template-queue rule.
+
+    ``on_overflow``: ``"star"`` fills a template whose value does not fit with ``*`` and counts
+    it (PRN# then warns PRN FORMAT INCORRECT); ``"error"`` raises ``format not permitted`` (DSP).
+    ``ljust``: LJUST is active, numbers lose their leading blanks.
+    """
+    pieces: list[str] = []
+    waiting: deque[tuple[int, str]] = deque()
+    overflows = 0
+    for item in items:
+        kind = kind_of(item)
+        if kind == "S":
+            text = text_of(item) or ""
+            pos = 0
+            for m in TEMPLATE.finditer(text):
+                if m.start() > pos:
+                    pieces.append(text[pos:m.start()])
+                waiting.append((len(pieces), m.group()))
+                pieces.append(m.group())
+                pos = m.end()
+            if pos < len(text):
+                pieces.append(text[pos:])
+        elif kind in "IRD" and waiting:
+            index, template = waiting.popleft()
+            int_digits, decimals = template_shape(template)
+            text = format_number(item, kind, int_digits, decimals, pad=not ljust)
+            if text is None:
+                if on_overflow == "error":
+                    raise fail("FORMAT_NOT_PERMITTED", f"{item!r} in {template}")
+                overflows += 1
+                text = "*" * len(template)
+            pieces[index] = text
+        else:
+            pieces.append(standard_text(item, kind, ljust=ljust))
+    return Formatted("".join(pieces), overflows)
+
+
+@dataclass(slots=True)
+class OutputMode:
+    """Program-wide output state shared by PRN#, DSP and PRN: LJUST on/off (L3997-4003)."""
+
+    ljust: bool = False
+
+    def LJUST(self) -> None:  # noqa: N802 - the CPL statement
+        self.ljust = True
+
+    def NJUST(self) -> None:  # noqa: N802 - the CPL statement
+        self.ljust = False
