@@ -12,7 +12,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-from .toolpath import RAPID, ToolpathRecorder  # noqa: E402
+from .toolpath import FEED, RAPID, ToolpathRecorder  # noqa: E402
 
 TOOL_COLOURS = ["tab:blue", "tab:orange", "tab:green", "tab:red", "tab:purple", "tab:brown", "tab:pink", "tab:olive"]
 
@@ -34,6 +34,18 @@ def _runs(rec: ToolpathRecorder, idx: tuple[int, int, int]):
     if pts:
         runs.append((cur_key, pts))
     return runs
+
+
+def _mark_plunges(ax, rec: ToolpathRecorder, x: int, y: int) -> None:
+    """Feed moves straight down the tool axis (drilling) are invisible from above: ring them."""
+    arr = rec.arrays()
+    if not len(arr["kind"]) or x == y:
+        return
+    moved = arr["end"] - arr["start"]
+    plunge = (arr["kind"] == FEED) & (moved[:, x] == 0) & (moved[:, y] == 0) & (moved.any(axis=1))
+    if plunge.any():
+        ax.plot(arr["end"][plunge, x], arr["end"][plunge, y], "o", markerfacecolor="none", color="black",
+                markersize=6, linewidth=0, label="feed along the tool axis")
 
 
 def plot_toolpath(rec: ToolpathRecorder, path: str | Path, title: str = "") -> None:
@@ -58,6 +70,7 @@ def plot_toolpath(rec: ToolpathRecorder, path: str | Path, title: str = "") -> N
         xs, ys, zs = zip(*pts)
         ax2.plot(xs, ys, style, color=colour, linewidth=0.6 if rapid else 1.0, label=label)
         ax3.plot(xs, ys, zs, style, color=colour, linewidth=0.6 if rapid else 1.0)
+    _mark_plunges(ax2, rec, x, y)
     if runs:
         first, last = runs[0][1][0], runs[-1][1][-1]
         for ax in (ax2,):
