@@ -31,7 +31,8 @@ def search_path(path: str, machine) -> list[Path]:
 
 
 #: the machine file's [cl800] keys and their defaults (docs/cl800.md)
-OPTIONS = {"strict": False}
+OPTIONS = {"strict": False, "control": "880"}
+CONTROLS = ("810", "820", "850", "880")
 
 
 def options(machine) -> dict:
@@ -42,6 +43,8 @@ def options(machine) -> dict:
             raise UsageError(f"machine file: unknown key 'cl800.{key}' (known: {', '.join(OPTIONS)})")
         if not isinstance(value, type(OPTIONS[key])):
             raise UsageError(f"machine file: key 'cl800.{key}' must be {type(OPTIONS[key]).__name__}")
+    if section.get("control", "880") not in CONTROLS:
+        raise UsageError(f"machine file: key 'cl800.control' must be one of {', '.join(CONTROLS)}")
     return {**OPTIONS, **section}
 
 
@@ -55,7 +58,8 @@ class Cl800Dialect(Dialect):
         return min(100, 30 * hits)
 
     def analyse(self, path: str, text: str, machine):
-        prog, sym, errors = check_program(path, text, search_path(path, machine), options(machine)["strict"])
+        opts = options(machine)
+        prog, sym, errors = check_program(path, text, search_path(path, machine), opts["strict"], opts["control"])
         return prog, sym, errors
 
     def check(self, path, text, machine, all_errors=False):
