@@ -202,7 +202,7 @@ class Checker:
                     new.append(self.value(a))
             st.args = new
         elif isinstance(st, ast.Compound):
-            self.block(st.body, top)
+            self.block(st.body)  # a BEGIN ... END block is not the first nesting level (digest §3.2)
         elif isinstance(st, ast.If):
             st.cond = self.condition(st.cond)
             self.block(st.then)
