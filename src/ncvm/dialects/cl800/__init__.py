@@ -48,6 +48,22 @@ def options(machine) -> dict:
     return {**OPTIONS, **section}
 
 
+_PROGRAM_START = re.compile(r"\s*PROGRAM\b")
+
+
+def _strip_comments(text: str) -> str:
+    return re.sub(r"\(\*.*?\*\)", lambda m: "\n" * m.group(0).count("\n"), text, flags=re.S)
+
+
+def _last_text_line(text: str) -> tuple[int, str]:
+    """(line number, text) of the last line that holds more than blanks and comments."""
+    lines = _strip_comments(text).split("\n")
+    for n in range(len(lines), 0, -1):
+        if lines[n - 1].strip():
+            return n, lines[n - 1].strip()
+    return 1, ""
+
+
 class Cl800Dialect(Dialect):
     id = "cl800"
     title = "Siemens CL 800 cycle language (compiled to SINUMERIK 800 @ code)"
@@ -76,6 +92,11 @@ class Cl800Dialect(Dialect):
         return diags
 
     def build(self, path: str, text: str, machine) -> ObjectProgram:
+        last = _last_text_line(text)
+        if _PROGRAM_START.match(_strip_comments(text)) and not re.search(r"\bEND\s*\.\s*$", last[1]):
+            # the WS 800 A compiles only a program file that ends with END.<CR> (E300, L6236)
+            raise CompileFailed([Cl800Error("E300", path, last[0], None, "the file does not end with END.")
+                                 .diagnostic()])
         prog, sym, errors = self.analyse(path, text, machine)
         errs = [e for e in errors if not e.code.startswith("W")]
         if errs:
