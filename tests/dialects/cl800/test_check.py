@@ -86,3 +86,13 @@ def test_strict_mode_drops_the_leniencies(tmp_path: Path):
     m.sections["cl800"] = {"stict": True}
     with pytest.raises(UsageError, match="cl800.stict"):
         d.check(p, head + "END.\n", m)
+
+
+def test_program_number_range_per_control(tmp_path: Path):
+    m = Machine()
+    d = get_dialect("cl800")
+    text = "PROGRAM 1000;\nCHANNEL NC 0;\nBEGIN\nEND.\n"
+    assert d.check(str(tmp_path / "p.cl8"), text, m) == []  # 850/880: 1..9999 (L1069)
+    m.sections["cl800"] = {"control": "810"}
+    [diag] = d.check(str(tmp_path / "p.cl8"), text, m)
+    assert diag.code == "E027" and "1..999" in diag.message

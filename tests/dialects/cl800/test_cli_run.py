@@ -67,3 +67,12 @@ def test_run_stops_before_the_nc_on_a_compile_error(tmp_path: Path, monkeypatch)
     result, _ = run(src, options=RunOptions(state_dir=tmp_path / ".ncvm"))
     assert result["error"]["code"] == "E041" and result["error"]["line"] == 4
     assert nc.calls == []
+
+
+def test_compile_refuses_a_file_without_end_dot(tmp_path: Path):
+    src = tmp_path / "open.cl8"
+    src.write_text("PROGRAM 9;\nCHANNEL NC 0;\nBEGIN\n  LF;\n(* unfinished *)\n")
+    res = CliRunner().invoke(cli, ["compile", str(src)])
+    assert res.exit_code == 1 and "open.cl8:4: error E300: File cannot be compiled" in res.output
+    res = CliRunner().invoke(cli, ["check", str(src)])
+    assert "error E060" in res.output  # the editor's analysis reports the missing END.

@@ -67,3 +67,11 @@ def test_ess_comes_first():
     text = "PROGRAM 9;\nCHANNEL NC 0;\nESS;\nLOCAL REAL: R60;\nBEGIN\nR60 = 1;\nEND.\n"
     assert get_dialect("cl800").build("t.cl8", text, Machine()).text() == \
         "%SPF9\n@00f @040 K1 R60 @201 R60 K1\n@042 K1 R60 M17\n"
+
+
+def test_bit_number_from_a_constant_and_constants_inline():
+    text = ("PROGRAM 9;\nCHANNEL NC 0;\nCONST BITNO := 3, LIMIT := 2.50;\nPAR PATTERN: R10:=INPUT;\n"
+            "PAR BOOLEAN: R21;\nBEGIN\n  R21 = INPUT.BITNO; SET BIT (INPUT.BITNO);\n"
+            "  IF R21 = 1 THEN R21 = LIMIT; ENDIF;\nEND.\n")
+    assert get_dialect("cl800").build("t.cl8", text, Machine()).text() == (
+        "%SPF9\n@203 R21 R10 K3 @661 R10 K3 @121 R21 K1 K2001 @201 R21 K2.5\nN2001 M17\n")

@@ -31,7 +31,8 @@ def search_path(path: str, machine) -> list[Path]:
 
 
 #: the machine file's [cl800] keys and their defaults (docs/cl800.md)
-OPTIONS = {"strict": False}
+OPTIONS = {"strict": False, "control": "880"}
+CONTROLS = ("810", "820", "850", "880")
 
 
 def options(machine) -> dict:
@@ -42,7 +43,25 @@ def options(machine) -> dict:
             raise UsageError(f"machine file: unknown key 'cl800.{key}' (known: {', '.join(OPTIONS)})")
         if not isinstance(value, type(OPTIONS[key])):
             raise UsageError(f"machine file: key 'cl800.{key}' must be {type(OPTIONS[key]).__name__}")
+    if section.get("control", "880") not in CONTROLS:
+        raise UsageError(f"machine file: key 'cl800.control' must be one of {', '.join(CONTROLS)}")
     return {**OPTIONS, **section}
+
+
+_PROGRAM_START = re.compile(r"\s*PROGRAM\b")
+
+
+def _strip_comments(text: str) -> str:
+    return re.sub(r"\(\*.*?\*\)", lambda m: "\n" * m.group(0).count("\n"), text, flags=re.S)
+
+
+def _last_text_line(text: str) -> tuple[int, str]:
+    """(line number, text) of the last line that holds more than blanks and comments."""
+    lines = _strip_comments(text).split("\n")
+    for n in range(len(lines), 0, -1):
+        if lines[n - 1].strip():
+            return n, lines[n - 1].strip()
+    return 1, ""
 
 
 class Cl800Dialect(Dialect):
@@ -55,7 +74,8 @@ class Cl800Dialect(Dialect):
         return min(100, 30 * hits)
 
     def analyse(self, path: str, text: str, machine):
-        prog, sym, errors = check_program(path, text, search_path(path, machine), options(machine)["strict"])
+        opts = options(machine)
+        prog, sym, errors = check_program(path, text, search_path(path, machine), opts["strict"], opts["control"])
         return prog, sym, errors
 
     def check(self, path, text, machine, all_errors=False):
@@ -72,6 +92,11 @@ class Cl800Dialect(Dialect):
         return diags
 
     def build(self, path: str, text: str, machine) -> ObjectProgram:
+        last = _last_text_line(text)
+        if _PROGRAM_START.match(_strip_comments(text)) and not re.search(r"\bEND\s*\.\s*$", last[1]):
+            # the WS 800 A compiles only a program file that ends with END.<CR> (E300, L6236)
+            raise CompileFailed([Cl800Error("E300", path, last[0], None, "the file does not end with END.")
+                                 .diagnostic()])
         prog, sym, errors = self.analyse(path, text, machine)
         errs = [e for e in errors if not e.code.startswith("W")]
         if errs:

@@ -53,8 +53,9 @@ def parse_source(path: str, text: str, strict: bool = False):
 
 
 class Checker:
-    def __init__(self, path: str, prog: ast.Program, search: list[Path]):
+    def __init__(self, path: str, prog: ast.Program, search: list[Path], control: str = "880"):
         self.path, self.prog, self.search = path, prog, search
+        self.max_program = 999 if control in ("810", "820") else 9999  # L1069
         self.errors: list[Cl800Error] = []
         self.sym = Symbols()
         self.placed: dict[str, int] = {}
@@ -66,8 +67,8 @@ class Checker:
     # -- declarations --------------------------------------------------------
     def check(self) -> Symbols:
         prog = self.prog
-        if prog.number != -1 and not 1 <= prog.number <= 9999:
-            self.err("E027", prog, "program number 1..9999")
+        if prog.number != -1 and not 1 <= prog.number <= self.max_program:
+            self.err("E027", prog, f"program number 1..{self.max_program}")
         for ref in prog.list_refs:
             self.load_list(*ref)
         for d in prog.decls:
@@ -201,7 +202,7 @@ class Checker:
                     new.append(self.value(a))
             st.args = new
         elif isinstance(st, ast.Compound):
-            self.block(st.body, top)
+            self.block(st.body)  # a BEGIN ... END block is not the first nesting level (digest §3.2)
         elif isinstance(st, ast.If):
             st.cond = self.condition(st.cond)
             self.block(st.then)
@@ -350,12 +351,12 @@ def check_list(path: str, lst: ast.ExtList) -> list[Cl800Error]:
     return errors
 
 
-def check_program(path: str, text: str, search: list[Path], strict: bool = False):
+def check_program(path: str, text: str, search: list[Path], strict: bool = False, control: str = "880"):
     """Parse and check; returns (Program or None, Symbols or None, errors sorted by position)."""
     unit, errors = parse_source(path, text, strict)
     sym = None
     if isinstance(unit, ast.Program):
-        checker = Checker(path, unit, search)
+        checker = Checker(path, unit, search, control)
         sym = checker.check()
         errors += checker.errors
     elif isinstance(unit, ast.ExtList):

@@ -69,6 +69,7 @@ MESSAGES = {
     "E100": "Label used twice",
     "E200": "File not available",
     "E208": "Line length maximum one screen line",
+    "E300": "File cannot be compiled",
     "S050": "Illegal label for GOTO",
     "S051": '"ENDEXTERN" not found',
     "S064": "Excessive block length of destination code",

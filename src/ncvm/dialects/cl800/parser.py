@@ -364,7 +364,8 @@ class Parser:
                 if not self.strict and (self.tok.kind == "EOF" or self.tok.is_kw(*CLOSERS) or
                                         (case_alt and self.is_sym("="))):
                     continue
-                raise self.fail("E001")
+                # a closing bracket without its opener: "[" / "(" expected
+                raise self.fail("E007" if self.is_sym("]") else "E005" if self.is_sym(")") else "E001")
             except Cl800Error as e:
                 self.errors.append(e)
                 self.sync()
