@@ -164,7 +164,6 @@ def test_fil_with_contour_colour_and_clear_commands():
     s.DSP(1, 1, "TEXT")
     s.CLS()
     assert px(s, 50, 50) == s.rgb(0) and s.grid_lines()[0] == ""
-    s.SFK(0, "A") if False else None
     s.softkeys = ["A"] + [None] * 7
     s.DSP(1, 1, "TEXT")
     s.CLG()

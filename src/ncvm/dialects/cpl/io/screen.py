@@ -216,6 +216,7 @@ class Screen(Graphics):
         self.fields: dict[str, Field] = {}
         self.in_dialog = False
         self.log: list[str] = []
+        self.on_output = None  # called with every line added to the log (CplIO sends it to session.say)
         self.labels: list[tuple[int, int, str, tuple[int, int, int, int], int]] = []  # GPR texts
 
     # -- text ------------------------------------------------------------------------------
@@ -241,7 +242,7 @@ class Screen(Graphics):
             c = column - 1 + i
             self.chars[row][c] = ch
             self.cells[row, c] = (self.text_color, self.text_bg, style, 1)
-        self.log.append(text)
+        self._log(text)
 
     def grid_lines(self) -> list[str]:
         """The 46 text lines as shown (trailing blanks dropped)."""
@@ -253,7 +254,12 @@ class Screen(Graphics):
 
     def message(self, text: str) -> None:
         """A line in the message window (PRN#(0,...), MSG)."""
+        self._log(text)
+
+    def _log(self, text: str) -> None:
         self.log.append(text)
+        if self.on_output is not None:
+            self.on_output(text)
 
     def _clear_text(self) -> None:
         self.chars = [[" "] * COLUMNS for _ in range(LINES)]
@@ -356,7 +362,7 @@ class Screen(Graphics):
             raise fail("INVALID_PARAMETER", f"SFK takes at most 8 texts, not {len(texts)}")
         bar = [text_of(t) if isinstance(t, (str, CplText)) else None for t in texts]
         self.softkeys = (bar + [None] * 8)[: self.softkey_count]
-        self.log.append("SFK " + " ".join(f"[{i}:{t.replace('&', ' ')}]" for i, t in
+        self._log("SFK " + " ".join(f"[{i}:{t.replace('&', ' ')}]" for i, t in
                                           enumerate(self.softkeys, 1) if t))
         while True:
             event = self.keys.wait("SFK")
@@ -421,7 +427,7 @@ class Screen(Graphics):
             self.canvas[r0:r1, c0:c1][on] = self.rgb(self.text_color)
         # the canvas holds the text at the control's resolution; the PNG draws it again sharply
         self.labels.append((px, py, string, self.font, self.text_color))
-        self.log.append(string)
+        self._log(string)
 
     # -- the end of the program ------------------------------------------------------------
     def end_program(self) -> None:
