@@ -463,3 +463,18 @@ def test_reopen_for_writing_appends_and_normalises_foreign_files(fs):
     fs.PRN(1, "FOUR")
     fs.CLOSE(1)
     assert content(fs, "DOS") == "ONE\nTWO\nTHREE\nFOUR\n" + ETX
+
+
+def test_inp_into_a_foreign_field_with_size_and_assign(fs):
+    class Field:
+        def __init__(self, size):
+            self.size, self.s = size, None
+
+        def assign(self, text):
+            self.s = text
+
+    (fs.root / "P").write_text("ABCDEF\n\x03\n")
+    fs.OPENR(1, "P")
+    f = Field(4)
+    fs.INP(1, f, "S")
+    assert f.s == "ABCD"

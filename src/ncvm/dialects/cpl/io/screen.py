@@ -23,7 +23,7 @@ from .errors import WarnFn, fail
 from .format import TEMPLATE, OutputMode, format_items, format_number, template_shape
 from .graphics import BAND, HEIGHT, WIDTH, Graphics
 from .strings import scan_number
-from .values import CplText, kind_of, text_of
+from .values import is_text, kind_of, text_of
 
 LINES, COLUMNS = 46, 79
 CELL_W, CELL_H = 8, 9
@@ -360,7 +360,7 @@ class Screen(Graphics):
         text when ``want_text``, for a string variable); LEVEL RETURN returns ``current`` unchanged."""
         if len(texts) > 8:
             raise fail("INVALID_PARAMETER", f"SFK takes at most 8 texts, not {len(texts)}")
-        bar = [text_of(t) if isinstance(t, (str, CplText)) else None for t in texts]
+        bar = [text_of(t) if is_text(t) else None for t in texts]
         self.softkeys = (bar + [None] * 8)[: self.softkey_count]
         self._log("SFK " + " ".join(f"[{i}:{t.replace('&', ' ')}]" for i, t in
                                           enumerate(self.softkeys, 1) if t))
