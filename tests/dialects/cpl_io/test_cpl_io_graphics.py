@@ -225,3 +225,20 @@ def test_screen_png_with_text_softkeys_and_fonts(tmp_path):
     assert (arr[9 * 39: 9 * 40, 69 * 8: 76 * 8] == s.rgb(7)).all(axis=2).sum() > 100  # inverse cell background
     assert (arr[378:412, 2:76] == s.rgb(s.softkey_bg)).all(axis=2).sum() > 1000  # softkey 1 box
     s.save_png(tmp_path / "screen.png")
+
+
+def test_tfo_orientation_turns_gpr_text_about_its_start(tmp_path):
+    s = Screen()
+    s.TFO(1, 16, 0, 90)
+    s.GPR(300, 240, "UPWARDS TEXT")  # start at graphics (300, 200)
+    on = np.all(s.canvas == s.rgb(s.text_color), axis=2)
+    rows, cols = np.nonzero(on)
+    assert rows.max() <= GRAPH_TOP - 200 + 1 and rows.min() < GRAPH_TOP - 260  # it runs upwards
+    assert cols.min() >= 300 - 17 and cols.max() <= 300 + 2  # on the left of the start point, 16 px high
+    s.TFO(5, 16, 0, 90)  # no orientation for font 5 (Bosch)
+    s.CLS()
+    s.GPR(300, 240, "FLAT")
+    rows, cols = np.nonzero(np.all(s.canvas == s.rgb(s.text_color), axis=2))
+    assert cols.max() > 320 and rows.min() > GRAPH_TOP - 200 - 17
+    s.save_png(tmp_path / "tfo.png")
+    assert not s.text_pixels[:, :290].any()

@@ -66,6 +66,8 @@ class Graphics:
         self.line_color, self.text_color, self.text_bg = 1, 2, 0
         self.softkey_color, self.softkey_bg, self.graphics_bg = 3, 4, 0
         self.canvas = np.zeros((HEIGHT, WIDTH, 3), dtype=np.uint8)
+        #: canvas pixels that hold GPR text (the PNG draws that text again, sharply, over them)
+        self.text_pixels = np.zeros((HEIGHT, WIDTH), dtype=bool)
         self.line_style = 0
         self.window = Window(0, 632, 0, GRAPH_TOP)
         self.user: Window | None = None  # MWD
@@ -162,6 +164,7 @@ class Graphics:
     def _clear_rect(self, x0: int, top: int, x1: int, bottom: int, color: RGB | None = None) -> None:
         """Fill canvas columns x0..x1-1, rows top..bottom-1 with the graphics background."""
         self.canvas[top:bottom, x0:x1] = color or self.rgb(self.graphics_bg)
+        self.text_pixels[top:bottom, x0:x1] = False
 
     def _window_rows(self) -> tuple[int, int, int, int]:
         w = self.window
@@ -189,6 +192,7 @@ class Graphics:
         elif self.line_style == 2:  # erase a drawn line, or regenerate an erased one
             color = background if tuple(self.canvas[row, x]) == color else color
         self.canvas[row, x] = color
+        self.text_pixels[row, x] = False
 
     def _segment(self, a: tuple[float, float], b: tuple[float, float]) -> None:
         (x0, y0), (x1, y1) = self.to_pixel(*a), self.to_pixel(*b)
@@ -300,6 +304,7 @@ class Graphics:
                     for off in np.flatnonzero(row_free & ~np.concatenate(([False], row_free[:-1]))):
                         todo.append((nr, left + int(off)))
         region[done] = fill_rgb
+        self.text_pixels[top:bottom + 1, x0:x1 + 1][done] = False
 
     def CLR(self) -> None:  # noqa: N802
         """``CLR``: clear the GWD window."""
@@ -353,6 +358,7 @@ class Graphics:
             8: lambda s, d: ~s & ~d,
         }
         dst[...] = ops[copy](src, dst)
+        self.text_pixels[top:top + h, x:x + w] = False
 
     def _warn(self, w: CplWarning) -> None:
         self.warnings.append(w)

@@ -73,16 +73,18 @@ def font_for(number: int, cut: int, em_px: int):
     return ImageFont.truetype(str(path), max(4, int(em_px)))
 
 
-def text_mask(text: str, style: tuple[int, int, int, int], scale: int = 1) -> tuple[np.ndarray, int]:
-    """The glyphs of ``text`` in TFO ``style`` as a 0..255 mask, and the row of its baseline.
+def text_mask(text: str, style: tuple[int, int, int, int], scale: int = 1) -> tuple[np.ndarray, float, float]:
+    """The glyphs of ``text`` in TFO ``style`` as a 0..255 mask, and where in it the text's start
+    point (left end of the baseline) lies, after turning it by the style's orientation.
 
     Font 0 in size 0 is the 9 x 8 pixel cell font: each character is centred in its own cell, so
     text stays on the 79-column grid. Other sizes give the font's height in pixels (ascent plus
     descent); a size with a width part (height + 1000 x width) stretches the characters to that width.
+    The orientation turns the text counter-clockwise about its start point (not for font 5, L4877).
     """
     from PIL import Image, ImageDraw
 
-    number, size, cut, _orientation = style
+    number, size, cut, orientation = style
     if number == 0 and size == 0:
         cw, ch = CELL_W * scale, CELL_H * scale
         font = font_for(0, cut, int(round(1.15 * ch)))
@@ -91,16 +93,25 @@ def text_mask(text: str, style: tuple[int, int, int, int], scale: int = 1) -> tu
         draw = ImageDraw.Draw(img)
         for i, c in enumerate(text):
             draw.text((i * cw + (cw - font.getlength(c)) / 2, baseline), c, fill=255, font=font, anchor="ls")
-        return np.asarray(img), baseline
-    height = (size % 1000 or CELL_H) * scale
-    char_w = (size // 1000) * scale
-    font = font_for(number, cut, int(round(height / 1.17)))
-    ascent, descent = font.getmetrics()
-    img = Image.new("L", (max(1, int(np.ceil(font.getlength(text))) + 1), ascent + descent), 0)
-    ImageDraw.Draw(img).text((0, 0), text, fill=255, font=font)
-    if char_w and text:
-        img = img.resize((char_w * len(text), ascent + descent), Image.BILINEAR)
-    return np.asarray(img), ascent
+    else:
+        height = (size % 1000 or CELL_H) * scale
+        char_w = (size // 1000) * scale
+        font = font_for(number, cut, int(round(height / 1.17)))
+        ascent, descent = font.getmetrics()
+        img = Image.new("L", (max(1, int(np.ceil(font.getlength(text))) + 1), ascent + descent), 0)
+        ImageDraw.Draw(img).text((0, 0), text, fill=255, font=font)
+        if char_w and text:
+            img = img.resize((char_w * len(text), ascent + descent), Image.BILINEAR)
+        baseline = ascent
+    ax, ay = 0.0, float(baseline)
+    if orientation % 360 and number != 5:
+        w, h = img.size
+        img = img.rotate(orientation, resample=Image.BILINEAR, expand=True)
+        t = np.radians(orientation)
+        dx, dy = ax - w / 2, ay - h / 2
+        ax = img.size[0] / 2 + dx * np.cos(t) + dy * np.sin(t)
+        ay = img.size[1] / 2 - dx * np.sin(t) + dy * np.cos(t)
+    return np.asarray(img), ax, ay
 
 
 # -- the key script -----------------------------------------------------------------------------
@@ -417,14 +428,15 @@ class Screen(Graphics):
         if not (0 <= px <= WIDTH - 1 and 0 <= py <= HEIGHT - 1):
             raise fail("INVALID_GRAPHICS_VALUE", f"GPR({x!r},{y!r})")
         string = text_of(text) or ""
-        mask, baseline = text_mask(string, self.font)
-        top, left = HEIGHT - 1 - py - baseline, px
+        mask, ax, ay = text_mask(string, self.font)
+        top, left = int(round(HEIGHT - 1 - py - ay)), int(round(px - ax))
         h, w = mask.shape
         r0, c0 = max(0, top), max(0, left)
         r1, c1 = min(HEIGHT, top + h), min(WIDTH, left + w)
         if r1 > r0 and c1 > c0:
             on = mask[r0 - top: r1 - top, c0 - left: c1 - left] >= 96
             self.canvas[r0:r1, c0:c1][on] = self.rgb(self.text_color)
+            self.text_pixels[r0:r1, c0:c1] |= on
         # the canvas holds the text at the control's resolution; the PNG draws it again sharply
         self.labels.append((px, py, string, self.font, self.text_color))
         self._log(string)
@@ -440,7 +452,9 @@ class Screen(Graphics):
         """The whole window (graphics, text grid, softkey bar) as a PIL image, ``scale`` times larger."""
         from PIL import Image, ImageDraw
 
-        img = Image.fromarray(self.canvas, "RGB").resize((WIDTH * scale, HEIGHT * scale), Image.NEAREST)
+        canvas = self.canvas.copy()
+        canvas[self.text_pixels] = self.rgb(self.graphics_bg)  # GPR text is drawn sharply below
+        img = Image.fromarray(canvas, "RGB").resize((WIDTH * scale, HEIGHT * scale), Image.NEAREST)
         draw = ImageDraw.Draw(img)
         for row in range(LINES):
             col = 0
@@ -454,13 +468,14 @@ class Screen(Graphics):
                     end += 1
                 x0, y0 = col * CELL_W * scale, row * CELL_H * scale
                 draw.rectangle([x0, y0, end * CELL_W * scale - 1, (row + 1) * CELL_H * scale - 1], fill=self.rgb(bg))
-                mask, _ = text_mask("".join(self.chars[row][col:end]), self.styles[style], scale)
-                y_top = (row + 1) * CELL_H * scale - mask.shape[0]  # the text stands on the cell's bottom
-                img.paste(self.rgb(fg), (x0, y_top), Image.fromarray(mask))
+                mask, ax, ay = text_mask("".join(self.chars[row][col:end]), self.styles[style], scale)
+                base = (row + 1) * CELL_H * scale - int(round(0.2 * CELL_H * scale))  # the line's baseline
+                img.paste(self.rgb(fg), (int(round(x0 - ax)), int(round(base - ay))), Image.fromarray(mask))
                 col = end
         for x, y, string, style, color in self.labels:
-            mask, baseline = text_mask(string, style, scale)
-            img.paste(self.rgb(color), (x * scale, (HEIGHT - 1 - y) * scale - baseline), Image.fromarray(mask))
+            mask, ax, ay = text_mask(string, style, scale)
+            img.paste(self.rgb(color), (int(round(x * scale - ax)), int(round((HEIGHT - 1 - y) * scale - ay))),
+                      Image.fromarray(mask))
         if self.softkeys is not None:
             self._draw_softkeys(draw, scale)
         return img
