@@ -478,3 +478,12 @@ def test_inp_into_a_foreign_field_with_size_and_assign(fs):
     f = Field(4)
     fs.INP(1, f, "S")
     assert f.s == "ABCD"
+
+
+def test_filepos_counts_a_record_open_with_semicolon(fs):
+    fs.OPENW(1, "P1", 130.0)
+    fs.PRN(1, "ABC")
+    fs.PRN(1, "DE", semicolon=True)
+    assert fs.FILEPOS(1) == 4 + 2 + 1
+    fs.CLOSE(1)
+    assert content(fs, "P1") == "ABC\nDE\n" + ETX

@@ -181,3 +181,25 @@ def test_prn0_messages_join_the_output(tmp_path):
     s.DSP(1, 1, "FIRST")
     fs.PRN(0, "MESSAGE ", 3)
     assert s.output_lines() == ["FIRST", "MESSAGE         3"]
+
+
+def test_inkey_animation_examples_run_until_key_b():
+    # L4752-4762: REPEAT KEY%=INKEY : LIN(250,10,M,M) : M=M+1 UNTIL (KEY%=66) OR (M>300) : CLG
+    s = Screen(KeyScript("IDLE 20\nKEY 66\n"))
+    m = 10
+    while True:
+        key = s.INKEY()
+        s.LIN(250, 10, m, m)
+        m += 1
+        if key == 66 or m > 300:
+            break
+    assert m == 31  # 20 polls without a key, then 'B' on the 21st
+    assert tuple(s.canvas[374 - 30, 30]) == s.rgb(1)  # the last line ended at (30, 30)
+    s.CLG()
+    # WHILE ((INKEY<>66) AND (M<150)) DO CIR(250,160,M) : M=M+1 END, without keys: runs to M = 150
+    s = Screen()
+    m = 2
+    while s.INKEY() != 66 and m < 150:
+        s.CIR(250, 160, m)
+        m += 1
+    assert m == 150 and tuple(s.canvas[374 - 160, 250 + 149]) == s.rgb(1)

@@ -162,6 +162,8 @@ class CplFiles:
             remark, reclen = None, remark
         if length is None:
             length = MIN_RESERVED
+        if isinstance(length, float) and length.is_integer():
+            length = int(length)
         if not isinstance(length, int) or isinstance(length, bool) or length < MIN_RESERVED:
             raise fail("ILLEGAL_FILE_SIZE", f"{length!r} bytes, at least {MIN_RESERVED}")
         shown, path = self.path_of(name)
@@ -422,8 +424,8 @@ class CplFiles:
             mode = 2 if h.random else 1
         if mode not in allowed:
             raise fail("INVALID_PARAMETER", f"FILEPOS mode {mode!r}")
-        if mode == 1:
-            return h.byte_of(h.rec) + h.off + 1
+        if mode == 1:  # a record still open with ';' counts with what it holds so far
+            return h.byte_of(h.rec) + h.off + len(h.pending or "") + 1
         if mode == 2:
             return h.rec + 1
         return h.off + 1  # 1 on the EOF marker
