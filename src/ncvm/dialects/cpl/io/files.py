@@ -92,6 +92,9 @@ class CplFiles:
     warnings: list[CplWarning] = field(default_factory=list)
     _message_pending: str = ""
 
+    def __post_init__(self) -> None:
+        self.root = Path(self.root)
+
     # -- names ---------------------------------------------------------------------------
     def path_of(self, name) -> tuple[str, Path]:
         """The control's file name (a string, or an INTEGER n meaning "P<n>", digest D2) and its path."""
@@ -233,7 +236,7 @@ class CplFiles:
     def _rewrite_all(self, h: Handle) -> None:
         data = "".join(r + "\n" for r in h.records) + EOF_MARKER
         with open(h.path, "wb") as f:
-            f.write(data.encode("latin-1"))
+            f.write(data.encode("latin-1", errors="replace"))
             f.flush()
             self._stamp(f.fileno(), h.path)
 
@@ -243,7 +246,7 @@ class CplFiles:
             raise fail("BLOCK_EXCEEDS_1024", f"{len(text)} characters")
         with open(h.path, "r+b") as f:
             f.seek(h.data_size)
-            f.write((text + "\n" + EOF_MARKER).encode("latin-1"))
+            f.write((text + "\n" + EOF_MARKER).encode("latin-1", errors="replace"))
             f.truncate()
             f.flush()
             self._stamp(f.fileno(), h.path)
@@ -256,7 +259,7 @@ class CplFiles:
         with open(h.path, "r+b") as f:
             f.seek(h.byte_of(rec))
             tail = EOF_MARKER if rec >= len(h.records) else ""
-            f.write((image + "\n" + tail).encode("latin-1"))
+            f.write((image + "\n" + tail).encode("latin-1", errors="replace"))
             f.flush()
             self._stamp(f.fileno(), h.path)
         if rec >= len(h.records):

@@ -149,6 +149,8 @@ class KeyScript:
         upper = word.upper()
         try:
             if upper == "TYPE":
+                if any(ord(c) > 255 for c in rest):
+                    raise ValueError  # the panel has no such character
                 return KeyEvent("type", rest)
             if upper == "IDLE":
                 n = int(rest)
