@@ -487,3 +487,13 @@ def test_filepos_counts_a_record_open_with_semicolon(fs):
     assert fs.FILEPOS(1) == 4 + 2 + 1
     fs.CLOSE(1)
     assert content(fs, "P1") == "ABC\nDE\n" + ETX
+
+
+def test_inp_invalid_float_value(fs):
+    (fs.root / "F").write_text("1" + "0" * 40 + "\n2.5\n\x03\n")
+    fs.OPENR(1, "F")
+    assert error_of(fs.INP, 1, "R").message.startswith("INVALID FLOAT VALUE")
+    fs.CLOSE(1)
+    fs.OPENR(1, "F")
+    assert fs.INP(1, "D") == [1e40]  # a DOUBLE holds it
+    assert fs.INP(1, "R") == [2.5]
