@@ -463,3 +463,37 @@ def test_reopen_for_writing_appends_and_normalises_foreign_files(fs):
     fs.PRN(1, "FOUR")
     fs.CLOSE(1)
     assert content(fs, "DOS") == "ONE\nTWO\nTHREE\nFOUR\n" + ETX
+
+
+def test_inp_into_a_foreign_field_with_size_and_assign(fs):
+    class Field:
+        def __init__(self, size):
+            self.size, self.s = size, None
+
+        def assign(self, text):
+            self.s = text
+
+    (fs.root / "P").write_text("ABCDEF\n\x03\n")
+    fs.OPENR(1, "P")
+    f = Field(4)
+    fs.INP(1, f, "S")
+    assert f.s == "ABCD"
+
+
+def test_filepos_counts_a_record_open_with_semicolon(fs):
+    fs.OPENW(1, "P1", 130.0)
+    fs.PRN(1, "ABC")
+    fs.PRN(1, "DE", semicolon=True)
+    assert fs.FILEPOS(1) == 4 + 2 + 1
+    fs.CLOSE(1)
+    assert content(fs, "P1") == "ABC\nDE\n" + ETX
+
+
+def test_inp_invalid_float_value(fs):
+    (fs.root / "F").write_text("1" + "0" * 40 + "\n2.5\n\x03\n")
+    fs.OPENR(1, "F")
+    assert error_of(fs.INP, 1, "R").message.startswith("INVALID FLOAT VALUE")
+    fs.CLOSE(1)
+    fs.OPENR(1, "F")
+    assert fs.INP(1, "D") == [1e40]  # a DOUBLE holds it
+    assert fs.INP(1, "R") == [2.5]

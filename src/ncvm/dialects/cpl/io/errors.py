@@ -75,14 +75,14 @@ class CplWarning:
 WarnFn = Callable[[CplWarning], None]
 
 
-def fail(name: str, detail: str = "", **fmt) -> CplRuntimeError:
-    """The error ``name`` of :data:`ERRORS`, ready to raise; ``detail`` is appended after ': '."""
-    code, text, _ref = ERRORS[name]
+def fail(key: str, detail: str = "", **fmt) -> CplRuntimeError:
+    """The error ``key`` of :data:`ERRORS`, ready to raise; ``detail`` is appended after ': '."""
+    code, text, _ref = ERRORS[key]
     text = text.format(**fmt) if fmt else text
     return CplRuntimeError(code, f"{text}: {detail}" if detail else text)
 
 
-def warning(name: str, detail: str = "", **fmt) -> CplWarning:
-    code, text, _ref = ERRORS[name]
+def warning(key: str, detail: str = "", **fmt) -> CplWarning:
+    code, text, _ref = ERRORS[key]
     text = text.format(**fmt) if fmt else text
     return CplWarning(code, f"{text}: {detail}" if detail else text)

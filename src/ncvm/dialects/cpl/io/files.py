@@ -92,6 +92,9 @@ class CplFiles:
     warnings: list[CplWarning] = field(default_factory=list)
     _message_pending: str = ""
 
+    def __post_init__(self) -> None:
+        self.root = Path(self.root)
+
     # -- names ---------------------------------------------------------------------------
     def path_of(self, name) -> tuple[str, Path]:
         """The control's file name (a string, or an INTEGER n meaning "P<n>", digest D2) and its path."""
@@ -162,6 +165,8 @@ class CplFiles:
             remark, reclen = None, remark
         if length is None:
             length = MIN_RESERVED
+        if isinstance(length, float) and length.is_integer():
+            length = int(length)
         if not isinstance(length, int) or isinstance(length, bool) or length < MIN_RESERVED:
             raise fail("ILLEGAL_FILE_SIZE", f"{length!r} bytes, at least {MIN_RESERVED}")
         shown, path = self.path_of(name)
@@ -231,7 +236,7 @@ class CplFiles:
     def _rewrite_all(self, h: Handle) -> None:
         data = "".join(r + "\n" for r in h.records) + EOF_MARKER
         with open(h.path, "wb") as f:
-            f.write(data.encode("latin-1"))
+            f.write(data.encode("latin-1", errors="replace"))
             f.flush()
             self._stamp(f.fileno(), h.path)
 
@@ -241,7 +246,7 @@ class CplFiles:
             raise fail("BLOCK_EXCEEDS_1024", f"{len(text)} characters")
         with open(h.path, "r+b") as f:
             f.seek(h.data_size)
-            f.write((text + "\n" + EOF_MARKER).encode("latin-1"))
+            f.write((text + "\n" + EOF_MARKER).encode("latin-1", errors="replace"))
             f.truncate()
             f.flush()
             self._stamp(f.fileno(), h.path)
@@ -254,7 +259,7 @@ class CplFiles:
         with open(h.path, "r+b") as f:
             f.seek(h.byte_of(rec))
             tail = EOF_MARKER if rec >= len(h.records) else ""
-            f.write((image + "\n" + tail).encode("latin-1"))
+            f.write((image + "\n" + tail).encode("latin-1", errors="replace"))
             f.flush()
             self._stamp(f.fileno(), h.path)
         if rec >= len(h.records):
@@ -363,8 +368,9 @@ class CplFiles:
 
     @staticmethod
     def _read_one(record: str, off: int, target):
-        if isinstance(target, CharacterField):
-            text = record[off: off + target.size]
+        if isinstance(target, CharacterField) or (isinstance(getattr(target, "size", None), int)
+                                                  and callable(getattr(target, "assign", None))):
+            text = record[off: off + target.size]  # any field with .size and .assign(text)
             target.assign(text)
             return text, off + len(text)
         if isinstance(target, StringView):
@@ -421,8 +427,8 @@ class CplFiles:
             mode = 2 if h.random else 1
         if mode not in allowed:
             raise fail("INVALID_PARAMETER", f"FILEPOS mode {mode!r}")
-        if mode == 1:
-            return h.byte_of(h.rec) + h.off + 1
+        if mode == 1:  # a record still open with ';' counts with what it holds so far
+            return h.byte_of(h.rec) + h.off + len(h.pending or "") + 1
         if mode == 2:
             return h.rec + 1
         return h.off + 1  # 1 on the EOF marker

@@ -1,0 +1,54 @@
+"""One CPL program run's I/O, wired to an ncvm Session: files, screen, MMC and the shared LJUST state.
+
+The CPL code generator creates one :class:`CplIO` per run (``CplIO.for_session(session)``) and
+calls its parts: ``io.files.PRN(1, ...)``, ``io.screen.DSP(...)``, ``io.mmc.MMC(...)``,
+``io.mode.LJUST()``; at the end of the main program it calls ``io.end_program()``.
+Operator output (DSP/PRN texts, PRN#(0) message lines, SFK bars, GPR texts and warnings) goes to
+``session.say`` as it happens, so it lands in the JSON ``output``.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from .errors import CplWarning
+from .files import CplFiles
+from .format import OutputMode
+from .mmc import Mmc
+from .screen import KeyScript, Screen
+
+
+class CplIO:
+    def __init__(self, file_root: Path | str, clock=None, keys: KeyScript | str | None = None,
+                 say=None, typ2: bool = False, bitmap_dir: Path | str | None = None):
+        self.mode = OutputMode()
+        self.say = say
+        root = Path(file_root)
+        self.screen = Screen(keys=keys, mode=self.mode, warn=self._warn, typ2=typ2,
+                             bitmap_dir=bitmap_dir if bitmap_dir is not None else root / "cplbmp")
+        self.screen.on_output = self._out
+        self.files = CplFiles(root=root, clock=clock, message=self.screen.message, warn=self._warn, mode=self.mode)
+        self.mmc = Mmc()
+
+    @classmethod
+    def for_session(cls, session, typ2: bool = False) -> "CplIO":
+        """The I/O of a run: the machine's file root and clock, the key script of ``--keys``, output to say."""
+        keys_path = getattr(session.options, "keys", None)
+        keys = KeyScript.from_file(keys_path) if keys_path else None
+        return cls(session.machine.file_root, clock=session.machine.clock, keys=keys, say=session.say, typ2=typ2)
+
+    def _out(self, line: str) -> None:
+        if self.say is not None:
+            self.say(line)
+
+    def _warn(self, w: CplWarning) -> None:
+        self._out(f"warning {w.code}: {w.message}")
+
+    def end_program(self, png: Path | str | None = None) -> None:
+        """End of the main program: files closed (pending records ended), LJUST off, TFO reset,
+        softkeys gone; the screen saved as a PNG first when ``png`` is given."""
+        self.files.close_all()
+        if png is not None:
+            self.screen.save_png(png)
+        self.screen.end_program()
+        self.mode.NJUST()

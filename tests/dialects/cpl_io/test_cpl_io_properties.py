@@ -1,0 +1,45 @@
+"""Properties that must hold for every value: what PRN# writes, VAL and INP# read back."""
+
+from __future__ import annotations
+
+from decimal import ROUND_HALF_UP, Decimal
+
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from ncvm.dialects.cpl.io.files import CplFiles
+from ncvm.dialects.cpl.io.format import format_items
+from ncvm.dialects.cpl.io.strings import val
+from ncvm.dialects.cpl.io.values import Double
+
+
+@given(st.integers(min_value=-99_999_999, max_value=999_999_999))
+def test_integers_in_standard_format_read_back(v):
+    text = format_items([v]).text
+    assert len(text) == 9 and val(text) == v
+
+
+@given(st.floats(min_value=-99_999.0, max_value=999_999.0, allow_nan=False), st.integers(0, 4))
+def test_templates_round_half_away_from_zero_and_read_back(v, decimals):
+    template = "#" * 7 + ("." + "#" * decimals if decimals else "")
+    text = format_items([template, Double(v)]).text
+    expected = Decimal(repr(v)).quantize(Decimal(1).scaleb(-decimals), rounding=ROUND_HALF_UP)
+    assert len(text) == len(template)
+    assert Decimal(text.strip()) == expected
+    assert val(text) == float(expected) or (expected == 0 and val(text) == 0)
+
+
+@settings(max_examples=30, deadline=None)
+@given(st.lists(st.text(alphabet=st.characters(min_codepoint=32, max_codepoint=255), max_size=40), max_size=8))
+def test_prn_records_come_back_with_inp(tmp_path_factory, records):
+    root = tmp_path_factory.mktemp("prop")
+    fs = CplFiles(root=root, durable=False)
+    fs.OPENW(1, "P")
+    for r in records:
+        fs.PRN(1, r)
+    fs.CLOSE(1)
+    fs.OPENR(1, "P")
+    back = []
+    while not fs.EOF(1):
+        back.append(fs.INP(1, "S")[0])
+    assert back == records
