@@ -14,6 +14,8 @@ import math
 def make_linear(axis_names: tuple[str, ...], dyn):
     """``linear(kernel, motion, words, src)`` for these axes; same result as the general path."""
     n = len(axis_names)
+    if n == 0:
+        return lambda k, motion, words, src: None  # a controller without axes has nothing to move
     idx = range(n)
     lines = ["def linear(k, motion, words, src):",
              "    get = words.get",
