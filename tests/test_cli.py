@@ -143,3 +143,16 @@ def test_version_and_console_script():
     r = subprocess.run([sys.executable, "-c", "from ncvm.cli import main; main()", "--version"],
                        capture_output=True, text=True)
     assert r.returncode == 0 and r.stdout.strip() == f"ncvm, version {__version__}"
+
+
+def test_scenario_merges_into_the_machine_and_screen_needs_a_dialect_with_one(invoke, prog, tmp_path):
+    scenario = tmp_path / "s.toml"
+    scenario.write_text('[[scenario]]\ntime = 1\nkind = "input"\naddress = "E1.0"\nvalue = true\n')
+    r = invoke("run", str(prog), "--scenario", str(scenario), "--screen", str(tmp_path / "s.png"),
+               "--state", str(tmp_path / "st"))
+    assert r.exit_code == 0
+    assert "dialect 'din' has no operator screen" in r.stderr and not (tmp_path / "s.png").exists()
+    bad = tmp_path / "bad.toml"
+    bad.write_text("[[scenario]]\ntime = 'soon'\nkind = 'input'\n")
+    r = invoke("run", str(prog), "--scenario", str(bad))
+    assert r.exit_code == 2 and "'scenario[0].time'" in r.stderr

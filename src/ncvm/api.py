@@ -6,7 +6,7 @@ from pathlib import Path
 
 from .diagnostics import CompileFailed, Diagnostic, UsageError
 from .dialects import detect_dialect, get_dialect
-from .machine.config import load_machine
+from .machine.config import load_machine, load_scenario
 from .machine.model import Machine
 from .runtime.session import RunOptions, Session, run_guarded
 
@@ -50,7 +50,11 @@ def run(path: str | Path, dialect: str | None = None, machine: Machine | str | P
     text, d = resolve(path, dialect)
     front = get_dialect(d)
     options = options or RunOptions()
-    session = Session(machine_for(path, machine, options.state_dir), options, dialect=d)
+    m = machine_for(path, machine, options.state_dir)
+    if options.scenario:
+        # what happens over simulated time in this run, on top of the machine file's own scenario
+        m.scenario = sorted([*m.scenario, *load_scenario(options.scenario)], key=lambda e: e.time)
+    session = Session(m, options, dialect=d)
     error: Diagnostic | None
     try:
         error = run_guarded(session, lambda: front.run(str(path), text, session))

@@ -106,19 +106,31 @@ class _Progress:
 @click.option("--plot", type=click.Path(dir_okay=False), help="Draw the toolpath (.svg or .png).")
 @click.option("--max-steps", type=click.IntRange(min=1), default=100_000_000, show_default=True,
               help="Stop a runaway program after this many statements and blocks.")
-def run(program, dialect, machine, state_dir, as_json, trace, gcode, plot, max_steps):
+@click.option("--scenario", type=click.Path(dir_okay=False, exists=True),
+              help="What happens over simulated time: [[scenario]] tables as in a machine file.")
+@click.option("--keys", type=click.Path(dir_okay=False, exists=True),
+              help="Operator key presses and typed values for dialog programs (a key script).")
+@click.option("--screen", type=click.Path(dir_okay=False), help="Save the operator screen at the end (.png).")
+@click.option("--screen-dir", type=click.Path(file_okay=False),
+              help="Save one screen picture per wait for the operator (softkeys, input).")
+def run(program, dialect, machine, state_dir, as_json, trace, gcode, plot, max_steps, scenario, keys, screen,
+        screen_dir):
     """Run PROGRAM on the simulated controller."""
     from .api import run as api_run
     from .runtime.session import RunOptions
 
     if not Path(program).is_file():
         raise UsageError(f"no such program: {program}")
-    options = RunOptions(state_dir=Path(state_dir), max_steps=max_steps, trace=Path(trace) if trace else None,
-                         gcode=Path(gcode) if gcode else None, echo=not as_json)
+    as_path = lambda value: Path(value) if value else None  # noqa: E731
+    options = RunOptions(state_dir=Path(state_dir), max_steps=max_steps, trace=as_path(trace),
+                         gcode=as_path(gcode), echo=not as_json, scenario=as_path(scenario), keys=as_path(keys),
+                         screen=as_path(screen), screen_dir=as_path(screen_dir))
     progress = _Progress(enabled=sys.stderr.isatty() and not as_json)
     options.on_session = lambda s: setattr(progress, "session", s)
     with progress:
         result, session = api_run(program, dialect, machine, options)
+    if (screen or screen_dir) and session.screen is None:
+        click.echo(f"ncvm: warning: dialect '{result['dialect']}' has no operator screen; nothing saved", err=True)
     if plot:
         from .sinks.plot import plot_toolpath
 

@@ -83,3 +83,20 @@ def test_invalid_toml_and_missing_file(tmp_path):
         load_machine(write(tmp_path, "[[axis]\nname = 'X'\n"))
     with pytest.raises(UsageError, match="cannot read machine file"):
         load_machine(tmp_path / "absent.toml")
+
+
+def test_scenario_file_loads_sorted_and_names_bad_keys(tmp_path):
+    from ncvm.machine.config import load_scenario
+
+    p = tmp_path / "s.toml"
+    p.write_text('[[scenario]]\ntime = 4\nkind = "input"\naddress = "E1.0"\nvalue = true\n'
+                 '[[scenario]]\ntime = 0.5\nkind = "probe"\nX = 12.5\n')
+    events = load_scenario(p)
+    assert [(e.time, e.kind, e.data) for e in events] == [(0.5, "probe", {"X": 12.5}),
+                                                         (4.0, "input", {"address": "E1.0", "value": True})]
+    p.write_text('[[scenario]]\ntime = 1\nkind = "input"\n[axis]\nname = "X"\n')
+    with pytest.raises(UsageError, match="unknown key 'axis'"):
+        load_scenario(p)
+    p.write_text('[[scenario]]\nkind = "input"\n')
+    with pytest.raises(UsageError, match=r"'scenario\[0\]' needs 'time' and 'kind'"):
+        load_scenario(p)

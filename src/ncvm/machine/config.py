@@ -129,17 +129,39 @@ def machine_from_dict(data: dict, where: str = "<dict>", folder: Path = Path("."
     m.program_path = [(folder / p) for p in paths.get("program_path", ["."])]
     m.file_root = folder / paths.get("file_root", "files")
 
-    for i, ev in enumerate(data.get("scenario", [])):
-        if "time" not in ev or "kind" not in ev:
-            raise UsageError(f"{where}: key 'scenario[{i}]' needs 'time' and 'kind'")
-        rest = {k: v for k, v in ev.items() if k not in ("time", "kind")}
-        m.scenario.append(ScenarioEvent(_num(where, f"scenario[{i}].time", ev["time"]), str(ev["kind"]), rest))
-    m.scenario.sort(key=lambda e: e.time)
+    m.scenario = _scenario_events(where, data.get("scenario", []))
 
     for sec in DIALECT_SECTIONS:
         if sec in data:
             m.sections[sec] = data[sec]
     return m
+
+
+def _scenario_events(where: str, entries: Any) -> list[ScenarioEvent]:
+    if not isinstance(entries, list):
+        raise UsageError(f"{where}: key 'scenario' must be an array of tables ([[scenario]])")
+    events = []
+    for i, ev in enumerate(entries):
+        if not isinstance(ev, dict) or "time" not in ev or "kind" not in ev:
+            raise UsageError(f"{where}: key 'scenario[{i}]' needs 'time' and 'kind'")
+        rest = {k: v for k, v in ev.items() if k not in ("time", "kind")}
+        events.append(ScenarioEvent(_num(where, f"scenario[{i}].time", ev["time"]), str(ev["kind"]), rest))
+    return sorted(events, key=lambda e: e.time)
+
+
+def load_scenario(path: str | Path) -> list[ScenarioEvent]:
+    """A scenario file (``--scenario``): ``[[scenario]]`` tables as in a machine file, nothing else."""
+    p = Path(path)
+    try:
+        data = tomllib.loads(p.read_text(encoding="utf-8"))
+    except OSError as e:
+        raise UsageError(f"cannot read scenario file {p}: {e.strerror}") from None
+    except tomllib.TOMLDecodeError as e:
+        raise UsageError(f"{p}: not valid TOML: {e}") from None
+    for key in data:
+        if key != "scenario":
+            raise UsageError(f"{p}: unknown key '{key}' (a scenario file holds only [[scenario]] tables)")
+    return _scenario_events(str(p), data.get("scenario", []))
 
 
 def _only(where: str, table: str, value: Any, allowed: set[str]) -> None:

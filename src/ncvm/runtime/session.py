@@ -32,8 +32,10 @@ class RunOptions:
     echo: bool = False  # print operator output to stdout as it happens
     hook: StepHook | None = None
     extra_sinks: list[CanonSink] = field(default_factory=list)
-    keys: Path | None = None
-    scenario: Path | None = None
+    keys: Path | None = None  # operator key presses and typed values (a key script) for dialog programs
+    scenario: Path | None = None  # scenario file: inputs, probe triggers, ... over simulated time
+    screen: Path | None = None  # save the operator screen as it stands at the end (PNG)
+    screen_dir: Path | None = None  # save one screen picture per wait for the operator (softkey, input)
     on_session: Callable[["Session"], None] | None = None  # told of the session as soon as it exists
 
 
@@ -62,6 +64,8 @@ class Session:
         self.canon.message = self._message_fanout(self.canon.message)
         self.kernel = NcKernel(machine, self.canon)
         self._store: Store | None = None
+        #: the operator screen of dialects that have one (CPL dialogs); anything with ``save_png(path)``
+        self.screen = None
         if self.options.on_session:
             self.options.on_session(self)
 
