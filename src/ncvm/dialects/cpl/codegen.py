@@ -604,8 +604,8 @@ class Gen:
             i = pair[i]["end"] + 1 if type(s) in (A.If, A.Case, A.For, A.While, A.Repeat) else i + 1
         return n
 
-    def structured(self, a: int, b: int) -> None:
-        k = self.count(a, b)
+    def structured(self, a: int, b: int, extra: int = 0) -> None:
+        k = self.count(a, b) + extra
         if k:
             self.emit(f"_n += {k}")
         i = a
@@ -652,8 +652,7 @@ class Gen:
                 end = pair[i]["end"]
                 cond = self.condition(s.cond)
                 with self.src.block(f"while {cond}:", s.line):
-                    self.structured(i + 1, end)
-                    self.emit("_n += 1")
+                    self.structured(i + 1, end, extra=1)
                     self.emit(f"if _n > _lim: _runaway({s.line})", self.stmts[end].line)
                 i = end + 1
             elif t is A.Repeat:
@@ -713,7 +712,7 @@ class Gen:
             test = f"({counter} <= {fe} if {fs} >= 0 else {counter} >= {fe})"
         nxt = self.stmts[end]
         with self.src.block(f"while {test}:", s.line):
-            self.structured(i + 1, end)
+            self.structured(i + 1, end, extra=1)
             if const_step is not None:
                 inc_code = f"({counter} + {step_code})"
             else:
@@ -724,7 +723,6 @@ class Gen:
                 self.emit(f"{counter} = {inc_code}", nxt.line)
             else:
                 self.store(v, inc_code, inc_ty, nxt.line)
-            self.emit("_n += 1")
             self.emit(f"if _n > _lim: _runaway({s.line})", nxt.line)
 
     # -- dispatch code (programs with GOTO) ---------------------------------------------------
@@ -938,13 +936,14 @@ INLINE = {
     "SIN": "_msin({0} * 0.017453292519943295)",
     "COS": "_mcos({0} * 0.017453292519943295)",
     "ATAN": "(_matan({0}) * 57.29577951308232)",
+    "SQRT": "_msqrt({0})",  # a negative argument raises ValueError: RUNTIME ERROR CPL029
 }
 
 HELPER_NAMES = (
     "_rt", "_st", "_G", "_PM", "_EP", "_f32", "_toi", "_tor", "_tod", "_tob", "_tos", "_bad_assign", "_cond",
     "_logic", "_lnot", "_ix", "_sv", "_view", "_setf", "_midw", "_dim", "_pdim", "_gfield", "_gset_s", "_pint",
     "_call", "_q", "_drain", "_wait", "_prn", "_Block", "_loose", "_word", "_mval", "_modal", "_modal_call",
-    "_runaway", "_hook", "_caseval", "_nocall", "_msin", "_mcos", "_matan",
+    "_runaway", "_hook", "_caseval", "_nocall", "_msin", "_mcos", "_matan", "_msqrt",
 ) + tuple(f"_F_{name.replace('$', '_S')}" for name in FUNCTIONS)
 
 

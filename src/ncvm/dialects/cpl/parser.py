@@ -607,6 +607,9 @@ def parse_program(path: str, text: str, calls: dict | None = None) -> A.Program:
             if item.has_colon and any(isinstance(s, A.Wait) for s in prog.stmts[start:]):
                 prog.diagnostics.append(diag("CPL009", "put the other statements in their own blocks", path,
                                              item.lineno, None, item.number))
+            if item.has_colon and any(isinstance(s, A.CallStmt) for s in prog.stmts[start:]):
+                prog.diagnostics.append(diag("CPL014", "put the other statements in their own blocks", path,
+                                             item.lineno, None, item.number))
         else:
             try:
                 blk = parse_nc(item.text, item.lineno, calls)

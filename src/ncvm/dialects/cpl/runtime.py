@@ -101,7 +101,7 @@ class CplRuntime:
             "_modal_call": lambda line: self.modal_call(path, line),
             "_runaway": lambda line: self.session.steps.runaway(path, line),
             "_hook": self._hook_for(path), "_caseval": _caseval, "_nocall": self.nocall,
-            "_msin": math.sin, "_mcos": math.cos, "_matan": math.atan,
+            "_msin": math.sin, "_mcos": math.cos, "_matan": math.atan, "_msqrt": math.sqrt,
         }
         for name, b in FUNCTIONS.items():
             h[f"_F_{name.replace('$', '_S')}"] = b.impl
@@ -160,6 +160,8 @@ class CplRuntime:
             code, detail = "CPL035", "a field is used before its DIM"
         elif isinstance(e, IndexError):
             code, detail = "CPL031", ""
+        elif isinstance(e, ValueError):
+            code, detail = "CPL029", "argument outside the domain of the function (SQRT of a negative number?)"
         elif isinstance(e, OverflowError):
             code, detail = "CPL027", "number too large"
         elif isinstance(e, RecursionError):
