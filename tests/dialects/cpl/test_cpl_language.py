@@ -229,3 +229,15 @@ def test_parameters_not_passed_are_nul_and_views_convert(tmp_path, run_text):
     assert (v["#A%"], v["#B!"], v["#MISSING?"], v["#S$"]) == (4, 4.0, True, "TXT")
     r = run_text('10 CALL VIEW [2.5, "TXT"]\nM30\n', name="q.cpl", machine=mill(tmp_path))
     assert r["error"]["code"] == "CPL021"
+
+
+@pytest.mark.parametrize("text, code", [
+    ("10 X =\n", "CPL001"), ("10 IF THEN\n", "CPL001"), ("N10 G1 X[\n", "CPL001"), ('10 X = "abc\n', "CPL001"),
+    ("10 X(1,2,3)=1\n", "CPL001"), ("N10 G1 X1 X2\n", "CPL001"), ('10 X = "A" + 1\n', "CPL032"),
+    ("10 I% = 99999999999\n", "CPL027"), ('10 A$ = "G1 Q"\nN20 [A$]\n', "CPL001"), ("10 @101 = 1\n", "CPL001"),
+    ("10 @_R(0) = 1\n", "CPL031"), ("10 X% = 5 AND TRUE\n", "CPL032"), ("10 WHILE 1 DO\n20 END\n", "CPL032"),
+    ('10 X = CHR$(300)\n', "CPL021"), ("10 Y = P1 + 1\n", "CPL020"), ("10 X = 1 / 0.0\n", "CPL028"),
+])
+def test_malformed_programs_give_codes_not_tracebacks(run_text, text, code):
+    r = run_text(text, name="bad.cpl")
+    assert r["status"] == "error" and r["error"]["code"] == code, r["error"]

@@ -280,6 +280,8 @@ class Gen:
         if ty == "N":
             return "None"
         if target_type == "I":
+            if isinstance(e, A.Num) and ty == "I" and not -2147483648 <= e.value <= 2147483647:
+                raise GenError("CPL027", f"{e.value} outside -2147483648..2147483647")
             if ty == "I":
                 if isinstance(e, (A.Num, A.Var, A.Func)):
                     return code
