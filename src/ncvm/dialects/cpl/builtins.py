@@ -188,6 +188,40 @@ def f_val(s):
     return sign * (float(text) if "." in text else int(text))
 
 
+#: standard output formats (digest §11.D7): INTEGER 9 places, REAL 4.3, DOUBLE 9.6
+STANDARD = {"I": (9, 0), "R": (8, 3), "D": (16, 6)}
+
+
+def format_number(v, width: int, decimals: int) -> str:
+    """Right-justified in ``width`` places with ``decimals`` decimals; '*' when it does not fit (§6.3)."""
+    text = f"{v:.{decimals}f}" if decimals or isinstance(v, float) else str(v)
+    if decimals == 0 and isinstance(v, float):
+        text = f"{v:.0f}"
+    return text.rjust(width) if len(text) <= width else "*" * width
+
+
+def f_str(*args):
+    """STR$([format,] value): a number as text, in a '#'/'.' template or the standard format (manual §5.8)."""
+    *given, vtype = args
+    if len(given) == 1:
+        value, fmt = given[0], None
+    else:
+        fmt, value = _s(given[0], "STR$"), given[1]
+    value = _num(value, "STR$")
+    if fmt is None:
+        width, decimals = STANDARD["I" if isinstance(value, int) else ("D" if vtype == "D" else "R")]
+        return format_number(value, width, decimals)
+    i = next((k for k, c in enumerate(fmt) if c == "#"), -1)
+    if i < 0:
+        return fmt
+    j = i
+    while j < len(fmt) and fmt[j] in "#.":
+        j += 1
+    field = fmt[i:j]
+    decimals = len(field) - field.index(".") - 1 if "." in field else 0
+    return fmt[:i] + format_number(value, len(field), decimals) + fmt[j:]
+
+
 def f_mpos(rt, sel, axtype=1, chan=None):
     """MPOS: the interpolated command position of an axis in the machine coordinate system (manual §4.2.2).
 
@@ -226,6 +260,7 @@ FUNCTIONS: dict[str, Builtin] = {
     "CHR$": Builtin(f_chr, 1, 1, "S", "§5.7 L3502"),
     "VAL": Builtin(f_val, 1, 1, "?", "§5.9 L3541"),
     "TRIM$": Builtin(f_trim, 1, 2, "S", "§5.10 L3571"),
+    "STR$": Builtin(f_str, 1, 2, "S", "§5.8 L3514"),
     "MPOS": Builtin(f_mpos, 1, 3, "R", "§4.2.2 L1539", rt=True),
 }
 

@@ -212,6 +212,8 @@ class Gen:
         if len(codes) == 1 and types[0] in NUMERIC and e.name in INLINE:
             return INLINE[e.name].format(codes[0]), res
         fn = f"_F_{e.name.replace('$', '_S')}"
+        if e.name == "STR$":
+            codes.append(repr(types[-1]))  # the standard format depends on the value's type
         args = ", ".join((["_rt"] if b.rt else []) + codes)
         return f"{fn}({args})", res
 
