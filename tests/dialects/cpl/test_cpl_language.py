@@ -241,3 +241,15 @@ def test_parameters_not_passed_are_nul_and_views_convert(tmp_path, run_text):
 def test_malformed_programs_give_codes_not_tracebacks(run_text, text, code):
     r = run_text(text, name="bad.cpl")
     assert r["status"] == "error" and r["error"]["code"] == code, r["error"]
+
+
+def test_prn_message_window_formats(run_text):
+    text = ('10 I% = 42 : R = 2.5 : D! = 2.5 : B? = TRUE\n'
+            '20 PRN#(0,"I",I%,"R",R,"D",D!,"B",B?)\n'
+            '30 PRN#(0,"VALUE ##.### MM",(37/3),"!")\n'
+            '40 LJUST\n'
+            '50 PRN#(0,"I",I%,"R",R)\n'
+            '60 PRN#(0,"TOO BIG ##",123)\nM30\n')
+    r = run_text(text, name="p.cpl")
+    assert r["output"] == ["I       42R   2.500D        2.500000BTRUE", "VALUE 12.333 MM!", "I42R2.500",
+                           "TOO BIG **"]

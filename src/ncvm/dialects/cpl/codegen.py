@@ -514,8 +514,12 @@ class Gen:
         if s.name == "PRN#":
             if not s.args:
                 raise GenError("CPL001", "PRN# needs a file number")
-            args = ", ".join(self.arg(a) for a in s.args)
-            self.emit(f"_prn({args})", line)
+            codes, types = [], []
+            for a in s.args:
+                c, ty = self.ex(a) if a is not None else ("None", "N")
+                codes.append(c)
+                types.append(ty)
+            self.emit(f"_prn({''.join(types[1:])!r}, {', '.join(codes)})", line)
             return
         raise GenError("CPL037", f"{s.name} (chapters 4-9 of the manual come in a later version)")
 

@@ -17,7 +17,7 @@ from ...diagnostics import Frame, RuntimeFault, Span
 from ...nc.block import Block, DinSyntaxError, parse_din_line
 from ...nc.canon import Src
 from . import values as V
-from .builtins import FUNCTIONS
+from .builtins import FUNCTIONS, STANDARD, format_number
 from .codegen import HELPER_NAMES, generate
 from .errors import CplError, fault, message
 from .linker import SUB_EXTENSIONS, LinkResult, call_table, link_one
@@ -373,21 +373,51 @@ class CplRuntime:
         raise CplError("CPL039", "no scenario event sets the input")
 
     # -- PRN#(0, ...) -------------------------------------------------------------------------
-    def prn(self, channel, *items) -> None:
+    def prn(self, types: str, channel, *items) -> None:
+        """PRN#(0, ...): a line in the message window, formatted as PRN# formats a record (manual §6.3)."""
         if channel != 0:
             raise CplError("CPL037", "PRN# to files (chapter 6) comes in a later version; PRN#(0,...) writes "
                                      "to the message window")
-        self.session.say("".join(_format(V.sv(x)) for x in items))
+        self.session.say(format_record(items, types, self.justify == "L"))
 
 
-def _format(v) -> str:
-    if v is None:
-        return ""
-    if v is True or v is False:
-        return "TRUE" if v else "FALSE"
-    if isinstance(v, float):
-        return f"{v:.3f}"
-    return str(v)
+def format_record(items, types: str, left: bool) -> str:
+    """Strings as they are; a '#'/'.' template in a string takes the next number; other numbers in the
+    standard format (INTEGER 9 places, REAL 4.3, DOUBLE 9.6), without leading blanks under LJUST."""
+    out: list[str] = []
+    slots: list[tuple[int, int, int, int]] = []  # (part index, start, width, decimals) of open templates
+    for item, ty in zip(items, types):
+        v = V.sv(item)
+        if v is None:
+            continue
+        if isinstance(v, str):
+            k = len(out)
+            i = 0
+            while i < len(v):
+                if v[i] == "#":
+                    j = i
+                    while j < len(v) and v[j] in "#.":
+                        j += 1
+                    run = v[i:j]
+                    dec = len(run) - run.index(".") - 1 if "." in run else 0
+                    slots.append((k, i, j - i, dec))
+                    i = j
+                else:
+                    i += 1
+            out.append(v)
+            continue
+        if v is True or v is False:
+            out.append("TRUE" if v else "FALSE")
+            continue
+        if slots:
+            k, start, width, dec = slots.pop(0)
+            text = format_number(v, width, dec)
+            out[k] = out[k][:start] + text + out[k][start + width:]
+            continue
+        width, dec = STANDARD["I" if isinstance(v, int) else ("D" if ty in ("D", "?") else "R")]
+        text = format_number(v, width, dec)
+        out.append(text.lstrip(" ") if left else text)
+    return "".join(out)
 
 
 def _bad_assign(detail: str):
