@@ -18,7 +18,6 @@ from .values import f32
 #: parameter Pn seen through its suffix (digest §4.8): the conversion applied to the passed value
 PARAM_VIEW = {"%": "_pint", "": "_tor", "!": "_tod", "?": "_tob", "$": "_tos"}
 SUFFIX_TAG = {"%": "i", "": "r", "!": "d", "?": "b", "$": "s"}
-CONVERT = {"I": "_toi", "R": "_tor", "D": "_tod", "B": "_tob", "S": "_tos"}
 AXIS_LETTERS = set("XYZABCUVW")
 NUMERIC = ("I", "R", "D")
 
@@ -55,7 +54,6 @@ class Gen:
         self.consts: list = []
         self.tmp = 0
         self.fields = ln.fields
-        self.diags: list = []
         self.cur = None
         self.max_param = 0
 
@@ -787,7 +785,6 @@ class Gen:
     def _open(self, k: int) -> None:
         self.emit(f"if _pc == {k}:")
         self.src._indent += 1
-        self._chunk_start = len(self.src.lines)
 
     def _close(self, nxt: int) -> None:
         self.emit(f"_pc = {nxt}")
