@@ -230,6 +230,16 @@ def f_mpos(rt, sel, axtype=1, chan=None):
     return rt.machine_position(sel)
 
 
+def f_cpos(rt, sel, seltype=1):
+    """CPOS: the last programmed absolute position of a coordinate, at block preparation (manual §4.2.1)."""
+    return rt.programmed_position(sel)
+
+
+def f_axo(rt, sel, seltype=1):
+    """AXO: the last activated G92 shift of a coordinate, at block preparation (manual §4.2.1)."""
+    return rt.g92_shift(sel)
+
+
 @dataclass(frozen=True, slots=True)
 class Builtin:
     impl: Callable
@@ -262,6 +272,8 @@ FUNCTIONS: dict[str, Builtin] = {
     "TRIM$": Builtin(f_trim, 1, 2, "S", "§5.10 L3571"),
     "STR$": Builtin(f_str, 1, 2, "S", "§5.8 L3514"),
     "MPOS": Builtin(f_mpos, 1, 3, "R", "§4.2.2 L1539", rt=True),
+    "CPOS": Builtin(f_cpos, 1, 2, "R", "§4.2.1 L1404", rt=True),
+    "AXO": Builtin(f_axo, 1, 2, "R", "§4.2.1 L1388", rt=True),
 }
 
 __all__ = ["FUNCTIONS", "Builtin", "CharField"]

@@ -8,14 +8,17 @@ therefore see the executed position, stale without a WAIT, exactly as the manual
 
 from __future__ import annotations
 
+import copy
+import itertools
 import math
 import traceback
 from collections import deque
 from pathlib import Path
 
 from ...diagnostics import Frame, RuntimeFault, Span
+from ...machine.model import PlcImage, SimClock
 from ...nc.block import Block, DinSyntaxError, parse_din_line
-from ...nc.canon import Src
+from ...nc.canon import Canon, Src
 from . import values as V
 from .builtins import FUNCTIONS, STANDARD, format_number
 from .codegen import HELPER_NAMES, generate
@@ -43,6 +46,9 @@ class CplRuntime:
         self.globals: dict = {}
         self.perm = Permanents(session)
         self.queue: deque = deque()
+        self.executed = 0  # blocks taken from the queue and executed so far
+        self._shadow = None  # the NC state after every prepared block (see prepared_kernel)
+        self._shadow_at = 0
         self.modal = [None]
         self.calls = call_table(self.machine)
         self._modal_busy = False
@@ -271,6 +277,7 @@ class CplRuntime:
 
     def execute_one(self) -> None:
         blk = self.queue.popleft()
+        self.executed += 1
         if not self.kernel.ended:
             self.kernel.execute(blk)
 
@@ -279,6 +286,7 @@ class CplRuntime:
         q = self.queue
         execute = self.kernel.execute
         kernel = self.kernel
+        self.executed += len(q)
         while q:
             blk = q.popleft()
             if kernel.ended:
@@ -286,6 +294,25 @@ class CplRuntime:
                 break
             execute(blk)
         self.t_prep = max(self.t_prep, self.machine.clock.now)
+
+    def prepared_kernel(self):
+        """The NC state after every *prepared* block: what CPOS and AXO read (manual §4.2.1, values at
+        block preparation), while MPOS reads the executed state. A scratch copy of the kernel runs the
+        blocks still in the queue, with no canon output and its own clock and PLC image."""
+        if self._shadow is None or self._shadow_at < self.executed:
+            k = self.kernel
+            shadow = copy.copy(k)
+            m = copy.copy(k.machine)
+            m.clock = SimClock(k.machine.clock.now, k.machine.clock.start_epoch)
+            m.plc = PlcImage(dict(m.plc.inputs), dict(m.plc.outputs), dict(m.plc.flags), dict(m.plc.words))
+            shadow.machine = m
+            shadow.canon = Canon([])
+            shadow.prog, shadow.g92, shadow.offset_vec = list(k.prog), list(k.g92), list(k.offset_vec)
+            self._shadow, self._shadow_at = shadow, self.executed
+        for blk in itertools.islice(self.queue, self._shadow_at - self.executed, None):
+            self._shadow.execute(blk)
+            self._shadow_at += 1
+        return self._shadow
 
     def loose(self, g, m, words, loose, n, msg, src):
         """A block with standalone [A$] words: each value is NC text such as "G1" (manual L2110)."""
@@ -307,17 +334,29 @@ class CplRuntime:
             words.update(blk.words)
         return Block(tuple(g), tuple(m), words, n, msg, src)
 
-    def machine_position(self, sel) -> float:
+    def axis(self, sel) -> int:
+        """Axis selection by name or 1-based index (one channel: coordinates are the axes)."""
         names = self.kernel.axis_names
         if isinstance(sel, str):
             if sel.upper() not in names:
                 raise CplError("CPL029", f"axis {sel!r} is not configured")
-            i = names.index(sel.upper())
-        elif sel.__class__ is int and 1 <= sel <= len(names):
-            i = sel - 1
-        else:
-            raise CplError("CPL029", f"axis index {sel!r} is not configured")
-        return self.kernel.machine_pos[i] / self.kernel.scale
+            return names.index(sel.upper())
+        if sel.__class__ is int and 1 <= sel <= len(names):
+            return sel - 1
+        if sel is None:
+            raise TypeError("NUL")
+        raise CplError("CPL029", f"axis index {sel!r} is not configured")
+
+    def machine_position(self, sel) -> float:
+        return self.kernel.machine_pos[self.axis(sel)] / self.kernel.scale
+
+    def programmed_position(self, sel) -> float:
+        k = self.prepared_kernel()
+        return k.prog[self.axis(sel)] / k.scale
+
+    def g92_shift(self, sel) -> float:
+        k = self.prepared_kernel()
+        return k.g92[self.axis(sel)] / k.scale
 
     # -- WAIT with parameters (manual §4.1) ---------------------------------------------------
     def advance(self, t_end: float) -> None:
