@@ -581,7 +581,7 @@ class Gen:
                     self.emit(f"_q(_Block({g}, {m}, {words}, {s.n!r}, {s.msg!r}, {src}))", line)
             if 80 in g_const:
                 self.emit("_modal[0] = None", line)
-            elif has_motion:
+            elif has_motion and self.ln.modal_calls:
                 self.emit(f"if _modal[0] is not None: _modal_call({line})", line)
         if s.wait:
             self.emit("_drain()", line)
