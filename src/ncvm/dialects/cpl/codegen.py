@@ -101,9 +101,9 @@ class Gen:
                     return f"(~{code})", "I"
                 if ty in ("?",):
                     return f"_lnot({code})", "?"
-                raise GenError("CPL032", f"NOT of a {_tname(ty)} value")
+                raise GenError("CPL032", f"NOT of {_a(ty)} value")
             if ty not in NUMERIC + ("?",):
-                raise GenError("CPL032", f"sign of a {_tname(ty)} value")
+                raise GenError("CPL032", f"sign of {_a(ty)} value")
             return (f"(-{code})" if e.op == "-" else code), ty
         if t is A.Func:
             return self.func(e)
@@ -125,7 +125,7 @@ class Gen:
             for p in parts:
                 c, ty = self.ex(p)
                 if ty not in ("S", "?"):
-                    raise GenError("CPL032", f"'+' joins strings, not a {_tname(ty)} value")
+                    raise GenError("CPL032", f"'+' joins strings, not {_a(ty)} value")
                 codes.append(c)
             return "(" + " + ".join(codes) + ")", "S"
         lc, lt = self.ex(e.left)
@@ -142,7 +142,7 @@ class Gen:
         if op in ("+", "-", "*", "/"):
             for ty in (lt, rt):
                 if ty not in NUMERIC + ("?",):
-                    raise GenError("CPL032", f"'{op}' of a {_tname(ty)} value")
+                    raise GenError("CPL032", f"'{op}' of {_a(ty)} value")
             if op == "/":
                 ty = "D" if "D" in (lt, rt) or "?" in (lt, rt) else "R"
                 return f"({lc} / {rc})", ty
@@ -959,4 +959,10 @@ def generate(ln, hook: bool = False) -> tuple[UnitCode | None, list]:
         return g.generate(), []
     except GenError as e:
         s = e.stmt or g.cur
-        return None, [diag(e.code, e.detail, ln.prog.path, s.line if s else 1, None, s.cpl if s else None)]
+        return None, [diag(e.code, e.detail, ln.prog.path, s.line if s else 1, (s.col or None) if s else None,
+                           s.cpl if s else None)]
+
+
+def _a(ty: str) -> str:
+    name = _tname(ty)
+    return ("an " if name[0] in "AEIOU" else "a ") + name
