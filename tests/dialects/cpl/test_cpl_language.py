@@ -229,3 +229,27 @@ def test_parameters_not_passed_are_nul_and_views_convert(tmp_path, run_text):
     assert (v["#A%"], v["#B!"], v["#MISSING?"], v["#S$"]) == (4, 4.0, True, "TXT")
     r = run_text('10 CALL VIEW [2.5, "TXT"]\nM30\n', name="q.cpl", machine=mill(tmp_path))
     assert r["error"]["code"] == "CPL021"
+
+
+@pytest.mark.parametrize("text, code", [
+    ("10 X =\n", "CPL001"), ("10 IF THEN\n", "CPL001"), ("N10 G1 X[\n", "CPL001"), ('10 X = "abc\n', "CPL001"),
+    ("10 X(1,2,3)=1\n", "CPL001"), ("N10 G1 X1 X2\n", "CPL001"), ('10 X = "A" + 1\n', "CPL032"),
+    ("10 I% = 99999999999\n", "CPL027"), ('10 A$ = "G1 Q"\nN20 [A$]\n', "CPL001"), ("10 @101 = 1\n", "CPL001"),
+    ("10 @_R(0) = 1\n", "CPL031"), ("10 X% = 5 AND TRUE\n", "CPL032"), ("10 WHILE 1 DO\n20 END\n", "CPL032"),
+    ('10 X = CHR$(300)\n', "CPL021"), ("10 Y = P1 + 1\n", "CPL020"), ("10 X = 1 / 0.0\n", "CPL028"),
+])
+def test_malformed_programs_give_codes_not_tracebacks(run_text, text, code):
+    r = run_text(text, name="bad.cpl")
+    assert r["status"] == "error" and r["error"]["code"] == code, r["error"]
+
+
+def test_prn_message_window_formats(run_text):
+    text = ('10 I% = 42 : R = 2.5 : D! = 2.5 : B? = TRUE\n'
+            '20 PRN#(0,"I",I%,"R",R,"D",D!,"B",B?)\n'
+            '30 PRN#(0,"VALUE ##.### MM",(37/3),"!")\n'
+            '40 LJUST\n'
+            '50 PRN#(0,"I",I%,"R",R)\n'
+            '60 PRN#(0,"TOO BIG ##",123)\nM30\n')
+    r = run_text(text, name="p.cpl")
+    assert r["output"] == ["I       42R   2.500D        2.500000BTRUE", "VALUE 12.333 MM!", "I42R2.500",
+                           "TOO BIG **"]

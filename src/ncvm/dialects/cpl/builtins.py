@@ -188,12 +188,56 @@ def f_val(s):
     return sign * (float(text) if "." in text else int(text))
 
 
+#: standard output formats (digest §11.D7): INTEGER 9 places, REAL 4.3, DOUBLE 9.6
+STANDARD = {"I": (9, 0), "R": (8, 3), "D": (16, 6)}
+
+
+def format_number(v, width: int, decimals: int) -> str:
+    """Right-justified in ``width`` places with ``decimals`` decimals; '*' when it does not fit (§6.3)."""
+    text = f"{v:.{decimals}f}" if decimals or isinstance(v, float) else str(v)
+    if decimals == 0 and isinstance(v, float):
+        text = f"{v:.0f}"
+    return text.rjust(width) if len(text) <= width else "*" * width
+
+
+def f_str(*args):
+    """STR$([format,] value): a number as text, in a '#'/'.' template or the standard format (manual §5.8)."""
+    *given, vtype = args
+    if len(given) == 1:
+        value, fmt = given[0], None
+    else:
+        fmt, value = _s(given[0], "STR$"), given[1]
+    value = _num(value, "STR$")
+    if fmt is None:
+        width, decimals = STANDARD["I" if isinstance(value, int) else ("D" if vtype == "D" else "R")]
+        return format_number(value, width, decimals)
+    i = next((k for k, c in enumerate(fmt) if c == "#"), -1)
+    if i < 0:
+        return fmt
+    j = i
+    while j < len(fmt) and fmt[j] in "#.":
+        j += 1
+    field = fmt[i:j]
+    decimals = len(field) - field.index(".") - 1 if "." in field else 0
+    return fmt[:i] + format_number(value, len(field), decimals) + fmt[j:]
+
+
 def f_mpos(rt, sel, axtype=1, chan=None):
     """MPOS: the interpolated command position of an axis in the machine coordinate system (manual §4.2.2).
 
     Reads what block *execution* has reached: without a WAIT, blocks still queued are not in it (§4.1).
     """
     return rt.machine_position(sel)
+
+
+def f_cpos(rt, sel, seltype=1):
+    """CPOS: the last programmed absolute position of a coordinate, at block preparation (manual §4.2.1)."""
+    return rt.programmed_position(sel)
+
+
+def f_axo(rt, sel, seltype=1):
+    """AXO: the last activated G92 shift of a coordinate, at block preparation (manual §4.2.1)."""
+    return rt.g92_shift(sel)
 
 
 @dataclass(frozen=True, slots=True)
@@ -226,7 +270,10 @@ FUNCTIONS: dict[str, Builtin] = {
     "CHR$": Builtin(f_chr, 1, 1, "S", "§5.7 L3502"),
     "VAL": Builtin(f_val, 1, 1, "?", "§5.9 L3541"),
     "TRIM$": Builtin(f_trim, 1, 2, "S", "§5.10 L3571"),
+    "STR$": Builtin(f_str, 1, 2, "S", "§5.8 L3514"),
     "MPOS": Builtin(f_mpos, 1, 3, "R", "§4.2.2 L1539", rt=True),
+    "CPOS": Builtin(f_cpos, 1, 2, "R", "§4.2.1 L1404", rt=True),
+    "AXO": Builtin(f_axo, 1, 2, "R", "§4.2.1 L1388", rt=True),
 }
 
 __all__ = ["FUNCTIONS", "Builtin", "CharField"]

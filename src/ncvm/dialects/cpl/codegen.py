@@ -18,7 +18,6 @@ from .values import f32
 #: parameter Pn seen through its suffix (digest §4.8): the conversion applied to the passed value
 PARAM_VIEW = {"%": "_pint", "": "_tor", "!": "_tod", "?": "_tob", "$": "_tos"}
 SUFFIX_TAG = {"%": "i", "": "r", "!": "d", "?": "b", "$": "s"}
-CONVERT = {"I": "_toi", "R": "_tor", "D": "_tod", "B": "_tob", "S": "_tos"}
 AXIS_LETTERS = set("XYZABCUVW")
 NUMERIC = ("I", "R", "D")
 
@@ -55,7 +54,6 @@ class Gen:
         self.consts: list = []
         self.tmp = 0
         self.fields = ln.fields
-        self.diags: list = []
         self.cur = None
         self.max_param = 0
 
@@ -103,9 +101,9 @@ class Gen:
                     return f"(~{code})", "I"
                 if ty in ("?",):
                     return f"_lnot({code})", "?"
-                raise GenError("CPL032", f"NOT of a {_tname(ty)} value")
+                raise GenError("CPL032", f"NOT of {_a(ty)} value")
             if ty not in NUMERIC + ("?",):
-                raise GenError("CPL032", f"sign of a {_tname(ty)} value")
+                raise GenError("CPL032", f"sign of {_a(ty)} value")
             return (f"(-{code})" if e.op == "-" else code), ty
         if t is A.Func:
             return self.func(e)
@@ -127,7 +125,7 @@ class Gen:
             for p in parts:
                 c, ty = self.ex(p)
                 if ty not in ("S", "?"):
-                    raise GenError("CPL032", f"'+' joins strings, not a {_tname(ty)} value")
+                    raise GenError("CPL032", f"'+' joins strings, not {_a(ty)} value")
                 codes.append(c)
             return "(" + " + ".join(codes) + ")", "S"
         lc, lt = self.ex(e.left)
@@ -144,7 +142,7 @@ class Gen:
         if op in ("+", "-", "*", "/"):
             for ty in (lt, rt):
                 if ty not in NUMERIC + ("?",):
-                    raise GenError("CPL032", f"'{op}' of a {_tname(ty)} value")
+                    raise GenError("CPL032", f"'{op}' of {_a(ty)} value")
             if op == "/":
                 ty = "D" if "D" in (lt, rt) or "?" in (lt, rt) else "R"
                 return f"({lc} / {rc})", ty
@@ -212,6 +210,8 @@ class Gen:
         if len(codes) == 1 and types[0] in NUMERIC and e.name in INLINE:
             return INLINE[e.name].format(codes[0]), res
         fn = f"_F_{e.name.replace('$', '_S')}"
+        if e.name == "STR$":
+            codes.append(repr(types[-1]))  # the standard format depends on the value's type
         args = ", ".join((["_rt"] if b.rt else []) + codes)
         return f"{fn}({args})", res
 
@@ -280,6 +280,8 @@ class Gen:
         if ty == "N":
             return "None"
         if target_type == "I":
+            if isinstance(e, A.Num) and ty == "I" and not -2147483648 <= e.value <= 2147483647:
+                raise GenError("CPL027", f"{e.value} outside -2147483648..2147483647")
             if ty == "I":
                 if isinstance(e, (A.Num, A.Var, A.Func)):
                     return code
@@ -510,8 +512,12 @@ class Gen:
         if s.name == "PRN#":
             if not s.args:
                 raise GenError("CPL001", "PRN# needs a file number")
-            args = ", ".join(self.arg(a) for a in s.args)
-            self.emit(f"_prn({args})", line)
+            codes, types = [], []
+            for a in s.args:
+                c, ty = self.ex(a) if a is not None else ("None", "N")
+                codes.append(c)
+                types.append(ty)
+            self.emit(f"_prn({''.join(types[1:])!r}, {', '.join(codes)})", line)
             return
         raise GenError("CPL037", f"{s.name} (chapters 4-9 of the manual come in a later version)")
 
@@ -575,7 +581,7 @@ class Gen:
                     self.emit(f"_q(_Block({g}, {m}, {words}, {s.n!r}, {s.msg!r}, {src}))", line)
             if 80 in g_const:
                 self.emit("_modal[0] = None", line)
-            elif has_motion:
+            elif has_motion and self.ln.modal_calls:
                 self.emit(f"if _modal[0] is not None: _modal_call({line})", line)
         if s.wait:
             self.emit("_drain()", line)
@@ -604,8 +610,8 @@ class Gen:
             i = pair[i]["end"] + 1 if type(s) in (A.If, A.Case, A.For, A.While, A.Repeat) else i + 1
         return n
 
-    def structured(self, a: int, b: int) -> None:
-        k = self.count(a, b)
+    def structured(self, a: int, b: int, extra: int = 0) -> None:
+        k = self.count(a, b) + extra
         if k:
             self.emit(f"_n += {k}")
         i = a
@@ -652,8 +658,7 @@ class Gen:
                 end = pair[i]["end"]
                 cond = self.condition(s.cond)
                 with self.src.block(f"while {cond}:", s.line):
-                    self.structured(i + 1, end)
-                    self.emit("_n += 1")
+                    self.structured(i + 1, end, extra=1)
                     self.emit(f"if _n > _lim: _runaway({s.line})", self.stmts[end].line)
                 i = end + 1
             elif t is A.Repeat:
@@ -713,7 +718,7 @@ class Gen:
             test = f"({counter} <= {fe} if {fs} >= 0 else {counter} >= {fe})"
         nxt = self.stmts[end]
         with self.src.block(f"while {test}:", s.line):
-            self.structured(i + 1, end)
+            self.structured(i + 1, end, extra=1)
             if const_step is not None:
                 inc_code = f"({counter} + {step_code})"
             else:
@@ -724,7 +729,6 @@ class Gen:
                 self.emit(f"{counter} = {inc_code}", nxt.line)
             else:
                 self.store(v, inc_code, inc_ty, nxt.line)
-            self.emit("_n += 1")
             self.emit(f"if _n > _lim: _runaway({s.line})", nxt.line)
 
     # -- dispatch code (programs with GOTO) ---------------------------------------------------
@@ -781,7 +785,6 @@ class Gen:
     def _open(self, k: int) -> None:
         self.emit(f"if _pc == {k}:")
         self.src._indent += 1
-        self._chunk_start = len(self.src.lines)
 
     def _close(self, nxt: int) -> None:
         self.emit(f"_pc = {nxt}")
@@ -938,13 +941,14 @@ INLINE = {
     "SIN": "_msin({0} * 0.017453292519943295)",
     "COS": "_mcos({0} * 0.017453292519943295)",
     "ATAN": "(_matan({0}) * 57.29577951308232)",
+    "SQRT": "_msqrt({0})",  # a negative argument raises ValueError: RUNTIME ERROR CPL029
 }
 
 HELPER_NAMES = (
     "_rt", "_st", "_G", "_PM", "_EP", "_f32", "_toi", "_tor", "_tod", "_tob", "_tos", "_bad_assign", "_cond",
     "_logic", "_lnot", "_ix", "_sv", "_view", "_setf", "_midw", "_dim", "_pdim", "_gfield", "_gset_s", "_pint",
     "_call", "_q", "_drain", "_wait", "_prn", "_Block", "_loose", "_word", "_mval", "_modal", "_modal_call",
-    "_runaway", "_hook", "_caseval", "_nocall", "_msin", "_mcos", "_matan",
+    "_runaway", "_hook", "_caseval", "_nocall", "_msin", "_mcos", "_matan", "_msqrt",
 ) + tuple(f"_F_{name.replace('$', '_S')}" for name in FUNCTIONS)
 
 
@@ -955,4 +959,10 @@ def generate(ln, hook: bool = False) -> tuple[UnitCode | None, list]:
         return g.generate(), []
     except GenError as e:
         s = e.stmt or g.cur
-        return None, [diag(e.code, e.detail, ln.prog.path, s.line if s else 1, None, s.cpl if s else None)]
+        return None, [diag(e.code, e.detail, ln.prog.path, s.line if s else 1, (s.col or None) if s else None,
+                           s.cpl if s else None)]
+
+
+def _a(ty: str) -> str:
+    name = _tname(ty)
+    return ("an " if name[0] in "AEIOU" else "a ") + name

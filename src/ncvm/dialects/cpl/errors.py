@@ -28,6 +28,7 @@ CODES: dict[str, tuple[str, str]] = {
     "CPL011": ("duplicate LABEL constant in CASE", "digest §5.3"),
     "CPL012": ("invalid variable name", "§2.4.3"),
     "CPL013": ("address calling a sub-program must not use [ ]", "§2.1.1 L371"),
+    "CPL014": ("the CALL instruction must appear in its own separate CPL block", "§3.3 L1086"),
     "CPL020": ("VARIABLE NOT ASSIGNED", "§2.5 NUL (digest §4.4)"),
     "CPL021": ("INVALID ASSIGNMENT", "§5 L3545"),
     "CPL022": ("INVALID FIELD LIMIT", "§5.1 L3358"),

@@ -36,6 +36,7 @@ class Linked:
     calls: list = field(default_factory=list)  # (program name as written, din flag, stmt)
     fields: dict = field(default_factory=dict)  # local VarName -> dims count, for every DIMed local
     uses_goto: bool = False
+    modal_calls: bool = False  # the machine maps some address to a modal sub-program
     diagnostics: list = field(default_factory=list)
     unit: object = None  # the generated code (set by codegen, cached with the link table)
 
@@ -62,7 +63,7 @@ def link_one(path: str, text: str, calls: dict) -> Linked:
         return hit
     LINK_STATS["linked"] += 1
     prog = parse_program(path, text, calls)
-    ln = Linked(prog, key)
+    ln = Linked(prog, key, modal_calls=any(modal for _, modal in calls.values()))
     ln.diagnostics.extend(prog.diagnostics)
     if not prog.diagnostics:
         _pair(ln)

@@ -510,6 +510,8 @@ def parse_nc(text: str, lineno: int, calls: dict) -> A.NcBlock:
         if j < n and s[j] == "[":
             k = _close_bracket(s, j, lineno)
             e = _nc_expr(s[j + 1:k], lineno, j + 1)
+            if addr not in ("G", "M") and any(w.address == addr for w in blk.words):
+                raise ParseError("CPL001", f"address {addr} twice in one block", lineno, col)
             blk.words.append(A.NcWord(addr, None, e))
             i = k + 1
             continue
@@ -534,6 +536,8 @@ def parse_nc(text: str, lineno: int, calls: dict) -> A.NcBlock:
             continue
         if addr == "M" and value in (2, 30):
             blk.ends = True
+        if addr not in ("G", "M") and any(w.address == addr for w in blk.words):
+            raise ParseError("CPL001", f"address {addr} twice in one block", lineno, col)
         blk.words.append(A.NcWord(addr, value, None))
     return blk
 
@@ -606,6 +610,9 @@ def parse_program(path: str, text: str, calls: dict | None = None) -> A.Program:
                 continue
             if item.has_colon and any(isinstance(s, A.Wait) for s in prog.stmts[start:]):
                 prog.diagnostics.append(diag("CPL009", "put the other statements in their own blocks", path,
+                                             item.lineno, None, item.number))
+            if item.has_colon and any(isinstance(s, A.CallStmt) for s in prog.stmts[start:]):
+                prog.diagnostics.append(diag("CPL014", "put the other statements in their own blocks", path,
                                              item.lineno, None, item.number))
         else:
             try:

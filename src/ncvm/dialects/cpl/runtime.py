@@ -8,16 +8,19 @@ therefore see the executed position, stale without a WAIT, exactly as the manual
 
 from __future__ import annotations
 
+import copy
+import itertools
 import math
 import traceback
 from collections import deque
 from pathlib import Path
 
 from ...diagnostics import Frame, RuntimeFault, Span
+from ...machine.model import PlcImage, SimClock
 from ...nc.block import Block, DinSyntaxError, parse_din_line
-from ...nc.canon import Src
+from ...nc.canon import Canon, Src
 from . import values as V
-from .builtins import FUNCTIONS
+from .builtins import FUNCTIONS, STANDARD, format_number
 from .codegen import HELPER_NAMES, generate
 from .errors import CplError, fault, message
 from .linker import SUB_EXTENSIONS, LinkResult, call_table, link_one
@@ -43,6 +46,9 @@ class CplRuntime:
         self.globals: dict = {}
         self.perm = Permanents(session)
         self.queue: deque = deque()
+        self.executed = 0  # blocks taken from the queue and executed so far
+        self._shadow = None  # the NC state after every prepared block (see prepared_kernel)
+        self._shadow_at = 0
         self.modal = [None]
         self.calls = call_table(self.machine)
         self._modal_busy = False
@@ -101,7 +107,7 @@ class CplRuntime:
             "_modal_call": lambda line: self.modal_call(path, line),
             "_runaway": lambda line: self.session.steps.runaway(path, line),
             "_hook": self._hook_for(path), "_caseval": _caseval, "_nocall": self.nocall,
-            "_msin": math.sin, "_mcos": math.cos, "_matan": math.atan,
+            "_msin": math.sin, "_mcos": math.cos, "_matan": math.atan, "_msqrt": math.sqrt,
         }
         for name, b in FUNCTIONS.items():
             h[f"_F_{name.replace('$', '_S')}"] = b.impl
@@ -160,6 +166,8 @@ class CplRuntime:
             code, detail = "CPL035", "a field is used before its DIM"
         elif isinstance(e, IndexError):
             code, detail = "CPL031", ""
+        elif isinstance(e, ValueError):
+            code, detail = "CPL029", "argument outside the domain of the function (SQRT of a negative number?)"
         elif isinstance(e, OverflowError):
             code, detail = "CPL027", "number too large"
         elif isinstance(e, RecursionError):
@@ -269,6 +277,7 @@ class CplRuntime:
 
     def execute_one(self) -> None:
         blk = self.queue.popleft()
+        self.executed += 1
         if not self.kernel.ended:
             self.kernel.execute(blk)
 
@@ -277,6 +286,7 @@ class CplRuntime:
         q = self.queue
         execute = self.kernel.execute
         kernel = self.kernel
+        self.executed += len(q)
         while q:
             blk = q.popleft()
             if kernel.ended:
@@ -284,6 +294,25 @@ class CplRuntime:
                 break
             execute(blk)
         self.t_prep = max(self.t_prep, self.machine.clock.now)
+
+    def prepared_kernel(self):
+        """The NC state after every *prepared* block: what CPOS and AXO read (manual §4.2.1, values at
+        block preparation), while MPOS reads the executed state. A scratch copy of the kernel runs the
+        blocks still in the queue, with no canon output and its own clock and PLC image."""
+        if self._shadow is None or self._shadow_at < self.executed:
+            k = self.kernel
+            shadow = copy.copy(k)
+            m = copy.copy(k.machine)
+            m.clock = SimClock(k.machine.clock.now, k.machine.clock.start_epoch)
+            m.plc = PlcImage(dict(m.plc.inputs), dict(m.plc.outputs), dict(m.plc.flags), dict(m.plc.words))
+            shadow.machine = m
+            shadow.canon = Canon([])
+            shadow.prog, shadow.g92, shadow.offset_vec = list(k.prog), list(k.g92), list(k.offset_vec)
+            self._shadow, self._shadow_at = shadow, self.executed
+        for blk in itertools.islice(self.queue, self._shadow_at - self.executed, None):
+            self._shadow.execute(blk)
+            self._shadow_at += 1
+        return self._shadow
 
     def loose(self, g, m, words, loose, n, msg, src):
         """A block with standalone [A$] words: each value is NC text such as "G1" (manual L2110)."""
@@ -305,17 +334,29 @@ class CplRuntime:
             words.update(blk.words)
         return Block(tuple(g), tuple(m), words, n, msg, src)
 
-    def machine_position(self, sel) -> float:
+    def axis(self, sel) -> int:
+        """Axis selection by name or 1-based index (one channel: coordinates are the axes)."""
         names = self.kernel.axis_names
         if isinstance(sel, str):
             if sel.upper() not in names:
                 raise CplError("CPL029", f"axis {sel!r} is not configured")
-            i = names.index(sel.upper())
-        elif sel.__class__ is int and 1 <= sel <= len(names):
-            i = sel - 1
-        else:
-            raise CplError("CPL029", f"axis index {sel!r} is not configured")
-        return self.kernel.machine_pos[i] / self.kernel.scale
+            return names.index(sel.upper())
+        if sel.__class__ is int and 1 <= sel <= len(names):
+            return sel - 1
+        if sel is None:
+            raise TypeError("NUL")
+        raise CplError("CPL029", f"axis index {sel!r} is not configured")
+
+    def machine_position(self, sel) -> float:
+        return self.kernel.machine_pos[self.axis(sel)] / self.kernel.scale
+
+    def programmed_position(self, sel) -> float:
+        k = self.prepared_kernel()
+        return k.prog[self.axis(sel)] / k.scale
+
+    def g92_shift(self, sel) -> float:
+        k = self.prepared_kernel()
+        return k.g92[self.axis(sel)] / k.scale
 
     # -- WAIT with parameters (manual §4.1) ---------------------------------------------------
     def advance(self, t_end: float) -> None:
@@ -371,21 +412,51 @@ class CplRuntime:
         raise CplError("CPL039", "no scenario event sets the input")
 
     # -- PRN#(0, ...) -------------------------------------------------------------------------
-    def prn(self, channel, *items) -> None:
+    def prn(self, types: str, channel, *items) -> None:
+        """PRN#(0, ...): a line in the message window, formatted as PRN# formats a record (manual §6.3)."""
         if channel != 0:
             raise CplError("CPL037", "PRN# to files (chapter 6) comes in a later version; PRN#(0,...) writes "
                                      "to the message window")
-        self.session.say("".join(_format(V.sv(x)) for x in items))
+        self.session.say(format_record(items, types, self.justify == "L"))
 
 
-def _format(v) -> str:
-    if v is None:
-        return ""
-    if v is True or v is False:
-        return "TRUE" if v else "FALSE"
-    if isinstance(v, float):
-        return f"{v:.3f}"
-    return str(v)
+def format_record(items, types: str, left: bool) -> str:
+    """Strings as they are; a '#'/'.' template in a string takes the next number; other numbers in the
+    standard format (INTEGER 9 places, REAL 4.3, DOUBLE 9.6), without leading blanks under LJUST."""
+    out: list[str] = []
+    slots: list[tuple[int, int, int, int]] = []  # (part index, start, width, decimals) of open templates
+    for item, ty in zip(items, types):
+        v = V.sv(item)
+        if v is None:
+            continue
+        if isinstance(v, str):
+            k = len(out)
+            i = 0
+            while i < len(v):
+                if v[i] == "#":
+                    j = i
+                    while j < len(v) and v[j] in "#.":
+                        j += 1
+                    run = v[i:j]
+                    dec = len(run) - run.index(".") - 1 if "." in run else 0
+                    slots.append((k, i, j - i, dec))
+                    i = j
+                else:
+                    i += 1
+            out.append(v)
+            continue
+        if v is True or v is False:
+            out.append("TRUE" if v else "FALSE")
+            continue
+        if slots:
+            k, start, width, dec = slots.pop(0)
+            text = format_number(v, width, dec)
+            out[k] = out[k][:start] + text + out[k][start + width:]
+            continue
+        width, dec = STANDARD["I" if isinstance(v, int) else ("D" if ty in ("D", "?") else "R")]
+        text = format_number(v, width, dec)
+        out.append(text.lstrip(" ") if left else text)
+    return "".join(out)
 
 
 def _bad_assign(detail: str):
