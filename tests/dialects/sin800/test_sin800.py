@@ -188,3 +188,15 @@ def test_meas_m_stops_at_probe_trigger(tmp_path):
     assert r["status"] == "ok", r["error"]
     assert R(r, 93) == 42.5 and R(r, 94) == 10.0 and R(r, 1) == 42.5
     assert r["position"]["X"] == 42.5
+
+
+def test_debug_hook_sees_every_block(tmp_path):
+    seen = []
+    (tmp_path / "p.mpf").write_text("%MPF1\nN10 R1=1\nN20 L5\nN30 M30\n")
+    (tmp_path / "L5.spf").write_text("%SPF5\nR2=R1+1\nM17\n")
+    opts = RunOptions(state_dir=tmp_path / ".n", hook=lambda f, line, v: seen.append((Path(f).name, line, dict(v))))
+    result, _ = run(tmp_path / "p.mpf", options=opts)
+    assert result["status"] == "ok"
+    assert [(f, line) for f, line, _v in seen] == [("p.mpf", 2), ("p.mpf", 3), ("L5.spf", 2), ("L5.spf", 3),
+                                                    ("p.mpf", 4)]
+    assert seen[1][2] == {"R1": 1.0} and seen[3][2] == {"R1": 1.0, "R2": 2.0}

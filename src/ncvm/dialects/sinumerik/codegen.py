@@ -31,8 +31,9 @@ def _num(v: float) -> str:
 class UnitCodegen:
     """Turns one :class:`PartProgram` into Python source for ``_unit(_rt)``."""
 
-    def __init__(self, prog: PartProgram, unit: str, axis_names: tuple[str, ...]):
+    def __init__(self, prog: PartProgram, unit: str, axis_names: tuple[str, ...], debug: bool = False):
         self.prog = prog
+        self.debug = debug  # a debug build calls the step hook before every block
         self.unit = unit
         self.axes = axis_names
         self.src = PySource(f"<sin800 {unit} {prog.path}>")
@@ -152,6 +153,9 @@ class UnitCodegen:
             out.emit("if not _rt.block_skip:", line)
             out._indent += 1
         out.emit("_st += 1", line)
+        if self.debug:
+            out.emit("@SYNC_OUT", line)
+            out.emit(f"_rt.debug_block({line})", line)
         rec = _Record(self, blk)
         for it in blk.items:
             if isinstance(it, Word):

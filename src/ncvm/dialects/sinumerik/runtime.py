@@ -173,6 +173,11 @@ class Channel(SysMem):
                     return label
         self.no_block(number, line)
 
+    def debug_block(self, line: int) -> None:
+        """Debug builds: the step hook sees each block before it runs, with the R parameters set."""
+        R = self.R
+        self.counter.hook(self._current_path(), line, {f"R{n}": v for n, v in enumerate(R) if v != 0.0})
+
     def fault(self, code: str, message: str, line: int):
         raise RuntimeFault(code, message)
 
