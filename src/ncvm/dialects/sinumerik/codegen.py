@@ -22,6 +22,8 @@ from .reader import Arith, AtInstr, NcBlock, Note, Operand, PartProgram, Word
 #: internal G group of each G number the block record keeps, for G58/G59 (programmable ZO) and G16
 PROG_ZO = {58: 1, 59: 2}
 AXIS_CENTRE = {"X": "I", "Y": "J", "Z": "K"}
+#: M functions the kernel handles itself; any other goes to the PLC
+_STANDARD_M = frozenset((0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 17, 30))
 
 
 def _num(v: float) -> str:
@@ -525,6 +527,10 @@ class _Record:
                 out.emit(f"if _mo < 2: _lin(_K, _mo, {{{d}}}, {srcname})", line)
                 out.emit(f"else: _ex(_Block((), (), {{{d}}}, {self.blk.n!r}, None, {srcname}))", line)
         elif g or m or words or self.msg is not None:
+            # a machine-specific M function may hand PLC data to R parameters ([sin800] m_functions)
+            plc_m = any(x not in _STANDARD_M for x in m)
+            if plc_m:
+                out.emit("@SYNC_OUT", line)
             if all(c for _k, _v, c in words):
                 blk = Block(tuple(g), tuple(m), {eval(k): float(v) for k, v, _c in words}, self.blk.n,
                             self.msg, src)
@@ -535,6 +541,8 @@ class _Record:
                 d = ", ".join(f"{k}: {v}" for k, v, _c in words)
                 out.emit(f"_ex(_Block({tuple(g)!r}, {tuple(m)!r}, {{{d}}}, {self.blk.n!r}, {self.msg!r}, "
                          f"{srcname}))", line)
+            if plc_m:
+                out.emit("@SYNC_IN", line)
             if any(x in (0, 1, 2, 30) for x in m):
                 out.emit("if (_K.ended or _K.stopped_at) and _rt.halt(): return 1", line)
         if self.call is not None:
