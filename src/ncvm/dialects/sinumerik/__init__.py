@@ -52,10 +52,9 @@ def compile_unit(path: str, text: str, axis_names: tuple[str, ...], name: str, d
 class SubProgramLibrary:
     """Finds, reads and compiles sub-programs L<n> along the program path, once each."""
 
-    def __init__(self, machine, main_path: str, debug: bool = False):
+    def __init__(self, machine, debug: bool = False):
         self.machine = machine
         self.debug = debug
-        self.main_path = main_path
         self.units: dict[int, Unit | None] = {}
 
     def __call__(self, number: int) -> Unit | None:
@@ -112,7 +111,7 @@ class Sin800Dialect(Dialect):
         data = NcData.from_machine(machine)
         store = session.store
         data.overlay(store.items(NAMESPACE))
-        library = SubProgramLibrary(machine, path, debug)
+        library = SubProgramLibrary(machine, debug)
         channel = Channel(session, data, library)
         name = f"%{unit.program.kind}{unit.program.number}" if unit.program.kind else Path(path).name
         initial = list(channel.R)

@@ -19,9 +19,6 @@ from ...runtime.codegen import PySource
 from .atcodes import COMPARE
 from .reader import Arith, AtInstr, NcBlock, Note, Operand, PartProgram, Word
 
-#: internal G group of each G number the block record keeps, for G58/G59 (programmable ZO) and G16
-PROG_ZO = {58: 1, 59: 2}
-AXIS_CENTRE = {"X": "I", "Y": "J", "Z": "K"}
 #: M functions the kernel handles itself; any other goes to the PLC
 _STANDARD_M = frozenset((0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 17, 30))
 
@@ -44,7 +41,6 @@ class UnitCodegen:
         self.labels: dict[int, int] = {}  # block index -> label ordinal
         self.dynamic_jumps = False
         self.written: set[int] = set()  # R parameters the program writes by number
-        self._tmp = 0
 
     # -- constants and R names -------------------------------------------
     def const(self, value: object, prefix: str = "_C") -> str:
@@ -159,12 +155,16 @@ class UnitCodegen:
             out.emit("@SYNC_OUT", line)
             out.emit(f"_rt.debug_block({line})", line)
         rec = _Record(self, blk)
-        for it in blk.items:
+        items = blk.items
+        # does an item after position i run code that may change R parameters?
+        writes_after = [False] * len(items)
+        for i in range(len(items) - 2, -1, -1):
+            writes_after[i] = writes_after[i + 1] or isinstance(items[i + 1], (Arith, AtInstr))
+        for i, it in enumerate(items):
             if isinstance(it, Word):
-                rec.word(out, it)
+                rec.word(out, it, writes_after[i])
             elif isinstance(it, Arith):
                 out.emit(self._arith(it), line)
-                rec.changed = True
             elif isinstance(it, Note):
                 rec.note(it)
             elif isinstance(it, AtInstr):
@@ -252,7 +252,6 @@ class UnitCodegen:
         lines = self._statement(code, ops, line)
         for text in lines:
             emit(text, line)
-        rec.changed = True
         if has_ptr:
             emit("@SYNC_IN", line)
         return True
@@ -394,7 +393,6 @@ class _Record:
         self.m: list[int] = []
         self.words: list[tuple[str, str, bool]] = []  # (key expr, value expr, constant?)
         self.msg: str | None = None
-        self.changed = False  # an @ code or R word ran since the last word was read
         self.machine_coords = False
         self.call: str | None = None
         self.passes = "1"
@@ -408,7 +406,8 @@ class _Record:
         if it.text.upper().startswith("MSG"):
             self.msg = it.text[3:].lstrip(" ,:").strip()
 
-    def word(self, out: PySource, w: Word) -> None:
+    def word(self, out: PySource, w: Word, captured: bool = True) -> None:
+        """Add a DIN word; ``captured``: later items of the block may change the R parameter it reads."""
         cg = self.cg
         a = w.address
         if w.value is None and w.rref is None:
@@ -443,8 +442,8 @@ class _Record:
             return
         if a == "B" and "B" not in cg.axes:
             a = "R"  # SINUMERIK 8xx radius address for circles (B100, L4237)
-        if not const:
-            # values are captured when the word is read; later @ code in the block may change R
+        if not const and captured:
+            # the value is the one R has where the word stands; later @ code in the block may change R
             tmp = f"_w{self._captured}"
             self._captured += 1
             out.emit(f"{tmp} = {expr}", self.blk.line)
