@@ -209,3 +209,8 @@ def test_m94_loads_part_number_from_plc(tmp_path):
                        "N20 R62=R60+R61 M30\n", machine=machine)
     assert r["status"] == "ok", r["error"]
     assert R(r, 60) == 150.0 and R(r, 62) == 151.0 and r["position"]["X"] == 2.0
+
+
+def test_fault_inside_a_run_of_constant_blocks_names_its_line(tmp_path):
+    r = _run(tmp_path, "%MPF1\nG90 G0 X1\nY2\nG1 X3\nM30\n")  # G1 without any F word
+    assert r["error"]["code"] == "NC006" and r["error"]["line"] == 4 and r["steps"] >= 3

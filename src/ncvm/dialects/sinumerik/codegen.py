@@ -113,12 +113,20 @@ class UnitCodegen:
         self._scan_labels()
         body = PySource(self.src.filename)
         body._indent = 4
+        run: list[Block] = []
         for idx, blk in enumerate(self.prog.blocks):
             if idx in self.labels:
+                self._flush_run(body, run)
                 body._indent = 3
                 body.emit(f"if _blk <= {self.labels[idx]}:", blk.line)
                 body._indent = 4
+            plain = None if self.debug else self._plain_block(blk)
+            if plain is not None:
+                run.append(plain)
+                continue
+            self._flush_run(body, run)
             self._block(body, idx, blk)
+        self._flush_run(body, run)
         src = self.src
         src.emit("def _unit(_rt):", 0)
         src._indent = 1
@@ -143,6 +151,50 @@ class UnitCodegen:
         src.emit(sync_out)
         src.emit("_ctr.steps += _st")
         return src, self.consts
+
+    # -- runs of constant blocks -------------------------------------------
+    def _plain_block(self, blk: NcBlock) -> Block | None:
+        """The Block of a block made only of constant DIN words and notes, with nothing that calls,
+        ends, stops or needs the dialect (L, D, G16, G58/G59, M0/M1/M2/M17/M30); else None."""
+        if blk.skip:
+            return None
+        g: list[float] = []
+        m: list[int] = []
+        words: dict[str, float] = {}
+        msg = None
+        for it in blk.items:
+            if isinstance(it, Note):
+                if it.text.upper().startswith("MSG"):
+                    msg = it.text[3:].lstrip(" ,:").strip()
+                continue
+            if not isinstance(it, Word) or it.value is None or it.address in ("L", "D"):
+                return None
+            if it.address == "G":
+                if it.value in (16, 58, 59):
+                    return None
+                g.append(int(it.value) if it.value == int(it.value) else it.value)
+            elif it.address == "M":
+                if int(it.value) in (0, 1, 2, 17, 30) or int(it.value) not in _STANDARD_M:
+                    return None  # stops and ends need checks; PLC M functions may load R parameters
+                m.append(int(it.value))
+            else:
+                words["R" if it.address == "B" and "B" not in self.axes else it.address] = it.value
+        if not g and not m and not words and msg is None:
+            return Block((), (), {}, blk.n, None, Src(self.prog.path, blk.line))  # a block that only counts
+        return Block(tuple(g), tuple(m), words, blk.n, msg, Src(self.prog.path, blk.line))
+
+    def _flush_run(self, out: PySource, run: list[Block]) -> None:
+        """Consecutive constant blocks run from a tuple: one generated line instead of one per block."""
+        if not run:
+            return
+        line = run[0].src.line
+        todo = tuple(b for b in run if b.g or b.m or b.words or b.msg is not None)
+        out.emit(f"_st += {len(run)}", line)
+        if len(todo) == 1:
+            out.emit(f"_ex({self.const(todo[0], '_B')})", line)
+        elif todo:
+            out.emit(f"for _b in {self.const(todo, '_RUN')}: _ex(_b)", line)
+        run.clear()
 
     # -- one block -------------------------------------------------------
     def _block(self, out: PySource, idx: int, blk: NcBlock) -> None:
