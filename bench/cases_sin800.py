@@ -24,6 +24,6 @@ def cases() -> dict[str, Case]:
     return {
         "sin800_loop_arith": Case(_runner("loop_arith.mpf"), 100_000, "iterations/s"),
         "sin800_loop_motion": Case(_runner("loop_motion.mpf"), 100_000, "G1/s"),
-        "rs274_loop_arith": rs274_case(PEERS / "loop_arith.ngc", 100_000, "iterations/s"),
-        "rs274_loop_motion": rs274_case(PEERS / "loop_motion.ngc", 100_000, "G1/s"),
+        "rs274_sin800_loop_arith": rs274_case(PEERS / "loop_arith.ngc", 100_000, "iterations/s"),
+        "rs274_sin800_loop_motion": rs274_case(PEERS / "loop_motion.ngc", 100_000, "G1/s"),
     }

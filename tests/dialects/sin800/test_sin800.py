@@ -188,3 +188,29 @@ def test_meas_m_stops_at_probe_trigger(tmp_path):
     assert r["status"] == "ok", r["error"]
     assert R(r, 93) == 42.5 and R(r, 94) == 10.0 and R(r, 1) == 42.5
     assert r["position"]["X"] == 42.5
+
+
+def test_debug_hook_sees_every_block(tmp_path):
+    seen = []
+    (tmp_path / "p.mpf").write_text("%MPF1\nN10 R1=1\nN20 L5\nN30 M30\n")
+    (tmp_path / "L5.spf").write_text("%SPF5\nR2=R1+1\nM17\n")
+    opts = RunOptions(state_dir=tmp_path / ".n", hook=lambda f, line, v: seen.append((Path(f).name, line, dict(v))))
+    result, _ = run(tmp_path / "p.mpf", options=opts)
+    assert result["status"] == "ok"
+    assert [(f, line) for f, line, _v in seen] == [("p.mpf", 2), ("p.mpf", 3), ("L5.spf", 2), ("L5.spf", 3),
+                                                    ("p.mpf", 4)]
+    assert seen[1][2] == {"R1": 1.0} and seen[3][2] == {"R1": 1.0, "R2": 2.0}
+
+
+def test_m94_loads_part_number_from_plc(tmp_path):
+    """Manual L4305-4326: M94 transfers the part number from the PLC to R60, STOP DEC, then branch on it."""
+    machine = MACHINE + 'm_functions = { 94 = { R60 = "DB20.DW1" } }\n[sin800.plc.1]\nDB = { "20" = [0, 150] }\n'
+    r = _run(tmp_path, "%MPF1\nR60=0 R61=1\nM94\n@714 @126 R60 K100 K10 G0 G54 X1 @100 K20\nN10 G55 X2\n"
+                       "N20 R62=R60+R61 M30\n", machine=machine)
+    assert r["status"] == "ok", r["error"]
+    assert R(r, 60) == 150.0 and R(r, 62) == 151.0 and r["position"]["X"] == 2.0
+
+
+def test_fault_inside_a_run_of_constant_blocks_names_its_line(tmp_path):
+    r = _run(tmp_path, "%MPF1\nG90 G0 X1\nY2\nG1 X3\nM30\n")  # G1 without any F word
+    assert r["error"]["code"] == "NC006" and r["error"]["line"] == 4 and r["steps"] >= 3

@@ -37,11 +37,11 @@ class Unit:
     written: frozenset[int] = frozenset()
 
 
-def compile_unit(path: str, text: str, axis_names: tuple[str, ...], name: str) -> Unit:
+def compile_unit(path: str, text: str, axis_names: tuple[str, ...], name: str, debug: bool = False) -> Unit:
     prog, diags = read_program(path, text)
     if diags:
         raise CompileFailed(diags)
-    gen = UnitCodegen(prog, name, axis_names)
+    gen = UnitCodegen(prog, name, axis_names, debug)
     source, consts = gen.build()
     namespace = dict(NAMESPACE_GLOBALS)
     namespace.update(consts)
@@ -52,9 +52,9 @@ def compile_unit(path: str, text: str, axis_names: tuple[str, ...], name: str) -
 class SubProgramLibrary:
     """Finds, reads and compiles sub-programs L<n> along the program path, once each."""
 
-    def __init__(self, machine, main_path: str):
+    def __init__(self, machine, debug: bool = False):
         self.machine = machine
-        self.main_path = main_path
+        self.debug = debug
         self.units: dict[int, Unit | None] = {}
 
     def __call__(self, number: int) -> Unit | None:
@@ -64,7 +64,8 @@ class SubProgramLibrary:
                 self.units[number] = None
             else:
                 text = path.read_text(encoding="latin-1")
-                self.units[number] = compile_unit(str(path), text, self.machine.axis_names, f"L{number}")
+                self.units[number] = compile_unit(str(path), text, self.machine.axis_names, f"L{number}",
+                                                  self.debug)
         return self.units[number]
 
     def find(self, number: int) -> Path | None:
@@ -105,11 +106,12 @@ class Sin800Dialect(Dialect):
     def run(self, path, text, session):
         """Run a main program or @ code object text (``%SPF<n>`` / ``%MPF<n>``, digest §5.3)."""
         machine = session.machine
-        unit = compile_unit(path, text, machine.axis_names, "main")
+        debug = session.steps.hook is not None
+        unit = compile_unit(path, text, machine.axis_names, "main", debug)
         data = NcData.from_machine(machine)
         store = session.store
         data.overlay(store.items(NAMESPACE))
-        library = SubProgramLibrary(machine, path)
+        library = SubProgramLibrary(machine, debug)
         channel = Channel(session, data, library)
         name = f"%{unit.program.kind}{unit.program.number}" if unit.program.kind else Path(path).name
         initial = list(channel.R)

@@ -19,9 +19,8 @@ from ...runtime.codegen import PySource
 from .atcodes import COMPARE
 from .reader import Arith, AtInstr, NcBlock, Note, Operand, PartProgram, Word
 
-#: internal G group of each G number the block record keeps, for G58/G59 (programmable ZO) and G16
-PROG_ZO = {58: 1, 59: 2}
-AXIS_CENTRE = {"X": "I", "Y": "J", "Z": "K"}
+#: M functions the kernel handles itself; any other goes to the PLC
+_STANDARD_M = frozenset((0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 17, 30))
 
 
 def _num(v: float) -> str:
@@ -31,8 +30,9 @@ def _num(v: float) -> str:
 class UnitCodegen:
     """Turns one :class:`PartProgram` into Python source for ``_unit(_rt)``."""
 
-    def __init__(self, prog: PartProgram, unit: str, axis_names: tuple[str, ...]):
+    def __init__(self, prog: PartProgram, unit: str, axis_names: tuple[str, ...], debug: bool = False):
         self.prog = prog
+        self.debug = debug  # a debug build calls the step hook before every block
         self.unit = unit
         self.axes = axis_names
         self.src = PySource(f"<sin800 {unit} {prog.path}>")
@@ -41,7 +41,6 @@ class UnitCodegen:
         self.labels: dict[int, int] = {}  # block index -> label ordinal
         self.dynamic_jumps = False
         self.written: set[int] = set()  # R parameters the program writes by number
-        self._tmp = 0
 
     # -- constants and R names -------------------------------------------
     def const(self, value: object, prefix: str = "_C") -> str:
@@ -114,12 +113,20 @@ class UnitCodegen:
         self._scan_labels()
         body = PySource(self.src.filename)
         body._indent = 4
+        run: list[Block] = []
         for idx, blk in enumerate(self.prog.blocks):
             if idx in self.labels:
+                self._flush_run(body, run)
                 body._indent = 3
                 body.emit(f"if _blk <= {self.labels[idx]}:", blk.line)
                 body._indent = 4
+            plain = None if self.debug else self._plain_block(blk)
+            if plain is not None:
+                run.append(plain)
+                continue
+            self._flush_run(body, run)
             self._block(body, idx, blk)
+        self._flush_run(body, run)
         src = self.src
         src.emit("def _unit(_rt):", 0)
         src._indent = 1
@@ -145,6 +152,50 @@ class UnitCodegen:
         src.emit("_ctr.steps += _st")
         return src, self.consts
 
+    # -- runs of constant blocks -------------------------------------------
+    def _plain_block(self, blk: NcBlock) -> Block | None:
+        """The Block of a block made only of constant DIN words and notes, with nothing that calls,
+        ends, stops or needs the dialect (L, D, G16, G58/G59, M0/M1/M2/M17/M30); else None."""
+        if blk.skip:
+            return None
+        g: list[float] = []
+        m: list[int] = []
+        words: dict[str, float] = {}
+        msg = None
+        for it in blk.items:
+            if isinstance(it, Note):
+                if it.text.upper().startswith("MSG"):
+                    msg = it.text[3:].lstrip(" ,:").strip()
+                continue
+            if not isinstance(it, Word) or it.value is None or it.address in ("L", "D"):
+                return None
+            if it.address == "G":
+                if it.value in (16, 58, 59):
+                    return None
+                g.append(int(it.value) if it.value == int(it.value) else it.value)
+            elif it.address == "M":
+                if int(it.value) in (0, 1, 2, 17, 30) or int(it.value) not in _STANDARD_M:
+                    return None  # stops and ends need checks; PLC M functions may load R parameters
+                m.append(int(it.value))
+            else:
+                words["R" if it.address == "B" and "B" not in self.axes else it.address] = it.value
+        if not g and not m and not words and msg is None:
+            return Block((), (), {}, blk.n, None, Src(self.prog.path, blk.line))  # a block that only counts
+        return Block(tuple(g), tuple(m), words, blk.n, msg, Src(self.prog.path, blk.line))
+
+    def _flush_run(self, out: PySource, run: list[Block]) -> None:
+        """Consecutive constant blocks run from a tuple: one generated line instead of one per block."""
+        if not run:
+            return
+        line = run[0].src.line
+        todo = tuple(b for b in run if b.g or b.m or b.words or b.msg is not None)
+        out.emit(f"_st += {len(run)}", line)
+        if len(todo) == 1:
+            out.emit(f"_ex({self.const(todo[0], '_B')})", line)
+        elif todo:
+            out.emit(f"for _b in {self.const(todo, '_RUN')}: _ex(_b)", line)
+        run.clear()
+
     # -- one block -------------------------------------------------------
     def _block(self, out: PySource, idx: int, blk: NcBlock) -> None:
         line = blk.line
@@ -152,13 +203,20 @@ class UnitCodegen:
             out.emit("if not _rt.block_skip:", line)
             out._indent += 1
         out.emit("_st += 1", line)
+        if self.debug:
+            out.emit("@SYNC_OUT", line)
+            out.emit(f"_rt.debug_block({line})", line)
         rec = _Record(self, blk)
-        for it in blk.items:
+        items = blk.items
+        # does an item after position i run code that may change R parameters?
+        writes_after = [False] * len(items)
+        for i in range(len(items) - 2, -1, -1):
+            writes_after[i] = writes_after[i + 1] or isinstance(items[i + 1], (Arith, AtInstr))
+        for i, it in enumerate(items):
             if isinstance(it, Word):
-                rec.word(out, it)
+                rec.word(out, it, writes_after[i])
             elif isinstance(it, Arith):
                 out.emit(self._arith(it), line)
-                rec.changed = True
             elif isinstance(it, Note):
                 rec.note(it)
             elif isinstance(it, AtInstr):
@@ -246,7 +304,6 @@ class UnitCodegen:
         lines = self._statement(code, ops, line)
         for text in lines:
             emit(text, line)
-        rec.changed = True
         if has_ptr:
             emit("@SYNC_IN", line)
         return True
@@ -388,7 +445,6 @@ class _Record:
         self.m: list[int] = []
         self.words: list[tuple[str, str, bool]] = []  # (key expr, value expr, constant?)
         self.msg: str | None = None
-        self.changed = False  # an @ code or R word ran since the last word was read
         self.machine_coords = False
         self.call: str | None = None
         self.passes = "1"
@@ -402,7 +458,8 @@ class _Record:
         if it.text.upper().startswith("MSG"):
             self.msg = it.text[3:].lstrip(" ,:").strip()
 
-    def word(self, out: PySource, w: Word) -> None:
+    def word(self, out: PySource, w: Word, captured: bool = True) -> None:
+        """Add a DIN word; ``captured``: later items of the block may change the R parameter it reads."""
         cg = self.cg
         a = w.address
         if w.value is None and w.rref is None:
@@ -437,8 +494,8 @@ class _Record:
             return
         if a == "B" and "B" not in cg.axes:
             a = "R"  # SINUMERIK 8xx radius address for circles (B100, L4237)
-        if not const:
-            # values are captured when the word is read; later @ code in the block may change R
+        if not const and captured:
+            # the value is the one R has where the word stands; later @ code in the block may change R
             tmp = f"_w{self._captured}"
             self._captured += 1
             out.emit(f"{tmp} = {expr}", self.blk.line)
@@ -521,6 +578,10 @@ class _Record:
                 out.emit(f"if _mo < 2: _lin(_K, _mo, {{{d}}}, {srcname})", line)
                 out.emit(f"else: _ex(_Block((), (), {{{d}}}, {self.blk.n!r}, None, {srcname}))", line)
         elif g or m or words or self.msg is not None:
+            # a machine-specific M function may hand PLC data to R parameters ([sin800] m_functions)
+            plc_m = any(x not in _STANDARD_M for x in m)
+            if plc_m:
+                out.emit("@SYNC_OUT", line)
             if all(c for _k, _v, c in words):
                 blk = Block(tuple(g), tuple(m), {eval(k): float(v) for k, v, _c in words}, self.blk.n,
                             self.msg, src)
@@ -531,6 +592,8 @@ class _Record:
                 d = ", ".join(f"{k}: {v}" for k, v, _c in words)
                 out.emit(f"_ex(_Block({tuple(g)!r}, {tuple(m)!r}, {{{d}}}, {self.blk.n!r}, {self.msg!r}, "
                          f"{srcname}))", line)
+            if plc_m:
+                out.emit("@SYNC_IN", line)
             if any(x in (0, 1, 2, 30) for x in m):
                 out.emit("if (_K.ended or _K.stopped_at) and _rt.halt(): return 1", line)
         if self.call is not None:

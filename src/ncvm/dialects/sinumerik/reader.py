@@ -10,6 +10,7 @@ program. The reader only reads; it resolves nothing (that is codegen's job).
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, field
 
 from ...diagnostics import Diagnostic, Span
@@ -112,7 +113,18 @@ def read_program(path: str, text: str) -> tuple[PartProgram, list[Diagnostic]]:
     return PartProgram(path, kind, number, blocks), diags
 
 
+#: a block of plain words only (``N10 G1 X-2.5 Y3 F1500``), the bulk of CAM output: read by regex
+_PLAIN = re.compile(r"^[ \t]*(?:[Nn](\d+))?((?:[ \t]*[A-QS-Za-qs-z][+-]?(?:\d+\.?\d*|\.\d+))*)[ \t]*$")
+_PLAIN_WORD = re.compile(r"([A-Za-z])([+-]?(?:\d+\.?\d*|\.\d+))")
+
+
 def read_block(line: str, lineno: int) -> NcBlock:
+    m = _PLAIN.match(line)
+    if m is not None:
+        blk = NcBlock(lineno, int(m.group(1)) if m.group(1) else None, False)
+        blk.items = [Word(w.group(1).upper(), float(w.group(2)), None, w.start() + 1)
+                     for w in _PLAIN_WORD.finditer(line, m.start(2))]
+        return blk
     s = line
     n = len(s)
     i = 0

@@ -8,6 +8,7 @@ everything that touches NC data goes through the methods here.
 from __future__ import annotations
 
 import math
+import re
 import sys
 
 from ...diagnostics import Frame, RuntimeFault, Span
@@ -17,6 +18,7 @@ from .ncdata import Cl800Error, NcData, int_to_pattern, pattern_to_int
 from .sysmem import SysMem
 
 DEG = math.pi / 180.0
+_PLC_SOURCE = re.compile(r"^(?:PLC(\d)\.)?DB(\d+)\.DW(\d+)$")
 #: project alarm codes (the manual names only "CL 800 error" and the cycle alarms 4000-5299)
 ALARMS = {
     "CL800": "CL 800 error (operand out of range, missing data, arithmetic error)",
@@ -86,6 +88,17 @@ class Channel(SysMem):
         self.tool_d = 0
         SysMem.__init__(self)
         self._scenario = list(session.machine.scenario)
+        self.m_functions = {f"M{int(k)}": dict(v) for k, v in sec.get("m_functions", {}).items()}
+        if self.m_functions:
+            canon = session.canon
+            plain_aux = canon.aux
+
+            def aux(code, src):
+                plain_aux(code, src)
+                if code in self.m_functions:
+                    self.m_function(code)
+
+            canon.aux = aux
         self.apply_offsets()
 
     # -- running units ---------------------------------------------------
@@ -172,6 +185,26 @@ class Channel(SysMem):
                 if i > index:
                     return label
         self.no_block(number, line)
+
+    def m_function(self, code: str) -> None:
+        """``[sin800] m_functions``: the PLC answers an M function by loading R parameters (e.g. M94 -> R60)."""
+        self.advance_scenario()
+        for reg, source in self.m_functions[code].items():
+            n = int(str(reg).upper().lstrip("R"))
+            if isinstance(source, str):
+                m = _PLC_SOURCE.match(source.strip().upper())
+                if m is None:
+                    raise Cl800Error(f"{code}: cannot read PLC data '{source}' (write DB<n>.DW<m> or PLC<k>.DB<n>.DW<m>)")
+                plc = self._plc(float(m.group(1) or 1))
+                value = float(self._dw(plc, float(m.group(2)), float(m.group(3))))
+            else:
+                value = float(source)
+            self.R[n] = value
+
+    def debug_block(self, line: int) -> None:
+        """Debug builds: the step hook sees each block before it runs, with the R parameters set."""
+        R = self.R
+        self.counter.hook(self._current_path(), line, {f"R{n}": v for n, v in enumerate(R) if v != 0.0})
 
     def fault(self, code: str, message: str, line: int):
         raise RuntimeFault(code, message)

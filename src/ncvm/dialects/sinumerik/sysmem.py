@@ -283,6 +283,18 @@ class SysMem:
             table = d.areas[area]
             if width == "word":
                 table[str(addr)] = float(value)
+            elif area == "drive_md":  # MDDBY/MDDBI(w, hl[, bit]): a byte of a drive MD word
+                word = int(table.get(str(addr), 0.0))
+                shift = 8 * _rng("byte (0 low / 1 high)", where[1], 0, 1)
+                byte = (word >> shift) & 0xFF
+                if width == "byte":
+                    byte = pattern_to_int(value)
+                else:
+                    if value not in (0.0, 1.0):
+                        raise Cl800Error(f"bit value {value:g} is not 0 or 1")
+                    bit = _rng("bit", where[2], 0, 7)
+                    byte = byte | (1 << bit) if value else byte & ~(1 << bit)
+                table[str(addr)] = float((word & ~(0xFF << shift)) | (byte << shift))
             elif width == "byte":
                 pattern_to_int(value)
                 table[str(addr)] = float(value)
