@@ -131,6 +131,7 @@ class CodeGen:
                 self.emit(f"_n += {j - i}", body[i])
                 for s in body[i:j]:
                     self.assign(s.target, self.expr(s.value), s.value.ty, s)
+                self.event_point(body[j - 1])
                 i = j
             else:
                 self.stmt(body[i])
@@ -141,9 +142,11 @@ class CodeGen:
             self.emit("_n += 1", s)
             self.flush_if_needed(s.value, s)
             self.assign(s.target, self.expr(s.value), s.value.ty, s)
+            self.event_point(s)
         elif isinstance(s, A.CallStmt):
             self.emit("_n += 1", s)
             self.call_stmt(s.call, s)
+            self.event_point(s)
         elif isinstance(s, A.Goto):
             self.emit("_n += 1", s)
             target = self.labels[s.target]
@@ -179,6 +182,11 @@ class CodeGen:
             self.for_stmt(s)
         elif isinstance(s, A.Empty):
             pass
+
+    def event_point(self, node) -> None:
+        """Programs that enable events poll them after every simple statement (§6.4, L1548)."""
+        if self.chk.events_used:
+            self.back_edge(node)
 
     def back_edge(self, node) -> None:
         self.emit("if _n >= tk.budget:", node)
