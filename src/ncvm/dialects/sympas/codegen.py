@@ -284,8 +284,17 @@ class CodeGen:
             flags = {p.name for p in c.params}
             target = "DTCA1" in flags or "DTCA2" in flags or "DTCA3" in flags
             base = name.lower()
-            self.emit(f"_g = _card.cmd_{base}(tk, ({items},), {loc}{', True' if target else ''})", node)
-            self.emit("if _g is not None: yield from _g", node)
+            call = f"_card.cmd_{base}(tk, _it, {loc}{', True' if target else ''})"
+            if base in ("mlaw", "mlrw") and self.const_axes and all(isinstance(a.sym, AxisSpec) for a in c.axes):
+                # the common waiting line: one call when nothing else can happen meanwhile
+                self.emit(f"_it = ({items},)", node)
+                self.emit(f"if not _card.fast_line(tk, _it, {loc}, {base == 'mlrw'}):", node)
+                self.emit(f"    _g = {call}", node)
+                self.emit("    if _g is not None: yield from _g", node)
+            else:
+                self.emit(f"_it = ({items},)", node)
+                self.emit(f"_g = {call}", node)
+                self.emit("if _g is not None: yield from _g", node)
 
     def write_item(self, a) -> str:
         if isinstance(a, A.Str):
