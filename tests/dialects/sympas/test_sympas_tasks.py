@@ -268,3 +268,34 @@ def test_task_directive_with_constant(sap):
     r = sap("program P;\nconst Task1 = 1;\n{$TASK Task1};\nvar i: integer;\nbegin i := 3; end.\n")
     assert r["status"] == "ok", r["error"]
     assert r["variables"] == {"i": 3}
+
+
+def test_rs_halts_every_task_and_opens_the_loops(sap):
+    # §6.6.56: RS resets the axis system; the CNC tasks lose control
+    text = """{$TASK 0}
+program Main;
+begin
+  STARTCNCT(1);
+  MLA(A1 := 500.0);
+  WT(100);
+  RS;
+  CI3 := 1;
+end.
+{$TASK 1}
+program Other;
+begin
+  while TRUE do CI4 := CI4 + 1;
+end.
+"""
+    r = sap(text.replace("program Main;", "program Main;\nvar after: integer;").replace("CI3 := 1;", "after := 1;"))
+    assert r["status"] == "ok", r["error"]
+    assert r["variables"] == {"after": 0}  # the main task itself was halted by RS
+    assert r["position"]["X"] < 10.0  # the move was cut off at once
+
+
+def test_check_reports_lenient_readings_as_warnings(tmp_path):
+    from ncvm.api import check
+    p = tmp_path / "w.sap"
+    p.write_text("program P;\nconst s := 5;\nvar i: integer;\nbegin\n if i > 0 then i := 0; else i := s;\nend.\n")
+    diags = check(p)
+    assert [(d.severity, d.code) for d in diags] == [("warning", "W009"), ("warning", "W017")]
