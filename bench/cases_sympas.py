@@ -23,6 +23,6 @@ def cases() -> dict[str, Case]:
     return {
         "sympas_loop_arith": Case(_runner(ARITH), 100_000, "iterations/s"),
         "sympas_motion": Case(_runner(MOTION), 100_000, "moves/s"),
-        "rs274_loop_arith": rs274_case(PEERS / "loop_arith.ngc", 100_000, "iterations/s"),
-        "rs274_loop_motion": rs274_case(PEERS / "loop_motion.ngc", 100_000, "moves/s"),
+        "rs274_sympas_loop_arith": rs274_case(PEERS / "loop_arith.ngc", 100_000, "iterations/s"),
+        "rs274_sympas_loop_motion": rs274_case(PEERS / "loop_motion.ngc", 100_000, "moves/s"),
     }

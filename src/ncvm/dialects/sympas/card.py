@@ -95,7 +95,6 @@ class Card(Commands):
         self.solo = None  # the only running task, when there is just one
         self.counts = float(cfg["counts_per_unit"])
         self.refused_mask = 1 << cfg["axst_bits"]["refused"]
-        session.canon_started = True
 
     # -- timed actions -----------------------------------------------------------------------------
     def add_timed(self, tick: float, fn) -> None:

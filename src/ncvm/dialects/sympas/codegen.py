@@ -131,6 +131,7 @@ class CodeGen:
                 self.emit(f"_n += {j - i}", body[i])
                 for s in body[i:j]:
                     self.assign(s.target, self.expr(s.value), s.value.ty, s)
+                self.event_point(body[j - 1])
                 i = j
             else:
                 self.stmt(body[i])
@@ -141,9 +142,11 @@ class CodeGen:
             self.emit("_n += 1", s)
             self.flush_if_needed(s.value, s)
             self.assign(s.target, self.expr(s.value), s.value.ty, s)
+            self.event_point(s)
         elif isinstance(s, A.CallStmt):
             self.emit("_n += 1", s)
             self.call_stmt(s.call, s)
+            self.event_point(s)
         elif isinstance(s, A.Goto):
             self.emit("_n += 1", s)
             target = self.labels[s.target]
@@ -179,6 +182,11 @@ class CodeGen:
             self.for_stmt(s)
         elif isinstance(s, A.Empty):
             pass
+
+    def event_point(self, node) -> None:
+        """Programs that enable events poll them after every simple statement (§6.4, L1548)."""
+        if self.chk.events_used:
+            self.back_edge(node)
 
     def back_edge(self, node) -> None:
         self.emit("if _n >= tk.budget:", node)
@@ -276,8 +284,17 @@ class CodeGen:
             flags = {p.name for p in c.params}
             target = "DTCA1" in flags or "DTCA2" in flags or "DTCA3" in flags
             base = name.lower()
-            self.emit(f"_g = _card.cmd_{base}(tk, ({items},), {loc}{', True' if target else ''})", node)
-            self.emit("if _g is not None: yield from _g", node)
+            call = f"_card.cmd_{base}(tk, _it, {loc}{', True' if target else ''})"
+            if base in ("mlaw", "mlrw") and self.const_axes and all(isinstance(a.sym, AxisSpec) for a in c.axes):
+                # the common waiting line: one call when nothing else can happen meanwhile
+                self.emit(f"_it = ({items},)", node)
+                self.emit(f"if not _card.fast_line(tk, _it, {loc}, {base == 'mlrw'}):", node)
+                self.emit(f"    _g = {call}", node)
+                self.emit("    if _g is not None: yield from _g", node)
+            else:
+                self.emit(f"_it = ({items},)", node)
+                self.emit(f"_g = {call}", node)
+                self.emit("if _g is not None: yield from _g", node)
 
     def write_item(self, a) -> str:
         if isinstance(a, A.Str):

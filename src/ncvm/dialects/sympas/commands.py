@@ -45,29 +45,26 @@ class Commands:
         return self.wait_axes(tk, axes) if wait else None
 
     # -- linear interpolation (§6.6.43-46) ---------------------------------------------------------------
-    def _linear_fast(self, tk, items, loc, relative: bool) -> bool:
+    def fast_line(self, tk, items, loc, relative: bool) -> bool:
         """MLAW/MLRW when nothing else can happen during the move (one task, no events, idle axes, no
-        timed action before its end, mm and s): the same profile and canon call as the general path,
-        without the bookkeeping of a running move."""
+        timed action before its end, mm and s, axis numbers fixed at compile time): the same profile and
+        canon call as the general path, without the bookkeeping of a running move. False: not taken."""
+        if self.solo is not tk or tk.enabled or self.live or self.active_zo or not tk.plain_units \
+                or self.sys["MODEREG"] & 0x100:
+            return False
         sysp = tk.sysp
         v = sysp["TRVL"] * tk.ovr
         acc = sysp["TRAC"]
-        if v <= 0 or acc <= 0 or self.live or self.active_zo or not tk.plain_units:
+        if v <= 0 or acc <= 0:
             return False
         axes = self.axes
         pos = list(map(_GET_M, axes))
         start = tuple(pos)
         c = self.counts
-        n = len(axes)
         l2 = 0.0
-        exact = self.sys["MODEREG"] & 0x100
         for ax, val in items:
-            if not 0 <= ax < n:
-                return False
             a = axes[ax]
-            p = a.target + val if relative else val + a.ref + a.zerooffset
-            if not exact:
-                p = round(p * c) / c
+            p = round(((a.target + val) if relative else (val + a.ref + a.zerooffset)) * c) / c
             d = p - pos[ax]
             l2 += d * d
             pos[ax] = p
@@ -92,8 +89,6 @@ class Commands:
         return True
 
     def _linear(self, tk, items, loc, relative: bool, wait: bool):
-        if wait and self.solo is tk and not tk.enabled and self._linear_fast(tk, items, loc, relative):
-            return None
         axes = tuple(ax for ax, _ in items)
         start = self.prepare(tk, axes, loc)
         if start is None:
@@ -114,16 +109,12 @@ class Commands:
         return self._linear(tk, items, loc, False, False)
 
     def cmd_mlaw(self, tk, items, loc):
-        if self.solo is tk and not tk.enabled and self._linear_fast(tk, items, loc, False):
-            return None
         return self._linear(tk, items, loc, False, True)
 
     def cmd_mlr(self, tk, items, loc):
         return self._linear(tk, items, loc, True, False)
 
     def cmd_mlrw(self, tk, items, loc):
-        if self.solo is tk and not tk.enabled and self._linear_fast(tk, items, loc, True):
-            return None
         return self._linear(tk, items, loc, True, True)
 
     # -- circles and helices (§6.6.31-42) -------------------------------------------------------------------

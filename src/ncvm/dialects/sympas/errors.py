@@ -24,6 +24,8 @@ COMPILE_ERRORS = {
 #: warnings (severity "warning"; never stop a run)
 WARNINGS = {
     "W006": "constant clamped to the 32-bit range (L398, L402)",
+    "W009": "':=' in a constant declaration accepted as '=' (manual example L741)",
+    "W031": "qualifier 'jtvf' read as 'jtv' (L1464)",
     "W017": "';' before 'else' accepted (manual example L980)",
     "W035": "'=' accepted as ':=' for a system parameter in an argument list (L1880, L2091)",
 }

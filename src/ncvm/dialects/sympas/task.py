@@ -70,11 +70,15 @@ class Task:
         if n:
             self.time += n * self.iq
             self.card.steps += n
+            self.budget -= n
 
     def clock(self, n: int) -> int:
         return (int(self.time + n * self.iq) + self.card.clock0) & 0xFFFFFFFF
 
     def set_budget(self) -> None:
+        if self.step_once:
+            self.budget = 1  # STEPCNCT: stop at the next check point
+            return
         room = (self.check_at - self.time) * self.card.q
         left = self.card.step_limit - self.card.steps + 1
         self.budget = max(1, min(int(room) if room < 1e15 else 1 << 60, left))
@@ -276,6 +280,8 @@ class Task:
     # -- events ---------------------------------------------------------------------------------------
     def enev(self, name: str, fn) -> None:
         self.enabled[name] = fn
+        self.check_at = self.time  # from now on every check point polls the events
+        self.budget = 0
 
     def disev(self, name: str, fn) -> None:
         self.enabled.pop(name, None)

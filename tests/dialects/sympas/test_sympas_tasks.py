@@ -1,0 +1,301 @@
+"""Four CNC tasks on one clock, task control and event procedures (manual §6.4, §6.6.2-69)."""
+
+from __future__ import annotations
+
+import pytest
+
+SEC = 15625
+
+EO_MACHINE = """
+[sympas]
+inputs = [{axis = "A1", bit = 1, function = "EO"}, {axis = "A1", bit = 2, function = "UI"},
+          {axis = "A2", bit = 1, function = "DR"}]
+"""
+
+
+def scenario(*events: tuple) -> str:
+    out = ""
+    for time, axis, bit, value in events:
+        out += f'\n[[scenario]]\ntime = {time}\nkind = "input"\naxis = "{axis}"\nbit = {bit}\nvalue = {str(value).lower()}\n'
+    return out
+
+
+TWO_TASKS = """{$TASK 0}
+program Main;
+var k: integer; alive: boolean;
+begin
+  CI5 := 0;
+  STARTCNCT(1);
+  WT(15625);
+  writeln('counted ', CI5);
+  STOPCNCT(1);
+  k := CI5;
+  WT(1000);
+  if CI5 = k then writeln('task 1 stopped');
+  CONTCNCT(1);
+  WT(100);
+  alive := CI5 > k;
+  writeln('continued: ', alive);
+  STOPCNCT(1);
+end.
+{$TASK 1}
+program Counter;
+begin
+  while TRUE do
+  begin
+    CI5 := CI5 + 1;
+    WT(10);
+  end;
+end.
+"""
+
+
+def test_one_task_starts_stops_and_continues_another(sap):
+    r = sap(TWO_TASKS)
+    assert r["status"] == "ok", r["error"]
+    # task 1 runs 3 statements (1 tick each) and WT(10) per turn: 13 ticks; 15625 / 13 = 1201.9
+    assert r["output"] == ["counted 1202", "task 1 stopped", "continued: TRUE"]
+    assert r["variables"] == {"k": 1202, "alive": True}
+
+
+def test_motion_task_and_monitor_task_share_the_clock(sap):
+    text = """{$TASK 0}
+program Motion;
+begin
+  STARTCNCT(2);
+  TRVL := 100.0; TRAC := 1000.0;
+  MLAW(A1 := 100.0);
+  CI0 := 1;
+  WT(20);
+end.
+{$TASK 2}
+program Monitor;
+var seen: integer;
+begin
+  repeat
+    if A1.dp >= 50.0 then if seen = 0 then begin seen := 1; writeln('half way at ', CLOCK); end;
+  until CI0 = 1;
+  writeln('motion done');
+end.
+"""
+    r = sap(text)
+    assert r["status"] == "ok", r["error"]
+    half = int(r["output"][0].split()[-1])
+    # 50 mm: 5 mm while accelerating (0.1 s), then 45 mm at 100 mm/s: 0.55 s
+    assert half == pytest.approx(0.55 * SEC, abs=30)
+    assert r["output"][1] == "motion done"
+
+
+def test_event_fires_during_a_waiting_move_and_aborts(sap):
+    # §6.4.1 example: EVEO writes CI0 := 999 and aborts; the move is not stopped by ABORT ([R])
+    text = """program Ev;
+procedure EVEO;
+begin
+  CI0 := 999;
+  writeln('EO at ', A1.dp);
+  abort;
+end;
+begin
+  CI0 := 0;
+  enev(EVEO);
+  TRVL := 100.0; TRAC := 1000.0;
+  MLAW(A1 := 100.0);
+  writeln('not reached');
+end.
+"""
+    r = sap(text, machine_toml=EO_MACHINE + scenario((0.5, "A1", 1, True)))
+    assert r["status"] == "ok", r["error"]
+    assert len(r["output"]) == 1
+    # at 0.5 s: 5 mm + 0.4 s * 100 mm/s = 45 mm (the handler is polled each servo cycle of 1.28 ms)
+    assert float(r["output"][0].split()[-1]) == pytest.approx(45.0, abs=0.3)
+    assert r["position"]["X"] == 100.0
+
+
+def test_event_priority_and_no_nesting(sap):
+    # L1598-1610: EVEO before EVUI; a handler is not interrupted; level-triggered re-firing
+    text = """program P;
+var order: integer;
+procedure EVUI; begin order := order * 10 + 2; DISEV(EVUI); end;
+procedure EVEO; begin order := order * 10 + 1; WT(100); DISEV(EVEO); end;
+begin
+  order := 0;
+  enev(EVUI); enev(EVEO);
+  WT(10);
+  while order < 12 do ;
+end.
+"""
+    r = sap(text, machine_toml=EO_MACHINE + scenario((0.01, "A1", 1, True), (0.01, "A1", 2, True)))
+    assert r["variables"] == {"order": 12}
+
+
+def test_events_are_not_processed_during_wt(sap):
+    text = """program P;
+var at: timer;
+procedure EVUI; begin at := CLOCK; DISEV(EVUI); end;
+begin
+  enev(EVUI);
+  WT(15625);
+  WT(1);
+end.
+"""
+    r = sap(text, machine_toml=EO_MACHINE + scenario((0.1, "A1", 2, True)))
+    assert r["variables"]["at"] >= SEC
+
+
+def test_drive_not_ready_fires_when_the_input_drops(sap):
+    text = """program P;
+var hit: integer;
+procedure EVDNR; begin hit := CLOCK; DISEV(EVDNR); end;
+begin
+  enev(EVDNR);
+  while hit = 0 do ;
+end.
+"""
+    r = sap(text, machine_toml=EO_MACHINE + scenario((0.0, "A2", 1, True), (0.2, "A2", 1, False)))
+    assert r["variables"]["hit"] == pytest.approx(0.2 * SEC, abs=5)
+
+
+def test_software_limit_event(sap):
+    text = """program P;
+var where: double;
+procedure EVLSS; begin where := A1.dp; JSW(A1); DISEV(EVLSS); end;
+begin
+  A1.slr := 20.0;
+  TRVL := 100.0; TRAC := 1000.0;
+  enev(EVLSS);
+  MLAW(A1 := 100.0);
+end.
+"""
+    r = sap(text)
+    assert r["variables"]["where"] == pytest.approx(20.0, abs=0.2)
+    assert r["position"]["X"] < 30.0
+
+
+def test_stop_and_contcnct_from_another_task(sap):
+    text = """{$TASK 0}
+program Main;
+begin
+  STARTCNCT(1);
+  WT(100);
+  CI1 := 1;
+  CONTCNCT(1);
+  WT(100);
+end.
+{$TASK 1}
+program Worker;
+begin
+  writeln('before stop');
+  STOP;
+  writeln('after continue, CI1=', CI1);
+end.
+"""
+    r = sap(text)
+    assert r["output"] == ["before stop", "after continue, CI1=1"]
+
+
+def test_stoptoss_and_stepcnct(sap):
+    text = """{$TASK 0}
+program Main;
+begin
+  STARTCNCT(3);
+  WT(5);
+  STOPCNCT(3);
+  a := CI7;
+  STOPTOSS(3);
+  WT(50);
+  b := CI7;
+  STEPCNCT(3);
+  WT(50);
+  c := CI7;
+end.
+{$TASK 3}
+program Stepper;
+begin
+  while TRUE do CI7 := CI7 + 1;
+end.
+"""
+    r = sap(text.replace("program Main;", "program Main;\nvar a, b, c: integer;"))
+    v = r["variables"]
+    assert v["a"] > 0
+    assert v["b"] == v["a"]             # STOPTOSS executes nothing
+    assert v["c"] == v["b"] + 1         # one loop turn in step mode
+
+
+def test_abort_ends_and_startcnct_restarts(sap):
+    text = """{$TASK 0}
+program Main;
+begin
+  STARTCNCT(1);
+  WT(100);
+  STARTCNCT(1);
+  WT(100);
+end.
+{$TASK 1}
+program Once;
+begin
+  CI2 := CI2 + 1;
+  abort;
+  CI3 := 1;
+end.
+"""
+    r = sap(text.replace("WT(100);\nend.\n{$TASK 1}", "WT(100);\n  n := CI2; m := CI3;\nend.\n{$TASK 1}")
+            .replace("program Main;", "program Main;\nvar n, m: integer;"))
+    assert r["variables"] == {"n": 2, "m": 0}
+
+
+def test_writeln_stops_the_task_with_moderegbit_26(sap):
+    r = sap("program P;\nbegin\n  MODEREG := $4000000;\n  writeln('one');\n  writeln('two');\nend.\n")
+    assert r["output"] == ["one"]
+
+
+def test_runtime_error_in_a_second_task_names_it(sap):
+    text = """{$TASK 0}
+program Main;
+begin STARTCNCT(1); WT(100); end.
+{$TASK 1}
+program Bad;
+var i: integer;
+begin i := 1 mod 0; end.
+"""
+    r = sap(text)
+    assert r["error"]["code"] == "32768"
+    assert r["error"]["line"] == 7
+    assert "task 1" in r["error"]["message"]
+
+
+def test_task_directive_with_constant(sap):
+    # §6.7.2 L2251: {$TASK Task1}; with a trailing ';'
+    r = sap("program P;\nconst Task1 = 1;\n{$TASK Task1};\nvar i: integer;\nbegin i := 3; end.\n")
+    assert r["status"] == "ok", r["error"]
+    assert r["variables"] == {"i": 3}
+
+
+def test_rs_halts_every_task_and_opens_the_loops(sap):
+    # §6.6.56: RS resets the axis system; the CNC tasks lose control
+    text = """{$TASK 0}
+program Main;
+begin
+  STARTCNCT(1);
+  MLA(A1 := 500.0);
+  WT(100);
+  RS;
+  CI3 := 1;
+end.
+{$TASK 1}
+program Other;
+begin
+  while TRUE do CI4 := CI4 + 1;
+end.
+"""
+    r = sap(text.replace("program Main;", "program Main;\nvar after: integer;").replace("CI3 := 1;", "after := 1;"))
+    assert r["status"] == "ok", r["error"]
+    assert r["variables"] == {"after": 0}  # the main task itself was halted by RS
+    assert r["position"]["X"] < 10.0  # the move was cut off at once
+
+
+def test_check_reports_lenient_readings_as_warnings(tmp_path):
+    from ncvm.api import check
+    p = tmp_path / "w.sap"
+    p.write_text("program P;\nconst s := 5;\nvar i: integer;\nbegin\n if i > 0 then i := 0; else i := s;\nend.\n")
+    diags = check(p)
+    assert [(d.severity, d.code) for d in diags] == [("warning", "W009"), ("warning", "W017")]
