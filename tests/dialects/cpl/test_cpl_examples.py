@@ -36,6 +36,6 @@ def test_pocket_steps_down_to_depth(tmp_path):
 
 def test_partcount_counts_across_runs(tmp_path):
     outputs = [run_example("partcount.cpl", tmp_path)["output"] for _ in range(6)]
-    assert outputs[0] == ["PART 1 OF 5; slot length cut so far   30.0 mm"]
+    assert outputs[0] == ["PART 1 OF 5; slot length cut so far 30.0 mm"]
     assert outputs[4][-1] == "BATCH COMPLETE: change the pallet"
-    assert outputs[5] == ["PART 1 OF 5; slot length cut so far  180.0 mm"]
+    assert outputs[5] == ["PART 1 OF 5; slot length cut so far 180.0 mm"]

@@ -344,7 +344,7 @@ def test_seek_errors(fs):
     fs.OPENW(3, "RND", 130, 5)
     fs.PRN(3, "A")
     assert error_of(fs.SEEK, 3, 3).code == "CPL608"
-    assert error_of(fs.SEEK, 3, 1, 7).code == "CPL502"
+    assert error_of(fs.SEEK, 3, 1, 7).code == "CPL023"
     fs.SEEK(3, 1, 6)
 
 

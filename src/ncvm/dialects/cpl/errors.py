@@ -78,8 +78,9 @@ def diag(code: str, detail: str, file: str, line: int, column: int | None = None
     return Diagnostic(code, msg, Span(file, line, column))
 
 
-def fault(code: str, detail: str, file: str, line: int, cpl_line: int | None = None) -> RuntimeFault:
-    msg = message(code, detail)
+def fault(code: str, detail: str, file: str, line: int, cpl_line: int | None = None,
+          text: str | None = None) -> RuntimeFault:
+    msg = text if text is not None else message(code, detail)
     if cpl_line is not None:
         msg += f" (CPL line {cpl_line})"
     return RuntimeFault(code, msg, Span(file, line))
