@@ -46,7 +46,7 @@ CODES: dict[str, tuple[str, str]] = {
     "CPL034": ("definable permanent variable not declared", "§2.4.3 L548-570"),
     "CPL035": ("field not dimensioned", "§2.4.3 L702"),
     "CPL036": ("parameter is read-only", "digest §4.8"),
-    "CPL037": ("function not available in this version", "later issue (chapters 4-9)"),
+    "CPL037": ("function not available in this version", "later issue (chapter 4)"),
     "CPL038": ("declaration file error", "§2.4.3 L615-637"),
     "CPL039": ("WAIT condition can never be met (simulator deadlock)", "digest §5.10"),
 }
