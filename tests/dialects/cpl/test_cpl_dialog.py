@@ -190,3 +190,20 @@ def test_cli_run_with_keys_writes_the_screen_png(tmp_path):
         # the circle of radius 40 mm: 400 px for 200 mm, so 80 px right of the centre (200, 125), at scale 2
         assert im.getpixel((2 * 280, 2 * (GRAPH_TOP - 125))) != im.getpixel((2 * 200, 2 * (GRAPH_TOP - 125)))
     assert sorted(p.name for p in shots.iterdir()) == ["screen_001.png", "screen_002.png"]
+
+
+def test_screen_is_saved_when_the_program_faults(tmp_path):
+    r, _ = run_cpl(tmp_path, '10 DSP(1,1,"BEFORE THE FAULT")\n20 X = 1 / 0.0\nM30\n', screen=tmp_path / "f.png")
+    assert r["error"]["code"] == "CPL028"
+    assert (tmp_path / "f.png").read_bytes()[:4] == b"\x89PNG"
+
+
+def test_string_function_argument_types_are_checked_when_linking(tmp_path):
+    for text in ('10 N% = LEN(5)\nM30\n', '10 A$ = CHR$("A")\nM30\n', '10 X? = EOF("1")\nM30\n'):
+        r, _ = run_cpl(tmp_path, text)
+        assert r["error"]["code"] == "CPL032", text
+
+
+def test_mmc_only_as_statement_or_assignment(tmp_path):
+    r, _ = run_cpl(tmp_path, '10 A%=1\n20 IF MMC(A%) = 1 THEN A%=2 ENDIF\nM30\n')
+    assert r["error"]["code"] == "CPL001" and "MMC" in r["error"]["message"]

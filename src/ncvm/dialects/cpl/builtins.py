@@ -172,6 +172,7 @@ class Builtin:
     section: str
     rt: bool = False
     io: bool = False  # takes the run's CplIO first (chapters 6-9)
+    params: str = ""  # per argument: S string, I/N number, checked when the type is known at compile time
 
 
 FUNCTIONS: dict[str, Builtin] = {
@@ -187,20 +188,20 @@ FUNCTIONS: dict[str, Builtin] = {
     "ATAN": Builtin(f_atan, 1, 1, "RD", "§2.5.1 L835"),
     "BCD": Builtin(f_bcd, 1, 1, "I", "§2.5.3 L877"),
     "BIN": Builtin(f_bin, 1, 1, "I", "§2.5.3 L889"),
-    "LEN": Builtin(S.length, 1, 1, "I", "§5.4 L3431"),
-    "MID$": Builtin(S.mid, 2, 3, "S", "§5.2 L3371"),
-    "INSTR": Builtin(S.instr, 2, 3, "I", "§5.5 L3451"),
-    "ASC": Builtin(S.asc, 1, 1, "I", "§5.6 L3480"),
-    "CHR$": Builtin(S.chr_, 1, 1, "S", "§5.7 L3502"),
-    "VAL": Builtin(S.val, 1, 1, "?", "§5.9 L3541"),
-    "TRIM$": Builtin(S.trim, 1, 2, "S", "§5.10 L3571"),
+    "LEN": Builtin(S.length, 1, 1, "I", "§5.4 L3431", params="S"),
+    "MID$": Builtin(S.mid, 2, 3, "S", "§5.2 L3371", params="SII"),
+    "INSTR": Builtin(S.instr, 2, 3, "I", "§5.5 L3451", params="SSI"),
+    "ASC": Builtin(S.asc, 1, 1, "I", "§5.6 L3480", params="S"),
+    "CHR$": Builtin(S.chr_, 1, 1, "S", "§5.7 L3502", params="I"),
+    "VAL": Builtin(S.val, 1, 1, "?", "§5.9 L3541", params="S"),
+    "TRIM$": Builtin(S.trim, 1, 2, "S", "§5.10 L3571", params="SS"),
     "STR$": Builtin(S.str_, 1, 2, "S", "§5.8 L3514"),
-    "EOF": Builtin(f_eof, 1, 1, "B", "§6 L4157", io=True),
+    "EOF": Builtin(f_eof, 1, 1, "B", "§6 L4157", io=True, params="I"),
     "FILEPOS": Builtin(f_filepos, 1, 2, "I", "§6 L4197", io=True),
     "FILESIZE": Builtin(f_filesize, 1, 2, "I", "§6 L4305", io=True),
     "ERASE": Builtin(f_erase, 1, 1, "I", "§6 L4379", io=True),
-    "FILEACCESS": Builtin(f_fileaccess, 1, 1, "I", "§6 L4406", io=True),
-    "FILEDATE": Builtin(f_filedate, 1, 2, "S", "§6 L4433", io=True),
+    "FILEACCESS": Builtin(f_fileaccess, 1, 1, "I", "§6 L4406", io=True, params="S"),
+    "FILEDATE": Builtin(f_filedate, 1, 2, "S", "§6 L4433", io=True, params="SI"),
     "INKEY": Builtin(f_inkey, 0, 0, "I", "§7 L4625", io=True),
     "MPOS": Builtin(f_mpos, 1, 3, "R", "§4.2.2 L1539", rt=True),
     "CPOS": Builtin(f_cpos, 1, 2, "R", "§4.2.1 L1404", rt=True),

@@ -188,7 +188,7 @@ class Gen:
 
     def func(self, e: A.Func) -> tuple[str, str]:
         if e.name == "MMC":
-            return self.mmc(e.args), "I"
+            raise GenError("CPL001", "MMC(...) stands as a statement or as r% = MMC(...)")
         b = FUNCTIONS.get(e.name)
         if b is None:
             raise GenError("CPL037", f"{e.name} (chapters 4-9 of the manual come in a later version)")
@@ -196,12 +196,15 @@ class Gen:
         if not b.min_args <= n <= b.max_args:
             raise GenError("CPL001", f"{e.name} takes {b.min_args}..{b.max_args} arguments, not {n}")
         codes, types = [], []
-        for a in e.args:
+        for k, a in enumerate(e.args):
             if a is None:
                 codes.append("None")
                 types.append("N")
                 continue
             c, ty = self.ex(a)
+            want = b.params[k:k + 1]
+            if want == "S" and ty in NUMERIC + ("B",) or want in ("I", "N") and ty in ("S", "B"):
+                raise GenError("CPL032", f"{e.name}: argument {k + 1} is {_a(ty)} value")
             codes.append(c)
             types.append(ty)
         res = b.result
@@ -341,7 +344,10 @@ class Gen:
             count = self.ex(e.args[2])[0] if len(e.args) > 2 and e.args[2] is not None else "None"
             self.emit(f"{self.local(v)} = _view({src}, {start}, {count})", line)
             return
-        code, ty = self.ex(e)
+        if isinstance(e, A.Func) and e.name == "MMC":
+            code, ty = self.mmc(e.args, line), "I"
+        else:
+            code, ty = self.ex(e)
         if v.cls == "L":
             name = self.local(v)
             dims = self.fields.get(v)
@@ -539,7 +545,7 @@ class Gen:
             self.emit(f"_io.screen.PRN({args}, name={s.args[3].var.display!r})", line)
             return
         if name == "MMC":
-            self.emit(self.mmc(s.args), line)
+            self.emit(self.mmc(s.args, line), line)
             return
         if name == "ERASE":
             self.emit(f"_io.files.ERASE({self.args(s)})", line)
@@ -603,16 +609,16 @@ class Gen:
         self.emit(f"{r} = _io.screen.SFK({cur}{texts}, want_text={ty == 'S'})", s.line)
         self.store(tv, r, "?", s.line)
 
-    def mmc(self, args: list) -> str:
+    def mmc(self, args: list, line: int) -> str:
         """MMC(v1,...,v20): names and values go to the client; the values it sends back are stored."""
         if not args or any(not isinstance(a, A.Var) for a in args):
             raise GenError("CPL001", "MMC takes CPL variables only")
         names = tuple(a.var.display for a in args)
         values = ", ".join(self.ex(a)[0] for a in args)
         r = self.temp("m")
-        self.emit(f"{r} = _io.mmc.MMC({names!r}, ({values},))", self.cur.line)
+        self.emit(f"{r} = _io.mmc.MMC({names!r}, ({values},))", line)
         for k, a in enumerate(args):
-            self.store(a, f"{r}[1][{k}]", "?", self.cur.line)
+            self.store(a, f"{r}[1][{k}]", "?", line)
         return f"{r}[0]"
 
     def nc(self, s: A.NcBlock) -> None:

@@ -150,15 +150,24 @@ class CplRuntime:
             self.kernel.end_program(Src(main, max(1, len(self.linked.main.prog.stmts) and
                                                      self.linked.main.prog.stmts[-1].line)))
         except RuntimeFault as f:
-            self.io.files.close_all()
+            self.finish_io_at_fault()
             if f.span is None:
                 f.span = Span(main, 1)
             raise
         except DeclError as e:
             raise RuntimeFault(e.code, message(e.code, e.message), Span(e.file, max(e.line, 1))) from None
         except Exception as e:  # noqa: BLE001 - every failure of generated code becomes a RUNTIME ERROR
-            self.io.files.close_all()  # what PRN# wrote so far stays in the files
+            self.finish_io_at_fault()
             raise self.to_fault(e) from None
+
+    def finish_io_at_fault(self) -> None:
+        """A run that faults still closes its files (what PRN# wrote stays) and saves --screen."""
+        try:
+            self.io.files.close_all()
+        except Exception:  # noqa: BLE001 - the fault that stopped the run is the one to report
+            pass
+        if self.session.options.screen is not None:
+            self.io.screen.save_png(self.session.options.screen)
 
     def save_wait_picture(self) -> None:
         """--screen-dir: the screen as the operator sees it when SFK or INP waits (screen_001.png, ...)."""
