@@ -207,3 +207,30 @@ def test_string_function_argument_types_are_checked_when_linking(tmp_path):
 def test_mmc_only_as_statement_or_assignment(tmp_path):
     r, _ = run_cpl(tmp_path, '10 A%=1\n20 IF MMC(A%) = 1 THEN A%=2 ENDIF\nM30\n')
     assert r["error"]["code"] == "CPL001" and "MMC" in r["error"]["message"]
+
+
+def test_colour_tables_rgb_bitmaps_and_clearing(tmp_path):
+    # COL table switch (L4923-4949), RGB into table 3, BMP from <file root>/cplbmp with a missing file warning,
+    # CLR (window) and CLS (screen), CSF (softkeys gone)
+    from PIL import Image
+
+    bmp = tmp_path / ".ncvm" / "files" / "cplbmp"
+    bmp.mkdir(parents=True)
+    Image.new("RGB", (4, 3), (0, 255, 0)).save(bmp / "logo.bmp")
+    text = ('10 COL(,,,10) : RGB(5,10,20,30) : COL(5) : LIN(10,20,100,20)\n'
+            '20 BMP(10,100,"logo") : BMP(0,0,"missing")\n'
+            '30 SFK(K%,"A") : CSF\n40 DSP(3,1,"TEXT")\nM30\n')
+    r, s = run_cpl(tmp_path, text, keys="SK1\n")
+    assert r["error"] is None
+    sc = s.screen
+    assert px(sc, 50, 20) == (10, 20, 30)
+    assert px(sc, 10, 100) == (0, 255, 0) and px(sc, 13, 98) == (0, 255, 0)
+    assert "warning CPL803: cplbmp\\missing.bmp is not existing" in r["output"]
+    assert sc.softkeys is None
+    r, s = run_cpl(tmp_path, '10 GWD(0,100,0,100) : LIN(10,10,90,90) : CLR\n20 DSP(3,1,"TEXT") : CLS\nM30\n')
+    assert r["error"] is None
+    assert px(s.screen, 50, 50) == s.screen.rgb(0) and s.screen.grid_lines()[2] == ""
+    r, _ = run_cpl(tmp_path, '10 COL(8)\nM30\n')
+    assert r["error"]["code"] == "CPL801"
+    r, _ = run_cpl(tmp_path, '10 GWD(100,500,100,350) : MWD(0,400,0,100)\nM30\n')
+    assert r["error"]["code"] == "CPL802"

@@ -284,3 +284,12 @@ def test_io_fault_names_line_cpl_line_and_message(cpl):
     assert r["error"]["code"] == "CPL612"
     assert r["error"]["message"] == "FILE DOES NOT EXIST: MISSING (CPL line 10)"
     assert r["error"]["line"] == 1
+
+
+def test_io_fault_in_a_sub_program_names_it_and_the_call_stack(tmp_path, run_text):
+    (tmp_path / "READLOG.cpl").write_text('10 OPENR(3,"PNONE")\nM30\n')
+    r = run_text('10 A%=1\n20 CALL READLOG\nM30\n', name="main.cpl")
+    err = r["error"]
+    assert err["code"] == "CPL612" and err["file"].endswith("READLOG.cpl") and err["line"] == 1
+    assert err["message"] == "FILE DOES NOT EXIST: PNONE (CPL line 10)"
+    assert any("main.cpl:2" in note for note in err["stack"])
