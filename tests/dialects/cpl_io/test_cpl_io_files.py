@@ -465,21 +465,6 @@ def test_reopen_for_writing_appends_and_normalises_foreign_files(fs):
     assert content(fs, "DOS") == "ONE\nTWO\nTHREE\nFOUR\n" + ETX
 
 
-def test_inp_into_a_foreign_field_with_size_and_assign(fs):
-    class Field:
-        def __init__(self, size):
-            self.size, self.s = size, None
-
-        def assign(self, text):
-            self.s = text
-
-    (fs.root / "P").write_text("ABCDEF\n\x03\n")
-    fs.OPENR(1, "P")
-    f = Field(4)
-    fs.INP(1, f, "S")
-    assert f.s == "ABCD"
-
-
 def test_filepos_counts_a_record_open_with_semicolon(fs):
     fs.OPENW(1, "P1", 130.0)
     fs.PRN(1, "ABC")
