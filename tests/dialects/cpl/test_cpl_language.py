@@ -251,5 +251,6 @@ def test_prn_message_window_formats(run_text):
             '50 PRN#(0,"I",I%,"R",R)\n'
             '60 PRN#(0,"TOO BIG ##",123)\nM30\n')
     r = run_text(text, name="p.cpl")
+    # the too-small template gives the warning PRN FORMAT INCORRECT and '*' (manual L4035)
     assert r["output"] == ["I       42R   2.500D        2.500000BTRUE", "VALUE 12.333 MM!", "I42R2.500",
-                           "TOO BIG **"]
+                           "warning CPL620: PRN FORMAT INCORRECT: TOO BIG **", "TOO BIG **"]

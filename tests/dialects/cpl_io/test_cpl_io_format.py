@@ -92,15 +92,3 @@ def test_real_reads_as_seven_digit_decimal():
 
 def test_integer_in_template_with_decimals():
     assert out("###.##", 7) == "  7.00"
-
-
-def test_foreign_string_holders_with_cpl_text_hook():
-    class Field:  # a string holder of the language runtime, as it might look
-        def __init__(self, s):
-            self.s = s
-
-        def __cpl_text__(self):
-            return self.s
-
-    assert out("A=", Field("XY"), "##", 5) == "A=XY 5"
-    assert out(Field(None)) == ""

@@ -168,7 +168,7 @@ def test_tfo_values_and_reset():
     s.TFO(4, 20 + 1000 * 12, 1, 90)
     assert s.font == (4, 12020, 1, 90)
     for bad in ((11,), (0, 501), (0, 0, 4), (0, 0, 0, 361)):
-        assert error_of(s.TFO, *bad).code == "CPL502"
+        assert error_of(s.TFO, *bad).code == "CPL023"
     s.end_program()
     assert s.font == (0, 0, 0, 0)
 

@@ -1,4 +1,7 @@
-"""CPL built-in functions of chapters 2-3 and 5 as a table: name -> implementation, arity, result type, manual place.
+"""CPL built-in functions as a table: name -> implementation, arity, result type, manual place.
+
+Chapter 5 (strings) is implemented once, in :mod:`.io.strings`; chapters 6-9 (files, dialog, MMC)
+take the run's :class:`~.io.context.CplIO` as their first argument ("io" flag).
 
 Result type "=" means the type of the first argument; "RD" means DOUBLE when the argument is DOUBLE, else REAL.
 Functions that read the machine (MPOS) take the runtime as their first argument ("rt" flag).
@@ -11,7 +14,8 @@ from dataclasses import dataclass
 from typing import Callable
 
 from .errors import CplError
-from .values import CharField, check_pos, mid, sv, type_name
+from .io import strings as S
+from .values import type_name
 
 
 def _num(v, name: str):
@@ -113,115 +117,6 @@ def f_bin(x):
     return int(digits)
 
 
-def _s(v, name: str):
-    v = sv(v)
-    if v is None or v.__class__ is str:
-        return v
-    raise CplError("CPL032", f"{name} of {type_name(v)}")
-
-
-def f_len(s):
-    s = _s(s, "LEN")
-    return -1 if s is None else len(s)
-
-
-def f_asc(s):
-    s = _s(s, "ASC")
-    return -1 if not s else ord(s[0])
-
-
-def f_chr(n):
-    if n.__class__ is not int:
-        _num(n, "CHR$")
-        raise CplError("CPL032", "CHR$ needs an INTEGER")
-    if not 0 <= n <= 255:
-        raise CplError("CPL023", f"CHR$({n}) outside 0..255")
-    return chr(n)
-
-
-def f_mid(s, start, count=None):
-    return mid(_s(s, "MID$"), start, count)
-
-
-def f_instr(find, s, start=1):
-    find, s = _s(find, "INSTR"), _s(s, "INSTR")
-    start = check_pos(start, "INSTR start")
-    if find is None or s is None:
-        return 0
-    return s.find(find, start - 1) + 1
-
-
-def f_trim(s, mode=None):
-    s = _s(s, "TRIM$")
-    if s is None:
-        return None
-    mode = _s(mode, "TRIM$") if mode is not None else None
-    if mode is None:
-        return s.strip(" ")
-    if mode.upper() == "L":
-        return s.lstrip(" ")
-    if mode.upper() == "R":
-        return s.rstrip(" ")
-    raise CplError("CPL023", f"TRIM$ option {mode!r} (L or R)")
-
-
-def f_val(s):
-    """Text to number: skip blanks and zeros, one sign, digits and '.', stop at anything else (manual §5)."""
-    s = _s(s, "VAL")
-    if s is None:
-        return None
-    i, n = 0, len(s)
-    while i < n and s[i] == " ":
-        i += 1
-    sign = 1
-    if i < n and s[i] in "+-":
-        sign = -1 if s[i] == "-" else 1
-        i += 1
-        while i < n and s[i] == " ":
-            i += 1
-    j = i
-    while j < n and (s[j].isdigit() or (s[j] == "." and "." not in s[i:j])):
-        j += 1
-    text = s[i:j]
-    if not any(c.isdigit() for c in text):
-        return None
-    return sign * (float(text) if "." in text else int(text))
-
-
-#: standard output formats (digest §11.D7): INTEGER 9 places, REAL 4.3, DOUBLE 9.6
-STANDARD = {"I": (9, 0), "R": (8, 3), "D": (16, 6)}
-
-
-def format_number(v, width: int, decimals: int) -> str:
-    """Right-justified in ``width`` places with ``decimals`` decimals; '*' when it does not fit (§6.3)."""
-    text = f"{v:.{decimals}f}" if decimals or isinstance(v, float) else str(v)
-    if decimals == 0 and isinstance(v, float):
-        text = f"{v:.0f}"
-    return text.rjust(width) if len(text) <= width else "*" * width
-
-
-def f_str(*args):
-    """STR$([format,] value): a number as text, in a '#'/'.' template or the standard format (manual §5.8)."""
-    *given, vtype = args
-    if len(given) == 1:
-        value, fmt = given[0], None
-    else:
-        fmt, value = _s(given[0], "STR$"), given[1]
-    value = _num(value, "STR$")
-    if fmt is None:
-        width, decimals = STANDARD["I" if isinstance(value, int) else ("D" if vtype == "D" else "R")]
-        return format_number(value, width, decimals)
-    i = next((k for k, c in enumerate(fmt) if c == "#"), -1)
-    if i < 0:
-        return fmt
-    j = i
-    while j < len(fmt) and fmt[j] in "#.":
-        j += 1
-    field = fmt[i:j]
-    decimals = len(field) - field.index(".") - 1 if "." in field else 0
-    return fmt[:i] + format_number(value, len(field), decimals) + fmt[j:]
-
-
 def f_mpos(rt, sel, axtype=1, chan=None):
     """MPOS: the interpolated command position of an axis in the machine coordinate system (manual §4.2.2).
 
@@ -240,6 +135,34 @@ def f_axo(rt, sel, seltype=1):
     return rt.g92_shift(sel)
 
 
+def f_eof(io, n):
+    return io.files.EOF(n)
+
+
+def f_filepos(io, n, mode=None):
+    return io.files.FILEPOS(n, mode)
+
+
+def f_filesize(io, n, k=None):
+    return io.files.FILESIZE(n, k)
+
+
+def f_erase(io, name):
+    return io.files.ERASE(name)
+
+
+def f_fileaccess(io, name):
+    return io.files.FILEACCESS(name)
+
+
+def f_filedate(io, name, mode=None):
+    return io.files.FILEDATE(name, mode)
+
+
+def f_inkey(io):
+    return io.screen.INKEY()
+
+
 @dataclass(frozen=True, slots=True)
 class Builtin:
     impl: Callable
@@ -248,6 +171,8 @@ class Builtin:
     result: str  # I R D B S, "=" first argument's type, "RD", "?" decided at run time
     section: str
     rt: bool = False
+    io: bool = False  # takes the run's CplIO first (chapters 6-9)
+    params: str = ""  # per argument: S string, I/N number, checked when the type is known at compile time
 
 
 FUNCTIONS: dict[str, Builtin] = {
@@ -263,17 +188,24 @@ FUNCTIONS: dict[str, Builtin] = {
     "ATAN": Builtin(f_atan, 1, 1, "RD", "§2.5.1 L835"),
     "BCD": Builtin(f_bcd, 1, 1, "I", "§2.5.3 L877"),
     "BIN": Builtin(f_bin, 1, 1, "I", "§2.5.3 L889"),
-    "LEN": Builtin(f_len, 1, 1, "I", "§5.4 L3431"),
-    "MID$": Builtin(f_mid, 2, 3, "S", "§5.2 L3371"),
-    "INSTR": Builtin(f_instr, 2, 3, "I", "§5.5 L3451"),
-    "ASC": Builtin(f_asc, 1, 1, "I", "§5.6 L3480"),
-    "CHR$": Builtin(f_chr, 1, 1, "S", "§5.7 L3502"),
-    "VAL": Builtin(f_val, 1, 1, "?", "§5.9 L3541"),
-    "TRIM$": Builtin(f_trim, 1, 2, "S", "§5.10 L3571"),
-    "STR$": Builtin(f_str, 1, 2, "S", "§5.8 L3514"),
+    "LEN": Builtin(S.length, 1, 1, "I", "§5.4 L3431", params="S"),
+    "MID$": Builtin(S.mid, 2, 3, "S", "§5.2 L3371", params="SII"),
+    "INSTR": Builtin(S.instr, 2, 3, "I", "§5.5 L3451", params="SSI"),
+    "ASC": Builtin(S.asc, 1, 1, "I", "§5.6 L3480", params="S"),
+    "CHR$": Builtin(S.chr_, 1, 1, "S", "§5.7 L3502", params="I"),
+    "VAL": Builtin(S.val, 1, 1, "?", "§5.9 L3541", params="S"),
+    "TRIM$": Builtin(S.trim, 1, 2, "S", "§5.10 L3571", params="SS"),
+    "STR$": Builtin(S.str_, 1, 2, "S", "§5.8 L3514"),
+    "EOF": Builtin(f_eof, 1, 1, "B", "§6 L4157", io=True, params="I"),
+    "FILEPOS": Builtin(f_filepos, 1, 2, "I", "§6 L4197", io=True),
+    "FILESIZE": Builtin(f_filesize, 1, 2, "I", "§6 L4305", io=True),
+    "ERASE": Builtin(f_erase, 1, 1, "I", "§6 L4379", io=True),
+    "FILEACCESS": Builtin(f_fileaccess, 1, 1, "I", "§6 L4406", io=True, params="S"),
+    "FILEDATE": Builtin(f_filedate, 1, 2, "S", "§6 L4433", io=True, params="SI"),
+    "INKEY": Builtin(f_inkey, 0, 0, "I", "§7 L4625", io=True),
     "MPOS": Builtin(f_mpos, 1, 3, "R", "§4.2.2 L1539", rt=True),
     "CPOS": Builtin(f_cpos, 1, 2, "R", "§4.2.1 L1404", rt=True),
     "AXO": Builtin(f_axo, 1, 2, "R", "§4.2.1 L1388", rt=True),
 }
 
-__all__ = ["FUNCTIONS", "Builtin", "CharField"]
+__all__ = ["FUNCTIONS", "Builtin"]

@@ -187,6 +187,8 @@ class Gen:
         return [e]
 
     def func(self, e: A.Func) -> tuple[str, str]:
+        if e.name == "MMC":
+            raise GenError("CPL001", "MMC(...) stands as a statement or as r% = MMC(...)")
         b = FUNCTIONS.get(e.name)
         if b is None:
             raise GenError("CPL037", f"{e.name} (chapters 4-9 of the manual come in a later version)")
@@ -194,12 +196,15 @@ class Gen:
         if not b.min_args <= n <= b.max_args:
             raise GenError("CPL001", f"{e.name} takes {b.min_args}..{b.max_args} arguments, not {n}")
         codes, types = [], []
-        for a in e.args:
+        for k, a in enumerate(e.args):
             if a is None:
                 codes.append("None")
                 types.append("N")
                 continue
             c, ty = self.ex(a)
+            want = b.params[k:k + 1]
+            if want == "S" and ty in NUMERIC + ("B",) or want in ("I", "N") and ty in ("S", "B"):
+                raise GenError("CPL032", f"{e.name}: argument {k + 1} is {_a(ty)} value")
             codes.append(c)
             types.append(ty)
         res = b.result
@@ -210,9 +215,9 @@ class Gen:
         if len(codes) == 1 and types[0] in NUMERIC and e.name in INLINE:
             return INLINE[e.name].format(codes[0]), res
         fn = f"_F_{e.name.replace('$', '_S')}"
-        if e.name == "STR$":
-            codes.append(repr(types[-1]))  # the standard format depends on the value's type
-        args = ", ".join((["_rt"] if b.rt else []) + codes)
+        if e.name == "STR$" and types[-1] == "D":
+            codes[-1] = f"_Dbl({codes[-1]})"  # the standard format depends on the value's type
+        args = ", ".join((["_rt"] if b.rt else []) + (["_io"] if b.io else []) + codes)
         return f"{fn}({args})", res
 
     # -- variables ----------------------------------------------------------------
@@ -261,7 +266,7 @@ class Gen:
                 return f"_sv({base})"
             if len(idx) != 1:
                 raise GenError("CPL001", f"{v.display}: one index selects a string of the 2-dimensional field")
-            return f"{base}[{idx[0]}].s"
+            return f"{base}.row({idx[0]}).text"
         if len(idx) != dims:
             raise GenError("CPL001", f"{v.display} needs {dims} ind{'ex' if dims == 1 else 'ices'}")
         return base + "".join(f"[{i}]" for i in idx)
@@ -339,7 +344,10 @@ class Gen:
             count = self.ex(e.args[2])[0] if len(e.args) > 2 and e.args[2] is not None else "None"
             self.emit(f"{self.local(v)} = _view({src}, {start}, {count})", line)
             return
-        code, ty = self.ex(e)
+        if isinstance(e, A.Func) and e.name == "MMC":
+            code, ty = self.mmc(e.args, line), "I"
+        else:
+            code, ty = self.ex(e)
         if v.cls == "L":
             name = self.local(v)
             dims = self.fields.get(v)
@@ -363,7 +371,7 @@ class Gen:
                 else:
                     if len(idx) != 1:
                         raise GenError("CPL001", f"{v.display}: one index selects a string of the field")
-                    self.emit(f"_setf({name}[{idx[0]}], {self.convert('S', e, code, ty)})", line)
+                    self.emit(f"_setf({name}.row({idx[0]}), {self.convert('S', e, code, ty)})", line)
                 return
             if len(idx) != dims:
                 raise GenError("CPL001", f"{v.display} needs {dims} ind{'ex' if dims == 1 else 'ices'}")
@@ -383,7 +391,7 @@ class Gen:
                 return
             idx = [self.index(i) for i in tv.index]
             if v.suffix == "$":
-                self.emit(f"_setf(_gfield({key})[{idx[0]}], {value})", line)
+                self.emit(f"_setf(_gfield({key}).row({idx[0]}), {value})", line)
             else:
                 self.emit(f"_gfield({key}){''.join(f'[{i}]' for i in idx)} = {value}", line)
             return
@@ -429,11 +437,11 @@ class Gen:
                 raise GenError("CPL025", f"MID$({v.display},...)= : {v.display} is not DIMensioned")
             base = self.local(v)
             if tv.index:
-                base += f"[{self.index(tv.index[0])}]"
+                base += f".row({self.index(tv.index[0])})"
         elif v.cls == "G":
             base = f"_G.get({v.display!r})"
             if tv.index:
-                base = f"_gfield({v.display!r})[{self.index(tv.index[0])}]"
+                base = f"_gfield({v.display!r}).row({self.index(tv.index[0])})"
         else:
             raise GenError("CPL037", "MID$ write on permanent variables")
         start = self.ex(s.mid[0])[0]
@@ -505,21 +513,113 @@ class Gen:
             self.store(s.result, r, "I", line)
 
     def proc(self, s: A.Proc) -> None:
+        """Statements of chapters 6-9: calls into the run's CplIO (``_io``), see docs/cpl-io.md."""
         line = s.line
-        if s.name in ("LJUST", "NJUST"):
-            self.emit(f"_rt.justify = {s.name[0]!r}", line)
+        name = s.name
+        if name in ("LJUST", "NJUST"):
+            self.emit(f"_io.mode.{name}()", line)
             return
-        if s.name == "PRN#":
-            if not s.args:
-                raise GenError("CPL001", "PRN# needs a file number")
-            codes, types = [], []
-            for a in s.args:
-                c, ty = self.ex(a) if a is not None else ("None", "N")
-                codes.append(c)
-                types.append(ty)
-            self.emit(f"_prn({''.join(types[1:])!r}, {', '.join(codes)})", line)
+        if name in ("PRN#", "INP#"):
+            if not s.args or s.args[0] is None:
+                raise GenError("CPL001", f"{name} needs a file number")
+            if name == "PRN#":
+                items = ", ".join(self.out_arg(a) for a in s.args)
+                self.emit(f"_io.files.PRN({items}, semicolon={s.no_end})", line)
+            else:
+                self.inp_file(s)
             return
-        raise GenError("CPL037", f"{s.name} (chapters 4-9 of the manual come in a later version)")
+        if name == "SFK":
+            self.sfk(s)
+            return
+        if name == "INP":
+            if len(s.args) != 1 or not isinstance(s.args[0], A.Var):
+                raise GenError("CPL001", "INP(var) needs one variable")
+            tv = s.args[0]
+            cur, ty = self.ex(tv)
+            r = self.temp("i")
+            self.emit(f"{r} = _io.screen.INP({tv.var.display!r}, {cur}, {ty!r})", line)
+            self.store(tv, r, "?", line)
+            return
+        if name == "PRN" and len(s.args) == 4 and isinstance(s.args[3], A.Var):
+            args = ", ".join(self.out_arg(a) for a in s.args)
+            self.emit(f"_io.screen.PRN({args}, name={s.args[3].var.display!r})", line)
+            return
+        if name == "MMC":
+            self.emit(self.mmc(s.args, line), line)
+            return
+        if name == "ERASE":
+            self.emit(f"_io.files.ERASE({self.args(s)})", line)
+            return
+        target = IO_PROCS.get(name)
+        if target is None:
+            raise GenError("CPL037", f"{name} (chapter 4 of the manual comes in a later version)")
+        self.emit(f"_io.{target}.{name}({self.args(s)})", line)
+
+    def args(self, s: A.Proc) -> str:
+        return ", ".join(self.out_arg(a) for a in s.args)
+
+    def out_arg(self, e) -> str:
+        """An argument of an output statement: DOUBLE values are marked, as their standard format differs."""
+        if e is None:
+            return "None"
+        code, ty = self.ex(e)
+        return f"_Dbl({code})" if ty == "D" else code
+
+    def inp_file(self, s: A.Proc) -> None:
+        """INP#(n, targets...): character fields are filled in place, plain variables get the values read."""
+        line = s.line
+        targets, stores = [], []
+        for k, a in enumerate(s.args[1:]):
+            if isinstance(a, A.Var) and a.var.suffix == "$" and self._is_char_field(a):
+                targets.append(self.field_ref(a))
+            elif isinstance(a, A.Func) and a.name == "MID$" and isinstance(a.args[0], A.Var) \
+                    and self._is_char_field(a.args[0]):
+                count = self.arg(a.args[2]) if len(a.args) > 2 else "None"
+                targets.append(f"_SView({self.field_ref(a.args[0])}, {self.arg(a.args[1])}, {count})")
+            elif isinstance(a, A.Var):
+                targets.append(repr(a.var.type if a.var.suffix != "$" else "S"))
+                stores.append((k, a))
+            else:
+                raise GenError("CPL001", "INP# reads into variables")
+        r = self.temp("r")
+        self.emit(f"{r} = _io.files.INP({self.arg(s.args[0])}, {', '.join(targets)}, semicolon={s.no_end})", line)
+        for k, a in stores:
+            self.store(a, f"{r}[{k}]", "?", line)
+
+    def field_ref(self, tv: A.Var) -> str:
+        """The character field object itself (not its text), for functions that write into it."""
+        v = tv.var
+        if v.cls == "L":
+            base = self.local(v)
+        elif v.cls == "G":
+            base = f"_gfield({v.display!r})"
+        else:
+            raise GenError("CPL037", f"{v.display}: permanent character fields as I/O targets")
+        if tv.index:
+            base += f".row({self.index(tv.index[0])})"
+        return base
+
+    def sfk(self, s: A.Proc) -> None:
+        if not s.args or not isinstance(s.args[0], A.Var):
+            raise GenError("CPL001", "SFK(var, texts...) needs a variable first")
+        tv = s.args[0]
+        cur, ty = self.ex(tv)
+        texts = "".join(f", {self.arg(a)}" for a in s.args[1:])
+        r = self.temp("k")
+        self.emit(f"{r} = _io.screen.SFK({cur}{texts}, want_text={ty == 'S'})", s.line)
+        self.store(tv, r, "?", s.line)
+
+    def mmc(self, args: list, line: int) -> str:
+        """MMC(v1,...,v20): names and values go to the client; the values it sends back are stored."""
+        if not args or any(not isinstance(a, A.Var) for a in args):
+            raise GenError("CPL001", "MMC takes CPL variables only")
+        names = tuple(a.var.display for a in args)
+        values = ", ".join(self.ex(a)[0] for a in args)
+        r = self.temp("m")
+        self.emit(f"{r} = _io.mmc.MMC({names!r}, ({values},))", line)
+        for k, a in enumerate(args):
+            self.store(a, f"{r}[1][{k}]", "?", line)
+        return f"{r}[0]"
 
     def nc(self, s: A.NcBlock) -> None:
         line = s.line
@@ -934,6 +1034,13 @@ def _tname(ty: str) -> str:
             "?": "unknown"}.get(ty, ty)
 
 
+#: statements that are plain calls of a CplIO part: name -> attribute of ``_io`` (chapters 6-8)
+IO_PROCS = {
+    **{n: "files" for n in ("OPENR", "OPENW", "CLOSE", "REWRITE", "SEEK")},
+    **{n: "screen" for n in ("DSP", "PRN", "DLG", "ENDDLG", "CSF", "TFO", "COL", "RGB", "GMD", "GWD", "MWD", "LIN",
+                              "CIR", "FIL", "CLG", "CLR", "CLS", "GPR", "BMP", "DLF")},
+}
+
 #: built-ins with a numeric argument known at compile time, written inline (no call, no type check)
 INLINE = {
     "ABS": "abs({0})",
@@ -947,8 +1054,9 @@ INLINE = {
 HELPER_NAMES = (
     "_rt", "_st", "_G", "_PM", "_EP", "_f32", "_toi", "_tor", "_tod", "_tob", "_tos", "_bad_assign", "_cond",
     "_logic", "_lnot", "_ix", "_sv", "_view", "_setf", "_midw", "_dim", "_pdim", "_gfield", "_gset_s", "_pint",
-    "_call", "_q", "_drain", "_wait", "_prn", "_Block", "_loose", "_word", "_mval", "_modal", "_modal_call",
+    "_call", "_q", "_drain", "_wait", "_Block", "_loose", "_word", "_mval", "_modal", "_modal_call",
     "_runaway", "_hook", "_caseval", "_nocall", "_msin", "_mcos", "_matan", "_msqrt",
+    "_io", "_Dbl", "_SView",
 ) + tuple(f"_F_{name.replace('$', '_S')}" for name in FUNCTIONS)
 
 

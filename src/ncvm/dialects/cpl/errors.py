@@ -46,7 +46,7 @@ CODES: dict[str, tuple[str, str]] = {
     "CPL034": ("definable permanent variable not declared", "§2.4.3 L548-570"),
     "CPL035": ("field not dimensioned", "§2.4.3 L702"),
     "CPL036": ("parameter is read-only", "digest §4.8"),
-    "CPL037": ("function not available in this version", "later issue (chapters 4-9)"),
+    "CPL037": ("function not available in this version", "later issue (chapter 4)"),
     "CPL038": ("declaration file error", "§2.4.3 L615-637"),
     "CPL039": ("WAIT condition can never be met (simulator deadlock)", "digest §5.10"),
 }
@@ -78,8 +78,9 @@ def diag(code: str, detail: str, file: str, line: int, column: int | None = None
     return Diagnostic(code, msg, Span(file, line, column))
 
 
-def fault(code: str, detail: str, file: str, line: int, cpl_line: int | None = None) -> RuntimeFault:
-    msg = message(code, detail)
+def fault(code: str, detail: str, file: str, line: int, cpl_line: int | None = None,
+          text: str | None = None) -> RuntimeFault:
+    msg = text if text is not None else message(code, detail)
     if cpl_line is not None:
         msg += f" (CPL line {cpl_line})"
     return RuntimeFault(code, msg, Span(file, line))

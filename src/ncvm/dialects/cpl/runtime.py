@@ -20,9 +20,13 @@ from ...machine.model import PlcImage, SimClock
 from ...nc.block import Block, DinSyntaxError, parse_din_line
 from ...nc.canon import Canon, Src
 from . import values as V
-from .builtins import FUNCTIONS, STANDARD, format_number
+from .builtins import FUNCTIONS
 from .codegen import HELPER_NAMES, generate
 from .errors import CplError, fault, message
+from .io import strings as S
+from .io.context import CplIO
+from .io.errors import CplRuntimeError
+from .io.values import CplText, Double
 from .linker import SUB_EXTENSIONS, LinkResult, call_table, link_one
 from .perm import DeclError, Permanents
 
@@ -42,7 +46,11 @@ class CplRuntime:
         cfg = self.machine.sections.get("cpl", {}) or {}
         self.lookahead = int(cfg.get("lookahead", 0))
         self.block_skip = bool(self.machine.setting_data.get("block_skip", True))
-        self.justify = "N"
+        self.io = CplIO.for_session(session)
+        session.screen = self.io.screen
+        self._pictures = 0
+        if session.options.screen_dir is not None:
+            self.io.screen.on_wait = self.save_wait_picture
         self.globals: dict = {}
         self.perm = Permanents(session)
         self.queue: deque = deque()
@@ -98,16 +106,17 @@ class CplRuntime:
             "_rt": self, "_st": self.session.steps, "_G": self.globals, "_PM": self.perm, "_EP": EndProgram,
             "_f32": V.f32, "_toi": V.to_int, "_tor": V.to_real, "_tod": V.to_double, "_tob": V.to_bool,
             "_tos": V.to_str, "_bad_assign": _bad_assign, "_cond": V.cond, "_logic": V.logic, "_lnot": V.lnot,
-            "_ix": V.index, "_sv": V.sv, "_view": _view, "_setf": _setf, "_midw": V.mid_write, "_dim": _dim,
+            "_ix": V.index, "_sv": V.sv, "_view": S.mid_for_variable, "_setf": _setf, "_midw": _midw, "_dim": _dim,
             "_pdim": _pdim, "_gfield": self.gfield, "_gset_s": self.gset_s, "_pint": _pint,
             "_call": lambda name, args, din, line: self.call(path, name, args, din, line),
             "_q": self.queue.append if self.lookahead <= 0 else self.queue_limited,
-            "_drain": self.drain, "_wait": self.wait, "_prn": self.prn, "_Block": Block, "_loose": self.loose,
+            "_drain": self.drain, "_wait": self.wait, "_Block": Block, "_loose": self.loose,
             "_word": V.word, "_mval": _mval, "_modal": self.modal,
             "_modal_call": lambda line: self.modal_call(path, line),
             "_runaway": lambda line: self.session.steps.runaway(path, line),
             "_hook": self._hook_for(path), "_caseval": _caseval, "_nocall": self.nocall,
             "_msin": math.sin, "_mcos": math.cos, "_matan": math.atan, "_msqrt": math.sqrt,
+            "_io": self.io, "_Dbl": Double, "_SView": S.StringView,
         }
         for name, b in FUNCTIONS.items():
             h[f"_F_{name.replace('$', '_S')}"] = b.impl
@@ -137,16 +146,35 @@ class CplRuntime:
             finally:
                 self.session.variables = self.report(result)
             self.drain()
+            self.io.end_program(png=self.session.options.screen)
             self.kernel.end_program(Src(main, max(1, len(self.linked.main.prog.stmts) and
                                                      self.linked.main.prog.stmts[-1].line)))
         except RuntimeFault as f:
+            self.finish_io_at_fault()
             if f.span is None:
                 f.span = Span(main, 1)
             raise
         except DeclError as e:
             raise RuntimeFault(e.code, message(e.code, e.message), Span(e.file, max(e.line, 1))) from None
         except Exception as e:  # noqa: BLE001 - every failure of generated code becomes a RUNTIME ERROR
+            self.finish_io_at_fault()
             raise self.to_fault(e) from None
+
+    def finish_io_at_fault(self) -> None:
+        """A run that faults still closes its files (what PRN# wrote stays) and saves --screen."""
+        try:
+            self.io.files.close_all()
+        except Exception:  # noqa: BLE001 - the fault that stopped the run is the one to report
+            pass
+        if self.session.options.screen is not None:
+            self.io.screen.save_png(self.session.options.screen)
+
+    def save_wait_picture(self) -> None:
+        """--screen-dir: the screen as the operator sees it when SFK or INP waits (screen_001.png, ...)."""
+        self._pictures += 1
+        folder = Path(self.session.options.screen_dir)
+        folder.mkdir(parents=True, exist_ok=True)
+        self.io.screen.save_png(folder / f"screen_{self._pictures:03d}.png")
 
     def report(self, result: dict) -> dict:
         out = {k: V.report(v) for k, v in result.items() if v is not None}
@@ -158,6 +186,8 @@ class CplRuntime:
     def to_fault(self, e: BaseException) -> RuntimeFault:
         if isinstance(e, CplError):
             code, detail = e.code, e.detail
+        elif isinstance(e, CplRuntimeError):
+            code, detail = e.code, ""
         elif isinstance(e, TypeError):
             code, detail = "CPL020", "NUL used in an expression"
         elif isinstance(e, ZeroDivisionError):
@@ -180,10 +210,11 @@ class CplRuntime:
             if uc is not None:
                 line = uc.src.source_line(fs.lineno)
                 frames.append((fs.filename, line, uc.cpl_lines.get(line)))
+        text = e.message if isinstance(e, CplRuntimeError) else message(code, detail)
         if not frames:
-            return RuntimeFault(code, message(code, detail), None)
+            return RuntimeFault(code, text, None)
         file, line, cpl = frames[-1]
-        f = fault(code, detail, file, line, cpl)
+        f = fault(code, detail, file, line, cpl, text=text)
         f.stack = [Frame(Path(p).name, Span(p, ln)) for p, ln, _ in frames]
         return f
 
@@ -254,14 +285,14 @@ class CplRuntime:
     # -- globals ------------------------------------------------------------------------------
     def gfield(self, key: str):
         f = self.globals.get(key)
-        if f is None or not isinstance(f, (list, V.CharField)):
+        if f is None or not isinstance(f, (list, S.CharacterField, S.CharacterTable)):
             raise CplError("CPL035", f"{key} is not DIMensioned")
         return f
 
     def gset_s(self, key: str, value, chained: bool) -> None:
         cur = self.globals.get(key)
-        if isinstance(cur, V.CharField):
-            cur.set(value)
+        if isinstance(cur, S.CharacterField):
+            _setf(cur, value)
         elif chained:
             raise CplError("CPL025", f"{key} is not DIMensioned")
         elif value is None:
@@ -411,76 +442,31 @@ class CplRuntime:
             return 1
         raise CplError("CPL039", "no scenario event sets the input")
 
-    # -- PRN#(0, ...) -------------------------------------------------------------------------
-    def prn(self, types: str, channel, *items) -> None:
-        """PRN#(0, ...): a line in the message window, formatted as PRN# formats a record (manual §6.3)."""
-        if channel != 0:
-            raise CplError("CPL037", "PRN# to files (chapter 6) comes in a later version; PRN#(0,...) writes "
-                                     "to the message window")
-        self.session.say(format_record(items, types, self.justify == "L"))
-
-
-def format_record(items, types: str, left: bool) -> str:
-    """Strings as they are; a '#'/'.' template in a string takes the next number; other numbers in the
-    standard format (INTEGER 9 places, REAL 4.3, DOUBLE 9.6), without leading blanks under LJUST."""
-    out: list[str] = []
-    slots: list[tuple[int, int, int, int]] = []  # (part index, start, width, decimals) of open templates
-    for item, ty in zip(items, types):
-        v = V.sv(item)
-        if v is None:
-            continue
-        if isinstance(v, str):
-            k = len(out)
-            i = 0
-            while i < len(v):
-                if v[i] == "#":
-                    j = i
-                    while j < len(v) and v[j] in "#.":
-                        j += 1
-                    run = v[i:j]
-                    dec = len(run) - run.index(".") - 1 if "." in run else 0
-                    slots.append((k, i, j - i, dec))
-                    i = j
-                else:
-                    i += 1
-            out.append(v)
-            continue
-        if v is True or v is False:
-            out.append("TRUE" if v else "FALSE")
-            continue
-        if slots:
-            k, start, width, dec = slots.pop(0)
-            text = format_number(v, width, dec)
-            out[k] = out[k][:start] + text + out[k][start + width:]
-            continue
-        width, dec = STANDARD["I" if isinstance(v, int) else ("D" if ty in ("D", "?") else "R")]
-        text = format_number(v, width, dec)
-        out.append(text.lstrip(" ") if left else text)
-    return "".join(out)
-
 
 def _bad_assign(detail: str):
     raise CplError("CPL021", detail)
 
 
-def _view(field, start, count):
-    if not isinstance(field, V.CharField):
-        return V.mid(field, start, count)
-    V.check_pos(start, "MID$ start")
-    if count is not None:
-        V.check_pos(count, "MID$ count")
-    return V.MidView(field, start, count)
-
-
 def _setf(field, value) -> None:
-    if field.__class__ is not V.CharField:
+    if not isinstance(field, S.CharacterField):
         raise CplError("CPL035", "character field used before its DIM")
-    field.set(value)
+    if value is not None and not isinstance(value, (str, CplText)):
+        raise CplError("CPL021", f"{V.type_name(value)} value assigned to a character field")
+    field.assign(value)
+
+
+def _midw(field, start, count, value) -> None:
+    """MID$(field, start[, count]) = value (manual §5.3)."""
+    if field is None:
+        raise CplError("CPL035", "MID$ target")
+    if value is None:
+        raise TypeError("NUL")
+    S.mid_write(field, start, count, value)
 
 
 def _dim(current, sizes: tuple, kind: str):
     """DIM: a second DIM with the same sizes keeps the field; other sizes are an error (digest §4.6)."""
-    if current is not None and (isinstance(current, (list, V.CharField))):
+    if current is not None and (isinstance(current, (list, S.CharacterField, S.CharacterTable))):
         have = _sizes(current)
         if have == list(sizes):
             return current
@@ -489,10 +475,10 @@ def _dim(current, sizes: tuple, kind: str):
 
 
 def _sizes(f) -> list[int]:
-    if isinstance(f, V.CharField):
+    if isinstance(f, S.CharacterField):
         return [f.size]
-    if f and isinstance(f[0], V.CharField):
-        return [len(f) - 1, f[0].size]
+    if isinstance(f, S.CharacterTable):
+        return [len(f.rows) - 1, f.rows[0].size]
     if f and isinstance(f[0], list):
         return [len(f) - 1, len(f[0]) - 1]
     return [len(f) - 1]

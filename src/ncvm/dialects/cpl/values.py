@@ -1,4 +1,6 @@
-"""CPL values at run time: NUL, binary32 REAL, character fields with a current length, MID$ views.
+"""CPL values at run time: NUL, binary32 REAL, type conversions on assignment, numeric fields.
+
+Character fields and MID$ views are the chapter-5 holders of :mod:`.io.strings`.
 
 NUL is Python ``None``: arithmetic on it raises TypeError, which the runtime reports as VARIABLE NOT
 ASSIGNED. REAL values are Python floats rounded to binary32 when stored (digest §4.2).
@@ -9,6 +11,8 @@ from __future__ import annotations
 import struct
 
 from .errors import CplError
+from .io.strings import CharacterField, CharacterTable
+from .io.values import CplText
 
 _F32 = struct.Struct("f")
 _pack = _F32.pack
@@ -138,102 +142,19 @@ def index(i):
     raise CplError("CPL031", f"index {i!r}")
 
 
-class CharField:
-    """A DIMensioned character field: up to ``size`` characters, of which the first ``len(s)`` are assigned."""
-
-    __slots__ = ("size", "s")
-
-    def __init__(self, size: int):
-        self.size = size
-        self.s: str | None = None
-
-    def set(self, v) -> None:
-        v = sv(v)
-        if v is None:
-            self.s = None
-            return
-        if v.__class__ is not str:
-            raise CplError("CPL021", f"{type_name(v)} value assigned to a character field")
-        self.s = v[: self.size]
-
-    def __repr__(self) -> str:
-        return f"CharField({self.size}, {self.s!r})"
-
-
-class MidView:
-    """``C$ = MID$(A$, 2, 5)`` into a non-dimensioned variable: a live view into the field (manual L3373-3401)."""
-
-    __slots__ = ("field", "start", "count")
-
-    def __init__(self, field: CharField, start: int, count: int | None):
-        self.field = field
-        self.start = start
-        self.count = count
-
-    def value(self):
-        return mid(self.field.s, self.start, self.count)
-
-
 def sv(v):
-    """The string a string variable currently holds (resolving MID$ views and fields)."""
-    c = v.__class__
-    if c is MidView:
-        return v.value()
-    if c is CharField:
-        return v.s
+    """The string a string variable currently holds (resolving character fields and MID$ views)."""
+    if isinstance(v, CplText):
+        return v.text
     return v
-
-
-def check_pos(v, what: str) -> int:
-    if v.__class__ is not int or not 1 <= v <= 1024:
-        if v is None:
-            raise TypeError("NUL")
-        raise CplError("CPL023", f"{what} {v!r} outside 1..1024")
-    return v
-
-
-def mid(s, start, count=None):
-    """MID$ read: count clipped at the end; a start past the end gives NUL (manual §5.2)."""
-    start = check_pos(start, "MID$ start")
-    if count is not None:
-        count = check_pos(count, "MID$ count")
-    s = sv(s)
-    if s is None:
-        return None
-    if s.__class__ is not str:
-        raise CplError("CPL032", "MID$ of a non-string")
-    if start > len(s):
-        return None
-    return s[start - 1:] if count is None else s[start - 1:start - 1 + count]
-
-
-def mid_write(field, start, count, value) -> None:
-    """MID$(field, start[, count]) = value: overwrite or extend in place (manual §5.3)."""
-    if field.__class__ is not CharField:
-        if field is None:
-            raise CplError("CPL035", "MID$ target")
-        raise CplError("CPL025", "MID$(...)= needs a DIMensioned character field")
-    start = check_pos(start, "MID$ start")
-    if count is not None:
-        count = check_pos(count, "MID$ count")
-    value = sv(value)
-    if value is None:
-        raise TypeError("NUL")
-    cur = field.s or ""
-    if start > len(cur) + 1:
-        raise CplError("CPL024", f"start {start} beyond current length {len(cur)} + 1")
-    n = len(value) if count is None else min(count, len(value))
-    piece = value[:n]
-    new = cur[: start - 1] + piece + cur[start - 1 + len(piece):]
-    field.s = new[: field.size]
 
 
 def new_field(sizes: list[int], kind: str):
-    """A DIMensioned field: numeric 0..n per dimension; character fields as CharField rows."""
+    """A DIMensioned field: numeric 0..n per dimension; character fields as io.strings holders (chapter 5)."""
     if kind == "S":
         if len(sizes) == 1:
-            return CharField(sizes[0])
-        return [CharField(sizes[1]) for _ in range(sizes[0] + 1)]
+            return CharacterField(sizes[0])
+        return CharacterTable(sizes[0], sizes[1])
     if len(sizes) == 1:
         return [None] * (sizes[0] + 1)
     return [[None] * (sizes[1] + 1) for _ in range(sizes[0] + 1)]
@@ -241,9 +162,10 @@ def new_field(sizes: list[int], kind: str):
 
 def report(v):
     """A variable's value for the JSON result."""
-    c = v.__class__
-    if c is CharField or c is MidView:
-        return sv(v)
-    if c is list:
+    if isinstance(v, CplText):
+        return v.text
+    if v.__class__ is CharacterTable:
+        return [row.text for row in v.rows]
+    if v.__class__ is list:
         return [report(x) for x in v]
     return v

@@ -1,8 +1,9 @@
 """The CPL run-time errors and warnings of manual chapters 5-9, as one exception class and a table.
 
 The manual names these errors by text only (it numbers just 2153 and 2167), so each
-gets a stable project code grouped by manual chapter (CPL5xx strings, CPL6xx files,
-CPL7xx dialog, CPL8xx graphics); the message is the manual's text. The CPL front end
+gets a stable project code: the chapter-5 string errors share the language's codes
+(CPL021-CPL025, see ``cpl/errors.py``), the others are grouped by manual chapter (CPL6xx
+files, CPL7xx dialog, CPL8xx graphics, CPL9xx MMC); the message is the manual's text. The CPL front end
 turns :class:`CplRuntimeError` into :class:`ncvm.diagnostics.RuntimeFault`
 (``RuntimeFault(err.code, err.message, span, stack)``).
 """
@@ -16,11 +17,11 @@ from typing import Callable
 ERRORS: dict[str, tuple[str, str, str]] = {
     # chapter 5, strings
     "NESTING_TOO_DEEP": ("2153", "NESTING TOO DEEP", "L3773"),
-    "INVALID_FIELD_LIMIT": ("CPL501", "INVALID FIELD LIMIT", "L3358"),
-    "INVALID_PARAMETER": ("CPL502", "INVALID PARAMETER", "L3390, L3415, L3461, L4237, L4286, L4338"),
-    "CHARACTER_FIELD_NOT_ASSIGNED": ("CPL503", "CHARACTER FIELD NOT ASSIGNED", "L3427, L3646, L3694"),
-    "INVALID_ASSIGNMENT": ("CPL504", "INVALID ASSIGNMENT", "L3545"),
-    "INADMISSIBLE_ASSIGNMENT": ("CPL505", "Inadmissible assignment to a non-dimensioned STRING variable",
+    "INVALID_FIELD_LIMIT": ("CPL022", "INVALID FIELD LIMIT", "L3358"),
+    "INVALID_PARAMETER": ("CPL023", "INVALID PARAMETER", "L3390, L3415, L3461, L4237, L4286, L4338"),
+    "CHARACTER_FIELD_NOT_ASSIGNED": ("CPL024", "CHARACTER FIELD NOT ASSIGNED", "L3427, L3646, L3694"),
+    "INVALID_ASSIGNMENT": ("CPL021", "INVALID ASSIGNMENT", "L3545"),
+    "INADMISSIBLE_ASSIGNMENT": ("CPL025", "Inadmissible assignment to a non-dimensioned STRING variable",
                                 "L3520, L3609-3614, L3789-3793"),
     # chapter 6, files
     "INVALID_LOGICAL_NUMBER": ("CPL601", "INVALID LOGICAL NUMBER", "L3912"),

@@ -368,9 +368,8 @@ class CplFiles:
 
     @staticmethod
     def _read_one(record: str, off: int, target):
-        if isinstance(target, CharacterField) or (isinstance(getattr(target, "size", None), int)
-                                                  and callable(getattr(target, "assign", None))):
-            text = record[off: off + target.size]  # any field with .size and .assign(text)
+        if isinstance(target, CharacterField):
+            text = record[off: off + target.size]
             target.assign(text)
             return text, off + len(text)
         if isinstance(target, StringView):

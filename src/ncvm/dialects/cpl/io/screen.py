@@ -230,6 +230,7 @@ class Screen(Graphics):
         self.in_dialog = False
         self.log: list[str] = []
         self.on_output = None  # called with every line added to the log (CplIO sends it to session.say)
+        self.on_wait = None  # called when SFK or INP starts waiting for the operator (--screen-dir pictures)
         self.labels: list[tuple[int, int, str, tuple[int, int, int, int], int]] = []  # GPR texts
 
     # -- text ------------------------------------------------------------------------------
@@ -333,6 +334,8 @@ class Screen(Graphics):
         m = TEMPLATE.search(field.text)
         int_digits, decimals = template_shape(m.group()) if m else (9, 0 if kind == "I" else 3)
         value = current
+        if self.on_wait is not None:
+            self.on_wait()
         while True:
             event = self.keys.wait(f"INP({name})")
             if event.kind == "type":
@@ -377,6 +380,8 @@ class Screen(Graphics):
         self.softkeys = (bar + [None] * 8)[: self.softkey_count]
         self._log("SFK " + " ".join(f"[{i}:{t.replace('&', ' ')}]" for i, t in
                                           enumerate(self.softkeys, 1) if t))
+        if self.on_wait is not None:
+            self.on_wait()
         while True:
             event = self.keys.wait("SFK")
             if event.kind != "key":

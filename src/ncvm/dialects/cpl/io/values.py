@@ -4,8 +4,8 @@ Conventions for the code generator:
 
 * INTEGER = Python ``int``, BOOLEAN = ``bool``, REAL = ``float`` (binary32-rounded or not),
   DOUBLE = :class:`Double` (a ``float`` subclass; wrap a DOUBLE-typed expression where its
-  type matters for output: ``Double(x)``), strings = ``str``, any :class:`CplText` (character
-  fields and MID$ views) or any object with ``__cpl_text__()``, NUL = ``None``.
+  type matters for output: ``Double(x)``), strings = ``str`` or any :class:`CplText` (character
+  fields and MID$ views of :mod:`.strings`), NUL = ``None``.
 """
 
 from __future__ import annotations
@@ -28,23 +28,16 @@ class CplText:
 
 
 def text_of(value) -> str | None:
-    """The string a string value stands for, None for NUL.
-
-    Besides ``str`` and :class:`CplText`, any object with a ``__cpl_text__()`` method is a string
-    holder (so the language runtime's own field and view classes can be passed in as they are).
-    """
+    """The string a string value stands for, None for NUL."""
     if value is None or isinstance(value, str):
         return value
     if isinstance(value, CplText):
         return value.text
-    hook = getattr(type(value), "__cpl_text__", None)
-    if hook is not None:
-        return hook(value)
     raise TypeError(f"not a CPL string: {value!r}")
 
 
 def is_text(value) -> bool:
-    return isinstance(value, (str, CplText)) or hasattr(type(value), "__cpl_text__")
+    return isinstance(value, (str, CplText))
 
 
 def kind_of(value) -> str:
