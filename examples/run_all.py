@@ -36,11 +36,13 @@ def main() -> int:
     for folder in sorted(p for p in HERE.iterdir() if p.is_dir() and p.name != "machines"):
         for program in main_programs(folder):
             machine = folder / "machine.toml"
-            keys = program.with_suffix(".keys")  # the operator's key presses of a dialog program
+            keys = program.with_suffix(".keys")  # a dialog program comes with the operator's key presses
+            dialog = keys.is_file()
+            shot = out / f"{folder.name}_{program.stem}_screen.png"
             try:
                 result, session = run(program, machine=machine if machine.is_file() else None,
-                                      options=RunOptions(state_dir=out / ".ncvm",
-                                                         keys=keys if keys.is_file() else None))
+                                      options=RunOptions(state_dir=out / ".ncvm", keys=keys if dialog else None,
+                                                         screen=shot if dialog else None))
             except UsageError as e:
                 print(f"{program}: {e}", file=sys.stderr)
                 failures += 1
@@ -52,9 +54,7 @@ def main() -> int:
                                                                    f"{result['error']['message']}"
             print(f"{program.relative_to(HERE)}: {status}; {m['rapid_moves'] + m['feed_moves'] + m['arc_moves']} "
                   f"moves, feed path {m['feed_length']:.1f} mm, cycle time {result['cycle_time_s']:.1f} s -> {plot}")
-            if session.screen is not None:
-                shot = out / f"{folder.name}_{program.stem}_screen.png"
-                session.screen.save_png(shot)
+            if dialog and shot.is_file():
                 print(f"    screen -> {shot}")
             for line in result["output"][:5]:
                 print(f"    | {line}")
