@@ -13,6 +13,7 @@ from . import ast as A
 from .builtins import FUNCTIONS
 from .errors import diag
 from .lexer import VarName
+from .system import SYSTEM_PROCS
 from .values import f32
 
 #: parameter Pn seen through its suffix (digest §4.8): the conversion applied to the passed value
@@ -194,10 +195,15 @@ class Gen:
         if not b.min_args <= n <= b.max_args:
             raise GenError("CPL001", f"{e.name} takes {b.min_args}..{b.max_args} arguments, not {n}")
         codes, types = [], []
-        for a in e.args:
+        refs, out = getattr(b, "refs", ()), getattr(b, "out", None)
+        for k, a in enumerate(e.args):
             if a is None:
                 codes.append("None")
                 types.append("N")
+                continue
+            if k in refs and isinstance(a, A.Var) and not a.index:
+                codes.append(self.by_name(a))  # a field given by its bare name (GETERR, MCODS)
+                types.append("F")
                 continue
             c, ty = self.ex(a)
             codes.append(c)
@@ -213,7 +219,30 @@ class Gen:
         if e.name == "STR$":
             codes.append(repr(types[-1]))  # the standard format depends on the value's type
         args = ", ".join((["_rt"] if b.rt else []) + codes)
+        if out is not None:
+            return self.write_back(f"{fn}({args})", e.args[out] if out < len(e.args) else None, e.name), res
         return f"{fn}({args})", res
+
+    def by_name(self, a: A.Var) -> str:
+        v = a.var
+        if v.cls == "L" and self.fields.get(v) is not None:
+            return self.local(v)
+        if v.cls == "G":
+            return f"_gfield({v.display!r})"
+        raise GenError("CPL035", f"{v.display}: a DIMensioned local or global field is needed here")
+
+    def write_back(self, call: str, target, name: str) -> str:
+        """A function that returns (result, value for its variable argument), e.g. MCODS's version."""
+        if not isinstance(target, A.Var) or target.index or target.var.cls not in ("L", "G") \
+                or target.var.type not in NUMERIC:
+            raise GenError("CPL001", f"{name}: the version must be a numeric local or global variable")
+        t = self.temp("r")
+        value = f"{t}[1]" if target.var.type == "I" else f"float({t}[1])"
+        if target.var.cls == "L":
+            put = f"({self.local(target.var)} := {value})"
+        else:
+            put = f"_G.__setitem__({target.var.display!r}, {value})"
+        return f"({t} := {call}, {put}, {t}[0])[2]"
 
     # -- variables ----------------------------------------------------------------
     def read(self, e: A.Var) -> tuple[str, str]:
@@ -518,6 +547,15 @@ class Gen:
                 codes.append(c)
                 types.append(ty)
             self.emit(f"_prn({''.join(types[1:])!r}, {', '.join(codes)})", line)
+            return
+        if s.name in SYSTEM_PROCS:  # chapter 4: FXC(...)=v and friends, FXCR, FXDEL, FXINS
+            _, lo, hi = SYSTEM_PROCS[s.name]
+            if not lo <= len(s.args) <= hi:
+                raise GenError("CPL001", f"{s.name.rstrip('=')} takes {lo}..{hi} arguments, not {len(s.args)}")
+            args = [self.ex(a)[0] if a is not None else "None" for a in s.args]
+            if s.name.endswith("="):
+                args[-1] = f"value={args[-1]}"
+            self.emit(f"_rt.sys_procs[{s.name!r}](_rt, {', '.join(args)})", line)
             return
         raise GenError("CPL037", f"{s.name} (chapters 4-9 of the manual come in a later version)")
 

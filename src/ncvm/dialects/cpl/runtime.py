@@ -25,6 +25,10 @@ from .codegen import HELPER_NAMES, generate
 from .errors import CplError, fault, message
 from .linker import SUB_EXTENSIONS, LinkResult, call_table, link_one
 from .perm import DeclError, Permanents
+from .system import SYSTEM_PROCS
+from .system import setup as system_setup
+from .system.controller import load_controller
+from .system.plc import f_ic
 
 MAX_NESTING = 7  # sub-program levels below the main program (manual §2.1 L323)
 
@@ -60,6 +64,9 @@ class CplRuntime:
         self.t_prep = self.machine.clock.now
         self._events = [e for e in self.machine.scenario if e.kind == "input"]
         self._next_event = 0
+        self.ctl = load_controller(self.machine, lambda: session.store)  # chapter 4 controller state
+        self.sys_procs = {name: row[0] for name, row in SYSTEM_PROCS.items()}
+        system_setup(self)
 
     # -- units ----------------------------------------------------------------------
     def unit(self, path: str):
@@ -369,9 +376,7 @@ class CplRuntime:
         self.t_prep = t_end
 
     def ic(self, args: tuple) -> bool:
-        key = "IC(" + ",".join(str(a) for a in args) + ")"
-        self._apply_events(self.machine.clock.now)
-        return bool(self.machine.plc.inputs.get(key, False))
+        return f_ic(self, *args)
 
     def _apply_events(self, t: float) -> None:
         while self._next_event < len(self._events) and self._events[self._next_event].time <= t:
