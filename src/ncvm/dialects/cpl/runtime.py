@@ -29,6 +29,7 @@ from .system import SYSTEM_PROCS
 from .system import setup as system_setup
 from .system.controller import load_controller
 from .system.plc import f_ic
+from .system.positions import probe_block
 
 MAX_NESTING = 7  # sub-program levels below the main program (manual §2.1 L323)
 
@@ -67,6 +68,8 @@ class CplRuntime:
         self.ctl = load_controller(self.machine, lambda: session.store)  # chapter 4 controller state
         self.sys_procs = {name: row[0] for name, row in SYSTEM_PROCS.items()}
         system_setup(self)
+        self._probing = any(getattr(w, "address", None) == "G" and (w.value == 75 or w.expr is not None)
+                            for u in linked.units.values() for st in u.prog.stmts for w in getattr(st, "words", ()))
 
     # -- units ----------------------------------------------------------------------
     def unit(self, path: str):
@@ -108,7 +111,8 @@ class CplRuntime:
             "_ix": V.index, "_sv": V.sv, "_view": _view, "_setf": _setf, "_midw": V.mid_write, "_dim": _dim,
             "_pdim": _pdim, "_gfield": self.gfield, "_gset_s": self.gset_s, "_pint": _pint,
             "_call": lambda name, args, din, line: self.call(path, name, args, din, line),
-            "_q": self.queue.append if self.lookahead <= 0 else self.queue_limited,
+            "_q": self.enqueue_probe if self._probing else (
+                self.queue.append if self.lookahead <= 0 else self.queue_limited),
             "_drain": self.drain, "_wait": self.wait, "_prn": self.prn, "_Block": Block, "_loose": self.loose,
             "_word": V.word, "_mval": _mval, "_modal": self.modal,
             "_modal_call": lambda line: self.modal_call(path, line),
@@ -281,6 +285,16 @@ class CplRuntime:
         self.queue.append(blk)
         if len(self.queue) > self.lookahead:
             self.execute_one()
+
+    def enqueue_probe(self, blk) -> None:
+        """G75 (measuring) blocks are executed before preparation goes on (manual §4.2, SD(9) L2309)."""
+        if 75 in blk.g:
+            self.queue.append(probe_block(self, blk))
+            self.drain()
+        elif self.lookahead <= 0:
+            self.queue.append(blk)
+        else:
+            self.queue_limited(blk)
 
     def execute_one(self) -> None:
         blk = self.queue.popleft()

@@ -3,7 +3,7 @@
 "Prepared" values (AXO, CPOS) come from the NC state after every block prepared so far (the runtime's
 prepared kernel); "executed" values (WPOS, MPOS, APOS, SPOS) from the NC kernel, which has only run the
 blocks a WAIT (or the look-ahead depth) let through: read before a WAIT they are stale (§4.1).
-Probe values come from the latest "probe" scenario event that has happened by the executed time.
+Probe values are latched by a G75 block from the next "probe" scenario event (see probe_block).
 """
 
 from __future__ import annotations
@@ -85,14 +85,35 @@ def f_apos(rt, sel):
 
 
 # -- probing (G75) -------------------------------------------------------------------------------
+def probe_block(rt, blk):
+    """A G75 measuring block: it travels like G1 towards its end point; if a "probe" scenario event is
+    left, the probe switches at the event's axis positions (MCS), the move stops there and the latch
+    holds them; otherwise the end point is reached and SD(9) gives 1. The block is executed before
+    preparation goes on, so SD(9) and the measured values can be read in the next CPL block (L1451)."""
+    c, k = rt.ctl, rt.prepared_kernel()
+    events = [e for e in rt.machine.scenario if e.kind == "probe"]
+    used = getattr(c, "probes_used", 0)
+    words = dict(blk.words)
+    g = tuple(1 if x == 75 else x for x in blk.g)
+    c.probe_latch = None
+    if used < len(events):
+        c.probes_used = used + 1
+        trigger = {str(n).upper(): float(v) for n, v in events[used].data.items()}
+        c.probe_latch = {}
+        for name, v in trigger.items():
+            i = k.axis_of.get(name)
+            if i is None:
+                continue
+            c.probe_latch[name] = v
+            if name in words:
+                target = v - k.offset_vec[i]
+                words[name] = (target if k.absolute else target - k.prog[i]) / k.scale
+    return type(blk)(g, blk.m, words, blk.n, blk.msg, blk.src)
+
+
 def probe_latch(rt) -> dict | None:
-    """The latest probe event that has happened by the executed time: {axis name: MCS value}."""
-    now = rt.machine.clock.now
-    latch = None
-    for ev in rt.machine.scenario:
-        if ev.kind == "probe" and ev.time <= now:
-            latch = {str(k).upper(): float(v) for k, v in ev.data.items() if k not in ("kind", "time")}
-    return latch
+    """The axis positions (MCS) at which the probe switched in the last G75 block, None if it did not."""
+    return getattr(rt.ctl, "probe_latch", None)
 
 
 def _latched(rt, ax) -> float:
