@@ -140,8 +140,7 @@ def load_controller(machine, store=None) -> Controller:
 def _zs_table(c: Controller, where: str, table: dict) -> dict:
     """A ZS table from the machine file: rows G54 ... G259 (one value per column), optional columns/unit."""
     columns = [str(n).upper() for n in table.get("columns", [c.axes[i].name for i in sorted(c.axes)])]
-    out = {"columns": columns, "unit": table.get("unit", c.zs_unit), "strict": int(table.get("strict", 0)),
-           "rows": {}}
+    out = new_zs_table(columns, table.get("unit", c.zs_unit), int(table.get("strict", 0)))
     for row, vals in table.items():
         if row in ("columns", "unit", "strict"):
             continue
