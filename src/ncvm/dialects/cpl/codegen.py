@@ -196,13 +196,14 @@ class Gen:
             raise GenError("CPL001", f"{e.name} takes {b.min_args}..{b.max_args} arguments, not {n}")
         codes, types = [], []
         refs, out = getattr(b, "refs", ()), getattr(b, "out", None)
+        backs: list = []  # (variable, python expression) to store after the call
         for k, a in enumerate(e.args):
             if a is None:
                 codes.append("None")
                 types.append("N")
                 continue
             if k in refs and isinstance(a, A.Var) and not a.index:
-                codes.append(self.by_name(a))  # a field given by its bare name (GETERR, MCODS)
+                codes.append(self.by_name(a, backs))  # a field given by its bare name (GETERR, MCODS)
                 types.append("F")
                 continue
             c, ty = self.ex(a)
@@ -219,30 +220,41 @@ class Gen:
         if e.name == "STR$":
             codes.append(repr(types[-1]))  # the standard format depends on the value's type
         args = ", ".join((["_rt"] if b.rt else []) + codes)
-        if out is not None:
-            return self.write_back(f"{fn}({args})", e.args[out] if out < len(e.args) else None, e.name), res
+        if out is not None or backs:
+            t = self.temp("r")
+            if out is not None:  # the function returns (result, new value of argument ``out``)
+                backs.insert(0, (e.args[out] if out < len(e.args) else None, f"{t}[1]"))
+                call = f"({t} := {fn}({args}))"
+            else:
+                call = f"({t} := ({fn}({args}),))"
+            puts = [self.put(target, value, e.name) for target, value in backs]
+            return f"({call}, {', '.join(puts)}, {t}[0])[-1]", res
         return f"{fn}({args})", res
 
-    def by_name(self, a: A.Var) -> str:
+    def by_name(self, a: A.Var, backs: list) -> str:
+        """(field, type) for a field given by name; a simple numeric local variable travels in a box
+        [None, value] as a one-element field and is stored back after the call."""
         v = a.var
         if v.cls == "L" and self.fields.get(v) is not None:
-            return self.local(v)
+            return f"({self.local(v)}, {v.type!r})"
         if v.cls == "G":
-            return f"_gfield({v.display!r})"
+            return f"(_gfield({v.display!r}), {v.type!r})"
+        if v.cls == "L" and v.type in NUMERIC:
+            box = self.temp("b")
+            backs.append((a, f"{box}[1]"))
+            return f"(({box} := [None, {self.local(v)}]), {v.type!r})"
         raise GenError("CPL035", f"{v.display}: a DIMensioned local or global field is needed here")
 
-    def write_back(self, call: str, target, name: str) -> str:
-        """A function that returns (result, value for its variable argument), e.g. MCODS's version."""
+    def put(self, target, value: str, name: str) -> str:
+        """An assignment inside an expression (walrus for locals) of a numeric local or global variable."""
         if not isinstance(target, A.Var) or target.index or target.var.cls not in ("L", "G") \
                 or target.var.type not in NUMERIC:
-            raise GenError("CPL001", f"{name}: the version must be a numeric local or global variable")
-        t = self.temp("r")
-        value = f"{t}[1]" if target.var.type == "I" else f"float({t}[1])"
+            raise GenError("CPL001", f"{name}: a numeric local or global variable is needed here")
+        ty = target.var.type
+        conv = f"_toi({value})" if ty == "I" else (f"_f32({value})" if ty == "R" else f"_tod({value})")
         if target.var.cls == "L":
-            put = f"({self.local(target.var)} := {value})"
-        else:
-            put = f"_G.__setitem__({target.var.display!r}, {value})"
-        return f"({t} := {call}, {put}, {t}[0])[2]"
+            return f"({self.local(target.var)} := {conv})"
+        return f"_G.__setitem__({target.var.display!r}, {conv})"
 
     # -- variables ----------------------------------------------------------------
     def read(self, e: A.Var) -> tuple[str, str]:

@@ -145,7 +145,9 @@ def _version(data) -> int:
     return (zlib.crc32(repr(data).encode()) & 0xFFFFFF) or 1  # exact in a REAL variable
 
 
-def _fill(buffer, data, size: int) -> None:
+def _fill(ref, data, size: int) -> None:
+    """Write the data into the buffer (field, type) from element 1 on, as the manual's BUF%(1)."""
+    buffer, ty = ref if isinstance(ref, tuple) else (ref, None)
     if isinstance(data, str):
         if not isinstance(buffer, CharField):
             raise CplError("CPL032", "MCODS: this service needs a DIMensioned character field")
@@ -153,13 +155,12 @@ def _fill(buffer, data, size: int) -> None:
             raise CplError("CPL023", f"MCODS size {size} is larger than the field ({buffer.size})")
         buffer.set(data[:size])
         return
-    if not isinstance(buffer, list):
-        raise CplError("CPL035", "MCODS needs a DIMensioned field given by name")
+    if not isinstance(buffer, list) or ty not in ("I", "R", "D"):
+        raise CplError("CPL032", "MCODS: this service needs a numeric variable or field")
     if size > len(buffer) - 1:
         raise CplError("CPL023", f"MCODS size {size} is larger than the field ({len(buffer) - 1})")
-    is_int = isinstance(buffer[0], int)
     for n, v in enumerate(data[:size], 1):
-        buffer[n] = int(round(v)) if is_int else float(v)
+        buffer[n] = int(round(v)) if ty == "I" else float(v)
 
 
 def f_mcops(rt, fct, chan, p1=None, p2=None, p3=None, p4=None):

@@ -122,7 +122,8 @@ def f_geterr(rt, chan, cat, errarr, count=1):
     cat = 0 if cat is None else cat
     if chan.__class__ is not int or (chan != -1 and chan < 1) or cat not in range(11):
         return -1
-    if not isinstance(errarr, list) or not errarr or not isinstance(errarr[0], list) or len(errarr[0]) < 4:
+    errarr, ty = errarr if isinstance(errarr, tuple) else (errarr, None)
+    if ty != "I" or not errarr or not isinstance(errarr[0], list) or len(errarr[0]) < 4:
         raise CplError("CPL035", "GETERR needs a 2-dimensional INTEGER field DIM E%(n,3), given by name")
     found = [e for e in rt.ctl.errors
              if (chan == -1 or e["channel"] in (chan, -1)) and (cat == 0 or e["category"] == cat)]
