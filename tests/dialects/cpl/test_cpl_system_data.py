@@ -165,3 +165,37 @@ def test_unknown_cpl_key_is_an_error_naming_it(run_text, reference):
         run_text("1 A=1\nM30\n", name="p.cpl", machine=reference(cpl={"zs_tabels": {}}))
     with pytest.raises(UsageError, match=r"axes\[1\]\.kanal"):
         run_text("1 A=1\nM30\n", name="p.cpl", machine=reference(cpl={"axes": [{"name": "X", "kanal": 1}]}))
+
+
+SERCOS = {"axes": [{"name": "X", "sercos": {"S-0-0030": "DKC 03.3", "P-0-0004": 7, "S-0-0017": [1, 51, 130]}},
+                   {"name": "Y"}, {"name": "Z"}]}
+
+
+def test_scs_example_l2160(run):
+    text = ("N1 G1 X12.5 F1000\n2 WAIT\n10 POSITION% = SCS(1, \"S\", 51, ERROR%)\n11 PAR4%=SCS(\"X\",\"P\",4)\n"
+            "12 V$=SCS(1,\"S\",30)\n13 SCSL(1,\"S\",17,\"S17.TXT\",R%)\nM30\n")
+    r = run(text, cpl=SERCOS)
+    assert r["status"] == "ok", r["error"]
+    assert r["variables"] == {"POSITION%": 125000, "ERROR%": 0, "PAR4%": 7, "V$": "DKC 03.3", "R%": 0}
+
+
+def test_scsl_writes_the_list_as_records(run_text, reference, tmp_path):
+    m = reference(cpl=SERCOS)
+    r = run_text('1 SCSL(1,"S",17,"S17.TXT")\nM30\n', name="p.cpl", machine=m)
+    assert r["status"] == "ok", r["error"]
+    assert (m.file_root / "S17.TXT").read_bytes() == b"1\n51\n130\n\x03\n"
+
+
+def test_scs_locked_service_channel(run):
+    """While locked the result variable gets 1 and the value read last remains; without it: the error."""
+    text = ("N1 G1 X1 F1000\n2 WAIT\n10 P%=SCS(1,\"S\",51,E%)\nN11 G1 X2\n12 WAIT(,1000)\n13 P%=SCS(1,\"S\",51,E%)\n"
+            "14 Q%=SCS(1,\"S\",51)\nM30\n")
+    r = run(text, cpl=SERCOS, scenario=[{"time": 1.0, "kind": "sercos", "locked": True}])
+    assert r["error"]["code"] == "CPL041" and r["error"]["line"] == 7
+    r = run(text.replace('14 Q%=SCS(1,"S",51)\n', ""), cpl=SERCOS,
+            scenario=[{"time": 1.0, "kind": "sercos", "locked": True}])
+    assert r["variables"] == {"P%": 10000, "E%": 1}
+
+
+def test_scs_list_parameter_is_an_error(run):
+    assert run('1 A%=SCS(1,"S",17,E%)\nM30\n', cpl=SERCOS)["error"]["code"] == "CPL040"

@@ -207,6 +207,8 @@ class Gen:
                 types.append("F")
                 continue
             c, ty = self.ex(a)
+            if k == out:
+                c = f"(0 if {c} is None else {c})"  # present, even when not yet assigned
             codes.append(c)
             types.append(ty)
         res = b.result
@@ -220,6 +222,8 @@ class Gen:
         if e.name == "STR$":
             codes.append(repr(types[-1]))  # the standard format depends on the value's type
         args = ", ".join((["_rt"] if b.rt else []) + codes)
+        if out is not None and (out >= len(e.args) or e.args[out] is None):
+            return f"{fn}({args})[0]", res  # the variable is not given: only the result
         if out is not None or backs:
             t = self.temp("r")
             if out is not None:  # the function returns (result, new value of argument ``out``)
@@ -559,6 +563,9 @@ class Gen:
                 codes.append(c)
                 types.append(ty)
             self.emit(f"_prn({''.join(types[1:])!r}, {', '.join(codes)})", line)
+            return
+        if s.name in FUNCTIONS and s.name not in SYSTEM_PROCS:  # SCSL(...), MCOPS(...) as a statement
+            self.emit(self.func(A.Func(s.name, s.args, 0))[0], line)
             return
         if s.name in SYSTEM_PROCS:  # chapter 4: FXC(...)=v and friends, FXCR, FXDEL, FXINS
             _, lo, hi = SYSTEM_PROCS[s.name]

@@ -51,6 +51,7 @@ CODES: dict[str, tuple[str, str]] = {
     "CPL037": ("function not available in this version", "later issue (chapters 4-9)"),
     "CPL038": ("declaration file error", "§2.4.3 L615-637"),
     "CPL039": ("WAIT condition can never be met (simulator deadlock)", "digest §5.10"),
+    "CPL041": ("SERCOS SERVICE CHANNEL IS LOCKED", "§4.9 L2156"),
     "CPL040": ("runtime error", "chapter 4: system data not available or not allowed (digest §7.1)"),
 }
 

@@ -11,7 +11,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from ..builtins import Builtin
-from . import ncs, offsets, plc, positions, sysdata, tools
+from . import ncs, offsets, plc, positions, sercos, sysdata, tools
 
 
 @dataclass(frozen=True, slots=True)
@@ -39,6 +39,8 @@ SYSTEM_FUNCTIONS: dict[str, Builtin] = {
     "TDA": _b(tools.f_tda, 3, 4, "?", "§4.5 L1895"),
     "SD": _b(sysdata.f_sd, 1, 4, "I", "§4.9 L2196"),
     "SDR": _b(sysdata.f_sdr, 1, 3, "R", "§4.9 L2313"),
+    "SCS": _b(sercos.f_scs, 3, 4, "?", "§4.9 L2114", out=3),
+    "SCSL": _b(sercos.f_scsl, 4, 5, "I", "§4.9 L2167", out=4),
     "MCA": _b(sysdata.f_mca, 2, 3, "?", "§4.9 L2054"),
     "NCF": _b(sysdata.f_ncf, 1, 1, "S", "§4.9 L2090"),
     "AXP": _b(ncs.f_axp, 2, 3, "S", "§4.10 L2352"),

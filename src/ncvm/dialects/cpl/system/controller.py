@@ -15,7 +15,7 @@ from ....diagnostics import UsageError
 #: every key [cpl] may hold (lookahead and calls belong to the language runtime)
 CPL_KEYS = {"lookahead", "calls", "channel", "axes", "zs_unit", "zs_active", "zs_tables", "tc_unit", "tc_tables",
             "tool_database", "macoda", "plc", "errors", "override", "language", "date_format"}
-AXIS_KEYS = {"index", "name", "channel", "type", "probe", "position", "lag"}
+AXIS_KEYS = {"index", "name", "channel", "type", "probe", "position", "lag", "sercos"}
 ZS_ROWS = tuple(f"G{b + i}" for b in (54, 154, 254) for i in range(6))
 EXTERNAL = ("G160", "G260", "G360")
 TDA_FIELDS = 49
@@ -52,6 +52,8 @@ class Controller:
     macoda: dict[int, list] = field(default_factory=dict)
     plc: dict[str, int] = field(default_factory=dict)  # "type:dm:addr" -> byte
     errors: list[dict] = field(default_factory=list)  # {number, channel, category}
+    sercos: dict[int, dict] = field(default_factory=dict)  # physical axis -> {"S-0-0030": value, ...}
+    sercos_last: dict = field(default_factory=dict)
     override: dict[str, int] = field(default_factory=lambda: {"feed": 100, "spindle": 100, "spindle2": 0})
     language: int = 1
     date_format: str = "DD.MM.YY"
@@ -101,6 +103,7 @@ def load_controller(machine, store=None) -> Controller:
             kind = a.get("type", "linear")
             if kind not in ("linear", "rotary"):
                 _err(f"axes[{i}].type", f"{kind!r} (linear or rotary)")
+            c.sercos[idx] = {str(k).upper(): v for k, v in (a.get("sercos") or {}).items()}
             c.axes[idx] = PhysAxis(idx, str(a["name"]).upper(), int(a.get("channel", c.channel)), kind == "rotary",
                                    bool(a.get("probe", True)), float(a.get("position", 0.0)), float(a.get("lag", 0.0)))
     for unit_key in ("zs_unit", "tc_unit"):
