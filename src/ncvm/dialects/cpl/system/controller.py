@@ -78,12 +78,33 @@ def _err(key: str, why: str):
     raise UsageError(f"[cpl] {key}: {why}")
 
 
+#: keys of the records in [cpl] lists and tables
+RECORD_KEYS = {"tool_database": {"sector", "place", "fields"}, "errors": {"number", "channel", "category"},
+               "override": {"feed", "spindle", "spindle2"}}
+
+
 def load_controller(machine, store=None) -> Controller:
     """Build the controller from ``machine.sections['cpl']``; unknown keys are errors naming the key."""
     cfg = machine.sections.get("cpl", {}) or {}
     for key in cfg:
         if key not in CPL_KEYS:
             _err(key, f"unknown key (known: {', '.join(sorted(CPL_KEYS))})")
+    for key, allowed in RECORD_KEYS.items():
+        value = cfg.get(key) or ([] if key != "override" else {})
+        for i, rec in enumerate(value if isinstance(value, list) else [value], 1):
+            if not isinstance(rec, dict):
+                _err(f"{key}[{i}]", "must be a table")
+            for k in rec:
+                if k not in allowed:
+                    _err(f"{key}[{i}].{k}" if key != "override" else f"{key}.{k}",
+                         f"unknown key (known: {', '.join(sorted(allowed))})")
+    try:
+        return _build(machine, cfg, store)
+    except (KeyError, ValueError, TypeError, AttributeError) as e:
+        raise UsageError(f"[cpl]: bad value ({type(e).__name__}: {e})") from None
+
+
+def _build(machine, cfg: dict, store) -> Controller:
     c = Controller(store=store)
     c.channel = int(cfg.get("channel", 1))
     axes = cfg.get("axes")
