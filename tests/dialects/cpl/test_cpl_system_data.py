@@ -209,3 +209,12 @@ def test_scs_list_parameter_is_an_error(run):
 def test_bad_cpl_records_name_the_key(run_text, reference, cpl, name):
     with pytest.raises(UsageError, match=name):
         run_text("1 A=1\nM30\n", name="p.cpl", machine=reference(cpl=cpl))
+
+
+def test_mcods_distance_to_go_and_travel_flags(run):
+    """Type 83 (distance to go) and 47 (travel command): the queued G1 has not run before the WAIT."""
+    text = ("10 DIM D(3)\n11 DIM T%(8)\n12 DIM Q(3)\nN20 G1 X30 Y-4 F600\n30 V=0\n40 E%=MCODS(83,1,V,D,3)\n"
+            "50 V=0\n60 E%=MCODS(47,-1,V,T%,8)\n70 WAIT\n80 V=0\n90 E%=MCODS(83,1,V,Q,3)\nM30\n")
+    v = run(text)["variables"]
+    assert v["D"] == [None, 30.0, -4.0, 0.0] and v["T%"] == [None, 1, 1, 1, 0, 0, 0, 0, 0]
+    assert v["Q"] == [None, 0.0, 0.0, 0.0]

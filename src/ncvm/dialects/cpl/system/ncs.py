@@ -114,6 +114,63 @@ def _data(rt, typ: int, ch: int, size: int, axisno, idno):
         return _positions(rt, own, mcs=False)
     if typ == 87:
         return [(1 << 12) if rt.queue else 0]
+    return _more(rt, typ, ch, system, own)
+
+
+def _spindle_speed(k) -> float:
+    return float(k.speed) if k.spindle_dir else 0.0
+
+
+def _more(rt, typ: int, ch: int, system, own):
+    """Further services: lags, spindles, in-position and travel flags, end points, distance to go."""
+    c, k = rt.ctl, rt.kernel
+    moving = bool(rt.queue)
+    if typ == 4:
+        return [a.lag for a in system]
+    if typ in (5, 36):
+        return [_spindle_speed(k)]
+    if typ == 25:
+        return [float(rt.prepared_kernel().speed)]
+    if typ in (6, 47):
+        flag = [1 if not (moving and a.channel == c.channel) else 0 for a in system]
+        return flag if typ == 6 else [1 - f for f in flag]
+    if typ == 8:
+        return [c.override["spindle"] * 100.0]
+    if typ in (16, 23, 77):
+        p = rt.prepared_kernel()
+        out = []
+        for a in own if typ == 77 else system:
+            i = kernel_index(rt, a)
+            if i is None:
+                out.append(a.position)
+            elif typ == 23:
+                out.append(p.prog[i] + p.g92[i])
+            else:
+                out.append(p.machine_pos[i] - (p.g92[i] if typ == 16 else 0.0))
+        return out
+    if typ == 46:
+        how, where = _state(rt)["return"].get(ch, (1, 3))
+        return [how, where, 1 if _state(rt)["recording"].get(ch, True) else 0]
+    if typ == 48:
+        return [_state(rt)["mode"].get(a.channel, 5) if a.channel > 0 else 0 for a in own]
+    if typ == 52:
+        return [sum(c.external[g][j] for g in c.external) for j in range(8)]
+    if typ == 61:
+        return [2 if a.rotary else 1 for a in own]
+    if typ == 63:
+        return [{1: 1, -1: 3, 0: 5}[k.spindle_dir]] + [0] * 7
+    if typ in (72, 75):
+        wcs = _data(rt, 71, ch, 0, None, None)
+        return wcs if typ == 72 else [v - a.lag for v, a in zip(wcs, own)]
+    if typ in (79, 80):
+        return [1 if typ == 80 or not (moving and a.channel == c.channel) else 0 for a in own]
+    if typ == 81:
+        return [2 if a.rotary else (1 if k.scale == 1.0 else 0) for a in own]
+    if typ == 82:
+        return [len(own), len(own), len(own)]
+    if typ == 83:
+        p = rt.prepared_kernel()
+        return [p.machine_pos[i] - k.machine_pos[i] if (i := kernel_index(rt, a)) is not None else 0.0 for a in own]
     return None
 
 
