@@ -218,3 +218,10 @@ def test_mcods_distance_to_go_and_travel_flags(run):
     v = run(text)["variables"]
     assert v["D"] == [None, 30.0, -4.0, 0.0] and v["T%"] == [None, 1, 1, 1, 0, 0, 0, 0, 0]
     assert v["Q"] == [None, 0.0, 0.0, 0.0]
+
+
+def test_axp_with_an_extended_axis_name(run):
+    """On channel 2 the axes are X2, Y2, Z2: AXP gives 'X2=10.5', which the NC block takes as X2 10.5."""
+    r = run("10 A%=1\nN20 G1 F1000 [AXP(A%,10.5)] [AXP(2,-3)]\n30 T$=AXP(A%,10.5)\nM30\n", channel=2)
+    assert r["status"] == "ok", r["error"]
+    assert r["variables"]["T$"] == "X2=10.5" and r["position"]["X2"] == 10.5 and r["position"]["Y2"] == -3.0

@@ -11,6 +11,7 @@ from __future__ import annotations
 import copy
 import itertools
 import math
+import re
 import traceback
 from collections import deque
 from pathlib import Path
@@ -31,6 +32,7 @@ from .system.controller import load_controller
 from .system.plc import f_ic
 from .system.positions import probe_block
 
+_EXTENDED = re.compile(r"\s*([A-Za-z][A-Za-z0-9_]*[0-9_][A-Za-z0-9_]*)\s*=\s*([-+]?(?:\d+\.?\d*|\.\d+))\s*$")
 MAX_NESTING = 7  # sub-program levels below the main program (manual §2.1 L323)
 
 
@@ -344,6 +346,10 @@ class CplRuntime:
                 if val is None:
                     raise TypeError("NUL")
                 raise CplError("CPL032", "a standalone [ ] in an NC block must give NC text")
+            ext = _EXTENDED.match(val)
+            if ext:  # an extended address such as AXP's "X2=10.5" (manual §4.10)
+                words[ext.group(1).upper()] = float(ext.group(2))
+                continue
             try:
                 blk = parse_din_line(val, src)
             except DinSyntaxError as e:
