@@ -225,3 +225,14 @@ def test_axp_with_an_extended_axis_name(run):
     r = run("10 A%=1\nN20 G1 F1000 [AXP(A%,10.5)] [AXP(2,-3)]\n30 T$=AXP(A%,10.5)\nM30\n", channel=2)
     assert r["status"] == "ok", r["error"]
     assert r["variables"]["T$"] == "X2=10.5" and r["position"]["X2"] == 10.5 and r["position"]["Y2"] == -3.0
+
+
+def test_mcods_drive_texts_and_cyclic_values(run):
+    text = ("10 DIM T$(40)\n11 DIM P%(8)\n12 DIM N$(80)\nN13 G1 X2 F600\n14 WAIT\n20 V=0\n"
+            "21 E1%=MCODS(55,-1,V,T$,40,0)\n22 V=0\n23 E2%=MCODS(62,-1,V,P%,8,0,51)\n24 V=0\n"
+            "25 E3%=MCODS(78,1,V,N$,27)\nM30\n")
+    r = run(text, cpl=SERCOS)
+    v = r["variables"]
+    assert (v["E1%"], v["E2%"], v["E3%"]) == (0, 0, 0)
+    assert v["T$"] == "DKC 03.3" and v["P%"] == [None, 20000, 0, 0, None, None, None, None, None]  # 3 axes
+    assert v["N$"] == "X       \0Y       \0Z       \0"

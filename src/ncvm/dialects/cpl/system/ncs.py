@@ -114,14 +114,14 @@ def _data(rt, typ: int, ch: int, size: int, axisno, idno):
         return _positions(rt, own, mcs=False)
     if typ == 87:
         return [(1 << 12) if rt.queue else 0]
-    return _more(rt, typ, ch, system, own)
+    return _more(rt, typ, ch, system, own, axisno, idno)
 
 
 def _spindle_speed(k) -> float:
     return float(k.speed) if k.spindle_dir else 0.0
 
 
-def _more(rt, typ: int, ch: int, system, own):
+def _more(rt, typ: int, ch: int, system, own, axisno, idno):
     """Further services: lags, spindles, in-position and travel flags, end points, distance to go."""
     c, k = rt.ctl, rt.kernel
     moving = bool(rt.queue)
@@ -168,10 +168,52 @@ def _more(rt, typ: int, ch: int, system, own):
         return [2 if a.rotary else (1 if k.scale == 1.0 else 0) for a in own]
     if typ == 82:
         return [len(own), len(own), len(own)]
+    if typ == 37:  # program values: the MCS without the axis zero shifts and without G92
+        out = []
+        for a in system:
+            i = kernel_index(rt, a)
+            tool = k.tool_length if i is not None and i == k.tool_axis else 0.0
+            out.append(a.position if i is None else k.prog[i] + tool)
+        return out
+    if typ == 38:
+        return [p - a.lag for p, a in zip(_positions(rt, system), system)]
+    if typ in (55, 56, 57, 62):
+        return _drive(rt, typ, system, axisno, idno)
+    if typ == 68:
+        skip = 1 if rt.block_skip else 0
+        return [skip, skip]
+    if typ == 78:
+        return "".join(a.name[:8].ljust(8) + "\0" for a in own)
     if typ == 83:
         p = rt.prepared_kernel()
         return [p.machine_pos[i] - k.machine_pos[i] if (i := kernel_index(rt, a)) is not None else 0.0 for a in own]
     return None
+
+
+DRIVE_TEXTS = {55: "S-0-0030", 56: "S-0-0140", 57: "S-0-0141"}  # manufacturer version, controller, motor
+
+
+def _drive(rt, typ, system, axisno, idno):
+    """55-57: a drive's identification texts (axisno, 0 = axis 1); 62: SERCOS ``idno`` of every axis from
+    the cyclic telegram (S-0-0051 the actual position), -2147483648 where the telegram lacks it."""
+    c = rt.ctl
+    if typ in DRIVE_TEXTS:
+        ax = c.axes.get(axisno or 1)
+        if ax is None:
+            return None
+        return str(c.sercos.get(ax.index, {}).get(DRIVE_TEXTS[typ], ""))[:40]
+    if idno.__class__ is not int:
+        return None
+    key = f"S-0-{idno:04d}"
+    out = []
+    for a in system:
+        if key == "S-0-0051":
+            i = kernel_index(rt, a)
+            out.append(int(round(((a.position if i is None else rt.kernel.machine_pos[i]) - a.lag) * 10000)))
+        else:
+            v = c.sercos.get(a.index, {}).get(key)
+            out.append(v if isinstance(v, int) else -2147483648)
+    return out
 
 
 def f_mcods(rt, typ, chan, version, buffer, size, axisno=None, idno=None, p1=None):
