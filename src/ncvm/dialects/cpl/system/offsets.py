@@ -10,7 +10,7 @@ session store (namespace cpl.zs).
 from __future__ import annotations
 
 from ..errors import CplError
-from .axes import nul
+from .axes import kernel_index, nul, resolve, to_unit
 from .controller import EXTERNAL, ZS_ROWS, new_zs_table
 
 INCH = 25.4
@@ -145,7 +145,6 @@ def f_fxc(rt, sel, gaddr=None, table=None, unit=None):
     """FXC read: a ZS table value, an external shift, or with only the axis the sum of the active shifts."""
     c = rt.ctl
     if gaddr is None and table is None:
-        from .axes import kernel_index, resolve, to_unit
         ax = resolve(rt, sel[1:] if isinstance(sel, str) and sel.startswith("-") else
                      (abs(sel) if sel.__class__ is int else sel))
         k = rt.prepared_kernel()

@@ -9,6 +9,7 @@ from __future__ import annotations
 import math
 
 from ..errors import CplError
+from ..values import sv
 from .axes import nul
 from .positions import probe_switched
 
@@ -174,7 +175,6 @@ def f_mca(rt, param, index, chan=None):
 
 def f_ncf(rt, text):
     """NCF: the text of the last programmed function of the modal group of ``text`` (L2090-2113)."""
-    from ..values import sv
     text = sv(nul(text))
     if not isinstance(text, str) or not text.upper().startswith("G") or not text[1:].isdigit():
         raise CplError("CPL040", f"NCF({text!r}): unknown NC function")

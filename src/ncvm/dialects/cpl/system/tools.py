@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from ....machine.model import Tool
 from ..errors import CplError
+from ..values import sv
 from .axes import nul
 
 INCH = 25.4
@@ -175,7 +176,6 @@ def p_tda_set(rt, sector, place, fld, tooltab=1, value=None):
     c = rt.ctl
     key = _tda_key(c, sector, place, fld, tooltab)
     value = nul(value)
-    from ..values import sv
     value = sv(value)
     if fld in STRING_FIELDS:
         if not isinstance(value, str):
