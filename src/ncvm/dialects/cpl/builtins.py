@@ -208,4 +208,8 @@ FUNCTIONS: dict[str, Builtin] = {
     "AXO": Builtin(f_axo, 1, 2, "R", "§4.2.1 L1388", rt=True),
 }
 
+from .system import SYSTEM_FUNCTIONS  # noqa: E402 - chapter 4 (the system package uses Builtin)
+
+FUNCTIONS.update(SYSTEM_FUNCTIONS)
+
 __all__ = ["FUNCTIONS", "Builtin"]

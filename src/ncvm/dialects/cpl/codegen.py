@@ -13,6 +13,7 @@ from . import ast as A
 from .builtins import FUNCTIONS
 from .errors import diag
 from .lexer import VarName
+from .system import SYSTEM_PROCS
 from .values import f32
 
 #: parameter Pn seen through its suffix (digest §4.8): the conversion applied to the passed value
@@ -191,20 +192,28 @@ class Gen:
             raise GenError("CPL001", "MMC(...) stands as a statement or as r% = MMC(...)")
         b = FUNCTIONS.get(e.name)
         if b is None:
-            raise GenError("CPL037", f"{e.name} (chapters 4-9 of the manual come in a later version)")
+            raise GenError("CPL037", f"{e.name} is not implemented (docs/cpl.md lists what is missing)")
         n = len(e.args)
         if not b.min_args <= n <= b.max_args:
             raise GenError("CPL001", f"{e.name} takes {b.min_args}..{b.max_args} arguments, not {n}")
         codes, types = [], []
+        refs, out = getattr(b, "refs", ()), getattr(b, "out", None)
+        backs: list = []  # (variable, python expression) to store after the call
         for k, a in enumerate(e.args):
             if a is None:
                 codes.append("None")
                 types.append("N")
                 continue
+            if k in refs and isinstance(a, A.Var) and not a.index:
+                codes.append(self.by_name(a, backs))  # a field given by its bare name (GETERR, MCODS)
+                types.append("F")
+                continue
             c, ty = self.ex(a)
             want = b.params[k:k + 1]
             if want == "S" and ty in NUMERIC + ("B",) or want in ("I", "N") and ty in ("S", "B"):
                 raise GenError("CPL032", f"{e.name}: argument {k + 1} is {_a(ty)} value")
+            if k == out:
+                c = f"(0 if {c} is None else {c})"  # present, even when not yet assigned
             codes.append(c)
             types.append(ty)
         res = b.result
@@ -218,7 +227,43 @@ class Gen:
         if e.name == "STR$" and types[-1] == "D":
             codes[-1] = f"_Dbl({codes[-1]})"  # the standard format depends on the value's type
         args = ", ".join((["_rt"] if b.rt else []) + (["_io"] if b.io else []) + codes)
+        if out is not None and (out >= len(e.args) or e.args[out] is None):
+            return f"{fn}({args})[0]", res  # the variable is not given: only the result
+        if out is not None or backs:
+            t = self.temp("r")
+            if out is not None:  # the function returns (result, new value of argument ``out``)
+                backs.insert(0, (e.args[out] if out < len(e.args) else None, f"{t}[1]"))
+                call = f"({t} := {fn}({args}))"
+            else:
+                call = f"({t} := ({fn}({args}),))"
+            puts = [self.put(target, value, e.name) for target, value in backs]
+            return f"({call}, {', '.join(puts)}, {t}[0])[-1]", res
         return f"{fn}({args})", res
+
+    def by_name(self, a: A.Var, backs: list) -> str:
+        """(field, type) for a field given by name; a simple numeric local variable travels in a box
+        [None, value] as a one-element field and is stored back after the call."""
+        v = a.var
+        if v.cls == "L" and self.fields.get(v) is not None:
+            return f"({self.local(v)}, {v.type!r})"
+        if v.cls == "G":
+            return f"(_gfield({v.display!r}), {v.type!r})"
+        if v.cls == "L" and v.type in NUMERIC:
+            box = self.temp("b")
+            backs.append((a, f"{box}[1]"))
+            return f"(({box} := [None, {self.local(v)}]), {v.type!r})"
+        raise GenError("CPL035", f"{v.display}: a DIMensioned local or global field is needed here")
+
+    def put(self, target, value: str, name: str) -> str:
+        """An assignment inside an expression (walrus for locals) of a numeric local or global variable."""
+        if not isinstance(target, A.Var) or target.index or target.var.cls not in ("L", "G") \
+                or target.var.type not in NUMERIC:
+            raise GenError("CPL001", f"{name}: a numeric local or global variable is needed here")
+        ty = target.var.type
+        conv = f"_toi({value})" if ty == "I" else (f"_f32({value})" if ty == "R" else f"_tod({value})")
+        if target.var.cls == "L":
+            return f"({self.local(target.var)} := {conv})"
+        return f"_G.__setitem__({target.var.display!r}, {conv})"
 
     # -- variables ----------------------------------------------------------------
     def read(self, e: A.Var) -> tuple[str, str]:
@@ -551,9 +596,22 @@ class Gen:
             self.emit(f"_io.files.ERASE({self.args(s)})", line)
             return
         target = IO_PROCS.get(name)
-        if target is None:
-            raise GenError("CPL037", f"{name} (chapter 4 of the manual comes in a later version)")
-        self.emit(f"_io.{target}.{name}({self.args(s)})", line)
+        if target is not None:
+            self.emit(f"_io.{target}.{name}({self.args(s)})", line)
+            return
+        if s.name in FUNCTIONS and s.name not in SYSTEM_PROCS:  # SCSL(...), MCOPS(...) as a statement
+            self.emit(self.func(A.Func(s.name, s.args, 0))[0], line)
+            return
+        if s.name in SYSTEM_PROCS:  # chapter 4: FXC(...)=v and friends, FXCR, FXDEL, FXINS
+            _, lo, hi = SYSTEM_PROCS[s.name]
+            if not lo <= len(s.args) <= hi:
+                raise GenError("CPL001", f"{s.name.rstrip('=')} takes {lo}..{hi} arguments, not {len(s.args)}")
+            args = [self.ex(a)[0] if a is not None else "None" for a in s.args]
+            if s.name.endswith("="):
+                args[-1] = f"value={args[-1]}"
+            self.emit(f"_rt.sys_procs[{s.name!r}](_rt, {', '.join(args)})", line)
+            return
+        raise GenError("CPL037", f"{s.name} is not implemented (docs/cpl.md lists what is missing)")
 
     def args(self, s: A.Proc) -> str:
         return ", ".join(self.out_arg(a) for a in s.args)

@@ -15,6 +15,8 @@ CODES: dict[str, tuple[str, str]] = {
     "2167": ("RUNTIME ERROR 2167 = MISSING", "§2.4.1 L437-447"),
     "2153": ("RUNTIME ERROR 2153 NESTING TOO DEEP", "§2.5.1 L782, §5.8 L3773"),
     "1869": ("variable not installed. Memory full.", "§2.4.3 L558, GETERR L2573"),
+    "1938": ("axis index programmed is not configured", "§4.2 L1337, GETERR L2577 (digest §7.1)"),
+    "1970": ("axis is assigned to another channel", "§4.2 L1402, L1428, GETERR L2579 (digest §7.1)"),
     "CPL001": ("syntax error", "§2-3 grammar"),
     "CPL002": ("jump destination not found", "§2.3 linking, §2.5.6"),
     "CPL003": ("jump destination not unique", "§2.5.6 (digest 11.A3)"),
@@ -49,6 +51,8 @@ CODES: dict[str, tuple[str, str]] = {
     "CPL037": ("function not available in this version", "later issue (chapter 4)"),
     "CPL038": ("declaration file error", "§2.4.3 L615-637"),
     "CPL039": ("WAIT condition can never be met (simulator deadlock)", "digest §5.10"),
+    "CPL041": ("SERCOS SERVICE CHANNEL IS LOCKED", "§4.9 L2156"),
+    "CPL040": ("runtime error", "chapter 4: system data not available or not allowed (digest §7.1)"),
 }
 
 

@@ -236,6 +236,14 @@ class BlockParser:
             self.next()
             out.append(self.stmt(A.Proc, t, name=kw))
             return False
+        if kw in SETTABLE and self.peek(1) is not None and self.peek(1).kind == "op" and self.peek(1).val == "(":
+            self.next()  # FXC(...)=v, TC(...)=v, TDA(...)=v, IC(...)=b, PLC(...)=v (manual chapter 4)
+            self.next()
+            args = self.arg_list(")")
+            self.expect("op", ")", "')'")
+            self.expect("op", "=", "'='")
+            out.append(self.stmt(A.Proc, t, name=kw + "=", args=args + [self.expr()]))
+            return False
         if kw in PROCS:
             self.next()
             args: list = []
@@ -430,6 +438,9 @@ ABS ACOS APOS ASC ASIN ATAN AXO AXP BCD BIN CHR$ CLOCK COF COS CPOS CPROBE DATE 
 FILEPOS FILESIZE FXC GETERR IC INKEY INSTR INT LEN MCA MCODS MCOPS MID$ MMC MPOS NCF PLC PPOS PROBE ROUND SCL SCS
 SCSL SD SDR SIN SPOS SQRT STR$ TAN TC TDA TIME TRIM$ VAL WPOS
 """.split())
+
+#: functions of chapter 4 that can also be assigned to: FXC(...)=v (stored as the procedure "FXC=")
+SETTABLE = frozenset(("FXC", "TC", "TDA", "IC", "PLC"))
 
 #: keywords usable as procedure statements
 PROCS = frozenset("""

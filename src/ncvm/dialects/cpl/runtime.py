@@ -11,6 +11,7 @@ from __future__ import annotations
 import copy
 import itertools
 import math
+import re
 import traceback
 from collections import deque
 from pathlib import Path
@@ -29,7 +30,13 @@ from .io.errors import CplRuntimeError
 from .io.values import CplText, Double
 from .linker import SUB_EXTENSIONS, LinkResult, call_table, link_one
 from .perm import DeclError, Permanents
+from .system import SYSTEM_PROCS
+from .system import setup as system_setup
+from .system.controller import load_controller
+from .system.plc import f_ic
+from .system.positions import probe_block
 
+_EXTENDED = re.compile(r"\s*([A-Za-z][A-Za-z0-9_]*[0-9_][A-Za-z0-9_]*)\s*=\s*([-+]?(?:\d+\.?\d*|\.\d+))\s*$")
 MAX_NESTING = 7  # sub-program levels below the main program (manual §2.1 L323)
 
 
@@ -68,6 +75,11 @@ class CplRuntime:
         self.t_prep = self.machine.clock.now
         self._events = [e for e in self.machine.scenario if e.kind == "input"]
         self._next_event = 0
+        self.ctl = load_controller(self.machine, lambda: session.store)  # chapter 4 controller state
+        self.sys_procs = {name: row[0] for name, row in SYSTEM_PROCS.items()}
+        system_setup(self)
+        self._probing = any(getattr(w, "address", None) == "G" and (w.value == 75 or w.expr is not None)
+                            for u in linked.units.values() for st in u.prog.stmts for w in getattr(st, "words", ()))
 
     # -- units ----------------------------------------------------------------------
     def unit(self, path: str):
@@ -109,7 +121,8 @@ class CplRuntime:
             "_ix": V.index, "_sv": V.sv, "_view": S.mid_for_variable, "_setf": _setf, "_midw": _midw, "_dim": _dim,
             "_pdim": _pdim, "_gfield": self.gfield, "_gset_s": self.gset_s, "_pint": _pint,
             "_call": lambda name, args, din, line: self.call(path, name, args, din, line),
-            "_q": self.queue.append if self.lookahead <= 0 else self.queue_limited,
+            "_q": self.enqueue_probe if self._probing else (
+                self.queue.append if self.lookahead <= 0 else self.queue_limited),
             "_drain": self.drain, "_wait": self.wait, "_Block": Block, "_loose": self.loose,
             "_word": V.word, "_mval": _mval, "_modal": self.modal,
             "_modal_call": lambda line: self.modal_call(path, line),
@@ -306,6 +319,16 @@ class CplRuntime:
         if len(self.queue) > self.lookahead:
             self.execute_one()
 
+    def enqueue_probe(self, blk) -> None:
+        """G75 (measuring) blocks are executed before preparation goes on (manual §4.2, SD(9) L2309)."""
+        if 75 in blk.g:
+            self.queue.append(probe_block(self, blk))
+            self.drain()
+        elif self.lookahead <= 0:
+            self.queue.append(blk)
+        else:
+            self.queue_limited(blk)
+
     def execute_one(self) -> None:
         blk = self.queue.popleft()
         self.executed += 1
@@ -354,6 +377,10 @@ class CplRuntime:
                 if val is None:
                     raise TypeError("NUL")
                 raise CplError("CPL032", "a standalone [ ] in an NC block must give NC text")
+            ext = _EXTENDED.match(val)
+            if ext:  # an extended address such as AXP's "X2=10.5" (manual §4.10)
+                words[ext.group(1).upper()] = float(ext.group(2))
+                continue
             try:
                 blk = parse_din_line(val, src)
             except DinSyntaxError as e:
@@ -400,9 +427,7 @@ class CplRuntime:
         self.t_prep = t_end
 
     def ic(self, args: tuple) -> bool:
-        key = "IC(" + ",".join(str(a) for a in args) + ")"
-        self._apply_events(self.machine.clock.now)
-        return bool(self.machine.plc.inputs.get(key, False))
+        return f_ic(self, *args)
 
     def _apply_events(self, t: float) -> None:
         while self._next_event < len(self._events) and self._events[self._next_event].time <= t:

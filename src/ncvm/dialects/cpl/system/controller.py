@@ -1,0 +1,208 @@
+"""The simulated Typ3 osa controller behind chapter 4 (digest §8): channels, physical and logical axes,
+zero-shift tables, tool compensation and the tool database, MACODA, the PLC image, the error log.
+
+Everything is loaded from the machine file's [cpl] section with defaults that match the machine's axes;
+ZS tables, tool tables and the tool database changed by a program are kept in the session's SQLite store
+(namespaces cpl.zs, cpl.tc, cpl.tdb) so the next run sees them, as the control keeps them.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from ....diagnostics import UsageError
+
+#: every key [cpl] may hold (lookahead and calls belong to the language runtime)
+CPL_KEYS = {"lookahead", "calls", "channel", "axes", "zs_unit", "zs_active", "zs_tables", "tc_unit", "tc_tables",
+            "tool_database", "macoda", "plc", "errors", "override", "language", "date_format"}
+AXIS_KEYS = {"index", "name", "channel", "type", "probe", "position", "lag", "sercos"}
+ZS_ROWS = tuple(f"G{b + i}" for b in (54, 154, 254) for i in range(6))
+EXTERNAL = ("G160", "G260", "G360")
+TDA_FIELDS = 49
+
+
+@dataclass(slots=True)
+class PhysAxis:
+    """A physical axis (MACODA 1003 00001 name, 1003 00002 channel, 1003 00012 probe enable)."""
+
+    index: int
+    name: str
+    channel: int  # 0 = asynchronous (no channel)
+    rotary: bool = False
+    probe: bool = True
+    position: float = 0.0  # command position of an axis the NC kernel does not drive (foreign channel)
+    lag: float = 0.0  # following error: APOS = SPOS - lag
+
+
+@dataclass
+class Controller:
+    channel: int = 1
+    axes: dict[int, PhysAxis] = field(default_factory=dict)
+    zs_unit: str = "mm"
+    zs_active: str = "V1"
+    #: table name -> {"columns": [axis names], "unit": "mm"|"inch", "strict": 0|1, "rows": {"G54": [...]}}
+    zs_tables: dict[str, dict] = field(default_factory=dict)
+    external: dict[str, list[float]] = field(default_factory=dict)  # G160/G260/G360, logical axes 1..8
+    tc_unit: str = "mm"
+    tc_last: str = "K4"
+    tc_tables: dict[str, dict[int, list[float]]] = field(default_factory=dict)  # group -> [H, D]
+    tc_external: dict[int, list[float]] = field(default_factory=dict)  # G145..G845 -> [L(1)3, R]
+    tc_general: dict[int, list[float]] = field(default_factory=dict)  # G147..G847 -> 8 values
+    tdb: dict[tuple[int, int], dict[int, object]] = field(default_factory=dict)
+    macoda: dict[int, list] = field(default_factory=dict)
+    plc: dict[str, int] = field(default_factory=dict)  # "type:dm:addr" -> byte
+    errors: list[dict] = field(default_factory=list)  # {number, channel, category}
+    sercos: dict[int, dict] = field(default_factory=dict)  # physical axis -> {"S-0-0030": value, ...}
+    sercos_last: dict = field(default_factory=dict)
+    override: dict[str, int] = field(default_factory=lambda: {"feed": 100, "spindle": 100, "spindle2": 0})
+    language: int = 1
+    date_format: str = "DD.MM.YY"
+    store: object = None
+
+    # -- axes ----------------------------------------------------------------------------------
+    def channel_axes(self, ch: int) -> list[PhysAxis]:
+        """The logical axes of channel ch, numbered 1..k in ascending physical index (digest §8.2)."""
+        return [a for i, a in sorted(self.axes.items()) if a.channel == ch]
+
+    def by_name(self, name: str) -> PhysAxis | None:
+        up = name.upper()
+        return next((a for a in self.axes.values() if a.name.upper() == up), None)
+
+    # -- persistence ---------------------------------------------------------------------------
+    def persist(self, ns: str, key: str, value) -> None:
+        if self.store is not None:
+            self.store().put(ns, key, value)
+
+
+def _err(key: str, why: str):
+    raise UsageError(f"[cpl] {key}: {why}")
+
+
+#: keys of the records in [cpl] lists and tables
+RECORD_KEYS = {"tool_database": {"sector", "place", "fields"}, "errors": {"number", "channel", "category"},
+               "override": {"feed", "spindle", "spindle2"}}
+
+
+def load_controller(machine, store=None) -> Controller:
+    """Build the controller from ``machine.sections['cpl']``; unknown keys are errors naming the key."""
+    cfg = machine.sections.get("cpl", {}) or {}
+    for key in cfg:
+        if key not in CPL_KEYS:
+            _err(key, f"unknown key (known: {', '.join(sorted(CPL_KEYS))})")
+    for key, allowed in RECORD_KEYS.items():
+        value = cfg.get(key) or ([] if key != "override" else {})
+        for i, rec in enumerate(value if isinstance(value, list) else [value], 1):
+            if not isinstance(rec, dict):
+                _err(f"{key}[{i}]", "must be a table")
+            for k in rec:
+                if k not in allowed:
+                    _err(f"{key}[{i}].{k}" if key != "override" else f"{key}.{k}",
+                         f"unknown key (known: {', '.join(sorted(allowed))})")
+    try:
+        return _build(machine, cfg, store)
+    except (KeyError, ValueError, TypeError, AttributeError) as e:
+        raise UsageError(f"[cpl]: bad value ({type(e).__name__}: {e})") from None
+
+
+def _build(machine, cfg: dict, store) -> Controller:
+    c = Controller(store=store)
+    c.channel = int(cfg.get("channel", 1))
+    axes = cfg.get("axes")
+    if axes is None:
+        for i, a in enumerate(machine.axes, 1):
+            c.axes[i] = PhysAxis(i, a.name.upper(), c.channel, a.kind == "rotary")
+    else:
+        for i, a in enumerate(axes, 1):
+            if isinstance(a, str):
+                a = {"name": a}
+            for k in a:
+                if k not in AXIS_KEYS:
+                    _err(f"axes[{i}].{k}", f"unknown key (known: {', '.join(sorted(AXIS_KEYS))})")
+            if "name" not in a:
+                _err(f"axes[{i}]", "needs a name")
+            idx = int(a.get("index", i))
+            kind = a.get("type", "linear")
+            if kind not in ("linear", "rotary"):
+                _err(f"axes[{i}].type", f"{kind!r} (linear or rotary)")
+            c.sercos[idx] = {str(k).upper(): v for k, v in (a.get("sercos") or {}).items()}
+            c.axes[idx] = PhysAxis(idx, str(a["name"]).upper(), int(a.get("channel", c.channel)), kind == "rotary",
+                                   bool(a.get("probe", True)), float(a.get("position", 0.0)), float(a.get("lag", 0.0)))
+    for unit_key in ("zs_unit", "tc_unit"):
+        u = cfg.get(unit_key, "mm")
+        if u not in ("mm", "inch"):
+            _err(unit_key, f"{u!r} (mm or inch)")
+        setattr(c, unit_key, u)
+    c.zs_active = str(cfg.get("zs_active", "V1"))
+    for name, table in (cfg.get("zs_tables") or {}).items():
+        c.zs_tables[name] = _zs_table(c, f"zs_tables.{name}", table)
+    for name, groups in (cfg.get("tc_tables") or {}).items():
+        c.tc_tables[name] = {int(g): [float(x) for x in v] + [0.0] * (2 - len(v)) for g, v in groups.items()}
+    if "K4" not in c.tc_tables:  # the machine's tool table is compensation table K4
+        c.tc_tables["K4"] = {t.number: [t.length, t.radius] for t in machine.tools.values()}
+    c.tc_tables.setdefault("K5", {})
+    for rec in cfg.get("tool_database") or []:
+        fields = {int(k): v for k, v in (rec.get("fields") or {}).items()}
+        c.tdb[(int(rec["sector"]), int(rec["place"]))] = fields
+    for num, vals in (cfg.get("macoda") or {}).items():
+        c.macoda[int(str(num).replace(" ", ""))] = vals if isinstance(vals, list) else [vals]
+    for key, val in (cfg.get("plc") or {}).items():
+        c.plc[str(key)] = int(val)
+    for e in cfg.get("errors") or []:
+        c.errors.append({"number": int(e["number"]), "channel": int(e.get("channel", -1)),
+                         "category": int(e.get("category", 0))})
+    c.override.update({k: int(v) for k, v in (cfg.get("override") or {}).items()})
+    c.language = int(cfg.get("language", 1))
+    c.date_format = str(cfg.get("date_format", "DD.MM.YY"))
+    if c.date_format not in ("DD.MM.YY", "DD.MM"):
+        _err("date_format", f"{c.date_format!r} (DD.MM.YY or DD.MM)")
+    _default_macoda(c)
+    if store is not None:
+        _load_persistent(c, store())
+    return c
+
+
+def _zs_table(c: Controller, where: str, table: dict) -> dict:
+    """A ZS table from the machine file: rows G54 ... G259 (one value per column), optional columns/unit."""
+    columns = [str(n).upper() for n in table.get("columns", [c.axes[i].name for i in sorted(c.axes)])]
+    out = new_zs_table(columns, table.get("unit", c.zs_unit), int(table.get("strict", 0)))
+    for row, vals in table.items():
+        if row in ("columns", "unit", "strict"):
+            continue
+        if row.upper() not in ZS_ROWS:
+            _err(f"{where}.{row}", f"unknown row (rows: {', '.join(ZS_ROWS)}, columns, unit, strict)")
+        v = [float(x) for x in vals]
+        out["rows"][row.upper()] = v + [0.0] * (len(columns) - len(v))
+    return out
+
+
+def new_zs_table(columns: list[str], unit: str, strict: int = 0) -> dict:
+    return {"columns": list(columns), "unit": unit, "strict": strict,
+            "rows": {r: [0.0] * len(columns) for r in ZS_ROWS}}
+
+
+def _default_macoda(c: Controller) -> None:
+    axes = [c.axes[i] for i in sorted(c.axes)]
+    defaults = {
+        100300001: [a.name for a in axes],  # physical axis names
+        100300002: [a.channel for a in axes],  # axis -> channel
+        100300004: [2 if a.rotary else 1 for a in axes],  # type of axis movement (1 linear, 2 rotary)
+        100300012: [1 if a.probe else 0 for a in axes],  # probe can be activated
+        206000100: [98],  # first writable PLC DM
+        206000110: [2],  # number of writable DMs
+        308000005: [c.channel],  # CPL dialog channel
+        308000200: [".npv"],  # ZS table extension
+        601000010: [c.language],  # national language
+        902000010: [0 if c.zs_unit == "mm" else 2],  # table unit
+    }
+    for k, v in defaults.items():
+        c.macoda.setdefault(k, v)
+
+
+def _load_persistent(c: Controller, store) -> None:
+    for name, rows in store.items("cpl.zs").items():
+        c.zs_tables[name] = rows
+    for name, groups in store.items("cpl.tc").items():
+        c.tc_tables[name] = {int(g): v for g, v in groups.items()}
+    for key, fields in store.items("cpl.tdb").items():
+        s, p = key.split(",")
+        c.tdb[(int(s), int(p))] = {int(k): v for k, v in fields.items()}

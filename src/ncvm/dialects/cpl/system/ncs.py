@@ -1,0 +1,334 @@
+"""NCS coupling of manual §4.14: MCODS (data services) and MCOPS (process services); AXP (§4.10).
+
+MCODS fills a buffer (a field given by name; element 1 first, as the manual's BUF%(1)) and returns an NCS
+status code (digest §7.2). The version variable is written back: a version of 0 delivers at once; the
+same non-zero version blocks until the data changes, letting queued blocks execute; if nothing can change
+the data it is the simulator deadlock error. Types not modelled here return 102 (not available).
+"""
+
+from __future__ import annotations
+
+import zlib
+
+from ..errors import CplError
+from ..io.strings import CharacterField
+from .axes import kernel_index, nul
+from .offsets import push_to_kernel
+
+OK, NO_CHANNEL, BUSY, SYNTAX, NOT_AVAILABLE, NO_PROGRAM, MODE_REFUSED = 0, 1, 2, 18, 102, 6, 13
+#: channel operating modes MCODS 31/48 and MCOPS 7 (digest §11 C6)
+MODES = (1, 2, 4, 5, 6, 7, 10, 11, 12, 13, 14)
+
+
+def _state(rt) -> dict:
+    st = getattr(rt, "_ncs", None)
+    if st is None:
+        st = rt._ncs = {"mode": {}, "selected": {}, "return": {}, "recording": {}}
+    return st
+
+
+def _channels(c) -> list[int]:
+    return sorted({a.channel for a in c.axes.values() if a.channel > 0})
+
+
+def _sav_ipo(rt, ch: int) -> list[int]:
+    """SAV and IPO state (digest §8.6): the own channel is active while blocks are prepared or queued."""
+    if ch == rt.ctl.channel:
+        return [3, 1 if rt.queue else 3]
+    return [2 if _state(rt)["selected"].get(ch) else 1, 3]
+
+
+def _positions(rt, axes, mcs=True) -> list[float]:
+    out = []
+    for a in axes:
+        i = kernel_index(rt, a)
+        if i is None:
+            out.append(a.position)
+        else:
+            k = rt.kernel
+            out.append(k.machine_pos[i] if mcs else k.prog[i])
+    return out
+
+
+def _data(rt, typ: int, ch: int, size: int, axisno, idno):
+    """The data of service ``typ`` as a list (numbers) or a string; None = not available."""
+    c, k = rt.ctl, rt.kernel
+    system = [c.axes[i] for i in sorted(c.axes)]
+    own = c.channel_axes(ch) if ch > 0 else system
+    if typ == 1:
+        return _positions(rt, system)
+    if typ == 2:
+        return [int(round(v * 10000)) for v in _positions(rt, system)]
+    if typ == 3:
+        f = k.feed * c.override["feed"] / 100.0
+        return [f, f, f]
+    if typ == 7:
+        return [c.override["feed"] * 100.0]
+    if typ == 9:
+        return [k.tool if k.tool_length else -1]
+    if typ == 10:
+        return [k.tool_length]
+    if typ == 13:
+        return c.tc_last
+    if typ == 14:
+        return c.zs_active
+    if typ == 15:
+        table = c.zs_tables[c.zs_active]
+        return [table["rows"][f"G{b + i}"][table["columns"].index(a.name)] if a.name in table["columns"] else 0.0
+                for b in (54, 154, 254) for i in range(6) for a in own]
+    if typ == 18:
+        return [0 if k.scale != 1.0 else 1]
+    if typ == 24:
+        return [rt.prepared_kernel().feed]
+    if typ == 26:
+        return [1] * len(system)
+    if typ == 29:
+        return [0]
+    if typ == 30:
+        return str(rt.linked.main.prog.path) if ch == c.channel else _state(rt)["selected"].get(ch, "")
+    if typ == 31:
+        return [_state(rt)["mode"].get(ch, 5)]
+    if typ == 32:
+        return _sav_ipo(rt, ch)
+    if typ in (33, 59, 60):
+        return "".join(a.name[:8].ljust(8) + "\0" for a in (system if ch == -1 else own))
+    if typ == 35:
+        return [p - a.lag for p, a in zip(_positions(rt, system), system)]
+    if typ == 43:
+        return [a.channel if a.channel > 0 else -1 for a in system]
+    if typ == 44:
+        n = len(_channels(c))
+        return [n, n, n]
+    if typ == 45:
+        return [len(system), len(system), 1]
+    if typ == 53:
+        return [2 if a.rotary else (1 if k.scale == 1.0 else 0) for a in own]
+    if typ == 58:
+        return [a.channel for a in system]
+    if typ == 71:
+        return [rt.kernel.machine_pos[i] - (k.offset_vec[i] - k.g92[i]) if (i := kernel_index(rt, a)) is not None
+                else a.position for a in own]
+    if typ in (73, 74):
+        return _positions(rt, own)
+    if typ == 76:
+        return _positions(rt, own, mcs=False)
+    if typ == 87:
+        return [(1 << 12) if rt.queue else 0]
+    return _more(rt, typ, ch, system, own, axisno, idno)
+
+
+def _spindle_speed(k) -> float:
+    return float(k.speed) if k.spindle_dir else 0.0
+
+
+def _more(rt, typ: int, ch: int, system, own, axisno, idno):
+    """Further services: lags, spindles, in-position and travel flags, end points, distance to go."""
+    c, k = rt.ctl, rt.kernel
+    moving = bool(rt.queue)
+    if typ == 4:
+        return [a.lag for a in system]
+    if typ in (5, 36):
+        return [_spindle_speed(k)]
+    if typ == 25:
+        return [float(rt.prepared_kernel().speed)]
+    if typ in (6, 47):
+        flag = [1 if not (moving and a.channel == c.channel) else 0 for a in system]
+        return flag if typ == 6 else [1 - f for f in flag]
+    if typ == 8:
+        return [c.override["spindle"] * 100.0]
+    if typ in (16, 23, 77):
+        p = rt.prepared_kernel()
+        out = []
+        for a in own if typ == 77 else system:
+            i = kernel_index(rt, a)
+            if i is None:
+                out.append(a.position)
+            elif typ == 23:
+                out.append(p.prog[i] + p.g92[i])
+            else:
+                out.append(p.machine_pos[i] - (p.g92[i] if typ == 16 else 0.0))
+        return out
+    if typ == 46:
+        how, where = _state(rt)["return"].get(ch, (1, 3))
+        return [how, where, 1 if _state(rt)["recording"].get(ch, True) else 0]
+    if typ == 48:
+        return [_state(rt)["mode"].get(a.channel, 5) if a.channel > 0 else 0 for a in own]
+    if typ == 52:
+        return [sum(c.external[g][j] for g in c.external) for j in range(8)]
+    if typ == 61:
+        return [2 if a.rotary else 1 for a in own]
+    if typ == 63:
+        return [{1: 1, -1: 3, 0: 5}[k.spindle_dir]] + [0] * 7
+    if typ in (72, 75):
+        wcs = _data(rt, 71, ch, 0, None, None)
+        return wcs if typ == 72 else [v - a.lag for v, a in zip(wcs, own)]
+    if typ in (79, 80):
+        return [1 if typ == 80 or not (moving and a.channel == c.channel) else 0 for a in own]
+    if typ == 81:
+        return [2 if a.rotary else (1 if k.scale == 1.0 else 0) for a in own]
+    if typ == 82:
+        return [len(own), len(own), len(own)]
+    if typ == 37:  # program values: the MCS without the axis zero shifts and without G92
+        out = []
+        for a in system:
+            i = kernel_index(rt, a)
+            tool = k.tool_length if i is not None and i == k.tool_axis else 0.0
+            out.append(a.position if i is None else k.prog[i] + tool)
+        return out
+    if typ == 38:
+        return [p - a.lag for p, a in zip(_positions(rt, system), system)]
+    if typ in (55, 56, 57, 62):
+        return _drive(rt, typ, system, axisno, idno)
+    if typ == 68:
+        skip = 1 if rt.block_skip else 0
+        return [skip, skip]
+    if typ == 78:
+        return "".join(a.name[:8].ljust(8) + "\0" for a in own)
+    if typ == 83:
+        p = rt.prepared_kernel()
+        return [p.machine_pos[i] - k.machine_pos[i] if (i := kernel_index(rt, a)) is not None else 0.0 for a in own]
+    return None
+
+
+DRIVE_TEXTS = {55: "S-0-0030", 56: "S-0-0140", 57: "S-0-0141"}  # manufacturer version, controller, motor
+
+
+def _drive(rt, typ, system, axisno, idno):
+    """55-57: a drive's identification texts (axisno, 0 = axis 1); 62: SERCOS ``idno`` of every axis from
+    the cyclic telegram (S-0-0051 the actual position), -2147483648 where the telegram lacks it."""
+    c = rt.ctl
+    if typ in DRIVE_TEXTS:
+        ax = c.axes.get(axisno or 1)
+        if ax is None:
+            return None
+        return str(c.sercos.get(ax.index, {}).get(DRIVE_TEXTS[typ], ""))[:40]
+    if idno.__class__ is not int:
+        return None
+    key = f"S-0-{idno:04d}"
+    out = []
+    for a in system:
+        if key == "S-0-0051":
+            i = kernel_index(rt, a)
+            out.append(int(round(((a.position if i is None else rt.kernel.machine_pos[i]) - a.lag) * 10000)))
+        else:
+            v = c.sercos.get(a.index, {}).get(key)
+            out.append(v if isinstance(v, int) else -2147483648)
+    return out
+
+
+def f_mcods(rt, typ, chan, version, buffer, size, axisno=None, idno=None, p1=None):
+    """MCODS(type,chan,version,buffer,size[,axisno[,idno[,P1]]]) -> (status, new version)."""
+    c = rt.ctl
+    if typ.__class__ is not int or chan.__class__ is not int or size.__class__ is not int:
+        raise CplError("CPL032", "MCODS type, channel and size are INTEGER")
+    if chan > 0 and chan not in _channels(c):
+        return NO_CHANNEL, version
+    data = _data(rt, typ, chan, size, axisno, idno)
+    if data is None:
+        return (SYNTAX if typ in (17, 21, 22, 84, 85, 86, 88) else NOT_AVAILABLE), version
+    ver = _version(data)
+    if version not in (0, None) and int(version) == ver:
+        while rt.queue:  # block until the data changes: execution goes on
+            rt.execute_one()
+            data = _data(rt, typ, chan, size, axisno, idno)
+            ver = _version(data)
+            if ver != int(version):
+                break
+        else:
+            raise CplError("CPL039", f"MCODS({typ}): the data cannot change while the program waits for it")
+    _fill(buffer, data, size)
+    return OK, ver
+
+
+def _version(data) -> int:
+    return (zlib.crc32(repr(data).encode()) & 0xFFFFFF) or 1  # exact in a REAL variable
+
+
+def _fill(ref, data, size: int) -> None:
+    """Write the data into the buffer (field, type) from element 1 on, as the manual's BUF%(1)."""
+    buffer, ty = ref if isinstance(ref, tuple) else (ref, None)
+    if isinstance(data, str):
+        if not isinstance(buffer, CharacterField):
+            raise CplError("CPL032", "MCODS: this service needs a DIMensioned character field")
+        if size > buffer.size:
+            raise CplError("CPL023", f"MCODS size {size} is larger than the field ({buffer.size})")
+        buffer.assign(data[:size])
+        return
+    if not isinstance(buffer, list) or ty not in ("I", "R", "D"):
+        raise CplError("CPL032", "MCODS: this service needs a numeric variable or field")
+    if size > len(buffer) - 1:
+        raise CplError("CPL023", f"MCODS size {size} is larger than the field ({len(buffer) - 1})")
+    for n, v in enumerate(data[:size], 1):
+        buffer[n] = int(round(v)) if ty == "I" else float(v)
+
+
+def f_mcops(rt, fct, chan, p1=None, p2=None, p3=None, p4=None):
+    """MCOPS(fct,chan[,p1..p4]): a process service on a channel; returns an NCS status code (L3128-3231)."""
+    c = rt.ctl
+    st = _state(rt)
+    if chan != -2 and chan not in _channels(c):
+        return NO_CHANNEL
+    own = chan == c.channel
+    if fct == 1:  # cancel distance to go: discard the prepared blocks
+        if own:
+            rt.queue.clear()
+            rt._shadow = None
+        return OK
+    if fct == 2:  # control reset: errors of the channel cleared, offsets of the channel re-read
+        c.errors[:] = [e for e in c.errors if chan != -2 and e["channel"] not in (chan, -1)]
+        st["selected"].pop(chan, None)
+        if own or chan == -2:
+            push_to_kernel(rt)
+        return OK
+    if fct == 3:
+        return OK if st["selected"].get(chan) else 10
+    if fct == 4:
+        if own:
+            return 11
+        name = nul(p1)
+        if rt.machine.find_program(name, (".cpl",)) is None:
+            return NO_PROGRAM
+        st["selected"][chan] = name
+        return OK
+    if fct == 5:
+        if own:
+            return BUSY
+        st["selected"].pop(chan, None)
+        return OK
+    if fct == 6:
+        if own:
+            return 9
+        return OK if st["selected"].get(chan) else 10
+    if fct == 7:
+        if p1 not in MODES:
+            return SYNTAX
+        if own and p1 not in (5, 6, 7, 10):
+            return MODE_REFUSED  # a program is running: only automatic sub-modes
+        st["mode"][chan] = p1
+        return OK
+    if fct == 8:
+        if p1 not in (1, 2, 3) or p2 not in (1, 2, 3):
+            return SYNTAX
+        st["return"][chan] = (p1, p2)
+        return OK
+    if fct == 9:
+        st["recording"][chan] = False
+        return OK
+    return SYNTAX
+
+
+def f_axp(rt, axis, value, axtype=1):
+    """AXP: NC text '<axis name><value>' for an axis given by number (L2352-2376)."""
+    c = rt.ctl
+    if axis.__class__ is not int:
+        raise CplError("CPL032", "AXP needs an axis number")
+    if axtype == 0:
+        ax = c.axes.get(axis)
+    else:
+        logical = c.channel_axes(c.channel)
+        ax = logical[axis - 1] if 1 <= axis <= len(logical) else None
+    if ax is None:
+        raise CplError("1938", f"axis {axis} is not configured")
+    v = nul(value)
+    text = f"{v:.4f}".rstrip("0").rstrip(".") if isinstance(v, float) else str(v)
+    return f"{ax.name}{'=' if len(ax.name) > 1 else ''}{text}"

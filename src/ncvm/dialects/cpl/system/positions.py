@@ -1,0 +1,159 @@
+"""Positions of manual §4.2: AXO, CPOS, CPROBE, WPOS (coordinates), MPOS, PPOS, PROBE (axes), APOS, SPOS.
+
+"Prepared" values (AXO, CPOS) come from the NC state after every block prepared so far (the runtime's
+prepared kernel); "executed" values (WPOS, MPOS, APOS, SPOS) from the NC kernel, which has only run the
+blocks a WAIT (or the look-ahead depth) let through: read before a WAIT they are stale (§4.1).
+Probe values are latched by a G75 block from the next "probe" scenario event (see probe_block).
+"""
+
+from __future__ import annotations
+
+from ..errors import CplError
+from .axes import kernel_index, resolve, to_unit
+
+
+def _executed_mcs(rt, ax) -> float:
+    i = kernel_index(rt, ax)
+    return ax.position if i is None else rt.kernel.machine_pos[i]
+
+
+def _axis_zs(k, i: int) -> float:
+    """Axis zero shifts (G54.., external) of kernel axis i: the offset without G92 and tool length."""
+    tool = k.tool_length if i == k.tool_axis else 0.0
+    return k.offset_vec[i] - k.g92[i] - tool
+
+
+def f_axo(rt, sel, seltype=1):
+    """AXO: the last activated G92 shift of a coordinate, at block preparation (L1388-1402)."""
+    ax = resolve(rt, sel, seltype)
+    k = rt.prepared_kernel()
+    i = kernel_index(rt, ax)
+    return 0.0 if i is None else to_unit(k, ax, k.g92[i])
+
+
+def f_cpos(rt, sel, seltype=1):
+    """CPOS: the last programmed absolute position (PCS) of a coordinate, at block preparation (L1404-1428)."""
+    ax = resolve(rt, sel, seltype)
+    k = rt.prepared_kernel()
+    i = kernel_index(rt, ax)
+    return ax.position if i is None else to_unit(k, ax, k.prog[i])
+
+
+def f_wpos(rt, sel, seltype=1, chan=None):
+    """WPOS: the interpolated command position in the WCS, at block execution (L1475-1499).
+
+    Foreign channels are allowed; an asynchronous axis acts like SPOS."""
+    ax = resolve(rt, sel, seltype, chan, own_only=False)
+    i = kernel_index(rt, ax)
+    k = rt.kernel
+    if i is None:
+        return ax.position
+    return to_unit(k, ax, k.machine_pos[i] - _axis_zs(k, i))
+
+
+def f_mpos(rt, sel, axtype=1, chan=None):
+    """MPOS: the interpolated command position in the MCS, at block execution (L1539-1565)."""
+    ax = resolve(rt, sel, axtype, chan, own_only=False)
+    return to_unit(rt.kernel, ax, _executed_mcs(rt, ax))
+
+
+def _physical(rt, sel):
+    c = rt.ctl
+    if isinstance(sel, str):
+        ax = c.by_name(sel)
+    elif sel.__class__ is int:
+        ax = c.axes.get(sel)
+    elif sel is None:
+        raise TypeError("NUL")
+    else:
+        raise CplError("CPL032", f"axis selection {sel!r}")
+    if ax is None:
+        raise CplError("1938", f"physical axis {sel!r} is not configured")
+    return ax
+
+
+def f_spos(rt, sel):
+    """SPOS: the axis command value of a physical axis, relative to machine zero (L1688-1714)."""
+    ax = _physical(rt, sel)
+    return to_unit(rt.kernel, ax, _executed_mcs(rt, ax))
+
+
+def f_apos(rt, sel):
+    """APOS: the actual (feedback) value = command value minus the configured following error (L1662-1686)."""
+    ax = _physical(rt, sel)
+    return to_unit(rt.kernel, ax, _executed_mcs(rt, ax) - ax.lag)
+
+
+# -- probing (G75) -------------------------------------------------------------------------------
+def probe_block(rt, blk):
+    """A G75 measuring block: it travels like G1 towards its end point; if a "probe" scenario event is
+    left, the probe switches at the event's axis positions (MCS), the move stops there and the latch
+    holds them; otherwise the end point is reached and SD(9) gives 1. The block is executed before
+    preparation goes on, so SD(9) and the measured values can be read in the next CPL block (L1451)."""
+    c, k = rt.ctl, rt.prepared_kernel()
+    events = [e for e in rt.machine.scenario if e.kind == "probe"]
+    used = getattr(c, "probes_used", 0)
+    words = dict(blk.words)
+    g = tuple(1 if x == 75 else x for x in blk.g)
+    c.probe_latch = None
+    if used < len(events):
+        c.probes_used = used + 1
+        trigger = {str(n).upper(): float(v) for n, v in events[used].data.items()}
+        c.probe_latch = {}
+        for name, v in trigger.items():
+            i = k.axis_of.get(name)
+            if i is None:
+                continue
+            c.probe_latch[name] = v
+            if name in words:
+                target = v - k.offset_vec[i]
+                words[name] = (target if k.absolute else target - k.prog[i]) / k.scale
+    return type(blk)(g, blk.m, words, blk.n, blk.msg, blk.src)
+
+
+def probe_latch(rt) -> dict | None:
+    """The axis positions (MCS) at which the probe switched in the last G75 block, None if it did not."""
+    return getattr(rt.ctl, "probe_latch", None)
+
+
+def _latched(rt, ax) -> float:
+    if not ax.probe:
+        raise CplError("CPL040", f"axis {ax.name}: MACODA 1003 00012 'probe can be activated' is not set")
+    latch = probe_latch(rt)
+    if latch is None:
+        raise CplError("CPL040", "the probe has not switched (check SD(9) first)")
+    if ax.name not in latch:
+        return _executed_mcs(rt, ax)
+    return latch[ax.name]
+
+
+def f_probe(rt, sel, axtype=1):
+    """PROBE: the probe switch point in MCS axis values (L1619-1648)."""
+    ax = resolve(rt, sel, axtype)
+    return to_unit(rt.kernel, ax, _latched(rt, ax))
+
+
+def f_ppos(rt, sel, axtype=1):
+    """PPOS: the switch point in the WCS: axis zero shifts and tool compensation removed (L1567-1617)."""
+    ax = resolve(rt, sel, axtype)
+    mcs = _latched(rt, ax)
+    k = rt.kernel
+    i = kernel_index(rt, ax)
+    if i is None:
+        return mcs
+    tool = k.tool_length if i == k.tool_axis else 0.0
+    return to_unit(k, ax, mcs - _axis_zs(k, i) - tool)
+
+
+def f_cprobe(rt, sel, seltype=1):
+    """CPROBE: the switch point at the coordinate level (PCS): every shift, G92 included (L1430-1473)."""
+    ax = resolve(rt, sel, seltype)
+    mcs = _latched(rt, ax)
+    k = rt.kernel
+    i = kernel_index(rt, ax)
+    return mcs if i is None else to_unit(k, ax, mcs - k.offset_vec[i])
+
+
+def probe_switched(rt) -> int:
+    """SD(9): 0 = the probe switched, 1 = not switched."""
+    return 0 if probe_latch(rt) is not None else 1

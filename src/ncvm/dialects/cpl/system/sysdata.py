@@ -1,0 +1,185 @@
+"""Active system data of manual §4.9: SD, SDR, MCA, NCF (digest §6.9).
+
+Index 1 of the "last programmed / active" pairs reads the prepared NC state (the runtime's prepared
+kernel), index 2 the executed one (the NC kernel), as digest §6.9.1 maps them.
+"""
+
+from __future__ import annotations
+
+import math
+
+from ..errors import CplError
+from ..values import sv
+from .axes import nul
+from .positions import probe_switched
+
+#: G group (table 6.9.3) -> the G numbers in it
+G_GROUPS = {2: (0, 1, 2, 3, 5, 11, 12, 13, 73), 3: (70, 71), 4: (90, 91, 189, 190, 191), 5: (63, 66), 6: (543,),
+            7: (93, 94, 95), 8: (40, 41, 42), 9: (6, 7), 10: (17, 18, 19, 20), 11: (8, 9), 13: (14, 15),
+            15: (53, 54, 55, 56, 57, 58, 59), 16: tuple(range(153, 160)), 17: tuple(range(253, 260)),
+            18: (60, 67), 19: (37, 38, 39), 20: (61, 62), 25: (64, 65), 26: (68, 69), 29: (114, 115),
+            30: (160, 167)}
+GROUP_OF = {g: grp for grp, gs in G_GROUPS.items() for g in gs}
+PLANE_AXES = {17: (1, 2), 18: (3, 1), 19: (2, 3)}
+
+
+def g_of_group(k, group: int) -> int:
+    """The G number the kernel state has in G group ``group``; -1 for a group it does not apply."""
+    if group == 2:
+        return k.motion
+    if group == 3:
+        return 71 if k.scale == 1.0 else 70
+    if group == 4:
+        return 90 if k.absolute else 91
+    if group == 8:
+        return 40  # the kernel has no cutter radius compensation (G41/G42 are refused)
+    if group == 10:
+        return k.plane
+    if group == 15:
+        return int(k.work_offset[1:]) if k.work_offset else 53
+    if group == 7:
+        return 94
+    if 1 <= group <= 48:
+        return -1
+    raise CplError("CPL023", f"G group {group}: 1..48")
+
+
+def _pair(rt, which):
+    if which not in (1, 2):
+        raise CplError("CPL023", f"index {which}: 1 (last programmed) or 2 (active)")
+    return rt.prepared_kernel() if which == 1 else rt.kernel
+
+
+def _spindle(k) -> int:
+    return {1: 3, -1: 4, 0: 0}[k.spindle_dir]
+
+
+def f_sd(rt, group, i1=None, i2=None, i3=None):
+    """SD: system data as INTEGER (L2196-2312)."""
+    c = rt.ctl
+    group = nul(group)
+    if group == 1:
+        if i2 not in (1, 2):
+            raise CplError("CPL040" if i2 == 3 else "CPL023", "SD(1,g,1|2): 3 (power-on state) is not available")
+        # 1 = active (executed), 2 = last programmed (prepared), L2218
+        return g_of_group(rt.kernel if i2 == 1 else rt.prepared_kernel(), nul(i1))
+    if group == 2 or group == 202:
+        key = {1: "feed", 3: "spindle", 4: "spindle2"}.get(i1 if group == 2 else {1: 3, 2: 4}.get(i1))
+        if key is None:
+            raise CplError("CPL040", f"SD({group},{i1}) is not available")
+        return c.override[key]
+    if group == 5:
+        k = _pair(rt, 2 if i2 in (None, 1, 3) else 1)
+        if i1 == 1:
+            feed = k.feed / k.scale * (c.override["feed"] / 100.0 if i2 in (None, 1) else 1.0)
+            return math.ceil(feed - 1e-9)
+        if i1 == 2 and i2 in (None, 1):
+            return math.ceil(max(a.rapid for a in rt.machine.axes) / k.scale - 1e-9) if rt.machine.axes else 0
+        if i1 == 3:
+            speed = k.speed * (c.override["spindle"] / 100.0 if i2 in (None, 1) else 1.0)
+            return math.ceil(speed - 1e-9) if k.spindle_dir or i2 == 2 else 0
+        if i1 == 4:
+            return 0  # the machine model has one spindle
+        raise CplError("CPL023", f"SD(5,{i1},{i2})")
+    if group == 8:
+        return c.channel
+    if group == 9:
+        return probe_switched(rt)
+    if group == 10:
+        k = _pair(rt, nul(i1))
+        return k.tool_axis + 1 if k.tool_axis is not None else 0
+    if group == 11:
+        k = _pair(rt, {1: 1, 2: 2}.get(i2, 0) if i2 is not None else 1)
+        first, second = PLANE_AXES.get(k.plane, (1, 2))
+        return first if i1 == 1 else second
+    if group == 12:
+        if i1 in (1, 2):
+            return _spindle(rt.kernel if i1 == 1 else rt.prepared_kernel())
+        if i1 in (3, 4):
+            return -1  # no 2nd spindle
+        raise CplError("CPL023", f"SD(12,{i1})")
+    if group == 13:
+        return 1  # automatic mode
+    if group == 14:
+        return c.macoda[601000010][0]
+    if group == 15:
+        return 0
+    if group == 20:
+        return len(c.channel_axes(c.channel))
+    if group == 21:
+        return len(c.channel_axes(nul(i1)))
+    if group in (22, 23, 24, 25):
+        return _axis_numbers(rt, group, i1, i2)
+    if group in (205, 212):
+        k = rt.kernel if i1 in (1, 3) else rt.prepared_kernel()
+        if i2 not in (None, 1):
+            return 0 if group == 205 else -1
+        return math.ceil(k.speed - 1e-9) if group == 205 else _spindle(k)
+    raise CplError("CPL040", f"SD({group}) is not available in this simulation")
+
+
+def _axis_numbers(rt, group, i1, i2):
+    c = rt.ctl
+    logical = c.channel_axes(c.channel if group != 24 else nul(i2))
+    if group in (22, 25):
+        ax = c.by_name(i1) if isinstance(i1, str) else c.axes.get(i1)
+        if ax is None:
+            raise CplError("1938", f"physical axis {i1!r} is not configured")
+        if group == 25:
+            return ax.channel
+        if ax not in logical:
+            raise CplError("1970", f"axis {ax.name} is not on channel {c.channel}")
+        return logical.index(ax) + 1
+    if isinstance(i1, str):
+        ax = next((a for a in logical if a.name == i1.upper()), None)
+    else:
+        ax = logical[i1 - 1] if i1.__class__ is int and 1 <= i1 <= len(logical) else None
+    if ax is None:
+        raise CplError("1938", f"logical axis {i1!r} is not configured")
+    return ax.index
+
+
+def f_sdr(rt, group, i1=None, i2=None):
+    """SDR: system data as REAL (L2313-2351)."""
+    c = rt.ctl
+    if group in (2, 202):
+        return float(f_sd(rt, group, i1))
+    if group == 1:
+        logical = c.channel_axes(c.channel)
+        if i1.__class__ is not int or not 1 <= i1 <= len(logical):
+            raise CplError("1938", f"SDR(1,{i1}): machining axis not applied")
+        return 0.0  # no block search has run (L2316)
+    raise CplError("CPL040", f"SDR({group}) is not available in this simulation")
+
+
+#: old MACODA numbers (up to V4.x) -> new ones (A.4, L5566-5593)
+OLD_MACODA = {100100001: 100300001, 100100002: 100300002, 100100003: 100100001, 100100004: 100300004,
+              100100005: 100300005, 101000003: 101000011, 101000004: 101000012, 101500001: 101500002,
+              101500006: 101500100, 101500007: 101500001}
+
+
+def f_mca(rt, param, index, chan=None):
+    """MCA: a MACODA value; index 0-based; chan own channel by default, -1 = basic setting (L2054-2089)."""
+    c = rt.ctl
+    param = nul(param)
+    number = OLD_MACODA.get(param, param)
+    if number not in c.macoda:
+        raise CplError("CPL040", f"MACODA parameter {param} does not exist")
+    if chan is not None and chan != -1 and not c.channel_axes(chan):
+        raise CplError("CPL040", f"MACODA channel {chan} does not exist")
+    values = c.macoda[number]
+    if index.__class__ is not int or not 0 <= index < len(values):
+        raise CplError("CPL040", f"MACODA {param} has no individual parameter {index}")
+    return values[index]
+
+
+def f_ncf(rt, text):
+    """NCF: the text of the last programmed function of the modal group of ``text`` (L2090-2113)."""
+    text = sv(nul(text))
+    if not isinstance(text, str) or not text.upper().startswith("G") or not text[1:].isdigit():
+        raise CplError("CPL040", f"NCF({text!r}): unknown NC function")
+    group = GROUP_OF.get(int(text[1:]))
+    if group is None:
+        raise CplError("CPL040", f"NCF({text!r}): unknown NC function")
+    g = g_of_group(rt.prepared_kernel(), group)
+    return "" if g < 0 else f"G{g}"
