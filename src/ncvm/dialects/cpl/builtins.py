@@ -4,7 +4,7 @@ Chapter 5 (strings) is implemented once, in :mod:`.io.strings`; chapters 6-9 (fi
 take the run's :class:`~.io.context.CplIO` as their first argument ("io" flag).
 
 Result type "=" means the type of the first argument; "RD" means DOUBLE when the argument is DOUBLE, else REAL.
-Functions that read the machine (MPOS) take the runtime as their first argument ("rt" flag).
+Functions that read the machine (chapter 4, table in the system package) take the runtime as their first argument ("rt" flag).
 """
 
 from __future__ import annotations
@@ -117,24 +117,6 @@ def f_bin(x):
     return int(digits)
 
 
-def f_mpos(rt, sel, axtype=1, chan=None):
-    """MPOS: the interpolated command position of an axis in the machine coordinate system (manual §4.2.2).
-
-    Reads what block *execution* has reached: without a WAIT, blocks still queued are not in it (§4.1).
-    """
-    return rt.machine_position(sel)
-
-
-def f_cpos(rt, sel, seltype=1):
-    """CPOS: the last programmed absolute position of a coordinate, at block preparation (manual §4.2.1)."""
-    return rt.programmed_position(sel)
-
-
-def f_axo(rt, sel, seltype=1):
-    """AXO: the last activated G92 shift of a coordinate, at block preparation (manual §4.2.1)."""
-    return rt.g92_shift(sel)
-
-
 def f_eof(io, n):
     return io.files.EOF(n)
 
@@ -203,9 +185,6 @@ FUNCTIONS: dict[str, Builtin] = {
     "FILEACCESS": Builtin(f_fileaccess, 1, 1, "I", "§6 L4406", io=True, params="S"),
     "FILEDATE": Builtin(f_filedate, 1, 2, "S", "§6 L4433", io=True, params="SI"),
     "INKEY": Builtin(f_inkey, 0, 0, "I", "§7 L4625", io=True),
-    "MPOS": Builtin(f_mpos, 1, 3, "R", "§4.2.2 L1539", rt=True),
-    "CPOS": Builtin(f_cpos, 1, 2, "R", "§4.2.1 L1404", rt=True),
-    "AXO": Builtin(f_axo, 1, 2, "R", "§4.2.1 L1388", rt=True),
 }
 
 from .system import SYSTEM_FUNCTIONS  # noqa: E402 - chapter 4 (the system package uses Builtin)

@@ -392,30 +392,6 @@ class CplRuntime:
             words.update(blk.words)
         return Block(tuple(g), tuple(m), words, n, msg, src)
 
-    def axis(self, sel) -> int:
-        """Axis selection by name or 1-based index (one channel: coordinates are the axes)."""
-        names = self.kernel.axis_names
-        if isinstance(sel, str):
-            if sel.upper() not in names:
-                raise CplError("CPL029", f"axis {sel!r} is not configured")
-            return names.index(sel.upper())
-        if sel.__class__ is int and 1 <= sel <= len(names):
-            return sel - 1
-        if sel is None:
-            raise TypeError("NUL")
-        raise CplError("CPL029", f"axis index {sel!r} is not configured")
-
-    def machine_position(self, sel) -> float:
-        return self.kernel.machine_pos[self.axis(sel)] / self.kernel.scale
-
-    def programmed_position(self, sel) -> float:
-        k = self.prepared_kernel()
-        return k.prog[self.axis(sel)] / k.scale
-
-    def g92_shift(self, sel) -> float:
-        k = self.prepared_kernel()
-        return k.g92[self.axis(sel)] / k.scale
-
     # -- WAIT with parameters (manual §4.1) ---------------------------------------------------
     def advance(self, t_end: float) -> None:
         """Let execution run until simulated time ``t_end`` (queued motion progresses), then idle."""
