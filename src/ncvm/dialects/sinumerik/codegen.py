@@ -30,9 +30,12 @@ def _num(v: float) -> str:
 class UnitCodegen:
     """Turns one :class:`PartProgram` into Python source for ``_unit(_rt)``."""
 
-    def __init__(self, prog: PartProgram, unit: str, axis_names: tuple[str, ...], debug: bool = False):
+    def __init__(self, prog: PartProgram, unit: str, axis_names: tuple[str, ...], debug: bool = False,
+                 decode_ahead: bool = False):
         self.prog = prog
         self.debug = debug  # a debug build calls the step hook before every block
+        # with decode-ahead every block goes through the channel's buffer (no direct kernel moves)
+        self.decode_ahead = decode_ahead
         self.unit = unit
         self.axes = axis_names
         self.src = PySource(f"<sin800 {unit} {prog.path}>")
@@ -368,6 +371,8 @@ class UnitCodegen:
                 return ["@SYNC_OUT", f"_rt.nc_function({code!r}, ({refs},), {line})", "@SYNC_IN"]
             if code == "a27":
                 return ["@SYNC_OUT", f"_rt.io({code!r}, ({args},))"]
+            if code in ("714", "715"):  # STOP DEC hands over R parameters loaded during execution
+                return ["@SYNC_OUT", f"_rt.nc_function({code!r}, (), {line})", "@SYNC_IN"]
             fn = "write" if g == "4" else ("io" if g == "a" else "nc_function")
             extra = f", {line}" if g == "7" else ""
             return [f"_rt.{fn}({code!r}, ({args}{',' if args else ''}){extra})"]
@@ -565,7 +570,7 @@ class _Record:
             out.emit(f"_ex(_Block({tuple(g)!r}, {tuple(m)!r}, _wm, {self.blk.n!r}, {self.msg!r}, {srcname}))", line)
             g, m, words = [], [], []
         axis_keys = {repr(a) for a in cg.axes}
-        fast = (not m and self.msg is None and len(g) <= 1 and all(x in (0, 1) for x in g) and words
+        fast = (not cg.decode_ahead and not m and self.msg is None and len(g) <= 1 and all(x in (0, 1) for x in g) and words
                 and all(k in axis_keys for k, _v, _c in words))
         if fast:
             # a plain G0/G1 block: straight to the kernel's move path, as execute() would do

@@ -10,6 +10,7 @@ from __future__ import annotations
 import math
 import re
 import sys
+from collections import deque
 
 from ...diagnostics import Frame, RuntimeFault, Span
 from ...nc.block import Block
@@ -29,6 +30,7 @@ ALARMS = {
     "SIN005": "function not available in this NC model",
     "SIN006": "push/pop stack error",
     "SIN007": "waiting for an input that never changes",
+    "SIN010": "warning: actual value read or measurement used without STOP DEC after motion",
     "RUN002": "sub-program not found",
     "RUN003": "sub-program nesting too deep",
 }
@@ -73,6 +75,10 @@ class Channel(SysMem):
         self.m0_stops = str(sec.get("m0", "stop")) == "stop"
         self.max_depth = int(sec.get("max_call_depth", 8))
         self.cycle_alarm_stop = bool(sec.get("cycle_alarm_stop", True))
+        # decode-ahead (digest §10.5): 0 = lockstep; N = up to N decoded blocks wait for execution
+        self.decode_ahead = int(sec.get("decode_ahead", 0))
+        self.buffer: deque = deque()
+        self.pending_r: dict[int, float] = {}  # PLC answers and measured values not yet seen by decoding
         self.R = [0.0] * 1000
         self.written: set[int] = set()
         for name, v in sec.get("r", {}).items():
@@ -87,6 +93,8 @@ class Channel(SysMem):
         self.v24: list[str] = []
         self.tool_d = 0
         SysMem.__init__(self)
+        if self.decode_ahead > 0:
+            self.execute = self.decode_into_buffer
         self._scenario = list(session.machine.scenario)
         self.m_functions = {f"M{int(k)}": dict(v) for k, v in sec.get("m_functions", {}).items()}
         if self.m_functions:
@@ -100,6 +108,40 @@ class Channel(SysMem):
 
             canon.aux = aux
         self.apply_offsets()
+
+    # -- decode-ahead (manual L4287-4334, digest §10.5) --------------------
+    def decode_into_buffer(self, block: Block) -> None:
+        """A decoded block waits in the NC buffer; the oldest executes once more than N are waiting.
+        Blocks that stop or end the program (M0/M1/M2/M30) empty the buffer at once."""
+        buf = self.buffer
+        buf.append(block)
+        if any(m in (0, 1, 2, 30) for m in block.m):
+            self.run_buffer()
+        elif len(buf) > self.decode_ahead:
+            self.kernel.execute(buf.popleft())
+
+    def run_buffer(self) -> None:
+        """Execute every decoded block still waiting (decoding needs the executed state)."""
+        buf = self.buffer
+        execute = self.kernel.execute
+        while buf:
+            execute(buf.popleft())
+
+    def stop_dec(self) -> None:
+        """@714 STOP DEC: decoding waits until the buffer is empty; R parameters loaded by the PLC or by
+        MEAS M meanwhile become visible to the blocks that follow."""
+        self.run_buffer()
+        R = self.R
+        for n, v in self.pending_r.items():
+            R[n] = v
+        self.pending_r.clear()
+
+    def load_r(self, n: int, value: float) -> None:
+        """An R parameter written by execution (PLC answer, measured value), not by decoding."""
+        if self.decode_ahead > 0:
+            self.pending_r[n] = value
+        else:
+            self.R[n] = value
 
     # -- running units ---------------------------------------------------
     def run_unit(self, unit, frame_name: str, call_span: Span | None) -> int:
@@ -199,7 +241,7 @@ class Channel(SysMem):
                 value = float(self._dw(plc, float(m.group(2)), float(m.group(3))))
             else:
                 value = float(source)
-            self.R[n] = value
+            self.load_r(n, value)
 
     def debug_block(self, line: int) -> None:
         """Debug builds: the step hook sees each block before it runs, with the R parameters set."""
