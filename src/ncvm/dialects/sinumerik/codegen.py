@@ -133,7 +133,7 @@ class UnitCodegen:
         src = self.src
         src.emit("def _unit(_rt):", 0)
         src._indent = 1
-        src.emit("_R = _rt.R; _ex = _rt.execute; _K = _rt.kernel; _ctr = _rt.counter; _lin = _K._linear")
+        src.emit("_R = _rt.R; _ex = _rt.execute; _K = _rt.kernel; _ctr = _rt.counter; _lin = _rt.linear")
         src.emit("_lim = _ctr.limit - _ctr.steps; _st = 0; _blk = 0")
         used = sorted(self.used)
         sync_in = "; ".join(f"r{n} = _R[{n}]" for n in used) or "pass"
@@ -172,6 +172,8 @@ class UnitCodegen:
                 continue
             if not isinstance(it, Word) or it.value is None or it.address in ("L", "D"):
                 return None
+            if it.address == "A" and "A" not in self.axes:
+                return None  # the angle address needs the start point (rotation.py)
             if it.address == "G":
                 if it.value in (16, 58, 59):
                     return None
@@ -375,7 +377,10 @@ class UnitCodegen:
                 return ["@SYNC_OUT", f"_rt.nc_function({code!r}, (), {line})", "@SYNC_IN"]
             fn = "write" if g == "4" else ("io" if g == "a" else "nc_function")
             extra = f", {line}" if g == "7" else ""
-            return [f"_rt.{fn}({code!r}, ({args}{',' if args else ''}){extra})"]
+            lines = [f"_rt.{fn}({code!r}, ({args}{',' if args else ''}){extra})"]
+            if code in ("437", "438", "439", "43a"):  # a rotation angle may switch block shaping on or off
+                lines.append("_ex = _rt.execute; _lin = _rt.linear")
+            return lines
         raise AssertionError(code)
 
     def _ref(self, op: Operand) -> str:
@@ -457,6 +462,7 @@ class _Record:
         self.g16: list[tuple[str, bool]] = []
         self.int_sec: tuple[str, str] | None = None
         self.meas: tuple[str, str] | None = None
+        self.angle = False  # the block carries the programmed angle (PANG or the angle address word)
         self._captured = 0
 
     def note(self, it: Note) -> None:
@@ -499,6 +505,11 @@ class _Record:
             return
         if a == "B" and "B" not in cg.axes:
             a = "R"  # SINUMERIK 8xx radius address for circles (B100, L4237)
+        if a == "A" and "A" not in cg.axes:
+            # the angle address (NC MD byte 5001 = 11, L2325-2326) when A is not an axis
+            self.angle = True
+            self.words.append(("_rt.angle_key()", expr, False))
+            return
         if not const and captured:
             # the value is the one R has where the word stands; later @ code in the block may change R
             tmp = f"_w{self._captured}"
@@ -526,8 +537,8 @@ class _Record:
         elif code == "446":
             self.words.append(("'R'", tmp, False))
         elif code == "447":
-            out.emit(f"_rt.fault('SIN005', 'PANG (angle address in the block) is not supported by this NC "
-                     f"model', {line})", line)
+            self.angle = True
+            self.words.append(("_rt.angle_key()", tmp, False))
         else:
             out.emit(f"_rt.write({code!r}, ({', '.join(cg.val(o) for o in ops)},))", line)
 
@@ -587,15 +598,16 @@ class _Record:
             plc_m = any(x not in _STANDARD_M for x in m)
             if plc_m:
                 out.emit("@SYNC_OUT", line)
+            ex = "_rt.execute_angle" if self.angle else "_ex"
             if all(c for _k, _v, c in words):
                 blk = Block(tuple(g), tuple(m), {eval(k): float(v) for k, v, _c in words}, self.blk.n,
                             self.msg, src)
                 name = cg.const(blk, "_B")
-                out.emit(f"_ex({name})", line)
+                out.emit(f"{ex}({name})", line)
             else:
                 srcname = cg.const(src, "_S")
                 d = ", ".join(f"{k}: {v}" for k, v, _c in words)
-                out.emit(f"_ex(_Block({tuple(g)!r}, {tuple(m)!r}, {{{d}}}, {self.blk.n!r}, {self.msg!r}, "
+                out.emit(f"{ex}(_Block({tuple(g)!r}, {tuple(m)!r}, {{{d}}}, {self.blk.n!r}, {self.msg!r}, "
                          f"{srcname}))", line)
             if plc_m:
                 out.emit("@SYNC_IN", line)
@@ -606,6 +618,7 @@ class _Record:
             out.emit("@SYNC_OUT", line)
             out.emit(f"_rt.call({self.call}, {self.passes}, {line})", line)
             out.emit("@SYNC_IN", line)
+            out.emit("_ex = _rt.execute; _lin = _rt.linear", line)
             out.emit("_lim = _ctr.limit - _ctr.steps", line)
             out.emit("if _K.ended or _rt.halted: return 1", line)
         if m17 and not jumping:

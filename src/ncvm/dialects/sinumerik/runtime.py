@@ -16,6 +16,7 @@ from ...diagnostics import Frame, RuntimeFault, Span
 from ...nc.block import Block
 from ...runtime.codegen import program_lines
 from .ncdata import Cl800Error, NcData, int_to_pattern, pattern_to_int
+from .rotation import angle_address, shape_block
 from .sysmem import SysMem
 
 DEG = math.pi / 180.0
@@ -93,8 +94,8 @@ class Channel(SysMem):
         self.v24: list[str] = []
         self.tool_d = 0
         SysMem.__init__(self)
-        if self.decode_ahead > 0:
-            self.execute = self.decode_into_buffer
+        self.angle_used = False  # a block carried the angle address (PANG, @447)
+        self.route()
         self._scenario = list(session.machine.scenario)
         self.m_functions = {f"M{int(k)}": dict(v) for k, v in sec.get("m_functions", {}).items()}
         if self.m_functions:
@@ -109,6 +110,35 @@ class Channel(SysMem):
             canon.aux = aux
         self.apply_offsets()
 
+    # -- how decoded blocks reach the kernel ---------------------------------
+    def route(self) -> None:
+        """Pick the execution path: straight to the kernel, or shaped first (rotation, angle address);
+        through the decode buffer when decoding runs ahead. Generated code re-reads ``execute`` and
+        ``linear`` after rotation writes and calls."""
+        k = self.kernel
+        shaped = self.angle_used or self.rotation_active()
+        self.execute_now = self.execute_shaped if shaped else k.execute
+        self.linear = self.linear_shaped if shaped else k._linear
+        self.execute = self.decode_into_buffer if self.decode_ahead > 0 else self.execute_now
+
+    def execute_shaped(self, block: Block) -> None:
+        key = angle_address(self) if self.angle_used else None
+        self.kernel.execute(shape_block(self, block, key))
+
+    def linear_shaped(self, k, motion: int, words: dict, src) -> None:
+        """The generated G0/G1 fast path while a rotation is selected."""
+        k._linear(k, motion, shape_block(self, Block((), (), words, None, None, src), None).words, src)
+
+    def execute_angle(self, block: Block) -> None:
+        """A block with the programmed angle (PANG or the angle address word)."""
+        if not self.angle_used:
+            self.angle_used = True
+            self.route()
+        self.execute(block)
+
+    def angle_key(self) -> str:
+        return angle_address(self)
+
     # -- decode-ahead (manual L4287-4334, digest §10.5) --------------------
     def decode_into_buffer(self, block: Block) -> None:
         """A decoded block waits in the NC buffer; the oldest executes once more than N are waiting.
@@ -118,12 +148,12 @@ class Channel(SysMem):
         if any(m in (0, 1, 2, 30) for m in block.m):
             self.run_buffer()
         elif len(buf) > self.decode_ahead:
-            self.kernel.execute(buf.popleft())
+            self.execute_now(buf.popleft())
 
     def run_buffer(self) -> None:
         """Execute every decoded block still waiting (decoding needs the executed state)."""
         buf = self.buffer
-        execute = self.kernel.execute
+        execute = self.execute_now
         while buf:
             execute(buf.popleft())
 

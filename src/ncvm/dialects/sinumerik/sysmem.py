@@ -358,6 +358,7 @@ class SysMem:
             key = f"{kind}:{g}"
             d.rot[key] = value if code in ("437", "439") else d.rot.get(key, 0.0) + value
             d.dirty.add("rot")
+            self.route()  # a rotation now selected (or cleared) changes how blocks reach the kernel
             return
         self._zo_changed()
 
