@@ -39,11 +39,11 @@ class Unit:
 
 
 def compile_unit(path: str, text: str, axis_names: tuple[str, ...], name: str, debug: bool = False,
-                 decode_ahead: bool = False) -> Unit:
+                 decode_ahead: bool = False, strict: bool = False) -> Unit:
     prog, diags = read_program(path, text)
     if diags:
         raise CompileFailed(diags)
-    gen = UnitCodegen(prog, name, axis_names, debug, decode_ahead)
+    gen = UnitCodegen(prog, name, axis_names, debug, decode_ahead, strict)
     source, consts = gen.build()
     namespace = dict(NAMESPACE_GLOBALS)
     namespace.update(consts)
@@ -54,10 +54,11 @@ def compile_unit(path: str, text: str, axis_names: tuple[str, ...], name: str, d
 class SubProgramLibrary:
     """Finds, reads and compiles sub-programs L<n> along the program path, once each."""
 
-    def __init__(self, machine, debug: bool = False, decode_ahead: bool = False):
+    def __init__(self, machine, debug: bool = False, decode_ahead: bool = False, strict: bool = False):
         self.machine = machine
         self.debug = debug
         self.decode_ahead = decode_ahead
+        self.strict = strict
         self.units: dict[int, Unit | None] = {}
 
     def __call__(self, number: int) -> Unit | None:
@@ -68,7 +69,7 @@ class SubProgramLibrary:
             else:
                 text = path.read_text(encoding="latin-1")
                 self.units[number] = compile_unit(str(path), text, self.machine.axis_names, f"L{number}",
-                                                  self.debug, self.decode_ahead)
+                                                  self.debug, self.decode_ahead, self.strict)
         return self.units[number]
 
     def find(self, number: int) -> Path | None:
@@ -112,12 +113,14 @@ class Sin800Dialect(Dialect):
         """Run a main program or @ code object text (``%SPF<n>`` / ``%MPF<n>``, digest §5.3)."""
         machine = session.machine
         debug = session.steps.hook is not None
-        ahead = int(machine.sections.get("sin800", {}).get("decode_ahead", 0)) > 0
-        unit = compile_unit(path, text, machine.axis_names, "main", debug, ahead)
+        sec = machine.sections.get("sin800", {})
+        ahead = int(sec.get("decode_ahead", 0)) > 0
+        strict = bool(sec.get("strict_nc", False))
+        unit = compile_unit(path, text, machine.axis_names, "main", debug, ahead, strict)
         data = NcData.from_machine(machine)
         store = session.store
         data.overlay(store.items(NAMESPACE))
-        library = SubProgramLibrary(machine, debug, ahead)
+        library = SubProgramLibrary(machine, debug, ahead, strict)
         channel = Channel(session, data, library)
         name = f"%{unit.program.kind}{unit.program.number}" if unit.program.kind else Path(path).name
         initial = list(channel.R)

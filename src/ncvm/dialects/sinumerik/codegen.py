@@ -31,11 +31,12 @@ class UnitCodegen:
     """Turns one :class:`PartProgram` into Python source for ``_unit(_rt)``."""
 
     def __init__(self, prog: PartProgram, unit: str, axis_names: tuple[str, ...], debug: bool = False,
-                 decode_ahead: bool = False):
+                 decode_ahead: bool = False, strict: bool = False):
         self.prog = prog
         self.debug = debug  # a debug build calls the step hook before every block
         # with decode-ahead every block goes through the channel's buffer (no direct kernel moves)
         self.decode_ahead = decode_ahead
+        self.strict = strict  # [sin800] strict_nc: every R store rounds to 8 significant digits
         self.unit = unit
         self.axes = axis_names
         self.src = PySource(f"<sin800 {unit} {prog.path}>")
@@ -68,6 +69,8 @@ class UnitCodegen:
 
     def store(self, op: Operand, expr: str) -> list[str]:
         """Python lines storing ``expr`` into a <Var>."""
+        if self.strict:
+            expr = f"_nc8({expr})"
         if op.kind == "R":
             self.written.add(int(op.value))
             return [f"{self.r(int(op.value))} = {expr}"]
@@ -241,6 +244,8 @@ class UnitCodegen:
             else:
                 expr = f"({expr} {op} {v})"
         self.written.add(it.target)
+        if self.strict:
+            expr = f"_nc8({expr})"
         return f"{self.r(it.target)} = {expr}"
 
     def _jump(self, out: PySource, idx: int, blk: NcBlock, number: int, rec: "_Record") -> None:

@@ -15,7 +15,7 @@ from collections import deque
 from ...diagnostics import Frame, RuntimeFault, Span
 from ...nc.block import Block
 from ...runtime.codegen import program_lines
-from .ncdata import Cl800Error, NcData, int_to_pattern, pattern_to_int
+from .ncdata import Cl800Error, NcData, int_to_pattern, nc8, pattern_to_int
 from .rotation import angle_address, shape_block
 from .sysmem import SysMem
 
@@ -54,6 +54,7 @@ def _int(value: float) -> int:
 NAMESPACE_GLOBALS = {
     "_Block": Block, "_int": _int, "_ptr": _ptr, "_sqrt": math.sqrt, "_hypot": math.hypot, "_sin": math.sin,
     "_cos": math.cos, "_asin": math.asin, "_log": math.log, "_exp": math.exp, "_trunc": math.trunc, "_DEG": DEG,
+    "_nc8": nc8,
 }
 
 
@@ -78,6 +79,7 @@ class Channel(SysMem):
         self.cycle_alarm_stop = bool(sec.get("cycle_alarm_stop", True))
         # decode-ahead (digest §10.5): 0 = lockstep; N = up to N decoded blocks wait for execution
         self.decode_ahead = int(sec.get("decode_ahead", 0))
+        self.strict = bool(sec.get("strict_nc", False))  # R stores rounded to 8 digits (digest §10.4)
         self.buffer: deque = deque()
         self.pending_r: dict[int, float] = {}  # PLC answers and measured values not yet seen by decoding
         self.R = [0.0] * 1000
@@ -168,6 +170,8 @@ class Channel(SysMem):
 
     def load_r(self, n: int, value: float) -> None:
         """An R parameter written by execution (PLC answer, measured value), not by decoding."""
+        if self.strict:
+            value = nc8(value)
         if self.decode_ahead > 0:
             self.pending_r[n] = value
         else:

@@ -12,7 +12,7 @@ import math
 
 from ...diagnostics import RuntimeFault
 from .contour import check_window, contour_elements, intersect
-from .ncdata import Cl800Error, int_to_pattern, pattern_to_int
+from .ncdata import Cl800Error, int_to_pattern, nc8, pattern_to_int
 
 #: code -> (area, width, (lo, hi) address range); width: word, byte, bit
 MD_SD = {
@@ -140,13 +140,14 @@ class SysMem:
     def read(self, code: str, target: int, args: tuple) -> None:
         value = self._read(code, target, args)
         R = self.R
+        fix = nc8 if self.strict else float
         if isinstance(value, list):
             if target + len(value) > 1000:
                 raise Cl800Error(f"result registers R{target}..R{target + len(value) - 1} do not exist")
             for i, v in enumerate(value):
-                R[target + i] = float(v)
+                R[target + i] = fix(v)
         else:
-            R[target] = float(value)
+            R[target] = fix(value)
 
     def _read(self, code: str, target: int, args: tuple):
         sub, fn = code[1], code[2]
