@@ -28,7 +28,6 @@ ALARMS = {
     "SIN002": "unknown @ code",
     "SIN003": "wrong operands for the @ code",
     "SIN004": "jump target block not found in the search direction",
-    "SIN005": "function not available in this NC model",
     "SIN006": "push/pop stack error",
     "SIN007": "waiting for an input that never changes",
     "SIN010": "warning: actual value read or measurement used without STOP DEC after motion",
