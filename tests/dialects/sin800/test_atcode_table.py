@@ -104,9 +104,16 @@ def test_every_code_has_a_sample():
     assert set(SAMPLES) | branching | {"447"} == set(AT_CODES)
 
 
-def test_pang_is_reported_as_missing(tmp_path):
-    result = _write(tmp_path, "%MPF1\n@447 K30\nM30\n")
-    assert result["error"]["code"] == "SIN005"
+def test_pang_without_a_plane_axis_is_a_cl800_error(tmp_path):
+    # the angle completes a straight line only with exactly one axis of the plane (tests/.../test_rotation.py)
+    result = _write(tmp_path, "%MPF1\n@401 K5001 K11\n@447 K30\nM30\n")  # MDNBY(5001) = 11: address A
+    assert result["error"]["code"] == "CL800" and "exactly one of the axes X, Y" in result["error"]["message"]
+    assert result["error"]["line"] == 3
+
+
+def test_pang_needs_a_known_angle_address(tmp_path):
+    result = _write(tmp_path, "%MPF1\n@447 K30 X5\nM30\n")  # this machine file sets MD byte 5001 = 00010010
+    assert result["error"]["code"] == "CL800" and "5001 = 10010" in result["error"]["message"]
 
 
 @pytest.mark.parametrize("code", sorted(SAMPLES))

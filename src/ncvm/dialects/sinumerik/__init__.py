@@ -17,6 +17,7 @@ from ...diagnostics import CompileFailed
 from ...runtime.codegen import PySource
 from ..base import Dialect
 from .codegen import UnitCodegen
+from .lint import stop_dec_lint
 from .ncdata import NAMESPACE, NcData
 from .reader import PartProgram, read_program
 from .runtime import NAMESPACE_GLOBALS, Channel
@@ -37,11 +38,12 @@ class Unit:
     written: frozenset[int] = frozenset()
 
 
-def compile_unit(path: str, text: str, axis_names: tuple[str, ...], name: str, debug: bool = False) -> Unit:
+def compile_unit(path: str, text: str, axis_names: tuple[str, ...], name: str, debug: bool = False,
+                 decode_ahead: bool = False, strict: bool = False) -> Unit:
     prog, diags = read_program(path, text)
     if diags:
         raise CompileFailed(diags)
-    gen = UnitCodegen(prog, name, axis_names, debug)
+    gen = UnitCodegen(prog, name, axis_names, debug, decode_ahead, strict)
     source, consts = gen.build()
     namespace = dict(NAMESPACE_GLOBALS)
     namespace.update(consts)
@@ -52,9 +54,11 @@ def compile_unit(path: str, text: str, axis_names: tuple[str, ...], name: str, d
 class SubProgramLibrary:
     """Finds, reads and compiles sub-programs L<n> along the program path, once each."""
 
-    def __init__(self, machine, debug: bool = False):
+    def __init__(self, machine, debug: bool = False, decode_ahead: bool = False, strict: bool = False):
         self.machine = machine
         self.debug = debug
+        self.decode_ahead = decode_ahead
+        self.strict = strict
         self.units: dict[int, Unit | None] = {}
 
     def __call__(self, number: int) -> Unit | None:
@@ -65,7 +69,7 @@ class SubProgramLibrary:
             else:
                 text = path.read_text(encoding="latin-1")
                 self.units[number] = compile_unit(str(path), text, self.machine.axis_names, f"L{number}",
-                                                  self.debug)
+                                                  self.debug, self.decode_ahead, self.strict)
         return self.units[number]
 
     def find(self, number: int) -> Path | None:
@@ -100,23 +104,29 @@ class Sin800Dialect(Dialect):
         return 70 if _AT.search(text) else 0
 
     def check(self, path, text, machine, all_errors=False):
-        diags = read_program(path, text)[1]
-        return diags if all_errors else diags[:1] if diags else []
+        prog, diags = read_program(path, text)
+        if diags:
+            return diags if all_errors else diags[:1]
+        return stop_dec_lint(prog)  # warnings only (digest §10.5)
 
     def run(self, path, text, session):
         """Run a main program or @ code object text (``%SPF<n>`` / ``%MPF<n>``, digest §5.3)."""
         machine = session.machine
         debug = session.steps.hook is not None
-        unit = compile_unit(path, text, machine.axis_names, "main", debug)
+        sec = machine.sections.get("sin800", {})
+        ahead = int(sec.get("decode_ahead", 0)) > 0
+        strict = bool(sec.get("strict_nc", False))
+        unit = compile_unit(path, text, machine.axis_names, "main", debug, ahead, strict)
         data = NcData.from_machine(machine)
         store = session.store
         data.overlay(store.items(NAMESPACE))
-        library = SubProgramLibrary(machine, debug)
+        library = SubProgramLibrary(machine, debug, ahead, strict)
         channel = Channel(session, data, library)
         name = f"%{unit.program.kind}{unit.program.number}" if unit.program.kind else Path(path).name
         initial = list(channel.R)
         try:
             channel.run_unit(unit, name, None)
+            channel.stop_dec()  # the end of the program: every decoded block executes
             if not session.kernel.ended and not channel.halted:
                 from ...nc.canon import Src
                 last = unit.program.blocks[-1].line if unit.program.blocks else 1

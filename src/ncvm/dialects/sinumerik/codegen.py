@@ -30,9 +30,13 @@ def _num(v: float) -> str:
 class UnitCodegen:
     """Turns one :class:`PartProgram` into Python source for ``_unit(_rt)``."""
 
-    def __init__(self, prog: PartProgram, unit: str, axis_names: tuple[str, ...], debug: bool = False):
+    def __init__(self, prog: PartProgram, unit: str, axis_names: tuple[str, ...], debug: bool = False,
+                 decode_ahead: bool = False, strict: bool = False):
         self.prog = prog
         self.debug = debug  # a debug build calls the step hook before every block
+        # with decode-ahead every block goes through the channel's buffer (no direct kernel moves)
+        self.decode_ahead = decode_ahead
+        self.strict = strict  # [sin800] strict_nc: every R store rounds to 8 significant digits
         self.unit = unit
         self.axes = axis_names
         self.src = PySource(f"<sin800 {unit} {prog.path}>")
@@ -65,6 +69,8 @@ class UnitCodegen:
 
     def store(self, op: Operand, expr: str) -> list[str]:
         """Python lines storing ``expr`` into a <Var>."""
+        if self.strict:
+            expr = f"_nc8({expr})"
         if op.kind == "R":
             self.written.add(int(op.value))
             return [f"{self.r(int(op.value))} = {expr}"]
@@ -130,7 +136,7 @@ class UnitCodegen:
         src = self.src
         src.emit("def _unit(_rt):", 0)
         src._indent = 1
-        src.emit("_R = _rt.R; _ex = _rt.execute; _K = _rt.kernel; _ctr = _rt.counter; _lin = _K._linear")
+        src.emit("_R = _rt.R; _ex = _rt.execute; _K = _rt.kernel; _ctr = _rt.counter; _lin = _rt.linear")
         src.emit("_lim = _ctr.limit - _ctr.steps; _st = 0; _blk = 0")
         used = sorted(self.used)
         sync_in = "; ".join(f"r{n} = _R[{n}]" for n in used) or "pass"
@@ -169,6 +175,8 @@ class UnitCodegen:
                 continue
             if not isinstance(it, Word) or it.value is None or it.address in ("L", "D"):
                 return None
+            if it.address == "A" and "A" not in self.axes:
+                return None  # the angle address needs the start point (rotation.py)
             if it.address == "G":
                 if it.value in (16, 58, 59):
                     return None
@@ -236,6 +244,8 @@ class UnitCodegen:
             else:
                 expr = f"({expr} {op} {v})"
         self.written.add(it.target)
+        if self.strict:
+            expr = f"_nc8({expr})"
         return f"{self.r(it.target)} = {expr}"
 
     def _jump(self, out: PySource, idx: int, blk: NcBlock, number: int, rec: "_Record") -> None:
@@ -368,9 +378,14 @@ class UnitCodegen:
                 return ["@SYNC_OUT", f"_rt.nc_function({code!r}, ({refs},), {line})", "@SYNC_IN"]
             if code == "a27":
                 return ["@SYNC_OUT", f"_rt.io({code!r}, ({args},))"]
+            if code in ("714", "715"):  # STOP DEC hands over R parameters loaded during execution
+                return ["@SYNC_OUT", f"_rt.nc_function({code!r}, (), {line})", "@SYNC_IN"]
             fn = "write" if g == "4" else ("io" if g == "a" else "nc_function")
             extra = f", {line}" if g == "7" else ""
-            return [f"_rt.{fn}({code!r}, ({args}{',' if args else ''}){extra})"]
+            lines = [f"_rt.{fn}({code!r}, ({args}{',' if args else ''}){extra})"]
+            if code in ("437", "438", "439", "43a"):  # a rotation angle may switch block shaping on or off
+                lines.append("_ex = _rt.execute; _lin = _rt.linear")
+            return lines
         raise AssertionError(code)
 
     def _ref(self, op: Operand) -> str:
@@ -452,6 +467,7 @@ class _Record:
         self.g16: list[tuple[str, bool]] = []
         self.int_sec: tuple[str, str] | None = None
         self.meas: tuple[str, str] | None = None
+        self.angle = False  # the block carries the programmed angle (PANG or the angle address word)
         self._captured = 0
 
     def note(self, it: Note) -> None:
@@ -494,6 +510,11 @@ class _Record:
             return
         if a == "B" and "B" not in cg.axes:
             a = "R"  # SINUMERIK 8xx radius address for circles (B100, L4237)
+        if a == "A" and "A" not in cg.axes:
+            # the angle address (NC MD byte 5001 = 11, L2325-2326) when A is not an axis
+            self.angle = True
+            self.words.append(("_rt.angle_key()", expr, False))
+            return
         if not const and captured:
             # the value is the one R has where the word stands; later @ code in the block may change R
             tmp = f"_w{self._captured}"
@@ -521,8 +542,8 @@ class _Record:
         elif code == "446":
             self.words.append(("'R'", tmp, False))
         elif code == "447":
-            out.emit(f"_rt.fault('SIN005', 'PANG (angle address in the block) is not supported by this NC "
-                     f"model', {line})", line)
+            self.angle = True
+            self.words.append(("_rt.angle_key()", tmp, False))
         else:
             out.emit(f"_rt.write({code!r}, ({', '.join(cg.val(o) for o in ops)},))", line)
 
@@ -565,7 +586,7 @@ class _Record:
             out.emit(f"_ex(_Block({tuple(g)!r}, {tuple(m)!r}, _wm, {self.blk.n!r}, {self.msg!r}, {srcname}))", line)
             g, m, words = [], [], []
         axis_keys = {repr(a) for a in cg.axes}
-        fast = (not m and self.msg is None and len(g) <= 1 and all(x in (0, 1) for x in g) and words
+        fast = (not cg.decode_ahead and not m and self.msg is None and len(g) <= 1 and all(x in (0, 1) for x in g) and words
                 and all(k in axis_keys for k, _v, _c in words))
         if fast:
             # a plain G0/G1 block: straight to the kernel's move path, as execute() would do
@@ -582,15 +603,16 @@ class _Record:
             plc_m = any(x not in _STANDARD_M for x in m)
             if plc_m:
                 out.emit("@SYNC_OUT", line)
+            ex = "_rt.execute_angle" if self.angle else "_ex"
             if all(c for _k, _v, c in words):
                 blk = Block(tuple(g), tuple(m), {eval(k): float(v) for k, v, _c in words}, self.blk.n,
                             self.msg, src)
                 name = cg.const(blk, "_B")
-                out.emit(f"_ex({name})", line)
+                out.emit(f"{ex}({name})", line)
             else:
                 srcname = cg.const(src, "_S")
                 d = ", ".join(f"{k}: {v}" for k, v, _c in words)
-                out.emit(f"_ex(_Block({tuple(g)!r}, {tuple(m)!r}, {{{d}}}, {self.blk.n!r}, {self.msg!r}, "
+                out.emit(f"{ex}(_Block({tuple(g)!r}, {tuple(m)!r}, {{{d}}}, {self.blk.n!r}, {self.msg!r}, "
                          f"{srcname}))", line)
             if plc_m:
                 out.emit("@SYNC_IN", line)
@@ -601,6 +623,7 @@ class _Record:
             out.emit("@SYNC_OUT", line)
             out.emit(f"_rt.call({self.call}, {self.passes}, {line})", line)
             out.emit("@SYNC_IN", line)
+            out.emit("_ex = _rt.execute; _lin = _rt.linear", line)
             out.emit("_lim = _ctr.limit - _ctr.steps", line)
             out.emit("if _K.ended or _rt.halted: return 1", line)
         if m17 and not jumping:

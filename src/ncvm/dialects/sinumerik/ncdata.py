@@ -17,13 +17,22 @@ NAMESPACE = "sin800"
 AREAS = ("nc_md", "cycle_md", "plc_md", "drive_md", "nc_sd", "cycle_sd")
 KNOWN_KEYS = {"control", "channel", "m0", "block_skip", "max_call_depth", "r", "mib", "tool_offsets",
               "zero_offsets", "rotation", "inputs", "plc", "alarms", "sob", "cycle_alarm_stop", "to_area",
-              "m_functions",
+              "m_functions", "decode_ahead", "strict_nc",
               *AREAS}
 PERSISTED = (*AREAS, "to", "zo", "rot", "mib", "central_r")
 
 
 class Cl800Error(Exception):
     """The NC alarm "CL 800 error" (manual L725-728, digest §8): the channel stops."""
+
+
+def nc8(value: float) -> float:
+    """Strict NC numerics (digest §10.4): 8 significant decimal digits in the range +/-0.00000001 to
+    +/-99999999 (L7079); a larger value is the "CL 800 error"."""
+    r = round(float(f"{value:.8g}"), 8)
+    if not abs(r) <= 99999999.0:
+        raise Cl800Error(f"{value:g} is outside the R parameter range +/-99999999")
+    return r + 0.0  # no -0.0
 
 
 def pattern_to_int(value: float) -> int:

@@ -10,11 +10,13 @@ from __future__ import annotations
 import math
 import re
 import sys
+from collections import deque
 
 from ...diagnostics import Frame, RuntimeFault, Span
 from ...nc.block import Block
 from ...runtime.codegen import program_lines
-from .ncdata import Cl800Error, NcData, int_to_pattern, pattern_to_int
+from .ncdata import Cl800Error, NcData, int_to_pattern, nc8, pattern_to_int
+from .rotation import angle_address, shape_block
 from .sysmem import SysMem
 
 DEG = math.pi / 180.0
@@ -26,9 +28,9 @@ ALARMS = {
     "SIN002": "unknown @ code",
     "SIN003": "wrong operands for the @ code",
     "SIN004": "jump target block not found in the search direction",
-    "SIN005": "function not available in this NC model",
     "SIN006": "push/pop stack error",
     "SIN007": "waiting for an input that never changes",
+    "SIN010": "warning: actual value read or measurement used without STOP DEC after motion",
     "RUN002": "sub-program not found",
     "RUN003": "sub-program nesting too deep",
 }
@@ -51,6 +53,7 @@ def _int(value: float) -> int:
 NAMESPACE_GLOBALS = {
     "_Block": Block, "_int": _int, "_ptr": _ptr, "_sqrt": math.sqrt, "_hypot": math.hypot, "_sin": math.sin,
     "_cos": math.cos, "_asin": math.asin, "_log": math.log, "_exp": math.exp, "_trunc": math.trunc, "_DEG": DEG,
+    "_nc8": nc8,
 }
 
 
@@ -73,6 +76,11 @@ class Channel(SysMem):
         self.m0_stops = str(sec.get("m0", "stop")) == "stop"
         self.max_depth = int(sec.get("max_call_depth", 8))
         self.cycle_alarm_stop = bool(sec.get("cycle_alarm_stop", True))
+        # decode-ahead (digest §10.5): 0 = lockstep; N = up to N decoded blocks wait for execution
+        self.decode_ahead = int(sec.get("decode_ahead", 0))
+        self.strict = bool(sec.get("strict_nc", False))  # R stores rounded to 8 digits (digest §10.4)
+        self.buffer: deque = deque()
+        self.pending_r: dict[int, float] = {}  # PLC answers and measured values not yet seen by decoding
         self.R = [0.0] * 1000
         self.written: set[int] = set()
         for name, v in sec.get("r", {}).items():
@@ -87,6 +95,8 @@ class Channel(SysMem):
         self.v24: list[str] = []
         self.tool_d = 0
         SysMem.__init__(self)
+        self.angle_used = False  # a block carried the angle address (PANG, @447)
+        self.route()
         self._scenario = list(session.machine.scenario)
         self.m_functions = {f"M{int(k)}": dict(v) for k, v in sec.get("m_functions", {}).items()}
         if self.m_functions:
@@ -100,6 +110,71 @@ class Channel(SysMem):
 
             canon.aux = aux
         self.apply_offsets()
+
+    # -- how decoded blocks reach the kernel ---------------------------------
+    def route(self) -> None:
+        """Pick the execution path: straight to the kernel, or shaped first (rotation, angle address);
+        through the decode buffer when decoding runs ahead. Generated code re-reads ``execute`` and
+        ``linear`` after rotation writes and calls."""
+        k = self.kernel
+        shaped = self.angle_used or self.rotation_active()
+        self.execute_now = self.execute_shaped if shaped else k.execute
+        self.linear = self.linear_shaped if shaped else k._linear
+        self.execute = self.decode_into_buffer if self.decode_ahead > 0 else self.execute_now
+
+    def execute_shaped(self, block: Block) -> None:
+        key = angle_address(self) if self.angle_used else None
+        self.kernel.execute(shape_block(self, block, key))
+
+    def linear_shaped(self, k, motion: int, words: dict, src) -> None:
+        """The generated G0/G1 fast path while a rotation is selected."""
+        k._linear(k, motion, shape_block(self, Block((), (), words, None, None, src), None).words, src)
+
+    def execute_angle(self, block: Block) -> None:
+        """A block with the programmed angle (PANG or the angle address word)."""
+        if not self.angle_used:
+            self.angle_used = True
+            self.route()
+        self.execute(block)
+
+    def angle_key(self) -> str:
+        return angle_address(self)
+
+    # -- decode-ahead (manual L4287-4334, digest §10.5) --------------------
+    def decode_into_buffer(self, block: Block) -> None:
+        """A decoded block waits in the NC buffer; the oldest executes once more than N are waiting.
+        Blocks that stop or end the program (M0/M1/M2/M30) empty the buffer at once."""
+        buf = self.buffer
+        buf.append(block)
+        if any(m in (0, 1, 2, 30) for m in block.m):
+            self.run_buffer()
+        elif len(buf) > self.decode_ahead:
+            self.execute_now(buf.popleft())
+
+    def run_buffer(self) -> None:
+        """Execute every decoded block still waiting (decoding needs the executed state)."""
+        buf = self.buffer
+        execute = self.execute_now
+        while buf:
+            execute(buf.popleft())
+
+    def stop_dec(self) -> None:
+        """@714 STOP DEC: decoding waits until the buffer is empty; R parameters loaded by the PLC or by
+        MEAS M meanwhile become visible to the blocks that follow."""
+        self.run_buffer()
+        R = self.R
+        for n, v in self.pending_r.items():
+            R[n] = v
+        self.pending_r.clear()
+
+    def load_r(self, n: int, value: float) -> None:
+        """An R parameter written by execution (PLC answer, measured value), not by decoding."""
+        if self.strict:
+            value = nc8(value)
+        if self.decode_ahead > 0:
+            self.pending_r[n] = value
+        else:
+            self.R[n] = value
 
     # -- running units ---------------------------------------------------
     def run_unit(self, unit, frame_name: str, call_span: Span | None) -> int:
@@ -199,7 +274,7 @@ class Channel(SysMem):
                 value = float(self._dw(plc, float(m.group(2)), float(m.group(3))))
             else:
                 value = float(source)
-            self.R[n] = value
+            self.load_r(n, value)
 
     def debug_block(self, line: int) -> None:
         """Debug builds: the step hook sees each block before it runs, with the R parameters set."""

@@ -12,7 +12,7 @@ import math
 
 from ...diagnostics import RuntimeFault
 from .contour import check_window, contour_elements, intersect
-from .ncdata import Cl800Error, int_to_pattern, pattern_to_int
+from .ncdata import Cl800Error, int_to_pattern, nc8, pattern_to_int
 
 #: code -> (area, width, (lo, hi) address range); width: word, byte, bit
 MD_SD = {
@@ -78,6 +78,7 @@ class SysMem:
     # -- offsets ---------------------------------------------------------
     def apply_offsets(self) -> None:
         """Settable ZO = coarse + fine into the machine's G54..G57; the rest as additive offsets."""
+        self.run_buffer()  # offsets apply to the blocks decoded after the change, not to those waiting
         m = self.session.machine
         d = self.data
         for g in (54, 55, 56, 57):
@@ -101,6 +102,7 @@ class SysMem:
 
     def select_d(self, d: float, line: int) -> None:
         """D word: tool offset D of the channel's TO area; length = P2 + P5 + P8 on the tool axis."""
+        self.run_buffer()
         n = _i(d)
         self.tool_d = n
         if n == 0:
@@ -114,6 +116,7 @@ class SysMem:
         self.kernel.set_tool_length(length, _src(self, line))
 
     def g16(self, letters: list, line: int) -> None:
+        self.run_buffer()
         axes = []
         minus = []
         for name, neg in letters:
@@ -137,13 +140,14 @@ class SysMem:
     def read(self, code: str, target: int, args: tuple) -> None:
         value = self._read(code, target, args)
         R = self.R
+        fix = nc8 if self.strict else float
         if isinstance(value, list):
             if target + len(value) > 1000:
                 raise Cl800Error(f"result registers R{target}..R{target + len(value) - 1} do not exist")
             for i, v in enumerate(value):
-                R[target + i] = float(v)
+                R[target + i] = fix(v)
         else:
-            R[target] = float(value)
+            R[target] = fix(value)
 
     def _read(self, code: str, target: int, args: tuple):
         sub, fn = code[1], code[2]
@@ -273,6 +277,10 @@ class SysMem:
 
     # -- writes (main group 4) -------------------------------------------
     def write(self, code: str, args: tuple) -> None:
+        if code not in ("437", "438", "439", "43a"):
+            # data written by decoding serves the blocks decoded after it; rotation angles act at once,
+            # even on blocks already decoded (L4325-4334)
+            self.run_buffer()
         sub, fn = code[1], code[2]
         d = self.data
         *where, value = args
@@ -351,6 +359,7 @@ class SysMem:
             key = f"{kind}:{g}"
             d.rot[key] = value if code in ("437", "439") else d.rot.get(key, 0.0) + value
             d.dirty.add("rot")
+            self.route()  # a rotation now selected (or cleared) changes how blocks reach the kernel
             return
         self._zo_changed()
 
@@ -495,10 +504,17 @@ class SysMem:
         else:
             table[byte] = float(d.get("value", 0))
 
+    def rotation_active(self) -> bool:
+        """A settable or programmable coordinate rotation is selected (some angle is not 0)."""
+        return any(a != 0.0 for a in self.data.rot.values())
+
     # -- main group 7 ------------------------------------------------------
     def nc_function(self, code: str, args: tuple, line: int) -> None:
-        if code in ("714", "715"):
-            return  # lockstep execution: decoding never runs ahead (digest §10.5)
+        if code == "714" or (code == "715" and self.rotation_active()):
+            self.stop_dec()  # lockstep (decode_ahead = 0): the buffer is always empty
+            return
+        if code == "715":
+            return  # STOP DEC1 waits only while a coordinate rotation is selected (L4330-4334)
         if code == "713":
             target = args[0]
             if target > 998:
@@ -555,6 +571,7 @@ class SysMem:
         """@711 Rm Rn Rr: intersect element Rn..Rn+7 with the path to this block's destination."""
         check_window(rn, 8, ((0, 192), (900, 992)), "INT SEC input")
         check_window(rm, 3, ((0, 197), (900, 997)), "INT SEC output")
+        self.run_buffer()  # the path starts at the end point of the blocks decoded so far
         h_name, v_name = self._plane_axes()
         if h_name not in words or v_name not in words:
             raise Cl800Error(f"INT SEC needs both axes {v_name} and {h_name} of the destination in its block")
@@ -570,6 +587,7 @@ class SysMem:
     # -- MEAS M --------------------------------------------------------------
     def meas(self, target: int, probe: float, words: dict, line: int) -> dict:
         """@720: the block's axes move until the probe switches; machine positions go to R<target>..."""
+        self.run_buffer()  # the measuring block starts where the blocks before it end
         probe = _i(probe)
         k = self.kernel
         if probe not in (1, 2):
@@ -588,7 +606,7 @@ class SysMem:
                 raise RuntimeFault("SIN007", f"MEAS M: the probe event gives no position for axis {name}")
             machine_value = float(pos[name])
             i = k.axis_of[name]
-            self.R[reg] = machine_value / k.scale
+            self.load_r(reg, machine_value / k.scale)  # seen by decoding only after STOP DEC
             reg += 1
             prog = machine_value - k.offset_vec[i]
             out[name] = prog / k.scale if k.absolute else (prog - k.prog[i]) / k.scale

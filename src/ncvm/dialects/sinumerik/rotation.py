@@ -1,0 +1,105 @@
+"""Coordinate rotation and the angle address (PANG, @447): blocks shaped before they reach the kernel.
+
+Both act in the active plane, in the program's units, when a block executes
+(rotation angles written by @437-@43a act at once even on blocks already
+decoded, manual L4325-4334). The rotation turns the programmed plane
+coordinates about the workpiece zero by the settable angle of the selected
+zero offset (G54-G57 = group 1-4) plus the programmable angles of G58 and G59,
+counter-clockwise from the plane's first axis; arc centres turn with them.
+The angle address completes a straight line: with one plane axis programmed,
+the other follows from the start point and the angle (docs/decisions.md, sin800).
+"""
+
+from __future__ import annotations
+
+import math
+
+from ...nc.block import Block
+from ...nc.kernel import PLANES
+from .ncdata import Cl800Error
+
+_CENTRE = {"X": "I", "Y": "J", "Z": "K"}
+#: MD byte 5001 names the angle address; the manual gives only 11 = A (L2325-2326, L3060)
+ANGLE_ADDRESSES = {0: "A", 11: "A"}
+
+
+def angle_address(channel) -> str:
+    """The address letter of the programmed angle, from NC MD byte 5001."""
+    code = channel.data.areas["nc_md"].get("5001", 0.0)
+    name = ANGLE_ADDRESSES.get(int(code)) if code == int(code) else None
+    if name is None:
+        raise Cl800Error(f"NC MD byte 5001 = {code:g} names no known angle address (11 = A)")
+    return name
+
+
+def block_frame(channel, block: Block) -> tuple[str, str, bool, float]:
+    """(first plane axis, second plane axis, absolute?, rotation angle in degrees) for this block."""
+    k = channel.kernel
+    g = block.g
+    plane = next((x for x in g if x in (17, 18, 19)), None)
+    if plane is not None:
+        h, v = PLANES[plane][:2]
+    else:
+        h, v = channel._plane_axes()
+    absolute = k.absolute
+    if 90 in g:
+        absolute = True
+    elif 91 in g:
+        absolute = False
+    if 53 in g:
+        return h, v, absolute, 0.0
+    rot = channel.data.rot
+    group = next((int(x) - 53 for x in g if x in (54, 55, 56, 57)), None)
+    if group is None and k.work_offset in ("G54", "G55", "G56", "G57"):
+        group = int(k.work_offset[1:]) - 53
+    angle = rot.get(f"settable:{group}", 0.0) if group else 0.0
+    angle += rot.get("programmable:1", 0.0) + rot.get("programmable:2", 0.0)
+    return h, v, absolute, angle
+
+
+def _turn(a: float, b: float, deg: float) -> tuple[float, float]:
+    c, s = math.cos(math.radians(deg)), math.sin(math.radians(deg))
+    return a * c - b * s, a * s + b * c
+
+
+def shape_block(channel, block: Block, angle_key: str | None) -> Block:
+    """The block as the kernel must see it: the angle word resolved, then the rotation applied."""
+    words = block.words
+    k = channel.kernel
+    h, v, absolute, theta = block_frame(channel, block)
+    if theta == 0.0 and angle_key not in words:
+        return block
+    words = dict(words)
+    hi, vi = k.axis_of.get(h), k.axis_of.get(v)
+    if hi is None or vi is None:
+        raise Cl800Error(f"the plane needs the axes {h} and {v}")
+    # the current point in the program's (unrotated) frame
+    ch, cv = _turn(k.prog[hi] / k.scale, k.prog[vi] / k.scale, -theta)
+    if angle_key in words:
+        _resolve_angle(words, words.pop(angle_key), h, v, absolute, ch, cv)
+    if theta != 0.0 and (h in words or v in words):
+        if absolute:
+            words[h], words[v] = _turn(words.get(h, ch), words.get(v, cv), theta)
+        else:
+            words[h], words[v] = _turn(words.get(h, 0.0), words.get(v, 0.0), theta)
+    ih, iv = _CENTRE.get(h), _CENTRE.get(v)
+    if theta != 0.0 and ih and iv and (ih in words or iv in words):
+        words[ih], words[iv] = _turn(words.get(ih, 0.0), words.get(iv, 0.0), theta)
+    return Block(block.g, block.m, words, block.n, block.msg, block.src)
+
+
+def _resolve_angle(words: dict, alpha: float, h: str, v: str, absolute: bool, ch: float, cv: float) -> None:
+    """A straight line at angle alpha (degrees from the first plane axis) through the start point."""
+    if (h in words) == (v in words):
+        raise Cl800Error(f"the angle address needs exactly one of the axes {h}, {v} in its block")
+    c, s = math.cos(math.radians(alpha)), math.sin(math.radians(alpha))
+    if h in words:
+        if abs(c) < 1e-12:
+            raise Cl800Error(f"angle {alpha:g} is parallel to {v}: program {v}, not {h}")
+        d = words[h] - ch if absolute else words[h]
+        words[v] = (cv if absolute else 0.0) + d * s / c
+    else:
+        if abs(s) < 1e-12:
+            raise Cl800Error(f"angle {alpha:g} is parallel to {h}: program {h}, not {v}")
+        d = words[v] - cv if absolute else words[v]
+        words[h] = (ch if absolute else 0.0) + d * c / s

@@ -1,0 +1,54 @@
+"""[sin800] strict_nc (digest §10.4, manual L7079): R stores keep 8 significant digits, range +/-99999999."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from ncvm.api import run
+from ncvm.dialects.sinumerik.ncdata import Cl800Error, nc8
+from ncvm.runtime.session import RunOptions
+
+MACHINE = '[[axis]]\nname = "X"\n[[axis]]\nname = "Y"\n[[axis]]\nname = "Z"\n[sin800]\ncontrol = "880"\n'
+
+
+def _run(tmp_path: Path, text: str, strict: bool):
+    (tmp_path / "machine.toml").write_text(MACHINE + f"strict_nc = {'true' if strict else 'false'}\n")
+    path = tmp_path / "prog.mpf"
+    path.write_text(text)
+    result, _ = run(path, dialect="sin800", machine=tmp_path / "machine.toml",
+                    options=RunOptions(state_dir=tmp_path / ".ncvm"))
+    return result
+
+
+def test_nc8_rounding_and_range():
+    assert nc8(1.0 / 3.0) == 0.33333333
+    assert nc8(2.0 / 3.0) == 0.66666667
+    assert nc8(123456.789012) == 123456.79
+    assert nc8(-99999999.0) == -99999999.0
+    assert nc8(0.000000004) == 0.0
+    with pytest.raises(Cl800Error):
+        nc8(99999999.6)  # rounds to 100000000: one digit too many
+
+
+def test_strict_division_keeps_eight_digits(tmp_path):
+    # R1 = 1/3 = 0.33333333; R2 = R1*3 = 0.99999999 (floats would give 1.0)
+    text = "%MPF1\nR1=1/3 R2=R1*3 @630 R3 K30 @613 R4 K2\n"
+    r = _run(tmp_path, text, True)["variables"]
+    assert (r["R1"], r["R2"], r["R4"]) == (0.33333333, 0.99999999, 1.4142136)
+    assert r["R3"] == 0.5
+    loose = _run(tmp_path, text, False)["variables"]
+    assert loose["R2"] == 1.0 and loose["R4"] == 2 ** 0.5
+
+
+def test_strict_overflow_is_the_cl800_error(tmp_path):
+    r = _run(tmp_path, "%MPF1\nR1=50000000\nR2=R1*2\nM30\n", True)
+    assert r["error"]["code"] == "CL800" and r["error"]["line"] == 3
+    assert _run(tmp_path, "%MPF1\nR1=50000000\nR2=R1*2\nM30\n", False)["variables"]["R2"] == 1e8
+
+
+def test_strict_rounds_system_memory_reads(tmp_path):
+    # ACPM after a move to X 1/3: the position read keeps 8 digits
+    r = _run(tmp_path, "%MPF1\nR5=1/3\nG90 G0 X=R5\n@714 @361 R1 K1\n", True)
+    assert r["variables"]["R1"] == 0.33333333
