@@ -12,7 +12,8 @@ import math
 from operator import attrgetter
 
 from ...nc.canon import Src
-from .motion import Move
+from .lookahead import retime
+from .motion import Chain, Move
 from .values import fault
 
 _GET_M = attrgetter("m")
@@ -298,7 +299,8 @@ class Commands:
         return self.wait_axes(tk, axes)
 
     def _chain(self, tk, axes, loc):
-        """Spooled segments run back to back: each starts when the previous one on its axes ends."""
+        """Spooled segments run back to back; consecutive path segments join at their target
+        velocity (lookahead.py) and run as one :class:`Chain` without stopping in between."""
         codes = self.cfg["ssf_codes"]
         saved_sysp, saved_t = tk.sysp, tk.time
         t = tk.time
@@ -308,6 +310,7 @@ class Commands:
                 t = max(t, mv.t1)
         busy = self.cfg["busy_move"]
         self.cfg["busy_move"] = "override"
+        segs, targets, ssf_after, full0 = [], [], [], None
         try:
             while True:
                 e = None
@@ -327,30 +330,50 @@ class Commands:
                     if e[1] == codes["spool_halt"]:
                         for ax in e_axes:
                             self.axes[ax].spool_halted = True
-                    elif t <= saved_t:
+                    elif not segs:
                         self._ssf_action(e[1], e[2])()  # at the spooler head now: runs at once
                     else:
-                        self.add_timed(t, self._ssf_action(e[1], e[2]))
+                        ssf_after.append((len(segs), self._ssf_action(e[1], e[2])))
                     continue
                 _, kind, items, eloc, target, sysp = e
                 tk.sysp = sysp
                 tk.time = t
+                if full0 is None:
+                    full0 = self.all_positions(t)
                 for ax in e_axes:
                     a = self.axes[ax]
                     if a.move is not None and a.move.t1 <= t:
                         self._finish(a.move)
                 fn = getattr(self, "cmd_" + kind)
+                before = self.axes[e_axes[0]].move
                 if kind[:2] in ("mc", "mh"):
                     fn(tk, items, eloc, target)
                 else:
                     fn(tk, items, eloc)
-                for ax in e_axes:
-                    mv = self.axes[ax].move
-                    if mv is not None:
-                        t = max(t, mv.t1)
+                mv = self.axes[e_axes[0]].move
+                if mv is not None and mv is not before:
+                    f, ts = self.units(tk)
+                    mv.retired = True  # reported by the chain when it retires, not when the next one starts
+                    segs.append(mv)
+                    targets.append(max(0.0, sysp["TRTVL"] * f / ts * tk.ovr))
+                    t = mv.t1
         finally:
             self.cfg["busy_move"] = busy
             tk.sysp, tk.time = saved_sysp, saved_t
+        if not segs:
+            return
+        mode = self.sys["MODEREG"]
+        retime(self.axes, segs, targets, [mode] * len(segs))
+        for m in segs:
+            m.retired = False
+            self.live.discard(m)
+        chain = Chain(segs, full0)
+        self.live.add(chain)
+        for ax in chain.axes:
+            a = self.axes[ax]
+            a.move = chain
+        for k, act in ssf_after:
+            self.add_timed(segs[k - 1].t1, act)
 
     # -- jog and home (§6.6.16-28), axis units ---------------------------------------------------------------------------
     def _jog(self, tk, items, loc, relative: bool, wait: bool):

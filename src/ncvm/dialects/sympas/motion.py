@@ -66,11 +66,55 @@ class Profile:
         return self.a * (self.duration - t)
 
 
+class ChainProfile(Profile):
+    """A spooled segment's s(t): from start velocity ``v0`` up to at most ``v``, down to end velocity ``v1``.
+
+    The look-ahead has already made ``v0 -> v1`` reachable within ``length`` with ``a`` (digest §10.5)."""
+
+    __slots__ = ("v0", "v1", "t_dec", "s_dec")
+
+    def __init__(self, length: float, v: float, a: float, v0: float, v1: float):
+        self.length, self.a, self.v0, self.v1 = length, a, v0, v1
+        vp = min(v, math.sqrt(a * length + 0.5 * (v0 * v0 + v1 * v1)))
+        vp = max(vp, v0, v1)
+        self.v = vp
+        self.t_acc = (vp - v0) / a
+        self.s_acc = (vp * vp - v0 * v0) / (2.0 * a)
+        self.t_dec = (vp - v1) / a
+        self.s_dec = (vp * vp - v1 * v1) / (2.0 * a)
+        self.t_cruise = max(0.0, length - self.s_acc - self.s_dec) / vp if vp > 0 else 0.0
+        self.duration = self.t_acc + self.t_cruise + self.t_dec
+
+    def s(self, t: float) -> float:
+        if t >= self.duration:
+            return self.length
+        if t <= 0.0:
+            return 0.0
+        if t < self.t_acc:
+            return self.v0 * t + 0.5 * self.a * t * t
+        t2 = t - self.t_acc
+        if t2 < self.t_cruise:
+            return self.s_acc + self.v * t2
+        r = t2 - self.t_cruise
+        return min(self.length, self.s_acc + self.v * self.t_cruise + self.v * r - 0.5 * self.a * r * r)
+
+    def speed(self, t: float) -> float:
+        if t < 0.0 or t > self.duration:
+            return 0.0
+        if t < self.t_acc:
+            return self.v0 + self.a * t
+        t2 = t - self.t_acc
+        if t2 < self.t_cruise:
+            return self.v
+        return max(0.0, self.v - self.a * (t2 - self.t_cruise))
+
+
 class Move:
     """One profile over a group of axes (indices into the card's axes)."""
 
     __slots__ = ("axes", "p0", "p1", "kind", "t0", "t1", "prof", "center", "radius", "a0", "phi", "plane",
-                 "normal", "lin", "src", "start_all", "feed", "stop_s", "stop_t", "stop_dec", "retired", "jog")
+                 "normal", "lin", "src", "start_all", "feed", "stop_s", "stop_t", "stop_dec", "retired", "jog",
+                 "vmax")
 
     def __init__(self, axes, p0, p1, kind, src: Src, start_all):
         self.axes = axes
@@ -84,6 +128,7 @@ class Move:
         self.jog = False
 
     def start(self, t0_ticks: float, length: float, v: float, a: float) -> None:
+        self.vmax = v
         self.prof = Profile(length, v, a)
         self.t0 = t0_ticks
         self.t1 = t0_ticks + self.prof.duration * TICKS_PER_S
@@ -147,6 +192,10 @@ class Move:
             self.stop_s, self.stop_t, self.stop_dec = s0, t_ticks, math.inf
             self.t1 = t_ticks
             return
+        if v0 <= 0.0:  # at rest (a chained segment not begun yet): stops where it is
+            self.stop_s, self.stop_t, self.stop_dec = s0, t_ticks, math.inf
+            self.t1 = t_ticks
+            return
         self.stop_t = t_ticks
         self.stop_dec = dec
         self.stop_s = min(self.prof.length, s0 + v0 * v0 / (2.0 * dec))
@@ -202,6 +251,65 @@ class Move:
             cur = tuple(cur)
             canon.feed(prev, cur, self.feed, self.src)
             prev = cur
+
+
+class Chain:
+    """Spooled segments that run back to back without stopping (the spooler's look-ahead, digest §10.5).
+
+    It stands for all its segments on every axis they use, so positions, velocities and stops
+    (JS, MS) see the segment that runs at the asked time."""
+
+    __slots__ = ("segs", "axes", "t0", "t1", "p1", "retired", "jog", "_full0")
+
+    def __init__(self, segs: list, full0: tuple):
+        self.segs = segs
+        axes = sorted({ax for m in segs for ax in m.axes})
+        self.axes = tuple(axes)
+        self._full0 = full0
+        self.t0, self.t1 = segs[0].t0, segs[-1].t1
+        self.retired = False
+        self.jog = False
+        self.p1 = self.final()
+
+    def _seg(self, t: float):
+        for m in self.segs:
+            if t < m.t1:
+                return m
+        return self.segs[-1]
+
+    def _full(self, m, p) -> tuple:
+        full = list(m.start_all)
+        for k, ax in enumerate(m.axes):
+            full[ax] = p[k]
+        return tuple(full[ax] for ax in self.axes)
+
+    def pos(self, t: float) -> tuple:
+        m = self._seg(t)
+        return self._full(m, m.pos(t))
+
+    def speed_at(self, t: float) -> float:
+        if t >= self.t1:
+            return 0.0
+        return self._seg(t).speed_at(t)
+
+    def final(self) -> tuple:
+        m = self.segs[-1]
+        return self._full(m, m.final())
+
+    def stop(self, t: float, dec: float) -> None:
+        if t >= self.t1:
+            return
+        m = self._seg(t)
+        m.stop(t, dec)
+        self.segs = self.segs[:self.segs.index(m) + 1]
+        self.t1 = m.t1
+
+    def emit(self, canon, names_count: int) -> None:
+        if self.retired:
+            return
+        self.retired = True
+        for m in self.segs:
+            m.emit(canon, names_count)
 
 
 def rotate(p, c, n, ang):
