@@ -299,3 +299,35 @@ def test_check_reports_lenient_readings_as_warnings(tmp_path):
     p.write_text("program P;\nconst s := 5;\nvar i: integer;\nbegin\n if i > 0 then i := 0; else i := s;\nend.\n")
     diags = check(p)
     assert [(d.severity, d.code) for d in diags] == [("warning", "W009"), ("warning", "W017")]
+
+
+def test_stepcnct_executes_exactly_one_line(sap):
+    # L2125: STEPCNCT executes one program line; two statements on one line are one step
+    text = """{$TASK 0}
+program Main;
+var a, b, c, d: integer;
+begin
+  STARTCNCT(3);
+  STOPCNCT(3);
+  a := CI7;
+  STEPCNCT(3);
+  WT(50);
+  b := CI7;
+  STEPCNCT(3);
+  WT(50);
+  c := CI7;
+  STEPCNCT(3);
+  WT(50);
+  d := CI7;
+end.
+{$TASK 3}
+program S;
+begin
+  CI7 := 1;
+  CI7 := 2; CI7 := 3;
+  CI7 := 4;
+  while TRUE do CI8 := CI8 + 1;
+end.
+"""
+    v = sap(text)["variables"]
+    assert (v["a"], v["b"], v["c"], v["d"]) == (0, 1, 3, 4)
