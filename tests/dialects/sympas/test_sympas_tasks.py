@@ -331,3 +331,51 @@ end.
 """
     v = sap(text)["variables"]
     assert (v["a"], v["b"], v["c"], v["d"]) == (0, 1, 3, 4)
+
+
+def test_runtime_error_halts_only_its_task(sap):
+    # §8 (L2259): the failing task is halted with its error number and line; the others go on
+    text = """{$TASK 0}
+program Main;
+var i: integer;
+begin
+  STARTCNCT(1);
+  WT(100);
+  for i := 1 to 3 do CI5 := CI5 + 1;
+  writeln('main goes on ', CI5);
+end.
+{$TASK 1}
+program Bad;
+var z: integer;
+begin
+  writeln('bad starts');
+  z := 0;
+  CI6 := 7 / z;
+  writeln('never');
+end.
+"""
+    r = sap(text)
+    assert r["status"] == "error"
+    assert r["error"]["code"] == "32768"
+    assert r["error"]["line"] == 16
+    assert "task 1" in r["error"]["message"]
+    assert r["output"] == ["bad starts", "main goes on 3"]
+
+
+def test_runtime_error_is_reported_when_the_others_run_away(sap):
+    text = """{$TASK 0}
+program Main;
+begin
+  STARTCNCT(1);
+  while TRUE do CI5 := CI5 + 1;
+end.
+{$TASK 1}
+program Bad;
+begin
+  WRCBD(3, 1.0);
+end.
+"""
+    r = sap(text, max_steps=20000)
+    assert r["status"] == "error"
+    assert r["error"]["code"] == "2048"
+    assert r["error"]["line"] == 10

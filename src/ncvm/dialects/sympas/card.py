@@ -91,6 +91,7 @@ class Card(Commands):
         for ev in machine.scenario:
             self.add_timed(ev.time * TICKS_PER_S, self._scenario_action(ev))
         self.irq_count = 0
+        self.fault: RuntimeFault | None = None  # the first run-time error of a task (reported at the end)
         self.live: set = set()  # moves that have not retired yet
         self.solo = None  # the only running task, when there is just one
         self.counts = float(cfg["counts_per_unit"])
@@ -442,6 +443,18 @@ class Card(Commands):
 
     # -- the scheduler -------------------------------------------------------------------------------------------------------
     def run(self) -> None:
+        """Run the tasks until none is running. A run-time error halts only its own task (§8, L2259):
+        the others go on, and the first error becomes the run's error when they are done."""
+        try:
+            self._run()
+        except RuntimeFault as e:
+            if e.code == "RUN001" and self.fault is not None:
+                raise self.fault from None  # the others ran away after the error: the error is the news
+            raise
+        if self.fault is not None:
+            raise self.fault
+
+    def _run(self) -> None:
         tasks = self.tasks
         while True:
             running = [t for t in tasks if t.state == RUNNING]
@@ -474,14 +487,19 @@ class Card(Commands):
                     else:
                         tk.state = ENDED
                     continue
-                if isinstance(e, RuntimeFault):
-                    tk.state = ERROR
-                    raise self.locate(tk, e) from None
+                if isinstance(e, RuntimeFault) and e.code == "RUN001":
+                    raise
                 if isinstance(e, RecursionError):
-                    tk.state = ERROR
                     fault8 = RuntimeFault("8", "stack overflow: calls nested too deep")
                     fault8.__traceback__ = e.__traceback__
-                    raise self.locate(tk, fault8) from None
+                    e = fault8
+                if isinstance(e, RuntimeFault):
+                    tk.state = ERROR
+                    tk.enabled.clear()
+                    located = self.locate(tk, e)
+                    if self.fault is None:
+                        self.fault = located
+                    continue
                 raise
 
     def capture_locals(self, tk, tb) -> None:
