@@ -377,6 +377,7 @@ class Card(Commands):
             a = self.axes[ax]
             a.flags &= ~bit
         mv.start(t, length, v, acc)
+        mv.ovr0 = tk.ovr
         self.live.add(mv)
         for k, ax in enumerate(mv.axes):
             a = self.axes[ax]

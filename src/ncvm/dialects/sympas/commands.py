@@ -579,9 +579,20 @@ class Commands:
         return None
 
     def cmd_utrovr(self, tk, axes, loc):
+        """The running path moves of these axes reach the new TROVR linearly over TROVRST seconds
+        (digest §10.5); later path segments of this task are planned with it."""
+        ovr = float(tk.sysp["TROVR"])
+        ramp = max(0.0, float(tk.sysp["TROVRST"])) * 15625.0
+        done = set()
         for ax in axes:
-            self.check_axis(ax)
-        tk.ovr = float(tk.sysp["TROVR"])  # later path segments of this task run with the new factor
+            mv = self.check_axis(ax).move
+            if mv is not None and not mv.jog and id(mv) not in done and mv.t1 > tk.time:
+                done.add(id(mv))
+                if isinstance(mv, Chain):
+                    mv.override(tk.time, ovr, ramp)
+                else:
+                    mv.override(tk.time, ovr / mv.ovr0, ramp)
+        tk.ovr = ovr
         return None
 
     def cmd_lpr(self, tk, axes, loc):

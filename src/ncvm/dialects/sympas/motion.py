@@ -114,7 +114,7 @@ class Move:
 
     __slots__ = ("axes", "p0", "p1", "kind", "t0", "t1", "prof", "center", "radius", "a0", "phi", "plane",
                  "normal", "lin", "src", "start_all", "feed", "stop_s", "stop_t", "stop_dec", "retired", "jog",
-                 "vmax")
+                 "vmax", "ovr0", "warp", "stop_v0", "stop_s0")
 
     def __init__(self, axes, p0, p1, kind, src: Src, start_all):
         self.axes = axes
@@ -126,6 +126,8 @@ class Move:
         self.stop_s = None
         self.retired = False
         self.jog = False
+        self.ovr0 = 1.0  # the override the profile was planned with
+        self.warp = None  # (t_w, tau_w, r_a, r_b, T): rate of profile time ramps r_a -> r_b over T ticks (TROVRST)
 
     def start(self, t0_ticks: float, length: float, v: float, a: float) -> None:
         self.vmax = v
@@ -157,17 +159,62 @@ class Move:
             return self.p1
         return rotate(self.p0, self.center, self.normal, self.phi * f)
 
+    def tau(self, t_ticks: float) -> float:
+        """Profile time in ticks at wall time ``t_ticks``: the override (UTROVR) scales ds/dt."""
+        w = self.warp
+        if w is None:
+            return t_ticks - self.t0
+        tw, tauw, ra, rb, T = w
+        dt = t_ticks - tw
+        if dt <= 0.0:
+            return tauw + ra * dt
+        if dt < T:
+            return tauw + ra * dt + (rb - ra) * dt * dt / (2.0 * T)
+        return tauw + ra * T + 0.5 * (rb - ra) * T + rb * (dt - T)
+
+    def rate(self, t_ticks: float) -> float:
+        w = self.warp
+        if w is None:
+            return 1.0
+        tw, _, ra, rb, T = w
+        dt = t_ticks - tw
+        return rb if dt >= T else ra + (rb - ra) * max(0.0, dt) / T
+
+    def override(self, t_ticks: float, r_b: float, ramp_ticks: float) -> None:
+        """From ``t_ticks`` the profile time rate ramps linearly to ``r_b`` over ``ramp_ticks`` (TROVRST)."""
+        if t_ticks >= self.t1 or self.stop_s is not None:
+            return
+        r_b = max(r_b, 1e-6)
+        tau_now = max(0.0, self.tau(t_ticks))
+        r_a = self.rate(t_ticks) if t_ticks > self.t0 else self.rate(self.t0)
+        if t_ticks < self.t0:  # not begun yet (a later chain segment): the ramp goes on from its start
+            ramp_ticks = max(0.0, ramp_ticks - (self.t0 - t_ticks))
+            t_ticks, tau_now = self.t0, 0.0
+        self.warp = (t_ticks, tau_now, r_a, r_b, ramp_ticks)
+        self.t1 = t_ticks + self._wall(self.prof.duration * TICKS_PER_S - tau_now, r_a, r_b, ramp_ticks)
+
+    @staticmethod
+    def _wall(rest: float, ra: float, rb: float, T: float) -> float:
+        """Wall ticks to cover ``rest`` profile ticks while the rate ramps ra -> rb over T."""
+        ramp = ra * T + 0.5 * (rb - ra) * T
+        if T > 0.0 and rest <= ramp:
+            k = (rb - ra) / (2.0 * T)
+            if abs(k) < 1e-15:
+                return rest / ra
+            return (-ra + math.sqrt(max(0.0, ra * ra + 4.0 * k * rest))) / (2.0 * k)
+        return T + (rest - ramp) / rb
+
     def s_at(self, t_ticks: float) -> float:
-        dt = (t_ticks - self.t0) / TICKS_PER_S
         if self.stop_s is not None and t_ticks >= self.stop_t:
             d = self.stop_dec
-            v0 = self.prof.speed((self.stop_t - self.t0) / TICKS_PER_S)
-            s0 = self.prof.s((self.stop_t - self.t0) / TICKS_PER_S)
+            v0, s0 = self.stop_v0, self.stop_s0
             tt = (t_ticks - self.stop_t) / TICKS_PER_S
             if d <= 0 or tt * d >= v0:
                 return self.stop_s
             return s0 + v0 * tt - 0.5 * d * tt * tt
-        return self.prof.s(dt)
+        if self.warp is None:
+            return self.prof.s((t_ticks - self.t0) / TICKS_PER_S)
+        return self.prof.s(self.tau(t_ticks) / TICKS_PER_S)
 
     def pos(self, t_ticks: float) -> tuple:
         if t_ticks >= self.t1:
@@ -178,9 +225,10 @@ class Move:
         if t_ticks >= self.t1:
             return 0.0
         if self.stop_s is not None and t_ticks >= self.stop_t:
-            v0 = self.prof.speed((self.stop_t - self.t0) / TICKS_PER_S)
-            return max(0.0, v0 - self.stop_dec * (t_ticks - self.stop_t) / TICKS_PER_S)
-        return self.prof.speed((t_ticks - self.t0) / TICKS_PER_S)
+            return max(0.0, self.stop_v0 - self.stop_dec * (t_ticks - self.stop_t) / TICKS_PER_S)
+        if self.warp is None:
+            return self.prof.speed((t_ticks - self.t0) / TICKS_PER_S)
+        return self.prof.speed(self.tau(t_ticks) / TICKS_PER_S) * self.rate(t_ticks)
 
     def stop(self, t_ticks: float, dec: float) -> None:
         """Decelerate along the path with ``dec`` from ``t_ticks`` (JS, MS)."""
@@ -188,6 +236,7 @@ class Move:
             return
         s0 = self.s_at(t_ticks)
         v0 = self.speed_at(t_ticks)
+        self.stop_s0, self.stop_v0 = s0, v0
         if dec <= 0 or dec == math.inf:
             self.stop_s, self.stop_t, self.stop_dec = s0, t_ticks, math.inf
             self.t1 = t_ticks
@@ -303,6 +352,23 @@ class Chain:
         m.stop(t, dec)
         self.segs = self.segs[:self.segs.index(m) + 1]
         self.t1 = m.t1
+
+    def override(self, t: float, ovr: float, ramp_ticks: float) -> None:
+        """UTROVR on a chain: the running segment ramps, the later ones follow on at the new rate."""
+        if t >= self.t1:
+            return
+        m = self._seg(t)
+        k = self.segs.index(m)
+        m.override(t, ovr / m.ovr0, ramp_ticks)
+        end_ramp = t + ramp_ticks
+        for prev, nxt in zip(self.segs[k:], self.segs[k + 1:]):
+            shift = prev.t1 - nxt.t0
+            nxt.t0 += shift
+            nxt.t1 += shift
+            ra = prev.rate(prev.t1)
+            nxt.warp = (nxt.t0, 0.0, ra, ra, 0.0)
+            nxt.override(nxt.t0, ovr / nxt.ovr0, max(0.0, end_ramp - nxt.t0))
+        self.t1 = self.segs[-1].t1
 
     def emit(self, canon, names_count: int) -> None:
         if self.retired:
