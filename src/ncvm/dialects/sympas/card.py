@@ -196,7 +196,7 @@ class Card(Commands):
     def axst(self, a: AxisState, t: float) -> int:
         b = self.cfg["axst_bits"]
         v = a.flags
-        if not self.busy(a, t) and not a.spool:
+        if (not self.busy(a, t) or a.move.drift) and not a.spool:
             v |= 1 << b["profile_end"]
             if abs(a.poserr) <= a.q["ipw"]:
                 v |= 1 << b["in_position"]
@@ -403,7 +403,8 @@ class Card(Commands):
         return self.all_positions(t)
 
     def wait_axes(self, tk, axes):
-        end = max((self.axes[ax].move.t1 for ax in axes if self.axes[ax].move is not None), default=0.0)
+        end = max((self.axes[ax].move.t1 for ax in axes if self.axes[ax].move is not None
+                   and not self.axes[ax].move.drift), default=0.0)
         end = max([end] + [e[1] for ax in axes for e in self.axes[ax].spool if e[0] == "pending"])
         if end <= tk.time:
             self.settle(axes, tk.time)
@@ -415,7 +416,8 @@ class Card(Commands):
 
     def _wait_axes(self, tk, axes):
         while True:
-            end = max((self.axes[ax].move.t1 for ax in axes if self.axes[ax].move is not None), default=0.0)
+            end = max((self.axes[ax].move.t1 for ax in axes if self.axes[ax].move is not None
+                       and not self.axes[ax].move.drift), default=0.0)  # a jog running on at jtv: at profile end
             if end <= tk.time:
                 self.settle(axes, tk.time)
                 return
@@ -436,8 +438,11 @@ class Card(Commands):
         """Let running moves end; report them; the run's end time in ticks."""
         end = max([t.time for t in self.tasks] + [0.0])
         for a in self.axes:
-            if a.move is not None:
+            if a.move is not None and not a.move.drift:
                 end = max(end, a.move.t1)
+        for a in self.axes:
+            if a.move is not None and a.move.drift:
+                a.move.stop(max(end, a.move.t0), math.inf)  # still running on at jtv: reported up to the end
         for mv in sorted({id(a.move): a.move for a in self.axes if a.move is not None}.values(), key=lambda m: m.t0):
             self._finish(mv)
         return end
@@ -464,6 +469,8 @@ class Card(Commands):
             tk = min(running, key=lambda t: (t.time, t.number))
             self.solo = tk if len(running) == 1 else None
             self.apply_timed(tk.time)
+            if tk.state != RUNNING:
+                continue  # a timed action (RS by ForbidTargetVel) halted it
             horizon = math.inf
             for o in running:
                 if o is not tk:

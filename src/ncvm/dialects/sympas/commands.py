@@ -13,7 +13,7 @@ from operator import attrgetter
 
 from ...nc.canon import Src
 from .lookahead import retime
-from .motion import Chain, Move
+from .motion import TICKS_PER_S, Chain, ChainProfile, Move
 from .values import fault
 
 _GET_M = attrgetter("m")
@@ -395,10 +395,47 @@ class Commands:
                 a.target = p1
                 continue
             mv.start(t, abs(p1 - p0), vel, acc)
+            jtv = abs(float(a.q["jtv"]))
+            if jtv > 0.0:  # arrive with the jog target velocity and keep moving (digest §10.5, A-60)
+                v1 = min(jtv, math.sqrt(2.0 * acc * abs(p1 - p0)))
+                mv.prof = ChainProfile(abs(p1 - p0), max(vel, v1), acc, 0.0, v1)
+                mv.t1 = t + mv.prof.duration * TICKS_PER_S
+                self.add_timed(mv.t1, self._drift_action(a, mv, v1, 1.0 if p1 >= p0 else -1.0))
             a.move = mv
             self.live.add(mv)
             a.target = p1
         return self._wait(tk, axes, wait)
+
+    def _drift_action(self, a, mv, v: float, sign: float):
+        """At the jog target with jtv != 0: profile end and SAF, and the axis runs on at jtv until a stop;
+        MODEREG bit 28 (JSatSAF) stops all axes with sdec, bit 11 (ForbidTargetVel) executes RS."""
+        def act():
+            if mv.stop_s is not None or (a.move is not None and a.move is not mv):
+                return  # stopped or replaced before it got there
+            t = mv.t1
+            self._finish(mv)
+            bits = self.cfg["axst_bits"]
+            a.flags |= 1 << bits["saf"]
+            p = a.m
+            far = v * 1.0e6  # runs on until stopped (JS, MS, RA) or the run ends
+            d = Move((a.number,), (p,), (p + sign * far,), "line", mv.src, self.all_positions(t))
+            d.jog = True
+            d.drift = True
+            d.prof = ChainProfile(far, v, float(a.q["jac"]) or 1.0, v, v)
+            d.t0, d.t1, d.feed, d.vmax = t, t + d.prof.duration * TICKS_PER_S, v * 60.0, v
+            a.move = d
+            self.live.add(d)
+            mode = self.sys["MODEREG"]
+            if mode & (1 << 11):
+                self.sys["ERRORREG"] |= 1 << 1
+                self.reset_system(t)
+            elif mode & (1 << 28):
+                self.sys["ERRORREG"] |= 1 << 19
+                for b in self.axes:
+                    m = b.move
+                    if m is not None and m.t1 > t:
+                        m.stop(t, min(self.axes[x].q["sdec"] for x in m.axes))
+        return act
 
     def cmd_ja(self, tk, items, loc):
         return self._jog(tk, items, loc, False, False)

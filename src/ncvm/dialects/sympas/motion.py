@@ -114,7 +114,7 @@ class Move:
 
     __slots__ = ("axes", "p0", "p1", "kind", "t0", "t1", "prof", "center", "radius", "a0", "phi", "plane",
                  "normal", "lin", "src", "start_all", "feed", "stop_s", "stop_t", "stop_dec", "retired", "jog",
-                 "vmax", "ovr0", "warp", "stop_v0", "stop_s0")
+                 "vmax", "ovr0", "warp", "stop_v0", "stop_s0", "drift")
 
     def __init__(self, axes, p0, p1, kind, src: Src, start_all):
         self.axes = axes
@@ -126,6 +126,7 @@ class Move:
         self.stop_s = None
         self.retired = False
         self.jog = False
+        self.drift = False  # a jog running on at jtv past its target (profile end already reported)
         self.ovr0 = 1.0  # the override the profile was planned with
         self.warp = None  # (t_w, tau_w, r_a, r_b, T): rate of profile time ramps r_a -> r_b over T ticks (TROVRST)
 
@@ -237,6 +238,7 @@ class Move:
         s0 = self.s_at(t_ticks)
         v0 = self.speed_at(t_ticks)
         self.stop_s0, self.stop_v0 = s0, v0
+        self.drift = False  # braking now: waits (JSW) end when it stands
         if dec <= 0 or dec == math.inf:
             self.stop_s, self.stop_t, self.stop_dec = s0, t_ticks, math.inf
             self.t1 = t_ticks
@@ -308,7 +310,7 @@ class Chain:
     It stands for all its segments on every axis they use, so positions, velocities and stops
     (JS, MS) see the segment that runs at the asked time."""
 
-    __slots__ = ("segs", "axes", "t0", "t1", "p1", "retired", "jog", "_full0")
+    __slots__ = ("segs", "axes", "t0", "t1", "p1", "retired", "jog", "drift", "_full0")
 
     def __init__(self, segs: list, full0: tuple):
         self.segs = segs
@@ -317,7 +319,7 @@ class Chain:
         self._full0 = full0
         self.t0, self.t1 = segs[0].t0, segs[-1].t1
         self.retired = False
-        self.jog = False
+        self.jog = self.drift = False
         self.p1 = self.final()
 
     def _seg(self, t: float):
