@@ -109,3 +109,24 @@ def test_ms_stops_a_chain_in_its_running_segment(sap):
     assert float(r["output"][0]) == pytest.approx(5.0, abs=0.01)
     assert r["position"]["X"] == pytest.approx(5.0, abs=0.01)
     assert r["motion"]["feed_moves"] == 1
+
+
+def test_line_circle_line_chain_with_ssf_between(sap):
+    # X 10 mm, quarter circle R 5 (tangent at both joints, 7.854 mm), Y 10 mm, TRTVL 10 throughout:
+    # 1.05 s + 0.7854 s + 1.05 s = 2.8854 s. The SSF after segment 1 writes CI1 when segment 1 ends (1.05 s).
+    text = prog("""TRVL := 10.0; TRAC := 100.0; TRTVL := 10.0; PHI := 90.0;
+t0 := CLOCK;
+SMLR(A1 := 10.0); SSF(A1 := 42, SSFP = 1); SMCR(A1 := 0.0, A2 := 5.0); SMLR(A2 := 10.0);
+SSMS(A1, A2);
+repeat until CI1 = 42;
+t1 := CLOCK - t0; x := A1.dp;
+SSMSW(A1, A2);
+writeln(t1, ' ', x, ' ', CLOCK - t0);""")
+    r = sap(text)
+    assert r["status"] == "ok", r["error"]
+    t1, x, t2 = r["output"][0].split()
+    assert int(t1) == pytest.approx(1.05 * SEC, abs=12)
+    assert float(x) == pytest.approx(10.0, abs=0.005)
+    assert int(t2) == pytest.approx((2.1 + 0.7854) * SEC, abs=8)
+    assert (r["position"]["X"], r["position"]["Y"]) == (pytest.approx(15.0), pytest.approx(15.0))
+    assert (r["motion"]["feed_moves"], r["motion"]["arc_moves"]) == (2, 1)

@@ -101,6 +101,10 @@ class Card(Commands):
     def add_timed(self, tick: float, fn) -> None:
         self._seq += 1
         heapq.heappush(self.timed, (tick, self._seq, fn))
+        for tk in self.tasks:  # the running task must come back to the scheduler in time for it
+            if tk.state == RUNNING and tk.check_at > tick:
+                tk.check_at = tick
+                tk.set_budget()
 
     def next_timed(self) -> float:
         return self.timed[0][0] if self.timed else math.inf
