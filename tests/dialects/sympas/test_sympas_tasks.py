@@ -379,3 +379,35 @@ end.
     assert r["status"] == "error"
     assert r["error"]["code"] == "2048"
     assert r["error"]["line"] == 10
+
+
+def test_stepcnct_through_a_procedure(sap):
+    # the call line steps into the routine's first line; then line by line, back in the caller
+    text = """{$TASK 0}
+program Main;
+var a, b, c, d, e: integer;
+begin
+  STARTCNCT(3);
+  STOPCNCT(3);
+  a := CI7;
+  STEPCNCT(3); WT(50); b := CI7;
+  STEPCNCT(3); WT(50); c := CI7;
+  STEPCNCT(3); WT(50); d := CI7;
+  STEPCNCT(3); WT(50); e := CI7;
+end.
+{$TASK 3}
+program S;
+procedure P;
+begin
+  CI7 := CI7 + 10;
+  CI7 := CI7 + 100;
+end;
+begin
+  CI7 := 1;
+  P;
+  CI7 := CI7 + 1000;
+  while TRUE do CI8 := CI8 + 1;
+end.
+"""
+    v = sap(text)["variables"]
+    assert (v["a"], v["b"], v["c"], v["d"], v["e"]) == (0, 1, 11, 111, 1111)
