@@ -87,3 +87,32 @@ begin
 end.
 """
     assert int(sap(text)["output"][0]) == pytest.approx(4.05 * SEC, abs=8)
+
+
+def test_ssf_in_a_chain_follows_the_override(sap):
+    # segment 1 (10 mm, joint at TRTVL 10) ends at 1.05 s; half rate from 0.5 s: 0.55 s left -> 1.1 s -> 1.6 s.
+    # MS before the end of segment 1 of a second chain drops its SSF.
+    text = """program T;
+var t0, t1, c: integer;
+begin
+  CL(A1); TRVL := 10.0; TRAC := 100.0; TRTVL := 10.0; A1.sdec := 1000.0;
+  t0 := CLOCK;
+  SMLR(A1 := 10.0); SSF(A1 := 42, SSFP = 1); SMLR(A1 := 10.0); SSMS(A1);
+  repeat until CLOCK - t0 >= 7812;
+  TROVR := 0.5; TROVRST := 0.0; UTROVR(A1);
+  repeat until CI1 = 42;
+  t1 := CLOCK - t0;
+  SSMSW(A1);
+  TROVR := 1.0; UTROVR(A1); CI1 := 0;
+  SMLR(A1 := 10.0); SSF(A1 := 7, SSFP = 1); SMLR(A1 := 10.0); SSMS(A1);
+  MSW(A1);
+  WT(30000);
+  c := CI1;
+  writeln(t1, ' ', c);
+end.
+"""
+    r = sap(text)
+    assert r["status"] == "ok", r["error"]
+    t1, c = r["output"][0].split()
+    assert int(t1) == pytest.approx(1.6 * SEC, abs=12)
+    assert c == "0"

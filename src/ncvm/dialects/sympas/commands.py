@@ -373,7 +373,19 @@ class Commands:
             a = self.axes[ax]
             a.move = chain
         for k, act in ssf_after:
-            self.add_timed(segs[k - 1].t1, act)
+            self._ssf_at_end(chain, segs[k - 1], act, segs[k - 1].t1)
+
+    def _ssf_at_end(self, chain, seg, act, tick: float) -> None:
+        """An SSF between chained segments acts when the segment before it ends, even if UTROVR moved
+        that end; not at all when a stop cut the chain before it."""
+        def fire():
+            if seg not in chain.segs or (seg.stop_s is not None and seg.stop_s < seg.prof.length):
+                return
+            if seg.t1 > tick:
+                self._ssf_at_end(chain, seg, act, seg.t1)
+                return
+            act()
+        self.add_timed(tick, fire)
 
     # -- jog and home (§6.6.16-28), axis units ---------------------------------------------------------------------------
     def _jog(self, tk, items, loc, relative: bool, wait: bool):
