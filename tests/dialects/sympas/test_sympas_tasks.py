@@ -299,3 +299,115 @@ def test_check_reports_lenient_readings_as_warnings(tmp_path):
     p.write_text("program P;\nconst s := 5;\nvar i: integer;\nbegin\n if i > 0 then i := 0; else i := s;\nend.\n")
     diags = check(p)
     assert [(d.severity, d.code) for d in diags] == [("warning", "W009"), ("warning", "W017")]
+
+
+def test_stepcnct_executes_exactly_one_line(sap):
+    # L2125: STEPCNCT executes one program line; two statements on one line are one step
+    text = """{$TASK 0}
+program Main;
+var a, b, c, d: integer;
+begin
+  STARTCNCT(3);
+  STOPCNCT(3);
+  a := CI7;
+  STEPCNCT(3);
+  WT(50);
+  b := CI7;
+  STEPCNCT(3);
+  WT(50);
+  c := CI7;
+  STEPCNCT(3);
+  WT(50);
+  d := CI7;
+end.
+{$TASK 3}
+program S;
+begin
+  CI7 := 1;
+  CI7 := 2; CI7 := 3;
+  CI7 := 4;
+  while TRUE do CI8 := CI8 + 1;
+end.
+"""
+    v = sap(text)["variables"]
+    assert (v["a"], v["b"], v["c"], v["d"]) == (0, 1, 3, 4)
+
+
+def test_runtime_error_halts_only_its_task(sap):
+    # §8 (L2259): the failing task is halted with its error number and line; the others go on
+    text = """{$TASK 0}
+program Main;
+var i: integer;
+begin
+  STARTCNCT(1);
+  WT(100);
+  for i := 1 to 3 do CI5 := CI5 + 1;
+  writeln('main goes on ', CI5);
+end.
+{$TASK 1}
+program Bad;
+var z: integer;
+begin
+  writeln('bad starts');
+  z := 0;
+  CI6 := 7 / z;
+  writeln('never');
+end.
+"""
+    r = sap(text)
+    assert r["status"] == "error"
+    assert r["error"]["code"] == "32768"
+    assert r["error"]["line"] == 16
+    assert "task 1" in r["error"]["message"]
+    assert r["output"] == ["bad starts", "main goes on 3"]
+
+
+def test_runtime_error_is_reported_when_the_others_run_away(sap):
+    text = """{$TASK 0}
+program Main;
+begin
+  STARTCNCT(1);
+  while TRUE do CI5 := CI5 + 1;
+end.
+{$TASK 1}
+program Bad;
+begin
+  WRCBD(3, 1.0);
+end.
+"""
+    r = sap(text, max_steps=20000)
+    assert r["status"] == "error"
+    assert r["error"]["code"] == "2048"
+    assert r["error"]["line"] == 10
+
+
+def test_stepcnct_through_a_procedure(sap):
+    # the call line steps into the routine's first line; then line by line, back in the caller
+    text = """{$TASK 0}
+program Main;
+var a, b, c, d, e: integer;
+begin
+  STARTCNCT(3);
+  STOPCNCT(3);
+  a := CI7;
+  STEPCNCT(3); WT(50); b := CI7;
+  STEPCNCT(3); WT(50); c := CI7;
+  STEPCNCT(3); WT(50); d := CI7;
+  STEPCNCT(3); WT(50); e := CI7;
+end.
+{$TASK 3}
+program S;
+procedure P;
+begin
+  CI7 := CI7 + 10;
+  CI7 := CI7 + 100;
+end;
+begin
+  CI7 := 1;
+  P;
+  CI7 := CI7 + 1000;
+  while TRUE do CI8 := CI8 + 1;
+end.
+"""
+    v = sap(text)["variables"]
+    assert (v["a"], v["b"], v["c"], v["d"], v["e"]) == (0, 1, 11, 111, 1111)

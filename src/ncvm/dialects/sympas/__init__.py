@@ -38,6 +38,7 @@ class Unit:
         self.locs = locs
         self.code = src.compile()
         self.task = prog.task
+        self.stepping = False  # compiled with a check point after every statement (STEPCNCT)
         self.srcs = [Src(f, line) for f, line in locs]
 
     def namespace(self, card) -> dict:
@@ -58,7 +59,7 @@ class Unit:
         return out
 
 
-def compile_units(path: str, text: str, machine, warnings: list | None = None) -> list[Unit]:
+def compile_units(path: str, text: str, machine, warnings: list | None = None, stepping: bool = False) -> list[Unit]:
     cfg = sympas_config(machine)
 
     def warn(code, msg, node):
@@ -71,14 +72,20 @@ def compile_units(path: str, text: str, machine, warnings: list | None = None) -
 
     toks = Lexer(finder, warn).tokens(path, text)
     progs = Parser(toks, warn).programs()
-    units = []
-    for k, prog in enumerate(progs):
+    checkers = []
+    for prog in progs:
         chk = Checker(cfg["axis_names"], warn)
         chk.program(prog)
+        checkers.append(chk)
+    stepping = stepping or any(chk.steps_tasks for chk in checkers)
+    units = []
+    for k, (prog, chk) in enumerate(zip(progs, checkers)):
         pyname = f"<sympas:{path}#{k}>"
-        gen = CodeGen(pyname, chk, prog)
+        gen = CodeGen(pyname, chk, prog, stepping)
         src = gen.generate()
-        units.append(Unit(prog, chk, src, pyname, gen.locs))
+        unit = Unit(prog, chk, src, pyname, gen.locs)
+        unit.stepping = stepping
+        units.append(unit)
     return units
 
 
@@ -106,13 +113,17 @@ class SympasDialect(Dialect):
 
     def run(self, path, text, session):
         try:
-            units = compile_units(path, text, session.machine)
             cfg = sympas_config(session.machine)
+            texts = [(path, text)]
             for extra in cfg["load"]:
                 p = session.machine.find_program(extra) or Path(path).parent / extra
                 if not p.is_file():
                     raise UsageError(f"sympas.load: program '{extra}' not found")
-                units += compile_units(str(p), p.read_text(encoding="latin-1"), session.machine)
+                texts.append((str(p), p.read_text(encoding="latin-1")))
+            units = [u for f, t in texts for u in compile_units(f, t, session.machine)]
+            if any(u.stepping for u in units) and not all(u.stepping for u in units):
+                # STEPCNCT in one file: every task may be stepped, so all get a check point per line
+                units = [u for f, t in texts for u in compile_units(f, t, session.machine, stepping=True)]
         except SympasError as e:
             raise CompileFailed([e.diagnostic()]) from None
         card = Card(session, cfg)

@@ -91,6 +91,7 @@ class Card(Commands):
         for ev in machine.scenario:
             self.add_timed(ev.time * TICKS_PER_S, self._scenario_action(ev))
         self.irq_count = 0
+        self.fault: RuntimeFault | None = None  # the first run-time error of a task (reported at the end)
         self.live: set = set()  # moves that have not retired yet
         self.solo = None  # the only running task, when there is just one
         self.counts = float(cfg["counts_per_unit"])
@@ -100,6 +101,10 @@ class Card(Commands):
     def add_timed(self, tick: float, fn) -> None:
         self._seq += 1
         heapq.heappush(self.timed, (tick, self._seq, fn))
+        for tk in self.tasks:  # the running task must come back to the scheduler in time for it
+            if tk.state == RUNNING and tk.check_at > tick:
+                tk.check_at = tick
+                tk.set_budget()
 
     def next_timed(self) -> float:
         return self.timed[0][0] if self.timed else math.inf
@@ -195,7 +200,7 @@ class Card(Commands):
     def axst(self, a: AxisState, t: float) -> int:
         b = self.cfg["axst_bits"]
         v = a.flags
-        if not self.busy(a, t) and not a.spool:
+        if (not self.busy(a, t) or a.move.drift) and not a.spool:
             v |= 1 << b["profile_end"]
             if abs(a.poserr) <= a.q["ipw"]:
                 v |= 1 << b["in_position"]
@@ -376,6 +381,7 @@ class Card(Commands):
             a = self.axes[ax]
             a.flags &= ~bit
         mv.start(t, length, v, acc)
+        mv.ovr0 = tk.ovr
         self.live.add(mv)
         for k, ax in enumerate(mv.axes):
             a = self.axes[ax]
@@ -401,7 +407,8 @@ class Card(Commands):
         return self.all_positions(t)
 
     def wait_axes(self, tk, axes):
-        end = max((self.axes[ax].move.t1 for ax in axes if self.axes[ax].move is not None), default=0.0)
+        end = max((self.axes[ax].move.t1 for ax in axes if self.axes[ax].move is not None
+                   and not self.axes[ax].move.drift), default=0.0)
         end = max([end] + [e[1] for ax in axes for e in self.axes[ax].spool if e[0] == "pending"])
         if end <= tk.time:
             self.settle(axes, tk.time)
@@ -413,7 +420,8 @@ class Card(Commands):
 
     def _wait_axes(self, tk, axes):
         while True:
-            end = max((self.axes[ax].move.t1 for ax in axes if self.axes[ax].move is not None), default=0.0)
+            end = max((self.axes[ax].move.t1 for ax in axes if self.axes[ax].move is not None
+                       and not self.axes[ax].move.drift), default=0.0)  # a jog running on at jtv: at profile end
             if end <= tk.time:
                 self.settle(axes, tk.time)
                 return
@@ -434,14 +442,29 @@ class Card(Commands):
         """Let running moves end; report them; the run's end time in ticks."""
         end = max([t.time for t in self.tasks] + [0.0])
         for a in self.axes:
-            if a.move is not None:
+            if a.move is not None and not a.move.drift:
                 end = max(end, a.move.t1)
+        for a in self.axes:
+            if a.move is not None and a.move.drift:
+                a.move.stop(max(end, a.move.t0), math.inf)  # still running on at jtv: reported up to the end
         for mv in sorted({id(a.move): a.move for a in self.axes if a.move is not None}.values(), key=lambda m: m.t0):
             self._finish(mv)
         return end
 
     # -- the scheduler -------------------------------------------------------------------------------------------------------
     def run(self) -> None:
+        """Run the tasks until none is running. A run-time error halts only its own task (§8, L2259):
+        the others go on, and the first error becomes the run's error when they are done."""
+        try:
+            self._run()
+        except RuntimeFault as e:
+            if e.code == "RUN001" and self.fault is not None:
+                raise self.fault from None  # the others ran away after the error: the error is the news
+            raise
+        if self.fault is not None:
+            raise self.fault
+
+    def _run(self) -> None:
         tasks = self.tasks
         while True:
             running = [t for t in tasks if t.state == RUNNING]
@@ -450,6 +473,8 @@ class Card(Commands):
             tk = min(running, key=lambda t: (t.time, t.number))
             self.solo = tk if len(running) == 1 else None
             self.apply_timed(tk.time)
+            if tk.state != RUNNING:
+                continue  # a timed action (RS by ForbidTargetVel) halted it
             horizon = math.inf
             for o in running:
                 if o is not tk:
@@ -474,14 +499,19 @@ class Card(Commands):
                     else:
                         tk.state = ENDED
                     continue
-                if isinstance(e, RuntimeFault):
-                    tk.state = ERROR
-                    raise self.locate(tk, e) from None
+                if isinstance(e, RuntimeFault) and e.code == "RUN001":
+                    raise
                 if isinstance(e, RecursionError):
-                    tk.state = ERROR
                     fault8 = RuntimeFault("8", "stack overflow: calls nested too deep")
                     fault8.__traceback__ = e.__traceback__
-                    raise self.locate(tk, fault8) from None
+                    e = fault8
+                if isinstance(e, RuntimeFault):
+                    tk.state = ERROR
+                    tk.enabled.clear()
+                    located = self.locate(tk, e)
+                    if self.fault is None:
+                        self.fault = located
+                    continue
                 raise
 
     def capture_locals(self, tk, tb) -> None:

@@ -85,6 +85,7 @@ class Checker:
             self.predef.names[n] = AxisSpec(n, i)
         self.axis_count = len(axis_names)
         self.events_used = False
+        self.steps_tasks = False  # STEPCNCT appears: every task must stop after each line (L2125)
         self.axis_an_written = False
         self.uses_clock = False
 
@@ -431,6 +432,8 @@ class Checker:
             self.err("SP005", f"{c.name} takes no arguments", c)
 
     def form_K(self, c, b) -> None:
+        if c.name == "STEPCNCT":
+            self.steps_tasks = True
         if len(c.args) != 1:
             self.err("SP005", f"{c.name} takes one integer constant", c)
         a = c.args[0]

@@ -18,8 +18,10 @@ INT_WRAP = "(_t if -2147483648 <= (_t := {}) <= 2147483647 else _ovf(_t))"
 
 
 class CodeGen:
-    def __init__(self, filename: str, checker, unit: A.Program):
+    def __init__(self, filename: str, checker, unit: A.Program, stepping: bool = False):
         self.src = PySource(filename)
+        self.stepping = stepping  # a check point after every line, so STEPCNCT stops after one line
+        self.next_at = None  # (file, line) of the statement that follows the one being generated
         self.chk = checker
         self.unit = unit
         self.locs: list[tuple[str, int]] = [("", 0)]
@@ -120,11 +122,12 @@ class CodeGen:
                 self.emit("pass")
 
     def stmts(self, body: list) -> None:
+        outer = self.next_at  # what follows the last statement of this sequence
         i = 0
         while i < len(body):
             j = i
-            while j < len(body) and isinstance(body[j], A.Assign) and body[j].label is None \
-                    and not needs_time(body[j].value):
+            while not self.stepping and j < len(body) and isinstance(body[j], A.Assign) \
+                    and body[j].label is None and not needs_time(body[j].value):
                 j += 1
             if j - i > 1:
                 # a run of plain assignments: count them once
@@ -134,6 +137,8 @@ class CodeGen:
                 self.event_point(body[j - 1])
                 i = j
             else:
+                nxt = body[i + 1] if i + 1 < len(body) else None
+                self.next_at = (nxt.file, nxt.line) if nxt is not None else outer
                 self.stmt(body[i])
                 i += 1
 
@@ -167,6 +172,7 @@ class CodeGen:
             self.emit("_n += 1", s)
             self.flush_if_needed(s.cond, s)
             with self.src.block(f"while {self.expr(s.cond)}:", self.loc(s)):
+                self.next_at = (s.file, s.line)  # after the body the loop head's line comes next
                 self.stmt(s.body)
                 self.emit("_n += 1", s)
                 self.back_edge(s)
@@ -184,8 +190,9 @@ class CodeGen:
             pass
 
     def event_point(self, node) -> None:
-        """Programs that enable events poll them after every simple statement (§6.4, L1548)."""
-        if self.chk.events_used:
+        """Programs that enable events poll them after every simple statement (§6.4, L1548); a task that
+        may be single-stepped (STEPCNCT) needs a check point there too."""
+        if self.chk.events_used or (self.stepping and self.next_at != (node.file, node.line)):
             self.back_edge(node)
 
     def back_edge(self, node) -> None:
@@ -208,6 +215,7 @@ class CodeGen:
         self.assign(s.var, start, "integer", s)
         with self.src.block(f"for {var} in range({start}, {stop} {'-' if s.down else '+'} 1, {step}):", self.loc(s)):
             self.assign(s.var, var, "integer", s)
+            self.next_at = (s.file, s.line)
             self.stmt(s.body)
             self.emit("_n += 1", s)
             self.back_edge(s)

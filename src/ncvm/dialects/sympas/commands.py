@@ -12,7 +12,8 @@ import math
 from operator import attrgetter
 
 from ...nc.canon import Src
-from .motion import Move
+from .lookahead import retime
+from .motion import TICKS_PER_S, Chain, ChainProfile, Move
 from .values import fault
 
 _GET_M = attrgetter("m")
@@ -298,7 +299,8 @@ class Commands:
         return self.wait_axes(tk, axes)
 
     def _chain(self, tk, axes, loc):
-        """Spooled segments run back to back: each starts when the previous one on its axes ends."""
+        """Spooled segments run back to back; consecutive path segments join at their target
+        velocity (lookahead.py) and run as one :class:`Chain` without stopping in between."""
         codes = self.cfg["ssf_codes"]
         saved_sysp, saved_t = tk.sysp, tk.time
         t = tk.time
@@ -308,6 +310,7 @@ class Commands:
                 t = max(t, mv.t1)
         busy = self.cfg["busy_move"]
         self.cfg["busy_move"] = "override"
+        segs, targets, ssf_after, full0 = [], [], [], None
         try:
             while True:
                 e = None
@@ -327,30 +330,62 @@ class Commands:
                     if e[1] == codes["spool_halt"]:
                         for ax in e_axes:
                             self.axes[ax].spool_halted = True
-                    elif t <= saved_t:
+                    elif not segs:
                         self._ssf_action(e[1], e[2])()  # at the spooler head now: runs at once
                     else:
-                        self.add_timed(t, self._ssf_action(e[1], e[2]))
+                        ssf_after.append((len(segs), self._ssf_action(e[1], e[2])))
                     continue
                 _, kind, items, eloc, target, sysp = e
                 tk.sysp = sysp
                 tk.time = t
+                if full0 is None:
+                    full0 = self.all_positions(t)
                 for ax in e_axes:
                     a = self.axes[ax]
                     if a.move is not None and a.move.t1 <= t:
                         self._finish(a.move)
                 fn = getattr(self, "cmd_" + kind)
+                before = self.axes[e_axes[0]].move
                 if kind[:2] in ("mc", "mh"):
                     fn(tk, items, eloc, target)
                 else:
                     fn(tk, items, eloc)
-                for ax in e_axes:
-                    mv = self.axes[ax].move
-                    if mv is not None:
-                        t = max(t, mv.t1)
+                mv = self.axes[e_axes[0]].move
+                if mv is not None and mv is not before:
+                    f, ts = self.units(tk)
+                    mv.retired = True  # reported by the chain when it retires, not when the next one starts
+                    segs.append(mv)
+                    targets.append(max(0.0, sysp["TRTVL"] * f / ts * tk.ovr))
+                    t = mv.t1
         finally:
             self.cfg["busy_move"] = busy
             tk.sysp, tk.time = saved_sysp, saved_t
+        if not segs:
+            return
+        mode = self.sys["MODEREG"]
+        retime(self.axes, segs, targets, [mode] * len(segs))
+        for m in segs:
+            m.retired = False
+            self.live.discard(m)
+        chain = Chain(segs, full0)
+        self.live.add(chain)
+        for ax in chain.axes:
+            a = self.axes[ax]
+            a.move = chain
+        for k, act in ssf_after:
+            self._ssf_at_end(chain, segs[k - 1], act, segs[k - 1].t1)
+
+    def _ssf_at_end(self, chain, seg, act, tick: float) -> None:
+        """An SSF between chained segments acts when the segment before it ends, even if UTROVR moved
+        that end; not at all when a stop cut the chain before it."""
+        def fire():
+            if seg not in chain.segs or (seg.stop_s is not None and seg.stop_s < seg.prof.length):
+                return
+            if seg.t1 > tick:
+                self._ssf_at_end(chain, seg, act, seg.t1)
+                return
+            act()
+        self.add_timed(tick, fire)
 
     # -- jog and home (§6.6.16-28), axis units ---------------------------------------------------------------------------
     def _jog(self, tk, items, loc, relative: bool, wait: bool):
@@ -372,10 +407,47 @@ class Commands:
                 a.target = p1
                 continue
             mv.start(t, abs(p1 - p0), vel, acc)
+            jtv = abs(float(a.q["jtv"]))
+            if jtv > 0.0:  # arrive with the jog target velocity and keep moving (digest §10.5, A-60)
+                v1 = min(jtv, math.sqrt(2.0 * acc * abs(p1 - p0)))
+                mv.prof = ChainProfile(abs(p1 - p0), max(vel, v1), acc, 0.0, v1)
+                mv.t1 = t + mv.prof.duration * TICKS_PER_S
+                self.add_timed(mv.t1, self._drift_action(a, mv, v1, 1.0 if p1 >= p0 else -1.0))
             a.move = mv
             self.live.add(mv)
             a.target = p1
         return self._wait(tk, axes, wait)
+
+    def _drift_action(self, a, mv, v: float, sign: float):
+        """At the jog target with jtv != 0: profile end and SAF, and the axis runs on at jtv until a stop;
+        MODEREG bit 28 (JSatSAF) stops all axes with sdec, bit 11 (ForbidTargetVel) executes RS."""
+        def act():
+            if mv.stop_s is not None or (a.move is not None and a.move is not mv):
+                return  # stopped or replaced before it got there
+            t = mv.t1
+            self._finish(mv)
+            bits = self.cfg["axst_bits"]
+            a.flags |= 1 << bits["saf"]
+            p = a.m
+            far = v * 1.0e6  # runs on until stopped (JS, MS, RA) or the run ends
+            d = Move((a.number,), (p,), (p + sign * far,), "line", mv.src, self.all_positions(t))
+            d.jog = True
+            d.drift = True
+            d.prof = ChainProfile(far, v, float(a.q["jac"]) or 1.0, v, v)
+            d.t0, d.t1, d.feed, d.vmax = t, t + d.prof.duration * TICKS_PER_S, v * 60.0, v
+            a.move = d
+            self.live.add(d)
+            mode = self.sys["MODEREG"]
+            if mode & (1 << 11):
+                self.sys["ERRORREG"] |= 1 << 1
+                self.reset_system(t)
+            elif mode & (1 << 28):
+                self.sys["ERRORREG"] |= 1 << 19
+                for b in self.axes:
+                    m = b.move
+                    if m is not None and m.t1 > t:
+                        m.stop(t, min(self.axes[x].q["sdec"] for x in m.axes))
+        return act
 
     def cmd_ja(self, tk, items, loc):
         return self._jog(tk, items, loc, False, False)
@@ -556,9 +628,20 @@ class Commands:
         return None
 
     def cmd_utrovr(self, tk, axes, loc):
+        """The running path moves of these axes reach the new TROVR linearly over TROVRST seconds
+        (digest §10.5); later path segments of this task are planned with it."""
+        ovr = float(tk.sysp["TROVR"])
+        ramp = max(0.0, float(tk.sysp["TROVRST"])) * 15625.0
+        done = set()
         for ax in axes:
-            self.check_axis(ax)
-        tk.ovr = float(tk.sysp["TROVR"])  # later path segments of this task run with the new factor
+            mv = self.check_axis(ax).move
+            if mv is not None and not mv.jog and id(mv) not in done and mv.t1 > tk.time:
+                done.add(id(mv))
+                if isinstance(mv, Chain):
+                    mv.override(tk.time, ovr, ramp)
+                else:
+                    mv.override(tk.time, ovr / mv.ovr0, ramp)
+        tk.ovr = ovr
         return None
 
     def cmd_lpr(self, tk, axes, loc):

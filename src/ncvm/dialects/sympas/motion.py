@@ -66,11 +66,55 @@ class Profile:
         return self.a * (self.duration - t)
 
 
+class ChainProfile(Profile):
+    """A spooled segment's s(t): from start velocity ``v0`` up to at most ``v``, down to end velocity ``v1``.
+
+    The look-ahead has already made ``v0 -> v1`` reachable within ``length`` with ``a`` (digest §10.5)."""
+
+    __slots__ = ("v0", "v1", "t_dec", "s_dec")
+
+    def __init__(self, length: float, v: float, a: float, v0: float, v1: float):
+        self.length, self.a, self.v0, self.v1 = length, a, v0, v1
+        vp = min(v, math.sqrt(a * length + 0.5 * (v0 * v0 + v1 * v1)))
+        vp = max(vp, v0, v1)
+        self.v = vp
+        self.t_acc = (vp - v0) / a
+        self.s_acc = (vp * vp - v0 * v0) / (2.0 * a)
+        self.t_dec = (vp - v1) / a
+        self.s_dec = (vp * vp - v1 * v1) / (2.0 * a)
+        self.t_cruise = max(0.0, length - self.s_acc - self.s_dec) / vp if vp > 0 else 0.0
+        self.duration = self.t_acc + self.t_cruise + self.t_dec
+
+    def s(self, t: float) -> float:
+        if t >= self.duration:
+            return self.length
+        if t <= 0.0:
+            return 0.0
+        if t < self.t_acc:
+            return self.v0 * t + 0.5 * self.a * t * t
+        t2 = t - self.t_acc
+        if t2 < self.t_cruise:
+            return self.s_acc + self.v * t2
+        r = t2 - self.t_cruise
+        return min(self.length, self.s_acc + self.v * self.t_cruise + self.v * r - 0.5 * self.a * r * r)
+
+    def speed(self, t: float) -> float:
+        if t < 0.0 or t > self.duration:
+            return 0.0
+        if t < self.t_acc:
+            return self.v0 + self.a * t
+        t2 = t - self.t_acc
+        if t2 < self.t_cruise:
+            return self.v
+        return max(0.0, self.v - self.a * (t2 - self.t_cruise))
+
+
 class Move:
     """One profile over a group of axes (indices into the card's axes)."""
 
     __slots__ = ("axes", "p0", "p1", "kind", "t0", "t1", "prof", "center", "radius", "a0", "phi", "plane",
-                 "normal", "lin", "src", "start_all", "feed", "stop_s", "stop_t", "stop_dec", "retired", "jog")
+                 "normal", "lin", "src", "start_all", "feed", "stop_s", "stop_t", "stop_dec", "retired", "jog",
+                 "vmax", "ovr0", "warp", "stop_v0", "stop_s0", "drift")
 
     def __init__(self, axes, p0, p1, kind, src: Src, start_all):
         self.axes = axes
@@ -82,8 +126,12 @@ class Move:
         self.stop_s = None
         self.retired = False
         self.jog = False
+        self.drift = False  # a jog running on at jtv past its target (profile end already reported)
+        self.ovr0 = 1.0  # the override the profile was planned with
+        self.warp = None  # (t_w, tau_w, r_a, r_b, T): rate of profile time ramps r_a -> r_b over T ticks (TROVRST)
 
     def start(self, t0_ticks: float, length: float, v: float, a: float) -> None:
+        self.vmax = v
         self.prof = Profile(length, v, a)
         self.t0 = t0_ticks
         self.t1 = t0_ticks + self.prof.duration * TICKS_PER_S
@@ -112,17 +160,62 @@ class Move:
             return self.p1
         return rotate(self.p0, self.center, self.normal, self.phi * f)
 
+    def tau(self, t_ticks: float) -> float:
+        """Profile time in ticks at wall time ``t_ticks``: the override (UTROVR) scales ds/dt."""
+        w = self.warp
+        if w is None:
+            return t_ticks - self.t0
+        tw, tauw, ra, rb, T = w
+        dt = t_ticks - tw
+        if dt <= 0.0:
+            return tauw + ra * dt
+        if dt < T:
+            return tauw + ra * dt + (rb - ra) * dt * dt / (2.0 * T)
+        return tauw + ra * T + 0.5 * (rb - ra) * T + rb * (dt - T)
+
+    def rate(self, t_ticks: float) -> float:
+        w = self.warp
+        if w is None:
+            return 1.0
+        tw, _, ra, rb, T = w
+        dt = t_ticks - tw
+        return rb if dt >= T else ra + (rb - ra) * max(0.0, dt) / T
+
+    def override(self, t_ticks: float, r_b: float, ramp_ticks: float) -> None:
+        """From ``t_ticks`` the profile time rate ramps linearly to ``r_b`` over ``ramp_ticks`` (TROVRST)."""
+        if t_ticks >= self.t1 or self.stop_s is not None:
+            return
+        r_b = max(r_b, 1e-6)
+        tau_now = max(0.0, self.tau(t_ticks))
+        r_a = self.rate(t_ticks) if t_ticks > self.t0 else self.rate(self.t0)
+        if t_ticks < self.t0:  # not begun yet (a later chain segment): the ramp goes on from its start
+            ramp_ticks = max(0.0, ramp_ticks - (self.t0 - t_ticks))
+            t_ticks, tau_now = self.t0, 0.0
+        self.warp = (t_ticks, tau_now, r_a, r_b, ramp_ticks)
+        self.t1 = t_ticks + self._wall(self.prof.duration * TICKS_PER_S - tau_now, r_a, r_b, ramp_ticks)
+
+    @staticmethod
+    def _wall(rest: float, ra: float, rb: float, T: float) -> float:
+        """Wall ticks to cover ``rest`` profile ticks while the rate ramps ra -> rb over T."""
+        ramp = ra * T + 0.5 * (rb - ra) * T
+        if T > 0.0 and rest <= ramp:
+            k = (rb - ra) / (2.0 * T)
+            if abs(k) < 1e-15:
+                return rest / ra
+            return (-ra + math.sqrt(max(0.0, ra * ra + 4.0 * k * rest))) / (2.0 * k)
+        return T + (rest - ramp) / rb
+
     def s_at(self, t_ticks: float) -> float:
-        dt = (t_ticks - self.t0) / TICKS_PER_S
         if self.stop_s is not None and t_ticks >= self.stop_t:
             d = self.stop_dec
-            v0 = self.prof.speed((self.stop_t - self.t0) / TICKS_PER_S)
-            s0 = self.prof.s((self.stop_t - self.t0) / TICKS_PER_S)
+            v0, s0 = self.stop_v0, self.stop_s0
             tt = (t_ticks - self.stop_t) / TICKS_PER_S
             if d <= 0 or tt * d >= v0:
                 return self.stop_s
             return s0 + v0 * tt - 0.5 * d * tt * tt
-        return self.prof.s(dt)
+        if self.warp is None:
+            return self.prof.s((t_ticks - self.t0) / TICKS_PER_S)
+        return self.prof.s(self.tau(t_ticks) / TICKS_PER_S)
 
     def pos(self, t_ticks: float) -> tuple:
         if t_ticks >= self.t1:
@@ -133,9 +226,10 @@ class Move:
         if t_ticks >= self.t1:
             return 0.0
         if self.stop_s is not None and t_ticks >= self.stop_t:
-            v0 = self.prof.speed((self.stop_t - self.t0) / TICKS_PER_S)
-            return max(0.0, v0 - self.stop_dec * (t_ticks - self.stop_t) / TICKS_PER_S)
-        return self.prof.speed((t_ticks - self.t0) / TICKS_PER_S)
+            return max(0.0, self.stop_v0 - self.stop_dec * (t_ticks - self.stop_t) / TICKS_PER_S)
+        if self.warp is None:
+            return self.prof.speed((t_ticks - self.t0) / TICKS_PER_S)
+        return self.prof.speed(self.tau(t_ticks) / TICKS_PER_S) * self.rate(t_ticks)
 
     def stop(self, t_ticks: float, dec: float) -> None:
         """Decelerate along the path with ``dec`` from ``t_ticks`` (JS, MS)."""
@@ -143,7 +237,13 @@ class Move:
             return
         s0 = self.s_at(t_ticks)
         v0 = self.speed_at(t_ticks)
+        self.stop_s0, self.stop_v0 = s0, v0
+        self.drift = False  # braking now: waits (JSW) end when it stands
         if dec <= 0 or dec == math.inf:
+            self.stop_s, self.stop_t, self.stop_dec = s0, t_ticks, math.inf
+            self.t1 = t_ticks
+            return
+        if v0 <= 0.0:  # at rest (a chained segment not begun yet): stops where it is
             self.stop_s, self.stop_t, self.stop_dec = s0, t_ticks, math.inf
             self.t1 = t_ticks
             return
@@ -202,6 +302,82 @@ class Move:
             cur = tuple(cur)
             canon.feed(prev, cur, self.feed, self.src)
             prev = cur
+
+
+class Chain:
+    """Spooled segments that run back to back without stopping (the spooler's look-ahead, digest §10.5).
+
+    It stands for all its segments on every axis they use, so positions, velocities and stops
+    (JS, MS) see the segment that runs at the asked time."""
+
+    __slots__ = ("segs", "axes", "t0", "t1", "p1", "retired", "jog", "drift", "_full0")
+
+    def __init__(self, segs: list, full0: tuple):
+        self.segs = segs
+        axes = sorted({ax for m in segs for ax in m.axes})
+        self.axes = tuple(axes)
+        self._full0 = full0
+        self.t0, self.t1 = segs[0].t0, segs[-1].t1
+        self.retired = False
+        self.jog = self.drift = False
+        self.p1 = self.final()
+
+    def _seg(self, t: float):
+        for m in self.segs:
+            if t < m.t1:
+                return m
+        return self.segs[-1]
+
+    def _full(self, m, p) -> tuple:
+        full = list(m.start_all)
+        for k, ax in enumerate(m.axes):
+            full[ax] = p[k]
+        return tuple(full[ax] for ax in self.axes)
+
+    def pos(self, t: float) -> tuple:
+        m = self._seg(t)
+        return self._full(m, m.pos(t))
+
+    def speed_at(self, t: float) -> float:
+        if t >= self.t1:
+            return 0.0
+        return self._seg(t).speed_at(t)
+
+    def final(self) -> tuple:
+        m = self.segs[-1]
+        return self._full(m, m.final())
+
+    def stop(self, t: float, dec: float) -> None:
+        if t >= self.t1:
+            return
+        m = self._seg(t)
+        m.stop(t, dec)
+        self.segs = self.segs[:self.segs.index(m) + 1]
+        self.t1 = m.t1
+
+    def override(self, t: float, ovr: float, ramp_ticks: float) -> None:
+        """UTROVR on a chain: the running segment ramps, the later ones follow on at the new rate."""
+        if t >= self.t1:
+            return
+        m = self._seg(t)
+        k = self.segs.index(m)
+        m.override(t, ovr / m.ovr0, ramp_ticks)
+        end_ramp = t + ramp_ticks
+        for prev, nxt in zip(self.segs[k:], self.segs[k + 1:]):
+            shift = prev.t1 - nxt.t0
+            nxt.t0 += shift
+            nxt.t1 += shift
+            ra = prev.rate(prev.t1)
+            nxt.warp = (nxt.t0, 0.0, ra, ra, 0.0)
+            nxt.override(nxt.t0, ovr / nxt.ovr0, max(0.0, end_ramp - nxt.t0))
+        self.t1 = self.segs[-1].t1
+
+    def emit(self, canon, names_count: int) -> None:
+        if self.retired:
+            return
+        self.retired = True
+        for m in self.segs:
+            m.emit(canon, names_count)
 
 
 def rotate(p, c, n, ang):

@@ -1,0 +1,77 @@
+"""The spooler's look-ahead: junction velocities of spooled path segments (digest §10.5, MODEREG, L1391-1398).
+
+A segment ends with its target velocity TRTVL (L1316) and the next one starts with it, so the
+axes do not stop in between. The last segment of the spooler contents ends at rest. With
+LookAhead (MODEREG bit 0) the target velocity is further limited so that no axis's velocity
+jumps by more than its ``mdvel`` at the joint, and a circle's path velocity to sqrt(R * maxacc).
+With ChkMaxVel (bit 7) a linear segment's path velocity and acceleration are scaled so that no
+axis exceeds ``maxvel`` / ``maxacc`` (NFRAX axes included). Every joint velocity is then made
+reachable: a backward pass (the next segment can still brake) and a forward pass (this segment
+can reach it from its start velocity).
+"""
+
+from __future__ import annotations
+
+import math
+
+from .motion import TICKS_PER_S, ChainProfile
+
+LOOKAHEAD = 0x1
+CHKMAXVEL = 0x80
+
+
+def _direction(mv, at_end: bool) -> list:
+    """Axis units per path unit at the start or end of ``mv``, over all machine axes."""
+    L = mv.prof.length
+    ds = L * 1e-6
+    s0, s1 = (L - ds, L) if at_end else (0.0, ds)
+    p0, p1 = mv.point(s0), mv.point(s1)
+    u = [0.0] * len(mv.start_all)
+    for k, ax in enumerate(mv.axes):
+        u[ax] = (p1[k] - p0[k]) / ds
+    return u
+
+
+def retime(axes, segs: list, targets: list, moderegs: list) -> None:
+    """Give the chained moves ``segs`` (started rest to rest, back to back) their junction velocities
+    and new start/end times. ``targets[k]`` is segment k's TRTVL in units/s, ``moderegs[k]`` the
+    MODEREG in force when the spooler started it."""
+    n = len(segs)
+    vmax = []
+    acc = []
+    for m, mode in zip(segs, moderegs):
+        v, a = m.vmax, m.prof.a
+        if mode & LOOKAHEAD and m.kind in ("arc", "arc3d"):
+            plane = [m.axes[i] for i in m.plane] if m.kind == "arc" else list(m.axes[:3])
+            v = min(v, math.sqrt(m.radius * min(axes[ax].q["maxacc"] for ax in plane)))
+        if mode & CHKMAXVEL and m.kind == "line" and m.prof.length > 0:
+            for k, ax in enumerate(m.axes):
+                d = abs(m.p1[k] - m.p0[k]) / m.prof.length
+                if d > 0:
+                    v = min(v, axes[ax].q["maxvel"] / d)
+                    a = min(a, axes[ax].q["maxacc"] / d)
+        vmax.append(v)
+        acc.append(a)
+    # joint k is the end of segment k; the last one ends at rest
+    vj = [0.0] * n
+    for k in range(n - 1):
+        v = min(targets[k], vmax[k], vmax[k + 1])
+        if moderegs[k] & LOOKAHEAD and v > 0:
+            u_out, u_in = _direction(segs[k], True), _direction(segs[k + 1], False)
+            for ax, (x, y) in enumerate(zip(u_out, u_in)):
+                jump = abs(y - x)
+                if jump > 1e-9:
+                    v = min(v, axes[ax].q["mdvel"] / jump)
+        vj[k] = max(0.0, v)
+    for k in range(n - 2, -1, -1):  # the next segment must be able to brake to its end velocity
+        m = segs[k + 1]
+        vj[k] = min(vj[k], math.sqrt(vj[k + 1] ** 2 + 2.0 * acc[k + 1] * m.prof.length))
+    v_in = 0.0
+    t = segs[0].t0
+    for k, m in enumerate(segs):  # this segment must be able to reach its end velocity
+        v_out = min(vj[k], math.sqrt(v_in * v_in + 2.0 * acc[k] * m.prof.length))
+        m.prof = ChainProfile(m.prof.length, vmax[k], acc[k], v_in, v_out)
+        m.t0 = t
+        m.t1 = t = t + m.prof.duration * TICKS_PER_S
+        m.feed = m.prof.v * 60.0
+        v_in = v_out
