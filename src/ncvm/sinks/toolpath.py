@@ -37,10 +37,9 @@ class ToolpathRecorder(CanonSink):
     def __init__(self):
         self.axis_names: tuple[str, ...] = ()
         self.start_point: tuple = ()
-        self.kinds: list[int] = []
-        self.ends: list[tuple] = []
-        self.lines: list[int] = []
-        self.tools: list[int] = []
+        #: one (kind, end, line, tool) row per move: a single append on the hot path
+        self.moves: list[tuple] = []
+        self._add = self.moves.append
         self.arcs: dict[int, ArcSpec] = {}
         self.arc_length = 0.0
         self.arc_extent: list[list[float]] | None = None  # per axis [lo, hi]
@@ -51,23 +50,14 @@ class ToolpathRecorder(CanonSink):
         self.start_point = tuple(start)
 
     def rapid(self, start, end, src: Src):
-        self.kinds.append(RAPID)
-        self.ends.append(end)
-        self.lines.append(src.line)
-        self.tools.append(self.tool)
+        self._add((RAPID, end, src.line, self.tool))
 
     def feed(self, start, end, feed, src: Src):
-        self.kinds.append(FEED)
-        self.ends.append(end)
-        self.lines.append(src.line)
-        self.tools.append(self.tool)
+        self._add((FEED, end, src.line, self.tool))
 
     def arc(self, start, end, spec: ArcSpec, feed, src: Src):
-        self.arcs[len(self.kinds)] = spec
-        self.kinds.append(ARC)
-        self.ends.append(end)
-        self.lines.append(src.line)
-        self.tools.append(self.tool)
+        self.arcs[len(self.moves)] = spec
+        self._add((ARC, end, src.line, self.tool))
         a, b = spec.a, spec.b
         ca, cb = spec.center
         angle = arcs.sweep(start[a], start[b], end[a], end[b], ca, cb, spec.cw, spec.turns)
@@ -84,13 +74,35 @@ class ToolpathRecorder(CanonSink):
         self.tool = tool
 
     # -- results ---------------------------------------------------------
+    def __len__(self) -> int:
+        """Moves recorded so far (the CLI's progress line reads this while the program runs)."""
+        return len(self.moves)
+
+    @property
+    def kinds(self) -> list[int]:
+        return [row[0] for row in self.moves]
+
+    @property
+    def ends(self) -> list[tuple]:
+        return [row[1] for row in self.moves]
+
+    @property
+    def lines(self) -> list[int]:
+        return [row[2] for row in self.moves]
+
+    @property
+    def tools(self) -> list[int]:
+        return [row[3] for row in self.moves]
+
     def arrays(self) -> dict[str, np.ndarray]:
         n_axes = len(self.axis_names)
-        ends = np.asarray(self.ends, dtype=float).reshape(-1, n_axes)
+        moves = self.moves
+        kinds, ends, lines, tools = zip(*moves) if moves else ((), (), (), ())
+        ends = np.asarray(ends, dtype=float).reshape(-1, n_axes)
         starts = np.vstack([np.asarray(self.start_point, dtype=float).reshape(1, n_axes), ends[:-1]]) if len(
             ends) else ends
-        return {"kind": np.asarray(self.kinds, dtype=np.int8), "start": starts, "end": ends,
-                "tool": np.asarray(self.tools, dtype=np.int32), "line": np.asarray(self.lines, dtype=np.int32)}
+        return {"kind": np.asarray(kinds, dtype=np.int8), "start": starts, "end": ends,
+                "tool": np.asarray(tools, dtype=np.int32), "line": np.asarray(lines, dtype=np.int32)}
 
     def summary(self) -> MotionSummary:
         arr = self.arrays()
