@@ -37,10 +37,12 @@ class ToolpathRecorder(CanonSink):
     def __init__(self):
         self.axis_names: tuple[str, ...] = ()
         self.start_point: tuple = ()
-        #: one (kind, end, line, tool) row per move: a single append on the hot path
+        #: one (kind, end, src, tool) row per move: a single append on the hot path
         self.moves: list[tuple] = []
         self._add = self.moves.append
         self.arcs: dict[int, ArcSpec] = {}
+        #: move index -> (a, b, lo_a, hi_a, lo_b, hi_b): where each arc reaches in its plane (limit check)
+        self.arc_bounds: dict[int, tuple] = {}
         self.arc_length = 0.0
         self.arc_extent: list[list[float]] | None = None  # per axis [lo, hi]
         self.tool = 0
@@ -50,20 +52,22 @@ class ToolpathRecorder(CanonSink):
         self.start_point = tuple(start)
 
     def rapid(self, start, end, src: Src):
-        self._add((RAPID, end, src.line, self.tool))
+        self._add((RAPID, end, src, self.tool))
 
     def feed(self, start, end, feed, src: Src):
-        self._add((FEED, end, src.line, self.tool))
+        self._add((FEED, end, src, self.tool))
 
     def arc(self, start, end, spec: ArcSpec, feed, src: Src):
-        self.arcs[len(self.moves)] = spec
-        self._add((ARC, end, src.line, self.tool))
+        index = len(self.moves)
+        self.arcs[index] = spec
+        self._add((ARC, end, src, self.tool))
         a, b = spec.a, spec.b
         ca, cb = spec.center
         angle = arcs.sweep(start[a], start[b], end[a], end[b], ca, cb, spec.cw, spec.turns)
         helix = math.sqrt(sum((e - s) ** 2 for i, (s, e) in enumerate(zip(start, end)) if i not in (a, b)))
         self.arc_length += arcs.arc_length(spec.radius, angle, helix)
         lo_a, hi_a, lo_b, hi_b = arcs.arc_plane_extent(start[a], start[b], ca, cb, spec.radius, angle)
+        self.arc_bounds[index] = (a, b, lo_a, hi_a, lo_b, hi_b)
         ext = self.arc_extent
         if ext is None:
             ext = self.arc_extent = [[math.inf, -math.inf] for _ in self.axis_names]
@@ -88,7 +92,15 @@ class ToolpathRecorder(CanonSink):
 
     @property
     def lines(self) -> list[int]:
+        return [row[2].line for row in self.moves]
+
+    @property
+    def srcs(self) -> list[Src]:
         return [row[2] for row in self.moves]
+
+    def end_array(self) -> np.ndarray:
+        """End point of every move, one row per move."""
+        return np.asarray([row[1] for row in self.moves], dtype=float).reshape(-1, len(self.axis_names))
 
     @property
     def tools(self) -> list[int]:
@@ -97,8 +109,9 @@ class ToolpathRecorder(CanonSink):
     def arrays(self) -> dict[str, np.ndarray]:
         n_axes = len(self.axis_names)
         moves = self.moves
-        kinds, ends, lines, tools = zip(*moves) if moves else ((), (), (), ())
+        kinds, ends, srcs, tools = zip(*moves) if moves else ((), (), (), ())
         ends = np.asarray(ends, dtype=float).reshape(-1, n_axes)
+        lines = [src.line for src in srcs]
         starts = np.vstack([np.asarray(self.start_point, dtype=float).reshape(1, n_axes), ends[:-1]]) if len(
             ends) else ends
         return {"kind": np.asarray(kinds, dtype=np.int8), "start": starts, "end": ends,
