@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from itertools import chain
 from dataclasses import dataclass
 
 import numpy as np
@@ -46,6 +47,7 @@ class ToolpathRecorder(CanonSink):
         self.arc_length = 0.0
         self.arc_extent: list[list[float]] | None = None  # per axis [lo, hi]
         self.tool = 0
+        self._arrays: tuple[int, dict] | None = None  # (number of moves, arrays()) of the last call
 
     def begin(self, axis_names, start):
         self.axis_names = tuple(axis_names)
@@ -99,23 +101,27 @@ class ToolpathRecorder(CanonSink):
         return [row[2] for row in self.moves]
 
     def end_array(self) -> np.ndarray:
-        """End point of every move, one row per move."""
-        return np.asarray([row[1] for row in self.moves], dtype=float).reshape(-1, len(self.axis_names))
+        """End point of every move, one row per move (shared with :meth:`arrays`: do not modify it)."""
+        return self.arrays()["end"]
 
     @property
     def tools(self) -> list[int]:
         return [row[3] for row in self.moves]
 
     def arrays(self) -> dict[str, np.ndarray]:
-        n_axes = len(self.axis_names)
+        """The moves as numpy columns; built once per number of moves (summary, limit check and plot share it)."""
         moves = self.moves
-        kinds, ends, srcs, tools = zip(*moves) if moves else ((), (), (), ())
-        ends = np.asarray(ends, dtype=float).reshape(-1, n_axes)
-        lines = [src.line for src in srcs]
-        starts = np.vstack([np.asarray(self.start_point, dtype=float).reshape(1, n_axes), ends[:-1]]) if len(
-            ends) else ends
-        return {"kind": np.asarray(kinds, dtype=np.int8), "start": starts, "end": ends,
-                "tool": np.asarray(tools, dtype=np.int32), "line": np.asarray(lines, dtype=np.int32)}
+        if self._arrays is not None and self._arrays[0] == len(moves):
+            return self._arrays[1]
+        n, n_axes = len(moves), len(self.axis_names)
+        ends = np.fromiter(chain.from_iterable(row[1] for row in moves), dtype=float, count=n * n_axes)
+        ends = ends.reshape(n, n_axes)
+        starts = np.vstack([np.asarray(self.start_point, dtype=float).reshape(1, n_axes), ends[:-1]]) if n else ends
+        arr = {"kind": np.fromiter((row[0] for row in moves), dtype=np.int8, count=n), "start": starts, "end": ends,
+               "tool": np.fromiter((row[3] for row in moves), dtype=np.int32, count=n),
+               "line": np.fromiter((row[2].line for row in moves), dtype=np.int32, count=n)}
+        self._arrays = (n, arr)
+        return arr
 
     def summary(self) -> MotionSummary:
         arr = self.arrays()
