@@ -85,7 +85,7 @@ class _Progress:
                 if s is not None:
                     # front ends that count steps in batches (din) report them only at the end
                     steps = f"{s.steps.steps:,} steps, " if s.steps.steps else ""
-                    status.update(f"running: {steps}{len(s.recorder.kinds):,} moves, "
+                    status.update(f"running: {steps}{len(s.recorder):,} moves, "
                                   f"{s.machine.clock.now:.1f} s machine time")
 
     def __exit__(self, *exc):

@@ -120,10 +120,23 @@ def _strip_comments(line: str):
 
 
 def read_din_program(path: str, text: str) -> tuple[list[tuple[Block, bool]], list[Diagnostic]]:
-    """Read a whole plain DIN program: (block, block-skip flag) per executable line, plus diagnostics."""
+    """Read a whole plain DIN program: (block, block-skip flag) per executable line, plus diagnostics.
+
+    Per-line regex calls dominate reading a large program, so the whole text is
+    cut into words by one regex pass (:func:`_plain_lines`); only the few lines
+    that are more than bare words (comments, block skip, ``%``, an address
+    twice, errors) go through :func:`parse_din_line`. Both give the same blocks.
+    """
+    lines = text.splitlines()
+    plain = _plain_lines(text, path)
     blocks: list[tuple[Block, bool]] = []
     diags: list[Diagnostic] = []
-    for lineno, line in enumerate(text.splitlines(), 1):
+    for lineno, line in enumerate(lines, 1):
+        blk = plain.get(lineno, _GENERAL) if plain is not None else _GENERAL
+        if blk is not _GENERAL:
+            if blk is not None:
+                blocks.append((blk, False))
+            continue
         stripped = line.lstrip()
         skip = stripped.startswith("/")
         if skip:
@@ -136,3 +149,53 @@ def read_din_program(path: str, text: str) -> tuple[list[tuple[Block, bool]], li
         if blk is not None:
             blocks.append((blk, skip))
     return blocks, diags
+
+
+#: marks a line that the general line parser must read
+_GENERAL = object()
+#: a word, a line end, or any other visible character (which sends its line to the general parser)
+_TOKEN = re.compile(r"([A-Z])[ \t]*([-+]?(?:\d+\.?\d*|\.\d+))|(\n)|[^ \t]")
+#: line breaks of str.splitlines other than \n: texts with these are read line by line
+_ODD_BREAKS = re.compile("[\r\x0b\x0c\x1c\x1d\x1e\x85\u2028\u2029]")
+
+
+def _plain_lines(text: str, path: str) -> dict | None:
+    """Block (or None for an empty line) per line number of every line that is nothing but words.
+
+    Lines missing from the result need :func:`parse_din_line`. None when the
+    text has line breaks other than LF / CRLF (then every line goes there).
+    """
+    text = text.replace("\r\n", "\n")
+    if _ODD_BREAKS.search(text):
+        return None
+    out: dict[int, Block | None] = {}
+    lineno = 1
+    g: list = []
+    m: list = []
+    words: dict[str, float] = {}
+    nno = None
+    general = False
+    for letter, num, newline in _TOKEN.findall(text.upper()):
+        if letter:
+            if letter == "G":
+                v = float(num)
+                g.append(int(v) if v == int(v) else v)
+            elif letter == "M":
+                m.append(int(float(num)))
+            elif letter == "N":
+                nno = int(float(num))
+            elif letter in words:
+                general = True  # an address twice: the general parser reports it
+            else:
+                words[letter] = float(num)
+            continue
+        if not newline:
+            general = True
+            continue
+        if not general:
+            out[lineno] = Block(tuple(g), tuple(m), words, nno, None, Src(path, lineno)) if g or m or words else None
+        lineno += 1
+        g, m, words, nno, general = [], [], {}, None, False
+    if not general:
+        out[lineno] = Block(tuple(g), tuple(m), words, nno, None, Src(path, lineno)) if g or m or words else None
+    return out

@@ -178,7 +178,10 @@ class NcKernel:
             self._set_position(words)
         else:
             self.motion = motion
-            self._move(motion, words, machine_coords, src)
+            if motion < 2 and not machine_coords:
+                self._linear(self, motion, words, src)  # the common case, without the _move call
+            else:
+                self._move(motion, words, machine_coords, src)
         for mc in block.m:
             self._m_after(mc, src)
 

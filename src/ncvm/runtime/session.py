@@ -50,8 +50,8 @@ class Session:
         self.variables: dict[str, Any] = {}
         self.steps = StepCounter(self.options.max_steps, self.options.hook)
         self.recorder = ToolpathRecorder()
-        self.limits = LimitCheck(machine.axes)
-        sinks: list[CanonSink] = [self.recorder, self.limits]
+        self.limits = LimitCheck(machine.axes, self.recorder)  # reads the recorded moves at the end
+        sinks: list[CanonSink] = [self.recorder]
         if self.options.trace:
             from ..sinks.trace import JsonlTrace
             sinks.append(JsonlTrace(self.options.trace))

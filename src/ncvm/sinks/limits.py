@@ -1,12 +1,16 @@
-"""Travel-limit check: the first block whose motion leaves an axis's soft limits."""
+"""Travel-limit check: the first block whose motion leaves an axis's soft limits.
+
+The check reads the toolpath recorder's moves once, at the end, with numpy,
+instead of being a canon sink called on every move: straight moves are
+tested by their end points (the start was the previous end), arcs by the
+extent they reach in their plane.
+"""
 
 from __future__ import annotations
 
 from dataclasses import dataclass
-from operator import le
 
-from ..nc import arcs
-from ..nc.canon import CanonSink
+import numpy as np
 
 
 @dataclass
@@ -23,43 +27,43 @@ class LimitViolation:
                 f"(first at {self.file}:{self.line})")
 
 
-class LimitCheck(CanonSink):
-    """Remembers the first violation per axis; the run goes on (the report says where)."""
+class LimitCheck:
+    """The first violation per axis among the moves of ``recorder`` (the run goes on; the report says where)."""
 
-    def __init__(self, axes):
+    def __init__(self, axes, recorder):
         self.axes = axes
-        self.violations: dict[str, LimitViolation] = {}
+        self.recorder = recorder
         self._mins = tuple(ax.min - 1e-9 for ax in axes)
         self._maxs = tuple(ax.max + 1e-9 for ax in axes)
 
-    def _check(self, lo, hi, src):
+    def _reach(self) -> tuple[np.ndarray, np.ndarray]:
+        """Lowest and highest point of every move per axis: the end point, widened by arcs in their plane."""
+        lo = self.recorder.end_array().copy()
+        hi = lo.copy()
+        for index, (a, b, lo_a, hi_a, lo_b, hi_b) in self.recorder.arc_bounds.items():
+            lo[index, a], hi[index, a], lo[index, b], hi[index, b] = lo_a, hi_a, lo_b, hi_b
+        return lo, hi
+
+    @property
+    def violations(self) -> dict[str, LimitViolation]:
+        """Axis name -> its first violation, in the order they happened (move, then axis order)."""
+        if not self.recorder.moves:
+            return {}
+        lo, hi = self._reach()
+        found = []
         for i, ax in enumerate(self.axes):
-            if ax.name in self.violations:
+            below = lo[:, i] < self._mins[i]
+            bad = below | (hi[:, i] > self._maxs[i])
+            if not bad.any():
                 continue
-            if lo[i] < self._mins[i]:
-                self.violations[ax.name] = LimitViolation(ax.name, lo[i], ax.min, src.file, src.line)
-            elif hi[i] > self._maxs[i]:
-                self.violations[ax.name] = LimitViolation(ax.name, hi[i], ax.max, src.file, src.line)
-
-    def begin(self, axis_names, start):
-        pass
-
-    def rapid(self, start, end, src):
-        # a straight move stays inside the box when its end point does (the start was checked before)
-        if not (all(map(le, self._mins, end)) and all(map(le, end, self._maxs))):
-            self._check(end, end, src)
-
-    def feed(self, start, end, feed, src):
-        self.rapid(start, end, src)
-
-    def arc(self, start, end, spec, feed, src):
-        a, b = spec.a, spec.b
-        ca, cb = spec.center
-        angle = arcs.sweep(start[a], start[b], end[a], end[b], ca, cb, spec.cw, spec.turns)
-        lo_a, hi_a, lo_b, hi_b = arcs.arc_plane_extent(start[a], start[b], ca, cb, spec.radius, angle)
-        lo, hi = list(end), list(end)
-        lo[a], hi[a], lo[b], hi[b] = lo_a, hi_a, lo_b, hi_b
-        self._check(lo, hi, src)
+            k = int(bad.argmax())
+            src = self.recorder.moves[k][2]
+            if below[k]:
+                found.append((k, i, LimitViolation(ax.name, float(lo[k, i]), ax.min, src.file, src.line)))
+            else:
+                found.append((k, i, LimitViolation(ax.name, float(hi[k, i]), ax.max, src.file, src.line)))
+        found.sort(key=lambda f: (f[0], f[1]))
+        return {v.axis: v for _, _, v in found}
 
     def first(self) -> list[LimitViolation]:
         return sorted(self.violations.values(), key=lambda v: v.line)
