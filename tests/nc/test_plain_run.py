@@ -16,7 +16,7 @@ import numpy as np
 import pytest
 
 from ncvm.api import run
-from ncvm.nc.block import PlainRun, read_din_segments
+from ncvm.nc.block import PlainRun, read_din_program, read_din_segments
 from ncvm.runtime.session import RunOptions
 
 PLANE_AXES = {17: (0, 1, "IJ"), 18: (2, 0, "KI"), 19: (1, 2, "JK")}
@@ -195,3 +195,29 @@ def test_hand_computed_run(tmp_path):
     # the lines move one axis each; the arc is timed as a move of its length shared by both plane axes
     expected = trapezoid(10, acc) + trapezoid(arc, acc * math.sqrt(2)) + trapezoid(10, acc)
     assert result["cycle_time_s"] == pytest.approx(expected)
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_queued_blocks_as_segments(tmp_path, seed):
+    """A motion queue (as CPL drains it) executed as segments gives the moves of executing it block by block."""
+    from ncvm.machine.config import load_machine
+    from ncvm.nc.canon import Src
+    from ncvm.nc.plainrun import execute_segments, plain_segments
+    from ncvm.runtime.session import Session
+
+    blocks = [blk for blk, _skip in read_din_program("p.ngc", random_program(seed))[0]]
+    # blocks from a second file in the middle, as a called sub-program adds them
+    for blk in blocks[40:60]:
+        blk.src = Src("sub.cpl", blk.src.line)
+    sessions = [Session(load_machine(), RunOptions(state_dir=tmp_path / name)) for name in "ab"]
+    segments = plain_segments(blocks)
+    runs = [s for s in segments if isinstance(s, PlainRun)]
+    assert len(runs) >= 3 and {r.file for r in runs} == {"p.ngc", "sub.cpl"}
+    execute_segments(sessions[0].kernel, segments)
+    for blk in blocks:
+        if sessions[1].kernel.ended:
+            break
+        sessions[1].kernel.execute(blk)
+    _same_recordings(sessions[0].recorder, sessions[1].recorder)
+    assert sessions[0].machine.clock.now == pytest.approx(sessions[1].machine.clock.now, rel=1e-12)
+    assert sessions[0].kernel.prog == pytest.approx(sessions[1].kernel.prog, abs=1e-9)

@@ -20,11 +20,13 @@ radius, an arc without centre words) is left to the caller, who hands it to
 from __future__ import annotations
 
 import math
+from itertools import repeat
+from operator import attrgetter
 
 import numpy as np
 
 from . import arcs
-from .block import PlainRun
+from .block import PLAIN_WORDS, PlainRun
 from .canon import ArcSpec, MoveBatch
 
 RAPID, FEED, ARC = 0, 1, 2
@@ -257,3 +259,63 @@ def _extent(sa, sb, ca, cb, r, a0, angle) -> np.ndarray:
     full = np.abs(angle) >= arcs.TWO_PI - 1e-12
     return np.column_stack((np.where(full, ca - r, lo_a), np.where(full, ca + r, hi_a),
                             np.where(full, cb - r, lo_b), np.where(full, cb + r, hi_b)))
+
+
+#: the G codes a plain block may carry, and the addresses it may have words for
+PLAIN_G = frozenset({(), (0,), (1,), (2,), (3,)})
+PLAIN_ADDRESSES = frozenset(PLAIN_WORDS)
+_WORDS, _G, _M, _MSG = attrgetter("words"), attrgetter("g"), attrgetter("m"), attrgetter("msg")
+_FILE, _LINE, _N = attrgetter("src.file"), attrgetter("src.line"), attrgetter("n")
+
+
+def plain_segments(blocks: list) -> list:
+    """Blocks built at run time (a CPL motion queue) as segments: :class:`PlainRun` stretches and single blocks.
+
+    A block is plain when it has no G code but a motion code, no M code or
+    message, and words only for :data:`PLAIN_WORDS`; a stretch of them from one
+    file becomes a run. Other blocks stay as they are. The tests are mapped
+    over the whole list at once: this runs for every block a program queues.
+    """
+    words = list(map(_WORDS, blocks))
+    files = list(map(_FILE, blocks))
+    plain = [gok and wok and not m and msg is None for gok, wok, m, msg in
+             zip(map(PLAIN_G.__contains__, map(_G, blocks)), map(PLAIN_ADDRESSES.issuperset, words),
+                 map(_M, blocks), map(_MSG, blocks))]
+    out: list = []
+    start = None  # first block of the run being collected
+    for i, ok in enumerate(plain):
+        if start is not None and (not ok or files[i] != files[start]):
+            out.append(_columns(blocks, words, start, i))
+            start = None
+        if not ok:
+            out.append(blocks[i])
+        elif start is None:
+            start = i
+    if start is not None:
+        out.append(_columns(blocks, words, start, len(blocks)))
+    return out
+
+
+def _columns(blocks, words, lo: int, hi: int) -> PlainRun:
+    blocks, words = blocks[lo:hi], words[lo:hi]
+    n = hi - lo
+    used = set().union(*words)
+    columns = {a: np.fromiter(map(dict.get, words, repeat(a), repeat(math.nan)), float, n) if a in used
+               else np.full(n, math.nan) for a in PLAIN_WORDS}
+    g = np.array([t[0] if t else -1 for t in map(_G, blocks)], dtype=np.int64)
+    numbers = tuple("" if v is None else str(v) for v in map(_N, blocks))
+    return PlainRun(blocks[0].src.file, np.fromiter(map(_LINE, blocks), np.int64, n), numbers, g, columns)
+
+
+def execute_segments(kernel, segments) -> None:
+    """Execute what :func:`plain_segments` made, runs column-wise and other blocks one by one, until program end."""
+    for seg in segments:
+        if kernel.ended:
+            return
+        if isinstance(seg, PlainRun):
+            lo, hi = 0, len(seg)
+            while (bad := execute_columns(kernel, seg, lo, hi)) is not None:
+                kernel.execute(seg.block(bad))  # a block that faults: the kernel says how
+                lo = bad + 1
+        else:
+            kernel.execute(seg)

@@ -20,6 +20,7 @@ from ...diagnostics import Frame, RuntimeFault, Span
 from ...machine.model import PlcImage, SimClock
 from ...nc.block import Block, DinSyntaxError, parse_din_line
 from ...nc.canon import Canon, Src
+from ...nc.plainrun import execute_segments, plain_segments
 from . import values as V
 from .builtins import FUNCTIONS
 from .codegen import HELPER_NAMES, generate
@@ -338,15 +339,10 @@ class CplRuntime:
     def drain(self) -> None:
         """WAIT without parameters: stop preparation until every block before it has been executed."""
         q = self.queue
-        execute = self.kernel.execute
-        kernel = self.kernel
         self.executed += len(q)
-        while q:
-            blk = q.popleft()
-            if kernel.ended:
-                q.clear()
-                break
-            execute(blk)
+        blocks = list(q)
+        q.clear()
+        execute_segments(self.kernel, plain_segments(blocks))
         self.t_prep = max(self.t_prep, self.machine.clock.now)
 
     def prepared_kernel(self):
