@@ -147,14 +147,17 @@ class PlainRun:
 
     file: str
     lines: np.ndarray  # int, physical line of each block
-    numbers: tuple  # N number of each block as written ("" without one)
+    numbers: tuple  # N number of each block as written ("" without one); () when made of blocks
     g: np.ndarray  # int, motion G code 0..3 or -1
     words: dict  # address -> float column
+    origin: list | None = None  # the Block objects the run was made of, when it was made of blocks
 
     def __len__(self) -> int:
         return len(self.lines)
 
     def block(self, i: int) -> Block:
+        if self.origin is not None:
+            return self.origin[i]
         g = int(self.g[i])
         words = {a: float(col[i]) for a, col in self.words.items() if not math.isnan(col[i])}
         n = int(self.numbers[i]) if self.numbers[i] else None

@@ -265,7 +265,7 @@ def _extent(sa, sb, ca, cb, r, a0, angle) -> np.ndarray:
 PLAIN_G = frozenset({(), (0,), (1,), (2,), (3,)})
 PLAIN_ADDRESSES = frozenset(PLAIN_WORDS)
 _WORDS, _G, _M, _MSG = attrgetter("words"), attrgetter("g"), attrgetter("m"), attrgetter("msg")
-_FILE, _LINE, _N = attrgetter("src.file"), attrgetter("src.line"), attrgetter("n")
+_FILE, _LINE = attrgetter("src.file"), attrgetter("src.line")
 
 
 def plain_segments(blocks: list) -> list:
@@ -303,8 +303,7 @@ def _columns(blocks, words, lo: int, hi: int) -> PlainRun:
     columns = {a: np.fromiter(map(dict.get, words, repeat(a), repeat(math.nan)), float, n) if a in used
                else np.full(n, math.nan) for a in PLAIN_WORDS}
     g = np.array([t[0] if t else -1 for t in map(_G, blocks)], dtype=np.int64)
-    numbers = tuple("" if v is None else str(v) for v in map(_N, blocks))
-    return PlainRun(blocks[0].src.file, np.fromiter(map(_LINE, blocks), np.int64, n), numbers, g, columns)
+    return PlainRun(blocks[0].src.file, np.fromiter(map(_LINE, blocks), np.int64, n), (), g, columns, blocks)
 
 
 def execute_segments(kernel, segments) -> None:
