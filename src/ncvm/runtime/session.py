@@ -111,7 +111,7 @@ class Session:
             "position": self.kernel.workpiece_position(),
             "motion": motion.to_json(),
             "cycle_time_s": self.machine.clock.now,
-            "steps": self.steps.steps,
+            "steps": min(self.steps.steps, self.steps.limit),  # a runaway is caught just past the limit
             "limit_violations": [v.message() for v in self.limits.first()],
         }
         if error:

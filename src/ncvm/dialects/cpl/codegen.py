@@ -57,6 +57,10 @@ class Gen:
         self.fields = ln.fields
         self.cur = None
         self.max_param = 0
+        #: statements counted into _n ahead of time but not yet executed, while a stretch is emitted
+        self._ahead = 0
+        #: generated body line index -> that number, for the lines where it is not 0 (see generate)
+        self.ahead_at: dict[int, int] = {}
 
     # -- names -----------------------------------------------------------------
     def local(self, v: VarName) -> str:
@@ -774,63 +778,73 @@ class Gen:
             self.emit(f"_n += {k}")
         i = a
         pair = self.ln.pair
+        outer, remaining = self._ahead, k
         while i < b:
             s = self.stmts[i]
             self.cur = s
             t = type(s)
-            if t is A.If:
-                info = pair[i]
-                cond = self.condition(s.cond)
-                with self.src.block(f"if {cond}:", s.line):
-                    self.structured(i + 1, info["else"] if info["else"] is not None else info["end"])
-                if info["else"] is not None:
-                    with self.src.block("else:", self.stmts[info["else"]].line):
-                        self.structured(info["else"] + 1, info["end"])
-                i = info["end"] + 1
-            elif t is A.Case:
-                info = pair[i]
-                sel = self.temp("c")
-                code, ty = self.ex(s.expr)
-                if ty not in ("I", "?"):
-                    raise GenError("CPL032", f"CASE needs an INTEGER expression, not {_tname(ty)}")
-                self.emit(f"{sel} = _caseval({code})", s.line)
-                arms = info["arms"]
-                bounds = arms + ([info["otherwise"]] if info["otherwise"] is not None else []) + [info["end"]]
-                kw = "if"
-                for j, arm in enumerate(arms):
-                    vals = self.stmts[arm].values
-                    test = f"{sel} == {vals[0]}" if len(vals) == 1 else f"{sel} in {tuple(vals)!r}"
-                    with self.src.block(f"{kw} {test}:", self.stmts[arm].line):
-                        self.structured(arm + 1, bounds[j + 1])
-                    kw = "elif"
-                if info["otherwise"] is not None:
-                    ow = info["otherwise"]
-                    with self.src.block("else:" if arms else "if True:", self.stmts[ow].line):
-                        self.structured(ow + 1, info["end"])
-                i = info["end"] + 1
-            elif t is A.For:
-                end = pair[i]["end"]
-                self.for_loop(i, s, end)
-                i = end + 1
-            elif t is A.While:
-                end = pair[i]["end"]
-                cond = self.condition(s.cond)
-                with self.src.block(f"while {cond}:", s.line):
-                    self.structured(i + 1, end, extra=1)
-                    self.emit(f"if _n > _lim: _runaway({s.line})", self.stmts[end].line)
-                i = end + 1
-            elif t is A.Repeat:
-                end = pair[i]["end"]
-                with self.src.block("while True:", s.line):
-                    self.structured(i + 1, end)
-                    self.emit(f"if _n > _lim: _runaway({s.line})", self.stmts[end].line)
-                    self.emit(f"if {self.condition(self.stmts[end].cond)}: break", self.stmts[end].line)
-                i = end + 1
-            elif t in (A.Else, A.EndIf, A.CaseLabel, A.Otherwise, A.EndCase, A.Next, A.WEnd, A.Until):
-                i += 1
-            else:
-                self.simple(i, s)
-                i += 1
+            if t is not A.LabelDef:
+                remaining -= 1
+            self._ahead = ahead = outer + remaining
+            first = len(self.src.lines)
+            self._structured_one(i, s, t, pair)
+            if ahead:  # lines of nested stretches already carry their own (larger) figure
+                for j in range(first, len(self.src.lines)):
+                    self.ahead_at.setdefault(j, ahead)
+            i = self._next_index(i, t, pair)
+        self._ahead = outer
+
+    @staticmethod
+    def _next_index(i: int, t, pair) -> int:
+        return pair[i]["end"] + 1 if t in (A.If, A.Case, A.For, A.While, A.Repeat) else i + 1
+
+    def _structured_one(self, i: int, s, t, pair) -> None:
+        """One statement of a stretch (a whole structure for IF, CASE and the loops)."""
+        if t is A.If:
+            info = pair[i]
+            cond = self.condition(s.cond)
+            with self.src.block(f"if {cond}:", s.line):
+                self.structured(i + 1, info["else"] if info["else"] is not None else info["end"])
+            if info["else"] is not None:
+                with self.src.block("else:", self.stmts[info["else"]].line):
+                    self.structured(info["else"] + 1, info["end"])
+        elif t is A.Case:
+            info = pair[i]
+            sel = self.temp("c")
+            code, ty = self.ex(s.expr)
+            if ty not in ("I", "?"):
+                raise GenError("CPL032", f"CASE needs an INTEGER expression, not {_tname(ty)}")
+            self.emit(f"{sel} = _caseval({code})", s.line)
+            arms = info["arms"]
+            bounds = arms + ([info["otherwise"]] if info["otherwise"] is not None else []) + [info["end"]]
+            kw = "if"
+            for j, arm in enumerate(arms):
+                vals = self.stmts[arm].values
+                test = f"{sel} == {vals[0]}" if len(vals) == 1 else f"{sel} in {tuple(vals)!r}"
+                with self.src.block(f"{kw} {test}:", self.stmts[arm].line):
+                    self.structured(arm + 1, bounds[j + 1])
+                kw = "elif"
+            if info["otherwise"] is not None:
+                ow = info["otherwise"]
+                with self.src.block("else:" if arms else "if True:", self.stmts[ow].line):
+                    self.structured(ow + 1, info["end"])
+        elif t is A.For:
+            end = pair[i]["end"]
+            self.for_loop(i, s, end)
+        elif t is A.While:
+            end = pair[i]["end"]
+            cond = self.condition(s.cond)
+            with self.src.block(f"while {cond}:", s.line):
+                self.structured(i + 1, end, extra=1)
+                self.emit(f"if _n > _lim: _runaway({s.line})", self.stmts[end].line)
+        elif t is A.Repeat:
+            end = pair[i]["end"]
+            with self.src.block("while True:", s.line):
+                self.structured(i + 1, end)
+                self.emit(f"if _n > _lim: _runaway({s.line})", self.stmts[end].line)
+                self.emit(f"if {self.condition(self.stmts[end].cond)}: break", self.stmts[end].line)
+        elif t not in (A.Else, A.EndIf, A.CaseLabel, A.Otherwise, A.EndCase, A.Next, A.WEnd, A.Until):
+            self.simple(i, s)
 
     def condition(self, e) -> str:
         code, ty = self.ex(e)
@@ -1048,6 +1062,8 @@ class Gen:
         src._indent = 1
         for name in HELPER_NAMES:
             src.emit(f"{name} = _H[{name!r}]")
+        ahead_line = len(src.lines)
+        src.emit("_AHEAD = {}")  # filled in below, once the body's place is known
         src.emit("def unit(P, _main):")
         src._indent = 2
         for name in sorted(set(self.locals.values())):
@@ -1057,16 +1073,25 @@ class Gen:
         src.emit("_n = 0")
         src.emit("_lim = _st.limit - _st.steps")
         src.emit("try:")
+        first = len(src.lines) + 1  # Python line number of the body's first line
         for text, ln in zip(body.lines, body.line_map):
             src.lines.append(text)
             src.line_map.append(ln)
         if not body.lines:
             src.emit("    pass")
-        src.emit("except _EP:")
-        src.emit("    pass")
-        src.emit("_st.steps += _n")
+        # a fault leaves out of the steps the statements counted ahead of it (_AHEAD, by Python line)
+        src.lines[ahead_line] = src.lines[ahead_line].replace(
+            "{}", repr({first + j: k for j, k in sorted(self.ahead_at.items())}))
         report = sorted(((py, v.display) for v, py in self.locals.items()), key=lambda x: x[1])
         items = ", ".join(f"{shown!r}: {py}" for py, shown in report)
+        src.emit("except _EP:")
+        src.emit("    pass")
+        src.emit("except BaseException as _e:")
+        src.emit("    _n -= _AHEAD.get(_e.__traceback__.tb_lineno, 0)")
+        src.emit(f"    if _main: _rt.fault_locals = {{{items}}}  # what the main program held when it faulted")
+        src.emit("    raise")
+        src.emit("finally:")
+        src.emit("    _st.steps += _n")
         src.emit(f"return {{{items}}}")
         src._indent = 1
         src.emit("return unit")

@@ -77,6 +77,8 @@ class CplRuntime:
         self._events = [e for e in self.machine.scenario if e.kind == "input"]
         self._next_event = 0
         self.ctl = load_controller(self.machine, lambda: session.store)  # chapter 4 controller state
+        #: the main program's local variables at a fault (generated code fills it in)
+        self.fault_locals: dict = {}
         self.sys_procs = {name: row[0] for name, row in SYSTEM_PROCS.items()}
         system_setup(self)
         self._probing = any(getattr(w, "address", None) == "G" and (w.value == 75 or w.expr is not None)
@@ -158,7 +160,7 @@ class CplRuntime:
             try:
                 result = self.unit(main)((), True)
             finally:
-                self.session.variables = self.report(result)
+                self.session.variables = self.report(result or self.fault_locals)
             self.drain()
             self.io.end_program(png=self.session.options.screen)
             self.kernel.end_program(Src(main, max(1, len(self.linked.main.prog.stmts) and
