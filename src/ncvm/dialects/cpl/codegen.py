@@ -14,6 +14,7 @@ from .builtins import FUNCTIONS
 from .errors import diag
 from .lexer import VarName
 from .system import SYSTEM_PROCS
+from .system.gfuncs import TYP3_G
 from .values import f32
 
 #: parameter Pn seen through its suffix (digest §4.8): the conversion applied to the passed value
@@ -714,13 +715,14 @@ class Gen:
         queued = bool(g_const or m_const or words_const or g_dyn or m_dyn or words_dyn or s.loose or s.msg is not None)
         if queued:
             dynamic = bool(g_dyn or m_dyn or words_dyn or s.loose)
+            enqueue = "_q3" if g_dyn or s.loose or TYP3_G.intersection(g_const) else "_q"
             if not dynamic:
                 blk = self.const(("block", tuple(g_const), tuple(m_const), dict(words_const), s.n, s.msg, line))
                 if ends and m_sub != m_const:
                     blk_sub = self.const(("block", tuple(g_const), tuple(m_sub), dict(words_const), s.n, s.msg, line))
-                    self.emit(f"_q({blk} if _main else {blk_sub})", line)
+                    self.emit(f"{enqueue}({blk} if _main else {blk_sub})", line)
                 else:
-                    self.emit(f"_q({blk})", line)
+                    self.emit(f"{enqueue}({blk})", line)
             else:
                 g = "(" + ", ".join([repr(x) for x in g_const] + g_dyn) + ("," if (g_const or g_dyn) else "") + ")"
                 m_list = [repr(x) for x in m_const]
@@ -734,9 +736,9 @@ class Gen:
                 words = "{" + ", ".join(items) + "}"
                 if s.loose:
                     loose = "(" + ", ".join(self.arg(x) for x in s.loose) + ",)"
-                    self.emit(f"_q(_loose({g}, {m}, {words}, {loose}, {s.n!r}, {s.msg!r}, {src}))", line)
+                    self.emit(f"{enqueue}(_loose({g}, {m}, {words}, {loose}, {s.n!r}, {s.msg!r}, {src}))", line)
                 else:
-                    self.emit(f"_q(_Block({g}, {m}, {words}, {s.n!r}, {s.msg!r}, {src}))", line)
+                    self.emit(f"{enqueue}(_Block({g}, {m}, {words}, {s.n!r}, {s.msg!r}, {src}))", line)
             if 80 in g_const:
                 self.emit("_modal[0] = None", line)
             elif has_motion and self.ln.modal_calls:
@@ -1112,7 +1114,7 @@ INLINE = {
 HELPER_NAMES = (
     "_rt", "_st", "_G", "_PM", "_EP", "_f32", "_toi", "_tor", "_tod", "_tob", "_tos", "_bad_assign", "_cond",
     "_logic", "_lnot", "_ix", "_sv", "_view", "_setf", "_midw", "_dim", "_pdim", "_gfield", "_gset_s", "_pint",
-    "_call", "_q", "_drain", "_wait", "_Block", "_loose", "_word", "_mval", "_modal", "_modal_call",
+    "_call", "_q", "_q3", "_drain", "_wait", "_Block", "_loose", "_word", "_mval", "_modal", "_modal_call",
     "_runaway", "_hook", "_caseval", "_nocall", "_msin", "_mcos", "_matan", "_msqrt",
     "_io", "_Dbl", "_SView",
 ) + tuple(f"_F_{name.replace('$', '_S')}" for name in FUNCTIONS)

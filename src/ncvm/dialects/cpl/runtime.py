@@ -33,6 +33,7 @@ from .perm import DeclError, Permanents
 from .system import SYSTEM_PROCS
 from .system import setup as system_setup
 from .system.controller import load_controller
+from .system.gfuncs import Typ3Block, activate, prepare
 from .system.plc import f_ic
 from .system.positions import probe_block
 
@@ -125,7 +126,7 @@ class CplRuntime:
                 self.queue.append if self.lookahead <= 0 else self.queue_limited),
             "_drain": self.drain, "_wait": self.wait, "_Block": Block, "_loose": self.loose,
             "_word": V.word, "_mval": _mval, "_modal": self.modal,
-            "_modal_call": lambda line: self.modal_call(path, line),
+            "_modal_call": lambda line: self.modal_call(path, line), "_q3": self.enqueue_typ3,
             "_runaway": lambda line: self.session.steps.runaway(path, line),
             "_hook": self._hook_for(path), "_caseval": _caseval, "_nocall": self.nocall,
             "_msin": math.sin, "_mcos": math.cos, "_matan": math.atan, "_msqrt": math.sqrt,
@@ -270,7 +271,7 @@ class CplRuntime:
             g = tuple(int(w.value) if w.value == int(w.value) else w.value for w in s.words if w.address == "G")
             m = tuple(int(w.value) for w in s.words if w.address == "M" and w.value not in (2, 30))
             if g or m or words or s.msg is not None:
-                self.queue.append(Block(g, m, words, s.n, s.msg, Src(target, s.line)))
+                self.queue.append(prepare(self, Block(g, m, words, s.n, s.msg, Src(target, s.line))))
             if s.wait:
                 self.drain()
             if s.ends:
@@ -329,11 +330,24 @@ class CplRuntime:
         else:
             self.queue_limited(blk)
 
+    def enqueue_typ3(self, blk) -> None:
+        """A block that may carry a Typ3 G function the kernel does not know (G168, G268, G131, ...)."""
+        blk = prepare(self, blk)
+        if self._probing:
+            self.enqueue_probe(blk)
+        elif self.lookahead <= 0:
+            self.queue.append(blk)
+        else:
+            self.queue_limited(blk)
+
     def execute_one(self) -> None:
         blk = self.queue.popleft()
         self.executed += 1
         if not self.kernel.ended:
-            self.kernel.execute(blk)
+            if blk.__class__ is Typ3Block:
+                activate(self, self.kernel, blk)
+            else:
+                self.kernel.execute(blk)
 
     def drain(self) -> None:
         """WAIT without parameters: stop preparation until every block before it has been executed."""
@@ -346,7 +360,10 @@ class CplRuntime:
             if kernel.ended:
                 q.clear()
                 break
-            execute(blk)
+            if blk.__class__ is Typ3Block:
+                activate(self, kernel, blk)
+            else:
+                execute(blk)
         self.t_prep = max(self.t_prep, self.machine.clock.now)
 
     def prepared_kernel(self):
@@ -364,7 +381,10 @@ class CplRuntime:
             shadow.prog, shadow.g92, shadow.offset_vec = list(k.prog), list(k.g92), list(k.offset_vec)
             self._shadow, self._shadow_at = shadow, self.executed
         for blk in itertools.islice(self.queue, self._shadow_at - self.executed, None):
-            self._shadow.execute(blk)
+            if blk.__class__ is Typ3Block:
+                activate(self, self._shadow, blk)
+            else:
+                self._shadow.execute(blk)
             self._shadow_at += 1
         return self._shadow
 

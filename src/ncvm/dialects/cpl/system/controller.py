@@ -11,10 +11,11 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from ....diagnostics import UsageError
+from .gfuncs import NcFuncs
 
 #: every key [cpl] may hold (lookahead and calls belong to the language runtime)
 CPL_KEYS = {"lookahead", "calls", "channel", "axes", "zs_unit", "zs_active", "zs_tables", "tc_unit", "tc_tables",
-            "tool_database", "macoda", "plc", "errors", "override", "language", "date_format"}
+            "tool_database", "macoda", "plc", "errors", "override", "language", "date_format", "areas"}
 AXIS_KEYS = {"index", "name", "channel", "type", "probe", "position", "lag", "sercos"}
 ZS_ROWS = tuple(f"G{b + i}" for b in (54, 154, 254) for i in range(6))
 EXTERNAL = ("G160", "G260", "G360")
@@ -57,6 +58,9 @@ class Controller:
     override: dict[str, int] = field(default_factory=lambda: {"feed": 100, "spindle": 100, "spindle2": 0})
     language: int = 1
     date_format: str = "DD.MM.YY"
+    g_programmed: NcFuncs = field(default_factory=NcFuncs)  # Typ3 G functions at block preparation
+    g_active: NcFuncs = field(default_factory=NcFuncs)  # ... and as executed
+    areas: list[dict] = field(default_factory=list)  # work areas and dead ranges 1..10 (SD 200)
     store: object = None
 
     # -- axes ----------------------------------------------------------------------------------
@@ -80,7 +84,8 @@ def _err(key: str, why: str):
 
 #: keys of the records in [cpl] lists and tables
 RECORD_KEYS = {"tool_database": {"sector", "place", "fields"}, "errors": {"number", "channel", "category"},
-               "override": {"feed", "spindle", "spindle2"}}
+               "override": {"feed", "spindle", "spindle2"},
+               "areas": {"type", "axes", "centre", "extent", "active"}}
 
 
 def load_controller(machine, store=None) -> Controller:
@@ -155,10 +160,33 @@ def _build(machine, cfg: dict, store) -> Controller:
     c.date_format = str(cfg.get("date_format", "DD.MM.YY"))
     if c.date_format not in ("DD.MM.YY", "DD.MM"):
         _err("date_format", f"{c.date_format!r} (DD.MM.YY or DD.MM)")
+    c.areas = [_area(c, i, a) for i, a in enumerate(cfg.get("areas") or [], 1)]
     _default_macoda(c)
     if store is not None:
         _load_persistent(c, store())
     return c
+
+
+AREA_TYPES = {"dead": 1, "work": 2}  # SD(200,3,i): 1 dead range, 2 work area
+MAX_AREAS = 10
+
+
+def _area(c: Controller, i: int, a: dict) -> dict:
+    """A work area or dead range: a rectangle on two logical axes of the channel (centre, extent in mm)."""
+    if i > MAX_AREAS:
+        _err(f"areas[{i}]", f"at most {MAX_AREAS} areas")
+    kind = a.get("type", "work")
+    if kind not in AREA_TYPES:
+        _err(f"areas[{i}].type", f"{kind!r} (work or dead)")
+    names = [ax.name for ax in c.channel_axes(c.channel)]
+    axes = [str(n).upper() for n in a.get("axes", names[:2])]
+    if len(axes) != 2 or any(n not in names for n in axes):
+        _err(f"areas[{i}].axes", f"two axes of channel {c.channel} ({', '.join(names)})")
+    centre, extent = [float(x) for x in a.get("centre", [0, 0])], [float(x) for x in a.get("extent", [0, 0])]
+    if len(centre) != 2 or len(extent) != 2:
+        _err(f"areas[{i}]", "centre and extent give two values (1st and 2nd axis)")
+    return {"type": AREA_TYPES[kind], "axes": axes, "centre": centre, "extent": extent,
+            "active": bool(a.get("active", True))}
 
 
 def _zs_table(c: Controller, where: str, table: dict) -> dict:

@@ -13,6 +13,7 @@ import zlib
 from ..errors import CplError
 from ..io.strings import CharacterField
 from .axes import kernel_index, nul
+from .gfuncs import program_shift
 from .offsets import push_to_kernel
 
 OK, NO_CHANNEL, BUSY, SYNTAX, NOT_AVAILABLE, NO_PROGRAM, MODE_REFUSED = 0, 1, 2, 18, 102, 6, 13
@@ -106,8 +107,8 @@ def _data(rt, typ: int, ch: int, size: int, axisno, idno):
     if typ == 58:
         return [a.channel for a in system]
     if typ == 71:
-        return [rt.kernel.machine_pos[i] - (k.offset_vec[i] - k.g92[i]) if (i := kernel_index(rt, a)) is not None
-                else a.position for a in own]
+        return [k.machine_pos[i] - (k.offset_vec[i] - k.g92[i] - program_shift(rt, k, i))
+                if (i := kernel_index(rt, a)) is not None else a.position for a in own]
     if typ in (73, 74):
         return _positions(rt, own)
     if typ == 76:
