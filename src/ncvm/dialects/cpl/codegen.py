@@ -14,7 +14,7 @@ from .builtins import FUNCTIONS
 from .errors import diag
 from .lexer import VarName
 from .system import SYSTEM_PROCS
-from .system.gfuncs import TYP3_G
+from .system.gfuncs import GEARS, TYP3_G
 from .values import f32
 
 #: parameter Pn seen through its suffix (digest §4.8): the conversion applied to the passed value
@@ -715,7 +715,8 @@ class Gen:
         queued = bool(g_const or m_const or words_const or g_dyn or m_dyn or words_dyn or s.loose or s.msg is not None)
         if queued:
             dynamic = bool(g_dyn or m_dyn or words_dyn or s.loose)
-            enqueue = "_q3" if g_dyn or s.loose or TYP3_G.intersection(g_const) else "_q"
+            typ3 = g_dyn or m_dyn or s.loose or TYP3_G.intersection(g_const) or GEARS.intersection(m_const)
+            enqueue = "_q3" if typ3 else "_q"
             if not dynamic:
                 blk = self.const(("block", tuple(g_const), tuple(m_const), dict(words_const), s.n, s.msg, line))
                 if ends and m_sub != m_const:

@@ -78,9 +78,20 @@ class CplRuntime:
         self._next_event = 0
         self.ctl = load_controller(self.machine, lambda: session.store)  # chapter 4 controller state
         self.sys_procs = {name: row[0] for name, row in SYSTEM_PROCS.items()}
+        self._keep_messages(session.canon)
         system_setup(self)
         self._probing = any(getattr(w, "address", None) == "G" and (w.value == 75 or w.expr is not None)
                             for u in linked.units.values() for st in u.prog.stmts for w in getattr(st, "words", ()))
+
+    def _keep_messages(self, canon) -> None:
+        """The controller keeps the last executed MSG text (MCODS 28); the shadow kernel has its own canon."""
+        shown = canon.message
+
+        def message(text, src):
+            self.ctl.message = text
+            shown(text, src)
+
+        canon.message = message
 
     # -- units ----------------------------------------------------------------------
     def unit(self, path: str):

@@ -14,6 +14,9 @@ the seeds; the forms below are recorded in docs/decisions.md:
 * ``G581 <slave axis><slave shift> I<master> [J<factor>] [K<master shift>]``: axis coupling (master as
   a logical axis number of the channel); ``G580 [<slave axes>]`` removes the couplings of the named
   slaves, or all.
+* ``G145``..``G845`` select an external, ``G147``..``G847`` a general tool compensation (values: TC with
+  table 0); ``G146`` deselects both. Stored only (digest §12 tier 2); MCODS 51/54 read them.
+* ``M40``..``M44``, ``M48``: the spindle gear range (MCODS 64-67); the M function also goes to the PLC.
 
 A block carrying one of them is split at preparation: the programmed state changes at once (SD index
 1, "last programmed"); the rest of the block is queued as a :class:`Typ3Block` that carries the state,
@@ -27,7 +30,10 @@ from dataclasses import dataclass, replace
 from ....nc.block import Block
 from ..errors import CplError
 
-TYP3_G = frozenset((130, 131, 168, 268, 328, 580, 581))
+WORD_CODES = frozenset((130, 131, 168, 268, 328, 580, 581))  # their block's words are their values
+COMPENSATIONS = frozenset([146] + [g + 45 for g in range(100, 900, 100)] + [g + 47 for g in range(100, 900, 100)])
+TYP3_G = WORD_CODES | COMPENSATIONS
+GEARS = frozenset((40, 41, 42, 43, 44, 48))  # M40 automatic gear range, M41-M44 gear 1-4, M48 neutral
 INCH = 25.4
 N_LOGICAL = 8  # the shifts are kept for logical axes 1..8 (SD index range 1..8)
 
@@ -44,6 +50,9 @@ class NcFuncs:
     barrier: float = 0.0  # G328 precision barrier
     corners: float = 0.0  # G328 distance between corners
     coupling: tuple = ()  # ((slave, master, slave shift, factor, master shift), ...) by slave
+    external: int = 0  # selected external tool compensation G145..G845, 0 = none
+    general: int = 0  # selected general tool compensation G147..G847, 0 = none
+    gear: int = 40  # spindle gear range (M40 automatic at power-on)
 
 
 class Typ3Block(Block):
@@ -60,15 +69,37 @@ class Typ3Block(Block):
 
 
 def prepare(rt, blk: Block) -> Block:
-    """Take the Typ3 G functions out of a block at preparation (see the module docstring)."""
-    codes = [g for g in blk.g if g in TYP3_G]
-    if not codes:
+    """Take the Typ3 G functions (and the gear M functions) out of a block at preparation."""
+    if not (TYP3_G.intersection(blk.g) or GEARS.intersection(blk.m)):
         return blk
+    c = rt.ctl
+    st = c.g_programmed
+    for mc in blk.m:
+        if mc in GEARS:
+            st = replace(st, gear=mc)
+    for g in blk.g:
+        if g in COMPENSATIONS:
+            st = _compensation(st, g)
+    codes = [g for g in blk.g if g in WORD_CODES]
     if len(codes) > 1:
         raise CplError("CPL040", f"G{codes[0]} and G{codes[1]} cannot stand in one block")
-    c = rt.ctl
-    code = codes[0]
     words = dict(blk.words)
+    if codes:
+        st = _with_words(rt, blk, codes[0], st, words)
+    c.g_programmed = st
+    return Typ3Block(st, tuple(g for g in blk.g if g not in TYP3_G), blk.m, words, blk.n, blk.msg, blk.src)
+
+
+def _compensation(st: NcFuncs, g: int) -> NcFuncs:
+    """G145..G845 select an external, G147..G847 a general tool compensation; G146 deselects both."""
+    if g == 146:
+        return replace(st, external=0, general=0)
+    return replace(st, external=g) if g % 100 == 45 else replace(st, general=g)
+
+
+def _with_words(rt, blk: Block, code: int, st: NcFuncs, words: dict) -> NcFuncs:
+    """G168/G268, G130/G131, G328, G580/G581: the values of the block's words (taken out of ``words``)."""
+    c = rt.ctl
     logical = c.channel_axes(c.channel)[:N_LOGICAL]
     scale = INCH if 70 in blk.g else 1.0 if 71 in blk.g else rt.prepared_kernel().scale  # G70/G71 first
     axes = []  # (logical number, value in mm or degrees)
@@ -76,31 +107,27 @@ def prepare(rt, blk: Block) -> Block:
         if ax.name in words:
             v = words.pop(ax.name)
             axes.append((n, v if ax.rotary else v * scale))
-    st = c.g_programmed
     if code in (168, 268):
         vals = list(st.g168 if code == 168 else st.g268) if axes else [0.0] * N_LOGICAL
         for n, v in axes:
             vals[n - 1] = v
-        st = replace(st, **{f"g{code}": tuple(vals)})
-    elif code == 130:
-        st = replace(st, rotation_axis=0, offset_angle=0.0, adaptation_angle=0.0)
-    elif code == 131:
+        return replace(st, **{f"g{code}": tuple(vals)})
+    if code == 130:
+        return replace(st, rotation_axis=0, offset_angle=0.0, adaptation_angle=0.0)
+    if code == 131:
         if len(axes) != 1:
             raise CplError("CPL040", "G131 names one axis of rotation symmetry with its offset angle")
         (n, v), = axes
         if not logical[n - 1].rotary:
             raise CplError("CPL040", f"G131: {logical[n - 1].name} is not a rotary axis")
-        st = replace(st, rotation_axis=n, offset_angle=v, adaptation_angle=float(words.pop("I", 0.0)))
-    elif code == 328:
-        st = replace(st, barrier=words.pop("I") * scale if "I" in words else st.barrier,
-                     corners=words.pop("K") * scale if "K" in words else st.corners)
-    elif code == 580:
+        return replace(st, rotation_axis=n, offset_angle=v, adaptation_angle=float(words.pop("I", 0.0)))
+    if code == 328:
+        return replace(st, barrier=words.pop("I") * scale if "I" in words else st.barrier,
+                       corners=words.pop("K") * scale if "K" in words else st.corners)
+    if code == 580:
         slaves = {n for n, _ in axes}
-        st = replace(st, coupling=tuple(cp for cp in st.coupling if axes and cp[0] not in slaves))
-    else:
-        st = replace(st, coupling=_couple(st, axes, words, len(logical), scale))
-    c.g_programmed = st
-    return Typ3Block(st, tuple(g for g in blk.g if g != code), blk.m, words, blk.n, blk.msg, blk.src)
+        return replace(st, coupling=tuple(cp for cp in st.coupling if axes and cp[0] not in slaves))
+    return replace(st, coupling=_couple(st, axes, words, len(logical), scale))
 
 
 def _couple(st: NcFuncs, axes, words: dict, n_logical: int, scale: float) -> tuple:
