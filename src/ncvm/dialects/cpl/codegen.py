@@ -155,6 +155,8 @@ class Gen:
             return f"({lc} {op} {rc})", ("D" if "D" in (lt, rt) else "R")
         # relational
         pyop = {"=": "==", "<>": "!=", "<": "<", ">": ">", "<=": "<=", ">=": ">="}[op]
+        if pyop in ("==", "!="):  # Python's == takes None silently; NUL is an error unless compared to NUL
+            lc, rc = _not_nul(e.left, lc, lt), _not_nul(e.right, rc, rt)
         if lt in NUMERIC and rt in NUMERIC:
             if "D" not in (lt, rt) and "R" in (lt, rt):
                 lc, rc = self._single(e.left, lc, lt), self._single(e.right, rc, rt)
@@ -1085,6 +1087,14 @@ class _Raw:
         self.ty = ty
 
 
+def _not_nul(e, code: str, ty: str) -> str:
+    """An operand of = or <> that may be NUL (a variable, a function result) must not be: VARIABLE NOT
+    ASSIGNED (digest §4.4). ``+ 0`` raises the TypeError for a NUL number without a call."""
+    if not _maybe_nul(e):
+        return code
+    return f"({code} + 0)" if ty in NUMERIC else f"_nn({code})"
+
+
 def _maybe_nul(e) -> bool:
     """Can the BOOLEAN expression be NUL (a variable read) rather than a computed TRUE/FALSE?"""
     return isinstance(e, (A.Var, A.Func))
@@ -1117,7 +1127,7 @@ HELPER_NAMES = (
     "_logic", "_lnot", "_ix", "_sv", "_view", "_setf", "_midw", "_dim", "_pdim", "_gfield", "_gset_s", "_pint",
     "_call", "_q", "_q3", "_drain", "_wait", "_Block", "_loose", "_word", "_mval", "_modal", "_modal_call",
     "_runaway", "_hook", "_caseval", "_nocall", "_msin", "_mcos", "_matan", "_msqrt",
-    "_io", "_Dbl", "_SView",
+    "_io", "_Dbl", "_SView", "_nn",
 ) + tuple(f"_F_{name.replace('$', '_S')}" for name in FUNCTIONS)
 
 

@@ -141,7 +141,7 @@ class CplRuntime:
             "_runaway": lambda line: self.session.steps.runaway(path, line),
             "_hook": self._hook_for(path), "_caseval": _caseval, "_nocall": self.nocall,
             "_msin": math.sin, "_mcos": math.cos, "_matan": math.atan, "_msqrt": math.sqrt,
-            "_io": self.io, "_Dbl": Double, "_SView": S.StringView,
+            "_io": self.io, "_Dbl": Double, "_SView": S.StringView, "_nn": V.not_nul,
         }
         for name, b in FUNCTIONS.items():
             h[f"_F_{name.replace('$', '_S')}"] = b.impl
