@@ -490,8 +490,10 @@ class Gen:
             base = f"_G.get({v.display!r})"
             if tv.index:
                 base = f"_gfield({v.display!r}).row({self.index(tv.index[0])})"
+        elif v.cls == "D":
+            base = self.field_ref(tv)
         else:
-            raise GenError("CPL037", "MID$ write on permanent variables")
+            raise GenError("CPL032", f"MID$(...) = : {v.display} is not a character field")
         start = self.ex(s.mid[0])[0]
         count = self.ex(s.mid[1])[0] if s.mid[1] is not None else "None"
         code, ty = self.ex(s.expr)
@@ -654,8 +656,11 @@ class Gen:
             base = self.local(v)
         elif v.cls == "G":
             base = f"_gfield({v.display!r})"
+        elif v.cls == "D":  # a definable permanent: the field (or its row) writes through to the store
+            idx = [self.index(i) for i in tv.index or ()]
+            return f"_PM.char_field({v.name!r}, ({', '.join(idx)}{',' if idx else ''}))"
         else:
-            raise GenError("CPL037", f"{v.display}: permanent character fields as I/O targets")
+            raise GenError("CPL032", f"{v.display} is not a character field")
         if tv.index:
             base += f".row({self.index(tv.index[0])})"
         return base
