@@ -76,3 +76,10 @@ def test_work_areas_and_dead_ranges_200(run):
     assert (v["C1%"], v["C2%"], v["E1%"], v["E2%"]) == (100, 50, 20, 400)
     assert v["CI%"] == 4  # 100 mm = 3.937 inch after G70
     assert run("1 A%=SD(200,3,11)\nM30\n", cpl={"areas": areas})["error"]["code"] == "CPL023"
+
+
+def test_g_group_28_external_compensation_sd1_and_ncf(run):
+    text = ('N10 G345\n20 A%=SD(1,28,2)\n21 B%=SD(1,28,1)\n22 DIM N$(5)\n23 N$=NCF("G146")\n24 WAIT\n'
+            "25 C%=SD(1,28,1)\nN30 G146\n31 D%=SD(1,28,2)\nM30\n")
+    v = run(text)["variables"]
+    assert (v["A%"], v["B%"], v["N$"], v["C%"], v["D%"]) == (345, 146, "G345", 345, 146)

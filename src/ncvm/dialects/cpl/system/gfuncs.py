@@ -1,5 +1,6 @@
 """Typ3 osa G functions that the shared NC kernel does not know, kept by the CPL controller so that
-SD/SDR groups 68, 168, 268, 131, 328 and 581 (manual §4.9 L2259-2297, L2328-2347) read them.
+SD/SDR groups 68, 168, 268, 131, 328 and 581 (manual §4.9 L2259-2297, L2328-2347), SD(1,28), NCF and
+MCODS 51, 54, 64-67 read them.
 
 The CPL manual names these functions but their block syntax is in the DIN manual, which is not part of
 the seeds; the forms below are recorded in docs/decisions.md:

@@ -19,14 +19,17 @@ from .positions import probe_switched
 G_GROUPS = {2: (0, 1, 2, 3, 5, 11, 12, 13, 73), 3: (70, 71), 4: (90, 91, 189, 190, 191), 5: (63, 66), 6: (543,),
             7: (93, 94, 95), 8: (40, 41, 42), 9: (6, 7), 10: (17, 18, 19, 20), 11: (8, 9), 13: (14, 15),
             15: (53, 54, 55, 56, 57, 58, 59), 16: tuple(range(153, 160)), 17: tuple(range(253, 260)),
-            18: (60, 67), 19: (37, 38, 39), 20: (61, 62), 25: (64, 65), 26: (68, 69), 29: (114, 115),
-            30: (160, 167)}
+            18: (60, 67), 19: (37, 38, 39), 20: (61, 62), 25: (64, 65), 26: (68, 69),
+            28: tuple(range(145, 846, 100)) + (146,), 29: (114, 115), 30: (160, 167)}
 GROUP_OF = {g: grp for grp, gs in G_GROUPS.items() for g in gs}
 PLANE_AXES = {17: (1, 2), 18: (3, 1), 19: (2, 3)}
 
 
-def g_of_group(k, group: int) -> int:
-    """The G number the kernel state has in G group ``group``; -1 for a group it does not apply."""
+def g_of_group(k, group: int, typ3=None) -> int:
+    """The G number the kernel state (and the Typ3 G-function state ``typ3`` that goes with it) has in G
+    group ``group``; -1 for a group it does not apply."""
+    if group == 28 and typ3 is not None:
+        return typ3.external or 146  # external tool compensation G145..G845, G146 = none
     if group == 2:
         return k.motion
     if group == 3:
@@ -64,7 +67,9 @@ def f_sd(rt, group, i1=None, i2=None, i3=None):
         if i2 not in (1, 2):
             raise CplError("CPL040" if i2 == 3 else "CPL023", "SD(1,g,1|2): 3 (power-on state) is not available")
         # 1 = active (executed), 2 = last programmed (prepared), L2218
-        return g_of_group(rt.kernel if i2 == 1 else rt.prepared_kernel(), nul(i1))
+        if i2 == 1:
+            return g_of_group(rt.kernel, nul(i1), c.g_active)
+        return g_of_group(rt.prepared_kernel(), nul(i1), c.g_programmed)
     if group == 2 or group == 202:
         key = {1: "feed", 3: "spindle", 4: "spindle2"}.get(i1 if group == 2 else {1: 3, 2: 4}.get(i1))
         if key is None:
@@ -281,5 +286,5 @@ def f_ncf(rt, text):
     group = GROUP_OF.get(int(text[1:]))
     if group is None:
         raise CplError("CPL040", f"NCF({text!r}): unknown NC function")
-    g = g_of_group(rt.prepared_kernel(), group)
+    g = g_of_group(rt.prepared_kernel(), group, rt.ctl.g_programmed)
     return "" if g < 0 else f"G{g}"
