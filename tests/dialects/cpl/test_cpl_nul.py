@@ -28,3 +28,10 @@ def test_comparison_with_the_nul_keyword_is_a_condition(run):
 def test_assigned_values_compare_as_before(run):
     v = run("1 X% = 3\n2 A? = X% = 3\n3 S$ = \"AB\"\n4 B? = S$ <> \"AB\"\n5 T? = TRUE\n6 C? = T? = TRUE\nM30\n")
     assert (v["variables"]["A?"], v["variables"]["B?"], v["variables"]["C?"]) == (True, False, True)
+
+
+def test_unassigned_character_field_is_nul_in_a_comparison(run):
+    """A DIMensioned field not yet assigned reads NUL (L3392): a condition with NUL, an error with text."""
+    v = run('10 DIM A$(5) : DIM T$(2,5)\n20 B? = A$ = NUL\n30 C? = T$(1) <> NUL\nM30\n')["variables"]
+    assert (v["B?"], v["C?"]) == (True, False)
+    assert run('10 DIM A$(5)\n20 B? = A$ = "X"\nM30\n')["error"]["code"] == "CPL020"
