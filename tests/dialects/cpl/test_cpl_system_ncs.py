@@ -71,7 +71,7 @@ def test_spindle_gears_64_to_67(run):
             "5 DIM H%(8):V=0:E%=MCODS(64,-1,V,H%,8)\n6 DIM A%(8):V=0:E%=MCODS(66,-1,V,A%,8)\n"
             "7 DIM P%(8):V=0:E%=MCODS(65,-1,V,P%,8)\nM30\n")
     v = run(text, cpl={"spindle": {"group": 2}})["variables"]
-    assert v["G"][1] == 40.0 and v["C%"][1] == 1  # M40 at power-on; M42 is being switched
+    assert v["G"][1] == 40.0 and v["C%"][1:3] == [1, 0]  # M40 at power-on; M42 is being switched
     assert v["H%"][1:3] == [42, 0] and v["A%"][1] == 0 and v["P%"][1:3] == [2, 0]
 
 

@@ -216,12 +216,15 @@ def _status(rt, typ: int, ch: int, system, own):
         return [a.jog / 360.0 if a.rotary else a.jog for a in system]
     if typ == 28:
         return c.message
-    if typ in (39, 40, 67):
+    if typ in (39, 40, 67):  # dwell / auxiliary function awaiting acknowledgement / gear change
         head = _head(rt)
+        spindles = [0] * 7 if typ == 67 else []  # 67: one value per spindle, 8 places
+        if head is None:
+            return [0] + spindles
         if typ == 39:
-            return [1 if head is not None and 4 in head.g else 0]
-        codes = GEARS if typ == 67 else None
-        return [1 if head is not None and any(m in codes if codes else m not in KERNEL_M for m in head.m) else 0]
+            return [1 if 4 in head.g else 0]
+        pending = GEARS if typ == 67 else [m for m in head.m if m not in KERNEL_M]
+        return [1 if any(m in pending for m in head.m) else 0] + spindles
     if typ == 50:  # 1/100 %: the channel potentiometer for the channel's axes, else the axis potentiometer
         axis = c.override["axis"] * 100.0
         if ch == -1:
