@@ -26,7 +26,7 @@ from operator import attrgetter
 import numpy as np
 
 from . import arcs
-from .block import PLAIN_WORDS, PlainRun
+from .block import PLAIN_WORDS, Block, PlainRun
 from .canon import ArcSpec, MoveBatch
 
 RAPID, FEED, ARC = 0, 1, 2
@@ -271,16 +271,17 @@ _FILE, _LINE = attrgetter("src.file"), attrgetter("src.line")
 def plain_segments(blocks: list) -> list:
     """Blocks built at run time (a CPL motion queue) as segments: :class:`PlainRun` stretches and single blocks.
 
-    A block is plain when it has no G code but a motion code, no M code or
+    A block is plain when it is a :class:`Block` itself (a front end's subclass
+    carries more than words), has no G code but a motion code, no M code or
     message, and words only for :data:`PLAIN_WORDS`; a stretch of them from one
     file becomes a run. Other blocks stay as they are. The tests are mapped
     over the whole list at once: this runs for every block a program queues.
     """
     words = list(map(_WORDS, blocks))
     files = list(map(_FILE, blocks))
-    plain = [gok and wok and not m and msg is None for gok, wok, m, msg in
-             zip(map(PLAIN_G.__contains__, map(_G, blocks)), map(PLAIN_ADDRESSES.issuperset, words),
-                 map(_M, blocks), map(_MSG, blocks))]
+    plain = [cls is Block and gok and wok and not m and msg is None for cls, gok, wok, m, msg in
+             zip(map(type, blocks), map(PLAIN_G.__contains__, map(_G, blocks)),
+                 map(PLAIN_ADDRESSES.issuperset, words), map(_M, blocks), map(_MSG, blocks))]
     out: list = []
     start = None  # first block of the run being collected
     for i, ok in enumerate(plain):
@@ -306,8 +307,12 @@ def _columns(blocks, words, lo: int, hi: int) -> PlainRun:
     return PlainRun(blocks[0].src.file, np.fromiter(map(_LINE, blocks), np.int64, n), (), g, columns, blocks)
 
 
-def execute_segments(kernel, segments) -> None:
-    """Execute what :func:`plain_segments` made, runs column-wise and other blocks one by one, until program end."""
+def execute_segments(kernel, segments, execute=None) -> None:
+    """Execute what :func:`plain_segments` made until program end: runs column-wise, other blocks one by one.
+
+    ``execute`` runs a single block (default: the kernel's own ``execute``).
+    """
+    execute = execute or kernel.execute
     for seg in segments:
         if kernel.ended:
             return
@@ -317,4 +322,4 @@ def execute_segments(kernel, segments) -> None:
                 kernel.execute(seg.block(bad))  # a block that faults: the kernel says how
                 lo = bad + 1
         else:
-            kernel.execute(seg)
+            execute(seg)

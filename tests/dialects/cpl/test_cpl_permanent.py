@@ -72,3 +72,27 @@ def test_bad_declaration_line(tmp_path, run_text):
     r = run_text("10 @1 = 1\nM30\n", name="p.cpl", machine=m)
     assert r["error"]["code"] == "CPL038"
     assert r["error"]["file"].endswith("wmhperm.dat")
+
+
+def test_permanent_character_fields_as_inp_and_mid_targets(tmp_path, run_text):
+    """INP# fills a permanent character field (as many characters as declared) and MID$(...)= writes into
+    one; both go to the store at once, like an assignment (manual §2.4.3, §5.3, §6.6)."""
+    m = mill(tmp_path)
+    (tmp_path / "files" / "anwperm.dat").write_text("DEF CHAR @PART(6)\nDEF CHAR @NAMES(3,4)\n")
+    (tmp_path / "files" / "P2").write_text("FLANGE12ABCDEFGH\n\x03\n", encoding="latin-1")
+    r = run_text('10 OPENR(2,"P2")\n20 INP#(2,@PART$,MID$(@NAMES$(2),1,2),@NAMES$(3))\n30 CLOSE(2)\n'
+                 '40 MID$(@PART$,2,3) = "***"\n50 @NAMES$(1) = "WXYZ"\n60 MID$(@NAMES$(1),4) = "!"\nM30\n',
+                 name="p.cpl", machine=m)
+    assert r["status"] == "ok", r["error"]
+    # "FLANGE" (6 characters), then "12" into the first 2 of row 2, then "ABCD" (4) into row 3
+    r = run_text("10 A$ = @PART$ : B$ = @NAMES$(1) : C$ = @NAMES$(2) : D$ = @NAMES$(3)\nM30\n",
+                 name="p.cpl", machine=m)
+    v = r["variables"]
+    assert (v["A$"], v["B$"], v["C$"], v["D$"]) == ("F***GE", "WXY!", "12", "ABCD")
+
+
+def test_mid_write_beyond_an_unassigned_permanent_field(tmp_path, run_text):
+    m = mill(tmp_path)
+    (tmp_path / "files" / "anwperm.dat").write_text("DEF CHAR @TEXT(5)\n")
+    r = run_text('10 MID$(@TEXT$,3) = "AB"\nM30\n', name="p.cpl", machine=m)
+    assert r["error"]["code"] == "CPL024"  # CHARACTER FIELD NOT ASSIGNED, as for a DIMensioned field

@@ -14,6 +14,7 @@ from .builtins import FUNCTIONS
 from .errors import diag
 from .lexer import VarName
 from .system import SYSTEM_PROCS
+from .system.gfuncs import GEARS, TYP3_G
 from .values import f32
 
 #: parameter Pn seen through its suffix (digest §4.8): the conversion applied to the passed value
@@ -158,6 +159,8 @@ class Gen:
             return f"({lc} {op} {rc})", ("D" if "D" in (lt, rt) else "R")
         # relational
         pyop = {"=": "==", "<>": "!=", "<": "<", ">": ">", "<=": "<=", ">=": ">="}[op]
+        if pyop in ("==", "!="):  # Python's == takes None silently; NUL is an error unless compared to NUL
+            lc, rc = _not_nul(e.left, lc, lt), _not_nul(e.right, rc, rt)
         if lt in NUMERIC and rt in NUMERIC:
             if "D" not in (lt, rt) and "R" in (lt, rt):
                 lc, rc = self._single(e.left, lc, lt), self._single(e.right, rc, rt)
@@ -491,8 +494,10 @@ class Gen:
             base = f"_G.get({v.display!r})"
             if tv.index:
                 base = f"_gfield({v.display!r}).row({self.index(tv.index[0])})"
+        elif v.cls == "D":
+            base = self.field_ref(tv)
         else:
-            raise GenError("CPL037", "MID$ write on permanent variables")
+            raise GenError("CPL032", f"MID$(...) = : {v.display} is not a character field")
         start = self.ex(s.mid[0])[0]
         count = self.ex(s.mid[1])[0] if s.mid[1] is not None else "None"
         code, ty = self.ex(s.expr)
@@ -655,8 +660,11 @@ class Gen:
             base = self.local(v)
         elif v.cls == "G":
             base = f"_gfield({v.display!r})"
+        elif v.cls == "D":  # a definable permanent: the field (or its row) writes through to the store
+            idx = [self.index(i) for i in tv.index or ()]
+            return f"_PM.char_field({v.name!r}, ({', '.join(idx)}{',' if idx else ''}))"
         else:
-            raise GenError("CPL037", f"{v.display}: permanent character fields as I/O targets")
+            raise GenError("CPL032", f"{v.display} is not a character field")
         if tv.index:
             base += f".row({self.index(tv.index[0])})"
         return base
@@ -718,13 +726,15 @@ class Gen:
         queued = bool(g_const or m_const or words_const or g_dyn or m_dyn or words_dyn or s.loose or s.msg is not None)
         if queued:
             dynamic = bool(g_dyn or m_dyn or words_dyn or s.loose)
+            typ3 = g_dyn or m_dyn or s.loose or TYP3_G.intersection(g_const) or GEARS.intersection(m_const)
+            enqueue = "_q3" if typ3 else "_q"
             if not dynamic:
                 blk = self.const(("block", tuple(g_const), tuple(m_const), dict(words_const), s.n, s.msg, line))
                 if ends and m_sub != m_const:
                     blk_sub = self.const(("block", tuple(g_const), tuple(m_sub), dict(words_const), s.n, s.msg, line))
-                    self.emit(f"_q({blk} if _main else {blk_sub})", line)
+                    self.emit(f"{enqueue}({blk} if _main else {blk_sub})", line)
                 else:
-                    self.emit(f"_q({blk})", line)
+                    self.emit(f"{enqueue}({blk})", line)
             else:
                 g = "(" + ", ".join([repr(x) for x in g_const] + g_dyn) + ("," if (g_const or g_dyn) else "") + ")"
                 m_list = [repr(x) for x in m_const]
@@ -738,9 +748,9 @@ class Gen:
                 words = "{" + ", ".join(items) + "}"
                 if s.loose:
                     loose = "(" + ", ".join(self.arg(x) for x in s.loose) + ",)"
-                    self.emit(f"_q(_loose({g}, {m}, {words}, {loose}, {s.n!r}, {s.msg!r}, {src}))", line)
+                    self.emit(f"{enqueue}(_loose({g}, {m}, {words}, {loose}, {s.n!r}, {s.msg!r}, {src}))", line)
                 else:
-                    self.emit(f"_q(_Block({g}, {m}, {words}, {s.n!r}, {s.msg!r}, {src}))", line)
+                    self.emit(f"{enqueue}(_Block({g}, {m}, {words}, {s.n!r}, {s.msg!r}, {src}))", line)
             if 80 in g_const:
                 self.emit("_modal[0] = None", line)
             elif has_motion and self.ln.modal_calls:
@@ -1107,6 +1117,14 @@ class _Raw:
         self.ty = ty
 
 
+def _not_nul(e, code: str, ty: str) -> str:
+    """An operand of = or <> that may be NUL (a variable, a function result) must not be: VARIABLE NOT
+    ASSIGNED (digest §4.4). ``+ 0`` raises the TypeError for a NUL number without a call."""
+    if not _maybe_nul(e):
+        return code
+    return f"({code} + 0)" if ty in NUMERIC else f"_nn({code})"
+
+
 def _maybe_nul(e) -> bool:
     """Can the BOOLEAN expression be NUL (a variable read) rather than a computed TRUE/FALSE?"""
     return isinstance(e, (A.Var, A.Func))
@@ -1137,9 +1155,9 @@ INLINE = {
 HELPER_NAMES = (
     "_rt", "_st", "_G", "_PM", "_EP", "_f32", "_toi", "_tor", "_tod", "_tob", "_tos", "_bad_assign", "_cond",
     "_logic", "_lnot", "_ix", "_sv", "_view", "_setf", "_midw", "_dim", "_pdim", "_gfield", "_gset_s", "_pint",
-    "_call", "_q", "_drain", "_wait", "_Block", "_loose", "_word", "_mval", "_modal", "_modal_call",
+    "_call", "_q", "_q3", "_drain", "_wait", "_Block", "_loose", "_word", "_mval", "_modal", "_modal_call",
     "_runaway", "_hook", "_caseval", "_nocall", "_msin", "_mcos", "_matan", "_msqrt",
-    "_io", "_Dbl", "_SView",
+    "_io", "_Dbl", "_SView", "_nn",
 ) + tuple(f"_F_{name.replace('$', '_S')}" for name in FUNCTIONS)
 
 

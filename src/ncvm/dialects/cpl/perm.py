@@ -13,6 +13,7 @@ import re
 from pathlib import Path
 
 from .errors import CplError
+from .io.strings import CharacterField
 from .values import to_bool, to_double, to_int, to_real, to_str
 
 NS = "cpl.perm"
@@ -221,9 +222,37 @@ class Permanents:
         self.store.put(NS, key, rec)
         self.touched[key] = key + suffix
 
+    def char_field(self, name: str, idx: tuple) -> PermanentField:
+        """A permanent character field (``DEF CHAR @NAME(n)``, or a row of ``@NAME(rows,n)``) as a field
+        that INP# and MID$(...)= write into; each change goes through to the store."""
+        typ, dims = self._decl(name, "$")
+        idx = self._slot(name, typ, dims, idx)
+        return PermanentField(self, name, idx, dims[-1] if dims else 1, self.get_d(name, "$", idx))
+
     def report(self) -> dict:
         out = {}
         for key, shown in self.touched.items():
             v = self.values.get(key)
             out[shown] = v["value"] if isinstance(v, dict) else v
         return out
+
+
+class PermanentField(CharacterField):
+    """A character field whose text is a permanent variable: assigning NUL is CPL033, as for set_d."""
+
+    __slots__ = ("perm", "name", "idx")
+
+    def __init__(self, perm: Permanents, name: str, idx: tuple, size: int, text: str | None):
+        super().__init__(size)
+        self.perm, self.name, self.idx = perm, name, idx
+        self._text = text
+
+    def assign(self, value) -> None:
+        super().assign(value)
+        self.perm.set_d(self.name, "$", self.idx, self._text)
+
+    def write(self, start: int, count: int | None, value) -> None:
+        before = self._text
+        super().write(start, count, value)
+        if self._text != before:
+            self.perm.set_d(self.name, "$", self.idx, self._text)

@@ -34,6 +34,7 @@ from .perm import DeclError, Permanents
 from .system import SYSTEM_PROCS
 from .system import setup as system_setup
 from .system.controller import load_controller
+from .system.gfuncs import Typ3Block, activate, prepare
 from .system.plc import f_ic
 from .system.positions import probe_block
 
@@ -80,9 +81,20 @@ class CplRuntime:
         #: the main program's local variables at a fault (generated code fills it in)
         self.fault_locals: dict = {}
         self.sys_procs = {name: row[0] for name, row in SYSTEM_PROCS.items()}
+        self._keep_messages(session.canon)
         system_setup(self)
         self._probing = any(getattr(w, "address", None) == "G" and (w.value == 75 or w.expr is not None)
                             for u in linked.units.values() for st in u.prog.stmts for w in getattr(st, "words", ()))
+
+    def _keep_messages(self, canon) -> None:
+        """The controller keeps the last executed MSG text (MCODS 28); the shadow kernel has its own canon."""
+        shown = canon.message
+
+        def message(text, src):
+            self.ctl.message = text
+            shown(text, src)
+
+        canon.message = message
 
     # -- units ----------------------------------------------------------------------
     def unit(self, path: str):
@@ -128,11 +140,11 @@ class CplRuntime:
                 self.queue.append if self.lookahead <= 0 else self.queue_limited),
             "_drain": self.drain, "_wait": self.wait, "_Block": Block, "_loose": self.loose,
             "_word": V.word, "_mval": _mval, "_modal": self.modal,
-            "_modal_call": lambda line: self.modal_call(path, line),
+            "_modal_call": lambda line: self.modal_call(path, line), "_q3": self.enqueue_typ3,
             "_runaway": lambda line: self.session.steps.runaway(path, line),
             "_hook": self._hook_for(path), "_caseval": _caseval, "_nocall": self.nocall,
             "_msin": math.sin, "_mcos": math.cos, "_matan": math.atan, "_msqrt": math.sqrt,
-            "_io": self.io, "_Dbl": Double, "_SView": S.StringView,
+            "_io": self.io, "_Dbl": Double, "_SView": S.StringView, "_nn": V.not_nul,
         }
         for name, b in FUNCTIONS.items():
             h[f"_F_{name.replace('$', '_S')}"] = b.impl
@@ -273,7 +285,7 @@ class CplRuntime:
             g = tuple(int(w.value) if w.value == int(w.value) else w.value for w in s.words if w.address == "G")
             m = tuple(int(w.value) for w in s.words if w.address == "M" and w.value not in (2, 30))
             if g or m or words or s.msg is not None:
-                self.queue.append(Block(g, m, words, s.n, s.msg, Src(target, s.line)))
+                self.queue.append(prepare(self, Block(g, m, words, s.n, s.msg, Src(target, s.line))))
             if s.wait:
                 self.drain()
             if s.ends:
@@ -332,10 +344,27 @@ class CplRuntime:
         else:
             self.queue_limited(blk)
 
+    def enqueue_typ3(self, blk) -> None:
+        """A block that may carry a Typ3 G function the kernel does not know (G168, G268, G131, ...)."""
+        blk = prepare(self, blk)
+        if self._probing:
+            self.enqueue_probe(blk)
+        elif self.lookahead <= 0:
+            self.queue.append(blk)
+        else:
+            self.queue_limited(blk)
+
     def execute_one(self) -> None:
         blk = self.queue.popleft()
         self.executed += 1
         if not self.kernel.ended:
+            self.execute_block(blk)
+
+    def execute_block(self, blk) -> None:
+        """Execute one queued block; a Typ3 block also activates the G-function state prepared with it."""
+        if blk.__class__ is Typ3Block:
+            activate(self, self.kernel, blk)
+        else:
             self.kernel.execute(blk)
 
     def drain(self) -> None:
@@ -344,7 +373,7 @@ class CplRuntime:
         self.executed += len(q)
         blocks = list(q)
         q.clear()
-        execute_segments(self.kernel, plain_segments(blocks))
+        execute_segments(self.kernel, plain_segments(blocks), self.execute_block)
         self.t_prep = max(self.t_prep, self.machine.clock.now)
 
     def prepared_kernel(self):
@@ -362,7 +391,10 @@ class CplRuntime:
             shadow.prog, shadow.g92, shadow.offset_vec = list(k.prog), list(k.g92), list(k.offset_vec)
             self._shadow, self._shadow_at = shadow, self.executed
         for blk in itertools.islice(self.queue, self._shadow_at - self.executed, None):
-            self._shadow.execute(blk)
+            if blk.__class__ is Typ3Block:
+                activate(self, self._shadow, blk)
+            else:
+                self._shadow.execute(blk)
             self._shadow_at += 1
         return self._shadow
 

@@ -100,6 +100,13 @@ def cond(v):
     raise CplError("CPL032", f"condition is {type_name(v)}, not BOOLEAN")
 
 
+def not_nul(v):
+    """An operand of = or <> other than the NUL keyword: NUL is VARIABLE NOT ASSIGNED (digest §4.4)."""
+    if v is None:
+        raise TypeError("NUL")
+    return v
+
+
 def word(v):
     """An [expr] value in an NC word must be a number."""
     if v.__class__ is float or v.__class__ is int:

@@ -11,11 +11,12 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from ....diagnostics import UsageError
+from .gfuncs import NcFuncs
 
 #: every key [cpl] may hold (lookahead and calls belong to the language runtime)
 CPL_KEYS = {"lookahead", "calls", "channel", "axes", "zs_unit", "zs_active", "zs_tables", "tc_unit", "tc_tables",
-            "tool_database", "macoda", "plc", "errors", "override", "language", "date_format"}
-AXIS_KEYS = {"index", "name", "channel", "type", "probe", "position", "lag", "sercos"}
+            "tool_database", "macoda", "plc", "errors", "override", "language", "date_format", "areas", "spindle"}
+AXIS_KEYS = {"index", "name", "channel", "type", "probe", "position", "lag", "sercos", "jog"}
 ZS_ROWS = tuple(f"G{b + i}" for b in (54, 154, 254) for i in range(6))
 EXTERNAL = ("G160", "G260", "G360")
 TDA_FIELDS = 49
@@ -32,6 +33,7 @@ class PhysAxis:
     probe: bool = True
     position: float = 0.0  # command position of an axis the NC kernel does not drive (foreign channel)
     lag: float = 0.0  # following error: APOS = SPOS - lag
+    jog: float = 1000.0  # jog speed, mm/min (rotary axes degrees/min)
 
 
 @dataclass
@@ -54,9 +56,16 @@ class Controller:
     errors: list[dict] = field(default_factory=list)  # {number, channel, category}
     sercos: dict[int, dict] = field(default_factory=dict)  # physical axis -> {"S-0-0030": value, ...}
     sercos_last: dict = field(default_factory=dict)
-    override: dict[str, int] = field(default_factory=lambda: {"feed": 100, "spindle": 100, "spindle2": 0})
+    override: dict[str, int] = field(default_factory=lambda: {"feed": 100, "spindle": 100, "spindle2": 0,
+                                                              "axis": 100})
+    #: the spindle's permissible speed range (rpm) and spindle group (MCODS 19, 20, 65)
+    spindle: dict[str, float] = field(default_factory=lambda: {"min": 0.0, "max": 8000.0, "group": 0})
+    message: str = ""  # the last message programmed with MSG and executed (MCODS 28)
     language: int = 1
     date_format: str = "DD.MM.YY"
+    g_programmed: NcFuncs = field(default_factory=NcFuncs)  # Typ3 G functions at block preparation
+    g_active: NcFuncs = field(default_factory=NcFuncs)  # ... and as executed
+    areas: list[dict] = field(default_factory=list)  # work areas and dead ranges 1..10 (SD 200)
     store: object = None
 
     # -- axes ----------------------------------------------------------------------------------
@@ -80,7 +89,8 @@ def _err(key: str, why: str):
 
 #: keys of the records in [cpl] lists and tables
 RECORD_KEYS = {"tool_database": {"sector", "place", "fields"}, "errors": {"number", "channel", "category"},
-               "override": {"feed", "spindle", "spindle2"}}
+               "override": {"feed", "spindle", "spindle2", "axis"}, "spindle": {"min", "max", "group"},
+               "areas": {"type", "axes", "centre", "extent", "active"}}
 
 
 def load_controller(machine, store=None) -> Controller:
@@ -90,13 +100,14 @@ def load_controller(machine, store=None) -> Controller:
         if key not in CPL_KEYS:
             _err(key, f"unknown key (known: {', '.join(sorted(CPL_KEYS))})")
     for key, allowed in RECORD_KEYS.items():
-        value = cfg.get(key) or ([] if key != "override" else {})
+        single = key in ("override", "spindle")  # one table, not a list of tables
+        value = cfg.get(key) or ({} if single else [])
         for i, rec in enumerate(value if isinstance(value, list) else [value], 1):
             if not isinstance(rec, dict):
                 _err(f"{key}[{i}]", "must be a table")
             for k in rec:
                 if k not in allowed:
-                    _err(f"{key}[{i}].{k}" if key != "override" else f"{key}.{k}",
+                    _err(f"{key}.{k}" if single else f"{key}[{i}].{k}",
                          f"unknown key (known: {', '.join(sorted(allowed))})")
     try:
         return _build(machine, cfg, store)
@@ -126,7 +137,8 @@ def _build(machine, cfg: dict, store) -> Controller:
                 _err(f"axes[{i}].type", f"{kind!r} (linear or rotary)")
             c.sercos[idx] = {str(k).upper(): v for k, v in (a.get("sercos") or {}).items()}
             c.axes[idx] = PhysAxis(idx, str(a["name"]).upper(), int(a.get("channel", c.channel)), kind == "rotary",
-                                   bool(a.get("probe", True)), float(a.get("position", 0.0)), float(a.get("lag", 0.0)))
+                                   bool(a.get("probe", True)), float(a.get("position", 0.0)), float(a.get("lag", 0.0)),
+                                   float(a.get("jog", 1000.0)))
     for unit_key in ("zs_unit", "tc_unit"):
         u = cfg.get(unit_key, "mm")
         if u not in ("mm", "inch"):
@@ -151,14 +163,40 @@ def _build(machine, cfg: dict, store) -> Controller:
         c.errors.append({"number": int(e["number"]), "channel": int(e.get("channel", -1)),
                          "category": int(e.get("category", 0))})
     c.override.update({k: int(v) for k, v in (cfg.get("override") or {}).items()})
+    c.spindle.update({k: (int(v) if k == "group" else float(v)) for k, v in (cfg.get("spindle") or {}).items()})
+    if not 0 <= c.spindle["group"] <= 4:
+        _err("spindle.group", f"{c.spindle['group']} (0 no group, 1..4)")
     c.language = int(cfg.get("language", 1))
     c.date_format = str(cfg.get("date_format", "DD.MM.YY"))
     if c.date_format not in ("DD.MM.YY", "DD.MM"):
         _err("date_format", f"{c.date_format!r} (DD.MM.YY or DD.MM)")
+    c.areas = [_area(c, i, a) for i, a in enumerate(cfg.get("areas") or [], 1)]
     _default_macoda(c)
     if store is not None:
         _load_persistent(c, store())
     return c
+
+
+AREA_TYPES = {"dead": 1, "work": 2}  # SD(200,3,i): 1 dead range, 2 work area
+MAX_AREAS = 10
+
+
+def _area(c: Controller, i: int, a: dict) -> dict:
+    """A work area or dead range: a rectangle on two logical axes of the channel (centre, extent in mm)."""
+    if i > MAX_AREAS:
+        _err(f"areas[{i}]", f"at most {MAX_AREAS} areas")
+    kind = a.get("type", "work")
+    if kind not in AREA_TYPES:
+        _err(f"areas[{i}].type", f"{kind!r} (work or dead)")
+    names = [ax.name for ax in c.channel_axes(c.channel)]
+    axes = [str(n).upper() for n in a.get("axes", names[:2])]
+    if len(axes) != 2 or any(n not in names for n in axes):
+        _err(f"areas[{i}].axes", f"two axes of channel {c.channel} ({', '.join(names)})")
+    centre, extent = [float(x) for x in a.get("centre", [0, 0])], [float(x) for x in a.get("extent", [0, 0])]
+    if len(centre) != 2 or len(extent) != 2:
+        _err(f"areas[{i}]", "centre and extent give two values (1st and 2nd axis)")
+    return {"type": AREA_TYPES[kind], "axes": axes, "centre": centre, "extent": extent,
+            "active": bool(a.get("active", True))}
 
 
 def _zs_table(c: Controller, where: str, table: dict) -> dict:

@@ -13,9 +13,13 @@ import zlib
 from ..errors import CplError
 from ..io.strings import CharacterField
 from .axes import kernel_index, nul
+from .gfuncs import GEARS, program_shift
 from .offsets import push_to_kernel
+from .sysdata import g_of_group
 
 OK, NO_CHANNEL, BUSY, SYNTAX, NOT_AVAILABLE, NO_PROGRAM, MODE_REFUSED = 0, 1, 2, 18, 102, 6, 13
+#: M functions the NC kernel carries out itself; any other one is an auxiliary function the PLC acknowledges
+KERNEL_M = frozenset((0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 30))
 #: channel operating modes MCODS 31/48 and MCOPS 7 (digest §11 C6)
 MODES = (1, 2, 4, 5, 6, 7, 10, 11, 12, 13, 14)
 
@@ -23,7 +27,7 @@ MODES = (1, 2, 4, 5, 6, 7, 10, 11, 12, 13, 14)
 def _state(rt) -> dict:
     st = getattr(rt, "_ncs", None)
     if st is None:
-        st = rt._ncs = {"mode": {}, "selected": {}, "return": {}, "recording": {}}
+        st = rt._ncs = {"mode": {}, "selected": {}, "return": {}, "recording": {}, "reselect": {}}
     return st
 
 
@@ -106,19 +110,24 @@ def _data(rt, typ: int, ch: int, size: int, axisno, idno):
     if typ == 58:
         return [a.channel for a in system]
     if typ == 71:
-        return [rt.kernel.machine_pos[i] - (k.offset_vec[i] - k.g92[i]) if (i := kernel_index(rt, a)) is not None
-                else a.position for a in own]
+        return [k.machine_pos[i] - (k.offset_vec[i] - k.g92[i] - program_shift(rt, k, i))
+                if (i := kernel_index(rt, a)) is not None else a.position for a in own]
     if typ in (73, 74):
         return _positions(rt, own)
     if typ == 76:
         return _positions(rt, own, mcs=False)
-    if typ == 87:
-        return [(1 << 12) if rt.queue else 0]
+    if typ == 87:  # b0 dwell, b1 auxiliary function awaiting acknowledgement, b12 waiting block preparation
+        dwell, aux = _status(rt, 39, ch, system, own)[0], _status(rt, 40, ch, system, own)[0]
+        return [dwell | aux << 1 | ((1 << 12) if rt.queue else 0)]
     return _more(rt, typ, ch, system, own, axisno, idno)
 
 
-def _spindle_speed(k) -> float:
-    return float(k.speed) if k.spindle_dir else 0.0
+def _spindle_speed(rt) -> float:
+    """The commanded speed with the potentiometer, held within the permissible range (MCODS 19/20)."""
+    c, k = rt.ctl, rt.kernel
+    if not k.spindle_dir:
+        return 0.0
+    return min(max(k.speed * c.override["spindle"] / 100.0, c.spindle["min"]), c.spindle["max"])
 
 
 def _more(rt, typ: int, ch: int, system, own, axisno, idno):
@@ -128,7 +137,7 @@ def _more(rt, typ: int, ch: int, system, own, axisno, idno):
     if typ == 4:
         return [a.lag for a in system]
     if typ in (5, 36):
-        return [_spindle_speed(k)]
+        return [_spindle_speed(rt)]
     if typ == 25:
         return [float(rt.prepared_kernel().speed)]
     if typ in (6, 47):
@@ -187,6 +196,56 @@ def _more(rt, typ: int, ch: int, system, own, axisno, idno):
     if typ == 83:
         p = rt.prepared_kernel()
         return [p.machine_pos[i] - k.machine_pos[i] if (i := kernel_index(rt, a)) is not None else 0.0 for a in own]
+    return _status(rt, typ, ch, system, own)
+
+
+def _head(rt):
+    """The block the channel is executing: the oldest one still in the motion queue, or None."""
+    return rt.queue[0] if rt.queue else None
+
+
+def _status(rt, typ: int, ch: int, system, own):
+    """Compensations, spindle limits and gears, jog speeds, messages, potentiometers, waiting states."""
+    c, k = rt.ctl, rt.kernel
+    if typ in (11, 12):  # tool radius compensation: G41/G42 of G group 8
+        active = g_of_group(k, 8) != 40
+        return [(k.tool if active else -1) if typ == 11 else 0.0]
+    if typ in (19, 20):
+        return [c.spindle["max" if typ == 19 else "min"]]
+    if typ == 27:  # linear axes mm/min, rotary axes rpm
+        return [a.jog / 360.0 if a.rotary else a.jog for a in system]
+    if typ == 28:
+        return c.message
+    if typ in (39, 40, 67):  # dwell / auxiliary function awaiting acknowledgement / gear change
+        head = _head(rt)
+        spindles = [0] * 7 if typ == 67 else []  # 67: one value per spindle, 8 places
+        if head is None:
+            return [0] + spindles
+        if typ == 39:
+            return [1 if 4 in head.g else 0]
+        pending = GEARS if typ == 67 else [m for m in head.m if m not in KERNEL_M]
+        return [1 if any(m in pending for m in head.m) else 0] + spindles
+    if typ == 50:  # 1/100 %: the channel potentiometer for the channel's axes, else the axis potentiometer
+        axis = c.override["axis"] * 100.0
+        if ch == -1:
+            return [axis] * len(system)
+        return [c.override["feed"] * 100.0] * len(own) + [axis for a in system if a.channel == 0]
+    if typ == 51:  # radius, length of the selected external compensation (TC table 0 stores [L3, R])
+        length, radius = c.tc_external.get(c.g_active.external, [0.0, 0.0]) if c.g_active.external else (0.0, 0.0)
+        return [radius, length]
+    if typ == 54:  # R, L3, L1, L2, TO, type of the selected general compensation
+        if not c.g_active.general:
+            return [0.0] * 6
+        v = c.tc_general.get(c.g_active.general, [0.0] * 8)
+        return [v[1], v[0], v[2], v[3], v[4], v[5]]
+    if typ == 64:
+        return [c.g_active.gear] + [0] * 7
+    if typ == 65:
+        return [c.spindle["group"]] + [0] * 7
+    if typ == 66:  # 1 automatic gear selection (M40), 0 a gear chosen by hand
+        return [1 if c.g_active.gear == 40 else 0] + [0] * 7
+    if typ == 70:
+        return [_state(rt)["reselect"].get(ch, 1)]
     return None
 
 
@@ -274,6 +333,9 @@ def f_mcops(rt, fct, chan, p1=None, p2=None, p3=None, p4=None):
             rt.queue.clear()
             rt._shadow = None
         return OK
+    if fct in (2, 5):  # type 2: no automatic program re-selection (MCODS 70)
+        for ch in (_channels(c) if chan == -2 else [chan]):
+            st["reselect"][ch] = 0 if p1 == 2 else 1
     if fct == 2:  # control reset: errors of the channel cleared, offsets of the channel re-read
         c.errors[:] = [e for e in c.errors if chan != -2 and e["channel"] not in (chan, -1)]
         st["selected"].pop(chan, None)

@@ -12,6 +12,8 @@ from __future__ import annotations
 from ..errors import CplError
 from .axes import kernel_index, nul, resolve, to_unit
 from .controller import EXTERNAL, ZS_ROWS, new_zs_table
+from .gfuncs import additive
+from .positions import axis_zs
 
 INCH = 25.4
 DB_TABLES = {1: "V1", 2: "V2", 3: "V3"}
@@ -50,7 +52,7 @@ def _to_mm(v: float, unit: str) -> float:
 
 
 def push_to_kernel(rt) -> None:
-    """The active table's G54..G59 rows and the external shifts into the NC kernel (values in mm)."""
+    """The active table's G54..G59 rows, the external shifts and G168/G268 into the NC kernel (in mm)."""
     c, k = rt.ctl, rt.kernel
     table = c.zs_tables[c.zs_active]
     for row in ZS_ROWS[:6]:
@@ -58,12 +60,7 @@ def push_to_kernel(rt) -> None:
         for i, name in enumerate(k.axis_names):
             if name in table["columns"]:
                 vec[i] = _to_mm(table["rows"][row][table["columns"].index(name)], table["unit"])
-    logical = [a.name for a in c.channel_axes(c.channel)]
-    add = [0.0] * k.n_axes
-    for i, name in enumerate(k.axis_names):
-        if name in logical and logical.index(name) < 8:
-            add[i] = sum(c.external[g][logical.index(name)] for g in EXTERNAL)
-    k.set_additive_offset(add)
+    k.set_additive_offset(additive(rt, k, c.g_active))
     rt._shadow = None  # the prepared state is rebuilt with the new offsets
 
 
@@ -151,8 +148,7 @@ def f_fxc(rt, sel, gaddr=None, table=None, unit=None):
         i = kernel_index(rt, ax)
         if i is None:
             return 0.0
-        tool = k.tool_length if i == k.tool_axis else 0.0
-        return to_unit(k, ax, k.offset_vec[i] - k.g92[i] - tool)
+        return to_unit(k, ax, axis_zs(rt, k, i))
     if table == 0:
         g = f"G{gaddr}"
         if g not in EXTERNAL:

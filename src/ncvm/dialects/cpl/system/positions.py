@@ -10,6 +10,7 @@ from __future__ import annotations
 
 from ..errors import CplError
 from .axes import kernel_index, resolve, to_unit
+from .gfuncs import program_shift
 
 
 def _executed_mcs(rt, ax) -> float:
@@ -17,10 +18,11 @@ def _executed_mcs(rt, ax) -> float:
     return ax.position if i is None else rt.kernel.machine_pos[i]
 
 
-def _axis_zs(k, i: int) -> float:
-    """Axis zero shifts (G54.., external) of kernel axis i: the offset without G92 and tool length."""
+def axis_zs(rt, k, i: int) -> float:
+    """Axis zero shifts (G54.., external) of kernel axis i: the offset without G92, the program
+    coordinate shifts G168/G268 and the tool length."""
     tool = k.tool_length if i == k.tool_axis else 0.0
-    return k.offset_vec[i] - k.g92[i] - tool
+    return k.offset_vec[i] - k.g92[i] - program_shift(rt, k, i) - tool
 
 
 def f_axo(rt, sel, seltype=1):
@@ -48,7 +50,7 @@ def f_wpos(rt, sel, seltype=1, chan=None):
     k = rt.kernel
     if i is None:
         return ax.position
-    return to_unit(k, ax, k.machine_pos[i] - _axis_zs(k, i))
+    return to_unit(k, ax, k.machine_pos[i] - axis_zs(rt, k, i))
 
 
 def f_mpos(rt, sel, axtype=1, chan=None):
@@ -142,7 +144,7 @@ def f_ppos(rt, sel, axtype=1):
     if i is None:
         return mcs
     tool = k.tool_length if i == k.tool_axis else 0.0
-    return to_unit(k, ax, mcs - _axis_zs(k, i) - tool)
+    return to_unit(k, ax, mcs - axis_zs(rt, k, i) - tool)
 
 
 def f_cprobe(rt, sel, seltype=1):

@@ -11,20 +11,25 @@ import math
 from ..errors import CplError
 from ..values import sv
 from .axes import nul
+from .controller import MAX_AREAS
+from .gfuncs import N_LOGICAL
 from .positions import probe_switched
 
 #: G group (table 6.9.3) -> the G numbers in it
 G_GROUPS = {2: (0, 1, 2, 3, 5, 11, 12, 13, 73), 3: (70, 71), 4: (90, 91, 189, 190, 191), 5: (63, 66), 6: (543,),
             7: (93, 94, 95), 8: (40, 41, 42), 9: (6, 7), 10: (17, 18, 19, 20), 11: (8, 9), 13: (14, 15),
             15: (53, 54, 55, 56, 57, 58, 59), 16: tuple(range(153, 160)), 17: tuple(range(253, 260)),
-            18: (60, 67), 19: (37, 38, 39), 20: (61, 62), 25: (64, 65), 26: (68, 69), 29: (114, 115),
-            30: (160, 167)}
+            18: (60, 67), 19: (37, 38, 39), 20: (61, 62), 25: (64, 65), 26: (68, 69),
+            28: tuple(range(145, 846, 100)) + (146,), 29: (114, 115), 30: (160, 167)}
 GROUP_OF = {g: grp for grp, gs in G_GROUPS.items() for g in gs}
 PLANE_AXES = {17: (1, 2), 18: (3, 1), 19: (2, 3)}
 
 
-def g_of_group(k, group: int) -> int:
-    """The G number the kernel state has in G group ``group``; -1 for a group it does not apply."""
+def g_of_group(k, group: int, typ3=None) -> int:
+    """The G number the kernel state (and the Typ3 G-function state ``typ3`` that goes with it) has in G
+    group ``group``; -1 for a group it does not apply."""
+    if group == 28 and typ3 is not None:
+        return typ3.external or 146  # external tool compensation G145..G845, G146 = none
     if group == 2:
         return k.motion
     if group == 3:
@@ -62,7 +67,9 @@ def f_sd(rt, group, i1=None, i2=None, i3=None):
         if i2 not in (1, 2):
             raise CplError("CPL040" if i2 == 3 else "CPL023", "SD(1,g,1|2): 3 (power-on state) is not available")
         # 1 = active (executed), 2 = last programmed (prepared), L2218
-        return g_of_group(rt.kernel if i2 == 1 else rt.prepared_kernel(), nul(i1))
+        if i2 == 1:
+            return g_of_group(rt.kernel, nul(i1), c.g_active)
+        return g_of_group(rt.prepared_kernel(), nul(i1), c.g_programmed)
     if group == 2 or group == 202:
         key = {1: "feed", 3: "spindle", 4: "spindle2"}.get(i1 if group == 2 else {1: 3, 2: 4}.get(i1))
         if key is None:
@@ -115,7 +122,103 @@ def f_sd(rt, group, i1=None, i2=None, i3=None):
         if i2 not in (None, 1):
             return 0 if group == 205 else -1
         return math.ceil(k.speed - 1e-9) if group == 205 else _spindle(k)
+    if group in TYP3_GROUPS:
+        if group == 131 and i1 not in (1, 2):
+            raise CplError("CPL023", f"SD(131,{i1}): 1 (last programmed) or 2 (active)")
+        return _whole(_typ3(rt, group, i1, i2))
+    if group == 200:
+        return _area(rt, i1, i2)
     raise CplError("CPL040", f"SD({group}) is not available in this simulation")
+
+
+TYP3_GROUPS = (68, 168, 268, 131, 328, 581)
+
+
+def _whole(v):
+    """An SD value as INTEGER: a length or an angle rounded half away from zero."""
+    if v.__class__ is int:
+        return v
+    return int(math.copysign(math.floor(abs(v) + 0.5), v))
+
+
+def _length(rt, kernel, n: int, mm: float) -> float:
+    """mm of logical axis n -> programming units (rotary axes: degrees)."""
+    ax = rt.ctl.channel_axes(rt.ctl.channel)[n - 1]
+    return mm if ax.rotary else mm / kernel.scale
+
+
+def _logical(rt, a) -> int:
+    n = len(rt.ctl.channel_axes(rt.ctl.channel))
+    if a.__class__ is not int or not 1 <= a <= min(n, N_LOGICAL):
+        raise CplError("1938", f"logical axis {a!r} is not applied (1..{min(n, N_LOGICAL)})")
+    return a
+
+
+def _typ3(rt, group, i1, i2):
+    """Groups 68/168/268 (coordinate shifts), 131 (G131), 328 (G328), 581 (axis coupling): REAL values."""
+    c = rt.ctl
+    if group in (68, 168, 268):
+        if i1 not in (1, 2):
+            raise CplError("CPL023", f"SD({group},{i1}): 1 (last programmed) or 2 (active)")
+        st, k = (c.g_programmed, rt.prepared_kernel()) if i1 == 1 else (c.g_active, rt.kernel)
+        n = _logical(rt, i2)
+        mm = (st.g168[n - 1] if group != 268 else 0.0) + (st.g268[n - 1] if group != 168 else 0.0)
+        return _length(rt, k, n, mm)
+    if group == 131:
+        if i1 in (1, 2):
+            return (c.g_programmed if i1 == 1 else c.g_active).rotation_axis
+        if i1 in (3, 4):
+            st = c.g_active
+            return float(st.offset_angle if i1 == 3 else st.adaptation_angle)
+        raise CplError("CPL023", f"SD(131,{i1}): 1 programmed, 2 active axis; 3 offset, 4 adaptation angle")
+    if group == 328:
+        st, k = c.g_programmed, rt.prepared_kernel()
+        if i1 in (None, 1):
+            return st.barrier / k.scale
+        if i1 == 2:
+            return st.corners / k.scale
+        raise CplError("CPL023", f"SD(328,{i1}): 1 precision barrier, 2 distance between corners")
+    return _coupling(rt, i1, i2)
+
+
+def _coupling(rt, i1, i2):
+    """Group 581: SD(581,0,m) = m if logical axis m is a master; SD(581,s,0..3) for slave s."""
+    st, k = rt.ctl.g_programmed, rt.prepared_kernel()
+    if i1 == 0:
+        m = _logical(rt, i2)
+        return m if any(cp[1] == m for cp in st.coupling) else 0
+    s = _logical(rt, i1)
+    if i2 not in (0, 1, 2, 3):
+        raise CplError("CPL023", f"SD(581,{s},{i2}): 0 master, 1 slave shift, 2 factor, 3 master shift")
+    cp = next((cp for cp in st.coupling if cp[0] == s), None)
+    if cp is None:
+        return 0 if i2 == 0 else 0.0
+    if i2 == 0:
+        return cp[1]
+    if i2 == 2:
+        return cp[3]
+    return _length(rt, k, s if i2 == 1 else cp[1], cp[2] if i2 == 1 else cp[4])
+
+
+def _area(rt, i1, i2):
+    """Group 200: work areas and dead ranges of the channel ([cpl] areas), values in programming units."""
+    areas = rt.ctl.areas
+    if i1 == 1 and i2 is None:
+        return sum(1 for a in areas if a["active"])
+    if i1 not in (1, 2, 3, 11, 12, 21, 22):
+        raise CplError("CPL023", f"SD(200,{i1}): 1, 2, 3, 11, 12, 21 or 22")
+    if i2.__class__ is not int or not 1 <= i2 <= MAX_AREAS:
+        raise CplError("CPL023", f"SD(200,{i1},{i2!r}): area 1..{MAX_AREAS}")
+    area = areas[i2 - 1] if i2 <= len(areas) else None
+    if i1 in (1, 2):
+        return 1 if area and area["active"] else 0
+    if i1 == 3:
+        return area["type"] if area else 0
+    if area is None:
+        return 0
+    value = (area["centre"] if i1 < 20 else area["extent"])[i1 % 10 - 1]
+    ax = rt.ctl.by_name(area["axes"][i1 % 10 - 1])
+    return _whole(value if ax.rotary else value / rt.kernel.scale)
 
 
 def _axis_numbers(rt, group, i1, i2):
@@ -149,6 +252,8 @@ def f_sdr(rt, group, i1=None, i2=None):
         if i1.__class__ is not int or not 1 <= i1 <= len(logical):
             raise CplError("1938", f"SDR(1,{i1}): machining axis not applied")
         return 0.0  # no block search has run (L2316)
+    if group in (68, 168, 268, 328, 581) or group == 131 and i1 in (3, 4):
+        return float(_typ3(rt, group, i1, i2))
     raise CplError("CPL040", f"SDR({group}) is not available in this simulation")
 
 
@@ -181,5 +286,5 @@ def f_ncf(rt, text):
     group = GROUP_OF.get(int(text[1:]))
     if group is None:
         raise CplError("CPL040", f"NCF({text!r}): unknown NC function")
-    g = g_of_group(rt.prepared_kernel(), group)
+    g = g_of_group(rt.prepared_kernel(), group, rt.ctl.g_programmed)
     return "" if g < 0 else f"G{g}"

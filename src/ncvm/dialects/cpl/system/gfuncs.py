@@ -1,0 +1,175 @@
+"""Typ3 osa G functions that the shared NC kernel does not know, kept by the CPL controller so that
+SD/SDR groups 68, 168, 268, 131, 328 and 581 (manual §4.9 L2259-2297, L2328-2347), SD(1,28), NCF and
+MCODS 51, 54, 64-67 read them.
+
+The CPL manual names these functions but their block syntax is in the DIN manual, which is not part of
+the seeds; the forms below are recorded in docs/decisions.md:
+
+* ``G168 <axis words>``: program coordinate shift of the named axes (the others keep theirs); ``G168``
+  alone clears it. ``G268 <axis words>``: the additive coordinate shift, the same way. The axis words of
+  these blocks are shift values, not a motion. PCS = WCS - G168 - G268 (digest §8.2): the shifts act
+  on the kernel like the external shifts G160-G360, as additive offsets.
+* ``G131 <axis><offset angle> [I<adaptation angle>]``: tangential tool guidance with that axis as axis of
+  rotation symmetry; ``G130`` deselects it.
+* ``G328 [I<precision barrier>] [K<distance between corners>]``: a missing word keeps its last value.
+* ``G581 <slave axis><slave shift> I<master> [J<factor>] [K<master shift>]``: axis coupling (master as
+  a logical axis number of the channel); ``G580 [<slave axes>]`` removes the couplings of the named
+  slaves, or all.
+* ``G145``..``G845`` select an external, ``G147``..``G847`` a general tool compensation (values: TC with
+  table 0); ``G146`` deselects both. Stored only (digest §12 tier 2); MCODS 51/54 read them.
+* ``M40``..``M44``, ``M48``: the spindle gear range (MCODS 64-67); the M function also goes to the PLC.
+
+A block carrying one of them is split at preparation: the programmed state changes at once (SD index
+1, "last programmed"); the rest of the block is queued as a :class:`Typ3Block` that carries the state,
+which becomes active when the block is executed (SD index 2).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, replace
+
+from ....nc.block import Block
+from ..errors import CplError
+
+WORD_CODES = frozenset((130, 131, 168, 268, 328, 580, 581))  # their block's words are their values
+COMPENSATIONS = frozenset([146] + [g + 45 for g in range(100, 900, 100)] + [g + 47 for g in range(100, 900, 100)])
+TYP3_G = WORD_CODES | COMPENSATIONS
+GEARS = frozenset((40, 41, 42, 43, 44, 48))  # M40 automatic gear range, M41-M44 gear 1-4, M48 neutral
+INCH = 25.4
+N_LOGICAL = 8  # the shifts are kept for logical axes 1..8 (SD index range 1..8)
+
+
+@dataclass(frozen=True, slots=True)
+class NcFuncs:
+    """The state of the Typ3 G functions; lengths in mm, angles in degrees."""
+
+    g168: tuple = (0.0,) * N_LOGICAL
+    g268: tuple = (0.0,) * N_LOGICAL
+    rotation_axis: int = 0  # G131: logical axis number, 0 = not selected
+    offset_angle: float = 0.0
+    adaptation_angle: float = 0.0
+    barrier: float = 0.0  # G328 precision barrier
+    corners: float = 0.0  # G328 distance between corners
+    coupling: tuple = ()  # ((slave, master, slave shift, factor, master shift), ...) by slave
+    external: int = 0  # selected external tool compensation G145..G845, 0 = none
+    general: int = 0  # selected general tool compensation G147..G847, 0 = none
+    gear: int = 40  # spindle gear range (M40 automatic at power-on)
+
+
+class Typ3Block(Block):
+    """A queued block that also activates the Typ3 G-function state prepared with it."""
+
+    __slots__ = ("state",)
+
+    def __init__(self, state: NcFuncs, g, m, words, n, msg, src):
+        super().__init__(g, m, words, n, msg, src)
+        self.state = state
+
+    def has_nc(self) -> bool:
+        return bool(self.g or self.m or self.words or self.msg is not None)
+
+
+def prepare(rt, blk: Block) -> Block:
+    """Take the Typ3 G functions (and the gear M functions) out of a block at preparation."""
+    if not (TYP3_G.intersection(blk.g) or GEARS.intersection(blk.m)):
+        return blk
+    c = rt.ctl
+    st = c.g_programmed
+    for mc in blk.m:
+        if mc in GEARS:
+            st = replace(st, gear=mc)
+    for g in blk.g:
+        if g in COMPENSATIONS:
+            st = _compensation(st, g)
+    codes = [g for g in blk.g if g in WORD_CODES]
+    if len(codes) > 1:
+        raise CplError("CPL040", f"G{codes[0]} and G{codes[1]} cannot stand in one block")
+    words = dict(blk.words)
+    if codes:
+        st = _with_words(rt, blk, codes[0], st, words)
+    c.g_programmed = st
+    return Typ3Block(st, tuple(g for g in blk.g if g not in TYP3_G), blk.m, words, blk.n, blk.msg, blk.src)
+
+
+def _compensation(st: NcFuncs, g: int) -> NcFuncs:
+    """G145..G845 select an external, G147..G847 a general tool compensation; G146 deselects both."""
+    if g == 146:
+        return replace(st, external=0, general=0)
+    return replace(st, external=g) if g % 100 == 45 else replace(st, general=g)
+
+
+def _with_words(rt, blk: Block, code: int, st: NcFuncs, words: dict) -> NcFuncs:
+    """G168/G268, G130/G131, G328, G580/G581: the values of the block's words (taken out of ``words``)."""
+    c = rt.ctl
+    logical = c.channel_axes(c.channel)[:N_LOGICAL]
+    scale = INCH if 70 in blk.g else 1.0 if 71 in blk.g else rt.prepared_kernel().scale  # G70/G71 first
+    axes = []  # (logical number, value in mm or degrees)
+    for n, ax in enumerate(logical, 1):
+        if ax.name in words:
+            v = words.pop(ax.name)
+            axes.append((n, v if ax.rotary else v * scale))
+    if code in (168, 268):
+        vals = list(st.g168 if code == 168 else st.g268) if axes else [0.0] * N_LOGICAL
+        for n, v in axes:
+            vals[n - 1] = v
+        return replace(st, **{f"g{code}": tuple(vals)})
+    if code == 130:
+        return replace(st, rotation_axis=0, offset_angle=0.0, adaptation_angle=0.0)
+    if code == 131:
+        if len(axes) != 1:
+            raise CplError("CPL040", "G131 names one axis of rotation symmetry with its offset angle")
+        (n, v), = axes
+        if not logical[n - 1].rotary:
+            raise CplError("CPL040", f"G131: {logical[n - 1].name} is not a rotary axis")
+        return replace(st, rotation_axis=n, offset_angle=v, adaptation_angle=float(words.pop("I", 0.0)))
+    if code == 328:
+        return replace(st, barrier=words.pop("I") * scale if "I" in words else st.barrier,
+                       corners=words.pop("K") * scale if "K" in words else st.corners)
+    if code == 580:
+        slaves = {n for n, _ in axes}
+        return replace(st, coupling=tuple(cp for cp in st.coupling if axes and cp[0] not in slaves))
+    return replace(st, coupling=_couple(st, axes, words, len(logical), scale))
+
+
+def _couple(st: NcFuncs, axes, words: dict, n_logical: int, scale: float) -> tuple:
+    if len(axes) != 1 or "I" not in words:
+        raise CplError("CPL040", "G581 names one slave axis (its shift) and its master with I")
+    (slave, shift), = axes
+    master = words.pop("I")
+    if master != int(master) or not 1 <= master <= n_logical:
+        raise CplError("1938", f"G581 master axis {master:g} is not a logical axis of the channel")
+    if int(master) == slave:
+        raise CplError("CPL040", "G581: an axis cannot be its own master")
+    entry = (slave, int(master), shift, float(words.pop("J", 1.0)), words.pop("K", 0.0) * scale)
+    return tuple(sorted([cp for cp in st.coupling if cp[0] != slave] + [entry]))
+
+
+def activate(rt, kernel, blk: Typ3Block) -> None:
+    """Execution of a Typ3Block: its state becomes active (on the NC kernel, or on the prepared copy)."""
+    if kernel is rt.kernel:
+        rt.ctl.g_active = blk.state
+    kernel.set_additive_offset(additive(rt, kernel, blk.state))
+    if blk.has_nc():
+        kernel.execute(blk)
+
+
+def additive(rt, kernel, state: NcFuncs) -> list[float]:
+    """The kernel's additive offsets: external shifts G160/G260/G360 plus the shifts G168 and G268."""
+    c = rt.ctl
+    logical = [a.name for a in c.channel_axes(c.channel)]
+    add = [0.0] * kernel.n_axes
+    for i, name in enumerate(kernel.axis_names):
+        if name in logical and (n := logical.index(name)) < N_LOGICAL:
+            add[i] = sum(vec[n] for vec in c.external.values()) + state.g168[n] + state.g268[n]
+    return add
+
+
+def program_shift(rt, kernel, i: int) -> float:
+    """G168 + G268 (mm) of kernel axis i: part of the kernel's additive offset that is no axis zero shift."""
+    c = rt.ctl
+    st = c.g_active if kernel is rt.kernel else c.g_programmed
+    logical = [a.name for a in c.channel_axes(c.channel)]
+    name = kernel.axis_names[i]
+    if name not in logical or (n := logical.index(name)) >= N_LOGICAL:
+        return 0.0
+    return st.g168[n] + st.g268[n]
