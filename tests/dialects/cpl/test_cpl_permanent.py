@@ -72,3 +72,10 @@ def test_bad_declaration_line(tmp_path, run_text):
     r = run_text("10 @1 = 1\nM30\n", name="p.cpl", machine=m)
     assert r["error"]["code"] == "CPL038"
     assert r["error"]["file"].endswith("wmhperm.dat")
+
+
+def test_mid_write_on_a_permanent_character_field_is_not_in_this_version(tmp_path, run_text):
+    m = mill(tmp_path)
+    (tmp_path / "files" / "anwperm.dat").write_text("DEF CHAR @LASTPART(8)\n")
+    r = run_text('10 MID$(@LASTPART$,1,2)="AB"\nM30\n', name="p.cpl", machine=m)
+    assert r["status"] == "error" and r["error"]["code"] == "CPL037"
