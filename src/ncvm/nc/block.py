@@ -9,7 +9,11 @@ blocks are built once at compile time and reused.
 
 from __future__ import annotations
 
+import math
 import re
+from dataclasses import dataclass
+
+import numpy as np
 
 from ..diagnostics import Diagnostic, Span
 from .canon import Src
@@ -120,82 +124,107 @@ def _strip_comments(line: str):
 
 
 def read_din_program(path: str, text: str) -> tuple[list[tuple[Block, bool]], list[Diagnostic]]:
-    """Read a whole plain DIN program: (block, block-skip flag) per executable line, plus diagnostics.
-
-    Per-line regex calls dominate reading a large program, so the whole text is
-    cut into words by one regex pass (:func:`_plain_lines`); only the few lines
-    that are more than bare words (comments, block skip, ``%``, an address
-    twice, errors) go through :func:`parse_din_line`. Both give the same blocks.
-    """
-    lines = text.splitlines()
-    plain = _plain_lines(text, path)
+    """Read a whole plain DIN program: (block, block-skip flag) per executable line, plus diagnostics."""
+    segments, diags = read_din_segments(path, text)
     blocks: list[tuple[Block, bool]] = []
-    diags: list[Diagnostic] = []
-    for lineno, line in enumerate(lines, 1):
-        blk = plain.get(lineno, _GENERAL) if plain is not None else _GENERAL
-        if blk is not _GENERAL:
-            if blk is not None:
-                blocks.append((blk, False))
-            continue
-        stripped = line.lstrip()
-        skip = stripped.startswith("/")
-        if skip:
-            line = line.replace("/", " ", 1)
-        try:
-            blk = parse_din_line(line, Src(path, lineno))
-        except DinSyntaxError as e:
-            diags.append(Diagnostic("NC001", e.message, Span(path, lineno, e.column)))
-            continue
-        if blk is not None:
-            blocks.append((blk, skip))
+    for seg in segments:
+        if isinstance(seg, PlainRun):
+            blocks.extend((blk, False) for blk in seg.blocks())
+        else:
+            blocks.append(seg)
     return blocks, diags
 
 
-#: marks a line that the general line parser must read
-_GENERAL = object()
-#: a word, a line end, or any other visible character (which sends its line to the general parser)
-_TOKEN = re.compile(r"([A-Z])[ \t]*([-+]?(?:\d+\.?\d*|\.\d+))|(\n)|[^ \t]")
-#: line breaks of str.splitlines other than \n: texts with these are read line by line
-_ODD_BREAKS = re.compile("[\r\x0b\x0c\x1c\x1d\x1e\x85\u2028\u2029]")
+@dataclass
+class PlainRun:
+    """Consecutive plain blocks of one file (N, one motion G code, X Y Z I J K F words), held as columns.
 
-
-def _plain_lines(text: str, path: str) -> dict | None:
-    """Block (or None for an empty line) per line number of every line that is nothing but words.
-
-    Lines missing from the result need :func:`parse_din_line`. None when the
-    text has line breaks other than LF / CRLF (then every line goes there).
+    ``words`` maps each of :data:`PLAIN_WORDS` to a float column with NaN where
+    a block has no such word; ``g`` is the motion G code or -1. The kernel
+    executes a run column-wise (:mod:`ncvm.nc.plainrun`); :meth:`block` gives
+    any one of them as the line parser reads it.
     """
-    text = text.replace("\r\n", "\n")
-    if _ODD_BREAKS.search(text):
-        return None
-    out: dict[int, Block | None] = {}
-    lineno = 1
-    g: list = []
-    m: list = []
-    words: dict[str, float] = {}
-    nno = None
-    general = False
-    for letter, num, newline in _TOKEN.findall(text.upper()):
-        if letter:
-            if letter == "G":
-                v = float(num)
-                g.append(int(v) if v == int(v) else v)
-            elif letter == "M":
-                m.append(int(float(num)))
-            elif letter == "N":
-                nno = int(float(num))
-            elif letter in words:
-                general = True  # an address twice: the general parser reports it
-            else:
-                words[letter] = float(num)
-            continue
-        if not newline:
-            general = True
-            continue
-        if not general:
-            out[lineno] = Block(tuple(g), tuple(m), words, nno, None, Src(path, lineno)) if g or m or words else None
-        lineno += 1
-        g, m, words, nno, general = [], [], {}, None, False
-    if not general:
-        out[lineno] = Block(tuple(g), tuple(m), words, nno, None, Src(path, lineno)) if g or m or words else None
-    return out
+
+    file: str
+    lines: np.ndarray  # int, physical line of each block
+    numbers: tuple  # N number of each block as written ("" without one)
+    g: np.ndarray  # int, motion G code 0..3 or -1
+    words: dict  # address -> float column
+
+    def __len__(self) -> int:
+        return len(self.lines)
+
+    def block(self, i: int) -> Block:
+        g = int(self.g[i])
+        words = {a: float(col[i]) for a, col in self.words.items() if not math.isnan(col[i])}
+        n = int(self.numbers[i]) if self.numbers[i] else None
+        return Block((g,) if g >= 0 else (), (), words, n, None, Src(self.file, int(self.lines[i])))
+
+    def blocks(self):
+        return (self.block(i) for i in range(len(self)))
+
+
+#: the addresses of a plain block besides N and its motion G code, in the order CAM output writes them
+PLAIN_WORDS = "XYZIJKF"
+_NUM = r"([-+]?(?:\d+\.?\d*|\.\d+))"
+#: a plain line with at least one G code or word (groups: N, G, then PLAIN_WORDS), or any other line with its
+#: line break (last group: never empty, so blank lines and lines of nothing but N go the general way too)
+_PLAIN_LINE = re.compile(r"^[ \t]*(?:N(\d+)[ \t]*)?(?=[GXYZIJKF])(?:G0?([0-3])(?![\d.])[ \t]*)?"
+                         + "".join(rf"(?:{a}{_NUM}[ \t]*)?" for a in PLAIN_WORDS) + r"$|^(.*\n?)", re.M)
+#: motion G code as the reader finds it -> its number (-1: the block has none)
+_MOTION = {"": -1, "0": 0, "1": 1, "2": 2, "3": 3}
+_NAN = math.nan
+
+
+def read_din_segments(path: str, text: str) -> tuple[list, list[Diagnostic]]:
+    """The program as segments in line order: :class:`PlainRun` stretches and (block, skip) pairs, plus diagnostics.
+
+    Per-line work dominates reading a large program, so one regex pass over the
+    whole text sorts the lines: plain lines become columns of a
+    :class:`PlainRun`; the others (comments, block skip, ``%``, other words,
+    errors) go through :func:`parse_din_line` one by one.
+    """
+    lines = text.splitlines()
+    flat = text.replace("\r\n", "\n")
+    segments: list = []
+    diags: list[Diagnostic] = []
+    if flat.count("\n") + (not flat.endswith("\n")) != len(lines):
+        # line breaks of str.splitlines other than LF: read line by line
+        general = range(1, len(lines) + 1)
+        columns = None
+    else:
+        matches = _PLAIN_LINE.findall(flat.upper())[:len(lines)]
+        if not matches:
+            return segments, diags
+        columns = list(zip(*matches))
+        general = [lineno for lineno, rest in enumerate(columns[-1], 1) if rest]
+    start = 0
+    for lineno in general:
+        if lineno - 1 > start:
+            _add_run(segments, path, columns, start, lineno - 1)
+        start = lineno
+        _read_general(segments, diags, path, lineno, lines[lineno - 1])
+    if len(lines) > start:
+        _add_run(segments, path, columns, start, len(lines))
+    return segments, diags
+
+
+def _read_general(segments, diags, path: str, lineno: int, line: str) -> None:
+    skip = line.lstrip().startswith("/")
+    if skip:
+        line = line.replace("/", " ", 1)
+    try:
+        blk = parse_din_line(line, Src(path, lineno))
+    except DinSyntaxError as e:
+        diags.append(Diagnostic("NC001", e.message, Span(path, lineno, e.column)))
+        return
+    if blk is not None:
+        segments.append((blk, skip))
+
+
+def _add_run(segments, path: str, columns, lo: int, hi: int) -> None:
+    """Lines lo+1..hi, all plain, as a PlainRun."""
+    words = {a: np.array([float(v) if v else _NAN for v in col[lo:hi]]) if any(col[lo:hi]) else np.full(hi - lo, _NAN)
+             for a, col in zip(PLAIN_WORDS, columns[2:])}
+    g = np.array(list(map(_MOTION.__getitem__, columns[1][lo:hi])), dtype=np.int64)
+    segments.append(PlainRun(path, np.arange(lo + 1, hi + 1), columns[0][lo:hi], g, words))

@@ -42,6 +42,32 @@ class ArcSpec:
     turns: int = 0
 
 
+@dataclass(slots=True)
+class MoveBatch:
+    """Many consecutive moves in one call (a run of plain blocks executed column-wise).
+
+    Row ``i`` is the move ``kind[i]`` (0 rapid, 1 straight feed, 2 arc) from
+    ``start[i]`` to ``end[i]`` at ``feed[i]``; ``arcs`` maps the row of each arc to
+    its :class:`ArcSpec`, and ``arc_angle``, ``arc_length`` and ``arc_extent``
+    (rows of lo_a, hi_a, lo_b, hi_b) hold its sweep, length and reach in its
+    plane, in the order of those rows.
+    """
+
+    kind: object  # numpy int8 column
+    start: object  # numpy (moves, axes)
+    end: object
+    feed: object
+    file: str
+    lines: object  # numpy int column: the physical line of each move's block
+    arcs: dict | None = None
+    arc_angle: object = None
+    arc_length: object = None
+    arc_extent: object = None
+
+    def __len__(self) -> int:
+        return len(self.kind)
+
+
 class CanonSink:
     """Receiver of canonical machining calls. Every method is a no-op here."""
 
@@ -56,6 +82,20 @@ class CanonSink:
 
     def arc(self, start: tuple, end: tuple, spec: ArcSpec, feed: float, src: Src) -> None:
         """Circular or helical move at ``feed`` (mm/min)."""
+
+    def move_batch(self, batch: MoveBatch) -> None:
+        """Many moves at once; by default each is replayed as its :meth:`rapid`, :meth:`feed` or :meth:`arc` call."""
+        starts, ends = batch.start.tolist(), batch.end.tolist()
+        arcs = batch.arcs or {}
+        rows = zip(batch.kind.tolist(), batch.feed.tolist(), batch.lines.tolist())
+        for i, (kind, feed, line) in enumerate(rows):
+            start, end, src = tuple(starts[i]), tuple(ends[i]), Src(batch.file, line)
+            if kind == 0:
+                self.rapid(start, end, src)
+            elif kind == 1:
+                self.feed(start, end, feed, src)
+            else:
+                self.arc(start, end, arcs[i], feed, src)
 
     def dwell(self, seconds: float, src: Src) -> None:
         """Wait with axes standing still."""
@@ -88,7 +128,7 @@ class CanonSink:
         """The run is over (normally or by a fault): flush files."""
 
 
-_METHODS = ("begin", "rapid", "feed", "arc", "dwell", "tool_change", "tool_offset", "spindle", "coolant",
+_METHODS = ("begin", "rapid", "feed", "arc", "move_batch", "dwell", "tool_change", "tool_offset", "spindle", "coolant",
             "aux", "message", "stop", "program_end", "end")
 
 
@@ -102,8 +142,14 @@ class Canon:
     def __init__(self, sinks: list[CanonSink]):
         self.sinks = list(sinks)
         for name in _METHODS:
-            bound = [getattr(s, name) for s in self.sinks if getattr(type(s), name) is not getattr(CanonSink, name)]
+            bound = [getattr(s, name) for s in self.sinks if _overrides(s, name)]
             setattr(self, name, _fan_out(bound, name))
+
+
+def _overrides(sink: CanonSink, name: str) -> bool:
+    """Whether ``sink`` cares about canon call ``name`` (a batch of moves matters to any sink that takes moves)."""
+    names = ("move_batch", "rapid", "feed", "arc") if name == "move_batch" else (name,)
+    return any(getattr(type(sink), n) is not getattr(CanonSink, n) for n in names)
 
 
 def _fan_out(bound, name: str = ""):

@@ -47,7 +47,7 @@ class LimitCheck:
     @property
     def violations(self) -> dict[str, LimitViolation]:
         """Axis name -> its first violation, in the order they happened (move, then axis order)."""
-        if not self.recorder.moves:
+        if not len(self.recorder):
             return {}
         lo, hi = self._reach()
         found = []
@@ -57,7 +57,7 @@ class LimitCheck:
             if not bad.any():
                 continue
             k = int(bad.argmax())
-            src = self.recorder.moves[k][2]
+            src = self.recorder.src(k)
             if below[k]:
                 found.append((k, i, LimitViolation(ax.name, float(lo[k, i]), ax.min, src.file, src.line)))
             else:

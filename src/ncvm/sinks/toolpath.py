@@ -3,13 +3,14 @@
 from __future__ import annotations
 
 import math
+from bisect import bisect_right
 from dataclasses import dataclass
 from itertools import chain
 
 import numpy as np
 
 from ..nc import arcs
-from ..nc.canon import ArcSpec, CanonSink, Src
+from ..nc.canon import ArcSpec, CanonSink, MoveBatch, Src
 
 RAPID, FEED, ARC = 0, 1, 2
 
@@ -31,16 +32,22 @@ class MotionSummary:
 class ToolpathRecorder(CanonSink):
     """Records moves; :meth:`arrays` gives ``kind``, ``start``, ``end``, ``tool``, ``line`` as numpy arrays.
 
-    Arcs keep their :class:`ArcSpec` so plots can draw them and extents include
-    the quadrant points an arc passes through.
+    Single moves are appended as rows (one append on the hot path); batches of
+    moves arrive as columns and are kept as they are. Both end up as chunks of
+    columns, joined when :meth:`arrays` is asked. Arcs keep their
+    :class:`ArcSpec` so plots can draw them and extents include the quadrant
+    points an arc passes through.
     """
 
     def __init__(self):
         self.axis_names: tuple[str, ...] = ()
         self.start_point: tuple = ()
-        #: one (kind, end, src, tool) row per move: a single append on the hot path
-        self.moves: list[tuple] = []
-        self._add = self.moves.append
+        #: single moves not yet in a chunk: (kind, end, src, tool) rows
+        self._rows: list[tuple] = []
+        self._add = self._rows.append
+        #: (first move index, columns, file of a batch or None, Src list of single moves or None)
+        self._chunks: list[tuple] = []
+        self._chunked = 0  # moves held in chunks
         self.arcs: dict[int, ArcSpec] = {}
         #: move index -> (a, b, lo_a, hi_a, lo_b, hi_b): where each arc reaches in its plane (limit check)
         self.arc_bounds: dict[int, tuple] = {}
@@ -60,21 +67,68 @@ class ToolpathRecorder(CanonSink):
         self._add((FEED, end, src, self.tool))
 
     def arc(self, start, end, spec: ArcSpec, feed, src: Src):
-        index = len(self.moves)
-        self.arcs[index] = spec
+        index = len(self)
         self._add((ARC, end, src, self.tool))
         a, b = spec.a, spec.b
         ca, cb = spec.center
         angle = arcs.sweep(start[a], start[b], end[a], end[b], ca, cb, spec.cw, spec.turns)
         helix = math.sqrt(sum((e - s) ** 2 for i, (s, e) in enumerate(zip(start, end)) if i not in (a, b)))
-        self.arc_length += arcs.arc_length(spec.radius, angle, helix)
-        lo_a, hi_a, lo_b, hi_b = arcs.arc_plane_extent(start[a], start[b], ca, cb, spec.radius, angle)
+        self._add_arc(index, spec, arcs.arc_length(spec.radius, angle, helix),
+                      arcs.arc_plane_extent(start[a], start[b], ca, cb, spec.radius, angle))
+
+    def move_batch(self, batch: MoveBatch):
+        """Moves of a plain run: kept as the batch's columns, arc lengths and extents taken from the batch."""
+        self._flush()
+        base = self._chunked
+        n = len(batch)
+        columns = {"kind": batch.kind, "end": batch.end, "tool": np.full(n, self.tool, dtype=np.int32),
+                   "line": batch.lines}
+        self._chunks.append((base, columns, batch.file, None))
+        self._chunked += n
+        if not batch.arcs:
+            return
+        rows = [base + row for row in batch.arcs]
+        self.arcs.update(zip(rows, batch.arcs.values()))
+        self.arc_length = float(np.cumsum(np.concatenate(([self.arc_length], batch.arc_length)))[-1])
+        extent = batch.arc_extent
+        planes = [(spec.a, spec.b) for spec in batch.arcs.values()]
+        self.arc_bounds.update(zip(rows, ((a, b, *e) for (a, b), e in zip(planes, extent.tolist()))))
+        for a, b in set(planes):
+            mask = [p == (a, b) for p in planes]
+            sub = extent[mask]
+            self._widen(a, float(sub[:, 0].min()), float(sub[:, 1].max()))
+            self._widen(b, float(sub[:, 2].min()), float(sub[:, 3].max()))
+
+    def _add_arc(self, index: int, spec: ArcSpec, length: float, extent) -> None:
+        a, b = spec.a, spec.b
+        lo_a, hi_a, lo_b, hi_b = extent
+        self.arcs[index] = spec
+        self.arc_length += length
         self.arc_bounds[index] = (a, b, lo_a, hi_a, lo_b, hi_b)
+        self._widen(a, lo_a, hi_a)
+        self._widen(b, lo_b, hi_b)
+
+    def _widen(self, axis: int, lo: float, hi: float) -> None:
+        """Widen the extent arcs reach on ``axis``."""
         ext = self.arc_extent
         if ext is None:
             ext = self.arc_extent = [[math.inf, -math.inf] for _ in self.axis_names]
-        ext[a][0], ext[a][1] = min(ext[a][0], lo_a), max(ext[a][1], hi_a)
-        ext[b][0], ext[b][1] = min(ext[b][0], lo_b), max(ext[b][1], hi_b)
+        ext[axis][0], ext[axis][1] = min(ext[axis][0], lo), max(ext[axis][1], hi)
+
+    def _flush(self) -> None:
+        """Turn the single-move rows into a chunk of columns."""
+        rows = self._rows
+        if not rows:
+            return
+        n, n_axes = len(rows), len(self.axis_names)
+        ends = np.fromiter(chain.from_iterable(row[1] for row in rows), dtype=float, count=n * n_axes)
+        columns = {"kind": np.fromiter((row[0] for row in rows), dtype=np.int8, count=n),
+                   "end": ends.reshape(n, n_axes),
+                   "tool": np.fromiter((row[3] for row in rows), dtype=np.int32, count=n),
+                   "line": np.fromiter((row[2].line for row in rows), dtype=np.int32, count=n)}
+        self._chunks.append((self._chunked, columns, None, [row[2] for row in rows]))
+        self._chunked += n
+        rows.clear()
 
     def tool_change(self, tool, src):
         self.tool = tool
@@ -82,44 +136,30 @@ class ToolpathRecorder(CanonSink):
     # -- results ---------------------------------------------------------
     def __len__(self) -> int:
         """Moves recorded so far (the CLI's progress line reads this while the program runs)."""
-        return len(self.moves)
+        return self._chunked + len(self._rows)
 
-    @property
-    def kinds(self) -> list[int]:
-        return [row[0] for row in self.moves]
-
-    @property
-    def ends(self) -> list[tuple]:
-        return [row[1] for row in self.moves]
-
-    @property
-    def lines(self) -> list[int]:
-        return [row[2].line for row in self.moves]
-
-    @property
-    def srcs(self) -> list[Src]:
-        return [row[2] for row in self.moves]
+    def src(self, index: int) -> Src:
+        """Where move ``index`` came from."""
+        self._flush()
+        first, columns, file, srcs = self._chunks[bisect_right(self._chunks, index, key=lambda c: c[0]) - 1]
+        return srcs[index - first] if srcs is not None else Src(file, int(columns["line"][index - first]))
 
     def end_array(self) -> np.ndarray:
         """End point of every move, one row per move (shared with :meth:`arrays`: do not modify it)."""
         return self.arrays()["end"]
 
-    @property
-    def tools(self) -> list[int]:
-        return [row[3] for row in self.moves]
-
     def arrays(self) -> dict[str, np.ndarray]:
         """The moves as numpy columns; built once per number of moves (summary, limit check and plot share it)."""
-        moves = self.moves
-        if self._arrays is not None and self._arrays[0] == len(moves):
+        self._flush()
+        n, n_axes = self._chunked, len(self.axis_names)
+        if self._arrays is not None and self._arrays[0] == n:
             return self._arrays[1]
-        n, n_axes = len(moves), len(self.axis_names)
-        ends = np.fromiter(chain.from_iterable(row[1] for row in moves), dtype=float, count=n * n_axes)
-        ends = ends.reshape(n, n_axes)
-        starts = np.vstack([np.asarray(self.start_point, dtype=float).reshape(1, n_axes), ends[:-1]]) if n else ends
-        arr = {"kind": np.fromiter((row[0] for row in moves), dtype=np.int8, count=n), "start": starts, "end": ends,
-               "tool": np.fromiter((row[3] for row in moves), dtype=np.int32, count=n),
-               "line": np.fromiter((row[2].line for row in moves), dtype=np.int32, count=n)}
+        if self._chunks:
+            arr = {name: np.concatenate([c[1][name] for c in self._chunks]) for name in ("kind", "end", "tool", "line")}
+        else:
+            arr = {"kind": np.zeros(0, np.int8), "end": np.zeros((0, n_axes)), "tool": np.zeros(0, np.int32),
+                   "line": np.zeros(0, np.int32)}
+        arr["start"] = np.vstack([np.asarray(self.start_point, dtype=float).reshape(1, n_axes), arr["end"][:-1]])
         self._arrays = (n, arr)
         return arr
 

@@ -5,7 +5,9 @@ from __future__ import annotations
 import re
 
 from ...diagnostics import CompileFailed
-from ...nc.block import read_din_program
+from ...nc.block import PlainRun, read_din_program, read_din_segments
+from ...nc.canon import Src
+from ...nc.plainrun import execute_columns
 from ..base import Dialect
 
 _DIN_LINE = re.compile(r"^\s*(N\d+\s*)?([GMXYZFST]-?\d|\(|%|/|$)", re.I)
@@ -27,33 +29,53 @@ class DinDialect(Dialect):
         return read_din_program(path, text)[1]
 
     def run(self, path, text, session):
-        blocks, diags = read_din_program(path, text)
+        segments, diags = read_din_segments(path, text)
         if diags:
             raise CompileFailed(diags)
-        execute = session.kernel.execute
         kernel = session.kernel
         skip_active = bool(session.machine.setting_data.get("block_skip", True))
         counter = session.steps
         limit = counter.limit - counter.steps
         hook = counter.hook  # single-block stepping and breakpoints; None unless a debugger is attached
         done = 0
+        last_src = None
         try:
-            for blk, skip in blocks:
-                if skip and skip_active:
-                    continue
-                done += 1
-                if done > limit:
-                    done -= 1
-                    counter.runaway(blk.src.file, blk.src.line)
-                if hook is not None:
-                    hook(blk.src.file, blk.src.line, kernel.workpiece_position())
-                execute(blk)
+            for seg in segments:
+                if isinstance(seg, PlainRun):
+                    last_src = Src(path, int(seg.lines[-1]))
+                    if hook is None:
+                        # a run of plain motion blocks, executed column-wise up to the step limit
+                        count = min(len(seg), limit - done)
+                        lo = 0
+                        while (bad := execute_columns(kernel, seg, lo, count)) is not None:
+                            done += bad - lo + 1
+                            kernel.execute(seg.block(bad))  # a block that faults: the kernel says how
+                            lo = bad + 1
+                        done += count - lo
+                        if count < len(seg):
+                            counter.runaway(path, int(seg.lines[count]))
+                        continue
+                    blocks = ((blk, False) for blk in seg.blocks())
+                else:
+                    blocks = (seg,)
+                    last_src = seg[0].src
+                for blk, skip in blocks:
+                    if skip and skip_active:
+                        continue
+                    if done >= limit:
+                        counter.runaway(blk.src.file, blk.src.line)
+                    done += 1
+                    if hook is not None:
+                        hook(blk.src.file, blk.src.line, kernel.workpiece_position())
+                    kernel.execute(blk)
+                    if kernel.ended:
+                        break
                 if kernel.ended:
                     break
         finally:
             counter.steps += done
-        if not kernel.ended and blocks:
-            kernel.end_program(blocks[-1][0].src)
+        if not kernel.ended and last_src is not None:
+            kernel.end_program(last_src)
 
 
 DIALECT = DinDialect()

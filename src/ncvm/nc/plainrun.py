@@ -1,0 +1,259 @@
+"""Runs of plain motion blocks, executed as whole columns with numpy.
+
+Most of a CAM-generated DIN program is consecutive blocks made of nothing but
+an N number, one motion G code (G0 to G3) and X Y Z I J K F words. The reader
+(:func:`ncvm.nc.block.read_din_segments`) keeps such a stretch as a
+:class:`~ncvm.nc.block.PlainRun`: one numpy column per address, NaN where a
+block has no such word. :func:`execute_columns` then does for the whole run what
+:meth:`NcKernel.execute` does block by block -- modal motion and feed carried
+forward, G90/G91 targets, offsets, arc centres, the radius check, sweep
+angles, extents and move times -- and hands the moves to the canon interface
+as one :class:`~ncvm.nc.canon.MoveBatch`. The results are the block-by-block
+results (same formulas, same order of float operations, the clock summed in
+move order); ``tests/nc/test_plain_run.py`` holds the two paths side by side.
+
+A block that would fault (G1 without feed, an arc whose end lies on another
+radius, an arc without centre words) is left to the caller, who hands it to
+:meth:`NcKernel.execute`, so the fault and its message are the kernel's own.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from . import arcs
+from .block import PlainRun
+from .canon import ArcSpec, MoveBatch
+
+RAPID, FEED, ARC = 0, 1, 2
+HALF_PI = math.pi / 2
+SQRT2 = math.sqrt(2.0)
+
+
+def _carry(present: np.ndarray, values: np.ndarray, initial: float) -> np.ndarray:
+    """Modal values: each row's own value where present, else the last one before it, else ``initial``."""
+    n = len(present)
+    last = np.maximum.accumulate(np.where(present, np.arange(n), -1))
+    out = np.where(last >= 0, values[np.maximum(last, 0)], initial)
+    return out
+
+
+def execute_columns(k, run: PlainRun, lo: int, hi: int) -> int | None:
+    """Execute blocks ``lo``..``hi`` of ``run`` as columns, with the results of executing them one by one.
+
+    Stops before the first block the kernel must judge itself (one that would
+    fault) and returns its index, or None when every block was executed.
+    """
+    n_axes = k.n_axes
+    scale = k.scale
+    g = run.g[lo:hi]
+    words = {a: col[lo:hi] for a, col in run.words.items()}
+    present = {a: ~np.isnan(col) for a, col in words.items()}
+    rows = hi - lo
+    motion = _carry(g >= 0, g, k.motion).astype(np.int64)
+    f = words["F"] * scale if scale != 1.0 else words["F"]
+    feed = _carry(present["F"], f, k.feed)
+
+    # programmed targets per axis (the words of axes this machine lacks are ignored, as block by block)
+    moved = np.zeros(rows, dtype=bool)
+    prog = []
+    for i, name in enumerate(k.axis_names):
+        col = words.get(name)
+        if col is None or not present[name].any():
+            prog.append(np.full(rows, k.prog[i]))
+            continue
+        has = present[name]
+        moved |= has
+        v = col * scale if scale != 1.0 else col
+        if k.absolute:
+            prog.append(_carry(has, v, k.prog[i]))
+        else:
+            steps = np.concatenate(([k.prog[i]], np.where(has, v, 0.0)))
+            prog.append(np.cumsum(steps)[1:])
+    is_arc = motion >= 2
+    moved |= is_arc & (present["I"] | present["J"] | present["K"])
+
+    # rows the kernel must see itself: motion at feed without a feed, arcs without centre or plane axes
+    needs_feed = moved & (motion >= 1) & (feed <= 0.0)
+    an, bn, _nn, iw, jw = _plane(k)
+    a_ix, b_ix = k.axis_of.get(an), k.axis_of.get(bn)
+    arc_rows = moved & is_arc
+    if a_ix is None or b_ix is None:
+        no_arc = arc_rows
+    else:
+        no_arc = arc_rows & ~(present[iw] | present[jw])
+    stop = np.flatnonzero(needs_feed | no_arc)
+    end_row = int(stop[0]) if len(stop) else rows
+
+    idx = np.flatnonzero(moved[:end_row])  # the rows that move
+    if len(idx) == 0:
+        return _finish(k, motion, feed, prog, end_row, lo, hi, None, None)
+    offsets = k.offset_vec
+    end = np.empty((len(idx), n_axes))
+    for i in range(n_axes):
+        end[:, i] = prog[i][idx] + offsets[i]
+    start = np.empty_like(end)
+    start[0] = k.machine_pos
+    start[1:] = end[:-1]
+    kind = np.minimum(motion[idx], ARC).astype(np.int8)
+    move_feed = feed[idx]
+    times = np.zeros(len(idx))
+
+    arc_pos = np.flatnonzero(kind == ARC)
+    arc_info = None
+    if len(arc_pos):
+        arc_info = _arcs(k, run, words, idx, arc_pos, start, end, move_feed, motion, a_ix, b_ix, iw, jw, scale)
+        if arc_info["bad"] is not None:  # the first arc whose end lies on another radius: stop before it
+            cut = arc_info["bad"]
+            end_row = int(idx[arc_pos[cut]])
+            return _execute_columns_until(k, run, lo, lo + end_row)
+        times[arc_pos] = arc_info["time"]
+    straight = np.flatnonzero(kind != ARC)
+    if len(straight):
+        times[straight] = _straight_times(k, start[straight], end[straight], kind[straight] == RAPID,
+                                          move_feed[straight])
+
+    clock = k.machine.clock
+    clock.now = float(np.cumsum(np.concatenate(([clock.now], times)))[-1])
+    specs = None
+    if arc_info is not None:
+        specs = {int(p): spec for p, spec in zip(arc_pos, arc_info["specs"])}
+    k.canon.move_batch(MoveBatch(kind, start, end, move_feed, run.file, run.lines[lo:hi][idx], specs,
+                            arc_info["angle"] if arc_info else None, arc_info["length"] if arc_info else None,
+                            arc_info["extent"] if arc_info else None))
+    return _finish(k, motion, feed, prog, end_row, lo, hi, idx, end)
+
+
+def _execute_columns_until(k, run, lo, stop) -> int:
+    """Execute rows before ``stop`` as columns and report ``stop`` as the row the kernel must judge."""
+    if stop > lo:
+        inner = execute_columns(k, run, lo, stop)
+        if inner is not None:  # cannot happen: the rows before stop passed every check
+            return inner
+    return stop
+
+
+def _finish(k, motion, feed, prog, end_row, lo, hi, idx, end) -> int | None:
+    """Leave the kernel's modal state and position as the last executed row left them."""
+    if end_row:
+        last = end_row - 1
+        k.motion = int(motion[last])
+        k.feed = float(feed[last])
+        if idx is not None and len(idx):
+            k.prog = [float(p[last]) for p in prog]
+            k.machine_pos = tuple(end[-1].tolist())
+    return None if end_row == hi - lo else lo + end_row
+
+
+def _plane(k):
+    from .kernel import PLANES
+    return PLANES[k.plane]
+
+
+def _straight_times(k, start, end, rapid, feed) -> np.ndarray:
+    """Move times of straight moves: the formula of :mod:`ncvm.nc.fastmove`, column-wise."""
+    dyn = k.dyn
+    d = end - start
+    sq = d[:, 0] * d[:, 0]
+    for i in range(1, d.shape[1]):
+        sq = sq + d[:, i] * d[:, i]
+    length = np.sqrt(sq)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        inv = 1.0 / length
+        v = np.where(rapid, math.inf, feed / 60.0)
+        a = np.full(len(d), math.inf)
+        for i in range(d.shape[1]):
+            di = d[:, i]
+            nz = di != 0.0
+            share = np.abs(di) * inv
+            vmax = np.where(rapid, dyn.rapid[i], dyn.max_feed[i])
+            v = np.where(nz & (vmax < v * share), vmax / share, v)
+            a = np.where(nz & (dyn.accel[i] < a * share), dyn.accel[i] / share, a)
+        return _trapezoid(length, v, a)
+
+
+def _trapezoid(length, v, a) -> np.ndarray:
+    """:func:`ncvm.nc.dynamics.trapezoid_time`, column-wise."""
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t = np.where((a <= 0.0) | (a == math.inf), length / v,
+                     np.where(length * a >= v * v, length / v + v / a, 2.0 * np.sqrt(length / a)))
+        t = np.where(v <= 0.0, math.inf, t)
+        return np.where(length > 0.0, t, 0.0)
+
+
+def _arcs(k, run, words, idx, arc_pos, start, end, move_feed, motion, a, b, iw, jw, scale) -> dict:
+    """Centre, radius check, sweep, length, extent and time of every arc among the moves (I/J/K centres)."""
+    rows = idx[arc_pos]
+    sa, sb = start[arc_pos, a], start[arc_pos, b]
+    ea, eb = end[arc_pos, a], end[arc_pos, b]
+    ca = sa + np.nan_to_num(words[iw][rows]) * scale
+    cb = sb + np.nan_to_num(words[jw][rows]) * scale
+    r0 = np.hypot(sa - ca, sb - cb)
+    r1 = np.hypot(ea - ca, eb - cb)
+    diff = np.abs(r0 - r1)
+    bad = ((diff > arcs.RADIUS_ABS_TOL) & (diff > arcs.RADIUS_REL_TOL * r0)) | (r0 < arcs.SAME_POINT)
+    first_bad = np.flatnonzero(bad)
+    if len(first_bad):
+        return {"bad": int(first_bad[0])}
+    cw = motion[rows] == 2
+    a0 = np.arctan2(sb - cb, sa - ca)
+    a1 = np.arctan2(eb - cb, ea - ca)
+    angle = _sweep(a1 - a0, cw, np.hypot(ea - sa, eb - sb) < arcs.SAME_POINT)
+    others = [i for i in range(k.n_axes) if i != a and i != b]
+    helix = np.zeros(len(rows))
+    for i in others:
+        helix = helix + (end[arc_pos, i] - start[arc_pos, i]) ** 2
+    helix = np.sqrt(helix)
+    planar = np.abs(angle) * r0
+    length = np.where(helix != 0.0, np.hypot(planar, helix), planar)
+    extent = _extent(sa, sb, ca, cb, r0, a0, angle)
+    # an arc moves both plane axes at once: timed as a straight move of the same length (NcKernel._arc)
+    dyn = k.dyn
+    with np.errstate(divide="ignore", invalid="ignore"):
+        chord = length / SQRT2
+        share = np.abs(chord) / length
+        v = move_feed[arc_pos] / 60.0
+        acc = np.full(len(rows), math.inf)
+        for i in (a, b):
+            nz = chord != 0.0
+            v = np.where(nz & (dyn.max_feed[i] < v * share), dyn.max_feed[i] / share, v)
+            acc = np.where(nz & (dyn.accel[i] < acc * share), dyn.accel[i] / share, acc)
+    time = _trapezoid(length, v, acc)
+    specs = [ArcSpec(a, b, (x, y), c, r) for x, y, c, r in zip(ca.tolist(), cb.tolist(), cw.tolist(), r0.tolist())]
+    return {"bad": None, "specs": specs, "angle": angle, "length": length, "extent": extent, "time": time}
+
+
+def _sweep(d, cw, closed) -> np.ndarray:
+    """:func:`ncvm.nc.arcs.sweep` (no extra turns), column-wise."""
+    two_pi = arcs.TWO_PI
+    d = d.copy()
+    for _ in range(3):
+        d = np.where(cw & (d >= -1e-12), d - two_pi, d)
+        d = np.where(~cw & (d <= 1e-12), d + two_pi, d)
+    d = np.where(cw & (d < -two_pi), d + two_pi, d)
+    d = np.where(~cw & (d > two_pi), d - two_pi, d)
+    return np.where(closed, np.where(cw, -two_pi, two_pi), d)
+
+
+def _extent(sa, sb, ca, cb, r, a0, angle) -> np.ndarray:
+    """:func:`ncvm.nc.arcs.arc_plane_extent`, column-wise: rows of (lo_a, hi_a, lo_b, hi_b)."""
+    a1 = a0 + angle
+    ea, eb = ca + r * np.cos(a1), cb + r * np.sin(a1)
+    lo_a, hi_a = np.minimum(sa, ea), np.maximum(sa, ea)
+    lo_b, hi_b = np.minimum(sb, eb), np.maximum(sb, eb)
+    lo = np.where(angle >= 0, a0, a1)
+    hi = np.where(angle >= 0, a1, a0)
+    k0 = np.ceil(lo / HALF_PI)
+    for j in range(5):
+        kq = k0 + j
+        inside = kq * HALF_PI <= hi
+        q = np.mod(kq, 4)
+        hi_a = np.where(inside & (q == 0), ca + r, hi_a)
+        hi_b = np.where(inside & (q == 1), cb + r, hi_b)
+        lo_a = np.where(inside & (q == 2), ca - r, lo_a)
+        lo_b = np.where(inside & (q == 3), cb - r, lo_b)
+    full = np.abs(angle) >= arcs.TWO_PI - 1e-12
+    return np.column_stack((np.where(full, ca - r, lo_a), np.where(full, ca + r, hi_a),
+                            np.where(full, cb - r, lo_b), np.where(full, cb + r, hi_b)))

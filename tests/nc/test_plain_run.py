@@ -1,0 +1,197 @@
+"""Plain runs executed column-wise give the results of executing their blocks one by one.
+
+Each program runs twice: as usual (plain runs go through :mod:`ncvm.nc.plainrun`)
+and with a step hook attached, which sends every block through
+``NcKernel.execute`` on its own. Moves, arcs, positions, cycle time, steps and
+faults must agree.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import random
+
+import numpy as np
+import pytest
+
+from ncvm.api import run
+from ncvm.nc.block import PlainRun, read_din_segments
+from ncvm.runtime.session import RunOptions
+
+PLANE_AXES = {17: (0, 1, "IJ"), 18: (2, 0, "KI"), 19: (1, 2, "JK")}
+
+
+def random_program(seed: int) -> str:
+    """Lines, arcs in all planes, G90/G91, inch, zero offsets, feeds, blank and N-only lines, comments."""
+    rnd = random.Random(seed)
+    out = ["%", "(random plain program)", "G21 G90 G17", f"G10 L2 P1 X{rnd.uniform(-20, 20):.3f} Y{rnd.uniform(-5, 5):.3f}",
+           "G54", "G92 X0 Y0 Z0", "F1000"]
+    if rnd.random() < 0.3:
+        out.append("G20")
+    pos = [0.0, 0.0, 0.0]
+    absolute, plane, n, arc_mode = True, 17, 10, False
+    for _ in range(rnd.randint(50, 400)):
+        r = rnd.random()
+        if r < 0.03:
+            absolute = not absolute
+            out.append("G90" if absolute else "G91")
+            continue
+        if r < 0.06:
+            plane = rnd.choice((17, 18, 19))
+            out.append(f"G{plane}")
+            continue
+        if r < 0.08:
+            out.append(rnd.choice(["", "N5", "(note)", f"F{rnd.randint(100, 3000)}", "   "]))
+            continue
+        words = []
+        if rnd.random() < 0.8:
+            words.append(f"N{n}")
+            n += 10
+        if rnd.random() < 0.25:
+            a, b, letters = PLANE_AXES[plane]
+            ca, cb = pos[a] + rnd.uniform(-8, 8), pos[b] + rnd.uniform(-8, 8)
+            turn = rnd.uniform(-3, 3)
+            ra, rb = pos[a] - ca, pos[b] - cb
+            end = list(pos)
+            end[a] = round(ca + ra * math.cos(turn) - rb * math.sin(turn), 4)
+            end[b] = round(cb + ra * math.sin(turn) + rb * math.cos(turn), 4)
+            if rnd.random() < 0.3:  # helix
+                end[3 - a - b] = round(pos[3 - a - b] + rnd.uniform(-2, 2), 4)
+            words.append(rnd.choice(("G2", "G3", "G02", "G03")))
+            arc_mode = True
+            for i in sorted({a, b, 3 - a - b}):
+                if end[i] != pos[i] or i in (a, b):
+                    words.append(f"{'XYZ'[i]}{(end[i] if absolute else end[i] - pos[i]):.4f}")
+            words.append(f"{letters[0]}{ca - pos[a]:.4f}")
+            words.append(f"{letters[1]}{cb - pos[b]:.4f}")
+        else:
+            if arc_mode or rnd.random() < 0.7:  # a straight move after an arc names its G code
+                words.append(rnd.choice(("G0", "G1", "G00", "G01")))
+                arc_mode = False
+            end = list(pos)
+            for i in range(3):
+                if rnd.random() < 0.6:
+                    end[i] = round(pos[i] + rnd.uniform(-10, 10), 4)
+                    words.append(f"{'XYZ'[i]}{(end[i] if absolute else end[i] - pos[i]):.4f}")
+        if rnd.random() < 0.1:
+            words.append(f"F{rnd.randint(100, 3000)}")
+        pos = end
+        out.append(" ".join(words))
+    out.append("M30")
+    return "\n".join(out) + "\n"
+
+
+def _both(tmp_path, text, name="p.ngc"):
+    path = tmp_path / name
+    path.write_text(text)
+    plain, s1 = run(path, dialect="din", options=RunOptions(state_dir=tmp_path / ".a"))
+    stepped, s2 = run(path, dialect="din", options=RunOptions(state_dir=tmp_path / ".b", hook=lambda *a: None))
+    return (plain, s1), (stepped, s2)
+
+
+def _same(a, b):
+    assert type(a) is type(b) or isinstance(a, float | int) and isinstance(b, float | int)
+    if isinstance(a, dict):
+        assert a.keys() == b.keys()
+        for k in a:
+            _same(a[k], b[k])
+    elif isinstance(a, list):
+        assert len(a) == len(b)
+        for x, y in zip(a, b):
+            _same(x, y)
+    elif isinstance(a, float):
+        assert a == pytest.approx(b, rel=1e-9, abs=1e-9)
+    else:
+        assert a == b
+
+
+def _same_recordings(r1, r2):
+    a1, a2 = r1.arrays(), r2.arrays()
+    assert np.array_equal(a1["kind"], a2["kind"])
+    assert np.array_equal(a1["line"], a2["line"])
+    assert np.array_equal(a1["tool"], a2["tool"])
+    np.testing.assert_allclose(a1["end"], a2["end"], rtol=0, atol=1e-9)
+    assert r1.arcs.keys() == r2.arcs.keys()
+    for k, spec in r1.arcs.items():
+        other = r2.arcs[k]
+        assert (spec.a, spec.b, spec.cw, spec.turns) == (other.a, other.b, other.cw, other.turns)
+        assert spec.center == pytest.approx(other.center, abs=1e-9)
+        assert spec.radius == pytest.approx(other.radius, abs=1e-9)
+        assert r1.arc_bounds[k] == pytest.approx(r2.arc_bounds[k], abs=1e-9)
+    assert r1.arc_length == pytest.approx(r2.arc_length, rel=1e-12)
+    assert [r1.src(i) for i in range(len(r1))] == [r2.src(i) for i in range(len(r2))]
+
+
+@pytest.mark.parametrize("seed", range(12))
+def test_columns_match_block_by_block(tmp_path, seed):
+    text = random_program(seed)
+    segments, diags = read_din_segments("p.ngc", text)
+    assert not diags and any(isinstance(s, PlainRun) for s in segments)
+    (plain, s1), (stepped, s2) = _both(tmp_path, text)
+    assert plain["status"] == "ok", plain["error"]
+    assert plain["motion"]["arc_moves"] > 0
+    _same(plain, stepped)
+    _same_recordings(s1.recorder, s2.recorder)
+    assert s1.machine.clock.now == pytest.approx(s2.machine.clock.now, rel=1e-12)
+
+
+def test_trace_of_a_batch_replays_every_move(tmp_path):
+    """Sinks that take single moves (here the JSONL trace) get every move of a plain run, in order."""
+    path = tmp_path / "p.ngc"
+    path.write_text(random_program(3))
+    traces = []
+    for name, hook in (("a", None), ("b", lambda *a: None)):
+        trace = tmp_path / f"{name}.jsonl"
+        run(path, dialect="din", options=RunOptions(state_dir=tmp_path / name, trace=trace, hook=hook))
+        traces.append([json.loads(line) for line in trace.read_text().splitlines()])
+    assert len(traces[0]) == len(traces[1]) > 100
+    _same(traces[0], traces[1])
+
+
+@pytest.mark.parametrize("bad, code, line", [
+    ("N40 G1 X5 Y5", "NC006", 5),  # G1 without any feed yet
+    ("N40 G2 X5 Y5 I1 J0 F100", "NC002", 5),  # end point on another radius
+    ("N40 G3 X5 Y5 F100", "NC003", 5),  # arc without centre words
+])
+def test_fault_inside_a_run(tmp_path, bad, code, line):
+    """The moves before the faulting block are kept; the fault names the kernel's code and the block's line."""
+    text = f"G0 X1 Y1\nN10 G0 X2\nN20 Y3\nN30 Z-1\n{bad}\nN50 G1 X9 F100\nM30\n"
+    (plain, _), (stepped, _) = _both(tmp_path, text)
+    assert plain["status"] == "error"
+    assert (plain["error"]["code"], plain["error"]["line"]) == (code, line)
+    assert plain["motion"]["rapid_moves"] == 4
+    assert plain["position"] == {"X": 2.0, "Y": 3.0, "Z": -1.0}
+    _same(plain, stepped)
+
+
+def test_step_limit_inside_a_run(tmp_path):
+    path = tmp_path / "p.ngc"
+    path.write_text("".join(f"G1 X{i} F500\n" for i in range(1, 101)))
+    result, _ = run(path, dialect="din", options=RunOptions(state_dir=tmp_path / ".n", max_steps=40))
+    assert result["status"] == "error"
+    assert result["error"]["line"] == 41
+    assert result["steps"] == 40
+    assert result["position"]["X"] == 40.0
+    assert result["motion"]["feed_moves"] == 40
+
+
+def test_hand_computed_run(tmp_path):
+    """A quarter circle and two lines in one run: length, bounds and time by hand."""
+    path = tmp_path / "p.ngc"
+    # machine default: feed limits well above F600 (10 mm/s); acceleration from the default machine
+    path.write_text("G1 X10 F600\nG3 X0 Y10 I-10 J0\nG1 X0 Y0\nM2\n")
+    result, session = run(path, dialect="din", options=RunOptions(state_dir=tmp_path / ".n"))
+    arc = math.pi * 10 / 2
+    assert result["motion"]["feed_length"] == pytest.approx(10 + arc + 10)
+    assert result["motion"]["bounds"]["X"] == pytest.approx([0.0, 10.0])
+    assert result["motion"]["bounds"]["Y"] == pytest.approx([0.0, 10.0])
+    acc = min(ax.accel for ax in session.machine.axes[:2])
+    v = 10.0
+
+    def trapezoid(length, a):
+        return length / v + v / a if length * a >= v * v else 2 * math.sqrt(length / a)
+
+    # the lines move one axis each; the arc is timed as a move of its length shared by both plane axes
+    expected = trapezoid(10, acc) + trapezoid(arc, acc * math.sqrt(2)) + trapezoid(10, acc)
+    assert result["cycle_time_s"] == pytest.approx(expected)
