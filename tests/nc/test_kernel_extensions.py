@@ -6,9 +6,10 @@ from __future__ import annotations
 import pytest
 
 from ncvm.machine.config import machine_from_dict
-from ncvm.nc.block import Block
+from ncvm.nc.block import Block, PlainRun, read_din_segments
 from ncvm.nc.canon import Canon, CanonSink, Src
 from ncvm.nc.kernel import NcKernel
+from ncvm.nc.plainrun import execute_columns
 from ncvm.nc.transform import Affine, SingularTransform
 
 SRC = Src("t", 1)
@@ -109,3 +110,15 @@ def test_plane_similarity():
     assert rot.plane_similarity(0, 1) == pytest.approx((2.0, False))
     assert Affine.scaling([0.0] * 3, [-1.0, 1.0, 1.0]).plane_similarity(0, 1) == (1.0, True)
     assert Affine.scaling([0.0] * 3, [2.0, 3.0, 1.0]).plane_similarity(0, 1) is None
+
+
+def test_plain_runs_go_block_by_block_while_a_transform_is_set():
+    segments, _ = read_din_segments("t", "G1 X1 F100\nX2\nX3\n")
+    run = next(s for s in segments if isinstance(s, PlainRun))
+    k, sink = kernel()
+    k.set_transform(Doubling(3))
+    lo = 0
+    while (bad := execute_columns(k, run, lo, len(run))) is not None:
+        k.execute(run.block(bad))
+        lo = bad + 1
+    assert [e[1][0] for e in sink.ends] == [2.0, 4.0, 6.0]
