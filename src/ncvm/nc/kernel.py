@@ -351,7 +351,7 @@ class NcKernel:
         self.prog = prog
         self.machine_pos = end
 
-    def _arc(self, cw: bool, start, end, words, src: Src, prog=None) -> None:
+    def _arc(self, cw: bool, start, end, words, src: Src, prog) -> None:
         if self.feed <= 0.0:
             self.fault("NC006", f"G{2 if cw else 3} with feed rate 0 (program an F word)", src)
         an, bn, _nn, iw, jw = PLANES[self.plane]
