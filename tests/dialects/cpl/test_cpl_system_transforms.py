@@ -241,3 +241,11 @@ def test_a_shift_block_does_not_repeat_a_modal_cycle(run, tmp_path):
     text = "1 #HOLES% = 0\nN5 G1 F1000\nN10 G81 [-5]\nN20 X10\nN30 G60 X5\nN40 X20\nN50 G80\n60 H%=#HOLES%\nM30\n"
     v = ok(run(text, cpl=calls))
     assert v["H%"] == 3  # after N10, N20 and N40: G60 X5 travels nowhere
+
+
+def test_mcods_wcs_and_bcs_differ_by_g138(run):
+    # MCODS 71 gives WCS coordinates, 72 BCS set points; G138 lies between them (L1323)
+    text = ("10 DIM W(3)\n20 DIM B(3)\nN30 G138 X100 R90\nN40 G1 X10 Y0 F1000\n50 WAIT\n60 V=0\n"
+            "70 E%=MCODS(71,1,V,W,3)\n80 V=0\n90 E%=MCODS(72,1,V,B,3)\nM30\n")
+    v = ok(run(text))
+    assert v["W"] == [None, 10.0, 0.0, 0.0] and v["B"] == [None, 100.0, 10.0, 0.0]
