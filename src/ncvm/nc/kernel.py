@@ -9,6 +9,12 @@ tool length, coordinate system, distance mode, set position, motion, stop/end.
 Coordinates: the kernel keeps the *programmed* position (workpiece
 coordinates, mm) and the sum of active offsets per axis; machine position =
 programmed + offsets. Canon calls carry machine positions.
+
+Dialect extension points: ``g_handlers`` maps extra G numbers to handlers
+(``handler(kernel, g, words, src) -> bool``, True when the block's axis words
+were parameters, not a target), run after the block's other G codes; and
+:meth:`NcKernel.set_transform` puts a coordinate transformation between the
+programmed position and the offsets: machine = transform(programmed) + offsets.
 """
 
 from __future__ import annotations
@@ -41,7 +47,12 @@ class NcKernel:
         self.axis_of = {n: i for i, n in enumerate(names)}
         self.n_axes = len(names)
         self.dyn = AxisDynamics(machine.axes)
-        self._linear = make_linear(names, self.dyn)
+        self._fast_linear = make_linear(names, self.dyn)
+        self._linear = self._fast_linear
+        #: G number -> handler(kernel, g, words, src) -> True when the block's axis words are parameters
+        self.g_handlers: dict = {}
+        #: None, or an object with forward(vec), inverse(vec) and plane_similarity(a, b) (see set_transform)
+        self.transform = None
         # modal state
         self.motion = 0
         self.plane = 17
@@ -80,7 +91,24 @@ class NcKernel:
     def _set_offsets_keep_machine(self) -> None:
         """After an offset change the tool stays put; the programmed position moves."""
         self._recompute_offsets()
-        self.prog = [m - o for m, o in zip(self.machine_pos, self.offset_vec)]
+        self.prog = self.program_position(self.machine_pos)
+
+    def program_position(self, mcs) -> list[float]:
+        """The programmed position (mm) that puts the machine at ``mcs`` with the active offsets and transform."""
+        rel = [m - o for m, o in zip(mcs, self.offset_vec)]
+        return rel if self.transform is None else self.transform.inverse(rel)
+
+    def set_transform(self, transform) -> None:
+        """Put a coordinate transformation between programmed positions and offsets (None: none).
+
+        ``transform.forward(vec)`` maps a programmed position to the position before the offsets,
+        ``inverse`` back; ``plane_similarity(a, b)`` gives (factor, mirrored) when circles in that plane
+        stay circles, else None. While one is set, straight moves leave the generated fast path
+        (which knows nothing of it). The tool stays put; the programmed position moves.
+        """
+        self.transform = transform
+        self._linear = self._fast_linear if transform is None else _transformed_linear
+        self._set_offsets_keep_machine()
 
     def set_work_offset(self, name: str | None) -> None:
         self.work_offset = name
@@ -120,8 +148,12 @@ class NcKernel:
         set_position = False
         machine_coords = False
         motion = self.motion
+        handlers = self.g_handlers
+        extra = None
         for g in block.g:
-            if g in (0, 1, 2, 3):
+            if handlers and g in handlers:
+                extra = [g] if extra is None else extra + [g]
+            elif g in (0, 1, 2, 3):
                 motion = g
             elif g == 4:
                 dwell_block = True
@@ -159,6 +191,10 @@ class NcKernel:
                 return
             else:
                 self.fault("NC004", f"G{g} is not supported", src)
+        words_taken = False
+        if extra is not None:
+            for g in extra:
+                words_taken = handlers[g](self, g, words, src) or words_taken
         if "F" in words and not dwell_block:
             self.feed = words["F"] * self.scale if self.scale != 1.0 else words["F"]
         if "S" in words:
@@ -176,6 +212,8 @@ class NcKernel:
             canon.dwell(seconds, src)
         elif set_position:
             self._set_position(words)
+        elif words_taken:
+            self.motion = motion
         else:
             self.motion = motion
             if motion < 2 and not machine_coords:
@@ -240,10 +278,24 @@ class NcKernel:
         self._set_offsets_keep_machine()
 
     def _set_position(self, words) -> None:
+        if self.transform is not None:
+            self._set_position_transformed(words)
+            return
         for name, i in self.axis_of.items():
             if name in words:
                 value = words[name] * self.scale
                 self.g92[i] = self.machine_pos[i] - (self.offset_vec[i] - self.g92[i]) - value
+        self._set_offsets_keep_machine()
+
+    def _set_position_transformed(self, words) -> None:
+        """G92 under a transformation: the named axes read the given values; the G92 shift of every axis
+        takes up what the transformation makes of them, so the tool stays put."""
+        prog = list(self.prog)
+        for name, i in self.axis_of.items():
+            if name in words:
+                prog[i] = words[name] * self.scale
+        base = self.transform.forward(prog)
+        self.g92 = [m - (o - g) - b for m, o, g, b in zip(self.machine_pos, self.offset_vec, self.g92, base)]
         self._set_offsets_keep_machine()
 
     # -- motion ----------------------------------------------------------
@@ -271,11 +323,21 @@ class NcKernel:
         if motion < 2 and not machine_coords:
             self._linear(self, motion, words, src)
             return
+        self._general_move(motion, words, machine_coords, src)
+
+    def _general_move(self, motion: int, words, machine_coords: bool, src: Src) -> None:
         prog, moved = self._target(words, machine_coords)
         if not moved and not (motion >= 2 and ("I" in words or "J" in words or "K" in words)):
             return
         start = self.machine_pos
-        end = tuple(map(add, prog, self.offset_vec))
+        if self.transform is None:
+            end = tuple(map(add, prog, self.offset_vec))
+        elif machine_coords:
+            # G53: the named axes go to machine positions, past the transformation; the others stay
+            end = tuple(words[n] * self.scale if n in words else p for n, p in zip(self.axis_names, start))
+            prog = self.program_position(end)
+        else:
+            end = tuple(map(add, self.transform.forward(prog), self.offset_vec))
         if motion == 0:
             self.machine.clock.advance(self.dyn.straight_time(start, end, math.inf, rapid=True))
             self.canon.rapid(start, end, src)
@@ -285,18 +347,22 @@ class NcKernel:
             self.machine.clock.advance(self.dyn.straight_time(start, end, self.feed / 60.0, rapid=False))
             self.canon.feed(start, end, self.feed, src)
         else:
-            self._arc(motion == 2, start, end, words, src)
+            self._arc(motion == 2, start, end, words, src, prog)
         self.prog = prog
         self.machine_pos = end
 
-    def _arc(self, cw: bool, start, end, words, src: Src) -> None:
+    def _arc(self, cw: bool, start, end, words, src: Src, prog) -> None:
         if self.feed <= 0.0:
             self.fault("NC006", f"G{2 if cw else 3} with feed rate 0 (program an F word)", src)
         an, bn, _nn, iw, jw = PLANES[self.plane]
         if an not in self.axis_of or bn not in self.axis_of:
             self.fault("NC004", f"plane G{self.plane} needs axes {an} and {bn}", src)
         a, b = self.axis_of[an], self.axis_of[bn]
-        sa, sb, ea, eb = start[a], start[b], end[a], end[b]
+        t = self.transform
+        if t is None:
+            sa, sb, ea, eb = start[a], start[b], end[a], end[b]
+        else:  # the circle is programmed untransformed: its geometry first, then its centre mapped
+            sa, sb, ea, eb = self.prog[a], self.prog[b], prog[a], prog[b]
         try:
             if "R" in words and iw not in words and jw not in words:
                 ca, cb = arcs.center_from_radius(sa, sb, ea, eb, words["R"] * self.scale, cw)
@@ -308,6 +374,19 @@ class NcKernel:
             radius = arcs.check_radii(sa, sb, ea, eb, ca, cb)
         except arcs.ArcError as e:
             self.fault("NC002", str(e), src)
+        if t is not None:
+            similar = t.plane_similarity(a, b)
+            if similar is None:
+                self.fault("NC004", f"G{2 if cw else 3}: the active transformation does not keep circles in "
+                           f"the {an}{bn} plane (unequal scaling factors)", src)
+            factor, mirrored = similar
+            centre = list(self.prog)
+            centre[a], centre[b] = ca, cb
+            centre = t.forward(centre)
+            ca, cb = centre[a] + self.offset_vec[a], centre[b] + self.offset_vec[b]
+            radius *= factor
+            cw ^= mirrored
+            sa, sb, ea, eb = start[a], start[b], end[a], end[b]
         turns = max(0, int(words.get("P", 1)) - 1)
         spec = ArcSpec(a, b, (ca, cb), cw, radius, turns)
         angle = arcs.sweep(sa, sb, ea, eb, ca, cb, cw, turns)
@@ -319,3 +398,8 @@ class NcKernel:
         t = move_time(chord, length, self.feed / 60.0, self.dyn.max_feed, self.dyn.accel)
         self.machine.clock.advance(t)
         self.canon.arc(start, end, spec, self.feed, src)
+
+
+def _transformed_linear(kernel: NcKernel, motion: int, words, src: Src) -> None:
+    """The straight move while a transformation is active: the general path, not the generated one."""
+    kernel._general_move(motion, words, False, src)

@@ -46,8 +46,12 @@ def execute_columns(k, run: PlainRun, lo: int, hi: int) -> int | None:
     """Execute blocks ``lo``..``hi`` of ``run`` as columns, with the results of executing them one by one.
 
     Stops before the first block the kernel must judge itself (one that would
-    fault) and returns its index, or None when every block was executed.
+    fault) and returns its index, or None when every block was executed. While
+    a coordinate transformation is set (``k.transform``) the kernel judges every
+    block: these columns know only offsets.
     """
+    if k.transform is not None:
+        return lo if lo < hi else None
     n_axes = k.n_axes
     scale = k.scale
     g = run.g[lo:hi]

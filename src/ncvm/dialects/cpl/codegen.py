@@ -15,6 +15,7 @@ from .errors import diag
 from .lexer import VarName
 from .system import SYSTEM_PROCS
 from .system.gfuncs import GEARS, TYP3_G
+from .system.transforms import PARAMETER_G
 from .values import f32
 
 #: parameter Pn seen through its suffix (digest §4.8): the conversion applied to the passed value
@@ -720,6 +721,7 @@ class Gen:
         ends = s.ends
         m_sub = [m for m in m_const if m not in (2, 30)]
         has_motion = any(k[0] in AXIS_LETTERS for k in words_const) or any(a[0] in AXIS_LETTERS for a, _ in words_dyn)
+        has_motion = has_motion and not PARAMETER_G.intersection(g_const)  # G60 X5: a shift, no travel
         if s.skip:
             self.emit("if not _rt.block_skip:", line)
             self.src._indent += 1

@@ -11,7 +11,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from ..builtins import Builtin
-from . import ncs, offsets, plc, positions, sercos, sysdata, tools
+from . import ncs, offsets, plc, positions, sercos, sysdata, tools, transforms
 
 
 @dataclass(frozen=True, slots=True)
@@ -36,6 +36,9 @@ SYSTEM_FUNCTIONS: dict[str, Builtin] = {
     "SPOS": _b(positions.f_spos, 1, 1, "R", "§4.2.3 L1688"),
     "FXC": _b(offsets.f_fxc, 1, 4, "R", "§4.3 L1724"),
     "TC": _b(tools.f_tc, 1, 4, "R", "§4.4 L1842"),
+    "COF": _b(transforms.f_cof, 1, 2, "R", "§4.6 L1967"),
+    "DPC": _b(transforms.f_dpc, 1, 2, "R", "§4.7 L1990"),
+    "SCL": _b(transforms.f_scl, 1, 3, "R", "§4.8 L2020"),
     "TDA": _b(tools.f_tda, 3, 4, "?", "§4.5 L1895"),
     "SD": _b(sysdata.f_sd, 1, 4, "I", "§4.9 L2196"),
     "SDR": _b(sysdata.f_sdr, 1, 3, "R", "§4.9 L2313"),
@@ -68,6 +71,8 @@ SYSTEM_PROCS = {
 
 
 def setup(rt) -> None:
-    """At program start: the active ZS table and K4 are the NC kernel's offsets and tools."""
+    """At program start: the active ZS table and K4 are the NC kernel's offsets and tools; the kernel
+    knows the G functions of the transformations (G60/G67, G37-G39, G138)."""
     offsets.setup(rt)
     tools.setup(rt)
+    transforms.setup(rt)

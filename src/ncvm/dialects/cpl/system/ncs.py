@@ -54,6 +54,18 @@ def _positions(rt, axes, mcs=True) -> list[float]:
     return out
 
 
+def _coordinates(rt, axes, wcs: bool) -> list[float]:
+    """MCODS 71 (WCS) and 72 (BCS): the MCS without the axis zero shifts and the tool length (G92 and the
+    program shifts G168/G268 stay in); the WCS also without the coordinate transformation G138, which lies
+    between the two (manual L1323)."""
+    k = rt.kernel
+    rel = [m - o for m, o in zip(k.machine_pos, k.offset_vec)]
+    if wcs and k.transform is not None:
+        rel = k.transform.to_wcs(rel)
+    return [a.position if (i := kernel_index(rt, a)) is None else rel[i] + k.g92[i] + program_shift(rt, k, i)
+            for a in axes]
+
+
 def _data(rt, typ: int, ch: int, size: int, axisno, idno):
     """The data of service ``typ`` as a list (numbers) or a string; None = not available."""
     c, k = rt.ctl, rt.kernel
@@ -110,8 +122,7 @@ def _data(rt, typ: int, ch: int, size: int, axisno, idno):
     if typ == 58:
         return [a.channel for a in system]
     if typ == 71:
-        return [k.machine_pos[i] - (k.offset_vec[i] - k.g92[i] - program_shift(rt, k, i))
-                if (i := kernel_index(rt, a)) is not None else a.position for a in own]
+        return _coordinates(rt, own, wcs=True)
     if typ in (73, 74):
         return _positions(rt, own)
     if typ == 76:
@@ -169,8 +180,8 @@ def _more(rt, typ: int, ch: int, system, own, axisno, idno):
     if typ == 63:
         return [{1: 1, -1: 3, 0: 5}[k.spindle_dir]] + [0] * 7
     if typ in (72, 75):
-        wcs = _data(rt, 71, ch, 0, None, None)
-        return wcs if typ == 72 else [v - a.lag for v, a in zip(wcs, own)]
+        bcs = _coordinates(rt, own, wcs=False)
+        return bcs if typ == 72 else [v - a.lag for v, a in zip(bcs, own)]
     if typ in (79, 80):
         return [1 if typ == 80 or not (moving and a.channel == c.channel) else 0 for a in own]
     if typ == 81:

@@ -4,6 +4,9 @@
 prepared kernel); "executed" values (WPOS, MPOS, APOS, SPOS) from the NC kernel, which has only run the
 blocks a WAIT (or the look-ahead depth) let through: read before a WAIT they are stale (§4.1).
 Probe values are latched by a G75 block from the next "probe" scenario event (see probe_block).
+Transformations (transforms.py): CPOS is before them, WPOS after the contour shift and scaling but before
+the coordinate transformation G138 (manual L1323), MPOS after all; PPOS removes none of them (L1580-1583),
+CPROBE all (L1430).
 """
 
 from __future__ import annotations
@@ -50,7 +53,11 @@ def f_wpos(rt, sel, seltype=1, chan=None):
     k = rt.kernel
     if i is None:
         return ax.position
-    return to_unit(k, ax, k.machine_pos[i] - axis_zs(rt, k, i))
+    t = k.transform
+    if t is None:
+        return to_unit(k, ax, k.machine_pos[i] - axis_zs(rt, k, i))
+    wcs = t.to_wcs([m - o for m, o in zip(k.machine_pos, k.offset_vec)])  # G138 undone
+    return to_unit(k, ax, wcs[i] + k.offset_vec[i] - axis_zs(rt, k, i))
 
 
 def f_mpos(rt, sel, axtype=1, chan=None):
@@ -101,15 +108,13 @@ def probe_block(rt, blk):
     if used < len(events):
         c.probes_used = used + 1
         trigger = {str(n).upper(): float(v) for n, v in events[used].data.items()}
-        c.probe_latch = {}
-        for name, v in trigger.items():
-            i = k.axis_of.get(name)
-            if i is None:
-                continue
-            c.probe_latch[name] = v
+        c.probe_latch = {name: v for name, v in trigger.items() if name in k.axis_of}
+        switch = [c.probe_latch.get(name, p) for name, p in zip(k.axis_names, k.machine_pos)]
+        target = k.program_position(switch)
+        for name in c.probe_latch:
             if name in words:
-                target = v - k.offset_vec[i]
-                words[name] = (target if k.absolute else target - k.prog[i]) / k.scale
+                i = k.axis_of[name]
+                words[name] = (target[i] if k.absolute else target[i] - k.prog[i]) / k.scale
     return type(blk)(g, blk.m, words, blk.n, blk.msg, blk.src)
 
 
@@ -153,7 +158,11 @@ def f_cprobe(rt, sel, seltype=1):
     mcs = _latched(rt, ax)
     k = rt.kernel
     i = kernel_index(rt, ax)
-    return mcs if i is None else to_unit(k, ax, mcs - k.offset_vec[i])
+    if i is None:
+        return mcs
+    latch = probe_latch(rt)
+    switch = [latch.get(name, p) for name, p in zip(k.axis_names, k.machine_pos)]
+    return to_unit(k, ax, k.program_position(switch)[i])
 
 
 def probe_switched(rt) -> int:

@@ -14,6 +14,7 @@ from .axes import nul
 from .controller import MAX_AREAS
 from .gfuncs import N_LOGICAL
 from .positions import probe_switched
+from .transforms import active_group
 
 #: G group (table 6.9.3) -> the G numbers in it
 G_GROUPS = {2: (0, 1, 2, 3, 5, 11, 12, 13, 73), 3: (70, 71), 4: (90, 91, 189, 190, 191), 5: (63, 66), 6: (543,),
@@ -44,6 +45,8 @@ def g_of_group(k, group: int, typ3=None) -> int:
         return int(k.work_offset[1:]) if k.work_offset else 53
     if group == 7:
         return 94
+    if group in (18, 19):
+        return active_group(k, group)
     if 1 <= group <= 48:
         return -1
     raise CplError("CPL023", f"G group {group}: 1..48")
