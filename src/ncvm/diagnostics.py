@@ -130,6 +130,7 @@ NCVM_CODES = {
     "NC006": "feed rate is zero for a feed move",
     "NC007": "unknown address letter",
     "NC008": "tool not in tool table",
+    "NC009": "G96 at radius 0 without a spindle speed limit",
     "LIM001": "travel limit exceeded",
     "RUN001": "step limit reached (runaway program?)",
     "RUN002": "sub-program not found",

@@ -160,10 +160,8 @@ class SysMem:
             return self._to(args)[_rng("TO parameter P", args[2], 0, 15)]
         if sub == "3":
             return self._zo_read(code, args)
-        if code == "342":
-            return self.kernel.speed
-        if code == "345":
-            return 0.0
+        if code in ("342", "345", "363", "364", "3e4"):
+            return self.spindle_read(code, args)
         if code in ("34b", "34c", "3e1", "3e2", "3e3"):
             return self._drive_bit(code, args)
         if code == "360":
@@ -174,8 +172,6 @@ class SysMem:
             if self.session.machine.axes[i].rotary:
                 return [pos % 360.0, float(math.floor(pos / 360.0))]
             return pos
-        if code in ("363", "364"):
-            return self.kernel.speed if code == "364" else 0.0
         if code == "367":
             plane = self.g16_plane or {17: (1, 2, 3), 18: (3, 1, 2), 19: (2, 3, 1)}[self.kernel.plane]
             out = [float(a + (128 if m else 0)) for a, m in zip(plane, self.g16_minus)]
@@ -194,8 +190,6 @@ class SysMem:
             return [n + ch / 100.0 for n, ch in d.alarms] or 0.0
         if code == "3d0":
             return float(len(d.alarms))
-        if code == "3e4":
-            return 1.0
         raise Cl800Error(f"@{code} is not available")
 
     def _mem_read(self, area: str, width: str, rng: tuple, args: tuple):
