@@ -230,7 +230,7 @@ class NcKernel:
             self._css_update(None)
         return self.spindle_dir * self.spindle_speed()
 
-    def _css_update(self, src: Src | None) -> None:
+    def _css_update(self, src: Src | None, announce: bool = True) -> None:
         """G96: speed = cutting speed / (2 pi r) at the transverse axis position now. Blocks update it at
         their start, so during a move the spindle keeps the speed of the move's start point."""
         if self.css_axis is None:
@@ -241,14 +241,17 @@ class NcKernel:
             rpm = min(self.max_speed, surface / (2.0 * math.pi * r))
         elif surface == 0.0:
             rpm = 0.0
-        elif math.isinf(self.max_speed):
-            self.fault("NC009", "G96 at radius 0 needs a spindle speed limit", src)
-        else:
+        elif not math.isinf(self.max_speed):
             rpm = self.max_speed
+        elif self.spindle_dir:
+            self.fault("NC009", "G96 at radius 0 needs a spindle speed limit (the machine's maximum spindle speed)",
+                       src)
+        else:
+            rpm = 0.0  # decided when the spindle starts
         if rpm != self.css_speed:
             self._spindle_fold()
             self.css_speed = rpm
-            if self.spindle_dir:
+            if self.spindle_dir and announce:
                 self.canon.spindle(rpm, self.spindle_dir, src)
 
     def _g97(self) -> None:
@@ -274,6 +277,8 @@ class NcKernel:
         elif mc == 3 or mc == 4:
             self._spindle_fold()
             self.spindle_dir = 1 if mc == 3 else -1
+            if self.css:
+                self._css_update(src, announce=False)
             canon.spindle(self.spindle_speed(), self.spindle_dir, src)
         elif mc == 5:
             self._spindle_fold()

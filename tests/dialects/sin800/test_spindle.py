@@ -138,7 +138,13 @@ def test_g96_speed_follows_the_radius(tmp_path):
 
 def test_g96_at_radius_zero_needs_a_limit(tmp_path):
     r = _run(tmp_path, "%MPF1\nG0 X0\nG96 S100 M3\nM30\n")
-    assert r["error"]["code"] == "NC009"
+    assert r["error"]["code"] == "NC009" and r["error"]["line"] == 3
+    # a standing spindle needs no speed: G96 at X0, then away from the axis and start there
+    # (180 m/min at radius 50 mm: 572.958 rev/min)
+    r = _ok(tmp_path, "%MPF1\nG0 X0\nG96 S180\nG0 X50\nM3\n@714 @364 R1 K0\nM30\n")
+    assert R(r, 1) == pytest.approx(180000.0 / (2 * math.pi * 50))
+    r = _run(tmp_path, "%MPF1\nG0 X0\nG96 S180\nM4\nM30\n")
+    assert r["error"]["code"] == "NC009" and r["error"]["line"] == 4
     # at radius 0 the spindle runs at the limit of its gear stage (stage 2: 2500 rev/min)
     r = _ok(tmp_path, "%MPF1\nG0 X0\nG96 S100 M3\n@714 @364 R1 K0\nM30\n", extra="gears = [800, 2500]\ngear = 2\n")
     assert R(r, 1) == 2500.0
