@@ -125,6 +125,9 @@ def test_prvc_is_the_g96_cutting_speed(tmp_path):
     assert r["error"]["code"] == "CL800"
     r = _run(tmp_path, "%MPF1\n@345 R1 K2 K0\nM30\n")
     assert r["error"]["code"] == "CL800" and "channel 2" in r["error"]["message"]
+    # 810/820: PRVC channel 1 only (ch.6 table, L4887-4889)
+    r = _run(tmp_path, "%MPF1\n@345 R1 K2 K0\nM30\n", control="810")
+    assert r["error"]["code"] == "CL800" and "outside 0-1" in r["error"]["message"]
 
 
 def test_g96_speed_follows_the_radius(tmp_path):
@@ -182,7 +185,8 @@ def test_lint_warns_for_spindle_read_after_spindle_block(tmp_path):
     diags = _lint(tmp_path, "%MPF1\nS600 M3\nG4 X0.25\n@363 R1 K0\n@714\n@363 R2 K0 @3e4 R3 K0\n")
     assert [(d.code, d.span.line) for d in diags] == [("SIN010", 4)]
     assert "ACSP" in diags[0].message and "spindle block in line 3" in diags[0].message
-    # axis reads do not go stale by a spindle block
+    # axis reads do not go stale by a spindle block, nor by a dwell (the X of G04 is a time)
     assert _lint(tmp_path, "%MPF1\nS600 M3\n@361 R1 K1\n") == []
+    assert _lint(tmp_path, "%MPF1\nG04 X2\n@361 R1 K1\n") == []
     diags = _lint(tmp_path, "%MPF1\nM42\n@3e4 R1 K0\n")
     assert [(d.code, d.span.line) for d in diags] == [("SIN010", 3)] and "AGS" in diags[0].message

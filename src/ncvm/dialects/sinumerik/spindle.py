@@ -98,12 +98,13 @@ class SpindleReads:
             self._programmed_channel(args[0], "PRVC")
             if _whole(args[1]) != 0:
                 raise Cl800Error(f"PRVC: value 2 is {_whole(args[1])}, only 0 (G96) is defined")
-            speed, css, cutting = self._programmed()
+            _, css, cutting = self._programmed()
             return cutting if css else 0.0
         raise Cl800Error(f"@{code} is not available")
 
     def _programmed_channel(self, v: float, what: str) -> None:
-        top = {"880": 16, "850": 8}.get(self.data.control, 3)
+        """Channel numbers per the ch.6 table (L4886-4889): 880 0-16, 850 0-8; 810/820 PRSS 0-3, PRVC 1."""
+        top = {"880": 16, "850": 8}.get(self.data.control, 3 if what == "PRSS" else 1)
         ch = _whole(v)
         if not 0 <= ch <= top:
             raise Cl800Error(f"{what}: channel {ch} outside 0-{top}")
