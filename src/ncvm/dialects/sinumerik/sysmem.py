@@ -14,6 +14,7 @@ from ...diagnostics import RuntimeFault
 from ...nc.dynamics import path_limits, trapezoid_distance, trapezoid_time
 from .contour import check_window, contour_elements, intersect
 from .ncdata import Cl800Error, int_to_pattern, nc8, pattern_to_int
+from .spindle import MASTER_SPINDLE
 
 #: code -> (area, width, (lo, hi) address range); width: word, byte, bit
 MD_SD = {
@@ -177,7 +178,7 @@ class SysMem:
         if code == "367":
             plane = self.g16_plane or {17: (1, 2, 3), 18: (3, 1, 2), 19: (2, 3, 1)}[self.kernel.plane]
             out = [float(a + (128 if m else 0)) for a, m in zip(plane, self.g16_minus)]
-            return out + [0.0, 1.0]
+            return out + [0.0, float(MASTER_SPINDLE)]
         if code == "36a":
             return float(self.tool_d)
         if code == "36b":
