@@ -131,6 +131,7 @@ NCVM_CODES = {
     "NC007": "unknown address letter",
     "NC008": "tool not in tool table",
     "NC009": "invalid parameter of a G function (a scaling factor of 0, a plane without its axes)",
+    "NC010": "G96 at radius 0 without a spindle speed limit",
     "LIM001": "travel limit exceeded",
     "RUN001": "step limit reached (runaway program?)",
     "RUN002": "sub-program not found",

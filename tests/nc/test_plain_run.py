@@ -149,6 +149,20 @@ def test_trace_of_a_batch_replays_every_move(tmp_path):
     _same(traces[0], traces[1])
 
 
+def test_constant_cutting_speed_sets_the_spindle_every_block(tmp_path):
+    """Under G96 each block sets the spindle speed for its start radius: the trace shows it as block by block."""
+    path = tmp_path / "p.ngc"
+    path.write_text("G0 X40 Z2\nG96 S200 M3\n" + "".join(f"G1 X{40 - i} Z-{i} F300\n" for i in range(1, 30))
+                    + "G97\nM30\n")
+    traces = []
+    for name, hook in (("a", None), ("b", lambda *a: None)):
+        trace = tmp_path / f"{name}.jsonl"
+        run(path, dialect="din", options=RunOptions(state_dir=tmp_path / name, trace=trace, hook=hook))
+        traces.append([json.loads(line) for line in trace.read_text().splitlines()])
+    assert sum(1 for t in traces[0] if t.get("call") == "spindle") > 20
+    _same(traces[0], traces[1])
+
+
 @pytest.mark.parametrize("bad, code, line", [
     ("N40 G1 X5 Y5", "NC006", 5),  # G1 without any feed yet
     ("N40 G2 X5 Y5 I1 J0 F100", "NC002", 5),  # end point on another radius

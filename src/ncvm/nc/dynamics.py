@@ -50,6 +50,11 @@ def move_time(deltas, length: float, speed: float, limits: tuple, accel: tuple) 
     """
     if length <= 0.0:
         return 0.0
+    return trapezoid_time(length, *path_limits(deltas, length, speed, limits, accel))
+
+
+def path_limits(deltas, length: float, speed: float, limits: tuple, accel: tuple) -> tuple[float, float]:
+    """Path speed and acceleration of a straight move: ``speed``, capped so no axis exceeds its limits."""
     v = speed
     a = math.inf
     for d, vmax, amax in zip(deltas, limits, accel):
@@ -59,4 +64,23 @@ def move_time(deltas, length: float, speed: float, limits: tuple, accel: tuple) 
                 v = vmax / share
             if amax < a * share:
                 a = amax / share
-    return trapezoid_time(length, v, a)
+    return v, a
+
+
+def trapezoid_distance(length: float, v: float, a: float, t: float) -> float:
+    """Distance covered ``t`` seconds into the rest-to-rest profile of :func:`trapezoid_time`."""
+    total = trapezoid_time(length, v, a)
+    if t <= 0.0 or length <= 0.0:
+        return 0.0
+    if t >= total:
+        return length
+    if a <= 0.0 or a == math.inf:
+        return v * t
+    peak = min(v, math.sqrt(length * a))  # the speed reached: full speed or the triangle's top
+    ramp = peak / a
+    if t <= ramp:
+        return 0.5 * a * t * t
+    if t <= total - ramp:
+        return 0.5 * a * ramp * ramp + peak * (t - ramp)
+    left = total - t
+    return length - 0.5 * a * left * left

@@ -59,8 +59,17 @@ class NcKernel:
         self.absolute = True
         self.scale = 1.0  # 1.0 mm, 25.4 inch
         self.feed = 0.0  # mm/min
-        self.speed = 0.0
+        self.speed = 0.0  # programmed spindle speed (S, rev/min)
         self.spindle_dir = 0
+        # the spindle turns with the simulated clock: the angle it had turned at _spindle_t (degrees)
+        self._spindle_angle = 0.0
+        self._spindle_t = machine.clock.now
+        self.css = False  # G96 constant cutting speed: S is the cutting speed, the speed follows the radius
+        self.cutting_speed = 0.0  # m/min (ft/min with inch)
+        self.css_speed = 0.0  # the speed G96 gives at the current radius (rev/min)
+        self.max_speed = math.inf  # spindle speed limit under G96 (set by the dialect)
+        self.css_axis = self.axis_of.get("X")  # the transverse axis whose position is the radius
+        self.css_diameter = False  # that axis is programmed as a diameter
         self.tool = 0  # tool in spindle
         self.next_tool = 0
         self.work_offset = "G54"
@@ -173,6 +182,10 @@ class NcKernel:
                 machine_coords = True
             elif g == 40 or g == 94 or g == 80 or g == 64 or g == 60:
                 pass
+            elif g == 96:
+                self.css = True
+            elif g == 97:
+                self._g97()
             elif g in (41, 42):
                 self.fault("NC005", f"G{g}: cutter radius compensation not yet supported", src)
             elif g == 43 or g == 44:
@@ -198,9 +211,15 @@ class NcKernel:
         if "F" in words and not dwell_block:
             self.feed = words["F"] * self.scale if self.scale != 1.0 else words["F"]
         if "S" in words:
-            self.speed = words["S"]
-            if self.spindle_dir:
-                canon.spindle(self.speed, self.spindle_dir, src)
+            if self.css:
+                self.cutting_speed = words["S"]
+            else:
+                self._spindle_fold()
+                self.speed = words["S"]
+                if self.spindle_dir:
+                    canon.spindle(self.speed, self.spindle_dir, src)
+        if self.css:
+            self._css_update(src)
         if "T" in words:
             self.next_tool = int(words["T"])
         for mc in block.m:
@@ -223,6 +242,68 @@ class NcKernel:
         for mc in block.m:
             self._m_after(mc, src)
 
+    def columns_ok(self) -> bool:
+        """Whether plain motion blocks may run column-wise (:mod:`ncvm.nc.plainrun`) now: not while a coordinate
+        transformation maps every target, nor under G96, where each block sets the spindle speed anew."""
+        return self.transform is None and not self.css
+
+    # -- spindle -----------------------------------------------------------
+    def spindle_speed(self) -> float:
+        """The commanded speed (rev/min): S, or under G96 the speed for the current radius."""
+        return self.css_speed if self.css else self.speed
+
+    def _spindle_fold(self) -> None:
+        """Add the turn since the last change; call before the speed or the direction changes."""
+        now = self.machine.clock.now
+        if self.spindle_dir:
+            self._spindle_angle += self.spindle_dir * self.spindle_speed() * 6.0 * (now - self._spindle_t)
+        self._spindle_t = now
+
+    def spindle_angle(self) -> float:
+        """Spindle position in degrees, 0 <= angle < 360: M3 counts up, M4 down (speed/60 rev per second)."""
+        if self.css:
+            self._css_update(None)
+        self._spindle_fold()
+        self._spindle_angle %= 360.0
+        return self._spindle_angle
+
+    def actual_speed(self) -> float:
+        """Actual spindle speed (rev/min), negative for M4, 0 while the spindle stands (M5, not started)."""
+        if self.css:
+            self._css_update(None)
+        return self.spindle_dir * self.spindle_speed()
+
+    def _css_update(self, src: Src | None, announce: bool = True) -> None:
+        """G96: speed = cutting speed / (2 pi r) at the transverse axis position now. Blocks update it at
+        their start, so during a move the spindle keeps the speed of the move's start point."""
+        if self.css_axis is None:
+            self.fault("NC004", "G96 needs a transverse axis X for the radius", src)
+        r = abs(self.prog[self.css_axis]) / (2.0 if self.css_diameter else 1.0)
+        surface = self.cutting_speed * (304.8 if self.scale != 1.0 else 1000.0)  # mm/min
+        if r > 1e-9:
+            rpm = min(self.max_speed, surface / (2.0 * math.pi * r))
+        elif surface == 0.0:
+            rpm = 0.0
+        elif not math.isinf(self.max_speed):
+            rpm = self.max_speed
+        elif self.spindle_dir:
+            self.fault("NC010", "G96 at radius 0 needs a spindle speed limit (the machine's maximum spindle speed)",
+                       src)
+        else:
+            rpm = 0.0  # decided when the spindle starts
+        if rpm != self.css_speed:
+            self._spindle_fold()
+            self.css_speed = rpm
+            if self.spindle_dir and announce:
+                self.canon.spindle(rpm, self.spindle_dir, src)
+
+    def _g97(self) -> None:
+        """G97 ends G96; the spindle keeps the speed it has (DIN 66025)."""
+        if self.css:
+            self._spindle_fold()
+            self.speed = self.css_speed
+            self.css = False
+
     def _tool(self, number: int, src: Src):
         tool = self.machine.tools.get(number)
         if tool is None:
@@ -237,9 +318,13 @@ class NcKernel:
             self.tool = self.next_tool
             canon.tool_change(self.tool, src)
         elif mc == 3 or mc == 4:
+            self._spindle_fold()
             self.spindle_dir = 1 if mc == 3 else -1
-            canon.spindle(self.speed, self.spindle_dir, src)
+            if self.css:
+                self._css_update(src, announce=False)
+            canon.spindle(self.spindle_speed(), self.spindle_dir, src)
         elif mc == 5:
+            self._spindle_fold()
             self.spindle_dir = 0
             canon.spindle(0.0, 0, src)
         elif mc == 7:

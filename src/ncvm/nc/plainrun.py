@@ -46,11 +46,11 @@ def execute_columns(k, run: PlainRun, lo: int, hi: int) -> int | None:
     """Execute blocks ``lo``..``hi`` of ``run`` as columns, with the results of executing them one by one.
 
     Stops before the first block the kernel must judge itself (one that would
-    fault) and returns its index, or None when every block was executed. While
-    a coordinate transformation is set (``k.transform``) the kernel judges every
-    block: these columns know only offsets.
+    fault) and returns its index, or None when every block was executed. When
+    the kernel does per-block work these columns do not model
+    (:meth:`NcKernel.columns_ok`), it judges every block itself.
     """
-    if k.transform is not None:
+    if not k.columns_ok():
         return lo if lo < hi else None
     n_axes = k.n_axes
     scale = k.scale

@@ -311,6 +311,12 @@ class UnitCodegen:
         if code == "720":  # MEAS M cuts the motion of its own block at the probe's trigger point
             rec.meas = (self._ref(ops[0]), self.val(ops[1]))
             return True
+        if code == "730":  # REL waits once its own block has executed (L4409-4413)
+            rec.rel = tuple(rec.capture(out, o) for o in ops)
+            return True
+        if code == "736":  # INTA cuts the motion of its own block when the input fires (L4417-4436)
+            rec.inta = tuple(rec.capture(out, o) for o in ops)
+            return True
         lines = self._statement(code, ops, line)
         for text in lines:
             emit(text, line)
@@ -467,6 +473,8 @@ class _Record:
         self.g16: list[tuple[str, bool]] = []
         self.int_sec: tuple[str, str] | None = None
         self.meas: tuple[str, str] | None = None
+        self.rel: tuple[str, ...] | None = None
+        self.inta: tuple[str, ...] | None = None
         self.angle = False  # the block carries the programmed angle (PANG or the angle address word)
         self._captured = 0
 
@@ -523,14 +531,18 @@ class _Record:
             expr = tmp
         self.words.append((repr(a), expr, const))
 
+    def capture(self, out: PySource, op: Operand) -> str:
+        """A temporary holding the operand's value where the @ code stands in the block."""
+        tmp = f"_w{self._captured}"
+        self._captured += 1
+        out.emit(f"{tmp} = {self.cg.val(op)}", self.blk.line)
+        return tmp
+
     def setpoint(self, out: PySource, code: str, ops: list[Operand]) -> None:
         """@440 PRAP, @442 PRSS, @446 PRAD, @447 PANG, @448 PRIP, @44b/@44c control bits."""
         cg = self.cg
         line = self.blk.line
-        value = cg.val(ops[-1])
-        tmp = f"_w{self._captured}"
-        self._captured += 1
-        out.emit(f"{tmp} = {value}", line)
+        tmp = self.capture(out, ops[-1])
         if code in ("440", "448"):
             axis = cg.val(ops[0])
             key = f"_rt.axis_name({axis}, {line})"
@@ -585,6 +597,16 @@ class _Record:
             srcname = cg.const(src, "_S")
             out.emit(f"_ex(_Block({tuple(g)!r}, {tuple(m)!r}, _wm, {self.blk.n!r}, {self.msg!r}, {srcname}))", line)
             g, m, words = [], [], []
+        if self.inta is not None:
+            pairs = ", ".join(f"{k}: {v}" for k, v, _c in words)
+            ax, byte, bit = self.inta
+            srcname = cg.const(src, "_S")
+            out.emit(f"_wm = _rt.inta({ax}, {byte}, {bit}, {tuple(g)!r}, {{{pairs}}}, {line})", line)
+            out.emit(f"_rt.execute_now(_Block({tuple(g)!r}, {tuple(m)!r}, _wm, {self.blk.n!r}, {self.msg!r}, "
+                     f"{srcname})); _rt.inta_done()", line)
+            if any(x in (0, 1, 2, 30) for x in m):
+                out.emit("if (_K.ended or _K.stopped_at) and _rt.halt(): return 1", line)
+            g, m, words = [], [], []
         axis_keys = {repr(a) for a in cg.axes}
         fast = (not cg.decode_ahead and not m and self.msg is None and len(g) <= 1 and all(x in (0, 1) for x in g) and words
                 and all(k in axis_keys for k, _v, _c in words))
@@ -618,6 +640,8 @@ class _Record:
                 out.emit("@SYNC_IN", line)
             if any(x in (0, 1, 2, 30) for x in m):
                 out.emit("if (_K.ended or _K.stopped_at) and _rt.halt(): return 1", line)
+        if self.rel is not None:
+            out.emit(f"_rt.read_in_inhibit({self.rel[0]}, {self.rel[1]}, {line})", line)
         if self.call is not None:
             out.emit("_ctr.steps += _st; _st = 0", line)
             out.emit("@SYNC_OUT", line)

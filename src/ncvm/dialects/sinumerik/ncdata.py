@@ -17,7 +17,7 @@ NAMESPACE = "sin800"
 AREAS = ("nc_md", "cycle_md", "plc_md", "drive_md", "nc_sd", "cycle_sd")
 KNOWN_KEYS = {"control", "channel", "m0", "block_skip", "max_call_depth", "r", "mib", "tool_offsets",
               "zero_offsets", "rotation", "inputs", "plc", "alarms", "sob", "cycle_alarm_stop", "to_area",
-              "m_functions", "decode_ahead", "strict_nc",
+              "m_functions", "decode_ahead", "strict_nc", "gear", "gears",
               *AREAS}
 PERSISTED = (*AREAS, "to", "zo", "rot", "mib", "central_r")
 
@@ -81,6 +81,8 @@ class NcData:
         self.alarms: list[tuple[int, int]] = []  # (number, channel)
         self.sob: dict[str, float] = {}
         self.central_r: dict[str, float] = {}
+        self.gear = 1  # gear stage of the master spindle at power-on (AGS)
+        self.gears: list[float] = []  # maximum speed of each gear stage (M40, limit under G96)
         self.dirty: set[str] = set()
 
     # -- loading ---------------------------------------------------------
@@ -125,11 +127,24 @@ class NcData:
         for a in sec.get("alarms", []):
             data.alarms.append((int(a), data.channel))
         data.sob = {str(k): float(v) for k, v in sec.get("sob", {}).items()}
+        data._load_gears(where, sec)
         for name, v in sec.get("r", {}).items():
             n = int(str(name).upper().lstrip("R"))
             if n >= 900:
                 data.central_r[str(n)] = float(v)
         return data
+
+    def _load_gears(self, where: str, sec: dict) -> None:
+        gears = sec.get("gears", [])
+        if not isinstance(gears, list) or len(gears) > 5 or not all(
+                isinstance(g, (int, float)) and not isinstance(g, bool) and g > 0 for g in gears):
+            raise UsageError(f"{where}: key 'sin800.gears' must list the maximum speed (> 0) of gear stages 1-5")
+        self.gears = [float(g) for g in gears]
+        gear = sec.get("gear", 1)
+        top = len(self.gears) or 5
+        if not isinstance(gear, int) or isinstance(gear, bool) or not 1 <= gear <= top:
+            raise UsageError(f"{where}: key 'sin800.gear' must be a gear stage 1-{top}")
+        self.gear = gear
 
     def _vector(self, where: str, key: str, v) -> list[float]:
         if not isinstance(v, list) or len(v) != self.n_axes:

@@ -17,6 +17,7 @@ from ...nc.block import Block
 from ...runtime.codegen import program_lines
 from .ncdata import Cl800Error, NcData, int_to_pattern, nc8, pattern_to_int
 from .rotation import angle_address, shape_block
+from .spindle import GEAR_M, Gearbox, SpindleReads
 from .sysmem import SysMem
 
 DEG = math.pi / 180.0
@@ -31,6 +32,7 @@ ALARMS = {
     "SIN006": "push/pop stack error",
     "SIN007": "waiting for an input that never changes",
     "SIN010": "warning: actual value read or measurement used without STOP DEC after motion",
+    "SIN011": "INTA in a block that is not G00/G01 (remaining travel delete on arcs is not simulated)",
     "RUN002": "sub-program not found",
     "RUN003": "sub-program nesting too deep",
 }
@@ -61,7 +63,7 @@ class Halt(Exception):
     """M0 / M2 / M30 reached inside a sub-program: unwind every level."""
 
 
-class Channel(SysMem):
+class Channel(SysMem, SpindleReads):
     """One NC channel running a main program and its sub-programs."""
 
     def __init__(self, session, data: NcData, loader):
@@ -99,16 +101,21 @@ class Channel(SysMem):
         self.route()
         self._scenario = list(session.machine.scenario)
         self.m_functions = {f"M{int(k)}": dict(v) for k, v in sec.get("m_functions", {}).items()}
-        if self.m_functions:
-            canon = session.canon
-            plain_aux = canon.aux
+        self.gearbox = Gearbox(self.kernel, data.gear, data.gears)
+        # G96 takes the radius from X; axis 1 may be programmed as a diameter (as for PREP CYC)
+        self.kernel.css_diameter = self.kernel.css_axis == 0 and bool(data.areas["nc_md"].get("diameter_axis1", 0.0))
+        canon = session.canon
+        plain_aux = canon.aux
 
-            def aux(code, src):
-                plain_aux(code, src)
-                if code in self.m_functions:
-                    self.m_function(code)
+        def aux(code, src):
+            """M functions the PLC answers: gear stages (M40-M45), R parameters it loads (m_functions)."""
+            plain_aux(code, src)
+            if code in GEAR_M:
+                self.gearbox.select(code)
+            if code in self.m_functions:
+                self.m_function(code)
 
-            canon.aux = aux
+        canon.aux = aux
         self.apply_offsets()
 
     # -- how decoded blocks reach the kernel ---------------------------------

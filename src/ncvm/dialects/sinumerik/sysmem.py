@@ -11,8 +11,10 @@ from __future__ import annotations
 import math
 
 from ...diagnostics import RuntimeFault
+from ...nc.dynamics import path_limits, trapezoid_distance, trapezoid_time
 from .contour import check_window, contour_elements, intersect
 from .ncdata import Cl800Error, int_to_pattern, nc8, pattern_to_int
+from .spindle import MASTER_SPINDLE
 
 #: code -> (area, width, (lo, hi) address range); width: word, byte, bit
 MD_SD = {
@@ -59,6 +61,7 @@ class SysMem:
         self.g16_plane: tuple[int, int, int] | None = None
         self.g16_minus = (False, False, False)
         self._paths: list[str] = []
+        self._inta_until: float | None = None  # when the input of the last INTA block fired
 
     # -- axes --------------------------------------------------------------
     def _axis(self, v: float) -> int:
@@ -160,10 +163,8 @@ class SysMem:
             return self._to(args)[_rng("TO parameter P", args[2], 0, 15)]
         if sub == "3":
             return self._zo_read(code, args)
-        if code == "342":
-            return self.kernel.speed
-        if code == "345":
-            return 0.0
+        if code in ("342", "345", "363", "364", "3e4"):
+            return self.spindle_read(code, args)
         if code in ("34b", "34c", "3e1", "3e2", "3e3"):
             return self._drive_bit(code, args)
         if code == "360":
@@ -174,12 +175,10 @@ class SysMem:
             if self.session.machine.axes[i].rotary:
                 return [pos % 360.0, float(math.floor(pos / 360.0))]
             return pos
-        if code in ("363", "364"):
-            return self.kernel.speed if code == "364" else 0.0
         if code == "367":
             plane = self.g16_plane or {17: (1, 2, 3), 18: (3, 1, 2), 19: (2, 3, 1)}[self.kernel.plane]
             out = [float(a + (128 if m else 0)) for a, m in zip(plane, self.g16_minus)]
-            return out + [0.0, 1.0]
+            return out + [0.0, float(MASTER_SPINDLE)]
         if code == "36a":
             return float(self.tool_d)
         if code == "36b":
@@ -194,8 +193,6 @@ class SysMem:
             return [n + ch / 100.0 for n, ch in d.alarms] or 0.0
         if code == "3d0":
             return float(len(d.alarms))
-        if code == "3e4":
-            return 1.0
         raise Cl800Error(f"@{code} is not available")
 
     def _mem_read(self, area: str, width: str, rng: tuple, args: tuple):
@@ -523,13 +520,6 @@ class SysMem:
             diameter = self.data.areas["nc_md"].get("diameter_axis1", 0.0)
             self.R[target + 1] = 2.0 if diameter else 1.0
             return
-        if code == "730":
-            self.wait_input(_i(args[0]), _i(args[1]), True, "REL")
-            return
-        if code == "736":
-            bit = _i(args[2])
-            self.wait_input(_i(args[1]), abs(bit), bit >= 0, "INTA")
-            return
         if code == "710":
             self.prep_ref(int(args[0]), int(args[1]))
             return
@@ -583,6 +573,82 @@ class SysMem:
             R[rm] = 0.0
         else:
             R[rm], R[rm + 1], R[rm + 2] = 1.0, hit[0], hit[1]
+
+    # -- REL / INTA (L4400-4436) ---------------------------------------------
+    def read_in_inhibit(self, byte: float, bit: float, line: int) -> None:
+        """@730 REL: once its block has reached its position, decoding waits for input byte.bit to become 1
+        (a 0->1 change; no wait when it is 1 already). Every block decoded so far executes first."""
+        self.run_buffer()
+        self.wait_input(_i(byte), _i(bit), True, "REL")
+
+    def inta(self, axis: float, byte: float, bit: float, g: tuple, words: dict, line: int) -> dict:
+        """@736 INTA: the block's axis words, cut where the motion stops when input byte.bit reaches the
+        level (bit >= 0: 1, bit < 0: 0); unchanged when the position is reached first. Axis 0 = all axes of
+        the block; the axes interpolating with the named one stop with it, which here are all of them."""
+        self.run_buffer()  # the block starts where the blocks before it end
+        k = self.kernel
+        ax = _rng("INTA axis number", axis, 0, 24)
+        b, n = _i(byte), _i(bit)
+        level = n >= 0 and not (n == 0 and math.copysign(1.0, bit) < 0)
+        n = abs(n)
+        self.ext_input(b, n)  # checks byte 1/2, bit 0-7
+        if ax > k.n_axes:
+            raise Cl800Error(f"INTA: axis {ax} does not exist")
+        moving = [name for name in words if name in k.axis_of]
+        if not moving or (ax and k.axis_names[ax - 1] not in moving):
+            self._inta_until = None
+            return words
+        motion = next((x for x in reversed(g) if x in (0, 1, 2, 3)), k.motion)
+        if motion not in (0, 1):
+            raise RuntimeFault("SIN011", "INTA: remaining travel delete is simulated for G00/G01 blocks only")
+        scale = 25.4 if 70 in g else (1.0 if 71 in g else k.scale)
+        absolute = True if 90 in g else (False if 91 in g else k.absolute)
+        machine = 53 in g
+        start = [(k.machine_pos[i] if machine else k.prog[i]) / scale for i in range(k.n_axes)]
+        end = list(start)
+        for name in moving:
+            i = k.axis_of[name]
+            end[i] = words[name] if absolute or machine else start[i] + words[name]
+        deltas = [(e - s) * scale for s, e in zip(start, end)]
+        length = math.sqrt(sum(d * d for d in deltas))
+        feed = words["F"] * scale if "F" in words else k.feed  # mm/min
+        if motion == 1 and feed <= 0.0:
+            raise RuntimeFault("NC006", "G1 with feed rate 0 (program an F word)")
+        speed = math.inf if motion == 0 else feed / 60.0
+        dyn = k.dyn
+        v, a = path_limits(deltas, length, speed, dyn.rapid if motion == 0 else dyn.max_feed, dyn.accel)
+        now = self.session.machine.clock.now
+        hit = self._input_time(b, n, level, now + trapezoid_time(length, v, a))
+        self._inta_until = hit
+        if hit is None:
+            return words
+        frac = trapezoid_distance(length, v, a, hit - now) / length if length else 0.0
+        out = dict(words)
+        for name in moving:
+            i = k.axis_of[name]
+            out[name] = start[i] + frac * (end[i] - start[i]) if absolute or machine else frac * words[name]
+        return out
+
+    def inta_done(self) -> None:
+        """After an INTA block: simulated time has reached the moment the input fired."""
+        clock = self.session.machine.clock
+        if self._inta_until is not None and clock.now < self._inta_until:
+            clock.advance(self._inta_until - clock.now)
+        self._inta_until = None
+
+    def _input_time(self, byte: int, bit: int, level: bool, until: float) -> float | None:
+        """When external input byte.bit first has ``level``, from now to ``until``; None if not before."""
+        now = self.session.machine.clock.now
+        if self.ext_input(byte, bit) == level:
+            return now
+        for ev in self._scenario:
+            if ev.time > until:
+                break
+            d = ev.data
+            if ev.kind == "input" and int(d.get("byte", 1)) == byte and int(d.get("bit", 0)) == bit \
+                    and bool(int(d.get("value", 1))) == level:
+                return max(ev.time, now)
+        return None
 
     # -- MEAS M --------------------------------------------------------------
     def meas(self, target: int, probe: float, words: dict, line: int) -> dict:

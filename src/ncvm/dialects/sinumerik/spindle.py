@@ -1,0 +1,131 @@
+"""The spindle as @ code sees it: ACSP, ACSS, AGS, PRSS, PRVC (manual L2557-2668, L3021-3032, L4887).
+
+The simulated channel has one spindle, number 1, which is the master spindle
+(spindle number 0 in the @ code means the master spindle of the own channel).
+Speed, direction and the angle it has turned come from the NC kernel, which
+executes S, M3/M4/M5 and G96/G97; actual values read the *executed* state (the
+manual asks for STOP DEC before ACSP/ACSS, L2668), programmed setpoints read
+what decoding has reached (the kernel's state plus the blocks still waiting in
+the decode buffer).
+
+Gear stages (docs/decisions.md): M41-M45 select stage 1-5, M40 selects the
+stage automatically from the speed, using the maximum speed of each stage in
+``[sin800] gears``; ``[sin800] gear`` is the stage at power-on.
+"""
+
+from __future__ import annotations
+
+from .ncdata import Cl800Error
+
+MASTER_SPINDLE = 1
+#: M function -> gear stage (M40: automatic selection)
+GEAR_M = {"M40": 0, "M41": 1, "M42": 2, "M43": 3, "M44": 4, "M45": 5}
+
+
+def _whole(v: float) -> int:
+    n = int(v)
+    if n != v:
+        raise Cl800Error(f"{v:g} is not a whole number")
+    return n
+
+
+def spindle_number(v: float, top: int, what: str) -> int:
+    """Spindle number 0..top of the manual's table; 0 is the master spindle. Only spindle 1 exists here."""
+    n = _whole(v)
+    if not 0 <= n <= top:
+        raise Cl800Error(f"{what}: spindle number {n} outside 0-{top}")
+    if n not in (0, MASTER_SPINDLE):
+        raise Cl800Error(f"{what}: spindle {n} does not exist on this machine (only spindle {MASTER_SPINDLE})")
+    return MASTER_SPINDLE
+
+
+class Gearbox:
+    """The active gear stage of the master spindle and the speed limit it sets for G96."""
+
+    def __init__(self, kernel, stage: int, maxima: list[float]):
+        self.kernel = kernel
+        self.maxima = maxima  # maximum speed (rev/min) of stage 1, 2, ...
+        self.auto = False
+        self.stage = stage
+        self._limit()
+
+    def select(self, code: str) -> None:
+        """An executed M40-M45."""
+        stage = GEAR_M[code]
+        if stage == 0:
+            self.auto = True
+        else:
+            if self.maxima and stage > len(self.maxima):
+                raise Cl800Error(f"{code}: gear stage {stage} has no maximum speed in [sin800] gears")
+            self.auto = False
+            self.stage = stage
+        self._limit()
+
+    def active(self) -> int:
+        """Under M40 the lowest stage whose maximum speed reaches the commanded speed (else the top one)."""
+        if self.auto and self.maxima:
+            speed = abs(self.kernel.spindle_speed())
+            self.stage = next((i for i, top in enumerate(self.maxima, 1) if speed <= top), len(self.maxima))
+        return self.stage
+
+    def _limit(self) -> None:
+        k = self.kernel
+        if not self.maxima:
+            return
+        k.max_speed = max(self.maxima) if self.auto else self.maxima[self.stage - 1]
+
+
+class SpindleReads:
+    """Mixed into the channel: the spindle's @ code reads."""
+
+    def spindle_read(self, code: str, args: tuple) -> float:
+        k = self.kernel
+        wide = 6 if self.data.control == "880" else 4  # ch.6 table L4907-4912
+        if code == "363":
+            spindle_number(args[0], wide, "ACSP")
+            return k.spindle_angle()
+        if code == "364":
+            spindle_number(args[0], wide, "ACSS")
+            return k.actual_speed()
+        if code == "3e4":
+            spindle_number(args[0], 1 if self.data.control in ("810", "820") else 6, "AGS")
+            return float(self.gearbox.active())
+        if code == "342":
+            self._programmed_channel(args[0], "PRSS")
+            spindle_number(args[1], 1 if self.data.control in ("810", "820") else 6, "PRSS")
+            return self._programmed()[0]
+        if code == "345":
+            self._programmed_channel(args[0], "PRVC")
+            if _whole(args[1]) != 0:
+                raise Cl800Error(f"PRVC: value 2 is {_whole(args[1])}, only 0 (G96) is defined")
+            _, css, cutting = self._programmed()
+            return cutting if css else 0.0
+        raise Cl800Error(f"@{code} is not available")
+
+    def _programmed_channel(self, v: float, what: str) -> None:
+        """Channel numbers per the ch.6 table (L4886-4889): 880 0-16, 850 0-8; 810/820 PRSS 0-3, PRVC 1."""
+        top = {"880": 16, "850": 8}.get(self.data.control, 3 if what == "PRSS" else 1)
+        ch = _whole(v)
+        if not 0 <= ch <= top:
+            raise Cl800Error(f"{what}: channel {ch} outside 0-{top}")
+        if ch not in (0, self.data.channel):
+            raise Cl800Error(f"{what}: channel {ch} is not on this NC CPU")
+
+    def _programmed(self) -> tuple[float, bool, float]:
+        """(S in rev/min, G96 selected, cutting speed) as decoding has programmed them: the executed
+        state, then the blocks waiting in the decode buffer in order."""
+        k = self.kernel
+        speed, css, cutting = k.speed, k.css, k.cutting_speed
+        for blk in self.buffer:
+            for g in blk.g:
+                if g == 96:
+                    css = True
+                elif g == 97:
+                    css = False
+            s = blk.words.get("S")
+            if s is not None:
+                if css:
+                    cutting = s
+                else:
+                    speed = s
+        return speed, css, cutting
