@@ -822,11 +822,8 @@ class Gen:
                     self.structured(info["else"] + 1, info["end"])
         elif t is A.Case:
             info = pair[i]
-            sel = self.temp("c")
-            code, ty = self.ex(s.expr)
-            if ty not in ("I", "?"):
-                raise GenError("CPL032", f"CASE needs an INTEGER expression, not {_tname(ty)}")
-            self.emit(f"{sel} = _caseval({code})", s.line)
+            sel, select = self.case_selector(s)
+            self.emit(select, s.line)
             arms = info["arms"]
             bounds = arms + ([info["otherwise"]] if info["otherwise"] is not None else []) + [info["end"]]
             kw = "if"
@@ -857,6 +854,14 @@ class Gen:
                 self.emit(f"if {self.condition(self.stmts[end].cond)}: break", self.stmts[end].line)
         elif t not in (A.Else, A.EndIf, A.CaseLabel, A.Otherwise, A.EndCase, A.Next, A.WEnd, A.Until):
             self.simple(i, s)
+
+    def case_selector(self, s) -> tuple[str, str]:
+        """The temporary that holds a CASE value, and the Python statement that sets it."""
+        sel = self.temp("c")
+        code, ty = self.ex(s.expr)
+        if ty not in ("I", "?"):
+            raise GenError("CPL032", f"CASE needs an INTEGER expression, not {_tname(ty)}")
+        return sel, f"{sel} = _caseval({code})"
 
     def condition(self, e) -> str:
         code, ty = self.ex(e)
@@ -998,11 +1003,8 @@ class Gen:
             self.emit_jump(pair[i]["end"] + 1, line)
         elif t is A.Case:
             info = pair[i]
-            sel = self.temp("c")
-            code, ty = self.ex(s.expr)
-            if ty not in ("I", "?"):
-                raise GenError("CPL032", f"CASE needs an INTEGER expression, not {_tname(ty)}")
-            self.emit(f"{sel} = _caseval({code}); _n += 1", line)
+            sel, select = self.case_selector(s)
+            self.emit(f"{select}; _n += 1", line)
             for arm in info["arms"]:
                 vals = self.stmts[arm].values
                 with self.src.block(f"if {sel} in {tuple(vals)!r}:", line):
