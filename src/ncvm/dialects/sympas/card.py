@@ -13,6 +13,7 @@ import math
 
 from ...diagnostics import RuntimeFault, Span
 from ...nc.canon import Src
+from . import recording
 from .commands import Commands
 from .motion import TICKS_PER_S, Move
 from .task import ENDED, ERROR, RUNNING, STEP, STOPPED, Task
@@ -96,6 +97,7 @@ class Card(Commands):
         self.solo = None  # the only running task, when there is just one
         self.counts = float(cfg["counts_per_unit"])
         self.refused_mask = 1 << cfg["axst_bits"]["refused"]
+        self.recordings: dict = {}  # axis number -> LPR/LPRS Recording (recording.py)
 
     # -- timed actions -----------------------------------------------------------------------------
     def add_timed(self, tick: float, fn) -> None:
@@ -190,6 +192,17 @@ class Card(Commands):
             return a.m
         return mv.pos(t)[mv.axes.index(a.number)]
 
+    def axis_velocity(self, a: AxisState, t: float) -> float:
+        """The axis's share of its move's path velocity at ``t`` (units/s, signed)."""
+        mv = a.move
+        if mv is None or mv.t1 <= t:
+            return 0.0
+        v = mv.speed_at(t)
+        p0, p1 = mv.pos(t), mv.pos(t + 1.0)
+        k = mv.axes.index(a.number)
+        d = sum((x - y) ** 2 for x, y in zip(p0, p1)) ** 0.5
+        return v * (p1[k] - p0[k]) / d if d > 0 else 0.0
+
     def user_shift(self, a: AxisState) -> float:
         zo = self.zo.get(self.active_zo)
         return a.ref + a.zerooffset + (zo[a.number] if zo and a.number < len(zo) else 0.0)
@@ -232,14 +245,7 @@ class Card(Commands):
         if name == "tp":
             return a.target - self.user_shift(a)
         if name in ("dv", "rv"):
-            mv = a.move
-            if mv is None or mv.t1 <= t:
-                return 0.0
-            v = mv.speed_at(t)
-            p0, p1 = mv.pos(t), mv.pos(t + 1.0)
-            k = mv.axes.index(a.number)
-            d = sum((x - y) ** 2 for x, y in zip(p0, p1)) ** 0.5
-            return v * (p1[k] - p0[k]) / d if d > 0 else 0.0
+            return self.axis_velocity(a, t)
         if name == "poserr":
             return a.poserr
         if name == "zerooffset":
@@ -447,6 +453,7 @@ class Card(Commands):
         for a in self.axes:
             if a.move is not None and a.move.drift:
                 a.move.stop(max(end, a.move.t0), math.inf)  # still running on at jtv: reported up to the end
+        recording.run_out(self)  # the card goes on sampling after the programs end
         for mv in sorted({id(a.move): a.move for a in self.axes if a.move is not None}.values(), key=lambda m: m.t0):
             self._finish(mv)
         return end

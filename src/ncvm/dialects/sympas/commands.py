@@ -12,6 +12,7 @@ import math
 from operator import attrgetter
 
 from ...nc.canon import Src
+from . import recording
 from .lookahead import retime
 from .motion import TICKS_PER_S, Chain, ChainProfile, Move
 from .values import fault
@@ -645,8 +646,10 @@ class Commands:
         return None
 
     def cmd_lpr(self, tk, axes, loc):
+        """LPR/LPRS: start the data recording of these axes (recording.py, §6.6.29-30)."""
         for ax in axes:
             self.check_axis(ax)
+        recording.start(self, tk, axes)
         return None
 
     cmd_lprs = cmd_lpr
