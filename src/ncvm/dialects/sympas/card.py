@@ -376,7 +376,8 @@ class Card(Commands):
         """Start a path move at the task's time; False when the card refuses it."""
         t = tk.time
         f, ts = self.units(tk)
-        v = tk.sysp["TRVL"] * f / ts * tk.ovr
+        plan = tk.ovr if tk.ovr > 0.0 else 1.0  # under a feed hold the move is planned at 100 % and held
+        v = tk.sysp["TRVL"] * f / ts * plan
         acc = tk.sysp["TRAC"] * f / (ts * ts)
         bit = 1 << self.cfg["axst_bits"]["refused"]
         if length <= 0 or v <= 0 or acc <= 0:
@@ -387,7 +388,9 @@ class Card(Commands):
             a = self.axes[ax]
             a.flags &= ~bit
         mv.start(t, length, v, acc)
-        mv.ovr0 = tk.ovr
+        mv.ovr0 = plan
+        if tk.ovr <= 0.0:
+            mv.override(t, 0.0, 0.0)  # TROVR = 0: it waits at its start for a raised override
         self.live.add(mv)
         for k, ax in enumerate(mv.axes):
             a = self.axes[ax]
@@ -419,20 +422,40 @@ class Card(Commands):
         if end <= tk.time:
             self.settle(axes, tk.time)
             return None
-        if tk.fast_wait(end):
+        if end < math.inf and tk.fast_wait(end):
             self.settle(axes, tk.time)
             return None
         return self._wait_axes(tk, axes)
 
     def _wait_axes(self, tk, axes):
-        while True:
-            end = max((self.axes[ax].move.t1 for ax in axes if self.axes[ax].move is not None
-                       and not self.axes[ax].move.drift), default=0.0)  # a jog running on at jtv: at profile end
-            if end <= tk.time:
-                self.settle(axes, tk.time)
-                return
-            step = end if not tk.others_running() else min(end, tk.time + self.servo)
-            yield from tk.wait_until(step)
+        try:
+            while True:
+                end = max((self.axes[ax].move.t1 for ax in axes if self.axes[ax].move is not None
+                           and not self.axes[ax].move.drift), default=0.0)  # a jog running on at jtv: at profile end
+                if end <= tk.time:
+                    self.settle(axes, tk.time)
+                    return
+                if end == math.inf:  # held by TROVR = 0: only another task, an event or a timed action can go on
+                    self._check_stall(tk)
+                    step = tk.time + self.servo
+                    if not tk.others_running():
+                        step = max(step, min(self.next_timed(), tk.time + 1000.0 * self.servo))
+                else:
+                    step = end if not tk.others_running() else min(end, tk.time + self.servo)
+                yield from tk.wait_until(step)
+        finally:
+            tk.held = None
+
+    def _check_stall(self, tk) -> None:
+        """Run-time error RUN005 when every running task waits on held motion and nothing ran since
+        they last looked, with no timed action ahead: no UTROVR can come any more (the card would hang)."""
+        quiet = tk.held == self.steps
+        tk.held = self.steps
+        if not quiet or self.next_timed() < math.inf:
+            return
+        if all(t.held == self.steps for t in self.tasks if t.state == RUNNING):
+            raise RuntimeFault("RUN005", "waiting for ever: the axes are held by TROVR = 0 and no task "
+                                         "can raise the override any more")
 
     # -- system reset and the end of the run -----------------------------------------------------------------------------
     def reset_system(self, t: float) -> None:
@@ -449,10 +472,13 @@ class Card(Commands):
         end = max([t.time for t in self.tasks] + [0.0])
         for a in self.axes:
             if a.move is not None and not a.move.drift:
-                end = max(end, a.move.t1)
+                mv = a.move
+                end = max(end, mv.t1 if mv.t1 < math.inf else mv.standstill())
         for a in self.axes:
             if a.move is not None and a.move.drift:
                 a.move.stop(max(end, a.move.t0), math.inf)  # still running on at jtv: reported up to the end
+            elif a.move is not None and a.move.t1 == math.inf:
+                a.move.stop(end, math.inf)  # held by TROVR = 0 when the programs ended: it stands there
         recording.run_out(self)  # the card goes on sampling after the programs end
         for mv in sorted({id(a.move): a.move for a in self.axes if a.move is not None}.values(), key=lambda m: m.t0):
             self._finish(mv)

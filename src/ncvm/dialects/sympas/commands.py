@@ -303,7 +303,9 @@ class Commands:
         """Spooled segments run back to back; consecutive path segments join at their target
         velocity (lookahead.py) and run as one :class:`Chain` without stopping in between."""
         codes = self.cfg["ssf_codes"]
-        saved_sysp, saved_t = tk.sysp, tk.time
+        saved_sysp, saved_t, held = tk.sysp, tk.time, tk.ovr <= 0.0
+        if held:
+            tk.ovr = 1.0  # a feed hold: the chain is planned at 100 % and held at its start
         t = tk.time
         for ax in axes:
             mv = self.axes[ax].move
@@ -361,6 +363,8 @@ class Commands:
         finally:
             self.cfg["busy_move"] = busy
             tk.sysp, tk.time = saved_sysp, saved_t
+            if held:
+                tk.ovr = 0.0
         if not segs:
             return
         mode = self.sys["MODEREG"]
@@ -369,6 +373,8 @@ class Commands:
             m.retired = False
             self.live.discard(m)
         chain = Chain(segs, full0)
+        if held:
+            chain.override(chain.t0, 0.0, 0.0)
         self.live.add(chain)
         for ax in chain.axes:
             a = self.axes[ax]
@@ -379,6 +385,10 @@ class Commands:
     def _ssf_at_end(self, chain, seg, act, tick: float) -> None:
         """An SSF between chained segments acts when the segment before it ends, even if UTROVR moved
         that end; not at all when a stop cut the chain before it."""
+        if tick == math.inf:  # held by TROVR = 0: armed again when UTROVR lets the chain go on
+            chain.parked.append(lambda: self._ssf_at_end(chain, seg, act, seg.t1))
+            return
+
         def fire():
             if seg not in chain.segs or (seg.stop_s is not None and seg.stop_s < seg.prof.length):
                 return

@@ -185,7 +185,7 @@ class Move:
         """From ``t_ticks`` the profile time rate ramps linearly to ``r_b`` over ``ramp_ticks`` (TROVRST)."""
         if t_ticks >= self.t1 or self.stop_s is not None:
             return
-        r_b = max(r_b, 1e-6)
+        r_b = max(r_b, 0.0)  # 0: feed hold, the path stands once the ramp is down (t1 = inf)
         tau_now = max(0.0, self.tau(t_ticks))
         r_a = self.rate(t_ticks) if t_ticks > self.t0 else self.rate(self.t0)
         if t_ticks < self.t0:  # not begun yet (a later chain segment): the ramp goes on from its start
@@ -196,14 +196,24 @@ class Move:
 
     @staticmethod
     def _wall(rest: float, ra: float, rb: float, T: float) -> float:
-        """Wall ticks to cover ``rest`` profile ticks while the rate ramps ra -> rb over T."""
+        """Wall ticks to cover ``rest`` profile ticks while the rate ramps ra -> rb over T
+        (infinite when a feed hold, rb = 0, stops the path before)."""
         ramp = ra * T + 0.5 * (rb - ra) * T
         if T > 0.0 and rest <= ramp:
             k = (rb - ra) / (2.0 * T)
             if abs(k) < 1e-15:
-                return rest / ra
+                return rest / ra if ra > 0.0 else (0.0 if rest <= 0.0 else math.inf)
             return (-ra + math.sqrt(max(0.0, ra * ra + 4.0 * k * rest))) / (2.0 * k)
+        if rb <= 0.0:
+            return math.inf if rest > ramp else T
         return T + (rest - ramp) / rb
+
+    def standstill(self) -> float:
+        """The tick from which a feed hold (TROVR = 0) keeps this move standing; inf when not held."""
+        w = self.warp
+        if self.t1 < math.inf or w is None or w[3] > 0.0:
+            return math.inf
+        return w[0] + w[4]
 
     def s_at(self, t_ticks: float) -> float:
         if self.stop_s is not None and t_ticks >= self.stop_t:
@@ -310,7 +320,7 @@ class Chain:
     It stands for all its segments on every axis they use, so positions, velocities and stops
     (JS, MS) see the segment that runs at the asked time."""
 
-    __slots__ = ("segs", "axes", "t0", "t1", "p1", "retired", "jog", "drift", "_full0")
+    __slots__ = ("segs", "axes", "t0", "t1", "p1", "retired", "jog", "drift", "_full0", "parked")
 
     def __init__(self, segs: list, full0: tuple):
         self.segs = segs
@@ -321,6 +331,7 @@ class Chain:
         self.retired = False
         self.jog = self.drift = False
         self.p1 = self.final()
+        self.parked: list = []  # timed actions waiting for a held segment's end (re-armed by UTROVR)
 
     def _seg(self, t: float):
         for m in self.segs:
@@ -364,13 +375,22 @@ class Chain:
         m.override(t, ovr / m.ovr0, ramp_ticks)
         end_ramp = t + ramp_ticks
         for prev, nxt in zip(self.segs[k:], self.segs[k + 1:]):
-            shift = prev.t1 - nxt.t0
-            nxt.t0 += shift
-            nxt.t1 += shift
+            nxt.t0 = nxt.t1 = prev.t1  # starts where the one before ends: never while that one is held
+            if prev.t1 == math.inf:
+                nxt.warp = None
+                continue
             ra = prev.rate(prev.t1)
             nxt.warp = (nxt.t0, 0.0, ra, ra, 0.0)
+            nxt.t1 = math.inf
             nxt.override(nxt.t0, ovr / nxt.ovr0, max(0.0, end_ramp - nxt.t0))
         self.t1 = self.segs[-1].t1
+        parked, self.parked = self.parked, []
+        for rearm in parked:
+            rearm()
+
+    def standstill(self) -> float:
+        held = next((m for m in self.segs if m.t1 == math.inf), None)
+        return held.standstill() if held is not None else math.inf
 
     def emit(self, canon, names_count: int) -> None:
         if self.retired:
