@@ -366,6 +366,13 @@ class Card(Commands):
             fault(256, f"TU = {tu} is not a time unit (0..2)")
         return f, ts
 
+    def jerk(self, axes) -> float:
+        """The S-profile's jerk-limited ramp fraction for a move of ``axes``: with MODEREG bit 1 the
+        largest jerkrel of the axes, within 0..1; 0 (trapezoid) without the bit (L1392, L1462)."""
+        if not self.sys["MODEREG"] & 0x2:
+            return 0.0
+        return min(1.0, max(0.0, max(float(self.axes[ax].q["jerkrel"]) for ax in axes)))
+
     def round_counts(self, x: float) -> float:
         if self.sys["MODEREG"] & 0x100:
             return x
@@ -387,7 +394,7 @@ class Card(Commands):
         for ax in mv.axes:
             a = self.axes[ax]
             a.flags &= ~bit
-        mv.start(t, length, v, acc)
+        mv.start(t, length, v, acc, self.jerk(mv.axes))
         mv.ovr0 = plan
         if tk.ovr <= 0.0:
             mv.override(t, 0.0, 0.0)  # TROVR = 0: it waits at its start for a raised override

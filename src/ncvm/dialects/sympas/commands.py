@@ -52,7 +52,7 @@ class Commands:
         timed action before its end, mm and s, axis numbers fixed at compile time): the same profile and
         canon call as the general path, without the bookkeeping of a running move. False: not taken."""
         if self.solo is not tk or tk.enabled or self.live or self.active_zo or not tk.plain_units \
-                or self.sys["MODEREG"] & 0x100:
+                or self.sys["MODEREG"] & 0x102:
             return False
         sysp = tk.sysp
         v = sysp["TRVL"] * tk.ovr
@@ -417,11 +417,12 @@ class Commands:
             if abs(p1 - p0) == 0 or vel <= 0 or acc <= 0:
                 a.target = p1
                 continue
-            mv.start(t, abs(p1 - p0), vel, acc)
+            jerk = self.jerk((ax,))
+            mv.start(t, abs(p1 - p0), vel, acc, jerk)
             jtv = abs(float(a.q["jtv"]))
             if jtv > 0.0:  # arrive with the jog target velocity and keep moving (digest §10.5, A-60)
-                v1 = min(jtv, math.sqrt(2.0 * acc * abs(p1 - p0)))
-                mv.prof = ChainProfile(abs(p1 - p0), max(vel, v1), acc, 0.0, v1)
+                v1 = min(jtv, math.sqrt(2.0 * acc * (1.0 - 0.5 * jerk) * abs(p1 - p0)))
+                mv.prof = ChainProfile(abs(p1 - p0), max(vel, v1), acc, 0.0, v1, jerk)
                 mv.t1 = t + mv.prof.duration * TICKS_PER_S
                 self.add_timed(mv.t1, self._drift_action(a, mv, v1, 1.0 if p1 >= p0 else -1.0))
             a.move = mv
@@ -500,7 +501,7 @@ class Commands:
                 a.flags |= failed
                 continue
             if abs(ref - p0) > 0:
-                mv.start(t, abs(ref - p0), a.q["hvl"], a.q["hac"])
+                mv.start(t, abs(ref - p0), a.q["hvl"], a.q["hac"], self.jerk((ax,)))
                 a.move = mv
                 self.live.add(mv)
             a.target = ref
