@@ -229,3 +229,26 @@ end.
     assert float(x) == pytest.approx(9.5, abs=2e-3)
     assert pe == "TRUE"
     assert float(x2) == pytest.approx(float(x) + 1.0, abs=1e-3)
+
+
+def test_two_tasks_waiting_on_held_axes_are_reported(sap):
+    # both tasks wait on their own held axis: nothing runs any more, no scenario event is ahead
+    r = sap("""{$TASK 0}
+program Main;
+begin
+  CL(A1, A2);
+  STARTCNCT(1);
+  TROVR := 0.0; UTROVR(A1);
+  MLRW(A1 := 5.0);
+  writeln('never');
+end.
+{$TASK 1}
+program Other;
+begin
+  TROVR := 0.0; UTROVR(A2);
+  MLRW(A2 := 5.0);
+  writeln('never either');
+end.
+""")
+    assert r["status"] == "error" and r["error"]["code"] == "RUN005"
+    assert r["output"] == []

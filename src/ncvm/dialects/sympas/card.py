@@ -480,7 +480,9 @@ class Card(Commands):
         for a in self.axes:
             if a.move is not None and not a.move.drift:
                 mv = a.move
-                end = max(end, mv.t1 if mv.t1 < math.inf else mv.standstill())
+                stand = mv.t1 if mv.t1 < math.inf else mv.standstill()
+                if stand < math.inf:
+                    end = max(end, stand)
         for a in self.axes:
             if a.move is not None and a.move.drift:
                 a.move.stop(max(end, a.move.t0), math.inf)  # still running on at jtv: reported up to the end
