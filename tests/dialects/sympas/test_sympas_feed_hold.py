@@ -87,12 +87,14 @@ begin
 end.
 """
 
-CI_AT = """
+CI2_AT_1S = """
 [[scenario]]
 time = 1.0
 kind = "ci"
 index = 2
 value = 1
+"""
+CI_AT = CI2_AT_1S + """
 [[scenario]]
 time = 3.0
 kind = "ci"
@@ -252,3 +254,54 @@ end.
 """)
     assert r["status"] == "error" and r["error"]["code"] == "RUN005"
     assert r["output"] == []
+
+
+def test_the_override_belongs_to_the_axes_not_to_the_task(sap):
+    # L2189: "reduzierte Bahngeschwindigkeit für Achsen A1 und A2". Task 0 holds A1 and starts a move
+    # (it waits at its start); task 1 raises A1's override at 1.0 s (scenario CI2): the move runs its 2.1 s
+    # and task 0's next move on A1 runs at full speed too (another 2.1 s): 1.0 + 2.1 + 2.1 = 5.2 s
+    text = """{$TASK 0}
+program Main;
+var t0, t1: integer;
+begin
+  CL(A1); TRVL := 10.0; TRAC := 100.0;
+  STARTCNCT(1);
+  TROVR := 0.0; UTROVR(A1);
+  t0 := CLOCK;
+  MLRW(A1 := 20.0);
+  MLRW(A1 := 20.0);
+  t1 := CLOCK - t0;
+  writeln(t1, ' ', A1.dp);
+end.
+{$TASK 1}
+program Operator;
+begin
+  repeat until CI2 = 1;
+  TROVR := 1.0; UTROVR(A1);
+end.
+"""
+    r = sap(text, machine_toml=CI2_AT_1S)
+    assert r["status"] == "ok", r["error"]
+    t1, x = r["output"][0].split()
+    assert int(t1) == pytest.approx(5.2 * SEC, abs=12)
+    assert float(x) == pytest.approx(40.0)
+
+
+def test_a_group_runs_with_the_smallest_override_of_its_axes(sap):
+    # UTROVR(A2) at 0.5 before a move of A1 and A2: 20 mm at v 5, a 100: 0.05 s x 2 + 19.75 / 5 = 4.05 s
+    text = """program T;
+var t0, t1: integer;
+begin
+  CL(A1, A2); TRVL := 10.0; TRAC := 100.0; TROVR := 0.5; UTROVR(A2);
+  t0 := CLOCK;
+  MLRW(A1 := 20.0, A2 := 0.0);
+  t1 := CLOCK - t0;
+  MLRW(A1 := 20.0);
+  writeln(t1, ' ', CLOCK - t0 - t1);
+end.
+"""
+    r = sap(text)
+    assert r["status"] == "ok", r["error"]
+    t1, t2 = r["output"][0].split()
+    assert int(t1) == pytest.approx(4.05 * SEC, abs=8)
+    assert int(t2) == pytest.approx(2.1 * SEC, abs=8)  # A1 alone is not reduced

@@ -41,6 +41,7 @@ class AxisState:
         self.digo = 0
         self.ifs = 0
         self.poserr = 0.0
+        self.ovr = 1.0  # path override (UTROVR), 0 = feed hold
         self.spool: list = []
         self.spool_halted = False
         acc = cfg_axis.accel
@@ -98,6 +99,7 @@ class Card(Commands):
         self.counts = float(cfg["counts_per_unit"])
         self.refused_mask = 1 << cfg["axst_bits"]["refused"]
         self.recordings: dict = {}  # axis number -> LPR/LPRS Recording (recording.py)
+        self.planning_chain = False  # SSMS is planning a chain: no feed hold on its single segments
 
     # -- timed actions -----------------------------------------------------------------------------
     def add_timed(self, tick: float, fn) -> None:
@@ -366,6 +368,10 @@ class Card(Commands):
             fault(256, f"TU = {tu} is not a time unit (0..2)")
         return f, ts
 
+    def path_override(self, axes) -> float:
+        """The override a path group runs with: the smallest UTROVR factor of its axes."""
+        return min(self.axes[ax].ovr for ax in axes)
+
     def jerk(self, axes) -> float:
         """The S-profile's jerk-limited ramp fraction for a move of ``axes``: with MODEREG bit 1 the
         largest jerkrel of the axes, within 0..1; 0 (trapezoid) without the bit (L1392, L1462)."""
@@ -383,7 +389,8 @@ class Card(Commands):
         """Start a path move at the task's time; False when the card refuses it."""
         t = tk.time
         f, ts = self.units(tk)
-        plan = tk.ovr if tk.ovr > 0.0 else 1.0  # under a feed hold the move is planned at 100 % and held
+        ovr = self.path_override(mv.axes)
+        plan = ovr if ovr > 0.0 else 1.0  # under a feed hold the move is planned at 100 % and held
         v = tk.sysp["TRVL"] * f / ts * plan
         acc = tk.sysp["TRAC"] * f / (ts * ts)
         bit = 1 << self.cfg["axst_bits"]["refused"]
@@ -396,7 +403,7 @@ class Card(Commands):
             a.flags &= ~bit
         mv.start(t, length, v, acc, self.jerk(mv.axes))
         mv.ovr0 = plan
-        if tk.ovr <= 0.0:
+        if ovr <= 0.0 and not self.planning_chain:
             mv.override(t, 0.0, 0.0)  # TROVR = 0: it waits at its start for a raised override
         self.live.add(mv)
         for k, ax in enumerate(mv.axes):

@@ -55,11 +55,11 @@ class Commands:
                 or self.sys["MODEREG"] & 0x102:
             return False
         sysp = tk.sysp
-        v = sysp["TRVL"] * tk.ovr
+        axes = self.axes
+        v = sysp["TRVL"] * min(axes[ax].ovr for ax, _ in items)
         acc = sysp["TRAC"]
         if v <= 0 or acc <= 0:
             return False
-        axes = self.axes
         pos = list(map(_GET_M, axes))
         start = tuple(pos)
         c = self.counts
@@ -303,9 +303,8 @@ class Commands:
         """Spooled segments run back to back; consecutive path segments join at their target
         velocity (lookahead.py) and run as one :class:`Chain` without stopping in between."""
         codes = self.cfg["ssf_codes"]
-        saved_sysp, saved_t, held = tk.sysp, tk.time, tk.ovr <= 0.0
-        if held:
-            tk.ovr = 1.0  # a feed hold: the chain is planned at 100 % and held at its start
+        saved_sysp, saved_t = tk.sysp, tk.time
+        self.planning_chain = True  # under a feed hold the chain is planned at 100 % and held as a whole
         t = tk.time
         for ax in axes:
             mv = self.axes[ax].move
@@ -358,13 +357,12 @@ class Commands:
                     f, ts = self.units(tk)
                     mv.retired = True  # reported by the chain when it retires, not when the next one starts
                     segs.append(mv)
-                    targets.append(max(0.0, sysp["TRTVL"] * f / ts * tk.ovr))
+                    targets.append(max(0.0, sysp["TRTVL"] * f / ts * mv.ovr0))
                     t = mv.t1
         finally:
             self.cfg["busy_move"] = busy
             tk.sysp, tk.time = saved_sysp, saved_t
-            if held:
-                tk.ovr = 0.0
+            self.planning_chain = False
         if not segs:
             return
         mode = self.sys["MODEREG"]
@@ -373,7 +371,7 @@ class Commands:
             m.retired = False
             self.live.discard(m)
         chain = Chain(segs, full0)
-        if held:
+        if self.path_override(chain.axes) <= 0.0:
             chain.override(chain.t0, 0.0, 0.0)
         self.live.add(chain)
         for ax in chain.axes:
@@ -640,20 +638,24 @@ class Commands:
         return None
 
     def cmd_utrovr(self, tk, axes, loc):
-        """The running path moves of these axes reach the new TROVR linearly over TROVRST seconds
-        (digest §10.5); later path segments of this task are planned with it."""
-        ovr = float(tk.sysp["TROVR"])
+        """TROVR becomes the path override of these axes ("reduzierte Bahngeschwindigkeit für Achsen A1
+        und A2", L2189): their running path moves reach it linearly over TROVRST seconds (digest §10.5),
+        and their later path moves, from any task, are planned with it. A group runs with the smallest
+        override of its axes; 0 holds it (feed hold)."""
+        ovr = max(0.0, float(tk.sysp["TROVR"]))
         ramp = max(0.0, float(tk.sysp["TROVRST"])) * 15625.0
+        for ax in axes:
+            self.check_axis(ax).ovr = ovr
         done = set()
         for ax in axes:
-            mv = self.check_axis(ax).move
+            mv = self.axes[ax].move
             if mv is not None and not mv.jog and id(mv) not in done and mv.t1 > tk.time:
                 done.add(id(mv))
+                group = self.path_override(mv.axes)
                 if isinstance(mv, Chain):
-                    mv.override(tk.time, ovr, ramp)
+                    mv.override(tk.time, group, ramp)
                 else:
-                    mv.override(tk.time, ovr / mv.ovr0, ramp)
-        tk.ovr = ovr
+                    mv.override(tk.time, group / mv.ovr0, ramp)
         return None
 
     def cmd_lpr(self, tk, axes, loc):

@@ -63,7 +63,6 @@ class Task:
         self.error_line = 0
         self.step_once = False
         self.depth = 0
-        self.ovr = 1.0
         self.plain_units = not (self.sysp["PU"] or self.sysp["TU"])
 
     # -- time ------------------------------------------------------------------------------
