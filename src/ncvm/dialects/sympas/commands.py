@@ -14,7 +14,7 @@ from operator import attrgetter
 from ...nc.canon import Src
 from . import recording
 from .lookahead import retime
-from .motion import TICKS_PER_S, Chain, ChainProfile, Move
+from .motion import TICKS_PER_S, Chain, Move, Profile
 from .values import fault
 
 _GET_M = attrgetter("m")
@@ -420,7 +420,7 @@ class Commands:
             jtv = abs(float(a.q["jtv"]))
             if jtv > 0.0:  # arrive with the jog target velocity and keep moving (digest §10.5, A-60)
                 v1 = min(jtv, math.sqrt(2.0 * acc * (1.0 - 0.5 * jerk) * abs(p1 - p0)))
-                mv.prof = ChainProfile(abs(p1 - p0), max(vel, v1), acc, 0.0, v1, jerk)
+                mv.prof = Profile(abs(p1 - p0), max(vel, v1), acc, 0.0, v1, jerk)
                 mv.t1 = t + mv.prof.duration * TICKS_PER_S
                 self.add_timed(mv.t1, self._drift_action(a, mv, v1, 1.0 if p1 >= p0 else -1.0))
             a.move = mv
@@ -443,7 +443,7 @@ class Commands:
             d = Move((a.number,), (p,), (p + sign * far,), "line", mv.src, self.all_positions(t))
             d.jog = True
             d.drift = True
-            d.prof = ChainProfile(far, v, float(a.q["jac"]) or 1.0, v, v)
+            d.prof = Profile(far, v, float(a.q["jac"]) or 1.0, v, v)
             d.t0, d.t1, d.feed, d.vmax = t, t + d.prof.duration * TICKS_PER_S, v * 60.0, v
             a.move = d
             self.live.add(d)

@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import math
 
-from .motion import TICKS_PER_S, ChainProfile
+from .motion import TICKS_PER_S, Profile
 
 LOOKAHEAD = 0x1
 NOTRIANGLE = 0x40
@@ -82,7 +82,7 @@ def retime(axes, segs: list, targets: list, moderegs: list) -> None:
             # velocity (a triangle) keeps its start velocity instead
             v_top = v_in
             v_out = min(v_out, v_in)
-        m.prof = ChainProfile(L, v_top, acc[k], v_in, v_out, jerk[k])
+        m.prof = Profile(L, v_top, acc[k], v_in, v_out, jerk[k])
         m.t0 = t
         m.t1 = t = t + m.prof.duration * TICKS_PER_S
         m.feed = m.prof.v * 60.0

@@ -99,9 +99,6 @@ class Profile:
         return self._at(t)[1]
 
 
-ChainProfile = Profile  # a spooled segment's profile: the same with v0, v1 given
-
-
 class Move:
     """One profile over a group of axes (indices into the card's axes)."""
 
