@@ -137,5 +137,6 @@ NCVM_CODES = {
     "RUN002": "sub-program not found",
     "RUN003": "call nesting too deep",
     "RUN004": "run interrupted by the user",
+    "RUN005": "waiting for ever (motion held with no way to go on)",
     "IO001": "file access outside the controller's file root",
 }

@@ -48,6 +48,8 @@ class Session:
         self.dialect = dialect
         self.output: list[str] = []
         self.variables: dict[str, Any] = {}
+        #: dialect-specific parts of the result document (e.g. the rw_SymPas card's LPR recordings)
+        self.extra: dict[str, Any] = {}
         self.steps = StepCounter(self.options.max_steps, self.options.hook)
         self.recorder = ToolpathRecorder()
         self.limits = LimitCheck(machine.axes, self.recorder)  # reads the recorded moves at the end
@@ -114,6 +116,7 @@ class Session:
             "steps": min(self.steps.steps, self.steps.limit),  # a runaway is caught just past the limit
             "limit_violations": [v.message() for v in self.limits.first()],
         }
+        out.update({k: _jsonable(v) for k, v in self.extra.items()})
         if error:
             out["error"] = {"code": error.code, "message": error.message,
                             "file": error.span.file if error.span else None,

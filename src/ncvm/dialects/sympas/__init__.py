@@ -143,6 +143,9 @@ class SympasDialect(Dialect):
             session.steps.steps += card.steps
             card.steps = 0
             end = card.finish()
+            if card.recordings:
+                session.extra["recordings"] = {card.names[ax]: rec.to_json(card.names[ax])
+                                               for ax, rec in sorted(card.recordings.items())}
             session.machine.clock.now = end / TICKS_PER_S
             for tk in card.tasks:
                 if tk.line and not tk.tskinfo & 2:

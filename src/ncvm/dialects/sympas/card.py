@@ -13,6 +13,7 @@ import math
 
 from ...diagnostics import RuntimeFault, Span
 from ...nc.canon import Src
+from . import recording
 from .commands import Commands
 from .motion import TICKS_PER_S, Move
 from .task import ENDED, ERROR, RUNNING, STEP, STOPPED, Task
@@ -40,6 +41,7 @@ class AxisState:
         self.digo = 0
         self.ifs = 0
         self.poserr = 0.0
+        self.ovr = 1.0  # path override (UTROVR), 0 = feed hold
         self.spool: list = []
         self.spool_halted = False
         acc = cfg_axis.accel
@@ -96,6 +98,8 @@ class Card(Commands):
         self.solo = None  # the only running task, when there is just one
         self.counts = float(cfg["counts_per_unit"])
         self.refused_mask = 1 << cfg["axst_bits"]["refused"]
+        self.recordings: dict = {}  # axis number -> LPR/LPRS Recording (recording.py)
+        self.planning_chain = False  # SSMS is planning a chain: no feed hold on its single segments
 
     # -- timed actions -----------------------------------------------------------------------------
     def add_timed(self, tick: float, fn) -> None:
@@ -190,6 +194,17 @@ class Card(Commands):
             return a.m
         return mv.pos(t)[mv.axes.index(a.number)]
 
+    def axis_velocity(self, a: AxisState, t: float) -> float:
+        """The axis's share of its move's path velocity at ``t`` (units/s, signed)."""
+        mv = a.move
+        if mv is None or mv.t1 <= t:
+            return 0.0
+        v = mv.speed_at(t)
+        p0, p1 = mv.pos(t), mv.pos(t + 1.0)
+        k = mv.axes.index(a.number)
+        d = sum((x - y) ** 2 for x, y in zip(p0, p1)) ** 0.5
+        return v * (p1[k] - p0[k]) / d if d > 0 else 0.0
+
     def user_shift(self, a: AxisState) -> float:
         zo = self.zo.get(self.active_zo)
         return a.ref + a.zerooffset + (zo[a.number] if zo and a.number < len(zo) else 0.0)
@@ -232,14 +247,7 @@ class Card(Commands):
         if name == "tp":
             return a.target - self.user_shift(a)
         if name in ("dv", "rv"):
-            mv = a.move
-            if mv is None or mv.t1 <= t:
-                return 0.0
-            v = mv.speed_at(t)
-            p0, p1 = mv.pos(t), mv.pos(t + 1.0)
-            k = mv.axes.index(a.number)
-            d = sum((x - y) ** 2 for x, y in zip(p0, p1)) ** 0.5
-            return v * (p1[k] - p0[k]) / d if d > 0 else 0.0
+            return self.axis_velocity(a, t)
         if name == "poserr":
             return a.poserr
         if name == "zerooffset":
@@ -360,6 +368,17 @@ class Card(Commands):
             fault(256, f"TU = {tu} is not a time unit (0..2)")
         return f, ts
 
+    def path_override(self, axes) -> float:
+        """The override a path group runs with: the smallest UTROVR factor of its axes."""
+        return min(self.axes[ax].ovr for ax in axes)
+
+    def jerk(self, axes) -> float:
+        """The S-profile's jerk-limited ramp fraction for a move of ``axes``: with MODEREG bit 1 the
+        largest jerkrel of the axes, within 0..1; 0 (trapezoid) without the bit (L1392, L1462)."""
+        if not self.sys["MODEREG"] & 0x2:
+            return 0.0
+        return min(1.0, max(0.0, max(float(self.axes[ax].q["jerkrel"]) for ax in axes)))
+
     def round_counts(self, x: float) -> float:
         if self.sys["MODEREG"] & 0x100:
             return x
@@ -370,7 +389,9 @@ class Card(Commands):
         """Start a path move at the task's time; False when the card refuses it."""
         t = tk.time
         f, ts = self.units(tk)
-        v = tk.sysp["TRVL"] * f / ts * tk.ovr
+        ovr = self.path_override(mv.axes)
+        plan = ovr if ovr > 0.0 else 1.0  # under a feed hold the move is planned at 100 % and held
+        v = tk.sysp["TRVL"] * f / ts * plan
         acc = tk.sysp["TRAC"] * f / (ts * ts)
         bit = 1 << self.cfg["axst_bits"]["refused"]
         if length <= 0 or v <= 0 or acc <= 0:
@@ -380,8 +401,10 @@ class Card(Commands):
         for ax in mv.axes:
             a = self.axes[ax]
             a.flags &= ~bit
-        mv.start(t, length, v, acc)
-        mv.ovr0 = tk.ovr
+        mv.start(t, length, v, acc, self.jerk(mv.axes))
+        mv.ovr0 = plan
+        if ovr <= 0.0 and not self.planning_chain:
+            mv.override(t, 0.0, 0.0)  # TROVR = 0: it waits at its start for a raised override
         self.live.add(mv)
         for k, ax in enumerate(mv.axes):
             a = self.axes[ax]
@@ -413,20 +436,40 @@ class Card(Commands):
         if end <= tk.time:
             self.settle(axes, tk.time)
             return None
-        if tk.fast_wait(end):
+        if end < math.inf and tk.fast_wait(end):
             self.settle(axes, tk.time)
             return None
         return self._wait_axes(tk, axes)
 
     def _wait_axes(self, tk, axes):
-        while True:
-            end = max((self.axes[ax].move.t1 for ax in axes if self.axes[ax].move is not None
-                       and not self.axes[ax].move.drift), default=0.0)  # a jog running on at jtv: at profile end
-            if end <= tk.time:
-                self.settle(axes, tk.time)
-                return
-            step = end if not tk.others_running() else min(end, tk.time + self.servo)
-            yield from tk.wait_until(step)
+        try:
+            while True:
+                end = max((self.axes[ax].move.t1 for ax in axes if self.axes[ax].move is not None
+                           and not self.axes[ax].move.drift), default=0.0)  # a jog running on at jtv: at profile end
+                if end <= tk.time:
+                    self.settle(axes, tk.time)
+                    return
+                if end == math.inf:  # held by TROVR = 0: only another task, an event or a timed action can go on
+                    self._check_stall(tk)
+                    step = tk.time + self.servo
+                    if not tk.others_running():
+                        step = max(step, min(self.next_timed(), tk.time + 1000.0 * self.servo))
+                else:
+                    step = end if not tk.others_running() else min(end, tk.time + self.servo)
+                yield from tk.wait_until(step)
+        finally:
+            tk.held = None
+
+    def _check_stall(self, tk) -> None:
+        """Run-time error RUN005 when every running task waits on held motion and nothing ran since
+        they last looked, with no timed action ahead: no UTROVR can come any more (the card would hang)."""
+        quiet = tk.held == self.steps
+        tk.held = self.steps
+        if not quiet or self.next_timed() < math.inf:
+            return
+        if all(t.held == self.steps for t in self.tasks if t.state == RUNNING):
+            raise RuntimeFault("RUN005", "waiting for ever: the axes are held by TROVR = 0 and no task "
+                                         "can raise the override any more")
 
     # -- system reset and the end of the run -----------------------------------------------------------------------------
     def reset_system(self, t: float) -> None:
@@ -443,10 +486,16 @@ class Card(Commands):
         end = max([t.time for t in self.tasks] + [0.0])
         for a in self.axes:
             if a.move is not None and not a.move.drift:
-                end = max(end, a.move.t1)
+                mv = a.move
+                stand = mv.t1 if mv.t1 < math.inf else mv.standstill()
+                if stand < math.inf:
+                    end = max(end, stand)
         for a in self.axes:
             if a.move is not None and a.move.drift:
                 a.move.stop(max(end, a.move.t0), math.inf)  # still running on at jtv: reported up to the end
+            elif a.move is not None and a.move.t1 == math.inf:
+                a.move.stop(end, math.inf)  # held by TROVR = 0 when the programs ended: it stands there
+        recording.run_out(self)  # the card goes on sampling after the programs end
         for mv in sorted({id(a.move): a.move for a in self.axes if a.move is not None}.values(), key=lambda m: m.t0):
             self._finish(mv)
         return end

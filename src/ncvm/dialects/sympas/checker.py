@@ -498,7 +498,8 @@ class Checker:
                 self.err("SP005", f"{c.name}: axis '{a.name}' is named twice", a)
             seen.add(a.name)
         if not lo <= len(c.args) <= hi:
-            self.err("SP005", f"{c.name} takes {lo if lo == hi else f'{lo}..{hi}'} axes, {len(c.args)} given", c)
+            noun = "axis" if lo == hi == 1 else "axes"
+            self.err("SP005", f"{c.name} takes {lo if lo == hi else f'{lo}..{hi}'} {noun}, {len(c.args)} given", c)
         c.axes = list(c.args)
 
     def form_SP(self, c, b) -> None:

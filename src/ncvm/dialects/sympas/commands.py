@@ -12,8 +12,9 @@ import math
 from operator import attrgetter
 
 from ...nc.canon import Src
+from . import recording
 from .lookahead import retime
-from .motion import TICKS_PER_S, Chain, ChainProfile, Move
+from .motion import TICKS_PER_S, Chain, Move, Profile
 from .values import fault
 
 _GET_M = attrgetter("m")
@@ -51,14 +52,14 @@ class Commands:
         timed action before its end, mm and s, axis numbers fixed at compile time): the same profile and
         canon call as the general path, without the bookkeeping of a running move. False: not taken."""
         if self.solo is not tk or tk.enabled or self.live or self.active_zo or not tk.plain_units \
-                or self.sys["MODEREG"] & 0x100:
+                or self.sys["MODEREG"] & 0x102:
             return False
         sysp = tk.sysp
-        v = sysp["TRVL"] * tk.ovr
+        axes = self.axes
+        v = sysp["TRVL"] * min(axes[ax].ovr for ax, _ in items)
         acc = sysp["TRAC"]
         if v <= 0 or acc <= 0:
             return False
-        axes = self.axes
         pos = list(map(_GET_M, axes))
         start = tuple(pos)
         c = self.counts
@@ -303,6 +304,7 @@ class Commands:
         velocity (lookahead.py) and run as one :class:`Chain` without stopping in between."""
         codes = self.cfg["ssf_codes"]
         saved_sysp, saved_t = tk.sysp, tk.time
+        self.planning_chain = True  # under a feed hold the chain is planned at 100 % and held as a whole
         t = tk.time
         for ax in axes:
             mv = self.axes[ax].move
@@ -355,11 +357,12 @@ class Commands:
                     f, ts = self.units(tk)
                     mv.retired = True  # reported by the chain when it retires, not when the next one starts
                     segs.append(mv)
-                    targets.append(max(0.0, sysp["TRTVL"] * f / ts * tk.ovr))
+                    targets.append(max(0.0, sysp["TRTVL"] * f / ts * mv.ovr0))
                     t = mv.t1
         finally:
             self.cfg["busy_move"] = busy
             tk.sysp, tk.time = saved_sysp, saved_t
+            self.planning_chain = False
         if not segs:
             return
         mode = self.sys["MODEREG"]
@@ -368,6 +371,8 @@ class Commands:
             m.retired = False
             self.live.discard(m)
         chain = Chain(segs, full0)
+        if self.path_override(chain.axes) <= 0.0:
+            chain.override(chain.t0, 0.0, 0.0)
         self.live.add(chain)
         for ax in chain.axes:
             a = self.axes[ax]
@@ -378,6 +383,10 @@ class Commands:
     def _ssf_at_end(self, chain, seg, act, tick: float) -> None:
         """An SSF between chained segments acts when the segment before it ends, even if UTROVR moved
         that end; not at all when a stop cut the chain before it."""
+        if tick == math.inf:  # held by TROVR = 0: armed again when UTROVR lets the chain go on
+            chain.parked.append(lambda: self._ssf_at_end(chain, seg, act, seg.t1))
+            return
+
         def fire():
             if seg not in chain.segs or (seg.stop_s is not None and seg.stop_s < seg.prof.length):
                 return
@@ -406,11 +415,12 @@ class Commands:
             if abs(p1 - p0) == 0 or vel <= 0 or acc <= 0:
                 a.target = p1
                 continue
-            mv.start(t, abs(p1 - p0), vel, acc)
+            jerk = self.jerk((ax,))
+            mv.start(t, abs(p1 - p0), vel, acc, jerk)
             jtv = abs(float(a.q["jtv"]))
             if jtv > 0.0:  # arrive with the jog target velocity and keep moving (digest §10.5, A-60)
-                v1 = min(jtv, math.sqrt(2.0 * acc * abs(p1 - p0)))
-                mv.prof = ChainProfile(abs(p1 - p0), max(vel, v1), acc, 0.0, v1)
+                v1 = min(jtv, math.sqrt(2.0 * acc * (1.0 - 0.5 * jerk) * abs(p1 - p0)))
+                mv.prof = Profile(abs(p1 - p0), max(vel, v1), acc, 0.0, v1, jerk)
                 mv.t1 = t + mv.prof.duration * TICKS_PER_S
                 self.add_timed(mv.t1, self._drift_action(a, mv, v1, 1.0 if p1 >= p0 else -1.0))
             a.move = mv
@@ -433,7 +443,7 @@ class Commands:
             d = Move((a.number,), (p,), (p + sign * far,), "line", mv.src, self.all_positions(t))
             d.jog = True
             d.drift = True
-            d.prof = ChainProfile(far, v, float(a.q["jac"]) or 1.0, v, v)
+            d.prof = Profile(far, v, float(a.q["jac"]) or 1.0, v, v)
             d.t0, d.t1, d.feed, d.vmax = t, t + d.prof.duration * TICKS_PER_S, v * 60.0, v
             a.move = d
             self.live.add(d)
@@ -489,7 +499,7 @@ class Commands:
                 a.flags |= failed
                 continue
             if abs(ref - p0) > 0:
-                mv.start(t, abs(ref - p0), a.q["hvl"], a.q["hac"])
+                mv.start(t, abs(ref - p0), a.q["hvl"], a.q["hac"], self.jerk((ax,)))
                 a.move = mv
                 self.live.add(mv)
             a.target = ref
@@ -628,25 +638,31 @@ class Commands:
         return None
 
     def cmd_utrovr(self, tk, axes, loc):
-        """The running path moves of these axes reach the new TROVR linearly over TROVRST seconds
-        (digest §10.5); later path segments of this task are planned with it."""
-        ovr = float(tk.sysp["TROVR"])
+        """TROVR becomes the path override of these axes ("reduzierte Bahngeschwindigkeit für Achsen A1
+        und A2", L2189): their running path moves reach it linearly over TROVRST seconds (digest §10.5),
+        and their later path moves, from any task, are planned with it. A group runs with the smallest
+        override of its axes; 0 holds it (feed hold)."""
+        ovr = max(0.0, float(tk.sysp["TROVR"]))
         ramp = max(0.0, float(tk.sysp["TROVRST"])) * 15625.0
+        for ax in axes:
+            self.check_axis(ax).ovr = ovr
         done = set()
         for ax in axes:
-            mv = self.check_axis(ax).move
+            mv = self.axes[ax].move
             if mv is not None and not mv.jog and id(mv) not in done and mv.t1 > tk.time:
                 done.add(id(mv))
+                group = self.path_override(mv.axes)
                 if isinstance(mv, Chain):
-                    mv.override(tk.time, ovr, ramp)
+                    mv.override(tk.time, group, ramp)
                 else:
-                    mv.override(tk.time, ovr / mv.ovr0, ramp)
-        tk.ovr = ovr
+                    mv.override(tk.time, group / mv.ovr0, ramp)
         return None
 
     def cmd_lpr(self, tk, axes, loc):
+        """LPR/LPRS: start the data recording of these axes (recording.py, §6.6.29-30)."""
         for ax in axes:
             self.check_axis(ax)
+        recording.start(self, tk, axes)
         return None
 
     cmd_lprs = cmd_lpr

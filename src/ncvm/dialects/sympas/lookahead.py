@@ -7,16 +7,18 @@ jumps by more than its ``mdvel`` at the joint, and a circle's path velocity to s
 With ChkMaxVel (bit 7) a linear segment's path velocity and acceleration are scaled so that no
 axis exceeds ``maxvel`` / ``maxacc`` (NFRAX axes included). Every joint velocity is then made
 reachable: a backward pass (the next segment can still brake) and a forward pass (this segment
-can reach it from its start velocity).
+can reach it from its start velocity). With LookAhead and NoTriangle (bit 6) a segment too short to
+reach its path velocity runs on at its start velocity instead of speeding up and braking again.
 """
 
 from __future__ import annotations
 
 import math
 
-from .motion import TICKS_PER_S, ChainProfile
+from .motion import TICKS_PER_S, Profile
 
 LOOKAHEAD = 0x1
+NOTRIANGLE = 0x40
 CHKMAXVEL = 0x80
 
 
@@ -63,14 +65,24 @@ def retime(axes, segs: list, targets: list, moderegs: list) -> None:
                 if jump > 1e-9:
                     v = min(v, axes[ax].q["mdvel"] / jump)
         vj[k] = max(0.0, v)
+    jerk = [m.prof.r for m in segs]
+    ramp_acc = [a * (1.0 - 0.5 * r) for a, r in zip(acc, jerk)]  # S-ramps plan with a * (1 - jerkrel / 2)
     for k in range(n - 2, -1, -1):  # the next segment must be able to brake to its end velocity
         m = segs[k + 1]
-        vj[k] = min(vj[k], math.sqrt(vj[k + 1] ** 2 + 2.0 * acc[k + 1] * m.prof.length))
+        vj[k] = min(vj[k], math.sqrt(vj[k + 1] ** 2 + 2.0 * ramp_acc[k + 1] * m.prof.length))
     v_in = 0.0
     t = segs[0].t0
     for k, m in enumerate(segs):  # this segment must be able to reach its end velocity
-        v_out = min(vj[k], math.sqrt(v_in * v_in + 2.0 * acc[k] * m.prof.length))
-        m.prof = ChainProfile(m.prof.length, vmax[k], acc[k], v_in, v_out)
+        L = m.prof.length
+        v_out = min(vj[k], math.sqrt(v_in * v_in + 2.0 * ramp_acc[k] * L))
+        v_top = vmax[k]
+        peak = math.sqrt(ramp_acc[k] * L + 0.5 * (v_in * v_in + v_out * v_out))
+        if moderegs[k] & LOOKAHEAD and moderegs[k] & NOTRIANGLE and 0.0 < v_in and v_out + 1e-9 < peak < v_top:
+            # NoTriangle (L1397): a segment that would speed up and brake again without reaching its path
+            # velocity (a triangle) keeps its start velocity instead
+            v_top = v_in
+            v_out = min(v_out, v_in)
+        m.prof = Profile(L, v_top, acc[k], v_in, v_out, jerk[k])
         m.t0 = t
         m.t1 = t = t + m.prof.duration * TICKS_PER_S
         m.feed = m.prof.v * 60.0

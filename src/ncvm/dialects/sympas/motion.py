@@ -1,8 +1,9 @@
-"""Motion profiles of the simulated card: one path parameter s(t) per move, trapezoidal in time.
+"""Motion profiles of the simulated card: one path parameter s(t) per move, trapezoidal in time
+(S-shaped ramps with MODEREG bit 1).
 
 A :class:`Move` is a straight line, a circle/helix in a plane, or a 3-D circle
 over a group of axes, in machine coordinates and axis units (mm, deg), with a
-rest-to-rest trapezoidal velocity profile (digest §10.5). Positions at any
+rest-to-rest velocity profile (digest §10.5). Positions at any
 simulated time are computed from the profile, so waits, CLOCK and events see
 the axes where they really are. A move is reported to the canon interface when
 it retires (ends, is stopped, or the run ends), with the geometry it really ran.
@@ -18,95 +19,84 @@ TICKS_PER_S = 15625.0
 TWO_PI = 2.0 * math.pi
 
 
+def ramp(tau: float, va: float, vb: float, T: float, r: float) -> tuple[float, float]:
+    """Distance and velocity ``tau`` s into a velocity ramp va -> vb lasting T s.
+
+    With S-profiles (MODEREG bit 1) the fraction ``r`` (jerkrel) of the ramp is jerk-limited: the
+    acceleration rises linearly over r*T/2, holds, and falls over r*T/2 (r = 0: the plain linear
+    ramp). The acceleration curve is symmetric, so the ramp covers (va + vb) / 2 * T either way;
+    the second half is computed back from the end, which keeps both ends exact."""
+    if T <= 0.0:
+        return 0.0, vb
+    A = (vb - va) / (T * (1.0 - 0.5 * r))  # the peak acceleration (signed)
+    tj = 0.5 * r * T
+    if tau > 0.5 * T:
+        rho = T - tau
+        if rho < tj:
+            back, v = vb * rho - A * rho ** 3 / (6.0 * tj), vb - A * rho * rho / (2.0 * tj)
+        else:
+            vj, d = vb - 0.5 * A * tj, rho - tj
+            back, v = vb * tj - A * tj * tj / 6.0 + vj * d - 0.5 * A * d * d, vj - A * d
+        return 0.5 * (va + vb) * T - back, v
+    if tau < tj:
+        return va * tau + A * tau ** 3 / (6.0 * tj), va + A * tau * tau / (2.0 * tj)
+    vj, d = va + 0.5 * A * tj, tau - tj
+    return va * tj + A * tj * tj / 6.0 + vj * d + 0.5 * A * d * d, vj + A * d
+
+
 class Profile:
-    """Path parameter s(t) (t in seconds from the start): accelerate, cruise, decelerate."""
+    """Path parameter s(t) (t in seconds from the start): from start velocity ``v0`` up to at most ``v``,
+    cruise, down to end velocity ``v1`` with acceleration ``a``; rest to rest unless chained.
 
-    __slots__ = ("length", "v", "a", "t_acc", "t_cruise", "duration", "s_acc")
+    A spooled segment's ``v0 -> v1`` has been made reachable within ``length`` by the look-ahead
+    (digest §10.5). ``jerk`` is the S-profile's jerk-limited fraction of each ramp (0: trapezoid);
+    it stretches each ramp so that the peak acceleration stays ``a``: the ramps plan with
+    a * (1 - jerk / 2)."""
 
-    def __init__(self, length: float, v: float, a: float):
-        self.length, self.v, self.a = length, v, a
+    __slots__ = ("length", "v", "a", "r", "v0", "v1", "t_acc", "t_cruise", "t_dec", "s_acc", "s_dec",
+                 "duration")
+
+    def __init__(self, length: float, v: float, a: float, v0: float = 0.0, v1: float = 0.0, jerk: float = 0.0):
+        self.length, self.a, self.r, self.v0, self.v1 = length, a, jerk, v0, v1
         if length <= 0.0:
-            self.t_acc = self.t_cruise = self.duration = self.s_acc = 0.0
+            self.v = v
+            self.t_acc = self.t_cruise = self.t_dec = self.duration = self.s_acc = self.s_dec = 0.0
             return
         if a <= 0 or a == math.inf:
-            self.t_acc, self.s_acc = 0.0, 0.0
-            self.t_cruise = length / v
-        elif length * a >= v * v:
-            self.t_acc = v / a
-            self.s_acc = 0.5 * v * self.t_acc
-            self.t_cruise = (length - 2.0 * self.s_acc) / v
-        else:
-            self.t_acc = math.sqrt(length / a)
-            self.v = a * self.t_acc
-            self.s_acc = length / 2.0
-            self.t_cruise = 0.0
-        self.duration = 2.0 * self.t_acc + self.t_cruise
-
-    def s(self, t: float) -> float:
-        if t >= self.duration:
-            return self.length
-        if t <= 0.0:
-            return 0.0
-        ta = self.t_acc
-        if t < ta:
-            return 0.5 * self.a * t * t
-        if t < ta + self.t_cruise:
-            return self.s_acc + self.v * (t - ta)
-        r = self.duration - t
-        return self.length - 0.5 * self.a * r * r
-
-    def speed(self, t: float) -> float:
-        if t <= 0.0 or t >= self.duration:
-            return 0.0
-        ta = self.t_acc
-        if t < ta:
-            return self.a * t
-        if t < ta + self.t_cruise:
-            return self.v
-        return self.a * (self.duration - t)
-
-
-class ChainProfile(Profile):
-    """A spooled segment's s(t): from start velocity ``v0`` up to at most ``v``, down to end velocity ``v1``.
-
-    The look-ahead has already made ``v0 -> v1`` reachable within ``length`` with ``a`` (digest §10.5)."""
-
-    __slots__ = ("v0", "v1", "t_dec", "s_dec")
-
-    def __init__(self, length: float, v: float, a: float, v0: float, v1: float):
-        self.length, self.a, self.v0, self.v1 = length, a, v0, v1
-        vp = min(v, math.sqrt(a * length + 0.5 * (v0 * v0 + v1 * v1)))
-        vp = max(vp, v0, v1)
+            self.v = v
+            self.t_acc = self.t_dec = self.s_acc = self.s_dec = 0.0
+            self.t_cruise = self.duration = length / v
+            return
+        ae = a * (1.0 - 0.5 * jerk)
+        vp = max(min(v, math.sqrt(ae * length + 0.5 * (v0 * v0 + v1 * v1))), v0, v1)
         self.v = vp
-        self.t_acc = (vp - v0) / a
-        self.s_acc = (vp * vp - v0 * v0) / (2.0 * a)
-        self.t_dec = (vp - v1) / a
-        self.s_dec = (vp * vp - v1 * v1) / (2.0 * a)
+        self.t_acc = (vp - v0) / ae
+        self.s_acc = (vp * vp - v0 * v0) / (2.0 * ae)
+        self.t_dec = (vp - v1) / ae
+        self.s_dec = (vp * vp - v1 * v1) / (2.0 * ae)
         self.t_cruise = max(0.0, length - self.s_acc - self.s_dec) / vp if vp > 0 else 0.0
         self.duration = self.t_acc + self.t_cruise + self.t_dec
 
+    def _at(self, t: float) -> tuple[float, float]:
+        if t < self.t_acc:
+            return ramp(t, self.v0, self.v, self.t_acc, self.r)
+        t2 = t - self.t_acc
+        if t2 < self.t_cruise:
+            return self.s_acc + self.v * t2, self.v
+        s, v = ramp(t2 - self.t_cruise, self.v, self.v1, self.t_dec, self.r)
+        return min(self.length, self.s_acc + self.v * self.t_cruise + s), max(0.0, v)
+
     def s(self, t: float) -> float:
         if t >= self.duration:
             return self.length
         if t <= 0.0:
             return 0.0
-        if t < self.t_acc:
-            return self.v0 * t + 0.5 * self.a * t * t
-        t2 = t - self.t_acc
-        if t2 < self.t_cruise:
-            return self.s_acc + self.v * t2
-        r = t2 - self.t_cruise
-        return min(self.length, self.s_acc + self.v * self.t_cruise + self.v * r - 0.5 * self.a * r * r)
+        return self._at(t)[0]
 
     def speed(self, t: float) -> float:
         if t < 0.0 or t > self.duration:
             return 0.0
-        if t < self.t_acc:
-            return self.v0 + self.a * t
-        t2 = t - self.t_acc
-        if t2 < self.t_cruise:
-            return self.v
-        return max(0.0, self.v - self.a * (t2 - self.t_cruise))
+        return self._at(t)[1]
 
 
 class Move:
@@ -130,9 +120,9 @@ class Move:
         self.ovr0 = 1.0  # the override the profile was planned with
         self.warp = None  # (t_w, tau_w, r_a, r_b, T): rate of profile time ramps r_a -> r_b over T ticks (TROVRST)
 
-    def start(self, t0_ticks: float, length: float, v: float, a: float) -> None:
+    def start(self, t0_ticks: float, length: float, v: float, a: float, jerk: float = 0.0) -> None:
         self.vmax = v
-        self.prof = Profile(length, v, a)
+        self.prof = Profile(length, v, a, jerk=jerk)
         self.t0 = t0_ticks
         self.t1 = t0_ticks + self.prof.duration * TICKS_PER_S
         self.feed = self.prof.v * 60.0
@@ -185,7 +175,7 @@ class Move:
         """From ``t_ticks`` the profile time rate ramps linearly to ``r_b`` over ``ramp_ticks`` (TROVRST)."""
         if t_ticks >= self.t1 or self.stop_s is not None:
             return
-        r_b = max(r_b, 1e-6)
+        r_b = max(r_b, 0.0)  # 0: feed hold, the path stands once the ramp is down (t1 = inf)
         tau_now = max(0.0, self.tau(t_ticks))
         r_a = self.rate(t_ticks) if t_ticks > self.t0 else self.rate(self.t0)
         if t_ticks < self.t0:  # not begun yet (a later chain segment): the ramp goes on from its start
@@ -196,23 +186,39 @@ class Move:
 
     @staticmethod
     def _wall(rest: float, ra: float, rb: float, T: float) -> float:
-        """Wall ticks to cover ``rest`` profile ticks while the rate ramps ra -> rb over T."""
+        """Wall ticks to cover ``rest`` profile ticks while the rate ramps ra -> rb over T
+        (infinite when a feed hold, rb = 0, stops the path before)."""
         ramp = ra * T + 0.5 * (rb - ra) * T
         if T > 0.0 and rest <= ramp:
             k = (rb - ra) / (2.0 * T)
             if abs(k) < 1e-15:
-                return rest / ra
+                return rest / ra if ra > 0.0 else (0.0 if rest <= 0.0 else math.inf)
             return (-ra + math.sqrt(max(0.0, ra * ra + 4.0 * k * rest))) / (2.0 * k)
+        if rb <= 0.0:
+            return math.inf if rest > ramp else T
         return T + (rest - ramp) / rb
+
+    def standstill(self) -> float:
+        """The tick from which a feed hold (TROVR = 0) keeps this move standing; inf when not held."""
+        w = self.warp
+        if self.t1 < math.inf or w is None or w[3] > 0.0:
+            return math.inf
+        return w[0] + w[4]
+
+    def _braking(self) -> float:
+        """Seconds a stop (JS, MS) takes from stop_v0 with stop_dec, S-shaped like the profile's ramps."""
+        return self.stop_v0 / (self.stop_dec * (1.0 - 0.5 * self.prof.r))
 
     def s_at(self, t_ticks: float) -> float:
         if self.stop_s is not None and t_ticks >= self.stop_t:
             d = self.stop_dec
-            v0, s0 = self.stop_v0, self.stop_s0
             tt = (t_ticks - self.stop_t) / TICKS_PER_S
-            if d <= 0 or tt * d >= v0:
+            if d <= 0 or d == math.inf:
                 return self.stop_s
-            return s0 + v0 * tt - 0.5 * d * tt * tt
+            T = self._braking()
+            if tt >= T:
+                return self.stop_s
+            return self.stop_s0 + ramp(tt, self.stop_v0, 0.0, T, self.prof.r)[0]
         if self.warp is None:
             return self.prof.s((t_ticks - self.t0) / TICKS_PER_S)
         return self.prof.s(self.tau(t_ticks) / TICKS_PER_S)
@@ -226,7 +232,9 @@ class Move:
         if t_ticks >= self.t1:
             return 0.0
         if self.stop_s is not None and t_ticks >= self.stop_t:
-            return max(0.0, self.stop_v0 - self.stop_dec * (t_ticks - self.stop_t) / TICKS_PER_S)
+            tt = (t_ticks - self.stop_t) / TICKS_PER_S
+            T = self._braking()
+            return 0.0 if tt >= T else max(0.0, ramp(tt, self.stop_v0, 0.0, T, self.prof.r)[1])
         if self.warp is None:
             return self.prof.speed((t_ticks - self.t0) / TICKS_PER_S)
         return self.prof.speed(self.tau(t_ticks) / TICKS_PER_S) * self.rate(t_ticks)
@@ -249,8 +257,9 @@ class Move:
             return
         self.stop_t = t_ticks
         self.stop_dec = dec
-        self.stop_s = min(self.prof.length, s0 + v0 * v0 / (2.0 * dec))
-        self.t1 = t_ticks + v0 / dec * TICKS_PER_S
+        T = self._braking()
+        self.stop_s = min(self.prof.length, s0 + 0.5 * v0 * T)
+        self.t1 = t_ticks + T * TICKS_PER_S
 
     def final(self) -> tuple:
         return self.point(self.stop_s if self.stop_s is not None else self.prof.length)
@@ -310,7 +319,7 @@ class Chain:
     It stands for all its segments on every axis they use, so positions, velocities and stops
     (JS, MS) see the segment that runs at the asked time."""
 
-    __slots__ = ("segs", "axes", "t0", "t1", "p1", "retired", "jog", "drift", "_full0")
+    __slots__ = ("segs", "axes", "t0", "t1", "p1", "retired", "jog", "drift", "_full0", "parked")
 
     def __init__(self, segs: list, full0: tuple):
         self.segs = segs
@@ -321,6 +330,7 @@ class Chain:
         self.retired = False
         self.jog = self.drift = False
         self.p1 = self.final()
+        self.parked: list = []  # timed actions waiting for a held segment's end (re-armed by UTROVR)
 
     def _seg(self, t: float):
         for m in self.segs:
@@ -364,13 +374,22 @@ class Chain:
         m.override(t, ovr / m.ovr0, ramp_ticks)
         end_ramp = t + ramp_ticks
         for prev, nxt in zip(self.segs[k:], self.segs[k + 1:]):
-            shift = prev.t1 - nxt.t0
-            nxt.t0 += shift
-            nxt.t1 += shift
+            nxt.t0 = nxt.t1 = prev.t1  # starts where the one before ends: never while that one is held
+            if prev.t1 == math.inf:
+                nxt.warp = None
+                continue
             ra = prev.rate(prev.t1)
             nxt.warp = (nxt.t0, 0.0, ra, ra, 0.0)
+            nxt.t1 = math.inf
             nxt.override(nxt.t0, ovr / nxt.ovr0, max(0.0, end_ramp - nxt.t0))
         self.t1 = self.segs[-1].t1
+        parked, self.parked = self.parked, []
+        for rearm in parked:
+            rearm()
+
+    def standstill(self) -> float:
+        held = next((m for m in self.segs if m.t1 == math.inf), None)
+        return held.standstill() if held is not None else math.inf
 
     def emit(self, canon, names_count: int) -> None:
         if self.retired:

@@ -42,6 +42,7 @@ class Task:
         self.check_at = 0.0
         self.depth = 0
         self.main_locals = None
+        self.held = None  # card.steps when this task last found its W-wait held by TROVR = 0
         self.max_depth = int(card.cfg["max_call_depth"])
         self.reset_state()
 
@@ -62,7 +63,6 @@ class Task:
         self.error_line = 0
         self.step_once = False
         self.depth = 0
-        self.ovr = 1.0
         self.plain_units = not (self.sysp["PU"] or self.sysp["TU"])
 
     # -- time ------------------------------------------------------------------------------
