@@ -147,21 +147,20 @@ class PlainRun:
 
     file: str
     lines: np.ndarray  # int, physical line of each block
-    numbers: tuple  # N number of each block as written ("" without one); () when made of blocks
     g: np.ndarray  # int, motion G code 0..3 or -1
     words: dict  # address -> float column
+    source: list | None = None  # the program's lines, when the run was read from text
     origin: list | None = None  # the Block objects the run was made of, when it was made of blocks
 
     def __len__(self) -> int:
         return len(self.lines)
 
     def block(self, i: int) -> Block:
+        """Block ``i`` as the line parser reads it (or as it was built)."""
         if self.origin is not None:
             return self.origin[i]
-        g = int(self.g[i])
-        words = {a: float(col[i]) for a, col in self.words.items() if not math.isnan(col[i])}
-        n = int(self.numbers[i]) if self.numbers[i] else None
-        return Block((g,) if g >= 0 else (), (), words, n, None, Src(self.file, int(self.lines[i])))
+        line = int(self.lines[i])
+        return parse_din_line(self.source[line - 1], Src(self.file, line))
 
     def blocks(self):
         return (self.block(i) for i in range(len(self)))
@@ -170,9 +169,9 @@ class PlainRun:
 #: the addresses of a plain block besides N and its motion G code, in the order CAM output writes them
 PLAIN_WORDS = "XYZIJKF"
 _NUM = r"([-+]?(?:\d+\.?\d*|\.\d+))"
-#: a plain line with at least one G code or word (groups: N, G, then PLAIN_WORDS), or any other line with its
+#: a plain line with at least one G code or word (groups: G, then PLAIN_WORDS), or any other line with its
 #: line break (last group: never empty, so blank lines and lines of nothing but N go the general way too)
-_PLAIN_LINE = re.compile(r"^[ \t]*(?:N(\d+)[ \t]*)?(?=[GXYZIJKF])(?:G0?([0-3])(?![\d.])[ \t]*)?"
+_PLAIN_LINE = re.compile(r"^[ \t]*(?:N\d+[ \t]*)?(?=[GXYZIJKF])(?:G0?([0-3])(?![\d.])[ \t]*)?"
                          + "".join(rf"(?:{a}{_NUM}[ \t]*)?" for a in PLAIN_WORDS) + r"$|^(.*\n?)", re.M)
 #: motion G code as the reader finds it -> its number (-1: the block has none)
 _MOTION = {"": -1, "0": 0, "1": 1, "2": 2, "3": 3}
@@ -204,11 +203,11 @@ def read_din_segments(path: str, text: str) -> tuple[list, list[Diagnostic]]:
     start = 0
     for lineno in general:
         if lineno - 1 > start:
-            _add_run(segments, path, columns, start, lineno - 1)
+            _add_run(segments, path, lines, columns, start, lineno - 1)
         start = lineno
         _read_general(segments, diags, path, lineno, lines[lineno - 1])
     if len(lines) > start:
-        _add_run(segments, path, columns, start, len(lines))
+        _add_run(segments, path, lines, columns, start, len(lines))
     return segments, diags
 
 
@@ -225,9 +224,9 @@ def _read_general(segments, diags, path: str, lineno: int, line: str) -> None:
         segments.append((blk, skip))
 
 
-def _add_run(segments, path: str, columns, lo: int, hi: int) -> None:
+def _add_run(segments, path: str, lines: list, columns, lo: int, hi: int) -> None:
     """Lines lo+1..hi, all plain, as a PlainRun."""
     words = {a: np.array([float(v) if v else _NAN for v in col[lo:hi]]) if any(col[lo:hi]) else np.full(hi - lo, _NAN)
-             for a, col in zip(PLAIN_WORDS, columns[2:])}
-    g = np.array(list(map(_MOTION.__getitem__, columns[1][lo:hi])), dtype=np.int64)
-    segments.append(PlainRun(path, np.arange(lo + 1, hi + 1), columns[0][lo:hi], g, words))
+             for a, col in zip(PLAIN_WORDS, columns[1:])}
+    g = np.array(list(map(_MOTION.__getitem__, columns[0][lo:hi])), dtype=np.int64)
+    segments.append(PlainRun(path, np.arange(lo + 1, hi + 1), g, words, source=lines))

@@ -308,7 +308,7 @@ def _columns(blocks, words, lo: int, hi: int) -> PlainRun:
     columns = {a: np.fromiter(map(dict.get, words, repeat(a), repeat(math.nan)), float, n) if a in used
                else np.full(n, math.nan) for a in PLAIN_WORDS}
     g = np.array([t[0] if t else -1 for t in map(_G, blocks)], dtype=np.int64)
-    return PlainRun(blocks[0].src.file, np.fromiter(map(_LINE, blocks), np.int64, n), (), g, columns, blocks)
+    return PlainRun(blocks[0].src.file, np.fromiter(map(_LINE, blocks), np.int64, n), g, columns, origin=blocks)
 
 
 def execute_segments(kernel, segments, execute=None) -> None:
