@@ -1106,7 +1106,7 @@ class Gen:
         src.emit("    raise")
         src.emit("finally:")
         src.emit("    _st.steps += _n")
-        src.emit(f"return {{{items}}}")
+        src.emit(f"return {{{items}}} if _main else None  # the variables are reported for the main program")
         src._indent = 1
         src.emit("return unit")
         cpl_lines = {s.line: s.cpl for s in self.stmts if s.cpl is not None}

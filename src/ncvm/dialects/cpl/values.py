@@ -62,7 +62,10 @@ def int_overflow(v):
 
 def to_real(v):
     if v.__class__ is float or v.__class__ is int:
-        return f32(v)
+        try:
+            return _unpack(_pack(v))[0]  # f32 without the call: every REAL parameter view comes here
+        except OverflowError:
+            return f32(v)
     if v is None:
         return None
     raise CplError("CPL021", f"{type_name(v)} value assigned to a REAL variable")
