@@ -171,7 +171,7 @@ class Lexer:
                 m = _NUMBER.match(text, i)
                 j = m.end()
                 if j < size and (text[j].isalpha() or text[j] == "_"):
-                    k = _NAME.match(text, j)
+                    k = _NAME_REST.match(text, j)  # a digit, then letters or '_': no name starts so
                     out.append(Token("BADNAME", text[i:k.end()], line, col))
                     i = k.end()
                     continue

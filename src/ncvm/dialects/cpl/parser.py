@@ -631,6 +631,9 @@ def parse_program(path: str, text: str, calls: dict | None = None) -> A.Program:
             except ParseError as e:
                 prog.diagnostics.append(diag(e.code, e.detail, path, e.line, e.col))
                 continue
+            except LexError as e:  # inside an [expr] word
+                prog.diagnostics.append(diag("CPL001", e.message, path, e.line, e.column))
+                continue
             if blk.n is not None:
                 prog.nblocks.setdefault(blk.n, []).append(len(prog.stmts))
             if blk.words or blk.loose or blk.msg is not None or blk.wait or blk.call or blk.n is not None:

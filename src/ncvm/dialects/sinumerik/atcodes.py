@@ -36,6 +36,9 @@ class AtSpec:
             if op.kind not in _ALLOWED[k]:
                 raise ReadError(col, f"@{code} ({self.statement}): operand {i + 1} must be {_NAMES[k]}, "
                                      f"not {op.kind}", "SIN003")
+        if code in ("041", "043") and ops[0].value > ops[1].value:
+            raise ReadError(col, f"@{code} ({self.statement}): R{int(ops[0].value)} to R{int(ops[1].value)} is no "
+                                 "range (the first R parameter must come first)", "SIN003")
 
 
 _ALLOWED = {"K": "K", "R": "R", "V": "RP", "W": "KRP", "J": "KR"}

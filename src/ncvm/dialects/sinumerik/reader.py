@@ -225,7 +225,7 @@ def _read_at(s: str, i: int, items: list) -> int:
                 raise ReadError(j + 1, f"@{code}: R number expected after {kind}", "SIN003")
             if k < n and s[k] == "=":  # an R arithmetic word follows, not an operand
                 break
-            v = float(int(s[j + 1:k]))
+            v = float(_r_number(s, j, k))
         ops.append(Operand(kind, v))
         i = k
         if want is None and code in ("040", "042") and len(ops) == 1:
@@ -233,6 +233,14 @@ def _read_at(s: str, i: int, items: list) -> int:
     spec.check(code, ops, col)
     items.append(AtInstr(code, ops, col))
     return i
+
+
+def _r_number(s: str, j: int, k: int) -> int:
+    """The number of the R parameter written as R (or P) at ``j`` with digits up to ``k``: R0 to R999."""
+    number = int(s[j + 1:k])
+    if number > 999:
+        raise ReadError(j + 1, f"R{number}: the R parameters are R0 to R999")
+    return number
 
 
 def _is_arith(s: str, j: int) -> bool:
@@ -248,7 +256,7 @@ def _read_arith(s: str, i: int, items: list) -> int:
     k = i + 1
     while k < n and s[k] in _DIGITS:
         k += 1
-    target = int(s[i + 1:k])
+    target = _r_number(s, i, k)
     while k < n and s[k] in " \t":
         k += 1
     if k >= n or s[k] != "=":
@@ -266,7 +274,7 @@ def _read_arith(s: str, i: int, items: list) -> int:
             m = k + 1
             while m < n and s[m] in _DIGITS:
                 m += 1
-            terms.append((op, Operand("R", float(int(s[k + 1:m])))))
+            terms.append((op, Operand("R", float(_r_number(s, k, m)))))
             k = m
         elif k < n and s[k] in _NUMCH:
             v, k = _number(s, k)
@@ -310,7 +318,7 @@ def _read_word(s: str, i: int, items: list) -> int:
             m = k + 1
             while m < n and s[m] in _DIGITS:
                 m += 1
-            items.append(Word(address, None, (sign, int(s[k + 1:m])), col))
+            items.append(Word(address, None, (sign, _r_number(s, k, m)), col))
             return m
         v, k = _number(s, k)
         items.append(Word(address, sign * v, None, col))

@@ -306,7 +306,10 @@ class Channel(SysMem, SpindleReads):
             raise RuntimeFault("SIN006", "pop (@042/@043) with an empty push stack")
         saved, values = self.push_stack.pop()
         if saved != regs:
-            raise RuntimeFault("SIN006", f"pop of R{regs[0]}.. does not match the last push of R{saved[0]}..")
+            def names(r):
+                return " ".join(f"R{n}" for n in r) or "no R parameters"
+
+            raise RuntimeFault("SIN006", f"pop of {names(regs)} does not match the last push of {names(saved)}")
         for n, v in zip(regs, values):
             self.R[n] = v
 

@@ -10,6 +10,8 @@ may switch tasks and event handlers are polled.
 
 from __future__ import annotations
 
+import math
+
 from ...runtime.codegen import PySource
 from . import ast as A
 from .symbols import AxisSpec, Builtin, Const, Routine, SysParam, Var
@@ -327,11 +329,11 @@ class CodeGen:
     # -- expressions ------------------------------------------------------------------------------
     def expr(self, e) -> str:
         if isinstance(e, A.Num):
-            return repr(e.value)
+            return _literal(e.value)
         if isinstance(e, A.Name):
             sym = e.sym
             if isinstance(sym, Const):
-                return repr(sym.value)
+                return _literal(sym.value)
             if isinstance(sym, Var):
                 return sym.py
             if isinstance(sym, SysParam):
@@ -493,3 +495,10 @@ def needs_time(e) -> bool:
     if isinstance(e, A.Bin):
         return needs_time(e.left) or needs_time(e.right)
     return False
+
+
+def _literal(value) -> str:
+    """Python text of a constant; a folded constant may have overflowed to inf (or nan)."""
+    if isinstance(value, float) and not math.isfinite(value):
+        return f"float({str(value)!r})"
+    return repr(value)

@@ -8,6 +8,7 @@ expanded here, nested up to 15 levels (§6.7.1); ``{$TASK n}`` and
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -164,7 +165,10 @@ class Lexer:
                     j += 1
         lit = text[i:j]
         if is_real:
-            out.append(Token("real", float(lit), path, line, col, lit))
+            value = float(lit)
+            if value == math.inf:
+                raise SympasError("SP010", f"real constant {lit} is beyond the double range", path, line, col)
+            out.append(Token("real", value, path, line, col, lit))
         else:
             out.append(Token("int", int(lit), path, line, col, lit))  # clamped by the parser (sign folding)
         return j

@@ -84,6 +84,8 @@ def text_mask(text: str, style: tuple[int, int, int, int], scale: int = 1) -> tu
     """
     from PIL import Image, ImageDraw
 
+    # control characters (CHR$(0..31), 127) have no glyph: they take a blank place, as on the panel
+    text = "".join(c if c.isprintable() else " " for c in text)
     number, size, cut, orientation = style
     if number == 0 and size == 0:
         cw, ch = CELL_W * scale, CELL_H * scale
