@@ -138,6 +138,9 @@ def run(program, dialect, machine, state_dir, as_json, trace, gcode, plot, max_s
         result, session = api_run(program, dialect, machine, options)
     if (screen or screen_dir) and session.screen is None:
         click.echo(f"ncvm: warning: dialect '{result['dialect']}' has no operator screen; nothing saved", err=True)
+    if editor_block is not None and result["dialect"] != "cpl":
+        click.echo(f"ncvm: warning: dialect '{result['dialect']}' has no editor dialog; --editor-block ignored",
+                   err=True)
     if plot:
         from .sinks.plot import plot_toolpath
 

@@ -69,3 +69,13 @@ def test_without_editor_block_prn0_goes_to_the_message_window(tmp_path):
     r = ncvm_run(tmp_path, '10 INP#(0,A)\n20 PRN#(0,"A IS NUL ",A=NUL)\nM30\n', "--json")
     doc = json.loads(r.stdout)
     assert doc["output"] == ["A IS NUL TRUE"] and "editor_block" not in doc
+
+
+def test_editor_block_needs_the_cpl_dialect(tmp_path):
+    prog = tmp_path / "part.din"
+    prog.write_text("G0 X10\nM30\n")
+    r = CliRunner().invoke(cli, ["run", str(prog), "--state", str(tmp_path / "st"), "--editor-block", "N10 X1"],
+                           catch_exceptions=False)
+    assert r.exit_code == 0
+    assert "dialect 'din' has no editor dialog; --editor-block ignored" in r.stderr
+    assert "ncvm: editor block" not in r.stderr

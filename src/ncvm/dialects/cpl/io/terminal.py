@@ -87,6 +87,7 @@ class TerminalKeys(KeyScript):
         """SFK/INP: keys typed earlier first, else show the screen and read lines until one is understood."""
         while True:
             if any(e.kind != "idle" for e in self.events):
+                self._asked = False  # a refusal before applies to this entry only
                 return super().wait(what)
             self.events.clear()  # idle time passes while the operator is asked
             self._ask(what)
