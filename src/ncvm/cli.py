@@ -109,12 +109,16 @@ class _Progress:
 @click.option("--scenario", type=click.Path(dir_okay=False, exists=True),
               help="What happens over simulated time: [[scenario]] tables as in a machine file.")
 @click.option("--keys", type=click.Path(dir_okay=False, exists=True),
-              help="Operator key presses and typed values for dialog programs (a key script).")
+              help="Operator key presses and typed values for dialog programs (a key script). Without it, "
+                   "and without --json, a terminal on stdin asks the operator at each SFK/INP.")
+@click.option("--editor-block", metavar="TEXT",
+              help="The NC block selected in the editor, for a CPL editor dialog (INP#(0) reads its call "
+                   "parameters, PRN#(0) overwrites it).")
 @click.option("--screen", type=click.Path(dir_okay=False), help="Save the operator screen at the end (.png).")
 @click.option("--screen-dir", type=click.Path(file_okay=False),
               help="Save one screen picture per wait for the operator (softkeys, input).")
-def run(program, dialect, machine, state_dir, as_json, trace, gcode, plot, max_steps, scenario, keys, screen,
-        screen_dir):
+def run(program, dialect, machine, state_dir, as_json, trace, gcode, plot, max_steps, scenario, keys, editor_block,
+        screen, screen_dir):
     """Run PROGRAM on the simulated controller."""
     from .api import run as api_run
     from .runtime.session import RunOptions
@@ -122,15 +126,21 @@ def run(program, dialect, machine, state_dir, as_json, trace, gcode, plot, max_s
     if not Path(program).is_file():
         raise UsageError(f"no such program: {program}")
     as_path = lambda value: Path(value) if value else None  # noqa: E731
+    keyboard = keys is None and not as_json and _stdin_is_terminal()
     options = RunOptions(state_dir=Path(state_dir), max_steps=max_steps, trace=as_path(trace),
                          gcode=as_path(gcode), echo=not as_json, scenario=as_path(scenario), keys=as_path(keys),
-                         screen=as_path(screen), screen_dir=as_path(screen_dir))
-    progress = _Progress(enabled=sys.stderr.isatty() and not as_json)
+                         keyboard=keyboard, editor_block=editor_block, screen=as_path(screen),
+                         screen_dir=as_path(screen_dir))
+    # the progress line would draw over the operator's prompts
+    progress = _Progress(enabled=sys.stderr.isatty() and not as_json and not keyboard)
     options.on_session = lambda s: setattr(progress, "session", s)
     with progress:
         result, session = api_run(program, dialect, machine, options)
     if (screen or screen_dir) and session.screen is None:
         click.echo(f"ncvm: warning: dialect '{result['dialect']}' has no operator screen; nothing saved", err=True)
+    if editor_block is not None and result["dialect"] != "cpl":
+        click.echo(f"ncvm: warning: dialect '{result['dialect']}' has no editor dialog; --editor-block ignored",
+                   err=True)
     if plot:
         from .sinks.plot import plot_toolpath
 
@@ -146,8 +156,17 @@ def run(program, dialect, machine, state_dir, as_json, trace, gcode, plot, max_s
             click.echo(Diagnostic(e["code"], e["message"], span, notes=e.get("stack", [])).render(), err=True)
         for v in result["limit_violations"]:
             click.echo(f"warning: {v}", err=True)
+        if "editor_block" in result:
+            click.echo(f"ncvm: editor block: {result['editor_block']}", err=True)
         click.echo(_summary(result), err=True)
     sys.exit(EXIT_FAULT if result["error"] else EXIT_OK)
+
+
+def _stdin_is_terminal() -> bool:
+    try:
+        return sys.stdin is not None and sys.stdin.isatty()
+    except (ValueError, OSError):  # closed or detached stdin
+        return False
 
 
 def _summary(result: dict) -> str:

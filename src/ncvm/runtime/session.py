@@ -33,6 +33,8 @@ class RunOptions:
     hook: StepHook | None = None
     extra_sinks: list[CanonSink] = field(default_factory=list)
     keys: Path | None = None  # operator key presses and typed values (a key script) for dialog programs
+    keyboard: bool = False  # without a key script: the operator types keys on stdin (a terminal)
+    editor_block: str | None = None  # the NC block selected in the editor, for a CPL editor dialog
     scenario: Path | None = None  # scenario file: inputs, probe triggers, ... over simulated time
     screen: Path | None = None  # save the operator screen as it stands at the end (PNG)
     screen_dir: Path | None = None  # save one screen picture per wait for the operator (softkey, input)

@@ -203,3 +203,24 @@ def test_inkey_animation_examples_run_until_key_b():
         s.CIR(250, 160, m)
         m += 1
     assert m == 150 and tuple(s.canvas[374 - 160, 250 + 149]) == s.rgb(1)
+
+
+def test_text_view_shows_lines_softkeys_and_the_field_being_edited():
+    seen = []
+
+    class Watch(KeyScript):
+        def wait(self, what):
+            seen.append((what, s.text_view()))
+            return super().wait(what)
+
+    s = Screen(Watch("TYPE 2\nSK2\n"))
+    s.DSP(2, 4, "TITLE")
+    s.DLG()
+    s.PRN(5, 1, "N=##", 1, name="N%")
+    s.INP("N%", 1, kind="I")
+    s.SFK(0, "ONE", "TWO&KEYS")
+    assert seen == [
+        ("INP(N%)", [" 2|   TITLE", " 5|N= 1", "input N% (line 5, column 1): N=##"]),
+        ("SFK", [" 2|   TITLE", " 5|N= 2", "softkeys: [SK1 ONE] [SK2 TWO KEYS]"]),
+    ]
+    assert s.editing is None and s.text_view()[-1] == "softkeys: [SK1 ONE] [SK2 TWO KEYS]"

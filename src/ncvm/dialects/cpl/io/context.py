@@ -9,6 +9,7 @@ Operator output (DSP/PRN texts, PRN#(0) message lines, SFK bars, GPR texts and w
 
 from __future__ import annotations
 
+import sys
 from pathlib import Path
 
 from .errors import CplWarning
@@ -16,6 +17,7 @@ from .files import CplFiles
 from .format import OutputMode
 from .mmc import Mmc
 from .screen import KeyScript, Screen
+from .terminal import TerminalKeys
 
 
 class CplIO:
@@ -32,10 +34,23 @@ class CplIO:
 
     @classmethod
     def for_session(cls, session, typ2: bool = False) -> "CplIO":
-        """The I/O of a run: the machine's file root and clock, the key script of ``--keys``, output to say."""
-        keys_path = getattr(session.options, "keys", None)
-        keys = KeyScript.from_file(keys_path) if keys_path else None
-        return cls(session.machine.file_root, clock=session.machine.clock, keys=keys, say=session.say, typ2=typ2)
+        """The I/O of a run: the machine's file root and clock, output to say; the key script of
+        ``--keys`` or, with ``keyboard``, the operator at the terminal on stdin; the editor block of
+        ``--editor-block``, whose text after the run is the result's ``editor_block``."""
+        options = session.options
+        keys = None
+        if options.keys:
+            keys = KeyScript.from_file(options.keys)
+        elif options.keyboard:
+            keys = TerminalKeys(sys.stdin.fileno(), sys.stderr)
+        io = cls(session.machine.file_root, clock=session.machine.clock, keys=keys, say=session.say, typ2=typ2)
+        if isinstance(keys, TerminalKeys):
+            keys.view = io.screen.text_view
+        if options.editor_block is not None:
+            io.files.editor_block = options.editor_block
+            session.extra["editor_block"] = options.editor_block
+            io.files.on_editor_block = lambda text: session.extra.__setitem__("editor_block", text)
+        return io
 
     def _out(self, line: str) -> None:
         if self.say is not None:

@@ -25,6 +25,7 @@ from pathlib import Path
 from typing import Callable
 
 from ....machine.files import FileRootError, resolve_in_root
+from .editor import call_parameters
 from .errors import CplRuntimeError, CplWarning, WarnFn, fail, warning
 from .format import OutputMode, format_items
 from .strings import CharacterField, StringView, scan_number
@@ -86,6 +87,8 @@ class CplFiles:
     active: set[Path] = field(default_factory=set)
     #: the NC block selected in the editor when the program runs as an editor dialog (PRN#(0)/INP#(0))
     editor_block: str | None = None
+    #: told the new text each time PRN#(0) overwrites the editor block
+    on_editor_block: Callable[[str], None] | None = None
     durable: bool = True
     handles: dict[int, Handle] = field(default_factory=dict)
     messages: list[str] = field(default_factory=list)
@@ -328,6 +331,8 @@ class CplFiles:
         self._message_pending = ""
         if self.editor_block is not None:
             self.editor_block = text.replace("\r", "")
+            if self.on_editor_block is not None:
+                self.on_editor_block(self.editor_block)
             return
         for line in text.split("\r"):
             self.messages.append(line)
@@ -401,15 +406,20 @@ class CplFiles:
         return value, end
 
     def _inp_editor(self, targets) -> list:
-        """``INP#(0,P1,...)`` in an editor dialog: the call parameters ``[a,b,...]`` of the selected block."""
-        block = self.editor_block or ""
-        inside = block[block.find("[") + 1: block.rfind("]")] if "[" in block and "]" in block else ""
-        params = [p.strip() for p in inside.split(",")] if inside else []
+        """``INP#(0,P1,...)`` in an editor dialog: the call parameters of the selected block, one per
+        target (editor.call_parameters). A parameter is read by INP#'s rules, but it must be read
+        whole: one that is no constant of the target's type (``X%``, ``2*A``) and a missing one give
+        NUL. A string target takes the parameter's text (a string constant without its quotes)."""
+        params = call_parameters(self.editor_block or "")
         values = []
         for i, target in enumerate(targets):
             text = params[i] if i < len(params) else ""
-            value, _ = self._read_one(text, 0, target) if text else (None, 0)
-            values.append(value)
+            if isinstance(target, (CharacterField, StringView)) or target == "S":
+                text = text[1:-1] if len(text) >= 2 and text[0] == text[-1] == '"' else text
+                values.append(self._read_one(text, 0, target)[0] if text else None)
+                continue
+            value, end = self._read_one(text, 0, target) if text else (None, 0)
+            values.append(value if value is not None and not text[end:].strip() else None)
         return values
 
     # -- positions -------------------------------------------------------------------------

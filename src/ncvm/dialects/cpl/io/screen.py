@@ -19,7 +19,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .errors import WarnFn, fail
+from .errors import CplRuntimeError, WarnFn, fail
 from .format import TEMPLATE, OutputMode, format_items, format_number, template_shape
 from .graphics import BAND, HEIGHT, WIDTH, Graphics
 from .strings import scan_number
@@ -204,6 +204,11 @@ class KeyScript:
                 return head
         raise fail("KEY_SCRIPT_EMPTY", what)
 
+    def refuse(self, error: CplRuntimeError) -> None:
+        """A typed entry the waiting command cannot take (INP: not a number, too long for the
+        format): a script is wrong, so the run stops; an operator at a terminal types again."""
+        raise error
+
 
 # -- the screen ---------------------------------------------------------------------------------
 
@@ -233,6 +238,7 @@ class Screen(Graphics):
         self.log: list[str] = []
         self.on_output = None  # called with every line added to the log (CplIO sends it to session.say)
         self.on_wait = None  # called when SFK or INP starts waiting for the operator (--screen-dir pictures)
+        self.editing: str | None = None  # the variable whose INP field waits for the operator
         self.labels: list[tuple[int, int, str, tuple[int, int, int, int], int]] = []  # GPR texts
 
     # -- text ------------------------------------------------------------------------------
@@ -263,6 +269,18 @@ class Screen(Graphics):
     def grid_lines(self) -> list[str]:
         """The 46 text lines as shown (trailing blanks dropped)."""
         return ["".join(r).rstrip() for r in self.chars]
+
+    def text_view(self) -> list[str]:
+        """The screen as text for an operator at a terminal: the grid lines that are not blank
+        (numbered 1..46), the softkey bar and the INP field waiting for input."""
+        view = [f"{n:2d}|{line}" for n, line in enumerate(self.grid_lines(), 1) if line.strip()]
+        if self.softkeys is not None:
+            keys = [f"[SK{i} {' '.join(self.softkey_lines(t))}]" for i, t in enumerate(self.softkeys, 1) if t]
+            view.append("softkeys: " + (" ".join(keys) if keys else "(no labels)"))
+        field = self.fields.get(self.editing) if self.editing is not None else None
+        if field is not None:
+            view.append(f"input {self.editing} (line {field.line}, column {field.column}): {field.text}")
+        return view
 
     def output_lines(self) -> list[str]:
         """What the program showed the operator, in order: DSP/PRN texts and message-window lines."""
@@ -338,16 +356,24 @@ class Screen(Graphics):
         value = current
         if self.on_wait is not None:
             self.on_wait()
-        while True:
-            event = self.keys.wait(f"INP({name})")
-            if event.kind == "type":
-                value = self._typed(event.value, kind, int_digits, decimals, name)
-                break
-            if event.value == KEY_DEL:
-                value = None
-                continue
-            if event.value == KEY_ENTER or event.value in CURSOR_KEYS:
-                break
+        self.editing = name
+        try:
+            while True:
+                event = self.keys.wait(f"INP({name})")
+                if event.kind == "type":
+                    try:
+                        value = self._typed(event.value, kind, int_digits, decimals, name)
+                    except CplRuntimeError as e:
+                        self.keys.refuse(e)
+                        continue
+                    break
+                if event.value == KEY_DEL:
+                    value = None
+                    continue
+                if event.value == KEY_ENTER or event.value in CURSOR_KEYS:
+                    break
+        finally:
+            self.editing = None
         self._write(field.line, field.column, format_items([field.text, value], ljust=self.mode.ljust).text)
         return value
 
