@@ -139,10 +139,14 @@ class Channel(SysMem, SpindleReads):
 
     def execute_angle(self, block: Block) -> None:
         """A block with the programmed angle (PANG or the angle address word)."""
+        self.use_angle()
+        self.execute(block)
+
+    def use_angle(self) -> None:
+        """From the first block with the programmed angle on, blocks are shaped before the kernel."""
         if not self.angle_used:
             self.angle_used = True
             self.route()
-        self.execute(block)
 
     def angle_key(self) -> str:
         return angle_address(self)

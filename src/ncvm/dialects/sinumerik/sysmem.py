@@ -11,9 +11,11 @@ from __future__ import annotations
 import math
 
 from ...diagnostics import RuntimeFault
+from ...nc.block import Block
 from ...nc.dynamics import path_limits, trapezoid_distance, trapezoid_time
 from .contour import check_window, contour_elements, intersect
 from .ncdata import Cl800Error, int_to_pattern, nc8, pattern_to_int
+from .rotation import angle_address, block_frame, machine_frame, program_frame, program_point
 from .spindle import MASTER_SPINDLE
 
 #: code -> (area, width, (lo, hi) address range); width: word, byte, bit
@@ -557,17 +559,21 @@ class SysMem:
         R[rn:rn + 8] = elements[i]
         cursor[1] = i + 1
 
-    def int_sec(self, rm: int, rn: int, words: dict, line: int) -> None:
-        """@711 Rm Rn Rr: intersect element Rn..Rn+7 with the path to this block's destination."""
+    def int_sec(self, rm: int, rn: int, g: tuple, words: dict, line: int) -> None:
+        """@711 Rm Rn Rr: intersect element Rn..Rn+7 with the path to this block's destination.
+
+        The element (PREP REF's output: the contour as programmed), the destination and the result are
+        in the program's frame; so is the start point, the current position turned back by the
+        block's coordinate rotation."""
         check_window(rn, 8, ((0, 192), (900, 992)), "INT SEC input")
         check_window(rm, 3, ((0, 197), (900, 997)), "INT SEC output")
         self.run_buffer()  # the path starts at the end point of the blocks decoded so far
         h_name, v_name = self._plane_axes()
         if h_name not in words or v_name not in words:
             raise Cl800Error(f"INT SEC needs both axes {v_name} and {h_name} of the destination in its block")
-        pos = self.kernel.workpiece_position()
-        here = (pos[v_name], pos[h_name])
-        hit = intersect(self.R[rn:rn + 8], here, (words[v_name], words[h_name]))
+        theta = block_frame(self, Block(tuple(g), (), words, None, None, None))[3]
+        h, v = program_point(self, h_name, v_name, theta)
+        hit = intersect(self.R[rn:rn + 8], (v, h), (words[v_name], words[h_name]))
         R = self.R
         if hit is None:
             R[rm] = 0.0
@@ -584,7 +590,9 @@ class SysMem:
     def inta(self, axis: float, byte: float, bit: float, g: tuple, words: dict, line: int) -> dict:
         """@736 INTA: the block's axis words, cut where the motion stops when input byte.bit reaches the
         level (bit >= 0: 1, bit < 0: 0); unchanged when the position is reached first. Axis 0 = all axes of
-        the block; the axes interpolating with the named one stop with it, which here are all of them."""
+        the block; the axes interpolating with the named one stop with it, which here are all of them.
+        The cut is computed on the traversing axes (under a rotation both plane axes) and handed back in
+        the program's frame."""
         self.run_buffer()  # the block starts where the blocks before it end
         k = self.kernel
         ax = _rng("INTA axis number", axis, 0, 24)
@@ -594,7 +602,8 @@ class SysMem:
         self.ext_input(b, n)  # checks byte 1/2, bit 0-7
         if ax > k.n_axes:
             raise Cl800Error(f"INTA: axis {ax} does not exist")
-        moving = [name for name in words if name in k.axis_of]
+        turned, frame = machine_frame(self, g, words)  # the axes that traverse, in their own frame
+        moving = [name for name in turned if name in k.axis_of]
         if not moving or (ax and k.axis_names[ax - 1] not in moving):
             self._inta_until = None
             return words
@@ -608,7 +617,7 @@ class SysMem:
         end = list(start)
         for name in moving:
             i = k.axis_of[name]
-            end[i] = words[name] if absolute or machine else start[i] + words[name]
+            end[i] = turned[name] if absolute or machine else start[i] + turned[name]
         deltas = [(e - s) * scale for s, e in zip(start, end)]
         length = math.sqrt(sum(d * d for d in deltas))
         feed = words["F"] * scale if "F" in words else k.feed  # mm/min
@@ -623,10 +632,13 @@ class SysMem:
         if hit is None:
             return words
         frac = trapezoid_distance(length, v, a, hit - now) / length if length else 0.0
-        out = dict(words)
+        cut = {}
         for name in moving:
             i = k.axis_of[name]
-            out[name] = start[i] + frac * (end[i] - start[i]) if absolute or machine else frac * words[name]
+            cut[name] = start[i] + frac * (end[i] - start[i]) if absolute or machine else frac * turned[name]
+        angle = angle_address(self) if self.angle_used else None  # resolved into the axis words
+        out = {n: v for n, v in words.items() if n not in k.axis_of and n != angle}
+        out.update(cut if machine else program_frame(cut, frame))
         return out
 
     def inta_done(self) -> None:
@@ -651,31 +663,58 @@ class SysMem:
         return None
 
     # -- MEAS M --------------------------------------------------------------
-    def meas(self, target: int, probe: float, words: dict, line: int) -> dict:
-        """@720: the block's axes move until the probe switches; machine positions go to R<target>..."""
+    def meas(self, target: int, probe: float, g: tuple, words: dict, line: int) -> dict:
+        """@720: the block's axes move until the probe switches; their actual values relative to machine
+        zero go to R<target>... (L4357-4396). The traversing axes are those of the block as it reaches the
+        interpolation: under a coordinate rotation a plane axis word moves both axes of the plane. The
+        block's words come back cut at the trigger point, in the program's frame."""
         self.run_buffer()  # the measuring block starts where the blocks before it end
         probe = _i(probe)
         k = self.kernel
         if probe not in (1, 2):
             raise Cl800Error(f"MEAS M: probe input {probe} is not 1 or 2")
-        moving = sorted((n for n in words if n in k.axis_of), key=k.axis_of.get)
+        machine = 53 in g
+        turned, frame = machine_frame(self, g, words)
+        moving = sorted((n for n in turned if n in k.axis_of), key=k.axis_of.get)
         if len(moving) > 2:
-            raise Cl800Error("MEAS M: at most 2 axes may move in the measuring block")
-        if k.motion not in (0, 1):
+            raise Cl800Error(f"MEAS M: at most 2 axes may move in the measuring block ({', '.join(moving)})")
+        if next((x for x in reversed(g) if x in (0, 1, 2, 3)), k.motion) not in (0, 1):
             raise Cl800Error("MEAS M needs G00 or G01")
-        hit = self._probe_hit(probe)
-        pos = hit.get("position", {})
-        out = dict(words)
-        reg = target
+        scale = 25.4 if 70 in g else (1.0 if 71 in g else k.scale)
+        absolute = True if 90 in g else (False if 91 in g else k.absolute)
+        start = {n: k.machine_pos[k.axis_of[n]] for n in moving}
+        end = {}
         for name in moving:
-            if name not in pos:
-                raise RuntimeFault("SIN007", f"MEAS M: the probe event gives no position for axis {name}")
-            machine_value = float(pos[name])
             i = k.axis_of[name]
-            self.load_r(reg, machine_value / k.scale)  # seen by decoding only after STOP DEC
-            reg += 1
-            prog = machine_value - k.offset_vec[i]
-            out[name] = prog / k.scale if k.absolute else (prog - k.prog[i]) / k.scale
+            value = turned[name] * scale
+            end[name] = value if machine else k.offset_vec[i] + (value if absolute else k.prog[i] + value)
+        hit = self._trigger_point(self._probe_hit(probe), start, end)
+        angle = angle_address(self) if self.angle_used else None  # resolved into the axis words
+        out = {n: v for n, v in words.items() if n not in k.axis_of and n != angle}
+        cut = {}
+        for reg, name in enumerate(moving, target):
+            i = k.axis_of[name]
+            self.load_r(reg, hit[name] / scale)  # seen by decoding only after STOP DEC
+            prog = hit[name] - (0.0 if machine else k.offset_vec[i])
+            cut[name] = prog / scale if absolute or machine else (prog - k.prog[i]) / scale
+        out.update(cut if machine else program_frame(cut, frame))
+        return out
+
+    @staticmethod
+    def _trigger_point(hit: dict, start: dict, end: dict) -> dict:
+        """Machine positions of the traversing axes when the probe switches: those the probe event gives;
+        the others on the block's straight path at the point the given ones locate."""
+        pos = {n: float(v) for n, v in hit.get("position", {}).items() if n in start}
+        known = next((n for n in pos if abs(end[n] - start[n]) > 1e-12), None)
+        out = {}
+        for name in start:
+            if name in pos:
+                out[name] = pos[name]
+            elif known is None:
+                raise RuntimeFault("SIN007", f"MEAS M: the probe event gives no position for axis {name}")
+            else:
+                t = (pos[known] - start[known]) / (end[known] - start[known])
+                out[name] = start[name] + t * (end[name] - start[name])
         return out
 
     def _probe_hit(self, probe: int) -> dict:
