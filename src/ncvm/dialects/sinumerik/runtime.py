@@ -16,6 +16,7 @@ from ...diagnostics import Frame, RuntimeFault, Span
 from ...nc.block import Block
 from ...runtime.codegen import program_lines
 from .ncdata import Cl800Error, NcData, int_to_pattern, nc8, pattern_to_int
+from .plc import PlcClock
 from .rotation import angle_address, shape_block
 from .spindle import GEAR_M, Gearbox, SpindleReads
 from .sysmem import SysMem
@@ -100,6 +101,10 @@ class Channel(SysMem, SpindleReads):
         self.angle_used = False  # a block carried the angle address (PANG, @447)
         self.route()
         self._scenario = list(session.machine.scenario)
+        self.plc_clock = PlcClock(f"{session.machine.source}: [sin800]", data.plc)
+        for ev in self._scenario:
+            if ev.kind in ("timer", "counter"):
+                self.plc_clock.parse_event(ev.kind, ev.data, ev.time)  # faults in the scenario before the run
         self.m_functions = {f"M{int(k)}": dict(v) for k, v in sec.get("m_functions", {}).items()}
         self.gearbox = Gearbox(self.kernel, data.gear, data.gears)
         # G96 takes the radius from X; axis 1 may be programmed as a diameter (as for PREP CYC)
@@ -108,8 +113,11 @@ class Channel(SysMem, SpindleReads):
         plain_aux = canon.aux
 
         def aux(code, src):
-            """M functions the PLC answers: gear stages (M40-M45), R parameters it loads (m_functions)."""
+            """M functions the PLC answers: gear stages (M40-M45), R parameters it loads (m_functions),
+            timers and counters wired to them."""
             plain_aux(code, src)
+            self.advance_scenario()  # what the PLC did before this block
+            self.plc_clock.m_function(code, self.session.machine.clock.now)
             if code in GEAR_M:
                 self.gearbox.select(code)
             if code in self.m_functions:
@@ -381,7 +389,9 @@ class Channel(SysMem, SpindleReads):
             else:
                 self.data.inputs[byte] &= ~(1 << bit)
         elif ev.kind == "plc":
-            self.plc_set_event(d)
+            self.plc_set_event(d, ev.time)
+        elif ev.kind in ("timer", "counter"):
+            self.plc_clock.act(*self.plc_clock.parse_event(ev.kind, d, ev.time), ev.time)
         elif ev.kind == "alarm":
             self.data.alarms.append((int(d.get("number", 0)), self.data.channel))
         elif ev.kind == "probe":

@@ -373,11 +373,24 @@ class SysMem:
             raise RuntimeFault(str(n), f"cycle alarm {n} (ALNZ)")
 
     # -- PLC (850/880) -----------------------------------------------------
-    def _plc(self, v: float) -> dict:
+    def _plc_no(self, v: float) -> int:
+        """The PLC number; scripted PLC events up to now have happened when the NC looks at a PLC."""
         if self.data.control not in ("850", "880"):
             raise Cl800Error("PLC access needs a SINUMERIK 850 or 880")
         n = _rng("PLC number", v, 1, 4 if self.data.control == "880" else 2)
-        return self.data.plc.setdefault(n, {})
+        self.advance_scenario()
+        return n
+
+    def _plc(self, v: float) -> dict:
+        return self.data.plc.setdefault(self._plc_no(v), {})
+
+    def _put_byte(self, plc_no: int, area: str, byte: int, bits: int, when: float | None = None) -> None:
+        """Store a PLC I/Q/P/F byte; rising edges of bits wired to timers and counters drive them."""
+        plc = self.data.plc.setdefault(plc_no, {})
+        old = self._byte(plc, area, byte, True)
+        plc.setdefault(area, {})[str(byte)] = int_to_pattern(bits)
+        now = self.session.machine.clock.now if when is None else when
+        self.plc_clock.byte_changed(plc_no, area, byte, old, bits & 0xFF, now)
 
     def _byte(self, plc: dict, area: str, byte: int, writing: bool = False) -> int:
         table = plc.setdefault(area, {})
@@ -418,8 +431,10 @@ class SysMem:
             word = (self._byte(plc, area, n) << 8) | self._byte(plc, area, n + 1)
             return _from_dim(word, 16, _i(args[2]))
         if code in ("3a4", "3a5"):
-            table = plc.setdefault("T" if code == "3a4" else "C", {})
-            return float(table.get(str(_rng("number", args[1], 0, 255)), 0.0))
+            no, number = _i(args[0]), _rng("timer/counter number", args[1], 0, 255)
+            if code == "3a4":  # seconds, 2 digits after the decimal point (L2852)
+                return self.plc_clock.timer_seconds(no, number, self.session.machine.clock.now)
+            return self.plc_clock.counter_value(no, number)
         if code in ("3b0", "3b1", "3b2"):
             n = _i(args[3]) if code != "3b2" else 2
             words = [self._dw(plc, args[1], args[2] + k) for k in range(n)]
@@ -438,15 +453,15 @@ class SysMem:
         raise Cl800Error(f"@{code} is not available")
 
     def plc_write(self, code: str, where: tuple, value: float) -> None:
-        plc = self._plc(where[0])
+        no = self._plc_no(where[0])
+        plc = self.data.plc.setdefault(no, {})
         if code == "482":
             byte = _rng("byte", where[1], 0, 255)
             if value not in (0.0, 1.0):
                 raise Cl800Error(f"bit value {value:g} is not 0 or 1")
             bits = self._byte(plc, "F", byte, True)
             k = _rng("bit", where[2], 0, 7)
-            bits = bits | (1 << k) if value else bits & ~(1 << k)
-            plc.setdefault("F", {})[str(byte)] = int_to_pattern(bits)
+            self._put_byte(no, "F", byte, bits | (1 << k) if value else bits & ~(1 << k))
         elif code == "483":
             w = self._dw(plc, where[1], where[2])
             k = _rng("bit", where[3], 0, 15)
@@ -454,8 +469,7 @@ class SysMem:
                 raise Cl800Error(f"bit value {value:g} is not 0 or 1")
             self._set_dw(plc, where[1], where[2], w | (1 << k) if value else w & ~(1 << k))
         elif code == "493":
-            pattern_to_int(value)
-            plc.setdefault("F", {})[str(_rng("byte", where[1], 0, 255))] = value
+            self._put_byte(no, "F", _rng("byte", where[1], 0, 255), pattern_to_int(value))
         elif code in ("494", "495"):
             w = self._dw(plc, where[1], where[2])
             b = pattern_to_int(value)
@@ -464,8 +478,8 @@ class SysMem:
         elif code == "4a3":
             n = _rng("word", where[1], 0, 254)
             raw = _to_dim(value, 16, _i(where[2]))
-            plc.setdefault("F", {})[str(n)] = int_to_pattern(raw >> 8)
-            plc["F"][str(n + 1)] = int_to_pattern(raw & 0xFF)
+            self._put_byte(no, "F", n, raw >> 8)
+            self._put_byte(no, "F", n + 1, raw & 0xFF)
         elif code in ("4b0", "4b1", "4b2"):
             if code == "4b2":
                 import struct
@@ -490,18 +504,20 @@ class SysMem:
     def _set_dw(self, plc: dict, db: float, dw: float, value: int) -> None:
         plc["DB"][str(_i(db))][_i(dw)] = value & 0xFFFF
 
-    def plc_set_event(self, d: dict) -> None:
-        plc = self.data.plc.setdefault(int(d.get("plc", 1)), {})
+    def plc_set_event(self, d: dict, when: float) -> None:
+        """A scripted change of a PLC I/Q/P/F bit or byte (``[[scenario]]`` kind "plc")."""
+        no = int(d.get("plc", 1))
+        plc = self.data.plc.setdefault(no, {})
         area = str(d.get("area", "I")).upper()
-        table = plc.setdefault(area, {})
-        byte = str(int(d.get("byte", 0)))
+        byte = int(d.get("byte", 0))
         if "bit" in d:
-            bits = self._byte(plc, area, int(byte), True)
+            bits = self._byte(plc, area, byte, True)
             k = int(d["bit"])
             bits = bits | (1 << k) if d.get("value", 1) else bits & ~(1 << k)
-            table[byte] = int_to_pattern(bits)
         else:
-            table[byte] = float(d.get("value", 0))
+            value = d.get("value", 0)
+            bits = int(value, 2) if isinstance(value, str) else pattern_to_int(float(value))
+        self._put_byte(no, area, byte, bits, when)
 
     def rotation_active(self) -> bool:
         """A settable or programmable coordinate rotation is selected (some angle is not 0)."""
