@@ -109,10 +109,10 @@ class PlcClock:
         actions = TIMER_ACTIONS if kind == "T" else COUNTER_ACTIONS
         if not isinstance(spec, dict):
             raise UsageError(f"{where}: must be a table like {{ {actions[0]} = \"M71\" }}")
+        known = (*actions, "value", "base") if kind == "T" else (*actions, "value")
         for name in spec:
-            if name not in (*actions, "value", "base"):
-                raise UsageError(f"{where}: unknown key '{name}' (known: {', '.join((*actions, 'value'))}"
-                                 f"{', base' if kind == 'T' else ''})")
+            if name not in known:
+                raise UsageError(f"{where}: unknown key '{name}' (known: {', '.join(known)})")
         if kind == "T":
             timer = self.timers.setdefault(key, Timer())
             if "value" in spec:

@@ -177,6 +177,8 @@ class SysMem:
             if self.session.machine.axes[i].rotary:
                 return [pos % 360.0, float(math.floor(pos / 360.0))]
             return pos
+        if code in ("367", "36a", "36b"):
+            self._own_channel(args[0])  # ACAS, ACD, ACG
         if code == "367":
             plane = self.g16_plane or {17: (1, 2, 3), 18: (3, 1, 2), 19: (2, 3, 1)}[self.kernel.plane]
             out = [float(a + (128 if m else 0)) for a, m in zip(plane, self.g16_minus)]
@@ -186,6 +188,7 @@ class SysMem:
         if code == "36b":
             return self._acg(_rng("G group", args[1], 0, 23))
         if code == "371":
+            self._own_channel(args[0], independent=99)
             return d.sob.get(f"{_i(args[0])}:{_i(args[1])}", d.sob.get(str(_i(args[1])), 0.0))
         if code == "372":
             return float(d.channel)
@@ -217,11 +220,20 @@ class SysMem:
 
     def _channel_args(self, area: str, args: tuple) -> tuple:
         if area in CHANNEL_ARG:
-            ch = _rng("channel", args[0], 0, 16)
-            if ch not in (0, self.data.channel):
-                raise Cl800Error(f"channel {ch} is not on this NC CPU")
+            self._own_channel(args[0])
             return args[1:]
         return args
+
+    def _own_channel(self, v: float, independent: int | None = None) -> None:
+        """A channel operand (0 = own channel, 0-16): the simulated NC CPU runs only this channel, so any
+        other channel's system memory is on another CPU, the "CL 800 error" (L2351, L2553, L2693).
+        ``independent``: the number that means channel-independent data (SOB: 99)."""
+        ch = _i(v)
+        if ch == independent:
+            return
+        _rng("channel", ch, 0, 16)
+        if ch not in (0, self.data.channel):
+            raise Cl800Error(f"channel {ch} is not on this NC CPU")
 
     def _to(self, args: tuple) -> list[float]:
         top_area = {"810": 0, "820": 0, "850": 8, "880": 16}[self.data.control]
@@ -758,6 +770,7 @@ class SysMem:
         elif code == "a20":
             self.v24.append(f"PORT {_rng('V24 interface', args[0], 1, 4)}")
         elif code == "a27":
+            self._own_channel(args[0])
             lo, hi = _rng("R number", args[1], 0, 999), _rng("R number", args[2], 0, 999)
             for n in range(lo, hi + 1):
                 self.v24.append(f"R{n}={self.R[n]:g}")
