@@ -147,6 +147,18 @@ def test_meas_m_under_rotation_measures_both_traversing_axes_and_stops_on_the_pa
     assert (v["R3"], v["R4"]) == pytest.approx((146.961524, 88.660254))
 
 
+def test_incremental_meas_m_under_rotation(tmp_path):
+    # G54 = (100, 50), 30 degrees. The program point (10, 0) is machine (108.660254, 55); G91 X50 ends at the
+    # program point (60, 0) = machine (151.961524, 80). The probe switches at machine Y = 70, 0.6 of the way:
+    # X = 108.660254 + 0.6 * 43.301270 = 134.641016, the program point (40, 0). G90 Y10 then goes to the
+    # program point (40, 10) = turned (29.641016, 28.660254) = machine (129.641016, 78.660254).
+    r = _run(tmp_path, "%MPF1\nG54 G90 G1 X10 Y0 F1000\n@720 R93 K1 G91 X50\n@714\nG90 Y10\n"
+                       "@714 @361 R3 K1 @361 R4 K2\n", G54_30 + _probe("Y = 70.0"))
+    v = r["variables"]
+    assert (v["R93"], v["R94"]) == pytest.approx((134.641016, 70.0))
+    assert (v["R3"], v["R4"]) == pytest.approx((129.641016, 78.660254))
+
+
 def test_meas_m_under_rotation_counts_the_turned_axes(tmp_path):
     # X and Z programmed: under the rotation of the XY plane X, Y and Z traverse, more than 2 (L4396)
     r = _run(tmp_path, "%MPF1\nG54 G90 G1 X0 Y0 Z0 F1000\n@720 R93 K1 X100 Z-5\n", G54_30 + _probe("X = 120.0"),
