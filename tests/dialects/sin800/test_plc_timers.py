@@ -118,9 +118,32 @@ def test_plc_input_read_sees_the_scripted_change(tmp_path):
     ('[sin800.plc.1]\ncounters = { "3" = { up = "X1.0" } }\n', "not an M function"),
     ('[sin800.plc.1]\ncounters = { "3" = { up = "I200.0" } }\n', "byte 200"),
     ('[sin800.plc.1]\nC = { "3" = 1000 }\n', "0-999"),
+    ('[sin800.plc.1]\ntimers = { "3" = { value = 1, done = "I1.0" } }\n', "not an output or flag bit"),
+    ('[sin800.plc.1]\ncounters = { "3" = { up = "M5", base = 1 } }\n', "unknown key 'base'"),
     (_event(1.0, "timer", number=7), "needs the time 'value'"),
     (_event(1.0, "counter", number=7, action="start"), "not one of up, down, set, reset"),
 ])
 def test_timer_and_counter_configuration_errors(tmp_path, extra, match):
     with pytest.raises(UsageError, match=match):
         _run(tmp_path, "%MPF1\nM30\n", extra)
+
+
+def test_timer_done_bit_is_set_when_the_time_has_run_out_and_counts(tmp_path):
+    # M71 starts timer 3 (2.5 s) at 0 s; its done bit F20.0 is 0 at 2 s and 1 at 2.5 s, a rising edge that
+    # counter 1 counts. M71 again at 2.5 s restarts it: the bit is 0, and 1 again at 5 s (read at 5.5 s):
+    # counter 1 = 2.
+    wiring = ('[sin800.plc.1]\ntimers = { "3" = { start = "M71", value = 2.5, done = "F20.0" } }\n'
+              'counters = { "1" = { up = "F20.0" } }\n')
+    r = _ok(tmp_path, "%MPF1\nM71\nG4 X2\n@382 R1 K1 K20 K0\nG4 X0.5\n@382 R2 K1 K20 K0 @3a5 R3 K1 K1\n"
+                      "M71\n@382 R4 K1 K20 K0\nG4 X3\n@382 R5 K1 K20 K0 @3a5 R6 K1 K1\n@3a4 R7 K1 K3\nM30\n", wiring)
+    assert [R(r, n) for n in range(1, 8)] == [0.0, 1.0, 1.0, 0.0, 1.0, 2.0, 0.0]
+
+
+def test_done_bit_of_a_scenario_timer_comes_before_later_scenario_events(tmp_path):
+    # the scenario starts timer 0 (1 s) at 0 s; its done bit Q4.1 counts counter 5 up at 1 s (0 -> 1), before
+    # the scenario sets the counter to 10 at 1.5 s. Read at 2 s: 10 (11 if the bit came after the set).
+    wiring = ('[sin800.plc.1]\ntimers = { "0" = { value = 1, done = "Q4.1" } }\n'
+              'counters = { "5" = { up = "Q4.1" } }\n')
+    events = _event(0.0, "timer", number=0) + _event(1.5, "counter", number=5, action="set", value=10)
+    r = _ok(tmp_path, "%MPF1\nG4 X2\n@3a5 R1 K1 K5 @381 R2 K1 K4 K1\nM30\n", wiring + events)
+    assert (R(r, 1), R(r, 2)) == (10.0, 1.0)

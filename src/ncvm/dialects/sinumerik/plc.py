@@ -21,6 +21,7 @@ from ...diagnostics import UsageError
 TIME_BASES = (0.01, 0.1, 1.0, 10.0)
 MAX_UNITS = 999  # 3 decades of the S5 time value and counter value
 TIMER_ACTIONS = ("start", "reset")
+TIMER_KEYS = (*TIMER_ACTIONS, "value", "base", "done")
 COUNTER_ACTIONS = ("up", "down", "set", "reset")
 _TRIGGER = re.compile(r"^(?:M(\d+)|([IQF])(\d+)\.([0-7]))$")
 
@@ -52,6 +53,14 @@ class Timer:
     base: float = 0.01
     started: float | None = None
     load: tuple[int, float] | None = None  # the time value a start trigger loads
+    done: tuple[str, int, int] | None = None  # the PLC bit (area, byte, bit) set when the time has run out
+    signalled: bool = False  # the done bit of this run has been set
+
+    def expiry(self) -> float | None:
+        """When a running timer reaches 0 and its done bit is still to be set."""
+        if self.started is None or self.done is None or self.signalled:
+            return None
+        return self.started + self.units * self.base
 
     def seconds(self, now: float) -> float:
         """Remaining time at ``now``: one unit less per elapsed time base, at least 0."""
@@ -63,6 +72,7 @@ class Timer:
     def start(self, now: float, value: tuple[int, float] | None = None) -> None:
         self.units, self.base = value or self.load or (self.units, self.base)
         self.started = now
+        self.signalled = False
 
     def reset(self) -> None:
         self.units, self.started = 0, None
@@ -93,6 +103,9 @@ class PlcClock:
         self.timers: dict[tuple[int, int], Timer] = {}
         self.counters: dict[tuple[int, int], Counter] = {}
         self.triggers: dict[tuple, list[tuple[str, tuple[int, int], str]]] = {}
+        #: (plc, area, byte, bit, value, time) -> None: sets a PLC bit (the channel's, with edge detection)
+        self.write_bit = None
+        self.timed_bits = False  # some timer has a done bit (else expire() has nothing to do)
         for plc, areas in plcs.items():
             for number, seconds in areas.get("T", {}).items():
                 units, base = time_value(f"{where}.plc.{plc}.T.{number}", seconds)
@@ -109,7 +122,7 @@ class PlcClock:
         actions = TIMER_ACTIONS if kind == "T" else COUNTER_ACTIONS
         if not isinstance(spec, dict):
             raise UsageError(f"{where}: must be a table like {{ {actions[0]} = \"M71\" }}")
-        known = (*actions, "value", "base") if kind == "T" else (*actions, "value")
+        known = TIMER_KEYS if kind == "T" else (*actions, "value")
         for name in spec:
             if name not in known:
                 raise UsageError(f"{where}: unknown key '{name}' (known: {', '.join(known)})")
@@ -119,6 +132,13 @@ class PlcClock:
                 timer.load = time_value(f"{where}.value", spec["value"], spec.get("base"))
             elif "start" in spec:
                 raise UsageError(f"{where}: a timer started by '{spec['start']}' needs the time 'value' it loads")
+            if "done" in spec:
+                area, _plc, bit = _trigger(f"{where}.done", key[0], spec["done"])
+                if area not in ("Q", "F"):
+                    raise UsageError(f"{where}.done: '{spec['done']}' is not an output or flag bit (Q4.0, F20.0)")
+                byte, bit = bit.split(".")
+                timer.done = (area, int(byte), int(bit))
+                self.timed_bits = True
         else:
             counter = self.counters.setdefault(key, Counter())
             if "value" in spec:
@@ -152,6 +172,19 @@ class PlcClock:
             if rising >> bit & 1:
                 self._fire((area, plc, f"{byte}.{bit}"), now)
 
+    def expire(self, until: float) -> None:
+        """Set the done bits of timers that have run out by ``until``, earliest first (a done bit may start
+        or count others)."""
+        while self.timed_bits:
+            due = [(when, key) for key, t in self.timers.items()
+                   if (when := t.expiry()) is not None and when <= until + 1e-9]
+            if not due:
+                return
+            when, key = min(due)
+            timer = self.timers[key]
+            timer.signalled = True
+            self.write_bit(key[0], *timer.done, 1, when)
+
     def _fire(self, trigger: tuple, now: float) -> None:
         for kind, key, action in self.triggers.get(trigger, ()):
             self.act(kind, key, action, None, now)
@@ -163,6 +196,8 @@ class PlcClock:
                 timer.start(now, value)
             else:
                 timer.reset()
+            if timer.done is not None:  # 0 from the start or reset until the time has run out
+                self.write_bit(key[0], *timer.done, 0, now)
         else:
             self.counters.setdefault(key, Counter()).act(action, value)
 

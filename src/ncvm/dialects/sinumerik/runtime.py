@@ -102,6 +102,7 @@ class Channel(SysMem, SpindleReads):
         self.route()
         self._scenario = list(session.machine.scenario)
         self.plc_clock = PlcClock(f"{session.machine.source}: [sin800]", data.plc)
+        self.plc_clock.write_bit = self.plc_bit
         for ev in self._scenario:
             if ev.kind in ("timer", "counter"):
                 self.plc_clock.parse_event(ev.kind, ev.data, ev.time)  # faults in the scenario before the run
@@ -376,9 +377,14 @@ class Channel(SysMem, SpindleReads):
 
     # -- external inputs and the scenario --------------------------------
     def advance_scenario(self) -> None:
+        """Scripted events and PLC timers running out, in time order, up to the current simulated time."""
         now = self.session.machine.clock.now
-        while self._scenario and self._scenario[0].time <= now:
-            self._apply_event(self._scenario.pop(0))
+        scenario = self._scenario
+        expire = self.plc_clock.expire
+        while scenario and scenario[0].time <= now:
+            expire(scenario[0].time)
+            self._apply_event(scenario.pop(0))
+        expire(now)
 
     def _apply_event(self, ev) -> None:
         d = ev.data

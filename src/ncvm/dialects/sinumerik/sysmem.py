@@ -413,6 +413,11 @@ class SysMem:
         v = table[str(byte)]
         return pattern_to_int(float(v)) if isinstance(v, (int, float)) else int(str(v), 2)
 
+    def plc_bit(self, plc_no: int, area: str, byte: int, bit: int, value: int, when: float) -> None:
+        """Set or clear one PLC bit at time ``when`` (a timer's done bit)."""
+        bits = self._byte(self.data.plc.setdefault(plc_no, {}), area, byte, True)
+        self._put_byte(plc_no, area, byte, bits | (1 << bit) if value else bits & ~(1 << bit), when)
+
     def _dw(self, plc: dict, db: float, dw: float) -> int:
         b = _i(db)
         if not (1 <= b <= 255 or 1000 <= b <= 1255):
