@@ -166,6 +166,12 @@ def test_meas_m_under_rotation_counts_the_turned_axes(tmp_path):
     assert r["error"]["code"] == "CL800" and "at most 2 axes" in r["error"]["message"]
 
 
+def test_meas_m_probe_position_off_the_path(tmp_path):
+    # the path runs from machine Y 50 to 100: a probe at Y = 120 never switches in this block
+    r = _run(tmp_path, "%MPF1\nG54 G90 G1 X0 Y0 F1000\n@720 R93 K1 X100\n", G54_30 + _probe("Y = 120.0"), ok=False)
+    assert r["error"]["code"] == "SIN007" and "not on the block's path" in r["error"]["message"]
+
+
 def test_inta_under_rotation_cuts_the_path_in_the_program_frame(tmp_path):
     # 90 degrees: from the program point (10, 0) = machine (0, 10), X110 runs 100 mm along machine Y. F6000 is
     # limited to max_feed 5000 mm/min = 83.333 mm/s with 1000 mm/s^2: 0.083333 s and 3.472222 mm to speed

@@ -747,6 +747,9 @@ class SysMem:
                 raise RuntimeFault("SIN007", f"MEAS M: the probe event gives no position for axis {name}")
             else:
                 t = (pos[known] - start[known]) / (end[known] - start[known])
+                if not -1e-9 <= t <= 1.0 + 1e-9:
+                    raise RuntimeFault("SIN007", f"MEAS M: the probe position {known} = {pos[known]:g} is not on "
+                                                 f"the block's path ({start[known]:g} to {end[known]:g})")
                 out[name] = start[name] + t * (end[name] - start[name])
         return out
 
