@@ -413,8 +413,8 @@ class SysMem:
         v = table[str(byte)]
         return pattern_to_int(float(v)) if isinstance(v, (int, float)) else int(str(v), 2)
 
-    def plc_bit(self, plc_no: int, area: str, byte: int, bit: int, value: int, when: float) -> None:
-        """Set or clear one PLC bit at time ``when`` (a timer's done bit)."""
+    def plc_bit(self, plc_no: int, area: str, byte: int, bit: int, value: int, when: float | None = None) -> None:
+        """Set or clear one PLC bit (at time ``when``, default now)."""
         bits = self._byte(self.data.plc.setdefault(plc_no, {}), area, byte, True)
         self._put_byte(plc_no, area, byte, bits | (1 << bit) if value else bits & ~(1 << bit), when)
 
@@ -476,9 +476,7 @@ class SysMem:
             byte = _rng("byte", where[1], 0, 255)
             if value not in (0.0, 1.0):
                 raise Cl800Error(f"bit value {value:g} is not 0 or 1")
-            bits = self._byte(plc, "F", byte, True)
-            k = _rng("bit", where[2], 0, 7)
-            self._put_byte(no, "F", byte, bits | (1 << k) if value else bits & ~(1 << k))
+            self.plc_bit(no, "F", byte, _rng("bit", where[2], 0, 7), int(value))
         elif code == "483":
             w = self._dw(plc, where[1], where[2])
             k = _rng("bit", where[3], 0, 15)
@@ -524,17 +522,14 @@ class SysMem:
     def plc_set_event(self, d: dict, when: float) -> None:
         """A scripted change of a PLC I/Q/P/F bit or byte (``[[scenario]]`` kind "plc")."""
         no = int(d.get("plc", 1))
-        plc = self.data.plc.setdefault(no, {})
         area = str(d.get("area", "I")).upper()
         byte = int(d.get("byte", 0))
         if "bit" in d:
-            bits = self._byte(plc, area, byte, True)
-            k = int(d["bit"])
-            bits = bits | (1 << k) if d.get("value", 1) else bits & ~(1 << k)
-        else:
-            value = d.get("value", 0)
-            bits = int(value, 2) if isinstance(value, str) else pattern_to_int(float(value))
-        self._put_byte(no, area, byte, bits, when)
+            self.plc_bit(no, area, byte, int(d["bit"]), 1 if d.get("value", 1) else 0, when)
+            return
+        value = d.get("value", 0)
+        self._put_byte(no, area, byte, int(value, 2) if isinstance(value, str) else pattern_to_int(float(value)),
+                       when)
 
     def rotation_active(self) -> bool:
         """A settable or programmable coordinate rotation is selected (some angle is not 0)."""
