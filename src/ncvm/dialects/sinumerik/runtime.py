@@ -12,7 +12,7 @@ import re
 import sys
 from collections import deque
 
-from ...diagnostics import Frame, RuntimeFault, Span
+from ...diagnostics import Frame, RuntimeFault, Span, UsageError
 from ...nc.block import Block
 from ...runtime.codegen import program_lines
 from .ncdata import Cl800Error, NcData, int_to_pattern, nc8, pattern_to_int
@@ -90,6 +90,8 @@ class Channel(SysMem, SpindleReads):
             self.R[int(str(name).upper().lstrip("R"))] = float(v)
         for k, v in data.central_r.items():
             self.R[int(k)] = float(v)
+        if self.strict:
+            self._strict_power_on(session.machine.source)
         self.push_stack: list[tuple[tuple[int, ...], list[float]]] = []
         self.frames: list[Frame] = []
         self.halted = False
@@ -126,6 +128,16 @@ class Channel(SysMem, SpindleReads):
 
         canon.aux = aux
         self.apply_offsets()
+
+    def _strict_power_on(self, source: str) -> None:
+        """strict_nc: R parameters from the machine file and the store keep 8 significant digits too."""
+        R = self.R
+        for n, v in enumerate(R):
+            if v != 0.0:
+                try:
+                    R[n] = nc8(v)
+                except Cl800Error as e:
+                    raise UsageError(f"{source}: [sin800] R{n}: {e}") from None
 
     # -- how decoded blocks reach the kernel ---------------------------------
     def route(self) -> None:

@@ -154,6 +154,11 @@ class SysMem:
         else:
             R[target] = fix(value)
 
+    def store(self, first: int, values: list[float]) -> None:
+        """Results of an NC function into R<first>... (8 significant digits under strict_nc)."""
+        fix = nc8 if self.strict else float
+        self.R[first:first + len(values)] = [fix(v) for v in values]
+
     def _read(self, code: str, target: int, args: tuple):
         sub, fn = code[1], code[2]
         d = self.data
@@ -546,9 +551,8 @@ class SysMem:
             target = args[0]
             if target > 998:
                 raise Cl800Error("PREP CYC needs two result registers")
-            self.R[target] = 1.0 if self.kernel.scale == 1.0 else 0.03937
             diameter = self.data.areas["nc_md"].get("diameter_axis1", 0.0)
-            self.R[target + 1] = 2.0 if diameter else 1.0
+            self.store(target, [1.0 if self.kernel.scale == 1.0 else 0.03937, 2.0 if diameter else 1.0])
             return
         if code == "710":
             self.prep_ref(int(args[0]), int(args[1]))
@@ -582,9 +586,9 @@ class SysMem:
         elements, i = cursor
         if i >= len(elements):
             last = elements[-1] if elements else [R[rm + 1], R[rm + 2]] * 2 + [0.0, 0.0, 1.0, 2.0]
-            R[rn:rn + 8] = last[2:4] + last[2:4] + [0.0, 0.0, last[6], 2.0]
+            self.store(rn, last[2:4] + last[2:4] + [0.0, 0.0, last[6], 2.0])
             return
-        R[rn:rn + 8] = elements[i]
+        self.store(rn, elements[i])
         cursor[1] = i + 1
 
     def int_sec(self, rm: int, rn: int, g: tuple, words: dict, line: int) -> None:
@@ -602,11 +606,7 @@ class SysMem:
         theta = block_frame(self, Block(tuple(g), (), words, None, None, None))[3]
         h, v = program_point(self, h_name, v_name, theta)
         hit = intersect(self.R[rn:rn + 8], (v, h), (words[v_name], words[h_name]))
-        R = self.R
-        if hit is None:
-            R[rm] = 0.0
-        else:
-            R[rm], R[rm + 1], R[rm + 2] = 1.0, hit[0], hit[1]
+        self.store(rm, [0.0] if hit is None else [1.0, hit[0], hit[1]])
 
     # -- REL / INTA (L4400-4436) ---------------------------------------------
     def read_in_inhibit(self, byte: float, bit: float, line: int) -> None:
