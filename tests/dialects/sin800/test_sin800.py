@@ -232,3 +232,14 @@ def test_acas_of_the_own_channel_by_number_and_sob_99(tmp_path):
     r = _run(tmp_path, "%MPF1\n@367 R10 K1 @371 R20 K99 K3\nM30\n", machine=machine)
     assert r["status"] == "ok", r["error"]
     assert [R(r, n) for n in range(10, 15)] == [1.0, 2.0, 3.0, 0.0, 1.0] and R(r, 20) == 1.0
+
+
+def test_meas_m_rotary_axis_fills_two_registers(tmp_path):
+    """L4366-4369: a rotary axis gives the position within a rotation and the number of rotations.
+    X and the rotary axis C move; the probe switches at X 20, C 450 (1 rotation + 90 degrees)."""
+    machine = ('[[axis]]\nname = "X"\n[[axis]]\nname = "C"\nkind = "rotary"\n[sin800]\ncontrol = "880"\n'
+               '[[scenario]]\ntime = 0.0\nkind = "probe"\ninput = 1\nposition = { X = 20.0, C = 450.0 }\n')
+    r = _run(tmp_path, "%MPF1\nG1 F1000\n@720 R93 K1 X40 C900\n@714\nM30\n", machine=machine)
+    assert r["status"] == "ok", r["error"]
+    assert [R(r, n) for n in (93, 94, 95)] == [20.0, 90.0, 1.0]
+    assert r["position"]["C"] == 450.0

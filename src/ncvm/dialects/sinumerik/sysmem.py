@@ -720,9 +720,19 @@ class SysMem:
         angle = angle_address(self) if self.angle_used else None  # resolved into the axis words
         out = {n: v for n, v in words.items() if n not in k.axis_of and n != angle}
         cut = {}
-        for reg, name in enumerate(moving, target):
+        reg = target
+        axes = self.session.machine.axes
+        for name in moving:
             i = k.axis_of[name]
-            self.load_r(reg, hit[name] / scale)  # seen by decoding only after STOP DEC
+            # seen by decoding only after STOP DEC; a rotary axis as position within a rotation and number
+            # of rotations (L4366-4369), as ACPM
+            values = [hit[name] % 360.0, float(math.floor(hit[name] / 360.0))] if axes[i].rotary \
+                else [hit[name] / scale]
+            for value in values:
+                if reg > 999:
+                    raise Cl800Error(f"MEAS M: result register R{reg} does not exist")
+                self.load_r(reg, value)
+                reg += 1
             prog = hit[name] - (0.0 if machine else k.offset_vec[i])
             cut[name] = prog / scale if absolute or machine else (prog - k.prog[i]) / scale
         out.update(cut if machine else program_frame(cut, frame))
