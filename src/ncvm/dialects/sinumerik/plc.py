@@ -1,6 +1,7 @@
 """PLC timers and counters (PLCT @3a4, PLCC @3a5; manual L2849-2866, L4972-4974): running in simulated time.
 
-The PLC of the SINUMERIK 850/880 is a SIMATIC S5 PLC (data blocks DB/DX, data words, flags). An S5
+The manual gives only the reads; the model is that of a SIMATIC S5 PLC, whose data (blocks DB/DX,
+data words, flags) the manual's PLC statements address. An S5
 timer holds a time value of up to 999 units of a time base (0.01, 0.1, 1 or 10 s); once started it
 counts down one unit per time base until 0. PLCT reads it "as a value in seconds with 2 digits after
 the decimal point". An S5 counter holds 0-999 and counts up or down by one on each rising edge at its
