@@ -1,14 +1,14 @@
 """PLC timers and counters (PLCT @3a4, PLCC @3a5; manual L2849-2866, L4972-4974): running in simulated time.
 
-The manual gives only the reads; the model is that of a SIMATIC S5 PLC, whose data (blocks DB/DX,
-data words, flags) the manual's PLC statements address. An S5
-timer holds a time value of up to 999 units of a time base (0.01, 0.1, 1 or 10 s); once started it
-counts down one unit per time base until 0. PLCT reads it "as a value in seconds with 2 digits after
-the decimal point". An S5 counter holds 0-999 and counts up or down by one on each rising edge at its
-count inputs, or is set to a preset value. The NC program has no statement that writes a timer or a
-counter. What starts and counts them is the PLC program, which is not simulated: the machine file says
-which events drive each one (an M function the NC outputs to the PLC, a rising edge of a PLC I/Q/F
-bit), and the scenario can drive them at given times (docs/sin800.md, docs/decisions.md).
+The manual gives only the reads; the model is that of a SIMATIC S5 PLC, whose data (blocks DB/DX, data
+words, flags) the manual's PLC statements address. An S5 timer holds a time value of up to 999 units of
+a time base (0.01, 0.1, 1 or 10 s); once started it counts down one unit per time base until 0. PLCT
+reads it "as a value in seconds with 2 digits after the decimal point". An S5 counter holds 0-999 and
+counts up or down by one on each rising edge at its count inputs, or is set to a preset value. The NC
+program has no statement that writes a timer or a counter. What starts and counts them is the PLC
+program, which is not simulated: the machine file says which events drive each one (an M function the
+NC outputs to the PLC, a rising edge of a PLC I/Q/F bit), and the scenario can drive them at given times
+(docs/sin800.md, docs/decisions.md).
 """
 
 from __future__ import annotations
