@@ -214,3 +214,32 @@ def test_m94_loads_part_number_from_plc(tmp_path):
 def test_fault_inside_a_run_of_constant_blocks_names_its_line(tmp_path):
     r = _run(tmp_path, "%MPF1\nG90 G0 X1\nY2\nG1 X3\nM30\n")  # G1 without any F word
     assert r["error"]["code"] == "NC006" and r["error"]["line"] == 4 and r["steps"] >= 3
+
+
+@pytest.mark.parametrize("read", ["@367 R1 K2", "@36a R1 K2", "@36b R1 K2 K0", "@371 R1 K2 K1", "@a27 K2 K1 K3",
+                                  "@303 R1 K2 K400", "@337 R1 K2 K1 K1"])
+def test_another_channels_system_memory_is_the_cl800_error(tmp_path, read):
+    """L2351, L2553, L2693: only channels of the same NC CPU can be read; the simulated CPU runs channel 1
+    alone. Channel 0 and the own number (1) read the own channel; SOB's 99 the channel-independent bits."""
+    r = _run(tmp_path, f"%MPF1\n{read}\nM30\n")
+    assert r["error"]["code"] == "CL800" and "channel 2 is not on this NC CPU" in r["error"]["message"]
+    own = read.replace("K2", "K1", 1)
+    assert _run(tmp_path, f"%MPF1\n{own}\nM30\n")["status"] == "ok"
+
+
+def test_acas_of_the_own_channel_by_number_and_sob_99(tmp_path):
+    machine = MACHINE + 'sob = { "99:3" = 1 }\n'
+    r = _run(tmp_path, "%MPF1\n@367 R10 K1 @371 R20 K99 K3\nM30\n", machine=machine)
+    assert r["status"] == "ok", r["error"]
+    assert [R(r, n) for n in range(10, 15)] == [1.0, 2.0, 3.0, 0.0, 1.0] and R(r, 20) == 1.0
+
+
+def test_meas_m_rotary_axis_fills_two_registers(tmp_path):
+    """L4366-4369: a rotary axis gives the position within a rotation and the number of rotations.
+    X and the rotary axis C move; the probe switches at X 20, C 450 (1 rotation + 90 degrees)."""
+    machine = ('[[axis]]\nname = "X"\n[[axis]]\nname = "C"\nkind = "rotary"\n[sin800]\ncontrol = "880"\n'
+               '[[scenario]]\ntime = 0.0\nkind = "probe"\ninput = 1\nposition = { X = 20.0, C = 450.0 }\n')
+    r = _run(tmp_path, "%MPF1\nG1 F1000\n@720 R93 K1 X40 C900\n@714\nM30\n", machine=machine)
+    assert r["status"] == "ok", r["error"]
+    assert [R(r, n) for n in (93, 94, 95)] == [20.0, 90.0, 1.0]
+    assert r["position"]["C"] == 450.0

@@ -52,3 +52,18 @@ def test_strict_rounds_system_memory_reads(tmp_path):
     # ACPM after a move to X 1/3: the position read keeps 8 digits
     r = _run(tmp_path, "%MPF1\nR5=1/3\nG90 G0 X=R5\n@714 @361 R1 K1\n", True)
     assert r["variables"]["R1"] == 0.33333333
+
+
+def test_strict_int_sec_result_and_machine_file_r(tmp_path):
+    # contour L21 from (Y0, X0) to (Y100, X300): Y = X / 3; the path X10 from Y0 to Y50 meets it at
+    # Y = 10/3 = 3.3333333 (8 digits); R10 from the machine file: 0.123456789 -> 0.12345679
+    (tmp_path / "L21.spf").write_text("L21\nN5 X300 Y100 M17\n")
+    text = "%MPF1\nG90 G0 X10 Y0\nR50=21 R51=0 R52=0 R53=1\n@710 R54 R50\n@711 R70 R54 R62 X10 Y50\n"
+    for strict, y, r10 in ((True, 3.3333333, 0.12345679), (False, 10 / 3, 0.123456789)):
+        (tmp_path / "machine.toml").write_text(MACHINE + f"strict_nc = {'true' if strict else 'false'}\n"
+                                               "r = { R10 = 0.123456789 }\n")
+        (tmp_path / "prog.mpf").write_text(text)
+        result, _ = run(tmp_path / "prog.mpf", dialect="sin800", machine=tmp_path / "machine.toml",
+                        options=RunOptions(state_dir=tmp_path / ".ncvm"))
+        v = result["variables"]
+        assert (v["R70"], v["R71"], v["R72"], v["R10"]) == (1.0, y, 10.0, r10)

@@ -586,13 +586,15 @@ class _Record:
         if self.int_sec is not None:
             pairs = ", ".join(f"{k}: {v}" for k, v, _c in words)
             out.emit("@SYNC_OUT", line)
-            out.emit(f"_rt.int_sec({self.int_sec[0]}, {self.int_sec[1]}, {{{pairs}}}, {line})", line)
+            out.emit(f"_rt.int_sec({self.int_sec[0]}, {self.int_sec[1]}, {tuple(g)!r}, {{{pairs}}}, {line})", line)
             out.emit("@SYNC_IN", line)
             words = []
         if self.meas is not None:
             pairs = ", ".join(f"{k}: {v}" for k, v, _c in words)
             out.emit("@SYNC_OUT", line)
-            out.emit(f"_wm = _rt.meas({self.meas[0]}, {self.meas[1]}, {{{pairs}}}, {line})", line)
+            if self.angle:
+                out.emit("_rt.use_angle()", line)
+            out.emit(f"_wm = _rt.meas({self.meas[0]}, {self.meas[1]}, {tuple(g)!r}, {{{pairs}}}, {line})", line)
             out.emit("@SYNC_IN", line)
             srcname = cg.const(src, "_S")
             out.emit(f"_ex(_Block({tuple(g)!r}, {tuple(m)!r}, _wm, {self.blk.n!r}, {self.msg!r}, {srcname}))", line)
@@ -601,6 +603,8 @@ class _Record:
             pairs = ", ".join(f"{k}: {v}" for k, v, _c in words)
             ax, byte, bit = self.inta
             srcname = cg.const(src, "_S")
+            if self.angle:
+                out.emit("_rt.use_angle()", line)
             out.emit(f"_wm = _rt.inta({ax}, {byte}, {bit}, {tuple(g)!r}, {{{pairs}}}, {line})", line)
             out.emit(f"_rt.execute_now(_Block({tuple(g)!r}, {tuple(m)!r}, _wm, {self.blk.n!r}, {self.msg!r}, "
                      f"{srcname})); _rt.inta_done()", line)

@@ -70,11 +70,9 @@ def shape_block(channel, block: Block, angle_key: str | None) -> Block:
     if theta == 0.0 and angle_key not in words:
         return block
     words = dict(words)
-    hi, vi = k.axis_of.get(h), k.axis_of.get(v)
-    if hi is None or vi is None:
+    if h not in k.axis_of or v not in k.axis_of:
         raise Cl800Error(f"the plane needs the axes {h} and {v}")
-    # the current point in the program's (unrotated) frame
-    ch, cv = _turn(k.prog[hi] / k.scale, k.prog[vi] / k.scale, -theta)
+    ch, cv = program_point(channel, h, v, theta)
     if angle_key in words:
         _resolve_angle(words, words.pop(angle_key), h, v, absolute, ch, cv)
     if theta != 0.0 and (h in words or v in words):
@@ -86,6 +84,35 @@ def shape_block(channel, block: Block, angle_key: str | None) -> Block:
     if theta != 0.0 and ih and iv and (ih in words or iv in words):
         words[ih], words[iv] = _turn(words.get(ih, 0.0), words.get(iv, 0.0), theta)
     return Block(block.g, block.m, words, block.n, block.msg, block.src)
+
+
+def machine_frame(channel, g, words: dict) -> tuple[dict, tuple[str, str, float]]:
+    """The block's words as the kernel will get them (angle resolved, turned into the frame of the
+    machine axes), and the frame (first, second plane axis, angle) that turns results back.
+
+    MEAS M and INTA cut a block's path where something happens on the machine; they work on these
+    words and hand the cut point back in the program's frame with :func:`program_frame`."""
+    blk = Block(tuple(g), (), words, None, None, None)
+    h, v, _absolute, theta = block_frame(channel, blk)
+    key = angle_address(channel) if channel.angle_used else None
+    return shape_block(channel, blk, key).words, (h, v, theta)
+
+
+def program_frame(words: dict, frame: tuple[str, str, float]) -> dict:
+    """Plane coordinates (or G91 increments) of the machine-axis frame turned back into the program's
+    frame; both plane axes must be in ``words`` when one is (shape_block always writes both)."""
+    h, v, theta = frame
+    if theta == 0.0 or (h not in words and v not in words):
+        return words
+    out = dict(words)
+    out[h], out[v] = _turn(words[h], words[v], -theta)
+    return out
+
+
+def program_point(channel, h: str, v: str, theta: float) -> tuple[float, float]:
+    """The current point of the plane (h, v) in the program's frame, in program units."""
+    pos = channel.kernel.workpiece_position()
+    return _turn(pos[h], pos[v], -theta)
 
 
 def _resolve_angle(words: dict, alpha: float, h: str, v: str, absolute: bool, ch: float, cv: float) -> None:

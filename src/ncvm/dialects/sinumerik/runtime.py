@@ -12,10 +12,11 @@ import re
 import sys
 from collections import deque
 
-from ...diagnostics import Frame, RuntimeFault, Span
+from ...diagnostics import Frame, RuntimeFault, Span, UsageError
 from ...nc.block import Block
 from ...runtime.codegen import program_lines
 from .ncdata import Cl800Error, NcData, int_to_pattern, nc8, pattern_to_int
+from .plc import PlcClock
 from .rotation import angle_address, shape_block
 from .spindle import GEAR_M, Gearbox, SpindleReads
 from .sysmem import SysMem
@@ -89,6 +90,8 @@ class Channel(SysMem, SpindleReads):
             self.R[int(str(name).upper().lstrip("R"))] = float(v)
         for k, v in data.central_r.items():
             self.R[int(k)] = float(v)
+        if self.strict:
+            self._strict_power_on(session.machine.source)
         self.push_stack: list[tuple[tuple[int, ...], list[float]]] = []
         self.frames: list[Frame] = []
         self.halted = False
@@ -100,6 +103,11 @@ class Channel(SysMem, SpindleReads):
         self.angle_used = False  # a block carried the angle address (PANG, @447)
         self.route()
         self._scenario = list(session.machine.scenario)
+        self.plc_clock = PlcClock(f"{session.machine.source}: [sin800]", data.plc)
+        self.plc_clock.write_bit = self.plc_bit
+        for ev in self._scenario:
+            if ev.kind in ("timer", "counter"):
+                self.plc_clock.parse_event(ev.kind, ev.data, ev.time)  # faults in the scenario before the run
         self.m_functions = {f"M{int(k)}": dict(v) for k, v in sec.get("m_functions", {}).items()}
         self.gearbox = Gearbox(self.kernel, data.gear, data.gears)
         # G96 takes the radius from X; axis 1 may be programmed as a diameter (as for PREP CYC)
@@ -108,8 +116,11 @@ class Channel(SysMem, SpindleReads):
         plain_aux = canon.aux
 
         def aux(code, src):
-            """M functions the PLC answers: gear stages (M40-M45), R parameters it loads (m_functions)."""
+            """M functions the PLC answers: gear stages (M40-M45), R parameters it loads (m_functions),
+            timers and counters wired to them."""
             plain_aux(code, src)
+            self.advance_scenario()  # what the PLC did before this block
+            self.plc_clock.m_function(code, self.session.machine.clock.now)
             if code in GEAR_M:
                 self.gearbox.select(code)
             if code in self.m_functions:
@@ -117,6 +128,16 @@ class Channel(SysMem, SpindleReads):
 
         canon.aux = aux
         self.apply_offsets()
+
+    def _strict_power_on(self, source: str) -> None:
+        """strict_nc: R parameters from the machine file and the store keep 8 significant digits too."""
+        R = self.R
+        for n, v in enumerate(R):
+            if v != 0.0:
+                try:
+                    R[n] = nc8(v)
+                except Cl800Error as e:
+                    raise UsageError(f"{source}: [sin800] R{n}: {e}") from None
 
     # -- how decoded blocks reach the kernel ---------------------------------
     def route(self) -> None:
@@ -139,10 +160,14 @@ class Channel(SysMem, SpindleReads):
 
     def execute_angle(self, block: Block) -> None:
         """A block with the programmed angle (PANG or the angle address word)."""
+        self.use_angle()
+        self.execute(block)
+
+    def use_angle(self) -> None:
+        """From the first block with the programmed angle on, blocks are shaped before the kernel."""
         if not self.angle_used:
             self.angle_used = True
             self.route()
-        self.execute(block)
 
     def angle_key(self) -> str:
         return angle_address(self)
@@ -367,9 +392,14 @@ class Channel(SysMem, SpindleReads):
 
     # -- external inputs and the scenario --------------------------------
     def advance_scenario(self) -> None:
+        """Scripted events and PLC timers running out, in time order, up to the current simulated time."""
         now = self.session.machine.clock.now
-        while self._scenario and self._scenario[0].time <= now:
-            self._apply_event(self._scenario.pop(0))
+        scenario = self._scenario
+        expire = self.plc_clock.expire
+        while scenario and scenario[0].time <= now:
+            expire(scenario[0].time)
+            self._apply_event(scenario.pop(0))
+        expire(now)
 
     def _apply_event(self, ev) -> None:
         d = ev.data
@@ -380,7 +410,9 @@ class Channel(SysMem, SpindleReads):
             else:
                 self.data.inputs[byte] &= ~(1 << bit)
         elif ev.kind == "plc":
-            self.plc_set_event(d)
+            self.plc_set_event(d, ev.time)
+        elif ev.kind in ("timer", "counter"):
+            self.plc_clock.act(*self.plc_clock.parse_event(ev.kind, d, ev.time), ev.time)
         elif ev.kind == "alarm":
             self.data.alarms.append((int(d.get("number", 0)), self.data.channel))
         elif ev.kind == "probe":

@@ -11,9 +11,11 @@ from __future__ import annotations
 import math
 
 from ...diagnostics import RuntimeFault
+from ...nc.block import Block
 from ...nc.dynamics import path_limits, trapezoid_distance, trapezoid_time
 from .contour import check_window, contour_elements, intersect
 from .ncdata import Cl800Error, int_to_pattern, nc8, pattern_to_int
+from .rotation import angle_address, block_frame, machine_frame, program_frame, program_point
 from .spindle import MASTER_SPINDLE
 
 #: code -> (area, width, (lo, hi) address range); width: word, byte, bit
@@ -152,6 +154,11 @@ class SysMem:
         else:
             R[target] = fix(value)
 
+    def store(self, first: int, values: list[float]) -> None:
+        """Results of an NC function into R<first>... (8 significant digits under strict_nc)."""
+        fix = nc8 if self.strict else float
+        self.R[first:first + len(values)] = [fix(v) for v in values]
+
     def _read(self, code: str, target: int, args: tuple):
         sub, fn = code[1], code[2]
         d = self.data
@@ -175,6 +182,8 @@ class SysMem:
             if self.session.machine.axes[i].rotary:
                 return [pos % 360.0, float(math.floor(pos / 360.0))]
             return pos
+        if code in ("367", "36a", "36b"):
+            self._own_channel(args[0])  # ACAS, ACD, ACG
         if code == "367":
             plane = self.g16_plane or {17: (1, 2, 3), 18: (3, 1, 2), 19: (2, 3, 1)}[self.kernel.plane]
             out = [float(a + (128 if m else 0)) for a, m in zip(plane, self.g16_minus)]
@@ -184,6 +193,7 @@ class SysMem:
         if code == "36b":
             return self._acg(_rng("G group", args[1], 0, 23))
         if code == "371":
+            self._own_channel(args[0], independent=99)
             return d.sob.get(f"{_i(args[0])}:{_i(args[1])}", d.sob.get(str(_i(args[1])), 0.0))
         if code == "372":
             return float(d.channel)
@@ -215,11 +225,20 @@ class SysMem:
 
     def _channel_args(self, area: str, args: tuple) -> tuple:
         if area in CHANNEL_ARG:
-            ch = _rng("channel", args[0], 0, 16)
-            if ch not in (0, self.data.channel):
-                raise Cl800Error(f"channel {ch} is not on this NC CPU")
+            self._own_channel(args[0])
             return args[1:]
         return args
+
+    def _own_channel(self, v: float, independent: int | None = None) -> None:
+        """A channel operand (0 = own channel, 0-16): the simulated NC CPU runs only this channel, so any
+        other channel's system memory is on another CPU, the "CL 800 error" (L2351, L2553, L2693).
+        ``independent``: the number that means channel-independent data (SOB: 99)."""
+        ch = _i(v)
+        if ch == independent:
+            return
+        _rng("channel", ch, 0, 16)
+        if ch not in (0, self.data.channel):
+            raise Cl800Error(f"channel {ch} is not on this NC CPU")
 
     def _to(self, args: tuple) -> list[float]:
         top_area = {"810": 0, "820": 0, "850": 8, "880": 16}[self.data.control]
@@ -371,11 +390,24 @@ class SysMem:
             raise RuntimeFault(str(n), f"cycle alarm {n} (ALNZ)")
 
     # -- PLC (850/880) -----------------------------------------------------
-    def _plc(self, v: float) -> dict:
+    def _plc_no(self, v: float) -> int:
+        """The PLC number; scripted PLC events up to now have happened when the NC looks at a PLC."""
         if self.data.control not in ("850", "880"):
             raise Cl800Error("PLC access needs a SINUMERIK 850 or 880")
         n = _rng("PLC number", v, 1, 4 if self.data.control == "880" else 2)
-        return self.data.plc.setdefault(n, {})
+        self.advance_scenario()
+        return n
+
+    def _plc(self, v: float) -> dict:
+        return self.data.plc.setdefault(self._plc_no(v), {})
+
+    def _put_byte(self, plc_no: int, area: str, byte: int, bits: int, when: float | None = None) -> None:
+        """Store a PLC I/Q/P/F byte; rising edges of bits wired to timers and counters drive them."""
+        plc = self.data.plc.setdefault(plc_no, {})
+        old = self._byte(plc, area, byte, True)
+        plc.setdefault(area, {})[str(byte)] = int_to_pattern(bits)
+        now = self.session.machine.clock.now if when is None else when
+        self.plc_clock.byte_changed(plc_no, area, byte, old, bits & 0xFF, now)
 
     def _byte(self, plc: dict, area: str, byte: int, writing: bool = False) -> int:
         table = plc.setdefault(area, {})
@@ -385,6 +417,11 @@ class SysMem:
             return 0
         v = table[str(byte)]
         return pattern_to_int(float(v)) if isinstance(v, (int, float)) else int(str(v), 2)
+
+    def plc_bit(self, plc_no: int, area: str, byte: int, bit: int, value: int, when: float | None = None) -> None:
+        """Set or clear one PLC bit (at time ``when``, default now)."""
+        bits = self._byte(self.data.plc.setdefault(plc_no, {}), area, byte, True)
+        self._put_byte(plc_no, area, byte, bits | (1 << bit) if value else bits & ~(1 << bit), when)
 
     def _dw(self, plc: dict, db: float, dw: float) -> int:
         b = _i(db)
@@ -416,8 +453,10 @@ class SysMem:
             word = (self._byte(plc, area, n) << 8) | self._byte(plc, area, n + 1)
             return _from_dim(word, 16, _i(args[2]))
         if code in ("3a4", "3a5"):
-            table = plc.setdefault("T" if code == "3a4" else "C", {})
-            return float(table.get(str(_rng("number", args[1], 0, 255)), 0.0))
+            no, number = _i(args[0]), _rng("timer/counter number", args[1], 0, 255)
+            if code == "3a4":  # seconds, 2 digits after the decimal point (L2852)
+                return self.plc_clock.timer_seconds(no, number, self.session.machine.clock.now)
+            return self.plc_clock.counter_value(no, number)
         if code in ("3b0", "3b1", "3b2"):
             n = _i(args[3]) if code != "3b2" else 2
             words = [self._dw(plc, args[1], args[2] + k) for k in range(n)]
@@ -436,15 +475,13 @@ class SysMem:
         raise Cl800Error(f"@{code} is not available")
 
     def plc_write(self, code: str, where: tuple, value: float) -> None:
-        plc = self._plc(where[0])
+        no = self._plc_no(where[0])
+        plc = self.data.plc.setdefault(no, {})
         if code == "482":
             byte = _rng("byte", where[1], 0, 255)
             if value not in (0.0, 1.0):
                 raise Cl800Error(f"bit value {value:g} is not 0 or 1")
-            bits = self._byte(plc, "F", byte, True)
-            k = _rng("bit", where[2], 0, 7)
-            bits = bits | (1 << k) if value else bits & ~(1 << k)
-            plc.setdefault("F", {})[str(byte)] = int_to_pattern(bits)
+            self.plc_bit(no, "F", byte, _rng("bit", where[2], 0, 7), int(value))
         elif code == "483":
             w = self._dw(plc, where[1], where[2])
             k = _rng("bit", where[3], 0, 15)
@@ -452,8 +489,7 @@ class SysMem:
                 raise Cl800Error(f"bit value {value:g} is not 0 or 1")
             self._set_dw(plc, where[1], where[2], w | (1 << k) if value else w & ~(1 << k))
         elif code == "493":
-            pattern_to_int(value)
-            plc.setdefault("F", {})[str(_rng("byte", where[1], 0, 255))] = value
+            self._put_byte(no, "F", _rng("byte", where[1], 0, 255), pattern_to_int(value))
         elif code in ("494", "495"):
             w = self._dw(plc, where[1], where[2])
             b = pattern_to_int(value)
@@ -462,8 +498,8 @@ class SysMem:
         elif code == "4a3":
             n = _rng("word", where[1], 0, 254)
             raw = _to_dim(value, 16, _i(where[2]))
-            plc.setdefault("F", {})[str(n)] = int_to_pattern(raw >> 8)
-            plc["F"][str(n + 1)] = int_to_pattern(raw & 0xFF)
+            self._put_byte(no, "F", n, raw >> 8)
+            self._put_byte(no, "F", n + 1, raw & 0xFF)
         elif code in ("4b0", "4b1", "4b2"):
             if code == "4b2":
                 import struct
@@ -488,18 +524,17 @@ class SysMem:
     def _set_dw(self, plc: dict, db: float, dw: float, value: int) -> None:
         plc["DB"][str(_i(db))][_i(dw)] = value & 0xFFFF
 
-    def plc_set_event(self, d: dict) -> None:
-        plc = self.data.plc.setdefault(int(d.get("plc", 1)), {})
+    def plc_set_event(self, d: dict, when: float) -> None:
+        """A scripted change of a PLC I/Q/P/F bit or byte (``[[scenario]]`` kind "plc")."""
+        no = int(d.get("plc", 1))
         area = str(d.get("area", "I")).upper()
-        table = plc.setdefault(area, {})
-        byte = str(int(d.get("byte", 0)))
+        byte = int(d.get("byte", 0))
         if "bit" in d:
-            bits = self._byte(plc, area, int(byte), True)
-            k = int(d["bit"])
-            bits = bits | (1 << k) if d.get("value", 1) else bits & ~(1 << k)
-            table[byte] = int_to_pattern(bits)
-        else:
-            table[byte] = float(d.get("value", 0))
+            self.plc_bit(no, area, byte, int(d["bit"]), 1 if d.get("value", 1) else 0, when)
+            return
+        value = d.get("value", 0)
+        self._put_byte(no, area, byte, int(value, 2) if isinstance(value, str) else pattern_to_int(float(value)),
+                       when)
 
     def rotation_active(self) -> bool:
         """A settable or programmable coordinate rotation is selected (some angle is not 0)."""
@@ -516,9 +551,8 @@ class SysMem:
             target = args[0]
             if target > 998:
                 raise Cl800Error("PREP CYC needs two result registers")
-            self.R[target] = 1.0 if self.kernel.scale == 1.0 else 0.03937
             diameter = self.data.areas["nc_md"].get("diameter_axis1", 0.0)
-            self.R[target + 1] = 2.0 if diameter else 1.0
+            self.store(target, [1.0 if self.kernel.scale == 1.0 else 0.03937, 2.0 if diameter else 1.0])
             return
         if code == "710":
             self.prep_ref(int(args[0]), int(args[1]))
@@ -552,27 +586,27 @@ class SysMem:
         elements, i = cursor
         if i >= len(elements):
             last = elements[-1] if elements else [R[rm + 1], R[rm + 2]] * 2 + [0.0, 0.0, 1.0, 2.0]
-            R[rn:rn + 8] = last[2:4] + last[2:4] + [0.0, 0.0, last[6], 2.0]
+            self.store(rn, last[2:4] + last[2:4] + [0.0, 0.0, last[6], 2.0])
             return
-        R[rn:rn + 8] = elements[i]
+        self.store(rn, elements[i])
         cursor[1] = i + 1
 
-    def int_sec(self, rm: int, rn: int, words: dict, line: int) -> None:
-        """@711 Rm Rn Rr: intersect element Rn..Rn+7 with the path to this block's destination."""
+    def int_sec(self, rm: int, rn: int, g: tuple, words: dict, line: int) -> None:
+        """@711 Rm Rn Rr: intersect element Rn..Rn+7 with the path to this block's destination.
+
+        The element (PREP REF's output: the contour as programmed), the destination and the result are
+        in the program's frame; so is the start point, the current position turned back by the
+        block's coordinate rotation."""
         check_window(rn, 8, ((0, 192), (900, 992)), "INT SEC input")
         check_window(rm, 3, ((0, 197), (900, 997)), "INT SEC output")
         self.run_buffer()  # the path starts at the end point of the blocks decoded so far
         h_name, v_name = self._plane_axes()
         if h_name not in words or v_name not in words:
             raise Cl800Error(f"INT SEC needs both axes {v_name} and {h_name} of the destination in its block")
-        pos = self.kernel.workpiece_position()
-        here = (pos[v_name], pos[h_name])
-        hit = intersect(self.R[rn:rn + 8], here, (words[v_name], words[h_name]))
-        R = self.R
-        if hit is None:
-            R[rm] = 0.0
-        else:
-            R[rm], R[rm + 1], R[rm + 2] = 1.0, hit[0], hit[1]
+        theta = block_frame(self, Block(tuple(g), (), words, None, None, None))[3]
+        h, v = program_point(self, h_name, v_name, theta)
+        hit = intersect(self.R[rn:rn + 8], (v, h), (words[v_name], words[h_name]))
+        self.store(rm, [0.0] if hit is None else [1.0, hit[0], hit[1]])
 
     # -- REL / INTA (L4400-4436) ---------------------------------------------
     def read_in_inhibit(self, byte: float, bit: float, line: int) -> None:
@@ -584,7 +618,9 @@ class SysMem:
     def inta(self, axis: float, byte: float, bit: float, g: tuple, words: dict, line: int) -> dict:
         """@736 INTA: the block's axis words, cut where the motion stops when input byte.bit reaches the
         level (bit >= 0: 1, bit < 0: 0); unchanged when the position is reached first. Axis 0 = all axes of
-        the block; the axes interpolating with the named one stop with it, which here are all of them."""
+        the block; the axes interpolating with the named one stop with it, which here are all of them.
+        The cut is computed on the traversing axes (under a rotation both plane axes) and handed back in
+        the program's frame."""
         self.run_buffer()  # the block starts where the blocks before it end
         k = self.kernel
         ax = _rng("INTA axis number", axis, 0, 24)
@@ -594,7 +630,8 @@ class SysMem:
         self.ext_input(b, n)  # checks byte 1/2, bit 0-7
         if ax > k.n_axes:
             raise Cl800Error(f"INTA: axis {ax} does not exist")
-        moving = [name for name in words if name in k.axis_of]
+        turned, frame = machine_frame(self, g, words)  # the axes that traverse, in their own frame
+        moving = [name for name in turned if name in k.axis_of]
         if not moving or (ax and k.axis_names[ax - 1] not in moving):
             self._inta_until = None
             return words
@@ -608,7 +645,7 @@ class SysMem:
         end = list(start)
         for name in moving:
             i = k.axis_of[name]
-            end[i] = words[name] if absolute or machine else start[i] + words[name]
+            end[i] = turned[name] if absolute or machine else start[i] + turned[name]
         deltas = [(e - s) * scale for s, e in zip(start, end)]
         length = math.sqrt(sum(d * d for d in deltas))
         feed = words["F"] * scale if "F" in words else k.feed  # mm/min
@@ -623,10 +660,13 @@ class SysMem:
         if hit is None:
             return words
         frac = trapezoid_distance(length, v, a, hit - now) / length if length else 0.0
-        out = dict(words)
+        cut = {}
         for name in moving:
             i = k.axis_of[name]
-            out[name] = start[i] + frac * (end[i] - start[i]) if absolute or machine else frac * words[name]
+            cut[name] = start[i] + frac * (end[i] - start[i]) if absolute or machine else frac * turned[name]
+        angle = angle_address(self) if self.angle_used else None  # resolved into the axis words
+        out = {n: v for n, v in words.items() if n not in k.axis_of and n != angle}
+        out.update(cut if machine else program_frame(cut, frame))
         return out
 
     def inta_done(self) -> None:
@@ -651,31 +691,71 @@ class SysMem:
         return None
 
     # -- MEAS M --------------------------------------------------------------
-    def meas(self, target: int, probe: float, words: dict, line: int) -> dict:
-        """@720: the block's axes move until the probe switches; machine positions go to R<target>..."""
+    def meas(self, target: int, probe: float, g: tuple, words: dict, line: int) -> dict:
+        """@720: the block's axes move until the probe switches; their actual values relative to machine
+        zero go to R<target>... (L4357-4396). The traversing axes are those of the block as it reaches the
+        interpolation: under a coordinate rotation a plane axis word moves both axes of the plane. The
+        block's words come back cut at the trigger point, in the program's frame."""
         self.run_buffer()  # the measuring block starts where the blocks before it end
         probe = _i(probe)
         k = self.kernel
         if probe not in (1, 2):
             raise Cl800Error(f"MEAS M: probe input {probe} is not 1 or 2")
-        moving = sorted((n for n in words if n in k.axis_of), key=k.axis_of.get)
+        machine = 53 in g
+        turned, frame = machine_frame(self, g, words)
+        moving = sorted((n for n in turned if n in k.axis_of), key=k.axis_of.get)
         if len(moving) > 2:
-            raise Cl800Error("MEAS M: at most 2 axes may move in the measuring block")
-        if k.motion not in (0, 1):
+            raise Cl800Error(f"MEAS M: at most 2 axes may move in the measuring block ({', '.join(moving)})")
+        if next((x for x in reversed(g) if x in (0, 1, 2, 3)), k.motion) not in (0, 1):
             raise Cl800Error("MEAS M needs G00 or G01")
-        hit = self._probe_hit(probe)
-        pos = hit.get("position", {})
-        out = dict(words)
-        reg = target
+        scale = 25.4 if 70 in g else (1.0 if 71 in g else k.scale)
+        absolute = True if 90 in g else (False if 91 in g else k.absolute)
+        start = {n: k.machine_pos[k.axis_of[n]] for n in moving}
+        end = {}
         for name in moving:
-            if name not in pos:
-                raise RuntimeFault("SIN007", f"MEAS M: the probe event gives no position for axis {name}")
-            machine_value = float(pos[name])
             i = k.axis_of[name]
-            self.load_r(reg, machine_value / k.scale)  # seen by decoding only after STOP DEC
-            reg += 1
-            prog = machine_value - k.offset_vec[i]
-            out[name] = prog / k.scale if k.absolute else (prog - k.prog[i]) / k.scale
+            value = turned[name] * scale
+            end[name] = value if machine else k.offset_vec[i] + (value if absolute else k.prog[i] + value)
+        hit = self._trigger_point(self._probe_hit(probe), start, end)
+        angle = angle_address(self) if self.angle_used else None  # resolved into the axis words
+        out = {n: v for n, v in words.items() if n not in k.axis_of and n != angle}
+        cut = {}
+        reg = target
+        axes = self.session.machine.axes
+        for name in moving:
+            i = k.axis_of[name]
+            # seen by decoding only after STOP DEC; a rotary axis as position within a rotation and number
+            # of rotations (L4366-4369), as ACPM
+            values = [hit[name] % 360.0, float(math.floor(hit[name] / 360.0))] if axes[i].rotary \
+                else [hit[name] / scale]
+            for value in values:
+                if reg > 999:
+                    raise Cl800Error(f"MEAS M: result register R{reg} does not exist")
+                self.load_r(reg, value)
+                reg += 1
+            prog = hit[name] - (0.0 if machine else k.offset_vec[i])
+            cut[name] = prog / scale if absolute or machine else (prog - k.prog[i]) / scale
+        out.update(cut if machine else program_frame(cut, frame))
+        return out
+
+    @staticmethod
+    def _trigger_point(hit: dict, start: dict, end: dict) -> dict:
+        """Machine positions of the traversing axes when the probe switches: those the probe event gives;
+        the others on the block's straight path at the point the given ones locate."""
+        pos = {n: float(v) for n, v in hit.get("position", {}).items() if n in start}
+        known = next((n for n in pos if abs(end[n] - start[n]) > 1e-12), None)
+        out = {}
+        for name in start:
+            if name in pos:
+                out[name] = pos[name]
+            elif known is None:
+                raise RuntimeFault("SIN007", f"MEAS M: the probe event gives no position for axis {name}")
+            else:
+                t = (pos[known] - start[known]) / (end[known] - start[known])
+                if not -1e-9 <= t <= 1.0 + 1e-9:
+                    raise RuntimeFault("SIN007", f"MEAS M: the probe position {known} = {pos[known]:g} is not on "
+                                                 f"the block's path ({start[known]:g} to {end[known]:g})")
+                out[name] = start[name] + t * (end[name] - start[name])
         return out
 
     def _probe_hit(self, probe: int) -> dict:
@@ -703,6 +783,7 @@ class SysMem:
         elif code == "a20":
             self.v24.append(f"PORT {_rng('V24 interface', args[0], 1, 4)}")
         elif code == "a27":
+            self._own_channel(args[0])
             lo, hi = _rng("R number", args[1], 0, 999), _rng("R number", args[2], 0, 999)
             for n in range(lo, hi + 1):
                 self.v24.append(f"R{n}={self.R[n]:g}")
