@@ -56,21 +56,22 @@ class Commands:
             return False
         sysp = tk.sysp
         axes = self.axes
-        v = sysp["TRVL"] * min(axes[ax].ovr for ax, _ in items)
         acc = sysp["TRAC"]
-        if v <= 0 or acc <= 0:
-            return False
         pos = list(map(_GET_M, axes))
         start = tuple(pos)
         c = self.counts
         l2 = 0.0
+        ovr = math.inf
         for ax, val in items:
             a = axes[ax]
+            if a.ovr < ovr:
+                ovr = a.ovr
             p = round(((a.target + val) if relative else (val + a.ref + a.zerooffset)) * c) / c
             d = p - pos[ax]
             l2 += d * d
             pos[ax] = p
-        if l2 == 0.0:
+        v = sysp["TRVL"] * ovr
+        if l2 == 0.0 or v <= 0 or acc <= 0:
             return False
         length = math.sqrt(l2)
         if length * acc >= v * v:
