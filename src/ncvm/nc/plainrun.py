@@ -20,6 +20,7 @@ radius, an arc without centre words) is left to the caller, who hands it to
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 from itertools import repeat
 from operator import attrgetter
 
@@ -28,18 +29,28 @@ import numpy as np
 from . import arcs
 from .block import PLAIN_WORDS, Block, PlainRun
 from .canon import ArcSpec, MoveBatch
+from .kernel import PLANES
 
 RAPID, FEED, ARC = 0, 1, 2
 HALF_PI = math.pi / 2
 SQRT2 = math.sqrt(2.0)
 
 
+@dataclass
+class _Arcs:
+    """The arcs among a run's moves, column-wise: what the kernel's ``_arc`` works out one by one."""
+
+    specs: list  # ArcSpec per arc
+    angle: np.ndarray  # sweep, radians
+    length: np.ndarray
+    extent: np.ndarray  # rows of (lo_a, hi_a, lo_b, hi_b)
+    time: np.ndarray
+
+
 def _carry(present: np.ndarray, values: np.ndarray, initial: float) -> np.ndarray:
     """Modal values: each row's own value where present, else the last one before it, else ``initial``."""
-    n = len(present)
-    last = np.maximum.accumulate(np.where(present, np.arange(n), -1))
-    out = np.where(last >= 0, values[np.maximum(last, 0)], initial)
-    return out
+    last = np.maximum.accumulate(np.where(present, np.arange(len(present)), -1))
+    return np.where(last >= 0, values[np.maximum(last, 0)], initial)
 
 
 def execute_columns(k, run: PlainRun, lo: int, hi: int) -> int | None:
@@ -52,110 +63,86 @@ def execute_columns(k, run: PlainRun, lo: int, hi: int) -> int | None:
     """
     if not k.columns_ok():
         return lo if lo < hi else None
-    n_axes = k.n_axes
     scale = k.scale
-    g = run.g[lo:hi]
     words = {a: col[lo:hi] for a, col in run.words.items()}
     present = {a: ~np.isnan(col) for a, col in words.items()}
-    rows = hi - lo
-    motion = _carry(g >= 0, g, k.motion).astype(np.int64)
-    f = words["F"] * scale if scale != 1.0 else words["F"]
-    feed = _carry(present["F"], f, k.feed)
-
-    # programmed targets per axis (the words of axes this machine lacks are ignored, as block by block)
-    moved = np.zeros(rows, dtype=bool)
-    prog = []
-    for i, name in enumerate(k.axis_names):
-        col = words.get(name)
-        if col is None or not present[name].any():
-            prog.append(np.full(rows, k.prog[i]))
-            continue
-        has = present[name]
-        moved |= has
-        v = col * scale if scale != 1.0 else col
-        if k.absolute:
-            prog.append(_carry(has, v, k.prog[i]))
-        else:
-            steps = np.concatenate(([k.prog[i]], np.where(has, v, 0.0)))
-            prog.append(np.cumsum(steps)[1:])
+    g = run.g[lo:hi]
+    motion = _carry(g >= 0, g, k.motion)
+    feed = _carry(present["F"], words["F"] * scale if scale != 1.0 else words["F"], k.feed)
+    prog, moved = _targets(k, words, present, hi - lo)
     is_arc = motion >= 2
     moved |= is_arc & (present["I"] | present["J"] | present["K"])
 
-    # rows the kernel must see itself: motion at feed without a feed, arcs without centre or plane axes
-    needs_feed = moved & (motion >= 1) & (feed <= 0.0)
-    an, bn, _nn, iw, jw = _plane(k)
-    a_ix, b_ix = k.axis_of.get(an), k.axis_of.get(bn)
-    arc_rows = moved & is_arc
-    if a_ix is None or b_ix is None:
-        no_arc = arc_rows
-    else:
-        no_arc = arc_rows & ~(present[iw] | present[jw])
-    stop = np.flatnonzero(needs_feed | no_arc)
-    end_row = int(stop[0]) if len(stop) else rows
+    # the first row the kernel must see itself: motion at feed without a feed, an arc without centre or plane axes
+    an, bn, _nn, iw, jw = PLANES[k.plane]
+    a, b = k.axis_of.get(an), k.axis_of.get(bn)
+    no_centre = is_arc if a is None or b is None else is_arc & ~(present[iw] | present[jw])
+    judged = np.flatnonzero(moved & (((motion >= 1) & (feed <= 0.0)) | no_centre))
+    end_row = int(judged[0]) if len(judged) else hi - lo
 
     idx = np.flatnonzero(moved[:end_row])  # the rows that move
     if len(idx) == 0:
-        return _finish(k, motion, feed, prog, end_row, lo, hi, None, None)
-    offsets = k.offset_vec
-    end = np.empty((len(idx), n_axes))
-    for i in range(n_axes):
-        end[:, i] = prog[i][idx] + offsets[i]
-    start = np.empty_like(end)
-    start[0] = k.machine_pos
-    start[1:] = end[:-1]
+        return _finish(k, motion, feed, prog, end_row, lo, hi, None)
+    end = np.column_stack([p[idx] + o for p, o in zip(prog, k.offset_vec)])
+    start = np.vstack((np.asarray(k.machine_pos, dtype=float), end[:-1]))
     kind = np.minimum(motion[idx], ARC).astype(np.int8)
     move_feed = feed[idx]
     times = np.zeros(len(idx))
-
     arc_pos = np.flatnonzero(kind == ARC)
-    arc_info = None
+    found = None
     if len(arc_pos):
-        arc_info = _arcs(k, run, words, idx, arc_pos, start, end, move_feed, motion, a_ix, b_ix, iw, jw, scale)
-        if arc_info["bad"] is not None:  # the first arc whose end lies on another radius: stop before it
-            cut = arc_info["bad"]
-            end_row = int(idx[arc_pos[cut]])
-            return _execute_columns_until(k, run, lo, lo + end_row)
-        times[arc_pos] = arc_info["time"]
+        centre_words = (words[iw][idx[arc_pos]], words[jw][idx[arc_pos]])
+        found = _arcs(k, arc_pos, start, end, centre_words, move_feed[arc_pos], motion[idx[arc_pos]] == 2, a, b)
+        if isinstance(found, int):  # an arc whose end lies on another radius: the rows before it, then stop
+            stop = lo + int(idx[arc_pos[found]])
+            before = execute_columns(k, run, lo, stop) if stop > lo else None  # passes: nothing before is judged
+            return stop if before is None else before
+        times[arc_pos] = found.time
     straight = np.flatnonzero(kind != ARC)
-    if len(straight):
-        times[straight] = _straight_times(k, start[straight], end[straight], kind[straight] == RAPID,
-                                          move_feed[straight])
+    times[straight] = _straight_times(k, start[straight], end[straight], kind[straight] == RAPID,
+                                      move_feed[straight])
 
     clock = k.machine.clock
-    clock.now = float(np.cumsum(np.concatenate(([clock.now], times)))[-1])
-    specs = None
-    if arc_info is not None:
-        specs = {int(p): spec for p, spec in zip(arc_pos, arc_info["specs"])}
-    k.canon.move_batch(MoveBatch(kind, start, end, move_feed, run.file, run.lines[lo:hi][idx], specs,
-                            arc_info["angle"] if arc_info else None, arc_info["length"] if arc_info else None,
-                            arc_info["extent"] if arc_info else None))
-    return _finish(k, motion, feed, prog, end_row, lo, hi, idx, end)
+    clock.now = float(np.cumsum(np.concatenate(([clock.now], times)))[-1])  # in move order, as one by one
+    batch = MoveBatch(kind, start, end, move_feed, run.file, run.lines[lo:hi][idx])
+    if found is not None:
+        batch.arcs = dict(zip(arc_pos.tolist(), found.specs))
+        batch.arc_angle, batch.arc_length, batch.arc_extent = found.angle, found.length, found.extent
+    k.canon.move_batch(batch)
+    return _finish(k, motion, feed, prog, end_row, lo, hi, end)
 
 
-def _execute_columns_until(k, run, lo, stop) -> int:
-    """Execute rows before ``stop`` as columns and report ``stop`` as the row the kernel must judge."""
-    if stop > lo:
-        inner = execute_columns(k, run, lo, stop)
-        if inner is not None:  # cannot happen: the rows before stop passed every check
-            return inner
-    return stop
+def _targets(k, words, present, rows: int) -> tuple[list, np.ndarray]:
+    """Programmed position per axis and row (G90 carried forward, G91 summed), and which rows name an axis.
+
+    The words of axes this machine lacks are ignored, as block by block.
+    """
+    moved = np.zeros(rows, dtype=bool)
+    prog = []
+    for i, name in enumerate(k.axis_names):
+        has = present.get(name)
+        if has is None or not has.any():
+            prog.append(np.full(rows, k.prog[i]))
+            continue
+        moved |= has
+        v = words[name] * k.scale if k.scale != 1.0 else words[name]
+        if k.absolute:
+            prog.append(_carry(has, v, k.prog[i]))
+        else:  # summed from the start value, in row order: the same float operations as one by one
+            prog.append(np.cumsum(np.concatenate(([k.prog[i]], np.where(has, v, 0.0))))[1:])
+    return prog, moved
 
 
-def _finish(k, motion, feed, prog, end_row, lo, hi, idx, end) -> int | None:
+def _finish(k, motion, feed, prog, end_row, lo, hi, end) -> int | None:
     """Leave the kernel's modal state and position as the last executed row left them."""
     if end_row:
         last = end_row - 1
         k.motion = int(motion[last])
         k.feed = float(feed[last])
-        if idx is not None and len(idx):
+        if end is not None:
             k.prog = [float(p[last]) for p in prog]
             k.machine_pos = tuple(end[-1].tolist())
     return None if end_row == hi - lo else lo + end_row
-
-
-def _plane(k):
-    from .kernel import PLANES
-    return PLANES[k.plane]
 
 
 def _straight_times(k, start, end, rapid, feed) -> np.ndarray:
@@ -189,46 +176,41 @@ def _trapezoid(length, v, a) -> np.ndarray:
         return np.where(length > 0.0, t, 0.0)
 
 
-def _arcs(k, run, words, idx, arc_pos, start, end, move_feed, motion, a, b, iw, jw, scale) -> dict:
-    """Centre, radius check, sweep, length, extent and time of every arc among the moves (I/J/K centres)."""
-    rows = idx[arc_pos]
+def _arcs(k, arc_pos, start, end, centre_words, feed, cw, a: int, b: int) -> _Arcs | int:
+    """Centre (I/J/K words), radius check, sweep, length, extent and time of the arcs at ``arc_pos`` among
+    the moves; the index (among the arcs) of the first whose end lies on another radius, if any."""
     sa, sb = start[arc_pos, a], start[arc_pos, b]
     ea, eb = end[arc_pos, a], end[arc_pos, b]
-    ca = sa + np.nan_to_num(words[iw][rows]) * scale
-    cb = sb + np.nan_to_num(words[jw][rows]) * scale
+    ca = sa + np.nan_to_num(centre_words[0]) * k.scale
+    cb = sb + np.nan_to_num(centre_words[1]) * k.scale
     r0 = np.hypot(sa - ca, sb - cb)
-    r1 = np.hypot(ea - ca, eb - cb)
-    diff = np.abs(r0 - r1)
-    bad = ((diff > arcs.RADIUS_ABS_TOL) & (diff > arcs.RADIUS_REL_TOL * r0)) | (r0 < arcs.SAME_POINT)
-    first_bad = np.flatnonzero(bad)
-    if len(first_bad):
-        return {"bad": int(first_bad[0])}
-    cw = motion[rows] == 2
+    diff = np.abs(r0 - np.hypot(ea - ca, eb - cb))
+    bad = np.flatnonzero(((diff > arcs.RADIUS_ABS_TOL) & (diff > arcs.RADIUS_REL_TOL * r0)) | (r0 < arcs.SAME_POINT))
+    if len(bad):
+        return int(bad[0])
     a0 = np.arctan2(sb - cb, sa - ca)
-    a1 = np.arctan2(eb - cb, ea - ca)
-    angle = _sweep(a1 - a0, cw, np.hypot(ea - sa, eb - sb) < arcs.SAME_POINT)
-    others = [i for i in range(k.n_axes) if i != a and i != b]
-    helix = np.zeros(len(rows))
-    for i in others:
-        helix = helix + (end[arc_pos, i] - start[arc_pos, i]) ** 2
+    angle = _sweep(np.arctan2(eb - cb, ea - ca) - a0, cw, np.hypot(ea - sa, eb - sb) < arcs.SAME_POINT)
+    helix = np.zeros(len(arc_pos))
+    for i in range(k.n_axes):
+        if i != a and i != b:
+            helix = helix + (end[arc_pos, i] - start[arc_pos, i]) ** 2
     helix = np.sqrt(helix)
     planar = np.abs(angle) * r0
     length = np.where(helix != 0.0, np.hypot(planar, helix), planar)
-    extent = _extent(sa, sb, ca, cb, r0, a0, angle)
-    # an arc moves both plane axes at once: timed as a straight move of the same length (NcKernel._arc)
+    # an arc moves both plane axes at once: timed as a straight move of the same length (NcKernel._arc),
+    # the axes limiting it in axis order
     dyn = k.dyn
     with np.errstate(divide="ignore", invalid="ignore"):
         chord = length / SQRT2
         share = np.abs(chord) / length
-        v = move_feed[arc_pos] / 60.0
-        acc = np.full(len(rows), math.inf)
-        for i in (a, b):
-            nz = chord != 0.0
+        v = feed / 60.0
+        acc = np.full(len(arc_pos), math.inf)
+        nz = chord != 0.0
+        for i in sorted((a, b)):
             v = np.where(nz & (dyn.max_feed[i] < v * share), dyn.max_feed[i] / share, v)
             acc = np.where(nz & (dyn.accel[i] < acc * share), dyn.accel[i] / share, acc)
-    time = _trapezoid(length, v, acc)
     specs = [ArcSpec(a, b, (x, y), c, r) for x, y, c, r in zip(ca.tolist(), cb.tolist(), cw.tolist(), r0.tolist())]
-    return {"bad": None, "specs": specs, "angle": angle, "length": length, "extent": extent, "time": time}
+    return _Arcs(specs, angle, length, _extent(sa, sb, ca, cb, r0, a0, angle), _trapezoid(length, v, acc))
 
 
 def _sweep(d, cw, closed) -> np.ndarray:
