@@ -305,7 +305,7 @@ def execute_segments(kernel, segments, execute=None) -> None:
         if isinstance(seg, PlainRun):
             lo, hi = 0, len(seg)
             while (bad := execute_columns(kernel, seg, lo, hi)) is not None:
-                kernel.execute(seg.block(bad))  # a block that faults: the kernel says how
+                kernel.execute(seg.block(bad))  # a block the columns leave to the kernel (one that faults, or any under G96 or a transformation)
                 lo = bad + 1
         else:
             execute(seg)
