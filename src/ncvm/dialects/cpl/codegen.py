@@ -710,7 +710,10 @@ class Gen:
                 code, ty = self.ex(w.expr)
                 if ty not in NUMERIC + ("?",):
                     raise GenError("CPL032", f"[ ] value of address {w.address} is {_tname(ty)}")
-                if isinstance(w.expr, (A.Var, A.Func)) or ty == "?":
+                e = w.expr
+                if isinstance(e, A.Var) and e.var.cls == "A" and e.var.suffix == "" and not e.index:
+                    code = f"_wtor(P[{int(e.var.name) - 1}])"  # REAL view of a parameter, checked as a word
+                elif isinstance(e, (A.Var, A.Func)) or ty == "?":
                     code = f"_word({code})"
                 if w.address == "G":
                     g_dyn.append(f"_nocall('G', {code})")
@@ -1157,7 +1160,7 @@ INLINE = {
 }
 
 HELPER_NAMES = (
-    "_rt", "_st", "_G", "_PM", "_EP", "_f32", "_toi", "_tor", "_tod", "_tob", "_tos", "_bad_assign", "_cond",
+    "_rt", "_st", "_G", "_PM", "_EP", "_f32", "_toi", "_tor", "_wtor", "_tod", "_tob", "_tos", "_bad_assign", "_cond",
     "_logic", "_lnot", "_ix", "_sv", "_view", "_setf", "_midw", "_dim", "_pdim", "_gfield", "_gset_s", "_pint",
     "_call", "_q", "_q3", "_drain", "_wait", "_Block", "_loose", "_word", "_mval", "_modal", "_modal_call",
     "_runaway", "_hook", "_caseval", "_nocall", "_msin", "_mcos", "_matan", "_msqrt",

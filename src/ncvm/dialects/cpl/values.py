@@ -119,6 +119,16 @@ def word(v):
     raise CplError("CPL032", f"NC word value is {type_name(v)}, not a number")
 
 
+def word_real(v):
+    """``word(to_real(v))`` in one call: a parameter's REAL view as an NC word value (the common case)."""
+    if v.__class__ is float or v.__class__ is int:
+        try:
+            return _unpack(_pack(v))[0]
+        except OverflowError:
+            return f32(v)
+    return word(to_real(v))
+
+
 def logic(op: str, a, b):
     """AND/OR/XOR: logical on BOOLEAN, bitwise on INTEGER, an error when mixed (digest §4.2)."""
     if a is None or b is None:
