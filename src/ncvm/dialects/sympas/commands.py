@@ -306,6 +306,12 @@ class Commands:
         saved_sysp, saved_t = tk.sysp, tk.time
         self.planning_chain = True  # under a feed hold the chain is planned at 100 % and held as a whole
         t = tk.time
+        join = self._running_chain(axes, t)
+        if join is not None:  # planned from its end, then joined to it (_join); meanwhile its axes rest there
+            t = join.t1
+            for ax, p in zip(join.axes, join.final()):
+                self.axes[ax].move = None
+                self.axes[ax].m = p
         for ax in axes:
             mv = self.axes[ax].move
             if mv is not None:
@@ -332,7 +338,7 @@ class Commands:
                     if e[1] == codes["spool_halt"]:
                         for ax in e_axes:
                             self.axes[ax].spool_halted = True
-                    elif not segs:
+                    elif not segs and join is None:
                         self._ssf_action(e[1], e[2])()  # at the spooler head now: runs at once
                     else:
                         ssf_after.append((len(segs), self._ssf_action(e[1], e[2])))
@@ -363,14 +369,17 @@ class Commands:
             self.cfg["busy_move"] = busy
             tk.sysp, tk.time = saved_sysp, saved_t
             self.planning_chain = False
-        if not segs:
-            return
         mode = self.sys["MODEREG"]
-        retime(self.axes, segs, targets, [mode] * len(segs))
         for m in segs:
             m.retired = False
             self.live.discard(m)
-        chain = Chain(segs, full0)
+        if join is not None:
+            self._join(tk, join, segs, targets, mode, ssf_after)
+            return
+        if not segs:
+            return
+        retime(self.axes, segs, targets, [mode] * len(segs))
+        chain = Chain(segs, full0, targets, [mode] * len(segs))
         if self.path_override(chain.axes) <= 0.0:
             chain.override(chain.t0, 0.0, 0.0)
         self.live.add(chain)
@@ -378,21 +387,73 @@ class Commands:
             a = self.axes[ax]
             a.move = chain
         for k, act in ssf_after:
-            self._ssf_at_end(chain, segs[k - 1], act, segs[k - 1].t1)
+            self._arm_ssf(chain, segs[k - 1], act)
 
-    def _ssf_at_end(self, chain, seg, act, tick: float) -> None:
+    def _running_chain(self, axes, t: float):
+        """The spooled chain these axes are running at ``t`` that new segments can join (the spooler
+        goes on with them without stopping), or None: then they start after whatever runs."""
+        moves = {id(a.move): a.move for a in (self.axes[ax] for ax in axes) if a.move is not None and a.move.t1 > t}
+        if len(moves) != 1:
+            return None
+        mv = next(iter(moves.values()))
+        return mv if isinstance(mv, Chain) and mv.joinable() else None
+
+    def _join(self, tk, chain, segs: list, targets: list, mode: int, ssf_after: list) -> None:
+        """Segments spooled and started while ``chain`` runs continue it: its segments not begun yet, and
+        the running one if it has not begun its final ramp (Profile.replannable), are planned anew with
+        the new ones by the look-ahead, so the axes do not stop at the old end (digest §10.5, L1391)."""
+        now = tk.time
+        old = len(chain.segs)
+        if not segs:
+            for _, act in ssf_after:
+                self._arm_ssf(chain, chain.segs[old - 1], act)
+            for ax in chain.axes:
+                self.axes[ax].move = chain
+            return
+        k = next(i for i, m in enumerate(chain.segs) if now < m.t1)
+        m = chain.segs[k]
+        tau = (now - m.t0) / TICKS_PER_S
+        resume, v_start, first = None, 0.0, k + 1
+        if m.prof.replannable(tau):
+            resume, first = (tau, m.prof.s(tau), m.prof.speed(tau)), k
+        else:
+            v_start = m.prof.v1
+        chain.extend(segs, targets, [mode] * len(segs))
+        part = chain.segs[first:]
+        if part:
+            part[0].t0 = m.t1 if resume is None else part[0].t0
+            retime(self.axes, part, chain.targets[first:], chain.moderegs[first:], v_start, resume)
+        chain._spans()
+        for ax in chain.axes:
+            self.axes[ax].move = chain
+        for entry in list(chain.ssf):  # SSF entries between re-planned segments act at their new ends
+            seg, act, armed = entry
+            if armed[0] and seg in part:
+                armed[0] = False
+                chain.ssf.remove(entry)
+                self._arm_ssf(chain, seg, act)
+        for j, act in ssf_after:
+            self._arm_ssf(chain, chain.segs[old + j - 1], act)
+
+    def _arm_ssf(self, chain, seg, act) -> None:
+        armed = [True]
+        chain.ssf.append((seg, act, armed))
+        self._ssf_at_end(chain, seg, act, seg.t1, armed)
+
+    def _ssf_at_end(self, chain, seg, act, tick: float, armed: list) -> None:
         """An SSF between chained segments acts when the segment before it ends, even if UTROVR moved
-        that end; not at all when a stop cut the chain before it."""
+        that end; not at all when a stop cut the chain before it (or a re-plan armed it anew)."""
         if tick == math.inf:  # held by TROVR = 0: armed again when UTROVR lets the chain go on
-            chain.parked.append(lambda: self._ssf_at_end(chain, seg, act, seg.t1))
+            chain.parked.append(lambda: self._ssf_at_end(chain, seg, act, seg.t1, armed))
             return
 
         def fire():
-            if seg not in chain.segs or (seg.stop_s is not None and seg.stop_s < seg.prof.length):
+            if not armed[0] or seg not in chain.segs or (seg.stop_s is not None and seg.stop_s < seg.prof.length):
                 return
             if seg.t1 > tick:
-                self._ssf_at_end(chain, seg, act, seg.t1)
+                self._ssf_at_end(chain, seg, act, seg.t1, armed)
                 return
+            armed[0] = False
             act()
         self.add_timed(tick, fire)
 

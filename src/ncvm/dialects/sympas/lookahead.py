@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import math
 
-from .motion import TICKS_PER_S, Profile
+from .motion import TICKS_PER_S, Profile, Resumed
 
 LOOKAHEAD = 0x1
 NOTRIANGLE = 0x40
@@ -34,11 +34,20 @@ def _direction(mv, at_end: bool) -> list:
     return u
 
 
-def retime(axes, segs: list, targets: list, moderegs: list) -> None:
+def retime(axes, segs: list, targets: list, moderegs: list, v_start: float = 0.0, resume=None) -> None:
     """Give the chained moves ``segs`` (started rest to rest, back to back) their junction velocities
     and new start/end times. ``targets[k]`` is segment k's TRTVL in units/s, ``moderegs[k]`` the
-    MODEREG in force when the spooler started it."""
+    MODEREG in force when the spooler started it.
+
+    A chain extended while it runs is planned anew from its running state: ``v_start`` is the velocity
+    the first segment starts with (the end velocity of the segment before it, which keeps its plan), or
+    ``resume = (tau, s, v)`` says that the first segment is running and is planned anew from profile
+    time ``tau`` (s), where it stands at path point ``s`` with velocity ``v``."""
     n = len(segs)
+    lengths = [m.prof.length for m in segs]
+    if resume is not None:
+        lengths[0] -= resume[1]
+        v_start = resume[2]
     vmax = []
     acc = []
     for m, mode in zip(segs, moderegs):
@@ -69,11 +78,11 @@ def retime(axes, segs: list, targets: list, moderegs: list) -> None:
     ramp_acc = [a * (1.0 - 0.5 * r) for a, r in zip(acc, jerk)]  # S-ramps plan with a * (1 - jerkrel / 2)
     for k in range(n - 2, -1, -1):  # the next segment must be able to brake to its end velocity
         m = segs[k + 1]
-        vj[k] = min(vj[k], math.sqrt(vj[k + 1] ** 2 + 2.0 * ramp_acc[k + 1] * m.prof.length))
-    v_in = 0.0
+        vj[k] = min(vj[k], math.sqrt(vj[k + 1] ** 2 + 2.0 * ramp_acc[k + 1] * lengths[k + 1]))
+    v_in = v_start
     t = segs[0].t0
     for k, m in enumerate(segs):  # this segment must be able to reach its end velocity
-        L = m.prof.length
+        L = lengths[k]
         v_out = min(vj[k], math.sqrt(v_in * v_in + 2.0 * ramp_acc[k] * L))
         v_top = vmax[k]
         peak = math.sqrt(ramp_acc[k] * L + 0.5 * (v_in * v_in + v_out * v_out))
@@ -82,8 +91,12 @@ def retime(axes, segs: list, targets: list, moderegs: list) -> None:
             # velocity (a triangle) keeps its start velocity instead
             v_top = v_in
             v_out = min(v_out, v_in)
-        m.prof = Profile(L, v_top, acc[k], v_in, v_out, jerk[k])
-        m.t0 = t
-        m.t1 = t = t + m.prof.duration * TICKS_PER_S
+        prof = Profile(L, v_top, acc[k], v_in, v_out, jerk[k])
+        if k == 0 and resume is not None:
+            m.prof = Resumed(m.prof, resume[0], resume[1], prof)
+        else:
+            m.prof = prof
+            m.t0 = t
+        m.t1 = t = m.t0 + m.prof.duration * TICKS_PER_S
         m.feed = m.prof.v * 60.0
         v_in = v_out

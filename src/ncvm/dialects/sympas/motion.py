@@ -77,6 +77,18 @@ class Profile:
         self.t_cruise = max(0.0, length - self.s_acc - self.s_dec) / vp if vp > 0 else 0.0
         self.duration = self.t_acc + self.t_cruise + self.t_dec
 
+    @property
+    def t_brake(self) -> float:
+        """Profile time (s) at which the final ramp towards ``v1`` begins."""
+        return self.t_acc + self.t_cruise
+
+    def replannable(self, t: float) -> bool:
+        """Whether the rest of the profile may be planned anew at ``t`` without a jump in velocity or
+        (S-profile) acceleration: before the final ramp, and on S-ramps only while cruising."""
+        if self.length <= 0.0 or t >= self.t_brake:
+            return False
+        return self.r == 0.0 or t >= self.t_acc
+
     def _at(self, t: float) -> tuple[float, float]:
         if t < self.t_acc:
             return ramp(t, self.v0, self.v, self.t_acc, self.r)
@@ -97,6 +109,37 @@ class Profile:
         if t < 0.0 or t > self.duration:
             return 0.0
         return self._at(t)[1]
+
+
+class Resumed:
+    """A running profile planned anew at profile time ``tau`` (s): ``head`` up to there, then ``tail``
+    from the path point ``s0`` it had reached (a spooled chain extended while it runs, lookahead.py)."""
+
+    __slots__ = ("head", "tau", "s0", "tail", "length", "v", "a", "r", "v0", "v1", "duration")
+
+    def __init__(self, head, tau: float, s0: float, tail: Profile):
+        self.head, self.tau, self.s0, self.tail = head, tau, s0, tail
+        self.length = head.length
+        self.v = max(head.v, tail.v)
+        self.a, self.r, self.v0, self.v1 = tail.a, tail.r, head.v0, tail.v1
+        self.duration = tau + tail.duration
+
+    @property
+    def t_brake(self) -> float:
+        return self.tau + self.tail.t_brake
+
+    def replannable(self, t: float) -> bool:
+        return t >= self.tau and self.tail.replannable(t - self.tau)
+
+    def s(self, t: float) -> float:
+        if t < self.tau:
+            return self.head.s(t)
+        return min(self.length, self.s0 + self.tail.s(t - self.tau))
+
+    def speed(self, t: float) -> float:
+        if t < 0.0 or t > self.duration:
+            return 0.0
+        return self.head.speed(t) if t < self.tau else self.tail.speed(t - self.tau)
 
 
 class Move:
@@ -319,18 +362,35 @@ class Chain:
     It stands for all its segments on every axis they use, so positions, velocities and stops
     (JS, MS) see the segment that runs at the asked time."""
 
-    __slots__ = ("segs", "axes", "t0", "t1", "p1", "retired", "jog", "drift", "_full0", "parked")
+    __slots__ = ("segs", "axes", "t0", "t1", "p1", "retired", "jog", "drift", "_full0", "parked", "targets",
+                 "moderegs", "ssf")
 
-    def __init__(self, segs: list, full0: tuple):
+    def __init__(self, segs: list, full0: tuple, targets: list, moderegs: list):
         self.segs = segs
-        axes = sorted({ax for m in segs for ax in m.axes})
-        self.axes = tuple(axes)
+        self.targets, self.moderegs = targets, moderegs  # each segment's TRTVL (units/s) and MODEREG
         self._full0 = full0
-        self.t0, self.t1 = segs[0].t0, segs[-1].t1
+        self.t0 = segs[0].t0
         self.retired = False
         self.jog = self.drift = False
-        self.p1 = self.final()
         self.parked: list = []  # timed actions waiting for a held segment's end (re-armed by UTROVR)
+        self.ssf: list = []  # (segment, action, armed) of the SSF entries between segments
+        self._spans()
+
+    def _spans(self) -> None:
+        self.axes = tuple(sorted({ax for m in self.segs for ax in m.axes}))
+        self.t1 = self.segs[-1].t1
+        self.p1 = self.final()
+
+    def extend(self, segs: list, targets: list, moderegs: list) -> None:
+        """Later spooled segments join the chain (their times are planned by the caller)."""
+        self.segs.extend(segs)
+        self.targets.extend(targets)
+        self.moderegs.extend(moderegs)
+        self._spans()
+
+    def joinable(self) -> bool:
+        """New segments can join this chain while it runs: it is neither stopped nor overridden."""
+        return self.t1 < math.inf and all(m.warp is None and m.stop_s is None for m in self.segs)
 
     def _seg(self, t: float):
         for m in self.segs:

@@ -1,0 +1,118 @@
+"""A spooled chain started (SSMS, AutoSpool) while an earlier chain of the same axes still runs joins it:
+the spooler goes on without stopping, with the look-ahead's joint velocities (digest §10.5, L1391-1398).
+
+By hand: TRVL = 10 mm/s, TRAC = 100 mm/s^2, TRTVL = 10 mm/s; 15625 ticks = 1 s. A 10 mm segment from rest
+to 10 mm/s takes 0.1 s (0.5 mm) + 9.5 mm / 10 = 1.05 s; at 10 mm/s throughout 1.0 s; from 10 mm/s to rest
+1.05 s; rest to rest 0.1 + 0.9 + 0.1 = 1.1 s. The program's own statements add a few ticks (tolerance 8).
+"""
+
+from __future__ import annotations
+
+import pytest
+
+SEC = 15625
+SETUP = "TRVL := 10.0; TRAC := 100.0; TRTVL := 10.0;"
+
+
+def prog(body: str) -> str:
+    return f"program T;\nvar t0, t1, t2: integer; x, v: double;\nbegin\nCL(A1, A2);\n{SETUP}\n{body}\nend.\n"
+
+
+def run(sap, body: str, machine: str | None = None):
+    r = sap(prog(body), machine)
+    assert r["status"] == "ok", r["error"]
+    return r["output"][0].split(), r
+
+
+def test_segment_spooled_during_the_cruise_continues_the_running_one(sap):
+    # SSMS at 0.5 s: the running segment stands at 0.5 + 10 * 0.4 = 4.5 mm at 10 mm/s and is planned anew:
+    # it no longer brakes, ends at 10 mm at 0.5 + 5.5 / 10 = 1.05 s with 10 mm/s, and the new one takes 1.05 s.
+    # Together 2.1 s (two chains one after the other: 2 x 1.1 = 2.2 s). At 1.05 s A1 is at 10 mm, 10 mm/s.
+    out, r = run(sap, """t0 := CLOCK;
+SMLR(A1 := 10.0); SSMS(A1);
+repeat until CLOCK - t0 >= 7812;
+SMLR(A1 := 10.0); SSMS(A1);
+repeat until CLOCK - t0 >= 16406;
+x := A1.dp; v := A1.dv;
+SSMSW(A1);
+writeln(CLOCK - t0, ' ', x, ' ', v);""")
+    assert int(out[0]) == pytest.approx(2.1 * SEC, abs=8)
+    assert float(out[1]) == pytest.approx(10.0, abs=0.003)
+    assert float(out[2]) == pytest.approx(10.0, abs=1e-6)
+    assert r["position"]["X"] == pytest.approx(20.0)
+    assert r["motion"]["feed_moves"] == 2
+
+
+def test_segment_spooled_during_the_final_ramp_starts_from_rest(sap):
+    # SSMS at 1.05 s: the running segment brakes since 1.0 s and keeps its plan (rest at 1.1 s);
+    # the new segment then runs rest to rest: 1.1 + 1.1 = 2.2 s. A1 is at 10 mm at rest at 1.1 s.
+    out, r = run(sap, """t0 := CLOCK;
+SMLR(A1 := 10.0); SSMS(A1);
+repeat until CLOCK - t0 >= 16406;
+SMLR(A1 := 10.0); SSMS(A1);
+repeat until CLOCK - t0 >= 17188;
+x := A1.dp; v := A1.dv;
+SSMSW(A1);
+writeln(CLOCK - t0, ' ', x, ' ', v);""")
+    assert int(out[0]) == pytest.approx(2.2 * SEC, abs=8)
+    # read a few ticks after 1.1 s: the new segment has just started from rest (100 mm/s^2 * 8 ticks = 0.05 mm/s)
+    assert float(out[1]) == pytest.approx(10.0, abs=1e-4)
+    assert 0.0 <= float(out[2]) <= 0.05
+    assert r["position"]["X"] == pytest.approx(20.0)
+
+
+def test_waiting_segments_of_the_running_chain_are_planned_anew(sap):
+    # chain 1 = two 10 mm segments (1.05 s + 1.05 s, the second braking to rest); at 0.5 s a third joins:
+    # the second now runs through at 10 mm/s (1.0 s) and the third brakes: 1.05 + 1.0 + 1.05 = 3.1 s (not 3.2 s).
+    out, _ = run(sap, """t0 := CLOCK;
+SMLR(A1 := 10.0); SMLR(A1 := 10.0); SSMS(A1);
+repeat until CLOCK - t0 >= 7812;
+SMLR(A1 := 10.0); SSMS(A1);
+repeat until CLOCK - t0 >= 32031;
+x := A1.dp; v := A1.dv;
+SSMSW(A1);
+writeln(CLOCK - t0, ' ', x, ' ', v);""")
+    assert int(out[0]) == pytest.approx(3.1 * SEC, abs=8)
+    # at 2.05 s the axis passes 20 mm at 10 mm/s: the old second segment did not brake
+    assert float(out[1]) == pytest.approx(20.0, abs=0.003)
+    assert float(out[2]) == pytest.approx(10.0, abs=1e-6)
+
+
+def test_autospool_keeps_the_axes_moving_across_spooler_refills(sap):
+    # spool_capacity = 2: the spooler starts at every second SMLR (AutoSpool), the second start a few ticks
+    # into the first segment's acceleration. Four 10 mm segments as one chain: 1.05 + 1.0 + 1.0 + 1.05 = 4.1 s
+    # (two chains one after the other would take 2 x 2.1 = 4.2 s).
+    out, r = run(sap, """MODEREG := $20; t0 := CLOCK;
+SMLR(A1 := 10.0); SMLR(A1 := 10.0); SMLR(A1 := 10.0); SMLR(A1 := 10.0);
+SSMSW(A1);
+writeln(CLOCK - t0);""", "[sympas]\nspool_capacity = 2\n")
+    assert int(out[0]) == pytest.approx(4.1 * SEC, abs=8)
+    assert r["position"]["X"] == pytest.approx(40.0)
+
+
+def test_ssf_after_a_replanned_segment_acts_at_its_new_end(sap):
+    # the SSF after segment 2 was due when segment 2 stopped (2.1 s); once segment 3 joins it runs through
+    # and ends at 2.05 s, when CI1 becomes 42.
+    out, _ = run(sap, """t0 := CLOCK;
+SMLR(A1 := 10.0); SMLR(A1 := 10.0); SSF(A1 := 42, SSFP = 1); SSMS(A1);
+repeat until CLOCK - t0 >= 7812;
+SMLR(A1 := 10.0); SSMS(A1);
+repeat until CI1 = 42;
+t1 := CLOCK - t0;
+SSMSW(A1);
+writeln(t1, ' ', CLOCK - t0);""")
+    assert int(out[0]) == pytest.approx(2.05 * SEC, abs=12)
+    assert int(out[1]) == pytest.approx(3.1 * SEC, abs=8)
+
+
+def test_a_stopped_chain_is_not_joined(sap):
+    # MS at 0.5 s (sdec 100: stands at 5.0 mm at 0.6 s); the next SSMS starts a new chain from rest there:
+    # 10 mm rest to rest, 1.1 s -> ends at 15 mm.
+    out, r = run(sap, """A1.sdec := 100.0; t0 := CLOCK;
+SMLR(A1 := 10.0); SSMS(A1);
+repeat until CLOCK - t0 >= 7812;
+MS(A1);
+SMLR(A1 := 10.0); SSMSW(A1);
+writeln(CLOCK - t0);""")
+    assert int(out[0]) == pytest.approx(1.7 * SEC, abs=8)
+    assert r["position"]["X"] == pytest.approx(15.0, abs=0.01)
