@@ -412,8 +412,9 @@ class Card(Commands):
             a.target = mv.p1[k]
         return True
 
-    def prepare(self, tk, axes, loc: int):
-        """Common start of a move command: axis checks, busy rule, start point."""
+    def prepare(self, tk, axes, loc: int, moving=()):
+        """Common start of a move command: axis checks, busy rule (not for the ``moving`` axes, which the
+        command takes over on the fly), start point."""
         t = tk.time
         for ax in axes:
             self.check_axis(ax)
@@ -422,7 +423,7 @@ class Card(Commands):
         self.settle(axes, t)
         for ax in axes:
             a = self.axes[ax]
-            if self.busy(a, t):
+            if self.busy(a, t) and ax not in moving:
                 if self.cfg["busy_move"] == "refuse":
                     a.flags |= 1 << self.cfg["axst_bits"]["refused"]
                     return None

@@ -396,7 +396,7 @@ class Commands:
         if len(moves) != 1:
             return None
         mv = next(iter(moves.values()))
-        return mv if isinstance(mv, Chain) and mv.joinable() else None
+        return mv if isinstance(mv, Chain) and not mv.jog and mv.joinable() else None
 
     def _join(self, tk, chain, segs: list, targets: list, mode: int, ssf_after: list) -> None:
         """Segments spooled and started while ``chain`` runs continue it: its segments not begun yet, and
@@ -458,56 +458,83 @@ class Commands:
         self.add_timed(tick, fire)
 
     # -- jog and home (§6.6.16-28), axis units ---------------------------------------------------------------------------
+    def _jogging(self, a, t: float) -> bool:
+        mv = a.move
+        return mv is not None and mv.t1 > t and mv.jog and not mv.homing
+
     def _jog(self, tk, items, loc, relative: bool, wait: bool):
+        """JA/JR: each axis jogs to its target with jac, jvl * jovr and the end velocity jtv. A new JA/JR
+        on a jogging axis re-targets it on the fly (digest §10.5): it goes on from where it is with the
+        velocity it has, brakes with jac and turns back when the new target lies behind its braking
+        distance, and slows down with jac to a lowered jvl."""
         t = tk.time
         axes = tuple(ax for ax, _ in items)
-        start = self.prepare(tk, axes, loc)
+        for ax in axes:
+            self.check_axis(ax)
+        self.settle(axes, t)
+        moving = {ax: self.axis_velocity(self.axes[ax], t) for ax in axes if self._jogging(self.axes[ax], t)}
+        start = self.prepare(tk, axes, loc, set(moving))
         if start is None:
             return None
         src = self.src(tk, loc)
         for ax, v in items:
             a = self.axes[ax]
+            if ax in moving:
+                self._retire(a, t)  # cut where it is now; the new profile goes on with its velocity
             p0 = start[ax]
             p1 = self.round_counts(a.target + v if relative else v + self.user_shift(a))
-            mv = Move((ax,), (p0,), (p1,), "line", src, start)
-            mv.jog = True
+            a.target = p1
             vel = a.q["jvl"] * a.q["jovr"]
             acc = a.q["jac"]
-            if abs(p1 - p0) == 0 or vel <= 0 or acc <= 0:
-                a.target = p1
+            if vel <= 0 or acc <= 0 or (p1 == p0 and not moving.get(ax)):
                 continue
             jerk = self.jerk((ax,))
-            mv.start(t, abs(p1 - p0), vel, acc, jerk)
             jtv = abs(float(a.q["jtv"]))
-            if jtv > 0.0:  # arrive with the jog target velocity and keep moving (digest §10.5, A-60)
-                v1 = min(jtv, math.sqrt(2.0 * acc * (1.0 - 0.5 * jerk) * abs(p1 - p0)))
-                mv.prof = Profile(abs(p1 - p0), max(vel, v1), acc, 0.0, v1, jerk)
-                mv.t1 = t + mv.prof.duration * TICKS_PER_S
-                self.add_timed(mv.t1, self._drift_action(a, mv, v1, 1.0 if p1 >= p0 else -1.0))
-            a.move = mv
-            self.live.add(mv)
-            a.target = p1
+            segs, v1 = [], 0.0
+            for q0, q1, prof in jog_plan(p0, p1, moving.get(ax, 0.0), vel, acc, jerk, jtv):
+                mv = Move((ax,), (q0,), (q1,), "line", src, start)
+                mv.jog = True
+                mv.prof, mv.vmax, mv.feed = prof, vel, prof.v * 60.0
+                mv.t0 = segs[-1].t1 if segs else t
+                mv.t1 = mv.t0 + prof.duration * TICKS_PER_S
+                segs.append(mv)
+                v1 = prof.v1
+            owner = segs[0]
+            if len(segs) > 1:
+                owner = Chain(segs, start, [0.0] * len(segs), [0] * len(segs))
+                owner.jog = True
+            if v1 > 0.0:  # arrive with the jog target velocity and keep moving (digest §10.5, A-60)
+                self.add_timed(owner.t1, self._drift_action(a, owner, v1, 1.0 if p1 >= segs[-1].p0[0] else -1.0, src))
+            a.move = owner
+            self.live.add(owner)
         return self._wait(tk, axes, wait)
 
-    def _drift_action(self, a, mv, v: float, sign: float):
+    def _run_on(self, a, t: float, v: float, src) -> None:
+        """From ``t`` the axis runs on at the signed velocity ``v`` until a stop (JS, MS, RA) or the end of the
+        run; at profile end for the W-waits (a drift)."""
+        p = self.mpos(a, t)
+        far = abs(v) * 1.0e6
+        d = Move((a.number,), (p,), (p + math.copysign(far, v),), "line", src, self.all_positions(t))
+        d.jog = True
+        d.drift = True
+        d.prof = Profile(far, abs(v), float(a.q["jac"]) or 1.0, abs(v), abs(v))
+        d.t0, d.t1, d.feed, d.vmax = t, t + d.prof.duration * TICKS_PER_S, abs(v) * 60.0, abs(v)
+        a.move = d
+        self.live.add(d)
+
+    def _drift_action(self, a, mv, v: float, sign: float, src):
         """At the jog target with jtv != 0: profile end and SAF, and the axis runs on at jtv until a stop;
         MODEREG bit 28 (JSatSAF) stops all axes with sdec, bit 11 (ForbidTargetVel) executes RS."""
+        due = mv.t1
+
         def act():
-            if mv.stop_s is not None or (a.move is not None and a.move is not mv):
+            if a.move is not mv or mv.t1 != due:
                 return  # stopped or replaced before it got there
             t = mv.t1
             self._finish(mv)
             bits = self.cfg["axst_bits"]
             a.flags |= 1 << bits["saf"]
-            p = a.m
-            far = v * 1.0e6  # runs on until stopped (JS, MS, RA) or the run ends
-            d = Move((a.number,), (p,), (p + sign * far,), "line", mv.src, self.all_positions(t))
-            d.jog = True
-            d.drift = True
-            d.prof = Profile(far, v, float(a.q["jac"]) or 1.0, v, v)
-            d.t0, d.t1, d.feed, d.vmax = t, t + d.prof.duration * TICKS_PER_S, v * 60.0, v
-            a.move = d
-            self.live.add(d)
+            self._run_on(a, t, sign * v, src)
             mode = self.sys["MODEREG"]
             if mode & (1 << 11):
                 self.sys["ERRORREG"] |= 1 << 1
@@ -555,7 +582,7 @@ class Commands:
                 if not ok:
                     ref = p0 + limits[k]
             mv = Move((ax,), (p0,), (ref,), "line", src, start)
-            mv.jog = True
+            mv.jog = mv.homing = True
             if not ok and limits is None:
                 a.flags |= failed
                 continue
@@ -727,3 +754,30 @@ class Commands:
         return None
 
     cmd_lprs = cmd_lpr
+
+
+def jog_plan(p0: float, p1: float, v0: float, vel: float, acc: float, jerk: float, jtv: float) -> list:
+    """Pieces ``(from, to, Profile)`` of a jog from ``p0`` (signed velocity ``v0``) to ``p1`` with velocity
+    ``vel``, acceleration ``acc`` and end velocity ``jtv``: a target behind the braking distance is reached by
+    braking to rest and turning back; a velocity above ``vel`` is first brought down to it."""
+    ae = acc * (1.0 - 0.5 * jerk)  # S-ramps plan with acc * (1 - jerkrel / 2)
+    pieces = []
+    w = abs(v0)
+    if w > 0.0:
+        u = 1.0 if v0 > 0.0 else -1.0
+        ahead = (p1 - p0) * u
+        brake = w * w / (2.0 * ae)
+        if ahead < brake:
+            q = p0 + u * brake
+            pieces.append((p0, q, Profile(brake, w, acc, w, 0.0, jerk)))
+            p0, w = q, 0.0
+        elif w > vel:
+            d = (w * w - vel * vel) / (2.0 * ae)
+            q = p0 + u * d
+            pieces.append((p0, q, Profile(d, w, acc, w, vel, jerk)))
+            p0, w = q, vel
+    L = abs(p1 - p0)
+    if L > 0.0:
+        v1 = min(jtv, math.sqrt(w * w + 2.0 * ae * L)) if jtv > 0.0 else 0.0
+        pieces.append((p0, p1, Profile(L, max(vel, v1), acc, w, v1, jerk)))
+    return pieces

@@ -147,7 +147,7 @@ class Move:
 
     __slots__ = ("axes", "p0", "p1", "kind", "t0", "t1", "prof", "center", "radius", "a0", "phi", "plane",
                  "normal", "lin", "src", "start_all", "feed", "stop_s", "stop_t", "stop_dec", "retired", "jog",
-                 "vmax", "ovr0", "warp", "stop_v0", "stop_s0", "drift")
+                 "homing", "vmax", "ovr0", "warp", "stop_v0", "stop_s0", "drift")
 
     def __init__(self, axes, p0, p1, kind, src: Src, start_all):
         self.axes = axes
@@ -159,6 +159,7 @@ class Move:
         self.stop_s = None
         self.retired = False
         self.jog = False
+        self.homing = False  # a home search (JHL, JHR, JHI): a jog that a new JA/JR does not re-target
         self.drift = False  # a jog running on at jtv past its target (profile end already reported)
         self.ovr0 = 1.0  # the override the profile was planned with
         self.warp = None  # (t_w, tau_w, r_a, r_b, T): rate of profile time ramps r_a -> r_b over T ticks (TROVRST)
@@ -363,7 +364,7 @@ class Chain:
     (JS, MS) see the segment that runs at the asked time."""
 
     __slots__ = ("segs", "axes", "t0", "t1", "p1", "retired", "jog", "drift", "_full0", "parked", "targets",
-                 "moderegs", "ssf")
+                 "moderegs", "ssf", "homing")
 
     def __init__(self, segs: list, full0: tuple, targets: list, moderegs: list):
         self.segs = segs
@@ -371,7 +372,7 @@ class Chain:
         self._full0 = full0
         self.t0 = segs[0].t0
         self.retired = False
-        self.jog = self.drift = False
+        self.jog = self.drift = self.homing = False
         self.parked: list = []  # timed actions waiting for a held segment's end (re-armed by UTROVR)
         self.ssf: list = []  # (segment, action, armed) of the SSF entries between segments
         self._spans()
