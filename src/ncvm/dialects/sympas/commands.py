@@ -660,7 +660,26 @@ class Commands:
             a.poserr = 0.0  # bumpless: dp := rp
         return None
 
-    cmd_clv = cmd_cl
+    def cmd_clv(self, tk, axes, loc):
+        """CLV closes the loop like CL but keeps the axes' velocity (digest 6.6.9, A-51; the manual's example
+        follows it with JS "then stop the axes immediately"): a running profile gives way to a run at the
+        velocity the axis has, until a stop. A path cannot go on for part of its axes: all axes of a path
+        move or chain run on at their share of the path velocity."""
+        t = tk.time
+        self.cmd_cl(tk, axes, loc)
+        self.settle(axes, t)
+        src = self.src(tk, loc)
+        for ax in axes:
+            a = self.axes[ax]
+            mv = a.move
+            if mv is None or mv.t1 <= t or mv.drift:
+                continue
+            velocities = [(self.axes[x], self.axis_velocity(self.axes[x], t)) for x in mv.axes]
+            self._retire(a, t)
+            for b, v in velocities:
+                if v != 0.0:
+                    self._run_on(b, t, v, src)
+        return None
 
     def cmd_ol(self, tk, axes, loc):
         for ax in axes:
