@@ -199,11 +199,7 @@ class Card(Commands):
         mv = a.move
         if mv is None or mv.t1 <= t:
             return 0.0
-        v = mv.speed_at(t)
-        p0, p1 = mv.pos(t), mv.pos(t + 1.0)
-        k = mv.axes.index(a.number)
-        d = sum((x - y) ** 2 for x, y in zip(p0, p1)) ** 0.5
-        return v * (p1[k] - p0[k]) / d if d > 0 else 0.0
+        return mv.velocity(t, a.number)
 
     def user_shift(self, a: AxisState) -> float:
         zo = self.zo.get(self.active_zo)

@@ -31,12 +31,38 @@ class Commands:
                 return True
         return False
 
-    def _user_to_machine(self, tk, items, relative: bool, start, scale: float):
+    def surface(self, tk, ax: int) -> float | None:
+        """Path length per degree of a rotary axis in a translational interpolation (a length PU): the arc at
+        its effradius ("Mantelflächenbearbeitung", L1450); None for any other axis or PU."""
+        if not self.rotary[ax] or int(tk.sysp["PU"]) not in (0, 1, 2):
+            return None
+        r = float(self.axes[ax].q["effradius"])
+        if r <= 0.0:
+            fault(256, f"effradius of rotary axis {self.axes[ax].name} must be > 0 in a translational interpolation")
+        return r * math.pi / 180.0
+
+    def scale(self, tk, ax: int, f: float) -> float:
+        """PU -> axis units of one axis of a path move: a rotary axis in a translational interpolation takes
+        its target or travel as a length on its surface, or with MODEREG bit 10 (RotatoricUnit, L1401) in
+        its own rotary unit."""
+        r = self.surface(tk, ax)
+        if r is None:
+            return f
+        return 1.0 if self.sys["MODEREG"] & 0x400 else f / r
+
+    def weight(self, tk, ax: int) -> float:
+        """Path units per axis unit: a rotary axis in a translational interpolation counts with its
+        surface length, so the path velocity is the velocity on the surface (effradius, L1450)."""
+        r = self.surface(tk, ax)
+        return 1.0 if r is None else r
+
+    def _user_to_machine(self, tk, items, relative: bool, start, f: float):
         axes = tuple(ax for ax, _ in items)
         p0 = tuple(start[ax] for ax in axes)
         p1 = []
         for ax, v in items:
             a = self.axes[ax]
+            scale = self.scale(tk, ax, f)
             if relative:
                 p1.append(a.target + v * scale)
             else:
@@ -65,6 +91,8 @@ class Commands:
         c = self.counts
         l2 = 0.0
         for ax, val in items:
+            if self.rotary[ax]:
+                return False  # effradius and RotatoricUnit: the general path
             a = axes[ax]
             p = round(((a.target + val) if relative else (val + a.ref + a.zerooffset)) * c) / c
             d = p - pos[ax]
@@ -99,10 +127,13 @@ class Commands:
         axes, p0, p1 = self._user_to_machine(tk, items, relative, start, f)
         p1 = tuple(self.round_counts(x) for x in p1)
         nfrax = int(tk.sysp["NFRAX"])
-        length = math.sqrt(sum((b - a) ** 2 for ax, a, b in zip(axes, p0, p1) if not nfrax >> ax & 1))
+        length = math.sqrt(sum(((b - a) * self.weight(tk, ax)) ** 2 for ax, a, b in zip(axes, p0, p1)
+                               if not nfrax >> ax & 1))
         if length == 0.0:
             length = max((abs(b - a) for a, b in zip(p0, p1)), default=0.0)
         mv = Move(axes, p0, p1, "line", self.src(tk, loc), start)
+        if any(nfrax >> ax & 1 or self.rotary[ax] for ax in axes) and length > 0.0:
+            mv.weights = tuple(0.0 if nfrax >> ax & 1 else self.weight(tk, ax) for ax in axes)
         if not self.start_path(tk, mv, length, loc):
             return None
         return self._wait(tk, axes, wait)
@@ -164,14 +195,18 @@ class Commands:
         radius = r0
         a_end = a0 + phi
         p1 = [c[0] + radius * math.cos(a_end), c[1] + radius * math.sin(a_end)]
-        for k in range(2, len(axes)):
-            p1.append(p0[k] + vals[k] if relative else vals[k] + sh[k])
+        for k in range(2, len(axes)):  # the helix's further axes (rotary ones as on a straight line)
+            val = items[k][1] * self.scale(tk, axes[k], f)
+            p1.append(p0[k] + val if relative else val + sh[k])
         p1 = tuple(self.round_counts(x) for x in p1)
         nfrax = int(tk.sysp["NFRAX"])
-        lin2 = sum((p1[k] - p0[k]) ** 2 for k in range(2, len(axes)) if not nfrax >> axes[k] & 1)
+        lin2 = sum(((p1[k] - p0[k]) * self.weight(tk, axes[k])) ** 2 for k in range(2, len(axes))
+                   if not nfrax >> axes[k] & 1)
         length = math.sqrt((radius * phi) ** 2 + lin2)
         mv = Move(axes, p0, p1, "arc", self.src(tk, loc), start)
         mv.center, mv.radius, mv.a0, mv.phi, mv.plane = c, radius, a0, phi, (0, 1)
+        if any(nfrax >> ax & 1 or self.rotary[ax] for ax in axes[2:]):
+            mv.weights = (1.0, 1.0) + tuple(0.0 if nfrax >> ax & 1 else self.weight(tk, ax) for ax in axes[2:])
         if not self.start_path(tk, mv, length, loc):
             return None
         return self._wait(tk, axes, wait)
@@ -482,6 +517,9 @@ class Commands:
             if ax in moving:
                 self._retire(a, t)  # cut where it is now; the new profile goes on with its velocity
             p0 = start[ax]
+            if not relative and self.rotary[ax] and self.sys["MODEREG"] & 0x200:
+                # ShortestRotatoricDistance (L1400): the shorter way round to the target angle
+                v = (p0 - self.user_shift(a)) + ((v - (p0 - self.user_shift(a)) + 180.0) % 360.0 - 180.0)
             p1 = self.round_counts(a.target + v if relative else v + self.user_shift(a))
             a.target = p1
             vel = a.q["jvl"] * a.q["jovr"]

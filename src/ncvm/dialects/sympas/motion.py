@@ -147,7 +147,8 @@ class Move:
 
     __slots__ = ("axes", "p0", "p1", "kind", "t0", "t1", "prof", "center", "radius", "a0", "phi", "plane",
                  "normal", "lin", "src", "start_all", "feed", "stop_s", "stop_t", "stop_dec", "retired", "jog",
-                 "homing", "vmax", "ovr0", "warp", "stop_v0", "stop_s0", "drift")
+                 "homing", "vmax", "ovr0", "warp", "stop_v0", "stop_s0", "drift",
+                 "weights")
 
     def __init__(self, axes, p0, p1, kind, src: Src, start_all):
         self.axes = axes
@@ -159,6 +160,7 @@ class Move:
         self.stop_s = None
         self.retired = False
         self.jog = False
+        self.weights = None  # path units per axis unit (effradius, NFRAX = 0); None: 1 for every axis
         self.homing = False  # a home search (JHL, JHR, JHI): a jog that a new JA/JR does not re-target
         self.drift = False  # a jog running on at jtv past its target (profile end already reported)
         self.ovr0 = 1.0  # the override the profile was planned with
@@ -282,6 +284,17 @@ class Move:
         if self.warp is None:
             return self.prof.speed((t_ticks - self.t0) / TICKS_PER_S)
         return self.prof.speed(self.tau(t_ticks) / TICKS_PER_S) * self.rate(t_ticks)
+
+    def velocity(self, t_ticks: float, ax: int) -> float:
+        """Axis ``ax``'s share of the path velocity at ``t_ticks`` (axis units/s, signed)."""
+        v = self.speed_at(t_ticks)
+        p0, p1 = self.pos(t_ticks), self.pos(t_ticks + 1.0)
+        w = self.weights or (1.0,) * len(p0)
+        d = math.sqrt(sum(((y - x) * wk) ** 2 for x, y, wk in zip(p0, p1, w)))
+        if d <= 0.0:
+            d = math.sqrt(sum((y - x) ** 2 for x, y in zip(p0, p1)))
+        k = self.axes.index(ax)
+        return v * (p1[k] - p0[k]) / d if d > 0 else 0.0
 
     def stop(self, t_ticks: float, dec: float) -> None:
         """Decelerate along the path with ``dec`` from ``t_ticks`` (JS, MS)."""
@@ -413,6 +426,10 @@ class Chain:
         if t >= self.t1:
             return 0.0
         return self._seg(t).speed_at(t)
+
+    def velocity(self, t: float, ax: int) -> float:
+        m = self._seg(t)
+        return m.velocity(t, ax) if ax in m.axes else 0.0
 
     def final(self) -> tuple:
         m = self.segs[-1]
