@@ -116,3 +116,39 @@ SMLR(A1 := 10.0); SSMSW(A1);
 writeln(CLOCK - t0);""")
     assert int(out[0]) == pytest.approx(1.7 * SEC, abs=8)
     assert r["position"]["X"] == pytest.approx(15.0, abs=0.01)
+
+
+def test_s_profile_chain_joins_while_cruising(sap):
+    # MODEREG bit 1, jerkrel 1: ramps plan with 100 * (1 - 1/2) = 50 mm/s^2: 0 -> 10 mm/s in 0.2 s over 1 mm.
+    # Joined at 0.5 s (cruising): 0.2 + 9 / 10 = 1.1 s, then 1.1 s back to rest: 2.2 s (2 x 1.2 s apart).
+    out, _ = run(sap, """MODEREG := 2; A1.jerkrel := 1.0; t0 := CLOCK;
+SMLR(A1 := 10.0); SSMS(A1);
+repeat until CLOCK - t0 >= 7812;
+SMLR(A1 := 10.0); SSMSW(A1);
+writeln(CLOCK - t0);""")
+    assert int(out[0]) == pytest.approx(2.2 * SEC, abs=8)
+
+
+def test_s_profile_segment_in_its_first_ramp_keeps_its_plan(sap):
+    # joined at 0.1 s, inside the S-shaped ramp: the running segment keeps its plan (rest at 1.2 s), so the
+    # acceleration does not jump; the new one runs rest to rest after it: 2.4 s.
+    out, _ = run(sap, """MODEREG := 2; A1.jerkrel := 1.0; t0 := CLOCK;
+SMLR(A1 := 10.0); SSMS(A1);
+repeat until CLOCK - t0 >= 1562;
+SMLR(A1 := 10.0); SSMSW(A1);
+writeln(CLOCK - t0);""")
+    assert int(out[0]) == pytest.approx(2.4 * SEC, abs=8)
+
+
+def test_ms_stops_a_joined_chain_in_its_running_segment(sap):
+    # joined at 0.5 s; at 1.2 s the second segment cruises at 10 mm/s through 10 + 1.5 = 11.5 mm;
+    # MS with sdec 100 brakes over 0.5 mm: stands at 12.0 mm.
+    out, r = run(sap, """A1.sdec := 100.0; t0 := CLOCK;
+SMLR(A1 := 10.0); SSMS(A1);
+repeat until CLOCK - t0 >= 7812;
+SMLR(A1 := 10.0); SSMS(A1);
+repeat until CLOCK - t0 >= 18750;
+MSW(A1);
+writeln(A1.dp);""")
+    assert float(out[0]) == pytest.approx(12.0, abs=0.01)
+    assert r["position"]["X"] == pytest.approx(12.0, abs=0.01)
