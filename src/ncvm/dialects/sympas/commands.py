@@ -404,6 +404,9 @@ class Commands:
             self.cfg["busy_move"] = busy
             tk.sysp, tk.time = saved_sysp, saved_t
             self.planning_chain = False
+            if join is not None:
+                for ax in join.axes:
+                    self.axes[ax].move = join
         mode = self.sys["MODEREG"]
         for m in segs:
             m.retired = False
