@@ -152,3 +152,16 @@ MSW(A1);
 writeln(A1.dp);""")
     assert float(out[0]) == pytest.approx(12.0, abs=0.01)
     assert r["position"]["X"] == pytest.approx(12.0, abs=0.01)
+
+
+def test_a_fault_while_joining_leaves_the_running_chain(sap):
+    # the second segment was spooled under PU = 9 (no position unit): error 256 at the SSMS that joins it;
+    # the running segment still ends at 10 mm.
+    r = sap(prog("""t0 := CLOCK;
+SMLR(A1 := 10.0); SSMS(A1);
+repeat until CLOCK - t0 >= 7812;
+PU := 9; SMLR(A1 := 10.0); SSMS(A1);"""))
+    assert r["status"] == "error"
+    assert r["error"]["code"] == "256"
+    assert r["position"]["X"] == pytest.approx(10.0)
+    assert r["motion"]["feed_moves"] == 1  # the running segment is reported
