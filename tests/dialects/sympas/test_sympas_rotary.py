@@ -84,3 +84,27 @@ def test_nfrax_axis_velocity_is_its_share_of_the_path(sap):
 repeat until CLOCK - t0 >= 15625;
 writeln(A1.dv, ' ', A2.dv);""")
     assert [float(s) for s in out[0].split()] == pytest.approx([10.0, 40.0 / 3.0])
+
+
+def test_circle_on_the_surface_of_a_rotary_axis(sap):
+    # MCR(A1 := 0, A4 := 5) with PHI 90: the centre lies 5 mm along the surface of A4 (effradius 10 mm);
+    # the quarter circle of R = 5 mm ends at A1 = 5 mm, A4 = 5 mm on the surface = 0.5 rad = 28.648 deg.
+    # Length 5 * pi / 2 = 7.854 mm: 0.1 + (7.854 - 1) / 10 + 0.1 s. Reported as 18 feeds of 5 degrees.
+    out, r = run(sap, """PHI := 90.0; t0 := CLOCK; MCRW(A1 := 0.0, A4 := 5.0);
+writeln(CLOCK - t0, ' ', A1.dp, ' ', A4.dp);""")
+    t, x, c = out[0].split()
+    assert int(t) == pytest.approx((0.2 + (2.5 * math.pi - 1.0) / 10.0) * SEC, abs=8)
+    assert float(x) == pytest.approx(5.0)
+    assert float(c) == pytest.approx(math.degrees(0.5), abs=0.001)
+    assert (r["motion"]["arc_moves"], r["motion"]["feed_moves"]) == (0, 18)
+
+
+def test_lookahead_circle_limit_on_a_surface_uses_the_rotary_acceleration_there(sap):
+    # spooled full circle R = 1 mm in the A1/A4 surface plane, LookAhead: v <= sqrt(R * a) with a the smaller of
+    # A1.maxacc = 1000 mm/s^2 and A4.maxacc = 90 deg/s^2 * (10 mm * pi / 180 per deg) = 15.708 mm/s^2:
+    # v = 3.963 mm/s; TRAC 100: 2 ramps of v / 100 s, cruise (2 pi - v^2 / 100) / v
+    out, _ = run(sap, """PHI := 360.0; MODEREG := 1; A1.maxacc := 1000.0; A4.maxacc := 90.0; t0 := CLOCK;
+SMCR(A1 := 1.0, A4 := 0.0); SSMSW(A1, A4);
+writeln(CLOCK - t0);""")
+    v = math.sqrt(1.0 * 90.0 * 10.0 * math.pi / 180.0)
+    assert int(out[0]) == pytest.approx((2 * v / 100.0 + (2 * math.pi - v * v / 100.0) / v) * SEC, abs=8)

@@ -159,21 +159,26 @@ class Commands:
         f, _ = self.units(tk)
         p0 = tuple(start[ax] for ax in axes)
         sh = [self.user_shift(self.axes[ax]) for ax in axes]
-        vals = [v * f for _, v in items]
+        # the plane in path units: a rotary axis in a translational interpolation on its surface (effradius)
+        w = (self.weight(tk, axes[0]), self.weight(tk, axes[1]))
+        sc = (self.scale(tk, axes[0], f) * w[0], self.scale(tk, axes[1], f) * w[1])
+        q0 = (p0[0] * w[0], p0[1] * w[1])
+        qs = (sh[0] * w[0], sh[1] * w[1])
+        vals = (items[0][1] * sc[0], items[1][1] * sc[1])
         phi_deg = tk.sysp["PHI"]
         if target:
             # target-point mode: the circle items give the end point, DTCA1/2 the centre (digest)
             rel_center = relative or bool(self.cfg["dtca_always_relative"])
-            d1, d2 = tk.sysp["DTCA1"] * f, tk.sysp["DTCA2"] * f
-            c = (p0[0] + d1, p0[1] + d2) if rel_center else (d1 + sh[0], d2 + sh[1])
-            e = (p0[0] + vals[0], p0[1] + vals[1]) if relative else (vals[0] + sh[0], vals[1] + sh[1])
-            r0 = math.hypot(p0[0] - c[0], p0[1] - c[1])
+            d1, d2 = tk.sysp["DTCA1"] * sc[0], tk.sysp["DTCA2"] * sc[1]
+            c = (q0[0] + d1, q0[1] + d2) if rel_center else (d1 + qs[0], d2 + qs[1])
+            e = (q0[0] + vals[0], q0[1] + vals[1]) if relative else (vals[0] + qs[0], vals[1] + qs[1])
+            r0 = math.hypot(q0[0] - c[0], q0[1] - c[1])
             r1 = math.hypot(e[0] - c[0], e[1] - c[1])
             if r0 == 0 or abs(r1 - r0) > 1e-3 * r0 + 1e-9:
                 for ax in axes:
                     self.axes[ax].flags |= 1 << self.cfg["axst_bits"]["refused"]
                 return None
-            a0 = math.atan2(p0[1] - c[1], p0[0] - c[0])
+            a0 = math.atan2(q0[1] - c[1], q0[0] - c[0])
             a1 = math.atan2(e[1] - c[1], e[0] - c[0])
             d = a1 - a0
             if phi_deg >= 0:
@@ -188,13 +193,13 @@ class Commands:
                     d += 2 * math.pi
             phi = d
         else:
-            c = (p0[0] + vals[0], p0[1] + vals[1]) if relative else (vals[0] + sh[0], vals[1] + sh[1])
+            c = (q0[0] + vals[0], q0[1] + vals[1]) if relative else (vals[0] + qs[0], vals[1] + qs[1])
             phi = math.radians(phi_deg)
-            a0 = math.atan2(p0[1] - c[1], p0[0] - c[0])
-            r0 = math.hypot(p0[0] - c[0], p0[1] - c[1])
+            a0 = math.atan2(q0[1] - c[1], q0[0] - c[0])
+            r0 = math.hypot(q0[0] - c[0], q0[1] - c[1])
         radius = r0
         a_end = a0 + phi
-        p1 = [c[0] + radius * math.cos(a_end), c[1] + radius * math.sin(a_end)]
+        p1 = [(c[0] + radius * math.cos(a_end)) / w[0], (c[1] + radius * math.sin(a_end)) / w[1]]
         for k in range(2, len(axes)):  # the helix's further axes (rotary ones as on a straight line)
             val = items[k][1] * self.scale(tk, axes[k], f)
             p1.append(p0[k] + val if relative else val + sh[k])
@@ -205,8 +210,10 @@ class Commands:
         length = math.sqrt((radius * phi) ** 2 + lin2)
         mv = Move(axes, p0, p1, "arc", self.src(tk, loc), start)
         mv.center, mv.radius, mv.a0, mv.phi, mv.plane = c, radius, a0, phi, (0, 1)
-        if any(nfrax >> ax & 1 or self.rotary[ax] for ax in axes[2:]):
-            mv.weights = (1.0, 1.0) + tuple(0.0 if nfrax >> ax & 1 else self.weight(tk, ax) for ax in axes[2:])
+        if w != (1.0, 1.0):
+            mv.plane_w = w
+        if w != (1.0, 1.0) or any(nfrax >> ax & 1 or self.rotary[ax] for ax in axes[2:]):
+            mv.weights = w + tuple(0.0 if nfrax >> ax & 1 else self.weight(tk, ax) for ax in axes[2:])
         if not self.start_path(tk, mv, length, loc):
             return None
         return self._wait(tk, axes, wait)

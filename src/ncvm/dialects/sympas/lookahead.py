@@ -54,7 +54,8 @@ def retime(axes, segs: list, targets: list, moderegs: list, v_start: float = 0.0
         v, a = m.vmax, m.prof.a
         if mode & LOOKAHEAD and m.kind in ("arc", "arc3d"):
             plane = [m.axes[i] for i in m.plane] if m.kind == "arc" else list(m.axes[:3])
-            v = min(v, math.sqrt(m.radius * min(axes[ax].q["maxacc"] for ax in plane)))
+            w = m.plane_w or (1.0,) * len(plane)  # a rotary axis on its surface: mm per deg
+            v = min(v, math.sqrt(m.radius * min(axes[ax].q["maxacc"] * wk for ax, wk in zip(plane, w))))
         if mode & CHKMAXVEL and m.kind == "line" and m.prof.length > 0:
             for k, ax in enumerate(m.axes):
                 d = abs(m.p1[k] - m.p0[k]) / m.prof.length

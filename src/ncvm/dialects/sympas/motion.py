@@ -148,7 +148,7 @@ class Move:
     __slots__ = ("axes", "p0", "p1", "kind", "t0", "t1", "prof", "center", "radius", "a0", "phi", "plane",
                  "normal", "lin", "src", "start_all", "feed", "stop_s", "stop_t", "stop_dec", "retired", "jog",
                  "homing", "vmax", "ovr0", "warp", "stop_v0", "stop_s0", "drift",
-                 "weights")
+                 "weights", "plane_w")
 
     def __init__(self, axes, p0, p1, kind, src: Src, start_all):
         self.axes = axes
@@ -161,6 +161,7 @@ class Move:
         self.retired = False
         self.jog = False
         self.weights = None  # path units per axis unit (effradius, NFRAX = 0); None: 1 for every axis
+        self.plane_w = None  # a circle's plane in path units (a rotary axis on its surface): per axis unit
         self.homing = False  # a home search (JHL, JHR, JHI): a jog that a new JA/JR does not re-target
         self.drift = False  # a jog running on at jtv past its target (profile end already reported)
         self.ovr0 = 1.0  # the override the profile was planned with
@@ -188,8 +189,9 @@ class Move:
             if f >= 1.0:
                 out = list(self.p1)
             else:
-                out[i] = self.center[0] + self.radius * math.cos(ang)
-                out[j] = self.center[1] + self.radius * math.sin(ang)
+                wi, wj = self.plane_w or (1.0, 1.0)
+                out[i] = (self.center[0] + self.radius * math.cos(ang)) / wi
+                out[j] = (self.center[1] + self.radius * math.sin(ang)) / wj
             return tuple(out)
         # 3-D circle: rotate (p0 - c) about the unit normal by phi*f (Rodrigues)
         if f >= 1.0:
@@ -341,7 +343,7 @@ class Move:
             canon.feed(start, end, self.feed, self.src)
             return
         s_end = self.stop_s if self.stop_s is not None else self.prof.length
-        if self.kind == "arc":
+        if self.kind == "arc" and self.plane_w is None:
             i, j = self.plane
             frac = s_end / self.prof.length if self.prof.length > 0 else 1.0
             swept = self.phi * frac
@@ -357,7 +359,7 @@ class Move:
             spec = ArcSpec(self.axes[i], self.axes[j], self.center, swept < 0, self.radius, turns)
             canon.arc(start, end, spec, self.feed, self.src)
             return
-        # 3-D circle: a polyline of feeds, at most 5 degrees per segment
+        # 3-D circle, or a circle on a rotary axis's surface: a polyline of feeds, at most 5 degrees per segment
         n = max(1, int(math.ceil(abs(self.phi) * s_end / max(self.prof.length, 1e-12) / math.radians(5.0))))
         prev = start
         for k in range(1, n + 1):
