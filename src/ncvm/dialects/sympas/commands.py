@@ -465,10 +465,9 @@ class Commands:
             v_start = m.prof.v1
         chain.extend(segs, targets, [mode] * len(segs))
         part = chain.segs[first:]
-        if part:
-            part[0].t0 = m.t1 if resume is None else part[0].t0
+        if part:  # (a first segment not begun yet starts at m.t1 already)
             retime(self.axes, part, chain.targets[first:], chain.moderegs[first:], v_start, resume)
-        chain._spans()
+        chain.refresh()
         for ax in chain.axes:
             self.axes[ax].move = chain
         for entry in list(chain.ssf):  # SSF entries between re-planned segments act at their new ends
@@ -529,7 +528,8 @@ class Commands:
             p0 = start[ax]
             if not relative and self.rotary[ax] and self.sys["MODEREG"] & 0x200:
                 # ShortestRotatoricDistance (L1400): the shorter way round to the target angle
-                v = (p0 - self.user_shift(a)) + ((v - (p0 - self.user_shift(a)) + 180.0) % 360.0 - 180.0)
+                here = p0 - self.user_shift(a)
+                v = here + ((v - here + 180.0) % 360.0 - 180.0)
             p1 = self.round_counts(a.target + v if relative else v + self.user_shift(a))
             a.target = p1
             vel = a.q["jvl"] * a.q["jovr"]

@@ -390,9 +390,9 @@ class Chain:
         self.jog = self.drift = self.homing = False
         self.parked: list = []  # timed actions waiting for a held segment's end (re-armed by UTROVR)
         self.ssf: list = []  # (segment, action, armed) of the SSF entries between segments
-        self._spans()
+        self.refresh()
 
-    def _spans(self) -> None:
+    def refresh(self) -> None:
         self.axes = tuple(sorted({ax for m in self.segs for ax in m.axes}))
         self.t1 = self.segs[-1].t1
         self.p1 = self.final()
@@ -402,7 +402,7 @@ class Chain:
         self.segs.extend(segs)
         self.targets.extend(targets)
         self.moderegs.extend(moderegs)
-        self._spans()
+        self.refresh()
 
     def joinable(self) -> bool:
         """New segments can join this chain while it runs: it is neither stopped nor overridden."""
