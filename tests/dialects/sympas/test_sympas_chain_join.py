@@ -165,3 +165,40 @@ PU := 9; SMLR(A1 := 10.0); SSMS(A1);"""))
     assert r["error"]["code"] == "256"
     assert r["position"]["X"] == pytest.approx(10.0)
     assert r["motion"]["feed_moves"] == 1  # the running segment is reported
+
+
+def test_chain_under_a_settled_override_is_joined(sap):
+    # TROVR 0.5 from 0.2 s (TROVRST 0): the segment, at 1.5 mm, goes on at 5 mm/s (its profile time at half
+    # rate). Joined at 0.5 s (at 3.0 mm): it runs its last 7 mm at 5 mm/s (1.4 s, to 1.9 s) into the new
+    # segment, planned at TRVL * 0.5 = 5 mm/s with the joint TRTVL * 0.5 = 5 mm/s: 9.875 mm at 5 mm/s
+    # (1.975 s) and 0.05 s braking with TRAC: ends at 1.9 + 2.025 = 3.925 s (from rest it would be 4.05 s).
+    out, r = run(sap, """t0 := CLOCK;
+SMLR(A1 := 10.0); SSMS(A1);
+repeat until CLOCK - t0 >= 3125;
+TROVR := 0.5; TROVRST := 0.0; UTROVR(A1);
+repeat until CLOCK - t0 >= 7812;
+SMLR(A1 := 10.0); SSMS(A1);
+repeat until CLOCK - t0 >= 29688;
+x := A1.dp; v := A1.dv;
+SSMSW(A1);
+writeln(CLOCK - t0, ' ', x, ' ', v);""")
+    assert int(out[0]) == pytest.approx(3.925 * SEC, abs=8)
+    assert float(out[1]) == pytest.approx(10.0, abs=0.003)  # at 1.9 s
+    assert float(out[2]) == pytest.approx(5.0, abs=1e-6)
+    assert r["position"]["X"] == pytest.approx(20.0)
+
+
+def test_chain_during_an_override_ramp_is_not_joined(sap):
+    # TROVRST 1 s from 0.2 s: the override ramp still runs at 0.5 s, so the new segment starts after the
+    # chain, from rest. Segment 1 (1.1 s of profile time, braking from 1.0 s): its profile time reaches
+    # 0.2 + (1 - 0.25) = 0.95 s at 1.2 s (rate 1 -> 0.5 linearly), then 1.1 s at 1.2 + 0.15 / 0.5 = 1.5 s.
+    # Segment 2, planned at 5 mm/s: 0.05 + 9.75 / 5 + 0.05 = 2.05 s -> 3.55 s.
+    out, r = run(sap, """t0 := CLOCK;
+SMLR(A1 := 10.0); SSMS(A1);
+repeat until CLOCK - t0 >= 3125;
+TROVR := 0.5; TROVRST := 1.0; UTROVR(A1);
+repeat until CLOCK - t0 >= 7812;
+SMLR(A1 := 10.0); SSMSW(A1);
+writeln(CLOCK - t0);""")
+    assert int(out[0]) == pytest.approx(3.55 * SEC, abs=8)
+    assert r["position"]["X"] == pytest.approx(20.0)

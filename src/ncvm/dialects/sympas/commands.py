@@ -441,7 +441,7 @@ class Commands:
         if len(moves) != 1:
             return None
         mv = next(iter(moves.values()))
-        return mv if isinstance(mv, Chain) and not mv.jog and mv.joinable() else None
+        return mv if isinstance(mv, Chain) and not mv.jog and mv.joinable(t) else None
 
     def _join(self, tk, chain, segs: list, targets: list, mode: int, ssf_after: list) -> None:
         """Segments spooled and started while ``chain`` runs continue it: its segments not begun yet, and
@@ -457,16 +457,18 @@ class Commands:
             return
         k = next(i for i, m in enumerate(chain.segs) if now < m.t1)
         m = chain.segs[k]
-        tau = (now - m.t0) / TICKS_PER_S
+        rate = m.steady_rate(now)  # an override (UTROVR) that has settled goes on as it is
+        tau = m.tau(now) / TICKS_PER_S
         resume, v_start, first = None, 0.0, k + 1
         if m.prof.replannable(tau):
-            resume, first = (tau, m.prof.s(tau), m.prof.speed(tau)), k
+            resume, first = (tau, m.prof.s(tau), m.prof.speed(tau) * rate, now), k
         else:
-            v_start = m.prof.v1
+            v_start = m.prof.v1 * rate
         chain.extend(segs, targets, [mode] * len(segs))
         part = chain.segs[first:]
         if part:  # (a first segment not begun yet starts at m.t1 already)
-            retime(self.axes, part, chain.targets[first:], chain.moderegs[first:], v_start, resume)
+            retime(self.axes, part, chain.targets[first:], chain.moderegs[first:], v_start, resume,
+                   [x.steady_rate(now) for x in part])
         chain.refresh()
         for ax in chain.axes:
             self.axes[ax].move = chain

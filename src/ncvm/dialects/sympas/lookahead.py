@@ -34,24 +34,31 @@ def _direction(mv, at_end: bool) -> list:
     return u
 
 
-def retime(axes, segs: list, targets: list, moderegs: list, v_start: float = 0.0, resume=None) -> None:
+def retime(axes, segs: list, targets: list, moderegs: list, v_start: float = 0.0, resume=None,
+           rates=None) -> None:
     """Give the chained moves ``segs`` (started rest to rest, back to back) their junction velocities
     and new start/end times. ``targets[k]`` is segment k's TRTVL in units/s, ``moderegs[k]`` the
     MODEREG in force when the spooler started it.
 
     A chain extended while it runs is planned anew from its running state: ``v_start`` is the velocity
     the first segment starts with (the end velocity of the segment before it, which keeps its plan), or
-    ``resume = (tau, s, v)`` says that the first segment is running and is planned anew from profile
-    time ``tau`` (s), where it stands at path point ``s`` with velocity ``v``."""
+    ``resume = (tau, s, v, t)`` says that the first segment is running and is planned anew from profile
+    time ``tau`` (s), where it stands at path point ``s`` with velocity ``v`` at the tick ``t``.
+
+    ``rates[k]`` is the steady rate at which an override (UTROVR) runs segment k's profile time: the
+    junctions are planned on the wall clock (velocities times the rate, accelerations times its square),
+    each profile in its own time. Velocities here (``v_start``, ``targets``, resume's ``v``) are on the
+    wall clock; ``targets`` are those of the segments' planning override, scaled by the rates."""
     n = len(segs)
+    rates = rates or [1.0] * n
     lengths = [m.prof.length for m in segs]
     if resume is not None:
         lengths[0] -= resume[1]
         v_start = resume[2]
     vmax = []
     acc = []
-    for m, mode in zip(segs, moderegs):
-        v, a = m.vmax, m.prof.a
+    for m, mode, rate in zip(segs, moderegs, rates):
+        v, a = m.vmax * rate, m.prof.a * rate * rate
         if mode & LOOKAHEAD and m.kind in ("arc", "arc3d"):
             plane = [m.axes[i] for i in m.plane] if m.kind == "arc" else list(m.axes[:3])
             w = m.plane_w or (1.0,) * len(plane)  # a rotary axis on its surface: mm per deg
@@ -67,7 +74,7 @@ def retime(axes, segs: list, targets: list, moderegs: list, v_start: float = 0.0
     # joint k is the end of segment k; the last one ends at rest
     vj = [0.0] * n
     for k in range(n - 1):
-        v = min(targets[k], vmax[k], vmax[k + 1])
+        v = min(targets[k] * rates[k], vmax[k], vmax[k + 1])
         if moderegs[k] & LOOKAHEAD and v > 0:
             u_out, u_in = _direction(segs[k], True), _direction(segs[k + 1], False)
             for ax, (x, y) in enumerate(zip(u_out, u_in)):
@@ -92,12 +99,15 @@ def retime(axes, segs: list, targets: list, moderegs: list, v_start: float = 0.0
             # velocity (a triangle) keeps its start velocity instead
             v_top = v_in
             v_out = min(v_out, v_in)
-        prof = Profile(L, v_top, acc[k], v_in, v_out, jerk[k])
+        r = rates[k]
+        prof = Profile(L, v_top / r, acc[k] / (r * r), v_in / r, v_out / r, jerk[k])
         if k == 0 and resume is not None:
-            m.prof = Resumed(m.prof, resume[0], resume[1], prof)
+            m.prof = Resumed(m.prof, resume[0], resume[1], prof)  # the override goes on at its steady rate
+            m.t1 = t = resume[3] + prof.duration * TICKS_PER_S / r
         else:
             m.prof = prof
             m.t0 = t
-        m.t1 = t = m.t0 + m.prof.duration * TICKS_PER_S
+            m.warp = None if r == 1.0 else (t, 0.0, r, r, 0.0)
+            m.t1 = t = t + prof.duration * TICKS_PER_S / r
         m.feed = m.prof.v * 60.0
         v_in = v_out

@@ -246,6 +246,17 @@ class Move:
             return math.inf if rest > ramp else T
         return T + (rest - ramp) / rb
 
+    def steady_rate(self, t_ticks: float):
+        """The constant rate of profile time from ``t_ticks`` on (from the start when it has not begun yet);
+        None while an override ramp (TROVRST) still runs then, or under a feed hold."""
+        w = self.warp
+        if w is None:
+            return 1.0
+        tw, _, ra, rb, T = w
+        if (max(t_ticks, self.t0) >= tw + T or ra == rb) and rb > 0.0:
+            return rb
+        return None
+
     def standstill(self) -> float:
         """The tick from which a feed hold (TROVR = 0) keeps this move standing; inf when not held."""
         w = self.warp
@@ -393,6 +404,7 @@ class Chain:
         self.refresh()
 
     def refresh(self) -> None:
+        """Axes, end and end point after the segments changed (a join, a stop)."""
         self.axes = tuple(sorted({ax for m in self.segs for ax in m.axes}))
         self.t1 = self.segs[-1].t1
         self.p1 = self.final()
@@ -404,9 +416,12 @@ class Chain:
         self.moderegs.extend(moderegs)
         self.refresh()
 
-    def joinable(self) -> bool:
-        """New segments can join this chain while it runs: it is neither stopped nor overridden."""
-        return self.t1 < math.inf and all(m.warp is None and m.stop_s is None for m in self.segs)
+    def joinable(self, t: float) -> bool:
+        """New segments can join this chain at ``t``: it is not stopped, and its segments still to run go at
+        a steady override rate (no TROVRST ramp under way, no feed hold)."""
+        if self.t1 == math.inf or any(m.stop_s is not None for m in self.segs):
+            return False
+        return all(m.steady_rate(t) is not None for m in self.segs if m.t1 > t)
 
     def _seg(self, t: float):
         for m in self.segs:
@@ -458,7 +473,7 @@ class Chain:
             if prev.t1 == math.inf:
                 nxt.warp = None
                 continue
-            ra = prev.rate(prev.t1)
+            ra = prev.rate(prev.t1) * prev.ovr0 / nxt.ovr0  # segments of a joined chain may be planned apart
             nxt.warp = (nxt.t0, 0.0, ra, ra, 0.0)
             nxt.t1 = math.inf
             nxt.override(nxt.t0, ovr / nxt.ovr0, max(0.0, end_ramp - nxt.t0))
