@@ -202,3 +202,27 @@ SMLR(A1 := 10.0); SSMSW(A1);
 writeln(CLOCK - t0);""")
     assert int(out[0]) == pytest.approx(3.55 * SEC, abs=8)
     assert r["position"]["X"] == pytest.approx(20.0)
+
+
+def test_override_ramp_across_segments_planned_under_different_overrides(sap):
+    # as above (joined at 0.5 s under TROVR 0.5: at 1.5 s A1 is at 3.0 + 5 * 1.0 = 8.0 mm at 5 mm/s), then
+    # TROVR 1 over TROVRST 1 s from 1.5 s: the override is 0.5 + 0.5 * tau on both segments (the first was
+    # planned at 1, the second at 0.5), so the path runs at 10 * (0.5 + 0.5 * tau) mm/s across the joint:
+    # at 2.5 s A1 is at 8 + 5 + 2.5 = 15.5 mm with 10 mm/s. The rest, 4.5 mm: 0.125 mm of braking from
+    # profile velocity 5 at twice the rate (0.025 s) and 4.375 mm at 10 mm/s (0.4375 s) -> ends at 2.9625 s.
+    out, _ = run(sap, """t0 := CLOCK;
+SMLR(A1 := 10.0); SSMS(A1);
+repeat until CLOCK - t0 >= 3125;
+TROVR := 0.5; TROVRST := 0.0; UTROVR(A1);
+repeat until CLOCK - t0 >= 7812;
+SMLR(A1 := 10.0); SSMS(A1);
+repeat until CLOCK - t0 >= 23438;
+TROVR := 1.0; TROVRST := 1.0; UTROVR(A1);
+repeat until CLOCK - t0 >= 39062;
+x := A1.dp; v := A1.dv;
+SSMSW(A1);
+writeln(CLOCK - t0, ' ', x, ' ', v);""")
+    t, x, v = out
+    assert float(x) == pytest.approx(15.5, abs=0.01)
+    assert float(v) == pytest.approx(10.0, abs=0.01)
+    assert int(t) == pytest.approx(2.9625 * SEC, abs=8)
