@@ -226,3 +226,29 @@ writeln(CLOCK - t0, ' ', x, ' ', v);""")
     assert float(x) == pytest.approx(15.5, abs=0.01)
     assert float(v) == pytest.approx(10.0, abs=0.01)
     assert int(t) == pytest.approx(2.9625 * SEC, abs=8)
+
+
+def test_autospool_enters_further_profiles_when_memory_is_free(sap):
+    # spool_capacity = 4 (L1396: "Weitere Profile werden nur eingetragen, wenn wieder Speicherplatz frei ist"):
+    # the 4th SMLR fills the spooler and starts it; the 5th waits until segment 1 is done (1.05 s), the 6th
+    # until segment 2 is done (2.05 s); each joins the running chain. Then segments 3..6 hold the spooler:
+    # lsm = 0, mcis = 4. All six as one chain: 1.05 + 4 * 1.0 + 1.05 = 6.1 s.
+    r = sap(prog("""MODEREG := $20; t0 := CLOCK;
+SMLR(A1 := 10.0); SMLR(A1 := 10.0); SMLR(A1 := 10.0); SMLR(A1 := 10.0);
+t1 := CLOCK - t0;
+SMLR(A1 := 10.0);
+t2 := CLOCK - t0;
+SMLR(A1 := 10.0);
+writeln(t1, ' ', t2, ' ', CLOCK - t0, ' ', A1.lsm, ' ', A1.mcis);
+SSMSW(A1);
+writeln(CLOCK - t0, ' ', A1.lsm, ' ', A1.mcis);"""), "[sympas]\nspool_capacity = 4\n")
+    assert r["status"] == "ok", r["error"]
+    t1, t2, t3, lsm, mcis = (int(x) for x in r["output"][0].split())
+    assert t1 < 8
+    assert t2 == pytest.approx(1.05 * SEC, abs=8)
+    assert t3 == pytest.approx(2.05 * SEC, abs=8)
+    assert (lsm, mcis) == (0, 4)
+    t, lsm, mcis = (int(x) for x in r["output"][1].split())
+    assert t == pytest.approx(6.1 * SEC, abs=8)
+    assert (lsm, mcis) == (4 * 64, 0)
+    assert r["position"]["X"] == pytest.approx(60.0)

@@ -254,10 +254,10 @@ class Card(Commands):
             return getattr(a, name)
         if name in ("kp", "ki", "kd", "kpl", "kfca", "kfcv"):
             return a.staged[name]
-        if name == "lsm":
-            return (int(self.cfg["spool_capacity"]) - len(a.spool)) * 64
+        if name == "lsm":  # the running chain's unfinished segments still hold their entries
+            return (int(self.cfg["spool_capacity"]) - self.spool_used(ax, t)) * 64
         if name == "mcis":
-            return sum(1 for e in a.spool if e[0] == "move")
+            return sum(1 for e in a.spool if e[0] == "move") + self.chain_pending(ax, t)
         return a.q[name]
 
     def set_qual(self, tk, ax: int, name: str, value) -> None:

@@ -281,11 +281,77 @@ class Commands:
             self.check_axis(ax)
         sysp = dict(tk.sysp)
         entry = ("move", kind, tuple(items), loc, target, sysp)
+        cap = int(self.cfg["spool_capacity"])
+        if any(self.spool_used(ax, tk.time) >= cap for ax in axes):
+            # AutoSpool (MODEREG bit 5, L1396): with the spooler full, its processing starts and further
+            # profiles are entered only when memory is free again; without the bit the task blocks as well (A-59)
+            self.cmd_ssms(tk, axes, loc)
+            g = self._wait_spool(tk, axes, cap)
+            if g is not None:
+                return self._enter_after(tk, g, axes, entry, cap, loc)
+        self._enter(tk, axes, entry, cap, loc)
+        return None
+
+    def _enter(self, tk, axes, entry, cap: int, loc) -> None:
         for ax in axes:
             self.axes[ax].spool.append(entry)
-        if any(len(self.axes[ax].spool) >= int(self.cfg["spool_capacity"]) for ax in axes):
-            return self.cmd_ssms(tk, axes, loc)  # AutoSpool (MODEREG bit 5); without it the task blocks (A-59)
-        return None
+        if any(self.spool_used(ax, tk.time) >= cap for ax in axes):
+            self.cmd_ssms(tk, axes, loc)  # the spooler is full now: AutoSpool starts it
+
+    def _enter_after(self, tk, wait, axes, entry, cap: int, loc):
+        yield from wait
+        self._enter(tk, axes, entry, cap, loc)
+
+    def chain_pending(self, ax: int, t: float) -> int:
+        """Segments of axis ``ax``'s running chain not finished at ``t``: they still hold spooler memory."""
+        mv = self.axes[ax].move
+        if not isinstance(mv, Chain) or mv.jog or mv.t1 <= t:
+            return 0
+        return sum(1 for m in mv.segs if m.t1 > t and ax in m.axes)
+
+    def spool_used(self, ax: int, t: float) -> int:
+        """Spooler entries of axis ``ax`` at ``t``: the queued ones and the running chain's unfinished segments."""
+        return len(self.axes[ax].spool) + self.chain_pending(ax, t)
+
+    def _spool_free_at(self, axes, cap: int, t: float):
+        """The tick from which every axis of ``axes`` has a free spooler entry (its oldest segments done);
+        None when the running chains cannot free one (the rest waits behind a halt)."""
+        until = t
+        for ax in axes:
+            over = self.spool_used(ax, t) - cap + 1
+            if over <= 0:
+                continue
+            mv = self.axes[ax].move
+            ends = [m.t1 for m in mv.segs if m.t1 > t and ax in m.axes] if isinstance(mv, Chain) else []
+            if over > len(ends):
+                return None
+            until = max(until, ends[over - 1])
+        return until
+
+    def _wait_spool(self, tk, axes, cap: int):
+        until = self._spool_free_at(axes, cap, tk.time)
+        if until is None or until <= tk.time:
+            return None
+        if until < math.inf and tk.fast_wait(until):
+            return None
+        return self._waiting_spool(tk, axes, cap)
+
+    def _waiting_spool(self, tk, axes, cap: int):
+        try:
+            while True:
+                until = self._spool_free_at(axes, cap, tk.time)
+                if until is None or until <= tk.time:
+                    return
+                if until == math.inf:  # held by TROVR = 0: as a W-wait on held motion
+                    self._check_stall(tk)
+                    step = tk.time + self.servo
+                    if not tk.others_running():
+                        step = max(step, min(self.next_timed(), tk.time + 1000.0 * self.servo))
+                else:
+                    step = until if not tk.others_running() else min(until, tk.time + self.servo)
+                yield from tk.wait_until(step)
+        finally:
+            tk.held = None
 
     def cmd_smla(self, tk, items, loc):
         return self._spool(tk, items, loc, "mla")
@@ -448,6 +514,7 @@ class Commands:
         the running one if it has not begun its final ramp (Profile.replannable), are planned anew with
         the new ones by the look-ahead, so the axes do not stop at the old end (digest §10.5, L1391)."""
         now = tk.time
+        chain.prune(now - self.slice - self.servo, self.canon, len(self.axes))  # other tasks lag by a slice at most
         old = len(chain.segs)
         if not segs:
             for _, act in ssf_after:
@@ -464,6 +531,12 @@ class Commands:
             resume, first = (tau, m.prof.s(tau), m.prof.speed(tau) * rate, now), k
         else:
             v_start = m.prof.v1 * rate
+        j = old - 1  # segments before the last joint that was not braked for the old end keep their plan
+        while j > first and chain.segs[j - 1].braked:
+            j -= 1
+        if j > first:
+            before = chain.segs[j - 1]
+            resume, v_start, first = None, before.prof.v1 * before.steady_rate(now), j
         chain.extend(segs, targets, [mode] * len(segs))
         part = chain.segs[first:]
         if part:  # (a first segment not begun yet starts at m.t1 already)

@@ -23,7 +23,14 @@ CHKMAXVEL = 0x80
 
 
 def _direction(mv, at_end: bool) -> list:
-    """Axis units per path unit at the start or end of ``mv``, over all machine axes."""
+    """Axis units per path unit at the start or end of ``mv``, over all machine axes (kept on the move:
+    a chain joined again and again asks for them each time)."""
+    if mv.dirs is None:
+        mv.dirs = (_tangent(mv, False), _tangent(mv, True))
+    return mv.dirs[at_end]
+
+
+def _tangent(mv, at_end: bool) -> list:
     L = mv.prof.length
     ds = L * 1e-6
     s0, s1 = (L - ds, L) if at_end else (0.0, ds)
@@ -84,9 +91,11 @@ def retime(axes, segs: list, targets: list, moderegs: list, v_start: float = 0.0
         vj[k] = max(0.0, v)
     jerk = [m.prof.r for m in segs]
     ramp_acc = [a * (1.0 - 0.5 * r) for a, r in zip(acc, jerk)]  # S-ramps plan with a * (1 - jerkrel / 2)
+    segs[-1].braked = True  # at rest for want of a next segment: a later join plans it anew
     for k in range(n - 2, -1, -1):  # the next segment must be able to brake to its end velocity
-        m = segs[k + 1]
-        vj[k] = min(vj[k], math.sqrt(vj[k + 1] ** 2 + 2.0 * ramp_acc[k + 1] * lengths[k + 1]))
+        brake = math.sqrt(vj[k + 1] ** 2 + 2.0 * ramp_acc[k + 1] * lengths[k + 1])
+        segs[k].braked = brake < vj[k]
+        vj[k] = min(vj[k], brake)
     v_in = v_start
     t = segs[0].t0
     for k, m in enumerate(segs):  # this segment must be able to reach its end velocity

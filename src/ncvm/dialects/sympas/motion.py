@@ -148,7 +148,7 @@ class Move:
     __slots__ = ("axes", "p0", "p1", "kind", "t0", "t1", "prof", "center", "radius", "a0", "phi", "plane",
                  "normal", "lin", "src", "start_all", "feed", "stop_s", "stop_t", "stop_dec", "retired", "jog",
                  "homing", "vmax", "ovr0", "warp", "stop_v0", "stop_s0", "drift",
-                 "weights", "plane_w")
+                 "weights", "plane_w", "braked", "dirs")
 
     def __init__(self, axes, p0, p1, kind, src: Src, start_all):
         self.axes = axes
@@ -161,6 +161,8 @@ class Move:
         self.retired = False
         self.jog = False
         self.weights = None  # path units per axis unit (effradius, NFRAX = 0); None: 1 for every axis
+        self.dirs = None  # the look-ahead's unit tangents at the start and the end (lookahead.py)
+        self.braked = False  # a chained segment whose end velocity was lowered for the segments after it
         self.plane_w = None  # a circle's plane in path units (a rotary axis on its surface): per axis unit
         self.homing = False  # a home search (JHL, JHR, JHI): a jog that a new JA/JR does not re-target
         self.drift = False  # a jog running on at jtv past its target (profile end already reported)
@@ -415,6 +417,20 @@ class Chain:
         self.targets.extend(targets)
         self.moderegs.extend(moderegs)
         self.refresh()
+
+    def prune(self, before: float, canon, names_count: int) -> None:
+        """Report and drop the segments that ended before ``before``, so that a chain joined again and again
+        (AutoSpool) stays as short as the spooler; no one asks for times that far back any more."""
+        k = 0
+        while k < len(self.segs) - 1 and self.segs[k].t1 < before:
+            k += 1
+        if not k:
+            return
+        for m in self.segs[:k]:
+            m.emit(canon, names_count)
+        del self.segs[:k], self.targets[:k], self.moderegs[:k]
+        kept = {id(m) for m in self.segs}
+        self.ssf = [e for e in self.ssf if id(e[0]) in kept]
 
     def joinable(self, t: float) -> bool:
         """New segments can join this chain at ``t``: it is not stopped, and its segments still to run go at
