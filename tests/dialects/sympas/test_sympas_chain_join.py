@@ -252,3 +252,18 @@ writeln(CLOCK - t0, ' ', A1.lsm, ' ', A1.mcis);"""), "[sympas]\nspool_capacity =
     assert t == pytest.approx(6.1 * SEC, abs=8)
     assert (lsm, mcis) == (4 * 64, 0)
     assert r["position"]["X"] == pytest.approx(60.0)
+
+
+def test_autospool_refills_run_as_one_chain(sap):
+    # eight 1 mm segments through a spooler of 4: each refill joins while the chain cruises, so the path is the
+    # one of a single 8 mm chain: 0.1 s up (0.5 mm), 7 mm at 10 mm/s (0.7 s), 0.1 s down = 0.9 s.
+    # (the 4th SMLR fills the spooler and starts it: the clock is read right after it)
+    r = sap(prog("""MODEREG := $20;
+SMLR(A1 := 1.0); SMLR(A1 := 1.0); SMLR(A1 := 1.0); SMLR(A1 := 1.0); t0 := CLOCK;
+for t1 := 1 to 4 do SMLR(A1 := 1.0);
+SSMSW(A1);
+writeln(CLOCK - t0);"""), "[sympas]\nspool_capacity = 4\n")
+    assert r["status"] == "ok", r["error"]
+    assert int(r["output"][0]) == pytest.approx(0.9 * SEC, abs=8)
+    assert r["position"]["X"] == pytest.approx(8.0)
+    assert r["motion"]["feed_moves"] == 8
