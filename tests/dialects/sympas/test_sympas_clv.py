@@ -54,3 +54,11 @@ writeln(x, ' ', y, ' ', A1.dv, ' ', A2.dv);""")
     assert x == pytest.approx(11.7, abs=0.01)
     assert y == pytest.approx(15.6, abs=0.01)
     assert (v1, v2) == (0.0, 0.0)
+
+
+def test_manual_example_clv_then_js(sap):
+    # L1686: "clv (A1, A2); // Achskanäle 1 und 2 in Lageregelung bringen  js (A1, A2); // danach die Achsen
+    # sofort stoppen" - on axes at rest: loops closed (axst bit 2), nothing moves
+    out, r = run(sap, "OL(A1, A2);\nclv (A1, A2);\njs (A1, A2);\nwriteln(A1.axstb.3, ' ', A2.axstb.3, ' ', A1.dv);")
+    assert out[0].split() == ["TRUE", "TRUE", "0"]
+    assert r["motion"]["feed_moves"] + r["motion"]["rapid_moves"] == 0
