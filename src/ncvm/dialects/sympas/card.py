@@ -199,11 +199,7 @@ class Card(Commands):
         mv = a.move
         if mv is None or mv.t1 <= t:
             return 0.0
-        v = mv.speed_at(t)
-        p0, p1 = mv.pos(t), mv.pos(t + 1.0)
-        k = mv.axes.index(a.number)
-        d = sum((x - y) ** 2 for x, y in zip(p0, p1)) ** 0.5
-        return v * (p1[k] - p0[k]) / d if d > 0 else 0.0
+        return mv.velocity(t, a.number)
 
     def user_shift(self, a: AxisState) -> float:
         zo = self.zo.get(self.active_zo)
@@ -258,10 +254,10 @@ class Card(Commands):
             return getattr(a, name)
         if name in ("kp", "ki", "kd", "kpl", "kfca", "kfcv"):
             return a.staged[name]
-        if name == "lsm":
-            return (int(self.cfg["spool_capacity"]) - len(a.spool)) * 64
+        if name == "lsm":  # the running chain's unfinished segments still hold their entries
+            return (int(self.cfg["spool_capacity"]) - self.spool_used(ax, t)) * 64
         if name == "mcis":
-            return sum(1 for e in a.spool if e[0] == "move")
+            return sum(1 for e in a.spool if e[0] == "move") + self.chain_pending(ax, t)
         return a.q[name]
 
     def set_qual(self, tk, ax: int, name: str, value) -> None:
@@ -412,8 +408,9 @@ class Card(Commands):
             a.target = mv.p1[k]
         return True
 
-    def prepare(self, tk, axes, loc: int):
-        """Common start of a move command: axis checks, busy rule, start point."""
+    def prepare(self, tk, axes, loc: int, moving=()):
+        """Common start of a move command: axis checks, busy rule (not for the ``moving`` axes, which the
+        command takes over on the fly), start point."""
         t = tk.time
         for ax in axes:
             self.check_axis(ax)
@@ -422,7 +419,7 @@ class Card(Commands):
         self.settle(axes, t)
         for ax in axes:
             a = self.axes[ax]
-            if self.busy(a, t):
+            if self.busy(a, t) and ax not in moving:
                 if self.cfg["busy_move"] == "refuse":
                     a.flags |= 1 << self.cfg["axst_bits"]["refused"]
                     return None

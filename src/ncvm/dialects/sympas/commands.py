@@ -31,12 +31,38 @@ class Commands:
                 return True
         return False
 
-    def _user_to_machine(self, tk, items, relative: bool, start, scale: float):
+    def surface(self, tk, ax: int) -> float | None:
+        """Path length per degree of a rotary axis in a translational interpolation (a length PU): the arc at
+        its effradius ("Mantelflächenbearbeitung", L1450); None for any other axis or PU."""
+        if not self.rotary[ax] or int(tk.sysp["PU"]) not in (0, 1, 2):
+            return None
+        r = float(self.axes[ax].q["effradius"])
+        if r <= 0.0:
+            fault(256, f"effradius of rotary axis {self.axes[ax].name} must be > 0 in a translational interpolation")
+        return r * math.pi / 180.0
+
+    def scale(self, tk, ax: int, f: float) -> float:
+        """PU -> axis units of one axis of a path move: a rotary axis in a translational interpolation takes
+        its target or travel as a length on its surface, or with MODEREG bit 10 (RotatoricUnit, L1401) in
+        its own rotary unit."""
+        r = self.surface(tk, ax)
+        if r is None:
+            return f
+        return 1.0 if self.sys["MODEREG"] & 0x400 else f / r
+
+    def weight(self, tk, ax: int) -> float:
+        """Path units per axis unit: a rotary axis in a translational interpolation counts with its
+        surface length, so the path velocity is the velocity on the surface (effradius, L1450)."""
+        r = self.surface(tk, ax)
+        return 1.0 if r is None else r
+
+    def _user_to_machine(self, tk, items, relative: bool, start, f: float):
         axes = tuple(ax for ax, _ in items)
         p0 = tuple(start[ax] for ax in axes)
         p1 = []
         for ax, v in items:
             a = self.axes[ax]
+            scale = self.scale(tk, ax, f)
             if relative:
                 p1.append(a.target + v * scale)
             else:
@@ -63,6 +89,8 @@ class Commands:
         l2 = 0.0
         ovr = math.inf
         for ax, val in items:
+            if self.rotary[ax]:
+                return False  # effradius and RotatoricUnit: the general path
             a = axes[ax]
             if a.ovr < ovr:
                 ovr = a.ovr
@@ -100,10 +128,13 @@ class Commands:
         axes, p0, p1 = self._user_to_machine(tk, items, relative, start, f)
         p1 = tuple(self.round_counts(x) for x in p1)
         nfrax = int(tk.sysp["NFRAX"])
-        length = math.sqrt(sum((b - a) ** 2 for ax, a, b in zip(axes, p0, p1) if not nfrax >> ax & 1))
+        length = math.sqrt(sum(((b - a) * self.weight(tk, ax)) ** 2 for ax, a, b in zip(axes, p0, p1)
+                               if not nfrax >> ax & 1))
         if length == 0.0:
             length = max((abs(b - a) for a, b in zip(p0, p1)), default=0.0)
         mv = Move(axes, p0, p1, "line", self.src(tk, loc), start)
+        if any(nfrax >> ax & 1 or self.rotary[ax] for ax in axes) and length > 0.0:
+            mv.weights = tuple(0.0 if nfrax >> ax & 1 else self.weight(tk, ax) for ax in axes)
         if not self.start_path(tk, mv, length, loc):
             return None
         return self._wait(tk, axes, wait)
@@ -129,21 +160,26 @@ class Commands:
         f, _ = self.units(tk)
         p0 = tuple(start[ax] for ax in axes)
         sh = [self.user_shift(self.axes[ax]) for ax in axes]
-        vals = [v * f for _, v in items]
+        # the plane in path units: a rotary axis in a translational interpolation on its surface (effradius)
+        w = (self.weight(tk, axes[0]), self.weight(tk, axes[1]))
+        sc = (self.scale(tk, axes[0], f) * w[0], self.scale(tk, axes[1], f) * w[1])
+        q0 = (p0[0] * w[0], p0[1] * w[1])
+        qs = (sh[0] * w[0], sh[1] * w[1])
+        vals = (items[0][1] * sc[0], items[1][1] * sc[1])
         phi_deg = tk.sysp["PHI"]
         if target:
             # target-point mode: the circle items give the end point, DTCA1/2 the centre (digest A-37, A-40)
             rel_center = relative or bool(self.cfg["dtca_always_relative"])
-            d1, d2 = tk.sysp["DTCA1"] * f, tk.sysp["DTCA2"] * f
-            c = (p0[0] + d1, p0[1] + d2) if rel_center else (d1 + sh[0], d2 + sh[1])
-            e = (p0[0] + vals[0], p0[1] + vals[1]) if relative else (vals[0] + sh[0], vals[1] + sh[1])
-            r0 = math.hypot(p0[0] - c[0], p0[1] - c[1])
+            d1, d2 = tk.sysp["DTCA1"] * sc[0], tk.sysp["DTCA2"] * sc[1]
+            c = (q0[0] + d1, q0[1] + d2) if rel_center else (d1 + qs[0], d2 + qs[1])
+            e = (q0[0] + vals[0], q0[1] + vals[1]) if relative else (vals[0] + qs[0], vals[1] + qs[1])
+            r0 = math.hypot(q0[0] - c[0], q0[1] - c[1])
             r1 = math.hypot(e[0] - c[0], e[1] - c[1])
             if r0 == 0 or abs(r1 - r0) > 1e-3 * r0 + 1e-9:
                 for ax in axes:
                     self.axes[ax].flags |= 1 << self.cfg["axst_bits"]["refused"]
                 return None
-            a0 = math.atan2(p0[1] - c[1], p0[0] - c[0])
+            a0 = math.atan2(q0[1] - c[1], q0[0] - c[0])
             a1 = math.atan2(e[1] - c[1], e[0] - c[0])
             d = a1 - a0
             if phi_deg >= 0:
@@ -158,21 +194,27 @@ class Commands:
                     d += 2 * math.pi
             phi = d
         else:
-            c = (p0[0] + vals[0], p0[1] + vals[1]) if relative else (vals[0] + sh[0], vals[1] + sh[1])
+            c = (q0[0] + vals[0], q0[1] + vals[1]) if relative else (vals[0] + qs[0], vals[1] + qs[1])
             phi = math.radians(phi_deg)
-            a0 = math.atan2(p0[1] - c[1], p0[0] - c[0])
-            r0 = math.hypot(p0[0] - c[0], p0[1] - c[1])
+            a0 = math.atan2(q0[1] - c[1], q0[0] - c[0])
+            r0 = math.hypot(q0[0] - c[0], q0[1] - c[1])
         radius = r0
         a_end = a0 + phi
-        p1 = [c[0] + radius * math.cos(a_end), c[1] + radius * math.sin(a_end)]
-        for k in range(2, len(axes)):
-            p1.append(p0[k] + vals[k] if relative else vals[k] + sh[k])
+        p1 = [(c[0] + radius * math.cos(a_end)) / w[0], (c[1] + radius * math.sin(a_end)) / w[1]]
+        for k in range(2, len(axes)):  # the helix's further axes (rotary ones as on a straight line)
+            val = items[k][1] * self.scale(tk, axes[k], f)
+            p1.append(p0[k] + val if relative else val + sh[k])
         p1 = tuple(self.round_counts(x) for x in p1)
         nfrax = int(tk.sysp["NFRAX"])
-        lin2 = sum((p1[k] - p0[k]) ** 2 for k in range(2, len(axes)) if not nfrax >> axes[k] & 1)
+        lin2 = sum(((p1[k] - p0[k]) * self.weight(tk, axes[k])) ** 2 for k in range(2, len(axes))
+                   if not nfrax >> axes[k] & 1)
         length = math.sqrt((radius * phi) ** 2 + lin2)
         mv = Move(axes, p0, p1, "arc", self.src(tk, loc), start)
         mv.center, mv.radius, mv.a0, mv.phi, mv.plane = c, radius, a0, phi, (0, 1)
+        if w != (1.0, 1.0):
+            mv.plane_w = w
+        if w != (1.0, 1.0) or any(nfrax >> ax & 1 or self.rotary[ax] for ax in axes[2:]):
+            mv.weights = w + tuple(0.0 if nfrax >> ax & 1 else self.weight(tk, ax) for ax in axes[2:])
         if not self.start_path(tk, mv, length, loc):
             return None
         return self._wait(tk, axes, wait)
@@ -240,11 +282,77 @@ class Commands:
             self.check_axis(ax)
         sysp = dict(tk.sysp)
         entry = ("move", kind, tuple(items), loc, target, sysp)
+        cap = int(self.cfg["spool_capacity"])
+        if any(self.spool_used(ax, tk.time) >= cap for ax in axes):
+            # AutoSpool (MODEREG bit 5, L1396): with the spooler full, its processing starts and further
+            # profiles are entered only when memory is free again; without the bit the task blocks as well (A-59)
+            self.cmd_ssms(tk, axes, loc)
+            g = self._wait_spool(tk, axes, cap)
+            if g is not None:
+                return self._enter_after(tk, g, axes, entry, cap, loc)
+        self._enter(tk, axes, entry, cap, loc)
+        return None
+
+    def _enter(self, tk, axes, entry, cap: int, loc) -> None:
         for ax in axes:
             self.axes[ax].spool.append(entry)
-        if any(len(self.axes[ax].spool) >= int(self.cfg["spool_capacity"]) for ax in axes):
-            return self.cmd_ssms(tk, axes, loc)  # AutoSpool (MODEREG bit 5); without it the task blocks (A-59)
-        return None
+        if any(self.spool_used(ax, tk.time) >= cap for ax in axes):
+            self.cmd_ssms(tk, axes, loc)  # the spooler is full now: AutoSpool starts it
+
+    def _enter_after(self, tk, wait, axes, entry, cap: int, loc):
+        yield from wait
+        self._enter(tk, axes, entry, cap, loc)
+
+    def chain_pending(self, ax: int, t: float) -> int:
+        """Segments of axis ``ax``'s running chain not finished at ``t``: they still hold spooler memory."""
+        mv = self.axes[ax].move
+        if not isinstance(mv, Chain) or mv.jog or mv.t1 <= t:
+            return 0
+        return sum(1 for m in mv.segs if m.t1 > t and ax in m.axes)
+
+    def spool_used(self, ax: int, t: float) -> int:
+        """Spooler entries of axis ``ax`` at ``t``: the queued ones and the running chain's unfinished segments."""
+        return len(self.axes[ax].spool) + self.chain_pending(ax, t)
+
+    def _spool_free_at(self, axes, cap: int, t: float):
+        """The tick from which every axis of ``axes`` has a free spooler entry (its oldest segments done);
+        None when the running chains cannot free one (the rest waits behind a halt)."""
+        until = t
+        for ax in axes:
+            over = self.spool_used(ax, t) - cap + 1
+            if over <= 0:
+                continue
+            mv = self.axes[ax].move
+            ends = [m.t1 for m in mv.segs if m.t1 > t and ax in m.axes] if isinstance(mv, Chain) else []
+            if over > len(ends):
+                return None
+            until = max(until, ends[over - 1])
+        return until
+
+    def _wait_spool(self, tk, axes, cap: int):
+        until = self._spool_free_at(axes, cap, tk.time)
+        if until is None or until <= tk.time:
+            return None
+        if until < math.inf and tk.fast_wait(until):
+            return None
+        return self._waiting_spool(tk, axes, cap)
+
+    def _waiting_spool(self, tk, axes, cap: int):
+        try:
+            while True:
+                until = self._spool_free_at(axes, cap, tk.time)
+                if until is None or until <= tk.time:
+                    return
+                if until == math.inf:  # held by TROVR = 0: as a W-wait on held motion
+                    self._check_stall(tk)
+                    step = tk.time + self.servo
+                    if not tk.others_running():
+                        step = max(step, min(self.next_timed(), tk.time + 1000.0 * self.servo))
+                else:
+                    step = until if not tk.others_running() else min(until, tk.time + self.servo)
+                yield from tk.wait_until(step)
+        finally:
+            tk.held = None
 
     def cmd_smla(self, tk, items, loc):
         return self._spool(tk, items, loc, "mla")
@@ -307,6 +415,12 @@ class Commands:
         saved_sysp, saved_t = tk.sysp, tk.time
         self.planning_chain = True  # under a feed hold the chain is planned at 100 % and held as a whole
         t = tk.time
+        join = self._running_chain(axes, t)
+        if join is not None:  # planned from its end, then joined to it (_join); meanwhile its axes rest there
+            t = join.t1
+            for ax, p in zip(join.axes, join.final()):
+                self.axes[ax].move = None
+                self.axes[ax].m = p
         for ax in axes:
             mv = self.axes[ax].move
             if mv is not None:
@@ -333,7 +447,7 @@ class Commands:
                     if e[1] == codes["spool_halt"]:
                         for ax in e_axes:
                             self.axes[ax].spool_halted = True
-                    elif not segs:
+                    elif not segs and join is None:
                         self._ssf_action(e[1], e[2])()  # at the spooler head now: runs at once
                     else:
                         ssf_after.append((len(segs), self._ssf_action(e[1], e[2])))
@@ -364,14 +478,20 @@ class Commands:
             self.cfg["busy_move"] = busy
             tk.sysp, tk.time = saved_sysp, saved_t
             self.planning_chain = False
-        if not segs:
-            return
+            if join is not None:
+                for ax in join.axes:
+                    self.axes[ax].move = join
         mode = self.sys["MODEREG"]
-        retime(self.axes, segs, targets, [mode] * len(segs))
         for m in segs:
             m.retired = False
             self.live.discard(m)
-        chain = Chain(segs, full0)
+        if join is not None:
+            self._join(tk, join, segs, targets, mode, ssf_after)
+            return
+        if not segs:
+            return
+        retime(self.axes, segs, targets, [mode] * len(segs))
+        chain = Chain(segs, full0, targets, [mode] * len(segs))
         if self.path_override(chain.axes) <= 0.0:
             chain.override(chain.t0, 0.0, 0.0)
         self.live.add(chain)
@@ -379,75 +499,166 @@ class Commands:
             a = self.axes[ax]
             a.move = chain
         for k, act in ssf_after:
-            self._ssf_at_end(chain, segs[k - 1], act, segs[k - 1].t1)
+            self._arm_ssf(chain, segs[k - 1], act)
 
-    def _ssf_at_end(self, chain, seg, act, tick: float) -> None:
+    def _running_chain(self, axes, t: float):
+        """The spooled chain these axes are running at ``t`` that new segments can join (the spooler
+        goes on with them without stopping), or None: then they start after whatever runs."""
+        moves = {id(a.move): a.move for a in (self.axes[ax] for ax in axes) if a.move is not None and a.move.t1 > t}
+        if len(moves) != 1:
+            return None
+        mv = next(iter(moves.values()))
+        return mv if isinstance(mv, Chain) and not mv.jog and mv.joinable(t) else None
+
+    def _join(self, tk, chain, segs: list, targets: list, mode: int, ssf_after: list) -> None:
+        """Segments spooled and started while ``chain`` runs continue it: its segments not begun yet, and
+        the running one if it has not begun its final ramp (Profile.replannable), are planned anew with
+        the new ones by the look-ahead, so the axes do not stop at the old end (digest §10.5, L1391)."""
+        now = tk.time
+        chain.prune(now - self.slice - self.servo, self.canon, len(self.axes))  # other tasks lag by a slice at most
+        old = len(chain.segs)
+        if not segs:
+            for _, act in ssf_after:
+                self._arm_ssf(chain, chain.segs[old - 1], act)
+            for ax in chain.axes:
+                self.axes[ax].move = chain
+            return
+        k = next(i for i, m in enumerate(chain.segs) if now < m.t1)
+        m = chain.segs[k]
+        rate = m.steady_rate(now)  # an override (UTROVR) that has settled goes on as it is
+        tau = m.tau(now) / TICKS_PER_S
+        resume, v_start, first = None, 0.0, k + 1
+        if m.prof.replannable(tau):
+            resume, first = (tau, m.prof.s(tau), m.prof.speed(tau) * rate, now), k
+        else:
+            v_start = m.prof.v1 * rate
+        j = old - 1  # segments before the last joint that was not braked for the old end keep their plan
+        while j > first and chain.segs[j - 1].braked:
+            j -= 1
+        if j > first:
+            before = chain.segs[j - 1]
+            resume, v_start, first = None, before.prof.v1 * before.steady_rate(now), j
+        chain.extend(segs, targets, [mode] * len(segs))
+        part = chain.segs[first:]
+        if part:  # (a first segment not begun yet starts at m.t1 already)
+            retime(self.axes, part, chain.targets[first:], chain.moderegs[first:], v_start, resume,
+                   [x.steady_rate(now) for x in part])
+        chain.refresh()
+        for ax in chain.axes:
+            self.axes[ax].move = chain
+        for entry in list(chain.ssf):  # SSF entries between re-planned segments act at their new ends
+            seg, act, armed = entry
+            if armed[0] and seg in part:
+                armed[0] = False
+                chain.ssf.remove(entry)
+                self._arm_ssf(chain, seg, act)
+        for j, act in ssf_after:
+            self._arm_ssf(chain, chain.segs[old + j - 1], act)
+
+    def _arm_ssf(self, chain, seg, act) -> None:
+        armed = [True]
+        chain.ssf.append((seg, act, armed))
+        self._ssf_at_end(chain, seg, act, seg.t1, armed)
+
+    def _ssf_at_end(self, chain, seg, act, tick: float, armed: list) -> None:
         """An SSF between chained segments acts when the segment before it ends, even if UTROVR moved
-        that end; not at all when a stop cut the chain before it."""
+        that end; not at all when a stop cut the chain before it (or a re-plan armed it anew)."""
         if tick == math.inf:  # held by TROVR = 0: armed again when UTROVR lets the chain go on
-            chain.parked.append(lambda: self._ssf_at_end(chain, seg, act, seg.t1))
+            chain.parked.append(lambda: self._ssf_at_end(chain, seg, act, seg.t1, armed))
             return
 
         def fire():
-            if seg not in chain.segs or (seg.stop_s is not None and seg.stop_s < seg.prof.length):
+            if not armed[0] or seg not in chain.segs or (seg.stop_s is not None and seg.stop_s < seg.prof.length):
                 return
             if seg.t1 > tick:
-                self._ssf_at_end(chain, seg, act, seg.t1)
+                self._ssf_at_end(chain, seg, act, seg.t1, armed)
                 return
+            armed[0] = False
             act()
         self.add_timed(tick, fire)
 
     # -- jog and home (§6.6.16-28), axis units ---------------------------------------------------------------------------
+    def _jogging(self, a, t: float) -> bool:
+        mv = a.move
+        return mv is not None and mv.t1 > t and mv.jog and not mv.homing
+
     def _jog(self, tk, items, loc, relative: bool, wait: bool):
+        """JA/JR: each axis jogs to its target with jac, jvl * jovr and the end velocity jtv. A new JA/JR
+        on a jogging axis re-targets it on the fly (digest §10.5): it goes on from where it is with the
+        velocity it has, brakes with jac and turns back when the new target lies behind its braking
+        distance, and slows down with jac to a lowered jvl."""
         t = tk.time
         axes = tuple(ax for ax, _ in items)
-        start = self.prepare(tk, axes, loc)
+        for ax in axes:
+            self.check_axis(ax)
+        self.settle(axes, t)
+        moving = {ax: self.axis_velocity(self.axes[ax], t) for ax in axes if self._jogging(self.axes[ax], t)}
+        start = self.prepare(tk, axes, loc, set(moving))
         if start is None:
             return None
         src = self.src(tk, loc)
         for ax, v in items:
             a = self.axes[ax]
+            if ax in moving:
+                self._retire(a, t)  # cut where it is now; the new profile goes on with its velocity
             p0 = start[ax]
+            if not relative and self.rotary[ax] and self.sys["MODEREG"] & 0x200:
+                # ShortestRotatoricDistance (L1400): the shorter way round to the target angle
+                here = p0 - self.user_shift(a)
+                v = here + ((v - here + 180.0) % 360.0 - 180.0)
             p1 = self.round_counts(a.target + v if relative else v + self.user_shift(a))
-            mv = Move((ax,), (p0,), (p1,), "line", src, start)
-            mv.jog = True
+            a.target = p1
             vel = a.q["jvl"] * a.q["jovr"]
             acc = a.q["jac"]
-            if abs(p1 - p0) == 0 or vel <= 0 or acc <= 0:
-                a.target = p1
+            if vel <= 0 or acc <= 0 or (p1 == p0 and not moving.get(ax)):
                 continue
             jerk = self.jerk((ax,))
-            mv.start(t, abs(p1 - p0), vel, acc, jerk)
             jtv = abs(float(a.q["jtv"]))
-            if jtv > 0.0:  # arrive with the jog target velocity and keep moving (digest §10.5, A-60)
-                v1 = min(jtv, math.sqrt(2.0 * acc * (1.0 - 0.5 * jerk) * abs(p1 - p0)))
-                mv.prof = Profile(abs(p1 - p0), max(vel, v1), acc, 0.0, v1, jerk)
-                mv.t1 = t + mv.prof.duration * TICKS_PER_S
-                self.add_timed(mv.t1, self._drift_action(a, mv, v1, 1.0 if p1 >= p0 else -1.0))
-            a.move = mv
-            self.live.add(mv)
-            a.target = p1
+            segs, v1 = [], 0.0
+            for q0, q1, prof in jog_plan(p0, p1, moving.get(ax, 0.0), vel, acc, jerk, jtv):
+                mv = Move((ax,), (q0,), (q1,), "line", src, start)
+                mv.jog = True
+                mv.prof, mv.vmax, mv.feed = prof, vel, prof.v * 60.0
+                mv.t0 = segs[-1].t1 if segs else t
+                mv.t1 = mv.t0 + prof.duration * TICKS_PER_S
+                segs.append(mv)
+                v1 = prof.v1
+            owner = segs[0]
+            if len(segs) > 1:
+                owner = Chain(segs, start, [0.0] * len(segs), [0] * len(segs))
+                owner.jog = True
+            if v1 > 0.0:  # arrive with the jog target velocity and keep moving (digest §10.5, A-60)
+                self.add_timed(owner.t1, self._drift_action(a, owner, v1, 1.0 if p1 >= segs[-1].p0[0] else -1.0, src))
+            a.move = owner
+            self.live.add(owner)
         return self._wait(tk, axes, wait)
 
-    def _drift_action(self, a, mv, v: float, sign: float):
+    def _run_on(self, a, t: float, v: float, src) -> None:
+        """From ``t`` the axis runs on at the signed velocity ``v`` until a stop (JS, MS, RA) or the end of the
+        run; at profile end for the W-waits (a drift)."""
+        p = self.mpos(a, t)
+        far = abs(v) * 1.0e6
+        d = Move((a.number,), (p,), (p + math.copysign(far, v),), "line", src, self.all_positions(t))
+        d.jog = True
+        d.drift = True
+        d.prof = Profile(far, abs(v), float(a.q["jac"]) or 1.0, abs(v), abs(v))
+        d.t0, d.t1, d.feed, d.vmax = t, t + d.prof.duration * TICKS_PER_S, abs(v) * 60.0, abs(v)
+        a.move = d
+        self.live.add(d)
+
+    def _drift_action(self, a, mv, v: float, sign: float, src):
         """At the jog target with jtv != 0: profile end and SAF, and the axis runs on at jtv until a stop;
         MODEREG bit 28 (JSatSAF) stops all axes with sdec, bit 11 (ForbidTargetVel) executes RS."""
+        due = mv.t1
+
         def act():
-            if mv.stop_s is not None or (a.move is not None and a.move is not mv):
+            if a.move is not mv or mv.t1 != due:
                 return  # stopped or replaced before it got there
             t = mv.t1
             self._finish(mv)
             bits = self.cfg["axst_bits"]
             a.flags |= 1 << bits["saf"]
-            p = a.m
-            far = v * 1.0e6  # runs on until stopped (JS, MS, RA) or the run ends
-            d = Move((a.number,), (p,), (p + sign * far,), "line", mv.src, self.all_positions(t))
-            d.jog = True
-            d.drift = True
-            d.prof = Profile(far, v, float(a.q["jac"]) or 1.0, v, v)
-            d.t0, d.t1, d.feed, d.vmax = t, t + d.prof.duration * TICKS_PER_S, v * 60.0, v
-            a.move = d
-            self.live.add(d)
+            self._run_on(a, t, sign * v, src)
             mode = self.sys["MODEREG"]
             if mode & (1 << 11):
                 self.sys["ERRORREG"] |= 1 << 1
@@ -495,7 +706,7 @@ class Commands:
                 if not ok:
                     ref = p0 + limits[k]
             mv = Move((ax,), (p0,), (ref,), "line", src, start)
-            mv.jog = True
+            mv.jog = mv.homing = True
             if not ok and limits is None:
                 a.flags |= failed
                 continue
@@ -573,7 +784,26 @@ class Commands:
             a.poserr = 0.0  # bumpless: dp := rp
         return None
 
-    cmd_clv = cmd_cl
+    def cmd_clv(self, tk, axes, loc):
+        """CLV closes the loop like CL but keeps the axes' velocity (digest 6.6.9, A-51; the manual's example
+        follows it with JS "then stop the axes immediately"): a running profile gives way to a run at the
+        velocity the axis has, until a stop. A path cannot go on for part of its axes: all axes of a path
+        move or chain run on at their share of the path velocity."""
+        t = tk.time
+        self.cmd_cl(tk, axes, loc)
+        self.settle(axes, t)
+        src = self.src(tk, loc)
+        for ax in axes:
+            a = self.axes[ax]
+            mv = a.move
+            if mv is None or mv.t1 <= t or mv.drift:
+                continue
+            velocities = [(self.axes[x], self.axis_velocity(self.axes[x], t)) for x in mv.axes]
+            self._retire(a, t)
+            for b, v in velocities:
+                if v != 0.0:
+                    self._run_on(b, t, v, src)
+        return None
 
     def cmd_ol(self, tk, axes, loc):
         for ax in axes:
@@ -667,3 +897,30 @@ class Commands:
         return None
 
     cmd_lprs = cmd_lpr
+
+
+def jog_plan(p0: float, p1: float, v0: float, vel: float, acc: float, jerk: float, jtv: float) -> list:
+    """Pieces ``(from, to, Profile)`` of a jog from ``p0`` (signed velocity ``v0``) to ``p1`` with velocity
+    ``vel``, acceleration ``acc`` and end velocity ``jtv``: a target behind the braking distance is reached by
+    braking to rest and turning back; a velocity above ``vel`` is first brought down to it."""
+    ae = acc * (1.0 - 0.5 * jerk)  # S-ramps plan with acc * (1 - jerkrel / 2)
+    pieces = []
+    w = abs(v0)
+    if w > 0.0:
+        u = 1.0 if v0 > 0.0 else -1.0
+        ahead = (p1 - p0) * u
+        brake = w * w / (2.0 * ae)
+        if ahead < brake:
+            q = p0 + u * brake
+            pieces.append((p0, q, Profile(brake, w, acc, w, 0.0, jerk)))
+            p0, w = q, 0.0
+        elif w > vel:
+            d = (w * w - vel * vel) / (2.0 * ae)
+            q = p0 + u * d
+            pieces.append((p0, q, Profile(d, w, acc, w, vel, jerk)))
+            p0, w = q, vel
+    L = abs(p1 - p0)
+    if L > 0.0:
+        v1 = min(jtv, math.sqrt(w * w + 2.0 * ae * L)) if jtv > 0.0 else 0.0
+        pieces.append((p0, p1, Profile(L, max(vel, v1), acc, w, v1, jerk)))
+    return pieces

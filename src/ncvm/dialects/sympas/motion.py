@@ -77,6 +77,18 @@ class Profile:
         self.t_cruise = max(0.0, length - self.s_acc - self.s_dec) / vp if vp > 0 else 0.0
         self.duration = self.t_acc + self.t_cruise + self.t_dec
 
+    @property
+    def t_brake(self) -> float:
+        """Profile time (s) at which the final ramp towards ``v1`` begins."""
+        return self.t_acc + self.t_cruise
+
+    def replannable(self, t: float) -> bool:
+        """Whether the rest of the profile may be planned anew at ``t`` without a jump in velocity or
+        (S-profile) acceleration: before the final ramp, and on S-ramps only while cruising."""
+        if self.length <= 0.0 or t >= self.t_brake:
+            return False
+        return self.r == 0.0 or t >= self.t_acc
+
     def _at(self, t: float) -> tuple[float, float]:
         if t < self.t_acc:
             return ramp(t, self.v0, self.v, self.t_acc, self.r)
@@ -99,12 +111,44 @@ class Profile:
         return self._at(t)[1]
 
 
+class Resumed:
+    """A running profile planned anew at profile time ``tau`` (s): ``head`` up to there, then ``tail``
+    from the path point ``s0`` it had reached (a spooled chain extended while it runs, lookahead.py)."""
+
+    __slots__ = ("head", "tau", "s0", "tail", "length", "v", "a", "r", "v0", "v1", "duration")
+
+    def __init__(self, head, tau: float, s0: float, tail: Profile):
+        self.head, self.tau, self.s0, self.tail = head, tau, s0, tail
+        self.length = head.length
+        self.v = max(head.v, tail.v)
+        self.a, self.r, self.v0, self.v1 = tail.a, tail.r, head.v0, tail.v1
+        self.duration = tau + tail.duration
+
+    @property
+    def t_brake(self) -> float:
+        return self.tau + self.tail.t_brake
+
+    def replannable(self, t: float) -> bool:
+        return t >= self.tau and self.tail.replannable(t - self.tau)
+
+    def s(self, t: float) -> float:
+        if t < self.tau:
+            return self.head.s(t)
+        return min(self.length, self.s0 + self.tail.s(t - self.tau))
+
+    def speed(self, t: float) -> float:
+        if t < 0.0 or t > self.duration:
+            return 0.0
+        return self.head.speed(t) if t < self.tau else self.tail.speed(t - self.tau)
+
+
 class Move:
     """One profile over a group of axes (indices into the card's axes)."""
 
     __slots__ = ("axes", "p0", "p1", "kind", "t0", "t1", "prof", "center", "radius", "a0", "phi", "plane",
                  "normal", "lin", "src", "start_all", "feed", "stop_s", "stop_t", "stop_dec", "retired", "jog",
-                 "vmax", "ovr0", "warp", "stop_v0", "stop_s0", "drift")
+                 "homing", "vmax", "ovr0", "warp", "stop_v0", "stop_s0", "drift",
+                 "weights", "plane_w", "braked", "dirs")
 
     def __init__(self, axes, p0, p1, kind, src: Src, start_all):
         self.axes = axes
@@ -116,6 +160,11 @@ class Move:
         self.stop_s = None
         self.retired = False
         self.jog = False
+        self.weights = None  # path units per axis unit (effradius, NFRAX = 0); None: 1 for every axis
+        self.dirs = None  # the look-ahead's unit tangents at the start and the end (lookahead.py)
+        self.braked = False  # a chained segment whose end velocity was lowered for the segments after it
+        self.plane_w = None  # a circle's plane in path units (a rotary axis on its surface): per axis unit
+        self.homing = False  # a home search (JHL, JHR, JHI): a jog that a new JA/JR does not re-target
         self.drift = False  # a jog running on at jtv past its target (profile end already reported)
         self.ovr0 = 1.0  # the override the profile was planned with
         self.warp = None  # (t_w, tau_w, r_a, r_b, T): rate of profile time ramps r_a -> r_b over T ticks (TROVRST)
@@ -142,8 +191,9 @@ class Move:
             if f >= 1.0:
                 out = list(self.p1)
             else:
-                out[i] = self.center[0] + self.radius * math.cos(ang)
-                out[j] = self.center[1] + self.radius * math.sin(ang)
+                wi, wj = self.plane_w or (1.0, 1.0)
+                out[i] = (self.center[0] + self.radius * math.cos(ang)) / wi
+                out[j] = (self.center[1] + self.radius * math.sin(ang)) / wj
             return tuple(out)
         # 3-D circle: rotate (p0 - c) about the unit normal by phi*f (Rodrigues)
         if f >= 1.0:
@@ -198,6 +248,17 @@ class Move:
             return math.inf if rest > ramp else T
         return T + (rest - ramp) / rb
 
+    def steady_rate(self, t_ticks: float):
+        """The constant rate of profile time from ``t_ticks`` on (from the start when it has not begun yet);
+        None while an override ramp (TROVRST) still runs then, or under a feed hold."""
+        w = self.warp
+        if w is None:
+            return 1.0
+        tw, _, ra, rb, T = w
+        if (max(t_ticks, self.t0) >= tw + T or ra == rb) and rb > 0.0:
+            return rb
+        return None
+
     def standstill(self) -> float:
         """The tick from which a feed hold (TROVR = 0) keeps this move standing; inf when not held."""
         w = self.warp
@@ -238,6 +299,17 @@ class Move:
         if self.warp is None:
             return self.prof.speed((t_ticks - self.t0) / TICKS_PER_S)
         return self.prof.speed(self.tau(t_ticks) / TICKS_PER_S) * self.rate(t_ticks)
+
+    def velocity(self, t_ticks: float, ax: int) -> float:
+        """Axis ``ax``'s share of the path velocity at ``t_ticks`` (axis units/s, signed)."""
+        v = self.speed_at(t_ticks)
+        p0, p1 = self.pos(t_ticks), self.pos(t_ticks + 1.0)
+        w = self.weights or (1.0,) * len(p0)
+        d = math.sqrt(sum(((y - x) * wk) ** 2 for x, y, wk in zip(p0, p1, w)))
+        if d <= 0.0:
+            d = math.sqrt(sum((y - x) ** 2 for x, y in zip(p0, p1)))
+        k = self.axes.index(ax)
+        return v * (p1[k] - p0[k]) / d if d > 0 else 0.0
 
     def stop(self, t_ticks: float, dec: float) -> None:
         """Decelerate along the path with ``dec`` from ``t_ticks`` (JS, MS)."""
@@ -284,7 +356,7 @@ class Move:
             canon.feed(start, end, self.feed, self.src)
             return
         s_end = self.stop_s if self.stop_s is not None else self.prof.length
-        if self.kind == "arc":
+        if self.kind == "arc" and self.plane_w is None:
             i, j = self.plane
             frac = s_end / self.prof.length if self.prof.length > 0 else 1.0
             swept = self.phi * frac
@@ -300,7 +372,7 @@ class Move:
             spec = ArcSpec(self.axes[i], self.axes[j], self.center, swept < 0, self.radius, turns)
             canon.arc(start, end, spec, self.feed, self.src)
             return
-        # 3-D circle: a polyline of feeds, at most 5 degrees per segment
+        # 3-D circle, or a circle on a rotary axis's surface: a polyline of feeds, at most 5 degrees per segment
         n = max(1, int(math.ceil(abs(self.phi) * s_end / max(self.prof.length, 1e-12) / math.radians(5.0))))
         prev = start
         for k in range(1, n + 1):
@@ -319,18 +391,53 @@ class Chain:
     It stands for all its segments on every axis they use, so positions, velocities and stops
     (JS, MS) see the segment that runs at the asked time."""
 
-    __slots__ = ("segs", "axes", "t0", "t1", "p1", "retired", "jog", "drift", "_full0", "parked")
+    __slots__ = ("segs", "axes", "t0", "t1", "p1", "retired", "jog", "drift", "_full0", "parked", "targets",
+                 "moderegs", "ssf", "homing")
 
-    def __init__(self, segs: list, full0: tuple):
+    def __init__(self, segs: list, full0: tuple, targets: list, moderegs: list):
         self.segs = segs
-        axes = sorted({ax for m in segs for ax in m.axes})
-        self.axes = tuple(axes)
+        self.targets, self.moderegs = targets, moderegs  # each segment's TRTVL (units/s) and MODEREG
         self._full0 = full0
-        self.t0, self.t1 = segs[0].t0, segs[-1].t1
+        self.t0 = segs[0].t0
         self.retired = False
-        self.jog = self.drift = False
-        self.p1 = self.final()
+        self.jog = self.drift = self.homing = False
         self.parked: list = []  # timed actions waiting for a held segment's end (re-armed by UTROVR)
+        self.ssf: list = []  # (segment, action, armed) of the SSF entries between segments
+        self.refresh()
+
+    def refresh(self) -> None:
+        """Axes, end and end point after the segments changed (a join, a stop)."""
+        self.axes = tuple(sorted({ax for m in self.segs for ax in m.axes}))
+        self.t1 = self.segs[-1].t1
+        self.p1 = self.final()
+
+    def extend(self, segs: list, targets: list, moderegs: list) -> None:
+        """Later spooled segments join the chain (their times are planned by the caller)."""
+        self.segs.extend(segs)
+        self.targets.extend(targets)
+        self.moderegs.extend(moderegs)
+        self.refresh()
+
+    def prune(self, before: float, canon, names_count: int) -> None:
+        """Report and drop the segments that ended before ``before``, so that a chain joined again and again
+        (AutoSpool) stays as short as the spooler; no one asks for times that far back any more."""
+        k = 0
+        while k < len(self.segs) - 1 and self.segs[k].t1 < before:
+            k += 1
+        if not k:
+            return
+        for m in self.segs[:k]:
+            m.emit(canon, names_count)
+        del self.segs[:k], self.targets[:k], self.moderegs[:k]
+        kept = {id(m) for m in self.segs}
+        self.ssf = [e for e in self.ssf if id(e[0]) in kept]
+
+    def joinable(self, t: float) -> bool:
+        """New segments can join this chain at ``t``: it is not stopped, and its segments still to run go at
+        a steady override rate (no TROVRST ramp under way, no feed hold)."""
+        if self.t1 == math.inf or any(m.stop_s is not None for m in self.segs):
+            return False
+        return all(m.steady_rate(t) is not None for m in self.segs if m.t1 > t)
 
     def _seg(self, t: float):
         for m in self.segs:
@@ -352,6 +459,10 @@ class Chain:
         if t >= self.t1:
             return 0.0
         return self._seg(t).speed_at(t)
+
+    def velocity(self, t: float, ax: int) -> float:
+        m = self._seg(t)
+        return m.velocity(t, ax) if ax in m.axes else 0.0
 
     def final(self) -> tuple:
         m = self.segs[-1]
@@ -378,7 +489,7 @@ class Chain:
             if prev.t1 == math.inf:
                 nxt.warp = None
                 continue
-            ra = prev.rate(prev.t1)
+            ra = prev.rate(prev.t1) * prev.ovr0 / nxt.ovr0  # segments of a joined chain may be planned apart
             nxt.warp = (nxt.t0, 0.0, ra, ra, 0.0)
             nxt.t1 = math.inf
             nxt.override(nxt.t0, ovr / nxt.ovr0, max(0.0, end_ramp - nxt.t0))
