@@ -120,6 +120,10 @@ def _same_recordings(r1, r2):
         assert spec.radius == pytest.approx(other.radius, abs=1e-9)
         assert r1.arc_bounds[k] == pytest.approx(r2.arc_bounds[k], abs=1e-9)
     assert r1.arc_length == pytest.approx(r2.arc_length, rel=1e-12)
+    for k in list(r1.arcs)[:20]:  # what a plot draws
+        start, end = a1["start"][k], a1["end"][k]
+        np.testing.assert_allclose(np.array(r1.polyline(k, start, end), dtype=float),
+                                   np.array(r2.polyline(k, start, end), dtype=float), rtol=0, atol=1e-9)
     assert [r1.src(i) for i in range(len(r1))] == [r2.src(i) for i in range(len(r2))]
 
 

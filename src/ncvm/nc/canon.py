@@ -43,14 +43,32 @@ class ArcSpec:
 
 
 @dataclass(slots=True)
+class BatchArcs:
+    """The arcs among a :class:`MoveBatch`'s moves, as columns (all in one plane, the ``a``-``b`` plane)."""
+
+    rows: object  # numpy int column: the batch row of each arc
+    a: int
+    b: int
+    center: object  # numpy (arcs, 2), machine coordinates of the plane axes
+    cw: object  # numpy bool column
+    radius: object
+    angle: object  # sweep, radians (negative for G2)
+    length: object
+    extent: object  # numpy (arcs, 4): lo_a, hi_a, lo_b, hi_b reached in the plane
+
+    def specs(self) -> dict[int, ArcSpec]:
+        """Batch row -> :class:`ArcSpec` of each arc (built when a sink wants single calls)."""
+        a, b = self.a, self.b
+        return {row: ArcSpec(a, b, (ca, cb), cw, r) for row, (ca, cb), cw, r in
+                zip(self.rows.tolist(), self.center.tolist(), self.cw.tolist(), self.radius.tolist())}
+
+
+@dataclass(slots=True)
 class MoveBatch:
     """Many consecutive moves in one call (a run of plain blocks executed column-wise).
 
     Row ``i`` is the move ``kind[i]`` (0 rapid, 1 straight feed, 2 arc) from
-    ``start[i]`` to ``end[i]`` at ``feed[i]``; ``arcs`` maps the row of each arc to
-    its :class:`ArcSpec`, and ``arc_angle``, ``arc_length`` and ``arc_extent``
-    (rows of lo_a, hi_a, lo_b, hi_b) hold its sweep, length and reach in its
-    plane, in the order of those rows.
+    ``start[i]`` to ``end[i]`` at ``feed[i]``; ``arcs`` describes the arcs among them.
     """
 
     kind: object  # numpy int8 column
@@ -59,10 +77,7 @@ class MoveBatch:
     feed: object
     file: str
     lines: object  # numpy int column: the physical line of each move's block
-    arcs: dict | None = None
-    arc_angle: object = None
-    arc_length: object = None
-    arc_extent: object = None
+    arcs: BatchArcs | None = None
 
     def __len__(self) -> int:
         return len(self.kind)
@@ -86,7 +101,7 @@ class CanonSink:
     def move_batch(self, batch: MoveBatch) -> None:
         """Many moves at once; by default each is replayed as its :meth:`rapid`, :meth:`feed` or :meth:`arc` call."""
         starts, ends = batch.start.tolist(), batch.end.tolist()
-        arcs = batch.arcs or {}
+        arcs = batch.arcs.specs() if batch.arcs is not None else {}
         rows = zip(batch.kind.tolist(), batch.feed.tolist(), batch.lines.tolist())
         for i, (kind, feed, line) in enumerate(rows):
             start, end, src = tuple(starts[i]), tuple(ends[i]), Src(batch.file, line)

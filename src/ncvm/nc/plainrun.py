@@ -20,7 +20,6 @@ radius, an arc without centre words) is left to the caller, who hands it to
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 from itertools import repeat
 from operator import attrgetter
 
@@ -28,23 +27,12 @@ import numpy as np
 
 from . import arcs
 from .block import PLAIN_WORDS, Block, PlainRun
-from .canon import ArcSpec, MoveBatch
+from .canon import BatchArcs, MoveBatch
 from .kernel import PLANES
 
 RAPID, FEED, ARC = 0, 1, 2
 HALF_PI = math.pi / 2
 SQRT2 = math.sqrt(2.0)
-
-
-@dataclass
-class _Arcs:
-    """The arcs among a run's moves, column-wise: what the kernel's ``_arc`` works out one by one."""
-
-    specs: list  # ArcSpec per arc
-    angle: np.ndarray  # sweep, radians
-    length: np.ndarray
-    extent: np.ndarray  # rows of (lo_a, hi_a, lo_b, hi_b)
-    time: np.ndarray
 
 
 def _carry(present: np.ndarray, values: np.ndarray, initial: float) -> np.ndarray:
@@ -92,23 +80,19 @@ def execute_columns(k, run: PlainRun, lo: int, hi: int) -> int | None:
     found = None
     if len(arc_pos):
         centre_words = (words[iw][idx[arc_pos]], words[jw][idx[arc_pos]])
-        found = _arcs(k, arc_pos, start, end, centre_words, move_feed[arc_pos], motion[idx[arc_pos]] == 2, a, b)
-        if isinstance(found, int):  # an arc whose end lies on another radius: the rows before it, then stop
-            stop = lo + int(idx[arc_pos[found]])
+        done = _arcs(k, arc_pos, start, end, centre_words, move_feed[arc_pos], motion[idx[arc_pos]] == 2, a, b)
+        if isinstance(done, int):  # an arc whose end lies on another radius: the rows before it, then stop
+            stop = lo + int(idx[arc_pos[done]])
             before = execute_columns(k, run, lo, stop) if stop > lo else None  # passes: nothing before is judged
             return stop if before is None else before
-        times[arc_pos] = found.time
+        found, times[arc_pos] = done
     straight = np.flatnonzero(kind != ARC)
     times[straight] = _straight_times(k, start[straight], end[straight], kind[straight] == RAPID,
                                       move_feed[straight])
 
     clock = k.machine.clock
     clock.now = float(np.cumsum(np.concatenate(([clock.now], times)))[-1])  # in move order, as one by one
-    batch = MoveBatch(kind, start, end, move_feed, run.file, run.lines[lo:hi][idx])
-    if found is not None:
-        batch.arcs = dict(zip(arc_pos.tolist(), found.specs))
-        batch.arc_angle, batch.arc_length, batch.arc_extent = found.angle, found.length, found.extent
-    k.canon.move_batch(batch)
+    k.canon.move_batch(MoveBatch(kind, start, end, move_feed, run.file, run.lines[lo:hi][idx], found))
     return _finish(k, motion, feed, prog, end_row, lo, hi, end)
 
 
@@ -176,9 +160,9 @@ def _trapezoid(length, v, a) -> np.ndarray:
         return np.where(length > 0.0, t, 0.0)
 
 
-def _arcs(k, arc_pos, start, end, centre_words, feed, cw, a: int, b: int) -> _Arcs | int:
+def _arcs(k, arc_pos, start, end, centre_words, feed, cw, a: int, b: int) -> tuple[BatchArcs, np.ndarray] | int:
     """Centre (I/J/K words), radius check, sweep, length, extent and time of the arcs at ``arc_pos`` among
-    the moves; the index (among the arcs) of the first whose end lies on another radius, if any."""
+    the moves, or the index (among the arcs) of the first whose end lies on another radius."""
     sa, sb = start[arc_pos, a], start[arc_pos, b]
     ea, eb = end[arc_pos, a], end[arc_pos, b]
     ca = sa + np.nan_to_num(centre_words[0]) * k.scale
@@ -209,8 +193,9 @@ def _arcs(k, arc_pos, start, end, centre_words, feed, cw, a: int, b: int) -> _Ar
         for i in sorted((a, b)):
             v = np.where(nz & (dyn.max_feed[i] < v * share), dyn.max_feed[i] / share, v)
             acc = np.where(nz & (dyn.accel[i] < acc * share), dyn.accel[i] / share, acc)
-    specs = [ArcSpec(a, b, (x, y), c, r) for x, y, c, r in zip(ca.tolist(), cb.tolist(), cw.tolist(), r0.tolist())]
-    return _Arcs(specs, angle, length, _extent(sa, sb, ca, cb, r0, a0, angle), _trapezoid(length, v, acc))
+    arcs_found = BatchArcs(arc_pos, a, b, np.column_stack((ca, cb)), cw, r0, angle, length,
+                           _extent(sa, sb, ca, cb, r0, a0, angle))
+    return arcs_found, _trapezoid(length, v, acc)
 
 
 def _sweep(d, cw, closed) -> np.ndarray:

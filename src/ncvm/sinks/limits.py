@@ -40,8 +40,7 @@ class LimitCheck:
         """Lowest and highest point of every move per axis: the end point, widened by arcs in their plane."""
         lo = self.recorder.end_array().copy()
         hi = lo.copy()
-        for index, (a, b, lo_a, hi_a, lo_b, hi_b) in self.recorder.arc_bounds.items():
-            lo[index, a], hi[index, a], lo[index, b], hi[index, b] = lo_a, hi_a, lo_b, hi_b
+        self.recorder.arc_reach(lo, hi)
         return lo, hi
 
     @property

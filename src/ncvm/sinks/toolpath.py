@@ -48,9 +48,11 @@ class ToolpathRecorder(CanonSink):
         #: (first move index, columns, file of a batch or None, Src list of single moves or None)
         self._chunks: list[tuple] = []
         self._chunked = 0  # moves held in chunks
-        self.arcs: dict[int, ArcSpec] = {}
-        #: move index -> (a, b, lo_a, hi_a, lo_b, hi_b): where each arc reaches in its plane (limit check)
-        self.arc_bounds: dict[int, tuple] = {}
+        #: single arcs: move index -> ArcSpec, and -> (a, b, lo_a, hi_a, lo_b, hi_b) where it reaches in its plane
+        self._arcs: dict[int, ArcSpec] = {}
+        self._arc_bounds: dict[int, tuple] = {}
+        #: arcs of batches: (first move index of the batch, BatchArcs)
+        self._arc_batches: list[tuple] = []
         self.arc_length = 0.0
         self.arc_extent: list[list[float]] | None = None  # per axis [lo, hi]
         self.tool = 0
@@ -77,7 +79,7 @@ class ToolpathRecorder(CanonSink):
                       arcs.arc_plane_extent(start[a], start[b], ca, cb, spec.radius, angle))
 
     def move_batch(self, batch: MoveBatch):
-        """Moves of a plain run: kept as the batch's columns, arc lengths and extents taken from the batch."""
+        """Moves of a plain run: kept as the batch's columns, arcs as the batch's arc columns."""
         self._flush()
         base = self._chunked
         n = len(batch)
@@ -85,28 +87,47 @@ class ToolpathRecorder(CanonSink):
                    "line": batch.lines}
         self._chunks.append((base, columns, batch.file, None))
         self._chunked += n
-        if not batch.arcs:
+        arc = batch.arcs
+        if arc is None:
             return
-        rows = [base + row for row in batch.arcs]
-        self.arcs.update(zip(rows, batch.arcs.values()))
-        self.arc_length = float(np.cumsum(np.concatenate(([self.arc_length], batch.arc_length)))[-1])
-        extent = batch.arc_extent
-        planes = [(spec.a, spec.b) for spec in batch.arcs.values()]
-        self.arc_bounds.update(zip(rows, ((a, b, *e) for (a, b), e in zip(planes, extent.tolist()))))
-        for a, b in set(planes):
-            mask = [p == (a, b) for p in planes]
-            sub = extent[mask]
-            self._widen(a, float(sub[:, 0].min()), float(sub[:, 1].max()))
-            self._widen(b, float(sub[:, 2].min()), float(sub[:, 3].max()))
+        self._arc_batches.append((base, arc))
+        self.arc_length = float(np.cumsum(np.concatenate(([self.arc_length], arc.length)))[-1])
+        self._widen(arc.a, float(arc.extent[:, 0].min()), float(arc.extent[:, 1].max()))
+        self._widen(arc.b, float(arc.extent[:, 2].min()), float(arc.extent[:, 3].max()))
 
     def _add_arc(self, index: int, spec: ArcSpec, length: float, extent) -> None:
         a, b = spec.a, spec.b
         lo_a, hi_a, lo_b, hi_b = extent
-        self.arcs[index] = spec
+        self._arcs[index] = spec
         self.arc_length += length
-        self.arc_bounds[index] = (a, b, lo_a, hi_a, lo_b, hi_b)
+        self._arc_bounds[index] = (a, b, lo_a, hi_a, lo_b, hi_b)
         self._widen(a, lo_a, hi_a)
         self._widen(b, lo_b, hi_b)
+
+    @property
+    def arcs(self) -> dict[int, ArcSpec]:
+        """Move index -> :class:`ArcSpec` of every arc (built from the batches' columns when asked)."""
+        out = dict(self._arcs)
+        for base, arc in self._arc_batches:
+            out.update((base + row, spec) for row, spec in arc.specs().items())
+        return out
+
+    @property
+    def arc_bounds(self) -> dict[int, tuple]:
+        """Move index -> (a, b, lo_a, hi_a, lo_b, hi_b): where each arc reaches in its plane."""
+        out = dict(self._arc_bounds)
+        for base, arc in self._arc_batches:
+            out.update((base + row, (arc.a, arc.b, *e)) for row, e in zip(arc.rows.tolist(), arc.extent.tolist()))
+        return out
+
+    def arc_reach(self, lo: np.ndarray, hi: np.ndarray) -> None:
+        """Widen per-move lowest/highest points (rows of ``lo``/``hi``) by where the arcs reach in their plane."""
+        for index, (a, b, lo_a, hi_a, lo_b, hi_b) in self._arc_bounds.items():
+            lo[index, a], hi[index, a], lo[index, b], hi[index, b] = lo_a, hi_a, lo_b, hi_b
+        for base, arc in self._arc_batches:
+            rows = base + arc.rows
+            lo[rows, arc.a], hi[rows, arc.a] = arc.extent[:, 0], arc.extent[:, 1]
+            lo[rows, arc.b], hi[rows, arc.b] = arc.extent[:, 2], arc.extent[:, 3]
 
     def _widen(self, axis: int, lo: float, hi: float) -> None:
         """Widen the extent arcs reach on ``axis``."""
@@ -183,7 +204,18 @@ class ToolpathRecorder(CanonSink):
 
     def polyline(self, index: int, start, end) -> list:
         """Points of move ``index`` for drawing (arcs sampled)."""
-        spec = self.arcs.get(index)
+        spec = self._arc_at(index)
         if spec is None:
             return [list(end)]
         return arcs.arc_points(start, end, spec)
+
+    def _arc_at(self, index: int) -> ArcSpec | None:
+        spec = self._arcs.get(index)
+        if spec is not None or not self._arc_batches:
+            return spec
+        base, arc = self._arc_batches[max(0, bisect_right(self._arc_batches, index, key=lambda c: c[0]) - 1)]
+        k = int(np.searchsorted(arc.rows, index - base))
+        if k < len(arc.rows) and arc.rows[k] == index - base:
+            ca, cb = arc.center[k].tolist()
+            return ArcSpec(arc.a, arc.b, (ca, cb), bool(arc.cw[k]), float(arc.radius[k]))
+        return None
