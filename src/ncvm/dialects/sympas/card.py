@@ -446,16 +446,21 @@ class Card(Commands):
                 if end <= tk.time:
                     self.settle(axes, tk.time)
                     return
-                if end == math.inf:  # held by TROVR = 0: only another task, an event or a timed action can go on
-                    self._check_stall(tk)
-                    step = tk.time + self.servo
-                    if not tk.others_running():
-                        step = max(step, min(self.next_timed(), tk.time + 1000.0 * self.servo))
-                else:
-                    step = end if not tk.others_running() else min(end, tk.time + self.servo)
-                yield from tk.wait_until(step)
+                yield from tk.wait_until(self.wake_time(tk, end))
         finally:
             tk.held = None
+
+    def wake_time(self, tk, until: float) -> float:
+        """When a task waiting for ``until`` looks again: at ``until`` if it runs alone, else every servo
+        cycle; ``until`` = inf is motion held by TROVR = 0, which only another task, an event or a timed
+        action can release (a stall with none of them is RUN005)."""
+        if until == math.inf:
+            self._check_stall(tk)
+            step = tk.time + self.servo
+            if not tk.others_running():
+                step = max(step, min(self.next_timed(), tk.time + 1000.0 * self.servo))
+            return step
+        return until if not tk.others_running() else min(until, tk.time + self.servo)
 
     def _check_stall(self, tk) -> None:
         """Run-time error RUN005 when every running task waits on held motion and nothing ran since

@@ -343,14 +343,7 @@ class Commands:
                 until = self._spool_free_at(axes, cap, tk.time)
                 if until is None or until <= tk.time:
                     return
-                if until == math.inf:  # held by TROVR = 0: as a W-wait on held motion
-                    self._check_stall(tk)
-                    step = tk.time + self.servo
-                    if not tk.others_running():
-                        step = max(step, min(self.next_timed(), tk.time + 1000.0 * self.servo))
-                else:
-                    step = until if not tk.others_running() else min(until, tk.time + self.servo)
-                yield from tk.wait_until(step)
+                yield from tk.wait_until(self.wake_time(tk, until))  # inf: held by TROVR = 0, as a W-wait
         finally:
             tk.held = None
 
