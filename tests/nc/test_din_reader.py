@@ -58,3 +58,24 @@ def test_plain_line_values():
     assert (first.g, first.n, first.words) == ((3,), 20, {"X": -6.8, "Y": 0.5, "I": -1.0, "J": 2.0})
     assert (second.g, second.m, second.words) == ((1,), (3,), {"X": 10.0, "Y": 20.0, "S": 1000.0})
     assert first.src == Src("p.ngc", 1) and second.src == Src("p.ngc", 2)
+
+
+NUMBERS = """N10 G1 X1. Y.5 Z-.5 F+100.
+X+1.25Y-0.0
+G01X1Y2
+G0 X1.2.3
+G2 X1 Y1 I.5 J-.5
+G3X-1.5J0.
+N20 G17
+N30 G1 X 5
+G1 X-
+G1 X5 Y6 Z7 I8 J9 K10 F11
+"""
+
+
+def test_number_forms_as_the_line_parser_reads_them():
+    blocks, diags = read_din_program("p.ngc", NUMBERS)
+    want, errors = _line_by_line("p.ngc", NUMBERS)
+    assert [(b.g, b.m, b.words, b.n, b.msg, b.src, skip) for b, skip in blocks] == want
+    assert [(d.span.line, d.span.column, d.message) for d in diags] == errors
+    assert blocks[0][0].words == {"X": 1.0, "Y": 0.5, "Z": -0.5, "F": 100.0}

@@ -168,11 +168,12 @@ class PlainRun:
 
 #: the addresses of a plain block besides N and its motion G code, in the order CAM output writes them
 PLAIN_WORDS = "XYZIJKF"
-_NUM = r"([-+]?(?:\d+\.?\d*|\.\d+))"
+#: a number; possessive quantifiers (nothing a number gives back could start the next word) keep the scan fast
+_NUM = r"([-+]?+(?:\d++\.?+\d*+|\.\d++))"
 #: a plain line with at least one G code or word (groups: G, then PLAIN_WORDS), or any other line with its
 #: line break (last group: never empty, so blank lines and lines of nothing but N go the general way too)
-_PLAIN_LINE = re.compile(r"^[ \t]*(?:N\d+[ \t]*)?(?=[GXYZIJKF])(?:G0?([0-3])(?![\d.])[ \t]*)?"
-                         + "".join(rf"(?:{a}{_NUM}[ \t]*)?" for a in PLAIN_WORDS) + r"$|^(.*\n?)", re.M)
+_PLAIN_LINE = re.compile(r"^[ \t]*+(?:N\d+[ \t]*+)?(?=[GXYZIJKF])(?:G0?([0-3])(?![\d.])[ \t]*+)?"
+                         + "".join(rf"(?:{a}{_NUM}[ \t]*+)?" for a in PLAIN_WORDS) + r"$|^(.*\n?)", re.M)
 #: motion G code as the reader finds it -> its number (-1: the block has none)
 _MOTION = {"": -1, "0": 0, "1": 1, "2": 2, "3": 3}
 _NAN = math.nan
@@ -195,7 +196,7 @@ def read_din_segments(path: str, text: str) -> tuple[list, list[Diagnostic]]:
         general = range(1, len(lines) + 1)
         columns = None
     else:
-        matches = _PLAIN_LINE.findall(flat.upper())[:len(lines)]
+        matches = _PLAIN_LINE.findall(flat if flat.isupper() else flat.upper())[:len(lines)]
         if not matches:
             return segments, diags
         columns = list(zip(*matches))
@@ -226,7 +227,13 @@ def _read_general(segments, diags, path: str, lineno: int, line: str) -> None:
 
 def _add_run(segments, path: str, lines: list, columns, lo: int, hi: int) -> None:
     """Lines lo+1..hi, all plain, as a PlainRun."""
-    words = {a: np.array([float(v) if v else _NAN for v in col[lo:hi]]) if any(col[lo:hi]) else np.full(hi - lo, _NAN)
-             for a, col in zip(PLAIN_WORDS, columns[1:])}
+    words = {a: _floats(col[lo:hi]) for a, col in zip(PLAIN_WORDS, columns[1:])}
     g = np.array(list(map(_MOTION.__getitem__, columns[0][lo:hi])), dtype=np.int64)
     segments.append(PlainRun(path, np.arange(lo + 1, hi + 1), g, words, source=lines))
+
+
+def _floats(cells: tuple) -> np.ndarray:
+    """A word column: the numbers as written, NaN where a block has no such word."""
+    if not any(cells):
+        return np.full(len(cells), _NAN)
+    return np.array([float(v) if v else _NAN for v in cells])
