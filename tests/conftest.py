@@ -1,7 +1,9 @@
-"""Shared fixtures: write a program into a temporary folder and run it."""
+"""Shared fixtures: write a program into a temporary folder and run it; random plain DIN programs."""
 
 from __future__ import annotations
 
+import math
+import random
 from pathlib import Path
 
 import pytest
@@ -22,3 +24,72 @@ def run_text(tmp_path: Path):
         return result
 
     return _run
+
+
+PLANE_AXES = {17: (0, 1, "IJ"), 18: (2, 0, "KI"), 19: (1, 2, "JK")}
+
+
+def random_program(seed: int) -> str:
+    """Lines, arcs in all planes, G90/G91, inch, zero offsets, feeds, blank and N-only lines, comments."""
+    rnd = random.Random(seed)
+    out = ["%", "(random plain program)", "G21 G90 G17", f"G10 L2 P1 X{rnd.uniform(-20, 20):.3f} Y{rnd.uniform(-5, 5):.3f}",
+           "G54", "G92 X0 Y0 Z0", "F1000"]
+    if rnd.random() < 0.3:
+        out.append("G20")
+    pos = [0.0, 0.0, 0.0]
+    absolute, plane, n, arc_mode = True, 17, 10, False
+    for _ in range(rnd.randint(50, 400)):
+        r = rnd.random()
+        if r < 0.03:
+            absolute = not absolute
+            out.append("G90" if absolute else "G91")
+            continue
+        if r < 0.06:
+            plane = rnd.choice((17, 18, 19))
+            out.append(f"G{plane}")
+            continue
+        if r < 0.08:
+            out.append(rnd.choice(["", "N5", "(note)", f"F{rnd.randint(100, 3000)}", "   "]))
+            continue
+        words = []
+        if rnd.random() < 0.8:
+            words.append(f"N{n}")
+            n += 10
+        if rnd.random() < 0.25:
+            a, b, letters = PLANE_AXES[plane]
+            ca, cb = pos[a] + rnd.uniform(-8, 8), pos[b] + rnd.uniform(-8, 8)
+            turn = rnd.uniform(-3, 3)
+            ra, rb = pos[a] - ca, pos[b] - cb
+            end = list(pos)
+            end[a] = round(ca + ra * math.cos(turn) - rb * math.sin(turn), 4)
+            end[b] = round(cb + ra * math.sin(turn) + rb * math.cos(turn), 4)
+            if rnd.random() < 0.3:  # helix
+                end[3 - a - b] = round(pos[3 - a - b] + rnd.uniform(-2, 2), 4)
+            words.append(rnd.choice(("G2", "G3", "G02", "G03")))
+            arc_mode = True
+            for i in sorted({a, b, 3 - a - b}):
+                if end[i] != pos[i] or i in (a, b):
+                    words.append(f"{'XYZ'[i]}{(end[i] if absolute else end[i] - pos[i]):.4f}")
+            words.append(f"{letters[0]}{ca - pos[a]:.4f}")
+            words.append(f"{letters[1]}{cb - pos[b]:.4f}")
+        else:
+            if arc_mode or rnd.random() < 0.7:  # a straight move after an arc names its G code
+                words.append(rnd.choice(("G0", "G1", "G00", "G01")))
+                arc_mode = False
+            end = list(pos)
+            for i in range(3):
+                if rnd.random() < 0.6:
+                    end[i] = round(pos[i] + rnd.uniform(-10, 10), 4)
+                    words.append(f"{'XYZ'[i]}{(end[i] if absolute else end[i] - pos[i]):.4f}")
+        if rnd.random() < 0.1:
+            words.append(f"F{rnd.randint(100, 3000)}")
+        pos = end
+        out.append(" ".join(words))
+    out.append("M30")
+    return "\n".join(out) + "\n"
+
+
+@pytest.fixture
+def random_din():
+    """random_din(seed) -> the text of a random plain DIN program (see random_program)."""
+    return random_program

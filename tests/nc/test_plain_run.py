@@ -10,7 +10,6 @@ from __future__ import annotations
 
 import json
 import math
-import random
 
 import numpy as np
 import pytest
@@ -18,68 +17,6 @@ import pytest
 from ncvm.api import run
 from ncvm.nc.block import PlainRun, read_din_program, read_din_segments
 from ncvm.runtime.session import RunOptions
-
-PLANE_AXES = {17: (0, 1, "IJ"), 18: (2, 0, "KI"), 19: (1, 2, "JK")}
-
-
-def random_program(seed: int) -> str:
-    """Lines, arcs in all planes, G90/G91, inch, zero offsets, feeds, blank and N-only lines, comments."""
-    rnd = random.Random(seed)
-    out = ["%", "(random plain program)", "G21 G90 G17", f"G10 L2 P1 X{rnd.uniform(-20, 20):.3f} Y{rnd.uniform(-5, 5):.3f}",
-           "G54", "G92 X0 Y0 Z0", "F1000"]
-    if rnd.random() < 0.3:
-        out.append("G20")
-    pos = [0.0, 0.0, 0.0]
-    absolute, plane, n, arc_mode = True, 17, 10, False
-    for _ in range(rnd.randint(50, 400)):
-        r = rnd.random()
-        if r < 0.03:
-            absolute = not absolute
-            out.append("G90" if absolute else "G91")
-            continue
-        if r < 0.06:
-            plane = rnd.choice((17, 18, 19))
-            out.append(f"G{plane}")
-            continue
-        if r < 0.08:
-            out.append(rnd.choice(["", "N5", "(note)", f"F{rnd.randint(100, 3000)}", "   "]))
-            continue
-        words = []
-        if rnd.random() < 0.8:
-            words.append(f"N{n}")
-            n += 10
-        if rnd.random() < 0.25:
-            a, b, letters = PLANE_AXES[plane]
-            ca, cb = pos[a] + rnd.uniform(-8, 8), pos[b] + rnd.uniform(-8, 8)
-            turn = rnd.uniform(-3, 3)
-            ra, rb = pos[a] - ca, pos[b] - cb
-            end = list(pos)
-            end[a] = round(ca + ra * math.cos(turn) - rb * math.sin(turn), 4)
-            end[b] = round(cb + ra * math.sin(turn) + rb * math.cos(turn), 4)
-            if rnd.random() < 0.3:  # helix
-                end[3 - a - b] = round(pos[3 - a - b] + rnd.uniform(-2, 2), 4)
-            words.append(rnd.choice(("G2", "G3", "G02", "G03")))
-            arc_mode = True
-            for i in sorted({a, b, 3 - a - b}):
-                if end[i] != pos[i] or i in (a, b):
-                    words.append(f"{'XYZ'[i]}{(end[i] if absolute else end[i] - pos[i]):.4f}")
-            words.append(f"{letters[0]}{ca - pos[a]:.4f}")
-            words.append(f"{letters[1]}{cb - pos[b]:.4f}")
-        else:
-            if arc_mode or rnd.random() < 0.7:  # a straight move after an arc names its G code
-                words.append(rnd.choice(("G0", "G1", "G00", "G01")))
-                arc_mode = False
-            end = list(pos)
-            for i in range(3):
-                if rnd.random() < 0.6:
-                    end[i] = round(pos[i] + rnd.uniform(-10, 10), 4)
-                    words.append(f"{'XYZ'[i]}{(end[i] if absolute else end[i] - pos[i]):.4f}")
-        if rnd.random() < 0.1:
-            words.append(f"F{rnd.randint(100, 3000)}")
-        pos = end
-        out.append(" ".join(words))
-    out.append("M30")
-    return "\n".join(out) + "\n"
 
 
 def _both(tmp_path, text, name="p.ngc"):
@@ -128,8 +65,8 @@ def _same_recordings(r1, r2):
 
 
 @pytest.mark.parametrize("seed", range(12))
-def test_columns_match_block_by_block(tmp_path, seed):
-    text = random_program(seed)
+def test_columns_match_block_by_block(tmp_path, random_din, seed):
+    text = random_din(seed)
     segments, diags = read_din_segments("p.ngc", text)
     assert not diags and any(isinstance(s, PlainRun) for s in segments)
     (plain, s1), (stepped, s2) = _both(tmp_path, text)
@@ -140,10 +77,10 @@ def test_columns_match_block_by_block(tmp_path, seed):
     assert s1.machine.clock.now == pytest.approx(s2.machine.clock.now, rel=1e-12)
 
 
-def test_trace_of_a_batch_replays_every_move(tmp_path):
+def test_trace_of_a_batch_replays_every_move(tmp_path, random_din):
     """Sinks that take single moves (here the JSONL trace) get every move of a plain run, in order."""
     path = tmp_path / "p.ngc"
-    path.write_text(random_program(3))
+    path.write_text(random_din(3))
     traces = []
     for name, hook in (("a", None), ("b", lambda *a: None)):
         trace = tmp_path / f"{name}.jsonl"
@@ -216,14 +153,14 @@ def test_hand_computed_run(tmp_path):
 
 
 @pytest.mark.parametrize("seed", range(4))
-def test_queued_blocks_as_segments(tmp_path, seed):
+def test_queued_blocks_as_segments(tmp_path, random_din, seed):
     """A motion queue (as CPL drains it) executed as segments gives the moves of executing it block by block."""
     from ncvm.machine.config import load_machine
     from ncvm.nc.canon import Src
     from ncvm.nc.plainrun import execute_segments, plain_segments
     from ncvm.runtime.session import Session
 
-    blocks = [blk for blk, _skip in read_din_program("p.ngc", random_program(seed))[0]]
+    blocks = [blk for blk, _skip in read_din_program("p.ngc", random_din(seed))[0]]
     # blocks from a second file in the middle, as a called sub-program adds them
     for blk in blocks[40:60]:
         blk.src = Src("sub.cpl", blk.src.line)
