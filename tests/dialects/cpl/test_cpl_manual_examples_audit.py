@@ -1,0 +1,289 @@
+"""Manual example programs that no other test ran as program text (audit of digest §9 against the suite).
+
+Each test runs the manual's program, repaired only where the digest (§9, §11) or the comment says why, and
+asserts the result the manual states.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from ncvm.api import run as run_program
+from ncvm.runtime.session import RunOptions
+
+
+@pytest.fixture
+def run(run_text, reference):
+    return lambda text, channel=1, **kw: run_text(text, name="p.cpl", machine=reference(channel, **kw))
+
+
+def input_at(time: float, address: str, value: bool) -> dict:
+    return {"time": time, "kind": "input", "address": address, "value": value}
+
+
+# -- 9.1 language core -----------------------------------------------------------------------------------
+
+
+def test_c7_string_variable_and_two_dimensional_character_field_l716(run):
+    """§2.4.3 L716-724: AB$ is a string of up to 10 characters, CD$ three strings of 5."""
+    r = run('1 REM String variable AB (length 10)\n2 DIM AB$(10)\n'
+            '3 REM 3 String variables CD (each at a length of 5)\n4 DIM CD$(3,5)\n5 AB$ = "Z"\n'
+            '6 CD$(2) = "ABC"\n7 L1%=LEN(AB$) : L2%=LEN(CD$(2))\nM30\n')
+    assert r["status"] == "ok", r["error"]
+    v = r["variables"]
+    assert (v["AB$"], v["L1%"]) == ("Z", 1)
+    assert v["CD$"] == [None, None, "ABC", None] and v["L2%"] == 3  # rows 0..3; only row 2 assigned
+
+
+def _with_p999(reference, body: str):
+    m = reference()
+    (m.program_path[0] / "P999").write_text(body, encoding="latin-1")
+    return m
+
+
+@pytest.mark.parametrize("a", [1, 0])
+def test_c18_call_inside_if_l1089(run_text, reference, a):
+    """§3.3 L1093-1095: CALL in its own block inside IF; P999 runs only when A% = 1."""
+    m = _with_p999(reference, "N10 G1 X10 F100\nM30\n")
+    r = run_text(f"10 A%={a}\n50 IF A% = 1 THEN\n51 CALL P999\n52 ENDIF\nM30\n", name="p.cpl", machine=m)
+    assert r["status"] == "ok", r["error"]
+    assert r["position"]["X"] == (10.0 if a == 1 else 0.0)
+
+
+def test_c18_call_din_of_a_pure_din_program_l1105(run_text, reference):
+    """§3.3 L1105-1108: CALL P999 DIN excludes P999 from linking; a DIN-only P999 still runs."""
+    m = _with_p999(reference, "N10 G1 X10 F100\nM30\n")
+    r = run_text("10 A%=1\n50 IF A% = 1 THEN\n51 CALL P999 DIN\n52 ENDIF\nM30\n", name="p.cpl", machine=m)
+    assert r["status"] == "ok", r["error"]
+    assert r["position"]["X"] == 10.0 and r["motion"]["feed_moves"] == 1
+
+
+@pytest.mark.parametrize("main", ["51 CALL P999 DIN\n", "51 CALL P999\n"])
+def test_c18_din_excluded_program_with_cpl_is_a_runtime_error_l1101(run_text, reference, main):
+    """§3.3 L1101 and L1112-1116: a sub-program holding CPL that is excluded from linking (by ``DIN`` on the
+    call or by the ``(DIN)`` remark in its first line) gives an error "at program runtime": only when the
+    call is reached."""
+    body = "N10 G1 X10 F100\n20 B%=1\nM30\n" if "DIN" in main else "N10 (DIN)\nN20 G1 X10 F100\n30 B%=1\nM30\n"
+    m = _with_p999(reference, body)
+    prog = "10 A%={}\n50 IF A% = 1 THEN\n" + main + "52 ENDIF\nM30\n"
+    r = run_text(prog.format(1), name="p.cpl", machine=m)
+    assert r["status"] == "error" and r["error"]["code"] == "CPL030" and r["error"]["line"] == 3
+    r = run_text(prog.format(0), name="p.cpl", machine=m)
+    assert r["status"] == "ok", r["error"]
+
+
+# -- 9.2 NC-integrated functions -------------------------------------------------------------------------
+
+
+def test_n2_wait_duration_with_and_without_result_l1232(run):
+    """§4.1 L1234-1235: WAIT(,1000,E%) holds 1000 ms and sets E% to 1; WAIT(,TIME%) holds TIME% ms."""
+    r = run("10 WAIT(,1000,E%)\nM30\n")
+    assert r["variables"]["E%"] == 1 and r["cycle_time_s"] == pytest.approx(1.0)
+    r = run("5 TIME%=250\n10 WAIT(,TIME%)\nM30\n")
+    assert r["variables"] == {"TIME%": 250} and r["cycle_time_s"] == pytest.approx(0.25)
+
+
+def test_n2_wait_for_signals_l1236(run):
+    """§4.1 L1236-1237: WAIT(IC(1,1,1)=TRUE) and WAIT(IC(2,0,2)=(E1? OR E2?)) hold until the signal comes
+    (the scenario sets it at 200 ms and 300 ms)."""
+    r = run("10 WAIT(IC(1,1,1)=TRUE)\nM30\n", scenario=[input_at(0.2, "IC(1,1,1)", True)])
+    assert r["status"] == "ok" and r["cycle_time_s"] == pytest.approx(0.2)
+    r = run("5 E1?=FALSE : E2?=TRUE\n10 WAIT(IC(2,0,2)=(E1? OR E2?))\nM30\n",
+            scenario=[input_at(0.3, "IC(2,0,2)", True)])
+    assert r["status"] == "ok" and r["cycle_time_s"] == pytest.approx(0.3)
+
+
+WAIT_NOT = '10 WAIT(NOT IC(3,2,1),,C%)\n20 IF C%=0 THEN\n30 DSP(10,10,"COND. ALREADY OK")\n40 ENDIF\nM30\n'
+
+
+def test_n2_wait_not_ic_result_0_or_2_l1238(run):
+    """§4.1 L1238: C% is 0 when the signal was already FALSE at the call (the message shows), 2 when it
+    became FALSE while waiting (here at 400 ms)."""
+    r = run(WAIT_NOT)
+    assert r["variables"]["C%"] == 0 and r["output"] == ["COND. ALREADY OK"]
+    r = run(WAIT_NOT, scenario=[input_at(0.0, "IC(3,2,1)", True), input_at(0.4, "IC(3,2,1)", False)])
+    assert r["variables"]["C%"] == 2 and r["output"] == [] and r["cycle_time_s"] == pytest.approx(0.4)
+
+
+WAIT_ERG = ('5 E7?=TRUE\n10 WAIT(IC(4,4,1)=E7?,250,ERG%)\n20 IF ERG%=0 THEN\n30 DSP(10,10,"DID NOT WAIT ")\n'
+            '40 ENDIF\n50 IF ERG%=2 THEN\n60 DSP(10,10,"WAITED >250ms")\n70 ENDIF\nM30\n')
+
+
+@pytest.mark.parametrize(("events", "erg", "shown", "held"), [
+    ([input_at(0.0, "IC(4,4,1)", True)], 0, ["DID NOT WAIT "], 0.0),  # already fulfilled at the call
+    ([], 1, [], 0.25),  # the 250 ms elapsed
+    ([input_at(0.1, "IC(4,4,1)", True)], 2, ["WAITED >250ms"], 0.1),  # met while waiting
+])
+def test_n2_wait_result_0_1_2_l1239(run, events, erg, shown, held):
+    """§4.1 L1239: ERG% = 0, 1 or 2, and the program's DSP texts (the manual's second text says
+    ">250ms" for ERG% = 2; the program prints it as written)."""
+    r = run(WAIT_ERG, scenario=events)
+    assert r["variables"]["ERG%"] == erg and r["output"] == shown
+    assert r["cycle_time_s"] == pytest.approx(held)
+
+
+PPOS_CH3 = ("N10 G1 G75 A250 F500\n20 IF SD(9) = 1 THEN\nN30 (MSG, Measuring probe was not deflected!)\n"
+            "40 GOTO .ERROR\n50 ELSE\n60 AMEAS = PPOS(1,1)\n70 ENDIF\nM30\n80 .ERROR\n90 FAILED%=1\nM30\n")
+
+
+def test_n8_ppos_on_channel_3_l1602(run):
+    """§4.2.2 L1604-1612 on channel 3 (A axis) of the reference configuration; the ``...`` after line 70 is
+    replaced by M30 and the .ERROR label the example jumps to."""
+    r = run(PPOS_CH3, channel=3, scenario=[{"time": 0.0, "kind": "probe", "A": 180.0}])
+    assert r["status"] == "ok", r["error"]
+    assert r["variables"] == {"AMEAS": 180.0} and r["position"]["A"] == 180.0  # the move stops at the switch
+    r = run(PPOS_CH3, channel=3)
+    assert r["variables"] == {"FAILED%": 1} and r["output"] == ["Measuring probe was not deflected!"]
+    assert r["position"]["A"] == 250.0
+
+
+PROBE_CH2 = ("N60 F500\nN70 G75 Y2=250\n80 IF SD(9)=1 THEN\nN90 (MSG, Measuring probe was not deflected!)\n"
+             "100 GOTO .ERROR\n110 ELSE\n120 Y2MEAS=PROBE(2)\n130 ENDIF\nM30\n140 .ERROR\n150 FAILED%=1\nM30\n")
+
+
+def test_n8_probe_on_channel_2_l1634(run):
+    """§4.2.2 L1634-1643 on channel 2. Repairs: the OCR lost the '=' of ``Y2=250`` (Y2 is an extended axis
+    name), and the fragment gets ``N60 F500`` in place of the earlier blocks it omits (G75 moves at feed).
+    PROBE gives the machine coordinate, so an axis zero shift of Y2 does not change it."""
+    probe = [{"time": 0.0, "kind": "probe", "Y2": 100.0}]
+    r = run(PROBE_CH2, channel=2, scenario=probe)
+    assert r["status"] == "ok", r["error"]
+    assert r["variables"] == {"Y2MEAS": 100.0}
+    r = run(PROBE_CH2, channel=2, scenario=probe, offsets={"G54": [0.0, 10.0, 0.0]})
+    assert r["variables"] == {"Y2MEAS": 100.0} and r["position"]["Y2"] == 90.0
+    r = run(PROBE_CH2, channel=2)
+    assert r["variables"] == {"FAILED%": 1} and r["output"] == ["Measuring probe was not deflected!"]
+
+
+AXIS_CHANNEL = """10 REM Program queries number of axes in the system and the
+15 REM axis numbers of the channel axes. Based on this information
+20 REM the channel axes are traversed first to position 0 and then
+40 REM to position <channel number>
+50 CHAN=SD(8): REM Own channel number
+60 IDCHAX=43: REM Ncs_MCoEvGetChanAxis_Id
+70 IDMAXAX=45: REM Ncs MCoEvGetMaxAxisNumber Id
+80 DIM BUF(16): REM Buffer axis-channel assignment
+90 SIZE=16
+100 ANZ=0: REM Maximum index of the physical axes
+120 REM ChanAxis
+130 VERSION=0
+140 A=MCODS (IDCHAX, CHAN, VERSION, BUF, SIZE)
+150 VERSION=0
+160 A=MCODS (IDMAXAX, CHAN, VERSION, ANZ, 1)
+170 FOR I%=1 TO ANZ
+180 IF BUF(I%) = CHAN THEN
+N190 F1000 [AXP(I%,0,0)]: REM Traverse channel axes to 0
+200 ENDIF
+210 NEXT
+220 FOR I%=1 TO ANZ
+230 IF BUF(I%) = CHAN THEN
+N240 M0
+250 WAIT
+N260 F1000 [AXP(I%,CHAN,0)]:REM Traverse channel axes to CHAN
+270 ENDIF
+280 NEXT
+N290 M30
+"""
+
+
+@pytest.mark.parametrize(("channel", "axes"), [(1, ("X", "Y", "Z")), (2, ("X2", "Y2", "Z2")), (3, ("A",))])
+def test_n27_axis_channel_assignment_l3340(run, channel, axes):
+    """§4.14.3 example 5 (L3342), its run-together OCR text split into lines; ``BUF(1%)`` is BUF(I%), ``MO``
+    is M0, ``N24`` is N240 and ``N250 WAIT`` the CPL line 250 (digest §9.2 N27). The type, channel and size
+    are REAL variables: MCODS takes their whole values. The channel's axes end at the channel number."""
+    r = run(AXIS_CHANNEL, channel=channel)
+    assert r["status"] == "ok", r["error"]
+    v = r["variables"]
+    assert v["CHAN"] == channel and v["ANZ"] == 8.0 and v["A"] == 0.0
+    assert v["BUF"][1:9] == [1.0, 1.0, 1.0, 2.0, 2.0, 2.0, -1.0, 3.0]  # U_CH1 (7) is asynchronous
+    assert r["position"] == {a: float(channel) for a in axes}
+    assert r["motion"]["rapid_moves"] == 2 * len(axes)
+
+
+def test_mcods_integer_parameters_refuse_a_fraction(run):
+    r = run("10 DIM B%(2)\n20 V=0\n30 T=32.5\n40 E%=MCODS(T,1,V,B%,2)\nM30\n")
+    assert r["error"]["code"] == "CPL032" and r["error"]["line"] == 4
+
+
+# -- 9.5 dialog --------------------------------------------------------------------------------------------
+
+UNTPR = """1 Z%=0 : COL(0,7,0)
+2 DSP(41,4,P1$) : DSP(41,13,P2$) : DSP(41,22,P3$)
+3 DSP(41,31,P4$) : DSP(41,40,P5$) : DSP(41,49,P6$) : DSP(41,58,P7$) : DSP(41,67,P8$)
+4 REPEAT
+5 REPEAT
+6 K%=INKEY
+7 UNTIL ((K%=141) OR (K%=142) OR (K%=143) OR (K%=144) OR (K%=145) OR (K%=146) OR (K%=147) OR (K%=148) OR (K%=139))
+8 JZ%=Z%-140 : JK%=K%-140
+9 IF ((JZ%>0) AND (JZ%<9)) THEN COL(0,7,0)
+10 FOR I%=0 TO 2
+11 DSP(41+I%,(JZ%-1)*8+JZ%+1,"        ")
+12 NEXT I%
+13 IF Z%=141 THEN DSP(41,4,P1$) ENDIF
+14 IF Z%=142 THEN DSP(41,13,P2$) ENDIF
+15 IF Z%=143 THEN DSP(41,22,P3$) ENDIF
+16 IF Z%=144 THEN DSP(41,31,P4$) ENDIF
+17 IF Z%=145 THEN DSP(41,40,P5$) ENDIF
+18 IF Z%=146 THEN DSP(41,49,P6$) ENDIF
+19 IF Z%=147 THEN DSP(41,58,P7$) ENDIF
+20 IF Z%=148 THEN DSP(41,67,P8$) ENDIF
+21 ENDIF
+22 IF ((JK%>0) AND (JK%<9)) THEN COL(0,0,7)
+23 FOR I%=0 TO 2
+24 DSP(41+I%,(JK%-1)*8+JK%+1,"        ")
+25 NEXT I%
+26 IF K%=141 THEN DSP(41,4,P1$) ENDIF
+27 IF K%=142 THEN DSP(41,13,P2$) ENDIF
+28 IF K%=143 THEN DSP(41,22,P3$) ENDIF
+29 IF K%=144 THEN DSP(41,31,P4$) ENDIF
+30 IF K%=145 THEN DSP(41,40,P5$) ENDIF
+31 IF K%=146 THEN DSP(41,49,P6$) ENDIF
+32 IF K%=147 THEN DSP(41,58,P7$) ENDIF
+33 IF K%=148 THEN DSP(41,67,P8$) ENDIF
+34 ENDIF
+35 Z%=K%
+36 UNTIL K%=139 : CLG
+M30
+"""
+
+
+def run_with_keys(tmp_path: Path, text: str, keys: str, subs: dict[str, str] | None = None):
+    for name, body in (subs or {}).items():
+        (tmp_path / name).write_text(body, encoding="latin-1")
+    prog = tmp_path / "prog.cpl"
+    prog.write_text(text, encoding="latin-1")
+    (tmp_path / "prog.keys").write_text(keys)
+    return run_program(prog, options=RunOptions(state_dir=tmp_path / ".ncvm", keys=tmp_path / "prog.keys"))
+
+
+def test_d5_softkey_emulation_untpr_l4660(tmp_path):
+    """§7.1 INKEY, L4660-4750: the sub-program UNTPR draws eight softkey texts on line 41, highlights the box of
+    a pressed softkey (141..148) and restores the previous one, until LEVEL RETURN (139).
+
+    Rebuilt from the OCR: the line numbers are dropped, each IF/ENDIF and the long UNTIL are on one line,
+    ``FOR 1%`` / ``LO`` / ``PI$`` / ``F43`` / ``ENDI`` are I%, TO, P1$, the P6$ line and ENDIF, the duplicated
+    ``IF Z%=144`` lines are 143/144, the second blanking loop uses JK% (the box of the new key), the main
+    program sets E$ (not B$ twice) and passes all eight texts."""
+    main = ('1 A$ = "SOFT1" : B$ = "SOFT2" : C$ = "SOFT3"\n'
+            '2 D$ = "SOFT4" : E$ = "SOFT5" : F$ = "SOFT6" : G$ = "SOFT7" : H$ = "SOFT8"\n'
+            '3 CALL UNTPR [ A$, B$, C$, D$, E$, F$, G$, H$ ]\nM30\n')
+    r, s = run_with_keys(tmp_path, main, "SK3\nSK5\nLEVEL RETURN\n", {"UNTPR": UNTPR})
+    assert r["status"] == "ok", r["error"]
+    blank = ["        "] * 3
+    assert r["output"] == (["SOFT1", "SOFT2", "SOFT3", "SOFT4", "SOFT5", "SOFT6", "SOFT7", "SOFT8"]
+                           + blank + ["SOFT3"]  # SK3: box 3 highlighted
+                           + blank + ["SOFT3"] + blank + ["SOFT5"]  # SK5: box 3 restored, box 5 highlighted
+                           + blank + ["SOFT5"])  # LEVEL RETURN: box 5 restored, then CLG
+    assert s.screen.grid_lines()[40] == ""  # CLG erased the screen
+
+
+@pytest.mark.parametrize(("keys", "m"), [("IDLE 20\nKEY 66\n", 22.0), ("", 150.0)])
+def test_d5_circles_until_key_b_l4764(tmp_path, keys, m):
+    """§7.1 L4764-4768: circles of growing radius while no 'B' (66) is pressed and M < 150; each pass
+    polls INKEY once (20 polls find no key, the 21st finds B)."""
+    text = "10 M=2\n20 WHILE ((INKEY<>66) AND (M<150)) DO\n30 CIR(250,160,M) : M=M+1\n40 END\n50 CLG\nM30\n"
+    r, _ = run_with_keys(tmp_path, text, keys)
+    assert r["status"] == "ok", r["error"]
+    assert r["variables"]["M"] == m
