@@ -63,6 +63,36 @@ def test_c18_din_excluded_program_with_cpl_is_a_runtime_error_l1101(run_text, re
     assert r["status"] == "ok", r["error"]
 
 
+PDIM_MAIN = 'N10 (DIN)\nN20 G90\nN50 P SP["TEST"]\nM30\n'
+
+
+def _with_sp(reference, body: str):
+    m = reference()
+    (m.program_path[0] / "SP").write_text(body, encoding="latin-1")
+    return m
+
+
+@pytest.mark.parametrize("sub", [
+    "10 PDIM P1$(4)\n20 #P1$ = P1$\nM30\n",
+    "10 PDIM P1$(4)\n20 GOTO .TAKE\n30 #P1$ = \"NO\"\n40 .TAKE\n50 #P1$ = P1$\nM30\n",  # also in GOTO code
+])
+def test_c20_pdim_string_from_a_program_selected_without_linking_l1161(run_text, reference, sub):
+    """§3.4 L1161-1175: the caller is marked (DIN); with PDIM P1$(4) the sub-program's P1$ is "TEST"."""
+    r = run_text(PDIM_MAIN, name="p.cpl", machine=_with_sp(reference, sub))
+    assert r["status"] == "ok", r["error"]
+    assert r["variables"] == {"#P1$": "TEST"}
+
+
+def test_c20_without_pdim_the_string_is_an_invalid_variable_l1159(run_text, reference):
+    """§3.4 L1149-1159: from a caller selected without linking, a string constant needs PDIM; "missing
+    entirely" gives the part program error "invalid variable". A linked caller needs no PDIM."""
+    m = _with_sp(reference, "20 #P1$ = P1$\nM30\n")
+    r = run_text(PDIM_MAIN, name="p.cpl", machine=m)
+    assert r["error"]["code"] == "CPL026" and r["error"]["message"].startswith("invalid variable")
+    r = run_text(PDIM_MAIN.replace("N10 (DIN)\n", ""), name="p.cpl", machine=m)
+    assert r["status"] == "ok" and r["variables"] == {"#P1$": "TEST"}
+
+
 # -- 9.2 NC-integrated functions -------------------------------------------------------------------------
 
 
