@@ -26,6 +26,34 @@ def input_at(time: float, address: str, value: bool) -> dict:
 # -- 9.1 language core -----------------------------------------------------------------------------------
 
 
+def test_c13_for_with_a_variable_step_into_file_p222_l940(run_text, reference):
+    """§2.5.5 L940-958 with its file: the printed records need STEP%=2 at the start (the text shows 1, which
+    would give 1/1, 2/1, ...; digest §11 B13) and ``SORT`` is SQRT (OCR). NJUST: numbers in 9 places."""
+    m = reference()
+    r = run_text('10 OPENW(1,"P222",130)\n20 STEP%=2 : START%=1 : END%=3500 : NJUST\n'
+                 "30 FOR COUNTER%=START% STEP STEP% TO END%\n40 STEP%=ROUND(STEP%*SQRT(STEP%))\n"
+                 '50 PRN#(1,"COUNTER: ",COUNTER%," STEP SIZE: ",STEP%)\n60 NEXT\n70 CLOSE(1)\nM30\n',
+                 name="p.cpl", machine=m)
+    assert r["status"] == "ok", r["error"]
+    pairs = [(1, 3), (4, 5), (9, 11), (20, 36), (56, 216), (272, 3175), (3447, 178902)]
+    records = [f"COUNTER: {c:9d} STEP SIZE: {s:9d}" for c, s in pairs]
+    assert (m.file_root / "P222").read_text(encoding="latin-1") == "\n".join(records) + "\n\x03\n"
+
+
+WHILE_SD9 = "5 I=0\nN10 G75 X100 F1000\n30 WHILE SD(9)=0\n40 I=I+1\n50 END\nM30\n"
+
+
+def test_c14_while_polls_sd9_l984(run_text, reference):
+    """§2.5.5 L984: ``WHILE SD(9)=0`` (no DO; I set to 0 first, the fragment leaves it NUL) loops while the
+    condition holds (digest §11 A8, the annotation says the opposite). Probe not switched: SD(9)=1, no pass.
+    Switched: SD(9) stays 0 in the simulation, so the loop runs until the step limit."""
+    r = run_text(WHILE_SD9, name="p.cpl", machine=reference())
+    assert r["status"] == "ok" and r["variables"] == {"I": 0.0}
+    m = reference(scenario=[{"time": 0.0, "kind": "probe", "X": 40.0}])
+    r = run_text(WHILE_SD9, name="p.cpl", machine=m, max_steps=1000)
+    assert r["error"]["code"] == "RUN001" and r["variables"]["I"] > 400
+
+
 def _with_p999(reference, body: str):
     m = reference()
     (m.program_path[0] / "P999").write_text(body, encoding="latin-1")
