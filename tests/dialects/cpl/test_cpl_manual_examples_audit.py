@@ -204,6 +204,35 @@ def test_n8_probe_on_channel_2_l1634(run):
     assert r["variables"] == {"FAILED%": 1} and r["output"] == ["Measuring probe was not deflected!"]
 
 
+FXCR_EXAMPLE = """10 NPV_BASIS$="/usr/user/NPV_TAB_K2.npv"
+11 IF FILEACCESS(NPV_BASIS$)=-1 THEN
+12 FXCR(2,NPV_BASIS$)
+13 FXDEL("NPV_TAB_K2.npv",2)
+14 FXINS("NPV_TAB_K2.npv",3,"U",0)
+15 ELSE
+16 IF FILEACCESS("NPV2_TAB_K2.npv")=-1 THEN
+17 FXCR(NPV_BASIS$,"NPV2_TAB_K2.npv")
+18 ENDIF
+19 ENDIF
+20 F1%=FILEACCESS(NPV_BASIS$) : F2%=FILEACCESS("NPV2_TAB_K2.npv")
+M30
+"""
+
+
+def test_n11_fxcr_fxdel_fxins_with_fileaccess_l1809(run_text, reference):
+    """§4.3 L1809-1827 as printed, with line 20 added to read FILEACCESS back (OCR repairs: ``NPV BASIS$`` and
+    ``NPV TAB K2.npv`` are written with '_', line 13 gets its ')'). The first run creates the channel-2
+    table and changes its columns (X2 Y2 Z2 -> X2 Z2 U); the second finds it and creates NPV2 with its
+    layout; the third changes nothing. A table answers FILEACCESS as a read/write file (6)."""
+    runs = [run_text(FXCR_EXAMPLE, name="p.cpl", machine=reference()) for _ in range(3)]
+    assert [r["status"] for r in runs] == ["ok"] * 3, [r["error"] for r in runs]
+    assert [(r["variables"]["F1%"], r["variables"]["F2%"]) for r in runs] == [(6, -1), (6, 6), (6, 6)]
+    r = run_text('1 N%=3\n2 A=FXC("U",54,"NPV2_TAB_K2.npv")\n3 B=FXC(2,54,"NPV2_TAB_K2.npv")\n'
+                 '4 C=FXC("Y2",54,"NPV2_TAB_K2.npv")\nM30\n', name="q.cpl", machine=reference())
+    assert r["variables"] == {"N%": 3, "A": 0.0, "B": 0.0}  # columns U and 2 (Z2) exist
+    assert r["error"]["code"] == "1938" and r["error"]["line"] == 4  # Y2 was deleted
+
+
 AXIS_CHANNEL = """10 REM Program queries number of axes in the system and the
 15 REM axis numbers of the channel axes. Based on this information
 20 REM the channel axes are traversed first to position 0 and then
@@ -233,35 +262,6 @@ N260 F1000 [AXP(I%,CHAN,0)]:REM Traverse channel axes to CHAN
 280 NEXT
 N290 M30
 """
-
-
-FXCR_EXAMPLE = """10 NPV_BASIS$="/usr/user/NPV_TAB_K2.npv"
-11 IF FILEACCESS(NPV_BASIS$)=-1 THEN
-12 FXCR(2,NPV_BASIS$)
-13 FXDEL("NPV_TAB_K2.npv",2)
-14 FXINS("NPV_TAB_K2.npv",3,"U",0)
-15 ELSE
-16 IF FILEACCESS("NPV2_TAB_K2.npv")=-1 THEN
-17 FXCR(NPV_BASIS$,"NPV2_TAB_K2.npv")
-18 ENDIF
-19 ENDIF
-20 F1%=FILEACCESS(NPV_BASIS$) : F2%=FILEACCESS("NPV2_TAB_K2.npv")
-M30
-"""
-
-
-def test_n11_fxcr_fxdel_fxins_with_fileaccess_l1809(run_text, reference):
-    """§4.3 L1809-1827 as printed, with line 20 added to read FILEACCESS back (OCR repairs: ``NPV BASIS$`` and
-    ``NPV TAB K2.npv`` are written with '_', line 13 gets its ')'). The first run creates the channel-2
-    table and changes its columns (X2 Y2 Z2 -> X2 Z2 U); the second finds it and creates NPV2 with its
-    layout; the third changes nothing. A table answers FILEACCESS as a read/write file (6)."""
-    runs = [run_text(FXCR_EXAMPLE, name="p.cpl", machine=reference()) for _ in range(3)]
-    assert [r["status"] for r in runs] == ["ok"] * 3, [r["error"] for r in runs]
-    assert [(r["variables"]["F1%"], r["variables"]["F2%"]) for r in runs] == [(6, -1), (6, 6), (6, 6)]
-    r = run_text('1 N%=3\n2 A=FXC("U",54,"NPV2_TAB_K2.npv")\n3 B=FXC(2,54,"NPV2_TAB_K2.npv")\n'
-                 '4 C=FXC("Y2",54,"NPV2_TAB_K2.npv")\nM30\n', name="q.cpl", machine=reference())
-    assert r["variables"] == {"N%": 3, "A": 0.0, "B": 0.0}  # columns U and 2 (Z2) exist
-    assert r["error"]["code"] == "1938" and r["error"]["line"] == 4  # Y2 was deleted
 
 
 @pytest.mark.parametrize(("channel", "axes"), [(1, ("X", "Y", "Z")), (2, ("X2", "Y2", "Z2")), (3, ("A",))])
