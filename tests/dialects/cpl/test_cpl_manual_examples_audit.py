@@ -26,6 +26,28 @@ def input_at(time: float, address: str, value: bool) -> dict:
 # -- 9.1 language core -----------------------------------------------------------------------------------
 
 
+C1SUB = "5 XVALUE=P1 : FEED=P2 : COMPTAB=P3 : M3=3\nN10 G1 X[XVALUE]F[ FEED*2+1000]M[M3]\n"
+
+
+def test_c1_expressions_in_nc_words_of_a_sub_program_l359(run_text, reference):
+    """§2.1.1 L359-369, called with P1..P3 = 20, 100, 3: N10 is G1 X20 F1200 M3 (M3 is a variable named like
+    the M function). Lines 15/16 read the feed and the spindle sense back (SD(5,1,2), SD(12,1))."""
+    m = reference()
+    (m.program_path[0] / "C1SUB").write_text(C1SUB + "15 WAIT\n16 #F% = SD(5,1,2) : #SP% = SD(12,1)\nM30\n")
+    r = run_text("10 CALL C1SUB [20, 100, 3]\nM30\n", name="p.cpl", machine=m)
+    assert r["status"] == "ok", r["error"]
+    assert r["variables"] == {"#F%": 1200, "#SP%": 3} and r["position"]["X"] == 20.0
+
+
+def test_c1_g22_of_the_example_is_not_in_the_nc_kernel_l366(run_text, reference):
+    """N20 G22 K[COMPTAB] is a Bosch DIN function the shared NC kernel lacks (docs/decisions.md, CPL):
+    the run stops there with NC004 after N10 has moved."""
+    m = reference()
+    (m.program_path[0] / "C1SUB").write_text(C1SUB + "N20 G22 K[COMPTAB]\nM30\n")
+    r = run_text("10 CALL C1SUB [20, 100, 3]\nM30\n", name="p.cpl", machine=m)
+    assert r["error"]["code"] == "NC004" and r["error"]["line"] == 3 and r["position"]["X"] == 20.0
+
+
 def test_c13_for_with_a_variable_step_into_file_p222_l940(run_text, reference):
     """§2.5.5 L940-958 with its file: the printed records need STEP%=2 at the start (the text shows 1, which
     would give 1/1, 2/1, ...; digest §11 B13) and ``SORT`` is SQRT (OCR). NJUST: numbers in 9 places."""
