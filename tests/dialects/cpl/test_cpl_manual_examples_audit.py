@@ -11,6 +11,7 @@ from pathlib import Path
 import pytest
 
 from ncvm.api import run as run_program
+from ncvm.dialects.cpl.io.graphics import TABLE_CODES
 from ncvm.runtime.session import RunOptions
 
 
@@ -367,6 +368,29 @@ def test_s11_mid_write_into_a_16_character_field_l3728(run):
 
 # -- 9.5 dialog --------------------------------------------------------------------------------------------
 
+def run_with_keys(tmp_path: Path, text: str, keys: str, subs: dict[str, str] | None = None):
+    for name, body in (subs or {}).items():
+        (tmp_path / name).write_text(body, encoding="latin-1")
+    prog = tmp_path / "prog.cpl"
+    prog.write_text(text, encoding="latin-1")
+    (tmp_path / "prog.keys").write_text(keys)
+    return run_program(prog, options=RunOptions(state_dir=tmp_path / ".ncvm", keys=tmp_path / "prog.keys"))
+
+
+def test_d7_col_variants_l4942(tmp_path):
+    """§8 COL examples L4942-4949 with DSP lines between them: selecting table 2 (7) or 3 (10) erases the
+    screen; then softkey text 1 on 4, lines and circles 4, text 6 on 5."""
+    text = ('5 DSP(1,1,"BEFORE")\n10 COL(,,,7)\n25 DSP(2,1,"AFTER7")\n30 COL(,,,10)\n40 DSP(3,1,"AFTER10")\n'
+            '50 COL(,,,,1,4)\n70 COL(4)\n90 COL(,6,5)\n95 DSP(4,1,"COLOURED")\nM30\n')
+    r, s = run_with_keys(tmp_path, text, "")
+    assert r["status"] == "ok", r["error"]
+    sc = s.screen
+    assert sc.grid_lines()[:4] == ["", "", "AFTER10", "COLOURED"]
+    assert sc.table == TABLE_CODES[10] != TABLE_CODES[7]
+    assert (sc.softkey_color, sc.softkey_bg, sc.line_color) == (1, 4, 4)
+    assert tuple(sc.cells[3, 0][:2]) == (6, 5) and tuple(sc.cells[2, 0][:2]) != (6, 5)
+
+
 UNTPR = """1 Z%=0 : COL(0,7,0)
 2 DSP(41,4,P1$) : DSP(41,13,P2$) : DSP(41,22,P3$)
 3 DSP(41,31,P4$) : DSP(41,40,P5$) : DSP(41,49,P6$) : DSP(41,58,P7$) : DSP(41,67,P8$)
@@ -405,15 +429,6 @@ UNTPR = """1 Z%=0 : COL(0,7,0)
 36 UNTIL K%=139 : CLG
 M30
 """
-
-
-def run_with_keys(tmp_path: Path, text: str, keys: str, subs: dict[str, str] | None = None):
-    for name, body in (subs or {}).items():
-        (tmp_path / name).write_text(body, encoding="latin-1")
-    prog = tmp_path / "prog.cpl"
-    prog.write_text(text, encoding="latin-1")
-    (tmp_path / "prog.keys").write_text(keys)
-    return run_program(prog, options=RunOptions(state_dir=tmp_path / ".ncvm", keys=tmp_path / "prog.keys"))
 
 
 def test_d5_softkey_emulation_untpr_l4660(tmp_path):
