@@ -49,6 +49,27 @@ def test_c1_g22_of_the_example_is_not_in_the_nc_kernel_l366(run_text, reference)
     assert r["error"]["code"] == "NC004" and r["error"]["line"] == 3 and r["position"]["X"] == 20.0
 
 
+GOLDEN = Path(__file__).parents[2] / "programs" / "cpl"
+
+
+def test_c5_permanent_values_survive_a_new_run_l517(tmp_path):
+    """§2.4.3 L517-533 and L639-652 (the golden variables.cpl, with the wmhperm.dat of L623-637): a second
+    program finds the permanent values; the local and the global one are gone."""
+    options = RunOptions(state_dir=tmp_path / ".ncvm")
+    first, _ = run_program(GOLDEN / "variables.cpl", machine=GOLDEN / "machine.toml", options=options)
+    assert first["status"] == "ok", first["error"]
+    reader = tmp_path / "reader.cpl"
+    reader.write_text("10 A% = @36% : B% = @ABCD% : C% = @2 : D = @WZKOR(3,2) : E$ = @PSTR1$ : F$ = @PSTR2$(3)\n"
+                      "20 G! = @IJKL! : H? = @MNOP? : I% = @WZNR%(2)\n"
+                      "30 LGONE? = NUMBER1% = NUL : GGONE? = #NUMBER2% = NUL\nM30\n", encoding="latin-1")
+    r, _ = run_program(reader, machine=GOLDEN / "machine.toml", options=options)
+    assert r["status"] == "ok", r["error"]
+    v = r["variables"]
+    assert (v["A%"], v["B%"], v["C%"], v["E$"], v["F$"], v["I%"]) == (3, 4, 2, "ABC", "DE", 6)
+    assert v["D"] == pytest.approx(7.6) and v["G!"] == 5.12345 and v["H?"] is True
+    assert v["LGONE?"] is True and v["GGONE?"] is True
+
+
 def test_c13_for_with_a_variable_step_into_file_p222_l940(run_text, reference):
     """§2.5.5 L940-958 with its file: the printed records need STEP%=2 at the start (the text shows 1, which
     would give 1/1, 2/1, ...; digest §11 B13) and ``SORT`` is SQRT (OCR). NJUST: numbers in 9 places."""
