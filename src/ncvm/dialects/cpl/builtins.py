@@ -133,10 +133,6 @@ def f_erase(io, name):
     return io.files.ERASE(name)
 
 
-def f_fileaccess(io, name):
-    return io.files.FILEACCESS(name)
-
-
 def f_filedate(io, name, mode=None):
     return io.files.FILEDATE(name, mode)
 
@@ -182,7 +178,6 @@ FUNCTIONS: dict[str, Builtin] = {
     "FILEPOS": Builtin(f_filepos, 1, 2, "I", "§6 L4197", io=True),
     "FILESIZE": Builtin(f_filesize, 1, 2, "I", "§6 L4305", io=True),
     "ERASE": Builtin(f_erase, 1, 1, "I", "§6 L4379", io=True),
-    "FILEACCESS": Builtin(f_fileaccess, 1, 1, "I", "§6 L4406", io=True, params="S"),
     "FILEDATE": Builtin(f_filedate, 1, 2, "S", "§6 L4433", io=True, params="SI"),
     "INKEY": Builtin(f_inkey, 0, 0, "I", "§7 L4625", io=True),
 }

@@ -19,7 +19,7 @@ from .system.transforms import PARAMETER_G
 from .values import f32
 
 #: parameter Pn seen through its suffix (digest §4.8): the conversion applied to the passed value
-PARAM_VIEW = {"%": "_pint", "": "_tor", "!": "_tod", "?": "_tob", "$": "_tos"}
+PARAM_VIEW = {"%": "_pint", "": "_tor", "!": "_tod", "?": "_tob", "$": "_pstr"}
 SUFFIX_TAG = {"%": "i", "": "r", "!": "d", "?": "b", "$": "s"}
 AXIS_LETTERS = set("XYZABCUVW")
 NUMERIC = ("I", "R", "D")
@@ -536,7 +536,7 @@ class Gen:
                     key = repr(var.display)
                     self.emit(f"_G[{key}] = _dim(_G.get({key}), {tuple(sizes)!r}, {kind!r})", line)
         elif t is A.Pdim:
-            self.emit(f"_pdim(P, {s.var.name}, {s.size})", line)
+            self.emit(f"P = _pdim(P, {s.var.name}, {s.size})", line)
         elif t is A.Wait:
             self.wait(s)
         elif t is A.Proc:
@@ -1161,7 +1161,7 @@ INLINE = {
 
 HELPER_NAMES = (
     "_rt", "_st", "_G", "_PM", "_EP", "_f32", "_toi", "_tor", "_wtor", "_tod", "_tob", "_tos", "_bad_assign", "_cond",
-    "_logic", "_lnot", "_ix", "_sv", "_view", "_setf", "_midw", "_dim", "_pdim", "_gfield", "_gset_s", "_pint",
+    "_logic", "_lnot", "_ix", "_sv", "_view", "_setf", "_midw", "_dim", "_pdim", "_pstr", "_gfield", "_gset_s", "_pint",
     "_call", "_q", "_q3", "_drain", "_wait", "_Block", "_loose", "_word", "_mval", "_modal", "_modal_call",
     "_runaway", "_hook", "_caseval", "_nocall", "_msin", "_mcos", "_matan", "_msqrt",
     "_io", "_Dbl", "_SView", "_nn",

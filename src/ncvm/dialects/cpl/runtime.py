@@ -134,7 +134,7 @@ class CplRuntime:
             "_f32": V.f32, "_toi": V.to_int, "_tor": V.to_real, "_wtor": V.word_real, "_tod": V.to_double, "_tob": V.to_bool,
             "_tos": V.to_str, "_bad_assign": _bad_assign, "_cond": V.cond, "_logic": V.logic, "_lnot": V.lnot,
             "_ix": V.index, "_sv": V.sv, "_view": S.mid_for_variable, "_setf": _setf, "_midw": _midw, "_dim": _dim,
-            "_pdim": _pdim, "_gfield": self.gfield, "_gset_s": self.gset_s, "_pint": _pint,
+            "_pdim": _pdim, "_pstr": _pstr, "_gfield": self.gfield, "_gset_s": self.gset_s, "_pint": _pint,
             "_call": lambda name, args, din, line: self.call(path, name, args, din, line),
             "_q": self.enqueue_probe if self._probing else (
                 self.queue.append if self.lookahead <= 0 else self.queue_limited),
@@ -258,6 +258,8 @@ class CplRuntime:
             target = str(found)
         if target in self.active:
             raise CplError("CPL006", name)
+        if caller in self.linked.units and self.linked.units[caller].prog.din_only:
+            args = tuple(UnlinkedString(a) if a.__class__ is str else a for a in args)
         self.stack.append((caller, line))
         self.active.append(target)
         try:
@@ -515,10 +517,26 @@ def _sizes(f) -> list[int]:
     return [len(f) - 1]
 
 
-def _pdim(params: tuple, n: int, size: int) -> None:
+class UnlinkedString(str):
+    """A string constant passed by a program selected without linking ("(DIN)" in its first line): the
+    sub-program can take it only through PDIM (manual §3.4 L1149-1159)."""
+
+
+def _pdim(params: tuple, n: int, size: int) -> tuple:
+    """PDIM Pn$(size): the parameter as a string of at most ``size`` characters (the new parameter tuple)."""
     v = params[n - 1] if n <= len(params) else None
     if v is not None and (not isinstance(v, str) or len(v) > size):
         raise CplError("CPL026", f"PDIM P{n}$({size}) for {v!r}")
+    if isinstance(v, UnlinkedString):
+        return params[:n - 1] + (str(v),) + params[n:]
+    return params
+
+
+def _pstr(v):
+    """Pn$: a string parameter; from an unlinked caller it needs PDIM first ("invalid variable")."""
+    if isinstance(v, UnlinkedString):
+        raise CplError("CPL026", f"string constant {str(v)!r} from a program selected without linking needs PDIM")
+    return V.to_str(v)
 
 
 def _pint(v):

@@ -35,6 +35,7 @@ SYSTEM_FUNCTIONS: dict[str, Builtin] = {
     "APOS": _b(positions.f_apos, 1, 1, "R", "§4.2.3 L1662"),
     "SPOS": _b(positions.f_spos, 1, 1, "R", "§4.2.3 L1688"),
     "FXC": _b(offsets.f_fxc, 1, 4, "R", "§4.3 L1724"),
+    "FILEACCESS": _b(offsets.f_fileaccess, 1, 1, "I", "§6 L4406, §4.3 L1809", io=True, params="S"),
     "TC": _b(tools.f_tc, 1, 4, "R", "§4.4 L1842"),
     "COF": _b(transforms.f_cof, 1, 2, "R", "§4.6 L1967"),
     "DPC": _b(transforms.f_dpc, 1, 2, "R", "§4.7 L1990"),

@@ -289,8 +289,7 @@ def _drive(rt, typ, system, axisno, idno):
 def f_mcods(rt, typ, chan, version, buffer, size, axisno=None, idno=None, p1=None):
     """MCODS(type,chan,version,buffer,size[,axisno[,idno[,P1]]]) -> (status, new version)."""
     c = rt.ctl
-    if typ.__class__ is not int or chan.__class__ is not int or size.__class__ is not int:
-        raise CplError("CPL032", "MCODS type, channel and size are INTEGER")
+    typ, chan, size = (_whole(v) for v in (typ, chan, size))
     if chan > 0 and chan not in _channels(c):
         return NO_CHANNEL, version
     data = _data(rt, typ, chan, size, axisno, idno)
@@ -308,6 +307,16 @@ def f_mcods(rt, typ, chan, version, buffer, size, axisno=None, idno=None, p1=Non
             raise CplError("CPL039", f"MCODS({typ}): the data cannot change while the program waits for it")
     _fill(buffer, data, size)
     return OK, ver
+
+
+def _whole(v) -> int:
+    """An integer expression of MCODS: the manual's example 5 (L3342) passes REAL variables holding whole
+    numbers (``CHAN=SD(8)``, ``IDCHAX=43``, ``SIZE=16``), so such a REAL counts as its integer."""
+    if v.__class__ is float and v.is_integer():
+        return int(v)
+    if v.__class__ is not int:
+        raise CplError("CPL032", "MCODS type, channel and size are INTEGER")
+    return v
 
 
 def _version(data) -> int:

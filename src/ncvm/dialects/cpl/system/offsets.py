@@ -10,6 +10,7 @@ session store (namespace cpl.zs).
 from __future__ import annotations
 
 from ..errors import CplError
+from ..io.values import text_of
 from .axes import kernel_index, nul, resolve, to_unit
 from .controller import EXTERNAL, ZS_ROWS, new_zs_table
 from .gfuncs import additive
@@ -64,14 +65,30 @@ def push_to_kernel(rt) -> None:
     rt._shadow = None  # the prepared state is rebuilt with the new offsets
 
 
-def find_table(c, name: str) -> str:
+def _table_key(c, name: str) -> str | None:
+    """The axis ZS table a name means: the full name, else the first table with the same file name."""
     if name in c.zs_tables:
         return name
     base = name.rsplit("/", 1)[-1]
-    for key in c.zs_tables:
-        if key.rsplit("/", 1)[-1] == base:
-            return key
-    raise CplError("CPL040", f"axis ZS table {name!r} does not exist")
+    return next((key for key in c.zs_tables if key.rsplit("/", 1)[-1] == base), None)
+
+
+def find_table(c, name: str) -> str:
+    key = _table_key(c, name)
+    if key is None:
+        raise CplError("CPL040", f"axis ZS table {name!r} does not exist")
+    return key
+
+
+def f_fileaccess(rt, io, name) -> int:
+    """FILEACCESS (§6 L4406). The axis ZS tables live in the controller's store, not as files; one answers
+    as a readable and writable file (6), since the manual's FXCR example (L1809-1827) asks FILEACCESS
+    whether a table exists before creating it."""
+    bits = io.files.FILEACCESS(name)
+    text = text_of(name)
+    if bits == -1 and text and _table_key(rt.ctl, text.strip()) is not None:
+        return 6
+    return bits
 
 
 def _table_name(c, table) -> str:
