@@ -36,6 +36,14 @@ class Block:
         return f"Block(g={self.g}, m={self.m}, words={self.words}, n={self.n})"
 
 
+class PlainBlock(Block):
+    """A Block its maker knows to be plain: at most one G code, a motion code (G0-G3), no M code or
+    message, words only for :data:`PLAIN_WORDS`. Motion queues run stretches of them column-wise
+    (:func:`ncvm.nc.plainrun.plain_segments`) without looking into each."""
+
+    __slots__ = ()
+
+
 #: one address word of plain DIN: a letter and a number (front ends with richer blocks read their own)
 WORD = re.compile(r"\s*([A-Z])\s*([-+]?(?:\d+\.?\d*|\.\d+))")
 #: a line body made of nothing but words: checked in one regex call before the words are read

@@ -26,7 +26,7 @@ from operator import attrgetter
 import numpy as np
 
 from . import arcs
-from .block import PLAIN_WORDS, Block, PlainRun
+from .block import PLAIN_WORDS, Block, PlainBlock, PlainRun
 from .canon import BatchArcs, MoveBatch
 from .kernel import PLANES
 
@@ -235,24 +235,28 @@ def _extent(sa, sb, ca, cb, r, a0, angle) -> np.ndarray:
 #: the G codes a plain block may carry, and the addresses it may have words for
 PLAIN_G = frozenset({(), (0,), (1,), (2,), (3,)})
 PLAIN_ADDRESSES = frozenset(PLAIN_WORDS)
-_WORDS, _G, _M, _MSG = attrgetter("words"), attrgetter("g"), attrgetter("m"), attrgetter("msg")
+_WORDS, _G = attrgetter("words"), attrgetter("g")
 _FILE, _LINE = attrgetter("src.file"), attrgetter("src.line")
 
 
 def plain_segments(blocks: list) -> list:
     """Blocks built at run time (a CPL motion queue) as segments: :class:`PlainRun` stretches and single blocks.
 
-    A block is plain when it is a :class:`Block` itself (a front end's subclass
-    carries more than words), has no G code but a motion code, no M code or
-    message, and words only for :data:`PLAIN_WORDS`; a stretch of them from one
-    file becomes a run. Other blocks stay as they are. The tests are mapped
-    over the whole list at once: this runs for every block a program queues.
+    A block is plain when it is a :class:`PlainBlock` (its maker knew), or a
+    :class:`Block` itself (a front end's other subclasses carry more than
+    words) with no G code but a motion code, no M code or message, and words
+    only for :data:`PLAIN_WORDS`; a stretch of them from one file becomes a run.
+    Other blocks stay as they are.
     """
     words = list(map(_WORDS, blocks))
     files = list(map(_FILE, blocks))
-    plain = [cls is Block and gok and wok and not m and msg is None for cls, gok, wok, m, msg in
-             zip(map(type, blocks), map(PLAIN_G.__contains__, map(_G, blocks)),
-                 map(PLAIN_ADDRESSES.issuperset, words), map(_M, blocks), map(_MSG, blocks))]
+    types = list(map(type, blocks))
+    plain = [t is PlainBlock for t in types]
+    for i, t in enumerate(types):
+        if t is Block:  # a plain Block too when its content says so
+            blk = blocks[i]
+            plain[i] = (blk.g in PLAIN_G and PLAIN_ADDRESSES.issuperset(words[i]) and not blk.m
+                        and blk.msg is None)
     out: list = []
     start = None  # first block of the run being collected
     for i, ok in enumerate(plain):

@@ -8,6 +8,7 @@ REAL (binary32) comparison rule of digest §4.2 are decided here, not at run tim
 
 from __future__ import annotations
 
+from ...nc.block import PLAIN_WORDS
 from ...runtime.codegen import PySource
 from . import ast as A
 from .builtins import FUNCTIONS
@@ -19,6 +20,8 @@ from .system.transforms import PARAMETER_G
 from .values import f32
 
 #: parameter Pn seen through its suffix (digest §4.8): the conversion applied to the passed value
+#: the addresses of a plain NC block (nc.block.PlainBlock)
+_PLAIN = frozenset(PLAIN_WORDS)
 PARAM_VIEW = {"%": "_pint", "": "_tor", "!": "_tod", "?": "_tob", "$": "_pstr"}
 SUFFIX_TAG = {"%": "i", "": "r", "!": "d", "?": "b", "$": "s"}
 AXIS_LETTERS = set("XYZABCUVW")
@@ -733,8 +736,13 @@ class Gen:
             dynamic = bool(g_dyn or m_dyn or words_dyn or s.loose)
             typ3 = g_dyn or m_dyn or s.loose or TYP3_G.intersection(g_const) or GEARS.intersection(m_const)
             enqueue = "_q3" if typ3 else "_q"
+            # a plain block (a motion G code at most, words of PLAIN_WORDS): the queue runs it column-wise
+            plain = (not m_const and not m_dyn and not g_dyn and not s.loose and s.msg is None
+                     and len(g_const) <= 1 and set(g_const) <= {0, 1, 2, 3}
+                     and set(words_const) <= _PLAIN and all(a in _PLAIN for a, _ in words_dyn))
             if not dynamic:
-                blk = self.const(("block", tuple(g_const), tuple(m_const), dict(words_const), s.n, s.msg, line))
+                kind = "plain block" if plain else "block"
+                blk = self.const((kind, tuple(g_const), tuple(m_const), dict(words_const), s.n, s.msg, line))
                 if ends and m_sub != m_const:
                     blk_sub = self.const(("block", tuple(g_const), tuple(m_sub), dict(words_const), s.n, s.msg, line))
                     self.emit(f"{enqueue}({blk} if _main else {blk_sub})", line)
@@ -755,7 +763,8 @@ class Gen:
                     loose = "(" + ", ".join(self.arg(x) for x in s.loose) + ",)"
                     self.emit(f"{enqueue}(_loose({g}, {m}, {words}, {loose}, {s.n!r}, {s.msg!r}, {src}))", line)
                 else:
-                    self.emit(f"{enqueue}(_Block({g}, {m}, {words}, {s.n!r}, {s.msg!r}, {src}))", line)
+                    make = "_PBlock" if plain else "_Block"
+                    self.emit(f"{enqueue}({make}({g}, {m}, {words}, {s.n!r}, {s.msg!r}, {src}))", line)
             if 80 in g_const:
                 self.emit("_modal[0] = None", line)
             elif has_motion and self.ln.modal_calls:
@@ -1160,7 +1169,7 @@ INLINE = {
 }
 
 HELPER_NAMES = (
-    "_rt", "_st", "_G", "_PM", "_EP", "_f32", "_toi", "_tor", "_wtor", "_tod", "_tob", "_tos", "_bad_assign", "_cond",
+    "_rt", "_st", "_G", "_PM", "_EP", "_PBlock", "_f32", "_toi", "_tor", "_wtor", "_tod", "_tob", "_tos", "_bad_assign", "_cond",
     "_logic", "_lnot", "_ix", "_sv", "_view", "_setf", "_midw", "_dim", "_pdim", "_pstr", "_gfield", "_gset_s", "_pint",
     "_call", "_q", "_q3", "_drain", "_wait", "_Block", "_loose", "_word", "_mval", "_modal", "_modal_call",
     "_runaway", "_hook", "_caseval", "_nocall", "_msin", "_mcos", "_matan", "_msqrt",

@@ -18,7 +18,7 @@ from pathlib import Path
 
 from ...diagnostics import Frame, RuntimeFault, Span
 from ...machine.model import PlcImage, SimClock
-from ...nc.block import Block, DinSyntaxError, parse_din_line
+from ...nc.block import Block, DinSyntaxError, PlainBlock, parse_din_line
 from ...nc.canon import Canon, Src
 from ...nc.plainrun import execute_segments, plain_segments
 from . import values as V
@@ -124,8 +124,9 @@ class CplRuntime:
             if c[0] == "src":
                 out.append(Src(path, c[1]))
             else:
-                _, g, m, words, n, msg, line = c
-                out.append(Block(g, m, dict(words), n, msg, Src(path, line)))
+                kind, g, m, words, n, msg, line = c
+                make = PlainBlock if kind == "plain block" else Block
+                out.append(make(g, m, dict(words), n, msg, Src(path, line)))
         return out
 
     def helpers(self, path: str) -> dict:
@@ -138,7 +139,7 @@ class CplRuntime:
             "_call": lambda name, args, din, line: self.call(path, name, args, din, line),
             "_q": self.enqueue_probe if self._probing else (
                 self.queue.append if self.lookahead <= 0 else self.queue_limited),
-            "_drain": self.drain, "_wait": self.wait, "_Block": Block, "_loose": self.loose,
+            "_drain": self.drain, "_wait": self.wait, "_Block": Block, "_PBlock": PlainBlock, "_loose": self.loose,
             "_word": V.word, "_mval": _mval, "_modal": self.modal,
             "_modal_call": lambda line: self.modal_call(path, line), "_q3": self.enqueue_typ3,
             "_runaway": lambda line: self.session.steps.runaway(path, line),
