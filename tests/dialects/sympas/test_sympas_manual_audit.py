@@ -855,3 +855,138 @@ def test_homing_stops_behind_the_latched_reference(sap):
     assert r["status"] == "ok", r["error"]
     assert r["variables"]["lp"] == 0.0
     assert r["variables"]["x"] == pytest.approx(0.5, abs=0.01)
+
+
+# --- events and task control around the examples of §6.4 and §6.6 --------------------------------
+
+UI_AT_01 = """
+[sympas]
+inputs = [{axis = "A1", bit = 2, function = "UI"}]
+
+[[scenario]]
+time = 0.1
+kind = "input"
+axis = "A1"
+bit = 2
+value = true
+"""
+
+
+@pytest.mark.xfail(strict=True, reason="L1548: events are checked after every statement (docs/decisions.md 'Event "
+                   "polling' says so too); ncvm's CodeGen.stmts merges a run of plain assignments into one "
+                   "check point even when the program uses ENEV, and the check point right after WT is "
+                   "skipped (Card._run/Task.set_budget give a budget of at least 1 after a resume)")
+def test_events_are_checked_after_every_statement_L1548(sap):
+    # UI active from 0.1 s (tick 1562). enev at tick 1, WT(3125) from tick 2 to 3127: the input is
+    # active when the WT ends, so EVUI runs before `x := 2` (after the WT, or at latest after x := 1)
+    text = prog("enev(EVUI);\nWT(3125);\nx := 1;\nx := 2;\nx := 3;\nx := 4;",
+                "var x, atx, atclock: integer;\nprocedure EVUI; begin atx := x; atclock := CLOCK; DISEV(EVUI); end;")
+    r = sap(text, machine_toml=UI_AT_01)
+    assert r["status"] == "ok", r["error"]
+    assert r["variables"]["atx"] in (0, 1)
+    assert r["variables"]["atclock"] <= 3127 + 3
+
+
+@pytest.mark.xfail(strict=True, reason="L2232: handlers are not run during WT, but several shorter WT() calls let "
+                   "them run in between; ncvm skips the check point after a WT in straight-line code "
+                   "(Card._run sets check_at = time and Task.set_budget floors the budget at 1, so the "
+                   "codegen event point `if _n >= tk.budget` after the flushed call does not poll)")
+def test_handlers_run_between_several_wts_L2232(sap):
+    # UI active from tick 1562; the first WT(3125) runs from tick 2 to 3127, so EVUI runs right after it
+    text = prog("enev(EVUI);\nWT(3125);\nWT(3125);\nWT(3125);\nWT(3125);",
+                "var at: integer;\nprocedure EVUI; begin at := CLOCK; DISEV(EVUI); end;")
+    r = sap(text, machine_toml=UI_AT_01)
+    assert r["status"] == "ok", r["error"]
+    assert 3127 <= r["variables"]["at"] <= 3127 + 3
+
+
+def test_handlers_run_between_wts_in_a_loop_L2232(sap):
+    # L2232's suggestion in a loop: WT(3125) four times; EVUI runs after the first one, at tick 3127+
+    text = prog("enev(EVUI);\nfor i := 1 to 4 do WT(3125);",
+                "var i, at: integer;\nprocedure EVUI; begin at := CLOCK; DISEV(EVUI); end;")
+    r = sap(text, machine_toml=UI_AT_01)
+    assert r["status"] == "ok", r["error"]
+    assert 3127 <= r["variables"]["at"] <= 3127 + 5
+
+
+def test_disev_example_ignores_the_handler_L1714(sap):
+    # L1714 DISEV(EVEO) after L1721 ENEV(EVEO): the EO input at 1 s no longer calls EVEO
+    text = prog("ENEV(EVEO);\nDISEV(EVEO);\nwhile CLOCK < 2 * 15625 do ;\ndone := TRUE;",
+                "var hit, done: boolean;\nprocedure EVEO; begin hit := TRUE; abort; end;")
+    r = sap(text, machine_toml=EVEO_MACHINE)
+    assert r["status"] == "ok", r["error"]
+    assert r["variables"] == {"hit": False, "done": True}
+
+
+def test_startcnct_restarts_the_own_task_L2114(sap):
+    # L2114: a program may restart itself from its beginning with STARTCNCT; CI0 counts the starts
+    r = sap("program T;\nbegin\n  CI0 := CI0 + 1;\n  if CI0 < 3 then STARTCNCT(0);\n  writeln('done ', CI0);\nend.\n")
+    assert r["status"] == "ok", r["error"]
+    assert r["output"] == ["done 3"]
+
+
+TASK_RULES = """{$TASK 0}
+program Main;
+var a, b, c1, c2: integer;
+begin
+  STARTCNCT(1);
+  STARTCNCT(2);
+  WT(100);
+  a := CI2;
+  CONTCNCT(1);           { L1692: an ABORTed program cannot be continued }
+  WT(100);
+  b := CI2;
+  c1 := CI3;
+  STOPTOSS(2);           { L2141: no effect on a task that is not stopped }
+  WT(100);
+  c2 := CI3;
+  STOPCNCT(2);
+end.
+{$TASK 1}
+program Once;
+begin
+  CI2 := 1;
+  abort;
+  CI2 := 2;
+end.
+{$TASK 2}
+program Runner;
+begin
+  while TRUE do CI3 := CI3 + 1;
+end.
+"""
+
+
+def test_contcnct_does_not_continue_an_aborted_task_and_stoptoss_needs_a_stopped_one(sap):
+    v = sap(TASK_RULES)["variables"]
+    assert (v["a"], v["b"]) == (1, 1)
+    assert v["c2"] > v["c1"] + 50  # task 2 kept running through STOPTOSS
+
+
+def test_handlers_wait_while_the_task_is_stopped_L2120(sap):
+    # L2120: after STOP the handlers are not run; the enable flag is kept over CONTCNCT (A-29), so
+    # EVUI runs once the task goes on. UI active from 0.1 s; task 1 stands in STOP until 1 s.
+    text = """{$TASK 0}
+program Main;
+var seen: integer;
+begin
+  STARTCNCT(1);
+  WT(15625);
+  seen := CI4;
+  CONTCNCT(1);
+  WT(1000);
+  writeln(seen, ' ', CI4);
+end.
+{$TASK 1}
+program Ev;
+procedure EVUI; begin CI4 := CI4 + 1; DISEV(EVUI); end;
+begin
+  enev(EVUI);
+  STOP;
+  CI5 := 1;
+  CI5 := 2;
+end.
+"""
+    r = sap(text, machine_toml=UI_AT_01)
+    assert r["status"] == "ok", r["error"]
+    assert r["output"] == ["0 1"]
