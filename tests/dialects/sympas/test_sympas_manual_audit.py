@@ -381,7 +381,8 @@ def test_ja_both_axes_example_L1739(sap):
 
 
 @pytest.mark.xfail(strict=True, reason="digest §10.5 Jog [R]: a new JA on a jogging axis re-targets on the fly; "
-                   "ncvm refuses the whole JA (Card.prepare busy rule applied to jogs), so A2 never moves")
+                   "with the default busy_move = 'refuse' ncvm refuses the whole JA (Card.prepare busy rule "
+                   "applied to jogs, listed under 'Not done yet' in docs/sympas.md), so A2 never moves")
 def test_ja_examples_back_to_back_L1739(sap):
     # L1739 lists JA(A1:=100.0); then JA(A1:=100.0, A2:=100.0); run one after the other, the second
     # re-targets the jogging A1 (to the same 100) and starts A2 two ticks later
@@ -391,6 +392,15 @@ def test_ja_examples_back_to_back_L1739(sap):
     assert r["variables"]["x"] == pytest.approx(45.0, abs=0.2)
     assert r["variables"]["y"] == pytest.approx(45.0, abs=0.2)
     assert r["position"]["X"] == 100.0 and r["position"]["Y"] == 100.0
+
+
+def test_ja_examples_back_to_back_with_busy_move_override_L1739(sap):
+    # the same two JAs on a card configured with busy_move = "override": the second takes over A1
+    r = sap(prog(JOG + "\nJA(A1:=100.0);\nJA(A1:=100.0, A2:=100.0);\nWT(7812);\nx := A1.dp; y := A2.dp;",
+                 "var x, y: double;"), machine_toml='\n[sympas]\nbusy_move = "override"\n')
+    assert r["status"] == "ok", r["error"]
+    assert r["variables"]["x"] == pytest.approx(45.0, abs=0.2)
+    assert r["variables"]["y"] == pytest.approx(45.0, abs=0.2)
 
 
 def test_jaw_examples_L1749(sap_on):
@@ -467,6 +477,20 @@ def test_spooled_circle_after_mca_L1866(sap):
     a = math.radians(0.1)
     assert r["variables"]["x"] == pytest.approx(10 * math.sin(a), abs=1e-3)
     assert r["variables"]["y"] == pytest.approx(10 - 10 * math.cos(a), abs=1e-3)
+    assert r["motion"]["arc_moves"] == 2
+
+
+def test_helix_then_spooled_helix_examples_L1921(sap):
+    # L1921: MHA(A1 := 50.0, A2 := 0.0, PHI := 720.0, A3 := 10); SMHA(A1 := 0.0, A2 := 10.0, PHI := 0.1,
+    # A3 := 10); completion: SSMSW. MHA ends at (0, 0, 10); SMHA turns (0, -10) about (0, 10) by
+    # 0.1 deg with A3 staying at 10: (10 sin 0.1deg, 10 - 10 cos 0.1deg, 10)
+    r = sap(prog("MHA(A1 := 50.0, A2 := 0.0, PHI := 720.0, A3 := 10);\n"
+                 "SMHA(A1 := 0.0, A2 := 10.0, PHI := 0.1, A3 := 10);\nSSMSW(A1, A2, A3);\n"
+                 "x := A1.dp; y := A2.dp; z := A3.dp;", "var x, y, z: double;"))
+    assert r["status"] == "ok", r["error"]
+    a = math.radians(0.1)
+    v = r["variables"]
+    assert (v["x"], v["y"], v["z"]) == pytest.approx((10 * math.sin(a), 10 - 10 * math.cos(a), 10.0), abs=1e-3)
     assert r["motion"]["arc_moves"] == 2
 
 
@@ -990,3 +1014,38 @@ end.
     r = sap(text, machine_toml=UI_AT_01)
     assert r["status"] == "ok", r["error"]
     assert r["output"] == ["0 1"]
+
+
+# --- notes that go with the examples -------------------------------------------------------------
+
+
+def test_predefined_axis_gets_a_new_number_L726(sap):
+    # L726: the axis number of a predefined specifier (A1 .. An) can be changed like VA.an: after
+    # A1.an := 1, A1 names channel 2 (Y); A1.an := 0 gives it back
+    r = sap(prog("A1.an := 1;\nMLAW(A1 := 5.0);\ny := A2.dp; n := A1.an;\nA1.an := 0;\nx := A1.dp;",
+                 "var y, x: double; n: integer;"))
+    assert r["status"] == "ok", r["error"]
+    assert r["variables"] == {"y": 5.0, "n": 1, "x": 0.0}
+    assert r["position"] == {"X": 0.0, "Y": 5.0, "Z": 0.0}
+
+
+def test_clock_in_an_integer_turns_negative_timer_does_not_L732_L756(sap_on):
+    # L732: after the largest positive value the clock gives the smallest negative one (in an
+    # Integer); L756: a Timer holds 0 .. 4294967295. CLOCK starts at 2^31 - 8: WT(20) runs from
+    # tick 1 to 21, i := CLOCK reads 2^31 - 8 + 22, t := CLOCK one tick later
+    r = sap_on(prog("WT(20);\ni := CLOCK;\nt := CLOCK;\nlater := t > 100;", "var i: integer; t: timer; later: boolean;"),
+               axes_toml(3, extra="clock_start = 2147483640\n"))
+    assert r["status"] == "ok", r["error"]
+    v = r["variables"]
+    assert v["t"] == 2147483640 + 23
+    assert v["i"] == 2147483640 + 22 - 2**32
+    assert v["later"] is True  # modular: t - 100 is a positive int32
+
+
+@pytest.mark.parametrize("text,code", [
+    (prog("i := A2.DIGI;", "var i: integer;"), "SP001"),          # L1424: qualifiers are case-sensitive
+    (prog("b := A2.DIGIB.1;", "var b: boolean;"), "SP001"),       # L1501
+    (prog("i := a2.digi;", "var i: integer;"), "3"),              # L1420: axis specifiers too
+])
+def test_qualifiers_and_axis_names_are_case_sensitive(tmp_path, text, code):
+    assert errors_of(tmp_path, text) == [(code, 4)]
