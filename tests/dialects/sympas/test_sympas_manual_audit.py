@@ -1049,3 +1049,69 @@ def test_clock_in_an_integer_turns_negative_timer_does_not_L732_L756(sap_on):
 ])
 def test_qualifiers_and_axis_names_are_case_sensitive(tmp_path, text, code):
     assert errors_of(tmp_path, text) == [(code, 4)]
+
+
+def test_local_labels_and_fresh_locals_in_a_routine_L1058_L1150(sap):
+    # L1058 / L1150: local variables and local labels between the header and the block. Locals start
+    # at 0 on every call (A-42): Count(3) = 100 + 3, Count(2) = 100 + 2
+    text = """program P;
+var r1, r2: integer;
+function Count(k: integer): integer;
+label again;
+var acc: integer;
+begin
+  acc := acc + 100;
+again:
+  acc := acc + 1;
+  k := k - 1;
+  if k > 0 then goto again;
+  Count := acc;
+end;
+begin
+  r1 := Count(3);
+  r2 := Count(2);
+end.
+"""
+    r = sap(text)
+    assert r["status"] == "ok", r["error"]
+    assert r["variables"] == {"r1": 103, "r2": 102}
+
+
+def test_common_buffer_is_task_specific_L2013(sap):
+    # L2013/L2020: RDCBx/WRCBx work on the CNC task's own COMMON BUFFER of 1000 bytes: what task 0
+    # writes at offset 500 (the manual's WRCBI(500, -1000)) is not in task 1's buffer, and back
+    text = """{$TASK 0}
+program Main;
+var mine, other: integer;
+begin
+  WRCBI(500, -1000);
+  STARTCNCT(1);
+  WT(100);
+  mine := RDCBI(500);
+  other := CI9;
+end.
+{$TASK 1}
+program Reader;
+begin
+  CI9 := RDCBI(500);
+  WRCBI(500, 7);
+end.
+"""
+    r = sap(text)
+    assert r["status"] == "ok", r["error"]
+    assert r["variables"] == {"mine": -1000, "other": 0}
+
+
+def test_jhiw_gives_up_after_pos_L1754(sap):
+    # L1754: the index search stops once the distance Pos is exceeded. JHIW(A1 := 5.0) from 0.25 mm
+    # with index pulses 10 mm apart finds none: the axis stops at 5.25, not homed, search failed
+    # (provisional axst bit 15 = home search failed, axstb.16)
+    r = sap(prog("JAW(A1 := 0.25);\nJHIW(A1 := 5.0);\nh := A1.axstb.4; f := A1.axstb.16; x := A1.dp;",
+                 "var h, f: boolean; x: double;"), machine_toml="\n[sympas]\nindex_period = 10.0\n")
+    assert r["status"] == "ok", r["error"]
+    assert r["variables"] == {"h": False, "f": True, "x": 5.25}
+
+
+def test_wt_takes_an_integer_L2230(tmp_path):
+    # L2230: the parameter of WT is an Integer value in units of 64 us; a Double is a compile error
+    assert errors_of(tmp_path, prog("d := 2.5;\nWT(d);", "var d: double;")) == [("SP003", 5)]
