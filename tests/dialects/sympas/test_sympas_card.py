@@ -134,10 +134,12 @@ def test_jog_absolute_and_stop(sap):
 
 
 def test_homing_left_to_the_reference_switch(sap):
-    r = sap(prog("JHLW(A1); x := A1.dp; homed := A1.axstb.4; MLAW(A1 := 1.0);",
-                 "var x: double; homed: boolean;"),
+    r = sap(prog("JHLW(A1); x := A1.dp; homed := A1.axstb.4; hv := A1.hvl; ha := A1.hac; MLAW(A1 := 1.0);",
+                 "var x, hv, ha: double; homed: boolean;"),
             machine_toml="[sympas]\nref_positions = {A1 = -5.0}\n")
-    assert r["variables"] == {"x": 0.0, "homed": True}
+    v = r["variables"]
+    # REF (-5) becomes 0 where the search passes it; braking with hac stops it hvl^2 / (2 hac) further left
+    assert v["homed"] is True and v["x"] == pytest.approx(-v["hv"] ** 2 / (2 * v["ha"]))
     assert r["position"]["X"] == pytest.approx(1.0)
 
 

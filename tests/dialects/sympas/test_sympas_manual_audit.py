@@ -380,10 +380,8 @@ def test_ja_both_axes_example_L1739(sap):
     assert r["position"]["X"] == 100.0 and r["position"]["Y"] == 100.0
 
 
-@pytest.mark.xfail(strict=True, reason="digest §10.5 Jog [R]: a new JA on a jogging axis re-targets on the fly; "
-                   "with the default busy_move = 'refuse' ncvm refuses the whole JA (Card.prepare busy rule "
-                   "applied to jogs, listed under 'Not done yet' in docs/sympas.md), so A2 never moves")
 def test_ja_examples_back_to_back_L1739(sap):
+    """Digest §10.5 Jog [R]: a new JA on a jogging axis re-targets it on the fly, and A2 starts too."""
     # L1739 lists JA(A1:=100.0); then JA(A1:=100.0, A2:=100.0); run one after the other, the second
     # re-targets the jogging A1 (to the same 100) and starts A2 two ticks later
     r = sap(prog(JOG + "\nJA(A1:=100.0);\nJA(A1:=100.0, A2:=100.0);\nWT(7812);\nx := A1.dp; y := A2.dp;",
@@ -445,13 +443,15 @@ def test_homing_examples_jhl_jhlw_jhr_jhrw_L1776_L1804(sap):
     text = prog("JHL(A1);\nWT(100);\nJSW(A1);\nh1 := A1.axstb.4;\n"
                 "JHLW(A2);\ny := A2.dp; h2 := A2.axstb.4;\n"
                 "JHR(A2);\nWT(100);\nJSW(A2);\n"
-                "JHRW(A1);\nx := A1.dp; h3 := A1.axstb.4;",
-                "var x, y: double; h1, h2, h3: boolean;")
+                "JHRW(A1);\nx := A1.dp; h3 := A1.axstb.4; hv := A1.hvl; ha := A1.hac;",
+                "var x, y, hv, ha: double; h1, h2, h3: boolean;")
     r = sap(text, machine_toml=HOME)
     assert r["status"] == "ok", r["error"]
     v = r["variables"]
     assert (v["h1"], v["h2"], v["h3"]) == (False, True, True)
-    assert v["y"] == 0.0 and v["x"] == 0.0
+    # latched at REF = 0, then braked with hac: the axes stop hvl^2 / (2 hac) behind it (digest §10.5)
+    overrun = v["hv"] ** 2 / (2 * v["ha"])
+    assert v["y"] == pytest.approx(-overrun) and v["x"] == pytest.approx(overrun)
 
 
 def test_jhi_and_jhiw_examples_L1758_L1767(sap):
@@ -849,9 +849,6 @@ REF_RIGHT = "\n[sympas]\nref_positions = {A1 = 30.0}\n"
 SEARCH = "A1.hvl := 10.0; A1.hac := 100.0;\nJHR(A1);\nh0 := A1.axstb.4;\nWT(15625);\nx := A1.dp; h1 := A1.axstb.4;\n"
 
 
-@pytest.mark.xfail(strict=True, reason="JHR (L1795) only starts the search, JHRW (L1804) waits for it: until REF is "
-                   "reached the axis is not homed and keeps its coordinates (digest §10.5 Homing). ncvm "
-                   "(commands.Commands._home) sets homed, zerooffset and the REF zero when the command starts")
 def test_jhr_search_in_progress_is_not_homed_yet(sap):
     r = sap(prog(SEARCH, "var h0, h1: boolean; x: double;"), machine_toml=REF_RIGHT)
     assert r["status"] == "ok", r["error"]
@@ -860,8 +857,6 @@ def test_jhr_search_in_progress_is_not_homed_yet(sap):
     assert v["x"] == pytest.approx(9.5, abs=0.01)
 
 
-@pytest.mark.xfail(strict=True, reason="a homing search stopped by JS (L1828) before REF leaves the axis unhomed; "
-                   "ncvm (commands.Commands._home) marks it homed when the search starts")
 def test_homing_search_stopped_before_the_switch_is_not_homed(sap):
     r = sap(prog(SEARCH + "JSW(A1);\nh2 := A1.axstb.4;", "var h0, h1, h2: boolean; x: double;"),
             machine_toml=REF_RIGHT)
@@ -869,9 +864,6 @@ def test_homing_search_stopped_before_the_switch_is_not_homed(sap):
     assert r["variables"]["h2"] is False
 
 
-@pytest.mark.xfail(strict=True, reason="digest §10.5 Homing: at REF the card latches lp, then decelerates with hac, "
-                   "so the axis stops v^2 / (2 hac) past REF = 0; ncvm (commands.Commands._home) plans a move "
-                   "that ends exactly on the switch")
 def test_homing_stops_behind_the_latched_reference(sap):
     # hvl 10 mm/s, hac 100 mm/s^2: latched at REF (lp = 0), stops 10^2 / 200 = 0.5 mm behind it
     r = sap(prog("A1.hvl := 10.0; A1.hac := 100.0;\nJHRW(A1);\nx := A1.dp; lp := A1.lp;", "var x, lp: double;"),
@@ -896,10 +888,6 @@ value = true
 """
 
 
-@pytest.mark.xfail(strict=True, reason="L1548: events are checked after every statement (docs/decisions.md 'Event "
-                   "polling' says so too); ncvm's CodeGen.stmts merges a run of plain assignments into one "
-                   "check point even when the program uses ENEV, and the check point right after WT is "
-                   "skipped (Card._run/Task.set_budget give a budget of at least 1 after a resume)")
 def test_events_are_checked_after_every_statement_L1548(sap):
     # UI active from 0.1 s (tick 1562). enev at tick 1, WT(3125) from tick 2 to 3127: the input is
     # active when the WT ends, so EVUI runs before `x := 2` (after the WT, or at latest after x := 1)
@@ -911,10 +899,6 @@ def test_events_are_checked_after_every_statement_L1548(sap):
     assert r["variables"]["atclock"] <= 3127 + 3
 
 
-@pytest.mark.xfail(strict=True, reason="L2232: handlers are not run during WT, but several shorter WT() calls let "
-                   "them run in between; ncvm skips the check point after a WT in straight-line code "
-                   "(Card._run sets check_at = time and Task.set_budget floors the budget at 1, so the "
-                   "codegen event point `if _n >= tk.budget` after the flushed call does not poll)")
 def test_handlers_run_between_several_wts_L2232(sap):
     # UI active from tick 1562; the first WT(3125) runs from tick 2 to 3127, so EVUI runs right after it
     text = prog("enev(EVUI);\nWT(3125);\nWT(3125);\nWT(3125);\nWT(3125);",

@@ -128,8 +128,9 @@ class CodeGen:
         i = 0
         while i < len(body):
             j = i
-            while not self.stepping and j < len(body) and isinstance(body[j], A.Assign) \
-                    and body[j].label is None and not needs_time(body[j].value):
+            # events are polled after every statement (L1548), so only programs without them merge
+            while not self.stepping and not self.chk.events_used and j < len(body) \
+                    and isinstance(body[j], A.Assign) and body[j].label is None and not needs_time(body[j].value):
                 j += 1
             if j - i > 1:
                 # a run of plain assignments: count them once

@@ -677,7 +677,10 @@ class Commands:
         return self._jog(tk, items, loc, True, True)
 
     def _home(self, tk, axes, loc, direction: int, wait: bool, limits=None):
-        """JHL/JHR: move toward the REF switch at hvl, then REF becomes the axis zero (digest §10.5)."""
+        """JHL/JHR/JHI: search toward the REF switch (or the next index mark) at hvl; the axis is homed, and
+        REF becomes its zero, when it reaches it (digest §10.5). A REF search latches lp there and brakes
+        with hac, so the axis stops hvl^2 / (2 hac) behind REF; an index search stops on the mark.
+        JHL/JHR/JHI only start the search (a JS before REF leaves the axis unhomed); the W forms wait."""
         t = tk.time
         start = self.prepare(tk, axes, loc)
         if start is None:
@@ -688,9 +691,12 @@ class Commands:
         for k, ax in enumerate(axes):
             a = self.axes[ax]
             p0 = start[ax]
+            overrun = 0.0
             if limits is None:
                 ref = float(refs.get(a.name, 0.0))
                 ok = (ref - p0) * direction >= 0
+                if ok and a.q["hac"] > 0:
+                    overrun = direction * a.q["hvl"] ** 2 / (2.0 * a.q["hac"])
             else:
                 period = float(self.cfg["index_period"])
                 d = 1 if limits[k] >= 0 else -1
@@ -698,28 +704,48 @@ class Commands:
                 ok = abs(ref - p0) <= abs(limits[k])
                 if not ok:
                     ref = p0 + limits[k]
-            mv = Move((ax,), (p0,), (ref,), "line", src, start)
-            mv.jog = mv.homing = True
             if not ok and limits is None:
                 a.flags |= failed
                 continue
-            if abs(ref - p0) > 0:
-                mv.start(t, abs(ref - p0), a.q["hvl"], a.q["hac"], self.jerk((ax,)))
-                a.move = mv
-                self.live.add(mv)
-            a.target = ref
+            a.flags &= ~failed
+            latch = "lp" if limits is None else "lpndx"
+            end = ref + overrun
+            if abs(ref - p0) == 0.0:  # already on REF: latched at once, nothing moves
+                self._homed(a, ref, latch)
+                continue
+            mv = Move((ax,), (p0,), (end,), "line", src, start)
+            mv.jog = mv.homing = True
+            mv.start(t, abs(end - p0), a.q["hvl"], a.q["hac"], self.jerk((ax,)))
+            a.move = mv
+            self.live.add(mv)
+            a.target = end
             if ok:
-                a.flags &= ~failed
-                a.homed = True
-                a.zerooffset = 0.0
-                a.ref = ref
-                if limits is None:
-                    a.q["lp"] = 0.0
-                else:
-                    a.q["lpndx"] = 0.0
+                self._latch_at(a, mv, abs(ref - p0), ref, latch)
             else:
-                a.flags |= failed
+                a.flags |= failed  # no index mark within the search range
         return self._wait(tk, axes, wait)
+
+    @staticmethod
+    def _homed(a, ref: float, latch: str) -> None:
+        a.homed = True
+        a.zerooffset = 0.0
+        a.ref = ref
+        a.q[latch] = 0.0
+
+    def _latch_at(self, a, mv, dist: float, ref: float, latch: str) -> None:
+        """Home axis ``a`` when its search move ``mv`` has run ``dist`` (reaches REF); not if it stops short."""
+
+        def when_there(tick: float) -> None:
+            if a.move is not mv and not mv.retired and mv.stop_s is None:
+                return  # replaced by another command before REF
+            if mv.s_at(tick) >= dist - 1e-9:
+                self._homed(a, ref, latch)
+            elif mv.t1 == math.inf or mv.s_at(mv.t1) >= dist - 1e-9:
+                later = _reach_tick(mv, dist, tick)  # held or slowed by the override: look again then
+                self.add_timed(later, lambda: when_there(later))
+
+        first = _reach_tick(mv, dist, mv.t0)
+        self.add_timed(first, lambda: when_there(first))
 
     def cmd_jhl(self, tk, axes, loc):
         return self._home(tk, axes, loc, -1, False)
@@ -917,3 +943,19 @@ def jog_plan(p0: float, p1: float, v0: float, vel: float, acc: float, jerk: floa
         v1 = min(jtv, math.sqrt(w * w + 2.0 * ae * L)) if jtv > 0.0 else 0.0
         pieces.append((p0, p1, Profile(L, max(vel, v1), acc, w, v1, jerk)))
     return pieces
+
+
+def _reach_tick(mv, dist: float, after: float) -> float:
+    """The first tick (after ``after``) at which move ``mv`` has run ``dist`` along its path, by bisection of
+    its monotonic s(t); a held move (no end) is looked at again 1000 ticks later."""
+    hi = mv.t1
+    if hi == math.inf:
+        return after + 1000.0
+    lo = after
+    for _ in range(60):
+        mid = 0.5 * (lo + hi)
+        if mv.s_at(mid) >= dist - 1e-9:
+            hi = mid
+        else:
+            lo = mid
+    return hi

@@ -81,7 +81,9 @@ class Task:
             return
         room = (self.check_at - self.time) * self.card.q
         left = self.card.step_limit - self.card.steps + 1
-        self.budget = max(1, min(int(room) if room < 1e15 else 1 << 60, left))
+        # with events enabled a check point due now polls even with no statement counted since the last
+        # (right after a WT, L2232); otherwise at least one statement runs between check points
+        self.budget = max(0 if self.enabled else 1, min(int(room) if room < 1e15 else 1 << 60, left))
 
     def checkin(self, n: int):
         """A loop back-edge: account the statements, let other tasks run, poll events."""
