@@ -34,6 +34,7 @@ INCH = 25.4
 PLANES = {17: ("X", "Y", "Z", "I", "J"), 18: ("Z", "X", "Y", "K", "I"), 19: ("Y", "Z", "X", "J", "K")}
 WORK_OFFSETS = {54: "G54", 55: "G55", 56: "G56", 57: "G57", 58: "G58", 59: "G59"}
 NON_AXIS = frozenset("FSTDHIJKRPLN")
+_MOTION_G = frozenset((0, 1, 2, 3))
 
 
 class NcKernel:
@@ -244,8 +245,9 @@ class NcKernel:
 
     def columns_ok(self) -> bool:
         """Whether plain motion blocks may run column-wise (:mod:`ncvm.nc.plainrun`) now: not while a coordinate
-        transformation maps every target, nor under G96, where each block sets the spindle speed anew."""
-        return self.transform is None and not self.css
+        transformation maps every target, nor under G96, where each block sets the spindle speed anew, nor
+        when a dialect handles a motion G code itself."""
+        return self.transform is None and not self.css and not (self.g_handlers and _MOTION_G & self.g_handlers.keys())
 
     # -- spindle -----------------------------------------------------------
     def spindle_speed(self) -> float:
