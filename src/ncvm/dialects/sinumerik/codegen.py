@@ -382,8 +382,10 @@ class UnitCodegen:
                 refs = ", ".join(self._ref(o) if i == 0 or code == "710" else v(o)
                                  for i, o in enumerate(ops))
                 return ["@SYNC_OUT", f"_rt.nc_function({code!r}, ({refs},), {line})", "@SYNC_IN"]
-            if code == "a27":
+            if code == "a27":  # OUTP PARA outputs the R parameters as they are now
                 return ["@SYNC_OUT", f"_rt.io({code!r}, ({args},))"]
+            if code == "a28":  # INP may load R parameters
+                return ["@SYNC_OUT", f"_rt.io({code!r}, ({args},))", "@SYNC_IN"]
             if code in ("714", "715"):  # STOP DEC hands over R parameters loaded during execution
                 return ["@SYNC_OUT", f"_rt.nc_function({code!r}, (), {line})", "@SYNC_IN"]
             fn = "write" if g == "4" else ("io" if g == "a" else "nc_function")

@@ -17,7 +17,7 @@ NAMESPACE = "sin800"
 AREAS = ("nc_md", "cycle_md", "plc_md", "drive_md", "nc_sd", "cycle_sd")
 KNOWN_KEYS = {"control", "channel", "m0", "block_skip", "max_call_depth", "r", "mib", "tool_offsets",
               "zero_offsets", "rotation", "inputs", "plc", "alarms", "sob", "cycle_alarm_stop", "to_area",
-              "m_functions", "decode_ahead", "strict_nc", "gear", "gears",
+              "m_functions", "decode_ahead", "strict_nc", "gear", "gears", "v24_input",
               *AREAS}
 PERSISTED = (*AREAS, "to", "zo", "rot", "mib", "central_r")
 
@@ -83,6 +83,7 @@ class NcData:
         self.central_r: dict[str, float] = {}
         self.gear = 1  # gear stage of the master spindle at power-on (AGS)
         self.gears: list[float] = []  # maximum speed of each gear stage (M40, limit under G96)
+        self.v24_input = ""  # what INP reads from the V24 port (module v24's tape format)
         self.dirty: set[str] = set()
 
     # -- loading ---------------------------------------------------------
@@ -128,6 +129,9 @@ class NcData:
             data.alarms.append((int(a), data.channel))
         data.sob = {str(k): float(v) for k, v in sec.get("sob", {}).items()}
         data._load_gears(where, sec)
+        if not isinstance(sec.get("v24_input", ""), str):
+            raise UsageError(f"{where}: key 'sin800.v24_input' must be text (lines such as \"R10=4.5\")")
+        data.v24_input = sec.get("v24_input", "")
         for name, v in sec.get("r", {}).items():
             n = int(str(name).upper().lstrip("R"))
             if n >= 900:

@@ -96,7 +96,7 @@ class Channel(SysMem, SpindleReads):
         self.frames: list[Frame] = []
         self.halted = False
         self.ess_enabled = False
-        self.panel: list[str] = []
+        self.panel: list[str] = []  # menus called by WRT PIC, for RECALL PIC
         self.v24: list[str] = []
         self.tool_d = 0
         SysMem.__init__(self)
