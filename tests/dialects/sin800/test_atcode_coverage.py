@@ -181,13 +181,16 @@ def test_zero_offset_reads(tmp_path):
 
 
 def test_zero_offset_writes_move_the_workpiece_frame(tmp_path):
-    """ZOPR(1,1) = 50 (L3214); ZOD(2) = R61 (L3222); ZOPS(1) = 100 (L3230): the offsets shift the axes'
-    machine positions for the same programmed position."""
+    """ZOPR(1,1) = 50 (L3214) and ZOD(2) = R61 (L3222) shift the axes' machine positions for the same
+    programmed position at once; ZOPS(1) = 100 (L3230) is effective after program end (L3240): the
+    next run's X10 is at machine X 10 + 100, this run's at 10 + 50."""
     r = _ok(tmp_path, "%MPF1\nR61=2 @432 K1 K1 K50 @434 K2 R61 @435 K1 K100\nG0 X10 Y10\n"
-                      "@714 @361 R1 K1 @361 R2 K2 @331 R3 K1 K1 @333 R4 K2 @334 R5 K1\nM30\n",
-                 PLAIN)
+                      "@714 @361 R1 K1 @361 R2 K2 @331 R3 K1 K1 @333 R4 K2 @334 R5 K1\nM30\n", PLAIN)
     assert [_r(r, n) for n in (3, 4, 5)] == [50.0, 2.0, 100.0]
-    assert _r(r, 1) == 10.0 + 50.0 + 100.0 and _r(r, 2) == 10.0 + 2.0
+    assert _r(r, 1) == 10.0 + 50.0 and _r(r, 2) == 10.0 + 2.0
+    r = _ok(tmp_path, "%MPF2\nG0 X10\n@714 @361 R1 K1 @334 R5 K1 @331 R3 K1 K1\nM30\n", PLAIN)
+    assert _r(r, 5) == 100.0 and _r(r, 3) == 50.0  # both kept by the NC (store)
+    assert _r(r, 1) == 10.0 + 50.0 + 100.0
 
 
 def test_rotation_angles_programmable_read_and_settable_additive(tmp_path):
@@ -390,3 +393,12 @@ def test_outp_data_subroutines(tmp_path):
 def test_pcda_write_bit_range(tmp_path):
     """PCDA(...) = value: bit address 4-6 (L3366, L6674)."""
     assert "PCDA bit 3 outside 4-6" in _cl800_error(tmp_path, "%MPF1\n@44b K1 K1 K3 K1\nM30\n")
+
+
+def test_acg_reads_the_active_g_function_of_a_group(tmp_path):
+    """@36b ACG(channel, group) (L2720-2734, groups of §11.5 L7388-7431): the G number active in the
+    group; group 0 motion, 2 plane, 5 settable ZO, 8 inch/metric, 10 absolute/incremental."""
+    machine = PLAIN + "[offsets]\nG55 = [0.0, 0.0, 0.0]\n"
+    r = _ok(tmp_path, "%MPF1\nG1 F100 G18 G55 G91 X1\n@714 @36b R1 K0 K0 @36b R2 K0 K2 @36b R3 K0 K5 @36b R4 K0 K8 "
+                      "@36b R5 K1 K10\nG0 G17 G90 X0\n@714 @36b R6 K0 K0 @36b R7 K0 K2 @36b R8 K0 K10\nM30\n", machine)
+    assert [_r(r, n) for n in range(1, 9)] == [1.0, 18.0, 55.0, 71.0, 91.0, 0.0, 17.0, 90.0]

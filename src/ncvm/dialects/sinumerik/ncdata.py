@@ -75,6 +75,7 @@ class NcData:
         # zero offsets: settable G54..G57 coarse/fine, programmable G58/G59, external, DRF, PRESET
         self.zo: dict[str, list[float]] = {}
         self.rot: dict[str, float] = {}  # "settable:g" / "programmable:g" -> angle
+        self.preset_loaded: list[float] | None = None  # ZOPS written by the program, effective at its end
         self.mib = [0.0] * 500
         self.inputs = [0, 0, 0]  # external input bytes 1 and 2 (index 0 unused)
         self.plc: dict[int, dict[str, dict]] = {}
@@ -178,6 +179,23 @@ class NcData:
     # -- zero offsets ----------------------------------------------------
     def zo_vec(self, name: str) -> list[float]:
         return self.zo.setdefault(name, [0.0] * self.n_axes)
+
+    def preset(self) -> list[float]:
+        """The PRESET offsets as ZOPS reads them: what the program loaded, else the effective ones."""
+        return self.preset_loaded if self.preset_loaded is not None else self.zo_vec("PRESET")
+
+    def load_preset(self, axis: int, value: float) -> None:
+        """ZOPS(axis) = value: the PRESET offset becomes effective after program end or reset (L3240)."""
+        if self.preset_loaded is None:
+            self.preset_loaded = list(self.zo_vec("PRESET"))
+        self.preset_loaded[axis] = value
+
+    def preset_takes_effect(self) -> None:
+        """Program end (M2/M30, the last block) or reset: the loaded PRESET offsets are effective."""
+        if self.preset_loaded is not None:
+            self.zo["PRESET"] = self.preset_loaded
+            self.preset_loaded = None
+            self.dirty.add("zo")
 
     def additive(self) -> list[float]:
         """Programmable (G58 + G59), external, DRF and PRESET offsets, summed per axis."""

@@ -265,9 +265,10 @@ class SysMem:
                 else (self.session.machine.offset(f"G{53 + g}")[self._axis(args[1])] if cf == 0 else 0.0)
         if code == "331":
             return d.zo_vec(f"G{57 + _rng('ZO group', args[0], 1, 2)}")[self._axis(args[1])]
-        if code in ("332", "333", "334"):
-            name = {"332": "EXTERNAL", "333": "DRF", "334": "PRESET"}[code]
-            return d.zo_vec(name)[self._axis(args[0])]
+        if code == "334":
+            return d.preset()[self._axis(args[0])]
+        if code in ("332", "333"):
+            return d.zo_vec("EXTERNAL" if code == "332" else "DRF")[self._axis(args[0])]
         if code == "336":
             i = self._axis(args[0])
             k = self.kernel
@@ -389,8 +390,11 @@ class SysMem:
             vec[i] = value if code == "430" else vec[i] + value
         elif code == "432":
             d.zo_vec(f"G{57 + _rng('ZO group', where[0], 1, 2)}")[self._axis(where[1])] = value
-        elif code in ("434", "435"):
-            d.zo_vec("DRF" if code == "434" else "PRESET")[self._axis(where[0])] = value
+        elif code == "434":
+            d.zo_vec("DRF")[self._axis(where[0])] = value
+        elif code == "435":
+            d.load_preset(self._axis(where[0]), value)
+            return
         elif code in ("437", "438", "439", "43a"):
             self._channel_args("cycle_md", tuple(where[:1]))
             kind = "settable" if code in ("437", "438") else "programmable"
