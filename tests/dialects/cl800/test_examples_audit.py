@@ -267,3 +267,25 @@ def test_8_editor_screen_tos_clearing_loop(tmp_path):
     result, _ = _states(src, tmp_path, machine=machine, main="%MPF1\nR10=0 R11=5\nL8\n@320 R1 K0 K5 K15\nM30\n")
     assert result["variables"]["R20"] == 4.0  # D5 P0 and P3 cleared; D4 P3 = 4 untouched
     assert result["variables"].get("R1", 0.0) == 0.0  # P15 of D5 (was 9) cleared too
+
+
+def test_5_3_9_io_statements(tmp_path):
+    """L4438-4590: WRT PIC (1, 20); RECALL PIC; PORT (1); OUTP PARA (1, 100, 120); OUTP ETX; PORT (2);
+    OUTP ZOA (0); OUTP DATA (2, 1, 10); CHAN = 2; PORT (1); INP (0) (the manual's examples, in one frame)."""
+    src = tmp_path / "io.cl8"
+    src.write_text("PROGRAM 9;\nCHANNEL NC 1;\nBEGIN\n  WRT PIC (1, 20);\n  RECALL PIC;\n  PORT (1);\n"
+                   "  OUTP PARA (1, 100, 102);\n  OUTP ETX;\n  PORT (2); OUTP ZOA (0);\n"
+                   "  OUTP DATA (2, 1, 10);\n  CHAN = 2;\n  PORT (1); INP (0);\nEND.\n")
+    obj = compile_program(src, out=tmp_path / "L9.spf").read_text()
+    assert obj == ("%SPF9\n@a15 K1 K20 @a1b @a20 K1 @a27 K1 K100 K102 @a29 @a20 K2 @a25 K0 @a26 K2 K1 K10 @a40 K2 "
+                   "@a20 K1 @a28 K0 M17\n")
+    (tmp_path / "L5.spf").write_text("%SPF5\nM17\n")
+    machine = ('[[axis]]\nname = "X"\n[[axis]]\nname = "Y"\n[offsets]\nG54 = [1.5, 0.0]\n[sin800]\n'
+               'r = { R101 = 7 }\nv24_input = "R102=3\\n"\n')
+    result, _ = _states(src, tmp_path, machine=machine)
+    assert result["output"] == ["[panel] standard menu 20", "[panel] the display shown before the first WRT PIC",
+                                "[panel] channel 2"]
+    assert result["variables"]["V24"] == ["PORT 1", "R100=0", "R101=7", "R102=0", "\x03", "PORT 2",
+                                          "G54 X1.5 Y0", "G55 X0 Y0", "G56 X0 Y0", "G57 X0 Y0",
+                                          "%SPF5", "M17", *obj.splitlines(), "PORT 1"]  # L5 and L9 itself
+    assert result["variables"]["R102"] == 3.0  # read in by INP (0)
