@@ -289,3 +289,32 @@ def test_5_3_9_io_statements(tmp_path):
                                           "G54 X1.5 Y0", "G55 X0 Y0", "G56 X0 Y0", "G57 X0 Y0",
                                           "%SPF5", "M17", *obj.splitlines(), "PORT 1"]  # L5 and L9 itself
     assert result["variables"]["R102"] == 3.0  # read in by INP (0)
+
+
+def _inputs(*events: tuple[float, int, int, int]) -> str:
+    """A machine whose external inputs change at the given (time, byte, bit, value)."""
+    return '[[axis]]\nname = "X"\n[sin800]\n' + "".join(
+        f'[[scenario]]\ntime = {t}\nkind = "input"\nbyte = {b}\nbit = {k}\nvalue = {v}\n' for t, b, k, v in events)
+
+
+def test_5_3_1_3_while_int_loops_while_the_input_is_1(tmp_path):
+    """L1732-1746: WHILE INT R70.2 (R70 = 1: byte 1, bit 2) dwells 1 s while input 1.2 is 1; it falls to 0 at
+    3.5 s: passes at 0, 1, 2, 3 s. WHILE INT NOT 2.7 dwells while 2.7 is 0; it rises at 5.5 s: passes at
+    4 and 5 s. End at 6 s."""
+    _r, _ = _states(MANUAL / "m5_3_1_3_while_int.cl8", tmp_path, machine=_inputs((0.0, 1, 2, 1), (3.5, 1, 2, 0),
+                                                                               (5.5, 2, 7, 1)))
+    assert _r["cycle_time_s"] == pytest.approx(6.0)
+
+
+@pytest.mark.parametrize("level,seconds", [(1, 1.0), (0, 2.0)])
+def test_5_3_2_2_if_int_takes_the_branch_of_the_input(tmp_path, level, seconds):
+    """L2072-2081: IF INT 1.2: THEN (G04 F1) with a 1 signal, ELSE (G04 F2) with a 0 signal."""
+    _r, _ = _states(MANUAL / "m5_3_2_2_if_int.cl8", tmp_path, machine=_inputs((0.0, 1, 2, level)))
+    assert _r["cycle_time_s"] == pytest.approx(seconds)
+
+
+def test_5_3_2_1_if_on_a_bit_and_a_boolean(tmp_path):
+    """L1962-2056: IF R70.3 with R70 = B00011111 (bit 3 = 1) and IF R71 with R71 = 1 take their THEN
+    branches (G04 F1 each, not the ELSE's F2); the other IFs have empty branches: 2 s in all."""
+    _r, _ = _states(MANUAL / "m5_3_2_1_if_forms.cl8", tmp_path, main="%MPF2\nL1\nM30\n")
+    assert _r["cycle_time_s"] == pytest.approx(2.0)
