@@ -318,3 +318,22 @@ def test_5_3_2_1_if_on_a_bit_and_a_boolean(tmp_path):
     branches (G04 F1 each, not the ELSE's F2); the other IFs have empty branches: 2 s in all."""
     _r, _ = _states(MANUAL / "m5_3_2_1_if_forms.cl8", tmp_path, main="%MPF2\nL1\nM30\n")
     assert _r["cycle_time_s"] == pytest.approx(2.0)
+
+
+@pytest.mark.parametrize("r10,r11,r14,seconds", [(2, 1, 0, 1.0), (1, 2, 15, 2.0), (1, 2, 14.9, 3.0)])
+def test_7_2_nested_if_in_the_else_branch(tmp_path, r10, r11, r14, seconds):
+    """L5286-5335: R10 > R11 -> first branch (1 s); else R14 >= 15 -> second (2 s); else third (3 s)."""
+    _r, _ = _states(MANUAL / "m7_2_if_nesting.cl8", tmp_path, main=f"%MPF1\nR10={r10} R11={r11} R14={r14}\nL30\nM30\n")
+    assert _r["cycle_time_s"] == pytest.approx(seconds)
+
+
+def test_7_1_structure_program_150(tmp_path):
+    """L5244-5282 with Name = 3, X_value = 84: y_value = 84 + 3 * 2 = 90; z_value = SIN(90) + 3 = 4.
+    The DIN code ``NOTE`` stands for "DIN programming" (its comment) and is no NC block (N without a
+    number: SIN001); it runs here as the note ``(NOTE)``."""
+    for name in ("VARCEN", "LISTE1"):
+        (tmp_path / name).write_text((MANUAL / name).read_text())
+    src = tmp_path / "structure.cl8"
+    src.write_text((MANUAL / "m7_1_structure.cl8").read_text().replace("(:NOTE:)", "(:(NOTE):)"))
+    _r, states = _states(src, tmp_path, main="%MPF1\nR0=3 R10=84\nL150\nM30\n")
+    _ever(states, R61=90.0, R60=4.0)
