@@ -337,3 +337,20 @@ def test_7_1_structure_program_150(tmp_path):
     src.write_text((MANUAL / "m7_1_structure.cl8").read_text().replace("(:NOTE:)", "(:(NOTE):)"))
     _r, states = _states(src, tmp_path, main="%MPF1\nR0=3 R10=84\nL150\nM30\n")
     _ever(states, R61=90.0, R60=4.0)
+
+
+def test_5_3_7_1_extended_arithmetic_program_81(tmp_path):
+    """L3630-3648 with Z_VALUE = 0, R20 = 3, R30 = 10, by hand: 0 + 3 * 10 = 30; SIN(30) + 5 = 5.5;
+    (5.5 + 3) * 10 = 85; (85 + 5 / 3) * 10 / 80.009."""
+    result, _ = _states(MANUAL / "m5_3_7_1_extended.cl8", tmp_path, main="%MPF1\nR10=0 R20=3 R30=10\nL81\nM30\n")
+    assert result["variables"]["R10"] == pytest.approx((85 + 5 / 3) * 10 / 80.009, rel=1e-9)
+
+
+def test_5_3_8_4_rel_and_inta(tmp_path):
+    """L4411-4436: REL(1, 2) holds the program after its block (G00 X5 Z20) until input 1.2 is 1 (at 7.5 s);
+    INTA(1, 1, 0) ends the next block's motion when input 1.0 is 1, which it is already: the axes stay
+    at X5 Z20."""
+    machine = _inputs((0.0, 1, 0, 1), (7.5, 1, 2, 1)).replace('name = "X"\n', 'name = "X"\n[[axis]]\nname = "Z"\n')
+    result, _ = _states(MANUAL / "m5_3_8_4_rel_inta.cl8", tmp_path, machine=machine)
+    assert result["cycle_time_s"] == pytest.approx(7.5)
+    assert result["position"] == {"X": 5.0, "Z": 20.0}
