@@ -354,3 +354,14 @@ def test_5_3_8_4_rel_and_inta(tmp_path):
     result, _ = _states(MANUAL / "m5_3_8_4_rel_inta.cl8", tmp_path, machine=machine)
     assert result["cycle_time_s"] == pytest.approx(7.5)
     assert result["position"] == {"X": 5.0, "Z": 20.0}
+
+
+def test_5_2_2_lists_program_81(tmp_path):
+    """L1359-1395 with refpl = R150 = 50 (channel-independent global), drill_Z = R100 = 20 (channel
+    global): start_Z = 50, Transf. = R0 = 50, depth = 50 - 20 = 30 into the central Load_1 = R900, which
+    the called L200 sees."""
+    (tmp_path / "L200.spf").write_text("%SPF200\nR1=R900+R0\nM17\n")
+    machine = '[[axis]]\nname = "X"\n[sin800]\nr = { R150 = 50, R100 = 20 }\n'
+    result, _ = _states(MANUAL / "m5_2_2_lists.cl8", tmp_path, machine=machine, main="%MPF1\nL81\nM30\n")
+    v = result["variables"]
+    assert (v["R0"], v["R900"], v["R1"]) == (50.0, 30.0, 80.0)
