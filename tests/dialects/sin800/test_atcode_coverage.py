@@ -220,6 +220,15 @@ def test_prad_programs_the_radius_address(tmp_path):
     assert r["motion"]["feed_length"] == pytest.approx(2.0 * 3.141592653589793, rel=1e-6)
 
 
+def test_prss_write_checks_the_spindle(tmp_path):
+    """PRSS(<Value3>) = value: spindle 0-6, 0 = the master spindle (L3318-3326, L6670); the simulated NC
+    has spindle 1 only, as for the PRSS read."""
+    assert "spindle 2 does not exist" in _cl800_error(tmp_path, "%MPF1\n@442 K2 K200 M3\nM30\n")
+    assert "outside 0-6" in _cl800_error(tmp_path, "%MPF1\n@442 K7 K200 M3\nM30\n")
+    r = _ok(tmp_path, "%MPF1\nR50=1\n@442 R50 K200 M3\n@342 R1 K0 K1\nM30\n")
+    assert _r(r, 1) == 200.0
+
+
 def test_pcda_pcds_write_then_read(tmp_path):
     """L3362-3378 and L2571-2587: PCDA(1,1,6) = 1 then R50 = PCDA(1,1,6) reads 1; the same for PCDS."""
     r = _ok(tmp_path, "%MPF1\n@34b R49 K1 K1 K6 @44b K1 K1 K6 K1 @34b R50 K1 K1 K6 @44c K1 K0 K2 K1\n"
