@@ -24,7 +24,7 @@ name = "Z"
 [sin800]
 control = "880"
 channel = 1
-nc_md = { "2241" = 1200, "5002" = "00010000", "5010" = "00000001" }
+nc_md = { "2241" = 1200, "5002" = "00100000", "5010" = "00000001" }
 cycle_md = { "400" = 17, "801" = "00000101", "802" = "00000010", "1000" = 33, "7000" = "00000011" }
 plc_md = { "20" = 40, "3000" = "00010010", "3001" = "00010110" }
 drive_md = { "2521" = 4000, "2441" = 772, "2442" = 4 }
@@ -383,12 +383,12 @@ def test_inp_type_check_and_tape_format(tmp_path):
 def test_outp_data_then_inp_on_another_nc(tmp_path):
     """What OUTP DATA writes, INP reads back: NC MD 2241 and 5002 of one NC loaded into another."""
     out = _ok(tmp_path, "%MPF1\n@a20 K1 @a26 K5 K2000 K5999\nM30\n")["variables"]["V24"][1:]
-    assert out == ["MD2241=1200", "MD5002=10000", "MD5010=1"]
+    assert out == ["MD2241=1200", "MD5002=100000", "MD5010=1"]
     tape = "\\n".join(out)
     other = '[[axis]]\nname = "X"\n[sin800]\nv24_input = "' + tape + '"\n'
     (tmp_path / "other").mkdir()
     r = _ok(tmp_path / "other", "%MPF1\n@a28 K5 @300 R1 K2241 @301 R2 K5002\nM30\n", other)
-    assert (_r(r, 1), _r(r, 2)) == (1200.0, 10000.0)
+    assert (_r(r, 1), _r(r, 2)) == (1200.0, 100000.0)
 
 
 def test_outp_data_subroutines(tmp_path):
@@ -408,6 +408,16 @@ def test_acg_reads_the_active_g_function_of_a_group(tmp_path):
     """@36b ACG(channel, group) (L2720-2734, groups of §11.5 L7388-7431): the G number active in the
     group; group 0 motion, 2 plane, 5 settable ZO, 8 inch/metric, 10 absolute/incremental."""
     machine = PLAIN + "[offsets]\nG55 = [0.0, 0.0, 0.0]\n"
-    r = _ok(tmp_path, "%MPF1\nG1 F100 G18 G55 G91 X1\n@714 @36b R1 K0 K0 @36b R2 K0 K2 @36b R3 K0 K5 @36b R4 K0 K8 "
+    r = _ok(tmp_path, "%MPF1\nG71 G1 F100 G18 G55 G91 X1\n@714 @36b R1 K0 K0 @36b R2 K0 K2 @36b R3 K0 K5 @36b R4 K0 K8 "
                       "@36b R5 K1 K10\nG0 G17 G90 X0\n@714 @36b R6 K0 K0 @36b R7 K0 K2 @36b R8 K0 K10\nM30\n", machine)
     assert [_r(r, n) for n in range(1, 9)] == [1.0, 18.0, 55.0, 71.0, 91.0, 0.0, 17.0, 90.0]
+
+
+def test_inch_basic_system_md_bit(tmp_path):
+    """MDNBI(5002,4) = 1 "if inch input is selected as basic setting in the NC system" (L2324-2326): the
+    program starts in G70; X1 is 1 inch = 25.4 mm from machine zero (ACPM read in G71)."""
+    inch = PLAIN.replace('"5002" = "00100000"', '"5002" = "00010000"')
+    r = _ok(tmp_path, "%MPF1\n@302 R1 K5002 K4 @36b R2 K0 K8 G0 X1\nG71\n@714 @361 R3 K1\nM30\n", inch)
+    assert (_r(r, 1), _r(r, 2), _r(r, 3)) == (1.0, 70.0, pytest.approx(25.4))
+    r = _ok(tmp_path, "%MPF1\n@36b R2 K0 K8 G0 X1\nG71\n@714 @361 R3 K1\nM30\n", PLAIN)
+    assert (_r(r, 2), _r(r, 3)) == (71.0, 1.0)

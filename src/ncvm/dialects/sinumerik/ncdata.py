@@ -176,6 +176,10 @@ class NcData:
                 out[key] = getattr(self, key)
         return out
 
+    def inch_basic_system(self) -> bool:
+        """NC MD bit 5002.4: inch is the basic setting of the NC (L2324-2326)."""
+        return bool(pattern_to_int(self.areas["nc_md"].get("5002", 0.0)) >> 4 & 1)
+
     # -- zero offsets ----------------------------------------------------
     def zo_vec(self, name: str) -> list[float]:
         return self.zo.setdefault(name, [0.0] * self.n_axes)
