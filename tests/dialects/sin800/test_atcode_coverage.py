@@ -45,6 +45,10 @@ PLAIN = MACHINE.replace("zero_offsets = { EXTERNAL = [0.0, 7.0, 0.0], DRF = [0.0
                         "PRESET = [3.0, 0.0, 0.0] }\n", "")
 
 
+#: the manual's MDP/MDPBY and MDD examples are for the SINUMERIK 810 (L2350, L2376)
+S810 = PLAIN.replace('control = "880"', 'control = "810"')
+
+
 def _run(tmp_path: Path, text: str, machine: str = MACHINE, state: str = ".s") -> dict:
     (tmp_path / "machine.toml").write_text(machine)
     (tmp_path / "p.mpf").write_text(text)
@@ -113,7 +117,7 @@ def test_cycle_machine_data_reads(tmp_path):
 
 def test_plc_machine_data_reads_manual_example(tmp_path):
     """L2350-2365: MDP(20) = 40; MDPBY(3000) on 00010010 gives 10010; MDPBI(3001,2) on 00010110 gives 1."""
-    r = _ok(tmp_path, "%MPF1\n@306 R93 K20 @307 R94 K3000 @308 R95 K3001 K2 @308 R96 K3001 K0\nM30\n")
+    r = _ok(tmp_path, "%MPF1\n@306 R93 K20 @307 R94 K3000 @308 R95 K3001 K2 @308 R96 K3001 K0\nM30\n", S810)
     assert [_r(r, n) for n in (93, 94, 95, 96)] == [40.0, 10010.0, 1.0, 0.0]
 
 
@@ -127,18 +131,34 @@ def test_setting_data_reads_manual_example(tmp_path):
 
 
 def test_machine_data_writes_read_back(tmp_path):
-    """@403-@409 write what @303-@309 read (L3036-3124); bits change one bit of the byte."""
+    """@403-@409 write what @303-@309 read (L3036-3124); bits change one bit of the byte. Cycle MD and
+    PLC MD 6000-8999 on the 880; drive MD and PLC MD 2000-3999 on the 810."""
     r = _ok(tmp_path, "%MPF1\n@403 K0 K401 K-7.5 @404 K1 K803 K1001 @405 K0 K801 K1 K1 @406 K2000 K12\n"
-                      "@407 K3002 K10000001 @408 K3000 K0 K1 @409 K2521 K3000\n"
-                      "@303 R1 K0 K401 @304 R2 K0 K803 @304 R3 K0 K801 @306 R4 K2000 @307 R5 K3002\n"
-                      "@307 R6 K3000 @309 R7 K2521\nM30\n")
-    assert [_r(r, n) for n in range(1, 8)] == [-7.5, 1001.0, 111.0, 12.0, 10000001.0, 10011.0, 3000.0]
+                      "@407 K6002 K10000001 @408 K6002 K1 K1\n"
+                      "@303 R1 K0 K401 @304 R2 K0 K803 @304 R3 K0 K801 @306 R4 K2000 @307 R5 K6002\nM30\n")
+    assert [_r(r, n) for n in range(1, 6)] == [-7.5, 1001.0, 111.0, 12.0, 10000011.0]
+    r = _ok(tmp_path, "%MPF1\n@408 K3000 K0 K1 @409 K2521 K3000 @307 R6 K3000 @309 R7 K2521\nM30\n", S810)
+    assert (_r(r, 6), _r(r, 7)) == (10011.0, 3000.0)
+
+
+@pytest.mark.parametrize("control,text,message", [
+    ("810", "@303 R1 K0 K400", "cycle machine data exist on the SINUMERIK 850/880 only"),
+    ("820", "@413 K0 K400 K1", "cycle setting data exist on the SINUMERIK 850/880 only"),
+    ("880", "@309 R1 K2521", "drive machine data exist on the SINUMERIK 810/820 only"),
+    ("880", "@307 R1 K3000", "plc_md address 3000 outside 6000-8999"),
+    ("810", "@406 K2000 K1", "plc_md address 2000 outside 0-1999")])
+def test_machine_data_of_another_control_is_the_cl800_error(tmp_path, control, text, message):
+    """Ch.6 table (L4817-4845) and ch.10 (L6506-6508): which controls have which data, at which addresses."""
+    machine = PLAIN.replace('control = "880"', f'control = "{control}"')
+    r = _run(tmp_path, f"%MPF1\n{text}\nM30\n", machine)
+    assert r["error"]["code"] == "CL800" and message in r["error"]["message"]
 
 
 def test_drive_machine_data_reads_manual_example(tmp_path):
     """L2376-2385: MDD(2521); MDDBY(2441,0) is the low byte (772 = 0x0304: low 00000100, high 00000011);
     MDDBI(2442,0,2) bit 2 of the low byte of 4."""
-    r = _ok(tmp_path, "%MPF1\n@309 R60 K2521 @30a R61 K2441 K0 @30a R63 K2441 K1 @30b R62 K2442 K0 K2\nM30\n")
+    r = _ok(tmp_path, "%MPF1\n@309 R60 K2521 @30a R61 K2441 K0 @30a R63 K2441 K1 @30b R62 K2442 K0 K2\nM30\n",
+            S810)
     assert [_r(r, n) for n in (60, 61, 62, 63)] == [4000.0, 100.0, 1.0, 11.0]
 
 

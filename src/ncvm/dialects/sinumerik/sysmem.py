@@ -209,7 +209,24 @@ class SysMem:
             return float(len(d.alarms))
         raise Cl800Error(f"@{code} is not available")
 
+    def _data_area(self, area: str, width: str, rng: tuple) -> tuple:
+        """The address range of an MD/SD area on this control; the CL 800 error where the control has no
+        such data (ch.6 table L4817-4845: cycle MD/SD on the 850/880 only, drive MD on the 810/820 only;
+        PLC MD words 0-1999 and bytes 2000-3999 on the 810/820, 0-5999 and 6000-8999 on the 850/880,
+        L6506-6508)."""
+        control = self.data.control
+        small = control in ("810", "820")
+        if area in ("cycle_md", "cycle_sd") and small:
+            raise Cl800Error(f"cycle {'machine' if area == 'cycle_md' else 'setting'} data exist on the "
+                             f"SINUMERIK 850/880 only, not on the {control}")
+        if area == "drive_md" and not small:
+            raise Cl800Error(f"drive machine data exist on the SINUMERIK 810/820 only, not on the {control}")
+        if area == "plc_md":
+            return ((0, 1999) if small else (0, 5999)) if width == "word" else ((2000, 3999) if small else (6000, 8999))
+        return rng
+
     def _mem_read(self, area: str, width: str, rng: tuple, args: tuple):
+        rng = self._data_area(area, width, rng)
         args = self._channel_args(area, args)
         table = self.data.areas[area]
         addr = _rng(f"{area} address", args[0], *rng)
@@ -320,6 +337,7 @@ class SysMem:
         *where, value = args
         if sub in "01":
             area, width, rng = (MD_SD if sub == "0" else SD)[fn]
+            rng = self._data_area(area, width, rng)
             where = self._channel_args(area, tuple(where))
             addr = _rng(f"{area} address", where[0], *rng)
             table = d.areas[area]
