@@ -365,3 +365,24 @@ def test_5_2_2_lists_program_81(tmp_path):
     result, _ = _states(MANUAL / "m5_2_2_lists.cl8", tmp_path, machine=machine, main="%MPF1\nL81\nM30\n")
     v = result["variables"]
     assert (v["R0"], v["R900"], v["R1"]) == (50.0, 30.0, 80.0)
+
+
+def test_5_3_1_1_repeat_prep_ref_int_sec(tmp_path):
+    """L1449-1466, with the ":" lines filled in: contour L21 in the X/Z plane (G18) from (X750, Z50):
+    (400, 50), (300, 300), (100, 400); the path from X250 Z500 to X250 Z0 crosses only the third
+    element, at Z = 300 + 100 * (300 - 250) / (300 - 100) = 325. The REPEAT test follows INT SEC in the
+    same block: the loop ends on the element found (R80..R83 = 300, 300, 100, 400), and PRAP moves to
+    R91/R92 = X250 Z325."""
+    src = tmp_path / "repeat.cl8"
+    src.write_text("PROGRAM 502;\nCHANNEL NC 0;\n"
+                   "LOCAL REAL: R50:=L_No, R51, R52, R53, R70, R80, R90, R91, R92;\nBEGIN\n"
+                   "  LF; (: G18 G0 X250 Z500 :); LF;\n  L_No = 21; R51 = 750; R52 = 50; R53 = 1;\n"
+                   "  REPEAT\n  BEGIN\n    R80 = PREP REF (L_No); LF;\n"
+                   "    R90 = INT SEC (R80,R70); (:X250 Z0:);\n  END;\n  UNTIL R90=1;\n"
+                   "PRAP (1) = R91; PRAP (2) = R92; LF;\nEND.\n")
+    (tmp_path / "L21.spf").write_text("L21\nN5 X400 Z50\nN10 X300 Z300\nN15 X100 Z400 M17\n")
+    machine = '[[axis]]\nname = "X"\n[[axis]]\nname = "Z"\n'
+    result, states = _states(src, tmp_path, machine=machine)
+    assert result["position"] == {"X": 250.0, "Z": pytest.approx(325.0)}
+    last = states[-1]
+    assert [last.get(f"R{n}", 0.0) for n in (80, 81, 82, 83, 90)] == [300.0, 300.0, 100.0, 400.0, 1.0]

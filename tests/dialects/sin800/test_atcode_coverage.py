@@ -441,3 +441,14 @@ def test_inch_basic_system_md_bit(tmp_path):
     assert (_r(r, 1), _r(r, 2), _r(r, 3)) == (1.0, 70.0, pytest.approx(25.4))
     r = _ok(tmp_path, "%MPF1\n@36b R2 K0 K8 G0 X1\nG71\n@714 @361 R3 K1\nM30\n", PLAIN)
     assert (_r(r, 2), _r(r, 3)) == (71.0, 1.0)
+
+
+def test_int_sec_result_seen_by_a_test_in_its_own_block(tmp_path):
+    """@711 with its destination words, then @141 in the same block (the REPEAT template): the test sees
+    this INT SEC's result, so the loop stops at the first element crossed (the second one, from X400)."""
+    contour = "L20\nN5 X400 Y50\nN10 X300 Y300\nN15 X100 Y400 M17\n"
+    (tmp_path / "L20.spf").write_text(contour)
+    r = _ok(tmp_path, "%MPF1\nG0 Y250 X750\nR50=20 R51=50 R52=750 R53=1\n"
+                      "N10 @710 R54 R50\n@711 R70 R54 R62 Y250 X0 @141 R70 K1 K-10 R9=R9+1\nM30\n", PLAIN)
+    assert _r(r, 70) == 1.0 and _r(r, 72) == pytest.approx(320.0) and _r(r, 54) == 50.0 and _r(r, 55) == 400.0
+    assert _r(r, 9) == 1.0  # the words after the test run once, on the pass that found the point

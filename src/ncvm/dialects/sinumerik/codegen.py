@@ -224,10 +224,12 @@ class UnitCodegen:
             if isinstance(it, Word):
                 rec.word(out, it, writes_after[i])
             elif isinstance(it, Arith):
+                rec.settle_int_sec(out)
                 out.emit(self._arith(it), line)
             elif isinstance(it, Note):
                 rec.note(it)
             elif isinstance(it, AtInstr):
+                rec.settle_int_sec(out)
                 if not self._at(out, idx, blk, it, rec):
                     break  # an unconditional jump: the rest of the block is never read
         else:
@@ -561,6 +563,24 @@ class _Record:
         else:
             out.emit(f"_rt.write({code!r}, ({', '.join(cg.val(o) for o in ops)},))", line)
 
+    def _emit_int_sec(self, out: PySource, g: list, words: list) -> None:
+        line = self.blk.line
+        pairs = ", ".join(f"{k}: {v}" for k, v, _c in words)
+        out.emit("@SYNC_OUT", line)
+        out.emit(f"_rt.int_sec({self.int_sec[0]}, {self.int_sec[1]}, {tuple(g)!r}, {{{pairs}}}, {line})", line)
+        out.emit("@SYNC_IN", line)
+
+    def settle_int_sec(self, out: PySource) -> None:
+        """INT SEC computes once its destination words are read: an @ instruction or R word after them in
+        the same block sees the result (the REPEAT test after INT SEC, manual L1449-1466). The words are
+        consumed without motion, as at the end of the block."""
+        if self.int_sec is None or not self.words or self.call is not None:
+            return
+        g = [x for x in self.g if x not in (58, 59, 16)] + ([53] if self.machine_coords else [])
+        self._emit_int_sec(out, g, self.words)
+        self.int_sec = None
+        self.words = []
+
     def finish(self, out: PySource, jumping: bool = False) -> None:
         """Lines that execute the block record collected so far."""
         cg = self.cg
@@ -586,10 +606,7 @@ class _Record:
         if self.d is not None:
             out.emit(f"_rt.select_d({self.d}, {line})", line)
         if self.int_sec is not None:
-            pairs = ", ".join(f"{k}: {v}" for k, v, _c in words)
-            out.emit("@SYNC_OUT", line)
-            out.emit(f"_rt.int_sec({self.int_sec[0]}, {self.int_sec[1]}, {tuple(g)!r}, {{{pairs}}}, {line})", line)
-            out.emit("@SYNC_IN", line)
+            self._emit_int_sec(out, g, words)
             words = []
         if self.meas is not None:
             pairs = ", ".join(f"{k}: {v}" for k, v, _c in words)
