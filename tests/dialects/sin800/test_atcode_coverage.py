@@ -452,3 +452,13 @@ def test_int_sec_result_seen_by_a_test_in_its_own_block(tmp_path):
                       "N10 @710 R54 R50\n@711 R70 R54 R62 Y250 X0 @141 R70 K1 K-10 R9=R9+1\nM30\n", PLAIN)
     assert _r(r, 70) == 1.0 and _r(r, 72) == pytest.approx(320.0) and _r(r, 54) == 50.0 and _r(r, 55) == 400.0
     assert _r(r, 9) == 1.0  # the words after the test run once, on the pass that found the point
+
+
+@pytest.mark.parametrize("target,ok", [(0, True), (98, True), (99, False), (500, False), (900, True), (998, True),
+                                       (999, False)])
+def test_prep_cyc_result_registers(tmp_path, target, ok):
+    """PREP CYC: "Permissible parameter range Rn = R0-R98 and R900-R998" (L4268)."""
+    r = _run(tmp_path, f"%MPF1\n@713 R{target}\nM30\n", PLAIN)
+    assert (r["status"] == "ok") == ok
+    if not ok:
+        assert r["error"]["code"] == "CL800" and "PREP CYC output" in r["error"]["message"]

@@ -594,8 +594,7 @@ class SysMem:
             return  # STOP DEC1 waits only while a coordinate rotation is selected (L4330-4334)
         if code == "713":
             target = args[0]
-            if target > 998:
-                raise Cl800Error("PREP CYC needs two result registers")
+            check_window(target, 2, ((0, 98), (900, 998)), "PREP CYC output")  # L4268
             diameter = self.data.areas["nc_md"].get("diameter_axis1", 0.0)
             self.store(target, [1.0 if self.kernel.scale == 1.0 else 0.03937, 2.0 if diameter else 1.0])
             return
