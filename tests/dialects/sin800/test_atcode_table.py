@@ -89,8 +89,12 @@ SAMPLES = {
 }
 
 
-def _write(tmp_path: Path, text: str, files: dict | None = None) -> dict:
-    (tmp_path / "machine.toml").write_text(MACHINE)
+#: drive machine data exist on the 810/820 only (ch.6 table L4826-4828)
+DRIVE_MD = ("309", "30a", "30b", "409", "40a", "40b")
+
+
+def _write(tmp_path: Path, text: str, files: dict | None = None, control: str = "880") -> dict:
+    (tmp_path / "machine.toml").write_text(MACHINE.replace('control = "880"', f'control = "{control}"'))
     for name, body in (files or {}).items():
         (tmp_path / name).write_text(body)
     p = tmp_path / "p.mpf"
@@ -122,7 +126,8 @@ def test_code_runs(tmp_path, code):
     body = f"@{code} {SAMPLES[code]}".rstrip()
     if code in ("042", "043"):
         body = f"@{'040' if code == '042' else '041'} {SAMPLES[code]}\n" + body
-    result = _write(tmp_path, f"%MPF1\n{prelude}G1 F100\n{body}\nM30\n", {"L20.spf": "%SPF20\nX10 Y0\nX0 Y10 M17\n"})
+    result = _write(tmp_path, f"%MPF1\n{prelude}G1 F100\n{body}\nM30\n", {"L20.spf": "%SPF20\nX10 Y0\nX0 Y10 M17\n"},
+                    "810" if code in DRIVE_MD else "880")
     assert result["status"] == "ok", result["error"]
 
 
@@ -145,13 +150,12 @@ def test_branch_code_falls_through_or_jumps(tmp_path, code):
 
 
 def test_sample_values(tmp_path):
-    text = ("%MPF1\n@302 R20 K5001 K1 @30a R21 K2440 K1 @3b0 R22 K1 K10 K2 K2 K0 @3b1 R23 K1 K10 K1 K1 K100\n"
+    text = ("%MPF1\n@302 R20 K5001 K1 @3b0 R22 K1 K10 K2 K2 K0 @3b1 R23 K1 K10 K1 K1 K100\n"
             "@394 R24 K1 K10 K2 @395 R25 K1 K10 K2 @3a4 R26 K1 K3 @3a5 R27 K1 K4 @3c0 R28 @307 R29 K6000\n"
             "@4b0 K1 K10 K0 K2 K3 K-12.5 @3b0 R30 K1 K10 K0 K2 K3 @4b2 K1 K10 K2 K1.5 @3b2 R31 K1 K10 K2\n"
             "M30\n")
     r = _write(tmp_path, text)["variables"]
     assert r["R20"] == 1.0  # bit 1 of 00010010
-    assert r["R21"] == 10.0  # high byte of 513 = 00000010
     assert r["R22"] == 4660 * 65536 + 22136  # DW2 high, DW3 low
     assert r["R23"] == 12.0  # DW1 = 0x0012 read as BCD
     assert r["R24"] == 10010.0 and r["R25"] == 110100.0  # 0x1234: left 0x12, right 0x34
@@ -160,5 +164,7 @@ def test_sample_values(tmp_path):
 
 
 def test_drive_md_bytes(tmp_path):
-    r = _write(tmp_path, "%MPF1\n@40b K2440 K0 K2 K1 @40a K2440 K1 K11 @309 R1 K2440 @30b R2 K2440 K0 K2\nM30\n")
+    r = _write(tmp_path, "%MPF1\n@30a R3 K2440 K1 @40b K2440 K0 K2 K1 @40a K2440 K1 K11 @309 R1 K2440 "
+                         "@30b R2 K2440 K0 K2\nM30\n", control="810")
+    assert r["variables"]["R3"] == 10.0  # high byte of 513 = 00000010
     assert r["variables"]["R1"] == 3 * 256 + 5 and r["variables"]["R2"] == 1.0  # 513 = 0x0201 -> 0x0305

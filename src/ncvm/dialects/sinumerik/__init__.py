@@ -140,6 +140,7 @@ class Sin800Dialect(Dialect):
 
     def _finish(self, session, channel: Channel, data: NcData, store, initial: list, written: set) -> None:
         """Persist what the NC keeps; report R parameters that are non-zero, changed or written."""
+        data.preset_takes_effect()  # at program end or, after a fault, at the reset that follows (L3240)
         R = channel.R
         central = {str(n): R[n] for n in range(900, 1000) if R[n] != 0.0 or str(n) in data.central_r}
         if central != data.central_r:

@@ -224,10 +224,12 @@ class UnitCodegen:
             if isinstance(it, Word):
                 rec.word(out, it, writes_after[i])
             elif isinstance(it, Arith):
+                rec.settle_int_sec(out)
                 out.emit(self._arith(it), line)
             elif isinstance(it, Note):
                 rec.note(it)
             elif isinstance(it, AtInstr):
+                rec.settle_int_sec(out)
                 if not self._at(out, idx, blk, it, rec):
                     break  # an unconditional jump: the rest of the block is never read
         else:
@@ -382,8 +384,10 @@ class UnitCodegen:
                 refs = ", ".join(self._ref(o) if i == 0 or code == "710" else v(o)
                                  for i, o in enumerate(ops))
                 return ["@SYNC_OUT", f"_rt.nc_function({code!r}, ({refs},), {line})", "@SYNC_IN"]
-            if code == "a27":
+            if code == "a27":  # OUTP PARA outputs the R parameters as they are now
                 return ["@SYNC_OUT", f"_rt.io({code!r}, ({args},))"]
+            if code == "a28":  # INP may load R parameters
+                return ["@SYNC_OUT", f"_rt.io({code!r}, ({args},))", "@SYNC_IN"]
             if code in ("714", "715"):  # STOP DEC hands over R parameters loaded during execution
                 return ["@SYNC_OUT", f"_rt.nc_function({code!r}, (), {line})", "@SYNC_IN"]
             fn = "write" if g == "4" else ("io" if g == "a" else "nc_function")
@@ -550,7 +554,7 @@ class _Record:
                 key = f"_rt.centre_name({axis}, {line})"
             self.words.append((key, tmp, False))
         elif code == "442":
-            self.words.append(("'S'", tmp, False))
+            self.words.append((f"_rt.spindle_word({cg.val(ops[0])}, {line})", tmp, False))
         elif code == "446":
             self.words.append(("'R'", tmp, False))
         elif code == "447":
@@ -558,6 +562,24 @@ class _Record:
             self.words.append(("_rt.angle_key()", tmp, False))
         else:
             out.emit(f"_rt.write({code!r}, ({', '.join(cg.val(o) for o in ops)},))", line)
+
+    def _emit_int_sec(self, out: PySource, g: list, words: list) -> None:
+        line = self.blk.line
+        pairs = ", ".join(f"{k}: {v}" for k, v, _c in words)
+        out.emit("@SYNC_OUT", line)
+        out.emit(f"_rt.int_sec({self.int_sec[0]}, {self.int_sec[1]}, {tuple(g)!r}, {{{pairs}}}, {line})", line)
+        out.emit("@SYNC_IN", line)
+
+    def settle_int_sec(self, out: PySource) -> None:
+        """INT SEC computes once its destination words are read: an @ instruction or R word after them in
+        the same block sees the result (the REPEAT test after INT SEC, manual L1449-1466). The words are
+        consumed without motion, as at the end of the block."""
+        if self.int_sec is None or not self.words or self.call is not None:
+            return
+        g = [x for x in self.g if x not in (58, 59, 16)] + ([53] if self.machine_coords else [])
+        self._emit_int_sec(out, g, self.words)
+        self.int_sec = None
+        self.words = []
 
     def finish(self, out: PySource, jumping: bool = False) -> None:
         """Lines that execute the block record collected so far."""
@@ -584,10 +606,7 @@ class _Record:
         if self.d is not None:
             out.emit(f"_rt.select_d({self.d}, {line})", line)
         if self.int_sec is not None:
-            pairs = ", ".join(f"{k}: {v}" for k, v, _c in words)
-            out.emit("@SYNC_OUT", line)
-            out.emit(f"_rt.int_sec({self.int_sec[0]}, {self.int_sec[1]}, {tuple(g)!r}, {{{pairs}}}, {line})", line)
-            out.emit("@SYNC_IN", line)
+            self._emit_int_sec(out, g, words)
             words = []
         if self.meas is not None:
             pairs = ", ".join(f"{k}: {v}" for k, v, _c in words)

@@ -17,7 +17,7 @@ NAMESPACE = "sin800"
 AREAS = ("nc_md", "cycle_md", "plc_md", "drive_md", "nc_sd", "cycle_sd")
 KNOWN_KEYS = {"control", "channel", "m0", "block_skip", "max_call_depth", "r", "mib", "tool_offsets",
               "zero_offsets", "rotation", "inputs", "plc", "alarms", "sob", "cycle_alarm_stop", "to_area",
-              "m_functions", "decode_ahead", "strict_nc", "gear", "gears",
+              "m_functions", "decode_ahead", "strict_nc", "gear", "gears", "v24_input",
               *AREAS}
 PERSISTED = (*AREAS, "to", "zo", "rot", "mib", "central_r")
 
@@ -75,6 +75,7 @@ class NcData:
         # zero offsets: settable G54..G57 coarse/fine, programmable G58/G59, external, DRF, PRESET
         self.zo: dict[str, list[float]] = {}
         self.rot: dict[str, float] = {}  # "settable:g" / "programmable:g" -> angle
+        self.preset_loaded: list[float] | None = None  # ZOPS written by the program, effective at its end
         self.mib = [0.0] * 500
         self.inputs = [0, 0, 0]  # external input bytes 1 and 2 (index 0 unused)
         self.plc: dict[int, dict[str, dict]] = {}
@@ -83,6 +84,7 @@ class NcData:
         self.central_r: dict[str, float] = {}
         self.gear = 1  # gear stage of the master spindle at power-on (AGS)
         self.gears: list[float] = []  # maximum speed of each gear stage (M40, limit under G96)
+        self.v24_input = ""  # what INP reads from the V24 port (module v24's tape format)
         self.dirty: set[str] = set()
 
     # -- loading ---------------------------------------------------------
@@ -128,6 +130,9 @@ class NcData:
             data.alarms.append((int(a), data.channel))
         data.sob = {str(k): float(v) for k, v in sec.get("sob", {}).items()}
         data._load_gears(where, sec)
+        if not isinstance(sec.get("v24_input", ""), str):
+            raise UsageError(f"{where}: key 'sin800.v24_input' must be text (lines such as \"R10=4.5\")")
+        data.v24_input = sec.get("v24_input", "")
         for name, v in sec.get("r", {}).items():
             n = int(str(name).upper().lstrip("R"))
             if n >= 900:
@@ -171,9 +176,30 @@ class NcData:
                 out[key] = getattr(self, key)
         return out
 
+    def inch_basic_system(self) -> bool:
+        """NC MD bit 5002.4: inch is the basic setting of the NC (L2324-2326)."""
+        return bool(pattern_to_int(self.areas["nc_md"].get("5002", 0.0)) >> 4 & 1)
+
     # -- zero offsets ----------------------------------------------------
     def zo_vec(self, name: str) -> list[float]:
         return self.zo.setdefault(name, [0.0] * self.n_axes)
+
+    def preset(self) -> list[float]:
+        """The PRESET offsets as ZOPS reads them: what the program loaded, else the effective ones."""
+        return self.preset_loaded if self.preset_loaded is not None else self.zo_vec("PRESET")
+
+    def load_preset(self, axis: int, value: float) -> None:
+        """ZOPS(axis) = value: the PRESET offset becomes effective after program end or reset (L3240)."""
+        if self.preset_loaded is None:
+            self.preset_loaded = list(self.zo_vec("PRESET"))
+        self.preset_loaded[axis] = value
+
+    def preset_takes_effect(self) -> None:
+        """Program end (M2/M30, the last block) or reset: the loaded PRESET offsets are effective."""
+        if self.preset_loaded is not None:
+            self.zo["PRESET"] = self.preset_loaded
+            self.preset_loaded = None
+            self.dirty.add("zo")
 
     def additive(self) -> list[float]:
         """Programmable (G58 + G59), external, DRF and PRESET offsets, summed per axis."""

@@ -14,6 +14,7 @@ from collections import deque
 
 from ...diagnostics import Frame, RuntimeFault, Span, UsageError
 from ...nc.block import Block
+from ...nc.kernel import INCH
 from ...runtime.codegen import program_lines
 from .ncdata import Cl800Error, NcData, int_to_pattern, nc8, pattern_to_int
 from .plc import PlcClock
@@ -96,7 +97,7 @@ class Channel(SysMem, SpindleReads):
         self.frames: list[Frame] = []
         self.halted = False
         self.ess_enabled = False
-        self.panel: list[str] = []
+        self.panel: list[str] = []  # menus called by WRT PIC, for RECALL PIC
         self.v24: list[str] = []
         self.tool_d = 0
         SysMem.__init__(self)
@@ -127,6 +128,8 @@ class Channel(SysMem, SpindleReads):
                 self.m_function(code)
 
         canon.aux = aux
+        if data.inch_basic_system():  # G70 is the power-on state (MDNBI(5002,4), L2324-2326)
+            self.kernel.scale = INCH
         self.apply_offsets()
 
     def _strict_power_on(self, source: str) -> None:

@@ -78,6 +78,12 @@ class Gearbox:
 class SpindleReads:
     """Mixed into the channel: the spindle's @ code reads."""
 
+    def spindle_word(self, v: float, line: int) -> str:
+        """PRSS(<spindle>) = value (@442, L3318-3326): the S word of the block; spindle 0 is the master
+        spindle, the only one here."""
+        spindle_number(v, 1 if self.data.control in ("810", "820") else 6, "PRSS")
+        return "S"
+
     def spindle_read(self, code: str, args: tuple) -> float:
         k = self.kernel
         wide = 6 if self.data.control == "880" else 4  # ch.6 table L4907-4912

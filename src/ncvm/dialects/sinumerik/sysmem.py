@@ -13,6 +13,7 @@ import math
 from ...diagnostics import RuntimeFault
 from ...nc.block import Block
 from ...nc.dynamics import path_limits, trapezoid_distance, trapezoid_time
+from . import v24
 from .contour import check_window, contour_elements, intersect
 from .ncdata import Cl800Error, int_to_pattern, nc8, pattern_to_int
 from .rotation import angle_address, block_frame, machine_frame, program_frame, program_point
@@ -31,7 +32,10 @@ SD = {
     "0": ("nc_sd", "word", (0, 4999)), "1": ("nc_sd", "byte", (5000, 9999)), "2": ("nc_sd", "bit", (5000, 9999)),
     "3": ("cycle_sd", "word", (0, 499)), "4": ("cycle_sd", "byte", (800, 949)), "5": ("cycle_sd", "bit", (800, 949)),
 }
-CHANNEL_ARG = {"cycle_md", "cycle_sd"}  # first argument is the channel (0 = own)
+CHANNEL_ARG = {"cycle_md", "cycle_sd"}
+#: programmed control words of digital drives, read (@34b/@34c) and written (@44b/@44c): name, unit, top byte
+DRIVE_CONTROL = {"34b": ("PCDA", "axis", 1), "44b": ("PCDA", "axis", 1), "34c": ("PCDS", "spindle", 5),
+                 "44c": ("PCDS", "spindle", 5)}  # first argument is the channel (0 = own)
 PLC_BIT_AREA = {"380": "I", "381": "Q", "382": "F", "482": "F"}
 PLC_BYTE_AREA = {"390": "I", "391": "Q", "392": "P", "393": "F", "493": "F"}
 PLC_WORD_AREA = {"3a0": "I", "3a1": "Q", "3a2": "P", "3a3": "F", "4a3": "F"}
@@ -205,7 +209,24 @@ class SysMem:
             return float(len(d.alarms))
         raise Cl800Error(f"@{code} is not available")
 
+    def _data_area(self, area: str, width: str, rng: tuple) -> tuple:
+        """The address range of an MD/SD area on this control; the CL 800 error where the control has no
+        such data (ch.6 table L4817-4845: cycle MD/SD on the 850/880 only, drive MD on the 810/820 only;
+        PLC MD words 0-1999 and bytes 2000-3999 on the 810/820, 0-5999 and 6000-8999 on the 850/880,
+        L6506-6508)."""
+        control = self.data.control
+        small = control in ("810", "820")
+        if area in ("cycle_md", "cycle_sd") and small:
+            raise Cl800Error(f"cycle {'machine' if area == 'cycle_md' else 'setting'} data exist on the "
+                             f"SINUMERIK 850/880 only, not on the {control}")
+        if area == "drive_md" and not small:
+            raise Cl800Error(f"drive machine data exist on the SINUMERIK 810/820 only, not on the {control}")
+        if area == "plc_md":
+            return ((0, 1999) if small else (0, 5999)) if width == "word" else ((2000, 3999) if small else (6000, 8999))
+        return rng
+
     def _mem_read(self, area: str, width: str, rng: tuple, args: tuple):
+        rng = self._data_area(area, width, rng)
         args = self._channel_args(area, args)
         table = self.data.areas[area]
         addr = _rng(f"{area} address", args[0], *rng)
@@ -261,9 +282,10 @@ class SysMem:
                 else (self.session.machine.offset(f"G{53 + g}")[self._axis(args[1])] if cf == 0 else 0.0)
         if code == "331":
             return d.zo_vec(f"G{57 + _rng('ZO group', args[0], 1, 2)}")[self._axis(args[1])]
-        if code in ("332", "333", "334"):
-            name = {"332": "EXTERNAL", "333": "DRF", "334": "PRESET"}[code]
-            return d.zo_vec(name)[self._axis(args[0])]
+        if code == "334":
+            return d.preset()[self._axis(args[0])]
+        if code in ("332", "333"):
+            return d.zo_vec("EXTERNAL" if code == "332" else "DRF")[self._axis(args[0])]
         if code == "336":
             i = self._axis(args[0])
             k = self.kernel
@@ -288,8 +310,21 @@ class SysMem:
         return float(ACG_GROUPS.get(group, (0,))[0])
 
     def _drive_bit(self, code: str, args: tuple) -> float:
+        """RSDA/RSDS/RSDD: status bits of the digital drives, from the machine file (``sob`` keys
+        ``3e1:axis:byte:bit`` ...); PCDA/PCDS: the programmed control bits, as PCDA/PCDS wrote them."""
+        if code in DRIVE_CONTROL:
+            return self.data.sob.get(self._control_bit(code, args), 0.0)
         key = f"{code}:{':'.join(str(_i(a)) for a in args)}"
         return self.data.sob.get(key, 0.0)
+
+    def _control_bit(self, code: str, args: tuple, writing: bool = False) -> str:
+        """The key of one bit of a programmed control word of a digital drive: PCDA (axis 1-24, byte 0/1,
+        bit 0-7, written 4-6) or PCDS (spindle 1-10, byte 0-5, bit 0-7) (L2571-2587, L6543-6544, L6674)."""
+        name, units, top_byte = DRIVE_CONTROL[code]
+        unit = _rng(f"{name} {units} number", args[0], 1, 24 if units == "axis" else 10)
+        byte = _rng(f"{name} byte", args[1], 0, top_byte)
+        bit = _rng(f"{name} bit", args[2], *((4, 6) if writing and name == "PCDA" else (0, 7)))
+        return f"{name}:{unit}:{byte}:{bit}"
 
     # -- writes (main group 4) -------------------------------------------
     def write(self, code: str, args: tuple) -> None:
@@ -302,6 +337,7 @@ class SysMem:
         *where, value = args
         if sub in "01":
             area, width, rng = (MD_SD if sub == "0" else SD)[fn]
+            rng = self._data_area(area, width, rng)
             where = self._channel_args(area, tuple(where))
             addr = _rng(f"{area} address", where[0], *rng)
             table = d.areas[area]
@@ -342,8 +378,14 @@ class SysMem:
         if sub == "3":
             self._zo_write(code, where, value)
             return
-        if code in ("44b", "44c", "4e1"):
-            d.sob[f"{code}:{':'.join(str(_i(a)) for a in where)}"] = float(value)
+        if code in DRIVE_CONTROL:
+            if value not in (0.0, 1.0):
+                raise Cl800Error(f"bit value {value:g} is not 0 or 1")
+            d.sob[self._control_bit(code, tuple(where), writing=True)] = float(value)
+            return
+        if code == "4e1":  # SATC (L3562-3579, L6704): kept per spindle and gear stage
+            spindle, gear = _rng("spindle", where[0], 0, 6), _rng("gear stage", where[1], 1, 8)
+            d.sob[f"SATC:{spindle}:{gear}"] = float(_rng("acceleration time constant", value, 0, 16000))
             return
         if sub in "89ab":
             self.plc_write(code, tuple(where), value)
@@ -366,8 +408,11 @@ class SysMem:
             vec[i] = value if code == "430" else vec[i] + value
         elif code == "432":
             d.zo_vec(f"G{57 + _rng('ZO group', where[0], 1, 2)}")[self._axis(where[1])] = value
-        elif code in ("434", "435"):
-            d.zo_vec("DRF" if code == "434" else "PRESET")[self._axis(where[0])] = value
+        elif code == "434":
+            d.zo_vec("DRF")[self._axis(where[0])] = value
+        elif code == "435":
+            d.load_preset(self._axis(where[0]), value)
+            return
         elif code in ("437", "438", "439", "43a"):
             self._channel_args("cycle_md", tuple(where[:1]))
             kind = "settable" if code in ("437", "438") else "programmable"
@@ -549,8 +594,7 @@ class SysMem:
             return  # STOP DEC1 waits only while a coordinate rotation is selected (L4330-4334)
         if code == "713":
             target = args[0]
-            if target > 998:
-                raise Cl800Error("PREP CYC needs two result registers")
+            check_window(target, 2, ((0, 98), (900, 998)), "PREP CYC output")  # L4268
             diameter = self.data.areas["nc_md"].get("diameter_axis1", 0.0)
             self.store(target, [1.0 if self.kernel.scale == 1.0 else 0.03937, 2.0 if diameter else 1.0])
             return
@@ -774,25 +818,44 @@ class SysMem:
 
     # -- main group a: operator panel and V24 -------------------------------
     def io(self, code: str, args: tuple) -> None:
+        """WRT PIC / RECALL PIC / CHAN on the operator panel (shown in the output); PORT, OUTP ... and INP
+        on the V24 port (module v24). Without PORT the interface selected at the operator panel is used."""
         if code == "a15":
-            self.panel.append(f"menu {_i(args[1])} ({'standard' if args[0] else 'user'})")
-            self.session.say(f"[panel] menu {_i(args[1])}")
+            sector = ("user", "standard")[_rng("sector (0 user / 1 standard)", args[0], 0, 1)]
+            self.panel.append(f"{sector} menu {_rng('menu number', args[1], 1, 254)}")
+            self.session.say(f"[panel] {self.panel[-1]}")
         elif code == "a1b":
-            if self.panel:
+            if len(self.panel) > 1:
                 self.panel.pop()
+                self.session.say(f"[panel] {self.panel[-1]}")
+            elif self.panel:
+                self.panel.pop()
+                self.session.say("[panel] the display shown before the first WRT PIC")
+        elif code == "a40":
+            self.session.say(f"[panel] channel {_rng('channel', args[0], 1, 16)}")
         elif code == "a20":
             self.v24.append(f"PORT {_rng('V24 interface', args[0], 1, 4)}")
+        elif code == "a25":
+            ch = _rng("channel", args[0], 0, 16)
+            if ch:
+                self._own_channel(ch)
+            self.v24.extend(v24.zo_lines(self.data, self.session.machine.offset, self.kernel.axis_names, ch))
+        elif code == "a26":
+            folders = self.session.machine.program_path
+            self.v24.extend(v24.data_lines(self.data, lambda kind, a, b: v24.find_programs(folders, kind, a, b),
+                                           _i(args[0]), _i(args[1]), _i(args[2])))
         elif code == "a27":
             self._own_channel(args[0])
             lo, hi = _rng("R number", args[1], 0, 999), _rng("R number", args[2], 0, 999)
             for n in range(lo, hi + 1):
-                self.v24.append(f"R{n}={self.R[n]:g}")
+                self.v24.append(f"R{n}={v24.fmt(self.R[n])}")
+        elif code == "a28":
+            v24.read_in(self, _i(args[0]), self.data.v24_input)
+            self.data.v24_input = ""
         elif code == "a29":
             self.v24.append("\x03")
-        elif code == "a40":
-            self.panel.append(f"channel {_rng('channel', args[0], 1, 16)}")
         else:
-            self.v24.append(f"@{code} " + " ".join(f"{a:g}" for a in args))
+            raise Cl800Error(f"@{code} is not available")
 
 
 def _scale(raw: int, dim: int) -> float:
