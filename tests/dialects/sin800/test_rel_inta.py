@@ -131,8 +131,7 @@ def test_inta_starts_where_the_buffered_blocks_end(tmp_path):
     assert R(r, 1) == pytest.approx(72.916667)
 
 
-def test_inta_on_an_arc_is_not_simulated(tmp_path):
-    r = _run(tmp_path, "%MPF1\nG1 G90 F6000\n@736 K1 K1 K3 G2 X10 Z10 I5 K5\nM30\n")
-    assert r["error"]["code"] == "SIN011"
+def test_inta_input_byte_out_of_range_is_a_cl800_error(tmp_path):
+    # arcs: tests/dialects/sin800/test_inta_arcs.py
     r = _run(tmp_path, "%MPF1\n@736 K1 K3 K0 G1 X10 F100\nM30\n")
     assert r["error"]["code"] == "CL800"

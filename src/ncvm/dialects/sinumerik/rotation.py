@@ -99,13 +99,18 @@ def machine_frame(channel, g, words: dict) -> tuple[dict, tuple[str, str, float]
 
 
 def program_frame(words: dict, frame: tuple[str, str, float]) -> dict:
-    """Plane coordinates (or G91 increments) of the machine-axis frame turned back into the program's
-    frame; both plane axes must be in ``words`` when one is (shape_block always writes both)."""
+    """Plane coordinates (or G91 increments) and arc centre vectors of the machine-axis frame turned
+    back into the program's frame; both plane axes must be in ``words`` when one is (shape_block
+    always writes both)."""
     h, v, theta = frame
-    if theta == 0.0 or (h not in words and v not in words):
+    if theta == 0.0:
         return words
     out = dict(words)
-    out[h], out[v] = _turn(words[h], words[v], -theta)
+    if h in words or v in words:
+        out[h], out[v] = _turn(words[h], words[v], -theta)
+    ih, iv = _CENTRE.get(h), _CENTRE.get(v)
+    if ih and iv and (ih in words or iv in words):
+        out[ih], out[iv] = _turn(words.get(ih, 0.0), words.get(iv, 0.0), -theta)
     return out
 
 

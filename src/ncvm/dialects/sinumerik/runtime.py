@@ -34,7 +34,6 @@ ALARMS = {
     "SIN006": "push/pop stack error",
     "SIN007": "waiting for an input that never changes",
     "SIN010": "warning: actual value read or measurement used without STOP DEC after motion",
-    "SIN011": "INTA in a block that is not G00/G01 (remaining travel delete on arcs is not simulated)",
     "RUN002": "sub-program not found",
     "RUN003": "sub-program nesting too deep",
 }

@@ -12,9 +12,10 @@ import math
 
 from ...diagnostics import RuntimeFault
 from ...nc.block import Block
-from ...nc.dynamics import path_limits, trapezoid_distance, trapezoid_time
+from ...nc.dynamics import trapezoid_distance, trapezoid_time
 from . import v24
 from .contour import check_window, contour_elements, intersect
+from .inta_path import arc_path, straight_path
 from .ncdata import Cl800Error, int_to_pattern, nc8, pattern_to_int
 from .rotation import angle_address, block_frame, machine_frame, program_frame, program_point
 from .spindle import MASTER_SPINDLE
@@ -660,11 +661,12 @@ class SysMem:
         self.wait_input(_i(byte), _i(bit), True, "REL")
 
     def inta(self, axis: float, byte: float, bit: float, g: tuple, words: dict, line: int) -> dict:
-        """@736 INTA: the block's axis words, cut where the motion stops when input byte.bit reaches the
-        level (bit >= 0: 1, bit < 0: 0); unchanged when the position is reached first. Axis 0 = all axes of
-        the block; the axes interpolating with the named one stop with it, which here are all of them.
-        The cut is computed on the traversing axes (under a rotation both plane axes) and handed back in
-        the program's frame."""
+        """@736 INTA: the block's words, cut where the motion stops when input byte.bit reaches the level
+        (bit >= 0: 1, bit < 0: 0); unchanged when the position is reached first. Axis 0 = all axes of the
+        block; the axes interpolating with the named one stop with it, which here are all of them (both
+        plane axes of a circle). The path is cut on the traversing axes (under a rotation both plane
+        axes), a circle as an arc with the same centre and a shorter sweep, and handed back in the
+        program's frame."""
         self.run_buffer()  # the block starts where the blocks before it end
         k = self.kernel
         ax = _rng("INTA axis number", axis, 0, 24)
@@ -674,44 +676,37 @@ class SysMem:
         self.ext_input(b, n)  # checks byte 1/2, bit 0-7
         if ax > k.n_axes:
             raise Cl800Error(f"INTA: axis {ax} does not exist")
-        turned, frame = machine_frame(self, g, words)  # the axes that traverse, in their own frame
-        moving = [name for name in turned if name in k.axis_of]
-        if not moving or (ax and k.axis_names[ax - 1] not in moving):
-            self._inta_until = None
+        self._inta_until = None
+        turned, frame = machine_frame(self, g, words)  # the block in the frame of the machine axes
+        path = self._inta_path(g, turned)
+        if path is None or not path.axes or (ax and k.axis_names[ax - 1] not in path.axes):
             return words
-        motion = next((x for x in reversed(g) if x in (0, 1, 2, 3)), k.motion)
-        if motion not in (0, 1):
-            raise RuntimeFault("SIN011", "INTA: remaining travel delete is simulated for G00/G01 blocks only")
-        scale = 25.4 if 70 in g else (1.0 if 71 in g else k.scale)
-        absolute = True if 90 in g else (False if 91 in g else k.absolute)
-        machine = 53 in g
-        start = [(k.machine_pos[i] if machine else k.prog[i]) / scale for i in range(k.n_axes)]
-        end = list(start)
-        for name in moving:
-            i = k.axis_of[name]
-            end[i] = turned[name] if absolute or machine else start[i] + turned[name]
-        deltas = [(e - s) * scale for s, e in zip(start, end)]
-        length = math.sqrt(sum(d * d for d in deltas))
-        feed = words["F"] * scale if "F" in words else k.feed  # mm/min
-        if motion == 1 and feed <= 0.0:
-            raise RuntimeFault("NC006", "G1 with feed rate 0 (program an F word)")
-        speed = math.inf if motion == 0 else feed / 60.0
-        dyn = k.dyn
-        v, a = path_limits(deltas, length, speed, dyn.rapid if motion == 0 else dyn.max_feed, dyn.accel)
         now = self.session.machine.clock.now
-        hit = self._input_time(b, n, level, now + trapezoid_time(length, v, a))
+        hit = self._input_time(b, n, level, now + trapezoid_time(path.length, path.speed, path.accel))
         self._inta_until = hit
         if hit is None:
             return words
-        frac = trapezoid_distance(length, v, a, hit - now) / length if length else 0.0
-        cut = {}
-        for name in moving:
-            i = k.axis_of[name]
-            cut[name] = start[i] + frac * (end[i] - start[i]) if absolute or machine else frac * turned[name]
+        travelled = trapezoid_distance(path.length, path.speed, path.accel, hit - now)
+        cut = path.cut(travelled / path.length if path.length else 0.0)
         angle = angle_address(self) if self.angle_used else None  # resolved into the axis words
-        out = {n: v for n, v in words.items() if n not in k.axis_of and n != angle}
-        out.update(cut if machine else program_frame(cut, frame))
+        out = {n: v for n, v in words.items() if n not in k.axis_of and n != angle and n not in path.replaces}
+        out.update(cut if 53 in g else program_frame(cut, frame))
         return out
+
+    def _inta_path(self, g: tuple, turned: dict):
+        """The INTA block's path as the kernel will run it; None for a block the kernel rejects (it then
+        reports the fault when the block executes)."""
+        k = self.kernel
+        motion = next((x for x in reversed(g) if x in (0, 1, 2, 3)), k.motion)
+        scale = 25.4 if 70 in g else (1.0 if 71 in g else k.scale)
+        machine = 53 in g
+        relative = not machine and (False if 90 in g else (True if 91 in g else not k.absolute))
+        start = [(k.machine_pos[i] if machine else k.prog[i]) / scale for i in range(k.n_axes)]
+        feed = turned["F"] * scale if "F" in turned else k.feed  # mm/min
+        if motion < 2:
+            return straight_path(k, motion == 0, turned, start, scale, relative, feed)
+        plane = next((x for x in reversed(g) if x in (17, 18, 19)), k.plane)
+        return arc_path(k, motion == 2, plane, turned, start, scale, relative, feed)
 
     def inta_done(self) -> None:
         """After an INTA block: simulated time has reached the moment the input fired."""
