@@ -17,6 +17,8 @@ EXAMPLES = Path(__file__).parent.parent.parent / "examples"
 CASES = [
     # CPL: a character that starts nothing inside an [expr] word of an NC block
     ("p.cpl", "10 C% = 81\nN20 G[C@%] X10\nM30\n", "check", "CPL001"),
+    # CPL: MID$ with one argument into a string variable (a live view needs the start position)
+    ("p.cpl", '10 DIM A$(10)\n20 A$="ABC"\n30 C$=MID$(A$)\nM30\n', "check", "CPL001"),
     # SINUMERIK: R parameters end at R999
     ("p.mpf", "%MPF1\nN10 R60=60 G90 @447 R99999999999960 X20\nM30\n", "run", "SIN001"),
     ("p.mpf", "%MPF1\nN10 R99999=1\nM30\n", "run", "SIN001"),

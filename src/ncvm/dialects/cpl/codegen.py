@@ -393,7 +393,8 @@ class Gen:
         if v.suffix == "$" and not is_field_target and v.cls in ("L",) and self._needs_field(e):
             raise GenError("CPL025", f"{v.display} is not DIMensioned; '+' results go to character fields only")
         if v.suffix == "$" and v.cls == "L" and not is_field_target and isinstance(e, A.Func) and e.name == "MID$" \
-                and isinstance(e.args[0], A.Var) and self._is_char_field(e.args[0]) and e.args[0].var.cls == "L":
+                and len(e.args) >= 2 and isinstance(e.args[0], A.Var) and self._is_char_field(e.args[0]) \
+                and e.args[0].var.cls == "L":
             # a live view into the field (manual L3373-3401)
             src = self.local(e.args[0].var)
             start = self.ex(e.args[1])[0]
