@@ -92,6 +92,25 @@ def test_check_clean_program_exits_0(invoke, prog):
     assert r.exit_code == 0 and "1 program(s) checked, 0 diagnostic(s)" in r.stderr
 
 
+def test_check_a_whole_archive_folder(invoke, tmp_path):
+    """A folder stands for every program below it (by extension); other files are left alone."""
+    archive = tmp_path / "archive"
+    (archive / "mill" / "old").mkdir(parents=True)
+    (archive / "mill" / "part.din").write_text(PROGRAM)
+    (archive / "mill" / "old" / "bad.din").write_text("G1 X1 ?\n")
+    (archive / "mill" / "old" / "cycle.cpl").write_text("10 A% = 1 +\nM30\n")
+    (archive / "readme.txt").write_text("not a program")
+    (archive / "machine.toml").write_text("[[axis]]\nname = 'X'\n")
+    r = invoke("check", str(archive))
+    assert r.exit_code == 1
+    assert "3 program(s) checked, 2 with errors, 2 diagnostic(s)" in r.stderr
+    doc = json.loads(invoke("check", str(archive), "--json").stdout)
+    assert [(Path(f["file"]).name, f["ok"]) for f in doc["files"]] == [  # in path order
+        ("bad.din", False), ("cycle.cpl", False), ("part.din", True)]
+    r = invoke("check", str(archive / "mill" / "part.din"), str(archive / "nothing"))
+    assert r.exit_code == 2 and "no such program" in r.stderr
+
+
 @pytest.mark.parametrize("args, message", [
     (["run", "absent.din"], "no such program"),
     (["run", "{prog}", "--machine", "absent.toml"], "cannot read machine file"),

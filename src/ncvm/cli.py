@@ -185,20 +185,39 @@ def _hms(seconds: float) -> str:
     return f"{h}:{m:02d}:{s:06.3f}" if h else f"{m}:{s:06.3f}"
 
 
+def _programs_in(args) -> list[str]:
+    """The programs named, with every program file below a named folder (an archive), by extension."""
+    from .dialects import EXTENSIONS
+
+    out = []
+    for arg in args:
+        path = Path(arg)
+        if path.is_dir():
+            out += sorted(str(p) for p in path.rglob("*") if p.is_file() and p.suffix.lower() in EXTENSIONS)
+        elif path.is_file():
+            out.append(arg)
+        else:
+            raise UsageError(f"no such program: {arg}")
+    return out
+
+
 @cli.command()
-@click.argument("programs", nargs=-1, required=True, type=click.Path(dir_okay=False))
+@click.argument("programs", nargs=-1, required=True, type=click.Path())
 @DIALECT_OPT
 @MACHINE_OPT
 @click.option("--json", "as_json", is_flag=True, help="Diagnostics as one JSON document.")
 @click.option("--all", "all_errors", is_flag=True, help="Go on after the first error and list every one.")
 def check(programs, dialect, machine, as_json, all_errors):
-    """Check programs for every error the control would report; exit 1 when any was found."""
+    """Check programs for every error the control would report; exit 1 when any was found.
+
+    A folder stands for every program file below it (known extensions), so a whole archive is checked
+    at once; each program uses the machine file of its own folder unless --machine is given.
+    """
     from .api import check as api_check
 
     report, failed = [], False
+    programs = _programs_in(programs)
     for program in programs:
-        if not Path(program).is_file():
-            raise UsageError(f"no such program: {program}")
         try:
             diags = api_check(program, dialect, machine, all_errors)
         except CompileFailed as e:
@@ -213,7 +232,9 @@ def check(programs, dialect, machine, as_json, all_errors):
         click.echo(json.dumps({"files": report}, indent=2))
     else:
         n = sum(len(r["diagnostics"]) for r in report)
-        click.echo(f"ncvm: {len(programs)} program(s) checked, {n} diagnostic(s)", err=True)
+        bad = sum(1 for r in report if not r["ok"])
+        with_errors = f", {bad} with errors" if bad else ""
+        click.echo(f"ncvm: {len(programs)} program(s) checked{with_errors}, {n} diagnostic(s)", err=True)
     sys.exit(EXIT_FAULT if failed else EXIT_OK)
 
 
