@@ -17,6 +17,9 @@ from __future__ import annotations
 
 import pytest
 
+from ncvm.api import compile_program, run
+from ncvm.runtime.session import RunOptions
+
 
 @pytest.mark.parametrize("text, message", [
     # @3b1 PLCDB with 0 data words read no word and stopped with "invalid literal for int()"
@@ -33,3 +36,32 @@ def test_fault_names_the_users_mistake(run_text, text, message):
     assert result["error"]["code"] == "CL800"
     assert result["error"]["message"] == f"CL 800 error: {message}"
     assert result["error"]["line"] == 2
+
+
+# 11 locals R50-R60 and 24 temporaries R76-R99 (one per bracket level): as one @040 K35 list the push did
+# not fit a block and the valid program failed with S064; now each range is pushed by its own @041.
+MANY_TEMPORARIES = """PROGRAM 5;
+CHANNEL NC 0;
+PAR REAL: R1, R2;
+LOCAL REAL: R50, R51, R52, R53, R54, R55, R56, R57, R58, R59, R60;
+BEGIN
+R50 = 1; R60 = 2;
+R2 = (((((((((((((((((((((((R1 + 1) * 2) + 1) * 2) + 1) * 2) + 1) * 2)
++ 1) * 2) + 1) * 2) + 1) * 2) + 1) * 2) + 1) * 2) + 1) * 2) + 1) * 2)
++ 1) * R50 + R60;
+END.
+"""
+
+
+def test_push_set_too_long_for_one_block_is_split(tmp_path):
+    src = tmp_path / "p.cl8"
+    src.write_text(MANY_TEMPORARIES, encoding="latin-1")
+    obj = compile_program(src, tmp_path / "L5.spf").read_text(encoding="latin-1").split("\n")
+    assert obj[1].startswith("@041 R50 R60 @041 R76 R99 ")
+    assert obj[-2].endswith(" @043 R76 R99 @043 R50 R60 M17")  # popped in the reverse order
+    by_source, _ = run(src, options=RunOptions(state_dir=tmp_path / "a"))
+    by_object, _ = run(tmp_path / "L5.spf", dialect="sin800", options=RunOptions(state_dir=tmp_path / "b"))
+    # R1 = 0: 11 times x -> (x + 1) * 2 gives 2**12 - 2 = 4094; (4094 + 1) * R50 + R60 = 4095 * 1 + 2
+    assert by_source["error"] is None and by_source["variables"]["R2"] == 4097.0
+    assert by_source["variables"] == by_object["variables"]
+    assert by_source["variables"]["R50"] == by_source["variables"]["R60"] == 0.0  # restored by the pops
