@@ -250,8 +250,8 @@ class Compiler:
         if ess:
             self.emit("@00f")
         push = self.push or []
-        if push:
-            self.emit(push_code(True, push), prog.begin_line)
+        for chunk in push_chunks(push):
+            self.emit(push_code(True, chunk), prog.begin_line)
         first = self.cur
         for i, st in enumerate(prog.body):
             self.stmt_index = i
@@ -259,8 +259,8 @@ class Compiler:
         self.line = prog.end_line
         if first is not None and self.cur is first and push:
             self.end_block()  # the push and the pop of a program never share a block
-        if push:
-            self.emit(push_code(False, push), prog.end_line)
+        for chunk in reversed(push_chunks(push)):  # the stack gives back the last push first
+            self.emit(push_code(False, chunk), prog.end_line)
         self.emit("M17", prog.end_line)
         return ObjectProgram(prog.number, prog.line, self.blocks)
 
@@ -443,6 +443,31 @@ def push_code(push: bool, regs: list[int]) -> str:
     if len(regs) > 1 and regs[-1] - regs[0] == len(regs) - 1:
         return f"@{'041' if push else '043'} R{regs[0]} R{regs[-1]}"
     return f"@{'040' if push else '042'} K{len(regs)} " + " ".join(f"R{r}" for r in regs)
+
+
+def push_chunks(regs: list[int]) -> list[list[int]]:
+    """The push set as one instruction, or split into several when one would not fit a block.
+
+    Many locals and temporaries that are no single range would make an @040 longer than an NC
+    block (S064) although the program is valid; successive pushes save the same registers.
+    """
+    regs = sorted(regs)
+    if not regs or len(push_code(True, regs)) <= MAX_BLOCK:
+        return [regs] if regs else []
+    runs: list[list[int]] = []
+    for r in regs:
+        if runs and r == runs[-1][-1] + 1:
+            runs[-1].append(r)
+        else:
+            runs.append([r])
+    chunks = [run for run in runs if len(run) > 1]  # each range one @041
+    singles: list[list[int]] = []
+    for [r] in (run for run in runs if len(run) == 1):  # the others listed in @040s that fit a block
+        if singles and len(push_code(True, [*singles[-1], r])) <= MAX_BLOCK:
+            singles[-1].append(r)
+        else:
+            singles.append([r])
+    return sorted(chunks + singles)
 
 
 def compile_program(path: str, prog: ast.Program, sym: Symbols) -> ObjectProgram:

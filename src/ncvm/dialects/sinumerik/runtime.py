@@ -54,8 +54,8 @@ def _int(value: float) -> int:
 
 
 NAMESPACE_GLOBALS = {
-    "_Block": Block, "_int": _int, "_ptr": _ptr, "_sqrt": math.sqrt, "_hypot": math.hypot, "_sin": math.sin,
-    "_cos": math.cos, "_asin": math.asin, "_log": math.log, "_exp": math.exp, "_trunc": math.trunc, "_DEG": DEG,
+    "_Block": Block, "_int": _int, "_ptr": _ptr, "_hypot": math.hypot, "_sin": math.sin,
+    "_cos": math.cos, "_trunc": math.trunc, "_DEG": DEG,
     "_nc8": nc8,
 }
 
@@ -387,6 +387,26 @@ class Channel(SysMem, SpindleReads):
         if abs(c) < 1e-12:
             raise Cl800Error(f"TAN({x:g}) is not defined")
         return math.sin(x * DEG) / c
+
+    def sqrt(self, x: float) -> float:
+        if x < 0.0:
+            raise Cl800Error(f"SQRT({x:g}): no square root of a negative number")
+        return math.sqrt(x)
+
+    def arc_sin(self, x: float) -> float:
+        if not -1.0 <= x <= 1.0:
+            raise Cl800Error(f"ARC SIN({x:g}): the sine must lie between -1 and 1")
+        return math.asin(x) / DEG
+
+    def ln(self, x: float) -> float:
+        if x <= 0.0:
+            raise Cl800Error(f"LN({x:g}): no logarithm of zero or a negative number")
+        return math.log(x)
+
+    def inv_ln(self, x: float) -> float:
+        if x > 709.0:  # e**709.8 is the largest double; the NC's range ends long before
+            raise Cl800Error(f"INV LN({x:g}): the result is too large")
+        return math.exp(x)
 
     def angle(self, a: float, b: float) -> float:
         d = math.degrees(math.atan2(a, b))

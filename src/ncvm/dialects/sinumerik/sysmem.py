@@ -504,7 +504,8 @@ class SysMem:
                 return self.plc_clock.timer_seconds(no, number, self.session.machine.clock.now)
             return self.plc_clock.counter_value(no, number)
         if code in ("3b0", "3b1", "3b2"):
-            n = _i(args[3]) if code != "3b2" else 2
+            # no. of DW: PLCDF 1/2 (L2870-2894), PLCDB 1-3 (L2896-2924), as for the writes @4b0/@4b1
+            n = 2 if code == "3b2" else _rng("number of data words", args[3], 1, 3 if code == "3b1" else 2)
             words = [self._dw(plc, args[1], args[2] + k) for k in range(n)]
             if code == "3b2":
                 import struct
