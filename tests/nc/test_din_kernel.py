@@ -148,3 +148,13 @@ def test_repeated_address_reports_the_second_word(run_text):
     r = run_text("(set up) G1 X10 (again) X20 F100\n")
     assert r["error"]["code"] == "NC001" and r["error"]["column"] == 25
     assert "address X twice" in r["error"]["message"]
+
+
+@pytest.mark.parametrize("text, message", [
+    ("G1 F-5 X10\n", "G1 with a negative feed rate F-5"),
+    ("G1 X10\n", "G1 with feed rate 0"),
+    ("G1 F100 X10\nF-2 G3 X0 Y10 I-10\n", "G3 with a negative feed rate F-2"),
+])
+def test_feed_rate_faults_name_the_feed(run_text, text, message):
+    r = run_text(text, name="p.din")
+    assert r["error"]["code"] == "NC006" and message in r["error"]["message"]

@@ -46,7 +46,7 @@ def make_linear(axis_names: tuple[str, ...], dyn):
               "    else:",
               "        feed = k.feed",
               "        if feed <= 0.0:",
-              "            k.fault('NC006', 'G1 with feed rate 0 (program an F word)', src)",
+              "            k.fault('NC006', k.no_feed_message(1), src)",
               "        v = feed / 60.0",
               "    t = 0.0",
               "    if length > 0.0:",

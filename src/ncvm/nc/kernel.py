@@ -243,6 +243,12 @@ class NcKernel:
         for mc in block.m:
             self._m_after(mc, src)
 
+    def no_feed_message(self, g: int) -> str:
+        """NC006: a move at feed with no feed rate, or with a negative one."""
+        if self.feed < 0.0:
+            return f"G{g} with a negative feed rate F{self.feed / self.scale:g} (program a positive F word)"
+        return f"G{g} with feed rate 0 (program an F word)"
+
     def columns_ok(self) -> bool:
         """Whether plain motion blocks may run column-wise (:mod:`ncvm.nc.plainrun`) now: not while a coordinate
         transformation maps every target, nor under G96, where each block sets the spindle speed anew, nor
@@ -430,7 +436,7 @@ class NcKernel:
             self.canon.rapid(start, end, src)
         elif motion == 1:
             if self.feed <= 0.0:
-                self.fault("NC006", "G1 with feed rate 0 (program an F word)", src)
+                self.fault("NC006", self.no_feed_message(1), src)
             self.machine.clock.advance(self.dyn.straight_time(start, end, self.feed / 60.0, rapid=False))
             self.canon.feed(start, end, self.feed, src)
         else:
@@ -440,7 +446,7 @@ class NcKernel:
 
     def _arc(self, cw: bool, start, end, words, src: Src, prog) -> None:
         if self.feed <= 0.0:
-            self.fault("NC006", f"G{2 if cw else 3} with feed rate 0 (program an F word)", src)
+            self.fault("NC006", self.no_feed_message(2 if cw else 3), src)
         an, bn, _nn, iw, jw = PLANES[self.plane]
         if an not in self.axis_of or bn not in self.axis_of:
             self.fault("NC004", f"plane G{self.plane} needs axes {an} and {bn}", src)
