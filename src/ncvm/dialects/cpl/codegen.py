@@ -8,11 +8,15 @@ REAL (binary32) comparison rule of digest §4.2 are decided here, not at run tim
 
 from __future__ import annotations
 
+import inspect
+
 from ...nc.block import PLAIN_WORDS
 from ...runtime.codegen import PySource
 from . import ast as A
 from .builtins import FUNCTIONS
 from .errors import diag
+from .io.files import CplFiles
+from .io.screen import Screen
 from .lexer import VarName
 from .system import SYSTEM_PROCS
 from .system.gfuncs import GEARS, TYP3_G
@@ -367,7 +371,8 @@ class Gen:
                 return repr(float(e.value))
             if ty == "I":
                 return f"float({code})"
-            return code if ty in ("R", "D") else f"_tod({code})"
+            # a computed DOUBLE can overflow to infinity, which _tod refuses (range +/-1e308)
+            return code if ty in ("R", "D") and isinstance(e, A.Var) else f"_tod({code})"
         if target_type == "B":
             if ty in NUMERIC or ty == "S":
                 raise GenError("CPL021", f"{_tname(ty)} value assigned to a BOOLEAN variable")
@@ -606,11 +611,12 @@ class Gen:
         if name == "MMC":
             self.emit(self.mmc(s.args, line), line)
             return
-        if name == "ERASE":
-            self.emit(f"_io.files.ERASE({self.args(s)})", line)
-            return
-        target = IO_PROCS.get(name)
+        target = "files" if name == "ERASE" else IO_PROCS.get(name)
         if target is not None:
+            lo, hi = io_arity(target, name)
+            if not lo <= len(s.args) <= hi:
+                most = f"..{hi}" if hi < 99 else " or more"
+                raise GenError("CPL001", f"{name} takes {lo}{most} arguments, not {len(s.args)}")
             self.emit(f"_io.{target}.{name}({self.args(s)})", line)
             return
         if s.name in FUNCTIONS and s.name not in SYSTEM_PROCS:  # SCSL(...), MCOPS(...) as a statement
@@ -1159,10 +1165,20 @@ IO_PROCS = {
                               "CIR", "FIL", "CLG", "CLR", "CLS", "GPR", "BMP", "DLF")},
 }
 
+def io_arity(target: str, name: str) -> tuple[int, int]:
+    """How many arguments the statement ``name`` of a CplIO part takes: its method's positional parameters
+    (99 = any number), so that a wrong count is a compile error rather than a failed call at run time."""
+    method = getattr({"files": CplFiles, "screen": Screen}[target], name)
+    params = list(inspect.signature(method).parameters.values())[1:]  # without self
+    positional = [p for p in params if p.kind == p.POSITIONAL_OR_KEYWORD]
+    lo = sum(1 for p in positional if p.default is p.empty)
+    hi = 99 if any(p.kind == p.VAR_POSITIONAL for p in params) else len(positional)
+    return lo, hi
+
+
 #: built-ins with a numeric argument known at compile time, written inline (no call, no type check)
 INLINE = {
     "ABS": "abs({0})",
-    "INT": "int({0})",
     "SIN": "_msin({0} * 0.017453292519943295)",
     "COS": "_mcos({0} * 0.017453292519943295)",
     "ATAN": "(_matan({0}) * 57.29577951308232)",
