@@ -377,7 +377,8 @@ class Gen:
     def view(self) -> None:
         """MID$ into a string variable is a live view of its character field (digest 4.7)."""
         r = self.r
-        self.emit(f"Q$ = MID$({r.choice(FIELDS)},{r.randint(1, 6)},{r.randint(1, 6)})")
+        source = r.choice(FIELDS + [f"H$({r.randint(1, 3)})"])
+        self.emit(f"Q$ = MID$({source},{r.randint(1, 6)},{r.randint(1, 6)})")
         self.emit(f"{r.choice(FIELDS)} = {self.field_expr()}")
         self.emit("PRN#(0,Q$,LEN(Q$)) : I% = INSTR(Q$,A$) : T$ = Q$ + Q$")
 

@@ -123,3 +123,39 @@ def test_statement_with_a_wrong_argument_count_is_a_compile_error(tmp_path, stmt
     path.write_text(f"10 {stmt}\nM30\n", encoding="latin-1")
     diags = check(path)
     assert diags and diags[0].code == "CPL001" and message in diags[0].message
+
+
+def test_parameter_not_passed_copies_as_nul(run_text, tmp_path):
+    """``G = P7`` when the caller passed fewer parameters: G becomes NUL, as ``A% = P7%`` and ``B$ = P7$`` do
+    (the UNTPR example reads parameters that were not passed, L4672). The REAL view raised NUL used."""
+    (tmp_path / "SUBN.cpl").write_text("10 G = P3 : H! = P3! : A% = P3% : E = P1! : D! = P2%\n"
+                                       "20 SEEN? = (G = NUL) AND (H! = NUL) AND (A% = NUL)\n"
+                                       "30 #OK? = SEEN? AND (E = 2.5) AND (D! = 4)\nM30\n", encoding="latin-1")
+    r = _run(run_text, "10 CALL SUBN [2.5, 4]\nM30\n")
+    assert r["status"] == "ok", r["error"]
+    assert r["variables"]["#OK?"] is True
+
+
+def test_nul_variable_copied_into_another_numeric_type(run_text):
+    """``R = I%`` with I% unassigned copies NUL (as ``J% = I%`` does) instead of failing."""
+    r = _run(run_text, "10 R = 1 : D! = 1 : R = I% : D! = I%\n20 OK? = (R = NUL) AND (D! = NUL)\nM30\n")
+    assert r["status"] == "ok", r["error"]
+    assert r["variables"]["OK?"] is True
+
+
+def test_file_written_after_a_very_long_simulated_time(run_text):
+    """A feed move over 1e20 mm takes longer than a file time stamp can express: the file is still
+    written (os.utime's OverflowError used to read as INVALID INTEGER VALUE)."""
+    r = _run(run_text, '10 R = 99999999999999999999.5\nN20 G1 X[R] F100\n30 WAIT\n'
+                       '40 OPENW(1,"LOG") : PRN#(1,"A") : CLOSE(1)\n50 OPENR(1,"LOG") : INP#(1,A$) : CLOSE(1)\nM30\n')
+    assert r["status"] == "ok", r["error"]
+    assert r["variables"]["A$"] == "A"
+
+
+def test_mid_view_into_a_row_of_a_two_dimensional_field(run_text):
+    """``B$ = MID$(H$(1),2)`` is a live view into row 1 of ``DIM H$(2,4)`` (the view took the whole field and
+    failed with a TypeError read as VARIABLE NOT ASSIGNED)."""
+    r = _run(run_text, '10 DIM H$(2,4) : H$(1) = "ABCDEFG" : B$ = MID$(H$(1),2) : C$ = MID$(H$(2),1,1)\n'
+                       '20 H$(1) = "WXYZ" : PRN#(0,B$,"|",H$(1),"|",LEN(C$))\nM30\n')
+    assert r["status"] == "ok", r["error"]
+    assert r["output"] == ["XYZ|WXYZ|       -1"]

@@ -359,8 +359,8 @@ class Gen:
         if target_type == "R":
             if ty in ("B", "S"):
                 raise GenError("CPL021", f"{_tname(ty)} value assigned to a REAL variable")
-            if ty == "R" and isinstance(e, A.Var) and e.var.cls != "A":
-                return code
+            if isinstance(e, A.Var):  # a variable or parameter copied as it is: NUL stays NUL
+                return code if ty == "R" else f"_tor({code})"
             if isinstance(e, A.Num):
                 return repr(f32(e.value))
             return f"_f32({code})" if ty != "?" else f"_tor({code})"
@@ -370,7 +370,7 @@ class Gen:
             if isinstance(e, A.Num):
                 return repr(float(e.value))
             if ty == "I":
-                return f"float({code})"
+                return f"_tod({code})" if isinstance(e, A.Var) else f"float({code})"
             # a computed DOUBLE can overflow to infinity, which _tod refuses (range +/-1e308)
             return code if ty in ("R", "D") and isinstance(e, A.Var) else f"_tod({code})"
         if target_type == "B":
@@ -399,9 +399,11 @@ class Gen:
             raise GenError("CPL025", f"{v.display} is not DIMensioned; '+' results go to character fields only")
         if v.suffix == "$" and v.cls == "L" and not is_field_target and isinstance(e, A.Func) and e.name == "MID$" \
                 and len(e.args) >= 2 and isinstance(e.args[0], A.Var) and self._is_char_field(e.args[0]) \
-                and e.args[0].var.cls == "L":
-            # a live view into the field (manual L3373-3401)
+                and e.args[0].var.cls == "L" and len(e.args[0].index or ()) == self.fields[e.args[0].var] - 1:
+            # a live view into the field, or into one string of a 2-dimensional field (manual L3373-3401)
             src = self.local(e.args[0].var)
+            if e.args[0].index:
+                src = f"{src}.row({self.index(e.args[0].index[0])})"
             start = self.ex(e.args[1])[0]
             count = self.ex(e.args[2])[0] if len(e.args) > 2 and e.args[2] is not None else "None"
             self.emit(f"{self.local(v)} = _view({src}, {start}, {count})", line)

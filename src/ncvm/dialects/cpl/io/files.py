@@ -234,7 +234,10 @@ class CplFiles:
             os.fsync(fd)
         if self.clock is not None:
             t = float(getattr(self.clock, "start_epoch", 0.0)) + float(getattr(self.clock, "now", 0.0))
-            os.utime(path, (t, t))
+            try:
+                os.utime(path, (t, t))
+            except (OverflowError, ValueError, OSError):
+                pass  # a simulated time beyond what the file system can stamp: the file keeps its real time
 
     def _rewrite_all(self, h: Handle) -> None:
         data = "".join(r + "\n" for r in h.records) + EOF_MARKER
