@@ -159,3 +159,32 @@ def test_mid_view_into_a_row_of_a_two_dimensional_field(run_text):
                        '20 H$(1) = "WXYZ" : PRN#(0,B$,"|",H$(1),"|",LEN(C$))\nM30\n')
     assert r["status"] == "ok", r["error"]
     assert r["output"] == ["XYZ|WXYZ|       -1"]
+
+
+@pytest.mark.parametrize("stmt, code", [
+    ('MWD(0,"A",0,1)', "CPL801"), ('LIN(0,0,"A",1)', "CPL801"), ('CIR(0,0,"A")', "CPL801"),
+    ('GPR("A",1,"X")', "CPL801"), ("GPR(1,1,5)", "CPL023"), ("BMP(1,1,5)", "CPL023"), ('TFO("A")', "CPL023"),
+    ("I% = ERASE(1.5)", "CPL023"),
+])
+def test_graphics_and_text_arguments_of_the_wrong_type(run_text, stmt, code):
+    """A string where a coordinate belongs, or a number where a text belongs, is INVALID PARAMETER; the
+    Python ValueError/TypeError behind them used to read as a domain error or as VARIABLE NOT ASSIGNED."""
+    r = _run(run_text, f"10 {stmt}\nM30\n")
+    assert r["error"]["code"] == code
+
+
+def test_very_long_line_is_clipped_to_the_window():
+    """LIN to 3e9 pixels used to step through every pixel (hours); only the part inside the window is drawn,
+    with the same pixels as a line that ends at the window's edge."""
+    import time
+
+    from ncvm.dialects.cpl.io.screen import Screen
+
+    long, short = Screen(), Screen()
+    start = time.perf_counter()
+    long.LIN(0, 5, 3000000000, 5)
+    long.LIN(10, 0, 3000000010, 3000000000)
+    short.LIN(0, 5, 632, 5)
+    short.LIN(10, 0, 632, 622)
+    assert time.perf_counter() - start < 2
+    assert (long.canvas == short.canvas).all()
