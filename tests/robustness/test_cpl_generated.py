@@ -188,3 +188,12 @@ def test_very_long_line_is_clipped_to_the_window():
     short.LIN(10, 0, 632, 622)
     assert time.perf_counter() - start < 2
     assert (long.canvas == short.canvas).all()
+
+
+@pytest.mark.parametrize("expr", ["ABS(I%)", "BCD(99999999)"])
+def test_integer_function_result_outside_the_range_is_not_stored(run_text, expr):
+    """``J% = ABS(-2147483648)`` stored 2147483648 in an INTEGER variable: function results are range-checked
+    on assignment like any other expression (INVALID INTEGER VALUE)."""
+    r = _run(run_text, f"10 I% = -2147483648 : J% = {expr}\nM30\n")
+    assert r["error"]["code"] == "CPL027"
+    assert "J%" not in r["variables"]

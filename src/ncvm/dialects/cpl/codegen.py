@@ -348,9 +348,9 @@ class Gen:
             if isinstance(e, A.Num) and ty == "I" and not -2147483648 <= e.value <= 2147483647:
                 raise GenError("CPL027", f"{e.value} outside -2147483648..2147483647")
             if ty == "I":
-                if isinstance(e, (A.Num, A.Var, A.Func)):
+                if isinstance(e, (A.Num, A.Var)):
                     return code
-                return f"_toi({code})"
+                return f"_toi({code})"  # a function result too: ABS(-2147483648), BCD(99999999) leave the range
             if ty in ("R", "D"):
                 return "_bad_assign('REAL value assigned to an INTEGER variable (use INT or ROUND)')"
             if ty in ("B", "S"):
