@@ -27,7 +27,7 @@ def _num(v, name: str):
 
 
 def _int32(v: float, name: str) -> int:
-    if not -2147483648 <= v <= 2147483647:
+    if not -2147483648 <= v <= 2147483647:  # also false for NaN
         raise CplError("CPL027", f"{name} result {v} outside the INTEGER range")
     return int(v)
 
@@ -37,11 +37,14 @@ def f_abs(x):
 
 
 def f_int(x):
-    return _int32(math.trunc(_num(x, "INT")), "INT")
+    x = _num(x, "INT")
+    return _int32(x if x.__class__ is int else math.trunc(x) if x - x == 0.0 else x, "INT")
 
 
 def f_round(x):
     x = _num(x, "ROUND")
+    if x - x != 0.0:  # infinity or NaN: math.floor would raise before the range check
+        return _int32(x, "ROUND")
     r = math.floor(abs(x) + 0.5)
     return _int32(r if x >= 0 else -r, "ROUND")
 

@@ -8,11 +8,15 @@ REAL (binary32) comparison rule of digest §4.2 are decided here, not at run tim
 
 from __future__ import annotations
 
+import inspect
+
 from ...nc.block import PLAIN_WORDS
 from ...runtime.codegen import PySource
 from . import ast as A
 from .builtins import FUNCTIONS
 from .errors import diag
+from .io.files import CplFiles
+from .io.screen import Screen
 from .lexer import VarName
 from .system import SYSTEM_PROCS
 from .system.gfuncs import GEARS, TYP3_G
@@ -344,9 +348,9 @@ class Gen:
             if isinstance(e, A.Num) and ty == "I" and not -2147483648 <= e.value <= 2147483647:
                 raise GenError("CPL027", f"{e.value} outside -2147483648..2147483647")
             if ty == "I":
-                if isinstance(e, (A.Num, A.Var, A.Func)):
+                if isinstance(e, (A.Num, A.Var)):
                     return code
-                return f"_toi({code})"
+                return f"_toi({code})"  # a function result too: ABS(-2147483648), BCD(99999999) leave the range
             if ty in ("R", "D"):
                 return "_bad_assign('REAL value assigned to an INTEGER variable (use INT or ROUND)')"
             if ty in ("B", "S"):
@@ -355,8 +359,8 @@ class Gen:
         if target_type == "R":
             if ty in ("B", "S"):
                 raise GenError("CPL021", f"{_tname(ty)} value assigned to a REAL variable")
-            if ty == "R" and isinstance(e, A.Var) and e.var.cls != "A":
-                return code
+            if isinstance(e, A.Var):  # a variable or parameter copied as it is: NUL stays NUL
+                return code if ty == "R" else f"_tor({code})"
             if isinstance(e, A.Num):
                 return repr(f32(e.value))
             return f"_f32({code})" if ty != "?" else f"_tor({code})"
@@ -366,8 +370,9 @@ class Gen:
             if isinstance(e, A.Num):
                 return repr(float(e.value))
             if ty == "I":
-                return f"float({code})"
-            return code if ty in ("R", "D") else f"_tod({code})"
+                return f"_tod({code})" if isinstance(e, A.Var) else f"float({code})"
+            # a computed DOUBLE can overflow to infinity, which _tod refuses (range +/-1e308)
+            return code if ty in ("R", "D") and isinstance(e, A.Var) else f"_tod({code})"
         if target_type == "B":
             if ty in NUMERIC or ty == "S":
                 raise GenError("CPL021", f"{_tname(ty)} value assigned to a BOOLEAN variable")
@@ -394,9 +399,11 @@ class Gen:
             raise GenError("CPL025", f"{v.display} is not DIMensioned; '+' results go to character fields only")
         if v.suffix == "$" and v.cls == "L" and not is_field_target and isinstance(e, A.Func) and e.name == "MID$" \
                 and len(e.args) >= 2 and isinstance(e.args[0], A.Var) and self._is_char_field(e.args[0]) \
-                and e.args[0].var.cls == "L":
-            # a live view into the field (manual L3373-3401)
+                and e.args[0].var.cls == "L" and len(e.args[0].index or ()) == self.fields[e.args[0].var] - 1:
+            # a live view into the field, or into one string of a 2-dimensional field (manual L3373-3401)
             src = self.local(e.args[0].var)
+            if e.args[0].index:
+                src = f"{src}.row({self.index(e.args[0].index[0])})"
             start = self.ex(e.args[1])[0]
             count = self.ex(e.args[2])[0] if len(e.args) > 2 and e.args[2] is not None else "None"
             self.emit(f"{self.local(v)} = _view({src}, {start}, {count})", line)
@@ -606,11 +613,12 @@ class Gen:
         if name == "MMC":
             self.emit(self.mmc(s.args, line), line)
             return
-        if name == "ERASE":
-            self.emit(f"_io.files.ERASE({self.args(s)})", line)
-            return
-        target = IO_PROCS.get(name)
+        target = "files" if name == "ERASE" else IO_PROCS.get(name)
         if target is not None:
+            lo, hi = io_arity(target, name)
+            if not lo <= len(s.args) <= hi:
+                most = f"..{hi}" if hi < 99 else " or more"
+                raise GenError("CPL001", f"{name} takes {lo}{most} arguments, not {len(s.args)}")
             self.emit(f"_io.{target}.{name}({self.args(s)})", line)
             return
         if s.name in FUNCTIONS and s.name not in SYSTEM_PROCS:  # SCSL(...), MCOPS(...) as a statement
@@ -1159,10 +1167,20 @@ IO_PROCS = {
                               "CIR", "FIL", "CLG", "CLR", "CLS", "GPR", "BMP", "DLF")},
 }
 
+def io_arity(target: str, name: str) -> tuple[int, int]:
+    """How many arguments the statement ``name`` of a CplIO part takes: its method's positional parameters
+    (99 = any number), so that a wrong count is a compile error rather than a failed call at run time."""
+    method = getattr({"files": CplFiles, "screen": Screen}[target], name)
+    params = list(inspect.signature(method).parameters.values())[1:]  # without self
+    positional = [p for p in params if p.kind == p.POSITIONAL_OR_KEYWORD]
+    lo = sum(1 for p in positional if p.default is p.empty)
+    hi = 99 if any(p.kind == p.VAR_POSITIONAL for p in params) else len(positional)
+    return lo, hi
+
+
 #: built-ins with a numeric argument known at compile time, written inline (no call, no type check)
 INLINE = {
     "ABS": "abs({0})",
-    "INT": "int({0})",
     "SIN": "_msin({0} * 0.017453292519943295)",
     "COS": "_mcos({0} * 0.017453292519943295)",
     "ATAN": "(_matan({0}) * 57.29577951308232)",

@@ -24,13 +24,16 @@ INT_MAX = 2147483647
 def f32(v):
     """Round to binary32, as a REAL variable stores it."""
     try:
-        return _unpack(_pack(v))[0]
+        r = _unpack(_pack(v))[0]
     except OverflowError:
         raise CplError("CPL029", "value outside the REAL range (+/-1e38)") from None
     except struct.error:
         if v is None:
             raise TypeError("NUL") from None
         raise CplError("CPL021", f"{type_name(v)} value where a number is expected") from None
+    if r - r != 0.0:  # infinity or NaN: a DOUBLE result beyond the REAL range packs without OverflowError
+        raise CplError("CPL029", "value outside the REAL range (+/-1e38)")
+    return r
 
 
 def type_name(v) -> str:
@@ -63,9 +66,10 @@ def int_overflow(v):
 def to_real(v):
     if v.__class__ is float or v.__class__ is int:
         try:
-            return _unpack(_pack(v))[0]  # f32 without the call: every REAL parameter view comes here
+            r = _unpack(_pack(v))[0]  # f32 without the call: every REAL parameter view comes here
         except OverflowError:
             return f32(v)
+        return r if r - r == 0.0 else f32(v)
     if v is None:
         return None
     raise CplError("CPL021", f"{type_name(v)} value assigned to a REAL variable")
@@ -73,6 +77,8 @@ def to_real(v):
 
 def to_double(v):
     if v.__class__ is float:
+        if v - v != 0.0:  # infinity or NaN: the result left the DOUBLE range
+            raise CplError("CPL029", "value outside the DOUBLE range (+/-1e308)")
         return v
     if v.__class__ is int:
         return float(v)
@@ -123,9 +129,10 @@ def word_real(v):
     """``word(to_real(v))`` in one call: a parameter's REAL view as an NC word value (the common case)."""
     if v.__class__ is float or v.__class__ is int:
         try:
-            return _unpack(_pack(v))[0]
+            r = _unpack(_pack(v))[0]
         except OverflowError:
             return f32(v)
+        return r if r - r == 0.0 else f32(v)
     return word(to_real(v))
 
 

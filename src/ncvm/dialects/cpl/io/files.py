@@ -104,7 +104,7 @@ class CplFiles:
         if isinstance(name, int) and not isinstance(name, bool):
             name = f"P{name}"
         text = text_of(name)
-        if not text or not text.strip():
+        if not text or not text.strip() or "\x00" in text:  # CHR$(0) ends a name on the control's side
             raise fail("INVALID_FILE_NAME", repr(text))
         text = text.strip()
         base = text.replace("\\", "/").rstrip("/").split("/")[-1]
@@ -234,7 +234,10 @@ class CplFiles:
             os.fsync(fd)
         if self.clock is not None:
             t = float(getattr(self.clock, "start_epoch", 0.0)) + float(getattr(self.clock, "now", 0.0))
-            os.utime(path, (t, t))
+            try:
+                os.utime(path, (t, t))
+            except (OverflowError, ValueError, OSError):
+                pass  # a simulated time beyond what the file system can stamp: the file keeps its real time
 
     def _rewrite_all(self, h: Handle) -> None:
         data = "".join(r + "\n" for r in h.records) + EOF_MARKER
@@ -400,7 +403,10 @@ class CplFiles:
             if not INT_MIN <= value <= INT_MAX:
                 raise fail("INVALID_INTEGER_VALUE", record[off:end].strip())
             return int(value), end
-        value = float(value)
+        try:
+            value = float(value)
+        except OverflowError:  # an integer text of more than 309 digits
+            value = float("inf")
         if (target == "R" and abs(value) > REAL_MAX) or value in (float("inf"), float("-inf")):
             raise fail("INVALID_FLOAT_VALUE", record[off:end].strip())
         return value, end

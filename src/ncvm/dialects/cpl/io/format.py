@@ -19,7 +19,7 @@ import re
 import struct
 from collections import deque
 from dataclasses import dataclass
-from decimal import ROUND_HALF_UP, Decimal
+from decimal import ROUND_HALF_UP, Context, Decimal
 from typing import Iterable
 
 from .errors import fail
@@ -59,7 +59,10 @@ def format_number(value, kind: str, int_digits: int, decimals: int, *, pad: bool
     """
     if kind != "I" and (value != value or value in (float("inf"), float("-inf"))):
         return None
-    q = decimal_of(value, kind).quantize(Decimal(1).scaleb(-decimals), rounding=ROUND_HALF_UP)
+    exact = decimal_of(value, kind)
+    # room for every digit of the rounded value: a DOUBLE has up to 309 before the point
+    room = Context(prec=max(exact.adjusted(), 0) + decimals + 2)
+    q = exact.quantize(Decimal(1).scaleb(-decimals), rounding=ROUND_HALF_UP, context=room)
     if q.is_zero():
         q = abs(q)  # no "-0.00"
     text = format(q, f".{decimals}f")

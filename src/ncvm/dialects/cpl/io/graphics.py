@@ -50,10 +50,38 @@ class Window:
     yt: float
 
 
-def _int(value, name: str) -> int:
-    if isinstance(value, bool) or not isinstance(value, (int, float)):
+def _number(value, name: str) -> float:
+    """A coordinate or other graphics value: a finite number, else INVALID PARAMETER (not a Python error)."""
+    if isinstance(value, bool) or not isinstance(value, (int, float)) or value - value != 0:
         raise fail("INVALID_GRAPHICS_VALUE", f"{name} = {value!r}")
-    return int(round(value))
+    return float(value)
+
+
+def _int(value, name: str) -> int:
+    return int(round(_number(value, name)))
+
+
+#: a line longer than this many pixels is first clipped to the window (a LIN to 1e9 would step for hours)
+LONG_SEGMENT = 4096
+
+
+def _clip(x0: float, y0: float, x1: float, y1: float, w) -> tuple[float, float] | None:
+    """Liang-Barsky: the parameter range t0..t1 of the segment that lies inside window ``w``, or None."""
+    t0, t1 = 0.0, 1.0
+    dx, dy = x1 - x0, y1 - y0
+    for p, q in ((-dx, x0 - w.xl), (dx, w.xr - x0), (-dy, y0 - w.yb), (dy, w.yt - y0)):
+        if p == 0:
+            if q < 0:
+                return None
+            continue
+        t = q / p
+        if p < 0:
+            t0 = max(t0, t)
+        else:
+            t1 = min(t1, t)
+        if t0 > t1:
+            return None
+    return t0, t1
 
 
 class Graphics:
@@ -138,7 +166,7 @@ class Graphics:
 
     def MWD(self, xl, xr, yb, yt) -> None:  # noqa: N802
         """``MWD(xl,xr,yb,yt)``: user coordinates on the GWD window; the side ratio must be the same."""
-        xl, xr, yb, yt = (float(v) for v in (xl, xr, yb, yt))
+        xl, xr, yb, yt = (_number(v, n) for v, n in ((xl, "X left"), (xr, "X right"), (yb, "Y bottom"), (yt, "Y top")))
         if not (xl < xr and yb < yt):
             raise fail("INVALID_GRAPHICS_VALUE", f"MWD({xl:g},{xr:g},{yb:g},{yt:g})")
         w = self.window
@@ -196,9 +224,17 @@ class Graphics:
 
     def _segment(self, a: tuple[float, float], b: tuple[float, float]) -> None:
         (x0, y0), (x1, y1) = self.to_pixel(*a), self.to_pixel(*b)
+        if any(v - v != 0 for v in (x0, y0, x1, y1)):
+            return  # beyond every pixel
         n = int(max(abs(round(x1) - round(x0)), abs(round(y1) - round(y0))))
+        first, last = 0, n
+        if n > LONG_SEGMENT:  # step only through the part inside the window (the dash pattern keeps its phase)
+            inside = _clip(x0, y0, x1, y1, self.window)
+            if inside is None:
+                return
+            first, last = max(0, int(inside[0] * n) - 1), min(n, int(inside[1] * n) + 1)
         seen = set()
-        for i in range(n + 1):
+        for i in range(first, last + 1):
             t = i / n if n else 0.0
             p = (round(x0 + (x1 - x0) * t), round(y0 + (y1 - y0) * t))
             if p not in seen:
@@ -218,7 +254,7 @@ class Graphics:
         else:
             raise fail("INVALID_GRAPHICS_VALUE", f"LIN takes 2 or 4 values, not {len(args)}")
         xe, ye = (cx if xe is None else xe), (cy if ye is None else ye)
-        start, end = (float(xs), float(ys)), (float(xe), float(ye))
+        start, end = (_number(xs, "X start"), _number(ys, "Y start")), (_number(xe, "X end"), _number(ye, "Y end"))
         self._segment(start, end)
         self.point = end
 
@@ -227,7 +263,7 @@ class Graphics:
         repeat the previous circle's, an omitted end point of an arc is its start (a full circle)."""
         last = self.last_circle
         if len(args) == 3:
-            xc, yc, r = (last.get(k) if v is None else float(v) for k, v in zip(("xc", "yc", "r"), args))
+            xc, yc, r = (last.get(k) if v is None else _number(v, k) for k, v in zip(("xc", "yc", "r"), args))
             if None in (xc, yc, r):
                 raise fail("INVALID_GRAPHICS_VALUE", "CIR: omitted value with no circle before")
             last.update(xc=xc, yc=yc, r=r)
@@ -236,14 +272,14 @@ class Graphics:
         if len(args) != 6:
             raise fail("INVALID_GRAPHICS_VALUE", f"CIR takes 3 or 6 values, not {len(args)}")
         xs, ys, xe, ye, xc, yc = args
-        xs = last.get("xs") if xs is None else float(xs)
-        ys = last.get("ys") if ys is None else float(ys)
-        xc = last.get("xc") if xc is None else float(xc)
-        yc = last.get("yc") if yc is None else float(yc)
+        xs = last.get("xs") if xs is None else _number(xs, "xs")
+        ys = last.get("ys") if ys is None else _number(ys, "ys")
+        xc = last.get("xc") if xc is None else _number(xc, "xc")
+        yc = last.get("yc") if yc is None else _number(yc, "yc")
         if None in (xs, ys, xc, yc):
             raise fail("INVALID_GRAPHICS_VALUE", "CIR: omitted value with no circle before")
-        xe = xs if xe is None else float(xe)
-        ye = ys if ye is None else float(ye)
+        xe = xs if xe is None else _number(xe, "xe")
+        ye = ys if ye is None else _number(ye, "ye")
         r = math.hypot(xs - xc, ys - yc)
         a0, a1 = math.atan2(ys - yc, xs - xc), math.atan2(ye - yc, xe - xc)
         sweep = (a0 - a1) % (2 * math.pi) or 2 * math.pi  # clockwise, end = start is a full circle

@@ -21,7 +21,7 @@ import numpy as np
 
 from .errors import CplRuntimeError, WarnFn, fail
 from .format import TEMPLATE, OutputMode, format_items, format_number, template_shape
-from .graphics import BAND, HEIGHT, WIDTH, Graphics
+from .graphics import BAND, HEIGHT, WIDTH, Graphics, _int
 from .strings import scan_number
 from .values import is_text, kind_of, text_of
 
@@ -62,6 +62,13 @@ _SUFFIX = {  # cut -> file suffix per family
 
 
 @lru_cache(maxsize=64)
+def _whole(value, name: str) -> int:
+    """A TFO value: a number (truncated, as before), else INVALID PARAMETER."""
+    if isinstance(value, bool) or not isinstance(value, (int, float)) or value - value != 0:
+        raise fail("INVALID_PARAMETER", f"TFO {name} {value!r}")
+    return int(value)
+
+
 def font_for(number: int, cut: int, em_px: int):
     """A PIL font for TFO font ``number`` with ``cut`` (0..3), ``em_px`` pixels to the em."""
     import matplotlib
@@ -434,20 +441,20 @@ class Screen(Graphics):
         """``TFO(font,size,cut,orientation)``: omitted values stay as they are."""
         f, s, c, o = self.font
         if font is not None:
-            f = int(font)
+            f = _whole(font, "font")
             if f not in FONTS:
                 raise fail("INVALID_PARAMETER", f"TFO font {font!r} (0..10)")
         if size is not None:
-            s = int(size)
+            s = _whole(size, "size")
             height, width = s % 1000, s // 1000
             if s < 0 or height > 500 or width > 500 or (s and not height):
                 raise fail("INVALID_PARAMETER", f"TFO size {size!r}")
         if cut is not None:
-            c = int(cut)
+            c = _whole(cut, "cut")
             if not 0 <= c <= 3:
                 raise fail("INVALID_PARAMETER", f"TFO cut {cut!r} (0..3)")
         if orientation is not None:
-            o = int(orientation)
+            o = _whole(orientation, "orientation")
             if not 0 <= o <= 360:
                 raise fail("INVALID_PARAMETER", f"TFO orientation {orientation!r} (0..360)")
         self.font = (f, s, c, o)
@@ -459,7 +466,7 @@ class Screen(Graphics):
     def GPR(self, x, y, text) -> None:  # noqa: N802
         """``GPR(xpix,ypix[+40],text)``: text with its bottom-left at pixel (x, y), y counted from the
         bottom of the softkey band (add 40 to match the other graphics commands)."""
-        px, py = int(round(x)), int(round(y))
+        px, py = _int(x, "X value"), _int(y, "Y value")
         if not (0 <= px <= WIDTH - 1 and 0 <= py <= HEIGHT - 1):
             raise fail("INVALID_GRAPHICS_VALUE", f"GPR({x!r},{y!r})")
         string = text_of(text) or ""

@@ -19,6 +19,7 @@ from .values import CplText, kind_of, text_of
 
 MAX_FIELD = 1024  # characters in a character field, and the range of MID$/INSTR positions
 MAX_CHAIN = 3  # operands of one chaining with "+" (L3773)
+DIGITS = "0123456789"  # ASCII only: str.isdigit also takes the Latin-1 superscripts (CHR$(178) is "²")
 
 
 class CharacterField(CplText):
@@ -189,11 +190,11 @@ def scan_number(text: str, pos: int = 0) -> tuple[int | float, int] | None:
         while i < n and text[i] == " ":
             i += 1
     digits, point = "", False
-    while i < n and (text[i].isdigit() or (text[i] == "." and not point)):
+    while i < n and (text[i] in DIGITS or (text[i] == "." and not point)):
         point = point or text[i] == "."
         digits += text[i]
         i += 1
-    if not any(c.isdigit() for c in digits):
+    if not any(c in DIGITS for c in digits):
         return None
     value: int | float = sign * float(digits) if point else sign * int(digits)
     return value, i

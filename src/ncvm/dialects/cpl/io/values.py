@@ -10,6 +10,8 @@ Conventions for the code generator:
 
 from __future__ import annotations
 
+from .errors import fail
+
 
 class Double(float):
     """A DOUBLE-typed value (``X!``): formatted with the DOUBLE standard format 9.6."""
@@ -33,7 +35,7 @@ def text_of(value) -> str | None:
         return value
     if isinstance(value, CplText):
         return value.text
-    raise TypeError(f"not a CPL string: {value!r}")
+    raise fail("INVALID_PARAMETER", f"a string is needed here, not {value!r}")
 
 
 def is_text(value) -> bool:
