@@ -22,8 +22,10 @@ _GET_M = attrgetter("m")
 
 class Commands:
     # -- helpers ------------------------------------------------------------------------------------
-    def src(self, tk, loc: int) -> Src:
-        return tk.unit.srcs[loc]
+    def src(self, tk, loc: int | Src) -> Src:
+        """The source place of statement ``loc`` of the task's program; a spooled move carries its
+        own, since another task's SSMS may start it (the spoolers belong to the axes, not the tasks)."""
+        return loc if isinstance(loc, Src) else tk.unit.srcs[loc]
 
     def others_running(self, tk) -> bool:
         for t in self.tasks:
@@ -116,7 +118,7 @@ class Commands:
             if a.flags:
                 a.flags &= ~self.refused_mask
         tk.time = end_t
-        self.canon.feed(start, tuple(pos), v * 60.0, tk.unit.srcs[loc])
+        self.canon.feed(start, tuple(pos), v * 60.0, self.src(tk, loc))
         return True
 
     def _linear(self, tk, items, loc, relative: bool, wait: bool):
@@ -281,7 +283,7 @@ class Commands:
         for ax in axes:
             self.check_axis(ax)
         sysp = dict(tk.sysp)
-        entry = ("move", kind, tuple(items), loc, target, sysp)
+        entry = ("move", kind, tuple(items), self.src(tk, loc), target, sysp)
         cap = int(self.cfg["spool_capacity"])
         if any(self.spool_used(ax, tk.time) >= cap for ax in axes):
             # AutoSpool (MODEREG bit 5, L1396): with the spooler full, its processing starts and further
