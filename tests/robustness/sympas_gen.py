@@ -42,6 +42,24 @@ class Program:
     expected: dict[str, float] = field(default_factory=dict)
     #: run-time error codes this program may legitimately end with
     allowed: set[str] = field(default_factory=set)
+    #: the error code the probe at the end of task 0 must end the run with (None: no probe)
+    fault: str | None = None
+
+
+#: statements at the end of task 0 that must fault with the manual's number (§6.8, Table 40);
+#: each gets the declarations ``pz: integer; pd: double; VA: AXIS;`` and function ``Deep``
+PROBES = [
+    ("pz := 0; pz := 7 mod pz", "32768"),
+    ("pz := 0; pz := 7 / pz", "32768"),
+    ("pd := 0.0; pd := 1.5 / pd", "32768"),
+    ("pd := RDCBD(4)", "2048"),
+    ("WRCBD(12, 1.0)", "2048"),
+    ("pz := RDCBI(2)", "256"),
+    ("WRCBI(1000, 1)", "256"),
+    ("pz := Deep(100000)", "8"),
+    ("VA.an := 7; MLA(VA := 1.0)", "256"),
+    ("VA.an := -1; JS(VA)", "256"),
+]
 
 
 @dataclass
@@ -49,6 +67,7 @@ class Scope:
     vars: dict[str, str]  # name -> type
     loopvars: list[str]
     func: tuple[str, str] | None = None  # (name, result type) of the function whose body this is
+    label: list[str] = field(default_factory=list)  # declared labels not yet placed
 
 
 class Gen:
@@ -62,6 +81,9 @@ class Gen:
         self.positions: dict[str, float | None] = {a: 0.0 for a in AXES}
         self.track = True
         self.n = 0
+        self.fault: str | None = None
+        self.control: list[int] = []  # tasks this task may stop, continue, step and restart
+        self.axisvar = False
         self.frozen: set[str] = set()  # recursion counters: never assigned, so the recursion ends
 
     # --- names and literals
@@ -196,7 +218,7 @@ class Gen:
                 if procs:
                     name, params, _ = r.choice(procs)
                     return name + self.args(scope, params)
-            if k < 0.55 and motion:
+            if k < 0.6 and motion:
                 self.track = False
                 return self.motion(scope)
             if k < 0.62:
@@ -224,8 +246,17 @@ class Gen:
                        f"until {lv} >= {r.randint(1, 4)} end"
             if k < 0.87:
                 return "begin " + "; ".join(self.stmt(scope, motion) for _ in range(r.randint(0, 3))) + " end"
-            if k < 0.92:
+            if k < 0.9:
                 return self.case(scope, motion)
+            if k < 0.94 and "tm" in self.globals and not scope.func:
+                return f"begin tm := CLOCK + {r.randint(0, 200)}; repeat WT({r.randint(1, 9)}) until CLOCK > tm end"
+            if k < 0.96 and self.control:
+                t = r.choice(self.control)
+                return r.choice([f"STOPCNCT({t})", f"CONTCNCT({t})", f"STEPCNCT({t})", f"STOPTOSS({t})",
+                                 f"STARTCNCT({t})"])
+            if k < 0.97 and self.axisvar and motion:
+                self.track = False
+                return f"for VB.an := 0 to 2 do {r.choice(['JS', 'MS', 'SSMS'])}(VB)"
             return f"WT({r.randint(0, 50)})"
         finally:
             self.depth -= 1
@@ -305,13 +336,36 @@ class Gen:
                         out.append(f"SMLR({', '.join(f'{a} := {v}' for a, v in items.items())})")
                 out.append(f"SSMSW({', '.join(ax)})")
                 return "; ".join(out)
-            if k < 0.93:
+            if k < 0.88:
                 a, b = r.sample(AXES, 2)
                 # a full circle (PHI 360) returns to the start point
                 return f"MCRW({a} := {self.pos() / 8}, {b} := {self.pos() / 8}, PHI := 360.0)"
+            if k < 0.9 and None not in (self.positions[AXES[0]], self.positions[AXES[1]]):
+                cx, cy = self.positions[AXES[0]] + self.pos() / 8, self.positions[AXES[1]] + self.pos() / 8
+                return f"MCAW(A1 := {cx}, A2 := {cy}, PHI := {r.choice(['360.0', '-720.0'])})"
+            if k < 0.93:
+                a, b, c = r.sample(AXES, 3)
+                dz = self.pos() / 8
+                p = self.positions[c]
+                self.positions[c] = None if p is None else p + dz
+                return f"MHRW({a} := {self.pos() / 8}, {b} := {self.pos() / 8}, PHI := 360.0, {c} := {dz})"
+            if k < 0.95:
+                a = r.choice(AXES)
+                self.positions[a] = v = self.pos()
+                return f"SHP({a} := {v})"
+            if k < 0.97:
+                # edge cases: zero-length moves, circles of radius 0, stops and spooler starts on idle axes
+                a, b, c = r.sample(AXES, 3)
+                return r.choice([f"MLRW({a} := 0.0)", f"JRW({a} := 0)", f"MCRW({a} := 0.0, {b} := 0.0, PHI := 90.0)",
+                                 f"MHRW({a} := 0.0, {b} := 0.0, PHI := 180.0, {c} := 0.0)", f"SSMSW({a})",
+                                 f"MSW({a}, {b})", f"JSW({c})", f"SMLR({a} := 0.0); SSMSW({a})",
+                                 f"SSF({a} := 1, SSFP := 1001); SMLR({a} := 0.0); SSMSW({a})",
+                                 f"MCRW({a} := 1.0, {b} := 0.0, PHI := 0.0)"])
             ax = r.sample(AXES, 1)[0]
             self.positions[ax] = None
             return f"{r.choice(['JHLW', 'JHRW'])}({ax})"
+        if r.random() < 0.35:
+            return self.chaos(scope)
         k = r.random()
         ax = self.axes()
         items = ", ".join(f"{a} := {self.expr(scope, r.choice(NUM))}" for a in ax)
@@ -335,7 +389,30 @@ class Gen:
             return f"JHI({r.choice(AXES)} := {r.choice(['1.0', '-2.0', '5.0'])})"
         if k < 0.9:
             return f"SHP({r.choice(AXES)} := {self.pos()})"
+        if k < 0.85:
+            return self.chaos(scope)
         return f"{r.choice(AXES)}.jac := 1000.0; {r.choice(AXES)}.jvl := {r.choice(['50.0', '200.0'])}"
+
+    def chaos(self, scope):
+        """System parameters and axis commands that change how later moves run (units, mode bits,
+        target velocities, zero points, loop state): the model does not follow them."""
+        r = self.r
+        a, b = r.sample(AXES, 2)
+        return r.choice([
+            f"MODEREG := {r.choice([1, 2, 0x20, 0x41, 0x81, 0x100, 0x8000, 0x10000020, 0x20000000, 0x4000000, 0x800])}",
+            f"PU := {r.randint(0, 7)}", f"TU := {r.randint(0, 2)}", f"TRTVL := {r.choice(['0.0', '5.0', '50.0'])}",
+            f"{a}.jtv := {r.choice(['0.0', '10.0'])}", f"SZPA({a} := {self.pos()})", f"SZPR({a} := {self.pos()})",
+            f"AZO({r.randint(0, 4)})", f"CL({a}, {b})", f"OL({a})", f"CLV({a}); JS({a})", f"RA({a})",
+            f"LPR({a})", f"LPRS({a}, {b})", f"NFRAX := {r.randint(0, 7)}",
+            f"TROVRST := {r.choice(['0.0', '0.1'])}", f"JHI({a} := {r.choice(['1.0', '-3.0'])})",
+            f"SSF({a} := {r.randint(0, 9)}, SSFP := {r.choice([1, 1000, 1001, 7])})",
+            f"{a}.kp := 5.0; {a}.ki := 0.0; {a}.kd := 0.0; {a}.kpl := 0.0; {a}.kfca := 0.0; {a}.kfcv := 0.0; UF({a})",
+            f"PN1 := 1.0; PN2 := 0.0; PN3 := {r.choice(['1.0', '0.0'])}; "
+            f"{r.choice(['MCA3D', 'MCR3D', 'SMCR3D', 'MCR3DW'])}(A1 := {self.pos()}, A2 := 0.0, A3 := 0.0, PHI := 90.0)",
+            f"DTCA1 := {self.pos() / 8}; DTCA2 := 0.0; {r.choice(['MHA', 'MHR', 'SMHR', 'MHRW'])}"
+            f"(A1 := {self.pos() / 8}, A2 := 0.0, PHI := {r.choice(['1.0', '-1e-100'])}, A3 := 10.0, "
+            f"DTCA1 := {self.pos() / 8}, DTCA2 := 0.0)",
+        ])
 
     # --- declarations
     def decl_vars(self, n, names_prefix="g"):
@@ -390,6 +467,8 @@ class Gen:
                     f"DISEV({ev})"]
             if self.r.random() < 0.3:
                 body.insert(1, self.stmt(scope, motion=False))
+            if not self.track and self.r.random() < 0.3:
+                body.insert(1, self.r.choice(["ABORT", "STOP", "MLRW(A3 := 1.0)", "JSW(A1)", "MSW(A1, A2)"]))
             out += f"procedure {ev};\nbegin\n  " + ";\n  ".join(body) + "\nend;\n"
             self.events.append(ev)
         return out
@@ -399,6 +478,8 @@ class Gen:
         r = self.r
         self.globals = self.decl_vars(r.randint(1, 5))
         self.globals["tm"] = "timer"
+        self.control = list(others)
+        self.axisvar = r.random() < 0.3
         self.consts = {}
         self.routines = []
         self.events = []
@@ -410,7 +491,13 @@ class Gen:
             consts = f"const {c} = {r.randint(0, 100)};\n"
         decls = self.var_part({**self.globals, **{lv: "integer" for lv in loops}})
         routines = self.event_handlers() + "".join(self.routine() for _ in range(r.randint(0, 4)))
-        scope = Scope({}, loops)
+        labels = [self.name("L") for _ in range(r.randint(0, 2))]
+        if labels:
+            decls = f"label {', '.join(labels)};\n" + decls
+            labels = labels[:1]  # one goto loop; a label declared and not placed is allowed
+        if self.axisvar:
+            decls += "var VB: AXIS;\n"
+        scope = Scope({}, loops, None, list(labels))
         body = []
         if self.events:
             body += [f"ENEV({e})" for e in self.events]
@@ -419,15 +506,28 @@ class Gen:
             for t in others:
                 body.append(f"STARTCNCT({t})")
         for _ in range(r.randint(2, 8)):
-            if task == 0 and self.track and r.random() < 0.4:
+            if scope.label and r.random() < 0.3:
+                # a goto loop: labels stand in the block's own statement sequence (L936)
+                lv, lab = scope.loopvars[0], scope.label.pop()
+                inner = Scope(scope.vars, scope.loopvars[1:], None)
+                body += [f"{lv} := 0", f"{lab}: {self.stmt(inner, motion=task == 0 and r.random() < 0.2)}",
+                         f"{lv} := {lv} + 1", f"if {lv} < {r.randint(1, 3)} then goto {lab}"]
+            elif task == 0 and self.track and r.random() < 0.4:
                 body.append(self.motion(scope, wait=True))
             else:
-                body.append(self.stmt(scope, motion=task == 0 and r.random() < 0.2))
+                body.append(self.stmt(scope, motion=r.random() < 0.5))
         if task == 0:
             for t in others:
                 body.append(r.choice([f"STOPCNCT({t})", f"WT(100); STOPCNCT({t})"]))
             if self.track:
                 body.append(self.motion(scope, wait=True))
+            if r.random() < 0.25:
+                probe, self.fault = r.choice(PROBES)
+                body.append(probe)
+                decls += "var pz: integer; pd: double; VA: AXIS;\n"
+                routines += "function Deep(n: integer): integer;\nbegin\n  if n > 0 then Deep := Deep(n - 1) + 1\nend;\n"
+        if task and r.random() < 0.3:
+            body.append(r.choice(["STOP", "ABORT", "WT(5000)"]))
         header = f"{{$TASK {task}}}\n" if others or task else ""
         return f"{header}program T{task};\n{consts}{decls}{routines}begin\n  " + ";\n  ".join(body) + "\nend.\n"
 
@@ -440,13 +540,13 @@ class Gen:
             self.track = False
             texts.append(self.task_program(t, []))
         scen = ""
-        for _ in range(r.randint(0, 3)):
-            scen += f'\n[[scenario]]\ntime = {r.uniform(0, 2):.3f}\nkind = "input"\naxis = "A1"\n' \
+        for _ in range(r.randint(0, 5)):
+            scen += f'\n[[scenario]]\ntime = {r.choice([r.uniform(0, 0.05), r.uniform(0, 2)]):.3f}\nkind = "input"\naxis = "A1"\n' \
                     f'bit = {r.randint(1, 2)}\nvalue = {r.choice(["true", "false"])}\n'
         expected = {}
         if track and not others:
             expected = {AXIS_NAMES[a]: v for a, v in positions.items() if v is not None}
-        return Program("".join(texts), MACHINE + scen, expected, {"32768"})
+        return Program("".join(texts), MACHINE + scen, expected, {"32768"}, self.fault)
 
 
 def generate(seed) -> Program:
