@@ -96,3 +96,22 @@ end.
     assert errors == []
     assert r["status"] == "ok", r["error"]
     assert r["variables"] == {"p": 20.0, "q": 0.0, "refused": True}
+
+
+@pytest.mark.parametrize("statement, line_text", [
+    ("MCR(A1 := 1.0, A2 := 0.0, PHI := n)", "PHI"),      # was ValueError: cannot convert float NaN to integer
+    ("MLAW(A1 := n)", "axis value"),                      # the same in the target rounding
+    ("SMLR(A3 := n); SSMSW(A3)", "axis value"),
+    ("TRVL := n; MLAW(A1 := 1.0)", "TRVL"),
+    ("A1.jvl := n; JRW(A1 := 1.0)", "A1.jvl"),            # ran for ever without counting steps
+])
+def test_nan_as_a_move_parameter_is_error_32768(tmp_path, statement, line_text):
+    # SQRT(-1) has "no valid return value" (NaN, digest §6.3.1); used as a position, angle, velocity or
+    # qualifier it is an invalid parameter in an arithmetic operation (Table 40, $8000), not a traceback
+    text = f"program P;\nvar n: double;\nbegin\n  n := SQRT(-1.0);\n  {statement};\nend.\n"
+    errors, r = _run(tmp_path, text, max_steps=20_000)
+    assert errors == []
+    assert r["error"]["code"] == "32768", r["error"]
+    assert line_text in r["error"]["message"]
+    assert r["error"]["line"] == 5
+    assert r["position"] == {"X": 0.0, "Y": 0.0, "Z": 0.0}
