@@ -262,6 +262,9 @@ class Card(Commands):
 
     def set_qual(self, tk, ax: int, name: str, value) -> None:
         a = self.check_axis(ax)
+        if isinstance(value, float) and not math.isfinite(value):
+            # NaN or inf (a math function's "no valid return value") as a position, velocity or gain
+            fault(32768, f"{a.name}.{name} := {value}: not a valid parameter value")
         if name in ("digi", "ifs"):
             setattr(a, name, 0 if name == "ifs" else a.digi)  # writing clears the latched flags (L1444)
             return

@@ -298,12 +298,12 @@ class CodeGen:
             call = f"_card.cmd_{base}(tk, _it, {loc}{', True' if target else ''})"
             if base in ("mlaw", "mlrw") and self.const_axes and all(isinstance(a.sym, AxisSpec) for a in c.axes):
                 # the common waiting line: one call when nothing else can happen meanwhile
-                self.emit(f"_it = ({items},)", node)
+                self.emit(f"_it = _axis_values(({items},))", node)
                 self.emit(f"if not _card.fast_line(tk, _it, {loc}, {base == 'mlrw'}):", node)
                 self.emit(f"    _g = {call}", node)
                 self.emit("    if _g is not None: yield from _g", node)
             else:
-                self.emit(f"_it = ({items},)", node)
+                self.emit(f"_it = _axis_values(({items},))", node)
                 self.emit(f"_g = {call}", node)
                 self.emit("if _g is not None: yield from _g", node)
 

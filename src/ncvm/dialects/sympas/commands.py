@@ -22,8 +22,10 @@ _GET_M = attrgetter("m")
 
 class Commands:
     # -- helpers ------------------------------------------------------------------------------------
-    def src(self, tk, loc: int) -> Src:
-        return tk.unit.srcs[loc]
+    def src(self, tk, loc: int | Src) -> Src:
+        """The source place of statement ``loc`` of the task's program; a spooled move carries its
+        own, since another task's SSMS may start it (the spoolers belong to the axes, not the tasks)."""
+        return loc if isinstance(loc, Src) else tk.unit.srcs[loc]
 
     def others_running(self, tk) -> bool:
         for t in self.tasks:
@@ -116,14 +118,14 @@ class Commands:
             if a.flags:
                 a.flags &= ~self.refused_mask
         tk.time = end_t
-        self.canon.feed(start, tuple(pos), v * 60.0, tk.unit.srcs[loc])
+        self.canon.feed(start, tuple(pos), v * 60.0, self.src(tk, loc))
         return True
 
     def _linear(self, tk, items, loc, relative: bool, wait: bool):
         axes = tuple(ax for ax, _ in items)
         start = self.prepare(tk, axes, loc)
         if start is None:
-            return None
+            return self._wait(tk, axes, wait)  # refused: a W form still waits for its axes (§6.5)
         f, _ = self.units(tk)
         axes, p0, p1 = self._user_to_machine(tk, items, relative, start, f)
         p1 = tuple(self.round_counts(x) for x in p1)
@@ -136,7 +138,7 @@ class Commands:
         if any(nfrax >> ax & 1 or self.rotary[ax] for ax in axes) and length > 0.0:
             mv.weights = tuple(0.0 if nfrax >> ax & 1 else self.weight(tk, ax) for ax in axes)
         if not self.start_path(tk, mv, length, loc):
-            return None
+            return self._wait(tk, axes, wait)
         return self._wait(tk, axes, wait)
 
     def cmd_mla(self, tk, items, loc):
@@ -156,7 +158,7 @@ class Commands:
         axes = tuple(ax for ax, _ in items)
         start = self.prepare(tk, axes, loc)
         if start is None:
-            return None
+            return self._wait(tk, axes, wait)
         f, _ = self.units(tk)
         p0 = tuple(start[ax] for ax in axes)
         sh = [self.user_shift(self.axes[ax]) for ax in axes]
@@ -178,7 +180,7 @@ class Commands:
             if r0 == 0 or abs(r1 - r0) > 1e-3 * r0 + 1e-9:
                 for ax in axes:
                     self.axes[ax].flags |= 1 << self.cfg["axst_bits"]["refused"]
-                return None
+                return self._wait(tk, axes, wait)
             a0 = math.atan2(q0[1] - c[1], q0[0] - c[0])
             a1 = math.atan2(e[1] - c[1], e[0] - c[0])
             d = a1 - a0
@@ -216,7 +218,7 @@ class Commands:
         if w != (1.0, 1.0) or any(nfrax >> ax & 1 or self.rotary[ax] for ax in axes[2:]):
             mv.weights = w + tuple(0.0 if nfrax >> ax & 1 else self.weight(tk, ax) for ax in axes[2:])
         if not self.start_path(tk, mv, length, loc):
-            return None
+            return self._wait(tk, axes, wait)
         return self._wait(tk, axes, wait)
 
     def cmd_mca(self, tk, items, loc, target=False):
@@ -237,7 +239,7 @@ class Commands:
         axes = tuple(ax for ax, _ in items)
         start = self.prepare(tk, axes, loc)
         if start is None:
-            return None
+            return self._wait(tk, axes, wait)
         f, _ = self.units(tk)
         p0 = tuple(start[ax] for ax in axes)
         sh = [self.user_shift(self.axes[ax]) for ax in axes]
@@ -247,7 +249,7 @@ class Commands:
         if nl == 0:
             for ax in axes:
                 self.axes[ax].flags |= 1 << self.cfg["axst_bits"]["refused"]
-            return None
+            return self._wait(tk, axes, wait)
         n = tuple(x / nl for x in n)
         c = tuple(p0[k] + vals[k] if relative else vals[k] + sh[k] for k in range(3))
         # the centre is projected into the plane through p0 (digest §10.5: parallel plane through p0)
@@ -260,7 +262,7 @@ class Commands:
         mv = Move(axes, p0, p1, "arc3d", self.src(tk, loc), start)
         mv.center, mv.radius, mv.phi, mv.normal = c, radius, phi, n
         if not self.start_path(tk, mv, abs(radius * phi), loc):
-            return None
+            return self._wait(tk, axes, wait)
         return self._wait(tk, axes, wait)
 
     def cmd_mca3d(self, tk, items, loc, target=False):
@@ -281,7 +283,7 @@ class Commands:
         for ax in axes:
             self.check_axis(ax)
         sysp = dict(tk.sysp)
-        entry = ("move", kind, tuple(items), loc, target, sysp)
+        entry = ("move", kind, tuple(items), self.src(tk, loc), target, sysp)
         cap = int(self.cfg["spool_capacity"])
         if any(self.spool_used(ax, tk.time) >= cap for ax in axes):
             # AutoSpool (MODEREG bit 5, L1396): with the spooler full, its processing starts and further
@@ -588,7 +590,7 @@ class Commands:
         moving = {ax: self.axis_velocity(self.axes[ax], t) for ax in axes if self._jogging(self.axes[ax], t)}
         start = self.prepare(tk, axes, loc, set(moving))
         if start is None:
-            return None
+            return self._wait(tk, axes, wait)
         src = self.src(tk, loc)
         for ax, v in items:
             a = self.axes[ax]
@@ -684,7 +686,7 @@ class Commands:
         t = tk.time
         start = self.prepare(tk, axes, loc)
         if start is None:
-            return None
+            return self._wait(tk, axes, wait)
         src = self.src(tk, loc)
         refs = self.cfg["ref_positions"]
         failed = 1 << self.cfg["axst_bits"]["home_failed"]

@@ -163,6 +163,9 @@ class Task:
 
     def set_sys(self, name: str, value) -> None:
         if name in self.sysp:
+            if isinstance(value, float) and not math.isfinite(value):
+                # a math function's "no valid return value" (NaN, inf) cannot drive a move (Table 40, $8000)
+                fault(32768, f"{name} := {value}: not a valid parameter value")
             self.sysp[name] = value
             if name in ("PU", "TU", "NFRAX"):
                 self.plain_units = not (self.sysp["PU"] or self.sysp["TU"] or self.sysp["NFRAX"])

@@ -113,6 +113,15 @@ MATH["ATAN"] = math.atan
 MATH["TANH"] = math.tanh
 
 
+def axis_values(items: tuple) -> tuple:
+    """The (axis, value) items of a move or zero-point command: NaN or inf (a math function's "no valid
+    return value") is an invalid parameter (Table 40, $8000), not a position."""
+    for _, v in items:
+        if not math.isfinite(v):
+            fault(32768, f"axis value {v} is not a valid parameter")
+    return items
+
+
 def namespace(card) -> dict:
     """The globals every generated unit runs in."""
 
@@ -121,7 +130,7 @@ def namespace(card) -> dict:
         return wrap32(x)
 
     ns = {"_ovf": ovf, "_idiv": idiv, "_imod": imod, "_rdiv": rdiv, "_f32": f32, "_t2i": t2i, "_toint": toint,
-          "_msqrt": math.sqrt, "_NAN": math.nan, "_fmt": fmt, "_DIGITS": int(card.cfg["write_digits"]), "_fault": fault, "_Goto": Goto, "_GOTO": GOTO, "__builtins__": __builtins__}
+          "_msqrt": math.sqrt, "_NAN": math.nan, "_fmt": fmt, "_DIGITS": int(card.cfg["write_digits"]), "_fault": fault, "_axis_values": axis_values, "_Goto": Goto, "_GOTO": GOTO, "__builtins__": __builtins__}
     for name, fn in MATH.items():
         ns["_F_" + name] = fn
     return ns
