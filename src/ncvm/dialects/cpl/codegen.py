@@ -423,6 +423,11 @@ class Gen:
                     self.emit(f"{name} = {code}", line)
                     self.emit(f"if not -2147483648 <= {name} <= 2147483647: {name} = _toi({name})", line)
                     return
+                if v.type == "D" and ty in ("R", "D") and not isinstance(e, (A.Var, A.Num)):
+                    # computed DOUBLE: x - x is 0.0 unless x is infinity or NaN (the result left the range)
+                    self.emit(f"{name} = {code}", line)
+                    self.emit(f"if {name} - {name}: {name} = _tod({name})", line)
+                    return
                 value = self.convert(v.type, e, code, ty)
                 self.emit(f"{name} = {value}", line)
                 return
@@ -1181,6 +1186,9 @@ def io_arity(target: str, name: str) -> tuple[int, int]:
 #: built-ins with a numeric argument known at compile time, written inline (no call, no type check)
 INLINE = {
     "ABS": "abs({0})",
+    # INT: truncation with the 32-bit range check inline; infinity, NaN or a result out of range go to the
+    # checked built-in, which names the error
+    "INT": "(_t if (_a := ({0})) - _a == 0.0 and -2147483648 <= (_t := int(_a)) <= 2147483647 else _F_INT(_a))",
     "SIN": "_msin({0} * 0.017453292519943295)",
     "COS": "_mcos({0} * 0.017453292519943295)",
     "ATAN": "(_matan({0}) * 57.29577951308232)",
