@@ -53,3 +53,33 @@ name = "Z"
 min = -1000.0
 max = 1000.0
 """
+
+
+#: the acceptance program the digest proposes (§9), shared by the tests that run it
+ACCEPTANCE_PROGRAM = """program Accept;
+{$TASK 0}
+const sec = 15625; n = 5;
+var i, acc: integer; t: timer; d: double; ok: boolean;
+function Fak(k: integer): integer;
+begin if k <= 1 then Fak := 1 else Fak := k * Fak(k - 1); end;
+procedure EVUI; begin CI1 := CI1 + 1; end;
+begin
+  acc := 0;
+  for i := 1 to n do acc := acc + i;          { 15 }
+  d := SQRT(SQR(3.0) + SQR(4.0));            { 5.0 }
+  ok := (acc = 15) and (Fak(5) = 120) and (7 / 2 = 3) and (-7 mod 2 = -1);
+  WRCBD(8, d); WRCBI(16, acc);
+  t := CLOCK + sec;
+  enev(EVUI);
+  repeat until CLOCK > t;
+  writeln('acc=', acc, ' d=', RDCBD(8), ' ok=', ok);
+  CL(A1, A2); TRVL := 100.0; TRAC := 1000.0;  { PU/TU defaults: mm, s }
+  MLAW(A1 := 10.0, A2 := 20.0);
+  if (A1.dp = 10.0) and (A2.dp = 20.0) then writeln('moved');
+end.
+"""
+
+
+@pytest.fixture
+def acceptance_program() -> str:
+    return ACCEPTANCE_PROGRAM

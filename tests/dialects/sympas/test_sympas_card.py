@@ -13,31 +13,9 @@ def prog(body: str, decls: str = "") -> str:
     return f"program T;\n{decls}\nbegin\n{body}\nend.\n"
 
 
-def test_acceptance_program_of_the_digest(sap):
+def test_acceptance_program_of_the_digest(sap, acceptance_program):
     # digest §9: the proposed acceptance program (its motion part included)
-    text = """program Accept;
-{$TASK 0}
-const sec = 15625; n = 5;
-var i, acc: integer; t: timer; d: double; ok: boolean;
-function Fak(k: integer): integer;
-begin if k <= 1 then Fak := 1 else Fak := k * Fak(k - 1); end;
-procedure EVUI; begin CI1 := CI1 + 1; end;
-begin
-  acc := 0;
-  for i := 1 to n do acc := acc + i;          { 15 }
-  d := SQRT(SQR(3.0) + SQR(4.0));            { 5.0 }
-  ok := (acc = 15) and (Fak(5) = 120) and (7 / 2 = 3) and (-7 mod 2 = -1);
-  WRCBD(8, d); WRCBI(16, acc);
-  t := CLOCK + sec;
-  enev(EVUI);
-  repeat until CLOCK > t;
-  writeln('acc=', acc, ' d=', RDCBD(8), ' ok=', ok);
-  CL(A1, A2); TRVL := 100.0; TRAC := 1000.0;  { PU/TU defaults: mm, s }
-  MLAW(A1 := 10.0, A2 := 20.0);
-  if (A1.dp = 10.0) and (A2.dp = 20.0) then writeln('moved');
-end.
-"""
-    r = sap(text)
+    r = sap(acceptance_program)
     assert r["status"] == "ok", r["error"]
     assert r["output"] == ["acc=15 d=5 ok=TRUE", "moved"]
     # about 1 s of busy waiting, then sqrt(500) mm at 100 mm/s with 1000 mm/s^2: 0.3236 s

@@ -736,28 +736,6 @@ def test_invalid_identifiers_of_the_example_L286(tmp_path, name):
 
 # --- the digest's acceptance program (§9), the parts its first test leaves out -----------------------
 
-ACCEPT = """program Accept;
-{$TASK 0}
-const sec = 15625; n = 5;
-var i, acc: integer; t: timer; d: double; ok: boolean;
-function Fak(k: integer): integer;
-begin if k <= 1 then Fak := 1 else Fak := k * Fak(k - 1); end;
-procedure EVUI; begin CI1 := CI1 + 1; end;
-begin
-  acc := 0;
-  for i := 1 to n do acc := acc + i;          { 15 }
-  d := SQRT(SQR(3.0) + SQR(4.0));            { 5.0 }
-  ok := (acc = 15) and (Fak(5) = 120) and (7 / 2 = 3) and (-7 mod 2 = -1);
-  WRCBD(8, d); WRCBI(16, acc);
-  t := CLOCK + sec;
-  enev(EVUI);
-  repeat until CLOCK > t;
-  writeln('acc=', acc, ' d=', RDCBD(8), ' ok=', ok);
-  CL(A1, A2); TRVL := 100.0; TRAC := 1000.0;  { PU/TU defaults: mm, s }
-  MLAW(A1 := 10.0, A2 := 20.0);
-  if (A1.dp = 10.0) and (A2.dp = 20.0) then writeln('moved');
-end.
-"""
 
 UI_HELD = """
 [sympas]
@@ -773,11 +751,11 @@ value = true
 
 
 @pytest.mark.parametrize("ui_held", [False, True])
-def test_acceptance_program_end_state(tmp_path, ui_held):
+def test_acceptance_program_end_state(tmp_path, acceptance_program, ui_held):
     # digest §9 expected result: task ENDED, tskinfo bit 1 set by WRITELN; CI1 stays 0 without a UI
     # input, and with the UI input held EVUI counts at every event check (level semantics, A-28)
     path = tmp_path / "accept.sap"
-    path.write_text(ACCEPT, encoding="latin-1")
+    path.write_text(acceptance_program, encoding="latin-1")
     machine = tmp_path / "m.toml"
     machine.write_text(axes_toml(3) + (UI_HELD if ui_held else ""))
     result, session = run(path, machine=machine, options=RunOptions(state_dir=tmp_path / ".ncvm"))
