@@ -57,7 +57,13 @@ def _same_recordings(r1, r2):
         assert (spec.a, spec.b, spec.cw, spec.turns) == (other.a, other.b, other.cw, other.turns)
         assert spec.center == pytest.approx(other.center, abs=1e-9)
         assert spec.radius == pytest.approx(other.radius, abs=1e-9)
-        assert r1.arc_bounds[k] == pytest.approx(r2.arc_bounds[k], abs=1e-9)
+    reach = []
+    for rec, arr in ((r1, a1), (r2, a2)):  # where every move reaches, arcs widened in their plane
+        lo, hi = arr["end"].copy(), arr["end"].copy()
+        rec.arc_reach(lo, hi)
+        reach.append((lo, hi))
+    np.testing.assert_allclose(reach[0][0], reach[1][0], rtol=0, atol=1e-9)
+    np.testing.assert_allclose(reach[0][1], reach[1][1], rtol=0, atol=1e-9)
     assert r1.arc_length == pytest.approx(r2.arc_length, rel=1e-12)
     for k in list(r1.arcs)[:20]:  # what a plot draws
         start, end = a1["start"][k], a1["end"][k]

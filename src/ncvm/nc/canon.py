@@ -56,11 +56,14 @@ class BatchArcs:
     length: object
     extent: object  # numpy (arcs, 4): lo_a, hi_a, lo_b, hi_b reached in the plane
 
+    def spec(self, k: int) -> ArcSpec:
+        """The :class:`ArcSpec` of arc ``k`` (built when a sink or a plot wants one)."""
+        ca, cb = self.center[k].tolist()
+        return ArcSpec(self.a, self.b, (ca, cb), bool(self.cw[k]), float(self.radius[k]))
+
     def specs(self) -> dict[int, ArcSpec]:
-        """Batch row -> :class:`ArcSpec` of each arc (built when a sink wants single calls)."""
-        a, b = self.a, self.b
-        return {row: ArcSpec(a, b, (ca, cb), cw, r) for row, (ca, cb), cw, r in
-                zip(self.rows.tolist(), self.center.tolist(), self.cw.tolist(), self.radius.tolist())}
+        """Batch row -> :class:`ArcSpec` of each arc."""
+        return {row: self.spec(k) for k, row in enumerate(self.rows.tolist())}
 
 
 @dataclass(slots=True)

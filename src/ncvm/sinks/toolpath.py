@@ -112,14 +112,6 @@ class ToolpathRecorder(CanonSink):
             out.update((base + row, spec) for row, spec in arc.specs().items())
         return out
 
-    @property
-    def arc_bounds(self) -> dict[int, tuple]:
-        """Move index -> (a, b, lo_a, hi_a, lo_b, hi_b): where each arc reaches in its plane."""
-        out = dict(self._arc_bounds)
-        for base, arc in self._arc_batches:
-            out.update((base + row, (arc.a, arc.b, *e)) for row, e in zip(arc.rows.tolist(), arc.extent.tolist()))
-        return out
-
     def arc_reach(self, lo: np.ndarray, hi: np.ndarray) -> None:
         """Widen per-move lowest/highest points (rows of ``lo``/``hi``) by where the arcs reach in their plane."""
         for index, (a, b, lo_a, hi_a, lo_b, hi_b) in self._arc_bounds.items():
@@ -215,7 +207,4 @@ class ToolpathRecorder(CanonSink):
             return spec
         base, arc = self._arc_batches[max(0, bisect_right(self._arc_batches, index, key=lambda c: c[0]) - 1)]
         k = int(np.searchsorted(arc.rows, index - base))
-        if k < len(arc.rows) and arc.rows[k] == index - base:
-            ca, cb = arc.center[k].tolist()
-            return ArcSpec(arc.a, arc.b, (ca, cb), bool(arc.cw[k]), float(arc.radius[k]))
-        return None
+        return arc.spec(k) if k < len(arc.rows) and arc.rows[k] == index - base else None

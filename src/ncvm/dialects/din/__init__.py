@@ -49,7 +49,7 @@ class DinDialect(Dialect):
                         lo = 0
                         while (bad := execute_columns(kernel, seg, lo, count)) is not None:
                             done += bad - lo + 1
-                            kernel.execute(seg.block(bad))  # a block the columns leave to the kernel (one that faults, or any under G96 or a transformation)
+                            kernel.execute(seg.block(bad))  # left to the kernel: it may fault
                             lo = bad + 1
                         done += count - lo
                         if count < len(seg):
