@@ -5,7 +5,7 @@ from __future__ import annotations
 import re
 
 from ...diagnostics import CompileFailed
-from ...nc.block import PlainRun, read_din_program, read_din_segments
+from ...nc.block import PlainRun, read_din_segments
 from ...nc.canon import Src
 from ...nc.plainrun import execute_columns
 from ..base import Dialect
@@ -26,7 +26,7 @@ class DinDialect(Dialect):
         return int(100 * hits / len(lines))
 
     def check(self, path, text, machine, all_errors=False):
-        return read_din_program(path, text)[1]
+        return read_din_segments(path, text)[1]
 
     def run(self, path, text, session):
         segments, diags = read_din_segments(path, text)
