@@ -160,10 +160,12 @@ def test_hand_computed_run(tmp_path):
     assert result["cycle_time_s"] == pytest.approx(expected)
 
 
-@pytest.mark.parametrize("seed", range(4))
-def test_queued_blocks_as_segments(tmp_path, random_din, seed):
-    """A motion queue (as CPL drains it) executed as segments gives the moves of executing it block by block."""
+@pytest.mark.parametrize("seed,as_rows", [(0, False), (1, False), (2, True), (3, True)])
+def test_queued_blocks_as_segments(tmp_path, random_din, seed, as_rows):
+    """A motion queue (as CPL drains it) executed as segments gives the moves of executing it block by block,
+    whether its plain blocks are Blocks or plain rows (the tuples CPL code queues)."""
     from ncvm.machine.config import load_machine
+    from ncvm.nc.block import block_row, row_block
     from ncvm.nc.canon import Src
     from ncvm.nc.plainrun import execute_segments, plain_segments
     from ncvm.runtime.session import Session
@@ -173,7 +175,15 @@ def test_queued_blocks_as_segments(tmp_path, random_din, seed):
     for blk in blocks[40:60]:
         blk.src = Src("sub.cpl", blk.src.line)
     sessions = [Session(load_machine(), RunOptions(state_dir=tmp_path / name)) for name in "ab"]
-    segments = plain_segments(blocks)
+    queue = blocks
+    if as_rows:
+        queue = [block_row(b) or b for b in blocks]
+        rows = [(b, r) for b, r in zip(blocks, queue) if r.__class__ is tuple]
+        assert len(rows) > len(blocks) // 2
+        for b, r in rows:  # a row is its block again
+            back = row_block(r)
+            assert (back.g, back.m, back.words, back.n, back.src) == (b.g, b.m, b.words, b.n, b.src)
+    segments = plain_segments(queue)
     runs = [s for s in segments if isinstance(s, PlainRun)]
     assert len(runs) >= 3 and {r.file for r in runs} == {"p.ngc", "sub.cpl"}
     execute_segments(sessions[0].kernel, segments)

@@ -36,12 +36,26 @@ class Block:
         return f"Block(g={self.g}, m={self.m}, words={self.words}, n={self.n})"
 
 
-class PlainBlock(Block):
-    """A Block its maker knows to be plain: at most one G code, a motion code (G0-G3), no M code or
-    message, words only for :data:`PLAIN_WORDS`. Motion queues run stretches of them column-wise
-    (:func:`ncvm.nc.plainrun.plain_segments`) without looking into each."""
+#: a plain block as a motion queue holds it -- at most a motion G code (G0-G3), no M code or message,
+#: words only for PLAIN_WORDS -- as a tuple, far cheaper to build than a Block:
+#: (motion G code or -1, X, Y, Z, I, J, K, F with NaN for a missing word, line, N or None, Src).
+#: Queues run stretches of them column-wise (:func:`ncvm.nc.plainrun.plain_segments`).
+ROW_LINE, ROW_N, ROW_SRC = 8, 9, 10
 
-    __slots__ = ()
+
+def row_block(row: tuple) -> Block:
+    """A plain row as the Block the kernel executes."""
+    words = {a: v for a, v in zip(PLAIN_WORDS, row[1:8]) if v == v}
+    return Block((row[0],) if row[0] >= 0 else (), (), words, row[ROW_N], None, row[ROW_SRC])
+
+
+def block_row(blk: Block) -> tuple | None:
+    """A Block as a plain row, or None when it carries more than a plain block may."""
+    g, words = blk.g, blk.words
+    if blk.m or blk.msg is not None or len(g) > 1 or (g and g[0] not in (0, 1, 2, 3)) or not _PLAIN.issuperset(words):
+        return None
+    get = words.get
+    return ((g[0] if g else -1), *(get(a, _NAN) for a in PLAIN_WORDS), blk.src.line, blk.n, blk.src)
 
 
 #: one address word of plain DIN: a letter and a number (front ends with richer blocks read their own)
@@ -158,7 +172,7 @@ class PlainRun:
     g: np.ndarray  # int, motion G code 0..3 or -1
     words: dict  # address -> float column
     source: list | None = None  # the program's lines, when the run was read from text
-    origin: list | None = None  # the Block objects the run was made of, when it was made of blocks
+    origin: list | None = None  # the plain rows (or Blocks) the run was made of, when it was made of them
 
     def __len__(self) -> int:
         return len(self.lines)
@@ -166,7 +180,8 @@ class PlainRun:
     def block(self, i: int) -> Block:
         """Block ``i`` as the line parser reads it (or as it was built)."""
         if self.origin is not None:
-            return self.origin[i]
+            b = self.origin[i]
+            return row_block(b) if b.__class__ is tuple else b
         line = int(self.lines[i])
         return parse_din_line(self.source[line - 1], Src(self.file, line))
 
@@ -176,6 +191,7 @@ class PlainRun:
 
 #: the addresses of a plain block besides N and its motion G code, in the order CAM output writes them
 PLAIN_WORDS = "XYZIJKF"
+_PLAIN = frozenset(PLAIN_WORDS)
 #: a number; possessive quantifiers (nothing a number gives back could start the next word) keep the scan fast
 _NUM = r"([-+]?+(?:\d++\.?+\d*+|\.\d++))"
 #: a plain line with at least one G code or word (groups: G, then PLAIN_WORDS), or any other line with its

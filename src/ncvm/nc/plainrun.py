@@ -20,13 +20,13 @@ radius, an arc without centre words) is left to the caller, who hands it to
 from __future__ import annotations
 
 import math
-from itertools import repeat
-from operator import attrgetter
+from itertools import groupby
+from operator import attrgetter, itemgetter
 
 import numpy as np
 
 from . import arcs
-from .block import PLAIN_WORDS, Block, PlainBlock, PlainRun
+from .block import PLAIN_WORDS, ROW_LINE, ROW_SRC, Block, PlainRun, block_row
 from .canon import BatchArcs, MoveBatch
 from .kernel import PLANES
 
@@ -232,54 +232,61 @@ def _extent(sa, sb, ca, cb, r, a0, angle) -> np.ndarray:
                             np.where(full, cb - r, lo_b), np.where(full, cb + r, hi_b)))
 
 
-#: the G codes a plain block may carry, and the addresses it may have words for
-PLAIN_G = frozenset({(), (0,), (1,), (2,), (3,)})
-PLAIN_ADDRESSES = frozenset(PLAIN_WORDS)
-_WORDS, _G = attrgetter("words"), attrgetter("g")
-_FILE, _LINE = attrgetter("src.file"), attrgetter("src.line")
+_SRC, _FILE = itemgetter(ROW_SRC), attrgetter("file")
+_G_COLUMN, _LINE_COLUMN = itemgetter(0), itemgetter(ROW_LINE)
+_WORD_COLUMN = {a: itemgetter(k) for k, a in enumerate(PLAIN_WORDS, 1)}
 
 
-def plain_segments(blocks: list) -> list:
-    """Blocks built at run time (a CPL motion queue) as segments: :class:`PlainRun` stretches and single blocks.
+def plain_segments(items: list, addresses: str | set = PLAIN_WORDS) -> list:
+    """A motion queue's items as segments: :class:`PlainRun` stretches and single blocks.
 
-    A block is plain when it is a :class:`PlainBlock` (its maker knew), or a
-    :class:`Block` itself (a front end's other subclasses carry more than
-    words) with no G code but a motion code, no M code or message, and words
-    only for :data:`PLAIN_WORDS`; a stretch of them from one file becomes a run.
-    Other blocks stay as they are.
+    Plain rows (tuples, see :func:`~ncvm.nc.block.row_block`) are plain by
+    construction; a :class:`Block` itself (a front end's other subclasses carry
+    more than words) is plain when :func:`block_row` can hold it. A stretch of
+    plain items from one file becomes a run; other blocks stay as they are.
+    ``addresses`` are the words the rows can have at all (the front end knows
+    which its code builds): the other columns are NaN without reading a row.
     """
-    words = list(map(_WORDS, blocks))
-    files = list(map(_FILE, blocks))
-    types = list(map(type, blocks))
-    plain = [t is PlainBlock for t in types]
-    for i, t in enumerate(types):
-        if t is Block:  # a plain Block too when its content says so
-            blk = blocks[i]
-            plain[i] = (blk.g in PLAIN_G and PLAIN_ADDRESSES.issuperset(words[i]) and not blk.m
-                        and blk.msg is None)
     out: list = []
-    start = None  # first block of the run being collected
-    for i, ok in enumerate(plain):
-        if start is not None and (not ok or files[i] != files[start]):
-            out.append(_columns(blocks, words, start, i))
-            start = None
-        if not ok:
-            out.append(blocks[i])
-        elif start is None:
-            start = i
-    if start is not None:
-        out.append(_columns(blocks, words, start, len(blocks)))
+    rows: list = []
+    used = set(addresses)
+    for it in items:
+        if it.__class__ is tuple:
+            rows.append(it)
+            continue
+        row = block_row(it) if it.__class__ is Block else None
+        if row is not None:
+            rows.append(row)
+            used.update(it.words)
+            continue
+        if rows:
+            _runs(rows, used, out)
+            rows = []
+        out.append(it)
+    if rows:
+        _runs(rows, used, out)
     return out
 
 
-def _columns(blocks, words, lo: int, hi: int) -> PlainRun:
-    blocks, words = blocks[lo:hi], words[lo:hi]
-    n = hi - lo
-    used = set().union(*words)
-    columns = {a: np.fromiter(map(dict.get, words, repeat(a), repeat(math.nan)), float, n) if a in used
-               else np.full(n, math.nan) for a in PLAIN_WORDS}
-    g = np.array([t[0] if t else -1 for t in map(_G, blocks)], dtype=np.int64)
-    return PlainRun(blocks[0].src.file, np.fromiter(map(_LINE, blocks), np.int64, n), g, columns, origin=blocks)
+def _runs(rows: list, used: set, out: list) -> None:
+    """Plain rows as one run per stretch of one file."""
+    files = list(map(_FILE, map(_SRC, rows)))
+    if files.count(files[0]) == len(files):  # the common case: one file
+        out.append(_columns(files[0], rows, used))
+        return
+    lo = 0
+    for file, group in groupby(files):
+        hi = lo + len(list(group))
+        out.append(_columns(file, rows[lo:hi], used))
+        lo = hi
+
+
+def _columns(file: str, rows: list, used: set) -> PlainRun:
+    n = len(rows)
+    words = {a: np.fromiter(map(get, rows), float, n) if a in used else np.full(n, math.nan)
+             for a, get in _WORD_COLUMN.items()}
+    return PlainRun(file, np.fromiter(map(_LINE_COLUMN, rows), np.int64, n),
+                    np.fromiter(map(_G_COLUMN, rows), np.int64, n), words, origin=rows)
 
 
 def execute_segments(kernel, segments, execute=None) -> None:

@@ -9,6 +9,7 @@ REAL (binary32) comparison rule of digest §4.2 are decided here, not at run tim
 from __future__ import annotations
 
 import inspect
+import math
 
 from ...nc.block import PLAIN_WORDS
 from ...runtime.codegen import PySource
@@ -23,9 +24,9 @@ from .system.gfuncs import GEARS, TYP3_G
 from .system.transforms import PARAMETER_G
 from .values import f32
 
-#: parameter Pn seen through its suffix (digest §4.8): the conversion applied to the passed value
-#: the addresses of a plain NC block (nc.block.PlainBlock)
+#: the addresses of a plain NC block (a plain row, nc.block)
 _PLAIN = frozenset(PLAIN_WORDS)
+#: parameter Pn seen through its suffix (digest §4.8): the conversion applied to the passed value
 PARAM_VIEW = {"%": "_pint", "": "_tor", "!": "_tod", "?": "_tob", "$": "_pstr"}
 SUFFIX_TAG = {"%": "i", "": "r", "!": "d", "?": "b", "$": "s"}
 AXIS_LETTERS = set("XYZABCUVW")
@@ -42,7 +43,7 @@ class GenError(Exception):
 class UnitCode:
     """The generated code of one program: source text, line map, constants and reported variable names."""
 
-    def __init__(self, path: str, src: PySource, consts: list, cpl_lines: dict, report: list):
+    def __init__(self, path: str, src: PySource, consts: list, cpl_lines: dict, report: list, row_words: set):
         self.path = path
         self.src = src
         self.text = src.text()
@@ -50,6 +51,7 @@ class UnitCode:
         self.consts = consts
         self.cpl_lines = cpl_lines  # physical line -> CPL line number
         self.report = report  # (python name, shown name)
+        self.row_words = row_words  # the addresses its plain rows have (the motion queue builds these columns only)
 
 
 class Gen:
@@ -66,6 +68,7 @@ class Gen:
         self.fields = ln.fields
         self.cur = None
         self.max_param = 0
+        self.row_words: set[str] = set()
         #: statements counted into _n ahead of time but not yet executed, while a stretch is emitted
         self._ahead = 0
         #: generated body line index -> that number, for the lines where it is not 0 (see generate)
@@ -754,9 +757,10 @@ class Gen:
             plain = (not m_const and not m_dyn and not g_dyn and not s.loose and s.msg is None
                      and len(g_const) <= 1 and set(g_const) <= {0, 1, 2, 3}
                      and set(words_const) <= _PLAIN and all(a in _PLAIN for a, _ in words_dyn))
-            if not dynamic:
-                kind = "plain block" if plain else "block"
-                blk = self.const((kind, tuple(g_const), tuple(m_const), dict(words_const), s.n, s.msg, line))
+            if plain:
+                self.plain_row(s, src, g_const, dict(words_const), dict(words_dyn), dynamic)
+            elif not dynamic:
+                blk = self.const(("block", tuple(g_const), tuple(m_const), dict(words_const), s.n, s.msg, line))
                 if ends and m_sub != m_const:
                     blk_sub = self.const(("block", tuple(g_const), tuple(m_sub), dict(words_const), s.n, s.msg, line))
                     self.emit(f"{enqueue}({blk} if _main else {blk_sub})", line)
@@ -777,8 +781,7 @@ class Gen:
                     loose = "(" + ", ".join(self.arg(x) for x in s.loose) + ",)"
                     self.emit(f"{enqueue}(_loose({g}, {m}, {words}, {loose}, {s.n!r}, {s.msg!r}, {src}))", line)
                 else:
-                    make = "_PBlock" if plain else "_Block"
-                    self.emit(f"{enqueue}({make}({g}, {m}, {words}, {s.n!r}, {s.msg!r}, {src}))", line)
+                    self.emit(f"{enqueue}(_Block({g}, {m}, {words}, {s.n!r}, {s.msg!r}, {src}))", line)
             if 80 in g_const:
                 self.emit("_modal[0] = None", line)
             elif has_motion and self.ln.modal_calls:
@@ -797,6 +800,17 @@ class Gen:
             self.emit("raise _EP", line)
         if s.skip:
             self.src._indent -= 1
+
+    def plain_row(self, s: A.NcBlock, src: str, g: list, const: dict, dyn: dict, dynamic: bool) -> None:
+        """A plain block goes into the queue as a plain row (nc.block): a tuple, no Block and no dict."""
+        motion = g[0] if g else -1
+        self.row_words.update(const, dyn)
+        if not dynamic:
+            values = tuple(const.get(a, math.nan) for a in PLAIN_WORDS)
+            self.emit(f"_qr({self.const(('plain row', (motion, *values, s.line, s.n)))})", s.line)
+            return
+        cells = [dyn[a] if a in dyn else repr(const[a]) if a in const else "_NaN" for a in PLAIN_WORDS]
+        self.emit(f"_qr(({motion!r}, {', '.join(cells)}, {s.line}, {s.n!r}, {src}))", s.line)
 
     # -- structured code (programs without GOTO) ----------------------------------------
     def count(self, a: int, b: int) -> int:
@@ -1136,7 +1150,7 @@ class Gen:
         src._indent = 1
         src.emit("return unit")
         cpl_lines = {s.line: s.cpl for s in self.stmts if s.cpl is not None}
-        return UnitCode(self.path, src, self.consts, cpl_lines, report)
+        return UnitCode(self.path, src, self.consts, cpl_lines, report, self.row_words)
 
 
 class _Raw:
@@ -1196,7 +1210,7 @@ INLINE = {
 }
 
 HELPER_NAMES = (
-    "_rt", "_st", "_G", "_PM", "_EP", "_PBlock", "_f32", "_toi", "_tor", "_wtor", "_tod", "_tob", "_tos", "_bad_assign", "_cond",
+    "_rt", "_st", "_G", "_PM", "_EP", "_qr", "_NaN", "_f32", "_toi", "_tor", "_wtor", "_tod", "_tob", "_tos", "_bad_assign", "_cond",
     "_logic", "_lnot", "_ix", "_sv", "_view", "_setf", "_midw", "_dim", "_pdim", "_pstr", "_gfield", "_gset_s", "_pint",
     "_call", "_q", "_q3", "_drain", "_wait", "_Block", "_loose", "_word", "_mval", "_modal", "_modal_call",
     "_runaway", "_hook", "_caseval", "_nocall", "_msin", "_mcos", "_matan", "_msqrt",

@@ -18,7 +18,7 @@ from pathlib import Path
 
 from ...diagnostics import Frame, RuntimeFault, Span
 from ...machine.model import PlcImage, SimClock
-from ...nc.block import Block, DinSyntaxError, PlainBlock, parse_din_line
+from ...nc.block import ROW_LINE, Block, DinSyntaxError, parse_din_line, row_block
 from ...nc.canon import Canon, Src
 from ...nc.plainrun import execute_segments, plain_segments
 from . import values as V
@@ -64,6 +64,7 @@ class CplRuntime:
         self.perm = Permanents(session)
         self.queue: deque = deque()
         self.executed = 0  # blocks taken from the queue and executed so far
+        self.row_words: set[str] = set()  # the addresses the plain rows of the units made so far have
         self._shadow = None  # the NC state after every prepared block (see prepared_kernel)
         self._shadow_at = 0
         self.modal = [None]
@@ -116,6 +117,7 @@ class CplRuntime:
         fn = ns["make"](self.helpers(path), self.constants(path, uc.consts))
         self._fns[path] = fn
         self._codes[path] = uc
+        self.row_words |= uc.row_words
         return fn
 
     def constants(self, path: str, consts: list) -> list:
@@ -123,10 +125,11 @@ class CplRuntime:
         for c in consts:
             if c[0] == "src":
                 out.append(Src(path, c[1]))
+            elif c[0] == "plain row":
+                out.append((*c[1], Src(path, c[1][ROW_LINE])))
             else:
-                kind, g, m, words, n, msg, line = c
-                make = PlainBlock if kind == "plain block" else Block
-                out.append(make(g, m, dict(words), n, msg, Src(path, line)))
+                _, g, m, words, n, msg, line = c
+                out.append(Block(g, m, dict(words), n, msg, Src(path, line)))
         return out
 
     def helpers(self, path: str) -> dict:
@@ -139,7 +142,9 @@ class CplRuntime:
             "_call": lambda name, args, din, line: self.call(path, name, args, din, line),
             "_q": self.enqueue_probe if self._probing else (
                 self.queue.append if self.lookahead <= 0 else self.queue_limited),
-            "_drain": self.drain, "_wait": self.wait, "_Block": Block, "_PBlock": PlainBlock, "_loose": self.loose,
+            "_qr": self.queue.append if self.lookahead <= 0 else self.queue_limited,  # a plain row (nc.block)
+            "_NaN": math.nan,
+            "_drain": self.drain, "_wait": self.wait, "_Block": Block, "_loose": self.loose,
             "_word": V.word, "_mval": _mval, "_modal": self.modal,
             "_modal_call": lambda line: self.modal_call(path, line), "_q3": self.enqueue_typ3,
             "_runaway": lambda line: self.session.steps.runaway(path, line),
@@ -368,7 +373,7 @@ class CplRuntime:
         if blk.__class__ is Typ3Block:
             activate(self, self.kernel, blk)
         else:
-            self.kernel.execute(blk)
+            self.kernel.execute(row_block(blk) if blk.__class__ is tuple else blk)
 
     def drain(self) -> None:
         """WAIT without parameters: stop preparation until every block before it has been executed."""
@@ -376,7 +381,7 @@ class CplRuntime:
         self.executed += len(q)
         blocks = list(q)
         q.clear()
-        execute_segments(self.kernel, plain_segments(blocks), self.execute_block)
+        execute_segments(self.kernel, plain_segments(blocks, self.row_words), self.execute_block)
         self.t_prep = max(self.t_prep, self.machine.clock.now)
 
     def prepared_kernel(self):
@@ -397,7 +402,7 @@ class CplRuntime:
             if blk.__class__ is Typ3Block:
                 activate(self, self._shadow, blk)
             else:
-                self._shadow.execute(blk)
+                self._shadow.execute(row_block(blk) if blk.__class__ is tuple else blk)
             self._shadow_at += 1
         return self._shadow
 

@@ -64,6 +64,8 @@ def int_overflow(v):
 
 
 def to_real(v):
+    if v.__class__ is int and -16777216 <= v <= 16777216:  # exact in binary32: no rounding to do
+        return float(v)
     if v.__class__ is float or v.__class__ is int:
         try:
             r = _unpack(_pack(v))[0]  # f32 without the call: every REAL parameter view comes here
@@ -127,6 +129,8 @@ def word(v):
 
 def word_real(v):
     """``word(to_real(v))`` in one call: a parameter's REAL view as an NC word value (the common case)."""
+    if v.__class__ is int and -16777216 <= v <= 16777216:  # exact in binary32: no rounding to do
+        return float(v)
     if v.__class__ is float or v.__class__ is int:
         try:
             r = _unpack(_pack(v))[0]

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import zlib
 
+from ....nc.block import row_block
 from ..errors import CplError
 from ..io.strings import CharacterField
 from .axes import kernel_index, nul
@@ -212,7 +213,10 @@ def _more(rt, typ: int, ch: int, system, own, axisno, idno):
 
 def _head(rt):
     """The block the channel is executing: the oldest one still in the motion queue, or None."""
-    return rt.queue[0] if rt.queue else None
+    if not rt.queue:
+        return None
+    head = rt.queue[0]
+    return row_block(head) if head.__class__ is tuple else head
 
 
 def _status(rt, typ: int, ch: int, system, own):
