@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import math
+
 import pytest
 
 SEC = 15625
@@ -411,3 +413,49 @@ end.
 """
     v = sap(text)["variables"]
     assert (v["a"], v["b"], v["c"], v["d"], v["e"]) == (0, 1, 11, 111, 1111)
+
+
+def test_two_tasks_waiting_on_long_moves_see_an_event_in_its_servo_cycle(sap):
+    # Both tasks wait on minutes-long W moves with EVUI enabled. Nothing can happen between the scenario
+    # input at 30 s and the ends of the moves, so the card looks only then (a run of 150,000 servo cycles
+    # took a minute when every cycle was stepped); what the tasks see is what they saw stepping every cycle.
+    text = """{$TASK 0}
+program Main;
+procedure EVUI; begin writeln('0: UI at ', CLOCK, ' A1 ', A1.dp); DISEV(EVUI); end;
+begin
+  enev(EVUI);
+  STARTCNCT(1);
+  TRVL := 10.0; TRAC := 1000.0;
+  MLAW(A1 := 1000.0);
+  writeln('0: A1 done at ', CLOCK);
+end.
+{$TASK 1}
+program Other;
+procedure EVUI; begin writeln('1: UI at ', CLOCK); DISEV(EVUI); end;
+begin
+  enev(EVUI);
+  TRVL := 10.0; TRAC := 1000.0;
+  MLAW(A2 := 500.0);
+  writeln('1: A2 done at ', CLOCK);
+end.
+"""
+    r = sap(text, machine_toml=EO_MACHINE + scenario((30.0, "A1", 2, True)))
+    assert r["status"] == "ok", r["error"]
+    out = sorted(r["output"])
+    servo = 20  # ticks of 64 us: 1.28 ms
+    ui = 30.0 / 64e-6  # the input changes at 30 s: 468,750 ticks, a whole servo cycle (23,437.5 cycles: no)
+    first_cycle = math.ceil(ui / servo) * servo  # the first servo cycle at or after it: 468,760
+    assert [line.split()[:3] for line in out] == [["0:", "A1", "done"], ["0:", "UI", "at"], ["1:", "A2", "done"],
+                                                   ["1:", "UI", "at"]]
+    t0_ui = int(out[1].split()[3])
+    t1_ui = int(out[3].split()[3])
+    # both handlers run in that cycle (CLOCK read a statement tick later), as when every cycle was stepped
+    assert t0_ui == t1_ui and first_cycle <= t0_ui <= first_cycle + 2
+    # A1 at 10 mm/s after 0.01 s of acceleration: 0.05 mm + (t - 0.01 s) * 10 mm/s, less the few statement
+    # ticks (64 us, 0.64 um of travel each) before the move starts
+    t = first_cycle * 64e-6
+    assert float(out[1].split()[-1]) == pytest.approx(0.05 + (t - 0.01) * 10.0, abs=0.01)
+    # the moves end 100.01 s and 50.01 s after they start (a few statement ticks in); the W-waits see it then
+    assert int(out[0].split()[-1]) == pytest.approx(100.01 / 64e-6, abs=10)
+    assert int(out[2].split()[-1]) == pytest.approx(50.01 / 64e-6, abs=10)
+    assert r["position"]["X"] == 1000.0 and r["position"]["Y"] == 500.0

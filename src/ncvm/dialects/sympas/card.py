@@ -449,7 +449,7 @@ class Card(Commands):
                 if end <= tk.time:
                     self.settle(axes, tk.time)
                     return
-                yield from tk.wait_until(self.wake_time(tk, end))
+                yield from tk.wait_until(self.wake_time(tk, end), ends=end)
         finally:
             tk.held = None
 
@@ -463,7 +463,32 @@ class Card(Commands):
             if not tk.others_running():
                 step = max(step, min(self.next_timed(), tk.time + 1000.0 * self.servo))
             return step
-        return until if not tk.others_running() else min(until, tk.time + self.servo)
+        if not tk.others_running():
+            return until
+        # looking every servo cycle, the task could first see a change at the first of its cycles at or
+        # after the moment another task or a timed action can act: it looks then, not in every cycle before
+        quiet = self.quiet_until(tk)
+        if quiet == math.inf:
+            return until
+        return min(until, tk.time + self.servo * max(1, math.ceil((quiet - tk.time) / self.servo)))
+
+    def quiet_until(self, tk) -> float:
+        """The earliest moment something outside ``tk`` can change the card: another running task acts no
+        earlier than its own time (the scheduler runs the earliest task first), a sleeping one when its wait
+        ends, a timed action or scenario event at its time. Until then only ``tk``'s own motion goes on."""
+        t = self.next_timed()
+        for o in self.tasks:
+            if o is not tk and o.state == RUNNING:
+                at = o.time if o.waits_for is None else o.waits_for
+                if at < t:
+                    t = at
+        return t
+
+    def events_follow_motion(self, tk) -> bool:
+        """Whether an event ``tk`` has enabled can change while the axes move: EVLSS (an axis crossing its
+        soft limit) when the soft-limit reaction raises it. The input events change with timed actions only."""
+        return ("EVLSS" in tk.enabled and self.cfg["soft_limit_reaction"] in ("TOM", "SMA")
+                and any(a.move is not None for a in self.axes))
 
     def _check_stall(self, tk) -> None:
         """Run-time error RUN005 when every running task waits on held motion and nothing ran since

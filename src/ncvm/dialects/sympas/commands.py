@@ -345,7 +345,7 @@ class Commands:
                 until = self._spool_free_at(axes, cap, tk.time)
                 if until is None or until <= tk.time:
                     return
-                yield from tk.wait_until(self.wake_time(tk, until))  # inf: held by TROVR = 0, as a W-wait
+                yield from tk.wait_until(self.wake_time(tk, until), ends=until)  # inf: held by TROVR = 0, as a W-wait
         finally:
             tk.held = None
 

@@ -43,6 +43,7 @@ class Task:
         self.depth = 0
         self.main_locals = None
         self.held = None  # card.steps when this task last found its W-wait held by TROVR = 0
+        self.waits_for: float | None = None  # while it sleeps: when it acts again if nothing else happens
         self.max_depth = int(card.cfg["max_call_depth"])
         self.reset_state()
 
@@ -129,16 +130,31 @@ class Task:
     def others_running(self) -> bool:
         return any(t.state == RUNNING and t is not self for t in self.card.tasks)
 
-    def wait_until(self, tick: float, poll: bool = True):
-        servo = self.card.servo
-        while self.time < tick:
-            step = tick
-            if poll and self.enabled:
-                step = min(tick, (math.floor(self.time / servo) + 1) * servo)
-            self.time = step
-            yield
-            if poll and self.enabled and not self.in_handler:
-                yield from self.poll_events()
+    def wait_until(self, tick: float, poll: bool = True, ends: float | None = None):
+        """Sleep until ``tick``; ``ends`` is when the wait itself ends if nothing else happens (a W-wait
+        looks again at ``tick`` before its move ends). With events enabled, look for them in the servo
+        cycles where one can have become active: every cycle while EVLSS follows the motion, else at the
+        next timed action or when another task can act (the input events change with nothing else)."""
+        card = self.card
+        servo = card.servo
+        self.waits_for = tick if ends is None else ends
+        try:
+            while self.time < tick:
+                step = tick
+                if poll and self.enabled:
+                    cycle = (math.floor(self.time / servo) + 1) * servo
+                    if not card.events_follow_motion(self):
+                        quiet = card.quiet_until(self)
+                        cycle = max(cycle, math.ceil(quiet / servo) * servo if quiet < math.inf else quiet)
+                    step = min(tick, cycle)
+                self.time = step
+                yield
+                if poll and self.enabled and not self.in_handler:
+                    self.waits_for = None  # a handler runs: this task acts now
+                    yield from self.poll_events()
+                    self.waits_for = tick if ends is None else ends
+        finally:
+            self.waits_for = None
 
     def fast_wait(self, tick: float, poll: bool = True) -> bool:
         """Advance to ``tick`` at once when nothing can happen before (no other task, no timed action)."""
