@@ -9,6 +9,7 @@ therefore see the executed position, stale without a WAIT, exactly as the manual
 from __future__ import annotations
 
 import copy
+import functools
 import itertools
 import math
 import re
@@ -139,7 +140,7 @@ class CplRuntime:
             "_tos": V.to_str, "_bad_assign": _bad_assign, "_cond": V.cond, "_logic": V.logic, "_lnot": V.lnot,
             "_ix": V.index, "_sv": V.sv, "_view": S.mid_for_variable, "_setf": _setf, "_midw": _midw, "_dim": _dim,
             "_pdim": _pdim, "_pstr": _pstr, "_gfield": self.gfield, "_gset_s": self.gset_s, "_pint": _pint,
-            "_call": lambda name, args, din, line: self.call(path, name, args, din, line),
+            "_call": functools.partial(self.call, path),
             "_q": self.enqueue_probe if self._probing else (
                 self.queue.append if self.lookahead <= 0 else self.queue_limited),
             "_qr": self.queue.append if self.lookahead <= 0 else self.queue_limited,  # a plain row (nc.block)
@@ -254,7 +255,8 @@ class CplRuntime:
 
     # -- sub-programs -----------------------------------------------------------------------
     def call(self, caller: str, name: str, args: tuple, din: bool, line: int) -> None:
-        if len(self.stack) >= MAX_NESTING:
+        stack, active, units = self.stack, self.active, self.linked.units
+        if len(stack) >= MAX_NESTING:
             raise CplError("CPL007", f"CALL {name}")
         target = self.linked.resolve.get((caller, name))
         if target is None:
@@ -262,23 +264,23 @@ class CplRuntime:
             if found is None:
                 raise CplError("CPL005", name)
             target = str(found)
-        if target in self.active:
+        if target in active:
             raise CplError("CPL006", name)
-        if caller in self.linked.units and self.linked.units[caller].prog.din_only:
+        if caller in units and units[caller].prog.din_only:
             args = tuple(UnlinkedString(a) if a.__class__ is str else a for a in args)
-        self.stack.append((caller, line))
-        self.active.append(target)
+        linked = target in units and not din
+        stack.append((caller, line))
+        active.append(target)
         try:
-            if target in self.linked.units and not din:
-                try:
-                    self.unit(target)(args, False)
-                except EndProgram:
-                    pass
+            if linked:
+                (self._fns.get(target) or self.unit(target))(args, False)
             else:
                 self.run_unlinked(target, name)
+        except EndProgram:
+            pass
         finally:
-            self.stack.pop()
-            self.active.pop()
+            stack.pop()
+            active.pop()
 
     def run_unlinked(self, target: str, name: str) -> None:
         """A program excluded from linking (CALL ... DIN or "(DIN)"): only NC blocks may be in it (§3.3)."""
