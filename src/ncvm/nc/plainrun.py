@@ -20,8 +20,8 @@ radius, an arc without centre words) is left to the caller, who hands it to
 from __future__ import annotations
 
 import math
-from itertools import groupby
-from operator import attrgetter, itemgetter
+from itertools import compress, groupby, repeat
+from operator import attrgetter, is_not, itemgetter
 
 import numpy as np
 
@@ -247,24 +247,25 @@ def plain_segments(items: list, addresses: str | set = PLAIN_WORDS) -> list:
     ``addresses`` are the words the rows can have at all (the front end knows
     which its code builds): the other columns are NaN without reading a row.
     """
-    out: list = []
-    rows: list = []
+    items = list(items)
     used = set(addresses)
-    for it in items:
-        if it.__class__ is tuple:
-            rows.append(it)
-            continue
+    others = []  # the items that stay blocks; the scan for them runs in C (most items are rows)
+    for i in compress(range(len(items)), map(is_not, map(type, items), repeat(tuple))):
+        it = items[i]
         row = block_row(it) if it.__class__ is Block else None
-        if row is not None:
-            rows.append(row)
+        if row is None:
+            others.append(i)
+        else:
+            items[i] = row
             used.update(it.words)
-            continue
-        if rows:
-            _runs(rows, used, out)
-            rows = []
-        out.append(it)
-    if rows:
-        _runs(rows, used, out)
+    out: list = []
+    lo = 0
+    for i in others + [len(items)]:
+        if i > lo:
+            _runs(items[lo:i], used, out)
+        if i < len(items):
+            out.append(items[i])
+        lo = i + 1
     return out
 
 
