@@ -131,13 +131,10 @@ def word_real(v):
     """``word(to_real(v))`` in one call: a parameter's REAL view as an NC word value (the common case)."""
     if v.__class__ is int and -16777216 <= v <= 16777216:  # exact in binary32: no rounding to do
         return float(v)
-    if v.__class__ is float or v.__class__ is int:
-        try:
-            r = _unpack(_pack(v))[0]
-        except OverflowError:
-            return f32(v)
-        return r if r - r == 0.0 else f32(v)
-    return word(to_real(v))
+    r = to_real(v)
+    if r is None:
+        raise TypeError("NUL")
+    return r
 
 
 def logic(op: str, a, b):
