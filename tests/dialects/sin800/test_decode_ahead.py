@@ -4,34 +4,13 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from ncvm.api import check, run
-from ncvm.runtime.session import RunOptions
+from sin800_helpers import R, run_mpf
 
-MACHINE = """
-[[axis]]
-name = "X"
-[[axis]]
-name = "Y"
-[[axis]]
-name = "Z"
-[sin800]
-control = "880"
-"""
+from ncvm.api import check
 
 
 def _run(tmp_path: Path, text: str, ahead: int, extra: str = ""):
-    machine = MACHINE + f"decode_ahead = {ahead}\n" + extra
-    (tmp_path / "machine.toml").write_text(machine)
-    path = tmp_path / "prog.mpf"
-    path.write_text(text)
-    result, _ = run(path, dialect="sin800", machine=tmp_path / "machine.toml",
-                    options=RunOptions(state_dir=tmp_path / ".ncvm"))
-    assert result["status"] == "ok", result["error"]
-    return result
-
-
-def R(result, n):
-    return result["variables"].get(f"R{n}", 0.0)
+    return run_mpf(tmp_path, text, f"decode_ahead = {ahead}\n" + extra, ok=True)
 
 
 ACTUAL = "%MPF1\nN10 G90 G01 X10 Y5 F1000\nN20 X20\nN30 @361 R1 K1\nN40 @714\nN50 @361 R2 K1 @361 R3 K2\n"

@@ -16,20 +16,10 @@ import math
 from pathlib import Path
 
 import pytest
+from sin800_helpers import MACHINE, input_event, machine, run_mpf
 
 from ncvm.api import run
 from ncvm.runtime.session import RunOptions
-
-MACHINE = """
-[[axis]]
-name = "X"
-[[axis]]
-name = "Y"
-[[axis]]
-name = "Z"
-[sin800]
-control = "880"
-"""
 
 V, A = 100.0, 1000.0 * math.sqrt(2.0)
 RAMP = V * V / (2 * A)  # 3.535534 mm
@@ -39,22 +29,12 @@ PHI = S_05 / 50.0  # the angle reached on radius 50: 0.929289 rad
 CUT = (-50.0 + 50.0 * math.cos(PHI), 50.0 * math.sin(PHI))
 
 
-def _event(time: float, bit: int = 3, value: int = 1) -> str:
-    return f'[[scenario]]\ntime = {time}\nkind = "input"\nbyte = 1\nbit = {bit}\nvalue = {value}\n'
-
-
-def _run(tmp_path: Path, text: str, extra: str = ""):
-    (tmp_path / "machine.toml").write_text(MACHINE + extra)
-    path = tmp_path / "prog.mpf"
-    path.write_text(text)
-    return run(path, dialect="sin800", machine=tmp_path / "machine.toml",
-               options=RunOptions(state_dir=tmp_path / ".ncvm"))
-
-
 def _ok(tmp_path: Path, text: str, extra: str = ""):
-    result, session = _run(tmp_path, text, extra)
-    assert result["status"] == "ok", result["error"]
-    return result, session
+    return run_mpf(tmp_path, text, extra, ok=True, session=True)
+
+
+def _event(time: float) -> str:
+    return input_event(time, 3)
 
 
 def _xy(result):
@@ -198,7 +178,7 @@ def test_incremental_arc_under_a_coordinate_rotation(tmp_path):
     assert _arc(s)[2].center == pytest.approx((0.0, -50.0))
 
 
-XZ_MACHINE = '[[axis]]\nname = "X"\n[[axis]]\nname = "Z"\n[sin800]\ncontrol = "880"\n'
+XZ_MACHINE = machine("XZ")
 
 
 @pytest.mark.parametrize("machine, text, code", [

@@ -10,36 +10,19 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
+from sin800_helpers import R, machine, run_mpf
 
-from ncvm.api import run
 from ncvm.diagnostics import UsageError
-from ncvm.runtime.session import RunOptions
 
-MACHINE = """
-[[axis]]
-name = "X"
-[sin800]
-control = "880"
-"""
+MACHINE = machine("X")
 
 
 def _run(tmp_path: Path, text: str, extra: str = ""):
-    (tmp_path / "machine.toml").write_text(MACHINE + extra)
-    path = tmp_path / "prog.mpf"
-    path.write_text(text)
-    result, _ = run(path, dialect="sin800", machine=tmp_path / "machine.toml",
-                    options=RunOptions(state_dir=tmp_path / ".ncvm"))
-    return result
+    return run_mpf(tmp_path, text, extra, machine_text=MACHINE)
 
 
 def _ok(tmp_path: Path, text: str, extra: str = ""):
-    r = _run(tmp_path, text, extra)
-    assert r["status"] == "ok", r["error"]
-    return r
-
-
-def R(result, n):
-    return result["variables"].get(f"R{n}", 0.0)
+    return run_mpf(tmp_path, text, extra, machine_text=MACHINE, ok=True)
 
 
 def _event(time: float, kind: str, **fields) -> str:

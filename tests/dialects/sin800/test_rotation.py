@@ -10,31 +10,11 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
-
-from ncvm.api import run
-from ncvm.runtime.session import RunOptions
-
-MACHINE = """
-[[axis]]
-name = "X"
-[[axis]]
-name = "Y"
-[[axis]]
-name = "Z"
-[sin800]
-control = "880"
-"""
+from sin800_helpers import run_mpf
 
 
 def _run(tmp_path: Path, text: str, extra: str = "", ok: bool = True):
-    (tmp_path / "machine.toml").write_text(MACHINE + extra)
-    path = tmp_path / "prog.mpf"
-    path.write_text(text)
-    result, _ = run(path, dialect="sin800", machine=tmp_path / "machine.toml",
-                    options=RunOptions(state_dir=tmp_path / ".ncvm"))
-    if ok:
-        assert result["status"] == "ok", result["error"]
-    return result
+    return run_mpf(tmp_path, text, extra, ok=ok)
 
 
 def _xy(result):

@@ -6,6 +6,7 @@ import math
 from pathlib import Path
 
 import pytest
+from sin800_helpers import MACHINE, R, run_mpf
 
 from ncvm.api import run
 from ncvm.dialects import get_dialect
@@ -13,32 +14,10 @@ from ncvm.dialects.sinumerik.reader import Arith, AtInstr, Word, read_program
 from ncvm.machine.config import load_machine
 from ncvm.runtime.session import RunOptions, Session
 
-MACHINE = """
-[[axis]]
-name = "X"
-[[axis]]
-name = "Y"
-[[axis]]
-name = "Z"
-[sin800]
-control = "880"
-"""
-
 
 def _run(tmp_path: Path, text: str, name: str = "prog.mpf", machine: str = MACHINE, files: dict | None = None,
          state: str = ".ncvm"):
-    (tmp_path / "machine.toml").write_text(machine)
-    for fname, body in (files or {}).items():
-        (tmp_path / fname).write_text(body)
-    path = tmp_path / name
-    path.write_text(text)
-    result, _ = run(path, dialect="sin800", machine=tmp_path / "machine.toml",
-                    options=RunOptions(state_dir=tmp_path / state))
-    return result
-
-
-def R(result, n):
-    return result["variables"].get(f"R{n}", 0.0)
+    return run_mpf(tmp_path, text, machine_text=machine, name=name, files=files, state=state)
 
 
 def test_reader_splits_items():

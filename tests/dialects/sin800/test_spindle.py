@@ -11,38 +11,17 @@ import math
 from pathlib import Path
 
 import pytest
+from sin800_helpers import R, machine, run_mpf
 
-from ncvm.api import check, run
-from ncvm.runtime.session import RunOptions
-
-MACHINE = """
-[[axis]]
-name = "X"
-[[axis]]
-name = "Z"
-[sin800]
-control = "880"
-"""
+from ncvm.api import check
 
 
 def _run(tmp_path: Path, text: str, extra: str = "", control: str = "880"):
-    machine = MACHINE.replace('"880"', f'"{control}"') + extra
-    (tmp_path / "machine.toml").write_text(machine)
-    path = tmp_path / "prog.mpf"
-    path.write_text(text)
-    result, _ = run(path, dialect="sin800", machine=tmp_path / "machine.toml",
-                    options=RunOptions(state_dir=tmp_path / ".ncvm"))
-    return result
+    return run_mpf(tmp_path, text, extra, machine_text=machine("XZ", control))
 
 
 def _ok(tmp_path: Path, text: str, extra: str = "", control: str = "880"):
-    r = _run(tmp_path, text, extra, control)
-    assert r["status"] == "ok", r["error"]
-    return r
-
-
-def R(result, n):
-    return result["variables"].get(f"R{n}", 0.0)
+    return run_mpf(tmp_path, text, extra, machine_text=machine("XZ", control), ok=True)
 
 
 def test_position_and_speed_after_a_dwell(tmp_path):

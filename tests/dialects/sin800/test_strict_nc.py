@@ -5,21 +5,15 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
+from sin800_helpers import MACHINE, run_mpf
 
 from ncvm.api import run
 from ncvm.dialects.sinumerik.ncdata import Cl800Error, nc8
 from ncvm.runtime.session import RunOptions
 
-MACHINE = '[[axis]]\nname = "X"\n[[axis]]\nname = "Y"\n[[axis]]\nname = "Z"\n[sin800]\ncontrol = "880"\n'
-
 
 def _run(tmp_path: Path, text: str, strict: bool):
-    (tmp_path / "machine.toml").write_text(MACHINE + f"strict_nc = {'true' if strict else 'false'}\n")
-    path = tmp_path / "prog.mpf"
-    path.write_text(text)
-    result, _ = run(path, dialect="sin800", machine=tmp_path / "machine.toml",
-                    options=RunOptions(state_dir=tmp_path / ".ncvm"))
-    return result
+    return run_mpf(tmp_path, text, f"strict_nc = {'true' if strict else 'false'}\n")
 
 
 def test_nc8_rounding_and_range():
