@@ -459,3 +459,35 @@ end.
     assert int(out[0].split()[-1]) == pytest.approx(100.01 / 64e-6, abs=10)
     assert int(out[2].split()[-1]) == pytest.approx(50.01 / 64e-6, abs=10)
     assert r["position"]["X"] == 1000.0 and r["position"]["Y"] == 500.0
+
+
+def test_a_sleeping_task_sees_the_stop_another_tasks_event_handler_makes(sap):
+    # Task 0 waits on A1's 100 s move; task 1, itself waiting on A2, gets EVUI at 30 s and stops A1 with MS.
+    # Task 0 must see A1 stand still in the servo cycle after the stop, not when its own move would have ended.
+    text = """{$TASK 0}
+program Main;
+begin
+  STARTCNCT(1);
+  TRVL := 10.0; TRAC := 1000.0;
+  MLAW(A1 := 1000.0);
+  writeln('0: A1 done at ', CLOCK);
+end.
+{$TASK 1}
+program Other;
+procedure EVUI; begin writeln('1: UI at ', CLOCK); MS(A1); DISEV(EVUI); end;
+begin
+  enev(EVUI);
+  TRVL := 10.0; TRAC := 1000.0;
+  MLAW(A2 := 500.0);
+  writeln('1: A2 done at ', CLOCK);
+end.
+"""
+    r = sap(text, machine_toml=EO_MACHINE + scenario((30.0, "A1", 2, True)))
+    assert r["status"] == "ok", r["error"]
+    ui, done, a2 = (int(line.split()[-1]) for line in r["output"])
+    assert r["output"][0].startswith("1: UI") and r["output"][1].startswith("0: A1 done")
+    assert ui == math.ceil(30.0 / 64e-6 / 20) * 20 + 1  # the first servo cycle at or after 30 s, a statement on
+    # 10 mm/s braked at the stop deceleration: the axis stands within a few servo cycles, near 300 mm
+    assert 0 < done - ui < 10 * 20
+    assert r["position"]["X"] == pytest.approx(300.0, abs=0.1)
+    assert a2 == pytest.approx(50.01 / 64e-6, abs=10)

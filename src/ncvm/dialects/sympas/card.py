@@ -81,6 +81,8 @@ class Card(Commands):
         self.active_zo = 0
         self.tasks = [Task(self, n) for n in range(4)]
         self.steps = 0
+        self.acts = 0  # counts the moments a task may have changed the card (see quiet_until)
+        self.timed_done = 0  # timed actions and scenario events carried out so far
         self.step_limit = session.steps.limit - session.steps.steps
         self.timed: list = []  # heap of (tick, seq, fn)
         self._seq = 0
@@ -117,6 +119,7 @@ class Card(Commands):
         while self.timed and self.timed[0][0] <= upto:
             _, _, fn = heapq.heappop(self.timed)
             fn()
+            self.timed_done += 1
 
     def _scenario_action(self, ev):
         d = ev.data
@@ -452,6 +455,7 @@ class Card(Commands):
                 yield from tk.wait_until(self.wake_time(tk, end), ends=end)
         finally:
             tk.held = None
+            tk.leaves_wait()
 
     def wake_time(self, tk, until: float) -> float:
         """When a task waiting for ``until`` looks again: at ``until`` if it runs alone, else every servo
@@ -475,11 +479,16 @@ class Card(Commands):
     def quiet_until(self, tk) -> float:
         """The earliest moment something outside ``tk`` can change the card: another running task acts no
         earlier than its own time (the scheduler runs the earliest task first), a sleeping one when its wait
-        ends, a timed action or scenario event at its time. Until then only ``tk``'s own motion goes on."""
+        ends (as it worked that out, if no task has acted since), a timed action or scenario event at its
+        time. Until then only ``tk``'s own motion goes on."""
         t = self.next_timed()
+        acts, done = self.acts, self.timed_done
         for o in self.tasks:
             if o is not tk and o.state == RUNNING:
-                at = o.time if o.waits_for is None else o.waits_for
+                if o.waits_for is None or o.waits_mark != acts or (o.polls and o.polled != done):
+                    at = o.time  # it may act when it looks next: a handler may start after a timed action
+                else:
+                    at = o.waits_for
                 if at < t:
                     t = at
         return t
@@ -563,6 +572,8 @@ class Card(Commands):
                 horizon = min(horizon, tk.time)
             tk.check_at = horizon
             tk.set_budget()
+            if tk.waits_for is None:
+                self.acts += 1  # a task that is not sleeping may change anything
             try:
                 next(tk.gen)
             except StopIteration:

@@ -348,6 +348,7 @@ class Commands:
                 yield from tk.wait_until(self.wake_time(tk, until), ends=until)  # inf: held by TROVR = 0, as a W-wait
         finally:
             tk.held = None
+            tk.leaves_wait()
 
     def cmd_smla(self, tk, items, loc):
         return self._spool(tk, items, loc, "mla")

@@ -44,6 +44,9 @@ class Task:
         self.main_locals = None
         self.held = None  # card.steps when this task last found its W-wait held by TROVR = 0
         self.waits_for: float | None = None  # while it sleeps: when it acts again if nothing else happens
+        self.waits_mark = 0  # card.acts when waits_for was worked out (valid while no task has acted since)
+        self.polls = False  # whether it looks for events while it sleeps
+        self.polled = -1  # card.timed_done when it last looked for events
         self.max_depth = int(card.cfg["max_call_depth"])
         self.reset_state()
 
@@ -104,6 +107,7 @@ class Task:
     def poll_events(self):
         """Run the highest-priority enabled event whose condition holds (§6.4, L1598-1610)."""
         card = self.card
+        self.polled = card.timed_done
         edge = card.cfg["event_trigger"] == "edge"
         for name in EVENTS:
             fn = self.enabled.get(name)
@@ -125,36 +129,54 @@ class Task:
                 yield from fn(self)
             finally:
                 self.in_handler = False
-            return
+            return True
 
     def others_running(self) -> bool:
         return any(t.state == RUNNING and t is not self for t in self.card.tasks)
 
     def wait_until(self, tick: float, poll: bool = True, ends: float | None = None):
         """Sleep until ``tick``; ``ends`` is when the wait itself ends if nothing else happens (a W-wait
-        looks again at ``tick`` before its move ends). With events enabled, look for them in the servo
-        cycles where one can have become active: every cycle while EVLSS follows the motion, else at the
-        next timed action or when another task can act (the input events change with nothing else)."""
+        looks again at ``tick`` before its move ends, and says when it leaves). With events enabled, look
+        for them in the servo cycles where one can have become active: every cycle while EVLSS follows the
+        motion, else at the next timed action or when another task can act (the input events change with
+        nothing else)."""
         card = self.card
         servo = card.servo
-        self.waits_for = tick if ends is None else ends
         try:
             while self.time < tick:
                 step = tick
+                self.sleeps_until(tick if ends is None else ends, poll)
                 if poll and self.enabled:
                     cycle = (math.floor(self.time / servo) + 1) * servo
-                    if not card.events_follow_motion(self):
+                    if card.events_follow_motion(self):
+                        self.waits_for = None  # a handler can start in any cycle
+                    else:
                         quiet = card.quiet_until(self)
                         cycle = max(cycle, math.ceil(quiet / servo) * servo if quiet < math.inf else quiet)
                     step = min(tick, cycle)
                 self.time = step
                 yield
                 if poll and self.enabled and not self.in_handler:
-                    self.waits_for = None  # a handler runs: this task acts now
-                    yield from self.poll_events()
-                    self.waits_for = tick if ends is None else ends
+                    self.waits_for = None  # a handler that starts acts now
+                    if (yield from self.poll_events()):
+                        card.acts += 1
         finally:
-            self.waits_for = None
+            if ends is None:
+                self.leaves_wait()
+            else:
+                self.waits_for = None
+
+    def sleeps_until(self, ends: float, poll: bool) -> None:
+        """This task sleeps and, if nothing else happens, acts again at ``ends`` (other waiting tasks plan
+        their next look by it while no task has acted since); ``poll``: it looks for events meanwhile."""
+        self.waits_for = ends
+        self.waits_mark = self.card.acts
+        self.polls = poll and bool(self.enabled)
+
+    def leaves_wait(self) -> None:
+        """The wait is over: what the task does next may change what the others wait for."""
+        self.waits_for = None
+        self.card.acts += 1
 
     def fast_wait(self, tick: float, poll: bool = True) -> bool:
         """Advance to ``tick`` at once when nothing can happen before (no other task, no timed action)."""
