@@ -5,6 +5,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import pytest
 from click.testing import CliRunner
 
 from ncvm.api import run
@@ -202,6 +203,39 @@ def test_string_function_argument_types_are_checked_when_linking(tmp_path):
     for text in ('10 N% = LEN(5)\nM30\n', '10 A$ = CHR$("A")\nM30\n', '10 X? = EOF("1")\nM30\n'):
         r, _ = run_cpl(tmp_path, text)
         assert r["error"]["code"] == "CPL032", text
+
+
+MMC_EXAMPLE = ('10 DIM PROGNAME$(50)\n20 PROGNAME$ = "WinProg"\n30 INTPAR% = 1\n40 REALPAR = 1.1\n'
+               '50 I% = MMC(PROGNAME$, INTPAR%, REALPAR)\n60 IF I% = 0 THEN\n70 IF INTPAR% = 2 THEN\n'
+               '80 R$ = "TWO"\n90 ELSE\n100 R$ = "OTHER"\n110 ENDIF\n120 ENDIF\nM30\n')
+
+
+def test_d10_mmc_with_a_client_attached_through_the_run_options(tmp_path):
+    """L5209-5217: the client gets the names and values, answers 0 and writes INTPAR% = 2 back; block
+    preparation goes on only after the answer, so line 70 sees the new value."""
+    seen = []
+
+    def client(names, values):
+        seen.append((names, [v if isinstance(v, (int, float)) else str(v) for v in values]))
+        return 0, {"INTPAR%": 2, "REALPAR": 2.5}
+
+    r, _ = run_cpl(tmp_path, MMC_EXAMPLE, mmc_client=client)
+    assert r["error"] is None
+    assert seen == [(["PROGNAME$", "INTPAR%", "REALPAR"], ["WinProg", 1, pytest.approx(1.1)])]
+    v = r["variables"]
+    assert (v["I%"], v["INTPAR%"], v["REALPAR"], v["R$"], v["PROGNAME$"]) == (0, 2, 2.5, "TWO", "WinProg")
+
+
+@pytest.mark.parametrize("answer, rc", [((2, {"INTPAR%": 2}), 2), (ValueError("client down"), 2)])
+def test_mmc_client_error_writes_nothing_back(tmp_path, answer, rc):
+    def client(names, values):
+        if isinstance(answer, Exception):
+            raise answer
+        return answer
+
+    r, _ = run_cpl(tmp_path, MMC_EXAMPLE, mmc_client=client)
+    assert r["error"] is None
+    assert (r["variables"]["I%"], r["variables"]["INTPAR%"]) == (rc, 1) and "R$" not in r["variables"]
 
 
 def test_mmc_only_as_statement_or_assignment(tmp_path):
