@@ -127,3 +127,15 @@ def test_probe_on_axis_without_probe_enable(run_text, reference):
                   scenario=[{"time": 0.0, "kind": "probe", "X": 4.0}])
     r = run_text("N1 G75 X10 F100\n2 A=CPROBE(1)\nM30\n", name="p.cpl", machine=m)
     assert r["error"]["code"] == "CPL040"
+
+
+def test_ppos_considers_the_program_coordinate_shift_l1571(run_text, reference):
+    """L1571-1576: PPOS considers the axis zero shifts, the tool compensation and the program coordinate
+    shift G168/G268 (and not G92, L1578-1583 list only transformations as not considered)."""
+    text = ("N1 G54\nN2 G168 X10\nN3 G268 X2\nN4 G0 X0\nN5 G75 X50 F500\n6 PR=PROBE(1)\n7 PP=PPOS(1)\n"
+            "8 CP=CPROBE(1)\n9 WAIT\n10 WP=WPOS(1)\nM30\n")
+    m = reference(1, offsets={"G54": [10.0, 0.0, 0.0]}, scenario=[{"time": 0.0, "kind": "probe", "X": 40.0}])
+    v = run_text(text, name="p.cpl", machine=m)["variables"]
+    # MCS 40 - axis ZS 10 - G168 10 - G268 2 = 18; the probe stopped the move, so WPOS (WCS, which holds the
+    # program coordinate shift, digest §8.2) is 40 - 10 = 30, and the PCS 18
+    assert (v["PR"], v["PP"], v["CP"], v["WP"]) == (40.0, 18.0, 18.0, 30.0)
