@@ -26,6 +26,15 @@ def test_sd_examples_l2296(run):
     assert v["SR"] == 80.0 and v["S3%"] == 1000
 
 
+def test_g_groups_with_one_state_in_the_kernel_sd1_and_ncf(run):
+    """SD(1,g,·) and NCF (L2090-2113, L2300-2306): the feed type group 7 is G94, the path-control group 25
+    G64 (the kernel knows only these); a group the kernel does not apply at all gives -1 and ""."""
+    text = ('N1 G64 G1 X1 F100\n2 WAIT\n3 A%=SD(1,25,1)\n4 B%=SD(1,7,2)\n5 DIM C$(4)\n6 C$=NCF("G65")\n'
+            '7 DIM D$(4)\n8 D$=NCF("G95")\n9 E%=SD(1,9,1)\n10 DIM F$(4)\n11 F$=NCF("G6")\nM30\n')
+    v = run(text)["variables"]
+    assert (v["A%"], v["B%"], v["C$"], v["D$"], v["E%"], v["F$"]) == (64, 94, "G64", "G94", -1, "")
+
+
 def test_sd9_without_probing_is_not_switched(run):
     assert run("1 A%=SD(9)\nM30\n")["variables"]["A%"] == 1
 
