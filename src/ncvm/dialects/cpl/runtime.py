@@ -35,6 +35,7 @@ from .system import SYSTEM_PROCS
 from .system import setup as system_setup
 from .system.controller import load_controller
 from .system.gfuncs import Typ3Block, activate, prepare
+from .system.ncs import ControlReset
 from .system.plc import f_ic
 from .system.positions import probe_block
 
@@ -172,6 +173,8 @@ class CplRuntime:
         try:
             try:
                 result = self.unit(main)((), True)
+            except ControlReset as reset:  # MCOPS(2) on the own channel: the main program is exited
+                self.session.say(str(reset))
             finally:
                 self.session.variables = self.report(result or self.fault_locals)
             self.drain()

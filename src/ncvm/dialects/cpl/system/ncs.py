@@ -18,6 +18,16 @@ from .offsets import push_to_kernel
 from .sysdata import g_of_group
 
 OK, NO_CHANNEL, BUSY, SYNTAX, NOT_AVAILABLE, NO_PROGRAM, MODE_REFUSED = 0, 1, 2, 18, 102, 6, 13
+STARTED = 15  # search block impossible: the main program has already been started
+
+
+class ControlReset(Exception):
+    """MCOPS(2) on the program's own channel (or the whole system): the interpolator stops, the jobs not
+    yet executed are discarded and the main program is exited (L3155-3166)."""
+
+    def __init__(self, chan: int):
+        super().__init__(f"control reset of {'the system' if chan == -2 else f'channel {chan}'}: "
+                         "the main program is exited (MCOPS 2)")
 #: M functions the NC kernel carries out itself; any other one is an auxiliary function the PLC acknowledges
 KERNEL_M = frozenset((0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 30))
 #: channel operating modes MCODS 31/48 and MCOPS 7 (digest §11 C6)
@@ -348,10 +358,9 @@ def f_mcops(rt, fct, chan, p1=None, p2=None, p3=None, p4=None):
     if chan != -2 and chan not in _channels(c):
         return NO_CHANNEL
     own = chan == c.channel
-    if fct == 1:  # cancel distance to go: discard the prepared blocks
+    if fct == 1:  # cancel distance to go: the prepared blocks are prepared again with the new corrections
         if own:
-            rt.queue.clear()
-            rt._shadow = None
+            push_to_kernel(rt)
         return OK
     if fct in (2, 5):  # type 2: no automatic program re-selection (MCODS 70)
         for ch in (_channels(c) if chan == -2 else [chan]):
@@ -360,9 +369,13 @@ def f_mcops(rt, fct, chan, p1=None, p2=None, p3=None, p4=None):
         c.errors[:] = [e for e in c.errors if chan != -2 and e["channel"] not in (chan, -1)]
         st["selected"].pop(chan, None)
         if own or chan == -2:
+            rt.queue.clear()  # jobs not yet executed are discarded (L3159)
             push_to_kernel(rt)
+            raise ControlReset(chan)
         return OK
     if fct == 3:
+        if own:
+            return STARTED
         return OK if st["selected"].get(chan) else 10
     if fct == 4:
         if own:
