@@ -71,6 +71,17 @@ def test_ic_read_and_write_l2408(run_text, reference):
     assert r["variables"] == {"A?": True, "B?": False, "C?": True, "D?": False}
 
 
+@pytest.mark.parametrize("expr, ok", [
+    ("IC(0,0,3)", True), ("IC(0,0,4)", False), ("IC(0,0,0)", True), ("IC(95,3,3)", True), ("IC(0,3,4)", False),
+    ("IC(0,1,8)", True), ("IC(0,1,9)", False), ("IC(0,4,0)", False), ("IC(0,2,1)", True), ("IC(0,2,2)", False),
+    ("IC(0,6,1)", True), ("IC(0,7,2)", False), ("IC(5,9)", True), ("IC(0,8,0)", False)])
+def test_ic_index_ranges_l2396(run, expr, ok):
+    """L2396-2405: index = channel 0..max channel, axis 1..max axis, spindle 1..max spindle, otherwise 1
+    (the reference configuration has channels 1..3, physical axes 1..8 and one spindle)."""
+    r = run(f"10 A?={expr}\nM30\n")
+    assert (r["error"] is None) if ok else (r["error"]["code"] == "CPL023"), r["error"]
+
+
 @pytest.mark.parametrize("stmt", ["IC(80,3,1)=TRUE", "IC(79,0,1)=TRUE", "IC(96,0,1)=TRUE"])
 def test_ic_write_only_channel_outputs_81_to_96(run, stmt):
     assert run(f"1 {stmt}\nM30\n")["error"]["code"] == "CPL040"
