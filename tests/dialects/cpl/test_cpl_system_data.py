@@ -256,3 +256,8 @@ def test_mcods_drive_texts_and_cyclic_values(run):
     assert (v["E1%"], v["E2%"], v["E3%"]) == (0, 0, 0)
     assert v["T$"] == "DKC 03.3" and v["P%"] == [None, 20000, 0, 0, None, None, None, None, None]  # 3 axes
     assert v["N$"] == "X       \0Y       \0Z       \0"
+
+
+@pytest.mark.parametrize("call", ["SDR(Q)", "SD(Q)", "MCA(Q,0)"])
+def test_unassigned_group_or_number_is_variable_not_assigned(run, call):
+    assert run(f"10 R={call}\nM30\n")["error"]["code"] == "CPL020"

@@ -250,6 +250,7 @@ def _axis_numbers(rt, group, i1, i2):
 def f_sdr(rt, group, i1=None, i2=None):
     """SDR: system data as REAL (L2313-2351)."""
     c = rt.ctl
+    group = nul(group)
     if group in (2, 202):
         return float(f_sd(rt, group, i1))
     if group == 1:
