@@ -293,3 +293,10 @@ def test_io_fault_in_a_sub_program_names_it_and_the_call_stack(tmp_path, run_tex
     assert err["code"] == "CPL612" and err["file"].endswith("READLOG.cpl") and err["line"] == 1
     assert err["message"] == "FILE DOES NOT EXIST: PNONE (CPL line 10)"
     assert any("main.cpl:2" in note for note in err["stack"])
+
+
+@pytest.mark.parametrize("stmt", ["INP#(1)", "INP#(1;)"])
+def test_inp_without_a_variable_is_a_syntax_error_l4107(cpl, stmt):
+    """INP#(n,v1[,v2...]) (L4107-4130) reads into at least one variable."""
+    r, _ = cpl(f'10 OPENR(1,"P1")\n20 {stmt}\nM30\n')
+    assert r["error"]["code"] == "CPL001" and "at least one variable" in r["error"]["message"]

@@ -653,6 +653,8 @@ class Gen:
     def inp_file(self, s: A.Proc) -> None:
         """INP#(n, targets...): character fields are filled in place, plain variables get the values read."""
         line = s.line
+        if len(s.args) < 2:
+            raise GenError("CPL001", "INP# needs a file number and at least one variable: INP#(n,v1[,v2...])")
         targets, stores = [], []
         for k, a in enumerate(s.args[1:]):
             if isinstance(a, A.Var) and a.var.suffix == "$" and self._is_char_field(a):
