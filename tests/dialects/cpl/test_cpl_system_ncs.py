@@ -119,3 +119,14 @@ def test_block_search_on_the_running_own_channel_is_refused_mcops3(run):
     main program is running: 15 "search block is not possible ... already started" (L2662)."""
     v = run('1 A%=MCOPS(3,1,"N50","N100")\n2 B%=MCOPS(3,2,"N50")\n3 C%=MCOPS(3,7)\nM30\n')["variables"]
     assert (v["A%"], v["B%"], v["C%"]) == (15, 10, 1)
+
+
+def test_skip_block_and_optional_stop_signals_68_69(run, reference, run_text):
+    """L3066-3069: output "activated" and input of skip block (68) and optional stop (69). The machine's
+    block_skip setting decides 68; the NC kernel stops at every M1, so optional stop is on (1, 1)."""
+    text = "1 DIM S%(2):DIM O%(2)\n2 V=0:A%=MCODS(68,1,V,S%,2)\n3 V=0:B%=MCODS(69,1,V,O%,2)\nM30\n"
+    v = run(text)["variables"]
+    assert (v["A%"], v["S%"][1:], v["B%"], v["O%"][1:]) == (0, [1, 1], 0, [1, 1])
+    m = reference(1, setting_data={"block_skip": False})
+    v = run_text(text, name="p.cpl", machine=m)["variables"]
+    assert (v["S%"][1:], v["O%"][1:]) == ([0, 0], [1, 1])

@@ -212,6 +212,8 @@ def _more(rt, typ: int, ch: int, system, own, axisno, idno):
     if typ == 68:
         skip = 1 if rt.block_skip else 0
         return [skip, skip]
+    if typ == 69:  # the NC kernel stops at every M1: optional stop is activated, and its input is set
+        return [1, 1]
     if typ == 78:
         return "".join(a.name[:8].ljust(8) + "\0" for a in own)
     if typ == 83:
