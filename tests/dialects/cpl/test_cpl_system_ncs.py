@@ -130,3 +130,11 @@ def test_skip_block_and_optional_stop_signals_68_69(run, reference, run_text):
     m = reference(1, setting_data={"block_skip": False})
     v = run_text(text, name="p.cpl", machine=m)["variables"]
     assert (v["S%"][1:], v["O%"][1:]) == ([0, 0], [1, 1])
+
+
+def test_online_correction_values_and_status_89_90(run):
+    """L3119-3122: per coordinate of the channel the online correction (WCS) and its status (0 inactive); the
+    simulated machine has none, so 0.0 and 0 for X, Y, Z of channel 1, and the rest of the buffer untouched."""
+    text = ("1 DIM W(4):DIM S%(4):W(4)=7:S%(4)=7\n2 V=0:A%=MCODS(89,1,V,W,4)\n3 V=0:B%=MCODS(90,1,V,S%,4)\nM30\n")
+    v = run(text)["variables"]
+    assert (v["A%"], v["W"][1:], v["B%"], v["S%"][1:]) == (0, [0.0, 0.0, 0.0, 7.0], 0, [0, 0, 0, 7])

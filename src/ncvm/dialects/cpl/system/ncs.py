@@ -214,6 +214,8 @@ def _more(rt, typ: int, ch: int, system, own, axisno, idno):
         return [skip, skip]
     if typ == 69:  # the NC kernel stops at every M1: optional stop is activated, and its input is set
         return [1, 1]
+    if typ in (89, 90):  # the simulated machine has no online correction: per coordinate 0.0 / inactive (0)
+        return [0.0 if typ == 89 else 0 for _ in own]
     if typ == 78:
         return "".join(a.name[:8].ljust(8) + "\0" for a in own)
     if typ == 83:
