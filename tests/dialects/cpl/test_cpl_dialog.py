@@ -268,3 +268,14 @@ def test_colour_tables_rgb_bitmaps_and_clearing(tmp_path):
     assert r["error"]["code"] == "CPL801"
     r, _ = run_cpl(tmp_path, '10 GWD(100,500,100,350) : MWD(0,400,0,100)\nM30\n')
     assert r["error"]["code"] == "CPL802"
+
+
+@pytest.mark.parametrize("stmt, code", [
+    ("COL(Q%)", "CPL020"), ("LIN(Q,1,2,3)", "CPL020"), ("CIR(1,Q,5)", "CPL020"), ("TFO(Q%)", "CPL020"),
+    ("GWD(0,Q%,0,100)", "CPL020"), ('OPENW(1,Q$)', "CPL020"), ('DSP(Q%,1,"X")', "CPL020"),
+    ("COL(,2)", None), ("LIN(,1)", None), ("DSP(1,1,Q)", None), ("PRN(1,1,Q$)", None)])
+def test_an_unassigned_variable_is_not_an_omitted_argument(tmp_path, stmt, code):
+    """NUL in an argument is VARIABLE NOT ASSIGNED (digest §4.4); only an empty position is omitted
+    (LIN(,1) L5015-5030, COL(,2) L4923-4949), and a NUL value to print prints nothing."""
+    r, _ = run_cpl(tmp_path, f"10 {stmt}\nM30\n")
+    assert (r["error"]["code"] if r["error"] else None) == code
