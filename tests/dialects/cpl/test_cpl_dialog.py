@@ -273,6 +273,9 @@ def test_colour_tables_rgb_bitmaps_and_clearing(tmp_path):
 @pytest.mark.parametrize("stmt, code", [
     ("COL(Q%)", "CPL020"), ("LIN(Q,1,2,3)", "CPL020"), ("CIR(1,Q,5)", "CPL020"), ("TFO(Q%)", "CPL020"),
     ("GWD(0,Q%,0,100)", "CPL020"), ('OPENW(1,Q$)', "CPL020"), ('DSP(Q%,1,"X")', "CPL020"),
+    ('PRN#(Q%,"X")', "CPL020"), ("INP#(Q%,A)", "CPL020"), ("A?=EOF(Q%)", "CPL020"), ("A%=FILEPOS(Q%)", "CPL020"),
+    ("A%=FILESIZE(Q%)", "CPL020"), ("A%=ERASE(Q$)", "CPL020"), ("A$=FILEDATE(Q$)", "CPL020"),
+    ("A%=FILEACCESS(Q$)", "CPL020"),
     ("COL(,2)", None), ("LIN(,1)", None), ("DSP(1,1,Q)", None), ("PRN(1,1,Q$)", None)])
 def test_an_unassigned_variable_is_not_an_omitted_argument(tmp_path, stmt, code):
     """NUL in an argument is VARIABLE NOT ASSIGNED (digest §4.4); only an empty position is omitted

@@ -594,7 +594,7 @@ class Gen:
             if not s.args or s.args[0] is None:
                 raise GenError("CPL001", f"{name} needs a file number")
             if name == "PRN#":
-                items = ", ".join(self.out_arg(a) for a in s.args)
+                items = ", ".join(self.out_arg(a) if k else self.set_arg(a) for k, a in enumerate(s.args))
                 self.emit(f"_io.files.PRN({items}, semicolon={s.no_end})", line)
             else:
                 self.inp_file(s)
@@ -677,7 +677,8 @@ class Gen:
             else:
                 raise GenError("CPL001", "INP# reads into variables")
         r = self.temp("r")
-        self.emit(f"{r} = _io.files.INP({self.arg(s.args[0])}, {', '.join(targets)}, semicolon={s.no_end})", line)
+        self.emit(f"{r} = _io.files.INP({self.set_arg(s.args[0])}, {', '.join(targets)}, semicolon={s.no_end})",
+                  line)
         for k, a in stores:
             self.store(a, f"{r}[{k}]", "?", line)
 
