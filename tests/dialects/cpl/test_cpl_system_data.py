@@ -261,3 +261,13 @@ def test_mcods_drive_texts_and_cyclic_values(run):
 @pytest.mark.parametrize("call", ["SDR(Q)", "SD(Q)", "MCA(Q,0)"])
 def test_unassigned_group_or_number_is_variable_not_assigned(run, call):
     assert run(f"10 R={call}\nM30\n")["error"]["code"] == "CPL020"
+
+
+def test_sd13_follows_the_operating_mode_mcops7(run):
+    """L2241: SD(13) 0 single block/step, 1 automatic, 2 program block; the running program may switch
+    between the automatic sub-modes with MCOPS(7) (L3212-3228): 10 single block, 6 program block, 5 automatic."""
+    text = ("1 A%=SD(13)\n2 E1%=MCOPS(7,1,10)\n3 B%=SD(13)\n4 E2%=MCOPS(7,1,6)\n5 C%=SD(13)\n6 E3%=MCOPS(7,1,5)\n"
+            "7 D%=SD(13)\n8 E4%=MCOPS(7,1,1)\n9 F%=SD(13)\nM30\n")
+    v = run(text)["variables"]
+    assert (v["A%"], v["B%"], v["C%"], v["D%"], v["F%"]) == (1, 0, 2, 1, 1)
+    assert (v["E1%"], v["E2%"], v["E3%"], v["E4%"]) == (0, 0, 0, 13)  # jog is refused while the program runs

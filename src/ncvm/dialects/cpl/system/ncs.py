@@ -13,6 +13,7 @@ import zlib
 from ..errors import CplError
 from ..io.strings import CharacterField
 from .axes import kernel_index, nul
+from .controller import ncs_state
 from .gfuncs import GEARS, program_shift
 from .offsets import push_to_kernel
 from .sysdata import g_of_group
@@ -35,10 +36,7 @@ MODES = (1, 2, 4, 5, 6, 7, 10, 11, 12, 13, 14)
 
 
 def _state(rt) -> dict:
-    st = getattr(rt, "_ncs", None)
-    if st is None:
-        st = rt._ncs = {"mode": {}, "selected": {}, "return": {}, "recording": {}, "reselect": {}}
-    return st
+    return ncs_state(rt)
 
 
 def _channels(c) -> list[int]:

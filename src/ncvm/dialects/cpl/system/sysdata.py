@@ -11,7 +11,7 @@ import math
 from ..errors import CplError
 from ..values import sv
 from .axes import nul
-from .controller import MAX_AREAS
+from .controller import MAX_AREAS, SD13_OF_MODE, ncs_state
 from .gfuncs import N_LOGICAL
 from .positions import probe_switched
 from .transforms import active_group
@@ -110,8 +110,8 @@ def f_sd(rt, group, i1=None, i2=None, i3=None):
         if i1 in (3, 4):
             return -1  # no 2nd spindle
         raise CplError("CPL023", f"SD(12,{i1})")
-    if group == 13:
-        return 1  # automatic mode
+    if group == 13:  # the machining mode of the own channel (automatic unless MCOPS 7 changed it, L2241)
+        return SD13_OF_MODE.get(ncs_state(rt)["mode"].get(c.channel, 5), 1)
     if group == 14:
         return c.macoda[601000010][0]
     if group == 15:
