@@ -282,3 +282,14 @@ def test_an_unassigned_variable_is_not_an_omitted_argument(tmp_path, stmt, code)
     (LIN(,1) L5015-5030, COL(,2) L4923-4949), and a NUL value to print prints nothing."""
     r, _ = run_cpl(tmp_path, f"10 {stmt}\nM30\n")
     assert (r["error"]["code"] if r["error"] else None) == code
+
+
+@pytest.mark.parametrize("first", ["N10 (TYP2)", "(TYP2)", "N10 G90"])
+def test_typ2_programs_get_five_softkeys_l4464(tmp_path, first):
+    """L4462-4468: new programs get 8 softkeys; an old CC 200/220 program, marked by "(TYP2)" as its first
+    instruction, always gets 5."""
+    r, s = run_cpl(tmp_path, f'{first}\n20 SFK(K%,"A","B","C","D","E","F")\nM30\n', keys="SK5\n")
+    assert r["error"] is None and r["variables"]["K%"] == 5
+    typ2 = "TYP2" in first
+    assert r["output"][0] == "SFK [1:A] [2:B] [3:C] [4:D] [5:E]" + ("" if typ2 else " [6:F]")
+    assert s.screen.softkey_count == (5 if typ2 else 8)

@@ -56,7 +56,7 @@ class CplRuntime:
         cfg = self.machine.sections.get("cpl", {}) or {}
         self.lookahead = int(cfg.get("lookahead", 0))
         self.block_skip = bool(self.machine.setting_data.get("block_skip", True))
-        self.io = CplIO.for_session(session)
+        self.io = CplIO.for_session(session, typ2=linked.main.prog.typ2)
         session.screen = self.io.screen
         self._pictures = 0
         if session.options.screen_dir is not None:
