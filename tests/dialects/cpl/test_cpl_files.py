@@ -300,3 +300,27 @@ def test_inp_without_a_variable_is_a_syntax_error_l4107(cpl, stmt):
     """INP#(n,v1[,v2...]) (L4107-4130) reads into at least one variable."""
     r, _ = cpl(f'10 OPENR(1,"P1")\n20 {stmt}\nM30\n')
     assert r["error"]["code"] == "CPL001" and "at least one variable" in r["error"]["message"]
+
+
+def test_running_programs_are_active_for_erase_and_fileaccess_l4396(tmp_path):
+    """ERASE answers 3 "active" (L4390-4396) and FILEACCESS sets bit 16 (L4418-4425) for a program that is running
+    or called, here the main program and its sub-program, kept in the file root; neither is erased."""
+    from ncvm.api import run
+    from ncvm.runtime.session import RunOptions
+
+    root = tmp_path / ".ncvm" / "files"
+    root.mkdir(parents=True)
+    (root / "SELF.cpl").write_text('10 A%=FILEACCESS("SELF.cpl")\n20 E%=ERASE("SELF.cpl")\n30 CALL SUBP\nM30\n')
+    (root / "SUBP.cpl").write_text('10 F%=ERASE("SUBP.cpl")\nM30\n')
+    (root / "OTHER.cpl").write_text("M30\n")
+    r, _ = run(root / "SELF.cpl", options=RunOptions(state_dir=tmp_path / ".ncvm"))
+    assert r["error"] is None
+    assert (r["variables"]["A%"], r["variables"]["E%"]) == (16 + 4 + 2, 3)
+    assert r["output"] == ["warning CPL621: FILE NOT ERASED: SELF.cpl is active",
+                           "warning CPL621: FILE NOT ERASED: SUBP.cpl is active"]
+    assert (root / "SELF.cpl").exists() and (root / "SUBP.cpl").exists()
+    r, _ = run(root / "SELF.cpl", options=RunOptions(state_dir=tmp_path / ".ncvm"))
+    assert r["variables"]["A%"] == 22  # after the run SUBP is no longer active: a program erasing it may
+    (root / "Q.cpl").write_text('10 G%=ERASE("SUBP.cpl")\nM30\n')
+    r, _ = run(root / "Q.cpl", options=RunOptions(state_dir=tmp_path / ".ncvm"))
+    assert r["variables"]["G%"] == 0 and not (root / "SUBP.cpl").exists()

@@ -71,7 +71,10 @@ class CplRuntime:
         self.calls = call_table(self.machine)
         self._modal_busy = False
         self.stack: list[tuple[str, int]] = []  # (path, line of the call) for each active sub-program
-        self.active: list[str] = []
+        #: the running programs, main first (a call of one of them is recursion, §3 L1067); ERASE answers 3
+        #: and FILEACCESS sets bit 16 for them (§6 L4396, L4424)
+        self.active: list[str] = [linked.main.prog.path]
+        self.io.files.active = self.active
         self.hook = session.options.hook
         self._fns: dict = {}
         self._codes: dict = {}
