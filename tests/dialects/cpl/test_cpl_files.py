@@ -324,3 +324,21 @@ def test_running_programs_are_active_for_erase_and_fileaccess_l4396(tmp_path):
     (root / "Q.cpl").write_text('10 G%=ERASE("SUBP.cpl")\nM30\n')
     r, _ = run(root / "Q.cpl", options=RunOptions(state_dir=tmp_path / ".ncvm"))
     assert r["variables"]["G%"] == 0 and not (root / "SUBP.cpl").exists()
+
+
+def test_names_without_a_path_are_in_the_main_programs_directory(tmp_path):
+    """L4414, L4441, digest §11 D13: a name without a path means the current directory, the one of the main
+    program when it lies in the file root; a name with a path starts at the root."""
+    from ncvm.api import run
+    from ncvm.runtime.session import RunOptions
+
+    root = tmp_path / ".ncvm" / "files"
+    (root / "usr" / "user").mkdir(parents=True)
+    main = root / "usr" / "user" / "MAIN.cpl"
+    main.write_text('10 OPENW(1,"LOG1")\n20 PRN#(1,"HELLO")\n30 CLOSE(1)\n40 A%=FILEACCESS("LOG1")\n'
+                    '50 B%=FILEACCESS("/usr/user/LOG1")\n60 C%=FILEACCESS("/LOG1")\n70 OPENW(2,"/TOP")\n'
+                    '80 CLOSE(2)\nM30\n')
+    r, _ = run(main, options=RunOptions(state_dir=tmp_path / ".ncvm"))
+    assert r["error"] is None
+    assert (r["variables"]["A%"], r["variables"]["B%"], r["variables"]["C%"]) == (6, 6, -1)
+    assert content(root / "usr" / "user", "LOG1") == "HELLO\n" + ETX and (root / "TOP").exists()

@@ -75,6 +75,7 @@ class CplRuntime:
         #: and FILEACCESS sets bit 16 for them (§6 L4396, L4424)
         self.active: list[str] = [linked.main.prog.path]
         self.io.files.active = self.active
+        self.io.files.enter_directory_of(linked.main.prog.path)
         self.hook = session.options.hook
         self._fns: dict = {}
         self._codes: dict = {}
