@@ -342,3 +342,22 @@ def test_names_without_a_path_are_in_the_main_programs_directory(tmp_path):
     assert r["error"] is None
     assert (r["variables"]["A%"], r["variables"]["B%"], r["variables"]["C%"]) == (6, 6, -1)
     assert content(root / "usr" / "user", "LOG1") == "HELLO\n" + ETX and (root / "TOP").exists()
+
+
+@pytest.mark.parametrize("name, code", [("../../LOG2", None), ("../../../ESCAPE", "CPL609"),
+                                        ("C:\\usr\\LOG3", None), ("/../ESCAPE", "CPL609")])
+def test_names_never_leave_the_file_root_from_a_sub_directory(tmp_path, name, code):
+    """A name may climb from the current directory (/usr/user) up to the root, never above it: INVALID FILE
+    NAME, and nothing is written outside."""
+    from ncvm.api import run
+    from ncvm.runtime.session import RunOptions
+
+    root = tmp_path / ".ncvm" / "files"
+    (root / "usr" / "user").mkdir(parents=True)
+    main = root / "usr" / "user" / "MAIN.cpl"
+    main.write_text(f'10 OPENW(1,"{name}")\n20 PRN#(1,"X")\n30 CLOSE(1)\nM30\n')
+    r, _ = run(main, options=RunOptions(state_dir=tmp_path / ".ncvm"))
+    assert (r["error"]["code"] if r["error"] else None) == code
+    assert not (tmp_path / ".ncvm" / "ESCAPE").exists() and not (tmp_path / "ESCAPE").exists()
+    if code is None:
+        assert any(p.name in ("LOG2", "LOG3") for p in root.rglob("*"))
