@@ -155,8 +155,14 @@ def f_ppos(rt, sel, axtype=1):
 
 
 def f_cprobe(rt, sel, seltype=1):
-    """CPROBE: the switch point at the coordinate level (PCS): every shift, G92 included (L1430-1473)."""
+    """CPROBE: the switch point at the coordinate level (PCS): every shift, G92 included (L1430-1473). The
+    probe must be enabled (MACODA 1003 00012) for every axis of the channel, not only the one read (L1441)."""
     ax = resolve(rt, sel, seltype)
+    c = rt.ctl
+    blocked = [a.name for a in c.channel_axes(c.channel) if not a.probe]
+    if blocked:
+        raise CplError("CPL040", f"CPROBE: MACODA 1003 00012 'probe can be activated' is not set for "
+                                 f"{', '.join(blocked)} (every axis of the channel needs it)")
     mcs = _latched(rt, ax)
     k = rt.kernel
     i = kernel_index(rt, ax)
