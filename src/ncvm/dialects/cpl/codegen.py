@@ -647,6 +647,7 @@ class Gen:
                          for k, a in enumerate(s.args))
 
     def set_arg(self, e) -> str:
+        """An argument that sets something (a file number, a position, a colour): NUL is an error."""
         code, ty = self.ex(e)
         code = _not_nul(e, code, ty)
         return f"_Dbl({code})" if ty == "D" else code
