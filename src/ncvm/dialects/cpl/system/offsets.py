@@ -74,6 +74,8 @@ def _table_key(c, name: str) -> str | None:
 
 
 def find_table(c, name: str) -> str:
+    if not isinstance(name, str):
+        raise CplError("CPL032", f"axis ZS table name {name!r}: a string is needed")
     key = _table_key(c, name)
     if key is None:
         raise CplError("CPL040", f"axis ZS table {name!r} does not exist")
