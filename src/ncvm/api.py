@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 from pathlib import Path
 
 from .diagnostics import CompileFailed, Diagnostic, UsageError
@@ -53,7 +54,9 @@ def run(path: str | Path, dialect: str | None = None, machine: Machine | str | P
     m = machine_for(path, machine, options.state_dir)
     if options.scenario:
         # what happens over simulated time in this run, on top of the machine file's own scenario
-        m.scenario = sorted([*m.scenario, *load_scenario(options.scenario)], key=lambda e: e.time)
+        # (a copy: a Machine the caller passes again for the next run keeps its own scenario)
+        m = dataclasses.replace(m, scenario=sorted([*m.scenario, *load_scenario(options.scenario)],
+                                                   key=lambda e: e.time))
     session = Session(m, options, dialect=d)
     error: Diagnostic | None
     try:

@@ -39,6 +39,8 @@ class RunOptions:
     screen: Path | None = None  # save the operator screen as it stands at the end (PNG)
     screen_dir: Path | None = None  # save one screen picture per wait for the operator (softkey, input)
     on_session: Callable[["Session"], None] | None = None  # told of the session as soon as it exists
+    #: CPL MMC (manual ch. 9): the client, ``client(names, values) -> (rc, {name: new value})``; None = no client
+    mmc_client: Callable[[list, list], tuple] | None = None
 
 
 class Session:
@@ -55,6 +57,9 @@ class Session:
         self.steps = StepCounter(self.options.max_steps, self.options.hook)
         self.recorder = ToolpathRecorder()
         self.limits = LimitCheck(machine.axes, self.recorder)  # reads the recorded moves at the end
+        #: more checks of the recorded moves a front end adds (e.g. CPL's work areas and dead ranges); each
+        #: has ``first()`` -> violations with ``line`` and ``message()``, reported with the soft limits
+        self.limit_checks: list = []
         sinks: list[CanonSink] = [self.recorder]
         if self.options.trace:
             from ..sinks.trace import JsonlTrace
@@ -103,6 +108,13 @@ class Session:
             self._store.close()
             self._store = None
 
+    def violations(self) -> list:
+        """Soft-limit violations, then those of the front end's checks, each list in program order."""
+        out = list(self.limits.first())
+        for check in self.limit_checks:
+            out.extend(check.first())
+        return out
+
     def result(self, error: Diagnostic | None) -> dict:
         """The JSON document of ``ncvm run --json``."""
         motion = self.recorder.summary()
@@ -116,7 +128,7 @@ class Session:
             "motion": motion.to_json(),
             "cycle_time_s": self.machine.clock.now,
             "steps": min(self.steps.steps, self.steps.limit),  # a runaway is caught just past the limit
-            "limit_violations": [v.message() for v in self.limits.first()],
+            "limit_violations": [v.message() for v in self.violations()],
         }
         out.update({k: _jsonable(v) for k, v in self.extra.items()})
         if error:

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import pytest
 from click.testing import CliRunner
 
 from ncvm.api import run
@@ -204,6 +205,39 @@ def test_string_function_argument_types_are_checked_when_linking(tmp_path):
         assert r["error"]["code"] == "CPL032", text
 
 
+MMC_EXAMPLE = ('10 DIM PROGNAME$(50)\n20 PROGNAME$ = "WinProg"\n30 INTPAR% = 1\n40 REALPAR = 1.1\n'
+               '50 I% = MMC(PROGNAME$, INTPAR%, REALPAR)\n60 IF I% = 0 THEN\n70 IF INTPAR% = 2 THEN\n'
+               '80 R$ = "TWO"\n90 ELSE\n100 R$ = "OTHER"\n110 ENDIF\n120 ENDIF\nM30\n')
+
+
+def test_d10_mmc_with_a_client_attached_through_the_run_options(tmp_path):
+    """L5209-5217: the client gets the names and values, answers 0 and writes INTPAR% = 2 back; block
+    preparation goes on only after the answer, so line 70 sees the new value."""
+    seen = []
+
+    def client(names, values):
+        seen.append((names, [v if isinstance(v, (int, float)) else str(v) for v in values]))
+        return 0, {"INTPAR%": 2, "REALPAR": 2.5}
+
+    r, _ = run_cpl(tmp_path, MMC_EXAMPLE, mmc_client=client)
+    assert r["error"] is None
+    assert seen == [(["PROGNAME$", "INTPAR%", "REALPAR"], ["WinProg", 1, pytest.approx(1.1)])]
+    v = r["variables"]
+    assert (v["I%"], v["INTPAR%"], v["REALPAR"], v["R$"], v["PROGNAME$"]) == (0, 2, 2.5, "TWO", "WinProg")
+
+
+@pytest.mark.parametrize("answer, rc", [((2, {"INTPAR%": 2}), 2), (ValueError("client down"), 2)])
+def test_mmc_client_error_writes_nothing_back(tmp_path, answer, rc):
+    def client(names, values):
+        if isinstance(answer, Exception):
+            raise answer
+        return answer
+
+    r, _ = run_cpl(tmp_path, MMC_EXAMPLE, mmc_client=client)
+    assert r["error"] is None
+    assert (r["variables"]["I%"], r["variables"]["INTPAR%"]) == (rc, 1) and "R$" not in r["variables"]
+
+
 def test_mmc_only_as_statement_or_assignment(tmp_path):
     r, _ = run_cpl(tmp_path, '10 A%=1\n20 IF MMC(A%) = 1 THEN A%=2 ENDIF\nM30\n')
     assert r["error"]["code"] == "CPL001" and "MMC" in r["error"]["message"]
@@ -234,3 +268,28 @@ def test_colour_tables_rgb_bitmaps_and_clearing(tmp_path):
     assert r["error"]["code"] == "CPL801"
     r, _ = run_cpl(tmp_path, '10 GWD(100,500,100,350) : MWD(0,400,0,100)\nM30\n')
     assert r["error"]["code"] == "CPL802"
+
+
+@pytest.mark.parametrize("stmt, code", [
+    ("COL(Q%)", "CPL020"), ("LIN(Q,1,2,3)", "CPL020"), ("CIR(1,Q,5)", "CPL020"), ("TFO(Q%)", "CPL020"),
+    ("GWD(0,Q%,0,100)", "CPL020"), ('OPENW(1,Q$)', "CPL020"), ('DSP(Q%,1,"X")', "CPL020"),
+    ('PRN#(Q%,"X")', "CPL020"), ("INP#(Q%,A)", "CPL020"), ("A?=EOF(Q%)", "CPL020"), ("A%=FILEPOS(Q%)", "CPL020"),
+    ("A%=FILESIZE(Q%)", "CPL020"), ("A%=ERASE(Q$)", "CPL020"), ("A$=FILEDATE(Q$)", "CPL020"),
+    ("A%=FILEACCESS(Q$)", "CPL020"),
+    ("COL(,2)", None), ("LIN(,1)", None), ("DSP(1,1,Q)", None), ("PRN(1,1,Q$)", None)])
+def test_an_unassigned_variable_is_not_an_omitted_argument(tmp_path, stmt, code):
+    """NUL in an argument is VARIABLE NOT ASSIGNED (digest §4.4); only an empty position is omitted
+    (LIN(,1) L5015-5030, COL(,2) L4923-4949), and a NUL value to print prints nothing."""
+    r, _ = run_cpl(tmp_path, f"10 {stmt}\nM30\n")
+    assert (r["error"]["code"] if r["error"] else None) == code
+
+
+@pytest.mark.parametrize("first", ["N10 (TYP2)", "(TYP2)", "N10 G90"])
+def test_typ2_programs_get_five_softkeys_l4464(tmp_path, first):
+    """L4462-4468: new programs get 8 softkeys; an old CC 200/220 program, marked by "(TYP2)" as its first
+    instruction, always gets 5."""
+    r, s = run_cpl(tmp_path, f'{first}\n20 SFK(K%,"A","B","C","D","E","F")\nM30\n', keys="SK5\n")
+    assert r["error"] is None and r["variables"]["K%"] == 5
+    typ2 = "TYP2" in first
+    assert r["output"][0] == "SFK [1:A] [2:B] [3:C] [4:D] [5:E]" + ("" if typ2 else " [6:F]")
+    assert s.screen.softkey_count == (5 if typ2 else 8)

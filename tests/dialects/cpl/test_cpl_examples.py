@@ -56,19 +56,29 @@ def test_flangedlg_dialog_previews_and_drills(tmp_path):
     assert session.screen is not None
 
 
-def test_measlog_writes_and_reads_back_its_log(tmp_path):
+def test_measlog_probes_logs_and_reads_back(tmp_path):
+    """G75 with trigger points from the example's scenario, PPOS, SD(9); PRN# log; INP# and EOF report."""
     from ncvm.machine.config import load_machine
 
     machine = load_machine(MACHINE)
     machine.file_root = tmp_path / "files"
     machine.file_root.mkdir()
-    for _ in range(2):  # a second run starts the log anew
-        result, _ = run(EXAMPLES / "measlog.cpl", machine=machine, options=RunOptions(state_dir=tmp_path))
+    options = RunOptions(state_dir=tmp_path, scenario=EXAMPLES / "measlog.scenario.toml")
+    for _ in range(2):  # a second run starts the log anew (and the scenario is not added to the machine twice)
+        result, _ = run(EXAMPLES / "measlog.cpl", machine=machine, options=options)
         assert result["status"] == "ok", result["error"]
     records = (machine.file_root / "PMEASLOG").read_text(encoding="latin-1").split("\n")
     assert records[0] == "BORE     X        Y       DIAMETER"
-    assert records[1] == " 1   -50.000    8.660  12.0290"  # D = 12 + 0.03 sin 75
-    assert records[7:] == ["\x03", ""]
-    assert result["output"][-1] == "LOG: 6 bores, mean D=12.0058, max deviation 0.0300, 4 rejected"
-    assert result["output"][:4] == ["BORE  1 OUT OF TOLERANCE: D=12.0290", "BORE  3 OUT OF TOLERANCE: D=11.9788",
-                                    "BORE  4 OUT OF TOLERANCE: D=11.9740", "BORE  6 OUT OF TOLERANCE: D=12.0300"]
+    # bore 1 at X-50 has D = 12 + 0.03 sin 75 = 12.02898: the 2 mm ball touches at -50 +- (D/2 - 1),
+    # scenario X -44.9855 and -55.0145, so D = 10.0290 + 2
+    assert records[1] == " 1   -50.000    8.660  12.0290"
+    assert records[5] == " 5    30.000   -8.660  12.0078"  # 12 + 0.03 sin 375 = 12.00776
+    assert records[6:] == ["\x03", ""]  # bore 6: its second touch is missing from the scenario
+    assert result["output"] == ["BORE  6: PROBE NOT DEFLECTED", "BORE  1 OUT OF TOLERANCE: D=12.0290",
+                                "BORE  3 OUT OF TOLERANCE: D=11.9788", "BORE  4 OUT OF TOLERANCE: D=11.9740",
+                                "LOG: 5 bores, mean D=12.0009, max deviation 0.0290, 3 rejected"]
+
+
+def test_measlog_without_trigger_points_measures_nothing(tmp_path):
+    r = run_example("measlog.cpl", tmp_path)
+    assert r["output"][-1] == "LOG: no bore measured" and len(r["output"]) == 7

@@ -293,3 +293,71 @@ def test_io_fault_in_a_sub_program_names_it_and_the_call_stack(tmp_path, run_tex
     assert err["code"] == "CPL612" and err["file"].endswith("READLOG.cpl") and err["line"] == 1
     assert err["message"] == "FILE DOES NOT EXIST: PNONE (CPL line 10)"
     assert any("main.cpl:2" in note for note in err["stack"])
+
+
+@pytest.mark.parametrize("stmt", ["INP#(1)", "INP#(1;)"])
+def test_inp_without_a_variable_is_a_syntax_error_l4107(cpl, stmt):
+    """INP#(n,v1[,v2...]) (L4107-4130) reads into at least one variable."""
+    r, _ = cpl(f'10 OPENR(1,"P1")\n20 {stmt}\nM30\n')
+    assert r["error"]["code"] == "CPL001" and "at least one variable" in r["error"]["message"]
+
+
+def test_running_programs_are_active_for_erase_and_fileaccess_l4396(tmp_path):
+    """ERASE answers 3 "active" (L4390-4396) and FILEACCESS sets bit 16 (L4418-4425) for a program that is running
+    or called, here the main program and its sub-program, kept in the file root; neither is erased."""
+    from ncvm.api import run
+    from ncvm.runtime.session import RunOptions
+
+    root = tmp_path / ".ncvm" / "files"
+    root.mkdir(parents=True)
+    (root / "SELF.cpl").write_text('10 A%=FILEACCESS("SELF.cpl")\n20 E%=ERASE("SELF.cpl")\n30 CALL SUBP\nM30\n')
+    (root / "SUBP.cpl").write_text('10 F%=ERASE("SUBP.cpl")\nM30\n')
+    (root / "OTHER.cpl").write_text("M30\n")
+    r, _ = run(root / "SELF.cpl", options=RunOptions(state_dir=tmp_path / ".ncvm"))
+    assert r["error"] is None
+    assert (r["variables"]["A%"], r["variables"]["E%"]) == (16 + 4 + 2, 3)
+    assert r["output"] == ["warning CPL621: FILE NOT ERASED: SELF.cpl is active",
+                           "warning CPL621: FILE NOT ERASED: SUBP.cpl is active"]
+    assert (root / "SELF.cpl").exists() and (root / "SUBP.cpl").exists()
+    r, _ = run(root / "SELF.cpl", options=RunOptions(state_dir=tmp_path / ".ncvm"))
+    assert r["variables"]["A%"] == 22  # after the run SUBP is no longer active: a program erasing it may
+    (root / "Q.cpl").write_text('10 G%=ERASE("SUBP.cpl")\nM30\n')
+    r, _ = run(root / "Q.cpl", options=RunOptions(state_dir=tmp_path / ".ncvm"))
+    assert r["variables"]["G%"] == 0 and not (root / "SUBP.cpl").exists()
+
+
+def test_names_without_a_path_are_in_the_main_programs_directory(tmp_path):
+    """L4414, L4441, digest §11 D13: a name without a path means the current directory, the one of the main
+    program when it lies in the file root; a name with a path starts at the root."""
+    from ncvm.api import run
+    from ncvm.runtime.session import RunOptions
+
+    root = tmp_path / ".ncvm" / "files"
+    (root / "usr" / "user").mkdir(parents=True)
+    main = root / "usr" / "user" / "MAIN.cpl"
+    main.write_text('10 OPENW(1,"LOG1")\n20 PRN#(1,"HELLO")\n30 CLOSE(1)\n40 A%=FILEACCESS("LOG1")\n'
+                    '50 B%=FILEACCESS("/usr/user/LOG1")\n60 C%=FILEACCESS("/LOG1")\n70 OPENW(2,"/TOP")\n'
+                    '80 CLOSE(2)\nM30\n')
+    r, _ = run(main, options=RunOptions(state_dir=tmp_path / ".ncvm"))
+    assert r["error"] is None
+    assert (r["variables"]["A%"], r["variables"]["B%"], r["variables"]["C%"]) == (6, 6, -1)
+    assert content(root / "usr" / "user", "LOG1") == "HELLO\n" + ETX and (root / "TOP").exists()
+
+
+@pytest.mark.parametrize("name, code", [("../../LOG2", None), ("../../../ESCAPE", "CPL609"),
+                                        ("C:\\usr\\LOG3", None), ("/../ESCAPE", "CPL609")])
+def test_names_never_leave_the_file_root_from_a_sub_directory(tmp_path, name, code):
+    """A name may climb from the current directory (/usr/user) up to the root, never above it: INVALID FILE
+    NAME, and nothing is written outside."""
+    from ncvm.api import run
+    from ncvm.runtime.session import RunOptions
+
+    root = tmp_path / ".ncvm" / "files"
+    (root / "usr" / "user").mkdir(parents=True)
+    main = root / "usr" / "user" / "MAIN.cpl"
+    main.write_text(f'10 OPENW(1,"{name}")\n20 PRN#(1,"X")\n30 CLOSE(1)\nM30\n')
+    r, _ = run(main, options=RunOptions(state_dir=tmp_path / ".ncvm"))
+    assert (r["error"]["code"] if r["error"] else None) == code
+    assert not (tmp_path / ".ncvm" / "ESCAPE").exists() and not (tmp_path / "ESCAPE").exists()
+    if code is None:
+        assert any(p.name in ("LOG2", "LOG3") for p in root.rglob("*"))

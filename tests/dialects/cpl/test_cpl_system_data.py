@@ -26,6 +26,15 @@ def test_sd_examples_l2296(run):
     assert v["SR"] == 80.0 and v["S3%"] == 1000
 
 
+def test_g_groups_with_one_state_in_the_kernel_sd1_and_ncf(run):
+    """SD(1,g,·) and NCF (L2090-2113, L2300-2306): the feed type group 7 is G94, the path-control group 25
+    G64 (the kernel knows only these); a group the kernel does not apply at all gives -1 and ""."""
+    text = ('N1 G64 G1 X1 F100\n2 WAIT\n3 A%=SD(1,25,1)\n4 B%=SD(1,7,2)\n5 DIM C$(4)\n6 C$=NCF("G65")\n'
+            '7 DIM D$(4)\n8 D$=NCF("G95")\n9 E%=SD(1,9,1)\n10 DIM F$(4)\n11 F$=NCF("G6")\nM30\n')
+    v = run(text)["variables"]
+    assert (v["A%"], v["B%"], v["C$"], v["D$"], v["E%"], v["F$"]) == (64, 94, "G64", "G94", -1, "")
+
+
 def test_sd9_without_probing_is_not_switched(run):
     assert run("1 A%=SD(9)\nM30\n")["variables"]["A%"] == 1
 
@@ -60,6 +69,17 @@ def test_ic_read_and_write_l2408(run_text, reference):
     r = run_text("40 A?=IC(5,1,2)\n41 B?=IC(6,1,2)\n50 IC(80,0,1)=TRUE\n60 C?=IC(80,3,1)\n61 D?=IC(81,3)\nM30\n",
                  name="p.cpl", machine=m)
     assert r["variables"] == {"A?": True, "B?": False, "C?": True, "D?": False}
+
+
+@pytest.mark.parametrize("expr, ok", [
+    ("IC(0,0,3)", True), ("IC(0,0,4)", False), ("IC(0,0,0)", True), ("IC(95,3,3)", True), ("IC(0,3,4)", False),
+    ("IC(0,1,8)", True), ("IC(0,1,9)", False), ("IC(0,4,0)", False), ("IC(0,2,1)", True), ("IC(0,2,2)", False),
+    ("IC(0,6,1)", True), ("IC(0,7,2)", False), ("IC(5,9)", True), ("IC(0,8,0)", False)])
+def test_ic_index_ranges_l2396(run, expr, ok):
+    """L2396-2405: index = channel 0..max channel, axis 1..max axis, spindle 1..max spindle, otherwise 1
+    (the reference configuration has channels 1..3, physical axes 1..8 and one spindle)."""
+    r = run(f"10 A?={expr}\nM30\n")
+    assert (r["error"] is None) if ok else (r["error"]["code"] == "CPL023"), r["error"]
 
 
 @pytest.mark.parametrize("stmt", ["IC(80,3,1)=TRUE", "IC(79,0,1)=TRUE", "IC(96,0,1)=TRUE"])
@@ -236,3 +256,18 @@ def test_mcods_drive_texts_and_cyclic_values(run):
     assert (v["E1%"], v["E2%"], v["E3%"]) == (0, 0, 0)
     assert v["T$"] == "DKC 03.3" and v["P%"] == [None, 20000, 0, 0, None, None, None, None, None]  # 3 axes
     assert v["N$"] == "X       \0Y       \0Z       \0"
+
+
+@pytest.mark.parametrize("call", ["SDR(Q)", "SD(Q)", "MCA(Q,0)"])
+def test_unassigned_group_or_number_is_variable_not_assigned(run, call):
+    assert run(f"10 R={call}\nM30\n")["error"]["code"] == "CPL020"
+
+
+def test_sd13_follows_the_operating_mode_mcops7(run):
+    """L2241: SD(13) 0 single block/step, 1 automatic, 2 program block; the running program may switch
+    between the automatic sub-modes with MCOPS(7) (L3212-3228): 10 single block, 6 program block, 5 automatic."""
+    text = ("1 A%=SD(13)\n2 E1%=MCOPS(7,1,10)\n3 B%=SD(13)\n4 E2%=MCOPS(7,1,6)\n5 C%=SD(13)\n6 E3%=MCOPS(7,1,5)\n"
+            "7 D%=SD(13)\n8 E4%=MCOPS(7,1,1)\n9 F%=SD(13)\nM30\n")
+    v = run(text)["variables"]
+    assert (v["A%"], v["B%"], v["C%"], v["D%"], v["F%"]) == (1, 0, 2, 1, 1)
+    assert (v["E1%"], v["E2%"], v["E3%"], v["E4%"]) == (0, 0, 0, 13)  # jog is refused while the program runs

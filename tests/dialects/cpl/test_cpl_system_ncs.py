@@ -80,3 +80,61 @@ def test_program_reselection_70(run):
             "4 X%=MCOPS(5,2,1)\n5 R3%=0:V=0:E%=MCODS(70,2,V,R3%,1)\nM30\n")
     v = run(text)["variables"]
     assert (v["R1%"], v["R2%"], v["R3%"]) == (1, 0, 1)  # type 2 suppresses the automatic re-selection
+
+
+def test_cancel_distance_to_go_prepares_the_blocks_again_with_new_corrections_mcops1(run):
+    """L3135-3146: MCOPS(1) prepares the blocks again with the CPL values already substituted (X[POS] stays
+    X10) but with corrections changed since; after it the program goes on, nothing is lost."""
+    text = ("1 POS=10\nN2 G54 G1 X[POS] F1000\n3 POS=99\n4 FXC(1,54,1)=5\n5 R%=MCOPS(1,1)\n6 WAIT\n"
+            "7 M=MPOS(1)\n8 C=CPOS(1)\nM30\n")
+    v = run(text)["variables"]
+    assert (v["R%"], v["M"], v["C"]) == (0, 15.0, 10.0)  # X10 + the new G54 shift 5
+
+
+def test_control_reset_of_the_own_channel_exits_the_main_program_mcops2(run):
+    """L3155-3166: the interpolator stops, jobs not yet executed are discarded, the main program is exited
+    and the channel's errors are deleted; on another channel the program goes on."""
+    errors = [{"number": 1938, "channel": 1, "category": 6}, {"number": 1971, "channel": 2, "category": 6}]
+    text = ("N1 G1 X10 F1000\n2 WAIT\nN3 X20\n4 A%=1\n5 R%=MCOPS(2,1)\n6 B%=1\nN7 X30\nM30\n")
+    r = run(text, cpl={"errors": errors})
+    assert r["status"] == "ok"
+    assert r["output"] == ["control reset of channel 1: the main program is exited (MCOPS 2)"]
+    v = r["variables"]
+    assert v["A%"] == 1 and "B%" not in v and "R%" not in v
+    assert r["position"]["X"] == 10.0  # N3 was prepared, not executed: discarded
+    text = "1 R%=MCOPS(2,2)\n2 DIM E%(2,3)\n3 N%=GETERR(-1,0,E%,2)\n4 B%=1\nM30\n"
+    v = run(text, cpl={"errors": errors})["variables"]
+    assert (v["R%"], v["N%"], v["B%"], v["E%"][1][1]) == (0, 1, 1, 1938)
+
+
+def test_control_reset_in_a_sub_program_ends_the_whole_run(run_text, reference, tmp_path):
+    (tmp_path / "SUBR.cpl").write_text("1 R%=MCOPS(2,-2)\n2 D%=1\nM30\n")
+    r = run_text("1 CALL SUBR\n2 C%=1\nM30\n", name="p.cpl", machine=reference(1))
+    assert r["status"] == "ok" and "C%" not in r["variables"]
+    assert r["output"] == ["control reset of the system: the main program is exited (MCOPS 2)"]
+
+
+def test_block_search_on_the_running_own_channel_is_refused_mcops3(run):
+    """L3168-3180: block search works in a selected program that has not been started; the own channel's
+    main program is running: 15 "search block is not possible ... already started" (L2662)."""
+    v = run('1 A%=MCOPS(3,1,"N50","N100")\n2 B%=MCOPS(3,2,"N50")\n3 C%=MCOPS(3,7)\nM30\n')["variables"]
+    assert (v["A%"], v["B%"], v["C%"]) == (15, 10, 1)
+
+
+def test_skip_block_and_optional_stop_signals_68_69(run, reference, run_text):
+    """L3066-3069: output "activated" and input of skip block (68) and optional stop (69). The machine's
+    block_skip setting decides 68; the NC kernel stops at every M1, so optional stop is on (1, 1)."""
+    text = "1 DIM S%(2):DIM O%(2)\n2 V=0:A%=MCODS(68,1,V,S%,2)\n3 V=0:B%=MCODS(69,1,V,O%,2)\nM30\n"
+    v = run(text)["variables"]
+    assert (v["A%"], v["S%"][1:], v["B%"], v["O%"][1:]) == (0, [1, 1], 0, [1, 1])
+    m = reference(1, setting_data={"block_skip": False})
+    v = run_text(text, name="p.cpl", machine=m)["variables"]
+    assert (v["S%"][1:], v["O%"][1:]) == ([0, 0], [1, 1])
+
+
+def test_online_correction_values_and_status_89_90(run):
+    """L3119-3122: per coordinate of the channel the online correction (WCS) and its status (0 inactive); the
+    simulated machine has none, so 0.0 and 0 for X, Y, Z of channel 1, and the rest of the buffer untouched."""
+    text = ("1 DIM W(4):DIM S%(4):W(4)=7:S%(4)=7\n2 V=0:A%=MCODS(89,1,V,W,4)\n3 V=0:B%=MCODS(90,1,V,S%,4)\nM30\n")
+    v = run(text)["variables"]
+    assert (v["A%"], v["W"][1:], v["B%"], v["S%"][1:]) == (0, [0.0, 0.0, 0.0, 7.0], 0, [0, 0, 0, 7])

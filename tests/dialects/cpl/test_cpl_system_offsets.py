@@ -106,3 +106,8 @@ def test_tda_example_l1961(run_text, reference):
 def test_tda_errors(run, stmt, code):
     r = run(f"1 {stmt}\nM30\n", cpl={"tool_database": [{"sector": 1, "place": 1}]})
     assert r["error"]["code"] == code
+
+
+@pytest.mark.parametrize("stmt", ['FXDEL(-1,1)', 'FXINS(0,1,"U")', 'A=FXC(1,54,TRUE)'])
+def test_a_table_name_that_is_no_string_is_a_type_error(run, stmt):
+    assert run(f"10 {stmt}\nM30\n")["error"]["code"] == "CPL032"

@@ -127,3 +127,25 @@ def test_probe_on_axis_without_probe_enable(run_text, reference):
                   scenario=[{"time": 0.0, "kind": "probe", "X": 4.0}])
     r = run_text("N1 G75 X10 F100\n2 A=CPROBE(1)\nM30\n", name="p.cpl", machine=m)
     assert r["error"]["code"] == "CPL040"
+
+
+def test_ppos_considers_the_program_coordinate_shift_l1571(run_text, reference):
+    """L1571-1576: PPOS considers the axis zero shifts, the tool compensation and the program coordinate
+    shift G168/G268 (and not G92, L1578-1583 list only transformations as not considered)."""
+    text = ("N1 G54\nN2 G168 X10\nN3 G268 X2\nN4 G0 X0\nN5 G75 X50 F500\n6 PR=PROBE(1)\n7 PP=PPOS(1)\n"
+            "8 CP=CPROBE(1)\n9 WAIT\n10 WP=WPOS(1)\nM30\n")
+    m = reference(1, offsets={"G54": [10.0, 0.0, 0.0]}, scenario=[{"time": 0.0, "kind": "probe", "X": 40.0}])
+    v = run_text(text, name="p.cpl", machine=m)["variables"]
+    # MCS 40 - axis ZS 10 - G168 10 - G268 2 = 18; the probe stopped the move, so WPOS (WCS, which holds the
+    # program coordinate shift, digest §8.2) is 40 - 10 = 30, and the PCS 18
+    assert (v["PR"], v["PP"], v["CP"], v["WP"]) == (40.0, 18.0, 18.0, 30.0)
+
+
+def test_cprobe_needs_the_probe_enabled_on_every_axis_of_the_channel_l1441(run_text, reference):
+    """L1441: CPROBE needs "probe can be activated" for all axes of the channel, else a run-time error;
+    PROBE and PPOS read the axes that have it."""
+    m = reference(1, cpl={"axes": [{"name": "X"}, {"name": "Y"}, {"name": "Z", "probe": False}]},
+                  scenario=[{"time": 0.0, "kind": "probe", "X": 4.0, "Y": 3.0}])
+    r = run_text("N1 G75 X10 Y10 F100\n2 A=PROBE(2)\n3 B=PPOS(1)\n4 C=CPROBE(2)\nM30\n", name="p.cpl", machine=m)
+    assert (r["variables"]["A"], r["variables"]["B"]) == (3.0, 4.0)
+    assert r["error"]["code"] == "CPL040" and r["error"]["line"] == 4 and "Z" in r["error"]["message"]

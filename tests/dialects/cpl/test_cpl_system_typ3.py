@@ -83,3 +83,51 @@ def test_g_group_28_external_compensation_sd1_and_ncf(run):
             "25 C%=SD(1,28,1)\nN30 G146\n31 D%=SD(1,28,2)\nM30\n")
     v = run(text)["variables"]
     assert (v["A%"], v["B%"], v["N$"], v["C%"], v["D%"]) == (345, 146, "G345", 345, 146)
+
+
+#: dead range 1: X 90..110, Y 45..55; work area 2: X -50..150, Y -20..80 (centre ± extension / 2)
+ZONES = [{"type": "dead", "axes": ["X", "Y"], "centre": [100, 50], "extent": [20, 10]},
+         {"type": "work", "axes": ["X", "Y"], "centre": [50, 30], "extent": [200, 100]}]
+
+
+@pytest.mark.parametrize("text, expect", [
+    # a straight move through the dead range (from (0,0) to (200,100): at X 100 it is at Y 50)
+    ("N1 G1 F1000 X200 Y100\nM30\n", [("enters dead range 1", 1), ("leaves work area 2", 1)]),
+    # along its edge Y45 and into the corner: touching is not entering; X150 Y45 stays in the work area
+    ("N1 G1 F1000 X0 Y45\nN2 X150\nM30\n", []),
+    # a clockwise half circle about (100,40), radius 10: from (90,40) over the top (100,50) to (110,40)
+    ("N1 G0 X90 Y40\nN2 G2 X110 Y40 I10 J0 F500\nM30\n", [("enters dead range 1", 2)]),
+    # the same circle counter-clockwise goes below, down to Y30: clear of the dead range
+    ("N1 G0 X90 Y40\nN2 G3 X110 Y40 I10 J0 F500\nM30\n", []),
+    # an arc whose end points and chord are outside both ranges but which bulges out of the work area:
+    # centre (140,30), radius 15 from (140,15) counter-clockwise to (140,45) reaches X155 > 150
+    ("N1 G0 X140 Y15\nN2 G3 X140 Y45 I0 J15 F500\nM30\n", [("leaves work area 2", 2)]),
+    # Z moves do not matter to an X-Y area
+    ("N1 G0 X95 Y0\nN2 Z-50\nM30\n", []),
+])
+def test_moves_checked_against_work_areas_and_dead_ranges_200(run, text, expect):
+    """SD(200) L2266-2275: areas of type 1 dead range / 2 work area with a centre and an extension on two axes;
+    a move into an active dead range or out of an active work area is a limit violation (docs/decisions.md)."""
+    r = run(text, cpl={"areas": ZONES})
+    assert r["status"] == "ok"
+    got = r["limit_violations"]
+    assert len(got) == len(expect)
+    for message, (part, line) in zip(got, expect):
+        assert part in message and message.endswith(f"p.cpl:{line})")
+        box = "(X 90.0000..110.0000, Y 45.0000..55.0000)" if "dead" in part else "(X -50.0000..150.0000, Y -20.0000"
+        assert box in message
+
+
+def test_only_active_areas_watch_the_motion_and_the_first_block_is_named(run):
+    zones = [dict(ZONES[0], active=False), ZONES[1]]
+    r = run("N1 G1 F1000 X100 Y50\nN2 X160\nN3 X170\nM30\n", cpl={"areas": zones})
+    [message] = r["limit_violations"]
+    assert message.startswith("the path leaves work area 2 (X -50.0000..150.0000, Y -20.0000..80.0000) (first at ")
+    assert message.endswith("p.cpl:2)")
+
+
+def test_areas_are_machine_coordinates(run):
+    """The areas are machine data: a zero shift moves the workpiece, not the dead range."""
+    r = run("N1 G54 G1 F1000 X0 Y0\nM30\n", cpl={"areas": ZONES[:1]}, offsets={"G54": [100, 50, 0]})
+    assert len(r["limit_violations"]) == 1 and "enters dead range 1" in r["limit_violations"][0]
+    assert run("N1 G1 F1000 X0 Y0\nN2 X100\nM30\n", cpl={"areas": ZONES[:1]})["limit_violations"] == []

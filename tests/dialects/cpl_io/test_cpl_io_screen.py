@@ -224,3 +224,22 @@ def test_text_view_shows_lines_softkeys_and_the_field_being_edited():
         ("SFK", [" 2|   TITLE", " 5|N= 2", "softkeys: [SK1 ONE] [SK2 TWO KEYS]"]),
     ]
     assert s.editing is None and s.text_view()[-1] == "softkeys: [SK1 ONE] [SK2 TWO KEYS]"
+
+
+def test_the_picture_taken_at_an_inp_frames_the_field_being_edited():
+    """L4764-4776: the operator types into the field of the INP; the screen picture shows which one."""
+    s = Screen(keys=KeyScript("TYPE 12.5\nTYPE 3\n"))
+    s.DLG()
+    s.PRN(5, 4, "WIDTH: ###.### MM", None, name="WI")
+    s.PRN(6, 4, "DEPTH: ##.# MM", None, name="DP")
+    pictures = []
+    s.on_wait = lambda: pictures.append(s.image(scale=1))
+    assert s.INP("WI", None, "R") == 12.5 and s.INP("DP", None, "R") == 3.0
+    s.ENDDLG()
+    green = s.rgb(s.text_color)
+    # the format ###.### of line 5 starts at column 4 + 7 = 11 (x 80..135), ##.# of line 6 at x 80..111;
+    # the frame's top edge is the first pixel row of the line (y 36 for line 5, 45 for line 6) at x 100
+    first, second = pictures
+    assert first.getpixel((100, 36)) == green and first.getpixel((100, 45)) != green
+    assert second.getpixel((100, 45)) == green and second.getpixel((100, 36)) != green
+    assert s.image(scale=1).getpixel((100, 45)) != green  # no field waits any more

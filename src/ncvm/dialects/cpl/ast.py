@@ -220,5 +220,6 @@ class Program:
     nblocks: dict = field(default_factory=dict)  # N number -> [stmt index]
     labels: dict = field(default_factory=dict)  # label -> [stmt index]
     din_only: bool = False  # "(DIN)" in the first line
+    typ2: bool = False  # "(TYP2)" in the first line: an old CC 200/220 graphics program (manual §7 L4464-4468)
     has_cpl: bool = False
     diagnostics: list = field(default_factory=list)

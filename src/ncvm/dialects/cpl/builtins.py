@@ -15,7 +15,7 @@ from typing import Callable
 
 from .errors import CplError
 from .io import strings as S
-from .values import type_name
+from .values import not_nul, type_name
 
 
 def _num(v, name: str):
@@ -120,24 +120,25 @@ def f_bin(x):
     return int(digits)
 
 
+# the file number or name of a file function is needed: NUL there is VARIABLE NOT ASSIGNED
 def f_eof(io, n):
-    return io.files.EOF(n)
+    return io.files.EOF(not_nul(n))
 
 
 def f_filepos(io, n, mode=None):
-    return io.files.FILEPOS(n, mode)
+    return io.files.FILEPOS(not_nul(n), mode)
 
 
 def f_filesize(io, n, k=None):
-    return io.files.FILESIZE(n, k)
+    return io.files.FILESIZE(not_nul(n), k)
 
 
 def f_erase(io, name):
-    return io.files.ERASE(name)
+    return io.files.ERASE(not_nul(name))
 
 
 def f_filedate(io, name, mode=None):
-    return io.files.FILEDATE(name, mode)
+    return io.files.FILEDATE(not_nul(name), mode)
 
 
 def f_inkey(io):

@@ -597,7 +597,7 @@ class Gen:
             if not s.args or s.args[0] is None:
                 raise GenError("CPL001", f"{name} needs a file number")
             if name == "PRN#":
-                items = ", ".join(self.out_arg(a) for a in s.args)
+                items = ", ".join(self.out_arg(a) if k else self.set_arg(a) for k, a in enumerate(s.args))
                 self.emit(f"_io.files.PRN({items}, semicolon={s.no_end})", line)
             else:
                 self.inp_file(s)
@@ -627,7 +627,7 @@ class Gen:
             if not lo <= len(s.args) <= hi:
                 most = f"..{hi}" if hi < 99 else " or more"
                 raise GenError("CPL001", f"{name} takes {lo}{most} arguments, not {len(s.args)}")
-            self.emit(f"_io.{target}.{name}({self.args(s)})", line)
+            self.emit(f"_io.{target}.{name}({self.args(s, TEXT_FROM.get(name, 99))})", line)
             return
         if s.name in FUNCTIONS and s.name not in SYSTEM_PROCS:  # SCSL(...), MCOPS(...) as a statement
             self.emit(self.func(A.Func(s.name, s.args, 0))[0], line)
@@ -643,8 +643,17 @@ class Gen:
             return
         raise GenError("CPL037", f"{s.name} is not implemented (docs/cpl.md lists what is missing)")
 
-    def args(self, s: A.Proc) -> str:
-        return ", ".join(self.out_arg(a) for a in s.args)
+    def args(self, s: A.Proc, text_from: int = 99) -> str:
+        """The arguments of an I/O statement; those before position ``text_from`` (positions, sizes, names,
+        colours) must not be NUL: an unassigned variable there is VARIABLE NOT ASSIGNED, not "omitted"."""
+        return ", ".join(self.out_arg(a) if a is None or k >= text_from else self.set_arg(a)
+                         for k, a in enumerate(s.args))
+
+    def set_arg(self, e) -> str:
+        """An argument that sets something (a file number, a position, a colour): NUL is an error."""
+        code, ty = self.ex(e)
+        code = _not_nul(e, code, ty)
+        return f"_Dbl({code})" if ty == "D" else code
 
     def out_arg(self, e) -> str:
         """An argument of an output statement: DOUBLE values are marked, as their standard format differs."""
@@ -656,6 +665,8 @@ class Gen:
     def inp_file(self, s: A.Proc) -> None:
         """INP#(n, targets...): character fields are filled in place, plain variables get the values read."""
         line = s.line
+        if len(s.args) < 2:
+            raise GenError("CPL001", "INP# needs a file number and at least one variable: INP#(n,v1[,v2...])")
         targets, stores = [], []
         for k, a in enumerate(s.args[1:]):
             if isinstance(a, A.Var) and a.var.suffix == "$" and self._is_char_field(a):
@@ -670,7 +681,8 @@ class Gen:
             else:
                 raise GenError("CPL001", "INP# reads into variables")
         r = self.temp("r")
-        self.emit(f"{r} = _io.files.INP({self.arg(s.args[0])}, {', '.join(targets)}, semicolon={s.no_end})", line)
+        self.emit(f"{r} = _io.files.INP({self.set_arg(s.args[0])}, {', '.join(targets)}, semicolon={s.no_end})",
+                  line)
         for k, a in stores:
             self.store(a, f"{r}[{k}]", "?", line)
 
@@ -1177,6 +1189,10 @@ def _maybe_nul(e) -> bool:
 def _tname(ty: str) -> str:
     return {"I": "INTEGER", "R": "REAL", "D": "DOUBLE", "B": "BOOLEAN", "S": "CHARACTER", "N": "NUL",
             "?": "unknown"}.get(ty, ty)
+
+
+#: output statements whose arguments from this position on are printed (NUL prints nothing)
+TEXT_FROM = {"DSP": 2, "PRN": 2}
 
 
 #: statements that are plain calls of a CplIO part: name -> attribute of ``_io`` (chapters 6-8)

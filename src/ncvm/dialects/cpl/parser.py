@@ -602,6 +602,8 @@ def parse_program(path: str, text: str, calls: dict | None = None) -> A.Program:
     first = next((ln for ln in lines if ln.kind != "blank"), None)
     if first is not None and first.kind == "nc" and "(DIN)" in first.text.upper().replace(" ", ""):
         prog.din_only = True
+    if first is not None and first.kind == "nc" and "(TYP2)" in first.text.upper().replace(" ", ""):
+        prog.typ2 = True
     try:
         items = cpl_blocks(lines)
     except LexError as e:

@@ -36,6 +36,7 @@ from .system import SYSTEM_PROCS
 from .system import setup as system_setup
 from .system.controller import load_controller
 from .system.gfuncs import Typ3Block, activate, prepare
+from .system.ncs import ControlReset
 from .system.plc import f_ic
 from .system.positions import probe_block
 
@@ -56,7 +57,7 @@ class CplRuntime:
         cfg = self.machine.sections.get("cpl", {}) or {}
         self.lookahead = int(cfg.get("lookahead", 0))
         self.block_skip = bool(self.machine.setting_data.get("block_skip", True))
-        self.io = CplIO.for_session(session)
+        self.io = CplIO.for_session(session, typ2=linked.main.prog.typ2)
         session.screen = self.io.screen
         self._pictures = 0
         if session.options.screen_dir is not None:
@@ -72,7 +73,11 @@ class CplRuntime:
         self.calls = call_table(self.machine)
         self._modal_busy = False
         self.stack: list[tuple[str, int]] = []  # (path, line of the call) for each active sub-program
-        self.active: list[str] = []
+        #: the running programs, main first (a call of one of them is recursion, §3 L1067); ERASE answers 3
+        #: and FILEACCESS sets bit 16 for them (§6 L4396, L4424)
+        self.active: list[str] = [linked.main.prog.path]
+        self.io.files.active = self.active
+        self.io.files.enter_directory_of(linked.main.prog.path)
         self.hook = session.options.hook
         self._fns: dict = {}
         self._codes: dict = {}
@@ -178,6 +183,8 @@ class CplRuntime:
         try:
             try:
                 result = self.unit(main)((), True)
+            except ControlReset as reset:  # MCOPS(2) on the own channel: the main program is exited
+                self.session.say(str(reset))
             finally:
                 self.session.variables = self.report(result or self.fault_locals)
             self.drain()

@@ -36,7 +36,8 @@ class CplIO:
     def for_session(cls, session, typ2: bool = False) -> "CplIO":
         """The I/O of a run: the machine's file root and clock, output to say; the key script of
         ``--keys`` or, with ``keyboard``, the operator at the terminal on stdin; the editor block of
-        ``--editor-block``, whose text after the run is the result's ``editor_block``."""
+        ``--editor-block``, whose text after the run is the result's ``editor_block``; the MMC client of
+        ``RunOptions.mmc_client``."""
         options = session.options
         keys = None
         if options.keys:
@@ -46,6 +47,7 @@ class CplIO:
         io = cls(session.machine.file_root, clock=session.machine.clock, keys=keys, say=session.say, typ2=typ2)
         if isinstance(keys, TerminalKeys):
             keys.view = io.screen.text_view
+        io.mmc.attach(options.mmc_client)
         if options.editor_block is not None:
             io.files.editor_block = options.editor_block
             session.extra["editor_block"] = options.editor_block

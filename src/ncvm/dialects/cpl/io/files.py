@@ -116,6 +116,15 @@ class CplFiles:
         except FileRootError:
             raise fail("INVALID_FILE_NAME", f"{text} lies outside the file root") from None
 
+    def enter_directory_of(self, program: Path | str) -> None:
+        """The current directory of a run is the main program's, when it lies in the file root (digest
+        §11 D13): names without a path are looked up there; elsewhere it stays the root."""
+        try:
+            folder = Path(program).resolve().parent.relative_to(self.root.resolve())
+        except ValueError:
+            return
+        self.cwd = folder.as_posix() if folder.parts else ""
+
     @staticmethod
     def _check_number(n, error: str = "INVALID_LOGICAL_NUMBER") -> int:
         if not isinstance(n, int) or isinstance(n, bool) or not 1 <= n <= 9:

@@ -361,10 +361,10 @@ class Screen(Graphics):
         m = TEMPLATE.search(field.text)
         int_digits, decimals = template_shape(m.group()) if m else (9, 0 if kind == "I" else 3)
         value = current
-        if self.on_wait is not None:
-            self.on_wait()
-        self.editing = name
+        self.editing = name  # the picture taken while the operator is asked frames this field
         try:
+            if self.on_wait is not None:
+                self.on_wait()
             while True:
                 event = self.keys.wait(f"INP({name})")
                 if event.kind == "type":
@@ -520,7 +520,21 @@ class Screen(Graphics):
                       Image.fromarray(mask))
         if self.softkeys is not None:
             self._draw_softkeys(draw, scale)
+        self._frame_input_field(draw, scale)
         return img
+
+    def _frame_input_field(self, draw, scale: int) -> None:
+        """The INP field waiting for the operator: a frame in the text colour around its format."""
+        field = self.fields.get(self.editing) if self.editing is not None else None
+        if field is None:
+            return
+        m = TEMPLATE.search(field.text)
+        first, last = (m.start(), m.end()) if m else (0, len(field.text))
+        x0 = (field.column - 1 + first) * CELL_W * scale
+        x1 = min(COLUMNS, field.column - 1 + last) * CELL_W * scale - 1
+        y0 = (field.line - 1) * CELL_H * scale
+        draw.rectangle([x0 - scale, y0, x1 + scale, y0 + CELL_H * scale - 1], outline=self.rgb(self.text_color),
+                       width=scale)
 
     def _draw_softkeys(self, draw, scale: int) -> None:
         n = len(self.softkeys)

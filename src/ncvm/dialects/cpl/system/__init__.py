@@ -11,7 +11,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from ..builtins import Builtin
-from . import ncs, offsets, plc, positions, sercos, sysdata, tools, transforms
+from . import areas, ncs, offsets, plc, positions, sercos, sysdata, tools, transforms
 
 
 @dataclass(frozen=True, slots=True)
@@ -73,7 +73,9 @@ SYSTEM_PROCS = {
 
 def setup(rt) -> None:
     """At program start: the active ZS table and K4 are the NC kernel's offsets and tools; the kernel
-    knows the G functions of the transformations (G60/G67, G37-G39, G138)."""
+    knows the G functions of the transformations (G60/G67, G37-G39, G138); the active work areas and
+    dead ranges watch the motion."""
     offsets.setup(rt)
+    areas.setup(rt)
     tools.setup(rt)
     transforms.setup(rt)

@@ -83,6 +83,19 @@ class Controller:
             self.store().put(ns, key, value)
 
 
+def ncs_state(rt) -> dict:
+    """What MCOPS changed in the channels of a run: operating modes (MCOPS 7), selected programs,
+    return-to-path settings, jog recording, automatic re-selection (channel -> value)."""
+    st = getattr(rt, "_ncs", None)
+    if st is None:
+        st = rt._ncs = {"mode": {}, "selected": {}, "return": {}, "recording": {}, "reselect": {}}
+    return st
+
+
+#: operating mode (MCOPS 7 / MCODS 31) -> SD(13): 0 single block or step, 1 automatic, 2 program block
+SD13_OF_MODE = {5: 1, 13: 1, 6: 2, 7: 0, 10: 0, 12: 0}
+
+
 def _err(key: str, why: str):
     raise UsageError(f"[cpl] {key}: {why}")
 

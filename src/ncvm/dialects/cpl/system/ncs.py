@@ -14,11 +14,22 @@ from ....nc.block import row_block
 from ..errors import CplError
 from ..io.strings import CharacterField
 from .axes import kernel_index, nul
+from .controller import ncs_state
 from .gfuncs import GEARS, program_shift
 from .offsets import push_to_kernel
 from .sysdata import g_of_group
 
 OK, NO_CHANNEL, BUSY, SYNTAX, NOT_AVAILABLE, NO_PROGRAM, MODE_REFUSED = 0, 1, 2, 18, 102, 6, 13
+STARTED = 15  # search block impossible: the main program has already been started
+
+
+class ControlReset(Exception):
+    """MCOPS(2) on the program's own channel (or the whole system): the interpolator stops, the jobs not
+    yet executed are discarded and the main program is exited (L3155-3166)."""
+
+    def __init__(self, chan: int):
+        super().__init__(f"control reset of {'the system' if chan == -2 else f'channel {chan}'}: "
+                         "the main program is exited (MCOPS 2)")
 #: M functions the NC kernel carries out itself; any other one is an auxiliary function the PLC acknowledges
 KERNEL_M = frozenset((0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 30))
 #: channel operating modes MCODS 31/48 and MCOPS 7 (digest §11 C6)
@@ -26,10 +37,7 @@ MODES = (1, 2, 4, 5, 6, 7, 10, 11, 12, 13, 14)
 
 
 def _state(rt) -> dict:
-    st = getattr(rt, "_ncs", None)
-    if st is None:
-        st = rt._ncs = {"mode": {}, "selected": {}, "return": {}, "recording": {}, "reselect": {}}
-    return st
+    return ncs_state(rt)
 
 
 def _channels(c) -> list[int]:
@@ -203,6 +211,10 @@ def _more(rt, typ: int, ch: int, system, own, axisno, idno):
     if typ == 68:
         skip = 1 if rt.block_skip else 0
         return [skip, skip]
+    if typ == 69:  # the NC kernel stops at every M1: optional stop is activated, and its input is set
+        return [1, 1]
+    if typ in (89, 90):  # the simulated machine has no online correction: per coordinate 0.0 / inactive (0)
+        return [0.0 if typ == 89 else 0 for _ in own]
     if typ == 78:
         return "".join(a.name[:8].ljust(8) + "\0" for a in own)
     if typ == 83:
@@ -352,10 +364,9 @@ def f_mcops(rt, fct, chan, p1=None, p2=None, p3=None, p4=None):
     if chan != -2 and chan not in _channels(c):
         return NO_CHANNEL
     own = chan == c.channel
-    if fct == 1:  # cancel distance to go: discard the prepared blocks
+    if fct == 1:  # cancel distance to go: the prepared blocks are prepared again with the new corrections
         if own:
-            rt.queue.clear()
-            rt._shadow = None
+            push_to_kernel(rt)
         return OK
     if fct in (2, 5):  # type 2: no automatic program re-selection (MCODS 70)
         for ch in (_channels(c) if chan == -2 else [chan]):
@@ -364,9 +375,13 @@ def f_mcops(rt, fct, chan, p1=None, p2=None, p3=None, p4=None):
         c.errors[:] = [e for e in c.errors if chan != -2 and e["channel"] not in (chan, -1)]
         st["selected"].pop(chan, None)
         if own or chan == -2:
+            rt.queue.clear()  # jobs not yet executed are discarded (L3159)
             push_to_kernel(rt)
+            raise ControlReset(chan)
         return OK
     if fct == 3:
+        if own:
+            return STARTED
         return OK if st["selected"].get(chan) else 10
     if fct == 4:
         if own:

@@ -74,6 +74,8 @@ def _table_key(c, name: str) -> str | None:
 
 
 def find_table(c, name: str) -> str:
+    if not isinstance(name, str):
+        raise CplError("CPL032", f"axis ZS table name {name!r}: a string is needed")
     key = _table_key(c, name)
     if key is None:
         raise CplError("CPL040", f"axis ZS table {name!r} does not exist")
@@ -84,7 +86,7 @@ def f_fileaccess(rt, io, name) -> int:
     """FILEACCESS (§6 L4406). The axis ZS tables live in the controller's store, not as files; one answers
     as a readable and writable file (6), since the manual's FXCR example (L1809-1827) asks FILEACCESS
     whether a table exists before creating it."""
-    bits = io.files.FILEACCESS(name)
+    bits = io.files.FILEACCESS(nul(name))
     text = text_of(name)
     if bits == -1 and text and _table_key(rt.ctl, text.strip()) is not None:
         return 6

@@ -27,7 +27,19 @@ def ic_key(rt, bit, group=None, index=None) -> str:
         raise CplError("CPL023", f"IC bit {bit!r} of group {group}: 0..{top}")
     if index is None:
         index = rt.ctl.channel if per_channel else 1
+    lo, hi = _index_range(rt.ctl, group)
+    if index.__class__ is not int or not lo <= index <= hi:
+        raise CplError("CPL023", f"IC index {index!r} of group {group}: {lo}..{hi}")
     return f"IC({bit},{group},{index})"
+
+
+def _index_range(c, group: int) -> tuple[int, int]:
+    """The index range of an IC group (L2396-2405): channels 0..max, axes and spindles 1..max, else 1."""
+    if group in (0, 3):
+        return 0, max([c.channel] + [a.channel for a in c.axes.values()])
+    if group in (1, 4):
+        return 1, max(c.axes, default=1)
+    return 1, 1  # one spindle; the global and HighSpeed interfaces have index 1
 
 
 def f_ic(rt, bit, group=None, index=None) -> bool:

@@ -5,8 +5,9 @@ prepared kernel); "executed" values (WPOS, MPOS, APOS, SPOS) from the NC kernel,
 blocks a WAIT (or the look-ahead depth) let through: read before a WAIT they are stale (§4.1).
 Probe values are latched by a G75 block from the next "probe" scenario event (see probe_block).
 Transformations (transforms.py): CPOS is before them, WPOS after the contour shift and scaling but before
-the coordinate transformation G138 (manual L1323), MPOS after all; PPOS removes none of them (L1580-1583),
-CPROBE all (L1430).
+the coordinate transformation G138 (manual L1323), MPOS after all; PPOS removes the axis zero shifts, the
+tool compensation and G168/G268 (L1571-1576) but none of the transformations (L1580-1583); CPROBE removes
+all (L1430).
 """
 
 from __future__ import annotations
@@ -141,7 +142,8 @@ def f_probe(rt, sel, axtype=1):
 
 
 def f_ppos(rt, sel, axtype=1):
-    """PPOS: the switch point in the WCS: axis zero shifts and tool compensation removed (L1567-1617)."""
+    """PPOS: the switch point with the compensations of L1571-1576 removed: axis zero shifts, tool
+    compensation and the program coordinate shifts G168/G268; G92 and the transformations stay in."""
     ax = resolve(rt, sel, axtype)
     mcs = _latched(rt, ax)
     k = rt.kernel
@@ -149,12 +151,18 @@ def f_ppos(rt, sel, axtype=1):
     if i is None:
         return mcs
     tool = k.tool_length if i == k.tool_axis else 0.0
-    return to_unit(k, ax, mcs - axis_zs(rt, k, i) - tool)
+    return to_unit(k, ax, mcs - axis_zs(rt, k, i) - tool - program_shift(rt, k, i))
 
 
 def f_cprobe(rt, sel, seltype=1):
-    """CPROBE: the switch point at the coordinate level (PCS): every shift, G92 included (L1430-1473)."""
+    """CPROBE: the switch point at the coordinate level (PCS): every shift, G92 included (L1430-1473). The
+    probe must be enabled (MACODA 1003 00012) for every axis of the channel, not only the one read (L1441)."""
     ax = resolve(rt, sel, seltype)
+    c = rt.ctl
+    blocked = [a.name for a in c.channel_axes(c.channel) if not a.probe]
+    if blocked:
+        raise CplError("CPL040", f"CPROBE: MACODA 1003 00012 'probe can be activated' is not set for "
+                                 f"{', '.join(blocked)} (every axis of the channel needs it)")
     mcs = _latched(rt, ax)
     k = rt.kernel
     i = kernel_index(rt, ax)

@@ -11,7 +11,7 @@ import math
 from ..errors import CplError
 from ..values import sv
 from .axes import nul
-from .controller import MAX_AREAS
+from .controller import MAX_AREAS, SD13_OF_MODE, ncs_state
 from .gfuncs import N_LOGICAL
 from .positions import probe_switched
 from .transforms import active_group
@@ -44,7 +44,9 @@ def g_of_group(k, group: int, typ3=None) -> int:
     if group == 15:
         return int(k.work_offset[1:]) if k.work_offset else 53
     if group == 7:
-        return 94
+        return 94  # feed in mm/min: the kernel refuses G93 and G95
+    if group == 25:
+        return 64  # continuous-path mode: the kernel takes G64 and refuses G65
     if group in (18, 19):
         return active_group(k, group)
     if 1 <= group <= 48:
@@ -108,8 +110,8 @@ def f_sd(rt, group, i1=None, i2=None, i3=None):
         if i1 in (3, 4):
             return -1  # no 2nd spindle
         raise CplError("CPL023", f"SD(12,{i1})")
-    if group == 13:
-        return 1  # automatic mode
+    if group == 13:  # the machining mode of the own channel (automatic unless MCOPS 7 changed it, L2241)
+        return SD13_OF_MODE.get(ncs_state(rt)["mode"].get(c.channel, 5), 1)
     if group == 14:
         return c.macoda[601000010][0]
     if group == 15:
@@ -248,6 +250,7 @@ def _axis_numbers(rt, group, i1, i2):
 def f_sdr(rt, group, i1=None, i2=None):
     """SDR: system data as REAL (L2313-2351)."""
     c = rt.ctl
+    group = nul(group)
     if group in (2, 202):
         return float(f_sd(rt, group, i1))
     if group == 1:

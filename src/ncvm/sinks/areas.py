@@ -1,0 +1,168 @@
+"""Protection-zone check: moves that enter a dead range or leave a work area.
+
+A zone is an axis-parallel rectangle on two machine axes (machine coordinates,
+mm). Like :class:`~ncvm.sinks.limits.LimitCheck` it reads the toolpath
+recorder once, at the end, and reports the first offending move per zone; the
+run goes on. Work areas are convex, so a move stays inside exactly when its
+extent (end points, widened by where arcs reach) does. Dead ranges are open
+rectangles: a straight move enters one when the part of the segment inside it
+has a length (Liang-Barsky clipping, vectorised); an arc in the zone's plane is
+cut at its crossings of the four edges and each piece is tested at its middle;
+an arc in another plane is tested as its sampled polyline.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..nc import arcs
+
+DEAD, WORK = "dead range", "work area"
+TOL = 1e-6  # mm: touching an edge is neither entering a dead range nor leaving a work area
+
+
+@dataclass(frozen=True)
+class Zone:
+    """Zone ``number`` (1..) of ``kind`` DEAD or WORK on the machine axes ``a`` and ``b`` (indices)."""
+
+    number: int
+    kind: str
+    a: int
+    b: int
+    lo: tuple[float, float]  # lowest corner (a, b)
+    hi: tuple[float, float]  # highest corner (a, b)
+
+
+@dataclass
+class ZoneViolation:
+    zone: Zone
+    names: tuple[str, str]
+    file: str
+    line: int
+
+    @property
+    def axis(self) -> str:
+        return f"{self.zone.kind} {self.zone.number}"
+
+    def message(self) -> str:
+        z, (na, nb) = self.zone, self.names
+        verb = "enters" if z.kind == DEAD else "leaves"
+        return (f"the path {verb} {z.kind} {z.number} ({na} {z.lo[0]:.4f}..{z.hi[0]:.4f}, "
+                f"{nb} {z.lo[1]:.4f}..{z.hi[1]:.4f}) (first at {self.file}:{self.line})")
+
+
+class ZoneCheck:
+    """The first violation per zone among the moves of ``recorder``."""
+
+    def __init__(self, zones: list[Zone], axis_names, recorder):
+        self.zones = zones
+        self.axis_names = tuple(axis_names)
+        self.recorder = recorder
+
+    def first(self) -> list[ZoneViolation]:
+        if not self.zones or not len(self.recorder):
+            return []
+        found = []
+        for z in self.zones:
+            k = self._first_work(z) if z.kind == WORK else self._first_dead(z)
+            if k is not None:
+                src = self.recorder.src(k)
+                found.append((k, z.number, ZoneViolation(z, (self.axis_names[z.a], self.axis_names[z.b]),
+                                                         src.file, src.line)))
+        found.sort(key=lambda f: (f[0], f[1]))
+        return [v for _, _, v in found]
+
+    def _first_work(self, z: Zone) -> int | None:
+        lo = self.recorder.end_array().copy()
+        hi = lo.copy()
+        self.recorder.arc_reach(lo, hi)
+        bad = np.zeros(len(lo), dtype=bool)
+        for col, zl, zh in ((z.a, z.lo[0], z.hi[0]), (z.b, z.lo[1], z.hi[1])):
+            bad |= (lo[:, col] < zl - TOL) | (hi[:, col] > zh + TOL)
+        return int(bad.argmax()) if bad.any() else None
+
+    def _first_dead(self, z: Zone) -> int | None:
+        arr = self.recorder.arrays()
+        start, end = arr["start"], arr["end"]
+        arc_specs = self.recorder.arcs
+        hits = _segments_enter(z, start, end)
+        if arc_specs:
+            hits[list(arc_specs)] = False  # arcs are tested on their curve, not their chord
+        k = int(hits.argmax()) if hits.any() else None
+        for index in sorted(arc_specs):
+            if k is not None and index >= k:
+                break
+            if _arc_enters(z, start[index], end[index], arc_specs[index]):
+                return index
+        return k
+
+
+def _segments_enter(z: Zone, start: np.ndarray, end: np.ndarray) -> np.ndarray:
+    """Per straight move: does the segment run through the open rectangle (shrunk by TOL)?"""
+    t0 = np.zeros(len(start))
+    t1 = np.ones(len(start))
+    with np.errstate(divide="ignore", invalid="ignore"):
+        for k, col in enumerate((z.a, z.b)):
+            s, d = start[:, col], end[:, col] - start[:, col]
+            lo, hi = z.lo[k] + TOL, z.hi[k] - TOL
+            still = d == 0.0
+            ta, tb = (lo - s) / d, (hi - s) / d
+            enter = np.where(still, np.where((s > lo) & (s < hi), -np.inf, np.inf), np.minimum(ta, tb))
+            leave = np.where(still, np.where((s > lo) & (s < hi), np.inf, -np.inf), np.maximum(ta, tb))
+            t0 = np.maximum(t0, enter)
+            t1 = np.minimum(t1, leave)
+    return t1 > t0
+
+
+def _inside(z: Zone, p) -> bool:
+    return (z.lo[0] + TOL < p[z.a] < z.hi[0] - TOL) and (z.lo[1] + TOL < p[z.b] < z.hi[1] - TOL)
+
+
+def _arc_enters(z: Zone, start, end, spec) -> bool:
+    if {spec.a, spec.b} != {z.a, z.b}:  # seen edge-on or slanted: its sampled polyline
+        pts = np.array([list(start)] + arcs.arc_points(start, end, spec, max_seg_deg=0.5), dtype=float)
+        return bool(_segments_enter(z, pts[:-1], pts[1:]).any())
+    ca, cb = spec.center
+    r = spec.radius
+    a0 = math.atan2(start[spec.b] - cb, start[spec.a] - ca)
+    ang = arcs.sweep(start[spec.a], start[spec.b], end[spec.a], end[spec.b], ca, cb, spec.cw, spec.turns)
+    if ang == 0.0 or r <= 0.0:
+        return False
+    # where the circle crosses the edge lines, as fractions t of the sweep; the pieces between are inside or not
+    cuts = {0.0, 1.0}
+    centre = {spec.a: ca, spec.b: cb}
+    for k, col in enumerate((z.a, z.b)):
+        for edge in (z.lo[k] + TOL, z.hi[k] - TOL):
+            c = (edge - centre[col]) / r
+            if abs(c) > 1.0:
+                continue
+            base = math.acos(c) if col == spec.a else math.asin(c)
+            for phi in ((base, -base) if col == spec.a else (base, math.pi - base)):
+                turn = (phi - a0) / ang
+                step = 2.0 * math.pi / abs(ang)
+                t = turn - math.floor(turn / step) * step
+                while t < 1.0:
+                    cuts.add(t)
+                    t += step
+    ts = sorted(cuts)
+    for t_lo, t_hi in zip(ts, ts[1:]):
+        theta = a0 + ang * (t_lo + t_hi) / 2.0
+        p = {spec.a: ca + r * math.cos(theta), spec.b: cb + r * math.sin(theta)}
+        if _inside(z, p):
+            return True
+    return False
+
+
+def zone_check(areas, axis_names, recorder) -> ZoneCheck:
+    """Build the check from ``(number, kind, (axis name, axis name), (centre a, centre b), (size a, size b))``
+    records; a zone is ``centre ± size / 2`` on each of its axes."""
+    names = [n.upper() for n in axis_names]
+    zones = []
+    for number, kind, (na, nb), centre, size in areas:
+        a, b = names.index(na.upper()), names.index(nb.upper())
+        zones.append(Zone(number, kind, a, b, (centre[0] - size[0] / 2, centre[1] - size[1] / 2),
+                          (centre[0] + size[0] / 2, centre[1] + size[1] / 2)))
+    return ZoneCheck(zones, names, recorder)
