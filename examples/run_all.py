@@ -1,7 +1,9 @@
 """Run every example program on the built-in default machine and draw one plot per program.
 
 Used by ``make run``. Sub-programs (files that a main program calls) are listed
-in each dialect folder's ``main.txt`` when only some files are main programs.
+in each dialect folder's ``main.txt`` when only some files are main programs. A
+program's ``<name>.keys`` (operator key presses) and ``<name>.scenario.toml``
+(inputs and probe trigger points over time) are used when they exist.
 """
 
 from __future__ import annotations
@@ -38,11 +40,13 @@ def main() -> int:
             machine = folder / "machine.toml"
             keys = program.with_suffix(".keys")  # a dialog program comes with the operator's key presses
             dialog = keys.is_file()
+            scenario = program.with_suffix(".scenario.toml")  # and a measuring one with its probe trigger points
             shot = out / f"{folder.name}_{program.stem}_screen.png"
             try:
                 result, session = run(program, machine=machine if machine.is_file() else None,
                                       options=RunOptions(state_dir=out / ".ncvm", keys=keys if dialog else None,
-                                                         screen=shot if dialog else None))
+                                                         screen=shot if dialog else None,
+                                                         scenario=scenario if scenario.is_file() else None))
             except UsageError as e:
                 print(f"{program}: {e}", file=sys.stderr)
                 failures += 1
