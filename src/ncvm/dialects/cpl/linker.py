@@ -44,9 +44,15 @@ class Linked:
 _CACHE: dict[str, Linked] = {}
 
 
+#: manual §3.1 L1071-1074: "the programs for the drilling cycles (99999081 through 99999086) are permanently
+#: assigned to the functions G81 through G86"; drilling cycles stay active until G80 (modal, §3.2)
+DRILLING_CYCLES = {f"G8{i}": (f"9999908{i}", True) for i in range(1, 7)}
+
+
 def call_table(machine: Machine) -> dict:
-    """[cpl] calls: address -> program, with the modal flag (e.g. G81 = {program = "CYC81", modal = true})."""
-    out = {}
+    """[cpl] calls: address -> program, with the modal flag (e.g. G81 = {program = "CYC81", modal = true}),
+    over the drilling cycles every control has (an entry of the machine file replaces one of them)."""
+    out = dict(DRILLING_CYCLES)
     for key, val in (machine.sections.get("cpl", {}).get("calls", {}) or {}).items():
         if isinstance(val, str):
             out[key.upper()] = (val, False)
@@ -63,7 +69,7 @@ def link_one(path: str, text: str, calls: dict) -> Linked:
         return hit
     LINK_STATS["linked"] += 1
     prog = parse_program(path, text, calls)
-    ln = Linked(prog, key, modal_calls=any(modal for _, modal in calls.values()))
+    ln = Linked(prog, key, modal_calls=_modal_calls(prog, calls))
     ln.diagnostics.extend(prog.diagnostics)
     if not prog.diagnostics:
         _pair(ln)
@@ -71,6 +77,15 @@ def link_one(path: str, text: str, calls: dict) -> Linked:
         _collect(ln)
     _CACHE[key] = ln
     return ln
+
+
+def _modal_calls(prog: A.Program, calls: dict) -> bool:
+    """Must the program's traversing blocks look for an active modal sub-program? When the machine file maps
+    a modal one (any program may run while it is active), or the program itself selects one (a drilling
+    cycle of the built-in table)."""
+    if any(modal and DRILLING_CYCLES.get(k) != (p, modal) for k, (p, modal) in calls.items()):
+        return True
+    return any(isinstance(s, A.NcBlock) and s.call is not None and s.call[2] for s in prog.stmts)
 
 
 def _err(ln: Linked, code: str, detail: str, s: A.Stmt) -> None:
