@@ -52,3 +52,56 @@ def test_machine_file_entry_replaces_a_drilling_cycle(run, reference):
                                                                                    "modal": True}}})
     assert r["status"] == "ok", r["error"]
     assert r["variables"]["#HOLES%"] == 2
+
+
+# -- error positions: file:line:col, the CPL line number, every error of a program ----------------------------
+
+
+@pytest.mark.parametrize("text, line, col", [
+    ("10 X=3: X=NUL : Y = X + 1\n", 1, 17),  # the third statement of the block
+    ("10 X=1\n20 REPEAT\n30 X=X+1\n40 UNTIL Y=3\n", 4, 4),  # the UNTIL condition
+    ("10 X=1 : IF Y=3 THEN X=2 ENDIF\n", 1, 10),  # an IF condition after another statement
+    ("10 X=1 : WHILE Y<3 DO X=2 END\n", 1, 10),
+    ("10 X=1\n20 GOTO 40\n30 Z=1\n40 X=SQRT(-1)\n", 4, 4),  # with a GOTO: the dispatch form of the program
+    ("10 X=1\nN20 G1 X[U] F100\n", 2, 1),  # an [expr] word of an NC block
+    ("10 X=1\nN20 G22 K1\n", 2, 1),  # an NC block the NC kernel refuses when it is executed
+])
+def test_runtime_errors_carry_the_column(run, text, line, col):
+    r = run(text)
+    assert r["status"] == "error"
+    assert (r["error"]["line"], r["error"]["column"]) == (line, col)
+
+
+def test_runtime_error_in_a_sub_program_points_into_it(run, reference):
+    m = reference()
+    (m.program_path[0] / "SUBERR").write_text("10 A=1 : B=SQRT(-A)\n")
+    r = run("10 X=1\n20 CALL SUBERR\nM30\n")
+    assert r["error"]["code"] == "CPL029" and r["error"]["file"].endswith("SUBERR")
+    assert (r["error"]["line"], r["error"]["column"]) == (1, 10) and "(CPL line 10)" in r["error"]["message"]
+
+
+@pytest.mark.parametrize("text, code, col", [
+    ("10 X=1 : CALL P999\n", "CPL014", 10),  # §3.3 L1086
+    ("10 X=1 : WAIT\n", "CPL009", 10),  # §4.1 L1201
+])
+def test_block_rules_point_at_the_statement(run, reference, text, code, col):
+    (reference().program_path[0] / "P999").write_text("10 A=1\n")
+    r = run(text)
+    assert r["error"]["code"] == code and r["error"]["column"] == col and "(CPL line 10)" in r["error"]["message"]
+
+
+def test_every_lexical_error_is_reported_with_its_cpl_line(tmp_path, reference):
+    """A character the lexer cannot read no longer hides the errors of the blocks after it."""
+    from ncvm.api import check
+    path = tmp_path / "lx.cpl"
+    path.write_text("10 @101=1\n20 X=$\n30 Y=(1\n40 Z=1:\nW=@0\n")
+    diags = check(path, machine=reference())
+    assert [(d.span.line, d.span.column) for d in diags] == [(1, 4), (2, 6), (3, 7), (5, 3)]
+    assert [d.message.endswith(f"(CPL line {n})") for d, n in zip(diags, (10, 20, 30, 40))] == [True] * 4
+
+
+def test_numbered_line_after_a_colon_is_named_as_such(run):
+    """§2.1.2 L375-380: after a block that ends with ':' comes a line without a line number."""
+    r = run("10 X=1:\n20 Y=2\n")
+    assert r["error"]["code"] == "CPL001" and r["error"]["line"] == 2
+    assert "has no line number" in r["error"]["message"]

@@ -88,7 +88,15 @@ class Gen:
         return f"_{base}{self.tmp}"
 
     def emit(self, text: str, line: int | None = None) -> None:
-        self.src.emit(text, line)
+        self.src.emit(text, line, self.col(line))
+
+    def block(self, header: str, line: int | None):
+        return self.src.block(header, line, self.col(line))
+
+    def col(self, line: int | None) -> int | None:
+        """The column of the statement being generated, for a run-time error in the Python lines of ``line``."""
+        cur = self.cur
+        return (cur.col or 1) if cur is not None and cur.line == line else None
 
     # -- expressions -------------------------------------------------------------
     def ex(self, e) -> tuple[str, str]:
@@ -841,10 +849,10 @@ class Gen:
         if t is A.If:
             info = pair[i]
             cond = self.condition(s.cond)
-            with self.src.block(f"if {cond}:", s.line):
+            with self.block(f"if {cond}:", s.line):
                 self.structured(i + 1, info["else"] if info["else"] is not None else info["end"])
             if info["else"] is not None:
-                with self.src.block("else:", self.stmts[info["else"]].line):
+                with self.block("else:", self.stmts[info["else"]].line):
                     self.structured(info["else"] + 1, info["end"])
         elif t is A.Case:
             info = pair[i]
@@ -856,12 +864,12 @@ class Gen:
             for j, arm in enumerate(arms):
                 vals = self.stmts[arm].values
                 test = f"{sel} == {vals[0]}" if len(vals) == 1 else f"{sel} in {tuple(vals)!r}"
-                with self.src.block(f"{kw} {test}:", self.stmts[arm].line):
+                with self.block(f"{kw} {test}:", self.stmts[arm].line):
                     self.structured(arm + 1, bounds[j + 1])
                 kw = "elif"
             if info["otherwise"] is not None:
                 ow = info["otherwise"]
-                with self.src.block("else:" if arms else "if True:", self.stmts[ow].line):
+                with self.block("else:" if arms else "if True:", self.stmts[ow].line):
                     self.structured(ow + 1, info["end"])
         elif t is A.For:
             end = pair[i]["end"]
@@ -869,12 +877,12 @@ class Gen:
         elif t is A.While:
             end = pair[i]["end"]
             cond = self.condition(s.cond)
-            with self.src.block(f"while {cond}:", s.line):
+            with self.block(f"while {cond}:", s.line):
                 self.structured(i + 1, end, extra=1)
                 self.emit(f"if _n > _lim: _runaway({s.line})", self.stmts[end].line)
         elif t is A.Repeat:
             end = pair[i]["end"]
-            with self.src.block("while True:", s.line):
+            with self.block("while True:", s.line):
                 self.structured(i + 1, end)
                 self.emit(f"if _n > _lim: _runaway({s.line})", self.stmts[end].line)
                 self.emit(f"if {self.condition(self.stmts[end].cond)}: break", self.stmts[end].line)
@@ -932,7 +940,7 @@ class Gen:
             self.emit(f"{fs} = {step_code}", s.line)
             test = f"({counter} <= {fe} if {fs} >= 0 else {counter} >= {fe})"
         nxt = self.stmts[end]
-        with self.src.block(f"while {test}:", s.line):
+        with self.block(f"while {test}:", s.line):
             self.structured(i + 1, end, extra=1)
             if const_step is not None:
                 inc_code = f"({counter} + {step_code})"
@@ -1023,7 +1031,7 @@ class Gen:
             info = pair[i]
             target = info["else"] + 1 if info["else"] is not None else info["end"] + 1
             self.emit("_n += 1", line)
-            with self.src.block(f"if not {self.condition(s.cond)}:", line):
+            with self.block(f"if not {self.condition(s.cond)}:", line):
                 self.emit_jump(target, line)
         elif t is A.Else:
             self.emit_jump(pair[i]["end"] + 1, line)
@@ -1033,7 +1041,7 @@ class Gen:
             self.emit(f"{select}; _n += 1", line)
             for arm in info["arms"]:
                 vals = self.stmts[arm].values
-                with self.src.block(f"if {sel} in {tuple(vals)!r}:", line):
+                with self.block(f"if {sel} in {tuple(vals)!r}:", line):
                     self.emit_jump(arm + 1, line)
             other = info["otherwise"] + 1 if info["otherwise"] is not None else info["end"] + 1
             self.emit_jump(other, line)
@@ -1052,7 +1060,7 @@ class Gen:
             self._open(self.pc[("t", i)])
             counter = self.read(v)[0]
             self.emit("_n += 1", line)
-            with self.src.block(f"if not ({counter} <= {fe} if {fs} >= 0 else {counter} >= {fe}):", line):
+            with self.block(f"if not ({counter} <= {fe} if {fs} >= 0 else {counter} >= {fe}):", line):
                 self.emit_jump(pair[i]["end"] + 1, line)
         elif t is A.Next:
             j = pair[i]["for"]
@@ -1068,7 +1076,7 @@ class Gen:
             self.emit_jump(("t", j), line)
         elif t is A.While:
             self.emit("_n += 1", line)
-            with self.src.block(f"if not {self.condition(s.cond)}:", line):
+            with self.block(f"if not {self.condition(s.cond)}:", line):
                 self.emit_jump(pair[i]["end"] + 1, line)
         elif t is A.WEnd:
             self.emit_jump(pair[i]["while"], line)
@@ -1076,7 +1084,7 @@ class Gen:
             pass
         elif t is A.Until:
             self.emit("_n += 1", line)
-            with self.src.block(f"if not {self.condition(s.cond)}:", line):
+            with self.block(f"if not {self.condition(s.cond)}:", line):
                 self.emit_jump(pair[i]["repeat"] + 1, line)
         elif t in (A.EndIf, A.EndCase, A.LabelDef):
             pass
@@ -1114,9 +1122,7 @@ class Gen:
         src.emit("_lim = _st.limit - _st.steps")
         src.emit("try:")
         first = len(src.lines) + 1  # Python line number of the body's first line
-        for text, ln in zip(body.lines, body.line_map):
-            src.lines.append(text)
-            src.line_map.append(ln)
+        src.append(body)
         if not body.lines:
             src.emit("    pass")
         # a fault leaves out of the steps the statements counted ahead of it (_AHEAD, by Python line)

@@ -93,6 +93,7 @@ class CplBlock:
     tokens: list[Tok] = field(default_factory=list)
     lines: list[int] = field(default_factory=list)
     has_colon: bool = False
+    error: LexError | None = None  # the first lexical error in one of its lines (the block is not parsed)
 
 
 def classify(text: str) -> list[Line]:
@@ -292,15 +293,19 @@ def cpl_blocks(lines: list[Line]) -> list[tuple[str, object]]:
     for ln in lines:
         if ln.kind == "cpl":
             current = CplBlock(ln.number, ln.lineno)
-            current.tokens.extend(tokenize(ln.text, ln.lineno, ln.offset))
-            current.lines.append(ln.lineno)
             out.append(("cpl", current))
-        elif ln.kind == "cont" and current is not None:
-            current.tokens.extend(tokenize(ln.text, ln.lineno, ln.offset))
-            current.lines.append(ln.lineno)
         elif ln.kind == "nc":
             current = None
             out.append(("nc", ln))
+            continue
+        elif ln.kind != "cont" or current is None:
+            continue
+        current.lines.append(ln.lineno)
+        if current.error is None:
+            try:
+                current.tokens.extend(tokenize(ln.text, ln.lineno, ln.offset))
+            except LexError as e:  # reported with the block's line number; the other blocks are still checked
+                current.error = e
     for kind, item in out:
         if kind == "cpl":
             item.has_colon = any(t.kind == "op" and t.val == ":" for t in item.tokens)

@@ -270,7 +270,7 @@ def link(path: str, text: str, machine: Machine) -> LinkResult:
             try:
                 sub_text = Path(sub_path).read_text(encoding="latin-1")
             except OSError as e:
-                diags.append(diag("CPL005", f"{name}: {e.strerror}", ln.prog.path, s.line, None, s.cpl))
+                diags.append(diag("CPL005", f"{name}: {e.strerror}", ln.prog.path, s.line, s.col or None, s.cpl))
                 continue
             sub = link_one(sub_path, sub_text, calls)
             if sub.prog.din_only:

@@ -94,6 +94,9 @@ class BlockParser:
             self.assignment(out)
             return False
         if t.kind != "kw":
+            if t.kind == "num" and t.line != self.line and (self.i == 0 or self.toks[self.i - 1].line != t.line):
+                self.error("CPL001", "the block before ends with ':', so this line continues it and has no line "
+                                     "number (manual §2.1.2 L375-380)")
             self.error("CPL001", "statement expected")
         kw = t.val
         if kw == "IF":
@@ -602,14 +605,13 @@ def parse_program(path: str, text: str, calls: dict | None = None) -> A.Program:
     first = next((ln for ln in lines if ln.kind != "blank"), None)
     if first is not None and first.kind == "nc" and "(DIN)" in first.text.upper().replace(" ", ""):
         prog.din_only = True
-    try:
-        items = cpl_blocks(lines)
-    except LexError as e:
-        prog.diagnostics.append(diag("CPL001", e.message, path, e.line, e.column))
-        return prog
-    for kind, item in items:
+    for kind, item in cpl_blocks(lines):
         if kind == "cpl":
             prog.has_cpl = True
+            if item.error is not None:
+                e = item.error
+                prog.diagnostics.append(diag("CPL001", e.message, path, e.line, e.column, item.number))
+                continue
             prog.lines.setdefault(item.number, []).append(len(prog.stmts))
             bp = BlockParser(item.tokens, item.lineno, item.number)
             start = len(prog.stmts)
@@ -619,12 +621,11 @@ def parse_program(path: str, text: str, calls: dict | None = None) -> A.Program:
                 del prog.stmts[start:]
                 prog.diagnostics.append(diag(e.code, e.detail, path, e.line, e.col, item.number))
                 continue
-            if item.has_colon and any(isinstance(s, A.Wait) for s in prog.stmts[start:]):
-                prog.diagnostics.append(diag("CPL009", "put the other statements in their own blocks", path,
-                                             item.lineno, None, item.number))
-            if item.has_colon and any(isinstance(s, A.CallStmt) for s in prog.stmts[start:]):
-                prog.diagnostics.append(diag("CPL014", "put the other statements in their own blocks", path,
-                                             item.lineno, None, item.number))
+            for code, kind in (("CPL009", A.Wait), ("CPL014", A.CallStmt)):
+                alone = next((s for s in prog.stmts[start:] if isinstance(s, kind)), None) if item.has_colon else None
+                if alone is not None:
+                    prog.diagnostics.append(diag(code, "put the other statements in their own blocks", path,
+                                                 alone.line, alone.col or None, item.number))
         else:
             try:
                 blk = parse_nc(item.text, item.lineno, calls)

@@ -182,9 +182,11 @@ class CplRuntime:
             self.finish_io_at_fault()
             if f.span is None:
                 f.span = Span(main, 1)
+            elif f.span.column is None and f.span.file in self.linked.units:  # an NC block the kernel refused
+                f.span = Span(f.span.file, f.span.line, self.first_column(f.span.file, f.span.line))
             raise
         except DeclError as e:
-            raise RuntimeFault(e.code, message(e.code, e.message), Span(e.file, max(e.line, 1))) from None
+            raise RuntimeFault(e.code, message(e.code, e.message), Span(e.file, max(e.line, 1), 1)) from None
         except Exception as e:  # noqa: BLE001 - every failure of generated code becomes a RUNTIME ERROR
             self.finish_io_at_fault()
             raise self.to_fault(e) from None
@@ -238,14 +240,20 @@ class CplRuntime:
             uc = self._codes.get(fs.filename)
             if uc is not None:
                 line = uc.src.source_line(fs.lineno)
-                frames.append((fs.filename, line, uc.cpl_lines.get(line)))
+                frames.append((fs.filename, line, uc.cpl_lines.get(line), uc.src.source_col(fs.lineno)))
         text = e.message if isinstance(e, CplRuntimeError) else message(code, detail)
         if not frames:
             return RuntimeFault(code, text, None)
-        file, line, cpl = frames[-1]
-        f = fault(code, detail, file, line, cpl, text=text)
-        f.stack = [Frame(Path(p).name, Span(p, ln)) for p, ln, _ in frames]
+        file, line, cpl, col = frames[-1]
+        f = fault(code, detail, file, line, cpl, text=text, column=col or self.first_column(file, line))
+        f.stack = [Frame(Path(p).name, Span(p, ln)) for p, ln, _, _ in frames]
         return f
+
+    def first_column(self, path: str, line: int) -> int:
+        """Where the first statement of a physical line starts (a fault in lines generated for no one statement)."""
+        unit = self.linked.units.get(path)
+        cols = [s.col for s in unit.prog.stmts if s.line == line and s.col] if unit is not None else []
+        return min(cols, default=1)
 
     # -- sub-programs -----------------------------------------------------------------------
     def call(self, caller: str, name: str, args: tuple, din: bool, line: int) -> None:
