@@ -105,3 +105,59 @@ def test_numbered_line_after_a_colon_is_named_as_such(run):
     r = run("10 X=1:\n20 Y=2\n")
     assert r["error"]["code"] == "CPL001" and r["error"]["line"] == 2
     assert "has no line number" in r["error"]["message"]
+
+
+# -- §3.3 programs excluded from linking -----------------------------------------------------------------------
+
+
+def test_cpl_expression_in_a_din_excluded_program_is_an_error_l1101(run, reference):
+    """§3.3 L1101-1104: a sub-program with CPL elements excluded by DIN gives an error at run time. `X[5]` is
+    the CPL syntax of §2.1.1 (L357); the block used to be dropped without a word."""
+    (reference().program_path[0] / "DINEXPR").write_text("N10 G1 X[5] F100\n")
+    r = run("10 CALL DINEXPR DIN\n20 A=1\nM30\n")
+    assert r["error"]["code"] == "CPL030" and "DINEXPR" in r["error"]["message"]
+
+
+def test_variable_parameter_in_a_din_excluded_program_is_an_error(run, reference):
+    m = reference(cpl={"calls": {"M66": "TOOLMSG"}})
+    (m.program_path[0] / "TOOLMSG").write_text("5 PDIM P1$(20)\n10 #MSG$ = P1$\n")
+    (m.program_path[0] / "DINCALL").write_text("N10 M66 [T$]\n")
+    r = run("10 CALL DINCALL DIN\nM30\n", cpl={"calls": {"M66": "TOOLMSG"}})
+    assert r["error"]["code"] == "CPL030"
+
+
+@pytest.mark.parametrize("pdim, expected", [(True, "ok"), (False, "CPL026")])
+def test_din_excluded_program_calls_by_m_address_with_pdim_l1161(run, reference, pdim, expected):
+    """§3.4 L1149-1175: a string constant passed by a program selected without linking reaches the sub-program
+    only through PDIM ("invalid variable" without it). The excluded program's M66 call runs (it used to be
+    executed as a bare M66, the sub-program never called); the sub-program, which no linked program reaches,
+    is linked when it is called."""
+    calls = {"calls": {"M66": "TOOLMSG"}}
+    m = reference(cpl=calls)
+    (m.program_path[0] / "TOOLMSG").write_text(("5 PDIM P1$(20)\n" if pdim else "") + "10 #MSG$ = P1$\n")
+    (m.program_path[0] / "DINCALL").write_text('N10 G0 X5\nN20 M66 ["T1 READY"]\nN30 G0 X7\n')
+    r = run("10 CALL DINCALL DIN\n20 WAIT\n30 X = MPOS(1)\nM30\n", cpl=calls)
+    if expected == "ok":
+        assert r["status"] == "ok", r["error"]
+        assert r["variables"]["#MSG$"] == "T1 READY" and r["variables"]["X"] == 7.0
+    else:
+        assert r["error"]["code"] == expected and r["error"]["file"].endswith("TOOLMSG")
+
+
+def test_din_header_program_runs_a_drilling_cycle(run, reference):
+    """"(DIN)" in the first line (L1115-1120): G81 in it calls 99999081 at N20 and again after N30 (§3.1, §3.2)."""
+    m = reference()
+    (m.program_path[0] / "99999081").write_text("10 #HOLES% = #HOLES% + 1\n")
+    (m.program_path[0] / "DRILL").write_text("N10 (DIN)\nN20 G81 [-5]\nN30 X10\nN40 G80\nN50 X20\n")
+    r = run("10 #HOLES% = 0\n20 CALL DRILL\nM30\n")
+    assert r["status"] == "ok", r["error"]
+    assert r["variables"]["#HOLES%"] == 2 and r["position"]["X"] == 20.0
+
+
+def test_link_error_of_a_program_reached_through_an_excluded_one(run, reference):
+    calls = {"calls": {"M67": "BADSUB"}}
+    m = reference(cpl=calls)
+    (m.program_path[0] / "BADSUB").write_text("10 X=(1\n")
+    (m.program_path[0] / "DINCALL").write_text("N10 M67\n")
+    r = run("10 CALL DINCALL DIN\nM30\n", cpl=calls)
+    assert r["error"]["code"] == "CPL001" and r["error"]["file"].endswith("BADSUB")

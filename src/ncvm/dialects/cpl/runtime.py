@@ -29,7 +29,7 @@ from .io import strings as S
 from .io.context import CplIO
 from .io.errors import CplRuntimeError
 from .io.values import CplText, Double
-from .linker import SUB_EXTENSIONS, LinkResult, call_table, link_one
+from .linker import SUB_EXTENSIONS, LinkResult, call_table
 from .perm import DeclError, Permanents
 from .system import SYSTEM_PROCS
 from .system import setup as system_setup
@@ -37,6 +37,7 @@ from .system.controller import load_controller
 from .system.gfuncs import Typ3Block, activate, prepare
 from .system.plc import f_ic
 from .system.positions import probe_block
+from .unlinked import link_late, run_unlinked
 
 _EXTENDED = re.compile(r"\s*([A-Za-z][A-Za-z0-9_]*[0-9_][A-Za-z0-9_]*)\s*=\s*([-+]?(?:\d+\.?\d*|\.\d+))\s*$")
 MAX_NESTING = 7  # sub-program levels below the main program (manual §2.1 L323)
@@ -267,40 +268,23 @@ class CplRuntime:
             target = str(found)
         if target in self.active:
             raise CplError("CPL006", name)
-        if caller in self.linked.units and self.linked.units[caller].prog.din_only:
+        if caller not in self.linked.units or self.linked.units[caller].prog.din_only:  # a caller run unlinked
             args = tuple(UnlinkedString(a) if a.__class__ is str else a for a in args)
         self.stack.append((caller, line))
         self.active.append(target)
         try:
+            if not din and target not in self.linked.units:
+                link_late(self, target)  # reached only through a program excluded from linking
             if target in self.linked.units and not din:
                 try:
                     self.unit(target)(args, False)
                 except EndProgram:
                     pass
             else:
-                self.run_unlinked(target, name)
+                run_unlinked(self, target, name)  # excluded from linking (manual §3.3)
         finally:
             self.stack.pop()
             self.active.pop()
-
-    def run_unlinked(self, target: str, name: str) -> None:
-        """A program excluded from linking (CALL ... DIN or "(DIN)"): only NC blocks may be in it (§3.3)."""
-        text = Path(target).read_text(encoding="latin-1")
-        ln = link_one(target, text, {})
-        if ln.prog.has_cpl or ln.prog.diagnostics:
-            raise CplError("CPL030", f"{name} contains CPL blocks")
-        for s in ln.prog.stmts:
-            if s.skip and self.block_skip:
-                continue
-            words = {w.address: w.value for w in s.words if w.address not in ("G", "M")}
-            g = tuple(int(w.value) if w.value == int(w.value) else w.value for w in s.words if w.address == "G")
-            m = tuple(int(w.value) for w in s.words if w.address == "M" and w.value not in (2, 30))
-            if g or m or words or s.msg is not None:
-                self.queue.append(prepare(self, Block(g, m, words, s.n, s.msg, Src(target, s.line))))
-            if s.wait:
-                self.drain()
-            if s.ends:
-                return
 
     def nocall(self, address: str, value):
         """An address that calls a sub-program may not take its value from [ ] (manual §2.1.1 L371)."""
