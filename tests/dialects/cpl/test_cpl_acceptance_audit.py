@@ -161,3 +161,17 @@ def test_link_error_of_a_program_reached_through_an_excluded_one(run, reference)
     (m.program_path[0] / "DINCALL").write_text("N10 M67\n")
     r = run("10 CALL DINCALL DIN\nM30\n", cpl=calls)
     assert r["error"]["code"] == "CPL001" and r["error"]["file"].endswith("BADSUB")
+
+
+def test_main_program_with_din_header_runs_unlinked_l1115(run, reference):
+    """L1115-1120: "(DIN)" as a remark in the first line excludes the program from linking; the PDIM example
+    (L1161-1175) starts such a main program. Its P call runs with the string constant for PDIM."""
+    (reference().program_path[0] / "SP").write_text("10 PDIM P1$(4)\n20 #P$ = P1$\nM30\n")
+    r = run('N10 (DIN)\nN50 P SP["TEST"]\nN60 G0 X5\nM30\n')
+    assert r["status"] == "ok", r["error"]
+    assert r["variables"]["#P$"] == "TEST" and r["position"]["X"] == 5.0
+
+
+def test_main_program_with_din_header_and_cpl_is_an_error_l1101(run):
+    r = run("N10 (DIN)\nN20 G0 X5\n30 X=1\nM30\n")
+    assert r["error"]["code"] == "CPL030" and (r["error"]["line"], r["error"]["column"]) == (3, 4)

@@ -172,7 +172,10 @@ class CplRuntime:
         result: dict = {}
         try:
             try:
-                result = self.unit(main)((), True)
+                if self.linked.main.prog.din_only:  # "(DIN)" in its first line: started without linking (§3.3)
+                    run_unlinked(self, main, Path(main).name)
+                else:
+                    result = self.unit(main)((), True)
             finally:
                 self.session.variables = self.report(result or self.fault_locals)
             self.drain()
@@ -182,7 +185,7 @@ class CplRuntime:
         except RuntimeFault as f:
             self.finish_io_at_fault()
             if f.span is None:
-                f.span = Span(main, 1)
+                f.span = Span(main, 1, 1)
             elif f.span.column is None and f.span.file in self.linked.units:  # an NC block the kernel refused
                 f.span = Span(f.span.file, f.span.line, self.first_column(f.span.file, f.span.line))
             raise

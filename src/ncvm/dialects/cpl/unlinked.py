@@ -15,7 +15,7 @@ from ...diagnostics import CompileFailed
 from ...nc.block import Block
 from ...nc.canon import Src
 from . import ast as A
-from .errors import CplError
+from .errors import CplError, fault
 from .linker import link, link_one
 from .system.gfuncs import prepare
 from .system.transforms import PARAMETER_G
@@ -27,13 +27,19 @@ def run_unlinked(rt, target: str, name: str) -> None:
     """Run the DIN blocks of ``target`` on the runtime ``rt`` (its queue, its calls, its modal sub-program)."""
     text = Path(target).read_text(encoding="latin-1")
     ln = link_one(target, text, rt.calls)
-    if ln.prog.has_cpl or ln.prog.diagnostics:
-        raise CplError("CPL030", f"{name} contains CPL blocks")
     for s in ln.prog.stmts:
+        if not isinstance(s, A.NcBlock):
+            _excluded(rt, target, f"{name} contains CPL blocks", s)
         if any(w.expr is not None for w in s.words) or s.loose:
-            raise CplError("CPL030", f"{name} uses CPL expressions [ ] in an NC block (line {s.line})")
+            _excluded(rt, target, f"{name} uses CPL expressions [ ] in an NC block (line {s.line})", s)
         if s.call is not None:
-            _constants(s.call[1], name, s.line)
+            try:
+                _constants(s.call[1], name, s.line)
+            except CplError as e:
+                _excluded(rt, target, e.detail, s)
+    if ln.prog.diagnostics:
+        d = ln.prog.diagnostics[0]
+        _excluded(rt, target, f"{name} contains CPL blocks", A.Stmt(d.span.line, d.span.column or 1))
     for s in ln.prog.stmts:
         if s.skip and rt.block_skip:
             continue
@@ -56,6 +62,14 @@ def run_unlinked(rt, target: str, name: str) -> None:
             rt.drain()
         if s.ends:
             return
+
+
+def _excluded(rt, target: str, detail: str, s: A.Stmt):
+    """CPL030. In a sub-program the error points at the call (the caller's position); an excluded main program
+    has no caller, so the error points at the offending block itself."""
+    if rt.stack:
+        raise CplError("CPL030", detail)
+    raise fault("CPL030", detail, target, s.line, s.cpl, column=s.col or 1)
 
 
 def _constants(args: list, name: str, line: int) -> tuple:
