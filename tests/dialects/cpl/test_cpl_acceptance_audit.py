@@ -175,3 +175,28 @@ def test_main_program_with_din_header_runs_unlinked_l1115(run, reference):
 def test_main_program_with_din_header_and_cpl_is_an_error_l1101(run):
     r = run("N10 (DIN)\nN20 G0 X5\n30 X=1\nM30\n")
     assert r["error"]["code"] == "CPL030" and (r["error"]["line"], r["error"]["column"]) == (3, 4)
+
+
+# -- §4.1 WAIT parameters ------------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("text", [
+    "10 WAIT(IC(1,1,1)=1)\n",  # L1213: <state> is a BOOLEan expression
+    "10 WAIT(,1000,E)\n",  # L1217: <result var> is an Integer variable
+    "10 WAIT(,1000,E!)\n",
+])
+def test_wait_parameter_types_are_checked_when_linking(run, text):
+    r = run(text + "M30\n")
+    assert r["error"]["code"] == "CPL032" and r["steps"] == 0
+
+
+def test_wait_with_every_form_of_the_manual_l1232(run):
+    """L1232-1239 in one program, no input ever set: E% = 1 after 1000 ms; WAIT(,TIME%) returns nothing;
+    NOT IC(3,2,1) holds at once (C% = 0); IC(4,4,1)=E7? with E7? TRUE times out after 250 ms (ERG% = 1);
+    IC(2,0,2)=(E1? OR E2?) with both FALSE holds at once."""
+    r = run("10 WAIT(,1000,E%)\n15 TIME% = 500\n20 WAIT(,TIME%)\n30 WAIT(NOT IC(3,2,1),,C%)\n"
+            "35 E7? = TRUE\n40 WAIT(IC(4,4,1)=E7?,250,ERG%)\n45 E1? = FALSE : E2? = FALSE\n"
+            "50 WAIT(IC(2,0,2)=(E1? OR E2?))\n60 T% = CLOCK\nN70 WAIT\nM30\n")
+    assert r["status"] == "ok", r["error"]
+    v = r["variables"]
+    assert (v["E%"], v["C%"], v["ERG%"], v["T%"]) == (1, 0, 1, 1750)

@@ -581,6 +581,10 @@ class Gen:
         if s.plain:
             self.emit("_drain()", line)
             return
+        if s.state is not None and self.ex(s.state)[1] not in ("B", "?"):
+            raise GenError("CPL032", "the <state> of a WAIT condition is a BOOLEAN expression (manual §4.1)")
+        if s.result is not None and s.result.var.type != "I":
+            raise GenError("CPL032", "the <result var> of WAIT is an INTEGER variable (manual §4.1)")
         ic = "None"
         if s.ic is not None:
             ic = "(" + ", ".join(self.arg(a) for a in s.ic) + ("," if s.ic else "") + ")"
