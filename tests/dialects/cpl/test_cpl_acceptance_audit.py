@@ -200,3 +200,10 @@ def test_wait_with_every_form_of_the_manual_l1232(run):
     assert r["status"] == "ok", r["error"]
     v = r["variables"]
     assert (v["E%"], v["C%"], v["ERG%"], v["T%"]) == (1, 0, 1, 1750)
+
+
+def test_wait_in_an_nc_block_without_parameters_still_drains(run):
+    """L1197-1203: "N20 WAIT" is WAIT as an NC block; a comment after a blank is not a parameter list."""
+    r = run("N10 G1 X50 F3000\nN20 WAIT (MSG, waited)\n30 X = MPOS(1)\nM30\n")
+    assert r["status"] == "ok", r["error"]
+    assert r["variables"]["X"] == 50.0 and "waited" in r["output"]

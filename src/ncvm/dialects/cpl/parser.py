@@ -494,6 +494,9 @@ def parse_nc(text: str, lineno: int, calls: dict) -> A.NcBlock:
         if not up.isalpha():
             raise ParseError("CPL001", f"cannot read '{s[i:i + 10].strip()}' in the NC block", lineno, i + 1)
         if s[i:i + 4].upper() == "WAIT" and not (i + 4 < n and s[i + 4].isalnum()):
+            if s[i + 4:i + 5] == "(":
+                raise ParseError("CPL001", "WAIT with parameters can be programmed only in a CPL block "
+                                           "(manual §4.1 L1203)", lineno, i + 1)
             blk.wait = True
             i += 4
             continue
