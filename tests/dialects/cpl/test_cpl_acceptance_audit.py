@@ -207,3 +207,17 @@ def test_wait_in_an_nc_block_without_parameters_still_drains(run):
     r = run("N10 G1 X50 F3000\nN20 WAIT (MSG, waited)\n30 X = MPOS(1)\nM30\n")
     assert r["status"] == "ok", r["error"]
     assert r["variables"]["X"] == 50.0 and "waited" in r["output"]
+
+
+# -- sub-programs along the program path ---------------------------------------------------------------------
+
+
+def test_program_names_tell_upper_from_lower_case_l3853(run, reference):
+    """§6.1.1 L3853-3857: "A distinction is made between upper- and lower-case letters" (P12_Data_Dial and
+    P12_DATA_DIAL are two files). CALL finds a program as written or with ".cpl", in that case only."""
+    folder = reference().program_path[0]
+    (folder / "Sub1.cpl").write_text("10 #HIT% = 1\n")
+    assert run("10 CALL Sub1\nM30\n")["variables"] == {"#HIT%": 1}
+    assert run("10 CALL Sub1.cpl\nM30\n")["variables"] == {"#HIT%": 1}
+    r = run("10 CALL SUB1\nM30\n")
+    assert r["error"]["code"] == "CPL005" and "SUB1" in r["error"]["message"]

@@ -251,7 +251,7 @@ def link(path: str, text: str, machine: Machine) -> LinkResult:
 
     def visit(ln: Linked, chain: list[str]) -> None:
         for name, din, s in ln.calls:
-            found = machine.find_program(name, SUB_EXTENSIONS)
+            found = machine.find_program(name, SUB_EXTENSIONS, ignore_case=False)
             if found is None:
                 diags.append(diag("CPL005", f"{name} (program path: "
                                   f"{', '.join(str(p) for p in machine.program_path)})",

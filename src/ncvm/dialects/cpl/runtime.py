@@ -265,7 +265,7 @@ class CplRuntime:
             raise CplError("CPL007", f"CALL {name}")
         target = self.linked.resolve.get((caller, name))
         if target is None:
-            found = self.machine.find_program(name, SUB_EXTENSIONS)
+            found = self.machine.find_program(name, SUB_EXTENSIONS, ignore_case=False)
             if found is None:
                 raise CplError("CPL005", name)
             target = str(found)
