@@ -221,3 +221,20 @@ def test_program_names_tell_upper_from_lower_case_l3853(run, reference):
     assert run("10 CALL Sub1.cpl\nM30\n")["variables"] == {"#HIT%": 1}
     r = run("10 CALL SUB1\nM30\n")
     assert r["error"]["code"] == "CPL005" and "SUB1" in r["error"]["message"]
+
+
+# -- §2.4.3 definable permanent variables --------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("anw, expected", [
+    ("DEF REAL @EFGH ;the same declaration in both files\n", "ok"),
+    ("DEF INT @EFGH\n", "CPL038"),  # one name, two types: which variable would @EFGH be?
+    ("DEF REAL @EFGHIJKLMNOPQRSTU(3)\nDEF REAL @EFGHIJKLMNOPQRSTV\n", "CPL038"),  # 16 significant (L560-562)
+])
+def test_one_name_declared_twice(run, reference, anw, expected):
+    root = reference().file_root
+    root.mkdir(parents=True, exist_ok=True)
+    (root / "wmhperm.dat").write_text("DEF REAL @EFGH ;simple REAL variable\n")
+    (root / "anwperm.dat").write_text(anw)
+    r = run("10 @EFGH = 4.1\nM30\n")
+    assert (r["status"] if expected == "ok" else r["error"]["code"]) == expected
