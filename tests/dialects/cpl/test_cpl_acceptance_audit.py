@@ -238,3 +238,26 @@ def test_one_name_declared_twice(run, reference, anw, expected):
     (root / "anwperm.dat").write_text(anw)
     r = run("10 @EFGH = 4.1\nM30\n")
     assert (r["status"] if expected == "ok" else r["error"]["code"]) == expected
+
+
+# -- nesting beyond what Python blocks and its parser take -----------------------------------------------------
+
+
+def test_deeply_nested_structures_run_in_the_flat_form(run):
+    """120 nested IFs (Python allows 100 nested blocks): the program is generated as a dispatch loop and
+    runs; the manual sets no IF nesting limit (CASE only: 10, §2.5.7 L1044)."""
+    depth = 120
+    text = "".join(f"{i} IF TRUE THEN\n" for i in range(1, depth + 1)) + "500 X% = 1\n"
+    text += "".join(f"{600 + i} ENDIF\n" for i in range(depth)) + "M30\n"
+    r = run(text)
+    assert r["status"] == "ok", r["error"]
+    assert r["variables"] == {"X%": 1}
+
+
+@pytest.mark.parametrize("expr", ["+".join(["1"] * 300), "-" * 5000 + "1", "NOT " * 3000 + "1"])
+def test_expressions_too_deep_are_nesting_too_deep(run, expr):
+    """§2.5.1 L782-791: the nesting a control allows depends on the memory an expression needs; beyond it the
+    manual's error is RUNTIME ERROR 2153 NESTING TOO DEEP (L3773), at the block, before the start."""
+    r = run(f"5 A% = 1\n10 X% = {expr}\nM30\n")
+    assert r["error"]["code"] == "2153" and r["error"]["line"] == 2 and "(CPL line 10)" in r["error"]["message"]
+    assert r["steps"] == 0

@@ -65,6 +65,7 @@ class Gen:
         self.tmp = 0
         self.fields = ln.fields
         self.cur = None
+        self.flat = ln.uses_goto  # the GOTO form: a dispatch loop over basic blocks
         self.max_param = 0
         #: statements counted into _n ahead of time but not yet executed, while a stretch is emitted
         self._ahead = 0
@@ -1103,7 +1104,7 @@ class Gen:
         self.src = body
         body._indent = 3
         try:
-            if self.ln.uses_goto:
+            if self.flat:
                 self.dispatch()
             else:
                 self.structured(0, len(self.stmts))
@@ -1215,14 +1216,25 @@ HELPER_NAMES = (
 
 
 def generate(ln, hook: bool = False) -> tuple[UnitCode | None, list]:
-    """Generate the unit for a linked program; diagnostics for errors only code generation sees (types)."""
-    g = Gen(ln, hook)
-    try:
-        return g.generate(), []
-    except GenError as e:
-        s = e.stmt or g.cur
-        return None, [diag(e.code, e.detail, ln.prog.path, s.line if s else 1, (s.col or None) if s else None,
-                           s.cpl if s else None)]
+    """Generate the unit for a linked program; diagnostics for errors only code generation sees (types).
+
+    Structures nested deeper than Python's blocks allow are generated in the flat (GOTO) form instead; an
+    expression too deep for Python is the manual's NESTING TOO DEEP (2153, §2.5.1 L782: the depth a control
+    allows depends on the memory the expression needs)."""
+    for flat in ((True,) if ln.uses_goto else (False, True)):
+        g = Gen(ln, hook)
+        g.flat = flat
+        try:
+            return g.generate(), []
+        except GenError as e:
+            s = e.stmt or g.cur
+            return None, [diag(e.code, e.detail, ln.prog.path, s.line if s else 1, (s.col or None) if s else None,
+                               s.cpl if s else None)]
+        except (RecursionError, SyntaxError, MemoryError) as e:
+            line = g.src.source_line(e.lineno) if isinstance(e, SyntaxError) and e.lineno else 0
+            s = next((x for x in g.stmts if x.line == line), None) or g.cur
+    return None, [diag("2153", "expression or structure too deep to evaluate", ln.prog.path, s.line if s else 1,
+                       (s.col or None) if s else None, s.cpl if s else None)]
 
 
 def _a(ty: str) -> str:

@@ -624,6 +624,11 @@ def parse_program(path: str, text: str, calls: dict | None = None) -> A.Program:
                 del prog.stmts[start:]
                 prog.diagnostics.append(diag(e.code, e.detail, path, e.line, e.col, item.number))
                 continue
+            except RecursionError:  # the control's evaluation stack has a limit too (§2.5.1 L782-791)
+                del prog.stmts[start:]
+                prog.diagnostics.append(diag("2153", "expression nested too deeply", path, item.lineno,
+                                             item.tokens[0].col if item.tokens else 1, item.number))
+                continue
             for code, kind in (("CPL009", A.Wait), ("CPL014", A.CallStmt)):
                 alone = next((s for s in prog.stmts[start:] if isinstance(s, kind)), None) if item.has_colon else None
                 if alone is not None:
@@ -637,6 +642,9 @@ def parse_program(path: str, text: str, calls: dict | None = None) -> A.Program:
                 continue
             except LexError as e:  # inside an [expr] word
                 prog.diagnostics.append(diag("CPL001", e.message, path, e.line, e.column))
+                continue
+            except RecursionError:
+                prog.diagnostics.append(diag("2153", "expression nested too deeply", path, item.lineno, 1))
                 continue
             if blk.n is not None:
                 prog.nblocks.setdefault(blk.n, []).append(len(prog.stmts))
