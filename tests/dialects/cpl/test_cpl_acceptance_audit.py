@@ -261,3 +261,12 @@ def test_expressions_too_deep_are_nesting_too_deep(run, expr):
     r = run(f"5 A% = 1\n10 X% = {expr}\nM30\n")
     assert r["error"]["code"] == "2153" and r["error"]["line"] == 2 and "(CPL line 10)" in r["error"]["message"]
     assert r["steps"] == 0
+
+
+@pytest.mark.parametrize("goto", ["", "5 GOTO 10\n"])
+def test_for_exit_value_beyond_the_integer_range(run, goto):
+    """§2.5.5 L934: after the loop the counter is past the end value; past +2147483647 (L655) an INTEGER cannot
+    hold it: INVALID INTEGER VALUE at NEXT, in the structured and in the GOTO form of a program alike (the
+    structured form used to leave 2147483648 in I%)."""
+    r = run(goto + "10 FOR I%=2147483646 TO 2147483647 : NEXT\n20 J% = I%\nM30\n")
+    assert r["error"]["code"] == "CPL027" and (r["error"]["line"], r["error"]["column"]) == (1 + bool(goto), 38)

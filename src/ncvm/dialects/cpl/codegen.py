@@ -958,6 +958,9 @@ class Gen:
             else:
                 self.store(v, inc_code, inc_ty, nxt.line)
             self.emit(f"if _n > _lim: _runaway({s.line})", nxt.line)
+        if ctype == "I" and inc_ty == "I" and v.var.cls == "L":  # the exit value past INTEGER's end, once
+            self.cur = nxt
+            self.emit(f"if not -2147483648 <= {counter} <= 2147483647: {counter} = _toi({counter})", nxt.line)
 
     # -- dispatch code (programs with GOTO) ---------------------------------------------------
     def dispatch(self) -> None:
