@@ -270,3 +270,15 @@ def test_for_exit_value_beyond_the_integer_range(run, goto):
     structured form used to leave 2147483648 in I%)."""
     r = run(goto + "10 FOR I%=2147483646 TO 2147483647 : NEXT\n20 J% = I%\nM30\n")
     assert r["error"]["code"] == "CPL027" and (r["error"]["line"], r["error"]["column"]) == (1 + bool(goto), 38)
+
+
+def test_check_lists_link_and_type_errors_together_in_source_order(tmp_path, reference):
+    """A type error no longer hides behind a link error of another block (or another program)."""
+    from ncvm.api import check
+    m = reference()
+    (m.program_path[0] / "SUBT").write_text('10 Y% = "B"\n')
+    path = tmp_path / "ce.cpl"
+    path.write_text('10 X% = "A"\n20 CALL NOPE\n30 CALL SUBT\n')
+    diags = check(path, machine=m)
+    assert [(d.code, d.span.line) for d in diags if d.span.file == str(path)] == [("CPL021", 1), ("CPL005", 2)]
+    assert [d.code for d in diags if d.span.file.endswith("SUBT")] == ["CPL021"]
