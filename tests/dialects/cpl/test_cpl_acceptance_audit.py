@@ -282,3 +282,12 @@ def test_check_lists_link_and_type_errors_together_in_source_order(tmp_path, ref
     diags = check(path, machine=m)
     assert [(d.code, d.span.line) for d in diags if d.span.file == str(path)] == [("CPL021", 1), ("CPL005", 2)]
     assert [d.code for d in diags if d.span.file.endswith("SUBT")] == ["CPL021"]
+
+
+@pytest.mark.parametrize("text, words", [
+    ("10 @_RES_DOUBLE = 1\n", "reserved for internal applications"),  # §2.4.3 L544
+    ("10 @4$ = \"A\"\n", "INTEGER permanent variable"),  # @1..@100 are INTEGER (L542)
+])
+def test_permanent_names_the_manual_rules_out(run, text, words):
+    r = run(text + "M30\n")
+    assert r["error"]["code"] == "CPL001" and words in r["error"]["message"]

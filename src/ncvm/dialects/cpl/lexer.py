@@ -207,6 +207,9 @@ def tokenize(text: str, lineno: int, offset: int) -> list[Tok]:
                     k += 1
                 if k < n and up[k] == "%":
                     k += 1
+                elif k < n and up[k] in "!?$":
+                    raise LexError(lineno, k + offset + 1, f"@{num} is an INTEGER permanent variable: only '%' may "
+                                                           "follow it (manual §2.4.3 L540-542)")
                 if not 1 <= num <= 100:
                     raise LexError(lineno, col, f"permanent variable @{num}: only @1 to @100 exist")
                 toks.append(Tok("var", VarName("P", str(num), ""), lineno, col, up[i:k]))
@@ -221,6 +224,9 @@ def tokenize(text: str, lineno: int, offset: int) -> list[Tok]:
                 toks.append(Tok("var", VarName("D", word[:16], suffix), lineno, col, up[i:k]))
                 i = k
                 continue
+            if up.startswith(("_RES_DOUBLE", "_RES_DWORD"), j):
+                raise LexError(lineno, col, "@_RES_DOUBLE and @_RES_DWORD are reserved for internal applications "
+                                            "(manual §2.4.3 L544)")
             raise LexError(lineno, col, "'@' must start a permanent variable name")
         if c.isalpha():
             k, word, suffix = _word(up, i)
