@@ -166,6 +166,8 @@ class Gen:
             for ty in (lt, rt):
                 if ty not in NUMERIC + ("?",):
                     raise GenError("CPL032", f"'{op}' of {_a(ty)} value")
+            if op == "/" or lt != rt:  # an INTEGER result leaving INTEGER arithmetic: 32 bits (manual L655)
+                lc, rc = _int32(e.left, lc, lt), _int32(e.right, rc, rt)
             if op == "/":
                 ty = "D" if "D" in (lt, rt) or "?" in (lt, rt) else "R"
                 return f"({lc} / {rc})", ty
@@ -179,6 +181,7 @@ class Gen:
         if pyop in ("==", "!="):  # Python's == takes None silently; NUL is an error unless compared to NUL
             lc, rc = _not_nul(e.left, lc, lt), _not_nul(e.right, rc, rt)
         if lt in NUMERIC and rt in NUMERIC:
+            lc, rc = _int32(e.left, lc, lt), _int32(e.right, rc, rt)
             if "D" not in (lt, rt) and "R" in (lt, rt):
                 lc, rc = self._single(e.left, lc, lt), self._single(e.right, rc, rt)
             return f"({lc} {pyop} {rc})", "B"
@@ -372,14 +375,14 @@ class Gen:
                 return code if ty == "R" else f"_tor({code})"
             if isinstance(e, A.Num):
                 return repr(f32(e.value))
-            return f"_f32({code})" if ty != "?" else f"_tor({code})"
+            return f"_f32({_int32(e, code, ty)})" if ty != "?" else f"_tor({code})"
         if target_type == "D":
             if ty in ("B", "S"):
                 raise GenError("CPL021", f"{_tname(ty)} value assigned to a DOUBLE variable")
             if isinstance(e, A.Num):
                 return repr(float(e.value))
             if ty == "I":
-                return f"_tod({code})" if isinstance(e, A.Var) else f"float({code})"
+                return f"_tod({code})" if isinstance(e, A.Var) else f"float({_int32(e, code, ty)})"
             # a computed DOUBLE can overflow to infinity, which _tod refuses (range +/-1e308)
             return code if ty in ("R", "D") and isinstance(e, A.Var) else f"_tod({code})"
         if target_type == "B":
@@ -1167,6 +1170,25 @@ def _not_nul(e, code: str, ty: str) -> str:
     if not _maybe_nul(e):
         return code
     return f"({code} + 0)" if ty in NUMERIC else f"_nn({code})"
+
+
+def _int32(e, code: str, ty: str) -> str:
+    """An INTEGER sum, difference, product or negation used outside INTEGER arithmetic (compared, stored into
+    a REAL, mixed with one) must fit 32 bits (manual L655, digest §4.2): INVALID INTEGER VALUE otherwise.
+    INTEGER stores check on their own, so ``I% = I% + 1`` pays nothing. Constants alone are exempt: they take
+    the precision of their context (``D2! = -123456789012345``, manual L484-490)."""
+    if ty == "I" and (isinstance(e, A.Bin) or isinstance(e, A.Unary) and e.op == "-") and _reads(e):
+        return f"_toi({code})"
+    return code
+
+
+def _reads(e) -> bool:
+    """Does the expression read a variable or call a function (is it more than constants)?"""
+    if isinstance(e, A.Bin):
+        return _reads(e.left) or _reads(e.right)
+    if isinstance(e, A.Unary):
+        return _reads(e.operand)
+    return not isinstance(e, (A.Num, A.Str, A.BoolLit, A.Nul))
 
 
 def _maybe_nul(e) -> bool:
