@@ -915,8 +915,8 @@ class Gen:
 
     def for_parts(self, i: int, s: A.For):
         v = s.var
-        if v.index or v.var.cls not in ("L", "G") or v.var.type not in NUMERIC:
-            raise GenError("CPL001", "FOR needs a simple numeric variable")
+        if v.var.type not in NUMERIC or v.var.cls == "A":  # any numerical variable (§2.5.5 L924), not a parameter
+            raise GenError("CPL001", "FOR needs a numeric variable")
         ctype = v.var.type
         start_code, start_ty = self.ex(s.start)
         end_code, end_ty = self.ex(s.end)
@@ -956,12 +956,12 @@ class Gen:
                 self.emit(f"{fs} = {step_code}", nxt.line)
                 inc_code = f"({counter} + {fs})"
             inc_ty = "I" if ctype == "I" and step_ty == "I" else ("D" if "D" in (ctype, step_ty) else "R")
-            if ctype == "I" and inc_ty == "I" and v.var.cls == "L":
+            if ctype == "I" and inc_ty == "I" and v.var.cls == "L" and not v.index:
                 self.emit(f"{counter} = {inc_code}", nxt.line)
             else:
                 self.store(v, inc_code, inc_ty, nxt.line)
             self.emit(f"if _n > _lim: _runaway({s.line})", nxt.line)
-        if ctype == "I" and inc_ty == "I" and v.var.cls == "L":  # the exit value past INTEGER's end, once
+        if ctype == "I" and inc_ty == "I" and v.var.cls == "L" and not v.index:  # exit value past INTEGER, once
             self.cur = nxt
             self.emit(f"if not -2147483648 <= {counter} <= 2147483647: {counter} = _toi({counter})", nxt.line)
 
