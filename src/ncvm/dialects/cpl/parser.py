@@ -212,8 +212,12 @@ class BlockParser:
             v = self.next()
             if v.kind != "var" or v.val.cls != "A":
                 self.error("CPL001", "PDIM needs a parameter name (P1$ ...)", v)
+            if v.val.suffix != "$":  # PDIM gives a string constant passed as a parameter its size (§3.4 L1149)
+                self.error("CPL001", f"PDIM dimensions a string parameter: P{v.val.name}$, not {v.val.display}", v)
             self.expect("op", "(", "'('")
             size = self.expect("num", None, "field size")
+            if size.val.__class__ is not int or not 1 <= size.val <= 1024:
+                self.error("CPL022", f"PDIM size {size.val}: an INTEGER constant 1..1024", size)
             self.expect("op", ")", "')'")
             out.append(self.stmt(A.Pdim, t, var=v.val, size=size.val))
             return False
