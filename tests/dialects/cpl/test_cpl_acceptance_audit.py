@@ -335,3 +335,11 @@ def test_for_counts_with_any_numerical_variable_l924(run, goto):
 
 def test_for_with_a_parameter_or_a_non_number_is_an_error(run):
     assert run('10 FOR A$="A" TO "C" : NEXT\nM30\n')["error"]["code"] == "CPL001"
+
+
+@pytest.mark.parametrize("name", ["/etc/hostname", "../p.cpl", "sub/P999", ".."])
+def test_call_takes_a_program_name_not_a_host_path(run, name):
+    """§6.1.1 L3851: a file name has alphanumeric characters, "." and "_". CALL used to open any file of the
+    host (an absolute path, or ../ out of the program path) and print its lines in the link errors."""
+    r = run(f"10 CALL {name}\nM30\n")
+    assert r["error"]["code"] == "CPL001" and "program name" in r["error"]["message"]

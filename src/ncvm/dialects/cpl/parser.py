@@ -6,6 +6,8 @@ one relational operator. Parentheses nest at most 7 deep (RUNTIME ERROR 2153).
 
 from __future__ import annotations
 
+import re
+
 from . import ast as A
 from .errors import diag
 from .lexer import LexError, Tok, VarName, classify, cpl_blocks, tokenize
@@ -21,6 +23,10 @@ class ParseError(Exception):
         self.detail = detail
         self.line = line
         self.col = col
+
+
+#: a part program's file name (manual §6.1.1 L3851): alphanumeric characters, "." and "_"; not "." or ".."
+_PROGRAM_NAME = re.compile(r"(?!\.\.?$)[A-Za-z0-9_.]+")
 
 
 class BlockParser:
@@ -188,6 +194,9 @@ class BlockParser:
         if kw == "CALL":
             self.next()
             name = self.expect("name", None, "program name")
+            if not _PROGRAM_NAME.fullmatch(name.val):  # a name along the program path, never a path of the host
+                self.error("CPL001", f"program name {name.val!r}: letters, digits, '.' and '_' only "
+                                     "(manual §6.1.1 L3851)", name)
             args = []
             if self.at("op", "["):
                 self.next()
