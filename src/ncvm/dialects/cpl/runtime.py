@@ -250,7 +250,7 @@ class CplRuntime:
             return RuntimeFault(code, text, None)
         file, line, cpl, col = frames[-1]
         f = fault(code, detail, file, line, cpl, text=text, column=col or self.first_column(file, line))
-        f.stack = [Frame(Path(p).name, Span(p, ln)) for p, ln, _, _ in frames]
+        f.stack = [Frame(Path(p).name, Span(p, ln, c or self.first_column(p, ln))) for p, ln, _, c in frames]
         return f
 
     def first_column(self, path: str, line: int) -> int:
