@@ -78,6 +78,7 @@ def test_runtime_error_in_a_sub_program_points_into_it(run, reference):
     r = run("10 X=1\n20 CALL SUBERR\nM30\n")
     assert r["error"]["code"] == "CPL029" and r["error"]["file"].endswith("SUBERR")
     assert (r["error"]["line"], r["error"]["column"]) == (1, 10) and "(CPL line 10)" in r["error"]["message"]
+    assert r["error"]["stack"] == ["called from p.cpl at " + str(reference().program_path[0] / "p.cpl") + ":2:4"]
 
 
 @pytest.mark.parametrize("text, code, col", [
