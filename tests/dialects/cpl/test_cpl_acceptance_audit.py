@@ -344,3 +344,16 @@ def test_call_takes_a_program_name_not_a_host_path(run, name):
     host (an absolute path, or ../ out of the program path) and print its lines in the link errors."""
     r = run(f"10 CALL {name}\nM30\n")
     assert r["error"]["code"] == "CPL001" and "program name" in r["error"]["message"]
+
+
+@pytest.mark.parametrize("block, ok", [
+    ("10 CALL P999 : REM the remark is no instruction", True),
+    ("10 .AGAIN: CALL P999", True),
+    ("10 CALL P999 : CALL P999", False),
+    ("10 X=1 : CALL P999", False),
+    ("10 IF TRUE THEN CALL P999 ENDIF", False),
+])
+def test_call_in_a_block_of_its_own_l1068(run, reference, block, ok):
+    (reference().program_path[0] / "P999").write_text("10 #N% = #N% + 1\n")
+    r = run("5 #N% = 0\n" + block + "\nM30\n")
+    assert (r["status"] == "ok") is ok and (ok or r["error"]["code"] == "CPL014")

@@ -645,10 +645,10 @@ def parse_program(path: str, text: str, calls: dict | None = None) -> A.Program:
             block = prog.stmts[start:]
             for code, kind in (("CPL009", A.Wait), ("CPL014", A.CallStmt)):
                 alone = next((s for s in block if isinstance(s, kind)), None)
-                # WAIT: no ':' in its block (§4.1 L1201); CALL: a block of its own (§3 L1068, §3.3 L1086),
-                # so not inside a one-line IF either (a label before it is no statement)
-                if alone is not None and (item.has_colon or kind is A.CallStmt and
-                                          any(not isinstance(s, (A.CallStmt, A.LabelDef)) for s in block)):
+                # WAIT: no ':' in its block (§4.1 L1201); CALL: a block of its own (§3 L1068, §3.3 L1087), so not
+                # inside a one-line IF either (a label before it or a remark after it is no instruction)
+                if alone is not None and (item.has_colon if kind is A.Wait else
+                                          sum(not isinstance(s, A.LabelDef) for s in block) > 1):
                     prog.diagnostics.append(diag(code, "put the other statements in their own blocks", path,
                                                  alone.line, alone.col or None, item.number))
         else:
