@@ -538,6 +538,10 @@ def parse_nc(text: str, lineno: int, calls: dict) -> A.NcBlock:
             blk.call = (name, args, False)
             continue
         if j < n and s[j] == "[":
+            if addr == "N":  # the block number is known when linking: GOTO N.. must find it (§2.1.1 L357)
+                raise ParseError("CPL001", "the N address takes no [ ]: word contents with the exception of "
+                                           "N-addresses may be written with variables (manual §2.1.1 L357)",
+                                 lineno, col)
             k = _close_bracket(s, j, lineno)
             e = _nc_expr(s[j + 1:k], lineno, j + 1)
             if addr not in ("G", "M") and any(w.address == addr for w in blk.words):
