@@ -110,7 +110,7 @@ class Machine:
     def find_program(self, name: str, extensions: tuple[str, ...] = (), ignore_case: bool = True) -> Path | None:
         """Search the program path for ``name`` as written, then with each extension (and, unless the
         control tells upper from lower case, in any case)."""
-        candidates = [name] + [name + ext for ext in extensions if not name.lower().endswith(ext)]
+        candidates = [name] + [name + ext for ext in extensions if not name.lower().endswith(ext.lower())]
         for folder in self.program_path:
             for cand in candidates:
                 p = folder / cand

@@ -222,6 +222,8 @@ def test_program_names_tell_upper_from_lower_case_l3853(run, reference):
     assert run("10 CALL Sub1.cpl\nM30\n")["variables"] == {"#HIT%": 1}
     r = run("10 CALL SUB1\nM30\n")
     assert r["error"]["code"] == "CPL005" and "SUB1" in r["error"]["message"]
+    (folder / "P999.CPL").write_text("10 #HIT% = 2\n")  # an archive copied from a PC: the extension in capitals
+    assert run("10 CALL P999\nM30\n")["variables"] == {"#HIT%": 2}
 
 
 # -- §2.4.3 definable permanent variables --------------------------------------------------------------------

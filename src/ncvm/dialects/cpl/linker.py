@@ -19,7 +19,7 @@ from .errors import diag
 from .parser import parse_program
 
 MAX_CASE_NESTING = 10
-SUB_EXTENSIONS = (".cpl",)
+SUB_EXTENSIONS = (".cpl", ".CPL")  # names are case-sensitive (§6.1.1); the extension is ncvm's, in either case
 
 #: how often a program was really linked (tests check that unchanged programs are taken from the cache)
 LINK_STATS = {"linked": 0}
