@@ -359,3 +359,14 @@ def test_call_in_a_block_of_its_own_l1068(run, reference, block, ok):
     (reference().program_path[0] / "P999").write_text("10 #N% = #N% + 1\n")
     r = run("5 #N% = 0\n" + block + "\nM30\n")
     assert (r["status"] == "ok") is ok and (ok or r["error"]["code"] == "CPL014")
+
+
+def test_drilling_cycle_runs_after_the_moves_of_a_called_program(run, reference):
+    """A built-in drilling cycle behaves as a modal entry of the machine file: after every traversing block,
+    also one of a sub-program called while it is active (§3.2 L1079-1081)."""
+    m = reference()
+    (m.program_path[0] / "99999081").write_text(CYCLE)
+    (m.program_path[0] / "ROW").write_text("N1 X10\nN2 X20\n")
+    r = run("1 #HOLES% = 0\nN1 G0 X0 Y0 Z10\nN2 G81 [-5]\n10 CALL ROW\nN5 G80\nM30\n")
+    assert r["status"] == "ok", r["error"]
+    assert r["variables"]["#HOLES%"] == 3

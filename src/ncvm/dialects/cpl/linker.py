@@ -69,7 +69,7 @@ def link_one(path: str, text: str, calls: dict) -> Linked:
         return hit
     LINK_STATS["linked"] += 1
     prog = parse_program(path, text, calls)
-    ln = Linked(prog, key, modal_calls=_modal_calls(prog, calls))
+    ln = Linked(prog, key, modal_calls=any(modal for _, modal in calls.values()))
     ln.diagnostics.extend(prog.diagnostics)
     if not prog.diagnostics:
         _pair(ln)
@@ -77,15 +77,6 @@ def link_one(path: str, text: str, calls: dict) -> Linked:
         _collect(ln)
     _CACHE[key] = ln
     return ln
-
-
-def _modal_calls(prog: A.Program, calls: dict) -> bool:
-    """Must the program's traversing blocks look for an active modal sub-program? When the machine file maps
-    a modal one (any program may run while it is active), or the program itself selects one (a drilling
-    cycle of the built-in table)."""
-    if any(modal and DRILLING_CYCLES.get(k) != (p, modal) for k, (p, modal) in calls.items()):
-        return True
-    return any(isinstance(s, A.NcBlock) and s.call is not None and s.call[2] for s in prog.stmts)
 
 
 def _err(ln: Linked, code: str, detail: str, s: A.Stmt) -> None:
