@@ -107,16 +107,17 @@ class Machine:
         """The zero offset ``table`` (e.g. "G54"), zeros when the machine file leaves it out."""
         return self.offsets.setdefault(table, [0.0] * len(self.axes))
 
-    def find_program(self, name: str, extensions: tuple[str, ...] = ()) -> Path | None:
-        """Search the program path for ``name`` as written, then with each extension."""
-        candidates = [name] + [name + ext for ext in extensions if not name.lower().endswith(ext)]
+    def find_program(self, name: str, extensions: tuple[str, ...] = (), ignore_case: bool = True) -> Path | None:
+        """Search the program path for ``name`` as written, then with each extension (and, unless the
+        control tells upper from lower case, in any case)."""
+        candidates = [name] + [name + ext for ext in extensions if not name.lower().endswith(ext.lower())]
         for folder in self.program_path:
             for cand in candidates:
                 p = folder / cand
                 if p.is_file():
                     return p
                 # controls of the era were case-insensitive
-                if folder.is_dir():
+                if ignore_case and folder.is_dir():
                     low = cand.lower()
                     for q in folder.iterdir():
                         if q.name.lower() == low and q.is_file():

@@ -23,19 +23,29 @@ class PySource:
         self.filename = filename
         self.lines: list[str] = []
         self.line_map: list[int] = []  # index = generated line - 1 -> source line (0 = none)
+        self.col_map: list[int | None] = []  # index = generated line - 1 -> source column (None = unknown)
         self._indent = 0
         self.current_line = 0
+        self.current_col: int | None = None
 
-    def emit(self, text: str, src_line: int | None = None) -> None:
+    def emit(self, text: str, src_line: int | None = None, src_col: int | None = None) -> None:
         if src_line is not None:
             self.current_line = src_line
+            self.current_col = src_col
         self.lines.append("    " * self._indent + text)
         self.line_map.append(self.current_line)
+        self.col_map.append(self.current_col)
+
+    def append(self, other: PySource) -> None:
+        """Take over the lines of ``other`` as they are (a body generated apart), with their source places."""
+        self.lines.extend(other.lines)
+        self.line_map.extend(other.line_map)
+        self.col_map.extend(other.col_map)
 
     @contextmanager
-    def block(self, header: str, src_line: int | None = None):
+    def block(self, header: str, src_line: int | None = None, src_col: int | None = None):
         """``with src.block("while x:"):`` emits the header and indents its body."""
-        self.emit(header, src_line)
+        self.emit(header, src_line, src_col)
         self._indent += 1
         start = len(self.lines)
         yield
@@ -53,6 +63,12 @@ class PySource:
         if 1 <= py_line <= len(self.line_map):
             return self.line_map[py_line - 1]
         return 0
+
+    def source_col(self, py_line: int) -> int | None:
+        """The column a front end gave with the line (None when it gave none, or added lines without one)."""
+        if len(self.col_map) == len(self.line_map) and 1 <= py_line <= len(self.col_map):
+            return self.col_map[py_line - 1]
+        return None
 
 
 def compile_cached(text: str, filename: str) -> CodeType:

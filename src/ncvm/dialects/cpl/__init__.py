@@ -33,14 +33,16 @@ class CplDialect(Dialect):
     def link(self, path, text, machine):
         res = link(path, text, machine)
         diags = list(res.diagnostics)
-        if not diags:
-            for ln in res.units.values():
+        for ln in res.units.values():  # type errors of every program whose own blocks link (check lists them all)
+            if not ln.diagnostics:
                 if ln.unit is None:
                     uc, more = generate(ln)
                     if more:
                         diags.extend(more)
                     else:
                         ln.unit = uc
+        files = {p: k for k, p in enumerate(dict.fromkeys(d.span.file for d in diags if d.span))}
+        diags.sort(key=lambda d: (files[d.span.file], d.span.line, d.span.column or 0) if d.span else (-1, 0, 0))
         return res, diags
 
     def check(self, path, text, machine, all_errors=False):

@@ -67,6 +67,7 @@ class Gen:
         self.tmp = 0
         self.fields = ln.fields
         self.cur = None
+        self.flat = ln.uses_goto  # the GOTO form: a dispatch loop over basic blocks
         self.max_param = 0
         self.row_words: set[str] = set()
         #: statements counted into _n ahead of time but not yet executed, while a stretch is emitted
@@ -91,7 +92,15 @@ class Gen:
         return f"_{base}{self.tmp}"
 
     def emit(self, text: str, line: int | None = None) -> None:
-        self.src.emit(text, line)
+        self.src.emit(text, line, self.col(line))
+
+    def block(self, header: str, line: int | None):
+        return self.src.block(header, line, self.col(line))
+
+    def col(self, line: int | None) -> int | None:
+        """The column of the statement being generated, for a run-time error in the Python lines of ``line``."""
+        cur = self.cur
+        return (cur.col or 1) if cur is not None and cur.line == line else None
 
     # -- expressions -------------------------------------------------------------
     def ex(self, e) -> tuple[str, str]:
@@ -160,6 +169,8 @@ class Gen:
             for ty in (lt, rt):
                 if ty not in NUMERIC + ("?",):
                     raise GenError("CPL032", f"'{op}' of {_a(ty)} value")
+            if op == "/" or lt != rt:  # an INTEGER result leaving INTEGER arithmetic: 32 bits (manual L655)
+                lc, rc = _int32(e.left, lc, lt), _int32(e.right, rc, rt)
             if op == "/":
                 ty = "D" if "D" in (lt, rt) or "?" in (lt, rt) else "R"
                 return f"({lc} / {rc})", ty
@@ -173,6 +184,7 @@ class Gen:
         if pyop in ("==", "!="):  # Python's == takes None silently; NUL is an error unless compared to NUL
             lc, rc = _not_nul(e.left, lc, lt), _not_nul(e.right, rc, rt)
         if lt in NUMERIC and rt in NUMERIC:
+            lc, rc = _int32(e.left, lc, lt), _int32(e.right, rc, rt)
             if "D" not in (lt, rt) and "R" in (lt, rt):
                 lc, rc = self._single(e.left, lc, lt), self._single(e.right, rc, rt)
             return f"({lc} {pyop} {rc})", "B"
@@ -366,14 +378,14 @@ class Gen:
                 return code if ty == "R" else f"_tor({code})"
             if isinstance(e, A.Num):
                 return repr(f32(e.value))
-            return f"_f32({code})" if ty != "?" else f"_tor({code})"
+            return f"_f32({_int32(e, code, ty)})" if ty != "?" else f"_tor({code})"
         if target_type == "D":
             if ty in ("B", "S"):
                 raise GenError("CPL021", f"{_tname(ty)} value assigned to a DOUBLE variable")
             if isinstance(e, A.Num):
                 return repr(float(e.value))
             if ty == "I":
-                return f"_tod({code})" if isinstance(e, A.Var) else f"float({code})"
+                return f"_tod({code})" if isinstance(e, A.Var) else f"float({_int32(e, code, ty)})"
             # a computed DOUBLE can overflow to infinity, which _tod refuses (range +/-1e308)
             return code if ty in ("R", "D") and isinstance(e, A.Var) else f"_tod({code})"
         if target_type == "B":
@@ -576,6 +588,10 @@ class Gen:
         if s.plain:
             self.emit("_drain()", line)
             return
+        if s.state is not None and self.ex(s.state)[1] not in ("B", "?"):
+            raise GenError("CPL032", "the <state> of a WAIT condition is a BOOLEAN expression (manual §4.1)")
+        if s.result is not None and s.result.var.type != "I":
+            raise GenError("CPL032", "the <result var> of WAIT is an INTEGER variable (manual §4.1)")
         ic = "None"
         if s.ic is not None:
             ic = "(" + ", ".join(self.arg(a) for a in s.ic) + ("," if s.ic else "") + ")"
@@ -867,10 +883,10 @@ class Gen:
         if t is A.If:
             info = pair[i]
             cond = self.condition(s.cond)
-            with self.src.block(f"if {cond}:", s.line):
+            with self.block(f"if {cond}:", s.line):
                 self.structured(i + 1, info["else"] if info["else"] is not None else info["end"])
             if info["else"] is not None:
-                with self.src.block("else:", self.stmts[info["else"]].line):
+                with self.block("else:", self.stmts[info["else"]].line):
                     self.structured(info["else"] + 1, info["end"])
         elif t is A.Case:
             info = pair[i]
@@ -882,12 +898,12 @@ class Gen:
             for j, arm in enumerate(arms):
                 vals = self.stmts[arm].values
                 test = f"{sel} == {vals[0]}" if len(vals) == 1 else f"{sel} in {tuple(vals)!r}"
-                with self.src.block(f"{kw} {test}:", self.stmts[arm].line):
+                with self.block(f"{kw} {test}:", self.stmts[arm].line):
                     self.structured(arm + 1, bounds[j + 1])
                 kw = "elif"
             if info["otherwise"] is not None:
                 ow = info["otherwise"]
-                with self.src.block("else:" if arms else "if True:", self.stmts[ow].line):
+                with self.block("else:" if arms else "if True:", self.stmts[ow].line):
                     self.structured(ow + 1, info["end"])
         elif t is A.For:
             end = pair[i]["end"]
@@ -895,12 +911,12 @@ class Gen:
         elif t is A.While:
             end = pair[i]["end"]
             cond = self.condition(s.cond)
-            with self.src.block(f"while {cond}:", s.line):
+            with self.block(f"while {cond}:", s.line):
                 self.structured(i + 1, end, extra=1)
                 self.emit(f"if _n > _lim: _runaway({s.line})", self.stmts[end].line)
         elif t is A.Repeat:
             end = pair[i]["end"]
-            with self.src.block("while True:", s.line):
+            with self.block("while True:", s.line):
                 self.structured(i + 1, end)
                 self.emit(f"if _n > _lim: _runaway({s.line})", self.stmts[end].line)
                 self.emit(f"if {self.condition(self.stmts[end].cond)}: break", self.stmts[end].line)
@@ -925,8 +941,8 @@ class Gen:
 
     def for_parts(self, i: int, s: A.For):
         v = s.var
-        if v.index or v.var.cls not in ("L", "G") or v.var.type not in NUMERIC:
-            raise GenError("CPL001", "FOR needs a simple numeric variable")
+        if v.var.type not in NUMERIC or v.var.cls == "A":  # any numerical variable (§2.5.5 L924), not a parameter
+            raise GenError("CPL001", "FOR needs a numeric variable")
         ctype = v.var.type
         start_code, start_ty = self.ex(s.start)
         end_code, end_ty = self.ex(s.end)
@@ -958,7 +974,7 @@ class Gen:
             self.emit(f"{fs} = {step_code}", s.line)
             test = f"({counter} <= {fe} if {fs} >= 0 else {counter} >= {fe})"
         nxt = self.stmts[end]
-        with self.src.block(f"while {test}:", s.line):
+        with self.block(f"while {test}:", s.line):
             self.structured(i + 1, end, extra=1)
             if const_step is not None:
                 inc_code = f"({counter} + {step_code})"
@@ -966,11 +982,14 @@ class Gen:
                 self.emit(f"{fs} = {step_code}", nxt.line)
                 inc_code = f"({counter} + {fs})"
             inc_ty = "I" if ctype == "I" and step_ty == "I" else ("D" if "D" in (ctype, step_ty) else "R")
-            if ctype == "I" and inc_ty == "I" and v.var.cls == "L":
+            if ctype == "I" and inc_ty == "I" and v.var.cls == "L" and not v.index:
                 self.emit(f"{counter} = {inc_code}", nxt.line)
             else:
                 self.store(v, inc_code, inc_ty, nxt.line)
             self.emit(f"if _n > _lim: _runaway({s.line})", nxt.line)
+        if ctype == "I" and inc_ty == "I" and v.var.cls == "L" and not v.index:  # exit value past INTEGER, once
+            self.cur = nxt
+            self.emit(f"if not -2147483648 <= {counter} <= 2147483647: {counter} = _toi({counter})", nxt.line)
 
     # -- dispatch code (programs with GOTO) ---------------------------------------------------
     def dispatch(self) -> None:
@@ -1049,7 +1068,7 @@ class Gen:
             info = pair[i]
             target = info["else"] + 1 if info["else"] is not None else info["end"] + 1
             self.emit("_n += 1", line)
-            with self.src.block(f"if not {self.condition(s.cond)}:", line):
+            with self.block(f"if not {self.condition(s.cond)}:", line):
                 self.emit_jump(target, line)
         elif t is A.Else:
             self.emit_jump(pair[i]["end"] + 1, line)
@@ -1059,7 +1078,7 @@ class Gen:
             self.emit(f"{select}; _n += 1", line)
             for arm in info["arms"]:
                 vals = self.stmts[arm].values
-                with self.src.block(f"if {sel} in {tuple(vals)!r}:", line):
+                with self.block(f"if {sel} in {tuple(vals)!r}:", line):
                     self.emit_jump(arm + 1, line)
             other = info["otherwise"] + 1 if info["otherwise"] is not None else info["end"] + 1
             self.emit_jump(other, line)
@@ -1078,7 +1097,7 @@ class Gen:
             self._open(self.pc[("t", i)])
             counter = self.read(v)[0]
             self.emit("_n += 1", line)
-            with self.src.block(f"if not ({counter} <= {fe} if {fs} >= 0 else {counter} >= {fe}):", line):
+            with self.block(f"if not ({counter} <= {fe} if {fs} >= 0 else {counter} >= {fe}):", line):
                 self.emit_jump(pair[i]["end"] + 1, line)
         elif t is A.Next:
             j = pair[i]["for"]
@@ -1094,7 +1113,7 @@ class Gen:
             self.emit_jump(("t", j), line)
         elif t is A.While:
             self.emit("_n += 1", line)
-            with self.src.block(f"if not {self.condition(s.cond)}:", line):
+            with self.block(f"if not {self.condition(s.cond)}:", line):
                 self.emit_jump(pair[i]["end"] + 1, line)
         elif t is A.WEnd:
             self.emit_jump(pair[i]["while"], line)
@@ -1102,7 +1121,7 @@ class Gen:
             pass
         elif t is A.Until:
             self.emit("_n += 1", line)
-            with self.src.block(f"if not {self.condition(s.cond)}:", line):
+            with self.block(f"if not {self.condition(s.cond)}:", line):
                 self.emit_jump(pair[i]["repeat"] + 1, line)
         elif t in (A.EndIf, A.EndCase, A.LabelDef):
             pass
@@ -1117,7 +1136,7 @@ class Gen:
         self.src = body
         body._indent = 3
         try:
-            if self.ln.uses_goto:
+            if self.flat:
                 self.dispatch()
             else:
                 self.structured(0, len(self.stmts))
@@ -1140,9 +1159,7 @@ class Gen:
         src.emit("_lim = _st.limit - _st.steps")
         src.emit("try:")
         first = len(src.lines) + 1  # Python line number of the body's first line
-        for text, ln in zip(body.lines, body.line_map):
-            src.lines.append(text)
-            src.line_map.append(ln)
+        src.append(body)
         if not body.lines:
             src.emit("    pass")
         # a fault leaves out of the steps the statements counted ahead of it (_AHEAD, by Python line)
@@ -1179,6 +1196,25 @@ def _not_nul(e, code: str, ty: str) -> str:
     if not _maybe_nul(e):
         return code
     return f"({code} + 0)" if ty in NUMERIC else f"_nn({code})"
+
+
+def _int32(e, code: str, ty: str) -> str:
+    """An INTEGER sum, difference, product or negation used outside INTEGER arithmetic (compared, stored into
+    a REAL, mixed with one) must fit 32 bits (manual L655, digest §4.2): INVALID INTEGER VALUE otherwise.
+    INTEGER stores check on their own, so ``I% = I% + 1`` pays nothing. Constants alone are exempt: they take
+    the precision of their context (``D2! = -123456789012345``, manual L484-490)."""
+    if ty == "I" and (isinstance(e, A.Bin) or isinstance(e, A.Unary) and e.op == "-") and _reads(e):
+        return f"_toi({code})"
+    return code
+
+
+def _reads(e) -> bool:
+    """Does the expression read a variable or call a function (is it more than constants)?"""
+    if isinstance(e, A.Bin):
+        return _reads(e.left) or _reads(e.right)
+    if isinstance(e, A.Unary):
+        return _reads(e.operand)
+    return not isinstance(e, (A.Num, A.Str, A.BoolLit, A.Nul))
 
 
 def _maybe_nul(e) -> bool:
@@ -1235,14 +1271,25 @@ HELPER_NAMES = (
 
 
 def generate(ln, hook: bool = False) -> tuple[UnitCode | None, list]:
-    """Generate the unit for a linked program; diagnostics for errors only code generation sees (types)."""
-    g = Gen(ln, hook)
-    try:
-        return g.generate(), []
-    except GenError as e:
-        s = e.stmt or g.cur
-        return None, [diag(e.code, e.detail, ln.prog.path, s.line if s else 1, (s.col or None) if s else None,
-                           s.cpl if s else None)]
+    """Generate the unit for a linked program; diagnostics for errors only code generation sees (types).
+
+    Structures nested deeper than Python's blocks allow are generated in the flat (GOTO) form instead; an
+    expression too deep for Python is the manual's NESTING TOO DEEP (2153, §2.5.1 L782: the depth a control
+    allows depends on the memory the expression needs)."""
+    for flat in ((True,) if ln.uses_goto else (False, True)):
+        g = Gen(ln, hook)
+        g.flat = flat
+        try:
+            return g.generate(), []
+        except GenError as e:
+            s = e.stmt or g.cur
+            return None, [diag(e.code, e.detail, ln.prog.path, s.line if s else 1, (s.col or None) if s else None,
+                               s.cpl if s else None)]
+        except (RecursionError, SyntaxError, MemoryError) as e:
+            line = g.src.source_line(e.lineno) if isinstance(e, SyntaxError) and e.lineno else 0
+            s = next((x for x in g.stmts if x.line == line), None) or g.cur
+    return None, [diag("2153", "expression or structure too deep to evaluate", ln.prog.path, s.line if s else 1,
+                       (s.col or None) if s else None, s.cpl if s else None)]
 
 
 def _a(ty: str) -> str:

@@ -83,8 +83,8 @@ def diag(code: str, detail: str, file: str, line: int, column: int | None = None
 
 
 def fault(code: str, detail: str, file: str, line: int, cpl_line: int | None = None,
-          text: str | None = None) -> RuntimeFault:
+          text: str | None = None, column: int | None = None) -> RuntimeFault:
     msg = text if text is not None else message(code, detail)
     if cpl_line is not None:
         msg += f" (CPL line {cpl_line})"
-    return RuntimeFault(code, msg, Span(file, line))
+    return RuntimeFault(code, msg, Span(file, line, column))

@@ -93,6 +93,7 @@ class CplBlock:
     tokens: list[Tok] = field(default_factory=list)
     lines: list[int] = field(default_factory=list)
     has_colon: bool = False
+    error: LexError | None = None  # the first lexical error in one of its lines (the block is not parsed)
 
 
 def classify(text: str) -> list[Line]:
@@ -206,6 +207,9 @@ def tokenize(text: str, lineno: int, offset: int) -> list[Tok]:
                     k += 1
                 if k < n and up[k] == "%":
                     k += 1
+                elif k < n and up[k] in "!?$":
+                    raise LexError(lineno, k + offset + 1, f"@{num} is an INTEGER permanent variable: only '%' may "
+                                                           "follow it (manual §2.4.3 L540-542)")
                 if not 1 <= num <= 100:
                     raise LexError(lineno, col, f"permanent variable @{num}: only @1 to @100 exist")
                 toks.append(Tok("var", VarName("P", str(num), ""), lineno, col, up[i:k]))
@@ -220,6 +224,9 @@ def tokenize(text: str, lineno: int, offset: int) -> list[Tok]:
                 toks.append(Tok("var", VarName("D", word[:16], suffix), lineno, col, up[i:k]))
                 i = k
                 continue
+            if up.startswith(("_RES_DOUBLE", "_RES_DWORD"), j):
+                raise LexError(lineno, col, "@_RES_DOUBLE and @_RES_DWORD are reserved for internal applications "
+                                            "(manual §2.4.3 L544)")
             raise LexError(lineno, col, "'@' must start a permanent variable name")
         if c.isalpha():
             k, word, suffix = _word(up, i)
@@ -292,15 +299,19 @@ def cpl_blocks(lines: list[Line]) -> list[tuple[str, object]]:
     for ln in lines:
         if ln.kind == "cpl":
             current = CplBlock(ln.number, ln.lineno)
-            current.tokens.extend(tokenize(ln.text, ln.lineno, ln.offset))
-            current.lines.append(ln.lineno)
             out.append(("cpl", current))
-        elif ln.kind == "cont" and current is not None:
-            current.tokens.extend(tokenize(ln.text, ln.lineno, ln.offset))
-            current.lines.append(ln.lineno)
         elif ln.kind == "nc":
             current = None
             out.append(("nc", ln))
+            continue
+        elif ln.kind != "cont" or current is None:
+            continue
+        current.lines.append(ln.lineno)
+        if current.error is None:
+            try:
+                current.tokens.extend(tokenize(ln.text, ln.lineno, ln.offset))
+            except LexError as e:  # reported with the block's line number; the other blocks are still checked
+                current.error = e
     for kind, item in out:
         if kind == "cpl":
             item.has_colon = any(t.kind == "op" and t.val == ":" for t in item.tokens)

@@ -19,7 +19,7 @@ from .errors import diag
 from .parser import parse_program
 
 MAX_CASE_NESTING = 10
-SUB_EXTENSIONS = (".cpl",)
+SUB_EXTENSIONS = (".cpl", ".CPL")  # names are case-sensitive (§6.1.1); the extension is ncvm's, in either case
 
 #: how often a program was really linked (tests check that unchanged programs are taken from the cache)
 LINK_STATS = {"linked": 0}
@@ -44,9 +44,15 @@ class Linked:
 _CACHE: dict[str, Linked] = {}
 
 
+#: manual §3.1 L1071-1074: "the programs for the drilling cycles (99999081 through 99999086) are permanently
+#: assigned to the functions G81 through G86"; drilling cycles stay active until G80 (modal, §3.2)
+DRILLING_CYCLES = {f"G8{i}": (f"9999908{i}", True) for i in range(1, 7)}
+
+
 def call_table(machine: Machine) -> dict:
-    """[cpl] calls: address -> program, with the modal flag (e.g. G81 = {program = "CYC81", modal = true})."""
-    out = {}
+    """[cpl] calls: address -> program, with the modal flag (e.g. G81 = {program = "CYC81", modal = true}),
+    over the drilling cycles every control has (an entry of the machine file replaces one of them)."""
+    out = dict(DRILLING_CYCLES)
     for key, val in (machine.sections.get("cpl", {}).get("calls", {}) or {}).items():
         if isinstance(val, str):
             out[key.upper()] = (val, False)
@@ -236,7 +242,7 @@ def link(path: str, text: str, machine: Machine) -> LinkResult:
 
     def visit(ln: Linked, chain: list[str]) -> None:
         for name, din, s in ln.calls:
-            found = machine.find_program(name, SUB_EXTENSIONS)
+            found = machine.find_program(name, SUB_EXTENSIONS, ignore_case=False)
             if found is None:
                 diags.append(diag("CPL005", f"{name} (program path: "
                                   f"{', '.join(str(p) for p in machine.program_path)})",
@@ -255,7 +261,7 @@ def link(path: str, text: str, machine: Machine) -> LinkResult:
             try:
                 sub_text = Path(sub_path).read_text(encoding="latin-1")
             except OSError as e:
-                diags.append(diag("CPL005", f"{name}: {e.strerror}", ln.prog.path, s.line, None, s.cpl))
+                diags.append(diag("CPL005", f"{name}: {e.strerror}", ln.prog.path, s.line, s.col or None, s.cpl))
                 continue
             sub = link_one(sub_path, sub_text, calls)
             if sub.prog.din_only:

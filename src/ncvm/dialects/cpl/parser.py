@@ -6,6 +6,8 @@ one relational operator. Parentheses nest at most 7 deep (RUNTIME ERROR 2153).
 
 from __future__ import annotations
 
+import re
+
 from . import ast as A
 from .errors import diag
 from .lexer import LexError, Tok, VarName, classify, cpl_blocks, tokenize
@@ -21,6 +23,10 @@ class ParseError(Exception):
         self.detail = detail
         self.line = line
         self.col = col
+
+
+#: a part program's file name (manual §6.1.1 L3851): alphanumeric characters, "." and "_"; not "." or ".."
+_PROGRAM_NAME = re.compile(r"(?!\.\.?$)[A-Za-z0-9_.]+")
 
 
 class BlockParser:
@@ -94,6 +100,9 @@ class BlockParser:
             self.assignment(out)
             return False
         if t.kind != "kw":
+            if t.kind == "num" and t.line != self.line and (self.i == 0 or self.toks[self.i - 1].line != t.line):
+                self.error("CPL001", "the block before ends with ':', so this line continues it and has no line "
+                                     "number (manual §2.1.2 L375-380)")
             self.error("CPL001", "statement expected")
         kw = t.val
         if kw == "IF":
@@ -185,6 +194,9 @@ class BlockParser:
         if kw == "CALL":
             self.next()
             name = self.expect("name", None, "program name")
+            if not _PROGRAM_NAME.fullmatch(name.val):  # a name along the program path, never a path of the host
+                self.error("CPL001", f"program name {name.val!r}: letters, digits, '.' and '_' only "
+                                     "(manual §6.1.1 L3851)", name)
             args = []
             if self.at("op", "["):
                 self.next()
@@ -209,8 +221,12 @@ class BlockParser:
             v = self.next()
             if v.kind != "var" or v.val.cls != "A":
                 self.error("CPL001", "PDIM needs a parameter name (P1$ ...)", v)
+            if v.val.suffix != "$":  # PDIM gives a string constant passed as a parameter its size (§3.4 L1149)
+                self.error("CPL001", f"PDIM dimensions a string parameter: P{v.val.name}$, not {v.val.display}", v)
             self.expect("op", "(", "'('")
             size = self.expect("num", None, "field size")
+            if size.val.__class__ is not int or not 1 <= size.val <= 1024:
+                self.error("CPL022", f"PDIM size {size.val}: an INTEGER constant 1..1024", size)
             self.expect("op", ")", "')'")
             out.append(self.stmt(A.Pdim, t, var=v.val, size=size.val))
             return False
@@ -491,6 +507,9 @@ def parse_nc(text: str, lineno: int, calls: dict) -> A.NcBlock:
         if not up.isalpha():
             raise ParseError("CPL001", f"cannot read '{s[i:i + 10].strip()}' in the NC block", lineno, i + 1)
         if s[i:i + 4].upper() == "WAIT" and not (i + 4 < n and s[i + 4].isalnum()):
+            if s[i + 4:i + 5] == "(":
+                raise ParseError("CPL001", "WAIT with parameters can be programmed only in a CPL block "
+                                           "(manual §4.1 L1203)", lineno, i + 1)
             blk.wait = True
             i += 4
             continue
@@ -519,6 +538,10 @@ def parse_nc(text: str, lineno: int, calls: dict) -> A.NcBlock:
             blk.call = (name, args, False)
             continue
         if j < n and s[j] == "[":
+            if addr == "N":  # the block number is known when linking: GOTO N.. must find it (§2.1.1 L357)
+                raise ParseError("CPL001", "the N address takes no [ ]: word contents with the exception of "
+                                           "N-addresses may be written with variables (manual §2.1.1 L357)",
+                                 lineno, col)
             k = _close_bracket(s, j, lineno)
             e = _nc_expr(s[j + 1:k], lineno, j + 1)
             if addr not in ("G", "M") and any(w.address == addr for w in blk.words):
@@ -604,14 +627,13 @@ def parse_program(path: str, text: str, calls: dict | None = None) -> A.Program:
         prog.din_only = True
     if first is not None and first.kind == "nc" and "(TYP2)" in first.text.upper().replace(" ", ""):
         prog.typ2 = True
-    try:
-        items = cpl_blocks(lines)
-    except LexError as e:
-        prog.diagnostics.append(diag("CPL001", e.message, path, e.line, e.column))
-        return prog
-    for kind, item in items:
+    for kind, item in cpl_blocks(lines):
         if kind == "cpl":
             prog.has_cpl = True
+            if item.error is not None:
+                e = item.error
+                prog.diagnostics.append(diag("CPL001", e.message, path, e.line, e.column, item.number))
+                continue
             prog.lines.setdefault(item.number, []).append(len(prog.stmts))
             bp = BlockParser(item.tokens, item.lineno, item.number)
             start = len(prog.stmts)
@@ -621,12 +643,20 @@ def parse_program(path: str, text: str, calls: dict | None = None) -> A.Program:
                 del prog.stmts[start:]
                 prog.diagnostics.append(diag(e.code, e.detail, path, e.line, e.col, item.number))
                 continue
-            if item.has_colon and any(isinstance(s, A.Wait) for s in prog.stmts[start:]):
-                prog.diagnostics.append(diag("CPL009", "put the other statements in their own blocks", path,
-                                             item.lineno, None, item.number))
-            if item.has_colon and any(isinstance(s, A.CallStmt) for s in prog.stmts[start:]):
-                prog.diagnostics.append(diag("CPL014", "put the other statements in their own blocks", path,
-                                             item.lineno, None, item.number))
+            except RecursionError:  # the control's evaluation stack has a limit too (§2.5.1 L782-791)
+                del prog.stmts[start:]
+                prog.diagnostics.append(diag("2153", "expression nested too deeply", path, item.lineno,
+                                             item.tokens[0].col if item.tokens else 1, item.number))
+                continue
+            block = prog.stmts[start:]
+            for code, kind in (("CPL009", A.Wait), ("CPL014", A.CallStmt)):
+                alone = next((s for s in block if isinstance(s, kind)), None)
+                # WAIT: no ':' in its block (§4.1 L1201); CALL: a block of its own (§3 L1068, §3.3 L1087), so not
+                # inside a one-line IF either (a label before it or a remark after it is no instruction)
+                if alone is not None and (item.has_colon if kind is A.Wait else
+                                          sum(not isinstance(s, A.LabelDef) for s in block) > 1):
+                    prog.diagnostics.append(diag(code, "put the other statements in their own blocks", path,
+                                                 alone.line, alone.col or None, item.number))
         else:
             try:
                 blk = parse_nc(item.text, item.lineno, calls)
@@ -635,6 +665,9 @@ def parse_program(path: str, text: str, calls: dict | None = None) -> A.Program:
                 continue
             except LexError as e:  # inside an [expr] word
                 prog.diagnostics.append(diag("CPL001", e.message, path, e.line, e.column))
+                continue
+            except RecursionError:
+                prog.diagnostics.append(diag("2153", "expression nested too deeply", path, item.lineno, 1))
                 continue
             if blk.n is not None:
                 prog.nblocks.setdefault(blk.n, []).append(len(prog.stmts))

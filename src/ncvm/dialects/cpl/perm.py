@@ -54,6 +54,8 @@ def read_declarations(root: Path) -> dict[str, tuple[str, list[int]]]:
             limit = 1024 if typ == "CHAR" else 65535
             if any(not 1 <= d <= limit for d in dims):
                 raise DeclError("CPL022", f"@{name}: field size outside 1..{limit}", str(path), no)
+            if out.get(name, (typ, dims)) != (typ, dims):  # the same 16 significant characters: one variable
+                raise DeclError("CPL038", f"@{name} is declared again with another type or size", str(path), no)
             out[name] = (typ, dims)
     used = sum(_size(name, typ, dims) for name, (typ, dims) in out.items())
     if used > MEMORY:

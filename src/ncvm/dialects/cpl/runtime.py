@@ -30,7 +30,7 @@ from .io import strings as S
 from .io.context import CplIO
 from .io.errors import CplRuntimeError
 from .io.values import CplText, Double
-from .linker import SUB_EXTENSIONS, LinkResult, call_table, link_one
+from .linker import SUB_EXTENSIONS, LinkResult, call_table
 from .perm import DeclError, Permanents
 from .system import SYSTEM_PROCS
 from .system import setup as system_setup
@@ -39,6 +39,7 @@ from .system.gfuncs import Typ3Block, activate, prepare
 from .system.ncs import ControlReset
 from .system.plc import f_ic
 from .system.positions import probe_block
+from .unlinked import link_late, run_unlinked
 
 _EXTENDED = re.compile(r"\s*([A-Za-z][A-Za-z0-9_]*[0-9_][A-Za-z0-9_]*)\s*=\s*([-+]?(?:\d+\.?\d*|\.\d+))\s*$")
 MAX_NESTING = 7  # sub-program levels below the main program (manual §2.1 L323)
@@ -182,7 +183,10 @@ class CplRuntime:
         result: dict = {}
         try:
             try:
-                result = self.unit(main)((), True)
+                if self.linked.main.prog.din_only:  # "(DIN)" in its first line: started without linking (§3.3)
+                    run_unlinked(self, main, Path(main).name)
+                else:
+                    result = self.unit(main)((), True)
             except ControlReset as reset:  # MCOPS(2) on the own channel: the main program is exited
                 self.session.say(str(reset))
             finally:
@@ -194,10 +198,12 @@ class CplRuntime:
         except RuntimeFault as f:
             self.finish_io_at_fault()
             if f.span is None:
-                f.span = Span(main, 1)
+                f.span = Span(main, 1, 1)
+            elif f.span.column is None and f.span.file in self.linked.units:  # an NC block the kernel refused
+                f.span = Span(f.span.file, f.span.line, self.first_column(f.span.file, f.span.line))
             raise
         except DeclError as e:
-            raise RuntimeFault(e.code, message(e.code, e.message), Span(e.file, max(e.line, 1))) from None
+            raise RuntimeFault(e.code, message(e.code, e.message), Span(e.file, max(e.line, 1), 1)) from None
         except Exception as e:  # noqa: BLE001 - every failure of generated code becomes a RUNTIME ERROR
             self.finish_io_at_fault()
             raise self.to_fault(e) from None
@@ -251,14 +257,20 @@ class CplRuntime:
             uc = self._codes.get(fs.filename)
             if uc is not None:
                 line = uc.src.source_line(fs.lineno)
-                frames.append((fs.filename, line, uc.cpl_lines.get(line)))
+                frames.append((fs.filename, line, uc.cpl_lines.get(line), uc.src.source_col(fs.lineno)))
         text = e.message if isinstance(e, CplRuntimeError) else message(code, detail)
         if not frames:
             return RuntimeFault(code, text, None)
-        file, line, cpl = frames[-1]
-        f = fault(code, detail, file, line, cpl, text=text)
-        f.stack = [Frame(Path(p).name, Span(p, ln)) for p, ln, _ in frames]
+        file, line, cpl, col = frames[-1]
+        f = fault(code, detail, file, line, cpl, text=text, column=col or self.first_column(file, line))
+        f.stack = [Frame(Path(p).name, Span(p, ln, c or self.first_column(p, ln))) for p, ln, _, c in frames]
         return f
+
+    def first_column(self, path: str, line: int) -> int:
+        """Where the first statement of a physical line starts (a fault in lines generated for no one statement)."""
+        unit = self.linked.units.get(path)
+        cols = [s.col for s in unit.prog.stmts if s.line == line and s.col] if unit is not None else []
+        return min(cols, default=1)
 
     # -- sub-programs -----------------------------------------------------------------------
     def call(self, caller: str, name: str, args: tuple, din: bool, line: int) -> None:
@@ -267,46 +279,28 @@ class CplRuntime:
             raise CplError("CPL007", f"CALL {name}")
         target = self.linked.resolve.get((caller, name))
         if target is None:
-            found = self.machine.find_program(name, SUB_EXTENSIONS)
+            found = self.machine.find_program(name, SUB_EXTENSIONS, ignore_case=False)
             if found is None:
                 raise CplError("CPL005", name)
             target = str(found)
         if target in active:
             raise CplError("CPL006", name)
-        if caller in units and units[caller].prog.din_only:
+        if caller not in units or units[caller].prog.din_only:  # a caller run unlinked
             args = tuple(UnlinkedString(a) if a.__class__ is str else a for a in args)
-        linked = target in units and not din
         stack.append((caller, line))
         active.append(target)
         try:
-            if linked:
+            if not din and target not in units:
+                link_late(self, target)  # reached only through a program excluded from linking
+            if target in units and not din:
                 (self._fns.get(target) or self.unit(target))(args, False)
             else:
-                self.run_unlinked(target, name)
+                run_unlinked(self, target, name)  # excluded from linking (manual §3.3)
         except EndProgram:
             pass
         finally:
             stack.pop()
             active.pop()
-
-    def run_unlinked(self, target: str, name: str) -> None:
-        """A program excluded from linking (CALL ... DIN or "(DIN)"): only NC blocks may be in it (§3.3)."""
-        text = Path(target).read_text(encoding="latin-1")
-        ln = link_one(target, text, {})
-        if ln.prog.has_cpl or ln.prog.diagnostics:
-            raise CplError("CPL030", f"{name} contains CPL blocks")
-        for s in ln.prog.stmts:
-            if s.skip and self.block_skip:
-                continue
-            words = {w.address: w.value for w in s.words if w.address not in ("G", "M")}
-            g = tuple(int(w.value) if w.value == int(w.value) else w.value for w in s.words if w.address == "G")
-            m = tuple(int(w.value) for w in s.words if w.address == "M" and w.value not in (2, 30))
-            if g or m or words or s.msg is not None:
-                self.queue.append(prepare(self, Block(g, m, words, s.n, s.msg, Src(target, s.line))))
-            if s.wait:
-                self.drain()
-            if s.ends:
-                return
 
     def nocall(self, address: str, value):
         """An address that calls a sub-program may not take its value from [ ] (manual §2.1.1 L371)."""

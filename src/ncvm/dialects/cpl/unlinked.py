@@ -1,0 +1,101 @@
+"""Programs excluded from linking: ``CALL name DIN`` or ``(DIN)`` in their first line (manual §3.3 L1096-1121).
+
+Such a program may hold DIN blocks only. CPL in it, including CPL syntax inside NC blocks (``X[expr]``,
+a standalone ``[A$]``, a variable as a call parameter), is a run-time error (CPL030). Its G/M/P sub-program
+calls run, with constant parameters: the PDIM example of §3.4 (L1161-1175) calls ``P SP["TEST"]`` from such a
+program, and the string constant reaches the sub-program as one passed without linking. A sub-program only
+such a program reaches was not linked with the main program; it is linked when it is called.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from ...diagnostics import CompileFailed
+from ...nc.block import Block
+from ...nc.canon import Src
+from . import ast as A
+from .errors import CplError, fault
+from .linker import link, link_one
+from .system.gfuncs import prepare
+from .system.transforms import PARAMETER_G
+
+AXIS_LETTERS = frozenset("XYZABCUVW")
+
+
+def run_unlinked(rt, target: str, name: str) -> None:
+    """Run the DIN blocks of ``target`` on the runtime ``rt`` (its queue, its calls, its modal sub-program)."""
+    text = Path(target).read_text(encoding="latin-1")
+    ln = link_one(target, text, rt.calls)
+    for s in ln.prog.stmts:
+        if not isinstance(s, A.NcBlock):
+            _excluded(rt, target, f"{name} contains CPL blocks", s)
+        if any(w.expr is not None for w in s.words) or s.loose:
+            _excluded(rt, target, f"{name} uses CPL expressions [ ] in an NC block (line {s.line})", s)
+        if s.call is not None:
+            try:
+                _constants(s.call[1], name, s.line)
+            except CplError as e:
+                _excluded(rt, target, e.detail, s)
+    if ln.prog.diagnostics:
+        d = ln.prog.diagnostics[0]
+        _excluded(rt, target, f"{name} contains CPL blocks", A.Stmt(d.span.line, d.span.column or 1))
+    for s in ln.prog.stmts:
+        if s.skip and rt.block_skip:
+            continue
+        words = {w.address: w.value for w in s.words if w.address not in ("G", "M")}
+        g = tuple(int(w.value) if w.value == int(w.value) else w.value for w in s.words if w.address == "G")
+        m = tuple(int(w.value) for w in s.words if w.address == "M" and w.value not in (2, 30))
+        if g or m or words or s.msg is not None:
+            rt.queue.append(prepare(rt, Block(g, m, words, s.n, s.msg, Src(target, s.line))))
+        if 80 in g:
+            rt.modal[0] = None
+        elif rt.modal[0] is not None and any(a[0] in AXIS_LETTERS for a in words) and not PARAMETER_G.intersection(g):
+            rt.modal_call(target, s.line)
+        if s.call is not None:
+            prog, args, modal = s.call
+            values = _constants(args, name, s.line)
+            rt.call(target, prog, values, False, s.line)
+            if modal:
+                rt.modal[0] = (prog, values)
+        if s.wait:
+            rt.drain()
+        if s.ends:
+            return
+
+
+def _excluded(rt, target: str, detail: str, s: A.Stmt):
+    """CPL030. In a sub-program the error points at the call (the caller's position); an excluded main program
+    has no caller, so the error points at the offending block itself."""
+    if rt.stack:
+        raise CplError("CPL030", detail)
+    raise fault("CPL030", detail, target, s.line, s.cpl, column=s.col or 1)
+
+
+def _constants(args: list, name: str, line: int) -> tuple:
+    """The parameters of a call in a DIN program: constants only (a variable or an expression is CPL)."""
+    out = []
+    for a in args:
+        neg = isinstance(a, A.Unary) and a.op == "-"
+        e = a.operand if neg else a
+        if isinstance(e, A.Num):
+            out.append(-e.value if neg else e.value)
+        elif not neg and isinstance(e, (A.Str, A.BoolLit)):
+            out.append(e.value)
+        elif not neg and e is None:
+            out.append(None)
+        else:
+            raise CplError("CPL030", f"{name} passes a CPL expression as a sub-program parameter (line {line})")
+    return tuple(out)
+
+
+def link_late(rt, target: str) -> None:
+    """Link a program reached only through an excluded one, with the programs it reaches, before it runs;
+    a link error stops the run as it would stop the start of a linked program. "(DIN)" keeps it unlinked."""
+    res = link(target, Path(target).read_text(encoding="latin-1"), rt.machine)
+    if res.main.prog.din_only:
+        return
+    if res.diagnostics:
+        raise CompileFailed(res.diagnostics)
+    rt.linked.units.update(res.units)
+    rt.linked.resolve.update(res.resolve)
