@@ -127,7 +127,8 @@ class Session:
             "position": self.kernel.workpiece_position(),
             "motion": motion.to_json(),
             "cycle_time_s": self.machine.clock.now,
-            "steps": min(self.steps.steps, self.steps.limit),  # a runaway is caught just past the limit
+            # a runaway is caught just past the limit; straight code (no loop, no jump back) may pass it
+            "steps": self.steps.limit if error and error.code == "RUN001" else self.steps.steps,
             "limit_violations": [v.message() for v in self.violations()],
         }
         out.update({k: _jsonable(v) for k, v in self.extra.items()})

@@ -50,3 +50,13 @@ def test_runaway_reports_the_limit(run_text):
     r = run_text("10 WHILE TRUE DO\n20 X% = 1\n30 END\n", name="loop.cpl", max_steps=1000)
     assert r["error"]["code"] == "RUN001"
     assert r["steps"] == 1000
+
+
+def test_straight_code_past_the_step_limit_ends_normally_with_its_true_count(run_text):
+    """The step limit stops runaways (loops, jumps back); 30 straight statements are no runaway: the run ends
+    normally and ``steps`` says 30, not the limit of 10. A loop past the limit is RUN001 with steps = 10."""
+    straight = run_text("".join(f"{10 * k} A% = {k}\n" for k in range(1, 31)), name="straight.cpl", max_steps=10)
+    assert straight["status"] == "ok", straight["error"]
+    assert straight["steps"] == 30 and straight["variables"]["A%"] == 30
+    loop = run_text("10 N% = 0\n20 WHILE N% < 100 DO\n30 N% = N% + 1\n40 END\n", name="loop.cpl", max_steps=10)
+    assert loop["error"]["code"] == "RUN001" and loop["steps"] == 10
