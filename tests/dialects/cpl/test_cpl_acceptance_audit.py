@@ -370,3 +370,14 @@ def test_drilling_cycle_runs_after_the_moves_of_a_called_program(run, reference)
     r = run("1 #HOLES% = 0\nN1 G0 X0 Y0 Z10\nN2 G81 [-5]\n10 CALL ROW\nN5 G80\nM30\n")
     assert r["status"] == "ok", r["error"]
     assert r["variables"]["#HOLES%"] == 3
+
+
+def test_check_reports_the_type_error_of_every_statement(tmp_path, reference):
+    """One check lists every type error (a condition that is no BOOLEAN, the assignments of L655-667 that
+    need a conversion), not only the first, each at its statement."""
+    from ncvm.api import check
+    path = tmp_path / "types.cpl"
+    path.write_text('10 IF 3 THEN\n20 B% = 2\n30 ENDIF\n40 C$ = 4\n50 FOR I% = 1 TO "A"\n60 NEXT I%\n70 D% = "X"\n')
+    diags = check(path, machine=reference())
+    assert [(d.code, d.span.line, d.span.column) for d in diags] == [
+        ("CPL032", 1, 4), ("CPL021", 4, 4), ("CPL032", 5, 4), ("CPL021", 7, 4)]

@@ -68,6 +68,7 @@ class Gen:
         self.fields = ln.fields
         self.cur = None
         self.flat = ln.uses_goto  # the GOTO form: a dispatch loop over basic blocks
+        self.errors: list | None = None  # (GenError, statement) of every statement, when collecting them
         self.max_param = 0
         self.row_words: set[str] = set()
         #: statements counted into _n ahead of time but not yet executed, while a stretch is emitted
@@ -1058,6 +1059,16 @@ class Gen:
             self.emit(part, line)
 
     def lower(self, i: int, s) -> None:
+        """One statement in the GOTO form; when collecting (``errors`` is a list), a type error is noted
+        and the next statement goes on, so one check reports every statement's error."""
+        if self.errors is None:
+            return self._lower(i, s)
+        try:
+            self._lower(i, s)
+        except GenError as e:
+            self.errors.append((e, e.stmt or s))
+
+    def _lower(self, i: int, s) -> None:
         self.cur = s
         t = type(s)
         pair = self.ln.pair
@@ -1102,7 +1113,12 @@ class Gen:
         elif t is A.Next:
             j = pair[i]["for"]
             f = self.stmts[j]
-            v, ctype, start, end_code, const_step = self.for_parts(j, f)
+            try:
+                v, ctype, start, end_code, const_step = self.for_parts(j, f)
+            except GenError:
+                if self.errors is None:
+                    raise
+                return  # the FOR statement has reported it
             fs = f"_fs{j}"
             if const_step is None:
                 self.emit(f"{fs} = {self.ex(f.step)[0]}", line)
@@ -1282,14 +1298,29 @@ def generate(ln, hook: bool = False) -> tuple[UnitCode | None, list]:
         try:
             return g.generate(), []
         except GenError as e:
-            s = e.stmt or g.cur
-            return None, [diag(e.code, e.detail, ln.prog.path, s.line if s else 1, (s.col or None) if s else None,
-                               s.cpl if s else None)]
+            return None, [_diag(ln, err, s) for err, s in _every_type_error(ln) or [(e, e.stmt or g.cur)]]
         except (RecursionError, SyntaxError, MemoryError) as e:
             line = g.src.source_line(e.lineno) if isinstance(e, SyntaxError) and e.lineno else 0
             s = next((x for x in g.stmts if x.line == line), None) or g.cur
     return None, [diag("2153", "expression or structure too deep to evaluate", ln.prog.path, s.line if s else 1,
                        (s.col or None) if s else None, s.cpl if s else None)]
+
+
+def _every_type_error(ln) -> list:
+    """The type errors of every statement: the program generated again in the GOTO form, where each statement
+    (an IF's condition, a FOR's limits, ...) is lowered on its own, noting each error and going on."""
+    g = Gen(ln)
+    g.flat, g.errors = True, []
+    try:
+        g.generate()
+    except (GenError, RecursionError, SyntaxError, MemoryError):
+        pass
+    return sorted(g.errors, key=lambda es: (es[1].line if es[1] else 0, (es[1].col or 0) if es[1] else 0))
+
+
+def _diag(ln, e: GenError, s):
+    return diag(e.code, e.detail, ln.prog.path, s.line if s else 1, (s.col or None) if s else None,
+                s.cpl if s else None)
 
 
 def _a(ty: str) -> str:
