@@ -13,6 +13,7 @@ from ...diagnostics import CompileFailed
 from ..base import Dialect
 from .codegen import generate
 from .linker import link
+from .linktables import LinkTables
 
 _CPL_LINE = re.compile(r"^\s*\d+\s*(REM|IF|FOR|WHILE|GOTO|CALL|DIM|CASE|[A-Z#@][A-Z0-9_]*[%!?$]?\s*(\(.*\))?\s*=)",
                        re.I)
@@ -30,8 +31,8 @@ class CplDialect(Dialect):
         hits = sum(1 for ln in lines if _CPL_LINE.match(ln))
         return min(100, int(300 * hits / len(lines)))
 
-    def link(self, path, text, machine):
-        res = link(path, text, machine)
+    def link(self, path, text, machine, tables=None):
+        res = link(path, text, machine, tables)
         diags = list(res.diagnostics)
         for ln in res.units.values():  # type errors of every program whose own blocks link (check lists them all)
             if not ln.diagnostics:
@@ -41,6 +42,8 @@ class CplDialect(Dialect):
                         diags.extend(more)
                     else:
                         ln.unit = uc
+                        if tables is not None:
+                            tables.save(ln.prog.path, ln.key, ln)
         files = {p: k for k, p in enumerate(dict.fromkeys(d.span.file for d in diags if d.span))}
         diags.sort(key=lambda d: (files[d.span.file], d.span.line, d.span.column or 0) if d.span else (-1, 0, 0))
         return res, diags
@@ -52,7 +55,8 @@ class CplDialect(Dialect):
     def run(self, path, text, session):
         from .runtime import CplRuntime
 
-        res, diags = self.link(path, text, session.machine)
+        tables = LinkTables(session.options.state_dir / "link", session.machine.file_root)
+        res, diags = self.link(path, text, session.machine, tables)
         if diags:
             raise CompileFailed(diags)
         CplRuntime(session, res).run_main()

@@ -9,6 +9,7 @@ REAL (binary32) comparison rule of digest §4.2 are decided here, not at run tim
 from __future__ import annotations
 
 import inspect
+import marshal
 import math
 
 from ...nc.block import PLAIN_WORDS
@@ -52,6 +53,15 @@ class UnitCode:
         self.cpl_lines = cpl_lines  # physical line -> CPL line number
         self.report = report  # (python name, shown name)
         self.row_words = row_words  # the addresses its plain rows have (the motion queue builds these columns only)
+
+    def __getstate__(self) -> dict:  # kept in a link table (linktables.py): the code object as marshal data
+        state = dict(self.__dict__)
+        state["code"] = marshal.dumps(self.code)
+        return state
+
+    def __setstate__(self, state: dict) -> None:
+        state["code"] = marshal.loads(state["code"])
+        self.__dict__.update(state)
 
 
 class Gen:

@@ -61,11 +61,14 @@ def call_table(machine: Machine) -> dict:
     return out
 
 
-def link_one(path: str, text: str, calls: dict) -> Linked:
+def link_one(path: str, text: str, calls: dict, tables=None) -> Linked:
+    """The link table of one program: from this process's cache, from ``tables`` (the ``.I`` files kept
+    from earlier runs, linktables.py) or made now."""
     key = hashlib.sha256(("\0".join([path, repr(sorted(calls.items())), text])).encode("latin-1", "replace"))
     key = key.hexdigest()
-    hit = _CACHE.get(key)
+    hit = _CACHE.get(key) or (tables.load(path, key) if tables is not None else None)
     if hit is not None:
+        _CACHE[key] = hit
         return hit
     LINK_STATS["linked"] += 1
     prog = parse_program(path, text, calls)
@@ -232,10 +235,11 @@ class LinkResult:
     diagnostics: list
 
 
-def link(path: str, text: str, machine: Machine) -> LinkResult:
-    """Link ``path`` and every sub-program it reaches; diagnostics for everything that is wrong."""
+def link(path: str, text: str, machine: Machine, tables=None) -> LinkResult:
+    """Link ``path`` and every sub-program it reaches; diagnostics for everything that is wrong. ``tables``:
+    the link tables kept from earlier runs (linktables.py), if any."""
     calls = call_table(machine)
-    main = link_one(path, text, calls)
+    main = link_one(path, text, calls, tables)
     units = {path: main}
     resolve: dict = {}
     diags: list[Diagnostic] = list(main.diagnostics)
@@ -263,7 +267,7 @@ def link(path: str, text: str, machine: Machine) -> LinkResult:
             except OSError as e:
                 diags.append(diag("CPL005", f"{name}: {e.strerror}", ln.prog.path, s.line, s.col or None, s.cpl))
                 continue
-            sub = link_one(sub_path, sub_text, calls)
+            sub = link_one(sub_path, sub_text, calls, tables)
             if sub.prog.din_only:
                 continue  # excluded from linking by "(DIN)" in its first line (manual §3.3)
             units[sub_path] = sub
