@@ -197,6 +197,9 @@ class BlockParser:
             if not _PROGRAM_NAME.fullmatch(name.val):  # a name along the program path, never a path of the host
                 self.error("CPL001", f"program name {name.val!r}: letters, digits, '.' and '_' only "
                                      "(manual §6.1.1 L3851)", name)
+            if len(name.val) > 28:  # the link table's file name adds two characters to the 30 a name may have
+                self.error("CPL001", f"program name {name.val!r}: at most 28 characters (manual §6.1.1 L3851)",
+                           name)
             args = []
             if self.at("op", "["):
                 self.next()
