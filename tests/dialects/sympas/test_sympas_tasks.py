@@ -415,30 +415,23 @@ end.
     assert (v["a"], v["b"], v["c"], v["d"], v["e"]) == (0, 1, 11, 111, 1111)
 
 
+def _two_long_moves(main_handler: str, other_handler: str) -> str:
+    """Task 0 moves A1 1000 mm and task 1 A2 500 mm, both at 10 mm/s in W-waits, each with the EVUI handler
+    body given ("" for none); each writes CLOCK when its move is done."""
+    def task(n: int, name: str, handler: str, axis: str, target: float, start: str) -> str:
+        ev = f"procedure EVUI; begin {handler} DISEV(EVUI); end;\n" if handler else ""
+        enable = "  enev(EVUI);\n" if handler else ""
+        return (f"{{$TASK {n}}}\nprogram {name};\n{ev}begin\n{enable}{start}  TRVL := 10.0; TRAC := 1000.0;\n"
+                f"  MLAW({axis} := {target});\n  writeln('{n}: {axis} done at ', CLOCK);\nend.\n")
+    return (task(0, "Main", main_handler, "A1", 1000.0, "  STARTCNCT(1);\n")
+            + task(1, "Other", other_handler, "A2", 500.0, ""))
+
+
 def test_two_tasks_waiting_on_long_moves_see_an_event_in_its_servo_cycle(sap):
     # Both tasks wait on minutes-long W moves with EVUI enabled. Nothing can happen between the scenario
     # input at 30 s and the ends of the moves, so the card looks only then (a run of 150,000 servo cycles
     # took a minute when every cycle was stepped); what the tasks see is what they saw stepping every cycle.
-    text = """{$TASK 0}
-program Main;
-procedure EVUI; begin writeln('0: UI at ', CLOCK, ' A1 ', A1.dp); DISEV(EVUI); end;
-begin
-  enev(EVUI);
-  STARTCNCT(1);
-  TRVL := 10.0; TRAC := 1000.0;
-  MLAW(A1 := 1000.0);
-  writeln('0: A1 done at ', CLOCK);
-end.
-{$TASK 1}
-program Other;
-procedure EVUI; begin writeln('1: UI at ', CLOCK); DISEV(EVUI); end;
-begin
-  enev(EVUI);
-  TRVL := 10.0; TRAC := 1000.0;
-  MLAW(A2 := 500.0);
-  writeln('1: A2 done at ', CLOCK);
-end.
-"""
+    text = _two_long_moves("writeln('0: UI at ', CLOCK, ' A1 ', A1.dp);", "writeln('1: UI at ', CLOCK);")
     r = sap(text, machine_toml=EO_MACHINE + scenario((30.0, "A1", 2, True)))
     assert r["status"] == "ok", r["error"]
     out = sorted(r["output"])
@@ -464,24 +457,7 @@ end.
 def test_a_sleeping_task_sees_the_stop_another_tasks_event_handler_makes(sap):
     # Task 0 waits on A1's 100 s move; task 1, itself waiting on A2, gets EVUI at 30 s and stops A1 with MS.
     # Task 0 must see A1 stand still in the servo cycle after the stop, not when its own move would have ended.
-    text = """{$TASK 0}
-program Main;
-begin
-  STARTCNCT(1);
-  TRVL := 10.0; TRAC := 1000.0;
-  MLAW(A1 := 1000.0);
-  writeln('0: A1 done at ', CLOCK);
-end.
-{$TASK 1}
-program Other;
-procedure EVUI; begin writeln('1: UI at ', CLOCK); MS(A1); DISEV(EVUI); end;
-begin
-  enev(EVUI);
-  TRVL := 10.0; TRAC := 1000.0;
-  MLAW(A2 := 500.0);
-  writeln('1: A2 done at ', CLOCK);
-end.
-"""
+    text = _two_long_moves("", "writeln('1: UI at ', CLOCK); MS(A1);")
     r = sap(text, machine_toml=EO_MACHINE + scenario((30.0, "A1", 2, True)))
     assert r["status"] == "ok", r["error"]
     ui, done, a2 = (int(line.split()[-1]) for line in r["output"])
