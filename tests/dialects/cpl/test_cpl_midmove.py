@@ -145,3 +145,11 @@ def test_mcods_version_wait_lets_the_moving_block_finish(tmp_path, run_text):
     # the same version again waits until the position changes: execution goes on to the block's end
     assert v["X1"] == pytest.approx(x100_at(0.5), abs=1e-4)
     assert v["P"][1] == 100.0 and v["T%"] == round(X100_TIME * 1000)
+
+
+def test_with_a_lookahead_depth_the_wait_also_ends_mid_move(tmp_path, run_text):
+    text = "N10 G1 X100 F6000\n10 WAIT(,500)\n20 T% = CLOCK : X = MPOS(1)\nN30 G1 X0\nM30\n"
+    r = run_text(text, name="p.cpl", machine=mill(tmp_path, cpl={"lookahead": 2}))
+    v = r["variables"]
+    assert v["T%"] == 500 and v["X"] == pytest.approx(x100_at(0.5), abs=1e-4)
+    assert r["cycle_time_s"] == pytest.approx(2 * X100_TIME)  # N30 starts when N10 has ended
