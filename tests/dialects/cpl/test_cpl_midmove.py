@@ -153,3 +153,23 @@ def test_with_a_lookahead_depth_the_wait_also_ends_mid_move(tmp_path, run_text):
     v = r["variables"]
     assert v["T%"] == 500 and v["X"] == pytest.approx(x100_at(0.5), abs=1e-4)
     assert r["cycle_time_s"] == pytest.approx(2 * X100_TIME)  # N30 starts when N10 has ended
+
+
+def test_clock_example_of_the_manual_times_one_block(tmp_path, run_text):
+    """Manual §4.12 L2472-2490: CLOCK before and after N4, each behind a WAIT; the difference is N4's time."""
+    text = ("N1 G1 F3000\n20 WAIT\n30 STARTTIME% = CLOCK\nN4 G1X50Y70\n40 WAIT\n"
+            "50 ENDTIME% = CLOCK: DIFF% = ENDTIME%-STARTTIME%\nM30\n")
+    v = run_text(text, name="p.cpl", machine=mill(tmp_path))["variables"]
+    # length sqrt(50^2 + 70^2) = 86.023 mm at F3000 = 50 mm/s (no axis over 83.33 mm/s); the acceleration is
+    # limited by Y: 1000 / (70 / 86.023) = 1228.9 mm/s^2. Time 86.023 / 50 + 50 / 1228.9 = 1.7612 s
+    length = math.hypot(50.0, 70.0)
+    expected = length / 50.0 + 50.0 / (1000.0 / (70.0 / length))
+    # (a name keeps 8 significant characters: STARTTIME% is STARTTIM%)
+    assert v["STARTTIM%"] == 0 and v["DIFF%"] == round(expected * 1000) == 1761
+
+
+def test_wait_without_parameters_while_a_block_moves_waits_for_its_end(tmp_path, run_text):
+    text = "N10 G1 X100 F6000\n10 WAIT(,500)\n20 X1 = MPOS(1)\n30 WAIT\n40 T% = CLOCK : X2 = MPOS(1)\nM30\n"
+    v = run_text(text, name="p.cpl", machine=mill(tmp_path))["variables"]
+    assert v["X1"] == pytest.approx(x100_at(0.5), abs=1e-4)
+    assert (v["T%"], v["X2"]) == (round(X100_TIME * 1000), 100.0)  # 1283 ms: every block before it executed
