@@ -173,3 +173,19 @@ def test_wait_without_parameters_while_a_block_moves_waits_for_its_end(tmp_path,
     v = run_text(text, name="p.cpl", machine=mill(tmp_path))["variables"]
     assert v["X1"] == pytest.approx(x100_at(0.5), abs=1e-4)
     assert (v["T%"], v["X2"]) == (round(X100_TIME * 1000), 100.0)  # 1283 ms: every block before it executed
+
+
+def test_a_file_written_mid_move_is_dated_at_the_programs_time(tmp_path, run_text):
+    # N10 takes 2000 / 83.333 + 0.0833 = 24.08 s; the program writes the file 10 s into it
+    text = ('N10 G1 X2000 F6000\n10 WAIT(,10000)\n20 DIM T$(8) : T$ = TIME\n'
+            '30 OPENW(1,"STAMP") : PRN#(1,"X") : CLOSE(1)\n40 DIM F$(8) : F$ = FILEDATE("STAMP",2)\n'
+            "50 WAIT\n60 DIM E$(8) : E$ = TIME\nM30\n")
+    v = run_text(text, name="p.cpl", machine=mill(tmp_path))["variables"]
+    assert v["F$"] == v["T$"]
+    assert _seconds(v["E$"]) - _seconds(v["T$"]) == 14  # the block ends at 24.08 s: 24 - 10 whole seconds
+
+
+def _seconds(hms: str) -> int:
+    """TIME's "HH.MM.SS" as seconds of the day."""
+    h, m, s = (int(p) for p in hms.split("."))
+    return 3600 * h + 60 * m + s

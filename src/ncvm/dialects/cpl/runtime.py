@@ -51,6 +51,19 @@ _EXTENDED = re.compile(r"\s*([A-Za-z][A-Za-z0-9_]*[0-9_][A-Za-z0-9_]*)\s*=\s*([-
 MAX_NESTING = 7  # sub-program levels below the main program (manual §2.1 L323)
 
 
+class ProgramClock:
+    """The simulated clock as the program reads it: at the program's time (CplRuntime.t_prep), which may
+    lie inside a block the kernel has already executed to its end."""
+
+    def __init__(self, rt):
+        self._rt = rt
+        self.start_epoch = rt.machine.clock.start_epoch
+
+    @property
+    def now(self) -> float:
+        return self._rt.t_prep
+
+
 class EndProgram(Exception):
     """M2/M30 reached: the program (or sub-program) ends here."""
 
@@ -65,6 +78,7 @@ class CplRuntime:
         self.lookahead = int(cfg.get("lookahead", 0))
         self.block_skip = bool(self.machine.setting_data.get("block_skip", True))
         self.io = CplIO.for_session(session, typ2=linked.main.prog.typ2)
+        self.io.files.clock = ProgramClock(self)  # files the program writes are dated at its time
         session.screen = self.io.screen
         self._pictures = 0
         if session.options.screen_dir is not None:
