@@ -67,6 +67,15 @@ def path_limits(deltas, length: float, speed: float, limits: tuple, accel: tuple
     return v, a
 
 
+def arc_limits(n_axes: int, a: int, b: int, length: float, speed: float, limits: tuple,
+               accel: tuple) -> tuple[float, float]:
+    """Path speed and acceleration of an arc of ``length`` in the plane of axes ``a`` and ``b``: an arc moves
+    both plane axes at once, so it is timed as a straight move of the same length shared equally by them."""
+    chord = [0.0] * n_axes
+    chord[a] = chord[b] = length / math.sqrt(2.0)
+    return path_limits(chord, length, speed, limits, accel)
+
+
 def trapezoid_distance(length: float, v: float, a: float, t: float) -> float:
     """Distance covered ``t`` seconds into the rest-to-rest profile of :func:`trapezoid_time`."""
     total = trapezoid_time(length, v, a)

@@ -26,7 +26,7 @@ from ..diagnostics import RuntimeFault, Span
 from ..machine.model import Machine
 from . import arcs
 from .canon import ArcSpec, Canon, Src
-from .dynamics import AxisDynamics, move_time
+from .dynamics import AxisDynamics, arc_limits, trapezoid_time
 from .fastmove import make_linear
 
 INCH = 25.4
@@ -485,10 +485,8 @@ class NcKernel:
         angle = arcs.sweep(sa, sb, ea, eb, ca, cb, cw, turns)
         helix = math.sqrt(sum((e - s) ** 2 for i, (s, e) in enumerate(zip(start, end)) if i != a and i != b))
         length = arcs.arc_length(radius, angle, helix)
-        # an arc moves both plane axes at once: time it as a straight move of the same length
-        chord = [0.0] * self.n_axes
-        chord[a] = chord[b] = length / math.sqrt(2.0)
-        t = move_time(chord, length, self.feed / 60.0, self.dyn.max_feed, self.dyn.accel)
+        t = trapezoid_time(length, *arc_limits(self.n_axes, a, b, length, self.feed / 60.0, self.dyn.max_feed,
+                                               self.dyn.accel))
         self.machine.clock.advance(t)
         self.canon.arc(start, end, spec, self.feed, src)
 

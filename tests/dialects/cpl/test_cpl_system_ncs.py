@@ -42,11 +42,15 @@ def test_messages_28(run):
 def test_dwell_and_auxiliary_function_39_40_87(run):
     text = ("N1 G4 F2\nN2 M50\n3 D1%=0:V=0:E%=MCODS(39,1,V,D1%,1)\n4 W1%=0:V=0:E%=MCODS(87,1,V,W1%,1)\n"
             "5 A1%=0:V=0:E%=MCODS(40,1,V,A1%,1)\n6 WAIT(,1000)\n7 D2%=0:V=0:E%=MCODS(39,1,V,D2%,1)\n"
-            "8 A2%=0:V=0:E%=MCODS(40,1,V,A2%,1)\n9 W2%=0:V=0:E%=MCODS(87,1,V,W2%,1)\nM30\n")
+            "8 A2%=0:V=0:E%=MCODS(40,1,V,A2%,1)\n9 W2%=0:V=0:E%=MCODS(87,1,V,W2%,1)\n10 WAIT(,1500)\n"
+            "11 D3%=0:V=0:E%=MCODS(39,1,V,D3%,1)\n12 A3%=0:V=0:E%=MCODS(40,1,V,A3%,1)\n"
+            "13 W3%=0:V=0:E%=MCODS(87,1,V,W3%,1)\nM30\n")
     v = run(text)["variables"]
     assert (v["D1%"], v["A1%"], v["W1%"]) == (1, 0, 1 + 4096)  # the dwell is executing, M50 waits behind it
-    # within the 1 s the 2 s dwell has been executed; M50 is next and awaits its acknowledgement
-    assert (v["D2%"], v["A2%"], v["W2%"]) == (0, 1, 2 + 4096)
+    # 1 s into the 2 s dwell the dwell is still executing (the program reads the machine at its own time)
+    assert (v["D2%"], v["A2%"], v["W2%"]) == (1, 0, 1 + 4096)  # M50 still waits in the queue
+    # at 2.5 s the dwell has ended and M50 has been executed: the channel stands idle
+    assert (v["D3%"], v["A3%"], v["W3%"]) == (0, 0, 0)
 
 
 def test_axis_potentiometers_50(run):

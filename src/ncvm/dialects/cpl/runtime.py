@@ -4,6 +4,11 @@ Block preparation runs ahead of block execution (manual §4.1, digest §1.5): CP
 NC blocks go into a motion queue that the NC kernel executes in simulated time only when a WAIT, the
 program end or the configured look-ahead depth ([cpl] lookahead) drains it. Functions such as MPOS
 therefore see the executed position, stale without a WAIT, exactly as the manual's WAIT example says.
+
+The program has its own time (``t_prep``): a WAIT(,ms) or a WAIT for an input moves it on, and execution
+runs up to it. The kernel executes whole blocks, so the block under way at that time has been executed to
+its end; the executed-state readers (MPOS, WPOS, CLOCK, IC, MCODS ...) see the machine at the program's
+time all the same: ``executed_position`` interpolates the axes along that block's move (nc.midmove).
 """
 
 from __future__ import annotations
@@ -21,6 +26,7 @@ from ...diagnostics import Frame, RuntimeFault, Span
 from ...machine.model import PlcImage, SimClock
 from ...nc.block import ROW_LINE, Block, DinSyntaxError, parse_din_line, row_block
 from ...nc.canon import Canon, Src
+from ...nc.midmove import MotionRecorder, position_at
 from ...nc.plainrun import execute_segments, plain_segments
 from . import values as V
 from .builtins import FUNCTIONS
@@ -45,6 +51,19 @@ _EXTENDED = re.compile(r"\s*([A-Za-z][A-Za-z0-9_]*[0-9_][A-Za-z0-9_]*)\s*=\s*([-
 MAX_NESTING = 7  # sub-program levels below the main program (manual §2.1 L323)
 
 
+class ProgramClock:
+    """The simulated clock as the program reads it: at the program's time (CplRuntime.t_prep), which may
+    lie inside a block the kernel has already executed to its end."""
+
+    def __init__(self, rt):
+        self._rt = rt
+        self.start_epoch = rt.machine.clock.start_epoch
+
+    @property
+    def now(self) -> float:
+        return self._rt.t_prep
+
+
 class EndProgram(Exception):
     """M2/M30 reached: the program (or sub-program) ends here."""
 
@@ -59,6 +78,7 @@ class CplRuntime:
         self.lookahead = int(cfg.get("lookahead", 0))
         self.block_skip = bool(self.machine.setting_data.get("block_skip", True))
         self.io = CplIO.for_session(session, typ2=linked.main.prog.typ2)
+        self.io.files.clock = ProgramClock(self)  # files the program writes are dated at its time
         session.screen = self.io.screen
         self._pictures = 0
         if session.options.screen_dir is not None:
@@ -82,7 +102,11 @@ class CplRuntime:
         self.hook = session.options.hook
         self._fns: dict = {}
         self._codes: dict = {}
+        #: the program's own time (s): where block preparation stands in simulated time
         self.t_prep = self.machine.clock.now
+        #: the block still moving at the program's time: (block, position before it, its recorded motion,
+        #: the executed count after it); see executed_position
+        self.running = None
         self._events = [e for e in self.machine.scenario if e.kind == "input"]
         self._next_event = 0
         self.ctl = load_controller(self.machine, lambda: session.store)  # chapter 4 controller state
@@ -341,9 +365,11 @@ class CplRuntime:
 
     # -- NC blocks and the motion queue ---------------------------------------------------------
     def queue_limited(self, blk) -> None:
+        """The look-ahead is full: preparation waits until the oldest block has been executed."""
         self.queue.append(blk)
         if len(self.queue) > self.lookahead:
             self.execute_one()
+            self.t_prep = max(self.t_prep, self.machine.clock.now)
 
     def enqueue_probe(self, blk) -> None:
         """G75 (measuring) blocks are executed before preparation goes on (manual §4.2, SD(9) L2309)."""
@@ -433,12 +459,50 @@ class CplRuntime:
             words.update(blk.words)
         return Block(tuple(g), tuple(m), words, n, msg, src)
 
+    # -- the executed state at the program's time ---------------------------------------------
+    def moving(self) -> bool:
+        """Whether a block is still being executed at the program's time (it ends later)."""
+        return self.machine.clock.now > self.t_prep and self.running is not None \
+            and self.running[3] == self.executed
+
+    def executed_position(self) -> tuple:
+        """The machine position (MCS, per kernel axis) at the program's time: inside the block still moving
+        then, the point its move has reached; else where the executed blocks left the axes."""
+        if not self.moving():
+            return self.kernel.machine_pos
+        _, before, moves, _ = self.running
+        return position_at(moves, self.kernel.dyn, self.t_prep, before)
+
+    def executing_block(self):
+        """The block the channel is executing at the program's time: the one still moving, else the oldest
+        one in the motion queue; None when the channel stands idle."""
+        blk = self.running[0] if self.moving() else (self.queue[0] if self.queue else None)
+        return row_block(blk) if blk.__class__ is tuple else blk
+
+    def execute_next(self) -> bool:
+        """The program waits for execution to go on (MCODS with an unchanged version): to the end of the block
+        still moving, else through the next queued block. False when nothing is left to execute."""
+        clock = self.machine.clock
+        if not clock.now > self.t_prep:
+            if not self.queue or self.kernel.ended:
+                return False
+            self.execute_one()
+        self.t_prep = max(self.t_prep, clock.now)
+        return True
+
     # -- WAIT with parameters (manual §4.1) ---------------------------------------------------
     def advance(self, t_end: float) -> None:
-        """Let execution run until simulated time ``t_end`` (queued motion progresses), then idle."""
+        """Let execution run until simulated time ``t_end``, then idle: the blocks that start before it are
+        executed (whole, by the kernel); the last of them may still be moving at ``t_end`` (see running)."""
         clock = self.machine.clock
-        while self.queue and clock.now < t_end and not self.kernel.ended:
-            self.execute_one()
+        queue, kernel = self.queue, self.kernel
+        if queue and clock.now < t_end and not kernel.ended:
+            with MotionRecorder(kernel.canon, clock) as rec:
+                while queue and clock.now < t_end and not kernel.ended:
+                    blk, before = queue[0], kernel.machine_pos
+                    rec.moves.clear()
+                    self.execute_one()
+            self.running = (blk, before, list(rec.moves), self.executed)
         if clock.now < t_end:
             clock.now = t_end
         self.t_prep = t_end
@@ -458,7 +522,7 @@ class CplRuntime:
             if duration is None:
                 raise TypeError("NUL")
             raise CplError("CPL023", f"WAIT duration {duration!r}: an INTEGER number of milliseconds")
-        start = max(self.t_prep, self.machine.clock.now) if not self.queue else self.t_prep
+        start = self.t_prep
         deadline = None if duration is None else start + duration / 1000.0
         if ic is None:
             self.advance(deadline)

@@ -10,7 +10,6 @@ from __future__ import annotations
 
 import zlib
 
-from ....nc.block import row_block
 from ..errors import CplError
 from ..io.strings import CharacterField
 from .axes import kernel_index, nul
@@ -47,20 +46,14 @@ def _channels(c) -> list[int]:
 def _sav_ipo(rt, ch: int) -> list[int]:
     """SAV and IPO state (digest §8.6): the own channel is active while blocks are prepared or queued."""
     if ch == rt.ctl.channel:
-        return [3, 1 if rt.queue else 3]
+        return [3, 1 if rt.queue or rt.moving() else 3]
     return [2 if _state(rt)["selected"].get(ch) else 1, 3]
 
 
 def _positions(rt, axes, mcs=True) -> list[float]:
-    out = []
-    for a in axes:
-        i = kernel_index(rt, a)
-        if i is None:
-            out.append(a.position)
-        else:
-            k = rt.kernel
-            out.append(k.machine_pos[i] if mcs else k.prog[i])
-    return out
+    """MCS positions at the program's time, or (mcs=False) the programmed end points of the executed blocks."""
+    pos = rt.executed_position() if mcs else rt.kernel.prog
+    return [a.position if (i := kernel_index(rt, a)) is None else pos[i] for a in axes]
 
 
 def _coordinates(rt, axes, wcs: bool) -> list[float]:
@@ -68,7 +61,7 @@ def _coordinates(rt, axes, wcs: bool) -> list[float]:
     program shifts G168/G268 stay in); the WCS also without the coordinate transformation G138, which lies
     between the two (manual L1323)."""
     k = rt.kernel
-    rel = [m - o for m, o in zip(k.machine_pos, k.offset_vec)]
+    rel = [m - o for m, o in zip(rt.executed_position(), k.offset_vec)]
     if wcs and k.transform is not None:
         rel = k.transform.to_wcs(rel)
     return [a.position if (i := kernel_index(rt, a)) is None else rel[i] + k.g92[i] + program_shift(rt, k, i)
@@ -153,7 +146,7 @@ def _spindle_speed(rt) -> float:
 def _more(rt, typ: int, ch: int, system, own, axisno, idno):
     """Further services: lags, spindles, in-position and travel flags, end points, distance to go."""
     c, k = rt.ctl, rt.kernel
-    moving = bool(rt.queue)
+    moving = bool(rt.queue) or rt.moving()
     if typ == 4:
         return [a.lag for a in system]
     if typ in (5, 36):
@@ -198,11 +191,11 @@ def _more(rt, typ: int, ch: int, system, own, axisno, idno):
     if typ == 82:
         return [len(own), len(own), len(own)]
     if typ == 37:  # program values: the MCS without the axis zero shifts and without G92
-        out = []
+        out, now = [], rt.executed_position()
         for a in system:
             i = kernel_index(rt, a)
             tool = k.tool_length if i is not None and i == k.tool_axis else 0.0
-            out.append(a.position if i is None else k.prog[i] + tool)
+            out.append(a.position if i is None else k.prog[i] + tool + now[i] - k.machine_pos[i])
         return out
     if typ == 38:
         return [p - a.lag for p, a in zip(_positions(rt, system), system)]
@@ -219,16 +212,9 @@ def _more(rt, typ: int, ch: int, system, own, axisno, idno):
         return "".join(a.name[:8].ljust(8) + "\0" for a in own)
     if typ == 83:
         p = rt.prepared_kernel()
-        return [p.machine_pos[i] - k.machine_pos[i] if (i := kernel_index(rt, a)) is not None else 0.0 for a in own]
+        now = rt.executed_position()
+        return [p.machine_pos[i] - now[i] if (i := kernel_index(rt, a)) is not None else 0.0 for a in own]
     return _status(rt, typ, ch, system, own)
-
-
-def _head(rt):
-    """The block the channel is executing: the oldest one still in the motion queue, or None."""
-    if not rt.queue:
-        return None
-    head = rt.queue[0]
-    return row_block(head) if head.__class__ is tuple else head
 
 
 def _status(rt, typ: int, ch: int, system, own):
@@ -244,7 +230,7 @@ def _status(rt, typ: int, ch: int, system, own):
     if typ == 28:
         return c.message
     if typ in (39, 40, 67):  # dwell / auxiliary function awaiting acknowledgement / gear change
-        head = _head(rt)
+        head = rt.executing_block()
         spindles = [0] * 7 if typ == 67 else []  # 67: one value per spindle, 8 places
         if head is None:
             return [0] + spindles
@@ -295,7 +281,7 @@ def _drive(rt, typ, system, axisno, idno):
     for a in system:
         if key == "S-0-0051":
             i = kernel_index(rt, a)
-            out.append(int(round(((a.position if i is None else rt.kernel.machine_pos[i]) - a.lag) * 10000)))
+            out.append(int(round(((a.position if i is None else rt.executed_position()[i]) - a.lag) * 10000)))
         else:
             v = c.sercos.get(a.index, {}).get(key)
             out.append(v if isinstance(v, int) else -2147483648)
@@ -313,8 +299,7 @@ def f_mcods(rt, typ, chan, version, buffer, size, axisno=None, idno=None, p1=Non
         return (SYNTAX if typ in (17, 21, 22, 84, 85, 86, 88) else NOT_AVAILABLE), version
     ver = _version(data)
     if version not in (0, None) and int(version) == ver:
-        while rt.queue:  # block until the data changes: execution goes on
-            rt.execute_one()
+        while rt.execute_next():  # block until the data changes: execution goes on
             data = _data(rt, typ, chan, size, axisno, idno)
             ver = _version(data)
             if ver != int(version):

@@ -45,7 +45,7 @@ def _index_range(c, group: int) -> tuple[int, int]:
 def f_ic(rt, bit, group=None, index=None) -> bool:
     """IC read: an interface bit; input groups follow the scenario's timed events (L2379-2418)."""
     key = ic_key(rt, bit, group, index)
-    rt._apply_events(rt.machine.clock.now)
+    rt._apply_events(rt.t_prep)
     plc = rt.machine.plc
     if (0 if group is None else group) in OUTPUT_GROUPS:
         return bool(plc.outputs.get(key, plc.inputs.get(key, False)))
@@ -81,7 +81,7 @@ def f_plc(rt, ptype, dm, addr, size):
     prefix = _plc_args(rt, ptype, dm, addr, size)
     mem = rt.ctl.plc
     if ptype == 7:
-        return max(0, mem.get(f"{prefix}{addr}", 0) - int(rt.machine.clock.now * 1000))
+        return max(0, mem.get(f"{prefix}{addr}", 0) - int(rt.t_prep * 1000))
     if ptype == 8:
         return mem.get(f"{prefix}{addr}", 0)
     v = 0
@@ -108,13 +108,13 @@ def p_plc_set(rt, ptype, dm, addr, size, value=None):
 
 
 def f_clock(rt) -> int:
-    """CLOCK: the system time counter in ms (simulated time, advanced by executed blocks and WAIT)."""
-    return int(round(rt.machine.clock.now * 1000.0))
+    """CLOCK: the system time counter in ms at the program's time (simulated: a WAIT lets it run on to the
+    end of the executed blocks, or by its duration, also into the middle of a block still moving)."""
+    return int(round(rt.t_prep * 1000.0))
 
 
 def _now(rt):
-    clock = rt.machine.clock
-    return _time.gmtime(clock.start_epoch + clock.now)
+    return _time.gmtime(rt.machine.clock.start_epoch + rt.t_prep)
 
 
 def f_date(rt) -> str:

@@ -2,7 +2,9 @@
 
 "Prepared" values (AXO, CPOS) come from the NC state after every block prepared so far (the runtime's
 prepared kernel); "executed" values (WPOS, MPOS, APOS, SPOS) from the NC kernel, which has only run the
-blocks a WAIT (or the look-ahead depth) let through: read before a WAIT they are stale (§4.1).
+blocks a WAIT (or the look-ahead depth) let through: read before a WAIT they are stale (§4.1). They are
+read at the program's time: inside a block still moving then, at the point its move has reached
+(runtime.executed_position).
 Probe values are latched by a G75 block from the next "probe" scenario event (see probe_block).
 Transformations (transforms.py): CPOS is before them, WPOS after the contour shift and scaling but before
 the coordinate transformation G138 (manual L1323), MPOS after all; PPOS removes the axis zero shifts, the
@@ -19,7 +21,7 @@ from .gfuncs import program_shift
 
 def _executed_mcs(rt, ax) -> float:
     i = kernel_index(rt, ax)
-    return ax.position if i is None else rt.kernel.machine_pos[i]
+    return ax.position if i is None else rt.executed_position()[i]
 
 
 def axis_zs(rt, k, i: int) -> float:
@@ -56,8 +58,8 @@ def f_wpos(rt, sel, seltype=1, chan=None):
         return ax.position
     t = k.transform
     if t is None:
-        return to_unit(k, ax, k.machine_pos[i] - axis_zs(rt, k, i))
-    wcs = t.to_wcs([m - o for m, o in zip(k.machine_pos, k.offset_vec)])  # G138 undone
+        return to_unit(k, ax, rt.executed_position()[i] - axis_zs(rt, k, i))
+    wcs = t.to_wcs([m - o for m, o in zip(rt.executed_position(), k.offset_vec)])  # G138 undone
     return to_unit(k, ax, wcs[i] + k.offset_vec[i] - axis_zs(rt, k, i))
 
 
@@ -169,7 +171,7 @@ def f_cprobe(rt, sel, seltype=1):
     if i is None:
         return mcs
     latch = probe_latch(rt)
-    switch = [latch.get(name, p) for name, p in zip(k.axis_names, k.machine_pos)]
+    switch = [latch.get(name, p) for name, p in zip(k.axis_names, rt.executed_position())]
     return to_unit(k, ax, k.program_position(switch)[i])
 
 

@@ -19,7 +19,7 @@ from .positions import f_apos
 def _locked(rt) -> bool:
     locked = False
     for ev in rt.machine.scenario:
-        if ev.kind == "sercos" and ev.time <= rt.machine.clock.now:
+        if ev.kind == "sercos" and ev.time <= rt.t_prep:
             locked = bool(ev.data.get("locked", True))
     return locked
 
