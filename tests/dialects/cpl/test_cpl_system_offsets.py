@@ -121,6 +121,22 @@ def test_zs_tables_persist_in_the_store(run_text, reference):
     assert r["variables"] == {"V": 7.5, "M": 8.5}
 
 
+def test_an_active_table_named_by_a_path_stays_in_the_store(run, tmp_path):
+    """The active table is the control's database (the kernel's G54..G59), even when a path names it:
+    FXC on that name moves the work offset and writes no file."""
+    text = f'N1 G54 G0 X0\n2 FXC(1,54,"{TAB}")=3\nN3 G0 X0\n4 WAIT\n5 M=MPOS(1)\n6 F%=FILEACCESS("{TAB}")\nM30\n'
+    r = run(text, cpl={"zs_active": TAB})
+    assert r["variables"] == {"M": 3.0, "F%": 6}
+    assert not (tmp_path / "files/usr").exists()
+
+
+def test_a_value_that_is_no_finite_number_is_not_written(run, tmp_path):
+    power = "*".join(["A"] * 40)  # (10^9)^40 overflows a double
+    r = run(f'1 FXCR(1,"/T.npv")\n2 A=1000000000.0\n3 FXC(1,54,"/T.npv")={power}\nM30\n')
+    assert r["error"]["code"] == "CPL023"
+    assert records(tmp_path / "files/T.npv") == table_file()
+
+
 def test_external_shift_of_a_foreign_axis_is_an_error(run):
     assert run('1 FXC("X2",160,0)=1\nM30\n')["error"]["code"] == "1970"
 

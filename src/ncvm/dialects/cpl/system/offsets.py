@@ -10,6 +10,7 @@ under the controller's file root (zsfile.py), found by the rules of the CPL file
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
 
 from ....diagnostics import UsageError
@@ -240,6 +241,8 @@ def p_fxc_set(rt, sel, gaddr=None, table=None, unit=None, value=None):
     value = nul(value)
     if isinstance(value, bool) or not isinstance(value, (int, float)):
         raise CplError("CPL032", "FXC needs a numeric value")
+    if not math.isfinite(value):
+        raise CplError("CPL023", f"FXC value {value}: a finite number")
     if gaddr is None:
         raise CplError("CPL023", "FXC write needs a G address")
     if table == 0:
