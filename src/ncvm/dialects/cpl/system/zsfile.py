@@ -5,8 +5,8 @@ The manual calls them "ASCII tables" but gives no layout. ncvm writes this one (
 the EOF marker ETX LF), so OPENR/INP#, FILESIZE, FILEDATE and ERASE see an ordinary file::
 
     ZS-TABLE MM STRICT=0
-    G                X                Y              U:R
-    G54           22.0              0.0              0.0
+    G                    X                Y              U:R
+    G54               22.0              0.0              0.0
     ...           one record per row G54..G59, G154..G159, G254..G259
 
 Record 1: the table unit (MM or INCH, from MACODA 9020 00010 when the table was created) and the
