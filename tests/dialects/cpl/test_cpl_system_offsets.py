@@ -2,10 +2,13 @@
 
 from __future__ import annotations
 
+import os
 import time
 
 import pytest
 
+from ncvm.diagnostics import UsageError
+from ncvm.dialects.cpl.io.files import CplFiles
 from ncvm.machine.store import Store
 
 TAB = "/usr/user/NPV1.npv"
@@ -243,6 +246,33 @@ def test_a_write_protected_table_file_is_not_changed(run_text, reference, tmp_pa
     assert r["variables"] == {"A": 0.0}
     assert r["error"]["code"] == "CPL040" and "write-protected" in r["error"]["message"]
     assert path.read_text() == "\n".join(table_file()) + "\n"
+
+
+def test_a_table_is_replaced_whole_or_not_at_all(tmp_path, monkeypatch):
+    """The new table goes into a temporary file that is renamed over the old one: when the rename
+    fails (a crash at that moment), the old table is intact and no temporary file is left."""
+    path = tmp_path / "T.npv"
+    files = CplFiles(root=tmp_path, durable=False)
+    files.replace_records(path, table_file())
+    assert records(path) == table_file()
+
+    def crash(src, dst):
+        raise OSError(28, "No space left on device")
+
+    monkeypatch.setattr(os, "replace", crash)
+    with pytest.raises(OSError):
+        files.replace_records(path, table_file(("G54", 1.0, 2.0, 3.0)))
+    assert records(path) == table_file() and [p.name for p in tmp_path.iterdir()] == ["T.npv"]
+
+
+def test_fxins_refuses_a_column_twice(run, tmp_path):
+    r = run('1 FXCR(1,"/T.npv")\n2 FXINS("/T.npv",1,"y")\nM30\n')
+    assert r["error"]["code"] == "CPL040" and records(tmp_path / "files/T.npv") == table_file()
+
+
+def test_a_machine_file_table_outside_the_file_root_is_a_usage_error(run):
+    with pytest.raises(UsageError, match="outside the file root"):
+        run("1 A=1\nM30\n", cpl={"zs_tables": {"../T.npv": {"G54": [1.0]}}})
 
 
 def test_a_store_table_of_an_older_run_becomes_a_file(run_text, reference, tmp_path):
