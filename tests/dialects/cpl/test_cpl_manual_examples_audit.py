@@ -263,18 +263,23 @@ M30
 """
 
 
-def test_n11_fxcr_fxdel_fxins_with_fileaccess_l1809(run_text, reference):
+def test_n11_fxcr_fxdel_fxins_with_fileaccess_l1809(run_text, reference, tmp_path):
     """§4.3 L1809-1827 as printed, with line 20 added to read FILEACCESS back (OCR repairs: ``NPV BASIS$`` and
-    ``NPV TAB K2.npv`` are written with '_', line 13 gets its ')'). The first run creates the channel-2
-    table and changes its columns (X2 Y2 Z2 -> X2 Z2 U); the second finds it and creates NPV2 with its
-    layout; the third changes nothing. A table answers FILEACCESS as a read/write file (6)."""
-    runs = [run_text(FXCR_EXAMPLE, name="p.cpl", machine=reference()) for _ in range(3)]
+    ``NPV TAB K2.npv`` are written with '_', line 13 gets its ')'). The program lies in /usr/user, the
+    current directory in which the example's bare file names find the tables. The first run creates the
+    channel-2 table file and changes its columns (X2 Y2 Z2 -> X2 Z2 U); the second finds it and creates
+    NPV2 with its layout; the third changes nothing. The tables are files: FILEACCESS gives 6 (R, W)."""
+    (tmp_path / "files/usr/user").mkdir(parents=True)
+    name = "files/usr/user/p.cpl"
+    runs = [run_text(FXCR_EXAMPLE, name=name, machine=reference()) for _ in range(3)]
     assert [r["status"] for r in runs] == ["ok"] * 3, [r["error"] for r in runs]
     assert [(r["variables"]["F1%"], r["variables"]["F2%"]) for r in runs] == [(6, -1), (6, 6), (6, 6)]
     r = run_text('1 N%=3\n2 A=FXC("U",54,"NPV2_TAB_K2.npv")\n3 B=FXC(2,54,"NPV2_TAB_K2.npv")\n'
-                 '4 C=FXC("Y2",54,"NPV2_TAB_K2.npv")\nM30\n', name="q.cpl", machine=reference())
+                 '4 C=FXC("Y2",54,"NPV2_TAB_K2.npv")\nM30\n', name=name, machine=reference())
     assert r["variables"] == {"N%": 3, "A": 0.0, "B": 0.0}  # columns U and 2 (Z2) exist
     assert r["error"]["code"] == "1938" and r["error"]["line"] == 4  # Y2 was deleted
+    heading = (tmp_path / "files/usr/user/NPV2_TAB_K2.npv").read_text(encoding="latin-1").split("\n")[1]
+    assert heading.split() == ["G", "X2", "Z2", "U:R"]
 
 
 AXIS_CHANNEL = """10 REM Program queries number of axes in the system and the

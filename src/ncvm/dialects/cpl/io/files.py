@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import os
 import stat
+import tempfile
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -155,6 +156,11 @@ class CplFiles:
         records = [line[:-1] if line.endswith("\r") else line for line in lines]
         return records, canonical
 
+    @classmethod
+    def read_records(cls, path: Path) -> list[str]:
+        """The records of a file, in whatever form it is (for readers outside the file table)."""
+        return cls._read_records(path)[0]
+
     @staticmethod
     def _check_reclen(records: list[str], reclen: int | None, name: str) -> None:
         if reclen is None:
@@ -254,6 +260,31 @@ class CplFiles:
             f.write(data.encode("latin-1", errors="replace"))
             f.flush()
             self._stamp(f.fileno(), h.path)
+
+    def replace_records(self, path: Path, records: list[str]) -> None:
+        """Write a whole file in the control's form atomically: a temporary file beside it, synced and
+        dated like every file the program writes, then renamed over the old one (keeping its access
+        rights), so a crash leaves either the old file or the new one, never a half-written one."""
+        data = "".join(r + "\n" for r in records) + EOF_MARKER
+        path.parent.mkdir(parents=True, exist_ok=True)
+        mode = stat.S_IMODE(path.stat().st_mode) if path.exists() else 0o644
+        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+        try:
+            with os.fdopen(fd, "wb") as f:
+                f.write(data.encode("latin-1", errors="replace"))
+                f.flush()
+                os.fchmod(f.fileno(), mode)
+                self._stamp(f.fileno(), Path(tmp))
+            os.replace(tmp, path)
+        except BaseException:
+            Path(tmp).unlink(missing_ok=True)
+            raise
+        if self.durable:  # the rename itself survives a crash once the directory is synced
+            dfd = os.open(path.parent, os.O_RDONLY)
+            try:
+                os.fsync(dfd)
+            finally:
+                os.close(dfd)
 
     def _append_record(self, h: Handle, text: str) -> None:
         """A completed record at the EOF marker (sequential files): written over the old marker."""

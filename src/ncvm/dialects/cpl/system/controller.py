@@ -2,8 +2,9 @@
 zero-shift tables, tool compensation and the tool database, MACODA, the PLC image, the error log.
 
 Everything is loaded from the machine file's [cpl] section with defaults that match the machine's axes;
-ZS tables, tool tables and the tool database changed by a program are kept in the session's SQLite store
-(namespaces cpl.zs, cpl.tc, cpl.tdb) so the next run sees them, as the control keeps them.
+the database ZS tables V1..V3 and the active one, tool tables and the tool database changed by a program
+are kept in the session's SQLite store (namespaces cpl.zs, cpl.tc, cpl.tdb) so the next run sees them, as
+the control keeps them. ZS tables named by a path are files under the file root (offsets.py, zsfile.py).
 """
 
 from __future__ import annotations
@@ -42,7 +43,8 @@ class Controller:
     axes: dict[int, PhysAxis] = field(default_factory=dict)
     zs_unit: str = "mm"
     zs_active: str = "V1"
-    #: table name -> {"columns": [axis names], "unit": "mm"|"inch", "strict": 0|1, "rows": {"G54": [...]}}
+    #: table name -> {"columns": [axis names], "unit": "mm"|"inch", "strict": 0|1, "rows": {"G54": [...]},
+    #: "rotary": [axis names]}; at run time only V1..V3 and the active table (the others are files)
     zs_tables: dict[str, dict] = field(default_factory=dict)
     external: dict[str, list[float]] = field(default_factory=dict)  # G160/G260/G360, logical axes 1..8
     tc_unit: str = "mm"
@@ -216,6 +218,7 @@ def _zs_table(c: Controller, where: str, table: dict) -> dict:
     """A ZS table from the machine file: rows G54 ... G259 (one value per column), optional columns/unit."""
     columns = [str(n).upper() for n in table.get("columns", [c.axes[i].name for i in sorted(c.axes)])]
     out = new_zs_table(columns, table.get("unit", c.zs_unit), int(table.get("strict", 0)))
+    out["rotary"] = [a.name for a in c.axes.values() if a.rotary and a.name in columns]
     for row, vals in table.items():
         if row in ("columns", "unit", "strict"):
             continue

@@ -3,14 +3,21 @@
 The active ZS table (machine file [cpl] zs_active, default the database table V1) is the one the NC
 kernel uses: its rows G54..G59 are the kernel's work offsets, so a value a program writes acts on the
 next G54..G59 selection and on the active one at once (kernel.refresh_offsets). External shifts
-G160/G260/G360 act as the kernel's additive offsets. Tables changed by a program are kept in the
-session store (namespace cpl.zs).
+G160/G260/G360 act as the kernel's additive offsets. The database tables V1..V3 and the active table
+are kept in the session store (namespace cpl.zs); every other table is named by a path and is a file
+under the controller's file root (zsfile.py), found by the rules of the CPL file functions.
 """
 
 from __future__ import annotations
 
+import math
+from pathlib import Path
+
+from ....diagnostics import UsageError
+from ....machine.files import FileRootError, resolve_in_root
 from ..errors import CplError
-from ..io.values import text_of
+from ..io.values import is_text, text_of
+from . import zsfile
 from .axes import kernel_index, nul, resolve, to_unit
 from .controller import EXTERNAL, ZS_ROWS, new_zs_table
 from .gfuncs import additive
@@ -22,8 +29,10 @@ DB_TABLES = {1: "V1", 2: "V2", 3: "V3"}
 
 # -- the tables and the kernel ---------------------------------------------------------------------
 def setup(rt) -> None:
-    """At start: make sure V1..V3 and the active table exist; the active table and the kernel agree."""
+    """At start: make sure V1..V3 and the active table exist; the active table and the kernel agree;
+    other tables of the machine file (or of an older store) become files."""
     c = rt.ctl
+    _tables_to_files(rt)
     names = [c.axes[i].name for i in sorted(c.axes)]
     for n in DB_TABLES.values():
         if n not in c.zs_tables:
@@ -42,6 +51,24 @@ def setup(rt) -> None:
                         table["rows"][row][table["columns"].index(name)] = _from_mm(v, table["unit"])
     c.external = {g: [0.0] * 8 for g in EXTERNAL}
     push_to_kernel(rt)
+
+
+def _tables_to_files(rt) -> None:
+    """A table of [cpl] zs_tables (or of a store written before tables were files) that is neither a
+    database table nor the active one is written to its file under the file root (a name without a
+    path lies in the root) when that file does not exist yet; an existing file wins."""
+    c = rt.ctl
+    store = c.store() if c.store is not None else None
+    for name in [n for n in c.zs_tables if n not in DB_TABLES.values() and n != c.zs_active]:
+        table = c.zs_tables.pop(name)
+        try:
+            path = resolve_in_root(rt.io.files.root, name)
+        except FileRootError:
+            raise UsageError(f"[cpl] zs_tables: {name!r} lies outside the file root") from None
+        if not path.exists():
+            zsfile.write(rt.io.files, path, name, table)
+        if store is not None and name in store.items("cpl.zs"):
+            store.delete("cpl.zs", name)
 
 
 def _from_mm(v: float, unit: str) -> float:
@@ -65,43 +92,70 @@ def push_to_kernel(rt) -> None:
     rt._shadow = None  # the prepared state is rebuilt with the new offsets
 
 
-def _table_key(c, name: str) -> str | None:
-    """The axis ZS table a name means: the full name, else the first table with the same file name."""
-    if name in c.zs_tables:
-        return name
-    base = name.rsplit("/", 1)[-1]
-    return next((key for key in c.zs_tables if key.rsplit("/", 1)[-1] == base), None)
+# -- naming a table ------------------------------------------------------------------------------
+class Table:
+    """One axis ZS table a statement works on: a database table in the store (``path`` None) or a
+    table file under the file root; ``save`` writes it back where it lives."""
+
+    __slots__ = ("key", "path", "data")
+
+    def __init__(self, key: str, path: Path | None, data: dict):
+        self.key, self.path, self.data = key, path, data
+
+    def save(self, rt) -> None:
+        c = rt.ctl
+        if self.path is None:
+            c.persist("cpl.zs", self.key, self.data)
+            if self.key == c.zs_active:
+                push_to_kernel(rt)
+        else:
+            zsfile.write(rt.io.files, self.path, self.key, self.data)
 
 
-def find_table(c, name: str) -> str:
-    if not isinstance(name, str):
+def _name_text(name) -> str:
+    if not is_text(nul(name)) or text_of(name) is None:
         raise CplError("CPL032", f"axis ZS table name {name!r}: a string is needed")
-    key = _table_key(c, name)
-    if key is None:
-        raise CplError("CPL040", f"axis ZS table {name!r} does not exist")
-    return key
+    return text_of(name)
+
+
+def _store_key(c, text: str) -> str | None:
+    """The database tables (V1..V3 and the active table) answer to their names spelled exactly."""
+    text = text.strip()
+    return text if text in c.zs_tables else None
+
+
+def open_table(rt, name) -> Table:
+    """The table ``name`` (a string) means; CPL040 when it does not exist or its file is damaged."""
+    c = rt.ctl
+    text = _name_text(name)
+    key = _store_key(c, text)
+    if key is not None:
+        return Table(key, None, c.zs_tables[key])
+    shown, path = rt.io.files.path_of(text)  # the CPL file functions' rules: INVALID FILE NAME, cwd
+    return Table(shown, path, zsfile.read(rt.io.files, path, shown))
 
 
 def f_fileaccess(rt, io, name) -> int:
-    """FILEACCESS (§6 L4406). The axis ZS tables live in the controller's store, not as files; one answers
-    as a readable and writable file (6), since the manual's FXCR example (L1809-1827) asks FILEACCESS
-    whether a table exists before creating it."""
+    """FILEACCESS (§6 L4406). A table file answers like any file; a database table (V1..V3, the active
+    table) has no file, and answers as a readable and writable one (6) when no file has its name."""
     bits = io.files.FILEACCESS(nul(name))
     text = text_of(name)
-    if bits == -1 and text and _table_key(rt.ctl, text.strip()) is not None:
+    if bits == -1 and text and _store_key(rt.ctl, text) is not None:
         return 6
     return bits
 
 
-def _table_name(c, table) -> str:
+def _table(rt, table) -> Table:
+    """The table of FXC's third argument: omitted = the active one, 1..3 = V1..V3, a string = a name."""
+    c = rt.ctl
     if table is None:
-        return c.zs_active
+        return Table(c.zs_active, None, c.zs_tables[c.zs_active])
     if table.__class__ is int:
         if table not in DB_TABLES:
             raise CplError("CPL023", f"ZS table {table}: 1, 2, 3 (V1..V3), 0 (external) or a file name")
-        return DB_TABLES[table]
-    if isinstance(table, str):
-        return find_table(c, table)
+        return Table(DB_TABLES[table], None, c.zs_tables[DB_TABLES[table]])
+    if is_text(table):
+        return open_table(rt, table)
     raise CplError("CPL032", f"ZS table {table!r}")
 
 
@@ -176,7 +230,7 @@ def f_fxc(rt, sel, gaddr=None, table=None, unit=None):
             raise CplError("CPL023", "external shifts take no unit (G70/G71 decide)")
         col, _ = _external_axis(rt, sel)
         return c.external[g][col] / rt.prepared_kernel().scale
-    t = c.zs_tables[_table_name(c, table)]
+    t = _table(rt, table).data
     col, _ = _column(t, sel)
     return _convert(t["rows"][_row(gaddr)][col], t["unit"], _unit(unit))
 
@@ -187,6 +241,8 @@ def p_fxc_set(rt, sel, gaddr=None, table=None, unit=None, value=None):
     value = nul(value)
     if isinstance(value, bool) or not isinstance(value, (int, float)):
         raise CplError("CPL032", "FXC needs a numeric value")
+    if not math.isfinite(value):
+        raise CplError("CPL023", f"FXC value {value}: a finite number")
     if gaddr is None:
         raise CplError("CPL023", "FXC write needs a G address")
     if table == 0:
@@ -198,75 +254,80 @@ def p_fxc_set(rt, sel, gaddr=None, table=None, unit=None, value=None):
         c.external[g][col] = (c.external[g][col] if inc else 0.0) + mm
         push_to_kernel(rt)
         return
-    name = _table_name(c, table)
-    t = c.zs_tables[name]
+    table = _table(rt, table)
+    t = table.data
     col, inc = _column(t, sel)
     row = t["rows"][_row(gaddr)]
     u = _unit(unit)
     v = value if u is None else _convert(value, u, t["unit"])
     row[col] = (row[col] if inc else 0.0) + v
-    c.persist("cpl.zs", name, t)
-    if name == c.zs_active:
-        push_to_kernel(rt)
+    table.save(rt)
 
 
 def p_fxcr(rt, layout, name, classif=0):
-    """FXCR: create an axis ZS table, one column per channel axis (chan > 0), per system axis (0),
+    """FXCR: create an axis ZS table file, one column per channel axis (chan > 0), per system axis (0),
     or with the layout of an existing table (L1781-1796). The unit is MACODA 9020 00010."""
     c = rt.ctl
-    name = nul(name)
-    if not isinstance(name, str):
-        raise CplError("CPL032", "FXCR needs a table name")
+    text = _name_text(name)
     if classif not in (0, 1):
         raise CplError("CPL023", f"classification {classif}: 0 or 1")
-    if isinstance(layout, str):
-        columns = list(c.zs_tables[find_table(c, layout)]["columns"])
-    elif layout == 0:
-        columns = [c.axes[i].name for i in sorted(c.axes)]
-    elif layout.__class__ is int and layout > 0:
-        columns = [a.name for a in c.channel_axes(layout)]
-        if not columns:
+    if is_text(layout):
+        model = open_table(rt, layout).data
+        columns, rotary = list(model["columns"]), list(model.get("rotary", ()))
+    elif layout.__class__ is int and layout >= 0:
+        axes = [c.axes[i] for i in sorted(c.axes)] if layout == 0 else c.channel_axes(layout)
+        if not axes:
             raise CplError("1938", f"channel {layout} has no axes")
+        columns, rotary = [a.name for a in axes], [a.name for a in axes if a.rotary]
     else:
         raise CplError("CPL023", f"FXCR layout {layout!r}")
-    if name in c.zs_tables:
-        raise CplError("CPL040", f"axis ZS table {name!r} exists already")
+    if _store_key(c, text) is not None:
+        raise CplError("CPL040", f"axis ZS table {text.strip()!r} exists already (database table)")
+    shown, path = rt.io.files.path_of(text)
+    if path.exists():
+        raise CplError("CPL040", f"axis ZS table {shown} exists already")
     unit = "inch" if c.macoda.get(902000010, [0])[0] == 2 else "mm"
-    c.zs_tables[name] = new_zs_table(columns, unit, classif)
-    c.persist("cpl.zs", name, c.zs_tables[name])
+    table = new_zs_table(columns, unit, classif)
+    table["rotary"] = rotary
+    Table(shown, path, table).save(rt)
 
 
 def p_fxdel(rt, name, col):
     """FXDEL: delete a column given by axis name or index (L1798-1827)."""
-    c = rt.ctl
-    key = find_table(c, nul(name))
-    t = c.zs_tables[key]
+    table = open_table(rt, name)
+    t = table.data
     i, _ = _column(t, col)
-    del t["columns"][i]
+    gone = t["columns"].pop(i)
     for row in t["rows"].values():
         del row[i]
-    c.persist("cpl.zs", key, t)
-    if key == c.zs_active:
-        push_to_kernel(rt)
+    if gone not in t["columns"] and gone in t.get("rotary", ()):
+        t["rotary"].remove(gone)
+    table.save(rt)
 
 
 def p_fxins(rt, name, pos, axis, axtype=1):
     """FXINS: insert a column for an axis in front of column pos (L1829-1840); axtype 0 rotary, 1 linear."""
-    c = rt.ctl
-    key = find_table(c, nul(name))
-    t = c.zs_tables[key]
+    table = open_table(rt, name)
+    t = table.data
     if axtype not in (0, 1):
         raise CplError("CPL023", f"axis type {axtype}: 0 rotary, 1 linear")
-    if not isinstance(axis, str):
+    if not is_text(nul(axis)) or text_of(axis) is None:
         raise CplError("CPL032", "FXINS needs an axis name")
+    axis = text_of(axis).strip().upper()
+    if not axis or any(ch.isspace() or ch == ":" for ch in axis) or axis.startswith("-"):
+        raise CplError("CPL023", f"FXINS axis name {axis!r}")
+    if axis in t["columns"]:
+        raise CplError("CPL040", f"axis {axis} is a column of the ZS table already")
+    if len(t["columns"]) >= zsfile.MAX_COLUMNS:
+        raise CplError("CPL040", f"the ZS table has {zsfile.MAX_COLUMNS} columns, no more fit")
     if pos.__class__ is int and pos == len(t["columns"]) + 1:
         i = len(t["columns"])
     else:
         i, _ = _column(t, pos)
-    t["columns"].insert(i, axis.upper())
+    t["columns"].insert(i, axis)
     for row in t["rows"].values():
         row.insert(i, 0.0)
     t.setdefault("rotary", [])
     if axtype == 0:
-        t["rotary"].append(axis.upper())
-    c.persist("cpl.zs", key, t)
+        t["rotary"].append(axis)
+    table.save(rt)
