@@ -44,7 +44,7 @@ from .system.controller import load_controller
 from .system.gfuncs import Typ3Block, activate, prepare
 from .system.ncs import ControlReset
 from .system.plc import f_ic
-from .system.positions import probe_block
+from .system.positions import MEASURING_G, probe_block
 from .unlinked import link_late, run_unlinked
 
 _EXTENDED = re.compile(r"\s*([A-Za-z][A-Za-z0-9_]*[0-9_][A-Za-z0-9_]*)\s*=\s*([-+]?(?:\d+\.?\d*|\.\d+))\s*$")
@@ -115,7 +115,7 @@ class CplRuntime:
         self.sys_procs = {name: row[0] for name, row in SYSTEM_PROCS.items()}
         self._keep_messages(session.canon)
         system_setup(self)
-        self._probing = any(getattr(w, "address", None) == "G" and (w.value == 75 or w.expr is not None)
+        self._probing = any(getattr(w, "address", None) == "G" and (w.value in MEASURING_G or w.expr is not None)
                             for u in linked.units.values() for st in u.prog.stmts for w in getattr(st, "words", ()))
 
     def _keep_messages(self, canon) -> None:
@@ -372,8 +372,8 @@ class CplRuntime:
             self.t_prep = max(self.t_prep, self.machine.clock.now)
 
     def enqueue_probe(self, blk) -> None:
-        """G75 (measuring) blocks are executed before preparation goes on (manual §4.2, SD(9) L2309)."""
-        if 75 in blk.g:
+        """Measuring blocks (G75, G275, G375) are executed before preparation goes on (manual §4.2, SD(9) L2309)."""
+        if MEASURING_G.intersection(blk.g):
             self.queue.append(probe_block(self, blk))
             self.drain()
         elif self.lookahead <= 0:

@@ -5,7 +5,8 @@ prepared kernel); "executed" values (WPOS, MPOS, APOS, SPOS) from the NC kernel,
 blocks a WAIT (or the look-ahead depth) let through: read before a WAIT they are stale (§4.1). They are
 read at the program's time: inside a block still moving then, at the point its move has reached
 (runtime.executed_position).
-Probe values are latched by a G75 block from the next "probe" scenario event (see probe_block).
+Probe values are latched by a measuring block (G75, G275, G375) from the next "probe" or "fixed_stop"
+scenario event (see probe_block).
 Transformations (transforms.py): CPOS is before them, WPOS after the contour shift and scaling but before
 the coordinate transformation G138 (manual L1323), MPOS after all; PPOS removes the axis zero shifts, the
 tool compensation and G168/G268 (L1571-1576) but none of the transformations (L1580-1583); CPROBE removes
@@ -13,6 +14,8 @@ all (L1430).
 """
 
 from __future__ import annotations
+
+import copy
 
 from ..errors import CplError
 from .axes import kernel_index, resolve, to_unit
@@ -96,33 +99,81 @@ def f_apos(rt, sel):
     return to_unit(rt.kernel, ax, _executed_mcs(rt, ax) - ax.lag)
 
 
-# -- probing (G75) -------------------------------------------------------------------------------
+# -- measuring: G75, G275, G375 -----------------------------------------------------------------
+#: the measuring G functions of §4.2: "probe input", "on-the-fly measurement", "measuring fixed stop"
+PROBE_INPUT, ON_THE_FLY, FIXED_STOP = 75, 275, 375
+MEASURING_G = frozenset((PROBE_INPUT, ON_THE_FLY, FIXED_STOP))
+
+
 def probe_block(rt, blk):
-    """A G75 measuring block: it travels like G1 towards its end point; if a "probe" scenario event is
-    left, the probe switches at the event's axis positions (MCS), the move stops there and the latch
-    holds them; otherwise the end point is reached and SD(9) gives 1. The block is executed before
-    preparation goes on, so SD(9) and the measured values can be read in the next CPL block (L1451)."""
+    """A measuring block; it travels like G1 and is executed before preparation goes on, so SD(9) and
+    the measured values can be read in the next CPL block (L1451).
+
+    G75: if a "probe" scenario event is left, the probe switches at the event's axis positions (MCS), the
+    move stops there and the latch holds them. G275 measures only its one programmed axis (L1591): the
+    event's position of that axis is latched and the move goes on to its end point. G375 travels its one
+    axis towards a fixed stop: a "fixed_stop" event stops it at the event's position, which the latch
+    holds. Without an event the end point is reached, nothing is latched and SD(9) gives 1."""
+    codes = [g for g in blk.g if g in MEASURING_G]
+    if len(codes) > 1:
+        raise CplError("CPL040", f"G{codes[0]:g} and G{codes[1]:g} cannot stand in one block")
+    code = int(codes[0])
     c, k = rt.ctl, rt.prepared_kernel()
-    events = [e for e in rt.machine.scenario if e.kind == "probe"]
-    used = getattr(c, "probes_used", 0)
     words = dict(blk.words)
-    g = tuple(1 if x == 75 else x for x in blk.g)
-    c.probe_latch = None
-    if used < len(events):
-        c.probes_used = used + 1
-        trigger = {str(n).upper(): float(v) for n, v in events[used].data.items()}
-        c.probe_latch = {name: v for name, v in trigger.items() if name in k.axis_of}
-        switch = [c.probe_latch.get(name, p) for name, p in zip(k.axis_names, k.machine_pos)]
-        target = k.program_position(switch)
-        for name in c.probe_latch:
-            if name in words:
-                i = k.axis_of[name]
-                words[name] = (target[i] if k.absolute else target[i] - k.prog[i]) / k.scale
-    return type(blk)(g, blk.m, words, blk.n, blk.msg, blk.src)
+    c.probe_latch, c.probe_code = None, code
+    if code == PROBE_INPUT:
+        trigger = _next_event(rt, "probe")
+        if trigger is not None:
+            c.probe_latch = {name: v for name, v in trigger.items() if name in k.axis_of}
+            _stop_at(k, words, c.probe_latch)
+    else:
+        name = _measured_axis(k, words, code)
+        event = _next_event(rt, "probe" if code == ON_THE_FLY else "fixed_stop")
+        if event is not None and name in event:
+            c.probe_latch = {name: event[name]}
+            if code == FIXED_STOP:
+                _stop_at(k, words, c.probe_latch)
+    out = copy.copy(blk)
+    out.g, out.words = tuple(1 if x in MEASURING_G else x for x in blk.g), words
+    return out
+
+
+def _next_event(rt, kind: str) -> dict | None:
+    """The next unused scenario event of ``kind`` as axis name -> MCS position; one per measuring block."""
+    c = rt.ctl
+    used = getattr(c, "events_used", None)
+    if used is None:
+        used = c.events_used = {}
+    events = [e for e in rt.machine.scenario if e.kind == kind]
+    n = used.get(kind, 0)
+    if n >= len(events):
+        return None
+    used[kind] = n + 1
+    return {str(a).upper(): float(v) for a, v in events[n].data.items()}
+
+
+def _measured_axis(k, words, code: int) -> str:
+    """G275 and G375 act on a single axis (L1449: "only one single axis is ever measured")."""
+    named = [n for n in words if n in k.axis_of]
+    if len(named) != 1:
+        what = "on-the-fly measurement" if code == ON_THE_FLY else "measuring fixed stop"
+        raise CplError("CPL040", f"G{code} ({what}) programs exactly one axis, not {len(named)}")
+    return named[0]
+
+
+def _stop_at(k, words, latch: dict) -> None:
+    """End the block's move where the latched axes stopped: their words become the program position of
+    that point."""
+    switch = [latch.get(name, p) for name, p in zip(k.axis_names, k.machine_pos)]
+    target = k.program_position(switch)
+    for name in latch:
+        if name in words:
+            i = k.axis_of[name]
+            words[name] = (target[i] if k.absolute else target[i] - k.prog[i]) / k.scale
 
 
 def probe_latch(rt) -> dict | None:
-    """The axis positions (MCS) at which the probe switched in the last G75 block, None if it did not."""
+    """The axis positions (MCS) measured by the last measuring block, None if nothing was measured."""
     return getattr(rt.ctl, "probe_latch", None)
 
 
@@ -133,6 +184,9 @@ def _latched(rt, ax) -> float:
     if latch is None:
         raise CplError("CPL040", "the probe has not switched (check SD(9) first)")
     if ax.name not in latch:
+        code = getattr(rt.ctl, "probe_code", PROBE_INPUT)
+        if code != PROBE_INPUT:
+            raise CplError("CPL040", f"axis {ax.name} was not measured: G{code} measures only its programmed axis")
         return _executed_mcs(rt, ax)
     return latch[ax.name]
 
@@ -161,6 +215,9 @@ def f_cprobe(rt, sel, seltype=1):
     probe must be enabled (MACODA 1003 00012) for every axis of the channel, not only the one read (L1441)."""
     ax = resolve(rt, sel, seltype)
     c = rt.ctl
+    code = getattr(c, "probe_code", PROBE_INPUT)
+    if code != PROBE_INPUT:
+        raise CplError("CPL040", f"CPROBE cannot read a G{code} measurement: it measures a single axis (L1449)")
     blocked = [a.name for a in c.channel_axes(c.channel) if not a.probe]
     if blocked:
         raise CplError("CPL040", f"CPROBE: MACODA 1003 00012 'probe can be activated' is not set for "
@@ -176,5 +233,5 @@ def f_cprobe(rt, sel, seltype=1):
 
 
 def probe_switched(rt) -> int:
-    """SD(9): 0 = the probe switched, 1 = not switched."""
+    """SD(9): 0 = the probe switched (after G375: the fixed stop was reached), 1 = not (L2229-2230)."""
     return 0 if probe_latch(rt) is not None else 1
