@@ -242,3 +242,42 @@ def test_tfo_orientation_turns_gpr_text_about_its_start(tmp_path):
     assert cols.max() > 320 and rows.min() > GRAPH_TOP - 200 - 17
     s.save_png(tmp_path / "tfo.png")
     assert not s.text_pixels[:, :290].any()
+
+
+def _drawing_screen() -> Screen:
+    s = Screen()
+    s.DLF()
+    s.COL(7, None, None, 7)
+    return s
+
+
+@pytest.mark.parametrize("centre, radius", [((-700.0, 200.0), 1000.0), ((300.0, -900.0), 1100.0),
+                                            ((1500.0, 1500.0), 1800.0)])
+def test_a_circle_larger_than_the_window_draws_the_pixels_of_the_full_sampling(centre, radius):
+    """A circle whose radius exceeds the window's diagonal is sampled only where the window can see it; it
+    sets the same pixels as sampling the whole circle two samples a pixel (done here by hand)."""
+    s, ref = _drawing_screen(), _drawing_screen()
+    s.CIR(centre[0], centre[1], radius)
+    n = int(math.ceil(2 * math.pi * radius * 2))
+    seen: set = set()
+    for i in range(n + 1):
+        a = 2 * math.pi * i / n
+        p = (round(centre[0] + radius * math.cos(a)), round(centre[1] + radius * math.sin(a)))
+        if p not in seen:
+            seen.add(p)
+            ref._plot(p[0], p[1], len(seen) - 1)
+    assert np.array_equal(s.canvas, ref.canvas)
+    assert np.any(s.canvas != _drawing_screen().canvas)
+
+
+def test_a_huge_circle_is_drawn_where_it_crosses_the_window_without_tracing_all_of_it():
+    """A circle of radius 1e9 pixels through the window's middle looks like a straight vertical line there
+    (sampling all of it would take 1.3e10 samples); CIR(554,135,7e30), found by generated programs, used to
+    exhaust memory: its centre is in the window, so it misses the window and draws nothing."""
+    s = _drawing_screen()
+    s.CIR(300 - 1e9, 200, 1e9)
+    changed = np.argwhere(np.any(s.canvas != _drawing_screen().canvas, axis=2))
+    assert len(changed) > 300 and set(changed[:, 1]) == {300}
+    blank = _drawing_screen()
+    blank.CIR(554, 135, 7e30)
+    assert np.array_equal(blank.canvas, _drawing_screen().canvas)

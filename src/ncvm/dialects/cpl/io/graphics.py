@@ -291,16 +291,38 @@ class Graphics:
         radius_px = r * self._scale()
         n = max(8, int(math.ceil(abs(sweep) * radius_px * 2)))
         sign = -1.0 if clockwise else 1.0
-        seen = set()
-        step = 0
-        for i in range(n + 1):
-            a = start + sign * sweep * i / n
-            px, py = self.to_pixel(xc + r * math.cos(a), yc + r * math.sin(a))
-            p = (round(px), round(py))
-            if p not in seen:
-                seen.add(p)
-                self._plot(p[0], p[1], step)
-                step += 1
+        for first, last in self._visible_samples(xc, yc, radius_px, start, sweep, sign, n):
+            seen = set()
+            step = first // 2  # about the pixels drawn before it: the line style's phase along the arc
+            for i in range(first, last + 1):
+                a = start + sign * sweep * i / n
+                px, py = self.to_pixel(xc + r * math.cos(a), yc + r * math.sin(a))
+                p = (round(px), round(py))
+                if p not in seen:
+                    seen.add(p)
+                    self._plot(p[0], p[1], step)
+                    step += 1
+
+    def _visible_samples(self, xc: float, yc: float, radius_px: float, start: float, sweep: float, sign: float,
+                         n: int) -> list[tuple[int, int]]:
+        """The ranges of the arc's n + 1 samples (two a pixel) that can fall into the window: all of them, unless
+        the circle is larger than the window; then its centre lies outside the window (or the circle misses
+        it) and only the samples under the angles the window is seen at from the centre can show."""
+        w = self.window
+        corners = [(x, y) for x in (w.xl, w.xr) for y in (w.yb, w.yt)]
+        if radius_px <= math.hypot(w.xr - w.xl, w.yt - w.yb):
+            return [(0, n)]
+        cx, cy = self.to_pixel(xc, yc)
+        near = math.hypot(max(w.xl - cx, 0.0, cx - w.xr), max(w.yb - cy, 0.0, cy - w.yt))
+        if not near - 1 <= radius_px <= max(math.hypot(x - cx, y - cy) for x, y in corners) + 1:
+            return []
+        base = math.atan2((w.yb + w.yt) / 2 - cy, (w.xl + w.xr) / 2 - cx)
+        offsets = [(math.atan2(y - cy, x - cx) - base + math.pi) % (2 * math.pi) - math.pi for x, y in corners]
+        margin = 2.0 / radius_px
+        lo = ((base + min(offsets) - margin - start) * sign) % (2 * math.pi)  # along the arc from its start
+        hi = lo + (max(offsets) - min(offsets) + 2 * margin)
+        ranges = [(lo, min(hi, sweep))] + ([(0.0, min(hi - 2 * math.pi, sweep))] if hi > 2 * math.pi else [])
+        return [(max(0, math.floor(a / sweep * n)), min(n, math.ceil(b / sweep * n))) for a, b in ranges if a <= b]
 
     def FIL(self, x, y, pattern, fill, contour=None) -> None:  # noqa: N802
         """``FIL(x,y,pattern,fill[,contour])``: flood the closed contour around (x,y) with ``fill``;
