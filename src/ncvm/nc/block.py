@@ -49,6 +49,11 @@ def row_block(row: tuple) -> Block:
     return Block((row[0],) if row[0] >= 0 else (), (), words, row[ROW_N], None, row[ROW_SRC])
 
 
+def as_block(item):
+    """A motion queue's item as a Block: a plain row turned into one, anything else as it is."""
+    return row_block(item) if item.__class__ is tuple else item
+
+
 def block_row(blk: Block) -> tuple | None:
     """A Block as a plain row, or None when it carries more than a plain block may."""
     g, words = blk.g, blk.words
@@ -180,8 +185,7 @@ class PlainRun:
     def block(self, i: int) -> Block:
         """Block ``i`` as the line parser reads it (or as it was built)."""
         if self.origin is not None:
-            b = self.origin[i]
-            return row_block(b) if b.__class__ is tuple else b
+            return as_block(self.origin[i])
         line = int(self.lines[i])
         return parse_din_line(self.source[line - 1], Src(self.file, line))
 

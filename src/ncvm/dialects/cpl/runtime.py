@@ -24,7 +24,7 @@ from pathlib import Path
 
 from ...diagnostics import Frame, RuntimeFault, Span
 from ...machine.model import PlcImage, SimClock
-from ...nc.block import ROW_LINE, Block, DinSyntaxError, parse_din_line, row_block
+from ...nc.block import ROW_LINE, Block, DinSyntaxError, as_block, parse_din_line
 from ...nc.canon import Canon, Src
 from ...nc.midmove import MotionRecorder, position_at
 from ...nc.plainrun import execute_segments, plain_segments
@@ -402,7 +402,7 @@ class CplRuntime:
         if blk.__class__ is Typ3Block:
             activate(self, self.kernel, blk)
         else:
-            self.kernel.execute(row_block(blk) if blk.__class__ is tuple else blk)
+            self.kernel.execute(as_block(blk))
 
     def drain(self) -> None:
         """WAIT without parameters: stop preparation until every block before it has been executed."""
@@ -431,7 +431,7 @@ class CplRuntime:
             if blk.__class__ is Typ3Block:
                 activate(self, self._shadow, blk)
             else:
-                self._shadow.execute(row_block(blk) if blk.__class__ is tuple else blk)
+                self._shadow.execute(as_block(blk))
             self._shadow_at += 1
         return self._shadow
 
@@ -477,7 +477,7 @@ class CplRuntime:
         """The block the channel is executing at the program's time: the one still moving, else the oldest
         one in the motion queue; None when the channel stands idle."""
         blk = self.running[0] if self.moving() else (self.queue[0] if self.queue else None)
-        return row_block(blk) if blk.__class__ is tuple else blk
+        return as_block(blk)
 
     def execute_next(self) -> bool:
         """The program waits for execution to go on (MCODS with an unchanged version): to the end of the block
