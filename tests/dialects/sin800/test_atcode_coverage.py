@@ -10,20 +10,12 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
+from sin800_helpers import R, machine, run_mpf
 
 from ncvm.api import run
 from ncvm.runtime.session import RunOptions
 
-MACHINE = """
-[[axis]]
-name = "X"
-[[axis]]
-name = "Y"
-[[axis]]
-name = "Z"
-[sin800]
-control = "880"
-channel = 1
+MACHINE = machine(extra="""channel = 1
 nc_md = { "2241" = 1200, "5002" = "00100000", "5010" = "00000001" }
 cycle_md = { "400" = 17, "801" = "00000101", "802" = "00000010", "1000" = 33, "7000" = "00000011" }
 plc_md = { "20" = 40, "3000" = "00010010", "3001" = "00010110" }
@@ -38,7 +30,7 @@ Q = { "2" = "00100000", "6" = "00010010", "7" = "00110100" }
 P = { "3" = "10000001", "8" = "00000001", "9" = "00000010" }
 F = { "10" = "11110000", "20" = "11111111", "21" = "11111110" }
 DB = { "2" = [0, 0, 0, 0, 20] , "30" = [0, 0, 0, 0] }
-"""
+""")
 
 
 PLAIN = MACHINE.replace("zero_offsets = { EXTERNAL = [0.0, 7.0, 0.0], DRF = [0.0, 0.25, 0.0], "
@@ -50,21 +42,11 @@ S810 = PLAIN.replace('control = "880"', 'control = "810"')
 
 
 def _run(tmp_path: Path, text: str, machine: str = MACHINE, state: str = ".s") -> dict:
-    (tmp_path / "machine.toml").write_text(machine)
-    (tmp_path / "p.mpf").write_text(text)
-    result, _ = run(tmp_path / "p.mpf", dialect="sin800", machine=tmp_path / "machine.toml",
-                    options=RunOptions(state_dir=tmp_path / state))
-    return result
+    return run_mpf(tmp_path, text, machine_text=machine, name="p.mpf", state=state)
 
 
 def _ok(tmp_path: Path, text: str, machine: str = MACHINE) -> dict:
-    result = _run(tmp_path, text, machine)
-    assert result["status"] == "ok", result["error"]
-    return result
-
-
-def _r(result: dict, n: int) -> float:
-    return result["variables"].get(f"R{n}", 0.0)
+    return run_mpf(tmp_path, text, machine_text=machine, name="p.mpf", state=".s", ok=True)
 
 
 def _cl800_error(tmp_path: Path, text: str) -> str:
@@ -80,14 +62,14 @@ def test_push_saves_and_zeroes_pop_restores(tmp_path):
     """L6386-6413: push saves the listed R parameters and sets them to 0; pop restores them."""
     r = _ok(tmp_path, "%MPF1\nR50=5 R52=6 R53=7 R54=8\n@040 K2 R50 R52 @041 R53 R54 R1=R50+R52+R53+R54\n"
                       "R50=1 R53=2 @043 R53 R54 @042 K2 R50 R52 R2=R50+R52+R53+R54\nM30\n")
-    assert _r(r, 1) == 0.0 and _r(r, 2) == 26.0
-    assert [_r(r, n) for n in (50, 52, 53, 54)] == [5.0, 6.0, 7.0, 8.0]
+    assert R(r, 1) == 0.0 and R(r, 2) == 26.0
+    assert [R(r, n) for n in (50, 52, 53, 54)] == [5.0, 6.0, 7.0, 8.0]
 
 
 def test_ess_runs_without_effect_on_the_program(tmp_path):
     """@00f only enables the start by softkey (L1100-1104): the program's results are the same."""
     r = _ok(tmp_path, "%MPF1\n@00f R1=2 G0 X5\nM30\n")
-    assert _r(r, 1) == 2.0 and r["position"]["X"] == 5.0
+    assert R(r, 1) == 2.0 and r["position"]["X"] == 5.0
 
 
 # -- main group 2: general data transfer ----------------------------------------------------------
@@ -99,10 +81,10 @@ def test_clear_xchg_bit_and_clear_mib(tmp_path):
     r = _ok(tmp_path, "%MPF1\nR60=100 @200 R60 R30=10 R20=30 @202 R30 R20\n"
                       "R70=71 R71=1 R72=2 @202 P70 R72 R73=1011 @203 R74 R73 K1 @203 R75 R73 K2\n"
                       "@210 K100 K110 @211 R1 K100 @211 R2 K105 @211 R3 K110 @211 R4 K111\nM30\n", machine)
-    assert _r(r, 60) == 0.0 and _r(r, 30) == 30.0 and _r(r, 20) == 10.0
-    assert _r(r, 71) == 2.0 and _r(r, 72) == 1.0  # XCHG([R70] = R71, R72)
-    assert _r(r, 74) == 1.0 and _r(r, 75) == 0.0  # 00001011: bit 1 set, bit 2 clear
-    assert [_r(r, n) for n in (1, 2, 3, 4)] == [0.0, 0.0, 0.0, 4.0]  # MIB 100..110 cleared, 111 kept
+    assert R(r, 60) == 0.0 and R(r, 30) == 30.0 and R(r, 20) == 10.0
+    assert R(r, 71) == 2.0 and R(r, 72) == 1.0  # XCHG([R70] = R71, R72)
+    assert R(r, 74) == 1.0 and R(r, 75) == 0.0  # 00001011: bit 1 set, bit 2 clear
+    assert [R(r, n) for n in (1, 2, 3, 4)] == [0.0, 0.0, 0.0, 4.0]  # MIB 100..110 cleared, 111 kept
 
 
 # -- main group 3 / 4: machine and setting data ---------------------------------------------------
@@ -112,13 +94,13 @@ def test_cycle_machine_data_reads(tmp_path):
     """L2331-2345: MDZ(0,400), MDZBY(1,801), MDZBI(1,802,1); central data with channel 0."""
     r = _ok(tmp_path, "%MPF1\n@303 R50 K0 K400 @304 R51 K1 K801 @305 R52 K1 K802 K1 @305 R53 K0 K802 K0\n"
                       "@303 R54 K0 K1000 @304 R55 K0 K7000\nM30\n")
-    assert [_r(r, n) for n in range(50, 56)] == [17.0, 101.0, 1.0, 0.0, 33.0, 11.0]
+    assert [R(r, n) for n in range(50, 56)] == [17.0, 101.0, 1.0, 0.0, 33.0, 11.0]
 
 
 def test_plc_machine_data_reads_manual_example(tmp_path):
     """L2350-2365: MDP(20) = 40; MDPBY(3000) on 00010010 gives 10010; MDPBI(3001,2) on 00010110 gives 1."""
     r = _ok(tmp_path, "%MPF1\n@306 R93 K20 @307 R94 K3000 @308 R95 K3001 K2 @308 R96 K3001 K0\nM30\n", S810)
-    assert [_r(r, n) for n in (93, 94, 95, 96)] == [40.0, 10010.0, 1.0, 0.0]
+    assert [R(r, n) for n in (93, 94, 95, 96)] == [40.0, 10010.0, 1.0, 0.0]
 
 
 def test_setting_data_reads_manual_example(tmp_path):
@@ -126,8 +108,8 @@ def test_setting_data_reads_manual_example(tmp_path):
     SEZBI(0,802,2)."""
     r = _ok(tmp_path, "%MPF1\n@310 R80 K3041 @311 R81 K5013 @312 R82 K5001 K0 @313 R50 K1 K400\n"
                       "@314 R51 K0 K802 @315 R52 K0 K802 K2 @315 R53 K0 K802 K1\nM30\n")
-    assert [_r(r, n) for n in (80, 81, 82)] == [2500.0, 11000111.0, 1.0]
-    assert [_r(r, n) for n in (50, 51, 52, 53)] == [12.5, 100.0, 1.0, 0.0]
+    assert [R(r, n) for n in (80, 81, 82)] == [2500.0, 11000111.0, 1.0]
+    assert [R(r, n) for n in (50, 51, 52, 53)] == [12.5, 100.0, 1.0, 0.0]
 
 
 def test_machine_data_writes_read_back(tmp_path):
@@ -136,9 +118,9 @@ def test_machine_data_writes_read_back(tmp_path):
     r = _ok(tmp_path, "%MPF1\n@403 K0 K401 K-7.5 @404 K1 K803 K1001 @405 K0 K801 K1 K1 @406 K2000 K12\n"
                       "@407 K6002 K10000001 @408 K6002 K1 K1\n"
                       "@303 R1 K0 K401 @304 R2 K0 K803 @304 R3 K0 K801 @306 R4 K2000 @307 R5 K6002\nM30\n")
-    assert [_r(r, n) for n in range(1, 6)] == [-7.5, 1001.0, 111.0, 12.0, 10000011.0]
+    assert [R(r, n) for n in range(1, 6)] == [-7.5, 1001.0, 111.0, 12.0, 10000011.0]
     r = _ok(tmp_path, "%MPF1\n@408 K3000 K0 K1 @409 K2521 K3000 @307 R6 K3000 @309 R7 K2521\nM30\n", S810)
-    assert (_r(r, 6), _r(r, 7)) == (10011.0, 3000.0)
+    assert (R(r, 6), R(r, 7)) == (10011.0, 3000.0)
 
 
 @pytest.mark.parametrize("control,text,message", [
@@ -159,7 +141,7 @@ def test_drive_machine_data_reads_manual_example(tmp_path):
     MDDBI(2442,0,2) bit 2 of the low byte of 4."""
     r = _ok(tmp_path, "%MPF1\n@309 R60 K2521 @30a R61 K2441 K0 @30a R63 K2441 K1 @30b R62 K2442 K0 K2\nM30\n",
             S810)
-    assert [_r(r, n) for n in (60, 61, 62, 63)] == [4000.0, 100.0, 1.0, 11.0]
+    assert [R(r, n) for n in (60, 61, 62, 63)] == [4000.0, 100.0, 1.0, 11.0]
 
 
 def test_setting_data_writes_read_back(tmp_path):
@@ -168,7 +150,7 @@ def test_setting_data_writes_read_back(tmp_path):
                       "@413 K0 K401 K2.5 @414 K0 K803 K11 @415 K1 K802 K0 K1\n"
                       "@310 R1 K3041 @311 R2 K5013 @311 R3 K5001 @313 R4 K0 K401 @314 R5 K0 K803 @314 R6 K0 K802\n"
                       "M30\n")
-    assert [_r(r, n) for n in range(1, 7)] == [1800.0, 111.0, 1000.0, 2.5, 11.0, 101.0]
+    assert [R(r, n) for n in range(1, 7)] == [1800.0, 111.0, 1000.0, 2.5, 11.0, 101.0]
 
 
 def test_data_write_errors(tmp_path):
@@ -184,7 +166,7 @@ def test_tool_offset_write_then_read(tmp_path):
     """L3154-3182: TOS(1,2,3) = value loads P3 of D2 in TO area 1; TOAD adds. L2436: R80 = TOS(1,2,3)."""
     r = _ok(tmp_path, "%MPF1\n@320 R80 K1 K2 K3 @420 K1 K2 K3 K20 @423 K1 K2 K3 K0.5 @320 R81 K1 K2 K3\n"
                       "@320 R82 K1 K2 K0\nM30\n")
-    assert _r(r, 80) == 12.5 and _r(r, 81) == 20.5 and _r(r, 82) == 4711.0
+    assert R(r, 80) == 12.5 and R(r, 81) == 20.5 and R(r, 82) == 4711.0
 
 
 # -- zero offsets -------------------------------------------------------------------------------------
@@ -195,9 +177,9 @@ def test_zero_offset_reads(tmp_path):
     + external + tool offset, without DRF and PRESET."""
     r = _ok(tmp_path, "%MPF1\n@432 K1 K2 K20 @432 K2 K2 K1.5 @331 R80 K1 K2 @331 R81 K2 K2 @332 R60 K2\n"
                       "@333 R61 K2 @334 R65 K1 @430 K1 K2 K0 K500 G54\n@336 R82 K2 @336 R83 K1\nM30\n")
-    assert [_r(r, n) for n in (80, 81, 60, 61, 65)] == [20.0, 1.5, 7.0, 0.25, 3.0]
-    assert _r(r, 82) == 500.0 + 20.0 + 1.5 + 7.0  # settable + G58 + G59 + external (no DRF)
-    assert _r(r, 83) == 0.0  # PRESET 3.0 of axis 1 is not part of ZOS
+    assert [R(r, n) for n in (80, 81, 60, 61, 65)] == [20.0, 1.5, 7.0, 0.25, 3.0]
+    assert R(r, 82) == 500.0 + 20.0 + 1.5 + 7.0  # settable + G58 + G59 + external (no DRF)
+    assert R(r, 83) == 0.0  # PRESET 3.0 of axis 1 is not part of ZOS
 
 
 def test_zero_offset_writes_move_the_workpiece_frame(tmp_path):
@@ -206,18 +188,18 @@ def test_zero_offset_writes_move_the_workpiece_frame(tmp_path):
     next run's X10 is at machine X 10 + 100, this run's at 10 + 50."""
     r = _ok(tmp_path, "%MPF1\nR61=2 @432 K1 K1 K50 @434 K2 R61 @435 K1 K100\nG0 X10 Y10\n"
                       "@714 @361 R1 K1 @361 R2 K2 @331 R3 K1 K1 @333 R4 K2 @334 R5 K1\nM30\n", PLAIN)
-    assert [_r(r, n) for n in (3, 4, 5)] == [50.0, 2.0, 100.0]
-    assert _r(r, 1) == 10.0 + 50.0 and _r(r, 2) == 10.0 + 2.0
+    assert [R(r, n) for n in (3, 4, 5)] == [50.0, 2.0, 100.0]
+    assert R(r, 1) == 10.0 + 50.0 and R(r, 2) == 10.0 + 2.0
     r = _ok(tmp_path, "%MPF2\nG0 X10\n@714 @361 R1 K1 @334 R5 K1 @331 R3 K1 K1\nM30\n", PLAIN)
-    assert _r(r, 5) == 100.0 and _r(r, 3) == 50.0  # both kept by the NC (store)
-    assert _r(r, 1) == 10.0 + 50.0 + 100.0
+    assert R(r, 5) == 100.0 and R(r, 3) == 50.0  # both kept by the NC (store)
+    assert R(r, 1) == 10.0 + 50.0 + 100.0
 
 
 def test_rotation_angles_programmable_read_and_settable_additive(tmp_path):
     """ZOPRDW(1,2,1) (L2540), ZOFADW adds to the settable angle (L3262)."""
     r = _ok(tmp_path, "%MPF1\n@439 K0 K2 K1 K15 @338 R70 K1 K2 K1 @437 K0 K1 K1 K10 @438 K0 K1 K1 K5\n"
                       "@337 R71 K0 K1 K1\n@439 K0 K2 K1 K0 @437 K0 K1 K1 K0\nM30\n")
-    assert _r(r, 70) == 15.0 and _r(r, 71) == 15.0
+    assert R(r, 70) == 15.0 and R(r, 71) == 15.0
 
 
 # -- programmed setpoints ------------------------------------------------------------------------------
@@ -228,8 +210,8 @@ def test_prss_prad_prip_setpoints(tmp_path):
     (L3335-3360): a G02 quarter circle from (10, 0) around (0, 0) to (0, -10)."""
     r = _ok(tmp_path, "%MPF1\n@442 K0 K200 M3\n@342 R1 K0 K0\nG0 X10 Y0\n"
                       "@440 K1 K0 @440 K2 K-10 @448 K1 K-10 @448 K2 K0 G02 F100\n@714 @361 R2 K1 @361 R3 K2\nM30\n", PLAIN)
-    assert _r(r, 1) == 200.0
-    assert (_r(r, 2), _r(r, 3)) == (pytest.approx(0.0, abs=1e-9), pytest.approx(-10.0))
+    assert R(r, 1) == 200.0
+    assert (R(r, 2), R(r, 3)) == (pytest.approx(0.0, abs=1e-9), pytest.approx(-10.0))
     assert r["motion"]["feed_length"] == pytest.approx(10.0 * 3.141592653589793 / 2, rel=1e-6)
 
 
@@ -246,14 +228,14 @@ def test_prss_write_checks_the_spindle(tmp_path):
     assert "spindle 2 does not exist" in _cl800_error(tmp_path, "%MPF1\n@442 K2 K200 M3\nM30\n")
     assert "outside 0-6" in _cl800_error(tmp_path, "%MPF1\n@442 K7 K200 M3\nM30\n")
     r = _ok(tmp_path, "%MPF1\nR50=1\n@442 R50 K200 M3\n@342 R1 K0 K1\nM30\n")
-    assert _r(r, 1) == 200.0
+    assert R(r, 1) == 200.0
 
 
 def test_pcda_pcds_write_then_read(tmp_path):
     """L3362-3378 and L2571-2587: PCDA(1,1,6) = 1 then R50 = PCDA(1,1,6) reads 1; the same for PCDS."""
     r = _ok(tmp_path, "%MPF1\n@34b R49 K1 K1 K6 @44b K1 K1 K6 K1 @34b R50 K1 K1 K6 @44c K1 K0 K2 K1\n"
                       "@34c R51 K1 K0 K2 @34c R52 K1 K0 K3\nM30\n")
-    assert [_r(r, n) for n in (49, 50, 51, 52)] == [0.0, 1.0, 1.0, 0.0]
+    assert [R(r, n) for n in (49, 50, 51, 52)] == [0.0, 1.0, 1.0, 0.0]
 
 
 def test_drive_status_bits_read_the_machine_state(tmp_path):
@@ -261,7 +243,7 @@ def test_drive_status_bits_read_the_machine_state(tmp_path):
     machine = MACHINE.replace("channel = 1\n", 'channel = 1\nsob = { "3e1:1:0:2" = 1, "3e2:1:3:7" = 1, '
                                                '"3e3:2:1:0" = 1 }\n')
     r = _ok(tmp_path, "%MPF1\n@3e1 R1 K1 K0 K2 @3e1 R2 K1 K0 K3 @3e2 R3 K1 K3 K7 @3e3 R4 K2 K1 K0\nM30\n", machine)
-    assert [_r(r, n) for n in (1, 2, 3, 4)] == [1.0, 0.0, 1.0, 1.0]
+    assert [R(r, n) for n in (1, 2, 3, 4)] == [1.0, 0.0, 1.0, 1.0]
 
 
 def test_satc_write_is_kept(tmp_path):
@@ -278,7 +260,7 @@ def test_acpw_acp_and_ppch(tmp_path):
     """@360 ACPW: workpiece position; @362 ACP: machine position; @372 PPCH: the program's channel."""
     machine = PLAIN + "[offsets]\nG54 = [100.0, 0.0, 0.0]\n"
     r = _ok(tmp_path, "%MPF1\nG54 G0 X5\n@714 @360 R1 K1 @362 R2 K1 @372 R3\nM30\n", machine)
-    assert (_r(r, 1), _r(r, 2), _r(r, 3)) == (5.0, 105.0, 1.0)
+    assert (R(r, 1), R(r, 2), R(r, 3)) == (5.0, 105.0, 1.0)
 
 
 # -- PLC ------------------------------------------------------------------------------------------------
@@ -290,12 +272,12 @@ def test_plc_bits_bytes_words_reads(tmp_path):
                       "@391 R5 K1 K2 @392 R6 K1 K3 @393 R7 K1 K10\n"
                       "@3a0 R8 K1 K4 K0 @3a1 R9 K1 K6 K0 @3a2 R10 K1 K8 K0 @3a3 R11 K1 K20 K0 @3a1 R12 K1 K6 K2\n"
                       "@3a1 R13 K1 K6 K101\nM30\n")
-    assert [_r(r, n) for n in (1, 2, 3, 4)] == [1.0, 0.0, 1.0, 0.0]  # Q2.5; DB2 DW4 = 20 = bit 2 and 4
-    assert [_r(r, n) for n in (5, 6, 7)] == [100000.0, 10000001.0, 11110000.0]
-    assert _r(r, 8) == 0.0 and _r(r, 9) == 0x1234 and _r(r, 10) == 0x0102
-    assert _r(r, 11) == -2.0  # FW20 = 0xFFFE, 16-bit two's complement
-    assert _r(r, 12) == pytest.approx(466.0)  # 4660 with DIM 2: one digit after the decimal point
-    assert _r(r, 13) == 1234.0  # QW6 as BCD
+    assert [R(r, n) for n in (1, 2, 3, 4)] == [1.0, 0.0, 1.0, 0.0]  # Q2.5; DB2 DW4 = 20 = bit 2 and 4
+    assert [R(r, n) for n in (5, 6, 7)] == [100000.0, 10000001.0, 11110000.0]
+    assert R(r, 8) == 0.0 and R(r, 9) == 0x1234 and R(r, 10) == 0x0102
+    assert R(r, 11) == -2.0  # FW20 = 0xFFFE, 16-bit two's complement
+    assert R(r, 12) == pytest.approx(466.0)  # 4660 with DIM 2: one digit after the decimal point
+    assert R(r, 13) == 1234.0  # QW6 as BCD
 
 
 def test_plc_missing_peripheral_byte_is_the_cl800_error(tmp_path):
@@ -309,9 +291,9 @@ def test_plc_writes_read_back(tmp_path):
                       "@4a3 K1 K40 K0 K-300 @4b1 K1 K30 K2 K2 K100 K12345678\n"
                       "@383 R1 K1 K30 K0 K15 @3b0 R2 K1 K30 K0 K1 K0 @3b0 R3 K1 K30 K1 K1 K0 @3a3 R4 K1 K40 K0\n"
                       "@3b1 R5 K1 K30 K2 K2 K100 @394 R6 K1 K30 K1 @395 R7 K1 K30 K1\nM30\n")
-    assert _r(r, 1) == 1.0 and _r(r, 2) == -32768.0  # bit 15 set: 0x8000 signed
-    assert _r(r, 3) == 0x1234 and _r(r, 4) == -300.0 and _r(r, 5) == 12345678.0
-    assert (_r(r, 6), _r(r, 7)) == (10010.0, 110100.0)
+    assert R(r, 1) == 1.0 and R(r, 2) == -32768.0  # bit 15 set: 0x8000 signed
+    assert R(r, 3) == 0x1234 and R(r, 4) == -300.0 and R(r, 5) == 12345678.0
+    assert (R(r, 6), R(r, 7)) == (10010.0, 110100.0)
 
 
 # -- main group 6 -----------------------------------------------------------------------------------------
@@ -321,8 +303,8 @@ def test_dec_and_boolean_operations(tmp_path):
     """@621 DEC; @655 ORB, @657 ANDB, @658 NANDB, @659 NOTB on 1 and 0 (L3976-3995)."""
     r = _ok(tmp_path, "%MPF1\nR1=5 @621 R1 R50=1 R51=0\n@655 R52 R50 R51 @657 R54 R50 R51 @658 R55 R50 R51 "
                       "@659 R56 R50 @659 R57 R51 @657 R58 R50 K1 @655 R59 R51 K0\nM30\n")
-    assert _r(r, 1) == 4.0
-    assert [_r(r, n) for n in (52, 54, 55, 56, 57, 58, 59)] == [1.0, 0.0, 1.0, 0.0, 1.0, 1.0, 0.0]
+    assert R(r, 1) == 4.0
+    assert [R(r, n) for n in (52, 54, 55, 56, 57, 58, 59)] == [1.0, 0.0, 1.0, 0.0, 1.0, 1.0, 0.0]
 
 
 @pytest.mark.parametrize("code,a,b,expected", [
@@ -333,7 +315,7 @@ def test_boolean_comparison_assignment(tmp_path, code, a, b, expected):
     """@67x Var1 Var2 Value (L6772): Var1 = 1 when Var2 x Value holds, else 0; x = 0 "no comparison
     operator": Var1 is Var2 taken as a boolean (0 or not 0)."""
     r = _ok(tmp_path, f"%MPF1\nR1=7 R2={a} @{code} R1 R2 K{b}\nM30\n")
-    assert _r(r, 1) == float(expected)
+    assert R(r, 1) == float(expected)
 
 
 # -- main group 7 -----------------------------------------------------------------------------------------
@@ -345,7 +327,7 @@ def test_pos_msys_block_in_machine_coordinates(tmp_path):
     machine = PLAIN + "[offsets]\nG54 = [100.0, 50.0, 0.0]\n"
     r = _ok(tmp_path, "%MPF1\nG54 G0 X0 Y0\n@706 X1000 Y500\n@714 @361 R1 K1 @361 R2 K2\nX1\n"
                       "@714 @361 R3 K1\nM30\n", machine)
-    assert (_r(r, 1), _r(r, 2), _r(r, 3)) == (1000.0, 500.0, 101.0)
+    assert (R(r, 1), R(r, 2), R(r, 3)) == (1000.0, 500.0, 101.0)
 
 
 # -- main group a: I/O and operator control -------------------------------------------------------------
@@ -375,7 +357,7 @@ def test_inp_reads_r_parameters_from_the_v24_input(tmp_path):
     """INP(10) (L4540-4560): data read in over the V24 interface, here R parameters in tape format."""
     machine = MACHINE.replace("channel = 1\n", 'channel = 1\nv24_input = "R10=4.5\\nR11=-1\\n"\n')
     r = _ok(tmp_path, "%MPF1\n@a20 K1 @a28 K10 R12=R10+R11\nM30\n", machine)
-    assert _r(r, 10) == 4.5 and _r(r, 11) == -1.0 and _r(r, 12) == 3.5
+    assert R(r, 10) == 4.5 and R(r, 11) == -1.0 and R(r, 12) == 3.5
 
 
 def test_panel_menus_and_channel_display(tmp_path):
@@ -392,7 +374,7 @@ def test_inp_type_check_and_tape_format(tmp_path):
     machine = MACHINE.replace("channel = 1\n", f'channel = 1\nto_area = 1\nv24_input = "{tape}"\n')
     r = _ok(tmp_path, "%MPF1\n@a28 K0 @300 R1 K2241 @310 R2 K3041 @320 R3 K0 K2 K3 @320 R4 K0 K2 K0\n"
                       "@330 R5 K2 K2 K0 @337 R6 K0 K3 K1 @437 K0 K3 K1 K0\nM30\n", machine)
-    assert [_r(r, n) for n in range(1, 7)] == [900.0, 10.0, 1.25, 5.0, 2.0, 45.0]
+    assert [R(r, n) for n in range(1, 7)] == [900.0, 10.0, 1.25, 5.0, 2.0, 45.0]
     machine = MACHINE.replace("channel = 1\n", 'channel = 1\nv24_input = "R10=4.5\\n"\n')
     (tmp_path / "machine.toml").write_text(machine)
     (tmp_path / "p.mpf").write_text("%MPF1\n@a28 K5\nM30\n")
@@ -408,7 +390,7 @@ def test_outp_data_then_inp_on_another_nc(tmp_path):
     other = '[[axis]]\nname = "X"\n[sin800]\nv24_input = "' + tape + '"\n'
     (tmp_path / "other").mkdir()
     r = _ok(tmp_path / "other", "%MPF1\n@a28 K5 @300 R1 K2241 @301 R2 K5002\nM30\n", other)
-    assert (_r(r, 1), _r(r, 2)) == (1200.0, 100000.0)
+    assert (R(r, 1), R(r, 2)) == (1200.0, 100000.0)
 
 
 def test_outp_data_subroutines(tmp_path):
@@ -430,7 +412,7 @@ def test_acg_reads_the_active_g_function_of_a_group(tmp_path):
     machine = PLAIN + "[offsets]\nG55 = [0.0, 0.0, 0.0]\n"
     r = _ok(tmp_path, "%MPF1\nG71 G1 F100 G18 G55 G91 X1\n@714 @36b R1 K0 K0 @36b R2 K0 K2 @36b R3 K0 K5 @36b R4 K0 K8 "
                       "@36b R5 K1 K10\nG0 G17 G90 X0\n@714 @36b R6 K0 K0 @36b R7 K0 K2 @36b R8 K0 K10\nM30\n", machine)
-    assert [_r(r, n) for n in range(1, 9)] == [1.0, 18.0, 55.0, 71.0, 91.0, 0.0, 17.0, 90.0]
+    assert [R(r, n) for n in range(1, 9)] == [1.0, 18.0, 55.0, 71.0, 91.0, 0.0, 17.0, 90.0]
 
 
 def test_inch_basic_system_md_bit(tmp_path):
@@ -438,9 +420,9 @@ def test_inch_basic_system_md_bit(tmp_path):
     program starts in G70; X1 is 1 inch = 25.4 mm from machine zero (ACPM read in G71)."""
     inch = PLAIN.replace('"5002" = "00100000"', '"5002" = "00010000"')
     r = _ok(tmp_path, "%MPF1\n@302 R1 K5002 K4 @36b R2 K0 K8 G0 X1\nG71\n@714 @361 R3 K1\nM30\n", inch)
-    assert (_r(r, 1), _r(r, 2), _r(r, 3)) == (1.0, 70.0, pytest.approx(25.4))
+    assert (R(r, 1), R(r, 2), R(r, 3)) == (1.0, 70.0, pytest.approx(25.4))
     r = _ok(tmp_path, "%MPF1\n@36b R2 K0 K8 G0 X1\nG71\n@714 @361 R3 K1\nM30\n", PLAIN)
-    assert (_r(r, 2), _r(r, 3)) == (71.0, 1.0)
+    assert (R(r, 2), R(r, 3)) == (71.0, 1.0)
 
 
 def test_int_sec_result_seen_by_a_test_in_its_own_block(tmp_path):
@@ -450,8 +432,8 @@ def test_int_sec_result_seen_by_a_test_in_its_own_block(tmp_path):
     (tmp_path / "L20.spf").write_text(contour)
     r = _ok(tmp_path, "%MPF1\nG0 Y250 X750\nR50=20 R51=50 R52=750 R53=1\n"
                       "N10 @710 R54 R50\n@711 R70 R54 R62 Y250 X0 @141 R70 K1 K-10 R9=R9+1\nM30\n", PLAIN)
-    assert _r(r, 70) == 1.0 and _r(r, 72) == pytest.approx(320.0) and _r(r, 54) == 50.0 and _r(r, 55) == 400.0
-    assert _r(r, 9) == 1.0  # the words after the test run once, on the pass that found the point
+    assert R(r, 70) == 1.0 and R(r, 72) == pytest.approx(320.0) and R(r, 54) == 50.0 and R(r, 55) == 400.0
+    assert R(r, 9) == 1.0  # the words after the test run once, on the pass that found the point
 
 
 @pytest.mark.parametrize("target,ok", [(0, True), (98, True), (99, False), (500, False), (900, True), (998, True),

@@ -5,21 +5,11 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
+from sin800_helpers import machine, run_mpf
 
-from ncvm.api import run
 from ncvm.dialects.sinumerik.atcodes import AT_CODES
-from ncvm.runtime.session import RunOptions
 
-MACHINE = """
-[[axis]]
-name = "X"
-[[axis]]
-name = "Y"
-[[axis]]
-name = "Z"
-[sin800]
-control = "880"
-nc_md = { "100" = 3, "5001" = "00010010" }
+MACHINE = """nc_md = { "100" = 3, "5001" = "00010010" }
 cycle_md = { "10" = 4, "800" = "101" }
 plc_md = { "100" = 5, "6000" = "11" }
 drive_md = { "100" = 258, "2440" = 513 }
@@ -94,13 +84,9 @@ DRIVE_MD = ("309", "30a", "30b", "409", "40a", "40b")
 
 
 def _write(tmp_path: Path, text: str, files: dict | None = None, control: str = "880") -> dict:
-    (tmp_path / "machine.toml").write_text(MACHINE.replace('control = "880"', f'control = "{control}"'))
-    for name, body in (files or {}).items():
-        (tmp_path / name).write_text(body)
-    p = tmp_path / "p.mpf"
-    p.write_text(text)
-    result, _ = run(p, machine=tmp_path / "machine.toml", options=RunOptions(state_dir=tmp_path / ".s"))
-    return result
+    """``MACHINE`` holds the [sin800] data after the control line and the sections that follow it."""
+    return run_mpf(tmp_path, text, machine_text=machine(control=control, extra=MACHINE), name="p.mpf",
+                   files=files, state=".s")
 
 
 def test_every_code_has_a_sample():
