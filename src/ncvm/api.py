@@ -9,6 +9,7 @@ from .diagnostics import CompileFailed, Diagnostic, UsageError
 from .dialects import detect_dialect, get_dialect
 from .machine.config import load_machine, load_scenario
 from .machine.model import Machine
+from .machine.state import StateLock
 from .runtime.session import RunOptions, Session, run_guarded
 
 
@@ -57,14 +58,15 @@ def run(path: str | Path, dialect: str | None = None, machine: Machine | str | P
         # (a copy: a Machine the caller passes again for the next run keeps its own scenario)
         m = dataclasses.replace(m, scenario=sorted([*m.scenario, *load_scenario(options.scenario)],
                                                    key=lambda e: e.time))
-    session = Session(m, options, dialect=d)
-    error: Diagnostic | None
-    try:
-        error = run_guarded(session, lambda: front.run(str(path), text, session))
-    except CompileFailed as e:
-        error = e.diagnostics[0]
-    finally:
-        session.close()
+    with StateLock(options.state_dir):  # the controller's memory: one run at a time, refused at once
+        session = Session(m, options, dialect=d)
+        error: Diagnostic | None
+        try:
+            error = run_guarded(session, lambda: front.run(str(path), text, session))
+        except CompileFailed as e:
+            error = e.diagnostics[0]
+        finally:
+            session.close()
     return session.result(error), session
 
 

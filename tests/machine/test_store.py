@@ -9,7 +9,11 @@ import subprocess
 import sys
 import time
 
-from ncvm.machine.store import Store
+import pytest
+
+from ncvm.machine import store as store_module
+from ncvm.machine.state import StateError
+from ncvm.machine.store import SCHEMA, Store
 
 WRITER = """
 import sys
@@ -57,7 +61,7 @@ def test_failed_batch_rolls_back(tmp_path):
 def test_writer_killed_at_any_moment_leaves_store_consistent(tmp_path):
     env = dict(os.environ, PYTHONPATH=os.pathsep.join(sys.path))
     last_seen = 0
-    for delay in (0.05, 0.11, 0.17, 0.23, 0.31, 0.37):
+    for delay in (0.02, 0.05, 0.09, 0.13, 0.19, 0.25):
         proc = subprocess.Popen([sys.executable, "-c", WRITER, str(tmp_path)], stdout=subprocess.PIPE, text=True,
                                 env=env)
         # wait for the writer to be running, then kill it without warning after `delay`
@@ -78,3 +82,87 @@ def test_writer_killed_at_any_moment_leaves_store_consistent(tmp_path):
         assert a >= max(printed), "a value reported as committed was lost"
         assert a > last_seen, "the writer made progress and nothing went backwards"
         last_seen = a
+
+
+# -- a store ncvm cannot use: a clear StateError naming the file and what to do ------------------------------
+
+def filled_store(folder, keys: int = 300) -> None:
+    s = Store(folder)
+    with s.batch():
+        for k in range(keys):
+            s.put("cpl.perm", f"@{k}", "x" * 200)
+    s.close()
+
+
+def test_a_file_that_is_no_database_is_refused_and_left_alone(tmp_path):
+    png = b"\x89PNG\r\n\x1a\n" + bytes(range(256)) * 8
+    (tmp_path / "store.sqlite").write_bytes(png)
+    with pytest.raises(StateError) as e:
+        Store(tmp_path)
+    assert str(e.value) == (f"{tmp_path / 'store.sqlite'} is not an ncvm permanent store (not a SQLite database); "
+                            f"move it away or give another --state")
+    assert (tmp_path / "store.sqlite").read_bytes() == png
+
+
+def test_a_database_of_another_program_is_refused_and_left_alone(tmp_path):
+    db = sqlite3.connect(tmp_path / "store.sqlite")
+    db.execute("CREATE TABLE invoices (id INTEGER, amount REAL)")
+    db.commit()
+    db.close()
+    before = (tmp_path / "store.sqlite").read_bytes()
+    with pytest.raises(StateError, match=r"store.sqlite is not an ncvm permanent store \(it holds the tables "
+                                         r"invoices\); move it away or give another --state"):
+        Store(tmp_path)
+    assert (tmp_path / "store.sqlite").read_bytes() == before  # not converted to WAL, no table added
+    assert not (tmp_path / "store.sqlite-wal").exists()
+
+
+def test_a_truncated_store_is_refused_as_damaged(tmp_path):
+    filled_store(tmp_path)
+    path = tmp_path / "store.sqlite"
+    os.truncate(path, path.stat().st_size // 2)
+    with pytest.raises(StateError, match=rf"^the permanent store {path} is damaged \(.+\); move it away to start "
+                                         r"again from the machine file, or give another --state$"):
+        Store(tmp_path)
+
+
+def test_a_store_of_an_earlier_ncvm_is_kept(tmp_path):
+    db = sqlite3.connect(tmp_path / "store.sqlite")
+    db.executescript(SCHEMA + "INSERT INTO permanent VALUES ('cpl.perm', '@5', '12000');")
+    db.close()
+    s = Store(tmp_path)
+    assert s.get("cpl.perm", "@5") == 12000
+    s.close()
+
+
+def test_a_store_another_program_keeps_locked_is_refused_after_a_short_wait(tmp_path, monkeypatch):
+    Store(tmp_path).close()
+    shell = sqlite3.connect(tmp_path / "store.sqlite", isolation_level=None)
+    shell.execute("BEGIN EXCLUSIVE")
+    monkeypatch.setattr(store_module, "BUSY_TIMEOUT_S", 0.2)
+    s = Store(tmp_path)  # reading goes on (WAL): the write waits
+    t0 = time.monotonic()
+    with pytest.raises(StateError, match=f"the permanent store {tmp_path / 'store.sqlite'} is locked by another "
+                                         "program; close the program that has it open"):
+        s.put("cpl.perm", "@5", 1)
+    assert time.monotonic() - t0 < 5
+    shell.close()
+    s.put("cpl.perm", "@5", 2)  # the same store goes on once the other program has let go
+    assert s.get("cpl.perm", "@5") == 2
+    s.close()
+
+
+def test_a_full_store_says_so_and_keeps_what_was_written_before(tmp_path):
+    s = Store(tmp_path)
+    s.put("cpl.perm", "@5", 7)
+    pages = s._db.execute("PRAGMA page_count").fetchone()[0]
+    s._db.execute(f"PRAGMA max_page_count = {pages}")  # the file may not grow: as on a full disk
+    with pytest.raises(StateError, match=f"cannot write the permanent store {tmp_path / 'store.sqlite'}: the disk is "
+                                         "full; free some space and run again"):
+        with s.batch():
+            s.put("cpl.perm", "@5", 8)
+            s.put("cpl.perm", "@6", "x" * 100_000)
+    with pytest.raises(StateError, match="the disk is full"):
+        s.put("cpl.perm", "@7", "x" * 100_000)
+    assert s.get("cpl.perm", "@5") == 7 and s.get("cpl.perm", "@6") is None
+    s.close()

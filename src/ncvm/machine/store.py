@@ -5,6 +5,11 @@ by programs all go here, as (namespace, key) -> JSON value. Every write is its
 own transaction unless the caller groups writes with :meth:`Store.batch`; with
 WAL and ``synchronous=FULL`` a process killed at any moment leaves the last
 committed value of every key, never a torn one.
+
+Only one run uses a store at a time (:mod:`ncvm.machine.state` locks the state
+directory), so a run may keep the values it read. Every SQLite failure (another
+program holding the file, a damaged or foreign file, a read-only directory, a
+full disk) becomes a :class:`StateError` naming the file and what to do.
 """
 
 from __future__ import annotations
@@ -15,6 +20,8 @@ from contextlib import contextmanager
 from pathlib import Path
 from typing import Any, Iterator
 
+from .state import StateError, disk_full
+
 SCHEMA = """
 CREATE TABLE IF NOT EXISTS permanent (
     namespace TEXT NOT NULL,
@@ -23,6 +30,10 @@ CREATE TABLE IF NOT EXISTS permanent (
     PRIMARY KEY (namespace, key)
 ) WITHOUT ROWID;
 """
+#: ``PRAGMA application_id`` of an ncvm store ("NCVM"): a SQLite file of another program is never written
+APPLICATION_ID = 0x4E43564D
+#: how long to wait for a program other than ncvm (an sqlite3 shell, a backup) to let go of the file
+BUSY_TIMEOUT_S = 2.0
 
 
 class Store:
@@ -30,30 +41,74 @@ class Store:
 
     def __init__(self, state_dir: str | Path):
         self.path = Path(state_dir) / "store.sqlite"
-        self.path.parent.mkdir(parents=True, exist_ok=True)
-        self._db = sqlite3.connect(self.path, isolation_level=None, timeout=30.0)
-        self._db.execute("PRAGMA journal_mode=WAL")
-        self._db.execute("PRAGMA synchronous=FULL")
-        self._db.executescript(SCHEMA)
+        try:
+            self.path.parent.mkdir(parents=True, exist_ok=True)
+        except OSError as e:
+            raise StateError(f"cannot create the state directory {self.path.parent} ({e.strerror}); "
+                             f"give another --state") from None
+        self._db: sqlite3.Connection | None = None
         self._in_batch = False
+        try:
+            self._db = sqlite3.connect(self.path, isolation_level=None, timeout=BUSY_TIMEOUT_S)
+            self._adopt()
+            self._db.execute("PRAGMA journal_mode=WAL")
+            self._db.execute("PRAGMA synchronous=FULL")
+        except sqlite3.Error as e:
+            self.close()
+            raise self._error(e) from None
+        except StateError:
+            self.close()
+            raise
+
+    def _adopt(self) -> None:
+        """Refuse a file that is not an ncvm store or is damaged; stamp a new (or an older ncvm's) store."""
+        db = self._db
+        app = db.execute("PRAGMA application_id").fetchone()[0]
+        tables = [name for (name,) in db.execute("SELECT name FROM sqlite_master WHERE type='table'")]
+        older = app == 0 and tables in ([], ["permanent"])
+        if older and tables:
+            older = [c[1] for c in db.execute("PRAGMA table_info(permanent)")] == ["namespace", "key", "value"]
+        if app != APPLICATION_ID and not older:
+            what = f"it holds the tables {', '.join(tables)}" if tables else f"application id {app:#x}"
+            raise StateError(f"{self.path} is not an ncvm permanent store ({what}); move it away or give "
+                             f"another --state")
+        problems = [row[0] for row in db.execute("PRAGMA quick_check")]
+        if problems != ["ok"]:
+            raise StateError(self._damaged(problems[0]))
+        if app != APPLICATION_ID:
+            db.executescript(f"BEGIN IMMEDIATE; {SCHEMA} PRAGMA application_id = {APPLICATION_ID}; COMMIT;")
 
     def get(self, namespace: str, key: str, default: Any = None) -> Any:
-        row = self._db.execute("SELECT value FROM permanent WHERE namespace=? AND key=?", (namespace, key)).fetchone()
+        try:
+            row = self._db.execute("SELECT value FROM permanent WHERE namespace=? AND key=?",
+                                   (namespace, key)).fetchone()
+        except sqlite3.Error as e:
+            raise self._error(e) from None
         return default if row is None else json.loads(row[0])
 
     def items(self, namespace: str) -> dict[str, Any]:
-        rows = self._db.execute("SELECT key, value FROM permanent WHERE namespace=?", (namespace,))
+        try:
+            rows = self._db.execute("SELECT key, value FROM permanent WHERE namespace=?", (namespace,)).fetchall()
+        except sqlite3.Error as e:
+            raise self._error(e) from None
         return {k: json.loads(v) for k, v in rows}
 
     def put(self, namespace: str, key: str, value: Any) -> None:
-        self._db.execute("INSERT OR REPLACE INTO permanent(namespace, key, value) VALUES (?,?,?)",
-                         (namespace, key, json.dumps(value)))
+        self._write("INSERT OR REPLACE INTO permanent(namespace, key, value) VALUES (?,?,?)",
+                    (namespace, key, json.dumps(value)))
 
     def delete(self, namespace: str, key: str | None = None) -> None:
         if key is None:
-            self._db.execute("DELETE FROM permanent WHERE namespace=?", (namespace,))
+            self._write("DELETE FROM permanent WHERE namespace=?", (namespace,))
         else:
-            self._db.execute("DELETE FROM permanent WHERE namespace=? AND key=?", (namespace, key))
+            self._write("DELETE FROM permanent WHERE namespace=? AND key=?", (namespace, key))
+
+    def _write(self, sql: str, args: tuple) -> None:
+        try:
+            self._db.execute(sql, args)
+        except sqlite3.Error as e:
+            self._rollback()
+            raise self._error(e) from None
 
     @contextmanager
     def batch(self) -> Iterator[None]:
@@ -62,16 +117,59 @@ class Store:
             yield
             return
         self._in_batch = True
-        self._db.execute("BEGIN IMMEDIATE")
         try:
-            yield
-        except BaseException:
-            self._db.execute("ROLLBACK")
-            raise
-        else:
-            self._db.execute("COMMIT")
+            try:
+                self._db.execute("BEGIN IMMEDIATE")
+            except sqlite3.Error as e:
+                raise self._error(e) from None
+            try:
+                yield
+            except BaseException:
+                self._rollback()
+                raise
+            try:
+                self._db.execute("COMMIT")
+            except sqlite3.Error as e:
+                self._rollback()
+                raise self._error(e) from None
         finally:
             self._in_batch = False
 
+    def _rollback(self) -> None:
+        """Give up the open transaction, if SQLite has not already (it does on a full disk)."""
+        try:
+            if self._db.in_transaction:
+                self._db.execute("ROLLBACK")
+        except sqlite3.Error:
+            pass  # the connection is unusable; the committed values are still in the file
+
     def close(self) -> None:
-        self._db.close()
+        if self._db is not None:
+            self._db.close()
+            self._db = None
+
+    # -- what to tell the user --------------------------------------------------------------
+    def _damaged(self, detail: str) -> str:
+        detail = " ".join(detail.replace("*** in database main ***", "").split())
+        return (f"the permanent store {self.path} is damaged ({detail}); move it away to start again from "
+                f"the machine file, or give another --state")
+
+    def _error(self, e: sqlite3.Error) -> StateError:
+        name = getattr(e, "sqlite_errorname", "") or ""
+        where, state = self.path, self.path.parent
+        if name.startswith(("SQLITE_BUSY", "SQLITE_LOCKED")):
+            text = (f"the permanent store {where} is locked by another program; close the program that has it "
+                    f"open (an sqlite3 shell, a backup) and run again")
+        elif name == "SQLITE_NOTADB":
+            text = f"{where} is not an ncvm permanent store (not a SQLite database); move it away or give another --state"
+        elif name.startswith("SQLITE_CORRUPT"):
+            text = self._damaged(str(e))
+        elif name == "SQLITE_FULL" or (name.startswith("SQLITE_IOERR") and disk_full(state)):
+            text = (f"cannot write the permanent store {where}: the disk is full; free some space and run again "
+                    f"(the store keeps what was written before)")
+        elif name.startswith(("SQLITE_READONLY", "SQLITE_CANTOPEN", "SQLITE_PERM", "SQLITE_AUTH")):
+            text = (f"cannot write the permanent store {where} ({e}); make the state directory {state} and its "
+                    f"files writable, or give another --state")
+        else:  # SQLITE_IOERR and the rest: the disk or the file system failed
+            text = f"the permanent store {where} cannot be used ({e}); check the disk, or give another --state"
+        return StateError(text)

@@ -81,7 +81,7 @@ class Session:
     # -- shared services -------------------------------------------------
     @property
     def store(self) -> Store:
-        """The permanent store, opened on first use (runs that keep nothing create nothing)."""
+        """The permanent store, opened on first use (a run that keeps nothing creates no store file)."""
         if self._store is None:
             self._store = Store(self.options.state_dir)
         return self._store

@@ -1,0 +1,89 @@
+"""The state directory: the controller's memory, used by one run at a time.
+
+A real control has one memory and one program owning it, so ``ncvm run`` takes its state directory
+for the whole run: an exclusive ``flock`` on ``<state>/lock``, held by the open descriptor, so a run
+that is killed gives it back at once. A second run on the same directory is refused at once, never
+left to overwrite the first run's permanent values with those it read at its start.
+"""
+
+from __future__ import annotations
+
+import errno
+import fcntl
+import os
+from pathlib import Path
+
+from ..diagnostics import UsageError
+
+LOCK_NAME = "lock"
+
+
+class StateError(UsageError):
+    """The state directory or its store cannot be used (exit 2): the message names the file and the remedy."""
+
+
+class StateLock:
+    """Holds ``<state>/lock`` from :meth:`acquire` to :meth:`release` (or the process's end)."""
+
+    def __init__(self, state_dir: str | Path):
+        self.dir = Path(state_dir)
+        self.path = self.dir / LOCK_NAME
+        self._fd: int | None = None
+
+    def acquire(self) -> "StateLock":
+        """Take the directory, creating it if needed; refuse at once when another run holds it."""
+        try:
+            self.dir.mkdir(parents=True, exist_ok=True)
+            fd = os.open(self.path, os.O_RDWR | os.O_CREAT | os.O_CLOEXEC, 0o666)
+        except FileExistsError:
+            raise StateError(f"state directory {self.dir} is a file, not a directory; give another --state") from None
+        except OSError as e:
+            if e.errno == errno.ENOSPC:
+                raise StateError(f"state directory {self.dir} cannot be written: the disk is full; free some "
+                                 f"space or give another --state") from None
+            raise StateError(f"state directory {self.dir} cannot be written ({e.strerror}); make it writable "
+                             f"or give another --state") from None
+        try:
+            fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        except OSError:
+            holder = _read_pid(fd)
+            os.close(fd)
+            by = f" (pid {holder})" if holder else ""
+            raise StateError(f"state directory {self.dir} is in use by another run{by}; wait for it to end "
+                             f"or give another --state") from None
+        self._fd = fd
+        try:  # who holds it, for the message of a refused run; the lock itself is the flock
+            os.ftruncate(fd, 0)
+            os.pwrite(fd, f"{os.getpid()}\n".encode(), 0)
+        except OSError:
+            pass  # a full disk: the store reports it when it is written
+        return self
+
+    def release(self) -> None:
+        if self._fd is not None:
+            os.close(self._fd)  # closing the descriptor drops the flock
+            self._fd = None
+
+    def __enter__(self) -> "StateLock":
+        return self.acquire()
+
+    def __exit__(self, *exc) -> None:
+        self.release()
+
+
+def _read_pid(fd: int) -> int | None:
+    try:
+        text = os.pread(fd, 32, 0).decode("ascii", "replace").strip()
+    except OSError:
+        return None
+    return int(text) if text.isdigit() else None
+
+
+def disk_full(folder: Path) -> bool:
+    """Whether the file system of ``folder`` has (next to) no room left: SQLite reports a full disk met
+    while growing its shared-memory file as an I/O error."""
+    try:
+        st = os.statvfs(folder)
+    except OSError:
+        return False
+    return st.f_bavail * st.f_frsize < 64 * 1024
