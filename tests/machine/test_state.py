@@ -178,6 +178,9 @@ def test_a_full_disk_stops_the_run_with_what_to_do_and_the_store_keeps_what_was_
     line = refused(ncvm("run", str(prog), "--state", str(state)))
     assert line == (f"ncvm: error: cannot write the permanent store {state / 'store.sqlite'}: the disk is full; "
                     f"free some space and run again (the store keeps what was written before)")
+    with pytest.raises(StateError, match=f"cannot write the permanent store {disk / 'new' / 'store.sqlite'}: "
+                                         "the disk is full"):
+        api_run(prog, options=RunOptions(state_dir=disk / "new"))
     subprocess.run(["mount", "-o", "remount,size=16m", str(disk)], check=True)  # space freed
     kept = counter(state)
     assert 0 < kept < 3000

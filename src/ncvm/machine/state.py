@@ -45,12 +45,16 @@ class StateLock:
                              f"or give another --state") from None
         try:
             fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
-        except OSError:
+        except BlockingIOError:
             holder = _read_pid(fd)
             os.close(fd)
             by = f" (pid {holder})" if holder else ""
             raise StateError(f"state directory {self.dir} is in use by another run{by}; wait for it to end "
                              f"or give another --state") from None
+        except OSError as e:  # a file system without locks
+            os.close(fd)
+            raise StateError(f"state directory {self.dir} cannot be locked ({e.strerror}); give a state "
+                             f"directory on a local disk with --state") from None
         self._fd = fd
         try:  # who holds it, for the message of a refused run; the lock itself is the flock
             os.ftruncate(fd, 0)
@@ -61,6 +65,10 @@ class StateLock:
 
     def release(self) -> None:
         if self._fd is not None:
+            try:
+                os.ftruncate(self._fd, 0)  # no pid of a run that has ended
+            except OSError:
+                pass
             os.close(self._fd)  # closing the descriptor drops the flock
             self._fd = None
 
