@@ -30,21 +30,24 @@ def markdown() -> str:
     out: list[str] = []
     for f in MACHINE_FILE.fields:
         header = f"[[{f.name}]]" if isinstance(f.type, ListOf) else f"[{f.name}]"
-        _section(out, header, f, f.type)
+        _section(out, header, f, f.type, top=True)
     return "\n".join(out).rstrip() + "\n"
 
 
-def _section(out: list[str], title: str, f: Field | None, node: Node) -> None:
+def _section(out: list[str], title: str, f: Field | None, node: Node, top: bool = False) -> None:
     """A heading and the key table of ``node`` (a table, or an array of / a choice with tables), then
     the tables nested in it."""
-    tables = _tables(node)
-    if isinstance(node, Tagged):
-        for kind in node.cases:
-            _section(out, f"{title} kind = \"{kind}\"", None, node.table(kind))
+    inner = node.item if isinstance(node, ListOf) else node
+    if isinstance(inner, Table) and inner.is_map() and not top:
+        _section(out, f"{title}.<{inner.keys_doc or 'key'}>", f, inner.other)
         return
-    if not tables:
+    if isinstance(inner, Tagged):
+        common = inner.table(next(iter(inner.cases)))
+        _section(out, title, f, Table(common.fields[:len(inner.common) + 1]), top)
+        for kind, case in inner.cases.items():
+            _section(out, f"{title} {inner.tag} = \"{kind}\"", None, case, top)
         return
-    for table in tables:
+    for table in [inner] if top and isinstance(inner, Table) else _tables(node):
         out.append(f"#### `{title}`\n")
         if f is not None:
             out.append(_cell(f.doc + (f"; {f.type.rule_text()}" if f.type.rule_text() else "")) + "\n")
@@ -62,7 +65,7 @@ def _section(out: list[str], title: str, f: Field | None, node: Node) -> None:
         out.append("")
         for sub in table.fields:
             _section(out, f"{title}.{sub.name}" + ("[]" if isinstance(sub.type, ListOf) else ""), sub, sub.type)
-        if table.other is not None and _tables(table.other):
+        if table.other is not None and not top:
             _section(out, f"{title}.<{table.keys_doc or 'key'}>", None, table.other)
 
 
@@ -71,11 +74,9 @@ def _tables(node: Node) -> list[Table]:
         return _tables(node.item)
     if isinstance(node, Either):
         return [t for o in node.options for t in _tables(o)]
-    if isinstance(node, Table) and (node.fields or node.other is None or _tables(node.other)):
-        return [node]
-    if isinstance(node, Table):
-        return []
-    return []
+    if isinstance(node, Table) and node.is_map():
+        return _tables(node.other)
+    return [node] if isinstance(node, Table) else []
 
 
 def _row(key: str, node: Node, unit: str, default, doc: str) -> str:

@@ -188,13 +188,30 @@ class Text(Node):
         out: dict = {"type": "string"}
         if self.choices and not self.ignore_case:
             out["enum"] = list(self.choices)
-        if self.pattern and not self.ignore_case:
-            out["pattern"] = f"^(?:{self.pattern})$"
+        elif self.choices:  # JSON Schema patterns have no case-insensitive flag: [Gg]54
+            out["pattern"] = "^(?:" + "|".join("".join(f"[{c.upper()}{c.lower()}]" if c.isalpha() else re.escape(c)
+                                                       for c in choice) for choice in self.choices) + ")$"
+        if self.pattern:
+            out["pattern"] = f"^(?:{_either_case(self.pattern) if self.ignore_case else self.pattern})$"
         if self.nonempty:
             out["minLength"] = 1
         if self.max_len:
             out["maxLength"] = self.max_len
         return out
+
+
+def _either_case(pattern: str) -> str:
+    """``pattern`` matching letters in either case (JSON Schema patterns have no flag for it): R? -> [Rr]?,
+    [SP] -> [SPsp]. Enough for the patterns declared here (no letter ranges)."""
+    out, in_class, escaped = [], False, False
+    for c in pattern:
+        if escaped or not c.isalpha():
+            out.append(c)
+            escaped = c == "\\" and not escaped
+            in_class = (in_class or c == "[") and c != "]" if not escaped else in_class
+            continue
+        out.append(c.upper() + c.lower() if in_class else f"[{c.upper()}{c.lower()}]")
+    return "".join(out)
 
 
 @dataclass(frozen=True)
@@ -218,6 +235,24 @@ class Check:
 
     doc: str
     fn: Callable[[Any, str, Ctx], None]
+
+
+def unique(key: str, what: str, key_of: Callable[[Any, int], Any] | None = None) -> Check:
+    """No two entries of an array share ``key`` (strings compared in upper case). ``key_of(entry, i)``
+    gives it for an entry that leaves it out; an entry that is not a table is its own key."""
+    def fn(items: list, path: str, ctx: Ctx) -> None:
+        seen: dict = {}
+        for i, item in enumerate(items):
+            given = isinstance(item, dict) and key in item
+            v = item[key] if given else key_of(item, i) if key_of else None if isinstance(item, dict) else item
+            if v is None:
+                continue
+            k = v.upper() if isinstance(v, str) else v
+            if k in seen:
+                raise SchemaError(join(join(path, i), key) if given else join(path, i), v,
+                                  f"repeats {join(path, seen[k])}: {what} must differ")
+            seen[k] = i
+    return Check(f"no two with the same {what}", fn)
 
 
 @dataclass(frozen=True)
@@ -331,13 +366,26 @@ class Table(Node):
     def _unknown(self) -> str:
         if not self.fields:
             return f"unknown key ({self.closed_why or 'this table takes no keys'})"
-        return f"unknown key (known: {', '.join(f.name for f in self.fields)})"
+        why = f"; {self.closed_why}" if self.closed_why else ""
+        return f"unknown key (known: {', '.join(f.name for f in self.fields)}{why})"
+
+    def is_map(self) -> bool:
+        """Only free keys, no declared ones: documented in one line as key -> value."""
+        return not self.fields and self.other is not None
 
     def type_text(self):
+        if self.is_map():
+            return f"a table of {_plural(self.other.type_text())}"
         return "a table"
 
     def rule_text(self):
-        return "; ".join(c.doc for c in self.checks)
+        parts = []
+        if self.is_map():
+            keys = self.keys.rule_text() if self.keys is not None else ""
+            parts.append(f"keys: {self.keys_doc or 'any'}{' (' + keys + ')' if keys else ''}")
+            if self.other.rule_text():
+                parts.append(f"values: {self.other.rule_text()}")
+        return "; ".join(parts + [c.doc for c in self.checks])
 
     def json(self):
         out: dict = {"type": "object", "properties": {f.name: _with_doc(f) for f in self.fields}}
@@ -371,6 +419,10 @@ class Either(Node):
     what: str  # the shapes in words, for messages
 
     def check(self, value, path, ctx):
+        fitting = [o for o in self.options if _fits(o, value)]
+        if len(fitting) == 1:  # the value has the shape of one option: its error says most
+            fitting[0].check(value, path, ctx)
+            return
         last = None
         for opt in self.options:
             try:
@@ -391,6 +443,15 @@ class Either(Node):
 
     def json(self):
         return {"anyOf": [o.json() for o in self.options]}
+
+
+def _fits(node: Node, value: Any) -> bool:
+    """``value`` has the TOML type ``node`` takes (an array for an array, a table for a table ...)."""
+    if isinstance(node, Either):
+        return any(_fits(o, value) for o in node.options)
+    kind = {Number: (int, float), Text: str, Flag: bool, ListOf: list, Table: dict, Tagged: dict}
+    want = next((t for cls, t in kind.items() if isinstance(node, cls)), object)
+    return isinstance(value, want) and (want is bool or not isinstance(value, bool))
 
 
 @dataclass(frozen=True)

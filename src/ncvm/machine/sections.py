@@ -8,7 +8,7 @@ by the dialect registry, is issue 13's work.
 
 from __future__ import annotations
 
-from .schema import Check, Ctx, Either, Field, Flag, ListOf, Number, Said, SchemaError, Table, Text, join
+from .schema import Check, Ctx, Either, Field, Flag, ListOf, Number, Said, SchemaError, Table, Text, join, unique
 
 NUMBER = Number()
 POSITIVE = Number(gt=0)
@@ -20,23 +20,6 @@ DIGITS = Text(pattern=r"[0-9]+", shape="a number written as a string (\"12\")")
 UNIT = Text(choices=("mm", "inch"))
 BITS = Text(pattern=r"[Bb]?[01]{1,8}", shape="a bit pattern such as \"00010010\"")
 SCALAR = Either((NUMBER, Text()), "a number or a string")
-
-
-def _unique_in(key: str, what: str, default_key=None) -> Check:
-    """No two entries share ``key`` (strings compared in upper case); ``default_key(i)`` for left-out keys."""
-    def fn(items: list, path: str, ctx: Ctx) -> None:
-        seen: dict = {}
-        for i, item in enumerate(items):
-            v = item.get(key, default_key(i) if default_key else None) if isinstance(item, dict) else item
-            if v is None:
-                continue
-            v = v.upper() if isinstance(v, str) else v
-            if v in seen:
-                raise SchemaError(join(join(path, i), key) if isinstance(item, dict) else join(path, i),
-                                  item.get(key, v) if isinstance(item, dict) else item,
-                                  f"repeats entry {seen[v]}: {what} must differ")
-            seen[v] = i
-    return Check(f"no two with the same {what}", fn)
 
 
 def _min_max(table: dict, path: str, ctx: Ctx) -> None:
@@ -78,8 +61,8 @@ CPL = Table((
           "address -> sub-program", Said("G81..G86: 99999081..99999086")),
     Field("channel", Number(integer=True, min=1), "the channel the program runs in", 1),
     Field("axes", ListOf(Either((NAME, CPL_AXIS), "an axis name or a table"),
-                         checks=(_unique_in("name", "axis name"),
-                                 _unique_in("index", "physical axis number", lambda i: i + 1))),
+                         checks=(unique("name", "axis name"),
+                                 unique("index", "physical axis number", lambda a, i: i + 1))),
           "physical axes 1..n in order", Said("the [[axis]] list, all on `channel`")),
     Field("zs_unit", UNIT, "unit of new ZS tables (MACODA 9020 00010)", "mm"),
     Field("zs_active", NAME, "the active ZS table (the kernel's G54..G59)", "V1"),
@@ -215,7 +198,7 @@ SIN800 = Table((
 AXST_BITS = ("profile_end", "in_position", "loop_closed", "homed", "eo", "dnr", "lsh_left", "lsh_right",
              "lss_left", "lss_right", "mpe", "saf", "spool_running", "spool_halted", "refused", "home_failed")
 SYMPAS = Table((
-    Field("axis_names", ListOf(Text(nonempty=True, max_len=8), per_axis=True, checks=(_unique_in("", "axis name"),)),
+    Field("axis_names", ListOf(Text(nonempty=True, max_len=8), per_axis=True, checks=(unique("", "axis name"),)),
           "axis specifiers, one per machine axis", Said("A1, A2, ...")),
     Field("statements_per_tick", Number(integer=True, min=1), "Q: statements a task executes per 64 µs tick", 1),
     Field("task_slice_ticks", POSITIVE, "how far a task may run ahead of the others before it yields", 20, "ticks"),

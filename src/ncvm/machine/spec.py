@@ -25,6 +25,7 @@ from .schema import (
     Text,
     join,
     show,
+    unique,
 )
 from .sections import DIALECT_SECTIONS
 
@@ -48,20 +49,6 @@ class AxisName(Node):
 
     def json(self):
         return {"type": "string"}
-
-
-def unique(key: str, what: str) -> Check:
-    """No two entries of an array of tables share ``key``."""
-    def fn(items: list, path: str, ctx: Ctx) -> None:
-        seen: dict = {}
-        for i, item in enumerate(items):
-            if isinstance(item, dict) and key in item:
-                v = item[key].upper() if isinstance(item[key], str) else item[key]
-                if v in seen:
-                    raise SchemaError(join(join(path, i), key), item[key],
-                                      f"repeats {join(path, seen[v])}.{key}: {what} must differ")
-                seen[v] = i
-    return Check(f"no two with the same `{key}`", fn)
 
 
 def _min_not_above_max(axis: dict, path: str, ctx: Ctx) -> None:
@@ -161,11 +148,11 @@ MACHINE_FILE = Table((
             Check("inside the soft limits", _inside_soft_limits),)), "machine coordinates at start", Said("all 0"),
               "mm (deg)"),
     )), "the machine as a whole"),
-    Field("axis", ListOf(AXIS, min_len=1, checks=(unique("name", "axis names"),)),
+    Field("axis", ListOf(AXIS, min_len=1, checks=(unique("name", "axis name"),)),
           "one `[[axis]]` table per axis, in axis order", required=True),
     Field("offsets", Table(other=ListOf(NUMBER, per_axis=True), keys=Text(choices=G_TABLES), keys_doc="G54 ... G59"),
           "zero offsets G54..G59, one number per axis", Said("all 0"), "mm"),
-    Field("tool", ListOf(TOOL, checks=(unique("number", "tool numbers"),)), "the tool table, one `[[tool]]` per tool"),
+    Field("tool", ListOf(TOOL, checks=(unique("number", "tool number"),)), "the tool table, one `[[tool]]` per tool"),
     Field("machine_data", Table(closed_why="no dialect reads [machine_data]: a control's machine data is "
                                            "in its own section ([cpl] macoda, [sin800] nc_md ...)"),
           "must be empty: machine data lives in the dialect sections"),
