@@ -184,6 +184,10 @@ def cases():
         ("[sin800]\nzero_offsets = { G54 = [1, 2] }\n", "sin800.zero_offsets.G54 = [1, 2]: must give 3 values"),
         ("[sin800]\nzero_offsets = { G54 = { coarse = [1, 2, 3], medium = [0, 0, 0] } }\n",
          "sin800.zero_offsets.G54.medium = [0, 0, 0]: unknown key (known: coarse, fine)"),
+        ("[sin800]\nzero_offsets = { DRF = { coarse = [1, 2, 3] } }\n",
+         "sin800.zero_offsets.DRF = { coarse = [1, 2, 3] }: only the settable offsets G54..G57 have coarse and fine"),
+        ("[cpl]\nzs_tables = { V2 = { columns = ['X'], G54 = [1, 2] } }\n",
+         "cpl.zs_tables.V2.G54 = [1, 2]: has more values than the 1 columns"),
         ('[sin800]\nnc_md = { "2240" = nan }\n', 'sin800.nc_md.2240 = nan: must be a finite number'),
         ('[sin800]\nnc_md = { "5001" = "00020010" }\n', 'sin800.nc_md.5001 = "00020010": must be a bit pattern such as "00010010"'),
         ('[sin800]\ninputs = { "3" = "00000001" }\n', 'sin800.inputs.3 = "00000001": unknown key: a input byte here must be one of "1", "2"'),
@@ -351,8 +355,25 @@ def test_declared_defaults_are_the_ones_the_dialects_use():
 
 
 def _fields(section: str, key: str) -> dict:
+    """The keys of the table (or of the tables in the array) ``section.key``."""
+    from ncvm.machine.schema import Either, ListOf, Table
     from ncvm.machine.spec import MACHINE_FILE
 
     sec = next(f.type for f in MACHINE_FILE.fields if f.name == section)
-    table = next(f.type for f in sec.fields if f.name == key)
-    return {f.name: f for f in table.fields}
+    node = next(f.type for f in sec.fields if f.name == key)
+    node = node.item if isinstance(node, ListOf) else node
+    node = next(o for o in node.options if isinstance(o, Table)) if isinstance(node, Either) else node
+    return {f.name: f for f in node.fields}
+
+
+def test_declared_keys_are_the_ones_the_dialects_read():
+    """The dialects still check a section they are handed directly (a Machine built in Python); their key
+    lists and the schema's must not drift apart."""
+    from ncvm.dialects.cpl.system.controller import AXIS_KEYS, CPL_KEYS, RECORD_KEYS
+    from ncvm.dialects.sinumerik.ncdata import KNOWN_KEYS
+
+    assert set(section_defaults("cpl")) == CPL_KEYS
+    assert set(_fields("cpl", "axes")) == AXIS_KEYS
+    for key, allowed in RECORD_KEYS.items():
+        assert set(_fields("cpl", key)) == allowed, key
+    assert set(section_defaults("sin800")) == KNOWN_KEYS

@@ -42,11 +42,19 @@ CPL_AXIS = Table((
                                     ignore_case=True), keys_doc="SERCOS ID"), "SERCOS parameters", {}),
     Field("jog", POSITIVE, "jog speed (MCODS 27)", 1000.0, "mm/min (deg/min)"),
 ))
+def _rows_fit_columns(table: dict, path: str, ctx: Ctx) -> None:
+    columns = table.get("columns")
+    for row, values in table.items():
+        if columns is not None and row not in ("columns", "unit", "strict") and len(values) > len(columns):
+            raise SchemaError(join(path, row), values, f"has more values than the {len(columns)} columns")
+
+
 ZS_TABLE = Table((
     Field("columns", ListOf(NAME, min_len=1), "axis names of the columns", Said("the [cpl] axes")),
     Field("unit", UNIT, "unit of the values", Said("`zs_unit`")),
     Field("strict", Number(integer=True, min=0, max=1), "strict table", 0),
-), other=ListOf(NUMBER), keys=Text(choices=ZS_ROWS, ignore_case=True), keys_doc="row G54..G59, G154.., G254..")
+), other=ListOf(NUMBER), keys=Text(choices=ZS_ROWS, ignore_case=True), keys_doc="row G54..G59, G154.., G254..",
+    checks=(Check("a row has at most one value per column", _rows_fit_columns),))
 PLC_KEY = Text(pattern=r"(I|O|M|D[0-9]+|DB|DF|T|C|SM|S|EI|EO):[0-9]+", shape="<type><DM>:<byte> such as \"I:10\"")
 
 CPL = Table((
@@ -146,6 +154,12 @@ SIN800_PLC = Table((
 ))
 ZO_NAMES = ("G54", "G55", "G56", "G57", "G58", "G59", "EXTERNAL", "DRF", "PRESET")
 
+
+def _coarse_fine_only_settable(offsets: dict, path: str, ctx: Ctx) -> None:
+    for name, value in offsets.items():
+        if isinstance(value, dict) and name.upper() not in ZO_NAMES[:4]:
+            raise SchemaError(join(path, name), value, "only the settable offsets G54..G57 have coarse and fine")
+
 SIN800 = Table((
     Field("control", Text(choices=CONTROLS), "ranges of TO areas, D numbers, MIB, PLC", "880"),
     Field("channel", Number(integer=True, min=1, max=16), "the channel the program runs in (PPCH)", 1),
@@ -175,7 +189,8 @@ SIN800 = Table((
     Field("zero_offsets", Table(other=Either((PER_AXIS, Table((Field("coarse", PER_AXIS, "coarse offset"),
                                                                Field("fine", PER_AXIS, "fine offset")))),
                                              "one number per axis or a table with coarse and fine"),
-                                keys=Text(choices=ZO_NAMES, ignore_case=True), keys_doc="offset name"),
+                                keys=Text(choices=ZO_NAMES, ignore_case=True), keys_doc="offset name",
+                                checks=(Check("coarse and fine only for G54..G57", _coarse_fine_only_settable),)),
           "zero offsets", {}, "mm"),
     Field("rotation", Table((Field("settable", ListOf(NUMBER, max_len=4), "angles of G54..G57", unit="deg"),
                              Field("programmable", ListOf(NUMBER, max_len=2), "angles of G58, G59", unit="deg"))),
