@@ -61,7 +61,7 @@ def test_invalid_toml_and_missing_file(tmp_path):
     with pytest.raises(UsageError, match="cannot read machine file"):
         load_machine(tmp_path / "absent.toml")
     (tmp_path / "latin1.toml").write_bytes(b'[machine]\nname = "Fr\xe4se"\n')
-    with pytest.raises(UsageError, match=r"latin1\.toml: not valid TOML: not UTF-8 text \(byte 22\)"):
+    with pytest.raises(UsageError, match=r"latin1\.toml: not valid TOML: not UTF-8 text \(byte 20\)"):
         load_machine(tmp_path / "latin1.toml")
 
 
