@@ -3,7 +3,7 @@ PY ?= python3.11
 VENV := .venv
 BIN := $(VENV)/bin
 
-.PHONY: run test lint bench clean
+.PHONY: run test lint bench docs clean
 
 $(BIN)/ncvm: pyproject.toml
 	@command -v $(PY) >/dev/null 2>&1 || { echo "python3.11 not found; set PY=python3"; exit 2; }
@@ -23,6 +23,10 @@ test: $(BIN)/ncvm
 
 bench: $(BIN)/ncvm
 	$(BIN)/python bench/run.py
+
+# Regenerate the machine-file reference (docs/machine-file.md tables, docs/machine-file.schema.json).
+docs: $(BIN)/ncvm
+	$(BIN)/python -m ncvm.machine.docgen
 
 clean:
 	rm -rf $(VENV) out .ncvm .pytest_cache

@@ -174,4 +174,4 @@ def test_scenario_merges_into_the_machine_and_screen_needs_a_dialect_with_one(in
     bad = tmp_path / "bad.toml"
     bad.write_text("[[scenario]]\ntime = 'soon'\nkind = 'input'\n")
     r = invoke("run", str(prog), "--scenario", str(bad))
-    assert r.exit_code == 2 and "'scenario[0].time'" in r.stderr
+    assert r.exit_code == 2 and 'scenario file error: scenario[0].time = "soon": must be a number' in r.stderr

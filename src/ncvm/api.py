@@ -56,7 +56,7 @@ def run(path: str | Path, dialect: str | None = None, machine: Machine | str | P
     if options.scenario:
         # what happens over simulated time in this run, on top of the machine file's own scenario
         # (a copy: a Machine the caller passes again for the next run keeps its own scenario)
-        m = dataclasses.replace(m, scenario=sorted([*m.scenario, *load_scenario(options.scenario)],
+        m = dataclasses.replace(m, scenario=sorted([*m.scenario, *load_scenario(options.scenario, m.axis_names)],
                                                    key=lambda e: e.time))
     with StateLock(options.state_dir):  # the controller's memory: one run at a time, refused at once
         session = Session(m, options, dialect=d)

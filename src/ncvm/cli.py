@@ -259,5 +259,15 @@ def compile_cmd(source, out, xref, dialect, machine):
     click.echo(f"ncvm: wrote {path}", err=True)
 
 
+@cli.command(name="machine-schema")
+@click.option("--markdown", is_flag=True, help="The reference tables of docs/machine-file.md instead.")
+def machine_schema(markdown):
+    """Print the JSON Schema of machine files (for editors)."""
+    from .machine.docgen import json_text
+    from .machine.docgen import markdown as tables
+
+    click.echo(tables() if markdown else json_text(), nl=False)
+
+
 def main() -> None:
     cli(prog_name="ncvm")

@@ -183,7 +183,7 @@ def test_mcops_operating_mode(run):
 def test_unknown_cpl_key_is_an_error_naming_it(run_text, reference):
     with pytest.raises(UsageError, match="zs_tabels"):
         run_text("1 A=1\nM30\n", name="p.cpl", machine=reference(cpl={"zs_tabels": {}}))
-    with pytest.raises(UsageError, match=r"axes\[1\]\.kanal"):
+    with pytest.raises(UsageError, match=r"cpl\.axes\[0\]\.kanal = 1: unknown key"):
         run_text("1 A=1\nM30\n", name="p.cpl", machine=reference(cpl={"axes": [{"name": "X", "kanal": 1}]}))
 
 
@@ -221,11 +221,11 @@ def test_scs_list_parameter_is_an_error(run):
     assert run('1 A%=SCS(1,"S",17,E%)\nM30\n', cpl=SERCOS)["error"]["code"] == "CPL040"
 
 
-@pytest.mark.parametrize("cpl,name", [({"tool_database": [{"sector": 1, "plaec": 1}]}, r"tool_database\[1\]\.plaec"),
-                                      ({"errors": [{"number": 1, "kat": 6}]}, r"errors\[1\]\.kat"),
+@pytest.mark.parametrize("cpl,name", [({"tool_database": [{"sector": 1, "plaec": 1}]}, r"tool_database\[0\]\.plaec"),
+                                      ({"errors": [{"number": 1, "kat": 6}]}, r"errors\[0\]\.kat"),
                                       ({"override": {"rapid": 50}}, r"override\.rapid"),
                                       ({"zs_tables": {"V2": {"G53": [1.0]}}}, r"zs_tables\.V2\.G53"),
-                                      ({"channel": "one"}, "bad value")])
+                                      ({"channel": "one"}, 'cpl.channel = "one": must be an integer')])
 def test_bad_cpl_records_name_the_key(run_text, reference, cpl, name):
     with pytest.raises(UsageError, match=name):
         run_text("1 A=1\nM30\n", name="p.cpl", machine=reference(cpl=cpl))

@@ -100,11 +100,11 @@ def test_plc_input_read_sees_the_scripted_change(tmp_path):
     ('[sin800.plc.1]\ntimers = { "3" = { start = "M71" } }\n', "needs the time 'value'"),
     ('[sin800.plc.1]\ncounters = { "3" = { up = "X1.0" } }\n', "not an M function"),
     ('[sin800.plc.1]\ncounters = { "3" = { up = "I200.0" } }\n', "byte 200"),
-    ('[sin800.plc.1]\nC = { "3" = 1000 }\n', "0-999"),
+    ('[sin800.plc.1]\nC = { "3" = 1000 }\n', "sin800.plc.1.C.3 = 1000: must be 0 to 999"),
     ('[sin800.plc.1]\ntimers = { "3" = { value = 1, done = "I1.0" } }\n', "not an output or flag bit"),
-    ('[sin800.plc.1]\ncounters = { "3" = { up = "M5", base = 1 } }\n', "unknown key 'base'"),
+    ('[sin800.plc.1]\ncounters = { "3" = { up = "M5", base = 1 } }\n', r"counters\.3\.base = 1: unknown key \(known: up, down, set, reset, value\)"),
     (_event(1.0, "timer", number=7), "needs the time 'value'"),
-    (_event(1.0, "counter", number=7, action="start"), "not one of up, down, set, reset"),
+    (_event(1.0, "counter", number=7, action="start"), 'scenario\\[0\\].action = "start": must be one of "up"'),
 ])
 def test_timer_and_counter_configuration_errors(tmp_path, extra, match):
     with pytest.raises(UsageError, match=match):
