@@ -188,7 +188,8 @@ class FileRoot:
                 try:
                     fds.append(os.open(part, _DIRECTORY, dir_fd=fds[-1]))
                 except OSError as e:
-                    if e.errno == errno.ELOOP:  # a directory swapped for a link since the lstat
+                    was_directory = st is None or stat.S_ISDIR(st.st_mode)
+                    if was_directory and e.errno in (errno.ELOOP, errno.ENOTDIR):  # swapped for a link meanwhile
                         raise FileRootError(f"{shown}: a directory on the way became a symbolic link") from None
                     raise
                 if identity(os.fstat(fds[-1])) in private:
