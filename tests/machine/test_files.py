@@ -156,6 +156,23 @@ def test_the_state_directory_inside_the_root_is_never_reached(tmp_path):
     assert sorted(p.name for p in state.iterdir()) == ["store.sqlite"]
 
 
+def test_a_hard_link_to_the_store_planted_in_the_root_is_not_opened(tmp_path):
+    state, root = tmp_path / "state", tmp_path / "root"
+    (state / "link").mkdir(parents=True)
+    root.mkdir()
+    (state / "store.sqlite").write_bytes(b"SQLite format 3\x00")
+    (state / "link" / "P.I").write_bytes(b"table")
+    os.link(state / "store.sqlite", root / "STORE")
+    os.link(state / "link" / "P.I", root / "TABLE")
+    fr = FileRoot(root, private=[state])
+    for name in ("STORE", "TABLE"):
+        with pytest.raises(FileRootError, match="hard link"):
+            fr.open(fr.place(name), write=True)
+    (root / "OWN").write_text("x")
+    os.link(root / "OWN", root / "OWN2")  # two names inside the root are fine
+    assert fr.read_bytes(fr.place("OWN2")) == b"x"
+
+
 def test_a_root_that_is_the_state_directory_is_refused(tmp_path):
     fr = FileRoot(tmp_path, private=[tmp_path])
     with pytest.raises(FileRootError, match="state directory"):

@@ -14,7 +14,7 @@ opened relative to the one before it (``openat``) with ``O_NOFOLLOW | O_DIRECTOR
   directory), so a link that stays inside the root works and one that leads out of it (``..`` past
   the root, or an absolute target elsewhere) is refused; a directory swapped for a link while the walk runs makes the open fail, never follow it;
 * a directory in ``private`` (the state directory, whose store holds the machine's memory) is
-  never entered, even when it lies inside the root;
+  never entered, even when it lies inside the root, and a hard link to one of its files is not opened;
 * only regular files are opened: a FIFO, device or socket is refused after an ``lstat`` and is not
   opened at all (the open itself uses ``O_NONBLOCK`` and the descriptor is checked again).
 
@@ -117,6 +117,18 @@ class FileRoot:
                 ids.add(identity(os.stat(p)))
             except OSError:
                 pass  # not there yet: nothing to reach
+        return ids
+
+    def _private_files(self) -> set[tuple[int, int]]:
+        """The files of the private folders (asked only for a file with more than one name)."""
+        ids = set()
+        for folder in self.private:
+            for here, _dirs, names in os.walk(folder):
+                for name in names:
+                    try:
+                        ids.add(identity(os.stat(os.path.join(here, name), follow_symlinks=False)))
+                    except OSError:
+                        pass
         return ids
 
     def _open_root(self, create: bool) -> int:
@@ -231,7 +243,10 @@ class FileRoot:
                     raise FileRootError(f"{place.shown} changed while it was opened") from None
                 raise
         try:
-            self.require_file(os.fstat(fd), place.shown)
+            st = os.fstat(fd)
+            self.require_file(st, place.shown)
+            if st.st_nlink > 1 and identity(st) in self._private_files():
+                raise FileRootError(f"{place.shown} is a hard link to a file of the state directory")
             os.set_blocking(fd, True)
         except BaseException:
             os.close(fd)
