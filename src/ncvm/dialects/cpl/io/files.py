@@ -121,10 +121,10 @@ class CplFiles:
         base = text.replace("\\", "/").rstrip("/").split("/")[-1]
         if len(base) > MAX_NAME or base in (".", ".."):
             raise fail("INVALID_FILE_NAME", text)
-        return self._refused(self.fileroot.place, text, self.cwd)
+        return self._confined(self.fileroot.place, text, self.cwd)
 
     @staticmethod
-    def _refused(fn, *args, **kw):
+    def _confined(fn, *args, **kw):
         """``fn(*args)`` with a name the file root refuses as INVALID FILE NAME."""
         try:
             return fn(*args, **kw)
@@ -137,8 +137,11 @@ class CplFiles:
 
     def stat_of(self, place: Place) -> os.stat_result | None:
         """The status of the file or directory at ``place`` (None: missing); INVALID FILE NAME when
-        the name is refused."""
-        return self._refused(self.fileroot.stat, place)
+        the name is refused or a folder on the way cannot be searched."""
+        try:
+            return self._confined(self.fileroot.stat, place)
+        except OSError as e:
+            raise fail("INVALID_FILE_NAME", f"{place.shown}: {e.strerror}") from None
 
     def enter_directory_of(self, program: Path | str) -> None:
         """The current directory of a run is the main program's, when it lies in the file root (digest
@@ -182,7 +185,7 @@ class CplFiles:
     def read_records(self, place: Place) -> list[str]:
         """The records of a file, in whatever form it is (for readers outside the file table);
         INVALID FILE NAME when the name is refused, OSError (FileNotFoundError) when it cannot be read."""
-        return self._parse(self._refused(self.fileroot.read_bytes, place))[0]
+        return self._parse(self._confined(self.fileroot.read_bytes, place))[0]
 
     @staticmethod
     def _check_reclen(records: list[str], reclen: int | None, name: str) -> None:
@@ -199,7 +202,7 @@ class CplFiles:
     def _open(self, place: Place, write: bool) -> int:
         """A descriptor of the file (OPENW creates a missing one); every refusal is a CPL file error."""
         try:
-            return self._refused(self.fileroot.open, place, write=write, create=write)
+            return self._confined(self.fileroot.open, place, write=write, create=write)
         except (FileNotFoundError, NotADirectoryError):
             raise fail("FILE_NOT_FOUND", place.shown) from None
         except OSError as e:
@@ -316,7 +319,7 @@ class CplFiles:
         access rights), so a crash leaves either the old file or the new one, never a half-written one.
         INVALID FILE NAME when the name is refused; OSError when it cannot be written."""
         data = ("".join(r + "\n" for r in records) + EOF_MARKER).encode("latin-1", errors="replace")
-        self._refused(self.fileroot.replace, place, data, finish=self._stamp, durable=self.durable)
+        self._confined(self.fileroot.replace, place, data, finish=self._stamp, durable=self.durable)
 
     def _append_record(self, h: Handle, text: str) -> None:
         """A completed record at the EOF marker (sequential files): written over the old marker."""
@@ -572,7 +575,7 @@ class CplFiles:
         place = self.place_of(name)
         st = self.stat_of(place)
         if st is not None and not stat.S_ISDIR(st.st_mode):
-            self._refused(FileRoot.require_file, st, place.shown)  # a FIFO, device or socket
+            self._confined(FileRoot.require_file, st, place.shown)  # a FIFO, device or socket
         if st is None or stat.S_ISDIR(st.st_mode):
             code = 1
         elif not st.st_mode & stat.S_IWUSR:
@@ -581,10 +584,12 @@ class CplFiles:
             code = 3
         else:
             try:
-                self._refused(self.fileroot.unlink, place)
+                self._confined(self.fileroot.unlink, place)
                 return 0
             except FileNotFoundError:
                 code = 1  # gone meanwhile
+            except PermissionError:
+                code = 2  # the folder does not let it go
         reason = {1: "does not exist", 2: "is erase-protected", 3: "is active"}[code]
         self._warn(warning("FILE_NOT_ERASED", f"{place.shown} {reason}"))
         return code
