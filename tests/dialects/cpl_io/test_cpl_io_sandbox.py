@@ -261,3 +261,24 @@ def test_a_link_inside_the_root_for_the_declarations_is_refused_too(cpl, tmp_pat
     (files / "anwperm.dat").symlink_to("mine.dat")
     r, _ = cpl("10 @MINE=1\nM30\n")
     assert r["error"]["code"] == "CPL038" and "symbolic link" in r["error"]["message"]
+
+
+# -- folders the file system itself refuses ------------------------------------------------------------------
+def test_a_folder_that_cannot_be_searched_is_a_file_error_not_a_crash(tmp_path, monkeypatch):
+    """Permissions do not stop root (the tests may run as root), so the file system's answer is simulated."""
+    from ncvm.dialects.cpl.io.errors import CplRuntimeError
+    from ncvm.dialects.cpl.io.files import CplFiles
+
+    fs = CplFiles(root=tmp_path, durable=False)
+    (tmp_path / "A").write_text("x\n")
+
+    def denied(*args, **kw):
+        raise PermissionError(13, "Permission denied")
+
+    monkeypatch.setattr(fs.fileroot, "unlink", denied)
+    assert fs.ERASE("A") == 2 and (tmp_path / "A").exists()
+    monkeypatch.setattr(fs.fileroot, "stat", denied)
+    with pytest.raises(CplRuntimeError) as err:
+        fs.ERASE("A")
+    assert err.value.code == "CPL609" and "Permission denied" in err.value.message
+    assert fs.FILEACCESS("A") == -1 and fs.FILEDATE("A") == ""
