@@ -106,7 +106,8 @@ class FileRoot:
         return Place(tuple(parts), name.strip())
 
     def path_of(self, place: Place) -> Path:
-        """Where the place lies as the host names it, for messages (never opened by this name)."""
+        """Where the place lies as the host names it: for messages, and for a program look-up that hands
+        the path on (the file root's own operations never open a file by this name)."""
         return self.path.joinpath(*place.parts)
 
     # -- the walk --------------------------------------------------------------------------

@@ -282,3 +282,17 @@ def test_a_folder_that_cannot_be_searched_is_a_file_error_not_a_crash(tmp_path, 
         fs.ERASE("A")
     assert err.value.code == "CPL609" and "Permission denied" in err.value.message
     assert fs.FILEACCESS("A") == -1 and fs.FILEDATE("A") == ""
+
+
+def test_openw_below_a_file_is_an_invalid_name(tmp_path):
+    from ncvm.dialects.cpl.io.errors import CplRuntimeError
+    from ncvm.dialects.cpl.io.files import CplFiles
+
+    fs = CplFiles(root=tmp_path, durable=False)
+    (tmp_path / "A").write_text("x\n")
+    with pytest.raises(CplRuntimeError) as err:
+        fs.OPENW(1, "A/B")
+    assert err.value.code == "CPL609" and "Not a directory" in err.value.message
+    with pytest.raises(CplRuntimeError) as err:
+        fs.OPENR(1, "A/B")
+    assert err.value.code == "CPL612"

@@ -203,9 +203,9 @@ class CplFiles:
         """A descriptor of the file (OPENW creates a missing one); every refusal is a CPL file error."""
         try:
             return self._confined(self.fileroot.open, place, write=write, create=write)
-        except (FileNotFoundError, NotADirectoryError):
-            raise fail("FILE_NOT_FOUND", place.shown) from None
         except OSError as e:
+            if not write and isinstance(e, (FileNotFoundError, NotADirectoryError)):
+                raise fail("FILE_NOT_FOUND", place.shown) from None
             raise fail("INVALID_FILE_NAME", f"{place.shown}: {e.strerror}") from None
 
     def OPENW(self, n, name, *rest) -> None:  # noqa: N802
