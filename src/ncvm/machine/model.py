@@ -9,9 +9,12 @@ Dialects read and write it through these objects only; the SQLite store
 
 from __future__ import annotations
 
+import stat
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
+
+from .files import FileRoot, FileRootError
 
 
 @dataclass(slots=True)
@@ -109,17 +112,20 @@ class Machine:
 
     def find_program(self, name: str, extensions: tuple[str, ...] = (), ignore_case: bool = True) -> Path | None:
         """Search the program path for ``name`` as written, then with each extension (and, unless the
-        control tells upper from lower case, in any case)."""
+        control tells upper from lower case, in any case). Each folder of the path confines the name
+        as a file root does (files.FileRoot): an absolute name or one that climbs out finds nothing,
+        and only a regular file is a program -- so nothing here tells whether a host file exists."""
         candidates = [name] + [name + ext for ext in extensions if not name.lower().endswith(ext.lower())]
         for folder in self.program_path:
+            root = FileRoot(folder)
             for cand in candidates:
-                p = folder / cand
-                if p.is_file():
-                    return p
-                # controls of the era were case-insensitive
-                if ignore_case and folder.is_dir():
-                    low = cand.lower()
-                    for q in folder.iterdir():
-                        if q.name.lower() == low and q.is_file():
-                            return q
+                place = root.find(cand, ignore_case)  # controls of the era were case-insensitive
+                if place is None:
+                    continue
+                try:
+                    st = root.stat(place)
+                except (FileRootError, OSError):
+                    continue
+                if st is not None and stat.S_ISREG(st.st_mode):
+                    return root.path_of(place)
         return None

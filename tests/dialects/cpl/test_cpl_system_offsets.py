@@ -253,15 +253,15 @@ def test_a_table_is_replaced_whole_or_not_at_all(tmp_path, monkeypatch):
     fails (a crash at that moment), the old table is intact and no temporary file is left."""
     path = tmp_path / "T.npv"
     files = CplFiles(root=tmp_path, durable=False)
-    files.replace_records(path, table_file())
+    files.replace_records(files.place_of("T.npv"), table_file())
     assert records(path) == table_file()
 
-    def crash(src, dst):
+    def crash(src, dst, **dir_fds):
         raise OSError(28, "No space left on device")
 
     monkeypatch.setattr(os, "replace", crash)
     with pytest.raises(OSError):
-        files.replace_records(path, table_file(("G54", 1.0, 2.0, 3.0)))
+        files.replace_records(files.place_of("T.npv"), table_file(("G54", 1.0, 2.0, 3.0)))
     assert records(path) == table_file() and [p.name for p in tmp_path.iterdir()] == ["T.npv"]
 
 

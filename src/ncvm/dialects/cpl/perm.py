@@ -10,8 +10,8 @@ definable variables no longer declared are deleted, and the memory budget of the
 from __future__ import annotations
 
 import re
-from pathlib import Path
 
+from ...machine.files import FileRoot, FileRootError, Place
 from .errors import CplError
 from .io.strings import CharacterField
 from .values import to_bool, to_double, to_int, to_real, to_str
@@ -35,44 +35,46 @@ class DeclError(Exception):
         self.line = line
 
 
-def read_declarations(root: Path) -> dict[str, tuple[str, list[int]]]:
+def read_declarations(root: FileRoot) -> dict[str, tuple[str, list[int]]]:
     """name (16 significant characters) -> (type, dims) from the declaration files in ``root``."""
     out: dict[str, tuple[str, list[int]]] = {}
     for fname in DECL_FILES:
-        path = _find(root, fname)
-        if path is None:
+        place = root.find(fname, ignore_case=True)
+        if place is None:
             continue
-        for no, line in enumerate(path.read_text(encoding="latin-1").splitlines(), 1):
+        path = str(root.path_of(place))
+        for no, line in enumerate(_declaration_text(root, place, path).splitlines(), 1):
             if not line.strip():
                 continue
             m = DECL.match(line)
             if m is None:
                 raise DeclError("CPL038", f"not a declaration 'DEF <type> @<name>[(n[,m])] [;comment]': {line.strip()}",
-                                str(path), no)
+                                path, no)
             typ, name = m.group(1).upper(), m.group(2).upper()[:16]
             dims = [int(x) for x in (m.group(3), m.group(4)) if x is not None]
             limit = 1024 if typ == "CHAR" else 65535
             if any(not 1 <= d <= limit for d in dims):
-                raise DeclError("CPL022", f"@{name}: field size outside 1..{limit}", str(path), no)
+                raise DeclError("CPL022", f"@{name}: field size outside 1..{limit}", path, no)
             if out.get(name, (typ, dims)) != (typ, dims):  # the same 16 significant characters: one variable
-                raise DeclError("CPL038", f"@{name} is declared again with another type or size", str(path), no)
+                raise DeclError("CPL038", f"@{name} is declared again with another type or size", path, no)
             out[name] = (typ, dims)
     used = sum(_size(name, typ, dims) for name, (typ, dims) in out.items())
     if used > MEMORY:
         raise DeclError("1869", f"definable permanent variables need {used} bytes, {MEMORY} are available",
-                        str(root), 0)
+                        str(root.path), 0)
     return out
 
 
-def _find(root: Path, name: str) -> Path | None:
-    p = root / name
-    if p.is_file():
-        return p
-    if root.is_dir():
-        for q in root.iterdir():
-            if q.name.lower() == name and q.is_file():
-                return q
-    return None
+def _declaration_text(root: FileRoot, place: Place, path: str) -> str:
+    """A declaration file's text. It is never read through a symbolic link (one planted in the file root
+    would hand the start-up another file's lines), nor from a FIFO, device or socket: such an entry is
+    a declaration file error, not an empty declaration -- that would delete every variable it declares."""
+    try:
+        return root.read_bytes(place, follow=False).decode("latin-1")
+    except FileRootError as e:
+        raise DeclError("CPL038", f"{e} (INVALID FILE NAME)", path, 0) from None
+    except OSError as e:
+        raise DeclError("CPL038", f"{place.shown} cannot be read ({e.strerror})", path, 0) from None
 
 
 def _size(name: str, typ: str, dims: list[int]) -> int:
@@ -101,7 +103,7 @@ class Permanents:
 
     def __init__(self, session):
         self.session = session
-        self.root = Path(session.machine.file_root)
+        self.root = FileRoot(session.machine.file_root, (session.options.state_dir,))
         self._store = None
         self.decls: dict[str, tuple[str, list[int]]] = {}
         self.values: dict[str, object] = {}

@@ -12,6 +12,7 @@ from __future__ import annotations
 import sys
 from pathlib import Path
 
+from ....machine.files import FileRoot
 from .errors import CplWarning
 from .files import CplFiles
 from .format import OutputMode
@@ -22,14 +23,16 @@ from .terminal import TerminalKeys
 
 class CplIO:
     def __init__(self, file_root: Path | str, clock=None, keys: KeyScript | str | None = None,
-                 say=None, typ2: bool = False, bitmap_dir: Path | str | None = None):
+                 say=None, typ2: bool = False, bitmap_dir: Path | str | None = None, private: tuple = ()):
+        """``private``: folders no name a program writes may reach (the state directory)."""
         self.mode = OutputMode()
         self.say = say
         root = Path(file_root)
-        self.screen = Screen(keys=keys, mode=self.mode, warn=self._warn, typ2=typ2,
-                             bitmap_dir=bitmap_dir if bitmap_dir is not None else root / "cplbmp")
+        bitmaps = FileRoot(bitmap_dir if bitmap_dir is not None else root / "cplbmp", private)
+        self.screen = Screen(keys=keys, mode=self.mode, warn=self._warn, typ2=typ2, bitmap_dir=bitmaps)
         self.screen.on_output = self._out
-        self.files = CplFiles(root=root, clock=clock, message=self.screen.message, warn=self._warn, mode=self.mode)
+        self.files = CplFiles(root=root, clock=clock, message=self.screen.message, warn=self._warn, mode=self.mode,
+                              private=private)
         self.mmc = Mmc()
 
     @classmethod
@@ -44,7 +47,8 @@ class CplIO:
             keys = KeyScript.from_file(options.keys)
         elif options.keyboard:
             keys = TerminalKeys(sys.stdin.fileno(), sys.stderr)
-        io = cls(session.machine.file_root, clock=session.machine.clock, keys=keys, say=session.say, typ2=typ2)
+        io = cls(session.machine.file_root, clock=session.machine.clock, keys=keys, say=session.say, typ2=typ2,
+                 private=(options.state_dir,))
         if isinstance(keys, TerminalKeys):
             keys.view = io.screen.text_view
         io.mmc.attach(options.mmc_client)

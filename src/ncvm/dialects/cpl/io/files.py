@@ -11,6 +11,11 @@ CHR$(13) inside the output, a random record written in place -- and every REWRIT
 written, flushed and ``os.fsync`` ed before PRN# returns, so what a program wrote survives a crash of
 ncvm. The text of a record still open with ``;`` is kept in memory until the record is completed.
 
+Every name goes through the machine's file root (:class:`ncvm.machine.files.FileRoot`): a name that
+leads out of it -- ``..`` past the root, a symbolic link pointing out, the state directory -- or that
+names a FIFO, device or socket is INVALID FILE NAME. A file open for writing keeps its descriptor
+until CLOSE, so later PRN# write to the file OPENW opened whatever happens to its name meanwhile.
+
 The class :class:`CplFiles` is one program run's file table (logical numbers 1..9). Its methods are
 named after the CPL statements; arguments follow the CPL argument order (omitted = None).
 """
@@ -19,13 +24,12 @@ from __future__ import annotations
 
 import os
 import stat
-import tempfile
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Callable
 
-from ....machine.files import FileRootError, resolve_in_root
+from ....machine.files import FileRoot, FileRootError, Place, identity, read_all
 from .editor import call_parameters
 from .errors import CplRuntimeError, CplWarning, WarnFn, fail, warning
 from .format import OutputMode, format_items
@@ -46,7 +50,8 @@ class Handle:
 
     number: int
     name: str
-    path: Path
+    place: Place
+    ident: tuple[int, int]  # device and inode: the same file under another name is the same file
     writing: bool
     reclen: int | None
     records: list[str]
@@ -56,6 +61,7 @@ class Handle:
     remark: str = ""
     reserved: int = MIN_RESERVED
     data_size: int = 0  # bytes before the EOF marker
+    fd: int | None = None  # a file open for writing: its descriptor until CLOSE
 
     @property
     def random(self) -> bool:
@@ -76,10 +82,12 @@ class CplFiles:
     path are looked up there); ``clock``: an object with ``now`` (simulated seconds) and
     ``start_epoch``, used as the modification time of files the program writes; ``message``: where
     PRN#(0,...) goes (the message window); ``warn``: receives :class:`CplWarning` s;
-    ``active``: paths of programs that are running (ERASE answers 3, FILEACCESS sets bit 5).
+    ``active``: paths of programs that are running (ERASE answers 3, FILEACCESS sets bit 5);
+    ``private``: folders no name may reach (the state directory).
     """
 
     root: Path
+    private: tuple = ()
     clock: object | None = None
     message: Callable[[str], None] | None = None
     warn: WarnFn | None = None
@@ -98,10 +106,12 @@ class CplFiles:
 
     def __post_init__(self) -> None:
         self.root = Path(self.root)
+        self.fileroot = FileRoot(self.root, self.private)
 
     # -- names ---------------------------------------------------------------------------
-    def path_of(self, name) -> tuple[str, Path]:
-        """The control's file name (a string, or an INTEGER n meaning "P<n>", digest D2) and its path."""
+    def place_of(self, name) -> Place:
+        """The control's file name (a string, or an INTEGER n meaning "P<n>", digest D2) placed in the
+        file root, relative to the current directory unless it begins with a path from the root."""
         if isinstance(name, int) and not isinstance(name, bool):
             name = f"P{name}"
         text = text_of(name)
@@ -111,11 +121,27 @@ class CplFiles:
         base = text.replace("\\", "/").rstrip("/").split("/")[-1]
         if len(base) > MAX_NAME or base in (".", ".."):
             raise fail("INVALID_FILE_NAME", text)
-        relative = text if text.startswith(("/", "\\")) or text[1:2] == ":" else f"{self.cwd}/{text}"
+        return self._confined(self.fileroot.place, text, self.cwd)
+
+    @staticmethod
+    def _confined(fn, *args, **kw):
+        """``fn(*args)`` with a name the file root refuses as INVALID FILE NAME."""
         try:
-            return text, resolve_in_root(Path(self.root), relative)
-        except FileRootError:
-            raise fail("INVALID_FILE_NAME", f"{text} lies outside the file root") from None
+            return fn(*args, **kw)
+        except FileRootError as e:
+            raise fail("INVALID_FILE_NAME", str(e)) from None
+
+    def open_for_writing(self, st: os.stat_result | None) -> bool:
+        """Whether the file of status ``st`` is open for writing by OPENW (under any name)."""
+        return st is not None and any(h.writing and h.ident == identity(st) for h in self.handles.values())
+
+    def stat_of(self, place: Place) -> os.stat_result | None:
+        """The status of the file or directory at ``place`` (None: missing); INVALID FILE NAME when
+        the name is refused or a folder on the way cannot be searched."""
+        try:
+            return self._confined(self.fileroot.stat, place)
+        except OSError as e:
+            raise fail("INVALID_FILE_NAME", f"{place.shown}: {e.strerror}") from None
 
     def enter_directory_of(self, program: Path | str) -> None:
         """The current directory of a run is the main program's, when it lies in the file root (digest
@@ -140,9 +166,9 @@ class CplFiles:
 
     # -- reading a file into records -------------------------------------------------------
     @staticmethod
-    def _read_records(path: Path) -> tuple[list[str], bool]:
-        """The records of a file and whether it was already in the control's exact form."""
-        raw = path.read_bytes().decode("latin-1")
+    def _parse(raw: bytes) -> tuple[list[str], bool]:
+        """The records of a file's bytes and whether they were already in the control's exact form."""
+        raw = raw.decode("latin-1")
         canonical = raw.endswith(EOF_MARKER) and "\r" not in raw
         body = raw
         cut = body.find("\x03")
@@ -156,10 +182,10 @@ class CplFiles:
         records = [line[:-1] if line.endswith("\r") else line for line in lines]
         return records, canonical
 
-    @classmethod
-    def read_records(cls, path: Path) -> list[str]:
-        """The records of a file, in whatever form it is (for readers outside the file table)."""
-        return cls._read_records(path)[0]
+    def read_records(self, place: Place) -> list[str]:
+        """The records of a file, in whatever form it is (for readers outside the file table);
+        INVALID FILE NAME when the name is refused, OSError (FileNotFoundError) when it cannot be read."""
+        return self._parse(self._confined(self.fileroot.read_bytes, place))[0]
 
     @staticmethod
     def _check_reclen(records: list[str], reclen: int | None, name: str) -> None:
@@ -173,6 +199,15 @@ class CplFiles:
                            f"{name}: record {i} has {len(r)} characters, not {reclen}")
 
     # -- opening and closing ----------------------------------------------------------------
+    def _open(self, place: Place, write: bool) -> int:
+        """A descriptor of the file (OPENW creates a missing one); every refusal is a CPL file error."""
+        try:
+            return self._confined(self.fileroot.open, place, write=write, create=write)
+        except OSError as e:
+            if not write and isinstance(e, (FileNotFoundError, NotADirectoryError)):
+                raise fail("FILE_NOT_FOUND", place.shown) from None
+            raise fail("INVALID_FILE_NAME", f"{place.shown}: {e.strerror}") from None
+
     def OPENW(self, n, name, *rest) -> None:  # noqa: N802
         """``OPENW(n,name[,length][,remark][,reclen])``; a 4th argument that is a number is reclen."""
         n = self._check_number(n)
@@ -187,37 +222,41 @@ class CplFiles:
             length = int(length)
         if not isinstance(length, int) or isinstance(length, bool) or length < MIN_RESERVED:
             raise fail("ILLEGAL_FILE_SIZE", f"{length!r} bytes, at least {MIN_RESERVED}")
-        shown, path = self.path_of(name)
+        place = self.place_of(name)
         if n in self.handles:
             raise fail("INVALID_LOGICAL_NUMBER", f"{n} is already open")
-        if any(h.writing and h.path == path for h in self.handles.values()):
-            raise fail("FILE_ALREADY_OPEN", shown)
-        if path.is_dir():
-            raise fail("INVALID_FILE_NAME", f"{shown} is a directory")
-        if path.exists():
-            records, canonical = self._read_records(path)
-        else:
-            path.parent.mkdir(parents=True, exist_ok=True)
-            records, canonical = [], False
-        self._check_reclen(records, reclen, shown)
-        h = Handle(n, shown, path, True, reclen, records, rec=len(records), remark=text_of(remark) or "",
-                   reserved=length)
-        h.data_size = sum(len(r) + 1 for r in records)
-        if not canonical:
-            self._rewrite_all(h)
+        fd = self._open(place, write=True)
+        try:
+            st = os.fstat(fd)
+            if self.open_for_writing(st):
+                raise fail("FILE_ALREADY_OPEN", place.shown)
+            ident = identity(st)
+            records, canonical = self._parse(read_all(fd))
+            self._check_reclen(records, reclen, place.shown)
+            h = Handle(n, place.shown, place, ident, True, reclen, records, rec=len(records),
+                       remark=text_of(remark) or "", reserved=length, fd=fd)
+            h.data_size = sum(len(r) + 1 for r in records)
+            if not canonical:
+                self._rewrite_all(h)
+        except BaseException:
+            os.close(fd)
+            raise
         self.handles[n] = h
 
     def OPENR(self, n, name, reclen=None) -> None:  # noqa: N802
         """``OPENR(n,name[,reclen])``: the pointer on record 1; with reclen every record must have it."""
         n = self._check_number(n)
-        shown, path = self.path_of(name)
+        place = self.place_of(name)
         if n in self.handles:
             raise fail("INVALID_LOGICAL_NUMBER", f"{n} is already open")
-        if not path.is_file():
-            raise fail("FILE_NOT_FOUND", shown)
-        records, _ = self._read_records(path)
-        self._check_reclen(records, reclen, shown)
-        h = Handle(n, shown, path, False, reclen, records)
+        fd = self._open(place, write=False)
+        try:
+            ident = identity(os.fstat(fd))
+            records, _ = self._parse(read_all(fd))
+        finally:
+            os.close(fd)
+        self._check_reclen(records, reclen, place.shown)
+        h = Handle(n, place.shown, place, ident, False, reclen, records)
         h.data_size = sum(len(r) + 1 for r in records)
         self.handles[n] = h
 
@@ -226,9 +265,15 @@ class CplFiles:
         does nothing)."""
         n = self._check_number(n)
         h = self.handles.pop(n, None)
-        if h is not None and h.writing and h.pending is not None:
-            self._append_record(h, h.pending)
-            h.pending = None
+        if h is None or h.fd is None:
+            return
+        try:
+            if h.pending is not None:
+                self._append_record(h, h.pending)
+                h.pending = None
+        finally:
+            os.close(h.fd)
+            h.fd = None
 
     def close_all(self) -> None:
         """End of the program: every file still open is closed as by CLOSE."""
@@ -243,71 +288,53 @@ class CplFiles:
         h.records, h.rec, h.off, h.pending, h.data_size = [], 0, 0, None, 0
         self._rewrite_all(h)
 
-    # -- writing to disk -------------------------------------------------------------------
-    def _stamp(self, fd: int, path: Path) -> None:
+    # -- writing to disk (always through the descriptor OPENW opened) -----------------------
+    def _stamp(self, fd: int) -> None:
         if self.durable:
             os.fsync(fd)
         if self.clock is not None:
             t = float(getattr(self.clock, "start_epoch", 0.0)) + float(getattr(self.clock, "now", 0.0))
             try:
-                os.utime(path, (t, t))
+                os.utime(fd, (t, t))
             except (OverflowError, ValueError, OSError):
                 pass  # a simulated time beyond what the file system can stamp: the file keeps its real time
 
+    def _write_at(self, h: Handle, offset: int, text: str, end: int | None = None) -> None:
+        """``text`` written at byte ``offset``; the file cut at ``end`` when given; synced and dated."""
+        data = text.encode("latin-1", errors="replace")
+        while data:
+            done = os.pwrite(h.fd, data, offset)
+            data, offset = data[done:], offset + done
+        if end is not None:
+            os.ftruncate(h.fd, end)
+        self._stamp(h.fd)
+
     def _rewrite_all(self, h: Handle) -> None:
         data = "".join(r + "\n" for r in h.records) + EOF_MARKER
-        with open(h.path, "wb") as f:
-            f.write(data.encode("latin-1", errors="replace"))
-            f.flush()
-            self._stamp(f.fileno(), h.path)
+        self._write_at(h, 0, data, end=len(data.encode("latin-1", errors="replace")))
 
-    def replace_records(self, path: Path, records: list[str]) -> None:
-        """Write a whole file in the control's form atomically: a temporary file beside it, synced and
-        dated like every file the program writes, then renamed over the old one (keeping its access
-        rights), so a crash leaves either the old file or the new one, never a half-written one."""
-        data = "".join(r + "\n" for r in records) + EOF_MARKER
-        path.parent.mkdir(parents=True, exist_ok=True)
-        mode = stat.S_IMODE(path.stat().st_mode) if path.exists() else 0o644
-        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
-        try:
-            with os.fdopen(fd, "wb") as f:
-                f.write(data.encode("latin-1", errors="replace"))
-                f.flush()
-                os.fchmod(f.fileno(), mode)
-                self._stamp(f.fileno(), Path(tmp))
-            os.replace(tmp, path)
-        except BaseException:
-            Path(tmp).unlink(missing_ok=True)
-            raise
-        if self.durable:  # the rename itself survives a crash once the directory is synced
-            dfd = os.open(path.parent, os.O_RDONLY)
-            try:
-                os.fsync(dfd)
-            finally:
-                os.close(dfd)
+    def replace_records(self, place: Place, records: list[str]) -> None:
+        """Write a whole file in the control's form atomically (FileRoot.replace: a temporary file beside
+        it, synced and dated like every file the program writes, renamed over the old one keeping its
+        access rights), so a crash leaves either the old file or the new one, never a half-written one.
+        INVALID FILE NAME when the name is refused; OSError when it cannot be written."""
+        data = ("".join(r + "\n" for r in records) + EOF_MARKER).encode("latin-1", errors="replace")
+        self._confined(self.fileroot.replace, place, data, finish=self._stamp, durable=self.durable)
 
     def _append_record(self, h: Handle, text: str) -> None:
         """A completed record at the EOF marker (sequential files): written over the old marker."""
         if len(text) > MAX_RECORD:
             raise fail("BLOCK_EXCEEDS_1024", f"{len(text)} characters")
-        with open(h.path, "r+b") as f:
-            f.seek(h.data_size)
-            f.write((text + "\n" + EOF_MARKER).encode("latin-1", errors="replace"))
-            f.truncate()
-            f.flush()
-            self._stamp(f.fileno(), h.path)
+        data = text + "\n" + EOF_MARKER
+        self._write_at(h, h.data_size, data, end=h.data_size + len(data))
         h.records.append(text)
         h.data_size += len(text) + 1
         h.rec, h.off = len(h.records), 0
 
     def _put_random(self, h: Handle, rec: int, image: str) -> None:
         """Record ``rec`` of a random file written in place (or appended at the EOF marker)."""
-        with open(h.path, "r+b") as f:
-            f.seek(h.byte_of(rec))
-            tail = EOF_MARKER if rec >= len(h.records) else ""
-            f.write((image + "\n" + tail).encode("latin-1", errors="replace"))
-            f.flush()
-            self._stamp(f.fileno(), h.path)
+        tail = EOF_MARKER if rec >= len(h.records) else ""
+        self._write_at(h, h.byte_of(rec), image + "\n" + tail)
         if rec >= len(h.records):
             h.records.append(image)
             h.data_size += len(image) + 1
@@ -532,50 +559,75 @@ class CplFiles:
         return {1: used, 2: h.data_size, 3: used // ((h.reclen or 1) + 1), 4: len(h.records)}[k]
 
     # -- the file system -------------------------------------------------------------------
-    def _is_active(self, path: Path) -> bool:
-        resolved = path.resolve()
-        return any(h.path.resolve() == resolved for h in self.handles.values()) or \
-            any(Path(p).resolve() == resolved for p in self.active)
+    def _is_active(self, ident: tuple[int, int]) -> bool:
+        if any(h.ident == ident for h in self.handles.values()):
+            return True
+        for p in self.active:
+            try:
+                if identity(os.stat(p)) == ident:
+                    return True
+            except OSError:
+                pass
+        return False
 
     def ERASE(self, name) -> int:  # noqa: N802
         """``ERASE(name)``: 0 erased, 1 does not exist, 2 erase-protected, 3 active; 1-3 also warn."""
-        shown, path = self.path_of(name)
-        if not path.is_file():
+        place = self.place_of(name)
+        st = self.stat_of(place)
+        if st is not None and not stat.S_ISDIR(st.st_mode):
+            self._confined(FileRoot.require_file, st, place.shown)  # a FIFO, device or socket
+        if st is None or stat.S_ISDIR(st.st_mode):
             code = 1
-        elif not path.stat().st_mode & stat.S_IWUSR:
+        elif not st.st_mode & stat.S_IWUSR:
             code = 2
-        elif self._is_active(path):
+        elif self._is_active(identity(st)):
             code = 3
         else:
-            path.unlink()
-            return 0
+            try:
+                self._confined(self.fileroot.unlink, place)
+                return 0
+            except FileNotFoundError:
+                code = 1  # gone meanwhile
+            except PermissionError:
+                code = 2  # the folder does not let it go
         reason = {1: "does not exist", 2: "is erase-protected", 3: "is active"}[code]
-        self._warn(warning("FILE_NOT_ERASED", f"{shown} {reason}"))
+        self._warn(warning("FILE_NOT_ERASED", f"{place.shown} {reason}"))
         return code
+
+    def _status(self, name) -> os.stat_result | None:
+        """The status of a file or directory for FILEACCESS/FILEDATE; None for a name that does not
+        exist, is refused or names a FIFO, device or socket."""
+        try:
+            st = self.stat_of(self.place_of(name))
+        except (OSError, CplRuntimeError):
+            return None
+        if st is None or not (stat.S_ISREG(st.st_mode) or stat.S_ISDIR(st.st_mode)):
+            return None
+        return st
 
     def FILEACCESS(self, name) -> int:  # noqa: N802
         """``FILEACCESS(name)``: -1 missing, else bits 1 X, 2 W, 4 R, 8 directory, 16 active program."""
-        try:
-            _, path = self.path_of(name)
-            mode = path.stat().st_mode
-        except (OSError, CplRuntimeError):  # a bad name also means "does not exist"
+        st = self._status(name)
+        if st is None:  # a bad name also means "does not exist"
             return -1
+        mode = st.st_mode
         bits = 0
         bits |= 1 if mode & stat.S_IXUSR and not stat.S_ISDIR(mode) else 0
         bits |= 2 if mode & stat.S_IWUSR else 0
         bits |= 4 if mode & stat.S_IRUSR else 0
         bits |= 8 if stat.S_ISDIR(mode) else 0
-        bits |= 16 if stat.S_ISREG(mode) and self._is_active(path) else 0
+        bits |= 16 if stat.S_ISREG(mode) and self._is_active(identity(st)) else 0
         return bits
 
     def FILEDATE(self, name, mode=None) -> str:  # noqa: N802
         """``FILEDATE(name[,mode])``: 1 "dd.mm.yy" (default), 2 "hh.mm.ss"; "" on any access error."""
-        try:
-            _, path = self.path_of(name)
-            mtime = path.stat().st_mtime
-        except Exception:  # noqa: BLE001 - the manual: an access error gives "", never an error
+        st = self._status(name)
+        if st is None:  # the manual: an access error gives "", never an error
             return ""
-        t = time.gmtime(mtime)
+        try:
+            t = time.gmtime(st.st_mtime)
+        except (OverflowError, OSError, ValueError):
+            return ""
         if mode in (None, 1):
             return f"{t.tm_mday:02d}.{t.tm_mon:02d}.{t.tm_year % 100:02d}"
         if mode == 2:

@@ -11,6 +11,7 @@ the tables are the project's choice (the manual's figure is lost); see :data:`CO
 
 from __future__ import annotations
 
+import io
 import math
 from collections import deque
 from dataclasses import dataclass
@@ -18,6 +19,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ....machine.files import FileRoot, FileRootError
 from .errors import CplWarning, WarnFn, fail, warning
 from .values import text_of
 
@@ -87,7 +89,7 @@ def _clip(x0: float, y0: float, x1: float, y1: float, w) -> tuple[float, float] 
 class Graphics:
     """The CPL graphics state and canvas: colours, GWD/MWD, line style, current point, drawing."""
 
-    def __init__(self, bitmap_dir: Path | str | None = None, warn: WarnFn | None = None):
+    def __init__(self, bitmap_dir: FileRoot | Path | str | None = None, warn: WarnFn | None = None):
         self.tables = [list(COLOR_TABLES[0]), list(COLOR_TABLES[1]), list(COLOR_TABLES[1])]
         self.table = 0
         # colour codes: lines/circles, text, text background, softkey text, softkey background, graphics bg
@@ -101,7 +103,8 @@ class Graphics:
         self.user: Window | None = None  # MWD
         self.point = (0.0, 0.0)  # current point (user coordinates)
         self.last_circle: dict[str, float] = {}
-        self.bitmap_dir = Path(bitmap_dir) if bitmap_dir is not None else None
+        #: the bitmap folder: BMP's names are confined to it as file names are to the file root
+        self.bitmaps = bitmap_dir if isinstance(bitmap_dir, FileRoot) or bitmap_dir is None else FileRoot(bitmap_dir)
         self.warn = warn
         self.warnings: list[CplWarning] = []
         self.foreground = True
@@ -385,21 +388,24 @@ class Graphics:
     # -- bitmaps ---------------------------------------------------------------------------
     def BMP(self, x, y, name, copy=None) -> None:  # noqa: N802
         """``BMP(x,y,"file"[,copy])``: ``<bitmap_dir>/<file>.bmp`` with its top-left pixel at graphics
-        (x, y), combined with the screen by raster operation ``copy`` 0..8. A missing file warns and
-        the program goes on."""
+        (x, y), combined with the screen by raster operation ``copy`` 0..8. A missing file (or one
+        that holds no image) warns and the program goes on; a name that leads out of the bitmap
+        folder is INVALID FILE NAME."""
         x, y = _int(x, "X value"), _int(y, "Y value")
         copy = 0 if copy is None else _int(copy, "copy type")
         file = text_of(name) or ""
         if not (0 <= x <= 632 and 0 <= y <= GRAPH_TOP) or not 0 <= copy <= 8 or len(file) > 70:
             raise fail("INVALID_GRAPHICS_VALUE", f"BMP({x},{y},{file!r},{copy})")
-        path = (self.bitmap_dir / f"{file}.bmp") if self.bitmap_dir is not None else None
-        if path is None or not path.is_file():
+        try:
+            data = self.bitmaps.read_bytes(self.bitmaps.place(f"{file}.bmp")) if self.bitmaps is not None else None
+        except FileRootError as e:  # out of the bitmap folder, or a FIFO, device or socket
+            raise fail("INVALID_FILE_NAME", str(e)) from None
+        except OSError:
+            data = None
+        src = _image(data) if data is not None else None
+        if src is None:
             self._warn(warning("BITMAP_MISSING", name=file))
             return
-        from PIL import Image
-
-        with Image.open(path) as im:
-            src = np.asarray(im.convert("RGB"), dtype=np.uint8)
         top = GRAPH_TOP - y
         h, w = min(src.shape[0], HEIGHT - top), min(src.shape[1], WIDTH - x)
         src = src[:h, :w]
@@ -422,3 +428,14 @@ class Graphics:
         self.warnings.append(w)
         if self.warn is not None:
             self.warn(w)
+
+
+def _image(data: bytes):
+    """The RGB pixels of an image file's bytes, None when they hold no image PIL can read."""
+    from PIL import Image
+
+    try:
+        with Image.open(io.BytesIO(data)) as im:
+            return np.asarray(im.convert("RGB"), dtype=np.uint8)
+    except (OSError, ValueError, Image.DecompressionBombError):
+        return None

@@ -19,6 +19,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ....machine.files import FileRoot
 from .errors import CplRuntimeError, WarnFn, fail
 from .format import TEMPLATE, OutputMode, format_items, format_number, template_shape
 from .graphics import BAND, HEIGHT, WIDTH, Graphics, _int
@@ -230,7 +231,7 @@ class Screen(Graphics):
     """The CPL dialog window: text grid, softkeys, DLG fields, keys and the graphics of chapter 8."""
 
     def __init__(self, keys: KeyScript | str | None = None, mode: OutputMode | None = None,
-                 bitmap_dir: Path | str | None = None, warn: WarnFn | None = None, typ2: bool = False):
+                 bitmap_dir: FileRoot | Path | str | None = None, warn: WarnFn | None = None, typ2: bool = False):
         self.chars = [[" "] * COLUMNS for _ in range(LINES)]
         self.cells = np.full((LINES, COLUMNS, 4), -1, dtype=np.int16)  # fg, bg, style; -1 = empty cell
         super().__init__(bitmap_dir=bitmap_dir, warn=warn)

@@ -11,10 +11,9 @@ under the controller's file root (zsfile.py), found by the rules of the CPL file
 from __future__ import annotations
 
 import math
-from pathlib import Path
 
 from ....diagnostics import UsageError
-from ....machine.files import FileRootError, resolve_in_root
+from ....machine.files import FileRootError, Place
 from ..errors import CplError
 from ..io.values import is_text, text_of
 from . import zsfile
@@ -61,12 +60,14 @@ def _tables_to_files(rt) -> None:
     store = c.store() if c.store is not None else None
     for name in [n for n in c.zs_tables if n not in DB_TABLES.values() and n != c.zs_active]:
         table = c.zs_tables.pop(name)
+        root = rt.io.files.fileroot
         try:
-            path = resolve_in_root(rt.io.files.root, name)
-        except FileRootError:
-            raise UsageError(f"[cpl] zs_tables: {name!r} lies outside the file root") from None
-        if not path.exists():
-            zsfile.write(rt.io.files, path, name, table)
+            place = root.place(name)
+            missing = root.stat(place) is None
+        except FileRootError as e:
+            raise UsageError(f"[cpl] zs_tables: {e}") from None
+        if missing:
+            zsfile.write(rt.io.files, place, table)
         if store is not None and name in store.items("cpl.zs"):
             store.delete("cpl.zs", name)
 
@@ -97,19 +98,19 @@ class Table:
     """One axis ZS table a statement works on: a database table in the store (``path`` None) or a
     table file under the file root; ``save`` writes it back where it lives."""
 
-    __slots__ = ("key", "path", "data")
+    __slots__ = ("key", "place", "data")
 
-    def __init__(self, key: str, path: Path | None, data: dict):
-        self.key, self.path, self.data = key, path, data
+    def __init__(self, key: str, place: Place | None, data: dict):
+        self.key, self.place, self.data = key, place, data
 
     def save(self, rt) -> None:
         c = rt.ctl
-        if self.path is None:
+        if self.place is None:
             c.persist("cpl.zs", self.key, self.data)
             if self.key == c.zs_active:
                 push_to_kernel(rt)
         else:
-            zsfile.write(rt.io.files, self.path, self.key, self.data)
+            zsfile.write(rt.io.files, self.place, self.data)
 
 
 def _name_text(name) -> str:
@@ -131,8 +132,8 @@ def open_table(rt, name) -> Table:
     key = _store_key(c, text)
     if key is not None:
         return Table(key, None, c.zs_tables[key])
-    shown, path = rt.io.files.path_of(text)  # the CPL file functions' rules: INVALID FILE NAME, cwd
-    return Table(shown, path, zsfile.read(rt.io.files, path, shown))
+    place = rt.io.files.place_of(text)  # the CPL file functions' rules: INVALID FILE NAME, cwd
+    return Table(place.shown, place, zsfile.read(rt.io.files, place))
 
 
 def f_fileaccess(rt, io, name) -> int:
@@ -283,13 +284,13 @@ def p_fxcr(rt, layout, name, classif=0):
         raise CplError("CPL023", f"FXCR layout {layout!r}")
     if _store_key(c, text) is not None:
         raise CplError("CPL040", f"axis ZS table {text.strip()!r} exists already (database table)")
-    shown, path = rt.io.files.path_of(text)
-    if path.exists():
-        raise CplError("CPL040", f"axis ZS table {shown} exists already")
+    place = rt.io.files.place_of(text)
+    if rt.io.files.stat_of(place) is not None:
+        raise CplError("CPL040", f"axis ZS table {place.shown} exists already")
     unit = "inch" if c.macoda.get(902000010, [0])[0] == 2 else "mm"
     table = new_zs_table(columns, unit, classif)
     table["rotary"] = rotary
-    Table(shown, path, table).save(rt)
+    Table(place.shown, place, table).save(rt)
 
 
 def p_fxdel(rt, name, col):

@@ -9,9 +9,8 @@ the run-time error SERCOS SERVICE CHANNEL IS LOCKED.
 
 from __future__ import annotations
 
-from pathlib import Path
-
 from ..errors import CplError
+from ..io.errors import CplRuntimeError, fail
 from .axes import nul
 from .positions import f_apos
 
@@ -57,19 +56,27 @@ def f_scs(rt, axis, idtype, idno, res=None):
 
 
 def f_scsl(rt, axis, idtype, idno, filename, res=None):
-    """SCSL -> (0, result code): the list elements as records of an ASCII file (LF each, ETX LF at the end)."""
+    """SCSL -> (0, result code): the list elements as records of an ASCII file (LF each, ETX LF at the end),
+    written whole or not at all; a name the file root refuses is INVALID FILE NAME (result 2 with res%)."""
     ax, key, value = _param(rt, axis, idtype, idno)
     if _locked(rt):
         if res is None:
             raise CplError("CPL041", f"axis {ax.name} {key}")
         return 0, 1
     items = value if isinstance(value, list) else [value]
-    try:
-        path = Path(rt.machine.file_root) / str(nul(filename)).lstrip("/")
-        path.parent.mkdir(parents=True, exist_ok=True)
-        path.write_bytes("".join(f"{v}\n" for v in items).encode("latin-1") + b"\x03\n")
-    except OSError:
+    files = rt.io.files
+    try:  # named as OPENW names a file: in the file root, relative to the current directory
+        place = files.place_of(nul(filename))
+        st = files.stat_of(place)
+        if files.open_for_writing(st):
+            raise fail("FILE_ALREADY_OPEN", place.shown)
+        files.replace_records(place, [str(v) for v in items])
+    except CplRuntimeError:
         if res is None:
-            raise CplError("CPL040", f"SCSL cannot write {filename!r}") from None
+            raise
+        return 0, 2
+    except OSError as e:
+        if res is None:
+            raise CplError("CPL040", f"SCSL cannot write {filename!r} ({e.strerror})") from None
         return 0, 2
     return 0, 0

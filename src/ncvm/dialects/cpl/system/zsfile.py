@@ -20,8 +20,8 @@ from __future__ import annotations
 
 import math
 import stat
-from pathlib import Path
 
+from ....machine.files import Place
 from ..errors import CplError
 from .controller import ZS_ROWS
 
@@ -93,27 +93,30 @@ def _damaged(shown: str, record: int, why: str) -> CplError:
     return CplError("CPL040", f"axis ZS table {shown} is damaged (record {record}: {why})")
 
 
-def read(files, path: Path, shown: str) -> dict:
-    """The table in file ``path``; CPL040 when it does not exist, cannot be read or is damaged."""
-    if not path.is_file():
-        raise CplError("CPL040", f"axis ZS table {shown} does not exist")
+def read(files, place: Place) -> dict:
+    """The table in the file at ``place``; CPL040 when it does not exist, cannot be read or is damaged."""
+    shown = place.shown
     try:
-        records = files.read_records(path)
+        records = files.read_records(place)
+    except (FileNotFoundError, NotADirectoryError):
+        raise CplError("CPL040", f"axis ZS table {shown} does not exist") from None
     except OSError as e:
         raise CplError("CPL040", f"axis ZS table {shown} cannot be read ({e.strerror})") from None
     return parse(records, shown)
 
 
-def write(files, path: Path, shown: str, table: dict) -> None:
+def write(files, place: Place, table: dict) -> None:
     """Write the whole table atomically (CplFiles.replace_records); a write-protected file or one a
     program has open for writing is not changed."""
-    if any(h.writing and h.path == path for h in files.handles.values()):
+    shown = place.shown
+    st = files.stat_of(place)
+    if files.open_for_writing(st):
         raise CplError("CPL040", f"axis ZS table {shown} is open for writing (OPENW)")
-    if path.is_dir():
+    if st is not None and stat.S_ISDIR(st.st_mode):
         raise CplError("CPL040", f"axis ZS table {shown} is a directory")
-    if path.exists() and not path.stat().st_mode & stat.S_IWUSR:
+    if st is not None and not st.st_mode & stat.S_IWUSR:
         raise CplError("CPL040", f"axis ZS table {shown} is write-protected")
     try:
-        files.replace_records(path, records_of(table))
+        files.replace_records(place, records_of(table))
     except OSError as e:
         raise CplError("CPL040", f"axis ZS table {shown} cannot be written ({e.strerror})") from None
