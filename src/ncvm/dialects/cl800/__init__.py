@@ -12,6 +12,7 @@ import re
 from pathlib import Path
 
 from ...diagnostics import CompileFailed, UsageError
+from ...outpaths import refuse_overwrite
 from ..base import Dialect
 from . import ast
 from .atcode import ObjectProgram, compile_program
@@ -111,6 +112,7 @@ class Cl800Dialect(Dialect):
     def compile(self, path, text, machine, out, xref):
         obj = self.build(path, text, machine)
         target = Path(out) if out else Path(path).with_name(f"L{obj.number}.spf")
+        refuse_overwrite("compile", target, path)
         target.write_text(obj.text(), encoding="latin-1")
         if xref:
             Path(xref).write_text(obj.xref(), encoding="latin-1")
