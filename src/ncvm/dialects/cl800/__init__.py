@@ -16,6 +16,7 @@ from ...outpaths import refuse_overwrite
 from ..base import Dialect
 from . import ast
 from .atcode import ObjectProgram, compile_program
+from .axiswords import axis_diagnostics
 from .checker import check_program
 from .messages import Cl800Error
 
@@ -90,7 +91,7 @@ class Cl800Dialect(Dialect):
                 compile_program(path, prog, sym)  # S064, S120, S125-S127 show only while generating code
             except Cl800Error as e:
                 diags.append(e.diagnostic())
-        return diags
+        return diags + axis_diagnostics(path, prog, machine.axis_names)
 
     def build(self, path: str, text: str, machine) -> ObjectProgram:
         last = _last_text_line(text)
