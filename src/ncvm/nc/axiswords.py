@@ -33,27 +33,24 @@ def din_missing_axes(path: str, text: str, segments: list, axes, skip_active: bo
     """The blocks of a plain DIN program (:func:`~ncvm.nc.block.read_din_segments`) with a word for an axis
     the machine lacks, in program order: (segment index, row within a PlainRun or None, Diagnostic NC011).
     With ``skip_active`` the skipped blocks (``/``) are left out, as a run leaves them out."""
-    lines = text.splitlines()
-    found = []
+    found = []  # (segment index, row, line, address)
     plain_missing = [a for a in _PLAIN_AXES if a not in axes]
     for i, seg in enumerate(segments):
         if isinstance(seg, PlainRun):
             if plain_missing:  # never on a machine with X, Y and Z
                 has = np.array([~np.isnan(seg.words[a]) for a in plain_missing])
                 for row in np.flatnonzero(has.any(axis=0)).tolist():
-                    a = plain_missing[int(np.argmax(has[:, row]))]
-                    found.append((i, row, _diag(path, lines, int(seg.lines[row]), a, axes)))
+                    found.append((i, row, int(seg.lines[row]), plain_missing[int(np.argmax(has[:, row]))]))
             continue
         blk, skip = seg
         if skip and skip_active:
             continue
-        for a in blk.words:
-            if is_missing_axis(a, axes):
-                found.append((i, None, _diag(path, lines, blk.src.line, a, axes)))
-                break
-    return found
-
-
-def _diag(path: str, lines: list, line: int, address: str, axes) -> Diagnostic:
-    column = word_column(lines[line - 1], address) if line <= len(lines) else None
-    return Diagnostic("NC011", missing_axis_message(address, axes), Span(path, line, column))
+        address = next((a for a in blk.words if is_missing_axis(a, axes)), None)
+        if address is not None:
+            found.append((i, None, blk.src.line, address))
+    if not found:
+        return []
+    lines = text.splitlines()  # for the columns (not split when nothing is found: a large program costs)
+    return [(i, row, Diagnostic("NC011", missing_axis_message(a, axes),
+                                Span(path, line, word_column(lines[line - 1], a) if line <= len(lines) else None)))
+            for i, row, line, a in found]
