@@ -114,13 +114,22 @@ def test_screen_dir_is_a_folder_in_a_folder_that_exists(work):
     assert_usage(invoke("run", "part.din", "--screen-dir", "/proc/pictures"),
                  "--screen-dir /proc/pictures: cannot write into folder /proc")
     r = invoke("run", "part.din", "--screen-dir", "folder", "--screen", "folder/screen_002.png")
-    assert_usage(r, "--screen folder/screen_002.png: has the name of a picture of --screen-dir folder")
+    assert_usage(r, "--screen folder/screen_002.png: has the name of a file written by --screen-dir folder")
     (work / "folder" / "screen_001.png").write_text("SK1\n")
     r = invoke("run", "part.din", "--screen-dir", "folder", "--keys", "folder/screen_001.png")
-    assert_usage(r, "--screen-dir folder: a picture in it would overwrite the input of --keys")
+    assert_usage(r, "--screen-dir folder: a file it writes would overwrite the input of --keys")
     # a folder that is not there yet is made at the first picture
     r = invoke("run", "part.din", "--screen-dir", "folder/new", "--state", "st")
     assert r.exit_code == 0, r.stderr
+
+
+def test_state_folder_given_is_made_with_its_parents_where_folders_can_be_made(work):
+    assert_usage(invoke("run", "part.din", "--state", "afile/state"), "--state afile/state: afile is not a folder")
+    assert_usage(invoke("run", "part.din", "--state", "/proc/state"),
+                 "--state /proc/state: cannot write into folder /proc")
+    (work / "prog.cpl").write_text("10 A% = 1\nM30\n")
+    r = invoke("run", "prog.cpl", "--state", "new/deeper/state")
+    assert r.exit_code == 0 and (work / "new" / "deeper" / "state").is_dir()
 
 
 @pytest.mark.parametrize("line", ["BOGUS 5", "KEY 300", "SK9"])

@@ -13,10 +13,11 @@ import threading
 from pathlib import Path
 
 import click
+from click.core import ParameterSource
 
 from . import __version__
 from .diagnostics import CompileFailed, UsageError
-from .outpaths import PLOT_SUFFIXES, Output, check_outputs
+from .outpaths import PLOT_SUFFIXES, SCREEN_PICTURE, Output, check_outputs
 
 EXIT_OK, EXIT_FAULT, EXIT_USAGE, EXIT_INTERNAL = 0, 1, 2, 70
 
@@ -148,8 +149,11 @@ def run(program, dialect, machine, state_dir, as_json, trace, gcode, plot, max_s
 
     if not Path(program).is_file():
         raise UsageError(f"no such program: {program}")
+    given_state = click.get_current_context().get_parameter_source("state_dir") != ParameterSource.DEFAULT
     check_outputs([Output("--trace", trace), Output("--gcode", gcode), Output("--plot", plot, PLOT_SUFFIXES),
-                   Output("--screen", screen, (".png",)), Output("--screen-dir", screen_dir, folder=True)],
+                   Output("--screen", screen, (".png",)),
+                   Output("--screen-dir", screen_dir, folder=True, names=SCREEN_PICTURE),
+                   Output("--state", state_dir if given_state else None, folder=True, parents=True)],
                   {"program": program, "--machine": machine, "--scenario": scenario, "--keys": keys})
     if keys:
         _check_key_script(keys)

@@ -24,12 +24,14 @@ SCREEN_PICTURE = re.compile(r"screen_\d{3,}\.png", re.IGNORECASE)
 
 @dataclass(frozen=True)
 class Output:
-    """One output option: a file, or (``folder``) a folder the run writes pictures into."""
+    """One output option: a file, or (``folder``) a folder the run writes files into."""
 
     option: str
     path: str | None  # None: the option is not given
     suffixes: tuple[str, ...] = ()  # the extensions the option accepts; empty = any
     folder: bool = False
+    names: re.Pattern | None = None  # a folder: the names of the files the run writes into it
+    parents: bool = False  # a folder: made with its missing parents (else its parent must exist)
 
 
 def check_outputs(outputs: list[Output], inputs: dict[str, str | None]) -> None:
@@ -42,12 +44,12 @@ def check_outputs(outputs: list[Output], inputs: dict[str, str | None]) -> None:
         (_check_folder if out.folder else _check_file)(out)
         for what, path in read.items():
             if _clash(out, path):
-                pictures = "a picture in it" if out.folder else "it"
+                pictures = "a file it writes" if out.folder else "it"
                 raise UsageError(f"{out.option} {out.path}: {pictures} would overwrite the {_input_name(what, path)}")
         for other in outputs[:i]:
             folder, file = (out, other) if out.folder else (other, out)
             if not file.folder and _clash(folder, file.path):
-                same = "has the name of a picture of" if folder.folder else "is the same file as"
+                same = "has the name of a file written by" if folder.folder else "is the same file as"
                 raise UsageError(f"{file.option} {file.path}: {same} {folder.option} {folder.path}")
 
 
@@ -90,10 +92,14 @@ def _check_folder(out: Output) -> None:
     real = Path(os.path.realpath(out.path))
     if real.exists() and not real.is_dir():
         raise UsageError(f"{out.option} {out.path}: is not a folder")
-    if real.exists():
-        folder, shown = real, Path(out.path)
-    else:  # made at the first picture, in a folder that exists
-        folder, shown = real.parent, Path(out.path).parent
+    folder, shown = real, Path(out.path)
+    if out.parents:  # made with its parents: the nearest folder that exists must take them
+        while not folder.exists():
+            folder, shown = folder.parent, shown.parent
+        if not folder.is_dir():
+            raise UsageError(f"{out.option} {out.path}: {shown} is not a folder")
+    elif not real.exists():  # made when it is first written, in a folder that exists
+        folder, shown = real.parent, shown.parent
         _check_parent(out, folder, shown)
     try:
         tempfile.TemporaryFile(dir=folder).close()
@@ -115,10 +121,11 @@ def _reason(e: OSError) -> str:
 
 
 def _clash(out: Output, path: str) -> bool:
-    """Would ``out`` write the file ``path`` (for a folder output: as one of its pictures)?"""
+    """Would ``out`` write the file ``path`` (for a folder output: as one of the files it writes there)?"""
     if out.folder:
         p = Path(os.path.realpath(path))
-        return p.parent == Path(os.path.realpath(out.path)) and bool(SCREEN_PICTURE.fullmatch(p.name))
+        return (out.names is not None and p.parent == Path(os.path.realpath(out.path))
+                and bool(out.names.fullmatch(p.name)))
     return _same(out.path, path)
 
 
