@@ -150,6 +150,12 @@ def test_sin800_refuses_an_axis_word_but_not_the_radius_b_and_the_angle_a(ncvm):
     assert code == 1 and check_errors(doc) == [("NC011", 5, 8), ("NC011", 6, 8)]
 
 
+def test_sin800_with_decode_ahead_runs_the_decoded_blocks_first(ncvm):
+    code, doc = ncvm("run", "p.mpf", "%MPF1\nN10 G1 X10 F100\nN20 G1 X20\nN30 G1 W5\nN40 M30\n",
+                     XYZ + "[sin800]\ndecode_ahead = 3\n")
+    assert code == 1 and error(doc)[:2] == ("NC011", 4) and doc["motion"]["feed_moves"] == 2
+
+
 def test_cl800_check_reads_the_din_words_of_its_blocks(ncvm):
     source = (Path(__file__).parents[2] / "examples" / "cl800" / "hole_pattern.cl8").read_text(encoding="latin-1")
     assert "(:G01 F200 L=R20 P1:)" in source
