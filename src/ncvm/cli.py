@@ -32,6 +32,18 @@ def _internal_error(exc: BaseException) -> None:
                "command line (NCVM_DEBUG=1 shows the traceback).", err=True)
 
 
+_JSON = "ncvm.json"  # ctx.meta: --json is on the command line
+
+
+def _usage_error(ctx, message: str) -> None:
+    """Exit 2 with the message on stderr; with --json also the usage_error document on stdout."""
+    click.echo(f"ncvm: error: {message}", err=True)
+    if ctx.meta.get(_JSON):
+        error = {"code": None, "message": message, "file": None, "line": None, "column": None}
+        click.echo(json.dumps({"status": "usage_error", "error": error}, indent=2))
+    ctx.exit(EXIT_USAGE)
+
+
 class _Guarded(click.Group):
     """Turns usage errors into exit 2 and unexpected exceptions into exit 70 without a traceback.
 
@@ -57,17 +69,6 @@ class _Guarded(click.Group):
         except Exception as e:  # noqa: BLE001 - the last line of defence
             _internal_error(e)
             ctx.exit(EXIT_INTERNAL)
-
-
-_JSON = "ncvm.json"  # ctx.meta: --json is on the command line
-
-
-def _usage_error(ctx, message: str) -> None:
-    click.echo(f"ncvm: error: {message}", err=True)
-    if ctx.meta.get(_JSON):
-        error = {"code": None, "message": message, "file": None, "line": None, "column": None}
-        click.echo(json.dumps({"status": "usage_error", "error": error}, indent=2))
-    ctx.exit(EXIT_USAGE)
 
 
 @click.group(cls=_Guarded, context_settings={"help_option_names": ["-h", "--help"]})

@@ -44,8 +44,8 @@ def check_outputs(outputs: list[Output], inputs: dict[str, str | None]) -> None:
         (_check_folder if out.folder else _check_file)(out)
         for what, path in read.items():
             if _clash(out, path):
-                pictures = "a file it writes" if out.folder else "it"
-                raise UsageError(f"{out.option} {out.path}: {pictures} would overwrite the {_input_name(what, path)}")
+                writer = "a file it writes" if out.folder else "it"
+                raise UsageError(f"{out.option} {out.path}: {writer} would overwrite the {_input_name(what, path)}")
         for other in outputs[:i]:
             folder, file = (out, other) if out.folder else (other, out)
             if not file.folder and _clash(folder, file.path):
