@@ -233,6 +233,12 @@ def _hms(seconds: float) -> str:
     return f"{h}:{m:02d}:{s:06.3f}" if h else f"{m}:{s:06.3f}"
 
 
+def _folder_machine(program: str) -> str | None:
+    """The machine file of a program's own folder (``machine.toml``), if there is one."""
+    path = Path(program).parent / "machine.toml"
+    return str(path) if path.is_file() else None
+
+
 def _programs_in(args) -> list[str]:
     """The programs named, with every program file below a named folder (an archive), by extension."""
     from .dialects import EXTENSIONS
@@ -267,7 +273,7 @@ def check(programs, dialect, machine, as_json, all_errors):
     programs = _programs_in(programs)
     for program in programs:
         try:
-            diags = api_check(program, dialect, machine, all_errors)
+            diags = api_check(program, dialect, machine or _folder_machine(program), all_errors)
         except CompileFailed as e:
             diags = e.diagnostics
         errors = [d for d in diags if d.severity == "error"]

@@ -83,6 +83,20 @@ def test_din_axes_the_machine_has_run(ncvm):
     assert code == 0 and check_errors(doc) == []
 
 
+def test_check_of_an_archive_uses_the_machine_file_of_each_program_folder(tmp_path):
+    """A 4-axis cell keeps its machine file beside its programs: its A words are no error there."""
+    (tmp_path / "cell4").mkdir()
+    (tmp_path / "cell4" / "machine.toml").write_text(WITH_A)
+    (tmp_path / "cell4" / "index.din").write_text("G1 X10 A90 F100\nM2\n")
+    (tmp_path / "mill").mkdir()
+    (tmp_path / "mill" / "index.din").write_text("G1 X10 A90 F100\nM2\n")
+    r = CliRunner().invoke(cli.cli, ["check", str(tmp_path), "--json"], catch_exceptions=False)
+    files = {Path(f["file"]).parent.name: [d["code"] for d in f["diagnostics"]] for f in json.loads(r.stdout)["files"]}
+    assert r.exit_code == 1 and files == {"cell4": [], "mill": ["NC011"]}
+    r = CliRunner().invoke(cli.cli, ["check", str(tmp_path), "--json", "--machine", str(tmp_path / "cell4" / "machine.toml")])
+    assert r.exit_code == 0
+
+
 # -- CPL -----------------------------------------------------------------------------------------
 
 CPL = ("N10 G1 X10 F100\n"
