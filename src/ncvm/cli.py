@@ -13,9 +13,11 @@ import threading
 from pathlib import Path
 
 import click
+from click.core import ParameterSource
 
 from . import __version__
 from .diagnostics import CompileFailed, UsageError
+from .outpaths import PLOT_SUFFIXES, SCREEN_PICTURE, Output, check_outputs
 
 EXIT_OK, EXIT_FAULT, EXIT_USAGE, EXIT_INTERNAL = 0, 1, 2, 70
 
@@ -30,15 +32,38 @@ def _internal_error(exc: BaseException) -> None:
                "command line (NCVM_DEBUG=1 shows the traceback).", err=True)
 
 
+_JSON = "ncvm.json"  # ctx.meta: --json is on the command line
+
+
+def _usage_error(ctx, message: str) -> None:
+    """Exit 2 with the message on stderr; with --json also the usage_error document on stdout."""
+    click.echo(f"ncvm: error: {message}", err=True)
+    if ctx.meta.get(_JSON):
+        error = {"code": None, "message": message, "file": None, "line": None, "column": None}
+        click.echo(json.dumps({"status": "usage_error", "error": error}, indent=2))
+    ctx.exit(EXIT_USAGE)
+
+
 class _Guarded(click.Group):
-    """Turns usage errors into exit 2 and unexpected exceptions into exit 70 without a traceback."""
+    """Turns usage errors into exit 2 and unexpected exceptions into exit 70 without a traceback.
+
+    With ``--json`` a usage error (even a command line that does not parse) is a JSON document on
+    stdout too, so a script can always read stdout as JSON.
+    """
+
+    def parse_args(self, ctx, args):
+        ctx.meta[_JSON] = "--json" in args[:args.index("--")] if "--" in args else "--json" in args
+        return super().parse_args(ctx, args)
 
     def invoke(self, ctx):
         try:
             return super().invoke(ctx)
         except UsageError as e:
-            click.echo(f"ncvm: error: {e}", err=True)
-            ctx.exit(EXIT_USAGE)
+            _usage_error(ctx, str(e))
+        except click.UsageError as e:
+            if not ctx.meta.get(_JSON):
+                raise
+            _usage_error(ctx, e.format_message())
         except (click.exceptions.Exit, click.exceptions.Abort, click.ClickException):
             raise
         except Exception as e:  # noqa: BLE001 - the last line of defence
@@ -103,7 +128,7 @@ class _Progress:
 @click.option("--json", "as_json", is_flag=True, help="Print one JSON document with the whole result.")
 @click.option("--trace", type=click.Path(dir_okay=False), help="Write every canon call as JSON lines.")
 @click.option("--gcode", type=click.Path(dir_okay=False), help="Write the motion as flat G-code.")
-@click.option("--plot", type=click.Path(dir_okay=False), help="Draw the toolpath (.svg or .png).")
+@click.option("--plot", type=click.Path(dir_okay=False), help="Draw the toolpath (.png, .svg or .pdf).")
 @click.option("--max-steps", type=click.IntRange(min=1), default=100_000_000, show_default=True,
               help="Stop a runaway program after this many statements and blocks.")
 @click.option("--scenario", type=click.Path(dir_okay=False, exists=True),
@@ -125,6 +150,14 @@ def run(program, dialect, machine, state_dir, as_json, trace, gcode, plot, max_s
 
     if not Path(program).is_file():
         raise UsageError(f"no such program: {program}")
+    given_state = click.get_current_context().get_parameter_source("state_dir") != ParameterSource.DEFAULT
+    check_outputs([Output("--trace", trace), Output("--gcode", gcode), Output("--plot", plot, PLOT_SUFFIXES),
+                   Output("--screen", screen, (".png",)),
+                   Output("--screen-dir", screen_dir, folder=True, names=SCREEN_PICTURE),
+                   Output("--state", state_dir if given_state else None, folder=True, parents=True)],
+                  {"program": program, "--machine": machine, "--scenario": scenario, "--keys": keys})
+    if keys:
+        _check_key_script(keys)
     as_path = lambda value: Path(value) if value else None  # noqa: E731
     keyboard = keys is None and not as_json and _stdin_is_terminal()
     options = RunOptions(state_dir=Path(state_dir), max_steps=max_steps, trace=as_path(trace),
@@ -162,6 +195,21 @@ def run(program, dialect, machine, state_dir, as_json, trace, gcode, plot, max_s
     sys.exit(EXIT_FAULT if result["error"] else EXIT_OK)
 
 
+def _check_key_script(path: str) -> None:
+    """A key script that does not read is a usage error before the run, not a fault at its first wait."""
+    from .dialects.cpl.io.errors import CplRuntimeError
+    from .dialects.cpl.io.screen import KeyScript
+
+    try:
+        KeyScript.from_file(path)
+    except CplRuntimeError as e:
+        raise UsageError(f"--keys {path}: {e.message}") from None
+    except UnicodeDecodeError as e:
+        raise UsageError(f"--keys {path}: not UTF-8 text (byte {e.start + 1})") from None
+    except OSError as e:
+        raise UsageError(f"--keys {path}: cannot read: {e.strerror}") from None
+
+
 def _stdin_is_terminal() -> bool:
     try:
         return sys.stdin is not None and sys.stdin.isatty()
@@ -183,6 +231,12 @@ def _hms(seconds: float) -> str:
     m, s = divmod(seconds, 60.0)
     h, m = divmod(int(m), 60)
     return f"{h}:{m:02d}:{s:06.3f}" if h else f"{m}:{s:06.3f}"
+
+
+def _folder_machine(program: str) -> str | None:
+    """The machine file of a program's own folder (``machine.toml``), if there is one."""
+    path = Path(program).parent / "machine.toml"
+    return str(path) if path.is_file() else None
 
 
 def _programs_in(args) -> list[str]:
@@ -219,7 +273,7 @@ def check(programs, dialect, machine, as_json, all_errors):
     programs = _programs_in(programs)
     for program in programs:
         try:
-            diags = api_check(program, dialect, machine, all_errors)
+            diags = api_check(program, dialect, machine or _folder_machine(program), all_errors)
         except CompileFailed as e:
             diags = e.diagnostics
         errors = [d for d in diags if d.severity == "error"]
@@ -250,6 +304,7 @@ def compile_cmd(source, out, xref, dialect, machine):
 
     if not Path(source).is_file():
         raise UsageError(f"no such program: {source}")
+    check_outputs([Output("-o", out), Output("--xref", xref)], {"program": source, "--machine": machine})
     try:
         path = compile_program(source, out, xref, dialect, machine)
     except CompileFailed as e:

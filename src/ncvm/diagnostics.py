@@ -132,6 +132,7 @@ NCVM_CODES = {
     "NC008": "tool not in tool table",
     "NC009": "invalid parameter of a G function (a scaling factor of 0, a plane without its axes)",
     "NC010": "G96 at radius 0 without a spindle speed limit",
+    "NC011": "axis word for an axis the machine does not have (the CPL control's run-time error 1938)",
     "LIM001": "travel limit exceeded",
     "RUN001": "step limit reached (runaway program?)",
     "RUN002": "sub-program not found",

@@ -117,6 +117,18 @@ def parse_din_line(text: str, src: Src) -> Block | None:
     return Block(tuple(g), tuple(m), words, nno, msg, src)
 
 
+def word_column(text: str, letter: str) -> int | None:
+    """The column of the first word with address ``letter`` in a DIN line (comments skipped), or None."""
+    try:
+        body, _msg, col_map = _strip_comments(text.rstrip("\r\n"))
+    except DinSyntaxError:
+        return None
+    for mt in WORD.finditer(body.upper()):
+        if mt.group(1) == letter:
+            return col_map[mt.start(1)] + 1
+    return None
+
+
 def _raise_at_bad_character(s: str, pos: int, col_map) -> None:
     """The line is not all words: find the first thing that is not one and report its column."""
     while (mt := WORD.match(s, pos)) is not None:
@@ -191,6 +203,11 @@ class PlainRun:
 
     def blocks(self):
         return (self.block(i) for i in range(len(self)))
+
+    def head(self, n: int) -> "PlainRun":
+        """The first ``n`` blocks as a run of their own."""
+        return PlainRun(self.file, self.lines[:n], self.g[:n], {a: col[:n] for a, col in self.words.items()},
+                        self.source, self.origin[:n] if self.origin is not None else None)
 
 
 #: the addresses of a plain block besides N and its motion G code, in the order CAM output writes them

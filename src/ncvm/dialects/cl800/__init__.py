@@ -12,9 +12,11 @@ import re
 from pathlib import Path
 
 from ...diagnostics import CompileFailed, UsageError
+from ...outpaths import refuse_overwrite
 from ..base import Dialect
 from . import ast
 from .atcode import ObjectProgram, compile_program
+from .axiswords import axis_diagnostics
 from .checker import check_program
 from .messages import Cl800Error
 
@@ -89,7 +91,7 @@ class Cl800Dialect(Dialect):
                 compile_program(path, prog, sym)  # S064, S120, S125-S127 show only while generating code
             except Cl800Error as e:
                 diags.append(e.diagnostic())
-        return diags
+        return diags + axis_diagnostics(path, prog, machine.axis_names)
 
     def build(self, path: str, text: str, machine) -> ObjectProgram:
         last = _last_text_line(text)
@@ -111,6 +113,7 @@ class Cl800Dialect(Dialect):
     def compile(self, path, text, machine, out, xref):
         obj = self.build(path, text, machine)
         target = Path(out) if out else Path(path).with_name(f"L{obj.number}.spf")
+        refuse_overwrite("compile", target, path)
         target.write_text(obj.text(), encoding="latin-1")
         if xref:
             Path(xref).write_text(obj.xref(), encoding="latin-1")

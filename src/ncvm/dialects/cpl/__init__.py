@@ -9,8 +9,9 @@ from __future__ import annotations
 
 import re
 
-from ...diagnostics import CompileFailed
+from ...diagnostics import CompileFailed, read_lines
 from ..base import Dialect
+from .axiswords import axis_diagnostics
 from .codegen import generate
 from .linker import link
 from .linktables import LinkTables
@@ -49,7 +50,10 @@ class CplDialect(Dialect):
         return res, diags
 
     def check(self, path, text, machine, all_errors=False):
-        _, diags = self.link(path, text, machine)
+        res, diags = self.link(path, text, machine)
+        for ln in res.units.values():
+            lines = text.splitlines() if ln.prog.path == path else read_lines(ln.prog.path)
+            diags += axis_diagnostics(ln.prog, machine.axis_names, lines)
         return diags
 
     def run(self, path, text, session):

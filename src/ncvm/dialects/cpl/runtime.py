@@ -29,6 +29,7 @@ from ...nc.canon import Canon, Src
 from ...nc.midmove import MotionRecorder, position_at
 from ...nc.plainrun import execute_segments, plain_segments
 from . import values as V
+from .axiswords import check_words, missing_axis_blocks, refusing
 from .builtins import FUNCTIONS
 from .codegen import HELPER_NAMES, generate
 from .errors import CplError, fault, message
@@ -185,6 +186,10 @@ class CplRuntime:
         }
         for name, b in FUNCTIONS.items():
             h[f"_F_{name.replace('$', '_S')}"] = b.impl
+        refused = {s.line: a for s, a in missing_axis_blocks(self.linked.units[path].prog, self.kernel.axis_of)}
+        if refused:  # blocks naming an axis the machine lacks (error 1938); other units enqueue unchecked
+            for name in ("_q", "_qr", "_q3"):
+                h[name] = refusing(self, h[name], refused)
         assert set(h) == set(HELPER_NAMES), set(h) ^ set(HELPER_NAMES)
         return h
 
@@ -457,6 +462,7 @@ class CplRuntime:
             g.extend(blk.g)
             m.extend(blk.m)
             words.update(blk.words)
+        check_words(self, words)
         return Block(tuple(g), tuple(m), words, n, msg, src)
 
     # -- the executed state at the program's time ---------------------------------------------

@@ -4,7 +4,8 @@ from __future__ import annotations
 
 import re
 
-from ...diagnostics import CompileFailed
+from ...diagnostics import CompileFailed, RuntimeFault
+from ...nc.axiswords import din_missing_axes
 from ...nc.block import PlainRun, read_din_segments
 from ...nc.canon import Src
 from ...nc.plainrun import execute_columns
@@ -26,7 +27,9 @@ class DinDialect(Dialect):
         return int(100 * hits / len(lines))
 
     def check(self, path, text, machine, all_errors=False):
-        return read_din_segments(path, text)[1]
+        segments, diags = read_din_segments(path, text)
+        diags += [d for _i, _row, d in din_missing_axes(path, text, segments, machine.axis_names)]
+        return sorted(diags, key=lambda d: (d.span.line, d.span.column or 0))
 
     def run(self, path, text, session):
         segments, diags = read_din_segments(path, text)
@@ -34,6 +37,12 @@ class DinDialect(Dialect):
             raise CompileFailed(diags)
         kernel = session.kernel
         skip_active = bool(session.machine.setting_data.get("block_skip", True))
+        # a block with a word for an axis the machine lacks is refused when the run reaches it (found here,
+        # once, so the blocks before it run as they are)
+        refused = din_missing_axes(path, text, segments, kernel.axis_of, skip_active)[:1]
+        if refused:
+            at, row, refusal = refused[0]
+            segments = segments[:at] + ([segments[at].head(row)] if row else [])
         counter = session.steps
         limit = counter.limit - counter.steps
         hook = counter.hook  # single-block stepping and breakpoints; None unless a debugger is attached
@@ -72,6 +81,11 @@ class DinDialect(Dialect):
                         break
                 if kernel.ended:
                     break
+            if refused and not kernel.ended:
+                if done >= limit:
+                    counter.runaway(path, refusal.span.line)
+                done += 1
+                raise RuntimeFault(refusal.code, refusal.message, refusal.span)
         finally:
             counter.steps += done
         if not kernel.ended and last_src is not None:

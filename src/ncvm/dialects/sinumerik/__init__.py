@@ -16,7 +16,7 @@ from pathlib import Path
 from ...diagnostics import CompileFailed
 from ...runtime.codegen import PySource
 from ..base import Dialect
-from .codegen import UnitCodegen
+from .codegen import UnitCodegen, axis_diagnostics
 from .lint import stop_dec_lint
 from .ncdata import NAMESPACE, NcData
 from .reader import PartProgram, read_program
@@ -107,7 +107,7 @@ class Sin800Dialect(Dialect):
         prog, diags = read_program(path, text)
         if diags:
             return diags if all_errors else diags[:1]
-        return stop_dec_lint(prog)  # warnings only (digest §10.5)
+        return axis_diagnostics(prog, machine.axis_names) + stop_dec_lint(prog)  # the lint: warnings (§10.5)
 
     def run(self, path, text, session):
         """Run a main program or @ code object text (``%SPF<n>`` / ``%MPF<n>``, digest §5.3)."""

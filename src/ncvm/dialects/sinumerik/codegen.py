@@ -13,6 +13,8 @@ by number (pointers, push/pop, sub-program calls, multi-register results).
 
 from __future__ import annotations
 
+from ...diagnostics import Diagnostic, Span
+from ...nc.axiswords import is_missing_axis, missing_axis_message
 from ...nc.block import Block
 from ...nc.canon import Src
 from ...runtime.codegen import PySource
@@ -25,6 +27,18 @@ _STANDARD_M = frozenset((0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 17, 30))
 
 def _num(v: float) -> str:
     return repr(float(v))
+
+
+def missing_axis(address: str, axes) -> bool:
+    """A word for an axis the machine lacks (NC011); A and B without such axes are the angle and the radius."""
+    return address not in ("A", "B") and is_missing_axis(address, axes)
+
+
+def axis_diagnostics(prog: PartProgram, axes) -> list[Diagnostic]:
+    """``ncvm check``: the words for axes the machine lacks, where a run refuses them."""
+    return [Diagnostic("NC011", missing_axis_message(it.address, axes), Span(prog.path, blk.line, it.col))
+            for blk in prog.blocks for it in blk.items
+            if isinstance(it, Word) and (it.value is not None or it.rref is not None) and missing_axis(it.address, axes)]
 
 
 class UnitCodegen:
@@ -177,6 +191,8 @@ class UnitCodegen:
                 return None
             if it.address == "A" and "A" not in self.axes:
                 return None  # the angle address needs the start point (rotation.py)
+            if missing_axis(it.address, self.axes):
+                return None  # refused where it stands (NC011)
             if it.address == "G":
                 if it.value in (16, 58, 59):
                     return None
@@ -526,6 +542,9 @@ class _Record:
             # the angle address (NC MD byte 5001 = 11, L2325-2326) when A is not an axis
             self.angle = True
             self.words.append(("_rt.angle_key()", expr, False))
+            return
+        if missing_axis(a, cg.axes):
+            out.emit(f"_rt.refuse_axis({missing_axis_message(a, cg.axes)!r}, {self.blk.line})", self.blk.line)
             return
         if not const and captured:
             # the value is the one R has where the word stands; later @ code in the block may change R

@@ -1,0 +1,46 @@
+"""``ncvm check`` of CL 800: the DIN words of ``(: ... :)`` blocks for axes the machine lacks (NC011).
+
+The compiled object runs on the SINUMERIK 800 front end, which refuses such a word where it stands; the
+check reads the same words with the SINUMERIK block reader, so both judge them alike.
+"""
+
+from __future__ import annotations
+
+from dataclasses import fields
+
+from ...diagnostics import Diagnostic, Span, read_lines
+from ...nc.axiswords import missing_axis_message
+from ..sinumerik.codegen import missing_axis
+from ..sinumerik.reader import ReadError, Word, read_block
+from . import ast
+
+
+def axis_diagnostics(path: str, prog, axes) -> list[Diagnostic]:
+    if not isinstance(prog, ast.Program):
+        return []
+    lines = read_lines(path) or []
+    out = []
+    for st in _din_blocks(prog.body):
+        try:
+            words = [it for it in read_block(st.text, st.line).items if isinstance(it, Word)]
+        except ReadError:
+            continue  # the object program's reader reports it when it runs
+        source = lines[st.line - 1] if st.line <= len(lines) else ""
+        base = source.find(st.text, max(st.col - 1, 0))
+        for w in words:
+            if (w.value is not None or w.rref is not None) and missing_axis(w.address, axes):
+                column = base + w.col if base >= 0 else st.col
+                out.append(Diagnostic("NC011", missing_axis_message(w.address, axes), Span(path, st.line, column)))
+    return out
+
+
+def _din_blocks(node):
+    """The ``(: ... :)`` statements anywhere in a statement list (bodies, branches, CASE alternatives)."""
+    if isinstance(node, ast.Din):
+        yield node
+    elif isinstance(node, (list, tuple)):
+        for item in node:
+            yield from _din_blocks(item)
+    elif isinstance(node, ast.Stmt):
+        for f in fields(node):
+            yield from _din_blocks(getattr(node, f.name))

@@ -1,0 +1,75 @@
+"""NC words for axes the machine lacks: the CPL control's run-time error 1938 ("axis index programmed is not
+configured", manual §4.2 L1337, GETERR L2577).
+
+The addresses of a unit's NC blocks are literal, so the blocks that name a missing axis are found once per
+unit and run (``ncvm check`` lists them); a unit with none of them runs its generated code untouched. Only
+words made at run time (a standalone ``[A$]`` or AXP, manual §4.10) are looked at as they come.
+"""
+
+from __future__ import annotations
+
+import re
+
+from ...diagnostics import Diagnostic
+from ...nc.axiswords import is_missing_axis
+from ...nc.block import ROW_LINE
+from . import ast as A
+from .errors import CplError, diag
+
+CODE = "1938"
+_COMMENT = re.compile(r"\([^)]*\)")
+
+
+def missing_axis_blocks(prog: A.Program, axes) -> list[tuple[A.NcBlock, str]]:
+    """The NC blocks of ``prog`` with a word for an axis not in ``axes``, each with the first such address."""
+    out = []
+    for s in prog.stmts:
+        if isinstance(s, A.NcBlock):
+            address = next((w.address for w in s.words if is_missing_axis(w.address, axes)), None)
+            if address is not None:
+                out.append((s, address))
+    return out
+
+
+def axis_diagnostics(prog: A.Program, axes, lines: list[str] | None) -> list[Diagnostic]:
+    """``ncvm check``: error 1938 at each word for a missing axis, with the word's column when it is found."""
+    out = []
+    for s, address in missing_axis_blocks(prog, axes):
+        text = lines[s.line - 1] if lines and s.line <= len(lines) else ""
+        out.append(diag(CODE, detail(address, axes), prog.path, s.line,
+                        _word_column(text, address) or s.col or 1, s.cpl))
+    return out
+
+
+def _word_column(text: str, address: str) -> int | None:
+    blanked = _COMMENT.sub(lambda m: " " * len(m.group()), text.upper())  # (MSG, ...) and remarks
+    m = re.search(rf"(?<![A-Z0-9_$%!?.]){re.escape(address)}(?=\s*[-+=\[.\d])", blanked)
+    return m.start() + 1 if m else None
+
+
+def refusing(rt, enqueue, refused: dict):
+    """``enqueue`` for a unit whose blocks on the lines of ``refused`` (line -> address) name a missing axis:
+    such a block is refused with 1938 once the blocks queued before it have run, as if it had been executed."""
+    def checked(item):
+        address = refused.get(item[ROW_LINE] if item.__class__ is tuple else item.src.line)
+        if address is not None:
+            refuse(rt, address)
+        enqueue(item)
+
+    return checked
+
+
+def check_words(rt, words) -> None:
+    """Words made at run time (standalone ``[A$]``, AXP): refused as the block is prepared."""
+    for address in words:
+        if is_missing_axis(address, rt.kernel.axis_of):
+            refuse(rt, address)
+
+
+def refuse(rt, address: str):
+    rt.drain()
+    raise CplError(CODE, detail(address, rt.kernel.axis_names))
+
+
+def detail(address: str, axes) -> str:
+    return f"address {address} (the machine's axes: {' '.join(axes) or 'none'})"

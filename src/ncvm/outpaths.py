@@ -1,0 +1,142 @@
+"""The files a command writes, checked before it starts.
+
+A run can take minutes; an output that cannot be written must not fail after it (and lose the run),
+and no output may overwrite a file the run reads (the program, machine file, scenario, key script)
+or another output. Every check names the option and the path; a failure is a usage error.
+"""
+
+from __future__ import annotations
+
+import errno
+import os
+import re
+import tempfile
+from dataclasses import dataclass
+from pathlib import Path
+
+from .diagnostics import UsageError
+
+#: what ``--plot`` draws into (matplotlib picks the format from the extension)
+PLOT_SUFFIXES = (".png", ".svg", ".pdf")
+#: ``--screen-dir`` names its pictures screen_001.png, screen_002.png, ...
+SCREEN_PICTURE = re.compile(r"screen_\d{3,}\.png", re.IGNORECASE)
+
+
+@dataclass(frozen=True)
+class Output:
+    """One output option: a file, or (``folder``) a folder the run writes files into."""
+
+    option: str
+    path: str | None  # None: the option is not given
+    suffixes: tuple[str, ...] = ()  # the extensions the option accepts; empty = any
+    folder: bool = False
+    names: re.Pattern | None = None  # a folder: the names of the files the run writes into it
+    parents: bool = False  # a folder: made with its missing parents (else its parent must exist)
+
+
+def check_outputs(outputs: list[Output], inputs: dict[str, str | None]) -> None:
+    """Raise UsageError unless every output can be written and none overwrites an input or another
+    output. ``inputs`` maps an option (or "program") to the file it reads (None: not given)."""
+    outputs = [out for out in outputs if out.path]
+    read = {what: path for what, path in inputs.items() if path}
+    for i, out in enumerate(outputs):
+        _check_suffix(out)
+        (_check_folder if out.folder else _check_file)(out)
+        for what, path in read.items():
+            if _clash(out, path):
+                writer = "a file it writes" if out.folder else "it"
+                raise UsageError(f"{out.option} {out.path}: {writer} would overwrite the {_input_name(what, path)}")
+        for other in outputs[:i]:
+            folder, file = (out, other) if out.folder else (other, out)
+            if not file.folder and _clash(folder, file.path):
+                same = "has the name of a file written by" if folder.folder else "is the same file as"
+                raise UsageError(f"{file.option} {file.path}: {same} {folder.option} {folder.path}")
+
+
+def refuse_overwrite(option: str, target: Path, source: str) -> None:
+    """An output whose name the command chooses itself (``compile`` without -o) is not the source."""
+    if _same(str(target), source):
+        raise UsageError(f"{option} {target}: would overwrite the source {source}; give another name with -o")
+
+
+def _input_name(what: str, path: str) -> str:
+    return f"{what} {path}" if what == "program" else f"input of {what} {path}"
+
+
+def _check_suffix(out: Output) -> None:
+    if out.suffixes and Path(out.path).suffix.lower() not in out.suffixes:
+        raise UsageError(f"{out.option} {out.path}: the file name must end in "
+                         f"{' or '.join(out.suffixes)} (the extension chooses the format)")
+
+
+def _check_file(out: Output) -> None:
+    path = Path(out.path)
+    real = Path(os.path.realpath(path))  # a symbolic link writes where it points
+    if real.is_dir():
+        raise UsageError(f"{out.option} {out.path}: is a folder, not a file")
+    _check_parent(out, real.parent, path.parent)
+    try:
+        if real.exists():
+            if real.is_file():
+                open(real, "ab").close()  # appends nothing: the file stays as it is until the run writes it
+            elif not os.access(real, os.W_OK):  # a device or a pipe: opening it could block
+                raise PermissionError(errno.EACCES, os.strerror(errno.EACCES))
+        else:
+            os.close(os.open(real, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o666))
+            real.unlink()
+    except OSError as e:
+        raise UsageError(f"{out.option} {out.path}: cannot write: {_reason(e)}") from None
+
+
+def _check_folder(out: Output) -> None:
+    real = Path(os.path.realpath(out.path))
+    if real.exists() and not real.is_dir():
+        raise UsageError(f"{out.option} {out.path}: is not a folder")
+    folder, shown = real, Path(out.path)
+    if out.parents:  # made with its parents: the nearest folder that exists must take them
+        while not folder.exists():
+            folder, shown = folder.parent, shown.parent
+        if not folder.is_dir():
+            raise UsageError(f"{out.option} {out.path}: {shown} is not a folder")
+    elif not real.exists():  # made when it is first written, in a folder that exists
+        folder, shown = real.parent, shown.parent
+        _check_parent(out, folder, shown)
+    try:
+        tempfile.TemporaryFile(dir=folder).close()
+    except OSError as e:
+        raise UsageError(f"{out.option} {out.path}: cannot write into folder {shown}: {_reason(e)}") from None
+
+
+def _check_parent(out: Output, folder: Path, shown: Path) -> None:
+    """The folder a file goes into exists: ncvm makes no folders for files (``shown``: its name as given)."""
+    if not folder.exists():
+        raise UsageError(f"{out.option} {out.path}: folder {shown} does not exist")
+    if not folder.is_dir():
+        raise UsageError(f"{out.option} {out.path}: {shown} is not a folder")
+
+
+def _reason(e: OSError) -> str:
+    # creating a file where the file system has no such thing (/proc, /sys) fails with ENOENT
+    return "files cannot be made there" if e.errno == errno.ENOENT else e.strerror or str(e)
+
+
+def _clash(out: Output, path: str) -> bool:
+    """Would ``out`` write the file ``path`` (for a folder output: as one of the files it writes there)?"""
+    if out.folder:
+        p = Path(os.path.realpath(path))
+        return (out.names is not None and p.parent == Path(os.path.realpath(out.path))
+                and bool(out.names.fullmatch(p.name)))
+    return _same(out.path, path)
+
+
+def _same(a: str, b: str) -> bool:
+    """The same file: one real path, or two names (hard links) of one existing file. Devices and pipes
+    (/dev/null, /dev/stdout) are not files to keep: any number of options may name them."""
+    if any(os.path.exists(p) and not os.path.isfile(p) for p in (a, b)):
+        return False
+    if os.path.realpath(a) == os.path.realpath(b):
+        return True
+    try:
+        return os.path.samefile(a, b)
+    except OSError:
+        return False
