@@ -124,9 +124,11 @@ def test_screen_dir_is_a_folder_in_a_folder_that_exists(work):
 
 
 def test_state_folder_given_is_made_with_its_parents_where_folders_can_be_made(work):
-    assert_usage(invoke("run", "part.din", "--state", "afile/state"), "--state afile/state: afile is not a folder")
+    # the state directory is checked where it is locked (machine/state.py), with what to do
+    assert_usage(invoke("run", "part.din", "--state", "afile/state"),
+                 "state directory afile/state cannot be written (Not a directory); make it writable or give another --state")
     assert_usage(invoke("run", "part.din", "--state", "/proc/state"),
-                 "--state /proc/state: cannot write into folder /proc")
+                 "state directory /proc/state cannot be written (No such file or directory); make it writable or give another --state")
     (work / "prog.cpl").write_text("10 A% = 1\nM30\n")
     r = invoke("run", "prog.cpl", "--state", "new/deeper/state")
     assert r.exit_code == 0 and (work / "new" / "deeper" / "state").is_dir()

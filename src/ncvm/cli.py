@@ -13,7 +13,6 @@ import threading
 from pathlib import Path
 
 import click
-from click.core import ParameterSource
 
 from . import __version__
 from .diagnostics import CompileFailed, UsageError
@@ -150,11 +149,9 @@ def run(program, dialect, machine, state_dir, as_json, trace, gcode, plot, max_s
 
     if not Path(program).is_file():
         raise UsageError(f"no such program: {program}")
-    given_state = click.get_current_context().get_parameter_source("state_dir") != ParameterSource.DEFAULT
     check_outputs([Output("--trace", trace), Output("--gcode", gcode), Output("--plot", plot, PLOT_SUFFIXES),
                    Output("--screen", screen, (".png",)),
-                   Output("--screen-dir", screen_dir, folder=True, names=SCREEN_PICTURE),
-                   Output("--state", state_dir if given_state else None, folder=True, parents=True)],
+                   Output("--screen-dir", screen_dir, folder=True, names=SCREEN_PICTURE)],
                   {"program": program, "--machine": machine, "--scenario": scenario, "--keys": keys})
     if keys:
         _check_key_script(keys)
