@@ -2,8 +2,10 @@
 
 Block preparation runs ahead of block execution (manual §4.1, digest §1.5): CPL statements run at once,
 NC blocks go into a motion queue that the NC kernel executes in simulated time only when a WAIT, the
-program end or the configured look-ahead depth ([cpl] lookahead) drains it. Functions such as MPOS
-therefore see the executed position, stale without a WAIT, exactly as the manual's WAIT example says.
+program end or the look-ahead depth drains it. Functions such as MPOS therefore see the executed
+position, stale without a WAIT, exactly as the manual's WAIT example says. The depth is ``[cpl]
+lookahead`` blocks; without it the queue is the block buffer of BLOCK_BUFFER blocks, whose older half is
+executed at once (column-wise) when it is full, so no program can queue without bound.
 
 The program has its own time (``t_prep``): a WAIT(,ms) or a WAIT for an input moves it on, and execution
 runs up to it. The kernel executes whole blocks, so the block under way at that time has been executed to
@@ -49,6 +51,8 @@ from .unlinked import link_late, run_unlinked
 
 _EXTENDED = re.compile(r"\s*([A-Za-z][A-Za-z0-9_]*[0-9_][A-Za-z0-9_]*)\s*=\s*([-+]?(?:\d+\.?\d*|\.\d+))\s*$")
 MAX_NESTING = 7  # sub-program levels below the main program (manual §2.1 L323)
+#: blocks prepared ahead of execution without ``[cpl] lookahead`` (the manual gives no size; docs/decisions.md)
+BLOCK_BUFFER = 20_000
 
 
 class ProgramClock:
@@ -86,6 +90,8 @@ class CplRuntime:
         self.globals: dict = {}
         self.perm = Permanents(session)
         self.queue: deque = deque()
+        #: queue an NC block (or a plain row); preparation waits when the look-ahead is full
+        self.enqueue = self.queue_limited if self.lookahead > 0 else self._buffered(BLOCK_BUFFER)
         self.executed = 0  # blocks taken from the queue and executed so far
         self.row_words: set[str] = set()  # the addresses the plain rows of the units made so far have
         self._shadow = None  # the NC state after every prepared block (see prepared_kernel)
@@ -171,9 +177,8 @@ class CplRuntime:
             "_ix": V.index, "_sv": V.sv, "_view": S.mid_for_variable, "_setf": _setf, "_midw": _midw, "_dim": _dim,
             "_pdim": _pdim, "_pstr": _pstr, "_gfield": self.gfield, "_gset_s": self.gset_s, "_pint": _pint,
             "_call": functools.partial(self.call, path),
-            "_q": self.enqueue_probe if self._probing else (
-                self.queue.append if self.lookahead <= 0 else self.queue_limited),
-            "_qr": self.queue.append if self.lookahead <= 0 else self.queue_limited,  # a plain row (nc.block)
+            "_q": self.enqueue_probe if self._probing else self.enqueue,
+            "_qr": self.enqueue,  # a plain row (nc.block)
             "_NaN": math.nan,
             "_drain": self.drain, "_wait": self.wait, "_Block": Block, "_loose": self.loose,
             "_word": V.word, "_mval": _mval, "_modal": self.modal,
@@ -364,6 +369,17 @@ class CplRuntime:
             self.globals[key] = value
 
     # -- NC blocks and the motion queue ---------------------------------------------------------
+    def _buffered(self, size: int):
+        """The queue's append for the block buffer: when ``size`` blocks wait, the older half is executed."""
+        queue, append, spill = self.queue, self.queue.append, self.execute_oldest
+
+        def enqueue(blk) -> None:
+            append(blk)
+            if len(queue) >= size:
+                spill(size - size // 2)
+
+        return enqueue
+
     def queue_limited(self, blk) -> None:
         """The look-ahead is full: preparation waits until the oldest block has been executed."""
         self.queue.append(blk)
@@ -376,20 +392,16 @@ class CplRuntime:
         if MEASURING_G.intersection(blk.g):
             self.queue.append(probe_block(self, blk))
             self.drain()
-        elif self.lookahead <= 0:
-            self.queue.append(blk)
         else:
-            self.queue_limited(blk)
+            self.enqueue(blk)
 
     def enqueue_typ3(self, blk) -> None:
         """A block that may carry a Typ3 G function the kernel does not know (G168, G268, G131, ...)."""
         blk = prepare(self, blk)
         if self._probing:
             self.enqueue_probe(blk)
-        elif self.lookahead <= 0:
-            self.queue.append(blk)
         else:
-            self.queue_limited(blk)
+            self.enqueue(blk)
 
     def execute_one(self) -> None:
         blk = self.queue.popleft()
@@ -406,10 +418,17 @@ class CplRuntime:
 
     def drain(self) -> None:
         """WAIT without parameters: stop preparation until every block before it has been executed."""
+        self.execute_oldest(len(self.queue))
+
+    def execute_oldest(self, n: int) -> None:
+        """Execute the ``n`` oldest queued blocks (runs of plain blocks column-wise); preparation waits for them."""
         q = self.queue
-        self.executed += len(q)
-        blocks = list(q)
-        q.clear()
+        if n >= len(q):
+            blocks = list(q)
+            q.clear()
+        else:
+            blocks = [q.popleft() for _ in range(n)]
+        self.executed += len(blocks)
         execute_segments(self.kernel, plain_segments(blocks, self.row_words), self.execute_block)
         self.t_prep = max(self.t_prep, self.machine.clock.now)
 
