@@ -9,6 +9,7 @@ from .diagnostics import CompileFailed, Diagnostic, UsageError
 from .dialects import detect_dialect, get_dialect
 from .machine.config import load_machine, load_scenario
 from .machine.model import Machine
+from .runtime.memory import memory_limit
 from .runtime.session import RunOptions, Session, run_guarded
 
 
@@ -59,12 +60,13 @@ def run(path: str | Path, dialect: str | None = None, machine: Machine | str | P
                                                    key=lambda e: e.time))
     session = Session(m, options, dialect=d)
     error: Diagnostic | None
-    try:
-        error = run_guarded(session, lambda: front.run(str(path), text, session))
-    except CompileFailed as e:
-        error = e.diagnostics[0]
-    finally:
-        session.close()
+    with memory_limit(options.max_memory):
+        try:
+            error = run_guarded(session, lambda: front.run(str(path), text, session))
+        except CompileFailed as e:
+            error = e.diagnostics[0]
+        finally:
+            session.close()
     return session.result(error), session
 
 
