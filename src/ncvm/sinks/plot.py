@@ -31,6 +31,9 @@ class PlotPoints:
         self.plunges: list[np.ndarray] = []
         self.first = self.last = None
         self._count = 0
+        self._passes: list[str] = []  # the thinning passes the points held have had, in order
+        #: per style, the points where each drawn axis reaches its lowest and highest value so far
+        self.extremes: dict[tuple[bool, int], np.ndarray] = {}
         self._last_key = None
         recorder.watch(self)
 
@@ -65,8 +68,14 @@ class PlotPoints:
             out[at:at + len(pts)] = pts
         row_key = np.repeat(key, rows)
         for k in np.unique(key).tolist():
-            self.lines.setdefault((bool(k & 1), k >> 1), []).append(out[row_key == k])
-        self._count += len(out)
+            part = out[row_key == k]
+            style = (bool(k & 1), k >> 1)
+            held = self.extremes.get(style)
+            self.extremes[style] = _extreme_points(part if held is None else np.vstack((held, part)))
+            for thin in self._passes:  # as thin as the points already held, so the density stays even
+                part = _THIN[thin](part)
+            self.lines.setdefault(style, []).append(part)
+            self._count += len(part)
         if self.first is None:
             self.first = start[0][idx].tolist()
         self.last = end[-1][idx].tolist()
@@ -89,21 +98,30 @@ class PlotPoints:
                 self.plunges = [marks if len(marks) <= self.max_points // 2 else _every_other_keeping_ends(marks)]
 
     def _thin(self) -> None:
-        """Thin every line until all of them hold at most half of ``max_points``."""
+        """Thin every line until all of them hold at most half of ``max_points``; later points get the same passes."""
         lines = {k: np.concatenate(parts) for k, parts in self.lines.items()}
-        while sum(len(v) for v in lines.values()) > self.max_points // 2:
-            before = sum(len(v) for v in lines.values())
-            lines = {k: _thin_buckets(v) for k, v in lines.items()}
-            if sum(len(v) for v in lines.values()) > 0.9 * before:  # lines too short to thin: drop every other
-                lines = {k: _drop_lines(v) for k, v in lines.items()}
-                if sum(len(v) for v in lines.values()) == before:
+        while (before := sum(len(v) for v in lines.values())) > self.max_points // 2:
+            thin = "buckets"
+            thinner = {k: _THIN[thin](v) for k, v in lines.items()}
+            if sum(len(v) for v in thinner.values()) > 0.9 * before:  # lines too short to thin: drop every other
+                thin = "lines"
+                thinner = {k: _THIN[thin](v) for k, v in lines.items()}
+                if sum(len(v) for v in thinner.values()) == before:
                     break
+            lines = thinner
+            self._passes.append(thin)
         self.lines = {k: [v] for k, v in lines.items()}
         self._count = sum(len(v) for v in lines.values())
 
     def drawn(self) -> dict[tuple[bool, int], np.ndarray]:
-        """(rapid?, tool) -> the points of its lines, NaN rows between them."""
-        return {k: np.concatenate(parts) for k, parts in sorted(self.lines.items(), key=lambda kv: (kv[0][1], kv[0][0]))}
+        """(rapid?, tool) -> the points of its lines, NaN rows between them; then, each on its own, the points
+        where the drawn axes reach their extremes (they draw nothing but keep the plot's extents)."""
+        out = {}
+        for style in sorted(self.lines, key=lambda k: (k[1], k[0])):
+            alone = np.full((2 * len(self.extremes[style]), 3), np.nan)
+            alone[1::2] = self.extremes[style]
+            out[style] = np.concatenate((*self.lines[style], alone))
+        return out
 
 
 def _drawn_axes(names: tuple[str, ...]) -> tuple[int, int, int]:
@@ -144,14 +162,18 @@ def _thin_buckets(points: np.ndarray) -> np.ndarray:
 
 
 def _drop_lines(points: np.ndarray) -> np.ndarray:
-    """Drop every other line (NaN-separated), keeping those that hold a lowest or highest point of an axis."""
-    gap = np.isnan(points[:, 0])
-    line = np.cumsum(gap)
-    protected = set()
-    for col in range(points.shape[1]):
-        protected.update((int(line[np.nanargmin(points[:, col])]), int(line[np.nanargmax(points[:, col])])))
-    keep = (line % 2 == 0) | np.isin(line, list(protected))
-    return points[keep]
+    """Drop every other line (lines are NaN-separated)."""
+    line = np.cumsum(np.isnan(points[:, 0]))
+    return points[line % 2 == 0]
+
+
+def _extreme_points(points: np.ndarray) -> np.ndarray:
+    """The points where each column is lowest and highest."""
+    rows = [f(points[:, col]) for col in range(points.shape[1]) for f in (np.nanargmin, np.nanargmax)]
+    return points[np.unique(rows)]
+
+
+_THIN = {"buckets": _thin_buckets, "lines": _drop_lines}
 
 
 def _every_other_keeping_ends(marks: np.ndarray) -> np.ndarray:
