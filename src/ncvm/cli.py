@@ -39,6 +39,9 @@ class _Guarded(click.Group):
         except UsageError as e:
             click.echo(f"ncvm: error: {e}", err=True)
             ctx.exit(EXIT_USAGE)
+        except MemoryError:  # before a run could report it (reading a huge program); a run reports RUN006 itself
+            click.echo("ncvm: error RUN006: out of memory (the limit of a run is set with --max-memory)", err=True)
+            ctx.exit(EXIT_FAULT)
         except (click.exceptions.Exit, click.exceptions.Abort, click.ClickException):
             raise
         except Exception as e:  # noqa: BLE001 - the last line of defence

@@ -117,3 +117,12 @@ def test_memory_of_a_cpl_run_does_not_grow_with_its_moves(tmp_path):
     # (110 MB more than 20,000 moves); the block buffer and the toolpath window hold a bounded number
     small, large = _peak_rss_kb(tmp_path, 20_000), _peak_rss_kb(tmp_path, 200_000)
     assert large - small < 40_000, (small, large)
+
+
+def test_cli_program_too_large_to_read_within_the_limit_is_run006(tmp_path):
+    prog = tmp_path / "big.ngc"
+    prog.write_text("G21 G90 F1000\n" + "G1 X1.123 Y2.456 (a comment that makes the line long)\n" * 200_000 + "M30\n")
+    run = subprocess.run([*NCVM, "run", str(prog), "--state", str(tmp_path / "s"), "--max-memory", "5M"],
+                         capture_output=True, text=True)
+    assert run.returncode == 1
+    assert "error RUN006: out of memory" in run.stderr and "internal error" not in run.stderr
