@@ -50,3 +50,11 @@ def test_fewer_blocks_than_the_buffer_all_wait_for_the_wait(tmp_path, run_text):
 def test_a_configured_depth_is_kept_exactly(tmp_path, run_text):
     r = run_text(LOOP.format(n=100), name="p.cpl", machine=machine(tmp_path, lookahead=10))
     assert r["variables"]["P"] == pytest.approx(0.090)
+
+
+def test_cpos_follows_preparation_across_the_buffer_running_over(tmp_path, run_text):
+    text = ("N1 G90 G1 F60000\n10 I% = 1 : BAD% = 0\n20 WHILE I% <= {n} DO\nG1 X[I% * 0.001]\n"
+            "30 IF ABS(CPOS(1) - I% * 0.001) > 0.0001 THEN BAD% = BAD% + 1 ENDIF\n40 I% = I% + 1\n50 END\nM30\n")
+    r = run_text(text.format(n=BLOCK_BUFFER + 100), name="p.cpl", machine=machine(tmp_path))
+    assert r["status"] == "ok", r["error"]
+    assert r["variables"]["BAD%"] == 0

@@ -446,7 +446,10 @@ class CplRuntime:
             shadow.canon = Canon([])
             shadow.prog, shadow.g92, shadow.offset_vec = list(k.prog), list(k.g92), list(k.offset_vec)
             self._shadow, self._shadow_at = shadow, self.executed
-        for blk in itertools.islice(self.queue, self._shadow_at - self.executed, None):
+        # the blocks prepared since, taken from the new end of the queue (skipping the older ones would cost
+        # the length of the queue at every CPOS)
+        pending = len(self.queue) - (self._shadow_at - self.executed)
+        for blk in reversed(list(itertools.islice(reversed(self.queue), pending))):
             if blk.__class__ is Typ3Block:
                 activate(self, self._shadow, blk)
             else:
