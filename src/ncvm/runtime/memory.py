@@ -5,7 +5,9 @@ what the process uses when the run starts plus the allowance, and restored
 when the run ends: an allocation beyond it raises MemoryError at once (one
 huge field as much as a million small objects), which the run reports as
 RUN006 instead of driving the machine into swap. Where the operating system
-has no such limit (not Linux), runs are not guarded.
+has no such limit (not Linux), runs are not guarded. The limit is the whole
+process's: API users who run programs in parallel threads pass
+``RunOptions(max_memory=0)`` and set one limit themselves.
 """
 
 from __future__ import annotations
