@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import re
 import subprocess
 import sys
 from pathlib import Path
@@ -79,10 +80,11 @@ def test_a_run_past_the_memory_limit_stops_with_run006_and_the_limit_is_lifted_a
 def test_cli_memory_limit_is_a_diagnostic_not_an_internal_error(tmp_path):
     prog = tmp_path / "fields.cpl"  # 60 fields of 65537 elements: 30 MB
     prog.write_text("".join(f"{10 * i} DIM F{i}%(65536)\n" for i in range(1, 61)) + "M30\n")
-    run = subprocess.run([*NCVM, "run", str(prog), "--state", str(tmp_path / "s"), "--max-memory", "10M"],
+    run = subprocess.run([*NCVM, "run", str(prog), "--state", str(tmp_path / "s"), "--max-memory", "25M"],
                          capture_output=True, text=True)
     assert run.returncode == 1, run.stderr
     assert "error RUN006: memory limit reached" in run.stderr and "Traceback" not in run.stderr
+    assert re.search(r"fields\.cpl:(\d+):5: error RUN006: .*\n +\1\d DIM F\1%\(65536\)", run.stderr), run.stderr
     assert subprocess.run([*NCVM, "run", str(prog), "--state", str(tmp_path / "s")],
                           capture_output=True).returncode == 0
 

@@ -30,6 +30,7 @@ from ...nc.block import ROW_LINE, Block, DinSyntaxError, as_block, parse_din_lin
 from ...nc.canon import Canon, Src
 from ...nc.midmove import MotionRecorder, position_at
 from ...nc.plainrun import execute_segments, plain_segments
+from ...runtime.memory import out_of_memory
 from . import values as V
 from .builtins import FUNCTIONS
 from .codegen import HELPER_NAMES, generate
@@ -219,7 +220,12 @@ class CplRuntime:
             except ControlReset as reset:  # MCOPS(2) on the own channel: the main program is exited
                 self.session.say(str(reset))
             finally:
-                self.session.variables = self.report(result or self.fault_locals)
+                try:
+                    self.session.variables = self.report(result or self.fault_locals)
+                except MemoryError as again:
+                    if not isinstance(again.__context__, MemoryError):
+                        raise
+                    # out of memory already: the run stops at the statement that reached the limit
             self.drain()
             self.io.end_program(png=self.session.options.screen)
             self.kernel.end_program(Src(main, max(1, len(self.linked.main.prog.stmts) and
@@ -279,6 +285,8 @@ class CplRuntime:
             code, detail = "CPL027", "number too large"
         elif isinstance(e, RecursionError):
             code, detail = "CPL007", ""
+        elif isinstance(e, MemoryError):  # the run's memory limit (runtime.memory), reported where it was reached
+            code, detail = "RUN006", ""
         else:
             raise e
         frames = []
@@ -287,7 +295,8 @@ class CplRuntime:
             if uc is not None:
                 line = uc.src.source_line(fs.lineno)
                 frames.append((fs.filename, line, uc.cpl_lines.get(line), uc.src.source_col(fs.lineno)))
-        text = e.message if isinstance(e, CplRuntimeError) else message(code, detail)
+        text = e.message if isinstance(e, CplRuntimeError) else message(code, detail) if code != "RUN006" \
+            else out_of_memory(self.session.options.max_memory).message
         if not frames:
             return RuntimeFault(code, text, None)
         file, line, cpl, col = frames[-1]
