@@ -16,7 +16,7 @@ from ncvm.api import run
 from ncvm.diagnostics import UsageError
 from ncvm.dialects import EXTENSIONS
 from ncvm.runtime.session import RunOptions
-from ncvm.sinks.plot import plot_toolpath
+from ncvm.sinks.plot import draw
 
 HERE = Path(__file__).parent
 
@@ -44,7 +44,7 @@ def main() -> int:
             shot = out / f"{folder.name}_{program.stem}_screen.png"
             try:
                 result, session = run(program, machine=machine if machine.is_file() else None,
-                                      options=RunOptions(state_dir=out / ".ncvm", keys=keys if dialog else None,
+                                      options=RunOptions(state_dir=out / ".ncvm", plot=True, keys=keys if dialog else None,
                                                          screen=shot if dialog else None,
                                                          scenario=scenario if scenario.is_file() else None))
             except UsageError as e:
@@ -52,7 +52,7 @@ def main() -> int:
                 failures += 1
                 continue
             plot = out / f"{folder.name}_{program.stem}.png"
-            plot_toolpath(session.recorder, plot, title=f"{program.name} ({result['dialect']})")
+            draw(session.plot, plot, title=f"{program.name} ({result['dialect']})")
             m = result["motion"]
             status = result["status"] if not result["error"] else f"error {result['error']['code']}: " \
                                                                    f"{result['error']['message']}"

@@ -10,6 +10,7 @@ from .dialects import detect_dialect, get_dialect
 from .machine.config import load_machine, load_scenario
 from .machine.model import Machine
 from .machine.state import StateLock
+from .runtime.memory import memory_limit
 from .runtime.session import RunOptions, Session, run_guarded
 
 
@@ -48,25 +49,30 @@ def check(path: str | Path, dialect: str | None = None, machine: Machine | str |
 
 def run(path: str | Path, dialect: str | None = None, machine: Machine | str | Path | None = None,
         options: RunOptions | None = None) -> tuple[dict, Session]:
-    """Run a program; returns the result document of ``ncvm run --json`` and the session."""
-    text, d = resolve(path, dialect)
-    front = get_dialect(d)
+    """Run a program; returns the result document of ``ncvm run --json`` and the session.
+
+    The run (reading the program included) may grow the process by ``options.max_memory``: past it the
+    result is error RUN006, or MemoryError when the program could not even be read.
+    """
     options = options or RunOptions()
-    m = machine_for(path, machine, options.state_dir)
-    if options.scenario:
-        # what happens over simulated time in this run, on top of the machine file's own scenario
-        # (a copy: a Machine the caller passes again for the next run keeps its own scenario)
-        m = dataclasses.replace(m, scenario=sorted([*m.scenario, *load_scenario(options.scenario, m.axis_names)],
-                                                   key=lambda e: e.time))
-    with StateLock(options.state_dir):  # the controller's memory: one run at a time, refused at once
-        session = Session(m, options, dialect=d)
-        error: Diagnostic | None
-        try:
-            error = run_guarded(session, lambda: front.run(str(path), text, session))
-        except CompileFailed as e:
-            error = e.diagnostics[0]
-        finally:
-            session.close()
+    with memory_limit(options.max_memory):
+        text, d = resolve(path, dialect)
+        front = get_dialect(d)
+        m = machine_for(path, machine, options.state_dir)
+        if options.scenario:
+            # what happens over simulated time in this run, on top of the machine file's own scenario
+            # (a copy: a Machine the caller passes again for the next run keeps its own scenario)
+            m = dataclasses.replace(m, scenario=sorted([*m.scenario, *load_scenario(options.scenario, m.axis_names)],
+                                                       key=lambda e: e.time))
+        with StateLock(options.state_dir):  # the controller's memory: one run at a time, refused at once
+            session = Session(m, options, dialect=d)
+            error: Diagnostic | None
+            try:
+                error = run_guarded(session, lambda: front.run(str(path), text, session))
+            except CompileFailed as e:
+                error = e.diagnostics[0]
+            finally:
+                session.close()
     return session.result(error), session
 
 

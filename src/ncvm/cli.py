@@ -63,6 +63,13 @@ class _Guarded(click.Group):
             if not ctx.meta.get(_JSON):
                 raise
             _usage_error(ctx, e.format_message())
+        except MemoryError:  # before a run could report it (reading a huge program); a run reports RUN006 itself
+            message = "out of memory (the limit of a run is set with --max-memory)"
+            click.echo(f"ncvm: error RUN006: {message}", err=True)
+            if ctx.meta.get(_JSON):
+                error = {"code": "RUN006", "message": message, "file": None, "line": None, "column": None}
+                click.echo(json.dumps({"status": "error", "error": error}, indent=2))
+            ctx.exit(EXIT_FAULT)
         except (click.exceptions.Exit, click.exceptions.Abort, click.ClickException):
             raise
         except Exception as e:  # noqa: BLE001 - the last line of defence
@@ -130,6 +137,9 @@ class _Progress:
 @click.option("--plot", type=click.Path(dir_okay=False), help="Draw the toolpath (.png, .svg or .pdf).")
 @click.option("--max-steps", type=click.IntRange(min=1), default=100_000_000, show_default=True,
               help="Stop a runaway program after this many statements and blocks.")
+@click.option("--max-memory", metavar="SIZE",
+              help="Stop the run (error RUN006) when it would need more memory than this, e.g. 2G or 512M; "
+                   "0: no limit. Default: 8G, or half the machine's memory when that is less.")
 @click.option("--scenario", type=click.Path(dir_okay=False, exists=True),
               help="What happens over simulated time: [[scenario]] tables as in a machine file.")
 @click.option("--keys", type=click.Path(dir_okay=False, exists=True),
@@ -141,10 +151,11 @@ class _Progress:
 @click.option("--screen", type=click.Path(dir_okay=False), help="Save the operator screen at the end (.png).")
 @click.option("--screen-dir", type=click.Path(file_okay=False),
               help="Save one screen picture per wait for the operator (softkeys, input).")
-def run(program, dialect, machine, state_dir, as_json, trace, gcode, plot, max_steps, scenario, keys, editor_block,
-        screen, screen_dir):
+def run(program, dialect, machine, state_dir, as_json, trace, gcode, plot, max_steps, max_memory, scenario, keys,
+        editor_block, screen, screen_dir):
     """Run PROGRAM on the simulated controller."""
     from .api import run as api_run
+    from .runtime.memory import parse_size
     from .runtime.session import RunOptions
 
     if not Path(program).is_file():
@@ -160,7 +171,9 @@ def run(program, dialect, machine, state_dir, as_json, trace, gcode, plot, max_s
     options = RunOptions(state_dir=Path(state_dir), max_steps=max_steps, trace=as_path(trace),
                          gcode=as_path(gcode), echo=not as_json, scenario=as_path(scenario), keys=as_path(keys),
                          keyboard=keyboard, editor_block=editor_block, screen=as_path(screen),
-                         screen_dir=as_path(screen_dir))
+                         screen_dir=as_path(screen_dir), plot=bool(plot))
+    if max_memory is not None:
+        options.max_memory = parse_size(max_memory)
     # the progress line would draw over the operator's prompts
     progress = _Progress(enabled=sys.stderr.isatty() and not as_json and not keyboard)
     options.on_session = lambda s: setattr(progress, "session", s)
@@ -172,9 +185,9 @@ def run(program, dialect, machine, state_dir, as_json, trace, gcode, plot, max_s
         click.echo(f"ncvm: warning: dialect '{result['dialect']}' has no editor dialog; --editor-block ignored",
                    err=True)
     if plot:
-        from .sinks.plot import plot_toolpath
+        from .sinks.plot import draw
 
-        plot_toolpath(session.recorder, plot, title=f"{Path(program).name} ({result['dialect']})")
+        draw(session.plot, plot, title=f"{Path(program).name} ({result['dialect']})")
     if as_json:
         click.echo(json.dumps(result, indent=2))
     else:

@@ -139,5 +139,6 @@ NCVM_CODES = {
     "RUN003": "call nesting too deep",
     "RUN004": "run interrupted by the user",
     "RUN005": "waiting for ever (motion held with no way to go on)",
+    "RUN006": "memory limit reached (--max-memory)",
     "IO001": "file access outside the controller's file root",
 }

@@ -24,8 +24,8 @@ def _both(tmp_path, text, name="p.ngc"):
     tmp_path.mkdir(parents=True, exist_ok=True)
     path = tmp_path / name
     path.write_text(text)
-    plain, s1 = run(path, dialect="din", options=RunOptions(state_dir=tmp_path / ".a"))
-    stepped, s2 = run(path, dialect="din", options=RunOptions(state_dir=tmp_path / ".b", hook=lambda *a: None))
+    plain, s1 = run(path, dialect="din", options=RunOptions(keep_toolpath=True, state_dir=tmp_path / ".a"))
+    stepped, s2 = run(path, dialect="din", options=RunOptions(keep_toolpath=True, state_dir=tmp_path / ".b", hook=lambda *a: None))
     return (plain, s1), (stepped, s2)
 
 
@@ -92,7 +92,7 @@ def test_trace_of_a_batch_replays_every_move(tmp_path, random_din):
     traces = []
     for name, hook in (("a", None), ("b", lambda *a: None)):
         trace = tmp_path / f"{name}.jsonl"
-        run(path, dialect="din", options=RunOptions(state_dir=tmp_path / name, trace=trace, hook=hook))
+        run(path, dialect="din", options=RunOptions(keep_toolpath=True, state_dir=tmp_path / name, trace=trace, hook=hook))
         traces.append([json.loads(line) for line in trace.read_text().splitlines()])
     assert len(traces[0]) == len(traces[1]) > 100
     _same(traces[0], traces[1])
@@ -106,7 +106,7 @@ def test_constant_cutting_speed_sets_the_spindle_every_block(tmp_path):
     traces = []
     for name, hook in (("a", None), ("b", lambda *a: None)):
         trace = tmp_path / f"{name}.jsonl"
-        run(path, dialect="din", options=RunOptions(state_dir=tmp_path / name, trace=trace, hook=hook))
+        run(path, dialect="din", options=RunOptions(keep_toolpath=True, state_dir=tmp_path / name, trace=trace, hook=hook))
         traces.append([json.loads(line) for line in trace.read_text().splitlines()])
     assert sum(1 for t in traces[0] if t.get("call") == "spindle") > 20
     _same(traces[0], traces[1])
@@ -131,7 +131,7 @@ def test_fault_inside_a_run(tmp_path, bad, code, line):
 def test_step_limit_inside_a_run(tmp_path):
     path = tmp_path / "p.ngc"
     path.write_text("".join(f"G1 X{i} F500\n" for i in range(1, 101)))
-    result, _ = run(path, dialect="din", options=RunOptions(state_dir=tmp_path / ".n", max_steps=40))
+    result, _ = run(path, dialect="din", options=RunOptions(keep_toolpath=True, state_dir=tmp_path / ".n", max_steps=40))
     assert result["status"] == "error"
     assert result["error"]["line"] == 41
     assert result["steps"] == 40
@@ -144,7 +144,7 @@ def test_hand_computed_run(tmp_path):
     path = tmp_path / "p.ngc"
     # machine default: feed limits well above F600 (10 mm/s); acceleration from the default machine
     path.write_text("G1 X10 F600\nG3 X0 Y10 I-10 J0\nG1 X0 Y0\nM2\n")
-    result, session = run(path, dialect="din", options=RunOptions(state_dir=tmp_path / ".n"))
+    result, session = run(path, dialect="din", options=RunOptions(keep_toolpath=True, state_dir=tmp_path / ".n"))
     arc = math.pi * 10 / 2
     assert result["motion"]["feed_length"] == pytest.approx(10 + arc + 10)
     assert result["motion"]["bounds"]["X"] == pytest.approx([0.0, 10.0])
@@ -174,7 +174,7 @@ def test_queued_blocks_as_segments(tmp_path, random_din, seed, as_rows):
     # blocks from a second file in the middle, as a called sub-program adds them
     for blk in blocks[40:60]:
         blk.src = Src("sub.cpl", blk.src.line)
-    sessions = [Session(load_machine(), RunOptions(state_dir=tmp_path / name)) for name in "ab"]
+    sessions = [Session(load_machine(), RunOptions(keep_toolpath=True, state_dir=tmp_path / name)) for name in "ab"]
     queue = blocks
     if as_rows:
         queue = [block_row(b) or b for b in blocks]

@@ -83,7 +83,7 @@ def test_plot_writes_a_real_picture(tmp_path, suffix, magic):
 
     prog = tmp_path / "p.din"
     prog.write_text(PART)
-    _, session = run(prog, machine=shop_machine(), options=RunOptions(state_dir=tmp_path / "s"))
+    _, session = run(prog, machine=shop_machine(), options=RunOptions(keep_toolpath=True, state_dir=tmp_path / "s"))
     out = tmp_path / ("plot" + suffix)
     plot_toolpath(session.recorder, out, title="p")
     data = out.read_bytes()

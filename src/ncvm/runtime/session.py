@@ -9,6 +9,7 @@ result of ``ncvm run`` (see :meth:`Session.result`).
 from __future__ import annotations
 
 import sys
+from collections import deque
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Callable
@@ -20,7 +21,11 @@ from ..nc.canon import Canon, CanonSink
 from ..nc.kernel import NcKernel
 from ..sinks.limits import LimitCheck
 from ..sinks.toolpath import ToolpathRecorder
+from .memory import default_max_memory, out_of_memory
 from .steps import DEFAULT_MAX_STEPS, StepCounter, StepHook
+
+#: operator output lines a result keeps: the first half and the last half of this many (docs/decisions.md)
+MAX_OUTPUT_LINES = 20_000
 
 
 @dataclass
@@ -29,6 +34,10 @@ class RunOptions:
     max_steps: int = DEFAULT_MAX_STEPS
     trace: Path | None = None
     gcode: Path | None = None
+    plot: bool = False  # collect the (thinned) points of a toolpath plot while the program runs (session.plot)
+    keep_toolpath: bool = False  # keep every move (session.recorder.arrays()); else only totals and checks
+    max_output_lines: int = MAX_OUTPUT_LINES  # operator output lines kept for the result (first and last half)
+    max_memory: int = field(default_factory=default_max_memory)  # bytes the run may grow the process by; 0: no limit
     echo: bool = False  # print operator output to stdout as it happens
     hook: StepHook | None = None
     extra_sinks: list[CanonSink] = field(default_factory=list)
@@ -50,13 +59,17 @@ class Session:
         self.machine = machine
         self.options = options or RunOptions()
         self.dialect = dialect
-        self.output: list[str] = []
+        self.output = OperatorOutput(self.options.max_output_lines)
         self.variables: dict[str, Any] = {}
         #: dialect-specific parts of the result document (e.g. the rw_SymPas card's LPR recordings)
         self.extra: dict[str, Any] = {}
         self.steps = StepCounter(self.options.max_steps, self.options.hook)
-        self.recorder = ToolpathRecorder()
-        self.limits = LimitCheck(machine.axes, self.recorder)  # reads the recorded moves at the end
+        self.recorder = ToolpathRecorder(keep=self.options.keep_toolpath)
+        self.limits = LimitCheck(machine.axes, self.recorder)  # watches the recorded moves
+        self.plot = None
+        if self.options.plot:
+            from ..sinks.plot import PlotPoints
+            self.plot = PlotPoints(self.recorder)
         #: more checks of the recorded moves a front end adds (e.g. CPL's work areas and dead ranges); each
         #: has ``first()`` -> violations with ``line`` and ``message()``, reported with the soft limits
         self.limit_checks: list = []
@@ -122,7 +135,8 @@ class Session:
             "status": "error" if error else "ok",
             "dialect": self.dialect,
             "error": None,
-            "output": list(self.output),
+            "output": self.output.lines(),
+            "output_dropped": self.output.dropped,
             "variables": {k: _jsonable(v) for k, v in self.variables.items()},
             "position": self.kernel.workpiece_position(),
             "motion": motion.to_json(),
@@ -167,4 +181,34 @@ def run_guarded(session: Session, runner) -> Diagnostic | None:
     except KeyboardInterrupt:
         print("interrupted", file=sys.stderr)
         return Diagnostic("RUN004", "run interrupted by the user", None)
+    except MemoryError:
+        return out_of_memory(session.options.max_memory)
     return None
+
+
+class OperatorOutput:
+    """The operator output a result keeps: at most ``limit`` lines, the first half and the last half of them;
+    ``dropped`` counts the lines between the two that were not kept."""
+
+    def __init__(self, limit: int):
+        self.head: list[str] = []
+        self.head_size = limit - limit // 2
+        self.tail: deque[str] = deque(maxlen=limit // 2)
+        self.dropped = 0
+
+    def append(self, line: str) -> None:
+        if len(self.head) < self.head_size:
+            self.head.append(line)
+            return
+        if len(self.tail) == self.tail.maxlen:
+            self.dropped += 1
+        self.tail.append(line)
+
+    def lines(self) -> list[str]:
+        return self.head + list(self.tail)
+
+    def __iter__(self):
+        return iter(self.lines())
+
+    def __len__(self) -> int:
+        return len(self.head) + len(self.tail)

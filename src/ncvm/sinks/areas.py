@@ -1,9 +1,9 @@
 """Protection-zone check: moves that enter a dead range or leave a work area.
 
 A zone is an axis-parallel rectangle on two machine axes (machine coordinates,
-mm). Like :class:`~ncvm.sinks.limits.LimitCheck` it reads the toolpath
-recorder once, at the end, and reports the first offending move per zone; the
-run goes on. Work areas are convex, so a move stays inside exactly when its
+mm). Like :class:`~ncvm.sinks.limits.LimitCheck` it watches the toolpath
+recorder, a window of moves at a time, and reports the first offending move per
+zone; the run goes on. Work areas are convex, so a move stays inside exactly when its
 extent (end points, widened by where arcs reach) does. Dead ranges are open
 rectangles: a straight move enters one when the part of the segment inside it
 has a length (Liang-Barsky clipping, vectorised); an arc in the zone's plane is
@@ -61,37 +61,44 @@ class ZoneCheck:
         self.zones = zones
         self.axis_names = tuple(axis_names)
         self.recorder = recorder
+        #: zone number -> (move number, zone number, its first violation)
+        self._found: dict[int, tuple] = {}
+        recorder.watch(self)
 
     def first(self) -> list[ZoneViolation]:
-        if not self.zones or not len(self.recorder):
-            return []
-        found = []
+        self.recorder.settle()
+        return [v for _, _, v in sorted(self._found.values(), key=lambda f: (f[0], f[1]))]
+
+    def observe(self, rec, lo: int, hi: int) -> None:
+        """Moves ``lo``..``hi`` of the recorder's window: the first violation of each zone not yet found."""
         for z in self.zones:
-            k = self._first_work(z) if z.kind == WORK else self._first_dead(z)
+            if z.number in self._found:
+                continue
+            k = self._first_work(rec, z, lo, hi) if z.kind == WORK else self._first_dead(rec, z, lo, hi)
             if k is not None:
-                src = self.recorder.src(k)
-                found.append((k, z.number, ZoneViolation(z, (self.axis_names[z.a], self.axis_names[z.b]),
-                                                         src.file, src.line)))
-        found.sort(key=lambda f: (f[0], f[1]))
-        return [v for _, _, v in found]
+                src = rec.src(k)
+                self._found[z.number] = (rec.base + k, z.number, ZoneViolation(
+                    z, (self.axis_names[z.a], self.axis_names[z.b]), src.file, src.line))
 
-    def _first_work(self, z: Zone) -> int | None:
-        lo = self.recorder.end_array().copy()
-        hi = lo.copy()
-        self.recorder.arc_reach(lo, hi)
-        bad = np.zeros(len(lo), dtype=bool)
+    @staticmethod
+    def _first_work(rec, z: Zone, lo: int, hi: int) -> int | None:
+        low = rec.window()["end"][lo:hi].copy()
+        high = low.copy()
+        rec.arc_reach(low, high, lo)
+        bad = np.zeros(len(low), dtype=bool)
         for col, zl, zh in ((z.a, z.lo[0], z.hi[0]), (z.b, z.lo[1], z.hi[1])):
-            bad |= (lo[:, col] < zl - TOL) | (hi[:, col] > zh + TOL)
-        return int(bad.argmax()) if bad.any() else None
+            bad |= (low[:, col] < zl - TOL) | (high[:, col] > zh + TOL)
+        return lo + int(bad.argmax()) if bad.any() else None
 
-    def _first_dead(self, z: Zone) -> int | None:
-        arr = self.recorder.arrays()
+    @staticmethod
+    def _first_dead(rec, z: Zone, lo: int, hi: int) -> int | None:
+        arr = rec.window()
         start, end = arr["start"], arr["end"]
-        arc_specs = self.recorder.arcs
-        hits = _segments_enter(z, start, end)
+        arc_specs = {i: spec for i, spec in rec.arcs.items() if lo <= i < hi}
+        hits = _segments_enter(z, start[lo:hi], end[lo:hi])
         if arc_specs:
-            hits[list(arc_specs)] = False  # arcs are tested on their curve, not their chord
-        k = int(hits.argmax()) if hits.any() else None
+            hits[[i - lo for i in arc_specs]] = False  # arcs are tested on their curve, not their chord
+        k = lo + int(hits.argmax()) if hits.any() else None
         for index in sorted(arc_specs):
             if k is not None and index >= k:
                 break

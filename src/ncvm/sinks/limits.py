@@ -1,9 +1,9 @@
 """Travel-limit check: the first block whose motion leaves an axis's soft limits.
 
-The check reads the toolpath recorder's moves once, at the end, with numpy,
-instead of being a canon sink called on every move: straight moves are
-tested by their end points (the start was the previous end), arcs by the
-extent they reach in their plane.
+The check watches the toolpath recorder (:meth:`ToolpathRecorder.watch`)
+instead of being a canon sink called on every move: it is shown the moves a
+window at a time and tests them with numpy, straight moves by their end points
+(the start was the previous end), arcs by the extent they reach in their plane.
 """
 
 from __future__ import annotations
@@ -33,36 +33,37 @@ class LimitCheck:
     def __init__(self, axes, recorder):
         self.axes = axes
         self.recorder = recorder
-        self._mins = tuple(ax.min - 1e-9 for ax in axes)
-        self._maxs = tuple(ax.max + 1e-9 for ax in axes)
+        self._mins = np.array([ax.min - 1e-9 for ax in axes])
+        self._maxs = np.array([ax.max + 1e-9 for ax in axes])
+        #: axis index -> (move number, axis index, its first violation)
+        self._found: dict[int, tuple] = {}
+        recorder.watch(self)
 
-    def _reach(self) -> tuple[np.ndarray, np.ndarray]:
-        """Lowest and highest point of every move per axis: the end point, widened by arcs in their plane."""
-        lo = self.recorder.end_array().copy()
-        hi = lo.copy()
-        self.recorder.arc_reach(lo, hi)
-        return lo, hi
+    def observe(self, rec, lo: int, hi: int) -> None:
+        """Moves ``lo``..``hi`` of the recorder's window: the first violation of each axis not yet found."""
+        if len(self._found) == len(self.axes):
+            return
+        low = rec.window()["end"][lo:hi].copy()
+        high = low.copy()
+        rec.arc_reach(low, high, lo)
+        for i, ax in enumerate(self.axes):
+            if i in self._found:
+                continue
+            below = low[:, i] < self._mins[i]
+            bad = below | (high[:, i] > self._maxs[i])
+            if not bad.any():
+                continue
+            k = int(bad.argmax())
+            src = rec.src(lo + k)
+            value = float(low[k, i]) if below[k] else float(high[k, i])
+            limit = ax.min if below[k] else ax.max
+            self._found[i] = (rec.base + lo + k, i, LimitViolation(ax.name, value, limit, src.file, src.line))
 
     @property
     def violations(self) -> dict[str, LimitViolation]:
         """Axis name -> its first violation, in the order they happened (move, then axis order)."""
-        if not len(self.recorder):
-            return {}
-        lo, hi = self._reach()
-        found = []
-        for i, ax in enumerate(self.axes):
-            below = lo[:, i] < self._mins[i]
-            bad = below | (hi[:, i] > self._maxs[i])
-            if not bad.any():
-                continue
-            k = int(bad.argmax())
-            src = self.recorder.src(k)
-            if below[k]:
-                found.append((k, i, LimitViolation(ax.name, float(lo[k, i]), ax.min, src.file, src.line)))
-            else:
-                found.append((k, i, LimitViolation(ax.name, float(hi[k, i]), ax.max, src.file, src.line)))
-        found.sort(key=lambda f: (f[0], f[1]))
-        return {v.axis: v for _, _, v in found}
+        self.recorder.settle()
+        return {v.axis: v for _, _, v in sorted(self._found.values(), key=lambda f: (f[0], f[1]))}
 
     def first(self) -> list[LimitViolation]:
         return sorted(self.violations.values(), key=lambda v: v.line)

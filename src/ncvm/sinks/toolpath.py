@@ -1,4 +1,12 @@
-"""Toolpath recorder: every move as rows of numpy arrays, with exact lengths and extents."""
+"""Toolpath recorder: the moves as numpy columns, with running totals (counts, lengths, exact extents).
+
+A run of millions of moves must not hold them all: unless the recorder is
+asked to *keep* the toolpath (tests, API users who read :meth:`arrays`), it
+holds a window of at most about ``WINDOW`` moves. When the window is full it
+is *settled*: its moves are added to the running totals and handed to the
+watchers (soft limits, work areas, the plot), which keep what they need (a
+first violation, thinned points), and then forgotten.
+"""
 
 from __future__ import annotations
 
@@ -13,6 +21,10 @@ from ..nc import arcs
 from ..nc.canon import ArcSpec, CanonSink, MoveBatch, Src
 
 RAPID, FEED, ARC = 0, 1, 2
+#: moves held before the window is settled and forgotten (without keep)
+WINDOW = 1 << 16
+#: batches held before the window is settled (many tiny batches: one move per WAIT in a CPL loop)
+MAX_CHUNKS = 1024
 
 
 @dataclass
@@ -30,16 +42,19 @@ class MotionSummary:
 
 
 class ToolpathRecorder(CanonSink):
-    """Records moves; :meth:`arrays` gives ``kind``, ``start``, ``end``, ``tool``, ``line`` as numpy arrays.
+    """Records moves; :meth:`window` gives the window's ``kind``, ``start``, ``end``, ``tool``, ``line`` columns.
 
     Single moves are appended as rows (one append on the hot path); batches of
     moves arrive as columns and are kept as they are. Both end up as chunks of
     columns, joined when :meth:`arrays` is asked. Arcs keep their
     :class:`ArcSpec` so plots can draw them and extents include the quadrant
-    points an arc passes through.
+    points an arc passes through. With ``keep`` the window is the whole toolpath;
+    without, moves before it are only in the totals and the watchers.
+    Indices (``src``, ``arcs``, ``arc_reach``, ``polyline``) count within the window.
     """
 
-    def __init__(self):
+    def __init__(self, keep: bool = True):
+        self.keep = keep
         self.axis_names: tuple[str, ...] = ()
         self.start_point: tuple = ()
         #: single moves not yet in a chunk: (kind, end, src, tool) rows
@@ -57,19 +72,41 @@ class ToolpathRecorder(CanonSink):
         self.arc_extent: list[list[float]] | None = None  # per axis [lo, hi]
         self.tool = 0
         self._arrays: tuple[int, dict] | None = None  # (number of moves, arrays()) of the last call
+        #: moves forgotten before the window, and where the window starts
+        self.base = 0
+        self._window_start: tuple = ()
+        self._settled = 0  # moves of the window already in the totals and shown to the watchers
+        #: objects with ``observe(recorder, lo, hi)``: told of window moves lo..hi once each
+        self._watchers: list = []
+        self._counts = [0, 0, 0]
+        self._lengths = [0.0, 0.0]  # straight rapid, straight feed
+        self._lo: np.ndarray | None = None
+        self._hi: np.ndarray | None = None
 
     def begin(self, axis_names, start):
         self.axis_names = tuple(axis_names)
-        self.start_point = tuple(start)
+        self.start_point = self._window_start = tuple(start)
+
+    def watch(self, watcher) -> None:
+        """Hand every move to ``watcher.observe(self, lo, hi)``, those already settled included."""
+        if self.base:
+            raise RuntimeError("a watcher of the toolpath must be added before its moves are forgotten")
+        self._watchers.append(watcher)
+        if self._settled:
+            watcher.observe(self, 0, self._settled)
 
     def rapid(self, start, end, src: Src):
         self._add((RAPID, end, src, self.tool))
+        if len(self._rows) >= WINDOW:
+            self._flush()
 
     def feed(self, start, end, feed, src: Src):
         self._add((FEED, end, src, self.tool))
+        if len(self._rows) >= WINDOW:
+            self._flush()
 
     def arc(self, start, end, spec: ArcSpec, feed, src: Src):
-        index = len(self)
+        index = self._held()
         self._add((ARC, end, src, self.tool))
         a, b = spec.a, spec.b
         ca, cb = spec.center
@@ -77,10 +114,12 @@ class ToolpathRecorder(CanonSink):
         helix = math.sqrt(sum((e - s) ** 2 for i, (s, e) in enumerate(zip(start, end)) if i not in (a, b)))
         self._add_arc(index, spec, arcs.arc_length(spec.radius, angle, helix),
                       arcs.arc_plane_extent(start[a], start[b], ca, cb, spec.radius, angle))
+        if len(self._rows) >= WINDOW:
+            self._flush()
 
     def move_batch(self, batch: MoveBatch):
         """Moves of a plain run: kept as the batch's columns, arcs as the batch's arc columns."""
-        self._flush()
+        self._flush(settle=False)
         base = self._chunked
         n = len(batch)
         columns = {"kind": batch.kind, "end": batch.end, "tool": np.full(n, self.tool, dtype=np.int32),
@@ -88,12 +127,12 @@ class ToolpathRecorder(CanonSink):
         self._chunks.append((base, columns, batch.file, None))
         self._chunked += n
         arc = batch.arcs
-        if arc is None:
-            return
-        self._arc_batches.append((base, arc))
-        self.arc_length = float(np.cumsum(np.concatenate(([self.arc_length], arc.length)))[-1])
-        self._widen(arc.a, float(arc.extent[:, 0].min()), float(arc.extent[:, 1].max()))
-        self._widen(arc.b, float(arc.extent[:, 2].min()), float(arc.extent[:, 3].max()))
+        if arc is not None:
+            self._arc_batches.append((base, arc))
+            self.arc_length = float(np.cumsum(np.concatenate(([self.arc_length], arc.length)))[-1])
+            self._widen(arc.a, float(arc.extent[:, 0].min()), float(arc.extent[:, 1].max()))
+            self._widen(arc.b, float(arc.extent[:, 2].min()), float(arc.extent[:, 3].max()))
+        self._settle_when_full()
 
     def _add_arc(self, index: int, spec: ArcSpec, length: float, extent) -> None:
         a, b = spec.a, spec.b
@@ -112,14 +151,22 @@ class ToolpathRecorder(CanonSink):
             out.update((base + row, spec) for row, spec in arc.specs().items())
         return out
 
-    def arc_reach(self, lo: np.ndarray, hi: np.ndarray) -> None:
-        """Widen per-move lowest/highest points (rows of ``lo``/``hi``) by where the arcs reach in their plane."""
+    def arc_reach(self, lo: np.ndarray, hi: np.ndarray, first: int = 0) -> None:
+        """Widen per-move lowest/highest points by where the arcs reach in their plane; row ``r`` of
+        ``lo``/``hi`` is move ``first + r``."""
+        n = len(lo)
         for index, (a, b, lo_a, hi_a, lo_b, hi_b) in self._arc_bounds.items():
-            lo[index, a], hi[index, a], lo[index, b], hi[index, b] = lo_a, hi_a, lo_b, hi_b
+            r = index - first
+            if 0 <= r < n:
+                lo[r, a], hi[r, a], lo[r, b], hi[r, b] = lo_a, hi_a, lo_b, hi_b
         for base, arc in self._arc_batches:
-            rows = base + arc.rows
-            lo[rows, arc.a], hi[rows, arc.a] = arc.extent[:, 0], arc.extent[:, 1]
-            lo[rows, arc.b], hi[rows, arc.b] = arc.extent[:, 2], arc.extent[:, 3]
+            rows = base + arc.rows - first
+            inside = (rows >= 0) & (rows < n)
+            if not inside.any():
+                continue
+            rows, ext = rows[inside], arc.extent[inside]
+            lo[rows, arc.a], hi[rows, arc.a] = ext[:, 0], ext[:, 1]
+            lo[rows, arc.b], hi[rows, arc.b] = ext[:, 2], ext[:, 3]
 
     def _widen(self, axis: int, lo: float, hi: float) -> None:
         """Widen the extent arcs reach on ``axis``."""
@@ -128,20 +175,58 @@ class ToolpathRecorder(CanonSink):
             ext = self.arc_extent = [[math.inf, -math.inf] for _ in self.axis_names]
         ext[axis][0], ext[axis][1] = min(ext[axis][0], lo), max(ext[axis][1], hi)
 
-    def _flush(self) -> None:
-        """Turn the single-move rows into a chunk of columns."""
+    def _flush(self, settle: bool = True) -> None:
+        """Turn the single-move rows into a chunk of columns (and settle a full window)."""
         rows = self._rows
-        if not rows:
-            return
-        n, n_axes = len(rows), len(self.axis_names)
-        ends = np.fromiter(chain.from_iterable(row[1] for row in rows), dtype=float, count=n * n_axes)
-        columns = {"kind": np.fromiter((row[0] for row in rows), dtype=np.int8, count=n),
-                   "end": ends.reshape(n, n_axes),
-                   "tool": np.fromiter((row[3] for row in rows), dtype=np.int32, count=n),
-                   "line": np.fromiter((row[2].line for row in rows), dtype=np.int32, count=n)}
-        self._chunks.append((self._chunked, columns, None, [row[2] for row in rows]))
-        self._chunked += n
-        rows.clear()
+        if rows:
+            n, n_axes = len(rows), len(self.axis_names)
+            ends = np.fromiter(chain.from_iterable(row[1] for row in rows), dtype=float, count=n * n_axes)
+            columns = {"kind": np.fromiter((row[0] for row in rows), dtype=np.int8, count=n),
+                       "end": ends.reshape(n, n_axes),
+                       "tool": np.fromiter((row[3] for row in rows), dtype=np.int32, count=n),
+                       "line": np.fromiter((row[2].line for row in rows), dtype=np.int32, count=n)}
+            self._chunks.append((self._chunked, columns, None, [row[2] for row in rows]))
+            self._chunked += n
+            rows.clear()
+        if settle:
+            self._settle_when_full()
+
+    def _settle_when_full(self) -> None:
+        if not self.keep and (self._chunked - self._settled >= WINDOW or len(self._chunks) >= MAX_CHUNKS):
+            self.settle()
+
+    def settle(self) -> None:
+        """Add the moves not yet counted to the totals and show them to the watchers; without keep, forget them."""
+        self._flush(settle=False)
+        n = self._chunked
+        if n > self._settled:
+            lo = self._settled
+            arr = self.window()
+            self._total(arr["kind"][lo:], arr["start"][lo:], arr["end"][lo:])
+            self._settled = n
+            for w in self._watchers:
+                w.observe(self, lo, n)
+        if not self.keep and n:
+            self._window_start = tuple(self.window()["end"][-1].tolist())
+            self.base += n
+            self._chunks.clear()
+            self._chunked = self._settled = 0
+            self._arcs.clear()
+            self._arc_bounds.clear()
+            self._arc_batches.clear()
+            self._arrays = None
+
+    def _total(self, kind: np.ndarray, start: np.ndarray, end: np.ndarray) -> None:
+        """Add moves to the running counts, straight lengths and extents."""
+        seg = np.sqrt(((end - start) ** 2).sum(axis=1))
+        for k in (RAPID, FEED, ARC):
+            self._counts[k] += int((kind == k).sum())
+        self._lengths[RAPID] += float(seg[kind == RAPID].sum())
+        self._lengths[FEED] += float(seg[kind == FEED].sum())
+        lo = np.minimum(start.min(axis=0), end.min(axis=0))
+        hi = np.maximum(start.max(axis=0), end.max(axis=0))
+        self._lo = lo if self._lo is None else np.minimum(self._lo, lo)
+        self._hi = hi if self._hi is None else np.maximum(self._hi, hi)
 
     def tool_change(self, tool, src):
         self.tool = tool
@@ -149,21 +234,27 @@ class ToolpathRecorder(CanonSink):
     # -- results ---------------------------------------------------------
     def __len__(self) -> int:
         """Moves recorded so far (the CLI's progress line reads this while the program runs)."""
+        return self.base + self._held()
+
+    def _held(self) -> int:
+        """Moves in the window."""
         return self._chunked + len(self._rows)
 
     def src(self, index: int) -> Src:
-        """Where move ``index`` came from."""
-        self._flush()
+        """Where move ``index`` of the window came from."""
+        self._flush(settle=False)
         first, columns, file, srcs = self._chunks[bisect_right(self._chunks, index, key=lambda c: c[0]) - 1]
         return srcs[index - first] if srcs is not None else Src(file, int(columns["line"][index - first]))
 
-    def end_array(self) -> np.ndarray:
-        """End point of every move, one row per move (shared with :meth:`arrays`: do not modify it)."""
-        return self.arrays()["end"]
-
     def arrays(self) -> dict[str, np.ndarray]:
-        """The moves as numpy columns; built once per number of moves (summary, limit check and plot share it)."""
-        self._flush()
+        """Every move as numpy columns: the whole toolpath, which only a recorder that keeps it has."""
+        if self.base:
+            raise RuntimeError("the toolpath was not kept (RunOptions(keep_toolpath=True) keeps it)")
+        return self.window()
+
+    def window(self) -> dict[str, np.ndarray]:
+        """The window's moves as numpy columns; built once per number of moves (watchers share it)."""
+        self._flush(settle=False)
         n, n_axes = self._chunked, len(self.axis_names)
         if self._arrays is not None and self._arrays[0] == n:
             return self._arrays[1]
@@ -172,27 +263,23 @@ class ToolpathRecorder(CanonSink):
         else:
             arr = {"kind": np.zeros(0, np.int8), "end": np.zeros((0, n_axes)), "tool": np.zeros(0, np.int32),
                    "line": np.zeros(0, np.int32)}
-        arr["start"] = np.vstack([np.asarray(self.start_point, dtype=float).reshape(1, n_axes), arr["end"][:-1]])
+        start = np.asarray(self._window_start, dtype=float).reshape(1, n_axes)
+        arr["start"] = np.vstack([start, arr["end"][:-1]])
         self._arrays = (n, arr)
         return arr
 
     def summary(self) -> MotionSummary:
-        arr = self.arrays()
-        kind, start, end = arr["kind"], arr["start"], arr["end"]
-        seg = np.sqrt(((end - start) ** 2).sum(axis=1)) if len(kind) else np.zeros(0)
-        rapid_len = float(seg[kind == RAPID].sum())
-        feed_len = float(seg[kind == FEED].sum()) + self.arc_length
+        """Counts, lengths and extents of every move recorded (settles the window)."""
+        self.settle()
         bounds = {}
-        if len(kind):
-            lo = np.minimum(start.min(axis=0), end.min(axis=0))
-            hi = np.maximum(start.max(axis=0), end.max(axis=0))
+        if self._lo is not None:
             for i, name in enumerate(self.axis_names):
-                l, h = float(lo[i]), float(hi[i])
+                l, h = float(self._lo[i]), float(self._hi[i])
                 if self.arc_extent is not None:
                     l, h = min(l, self.arc_extent[i][0]), max(h, self.arc_extent[i][1])
                 bounds[name] = [l, h]
-        return MotionSummary(int((kind == RAPID).sum()), int((kind == FEED).sum()), int((kind == ARC).sum()),
-                             rapid_len, feed_len, bounds)
+        rapid, feed, arc = self._counts
+        return MotionSummary(rapid, feed, arc, self._lengths[RAPID], self._lengths[FEED] + self.arc_length, bounds)
 
     def polyline(self, index: int, start, end) -> list:
         """Points of move ``index`` for drawing (arcs sampled)."""

@@ -20,8 +20,8 @@ def test_nc_blocks_in_cpl_move_as_in_din(tmp_path, random_din, seed):
     text = "\n".join(line for line in random_din(seed).splitlines() if line.strip() != "%") + "\n"
     (tmp_path / "p.ngc").write_text(text)
     (tmp_path / "p.cpl").write_text(text)
-    din, s1 = run(tmp_path / "p.ngc", options=RunOptions(state_dir=tmp_path / ".a"))
-    cpl, s2 = run(tmp_path / "p.cpl", options=RunOptions(state_dir=tmp_path / ".b"))
+    din, s1 = run(tmp_path / "p.ngc", options=RunOptions(keep_toolpath=True, state_dir=tmp_path / ".a"))
+    cpl, s2 = run(tmp_path / "p.cpl", options=RunOptions(keep_toolpath=True, state_dir=tmp_path / ".b"))
     assert din["status"] == cpl["status"] == "ok", cpl["error"]
     a1, a2 = s1.recorder.arrays(), s2.recorder.arrays()
     assert len(a1["kind"]) > 40 and np.array_equal(a1["kind"], a2["kind"])

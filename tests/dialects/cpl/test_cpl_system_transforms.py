@@ -213,7 +213,7 @@ def test_plain_straight_moves_leave_the_fast_path_while_a_transformation_is_acti
     path = tmp_path / "p.cpl"
     path.write_text("N10 G0 X1 Y1\nN20 G37 I2 J2\nN30 G0 X3 Y4\nN40 G1 X5 F1000\nN50 G39\n"
                     "N60 G1 X7 Y2\nM30\n", encoding="latin-1")
-    result, session = api_run(path, machine=reference(1), options=RunOptions(state_dir=tmp_path / ".s"))
+    result, session = api_run(path, machine=reference(1), options=RunOptions(keep_toolpath=True, state_dir=tmp_path / ".s"))
     assert result["status"] == "ok", result["error"]
     ends = [tuple(e[:2]) for e in session.recorder.arrays()["end"]]
     assert ends == [(1.0, 1.0), (6.0, 8.0), (10.0, 8.0), (7.0, 2.0)]

@@ -26,7 +26,7 @@ def run_mpf(tmp_path: Path, text: str, extra: str = "", *, machine_text: str = M
     path = tmp_path / name
     path.write_text(text)
     result, sess = run(path, dialect="sin800", machine=tmp_path / "machine.toml",
-                       options=RunOptions(state_dir=tmp_path / state))
+                       options=RunOptions(state_dir=tmp_path / state, keep_toolpath=session))
     if ok:
         assert result["status"] == "ok", result["error"]
     return (result, sess) if session else result

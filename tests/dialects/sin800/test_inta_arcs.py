@@ -192,5 +192,5 @@ def test_arc_the_kernel_rejects_keeps_the_kernel_fault(tmp_path, machine, text, 
     path = tmp_path / "prog.mpf"
     path.write_text(f"%MPF1\n{text}\nM30\n")
     r, _s = run(path, dialect="sin800", machine=tmp_path / "machine.toml",
-                options=RunOptions(state_dir=tmp_path / ".ncvm"))
+                options=RunOptions(keep_toolpath=True, state_dir=tmp_path / ".ncvm"))
     assert r["error"]["code"] == code and r["error"]["line"] == 3

@@ -15,6 +15,9 @@ from .lexer import LexError, Tok, VarName, classify, cpl_blocks, tokenize
 #: keywords that close or split a structure; a statement may be followed directly by one of them
 CLOSERS = {"ELSE", "ENDIF", "END", "NEXT", "UNTIL", "LABEL", "OTHERWISE", "ENDCASE"}
 MAX_PARENS = 7
+#: "Field size of the field variable of the types INTEGER and REAL: max. 65536" (manual §2.4.3 L702):
+#: the elements of a numeric field, its two dimensions multiplied
+MAX_FIELD_SIZE = 65536
 
 
 class ParseError(Exception):
@@ -313,10 +316,13 @@ class BlockParser:
         for s in sizes:
             if not isinstance(s.val, int):
                 self.error("CPL022", "field sizes are INTEGER constants", s)
-        limit = 1024 if v.val.suffix == "$" else 65536
+        limit = 1024 if v.val.suffix == "$" else MAX_FIELD_SIZE
         for s in sizes:
             if not 1 <= s.val <= limit:
                 self.error("CPL022", f"size {s.val} outside 1..{limit}", s)
+        if v.val.suffix != "$" and len(sizes) == 2 and sizes[0].val * sizes[1].val > MAX_FIELD_SIZE:
+            self.error("CPL022", f"field size {sizes[0].val} x {sizes[1].val} = {sizes[0].val * sizes[1].val}: "
+                                 f"a field holds at most {MAX_FIELD_SIZE} elements", sizes[0])
         return (v.val, [s.val for s in sizes])
 
     def wait(self, t: Tok) -> A.Wait:

@@ -2,8 +2,10 @@
 
 Block preparation runs ahead of block execution (manual §4.1, digest §1.5): CPL statements run at once,
 NC blocks go into a motion queue that the NC kernel executes in simulated time only when a WAIT, the
-program end or the configured look-ahead depth ([cpl] lookahead) drains it. Functions such as MPOS
-therefore see the executed position, stale without a WAIT, exactly as the manual's WAIT example says.
+program end or the look-ahead depth drains it. Functions such as MPOS therefore see the executed
+position, stale without a WAIT, exactly as the manual's WAIT example says. The depth is ``[cpl]
+lookahead`` blocks; without it the queue is the block buffer of BLOCK_BUFFER blocks, whose older half is
+executed at once (column-wise) when it is full, so no program can queue without bound.
 
 The program has its own time (``t_prep``): a WAIT(,ms) or a WAIT for an input moves it on, and execution
 runs up to it. The kernel executes whole blocks, so the block under way at that time has been executed to
@@ -28,6 +30,7 @@ from ...nc.block import ROW_LINE, Block, DinSyntaxError, as_block, parse_din_lin
 from ...nc.canon import Canon, Src
 from ...nc.midmove import MotionRecorder, position_at
 from ...nc.plainrun import execute_segments, plain_segments
+from ...runtime.memory import out_of_memory
 from . import values as V
 from .axiswords import check_words, missing_axis_blocks, refusing
 from .builtins import FUNCTIONS
@@ -50,6 +53,8 @@ from .unlinked import link_late, run_unlinked
 
 _EXTENDED = re.compile(r"\s*([A-Za-z][A-Za-z0-9_]*[0-9_][A-Za-z0-9_]*)\s*=\s*([-+]?(?:\d+\.?\d*|\.\d+))\s*$")
 MAX_NESTING = 7  # sub-program levels below the main program (manual §2.1 L323)
+#: blocks prepared ahead of execution without ``[cpl] lookahead`` (the manual gives no size; docs/decisions.md)
+BLOCK_BUFFER = 20_000
 
 
 class ProgramClock:
@@ -87,6 +92,8 @@ class CplRuntime:
         self.globals: dict = {}
         self.perm = Permanents(session)
         self.queue: deque = deque()
+        #: queue an NC block (or a plain row); preparation waits when the look-ahead is full
+        self.enqueue = self.queue_limited if self.lookahead > 0 else self._buffered(BLOCK_BUFFER)
         self.executed = 0  # blocks taken from the queue and executed so far
         self.row_words: set[str] = set()  # the addresses the plain rows of the units made so far have
         self._shadow = None  # the NC state after every prepared block (see prepared_kernel)
@@ -172,9 +179,8 @@ class CplRuntime:
             "_ix": V.index, "_sv": V.sv, "_view": S.mid_for_variable, "_setf": _setf, "_midw": _midw, "_dim": _dim,
             "_pdim": _pdim, "_pstr": _pstr, "_gfield": self.gfield, "_gset_s": self.gset_s, "_pint": _pint,
             "_call": functools.partial(self.call, path),
-            "_q": self.enqueue_probe if self._probing else (
-                self.queue.append if self.lookahead <= 0 else self.queue_limited),
-            "_qr": self.queue.append if self.lookahead <= 0 else self.queue_limited,  # a plain row (nc.block)
+            "_q": self.enqueue_probe if self._probing else self.enqueue,
+            "_qr": self.enqueue,  # a plain row (nc.block)
             "_NaN": math.nan,
             "_drain": self.drain, "_wait": self.wait, "_Block": Block, "_loose": self.loose,
             "_word": V.word, "_mval": _mval, "_modal": self.modal,
@@ -219,7 +225,12 @@ class CplRuntime:
             except ControlReset as reset:  # MCOPS(2) on the own channel: the main program is exited
                 self.session.say(str(reset))
             finally:
-                self.session.variables = self.report(result or self.fault_locals)
+                try:
+                    self.session.variables = self.report(result or self.fault_locals)
+                except MemoryError as again:
+                    if not isinstance(again.__context__, MemoryError):
+                        raise
+                    # out of memory already: the run stops at the statement that reached the limit
             self.drain()
             self.io.end_program(png=self.session.options.screen)
             self.kernel.end_program(Src(main, max(1, len(self.linked.main.prog.stmts) and
@@ -279,6 +290,8 @@ class CplRuntime:
             code, detail = "CPL027", "number too large"
         elif isinstance(e, RecursionError):
             code, detail = "CPL007", ""
+        elif isinstance(e, MemoryError):  # the run's memory limit (runtime.memory), reported where it was reached
+            code, detail = "RUN006", ""
         else:
             raise e
         frames = []
@@ -287,7 +300,8 @@ class CplRuntime:
             if uc is not None:
                 line = uc.src.source_line(fs.lineno)
                 frames.append((fs.filename, line, uc.cpl_lines.get(line), uc.src.source_col(fs.lineno)))
-        text = e.message if isinstance(e, CplRuntimeError) else message(code, detail)
+        text = e.message if isinstance(e, CplRuntimeError) else message(code, detail) if code != "RUN006" \
+            else out_of_memory(self.session.options.max_memory).message
         if not frames:
             return RuntimeFault(code, text, None)
         file, line, cpl, col = frames[-1]
@@ -369,6 +383,17 @@ class CplRuntime:
             self.globals[key] = value
 
     # -- NC blocks and the motion queue ---------------------------------------------------------
+    def _buffered(self, size: int):
+        """The queue's append for the block buffer: when ``size`` blocks wait, the older half is executed."""
+        queue, append, spill = self.queue, self.queue.append, self.execute_oldest
+
+        def enqueue(blk) -> None:
+            append(blk)
+            if len(queue) >= size:
+                spill(size - size // 2)
+
+        return enqueue
+
     def queue_limited(self, blk) -> None:
         """The look-ahead is full: preparation waits until the oldest block has been executed."""
         self.queue.append(blk)
@@ -381,20 +406,16 @@ class CplRuntime:
         if MEASURING_G.intersection(blk.g):
             self.queue.append(probe_block(self, blk))
             self.drain()
-        elif self.lookahead <= 0:
-            self.queue.append(blk)
         else:
-            self.queue_limited(blk)
+            self.enqueue(blk)
 
     def enqueue_typ3(self, blk) -> None:
         """A block that may carry a Typ3 G function the kernel does not know (G168, G268, G131, ...)."""
         blk = prepare(self, blk)
         if self._probing:
             self.enqueue_probe(blk)
-        elif self.lookahead <= 0:
-            self.queue.append(blk)
         else:
-            self.queue_limited(blk)
+            self.enqueue(blk)
 
     def execute_one(self) -> None:
         blk = self.queue.popleft()
@@ -411,10 +432,17 @@ class CplRuntime:
 
     def drain(self) -> None:
         """WAIT without parameters: stop preparation until every block before it has been executed."""
+        self.execute_oldest(len(self.queue))
+
+    def execute_oldest(self, n: int) -> None:
+        """Execute the ``n`` oldest queued blocks (runs of plain blocks column-wise); preparation waits for them."""
         q = self.queue
-        self.executed += len(q)
-        blocks = list(q)
-        q.clear()
+        if n >= len(q):
+            blocks = list(q)
+            q.clear()
+        else:
+            blocks = [q.popleft() for _ in range(n)]
+        self.executed += len(blocks)
         execute_segments(self.kernel, plain_segments(blocks, self.row_words), self.execute_block)
         self.t_prep = max(self.t_prep, self.machine.clock.now)
 
@@ -432,7 +460,10 @@ class CplRuntime:
             shadow.canon = Canon([])
             shadow.prog, shadow.g92, shadow.offset_vec = list(k.prog), list(k.g92), list(k.offset_vec)
             self._shadow, self._shadow_at = shadow, self.executed
-        for blk in itertools.islice(self.queue, self._shadow_at - self.executed, None):
+        # the blocks prepared since, taken from the new end of the queue (skipping the older ones would cost
+        # the length of the queue at every CPOS)
+        pending = len(self.queue) - (self._shadow_at - self.executed)
+        for blk in reversed(list(itertools.islice(reversed(self.queue), pending))):
             if blk.__class__ is Typ3Block:
                 activate(self, self._shadow, blk)
             else:

@@ -54,7 +54,7 @@ def run_unlinked(rt, target: str, name: str) -> None:
         g = tuple(int(w.value) if w.value == int(w.value) else w.value for w in s.words if w.address == "G")
         m = tuple(int(w.value) for w in s.words if w.address == "M" and w.value not in (2, 30))
         if g or m or words or s.msg is not None:
-            rt.queue.append(prepare(rt, Block(g, m, words, s.n, s.msg, Src(target, s.line))))
+            rt.enqueue(prepare(rt, Block(g, m, words, s.n, s.msg, Src(target, s.line))))
         if 80 in g:
             rt.modal[0] = None
         elif rt.modal[0] is not None and any(a[0] in AXIS_LETTERS for a in words) and not PARAMETER_G.intersection(g):
