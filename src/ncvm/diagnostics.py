@@ -10,7 +10,8 @@ followed by the source line and a caret.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from pathlib import Path
+
+from .source import read_text
 
 
 @dataclass(frozen=True, slots=True)
@@ -68,7 +69,7 @@ class Diagnostic:
 
 def read_lines(path: str) -> list[str] | None:
     try:
-        return Path(path).read_text(encoding="latin-1").splitlines()
+        return read_text(path).splitlines()
     except OSError:
         return None
 

@@ -11,6 +11,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from ...source import read_text
 from . import ast
 from .lexer import Lexer, norm
 from .messages import Cl800Error
@@ -127,7 +128,7 @@ class Checker:
         if p is None:
             self.err("E200", where, f'list "{name}"')
             return
-        unit, errors = parse_source(str(p), p.read_text(encoding="latin-1"))
+        unit, errors = parse_source(str(p), read_text(p))
         if errors:
             self.errors.append(min(errors, key=lambda e: (e.line, e.col or 0)))
             return

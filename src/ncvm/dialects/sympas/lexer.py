@@ -12,6 +12,7 @@ import math
 from dataclasses import dataclass
 from pathlib import Path
 
+from ...source import read_text
 from .errors import SympasError
 
 KEYWORDS = frozenset("""and begin boolean const do double downto else end for forward function goto if integer
@@ -193,5 +194,5 @@ class Lexer:
             found = here if here.is_file() else (self.finder(name) if self.finder else None)
         if found is None:
             raise SympasError("SP007", f"include file '{name}' not found", path, line, col)
-        text = found.read_text(encoding="latin-1")
+        text = read_text(found)
         return self.tokens(str(found), text, depth + 1)
