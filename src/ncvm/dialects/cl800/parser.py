@@ -9,6 +9,7 @@ ELSE/ENDIF/END optional, ``:=`` for ``=``, ``,`` or ``.`` in IF INT pairs,
 
 from __future__ import annotations
 
+from ...source import LETTERS, NAME_CHARS
 from . import ast
 from .lexer import KEYWORDS, KEYWORDS_UPPER, Token, norm
 from .messages import Cl800Error
@@ -207,7 +208,7 @@ class Parser:
     def password(self, unit) -> None:
         self.advance()
         text = self.paren_text("E033")
-        if not text or len(text) > 8 or not text[0].isalpha() or not all(c.isalnum() or c == "_" for c in text):
+        if not text or len(text) > 8 or text[0] not in LETTERS or not all(c in NAME_CHARS for c in text):
             raise self.fail("E033", self.toks[self.pos - 1])
         unit.password = text
         self.expect_sym(";", "E001")
@@ -231,7 +232,7 @@ class Parser:
             name = s.value.strip()
             if not name:
                 raise self.fail("E029", s)
-            if len(name) > 8 or not name[0].isalpha():
+            if len(name) > 8 or name[0] not in LETTERS:
                 raise self.fail("E034", s)
             if self.is_sym(",") or (self.tok.kind == "STRING"):
                 raise self.fail("E035")
