@@ -61,12 +61,15 @@ def int_literal(digits: str, ceiling: int) -> int:
     return min(int(significant or "0"), ceiling)
 
 
+def decades(number: str) -> int:
+    """Digits before the decimal point of a decimal number (``-0012.5``: 2), leading zeros not counted."""
+    return len(number.lstrip("+-").partition(".")[0].lstrip("0"))
+
+
 def word_number(text: str) -> float | None:
     """The value of the number of an NC word (``-12.5``, ``+3``, ``.5``); None when it has more than
     :data:`WORD_DECADES` digits before its decimal point, which no block format holds."""
-    if len(text.lstrip("+-").partition(".")[0].lstrip("0")) > WORD_DECADES:
-        return None
-    return float(text)
+    return None if decades(text) > WORD_DECADES else float(text)
 
 
 def too_many_decades(address: str) -> str:

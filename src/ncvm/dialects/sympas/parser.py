@@ -9,9 +9,10 @@ are accepted with a warning.
 
 from __future__ import annotations
 
+from ...source import int_literal, is_digits
 from . import ast as A
 from .errors import SympasError
-from .lexer import INT_MAX, INT_MIN, Token
+from .lexer import INT_CEILING, INT_MAX, INT_MIN, Token
 
 SCALAR_TYPES = ("boolean", "integer", "single", "double", "timer")
 CASTS = ("boolean", "integer", "single", "double")
@@ -118,7 +119,7 @@ class Parser:
             t = self.advance()
             name, arg = t.value
             if name == "TASK":
-                prog.task = int(arg) if arg.isdigit() else arg
+                prog.task = int_literal(arg, INT_CEILING) if is_digits(arg) else arg
                 prog.task_tok = t
             else:
                 prog.fullsystem = True
