@@ -140,4 +140,6 @@ NCVM_CODES = {
     "RUN004": "run interrupted by the user",
     "RUN005": "waiting for ever (motion held with no way to go on)",
     "IO001": "file access outside the controller's file root",
+    "NEST001": "statements or expressions nested deeper than ncvm reads where the manual sets no limit "
+               "(64 levels, 16 loops; docs/decisions.md)",
 }

@@ -27,6 +27,19 @@ _UPPER = str.maketrans(string.ascii_lowercase, string.ascii_uppercase)
 WORD_DECADES = 8
 
 
+#: how deep ncvm reads nested statements and expressions where a manual sets no limit (NEST001,
+#: docs/decisions.md): programs compile to Python, whose compiler nests at most 100 blocks and 200 brackets
+MAX_NESTING = 64
+#: loops inside loops where a manual sets no limit: Python nests at most 20 loops, and generated code may
+#: wrap a body in two blocks of its own (a GOTO dispatch loop)
+MAX_LOOP_NESTING = 16
+
+
+def too_deep(what: str, limit: int) -> str:
+    """The message of NEST001 for ``what`` (statements, loops, ...) nested beyond ``limit`` levels."""
+    return f"{what} nested deeper than {limit} levels: ncvm's limit where the manual sets none"
+
+
 def read_text(path: str | Path) -> str:
     """The text of a program file: every byte one Latin-1 character, a leading byte-order mark dropped.
 

@@ -23,7 +23,6 @@ RANGES = {
     "PAR": (range(0, 50),), "LOCAL": (range(50, 100),), "POINTER": (range(50, 100),),
     "GLOBAL": (range(100, 200),), "CENTRAL": (range(900, 1000),),
 }
-MAX_DEPTH = 9  # one decimal digit of the block number (digest §5.5)
 #: documented windows of multi-register results (§5.3.8, L4109-4285): target, then operand windows
 WINDOWS = {
     "PREP REF": ((192, 992), (197, 997)),
@@ -165,8 +164,6 @@ class Checker:
             self.stmt(st, top)
 
     def stmt(self, st, top: bool) -> None:
-        if st.depth > MAX_DEPTH:
-            self.err("E058", st)
         if st.label:
             key = norm(st.label)
             if key not in self.prog.labels:

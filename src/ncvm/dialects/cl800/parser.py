@@ -9,7 +9,7 @@ ELSE/ENDIF/END optional, ``:=`` for ``=``, ``,`` or ``.`` in IF INT pairs,
 
 from __future__ import annotations
 
-from ...source import LETTERS, NAME_CHARS
+from ...source import LETTERS, MAX_NESTING, NAME_CHARS, too_deep
 from . import ast
 from .lexer import KEYWORDS, KEYWORDS_UPPER, Token, norm
 from .messages import Cl800Error
@@ -19,6 +19,7 @@ TYPES = ("INTEGER", "REAL", "PATTERN", "BOOLEAN")
 #: words that close a statement list; a missing ";" directly before them is accepted
 CLOSERS = ("END", "ELSE", "ENDIF", "UNTIL", "OTHERWISE", "ENDCASE")
 MAX_INT = 99_999_999
+MAX_DEPTH = 9  # control constructs inside each other: one decimal digit of the block number (digest §5.5), E058
 
 
 class Parser:
@@ -27,6 +28,8 @@ class Parser:
         self.lines = source.replace("\r", "").split("\n")
         self.errors: list[Cl800Error] = []
         self.consts: set[str] = set()
+        self.statements = 0  # statements (BEGIN ... END too) the parser is inside: NEST001 beyond MAX_NESTING
+        self.operands = 0  # nested operands (brackets, operators, arguments): NEST001 beyond MAX_NESTING
 
     # -- token helpers ---------------------------------------------------
     @property
@@ -379,7 +382,15 @@ class Parser:
             self.advance()
             self.advance()
             t = self.tok
-        st = self.bare_statement(depth)
+        if depth > MAX_DEPTH:
+            raise self.fail("E058", t)
+        if self.statements >= MAX_NESTING:
+            raise self.fail("NEST001", t, too_deep("statements", MAX_NESTING))
+        self.statements += 1
+        try:
+            st = self.bare_statement(depth)
+        finally:
+            self.statements -= 1
         if st is not None:
             st.label, st.depth = label, depth
         elif label is not None:
@@ -488,6 +499,13 @@ class Parser:
                 return
 
     def args(self, n: int) -> list:
+        self.nest(self.tok)
+        try:
+            return self._args(n)
+        finally:
+            self.operands -= 1
+
+    def _args(self, n: int) -> list:
         self.expect_sym("(", "E005")
         out = []
         if n == 0:
@@ -666,23 +684,39 @@ class Parser:
             return self.unary()
         ops = self.LEVELS[level]
         left = self.expr(level + 1)
-        while True:
-            t = self.tok
-            if t.kind == "NAME" and "." in t.text.rstrip("."):
-                self.split_dotted()
+        chained = 0
+        try:
+            while True:
                 t = self.tok
-            if (t.kind == "SYM" or t.kind == "NAME") and t.text in ops:
-                self.advance()
-                right = self.expr(level + 1)
-                left = ast.Binary(t.line, t.col, t.text, left, right)
-            else:
-                return left
+                if t.kind == "NAME" and "." in t.text.rstrip("."):
+                    self.split_dotted()
+                    t = self.tok
+                if (t.kind == "SYM" or t.kind == "NAME") and t.text in ops:
+                    self.advance()
+                    self.nest(t)  # each operator of a chain is one more level of the tree
+                    chained += 1
+                    right = self.expr(level + 1)
+                    left = ast.Binary(t.line, t.col, t.text, left, right)
+                else:
+                    return left
+        finally:
+            self.operands -= chained
+
+    def nest(self, t: Token) -> None:
+        """One more level of the expression being read; beyond MAX_NESTING it is NEST001 at ``t``."""
+        if self.operands >= MAX_NESTING:
+            raise self.fail("NEST001", t, too_deep("brackets, operators and calls", MAX_NESTING))
+        self.operands += 1
 
     def unary(self):
         t = self.tok
         if self.is_sym("-") or self.is_sym("+"):
             self.advance()
-            inner = self.unary()
+            self.nest(t)
+            try:
+                inner = self.unary()
+            finally:
+                self.operands -= 1
             if t.text == "+":
                 return inner
             if isinstance(inner, ast.Num):
@@ -691,7 +725,11 @@ class Parser:
             return ast.Unary(t.line, t.col, "-", inner)
         if self.is_kw("NOT", "NOTB"):
             self.advance()
-            return ast.Unary(t.line, t.col, t.text, self.unary())
+            self.nest(t)
+            try:
+                return ast.Unary(t.line, t.col, t.text, self.unary())
+            finally:
+                self.operands -= 1
         return self.primary()
 
     def primary(self):
@@ -699,7 +737,11 @@ class Parser:
         if t.kind in ("INT", "REAL", "PATTERN"):
             return self.literal()
         if self.accept_sym("("):
-            e = self.expr()
+            self.nest(t)
+            try:
+                e = self.expr()
+            finally:
+                self.operands -= 1
             self.expect_sym(")", "E006")
             return e
         if t.kind == "NAME" and t.text in KEYWORDS:
