@@ -32,6 +32,8 @@ OPS1 = "+-*/=<>(),[];:"
 DOUBLE_MAX = 1.7976931348623157e308
 #: a CPL line number is an INTEGER: 1 to 2147483647 (digest §2.2)
 LINE_MAX = 2147483647
+#: the highest sub-program parameter ncvm reads (the manual sets none; docs/decisions.md)
+MAX_PARAM = 999
 #: above DOUBLE_MAX: a longer integer constant keeps this value and gets the range error
 CEILING = 10 ** 309
 
@@ -259,7 +261,11 @@ def tokenize(text: str, lineno: int, offset: int) -> list[Tok]:
                 m = 1
                 while m < len(word) and word[m] in DIGITS:
                     m += 1
-                toks.append(Tok("var", VarName("A", str(int_literal(word[1:m], CEILING)), suffix), lineno, col, up[i:k]))
+                number = int_literal(word[1:m], MAX_PARAM + 1)
+                if number > MAX_PARAM:
+                    raise LexError(lineno, col, f"parameter {word[:m][:12]}: ncvm reads P1 to P{MAX_PARAM} (a call "
+                                                f"passes no more)")
+                toks.append(Tok("var", VarName("A", str(number), suffix), lineno, col, up[i:k]))
             else:
                 toks.append(Tok("var", VarName("L", word[:8], suffix), lineno, col, up[i:k]))
             i = k

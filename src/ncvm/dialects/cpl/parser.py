@@ -11,7 +11,7 @@ import re
 from ...source import ALNUM, DIGITS, LETTERS, NAME_CHARS, WORD_DECADES, is_digits, too_many_decades, word_number
 from . import ast as A
 from .errors import diag
-from .lexer import LexError, Tok, VarName, classify, cpl_blocks, tokenize
+from .lexer import LINE_MAX, LexError, Tok, VarName, classify, cpl_blocks, tokenize
 
 #: keywords that close or split a structure; a statement may be followed directly by one of them
 CLOSERS = {"ELSE", "ENDIF", "END", "NEXT", "UNTIL", "LABEL", "OTHERWISE", "ENDCASE"}
@@ -636,6 +636,9 @@ def parse_program(path: str, text: str, calls: dict | None = None) -> A.Program:
     for kind, item in cpl_blocks(lines):
         if kind == "cpl":
             prog.has_cpl = True
+            if item.number > LINE_MAX:
+                prog.diagnostics.append(diag("CPL001", f"line number beyond {LINE_MAX}", path, item.lineno, 1))
+                continue
             if item.error is not None:
                 e = item.error
                 prog.diagnostics.append(diag("CPL001", e.message, path, e.line, e.column, item.number))
