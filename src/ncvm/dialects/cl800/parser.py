@@ -9,6 +9,8 @@ ELSE/ENDIF/END optional, ``:=`` for ``=``, ``,`` or ``.`` in IF INT pairs,
 
 from __future__ import annotations
 
+from contextlib import contextmanager
+
 from ...source import LETTERS, MAX_NESTING, NAME_CHARS, too_deep
 from . import ast
 from .lexer import KEYWORDS, KEYWORDS_UPPER, Token, norm
@@ -499,11 +501,8 @@ class Parser:
                 return
 
     def args(self, n: int) -> list:
-        self.nest(self.tok)
-        try:
+        with self.nested(self.tok):
             return self._args(n)
-        finally:
-            self.operands -= 1
 
     def _args(self, n: int) -> list:
         self.expect_sym("(", "E005")
@@ -708,15 +707,21 @@ class Parser:
             raise self.fail("NEST001", t, too_deep("brackets, operators and calls", MAX_NESTING))
         self.operands += 1
 
+    @contextmanager
+    def nested(self, t: Token):
+        """Read an operand inside ``t`` (a bracket, a sign, a function's arguments) one level deeper."""
+        self.nest(t)
+        try:
+            yield
+        finally:
+            self.operands -= 1
+
     def unary(self):
         t = self.tok
         if self.is_sym("-") or self.is_sym("+"):
             self.advance()
-            self.nest(t)
-            try:
+            with self.nested(t):
                 inner = self.unary()
-            finally:
-                self.operands -= 1
             if t.text == "+":
                 return inner
             if isinstance(inner, ast.Num):
@@ -725,11 +730,8 @@ class Parser:
             return ast.Unary(t.line, t.col, "-", inner)
         if self.is_kw("NOT", "NOTB"):
             self.advance()
-            self.nest(t)
-            try:
+            with self.nested(t):
                 return ast.Unary(t.line, t.col, t.text, self.unary())
-            finally:
-                self.operands -= 1
         return self.primary()
 
     def primary(self):
@@ -737,11 +739,8 @@ class Parser:
         if t.kind in ("INT", "REAL", "PATTERN"):
             return self.literal()
         if self.accept_sym("("):
-            self.nest(t)
-            try:
+            with self.nested(t):
                 e = self.expr()
-            finally:
-                self.operands -= 1
             self.expect_sym(")", "E006")
             return e
         if t.kind == "NAME" and t.text in KEYWORDS:
