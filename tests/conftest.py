@@ -3,13 +3,21 @@
 from __future__ import annotations
 
 import math
+import os
 import random
 from pathlib import Path
 
 import pytest
+from hypothesis import settings
 
 from ncvm.api import run
 from ncvm.runtime.session import RunOptions
+
+# hypothesis (tests/robustness/test_fuzz.py): in CI the same examples every time and no example database,
+# so that a failure repeats; elsewhere random examples, with failures kept in .hypothesis/ and tried first
+settings.register_profile("ci", derandomize=True, database=None, print_blob=True)
+settings.register_profile("dev")
+settings.load_profile("ci" if os.environ.get("CI") == "true" else "dev")
 
 
 @pytest.fixture

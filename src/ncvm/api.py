@@ -12,12 +12,12 @@ from .machine.model import Machine
 from .machine.state import StateLock
 from .runtime.memory import memory_limit
 from .runtime.session import RunOptions, Session, run_guarded
+from .source import read_text
 
 
 def read_source(path: str | Path) -> str:
     try:
-        # the controls used 8-bit character sets; latin-1 reads every byte
-        return Path(path).read_text(encoding="latin-1")
+        return read_text(path)
     except OSError as e:
         raise UsageError(f"cannot read {path}: {e.strerror}") from None
 

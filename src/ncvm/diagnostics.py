@@ -10,7 +10,8 @@ followed by the source line and a caret.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from pathlib import Path
+
+from .source import read_text
 
 
 @dataclass(frozen=True, slots=True)
@@ -68,7 +69,7 @@ class Diagnostic:
 
 def read_lines(path: str) -> list[str] | None:
     try:
-        return Path(path).read_text(encoding="latin-1").splitlines()
+        return read_text(path).splitlines()
     except OSError:
         return None
 
@@ -141,4 +142,6 @@ NCVM_CODES = {
     "RUN005": "waiting for ever (motion held with no way to go on)",
     "RUN006": "memory limit reached (--max-memory)",
     "IO001": "file access outside the controller's file root",
+    "NEST001": "statements or expressions nested deeper than ncvm reads where the manual sets no limit "
+               "(64 levels, 16 loops; docs/decisions.md)",
 }

@@ -10,7 +10,8 @@ from pathlib import Path
 
 import pytest
 
-from ncvm.api import check
+from ncvm.api import check, run
+from ncvm.runtime.session import RunOptions
 
 EXAMPLES = Path(__file__).parent.parent.parent / "examples"
 
@@ -43,6 +44,99 @@ def test_no_traceback(run_text, tmp_path, name, text, how, code):
         r = run_text(text, name=name)
         assert r["status"] == "error"
         assert r["error"]["code"] == code
+
+
+CL8 = "PROGRAM 9;\nCHANNEL NC 0;\nLOCAL REAL: R60;\nBEGIN\n"
+DIGITS_4400 = "1" * 4400
+DIGITS_400 = "1" * 400
+
+#: issue 12, each once an internal error: (file name, text, code, line, column) at both check and run
+NO_CRASH = [
+    # Latin-1 letters and superscript digits are no letters or digits of the controls
+    ("latin.cl8", CL8 + "  R60 = é;\nEND.\n", "E053", 5, 9),
+    ("latin2.cl8", CL8 + "  Rß60 = 1;\nEND.\n", "E053", 5, 4),
+    ("name.cpl", "10 Aé=1\nM30\n", "CPL001", 1, 5),
+    ("name.sap", "program p;\nvar aé: integer;\nbegin\nend.\n", "SP001", 2, 6),
+    ("sup.cpl", "¹10 A=1\nM30\n", "CPL001", 1, 1),
+    ("sup.cpl", "10 A=1.²\nM30\n", "CPL001", 1, 8),
+    ("sup.sap", "program p;\nvar i: integer;\nbegin\n  i := ³;\nend.\n", "SP001", 4, 8),
+    ("task.sap", "{$TASK ¹}\nprogram p;\nbegin\nend.\n", "SP010", 1, 1),
+    # number constants beyond every range (Python converts at most 4300 digits)
+    ("big.cl8", CL8 + f"  R60 = {DIGITS_4400};\nEND.\n", "E050", 5, 9),
+    ("big.cpl", f"10 A={DIGITS_4400}\nM30\n", "CPL001", 1, 6),
+    ("big.cpl", f"10 A!={DIGITS_400}.5\nM30\n", "CPL001", 1, 7),
+    ("big.cpl", f"{DIGITS_4400} A=1\nM30\n", "CPL001", 1, 1),
+    ("param.cpl", f"10 A=P{DIGITS_4400}\nM30\n", "CPL001", 1, 6),
+    ("param.cpl", "10 A=P1000\nM30\n", "CPL001", 1, 6),
+    ("r.mpf", f"%MPF1\nN10 R{DIGITS_4400}=1\nM30\n", "SIN001", 2, 5),
+    ("n.mpf", f"%MPF1\nN{DIGITS_4400} X1\nM30\n", "SIN001", 2, 1),
+    # a 400-digit coordinate or R value: an NC word has at most 8 decades
+    ("coord.din", f"G0 X{DIGITS_400}\nM30\n", "NC001", 1, 4),
+    ("coord.din", "G0 X123456789\nM30\n", "NC001", 1, 4),
+    ("coord.cpl", f"10 A=1\nN20 G1 X{DIGITS_400} F100\nM30\n", "CPL001", 2, 8),
+    ("r.mpf", f"%MPF1\nN10 R1={DIGITS_400}\nM30\n", "SIN001", 2, 8),
+    ("r.mpf", f"%MPF1\nN10 G1 X{DIGITS_400} F100\nM30\n", "SIN001", 2, 9),
+    ("k.mpf", f"%MPF1\nN10 @200 R1 K{DIGITS_400}\nM30\n", "SIN001", 2, 14),
+    # nesting: the manual's block level, else ncvm's limit (NEST001), at the line where it is exceeded
+    ("deepif.cl8", CL8 + "IF R60 = 0 THEN\n" * 1000 + "R60 = 1;\n" + "ENDIF;\n" * 1000 + "END.\n", "E058", 15, 1),
+    ("deep.cl8", CL8 + "  R60 =\n" + "(\n" * 1000 + "1" + ")" * 1000 + ";\nEND.\n", "NEST001", 70, 1),
+    ("begin.cl8", CL8 + "BEGIN\n" * 1000 + "R60 = 1;\n" + "END;\n" * 1000 + "END.\n", "NEST001", 69, 1),
+    ("chain.cl8", CL8 + "  R60 = 1" + "\n + 1" * 3000 + ";\nEND.\n", "NEST001", 70, 2),
+    ("deep.sap", "program p;\nvar i: integer;\nbegin\n  i :=\n" + "(\n" * 1000 + "1" + ")" * 1000 + ";\nend.\n",
+     "NEST001", 69, 1),
+    ("deepif.sap", "program p;\nvar i: integer;\nbegin\n" + "if i = 0 then\n" * 1000 + "i := 1;\nend.\n",
+     "NEST001", 68, 1),
+    ("loops.sap", "program p;\nvar i: integer;\nbegin\n" + "while i < 1 do\n" * 17 + "i := 1;\nend.\n",
+     "NEST001", 20, 1),
+    ("chain.sap", "program p;\nvar i: integer;\nbegin\n  i := 1" + "\n + 1" * 600 + ";\nend.\n", "NEST001", 69, 2),
+    ("unary.cpl", "10 A=" + "-" * 1000 + "1\nM30\n", "2153", 1, None),
+]
+
+
+@pytest.mark.parametrize("name, text, code, line, col", NO_CRASH)
+def test_no_internal_error_at_check_and_run(run_text, tmp_path, name, text, code, line, col):
+    path = tmp_path / name
+    path.write_text(text, encoding="latin-1")
+    first = check(path)[0]
+    assert (first.code, first.span.line) == (code, line), first.render()
+    if col is not None:
+        assert first.span.column == col, first.render()
+    r = run_text(text, name=name)
+    assert (r["error"]["code"], r["error"]["line"]) == (code, line), r["error"]
+
+
+@pytest.mark.parametrize("name, text", [
+    ("bom.cl8", CL8 + "  R60 = 1;\nEND.\n"), ("bom.cpl", "10 A=1\nM30\n"), ("bom.din", "G0 X1\nM30\n"),
+    ("bom.mpf", "%MPF1\nN10 R1=1\nM30\n"), ("bom.sap", "program p;\nbegin\nend.\n"),
+])
+def test_a_byte_order_mark_is_read_as_nothing(run_text, tmp_path, name, text):
+    path = tmp_path / name
+    path.write_bytes(b"\xef\xbb\xbf" + text.encode("latin-1"))
+    assert check(path) == []
+    result, _ = run(path, options=RunOptions(state_dir=tmp_path / ".ncvm"))
+    assert result["status"] == "ok", result["error"]
+
+
+def test_a_byte_order_mark_keeps_the_columns_of_the_first_line(tmp_path):
+    path = tmp_path / "p.cpl"
+    path.write_bytes(b"\xef\xbb\xbf10 A=(1\nM30\n")
+    d = check(path)[0]
+    assert (d.code, d.span.line, d.span.column) == ("CPL001", 1, 7)
+    assert "\n    10 A=(1\n" in d.render()
+
+
+@pytest.mark.parametrize("command", ["MLAW(A1 := 1e308)", "MLA(A1 := 1e308)", "MLRW(A1 := 1e308)",
+                                     "JAW(A1 := 1e308)"])
+def test_a_target_beyond_the_card_range_is_an_invalid_parameter(run_text, command):
+    r = run_text(f"program p;\nbegin\n  {command};\nend.\n", name="p.sap")
+    assert (r["error"]["code"], r["error"]["line"]) == ("32768", 3), r["error"]
+
+
+def test_a_sharp_s_in_a_cpl_string_keeps_the_columns_after_it(run_text):
+    # str.upper() made ß two letters: the closing quote was looked for one place too far
+    r = run_text('10 A$="ßßß":B=7\n20 PRN#(0,A$,B)\nM30\n', name="p.cpl")
+    assert r["status"] == "ok", r["error"]
+    assert r["variables"]["B"] == 7.0
 
 
 def test_number_run_into_a_name_in_cl800(tmp_path):

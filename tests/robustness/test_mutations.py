@@ -23,7 +23,11 @@ ROOTS = [TESTS / "programs", TESTS.parent / "examples"]
 SUFFIXES = {".din", ".ngc", ".cpl", ".cl8", ".mpf", ".spf", ".sap"}
 TOKENS = ["(", ")", "[", "]", ":", ";", "=", "'", '"', "@", "#", "%", "$", "!", "?", ".", ",", "-", "+", "*", "/",
           "0", "9", "1e99", "X", "G", "M", "N", "R", "END", "IF", "THEN", "BEGIN", "\n", " ", "999999999999", "P1",
-          "CALL", "GOTO", "WHILE", "DO", "FOR", "TO", "NEXT", "_"]
+          "CALL", "GOTO", "WHILE", "DO", "FOR", "TO", "NEXT", "_",
+          # issue 12: Latin-1 letters and superscript digits, a byte-order mark, numbers beyond every range
+          # (400 and 4400 digits), deep nesting
+          "é", "ß", "¹", "²", "\xa0", "\x00", "\xef\xbb\xbf", "1" * 400, "9" * 4400, "(" * 300, "-" * 300,
+          "IF R1=1 THEN\n" * 100, "begin\n" * 100, "WHILE A<1 DO\n" * 30]
 PER_DIALECT = 60
 
 

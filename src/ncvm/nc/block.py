@@ -16,6 +16,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..diagnostics import Diagnostic, Span
+from ..source import too_many_decades, word_number
 from .canon import Src
 
 
@@ -100,6 +101,9 @@ def parse_din_line(text: str, src: Src) -> Block | None:
     words: dict[str, float] = {}
     nno = None
     for letter, num in WORD.findall(s, i):
+        if word_number(num) is None:
+            col = next(mt.start(1) for mt in WORD.finditer(s, i) if mt.group(2) == num) + 1
+            raise DinSyntaxError(col_map[col - 1] + 1 if col_map else col, too_many_decades(letter))
         if letter == "G":
             v = float(num)
             g.append(int(v) if v == int(v) else v)
@@ -214,7 +218,8 @@ class PlainRun:
 PLAIN_WORDS = "XYZIJKF"
 _PLAIN = frozenset(PLAIN_WORDS)
 #: a number; possessive quantifiers (nothing a number gives back could start the next word) keep the scan fast
-_NUM = r"([-+]?+(?:\d++\.?+\d*+|\.\d++))"
+#: (at most WORD_DECADES digits before the point: a longer number goes the general way and gets its error there)
+_NUM = r"([-+]?+(?:\d{1,8}+(?:\.\d*+)?+|\.\d++))"
 #: a plain line with at least one G code or word (groups: G, then PLAIN_WORDS), or any other line with its
 #: line break (last group: never empty, so blank lines and lines of nothing but N go the general way too)
 _PLAIN_LINE = re.compile(r"^[ \t]*+(?:N\d+[ \t]*+)?(?=[GXYZIJKF])(?:G0?([0-3])(?![\d.])[ \t]*+)?"

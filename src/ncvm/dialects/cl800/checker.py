@@ -11,6 +11,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from ...source import read_text
 from . import ast
 from .lexer import Lexer, norm
 from .messages import Cl800Error
@@ -22,7 +23,6 @@ RANGES = {
     "PAR": (range(0, 50),), "LOCAL": (range(50, 100),), "POINTER": (range(50, 100),),
     "GLOBAL": (range(100, 200),), "CENTRAL": (range(900, 1000),),
 }
-MAX_DEPTH = 9  # one decimal digit of the block number (digest §5.5)
 #: documented windows of multi-register results (§5.3.8, L4109-4285): target, then operand windows
 WINDOWS = {
     "PREP REF": ((192, 992), (197, 997)),
@@ -127,7 +127,7 @@ class Checker:
         if p is None:
             self.err("E200", where, f'list "{name}"')
             return
-        unit, errors = parse_source(str(p), p.read_text(encoding="latin-1"))
+        unit, errors = parse_source(str(p), read_text(p))
         if errors:
             self.errors.append(min(errors, key=lambda e: (e.line, e.col or 0)))
             return
@@ -164,8 +164,6 @@ class Checker:
             self.stmt(st, top)
 
     def stmt(self, st, top: bool) -> None:
-        if st.depth > MAX_DEPTH:
-            self.err("E058", st)
         if st.label:
             key = norm(st.label)
             if key not in self.prog.labels:

@@ -10,6 +10,7 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 
+from ...source import DIGITS, LETTERS, int_literal
 from .messages import Cl800Error
 
 MAX_LINE = 79  # one screen line of the WS 800 A editor (E208)
@@ -57,9 +58,11 @@ class Token:
 _SYMBOLS = (":=", "<>", ">=", "<=", ";", ",", ":", "=", "(", ")", "[", "]", ".", "+", "-", "*", "/", "<", ">")
 _NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
 _NAME_REST = re.compile(r"[A-Za-z0-9_]*")
-_RPAR = re.compile(r"R[ \t]*(\d+)(?![A-Za-z0-9_])")
+_RPAR = re.compile(r"R[ \t]*([0-9]+)(?![A-Za-z0-9_])")
 _PATTERN = re.compile(r"B([01]+)(?![A-Za-z0-9_])")
-_NUMBER = re.compile(r"\d+(?:\.\d+)?")
+_NUMBER = re.compile(r"[0-9]+(?:\.[0-9]+)?")
+#: above every CL 800 number (8 decades): a longer literal keeps this value and gets its range error
+CEILING = 10 ** 9
 
 
 def norm(name: str) -> str:
@@ -154,23 +157,23 @@ class Lexer:
                 continue
             m = _RPAR.match(text, i)
             if m:
-                out.append(Token("RPAR", m.group(0), line, col, int(m.group(1))))
+                out.append(Token("RPAR", m.group(0), line, col, int_literal(m.group(1), CEILING)))
                 i = m.end()
                 continue
             m = _PATTERN.match(text, i)
             if m:
                 if len(m.group(1)) > 8:
                     self.err("E051", line, col)
-                out.append(Token("PATTERN", m.group(0), line, col, int(m.group(1))))
+                out.append(Token("PATTERN", m.group(0), line, col, int_literal(m.group(1), CEILING)))
                 i = m.end()
                 continue
-            if c.isalpha():
+            if c in LETTERS:
                 i = self._name(i, line, col, out)
                 continue
-            if c.isdigit():
+            if c in DIGITS:
                 m = _NUMBER.match(text, i)
                 j = m.end()
-                if j < size and (text[j].isalpha() or text[j] == "_"):
+                if j < size and (text[j] in LETTERS or text[j] == "_"):
                     k = _NAME_REST.match(text, j)  # a digit, then letters or '_': no name starts so
                     out.append(Token("BADNAME", text[i:k.end()], line, col))
                     i = k.end()
@@ -179,7 +182,7 @@ class Lexer:
                 if "." in num:
                     out.append(Token("REAL", num, line, col, float(num)))
                 else:
-                    out.append(Token("INT", num, line, col, int(num)))
+                    out.append(Token("INT", num, line, col, int_literal(num, CEILING)))
                 i = j
                 continue
             for s in _SYMBOLS:
@@ -203,9 +206,9 @@ class Lexer:
         # legacy (manual examples, digest §11 A23): '.' inside a name when no digit follows it
         while self.legacy and j < len(text) and text[j] == "." and text[i:j] not in KEYWORDS:
             nxt = text[j + 1] if j + 1 < len(text) else "\n"
-            if nxt.isalpha() or nxt == "_":
+            if nxt in LETTERS or nxt == "_":
                 j = _NAME_REST.match(text, j + 1).end()
-            elif not nxt.isdigit() and nxt != ".":
+            elif nxt not in DIGITS and nxt != ".":
                 j += 1
                 break
             else:

@@ -90,6 +90,7 @@ class Cl800Error(Exception):
         self.code, self.file, self.line, self.col, self.detail, self.end_col = code, file, line, col, detail, end_col
 
     def diagnostic(self) -> Diagnostic:
-        text = MESSAGES[self.code] + (f" ({self.detail})" if self.detail else "")
+        base = MESSAGES.get(self.code)  # None for ncvm's own codes (NEST001): the detail says it all
+        text = f"{base} ({self.detail})" if base and self.detail else base or self.detail
         severity = "warning" if self.code.startswith("W") else "error"
         return Diagnostic(self.code, text, Span(self.file, self.line, self.col, self.end_col), severity)

@@ -9,6 +9,9 @@ ELSE/ENDIF/END optional, ``:=`` for ``=``, ``,`` or ``.`` in IF INT pairs,
 
 from __future__ import annotations
 
+from contextlib import contextmanager
+
+from ...source import LETTERS, MAX_NESTING, NAME_CHARS, too_deep
 from . import ast
 from .lexer import KEYWORDS, KEYWORDS_UPPER, Token, norm
 from .messages import Cl800Error
@@ -18,6 +21,7 @@ TYPES = ("INTEGER", "REAL", "PATTERN", "BOOLEAN")
 #: words that close a statement list; a missing ";" directly before them is accepted
 CLOSERS = ("END", "ELSE", "ENDIF", "UNTIL", "OTHERWISE", "ENDCASE")
 MAX_INT = 99_999_999
+MAX_DEPTH = 9  # control constructs inside each other: one decimal digit of the block number (digest §5.5), E058
 
 
 class Parser:
@@ -26,6 +30,8 @@ class Parser:
         self.lines = source.replace("\r", "").split("\n")
         self.errors: list[Cl800Error] = []
         self.consts: set[str] = set()
+        self.statements = 0  # statements (BEGIN ... END too) the parser is inside: NEST001 beyond MAX_NESTING
+        self.operands = 0  # nested operands (brackets, operators, arguments): NEST001 beyond MAX_NESTING
 
     # -- token helpers ---------------------------------------------------
     @property
@@ -207,7 +213,7 @@ class Parser:
     def password(self, unit) -> None:
         self.advance()
         text = self.paren_text("E033")
-        if not text or len(text) > 8 or not text[0].isalpha() or not all(c.isalnum() or c == "_" for c in text):
+        if not text or len(text) > 8 or text[0] not in LETTERS or not all(c in NAME_CHARS for c in text):
             raise self.fail("E033", self.toks[self.pos - 1])
         unit.password = text
         self.expect_sym(";", "E001")
@@ -231,7 +237,7 @@ class Parser:
             name = s.value.strip()
             if not name:
                 raise self.fail("E029", s)
-            if len(name) > 8 or not name[0].isalpha():
+            if len(name) > 8 or name[0] not in LETTERS:
                 raise self.fail("E034", s)
             if self.is_sym(",") or (self.tok.kind == "STRING"):
                 raise self.fail("E035")
@@ -378,7 +384,15 @@ class Parser:
             self.advance()
             self.advance()
             t = self.tok
-        st = self.bare_statement(depth)
+        if depth > MAX_DEPTH:
+            raise self.fail("E058", t)
+        if self.statements >= MAX_NESTING:
+            raise self.fail("NEST001", t, too_deep("statements", MAX_NESTING))
+        self.statements += 1
+        try:
+            st = self.bare_statement(depth)
+        finally:
+            self.statements -= 1
         if st is not None:
             st.label, st.depth = label, depth
         elif label is not None:
@@ -487,6 +501,10 @@ class Parser:
                 return
 
     def args(self, n: int) -> list:
+        with self.nested(self.tok):
+            return self._args(n)
+
+    def _args(self, n: int) -> list:
         self.expect_sym("(", "E005")
         out = []
         if n == 0:
@@ -665,23 +683,45 @@ class Parser:
             return self.unary()
         ops = self.LEVELS[level]
         left = self.expr(level + 1)
-        while True:
-            t = self.tok
-            if t.kind == "NAME" and "." in t.text.rstrip("."):
-                self.split_dotted()
+        chained = 0
+        try:
+            while True:
                 t = self.tok
-            if (t.kind == "SYM" or t.kind == "NAME") and t.text in ops:
-                self.advance()
-                right = self.expr(level + 1)
-                left = ast.Binary(t.line, t.col, t.text, left, right)
-            else:
-                return left
+                if t.kind == "NAME" and "." in t.text.rstrip("."):
+                    self.split_dotted()
+                    t = self.tok
+                if (t.kind == "SYM" or t.kind == "NAME") and t.text in ops:
+                    self.advance()
+                    self.nest(t)  # each operator of a chain is one more level of the tree
+                    chained += 1
+                    right = self.expr(level + 1)
+                    left = ast.Binary(t.line, t.col, t.text, left, right)
+                else:
+                    return left
+        finally:
+            self.operands -= chained
+
+    def nest(self, t: Token) -> None:
+        """One more level of the expression being read; beyond MAX_NESTING it is NEST001 at ``t``."""
+        if self.operands >= MAX_NESTING:
+            raise self.fail("NEST001", t, too_deep("brackets, operators and calls", MAX_NESTING))
+        self.operands += 1
+
+    @contextmanager
+    def nested(self, t: Token):
+        """Read an operand inside ``t`` (a bracket, a sign, a function's arguments) one level deeper."""
+        self.nest(t)
+        try:
+            yield
+        finally:
+            self.operands -= 1
 
     def unary(self):
         t = self.tok
         if self.is_sym("-") or self.is_sym("+"):
             self.advance()
-            inner = self.unary()
+            with self.nested(t):
+                inner = self.unary()
             if t.text == "+":
                 return inner
             if isinstance(inner, ast.Num):
@@ -690,7 +730,8 @@ class Parser:
             return ast.Unary(t.line, t.col, "-", inner)
         if self.is_kw("NOT", "NOTB"):
             self.advance()
-            return ast.Unary(t.line, t.col, t.text, self.unary())
+            with self.nested(t):
+                return ast.Unary(t.line, t.col, t.text, self.unary())
         return self.primary()
 
     def primary(self):
@@ -698,7 +739,8 @@ class Parser:
         if t.kind in ("INT", "REAL", "PATTERN"):
             return self.literal()
         if self.accept_sym("("):
-            e = self.expr()
+            with self.nested(t):
+                e = self.expr()
             self.expect_sym(")", "E006")
             return e
         if t.kind == "NAME" and t.text in KEYWORDS:

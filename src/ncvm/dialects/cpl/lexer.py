@@ -10,6 +10,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+from ...source import DIGITS, LETTERS, NAME_CHARS, int_literal, upper
+
 #: reserved words (manual §2.4.1, cleaned up in digest §2.3), plus TO, SCSL and the unused ones
 KEYWORDS = frozenset("""
 ABS ACOS AND APOS ASC ASIN ATAN AXO AXP BCD BIN BMP CALL CASE CHR$ CIR CLG CLOCK CLOSE CLR CLS COF COL COM COS
@@ -24,6 +26,16 @@ SUFFIXES = "%!?$"
 TYPE_OF_SUFFIX = {"%": "I", "": "R", "!": "D", "?": "B", "$": "S"}
 OPS2 = ("<>", "<=", ">=")
 OPS1 = "+-*/=<>(),[];:"
+
+
+#: the largest DOUBLE (64 bit, manual §2.4.3): a number constant beyond it cannot be held
+DOUBLE_MAX = 1.7976931348623157e308
+#: a CPL line number is an INTEGER: 1 to 2147483647 (digest §2.2)
+LINE_MAX = 2147483647
+#: the highest sub-program parameter ncvm reads (the manual sets none; docs/decisions.md)
+MAX_PARAM = 999
+#: above DOUBLE_MAX: a longer integer constant keeps this value and gets the range error
+CEILING = 10 ** 309
 
 
 class LexError(Exception):
@@ -111,11 +123,11 @@ def classify(text: str) -> list[Line]:
             cont = _ends_with_colon(line)
             continue
         lead = len(line) - len(line.lstrip())
-        if stripped[0].isdigit():
+        if stripped[0] in DIGITS:
             j = lead
-            while j < len(line) and line[j].isdigit():
+            while j < len(line) and line[j] in DIGITS:
                 j += 1
-            out.append(Line("cpl", int(line[lead:j]), line[j:], j, i))
+            out.append(Line("cpl", int_literal(line[lead:j], LINE_MAX + 1), line[j:], j, i))
             cont = _ends_with_colon(line[j:])
         else:
             out.append(Line("nc", None, line, 0, i))
@@ -127,15 +139,15 @@ def _ends_with_colon(text: str) -> bool:
     """True when the text ends in ':' outside strings and without a REM on the line."""
     in_str = False
     last = ""
-    up = text.upper()
+    up = upper(text)
     i = 0
     while i < len(text):
         c = text[i]
         if c == '"':
             in_str = not in_str
         elif not in_str:
-            if up.startswith("REM", i) and (i == 0 or not (up[i - 1].isalnum() or up[i - 1] in "_#@")) \
-                    and not (i + 3 < len(up) and (up[i + 3].isalnum() or up[i + 3] in "_" + SUFFIXES)):
+            if up.startswith("REM", i) and (i == 0 or not (up[i - 1] in NAME_CHARS or up[i - 1] in "#@")) \
+                    and not (i + 3 < len(up) and (up[i + 3] in NAME_CHARS or up[i + 3] in SUFFIXES)):
                 return False
             if not c.isspace():
                 last = c
@@ -146,7 +158,7 @@ def _ends_with_colon(text: str) -> bool:
 def tokenize(text: str, lineno: int, offset: int) -> list[Tok]:
     """Tokens of one physical line's CPL text; REM ends the line (colons in it are text)."""
     toks: list[Tok] = []
-    up = text.upper()
+    up = upper(text)
     n = len(text)
     i = 0
     while i < n:
@@ -162,27 +174,31 @@ def tokenize(text: str, lineno: int, offset: int) -> list[Tok]:
             toks.append(Tok("str", text[i + 1:j], lineno, col))
             i = j + 1
             continue
-        if c.isdigit() or (c == "." and i + 1 < n and up[i + 1].isdigit()):
+        if c in DIGITS or (c == "." and i + 1 < n and up[i + 1] in DIGITS):
             j = i
-            while j < n and up[j].isdigit():
+            while j < n and up[j] in DIGITS:
                 j += 1
             is_real = False
             if j < n and up[j] == ".":
                 is_real = True
                 j += 1
-                while j < n and up[j].isdigit():
+                while j < n and up[j] in DIGITS:
                     j += 1
             lit = up[i:j]
-            toks.append(Tok("num", float(lit) if is_real else int(lit), lineno, col, lit))
+            value = float(lit) if is_real else int_literal(lit, CEILING)
+            if value > DOUBLE_MAX:
+                raise LexError(lineno, col, f"number constant {lit[:20]}{'...' if len(lit) > 20 else ''} outside "
+                                            "the DOUBLE range (1.7976931348623157E308)")
+            toks.append(Tok("num", value, lineno, col, lit))
             i = j
             continue
         if c == ".":
             j = i + 1
             while j < n and up[j] == " ":
                 j += 1
-            if j < n and up[j].isalpha():
+            if j < n and up[j] in LETTERS:
                 k = j
-                while k < n and (up[k].isalnum() or up[k] == "_"):
+                while k < n and up[k] in NAME_CHARS:
                     k += 1
                 toks.append(Tok("label", up[j:k], lineno, col))
                 i = k
@@ -190,7 +206,7 @@ def tokenize(text: str, lineno: int, offset: int) -> list[Tok]:
             raise LexError(lineno, col, "'.' must start a label (.NAME) or a number")
         if c == "#":
             j = i + 1
-            if j < n and up[j].isalpha():
+            if j < n and up[j] in LETTERS:
                 k, word, suffix = _word(up, j)
                 toks.append(Tok("var", VarName("G", ("#" + word)[:8][1:], suffix), lineno, col, up[i:k]))
                 i = k
@@ -198,12 +214,12 @@ def tokenize(text: str, lineno: int, offset: int) -> list[Tok]:
             raise LexError(lineno, col, "'#' must start a global variable name")
         if c == "@":
             j = i + 1
-            if j < n and up[j].isdigit():
+            if j < n and up[j] in DIGITS:
                 k = j
-                while k < n and up[k].isdigit():
+                while k < n and up[k] in DIGITS:
                     k += 1
-                num = int(up[j:k])
-                while k < n and (up[k].isalnum() or up[k] == "_"):
+                num = int_literal(up[j:k], 101)
+                while k < n and up[k] in NAME_CHARS:
                     k += 1
                 if k < n and up[k] == "%":
                     k += 1
@@ -215,11 +231,11 @@ def tokenize(text: str, lineno: int, offset: int) -> list[Tok]:
                 toks.append(Tok("var", VarName("P", str(num), ""), lineno, col, up[i:k]))
                 i = k
                 continue
-            if up.startswith("_R", j) and not (j + 2 < n and (up[j + 2].isalnum() or up[j + 2] == "_")):
+            if up.startswith("_R", j) and not (j + 2 < n and up[j + 2] in NAME_CHARS):
                 toks.append(Tok("var", VarName("R", "_R", ""), lineno, col, "@_R"))
                 i = j + 2
                 continue
-            if j < n and up[j].isalpha():
+            if j < n and up[j] in LETTERS:
                 k, word, suffix = _word(up, j)
                 toks.append(Tok("var", VarName("D", word[:16], suffix), lineno, col, up[i:k]))
                 i = k
@@ -228,7 +244,7 @@ def tokenize(text: str, lineno: int, offset: int) -> list[Tok]:
                 raise LexError(lineno, col, "@_RES_DOUBLE and @_RES_DWORD are reserved for internal applications "
                                             "(manual §2.4.3 L544)")
             raise LexError(lineno, col, "'@' must start a permanent variable name")
-        if c.isalpha():
+        if c in LETTERS:
             k, word, suffix = _word(up, i)
             if word == "REM" and not suffix:
                 break  # the rest of the physical line is a remark
@@ -241,11 +257,15 @@ def tokenize(text: str, lineno: int, offset: int) -> list[Tok]:
                 if word == "CALL":
                     i = _call_name(text, up, k, lineno, offset, toks)
                     continue
-            elif word[0] == "P" and len(word) > 1 and word[1].isdigit():
+            elif word[0] == "P" and len(word) > 1 and word[1] in DIGITS:
                 m = 1
-                while m < len(word) and word[m].isdigit():
+                while m < len(word) and word[m] in DIGITS:
                     m += 1
-                toks.append(Tok("var", VarName("A", str(int(word[1:m])), suffix), lineno, col, up[i:k]))
+                number = int_literal(word[1:m], MAX_PARAM + 1)
+                if number > MAX_PARAM:
+                    raise LexError(lineno, col, f"parameter {word[:m][:12]}: ncvm reads P1 to P{MAX_PARAM} (a call "
+                                                f"passes no more)")
+                toks.append(Tok("var", VarName("A", str(number), suffix), lineno, col, up[i:k]))
             else:
                 toks.append(Tok("var", VarName("L", word[:8], suffix), lineno, col, up[i:k]))
             i = k
@@ -266,7 +286,7 @@ def tokenize(text: str, lineno: int, offset: int) -> list[Tok]:
 def _word(up: str, i: int) -> tuple[int, str, str]:
     k = i
     n = len(up)
-    while k < n and (up[k].isalnum() or up[k] == "_"):
+    while k < n and up[k] in NAME_CHARS:
         k += 1
     word = up[i:k]
     suffix = ""

@@ -14,6 +14,7 @@ from pathlib import Path
 
 from ...diagnostics import Diagnostic
 from ...machine.model import Machine
+from ...source import read_text
 from . import ast as A
 from .errors import diag
 from .parser import parse_program
@@ -263,7 +264,7 @@ def link(path: str, text: str, machine: Machine, tables=None) -> LinkResult:
             if sub_path in units:
                 continue
             try:
-                sub_text = Path(sub_path).read_text(encoding="latin-1")
+                sub_text = read_text(sub_path)
             except OSError as e:
                 diags.append(diag("CPL005", f"{name}: {e.strerror}", ln.prog.path, s.line, s.col or None, s.cpl))
                 continue

@@ -8,9 +8,10 @@ from __future__ import annotations
 
 import re
 
+from ...source import ALNUM, DIGITS, LETTERS, NAME_CHARS, WORD_DECADES, is_digits, too_many_decades, word_number
 from . import ast as A
 from .errors import diag
-from .lexer import LexError, Tok, VarName, classify, cpl_blocks, tokenize
+from .lexer import LINE_MAX, LexError, Tok, VarName, classify, cpl_blocks, tokenize
 
 #: keywords that close or split a structure; a statement may be followed directly by one of them
 CLOSERS = {"ELSE", "ENDIF", "END", "NEXT", "UNTIL", "LABEL", "OTHERWISE", "ENDCASE"}
@@ -189,7 +190,7 @@ class BlockParser:
             elif tt.kind == "label":
                 out.append(self.stmt(A.Goto, t, kind="label", target=tt.val))
             elif tt.kind == "var" and tt.val.cls == "L" and not tt.val.suffix and tt.text[:1] == "N" \
-                    and tt.text[1:].isdigit():
+                    and is_digits(tt.text[1:]) and len(tt.text) <= WORD_DECADES + 1:
                 out.append(self.stmt(A.Goto, t, kind="n", target=int(tt.text[1:])))
             else:
                 self.error("CPL001", "GOTO needs a line number, N<number> or .label", tt)
@@ -513,9 +514,9 @@ def parse_nc(text: str, lineno: int, calls: dict) -> A.NcBlock:
             i = j + 1
             continue
         up = c.upper()
-        if not up.isalpha():
+        if c not in LETTERS:
             raise ParseError("CPL001", f"cannot read '{s[i:i + 10].strip()}' in the NC block", lineno, i + 1)
-        if s[i:i + 4].upper() == "WAIT" and not (i + 4 < n and s[i + 4].isalnum()):
+        if s[i:i + 4].upper() == "WAIT" and not (i + 4 < n and s[i + 4] in ALNUM):
             if s[i + 4:i + 5] == "(":
                 raise ParseError("CPL001", "WAIT with parameters can be programmed only in a CPL block "
                                            "(manual §4.1 L1203)", lineno, i + 1)
@@ -527,7 +528,7 @@ def parse_nc(text: str, lineno: int, calls: dict) -> A.NcBlock:
         addr = up
         # extended address: letters/digits followed by '=' (X2=, U_CH1=)
         k = j
-        while k < n and (s[k].isalnum() or s[k] == "_"):
+        while k < n and s[k] in NAME_CHARS:
             k += 1
         if k < n and s[k] == "=" and k > j:
             addr = s[i:k].upper()
@@ -538,9 +539,9 @@ def parse_nc(text: str, lineno: int, calls: dict) -> A.NcBlock:
             j += 1
             while j < n and s[j] in " \t":
                 j += 1
-        if addr == "P" and j < n and s[j].isalpha():
+        if addr == "P" and j < n and s[j] in LETTERS:
             k = j
-            while k < n and (s[k].isalnum() or s[k] in "_."):
+            while k < n and (s[k] in NAME_CHARS or s[k] == "."):
                 k += 1
             name = s[j:k]
             args, i = _call_args(s, k, lineno)
@@ -561,12 +562,14 @@ def parse_nc(text: str, lineno: int, calls: dict) -> A.NcBlock:
         k = j
         if k < n and s[k] in "+-":
             k += 1
-        while k < n and (s[k].isdigit() or s[k] == "."):
+        while k < n and (s[k] in DIGITS or s[k] == "."):
             k += 1
         num = s[j:k]
         if not num or num in "+-." or num.count(".") > 1:
             raise ParseError("CPL001", f"address {addr} needs a number or [expression]", lineno, col)
-        value = float(num)
+        value = word_number(num)
+        if value is None:
+            raise ParseError("CPL001", too_many_decades(addr), lineno, col)
         i = k
         if addr == "N" and blk.n is None and not blk.words:
             blk.n = int(value)
@@ -639,6 +642,9 @@ def parse_program(path: str, text: str, calls: dict | None = None) -> A.Program:
     for kind, item in cpl_blocks(lines):
         if kind == "cpl":
             prog.has_cpl = True
+            if item.number > LINE_MAX:
+                prog.diagnostics.append(diag("CPL001", f"line number beyond {LINE_MAX}", path, item.lineno, 1))
+                continue
             if item.error is not None:
                 e = item.error
                 prog.diagnostics.append(diag("CPL001", e.message, path, e.line, e.column, item.number))

@@ -9,11 +9,10 @@ such a program reaches was not linked with the main program; it is linked when i
 
 from __future__ import annotations
 
-from pathlib import Path
-
 from ...diagnostics import CompileFailed
 from ...nc.block import Block
 from ...nc.canon import Src
+from ...source import read_text
 from . import ast as A
 from .axiswords import CODE as AXIS_CODE
 from .axiswords import detail, missing_axis_blocks
@@ -27,7 +26,7 @@ AXIS_LETTERS = frozenset("XYZABCUVW")
 
 def run_unlinked(rt, target: str, name: str) -> None:
     """Run the DIN blocks of ``target`` on the runtime ``rt`` (its queue, its calls, its modal sub-program)."""
-    text = Path(target).read_text(encoding="latin-1")
+    text = read_text(target)
     ln = link_one(target, text, rt.calls)
     for s in ln.prog.stmts:
         if not isinstance(s, A.NcBlock):
@@ -99,7 +98,7 @@ def _constants(args: list, name: str, line: int) -> tuple:
 def link_late(rt, target: str) -> None:
     """Link a program reached only through an excluded one, with the programs it reaches, before it runs;
     a link error stops the run as it would stop the start of a linked program. "(DIN)" keeps it unlinked."""
-    res = link(target, Path(target).read_text(encoding="latin-1"), rt.machine)
+    res = link(target, read_text(target), rt.machine)
     if res.main.prog.din_only:
         return
     if res.diagnostics:

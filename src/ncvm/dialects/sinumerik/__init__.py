@@ -15,6 +15,7 @@ from pathlib import Path
 
 from ...diagnostics import CompileFailed
 from ...runtime.codegen import PySource
+from ...source import read_text
 from ..base import Dialect
 from .codegen import UnitCodegen, axis_diagnostics
 from .lint import stop_dec_lint
@@ -67,7 +68,7 @@ class SubProgramLibrary:
             if path is None:
                 self.units[number] = None
             else:
-                text = path.read_text(encoding="latin-1")
+                text = read_text(path)
                 self.units[number] = compile_unit(str(path), text, self.machine.axis_names, f"L{number}",
                                                   self.debug, self.decode_ahead, self.strict)
         return self.units[number]
@@ -83,7 +84,7 @@ class SubProgramLibrary:
             for p in sorted(folder.iterdir()):
                 if p.is_file() and p.suffix.lower() in (".spf", ".mpf", ".txt", ""):
                     try:
-                        head = p.read_text(encoding="latin-1")[:200]
+                        head = read_text(p)[:200]
                     except OSError:
                         continue
                     m = _HEADER.search(head)

@@ -14,6 +14,7 @@ import re
 from dataclasses import dataclass, field
 
 from ...diagnostics import Diagnostic, Span
+from ...source import ALNUM, LETTERS, WORD_DECADES, decades, int_literal, is_digits, too_many_decades, word_number
 from .atcodes import AT_CODES
 
 
@@ -97,13 +98,13 @@ def read_program(path: str, text: str) -> tuple[PartProgram, list[Diagnostic]]:
             continue
         if stripped.startswith("%"):
             head = stripped[1:].replace(" ", "").upper()
-            if head[:3] in ("SPF", "MPF") and head[3:].isdigit():
+            if head[:3] in ("SPF", "MPF") and is_digits(head[3:]) and decades(head[3:]) <= WORD_DECADES:
                 if not blocks and kind == "":
                     kind, number = head[:3], int(head[3:])
                     continue
             elif head == "":
                 continue
-            diags.append(Diagnostic("SIN001", f"cannot read program header '{stripped}' (expected %MPF<n> or "
+            diags.append(Diagnostic("SIN001", f"cannot read program header '{stripped[:30]}' (expected %MPF<n> or "
                                               f"%SPF<n> on the first line)", Span(path, lineno, 1)))
             continue
         try:
@@ -113,9 +114,11 @@ def read_program(path: str, text: str) -> tuple[PartProgram, list[Diagnostic]]:
     return PartProgram(path, kind, number, blocks), diags
 
 
-#: a block of plain words only (``N10 G1 X-2.5 Y3 F1500``), the bulk of CAM output: read by regex
-_PLAIN = re.compile(r"^[ \t]*(?:[Nn](\d+))?((?:[ \t]*[A-QS-Za-qs-z][+-]?(?:\d+\.?\d*|\.\d+))*)[ \t]*$")
-_PLAIN_WORD = re.compile(r"([A-Za-z])([+-]?(?:\d+\.?\d*|\.\d+))")
+#: a block of plain words only (``N10 G1 X-2.5 Y3 F1500``), the bulk of CAM output: read by regex (numbers
+#: of at most WORD_DECADES digits before the point: a longer one is read the general way and refused there)
+_PLAIN = re.compile(r"^[ \t]*(?:[Nn]([0-9]{1,8}+))?((?:[ \t]*[A-QS-Za-qs-z][+-]?(?:[0-9]{1,8}+(?:\.[0-9]*+)?+|\.[0-9]+))*)"
+                    r"[ \t]*$")
+_PLAIN_WORD = re.compile(r"([A-Za-z])([+-]?(?:[0-9]+\.?[0-9]*|\.[0-9]+))")
 
 
 def read_block(line: str, lineno: int) -> NcBlock:
@@ -154,13 +157,15 @@ def read_block(line: str, lineno: int) -> NcBlock:
             break  # rest of the line is a remark
         elif c == "@":
             i = _read_at(s, i, items)
-        elif c.isalpha():
+        elif c in LETTERS:
             letter = c.upper()
             j = i + 1
             if letter == "N" and first and j < n and s[j] in _DIGITS:
                 k = j
                 while k < n and s[k] in _DIGITS:
                     k += 1
+                if decades(s[j:k]) > WORD_DECADES:
+                    raise ReadError(col, too_many_decades("N"))
                 blk.n = int(s[j:k])
                 i = k
             elif letter == "R" and j < n and s[j] in _DIGITS:
@@ -176,8 +181,8 @@ def read_block(line: str, lineno: int) -> NcBlock:
     return blk
 
 
-def _number(s: str, i: int) -> tuple[float, int]:
-    """A signed decimal number starting at ``i``."""
+def _number(s: str, i: int, address: str) -> tuple[float, int]:
+    """A signed decimal number starting at ``i``, the value of ``address`` (for the message)."""
     n = len(s)
     j = i
     if j < n and s[j] in "+-":
@@ -188,7 +193,9 @@ def _number(s: str, i: int) -> tuple[float, int]:
     text = s[j:k]
     if not text or text == "." or text.count(".") > 1:
         raise ReadError(i + 1, f"number expected at '{s[i:i + 12].strip()}'")
-    v = float(text)
+    v = word_number(text)
+    if v is None:
+        raise ReadError(i + 1, too_many_decades(address))
     return (-v if s[i] == "-" else v), k
 
 
@@ -216,7 +223,7 @@ def _read_at(s: str, i: int, items: list) -> int:
             break
         kind = s[j].upper()
         if kind == "K":
-            v, k = _number(s, j + 1)
+            v, k = _number(s, j + 1, f"@{code} K")
         else:
             k = j + 1
             while k < n and s[k] in _DIGITS:
@@ -237,9 +244,9 @@ def _read_at(s: str, i: int, items: list) -> int:
 
 def _r_number(s: str, j: int, k: int) -> int:
     """The number of the R parameter written as R (or P) at ``j`` with digits up to ``k``: R0 to R999."""
-    number = int(s[j + 1:k])
+    number = int_literal(s[j + 1:k], 1000)
     if number > 999:
-        raise ReadError(j + 1, f"R{number}: the R parameters are R0 to R999")
+        raise ReadError(j + 1, f"{s[j:min(k, j + 13)]}{'...' if k > j + 13 else ''}: the R parameters are R0 to R999")
     return number
 
 
@@ -277,7 +284,7 @@ def _read_arith(s: str, i: int, items: list) -> int:
             terms.append((op, Operand("R", float(_r_number(s, k, m)))))
             k = m
         elif k < n and s[k] in _NUMCH:
-            v, k = _number(s, k)
+            v, k = _number(s, k, f"R{target}=")
             terms.append((op, Operand("K", v)))
         else:
             raise ReadError(k + 1, f"R{target}=: R parameter or number expected")
@@ -302,7 +309,7 @@ def _read_word(s: str, i: int, items: list) -> int:
     k = i + 1
     # extended address: letters/digits followed by '=' (Q1=25); plain: one letter and a number
     m = k
-    while m < n and s[m].isalnum():
+    while m < n and s[m] in ALNUM:
         m += 1
     address = letter
     if k < m < n and s[m] == "=":
@@ -320,11 +327,11 @@ def _read_word(s: str, i: int, items: list) -> int:
                 m += 1
             items.append(Word(address, None, (sign, _r_number(s, k, m)), col))
             return m
-        v, k = _number(s, k)
+        v, k = _number(s, k, address)
         items.append(Word(address, sign * v, None, col))
         return k
     if k < n and (s[k] in _NUMCH or (s[k] in "+-" and k + 1 < n and s[k + 1] in _NUMCH)):
-        v, k = _number(s, k)
+        v, k = _number(s, k, address)
         items.append(Word(address, v, None, col))
         return k
     # an address letter alone: only the G16 axis list uses it (G16 X Y Z-)

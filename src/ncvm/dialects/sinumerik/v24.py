@@ -24,6 +24,7 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
+from ...source import read_text
 from .ncdata import Cl800Error
 
 OUTPUT_TYPES = {1: "main programs", 2: "subroutines", 5: "NC machine data", 6: "tool offsets",
@@ -80,7 +81,7 @@ def data_lines(data, programs, kind: int, start: int, end: int) -> list[str]:
         return out
     out = []
     for path in programs("MPF" if kind == 1 else "SPF", start, end):
-        out.extend(path.read_text(encoding="latin-1").splitlines())
+        out.extend(read_text(path).splitlines())
     return out
 
 
@@ -93,7 +94,7 @@ def find_programs(folders: list[Path], kind: str, start: int, end: int) -> list[
         for p in sorted(folder.iterdir()):
             if p.is_file() and p.suffix.lower() in (".spf", ".mpf", ".txt", ""):
                 try:
-                    m = _PROGRAM.match(p.read_text(encoding="latin-1")[:200])
+                    m = _PROGRAM.match(read_text(p)[:200])
                 except OSError:
                     continue
                 if m and m.group(1).upper() == kind and start <= int(m.group(2)) <= end:

@@ -13,6 +13,7 @@ from pathlib import Path
 
 from ...diagnostics import CompileFailed, Diagnostic, UsageError
 from ...nc.canon import Src
+from ...source import read_text
 from ..base import Dialect
 from .card import Card
 from .checker import Checker
@@ -119,7 +120,7 @@ class SympasDialect(Dialect):
                 p = session.machine.find_program(extra) or Path(path).parent / extra
                 if not p.is_file():
                     raise UsageError(f"sympas.load: program '{extra}' not found")
-                texts.append((str(p), p.read_text(encoding="latin-1")))
+                texts.append((str(p), read_text(p)))
             units = [u for f, t in texts for u in compile_units(f, t, session.machine)]
             if any(u.stepping for u in units) and not all(u.stepping for u in units):
                 # STEPCNCT in one file: every task may be stepped, so all get a check point per line

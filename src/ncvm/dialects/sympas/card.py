@@ -17,7 +17,7 @@ from . import recording
 from .commands import Commands
 from .motion import TICKS_PER_S, Move
 from .task import ENDED, ERROR, RUNNING, STEP, STOPPED, Task
-from .values import f32, fault
+from .values import MAX_COUNTS, beyond_counts, f32, fault
 
 PU_FACTOR = {0: 1.0, 1: 25.4, 2: 1000.0, 3: 360.0, 4: 1.0, 5: 180.0 / math.pi}
 EVENT_INPUTS = {"EVEO": ("EO",), "EVDNR": ("DR",), "EVLSH": ("LSL", "LSR"), "EVUI": ("UI",)}
@@ -382,10 +382,13 @@ class Card(Commands):
         return min(1.0, max(0.0, max(float(self.axes[ax].q["jerkrel"]) for ax in axes)))
 
     def round_counts(self, x: float) -> float:
+        c = float(self.cfg["counts_per_unit"])
+        counts = x * c
+        if not -MAX_COUNTS <= counts <= MAX_COUNTS:
+            beyond_counts(x)
         if self.sys["MODEREG"] & 0x100:
             return x
-        c = float(self.cfg["counts_per_unit"])
-        return round(x * c) / c
+        return round(counts) / c
 
     def start_path(self, tk, mv: Move, length: float, loc: int) -> bool:
         """Start a path move at the task's time; False when the card refuses it."""

@@ -15,7 +15,7 @@ from ...nc.canon import Src
 from . import recording
 from .lookahead import retime
 from .motion import TICKS_PER_S, Chain, Move, Profile
-from .values import fault
+from .values import MAX_COUNTS, beyond_counts, fault
 
 _GET_M = attrgetter("m")
 
@@ -96,7 +96,11 @@ class Commands:
             a = axes[ax]
             if a.ovr < ovr:
                 ovr = a.ovr
-            p = round(((a.target + val) if relative else (val + a.ref + a.zerooffset)) * c) / c
+            target = (a.target + val) if relative else (val + a.ref + a.zerooffset)
+            q = target * c
+            if not -MAX_COUNTS <= q <= MAX_COUNTS:
+                beyond_counts(target)
+            p = round(q) / c
             d = p - pos[ax]
             l2 += d * d
             pos[ax] = p

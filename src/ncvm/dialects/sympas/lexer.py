@@ -12,6 +12,7 @@ import math
 from dataclasses import dataclass
 from pathlib import Path
 
+from ...source import DIGITS, LETTERS, NAME_CHARS, int_literal, read_text
 from .errors import SympasError
 
 KEYWORDS = frozenset("""and begin boolean const do double downto else end for forward function goto if integer
@@ -20,6 +21,8 @@ label mod module not or procedure repeat shl shr single then timer to until var 
 MAX_INCLUDE_DEPTH = 15
 SIGNIFICANT = 32
 INT_MIN, INT_MAX = -2147483648, 2147483647
+#: beyond the Integer range: a longer decimal constant keeps this value (and is clamped)
+INT_CEILING = 1 << 40
 
 
 @dataclass(slots=True)
@@ -73,9 +76,9 @@ class Lexer:
                     col0 = i + 1 + body.rfind("\n") + 1
                 i = j + 1
                 continue
-            if c.isalpha() or c == "_":
+            if c in LETTERS or c == "_":
                 j = i + 1
-                while j < n and (text[j].isalnum() or text[j] == "_"):
+                while j < n and text[j] in NAME_CHARS:
                     j += 1
                 word = text[i:j]
                 low = word.lower()
@@ -85,7 +88,7 @@ class Lexer:
                     out.append(Token("id", word[:SIGNIFICANT], path, line, col, word))
                 i = j
                 continue
-            if c.isdigit() or (c == "." and i + 1 < n and text[i + 1].isdigit()
+            if c in DIGITS or (c == "." and i + 1 < n and text[i + 1] in DIGITS
                                and not (out and out[-1].kind in ("id", "kw"))):
                 i = self._number(text, i, path, line, col, out)
                 continue
@@ -145,23 +148,23 @@ class Lexer:
     def _number(self, text, i, path, line, col, out) -> int:
         n = len(text)
         j = i
-        while j < n and text[j].isdigit():
+        while j < n and text[j] in DIGITS:
             j += 1
         is_real = False
         if j < n and text[j] == "." and not text.startswith("..", j):
             # "1." is a fraction; "A1.dp" never reaches here because identifiers start with a letter
             is_real = True
             j += 1
-            while j < n and text[j].isdigit():
+            while j < n and text[j] in DIGITS:
                 j += 1
         if j < n and text[j] in "eE":
             k = j + 1
             if k < n and text[k] in "+-":
                 k += 1
-            if k < n and text[k].isdigit():
+            if k < n and text[k] in DIGITS:
                 is_real = True
                 j = k
-                while j < n and text[j].isdigit():
+                while j < n and text[j] in DIGITS:
                     j += 1
         lit = text[i:j]
         if is_real:
@@ -170,7 +173,8 @@ class Lexer:
                 raise SympasError("SP010", f"real constant {lit} is beyond the double range", path, line, col)
             out.append(Token("real", value, path, line, col, lit))
         else:
-            out.append(Token("int", int(lit), path, line, col, lit))  # clamped by the parser (sign folding)
+            # clamped by the parser (sign folding), as the manual clamps a constant beyond the range (L398)
+            out.append(Token("int", int_literal(lit, INT_CEILING), path, line, col, lit))
         return j
 
     def _directive(self, body: str, path, line, col) -> Token:
@@ -193,5 +197,5 @@ class Lexer:
             found = here if here.is_file() else (self.finder(name) if self.finder else None)
         if found is None:
             raise SympasError("SP007", f"include file '{name}' not found", path, line, col)
-        text = found.read_text(encoding="latin-1")
+        text = read_text(found)
         return self.tokens(str(found), text, depth + 1)

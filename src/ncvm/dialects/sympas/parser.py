@@ -9,9 +9,10 @@ are accepted with a warning.
 
 from __future__ import annotations
 
+from ...source import MAX_LOOP_NESTING, MAX_NESTING, int_literal, is_digits, too_deep
 from . import ast as A
 from .errors import SympasError
-from .lexer import INT_MAX, INT_MIN, Token
+from .lexer import INT_CEILING, INT_MAX, INT_MIN, Token
 
 SCALAR_TYPES = ("boolean", "integer", "single", "double", "timer")
 CASTS = ("boolean", "integer", "single", "double")
@@ -25,6 +26,11 @@ class Parser:
         self.toks = tokens
         self.i = 0
         self.warn = warn or (lambda code, msg, tok: None)
+        # nesting where the manual sets no limit ("nahezu beliebiger Tiefe", L1004): NEST001 beyond ncvm's
+        self.statements = 0  # statements the parser is inside
+        self.loops = 0  # loops the parser is inside
+        self.operands = 0  # nested operands (brackets, unary operators, arguments) the parser is inside
+        self.height = 0  # height of the expression tree just parsed
 
     # -- token helpers -----------------------------------------------------
     @property
@@ -118,7 +124,7 @@ class Parser:
             t = self.advance()
             name, arg = t.value
             if name == "TASK":
-                prog.task = int(arg) if arg.isdigit() else arg
+                prog.task = int_literal(arg, INT_CEILING) if is_digits(arg) else arg
                 prog.task_tok = t
             else:
                 prog.fullsystem = True
@@ -272,9 +278,22 @@ class Parser:
             self.advance()
             self.advance()
             t = self.tok
+        self.statements += 1
+        if self.statements > MAX_NESTING:
+            self.error(too_deep("statements", MAX_NESTING), t, "NEST001")
         s = self.unlabelled(t)
+        self.statements -= 1
         s.label = label
         return s
+
+    def loop_body(self, t: Token, parse):
+        """``parse()`` of a loop's body, counted against the loop nesting ncvm compiles."""
+        self.loops += 1
+        if self.loops > MAX_LOOP_NESTING:
+            self.error(too_deep("loops", MAX_LOOP_NESTING), t, "NEST001")
+        body = parse()
+        self.loops -= 1
+        return body
 
     def unlabelled(self, t: Token):
         if t.kind == "kw":
@@ -298,10 +317,10 @@ class Parser:
                 self.advance()
                 cond = self.expression()
                 self.expect_kw("do")
-                return A.While(t.file, t.line, t.col, cond, self.statement())
+                return A.While(t.file, t.line, t.col, cond, self.loop_body(t, self.statement))
             if k == "repeat":
                 self.advance()
-                body = self.stmt_seq(("until",))
+                body = self.loop_body(t, lambda: self.stmt_seq(("until",)))
                 self.expect_kw("until")
                 return A.Repeat(t.file, t.line, t.col, body, self.expression())
             if k == "for":
@@ -314,7 +333,7 @@ class Parser:
                 down = self.advance().value == "downto"
                 stop = self.expression()
                 self.expect_kw("do")
-                return A.For(t.file, t.line, t.col, var, start, stop, down, self.statement())
+                return A.For(t.file, t.line, t.col, var, start, stop, down, self.loop_body(t, self.statement))
             if k == "goto":
                 self.advance()
                 return A.Goto(t.file, t.line, t.col, str(self.expect_id().value))
@@ -357,12 +376,16 @@ class Parser:
         if self.at_op("("):
             self.advance()
             call.parens = True
+            height = 0
             if not self.at_op(")"):
                 call.args.append(self.call_arg())
+                height = self.height
                 while self.at_op(","):
                     self.advance()
                     call.args.append(self.call_arg())
+                    height = max(height, self.height)
             self.expect_op(")")
+            self.height = height + 1
         return call
 
     def call_arg(self):
@@ -375,31 +398,43 @@ class Parser:
 
     # -- expressions -------------------------------------------------------------
     def expression(self):
-        left = self.simple()
-        while self.at_op(*REL_OPS):
-            op = self.advance()
-            left = A.Bin(op.file, op.line, op.col, op.value, left, self.simple())
-        return left
+        return self.chain(self.simple, lambda: self.at_op(*REL_OPS))
 
     def simple(self):
-        left = self.term()
-        while (self.at_op("+", "-")) or self.at_kw("or", "xor"):
-            op = self.advance()
-            left = A.Bin(op.file, op.line, op.col, op.value, left, self.term())
-        return left
+        return self.chain(self.term, lambda: self.at_op("+", "-") or self.at_kw("or", "xor"))
 
     def term(self):
-        left = self.factor()
-        while self.at_op("*", "/") or self.at_kw("mod", "shl", "shr", "and"):
+        return self.chain(self.factor, lambda: self.at_op("*", "/") or self.at_kw("mod", "shl", "shr", "and"))
+
+    def chain(self, operand, at_operator):
+        """``operand {operator operand}``, left-associative; each operator is one level of the tree."""
+        left = operand()
+        height = self.height
+        while at_operator():
             op = self.advance()
-            left = A.Bin(op.file, op.line, op.col, op.value, left, self.factor())
+            left = A.Bin(op.file, op.line, op.col, op.value, left, operand())
+            height = max(height, self.height) + 1
+            if height > MAX_NESTING:
+                self.error(too_deep("brackets, operators and calls", MAX_NESTING), op, "NEST001")
+        self.height = height
         return left
 
     def factor(self):
+        """An operand; ``self.height`` is the height of its tree (0 for a constant or a name)."""
         t = self.tok
+        self.operands += 1
+        if self.operands > MAX_NESTING:
+            self.error(too_deep("brackets, operators and calls", MAX_NESTING), t, "NEST001")
+        self.height = 0
+        node = self.operand(t)
+        self.operands -= 1
+        return node
+
+    def operand(self, t: Token):
         if t.kind == "op" and t.value in ("+", "-") or t.kind == "kw" and t.value == "not":
             self.advance()
             operand = self.factor()
+            self.height += 1
             if t.value == "-" and isinstance(operand, A.Num) and operand.ty == "integer" and operand.value == -INT_MIN:
                 operand.value = INT_MIN
                 return operand
@@ -420,6 +455,7 @@ class Parser:
             self.advance()
             e = self.expression()
             self.expect_op(")")
+            self.height += 1
             return e
         if t.kind == "kw" and t.value in CASTS:
             self.advance()
@@ -428,6 +464,7 @@ class Parser:
             self.advance()
             e = self.expression()
             self.expect_op(")")
+            self.height += 1
             return A.Call(t.file, t.line, t.col, t.value.upper(), [e], True)
         if t.kind == "id":
             nxt = self.peek()

@@ -113,6 +113,15 @@ MATH["ATAN"] = math.atan
 MATH["TANH"] = math.tanh
 
 
+#: the card counts positions in whole counts held in a double, which are whole only up to 2**53 (the manual
+#: gives no range): a target beyond it is an invalid parameter (Table 40, $8000), not a position
+MAX_COUNTS = 2.0 ** 53
+
+
+def beyond_counts(target: float):
+    fault(32768, f"target position {target:g} is beyond the card's position range ({MAX_COUNTS:.0f} counts)")
+
+
 def axis_values(items: tuple) -> tuple:
     """The (axis, value) items of a move or zero-point command: NaN or inf (a math function's "no valid
     return value") is an invalid parameter (Table 40, $8000), not a position."""

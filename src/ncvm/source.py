@@ -1,0 +1,90 @@
+"""Program text as the controls read it: 8-bit characters, ASCII letters and digits, bounded numbers.
+
+Every front end reads its programs through :func:`read_text` and classifies characters with
+the ASCII sets here, not with ``str.isalpha``/``isdigit``: those accept Latin-1 letters (é, ß)
+and superscript digits (¹²³), which no control reads as part of a name or a number, and
+``str.upper`` turns ß into two letters, which shifts every column after it.
+"""
+
+from __future__ import annotations
+
+import string
+from pathlib import Path
+
+#: a UTF-8 byte-order mark as it reads in Latin-1; an editor may put it before the first line
+BOM = "\xef\xbb\xbf"
+
+DIGITS = frozenset(string.digits)
+LETTERS = frozenset(string.ascii_letters)
+ALNUM = DIGITS | LETTERS
+#: a character that may continue a name in every dialect (letters, digits, underscore)
+NAME_CHARS = ALNUM | {"_"}
+
+_UPPER = str.maketrans(string.ascii_lowercase, string.ascii_uppercase)
+
+#: the most decades a number in an NC block may have before its decimal point (the 8 decades of the
+#: SINUMERIK 800's R parameters and words, CL 800 manual L7061, L7077-7080; DIN word formats keep to it)
+WORD_DECADES = 8
+
+
+#: how deep ncvm reads nested statements and expressions where a manual sets no limit (NEST001,
+#: docs/decisions.md): programs compile to Python, whose compiler nests at most 100 blocks and 200 brackets
+MAX_NESTING = 64
+#: loops inside loops where a manual sets no limit: Python nests at most 20 loops, and generated code may
+#: wrap a body in two blocks of its own (a GOTO dispatch loop)
+MAX_LOOP_NESTING = 16
+
+
+def too_deep(what: str, limit: int) -> str:
+    """The message of NEST001 for ``what`` (statements, loops, ...) nested beyond ``limit`` levels."""
+    return f"{what} nested deeper than {limit} levels: ncvm's limit where the manual sets none"
+
+
+def read_text(path: str | Path) -> str:
+    """The text of a program file: every byte one Latin-1 character, a leading byte-order mark dropped.
+
+    Raises OSError as reading a file does.
+    """
+    return without_bom(Path(path).read_text(encoding="latin-1"))
+
+
+def without_bom(text: str) -> str:
+    return text[len(BOM):] if text.startswith(BOM) else text
+
+
+def upper(text: str) -> str:
+    """``text`` with a-z in capitals and every other character kept: one character for one (unlike str.upper)."""
+    return text.translate(_UPPER)
+
+
+def is_digits(text: str) -> bool:
+    """True for a non-empty string of ASCII digits 0-9."""
+    return bool(text) and all(c in DIGITS for c in text)
+
+
+def int_literal(digits: str, ceiling: int) -> int:
+    """The value of a string of ASCII digits, or ``ceiling`` when it is larger.
+
+    A front end passes a ceiling beyond its range, so that its range check refuses the literal
+    at its position; Python itself refuses to convert more than 4300 digits (ValueError).
+    """
+    significant = digits.lstrip("0")
+    if len(significant) > len(str(ceiling)):
+        return ceiling
+    return min(int(significant or "0"), ceiling)
+
+
+def decades(number: str) -> int:
+    """Digits before the decimal point of a decimal number (``-0012.5``: 2), leading zeros not counted."""
+    return len(number.lstrip("+-").partition(".")[0].lstrip("0"))
+
+
+def word_number(text: str) -> float | None:
+    """The value of the number of an NC word (``-12.5``, ``+3``, ``.5``); None when it has more than
+    :data:`WORD_DECADES` digits before its decimal point, which no block format holds."""
+    return None if decades(text) > WORD_DECADES else float(text)
+
+
+def too_many_decades(address: str) -> str:
+    """The message for a word whose number :func:`word_number` refuses."""
+    return f"{address}: more than {WORD_DECADES} digits before the decimal point (an NC word has at most {WORD_DECADES})"
