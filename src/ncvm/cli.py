@@ -16,6 +16,7 @@ import click
 
 from . import __version__
 from .diagnostics import CompileFailed, UsageError
+from .dialects import REGISTRY
 from .outpaths import PLOT_SUFFIXES, SCREEN_PICTURE, Output, check_outputs
 
 EXIT_OK, EXIT_FAULT, EXIT_USAGE, EXIT_INTERNAL = 0, 1, 2, 70
@@ -84,7 +85,7 @@ def cli():
     ADDI-DATA rw_SymPas and plain DIN 66025 on a simulated controller."""
 
 
-DIALECT_OPT = click.option("--dialect", "-d", type=click.Choice(["din", "cpl", "cl800", "sin800", "sympas"]),
+DIALECT_OPT = click.option("--dialect", "-d", type=click.Choice(list(REGISTRY)),
                            help="Language of the program (default: from the file name, else the content).")
 MACHINE_OPT = click.option("--machine", "-m", type=click.Path(dir_okay=False), help="Machine file (TOML).")
 

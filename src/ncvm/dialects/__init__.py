@@ -8,27 +8,35 @@ from __future__ import annotations
 
 import importlib
 from pathlib import Path
+from typing import TYPE_CHECKING, NamedTuple
 
 from ..diagnostics import UsageError
-from .base import Dialect
 
-#: dialect id -> module that defines DIALECT
+if TYPE_CHECKING:  # the registry itself stays light: the CLI reads it at start-up
+    from .base import Dialect
+
+
+class Entry(NamedTuple):
+    """One dialect as the registry knows it without importing it."""
+
+    module: str
+    title: str
+    extensions: tuple[str, ...]
+
+
+#: dialect id -> its entry: the one list of dialects (CLI choices and the extension map derive from it)
 REGISTRY = {
-    "din": "ncvm.dialects.din",
-    "cpl": "ncvm.dialects.cpl",
-    "cl800": "ncvm.dialects.cl800",
-    "sin800": "ncvm.dialects.sinumerik",
-    "sympas": "ncvm.dialects.sympas",
+    "din": Entry("ncvm.dialects.din", "plain DIN 66025 / ISO 6983", (".din", ".ngc", ".nc", ".iso")),
+    "cpl": Entry("ncvm.dialects.cpl", "Bosch Rexroth CPL (Typ3 osa / PNC)", (".cpl",)),
+    "cl800": Entry("ncvm.dialects.cl800", "Siemens CL 800 cycle language (compiled to SINUMERIK 800 @ code)",
+                   (".cl8", ".cl800")),
+    "sin800": Entry("ncvm.dialects.sinumerik", "SINUMERIK 800 NC: @ code and DIN part programs (%MPF/%SPF)",
+                    (".mpf", ".spf")),
+    "sympas": Entry("ncvm.dialects.sympas", "ADDI-DATA rw_SymPas (APCI-8001/8008)", (".pas", ".sym", ".sap")),
 }
 
 #: file extension -> dialect id
-EXTENSIONS = {
-    ".din": "din", ".ngc": "din", ".nc": "din", ".iso": "din",
-    ".cpl": "cpl",
-    ".cl8": "cl800", ".cl800": "cl800",
-    ".spf": "sin800", ".mpf": "sin800",
-    ".pas": "sympas", ".sym": "sympas", ".sap": "sympas",
-}
+EXTENSIONS = {ext: d for d, entry in REGISTRY.items() for ext in entry.extensions}
 
 _LOADED: dict[str, Dialect] = {}
 
@@ -38,9 +46,9 @@ def get_dialect(dialect_id: str) -> Dialect:
         raise UsageError(f"unknown dialect '{dialect_id}' (known: {', '.join(REGISTRY)})")
     if dialect_id not in _LOADED:
         try:
-            module = importlib.import_module(REGISTRY[dialect_id])
+            module = importlib.import_module(REGISTRY[dialect_id].module)
         except ModuleNotFoundError as e:
-            if e.name and e.name.startswith(REGISTRY[dialect_id]):
+            if e.name and e.name.startswith(REGISTRY[dialect_id].module):
                 raise UsageError(f"dialect '{dialect_id}' is not available in this version of ncvm") from None
             raise
         _LOADED[dialect_id] = module.DIALECT

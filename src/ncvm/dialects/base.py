@@ -13,8 +13,6 @@ class Dialect:
     """A language front end: check, run, and (where the control had one) compile."""
 
     id = ""
-    title = ""
-    extensions: tuple[str, ...] = ()
 
     def sniff(self, text: str) -> int:
         """How sure (0-100) that ``text`` is a program of this dialect."""

@@ -100,12 +100,6 @@ class Machine:
     def axis_names(self) -> tuple[str, ...]:
         return tuple(a.name for a in self.axes)
 
-    def axis_index(self, name: str) -> int:
-        for i, a in enumerate(self.axes):
-            if a.name == name:
-                return i
-        raise KeyError(name)
-
     def offset(self, table: str) -> list[float]:
         """The zero offset ``table`` (e.g. "G54"), zeros when the machine file leaves it out."""
         return self.offsets.setdefault(table, [0.0] * len(self.axes))

@@ -68,8 +68,6 @@ def _last_text_line(text: str) -> tuple[int, str]:
 
 class Cl800Dialect(Dialect):
     id = "cl800"
-    title = "Siemens CL 800 cycle language (compiled to SINUMERIK 800 @ code)"
-    extensions = (".cl8", ".cl800")
 
     def sniff(self, text: str) -> int:
         hits = len(_SNIFF.findall(text[:20000]))

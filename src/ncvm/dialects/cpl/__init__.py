@@ -22,8 +22,6 @@ _CPL_LINE = re.compile(r"^\s*\d+\s*(REM|IF|FOR|WHILE|GOTO|CALL|DIM|CASE|[A-Z#@][
 
 class CplDialect(Dialect):
     id = "cpl"
-    title = "Bosch Rexroth CPL (Typ3 osa / PNC)"
-    extensions = (".cpl",)
 
     def sniff(self, text: str) -> int:
         lines = [ln for ln in text.splitlines()[:200] if ln.strip()]

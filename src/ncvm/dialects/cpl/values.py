@@ -59,10 +59,6 @@ def to_int(v):
     raise CplError("CPL021", f"{type_name(v)} value assigned to an INTEGER variable (use INT or ROUND)")
 
 
-def int_overflow(v):
-    raise CplError("CPL027", f"{v} outside -2147483648..2147483647")
-
-
 def to_real(v):
     if v.__class__ is int and -16777216 <= v <= 16777216:  # exact in binary32: no rounding to do
         return float(v)

@@ -16,8 +16,6 @@ _DIN_LINE = re.compile(r"^\s*(N\d+\s*)?([GMXYZFST]-?\d|\(|%|/|$)", re.I)
 
 class DinDialect(Dialect):
     id = "din"
-    title = "plain DIN 66025 / ISO 6983"
-    extensions = (".din", ".ngc", ".nc", ".iso")
 
     def sniff(self, text: str) -> int:
         lines = [ln for ln in text.splitlines()[:200] if ln.strip()]

@@ -95,8 +95,6 @@ class SubProgramLibrary:
 
 class Sin800Dialect(Dialect):
     id = "sin800"
-    title = "SINUMERIK 800 NC: @ code and DIN part programs (%MPF/%SPF)"
-    extensions = (".mpf", ".spf")
 
     def sniff(self, text: str) -> int:
         head = text.lstrip()[:20].upper().replace(" ", "")

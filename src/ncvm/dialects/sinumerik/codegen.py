@@ -78,9 +78,6 @@ class UnitCodegen:
             return self.r(int(op.value))
         return f"_R[_ptr({self.r(int(op.value))})]"
 
-    def ival(self, op: Operand) -> str:
-        return f"_int({self.val(op)})" if op.kind != "K" else str(int(op.value))
-
     def store(self, op: Operand, expr: str) -> list[str]:
         """Python lines storing ``expr`` into a <Var>."""
         if self.strict:

@@ -60,10 +60,6 @@ NAMESPACE_GLOBALS = {
 }
 
 
-class Halt(Exception):
-    """M0 / M2 / M30 reached inside a sub-program: unwind every level."""
-
-
 class Channel(SysMem, SpindleReads):
     """One NC channel running a main program and its sub-programs."""
 

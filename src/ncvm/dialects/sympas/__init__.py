@@ -97,8 +97,6 @@ def _span(node):
 
 class SympasDialect(Dialect):
     id = "sympas"
-    title = "ADDI-DATA rw_SymPas (APCI-8001/8008)"
-    extensions = (".pas", ".sym", ".sap")
 
     def sniff(self, text: str) -> int:
         hits = len(_SNIFF.findall(text[:20000]))

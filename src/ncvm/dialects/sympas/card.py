@@ -12,12 +12,11 @@ import heapq
 import math
 
 from ...diagnostics import RuntimeFault, Span
-from ...nc.canon import Src
 from . import recording
 from .commands import Commands
 from .motion import TICKS_PER_S, Move
-from .task import ENDED, ERROR, RUNNING, STEP, STOPPED, Task
-from .values import MAX_COUNTS, beyond_counts, f32, fault
+from .task import ENDED, ERROR, RUNNING, STOPPED, Task
+from .values import MAX_COUNTS, beyond_counts, fault
 
 PU_FACTOR = {0: 1.0, 1: 25.4, 2: 1000.0, 3: 360.0, 4: 1.0, 5: 180.0 / math.pi}
 EVENT_INPUTS = {"EVEO": ("EO",), "EVDNR": ("DR",), "EVLSH": ("LSL", "LSR"), "EVUI": ("UI",)}
@@ -655,5 +654,3 @@ class Card(Commands):
         raise RuntimeFault("RUN001", f"step limit of {self.session.steps.limit:,} statements reached "
                                      "(runaway program? raise it with --max-steps)")
 
-
-_ = (STEP, f32, Src)

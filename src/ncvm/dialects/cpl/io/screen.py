@@ -460,10 +460,6 @@ class Screen(Graphics):
                 raise fail("INVALID_PARAMETER", f"TFO orientation {orientation!r} (0..360)")
         self.font = (f, s, c, o)
 
-    def _font_height(self, style: tuple[int, int, int, int]) -> int:
-        size = style[1] % 1000
-        return CELL_H if size == 0 else size
-
     def GPR(self, x, y, text) -> None:  # noqa: N802
         """``GPR(xpix,ypix[+40],text)``: text with its bottom-left at pixel (x, y), y counted from the
         bottom of the softkey band (add 40 to match the other graphics commands)."""
