@@ -186,3 +186,55 @@ def test_a_full_disk_stops_the_run_with_what_to_do_and_the_store_keeps_what_was_
     assert 0 < kept < 3000
     out = ncvm("run", str(prog), "--state", str(state))
     assert out.returncode == 0 and out.stdout.split() == ["@5", "=", str(kept + 3000)]
+
+
+# -- what stands at <state>/lock or <state>/store.sqlite is not always a plain file -------------------------------
+
+
+def test_a_lock_that_is_a_symlink_is_refused_and_its_target_left_whole(tmp_path):
+    """The lock file is truncated to hold the pid: followed through a symlink, that would empty any file
+    the user may write (a run as root emptied /etc/passwd)."""
+    victim = tmp_path / "victim.txt"
+    victim.write_text("keep me\n")
+    state = tmp_path / "st"
+    state.mkdir()
+    (state / "lock").symlink_to(victim)
+    prog = tmp_path / "count.cpl"
+    prog.write_text(QUIET)
+    line = refused(ncvm("run", str(prog), "--state", str(state)))
+    assert f"{state / 'lock'} is a symbolic link" in line and "remove it" in line
+    assert victim.read_text() == "keep me\n"
+
+
+@pytest.mark.parametrize("kind", ["fifo", "directory"])
+def test_a_lock_that_is_no_plain_file_is_refused_naming_it(tmp_path, kind):
+    state = tmp_path / "st"
+    state.mkdir()
+    if kind == "fifo":
+        os.mkfifo(state / "lock")
+    else:
+        (state / "lock").mkdir()
+    prog = tmp_path / "count.cpl"
+    prog.write_text(QUIET)
+    line = refused(ncvm("run", str(prog), "--state", str(state)))
+    assert f"{state / 'lock'} is a {kind}, not a file" in line and "remove it" in line
+
+
+@pytest.mark.parametrize("kind", ["fifo", "directory"])
+def test_a_store_that_is_no_plain_file_is_refused_naming_it(tmp_path, kind):
+    state = tmp_path / "st"
+    state.mkdir()
+    if kind == "fifo":
+        os.mkfifo(state / "store.sqlite")
+    else:
+        (state / "store.sqlite").mkdir()
+    prog = tmp_path / "count.cpl"
+    prog.write_text(QUIET)
+    line = refused(ncvm("run", str(prog), "--state", str(state)))
+    assert f"{state / 'store.sqlite'} is a {kind}, not a file" in line and "move it away" in line
+
+
+def test_a_state_that_is_a_broken_symlink_is_named_as_such(tmp_path):
+    (tmp_path / "st").symlink_to(tmp_path / "nowhere")
+    with pytest.raises(StateError, match=f"state directory {tmp_path / 'st'} is a symbolic link to nothing"):
+        StateLock(tmp_path / "st").acquire()

@@ -20,7 +20,7 @@ from contextlib import contextmanager
 from pathlib import Path
 from typing import Any, Iterator
 
-from .state import StateError, disk_full
+from .state import StateError, disk_full, not_a_file
 
 SCHEMA = """
 CREATE TABLE IF NOT EXISTS permanent (
@@ -48,6 +48,9 @@ class Store:
                              f"give another --state") from None
         self._db: sqlite3.Connection | None = None
         self._in_batch = False
+        kind = not_a_file(self.path, follow=True)  # SQLite would call it a disk error, or wait on a FIFO
+        if kind:
+            raise StateError(f"{self.path} is {kind}, not a file; move it away or give another --state")
         try:
             self._db = sqlite3.connect(self.path, isolation_level=None, timeout=BUSY_TIMEOUT_S)
             self._adopt()
