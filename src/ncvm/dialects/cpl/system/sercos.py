@@ -9,9 +9,8 @@ the run-time error SERCOS SERVICE CHANNEL IS LOCKED.
 
 from __future__ import annotations
 
-from pathlib import Path
-
 from ..errors import CplError
+from ..io.errors import CplRuntimeError
 from .axes import nul
 from .positions import f_apos
 
@@ -65,7 +64,12 @@ def f_scsl(rt, axis, idtype, idno, filename, res=None):
         return 0, 1
     items = value if isinstance(value, list) else [value]
     try:
-        path = Path(rt.machine.file_root) / str(nul(filename)).lstrip("/")
+        _, path = rt.io.files.path_of(str(nul(filename)))  # a name never leaves the file root
+    except CplRuntimeError:
+        if res is None:
+            raise
+        return 0, 2
+    try:
         path.parent.mkdir(parents=True, exist_ok=True)
         path.write_bytes("".join(f"{v}\n" for v in items).encode("latin-1") + b"\x03\n")
     except OSError:
