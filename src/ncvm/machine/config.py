@@ -53,6 +53,8 @@ def _loads(text: str, where: str) -> dict:
         raise UsageError(f"{where}: not valid TOML: {e}") from None
     except RecursionError:
         raise UsageError(f"{where}: not valid TOML: arrays or inline tables nested too deeply") from None
+    except ValueError:  # Python reads no integer of more than 4300 digits
+        raise UsageError(f"{where}: not valid TOML: an integer with thousands of digits") from None
 
 
 def _checked(node, data: dict, where: str, ctx: Ctx = NO_AXES, what: str = "machine file") -> None:
