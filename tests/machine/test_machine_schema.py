@@ -227,6 +227,8 @@ def cases():
         ("!x = " + "[" * 3000 + "]" * 3000 + "\n", "not valid TOML: arrays or inline tables nested too deeply"),
         ("!x = " + "{a=" * 3000 + "1" + "}" * 3000 + "\n", "not valid TOML: arrays or inline tables nested too"),
         ("[[axis]\nname = 'A'\n", "not valid TOML"),
+        ('![machine]\nname = "a"\nname = "b"\n', 'Cannot overwrite a value (at line 3, column 11): name = "b"'),
+        ('[cpl]\nlookahead = 1\n[cpl]\nchannel = 1\n', "Cannot declare ('cpl',) twice (at line 3, column 5): [cpl]"),
         # finite but absurd magnitudes: sums and squares overflowed, divisions by them gave NaN cycle times
         ('[[axis]]\nname = "A"\naccel = 5e-324\n', "axis[3].accel = 5e-324: must be positive and at least 1e-09"),
         ('[[axis]]\nname = "A"\nrapid = 1e-300\n', "axis[3].rapid = 1e-300: must be positive and at least 1e-09"),
