@@ -236,6 +236,8 @@ def test_scs_list_parameter_is_an_error(run):
                                       ({"errors": [{"number": 1, "kat": 6}]}, r"errors\[0\]\.kat"),
                                       ({"override": {"rapid": 50}}, r"override\.rapid"),
                                       ({"zs_tables": {"V2": {"G53": [1.0]}}}, r"zs_tables\.V2\.G53"),
+                                      ({"zs_tables": {"V2": {"G54": [1.0] * 9}}},
+                                       r"zs_tables\.V2\.G54: \[1\.0, .*\] has more values than the 8 columns"),
                                       ({"channel": "one"}, 'cpl.channel = "one": must be an integer')])
 def test_bad_cpl_records_name_the_key(run_text, reference, cpl, name):
     with pytest.raises(UsageError, match=name):
