@@ -302,6 +302,14 @@ def test_scenario_file_is_checked_against_the_machine_axes(tmp_path):
         load_scenario(p)
 
 
+def test_a_machine_file_with_a_byte_order_mark_loads(tmp_path):
+    """Windows editors save UTF-8 with a byte-order mark; TOML parsers take it as a stray character."""
+    p = tmp_path / "bom.toml"
+    p.write_bytes(("\ufeff[machine]\nname = 'bom'\n" + AXES).encode("utf-8"))
+    m = load_machine(p)
+    assert m.name == "bom" and [a.name for a in m.axes] == ["X", "Y", "Z"]
+
+
 @pytest.mark.parametrize("path", MACHINES, ids=lambda p: str(p.relative_to(ROOT)))
 def test_every_machine_file_of_the_repository_loads_and_fits_the_json_schema(path):
     m = load_machine(path)

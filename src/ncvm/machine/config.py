@@ -39,7 +39,7 @@ def load_machine(path: str | Path | None = None, base_dir: Path | None = None) -
 
 def _parse(p: Path, what: str) -> dict:
     try:
-        text = p.read_text(encoding="utf-8")
+        text = p.read_text(encoding="utf-8").removeprefix("\ufeff")  # the byte-order mark of Windows editors
     except OSError as e:
         raise UsageError(f"cannot read {what} {p}: {e.strerror}") from None
     except UnicodeDecodeError as e:
