@@ -152,6 +152,9 @@ class Card(Commands):
 
     def _axis_by_name(self, name, what):
         from ...diagnostics import UsageError
+        if name is None:  # a CPL or SINUMERIK event names no axis
+            raise UsageError(f"{what}: no axis given: rw_SymPas events name one with axis = ... "
+                             f"(axes: {', '.join(self.names)})")
         if name not in self.names:
             raise UsageError(f"{what}: unknown axis '{name}' (axes: {', '.join(self.names)})")
         return self.axes[self.names.index(name)]
