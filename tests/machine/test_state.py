@@ -238,3 +238,32 @@ def test_a_state_that_is_a_broken_symlink_is_named_as_such(tmp_path):
     (tmp_path / "st").symlink_to(tmp_path / "nowhere")
     with pytest.raises(StateError, match=f"state directory {tmp_path / 'st'} is a symbolic link to nothing"):
         StateLock(tmp_path / "st").acquire()
+
+
+@pytest.mark.parametrize("statement", ['ERASE("st/store.sqlite")', 'ERASE("st/lock")', 'ERASE("/st/store.sqlite-wal")',
+                                       'OPENW(1,"st/lock",1000)', 'OPENW(1,"ST/../st/link/x.I",1000)'])
+def test_a_program_cannot_touch_the_store_or_lock_of_a_state_directory_in_the_file_root(tmp_path, statement):
+    """file_root = "." with the state directory beside the programs: an ERASE of the store lost every permanent
+    value, an ERASE of the lock let a second run in."""
+    axes = "".join(f'[[axis]]\nname = "{n}"\n' for n in "XYZ")
+    (tmp_path / "machine.toml").write_text(axes + '[paths]\nfile_root = "."\n')
+    (tmp_path / "st" / "link").mkdir(parents=True)
+    prog = tmp_path / "clobber.cpl"
+    prog.write_text(f"10 @5 = 7\n20 {statement}\n30 @5 = 8\nM30\n")
+    proc = ncvm("run", str(prog), "--machine", str(tmp_path / "machine.toml"), "--state", str(tmp_path / "st"))
+    assert proc.returncode == 1 and "error CPL609: INVALID FILE NAME" in proc.stderr, proc.stderr
+    assert "is a file of ncvm's state directory" in proc.stderr
+    assert (tmp_path / "st" / "lock").is_file() and counter(tmp_path / "st") == 7
+    assert not (tmp_path / "st" / "link" / "x.I").exists()
+
+
+def test_a_program_still_reaches_its_files_beside_the_state_directory(tmp_path):
+    axes = "".join(f'[[axis]]\nname = "{n}"\n' for n in "XYZ")
+    (tmp_path / "machine.toml").write_text(axes + '[paths]\nfile_root = "."\n')
+    prog = tmp_path / "log.cpl"
+    prog.write_text('10 OPENW(1,"st/mine",1000)\n20 PRN#(1,"kept")\n30 CLOSE(1)\n40 ERASE("lockfile")\nM30\n')
+    (tmp_path / "lockfile").write_text("x\n")
+    proc = ncvm("run", str(prog), "--machine", str(tmp_path / "machine.toml"), "--state", str(tmp_path / "st"))
+    assert proc.returncode == 0, proc.stderr
+    assert (tmp_path / "st" / "mine").read_text(encoding="latin-1").startswith("kept")
+    assert not (tmp_path / "lockfile").exists()

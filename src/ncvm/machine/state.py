@@ -17,6 +17,15 @@ from pathlib import Path
 from ..diagnostics import UsageError
 
 LOCK_NAME = "lock"
+STORE_NAME = "store.sqlite"
+
+
+def owned_paths(state_dir: str | Path) -> tuple[Path, ...]:
+    """The entries of a state directory that are ncvm's own (lock, store and its SQLite side files, the
+    CPL link tables): when the state directory lies in the file root, no program's file name reaches them,
+    or a program could erase the permanent store or the lock of the run."""
+    d = Path(state_dir).resolve()
+    return (d / LOCK_NAME, *(d / (STORE_NAME + tail) for tail in ("", "-wal", "-shm", "-journal")), d / "link")
 
 
 class StateError(UsageError):

@@ -20,7 +20,7 @@ from contextlib import contextmanager
 from pathlib import Path
 from typing import Any, Iterator
 
-from .state import StateError, disk_full, not_a_file
+from .state import STORE_NAME, StateError, disk_full, not_a_file
 
 SCHEMA = """
 CREATE TABLE IF NOT EXISTS permanent (
@@ -40,7 +40,7 @@ class Store:
     """A namespaced key/value store in ``<state_dir>/store.sqlite``."""
 
     def __init__(self, state_dir: str | Path):
-        self.path = Path(state_dir) / "store.sqlite"
+        self.path = Path(state_dir) / STORE_NAME
         try:
             self.path.parent.mkdir(parents=True, exist_ok=True)
         except OSError as e:

@@ -12,6 +12,7 @@ from __future__ import annotations
 import sys
 from pathlib import Path
 
+from ....machine.state import owned_paths
 from .errors import CplWarning
 from .files import CplFiles
 from .format import OutputMode
@@ -45,6 +46,7 @@ class CplIO:
         elif options.keyboard:
             keys = TerminalKeys(sys.stdin.fileno(), sys.stderr)
         io = cls(session.machine.file_root, clock=session.machine.clock, keys=keys, say=session.say, typ2=typ2)
+        io.files.reserved = owned_paths(options.state_dir)
         if isinstance(keys, TerminalKeys):
             keys.view = io.screen.text_view
         io.mmc.attach(options.mmc_client)

@@ -91,6 +91,8 @@ class CplFiles:
     #: told the new text each time PRN#(0) overwrites the editor block
     on_editor_block: Callable[[str], None] | None = None
     durable: bool = True
+    #: paths no file name may reach: ncvm's own files in a state directory inside the root
+    reserved: tuple[Path, ...] = ()
     handles: dict[int, Handle] = field(default_factory=dict)
     messages: list[str] = field(default_factory=list)
     warnings: list[CplWarning] = field(default_factory=list)
@@ -113,9 +115,14 @@ class CplFiles:
             raise fail("INVALID_FILE_NAME", text)
         relative = text if text.startswith(("/", "\\")) or text[1:2] == ":" else f"{self.cwd}/{text}"
         try:
-            return text, resolve_in_root(Path(self.root), relative)
+            path = resolve_in_root(Path(self.root), relative)
         except FileRootError:
             raise fail("INVALID_FILE_NAME", f"{text} lies outside the file root") from None
+        if self.reserved:
+            real = path.resolve()
+            if any(real == r or r in real.parents for r in self.reserved):
+                raise fail("INVALID_FILE_NAME", f"{text} is a file of ncvm's state directory") from None
+        return text, path
 
     def enter_directory_of(self, program: Path | str) -> None:
         """The current directory of a run is the main program's, when it lies in the file root (digest
