@@ -220,14 +220,19 @@ def test_a_lock_that_is_no_plain_file_is_refused_naming_it(tmp_path, kind):
     assert f"{state / 'lock'} is a {kind}, not a file" in line and "remove it" in line
 
 
-@pytest.mark.parametrize("kind", ["fifo", "directory"])
+@pytest.mark.parametrize("kind", ["fifo", "directory", "symbolic link"])
 def test_a_store_that_is_no_plain_file_is_refused_naming_it(tmp_path, kind):
+    """A symlink to the store of another state directory: two runs, each holding its own lock, would write
+    one store at once."""
     state = tmp_path / "st"
     state.mkdir()
     if kind == "fifo":
         os.mkfifo(state / "store.sqlite")
-    else:
+    elif kind == "directory":
         (state / "store.sqlite").mkdir()
+    else:
+        Store(tmp_path / "other").close()
+        (state / "store.sqlite").symlink_to(tmp_path / "other" / "store.sqlite")
     prog = tmp_path / "count.cpl"
     prog.write_text(QUIET)
     line = refused(ncvm("run", str(prog), "--state", str(state)))

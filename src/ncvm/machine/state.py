@@ -100,10 +100,10 @@ class StateLock:
         self.release()
 
 
-def not_a_file(path: Path, follow: bool = False) -> str | None:
-    """What stands at ``path`` when it is neither a plain file nor absent ("a directory", ...), else None."""
+def not_a_file(path: Path) -> str | None:
+    """What stands at ``path`` when it is neither a plain file nor absent ("a symbolic link", ...), else None."""
     try:
-        mode = (os.stat if follow else os.lstat)(path).st_mode
+        mode = os.lstat(path).st_mode
     except OSError:
         return None
     if stat.S_ISREG(mode):

@@ -48,7 +48,9 @@ class Store:
                              f"give another --state") from None
         self._db: sqlite3.Connection | None = None
         self._in_batch = False
-        kind = not_a_file(self.path, follow=True)  # SQLite would call it a disk error, or wait on a FIFO
+        # SQLite would call a FIFO or a directory a disk error; through a symlink, two state directories
+        # (two locks) could share one store and lose each other's writes
+        kind = not_a_file(self.path)
         if kind:
             raise StateError(f"{self.path} is {kind}, not a file; move it away or give another --state")
         try:
