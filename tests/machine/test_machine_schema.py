@@ -215,6 +215,9 @@ def cases():
         ("[sympas]\ninputs = [{ axis = 'A1', bit = 33, function = 'EO' }]\n", "sympas.inputs[0].bit = 33: must be 1"),
         ("[sympas]\naxst_bits = { bogus = 3 }\n", "sympas.axst_bits.bogus = 3: unknown key (known: profile_end,"),
         ("[sympas]\naxst_bits = { homed = 40 }\n", "sympas.axst_bits.homed = 40: must be 0 to 31"),
+        ("[sympas]\naxst_bits = { homed = 1 }\n", "sympas.axst_bits.homed = 1: is also the bit of in_position (its default)"),
+        ("[sympas]\naxst_bits = { eo = 20, dnr = 20 }\n", "sympas.axst_bits.dnr = 20: is also the bit of eo"),
+        ("[sympas]\nssf_codes = { write_ci = 5, spool_halt = 5 }\n", "sympas.ssf_codes.spool_halt = 5: is also the code of write_ci"),
         ("[sympas]\nindex_period = nan\n", "sympas.index_period = nan: must be a finite number"),
         ("[sympas]\nsoft_limit_reaction = 'X'\n", 'sympas.soft_limit_reaction = "X": must be one of "SMD"'),
         ("[sympas]\nclock_start = -1\n", "sympas.clock_start = -1: must be 0 to 4294967295"),
@@ -332,7 +335,7 @@ def test_the_json_schema_is_valid_and_rejects_what_the_loader_rejects():
     validator = jsonschema.Draft202012Validator(schema)
     # every check of the loader that a JSON Schema can state: not NaN (JSON has none), not a count or a limit
     # taken from the [[axis]] list, not a rule across keys or entries
-    unstated = ("nan", "one per axis", "must give 3 values", "repeats", "is greater than", "lies outside",
+    unstated = ("nan", "one per axis", "must give 3 values", "repeats", "is greater than", "lies outside", "is also the",
                 "a axis name", "coarse and fine")
     for text, expected in CASES:
         if any(u in expected for u in unstated):

@@ -27,6 +27,22 @@ def _min_max(table: dict, path: str, ctx: Ctx) -> None:
         raise SchemaError(join(path, "min"), table.get("min"), f"is greater than max = {table.get('max', 8000.0):g}")
 
 
+def _distinct(fields: tuple[Field, ...], what: str) -> Table:
+    """A table of ``fields`` no two of which (given or by default) share a value: two axst flags on one bit
+    or two SSF functions on one code would be read as each other."""
+    def fn(table: dict, path: str, ctx: Ctx) -> None:
+        seen: dict = {}
+        for f in fields:
+            v = table.get(f.name, f.default)
+            if v in seen:
+                given = f.name if f.name in table else seen[v]
+                other = seen[v] if given == f.name else f.name
+                raise SchemaError(join(path, given), v, f"is also the {what} of {other}"
+                                                        f"{'' if other in table else ' (its default)'}")
+            seen[v] = f.name
+    return Table(fields, checks=(Check(f"no two on the same {what}", fn),))
+
+
 # -- [cpl] ------------------------------------------------------------------------------------------
 ZS_ROWS = tuple(f"G{b + i}" for b in (54, 154, 254) for i in range(6))
 CPL_AXIS = Table((
@@ -227,11 +243,11 @@ SYMPAS = Table((
     Field("pu", NONNEG_INT, "task parameter PU", 0),
     Field("tu", NONNEG_INT, "task parameter TU", 0),
     Field("counts_per_unit", POSITIVE, "dp rounds to whole counts at profile end", 1000.0),
-    Field("axst_bits", Table(tuple(Field(n, Number(integer=True, min=0, max=31), "axst bit", i)
-                                   for i, n in enumerate(AXST_BITS))), "**provisional** axst bit layout",
+    Field("axst_bits", _distinct(tuple(Field(n, Number(integer=True, min=0, max=31), "axst bit", i)
+                                       for i, n in enumerate(AXST_BITS)), "bit"), "**provisional** axst bit layout",
           Said("see the keys")),
-    Field("ssf_codes", Table(tuple(Field(n, INT, "SSF function code", d) for n, d in
-                                   (("write_ci", 1), ("spool_halt", 1000), ("set_output", 1001)))),
+    Field("ssf_codes", _distinct(tuple(Field(n, INT, "SSF function code", d) for n, d in
+                                       (("write_ci", 1), ("spool_halt", 1000), ("set_output", 1001))), "code"),
           "**provisional** SSF function codes", Said("see the keys")),
     Field("ssf_ci_index", Number(integer=True, min=0, max=999), "SSF write_ci writes CI<n>", 1),
     Field("zero_offsets", Table(other=PER_AXIS, keys=DIGITS, keys_doc="AZO table"), "**provisional** AZO tables",
