@@ -476,3 +476,10 @@ def test_a_scenario_input_without_an_axis_says_so(sap):
     event = '\n[[scenario]]\ntime = 0.1\nkind = "input"\naddress = "E1.0"\n'
     with pytest.raises(UsageError, match=r"scenario input: no axis given: rw_SymPas events name one with axis"):
         sap("program P;\nbegin\nend.\n", machine_toml=EO_MACHINE + event)
+
+
+def test_a_ref_position_of_no_axis_is_refused(sap):
+    from ncvm.diagnostics import UsageError
+
+    with pytest.raises(UsageError, match=r"key 'sympas\.ref_positions\.Q9' names no axis of the card \(axes: A1"):
+        sap("program P;\nbegin\nend.\n", machine_toml="[sympas]\nref_positions = { A1 = 5.0, Q9 = 1.0 }\n")

@@ -88,10 +88,14 @@ class Card(Commands):
         self._seq = 0
         self.moves: list[Move] = []
         self.inputs = list(cfg["inputs"])
+        from ...diagnostics import UsageError
         for i, inp in enumerate(self.inputs):
             if inp.get("axis") not in self.names:
-                from ...diagnostics import UsageError
                 raise UsageError(f"{machine.source}: key 'sympas.inputs[{i}].axis' names no axis of the card")
+        for name in cfg["ref_positions"]:  # a REF switch of no axis would be ignored unseen
+            if name not in self.names:
+                raise UsageError(f"{machine.source}: key 'sympas.ref_positions.{name}' names no axis of the card "
+                                 f"(axes: {', '.join(self.names)})")
         for ev in machine.scenario:
             self.add_timed(ev.time * TICKS_PER_S, self._scenario_action(ev))
         self.irq_count = 0
