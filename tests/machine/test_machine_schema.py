@@ -198,6 +198,9 @@ def cases():
         ("[sin800]\nv24_input = 5\n", "sin800.v24_input = 5: must be a string"),
         ("[sin800]\nalarms = [-1]\n", "sin800.alarms[0] = -1: must be zero or positive"),
         ("[sin800]\nfoo = 1\n", "sin800.foo = 1: unknown key (known: control, channel, m0,"),
+        ('[sin800.m_functions."20"]\nR10 = "hello"\n',
+         'sin800.m_functions.20.R10 = "hello": must be PLC data such as "DB20.DW1" or "PLC2.DB20.DW1"'),
+        ('[sin800.m_functions."20"]\nR10 = "PLC5.DB20.DW1"\n', 'R10 = "PLC5.DB20.DW1": must be PLC data'),
         # [sympas]
         ("[sympas]\ncounts_per_unit = 0\n", "sympas.counts_per_unit = 0: must be positive"),
         ("[sympas]\ntask_slice_ticks = 0\n", "sympas.task_slice_ticks = 0: must be positive"),

@@ -20,6 +20,9 @@ DIGITS = Text(pattern=r"[0-9]+", shape="a number written as a string (\"12\")")
 UNIT = Text(choices=("mm", "inch"))
 BITS = Text(pattern=r"[Bb]?[01]{1,8}", shape="a bit pattern such as \"00010010\"")
 SCALAR = Either((NUMBER, Text()), "a number or a string")
+#: a PLC data word as the SINUMERIK runtime reads it (its _PLC_SOURCE)
+PLC_DATA = Text(pattern=r"\s*(?:PLC[1-4]\.)?DB[0-9]+\.DW[0-9]+\s*", shape='PLC data such as "DB20.DW1" or "PLC2.DB20.DW1"',
+                ignore_case=True)
 
 
 def _min_max(table: dict, path: str, ctx: Ctx) -> None:
@@ -213,7 +216,7 @@ SIN800 = Table((
           "coordinate rotations", {}),
     Field("plc", Table(other=SIN800_PLC, keys=Text(choices=("1", "2", "3", "4")), keys_doc="PLC number"),
           "PLC images and programs (`[sin800.plc.1]`)", {}),
-    Field("m_functions", Table(other=Table(other=Either((NUMBER, NAME), "a number or PLC data (\"DB20.DW1\")"),
+    Field("m_functions", Table(other=Table(other=Either((NUMBER, PLC_DATA), "a number or PLC data (\"DB20.DW1\")"),
                                            keys=Text(pattern=r"R?[0-9]{1,3}", shape="R0 .. R999",
                                                      ignore_case=True), keys_doc="R parameter"),
                                keys=DIGITS, keys_doc="M function number"),
