@@ -308,6 +308,30 @@ def test_scenario_file_is_checked_against_the_machine_axes(tmp_path):
         load_scenario(p)
 
 
+@pytest.mark.parametrize("kind", ["fifo", "device", "huge"])
+def test_a_machine_file_that_never_ends_is_refused_at_once(tmp_path, kind):
+    """A FIFO blocked the run, /dev/zero was read until memory ran out."""
+    p = tmp_path / "m.toml"
+    if kind == "fifo":
+        os.mkfifo(p)
+    elif kind == "device":
+        p = Path("/dev/zero")
+    else:
+        with p.open("wb") as f:
+            f.truncate(17 * 2 ** 20)  # sparse: 17 MB of NUL bytes
+    why = "larger than 16 MB" if kind == "huge" else "not a file"
+    with pytest.raises(UsageError, match=f"cannot read machine file {p}: {why}"):
+        load_machine(p)
+    with pytest.raises(UsageError, match=f"cannot read scenario file {p}: {why}"):
+        load_scenario(p)
+
+
+def test_line_ends_of_old_editors_load(tmp_path):
+    p = tmp_path / "m.toml"
+    p.write_bytes(b"[machine]\r\nname = 'crlf'\r" + AXES.encode())
+    assert load_machine(p).name == "crlf"
+
+
 def test_a_machine_file_with_a_byte_order_mark_loads(tmp_path):
     """Windows editors save UTF-8 with a byte-order mark; TOML parsers take it as a stray character."""
     p = tmp_path / "bom.toml"

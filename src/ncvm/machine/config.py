@@ -37,9 +37,20 @@ def load_machine(path: str | Path | None = None, base_dir: Path | None = None) -
     return machine_from_dict(_parse(p, "machine file"), str(p), p.parent)
 
 
+#: the largest machine or scenario file read: far beyond any real one, and /dev/zero is not read forever
+MAX_BYTES = 16 * 1024 * 1024
+
+
 def _parse(p: Path, what: str) -> dict:
     try:
-        text = p.read_text(encoding="utf-8").removeprefix("\ufeff")  # the byte-order mark of Windows editors
+        if not p.is_file():  # a FIFO or a device would block the run, or never end
+            raise UsageError(f"cannot read {what} {p}: not a file")
+        with p.open("rb") as f:
+            data = f.read(MAX_BYTES + 1)
+        if len(data) > MAX_BYTES:
+            raise UsageError(f"cannot read {what} {p}: larger than {MAX_BYTES // 2 ** 20} MB")
+        # newlines as a text-mode read gives them; the byte-order mark of Windows editors dropped
+        text = re.sub(r"\r\n?", "\n", data.decode("utf-8")).removeprefix("\ufeff")
     except OSError as e:
         raise UsageError(f"cannot read {what} {p}: {e.strerror}") from None
     except UnicodeDecodeError as e:
