@@ -206,6 +206,33 @@ def test_a_lock_that_is_a_symlink_is_refused_and_its_target_left_whole(tmp_path)
     assert victim.read_text() == "keep me\n"
 
 
+@pytest.mark.parametrize("how", ["hard link", "a file of the user"])
+def test_a_lock_that_holds_no_pid_is_refused_and_left_whole(tmp_path, how):
+    """A hard link to another file passes O_NOFOLLOW; its text is not a pid, so it is never emptied."""
+    victim = tmp_path / "victim.txt"
+    victim.write_text("keep me\n")
+    state = tmp_path / "st"
+    state.mkdir()
+    if how == "hard link":
+        os.link(victim, state / "lock")
+    else:
+        (state / "lock").write_text("keep me\n")
+    prog = tmp_path / "count.cpl"
+    prog.write_text(QUIET)
+    line = refused(ncvm("run", str(prog), "--state", str(state)))
+    assert f"{state / 'lock'} holds something other than the pid of a run; move it away" in line
+    assert victim.read_text() == "keep me\n" and (state / "lock").read_text() == "keep me\n"
+
+
+def test_a_lock_left_by_a_killed_run_is_taken_over(tmp_path):
+    state = tmp_path / "st"
+    state.mkdir()
+    (state / "lock").write_text("999999999\n")
+    with StateLock(state):
+        assert (state / "lock").read_text() == f"{os.getpid()}\n"
+    assert (state / "lock").read_text() == ""
+
+
 @pytest.mark.parametrize("kind", ["fifo", "directory"])
 def test_a_lock_that_is_no_plain_file_is_refused_naming_it(tmp_path, kind):
     state = tmp_path / "st"

@@ -72,6 +72,10 @@ class StateLock:
             os.close(fd)
             raise StateError(f"state directory {self.dir} cannot be locked ({e.strerror}); give a state "
                              f"directory on a local disk with --state") from None
+        if not _holds_a_pid(fd):  # a hard link to another file, or a file of the user's: never emptied
+            os.close(fd)
+            raise StateError(f"{self.path} holds something other than the pid of a run; move it away (ncvm keeps "
+                             f"the pid of the run that holds the state directory there) and run again")
         self._fd = fd
         try:  # who holds it, for the message of a refused run; the lock itself is the flock
             os.ftruncate(fd, 0)
@@ -111,6 +115,17 @@ def not_a_file(path: Path) -> str | None:
     kinds = {stat.S_ISLNK: "a symbolic link", stat.S_ISDIR: "a directory", stat.S_ISFIFO: "a fifo",
              stat.S_ISSOCK: "a socket"}
     return next((name for test, name in kinds.items() if test(mode)), "a device")
+
+
+def _holds_a_pid(fd: int) -> bool:
+    """The lock file is empty or holds a pid: only then may it be overwritten."""
+    try:
+        if os.fstat(fd).st_size > 32:
+            return False
+        text = os.pread(fd, 32, 0).decode("ascii", "replace").strip()
+    except OSError:
+        return False
+    return text == "" or text.isdigit()
 
 
 def _read_pid(fd: int) -> int | None:
