@@ -247,6 +247,22 @@ def test_a_lock_that_is_no_plain_file_is_refused_naming_it(tmp_path, kind):
     assert f"{state / 'lock'} is a {kind}, not a file" in line and "remove it" in line
 
 
+@pytest.mark.parametrize("side", ["-wal", "-shm"])
+def test_a_side_file_of_the_store_that_is_a_symlink_is_named(tmp_path, side):
+    """SQLite does not write through it, but called it "unable to open database file"."""
+    state = tmp_path / "st"
+    Store(state).close()
+    victim = tmp_path / "victim"
+    victim.write_text("keep me\n")
+    (state / f"store.sqlite{side}").unlink(missing_ok=True)
+    (state / f"store.sqlite{side}").symlink_to(victim)
+    prog = tmp_path / "count.cpl"
+    prog.write_text(QUIET)
+    line = refused(ncvm("run", str(prog), "--state", str(state)))
+    assert f"{state / ('store.sqlite' + side)} is a symbolic link, not a file; move it away" in line
+    assert victim.read_text() == "keep me\n"
+
+
 @pytest.mark.parametrize("kind", ["fifo", "directory", "symbolic link"])
 def test_a_store_that_is_no_plain_file_is_refused_naming_it(tmp_path, kind):
     """A symlink to the store of another state directory: two runs, each holding its own lock, would write

@@ -25,7 +25,12 @@ def owned_paths(state_dir: str | Path) -> tuple[Path, ...]:
     CPL link tables): when the state directory lies in the file root, no program's file name reaches them,
     or a program could erase the permanent store or the lock of the run."""
     d = Path(state_dir).resolve()
-    return (d / LOCK_NAME, *(d / (STORE_NAME + tail) for tail in ("", "-wal", "-shm", "-journal")), d / "link")
+    return (d / LOCK_NAME, *store_files(d), d / "link")
+
+
+def store_files(state_dir: Path) -> tuple[Path, ...]:
+    """The permanent store and the files SQLite keeps beside it."""
+    return tuple(state_dir / (STORE_NAME + tail) for tail in ("", "-wal", "-shm", "-journal"))
 
 
 class StateError(UsageError):
