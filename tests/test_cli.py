@@ -175,3 +175,11 @@ def test_scenario_merges_into_the_machine_and_screen_needs_a_dialect_with_one(in
     bad.write_text("[[scenario]]\ntime = 'soon'\nkind = 'input'\n")
     r = invoke("run", str(prog), "--scenario", str(bad))
     assert r.exit_code == 2 and 'scenario file error: scenario[0].time = "soon": must be a number' in r.stderr
+
+
+@pytest.mark.parametrize("state", ["", " "])
+def test_an_empty_state_is_refused_not_taken_as_the_current_directory(invoke, prog, tmp_path, monkeypatch, state):
+    monkeypatch.chdir(tmp_path)
+    r = invoke("run", str(prog), "--state", state)
+    assert r.exit_code == 2 and "--state is empty" in r.output
+    assert not (tmp_path / "lock").exists() and not (tmp_path / "store.sqlite").exists()

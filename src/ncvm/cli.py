@@ -167,6 +167,8 @@ def run(program, dialect, machine, state_dir, as_json, trace, gcode, plot, max_s
                   {"program": program, "--machine": machine, "--scenario": scenario, "--keys": keys})
     if keys:
         _check_key_script(keys)
+    if not state_dir.strip():  # an unset variable: the store would land in the current directory
+        raise UsageError("--state is empty; give the state directory (default .ncvm)")
     as_path = lambda value: Path(value) if value else None  # noqa: E731
     keyboard = keys is None and not as_json and _stdin_is_terminal()
     options = RunOptions(state_dir=Path(state_dir), max_steps=max_steps, trace=as_path(trace),

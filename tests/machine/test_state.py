@@ -186,3 +186,132 @@ def test_a_full_disk_stops_the_run_with_what_to_do_and_the_store_keeps_what_was_
     assert 0 < kept < 3000
     out = ncvm("run", str(prog), "--state", str(state))
     assert out.returncode == 0 and out.stdout.split() == ["@5", "=", str(kept + 3000)]
+
+
+# -- what stands at <state>/lock or <state>/store.sqlite is not always a plain file -------------------------------
+
+
+def test_a_lock_that_is_a_symlink_is_refused_and_its_target_left_whole(tmp_path):
+    """The lock file is truncated to hold the pid: followed through a symlink, that would empty any file
+    the user may write (a run as root emptied /etc/passwd)."""
+    victim = tmp_path / "victim.txt"
+    victim.write_text("keep me\n")
+    state = tmp_path / "st"
+    state.mkdir()
+    (state / "lock").symlink_to(victim)
+    prog = tmp_path / "count.cpl"
+    prog.write_text(QUIET)
+    line = refused(ncvm("run", str(prog), "--state", str(state)))
+    assert f"{state / 'lock'} is a symbolic link" in line and "remove it" in line
+    assert victim.read_text() == "keep me\n"
+
+
+@pytest.mark.parametrize("how", ["hard link", "a file of the user"])
+def test_a_lock_that_holds_no_pid_is_refused_and_left_whole(tmp_path, how):
+    """A hard link to another file passes O_NOFOLLOW; its text is not a pid, so it is never emptied."""
+    victim = tmp_path / "victim.txt"
+    victim.write_text("keep me\n")
+    state = tmp_path / "st"
+    state.mkdir()
+    if how == "hard link":
+        os.link(victim, state / "lock")
+    else:
+        (state / "lock").write_text("keep me\n")
+    prog = tmp_path / "count.cpl"
+    prog.write_text(QUIET)
+    line = refused(ncvm("run", str(prog), "--state", str(state)))
+    assert f"{state / 'lock'} holds something other than the pid of a run; move it away" in line
+    assert victim.read_text() == "keep me\n" and (state / "lock").read_text() == "keep me\n"
+
+
+def test_a_lock_left_by_a_killed_run_is_taken_over(tmp_path):
+    state = tmp_path / "st"
+    state.mkdir()
+    (state / "lock").write_text("999999999\n")
+    with StateLock(state):
+        assert (state / "lock").read_text() == f"{os.getpid()}\n"
+    assert (state / "lock").read_text() == ""
+
+
+@pytest.mark.parametrize("kind", ["fifo", "directory"])
+def test_a_lock_that_is_no_plain_file_is_refused_naming_it(tmp_path, kind):
+    state = tmp_path / "st"
+    state.mkdir()
+    if kind == "fifo":
+        os.mkfifo(state / "lock")
+    else:
+        (state / "lock").mkdir()
+    prog = tmp_path / "count.cpl"
+    prog.write_text(QUIET)
+    line = refused(ncvm("run", str(prog), "--state", str(state)))
+    assert f"{state / 'lock'} is a {kind}, not a file" in line and "remove it" in line
+
+
+@pytest.mark.parametrize("side", ["-wal", "-shm"])
+def test_a_side_file_of_the_store_that_is_a_symlink_is_named(tmp_path, side):
+    """SQLite does not write through it, but called it "unable to open database file"."""
+    state = tmp_path / "st"
+    Store(state).close()
+    victim = tmp_path / "victim"
+    victim.write_text("keep me\n")
+    (state / f"store.sqlite{side}").unlink(missing_ok=True)
+    (state / f"store.sqlite{side}").symlink_to(victim)
+    prog = tmp_path / "count.cpl"
+    prog.write_text(QUIET)
+    line = refused(ncvm("run", str(prog), "--state", str(state)))
+    assert f"{state / ('store.sqlite' + side)} is a symbolic link, not a file; move it away" in line
+    assert victim.read_text() == "keep me\n"
+
+
+@pytest.mark.parametrize("kind", ["fifo", "directory", "symbolic link"])
+def test_a_store_that_is_no_plain_file_is_refused_naming_it(tmp_path, kind):
+    """A symlink to the store of another state directory: two runs, each holding its own lock, would write
+    one store at once."""
+    state = tmp_path / "st"
+    state.mkdir()
+    if kind == "fifo":
+        os.mkfifo(state / "store.sqlite")
+    elif kind == "directory":
+        (state / "store.sqlite").mkdir()
+    else:
+        Store(tmp_path / "other").close()
+        (state / "store.sqlite").symlink_to(tmp_path / "other" / "store.sqlite")
+    prog = tmp_path / "count.cpl"
+    prog.write_text(QUIET)
+    line = refused(ncvm("run", str(prog), "--state", str(state)))
+    assert f"{state / 'store.sqlite'} is a {kind}, not a file" in line and "move it away" in line
+
+
+def test_a_state_that_is_a_broken_symlink_is_named_as_such(tmp_path):
+    (tmp_path / "st").symlink_to(tmp_path / "nowhere")
+    with pytest.raises(StateError, match=f"state directory {tmp_path / 'st'} is a symbolic link to nothing"):
+        StateLock(tmp_path / "st").acquire()
+
+
+@pytest.mark.parametrize("statement", ['ERASE("st/store.sqlite")', 'ERASE("st/lock")', 'ERASE("/st/store.sqlite-wal")',
+                                       'OPENW(1,"st/lock",1000)', 'OPENW(1,"ST/../st/link/x.I",1000)'])
+def test_a_program_cannot_touch_the_store_or_lock_of_a_state_directory_in_the_file_root(tmp_path, statement):
+    """file_root = "." with the state directory beside the programs: an ERASE of the store lost every permanent
+    value, an ERASE of the lock let a second run in."""
+    axes = "".join(f'[[axis]]\nname = "{n}"\n' for n in "XYZ")
+    (tmp_path / "machine.toml").write_text(axes + '[paths]\nfile_root = "."\n')
+    (tmp_path / "st" / "link").mkdir(parents=True)
+    prog = tmp_path / "clobber.cpl"
+    prog.write_text(f"10 @5 = 7\n20 {statement}\n30 @5 = 8\nM30\n")
+    proc = ncvm("run", str(prog), "--machine", str(tmp_path / "machine.toml"), "--state", str(tmp_path / "st"))
+    assert proc.returncode == 1 and "error CPL609: INVALID FILE NAME" in proc.stderr, proc.stderr
+    assert "lies in the state directory, outside the file root" in proc.stderr
+    assert (tmp_path / "st" / "lock").is_file() and counter(tmp_path / "st") == 7
+    assert not (tmp_path / "st" / "link" / "x.I").exists()
+
+
+def test_a_program_still_reaches_its_files_beside_the_state_directory(tmp_path):
+    axes = "".join(f'[[axis]]\nname = "{n}"\n' for n in "XYZ")
+    (tmp_path / "machine.toml").write_text(axes + '[paths]\nfile_root = "."\n')
+    prog = tmp_path / "log.cpl"
+    prog.write_text('10 OPENW(1,"mine",1000)\n20 PRN#(1,"kept")\n30 CLOSE(1)\n40 ERASE("lockfile")\nM30\n')
+    (tmp_path / "lockfile").write_text("x\n")
+    proc = ncvm("run", str(prog), "--machine", str(tmp_path / "machine.toml"), "--state", str(tmp_path / "st"))
+    assert proc.returncode == 0, proc.stderr
+    assert (tmp_path / "mine").read_text(encoding="latin-1").startswith("kept")
+    assert not (tmp_path / "lockfile").exists()

@@ -7,6 +7,7 @@ there in docs/machine-file.md). A bad file gets a :class:`UsageError`
 
 from __future__ import annotations
 
+import re
 import tomllib
 from importlib import resources
 from pathlib import Path
@@ -36,9 +37,20 @@ def load_machine(path: str | Path | None = None, base_dir: Path | None = None) -
     return machine_from_dict(_parse(p, "machine file"), str(p), p.parent)
 
 
+#: the largest machine or scenario file read: far beyond any real one, and /dev/zero is not read forever
+MAX_BYTES = 16 * 1024 * 1024
+
+
 def _parse(p: Path, what: str) -> dict:
     try:
-        text = p.read_text(encoding="utf-8")
+        if not p.is_file():  # a FIFO or a device would block the run, or never end
+            raise UsageError(f"cannot read {what} {p}: not a file")
+        with p.open("rb") as f:
+            data = f.read(MAX_BYTES + 1)
+        if len(data) > MAX_BYTES:
+            raise UsageError(f"cannot read {what} {p}: larger than {MAX_BYTES // 2 ** 20} MB")
+        # newlines as a text-mode read gives them; the byte-order mark of Windows editors dropped
+        text = re.sub(r"\r\n?", "\n", data.decode("utf-8")).removeprefix("\ufeff")
     except OSError as e:
         raise UsageError(f"cannot read {what} {p}: {e.strerror}") from None
     except UnicodeDecodeError as e:
@@ -50,9 +62,21 @@ def _loads(text: str, where: str) -> dict:
     try:
         return tomllib.loads(text)
     except tomllib.TOMLDecodeError as e:
-        raise UsageError(f"{where}: not valid TOML: {e}") from None
+        raise UsageError(f"{where}: not valid TOML: {e}{_quoted_line(text, str(e))}") from None
     except RecursionError:
         raise UsageError(f"{where}: not valid TOML: arrays or inline tables nested too deeply") from None
+    except ValueError:  # Python reads no integer of more than 4300 digits
+        raise UsageError(f"{where}: not valid TOML: an integer with thousands of digits") from None
+
+
+def _quoted_line(text: str, message: str) -> str:
+    """The line a TOML error points at (a repeated key is named there, not in the parser's message)."""
+    at = re.search(r"\(at line (\d+), column \d+\)", message)
+    lines = text.splitlines()
+    if not at or not 0 < int(at.group(1)) <= len(lines):
+        return ""
+    line = lines[int(at.group(1)) - 1].strip()
+    return f": {line[:77] + '...' if len(line) > 80 else line}" if line else ""
 
 
 def _checked(node, data: dict, where: str, ctx: Ctx = NO_AXES, what: str = "machine file") -> None:

@@ -96,9 +96,18 @@ def _kind(value: Any) -> str:
             dict: "a table"}.get(type(value), type(value).__name__)
 
 
+#: the largest magnitude of any number in a machine file: beyond every machine, and far enough from the
+#: float range that sums, squares and offsets of such values stay finite (1e308 made NaN cycle times)
+LIMIT = 1e15
+#: the least value of a quantity that must be positive: rates, accelerations and ticks are divided by,
+#: and 5e-324 made the block times infinite
+TINY = 1e-9
+
+
 @dataclass(frozen=True)
 class Number(Node):
-    """A finite number; ``integer`` refuses 2.5 and 2.0 alike (TOML keeps the difference)."""
+    """A finite number within +-LIMIT; ``integer`` refuses 2.5 and 2.0 alike (TOML keeps the difference).
+    ``gt=0`` ("positive") means at least TINY."""
 
     integer: bool = False
     min: float | None = None  # inclusive bounds
@@ -118,6 +127,10 @@ class Number(Node):
         if self.gt is not None and not value > self.gt or self.min is not None and value < self.min \
                 or self.max is not None and value > self.max:
             raise SchemaError(path, value, f"must be {rule}")
+        if abs(value) > LIMIT:
+            raise SchemaError(path, value, f"must lie between {-LIMIT:g} and {LIMIT:g}")
+        if self.gt == 0 and 0 < value < TINY:
+            raise SchemaError(path, value, f"must be positive and at least {TINY:g}")
 
     def type_text(self):
         return "an integer" if self.integer else "a number"
@@ -136,12 +149,12 @@ class Number(Node):
         out: dict = {"type": "integer" if self.integer else "number"}
         if self.choices:
             out["enum"] = list(self.choices)
-        if self.min is not None:
-            out["minimum"] = self.min
-        if self.gt is not None:
+        if self.gt == 0:
+            out["minimum"] = TINY
+        elif self.gt is not None:
             out["exclusiveMinimum"] = self.gt
-        if self.max is not None:
-            out["maximum"] = self.max
+        out["minimum"] = self.min if self.min is not None else out.get("minimum", -LIMIT)
+        out["maximum"] = self.max if self.max is not None else LIMIT
         return out
 
 

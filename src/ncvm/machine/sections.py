@@ -20,11 +20,30 @@ DIGITS = Text(pattern=r"[0-9]+", shape="a number written as a string (\"12\")")
 UNIT = Text(choices=("mm", "inch"))
 BITS = Text(pattern=r"[Bb]?[01]{1,8}", shape="a bit pattern such as \"00010010\"")
 SCALAR = Either((NUMBER, Text()), "a number or a string")
+#: a PLC data word as the SINUMERIK runtime reads it (its _PLC_SOURCE)
+PLC_DATA = Text(pattern=r"\s*(?:PLC[1-4]\.)?DB[0-9]+\.DW[0-9]+\s*", shape='PLC data such as "DB20.DW1" or "PLC2.DB20.DW1"',
+                ignore_case=True)
 
 
 def _min_max(table: dict, path: str, ctx: Ctx) -> None:
     if table.get("min", 0.0) > table.get("max", 8000.0):
         raise SchemaError(join(path, "min"), table.get("min"), f"is greater than max = {table.get('max', 8000.0):g}")
+
+
+def _distinct(fields: tuple[Field, ...], what: str) -> Table:
+    """A table of ``fields`` no two of which (given or by default) share a value: two axst flags on one bit
+    or two SSF functions on one code would be read as each other."""
+    def fn(table: dict, path: str, ctx: Ctx) -> None:
+        seen: dict = {}
+        for f in fields:
+            v = table.get(f.name, f.default)
+            if v in seen:
+                given = f.name if f.name in table else seen[v]
+                other = seen[v] if given == f.name else f.name
+                raise SchemaError(join(path, given), v, f"is also the {what} of {other}"
+                                                        f"{'' if other in table else ' (its default)'}")
+            seen[v] = f.name
+    return Table(fields, checks=(Check(f"no two on the same {what}", fn),))
 
 
 # -- [cpl] ------------------------------------------------------------------------------------------
@@ -197,7 +216,7 @@ SIN800 = Table((
           "coordinate rotations", {}),
     Field("plc", Table(other=SIN800_PLC, keys=Text(choices=("1", "2", "3", "4")), keys_doc="PLC number"),
           "PLC images and programs (`[sin800.plc.1]`)", {}),
-    Field("m_functions", Table(other=Table(other=Either((NUMBER, NAME), "a number or PLC data (\"DB20.DW1\")"),
+    Field("m_functions", Table(other=Table(other=Either((NUMBER, PLC_DATA), "a number or PLC data (\"DB20.DW1\")"),
                                            keys=Text(pattern=r"R?[0-9]{1,3}", shape="R0 .. R999",
                                                      ignore_case=True), keys_doc="R parameter"),
                                keys=DIGITS, keys_doc="M function number"),
@@ -227,11 +246,11 @@ SYMPAS = Table((
     Field("pu", NONNEG_INT, "task parameter PU", 0),
     Field("tu", NONNEG_INT, "task parameter TU", 0),
     Field("counts_per_unit", POSITIVE, "dp rounds to whole counts at profile end", 1000.0),
-    Field("axst_bits", Table(tuple(Field(n, Number(integer=True, min=0, max=31), "axst bit", i)
-                                   for i, n in enumerate(AXST_BITS))), "**provisional** axst bit layout",
+    Field("axst_bits", _distinct(tuple(Field(n, Number(integer=True, min=0, max=31), "axst bit", i)
+                                       for i, n in enumerate(AXST_BITS)), "bit"), "**provisional** axst bit layout",
           Said("see the keys")),
-    Field("ssf_codes", Table(tuple(Field(n, INT, "SSF function code", d) for n, d in
-                                   (("write_ci", 1), ("spool_halt", 1000), ("set_output", 1001)))),
+    Field("ssf_codes", _distinct(tuple(Field(n, INT, "SSF function code", d) for n, d in
+                                       (("write_ci", 1), ("spool_halt", 1000), ("set_output", 1001))), "code"),
           "**provisional** SSF function codes", Said("see the keys")),
     Field("ssf_ci_index", Number(integer=True, min=0, max=999), "SSF write_ci writes CI<n>", 1),
     Field("zero_offsets", Table(other=PER_AXIS, keys=DIGITS, keys_doc="AZO table"), "**provisional** AZO tables",

@@ -11,11 +11,18 @@ from __future__ import annotations
 import errno
 import fcntl
 import os
+import stat
 from pathlib import Path
 
 from ..diagnostics import UsageError
 
 LOCK_NAME = "lock"
+STORE_NAME = "store.sqlite"
+
+
+def store_files(state_dir: Path) -> tuple[Path, ...]:
+    """The permanent store and the files SQLite keeps beside it."""
+    return tuple(state_dir / (STORE_NAME + tail) for tail in ("", "-wal", "-shm", "-journal"))
 
 
 class StateError(UsageError):
@@ -34,15 +41,22 @@ class StateLock:
         """Take the directory, creating it if needed; refuse at once when another run holds it."""
         try:
             self.dir.mkdir(parents=True, exist_ok=True)
-            fd = os.open(self.path, os.O_RDWR | os.O_CREAT | os.O_CLOEXEC, 0o666)
+            # never through a symlink, never blocking on a FIFO: the pid is written into what is opened
+            fd = os.open(self.path, os.O_RDWR | os.O_CREAT | os.O_CLOEXEC | os.O_NOFOLLOW | os.O_NONBLOCK, 0o666)
         except FileExistsError:
-            raise StateError(f"state directory {self.dir} is a file, not a directory; give another --state") from None
+            what = "a symbolic link to nothing" if self.dir.is_symlink() else "a file, not a directory"
+            raise StateError(f"state directory {self.dir} is {what}; give another --state") from None
         except OSError as e:
+            if e.errno in (errno.ELOOP, errno.EISDIR):
+                raise self._not_a_file() from None
             if e.errno == errno.ENOSPC:
                 raise StateError(f"state directory {self.dir} cannot be written: the disk is full; free some "
                                  f"space or give another --state") from None
             raise StateError(f"state directory {self.dir} cannot be written ({e.strerror}); make it writable "
                              f"or give another --state") from None
+        if not stat.S_ISREG(os.fstat(fd).st_mode):
+            os.close(fd)
+            raise self._not_a_file()
         try:
             fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
         except BlockingIOError:
@@ -55,6 +69,10 @@ class StateLock:
             os.close(fd)
             raise StateError(f"state directory {self.dir} cannot be locked ({e.strerror}); give a state "
                              f"directory on a local disk with --state") from None
+        if not _holds_a_pid(fd):  # a hard link to another file, or a file of the user's: never emptied
+            os.close(fd)
+            raise StateError(f"{self.path} holds something other than the pid of a run; move it away (ncvm keeps "
+                             f"the pid of the run that holds the state directory there) and run again")
         self._fd = fd
         try:  # who holds it, for the message of a refused run; the lock itself is the flock
             os.ftruncate(fd, 0)
@@ -62,6 +80,10 @@ class StateLock:
         except OSError:
             pass  # a full disk: the store reports it when it is written
         return self
+
+    def _not_a_file(self) -> StateError:
+        return StateError(f"{self.path} is {not_a_file(self.path)}, not a file; remove it (ncvm keeps the pid "
+                          f"of the run that holds the state directory there) and run again")
 
     def release(self) -> None:
         if self._fd is not None:
@@ -77,6 +99,30 @@ class StateLock:
 
     def __exit__(self, *exc) -> None:
         self.release()
+
+
+def not_a_file(path: Path) -> str | None:
+    """What stands at ``path`` when it is neither a plain file nor absent ("a symbolic link", ...), else None."""
+    try:
+        mode = os.lstat(path).st_mode
+    except OSError:
+        return None
+    if stat.S_ISREG(mode):
+        return None
+    kinds = {stat.S_ISLNK: "a symbolic link", stat.S_ISDIR: "a directory", stat.S_ISFIFO: "a fifo",
+             stat.S_ISSOCK: "a socket"}
+    return next((name for test, name in kinds.items() if test(mode)), "a device")
+
+
+def _holds_a_pid(fd: int) -> bool:
+    """The lock file is empty or holds a pid: only then may it be overwritten."""
+    try:
+        if os.fstat(fd).st_size > 32:
+            return False
+        text = os.pread(fd, 32, 0).decode("ascii", "replace").strip()
+    except OSError:
+        return False
+    return text == "" or text.isdigit()
 
 
 def _read_pid(fd: int) -> int | None:

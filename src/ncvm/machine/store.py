@@ -20,7 +20,7 @@ from contextlib import contextmanager
 from pathlib import Path
 from typing import Any, Iterator
 
-from .state import StateError, disk_full
+from .state import STORE_NAME, StateError, disk_full, not_a_file, store_files
 
 SCHEMA = """
 CREATE TABLE IF NOT EXISTS permanent (
@@ -40,7 +40,7 @@ class Store:
     """A namespaced key/value store in ``<state_dir>/store.sqlite``."""
 
     def __init__(self, state_dir: str | Path):
-        self.path = Path(state_dir) / "store.sqlite"
+        self.path = Path(state_dir) / STORE_NAME
         try:
             self.path.parent.mkdir(parents=True, exist_ok=True)
         except OSError as e:
@@ -48,6 +48,12 @@ class Store:
                              f"give another --state") from None
         self._db: sqlite3.Connection | None = None
         self._in_batch = False
+        # SQLite would call a FIFO, a directory or a symlinked side file an open or disk error; through a
+        # symlink, two state directories (two locks) could share one store and lose each other's writes
+        for path in store_files(self.path.parent):
+            kind = not_a_file(path)
+            if kind:
+                raise StateError(f"{path} is {kind}, not a file; move it away or give another --state")
         try:
             self._db = sqlite3.connect(self.path, isolation_level=None, timeout=BUSY_TIMEOUT_S)
             self._adopt()

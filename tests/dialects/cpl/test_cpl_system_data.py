@@ -206,6 +206,17 @@ def test_scsl_writes_the_list_as_records(run_text, reference, tmp_path):
     assert (m.file_root / "S17.TXT").read_bytes() == b"1\n51\n130\n\x03\n"
 
 
+
+@pytest.mark.parametrize("name", ["../../ESCAPED.TXT", "/../ESCAPED.TXT", "C:..\\ESCAPED.TXT"])
+def test_scsl_never_writes_outside_the_file_root(run_text, reference, tmp_path, name):
+    m = reference(cpl=SERCOS)
+    m.file_root = tmp_path / "a" / "b" / "files"  # every way out of it still lies in tmp_path
+    r = run_text(f'1 SCSL(1,"S",17,"{name}")\nM30\n', name="p.cpl", machine=m)
+    assert r["status"] == "error" and "outside the file root" in r["error"]["message"], r["error"]
+    assert not list(tmp_path.rglob("*ESCAPED*"))
+    r = run_text(f'1 SCSL(1,"S",17,"{name}",R%)\nM30\n', name="p.cpl", machine=m)
+    assert r["status"] == "ok" and r["variables"]["R%"] == 2, r["error"]
+
 def test_scs_locked_service_channel(run):
     """While locked the result variable gets 1 and the value read last remains; without it: the error."""
     text = ("N1 G1 X1 F1000\n2 WAIT\n10 P%=SCS(1,\"S\",51,E%)\nN11 G1 X2\n12 WAIT(,1000)\n13 P%=SCS(1,\"S\",51,E%)\n"
@@ -225,6 +236,8 @@ def test_scs_list_parameter_is_an_error(run):
                                       ({"errors": [{"number": 1, "kat": 6}]}, r"errors\[0\]\.kat"),
                                       ({"override": {"rapid": 50}}, r"override\.rapid"),
                                       ({"zs_tables": {"V2": {"G53": [1.0]}}}, r"zs_tables\.V2\.G53"),
+                                      ({"zs_tables": {"V2": {"G54": [1.0] * 9}}},
+                                       r"zs_tables\.V2\.G54: \[1\.0, .*\] has more values than the 8 columns"),
                                       ({"channel": "one"}, 'cpl.channel = "one": must be an integer')])
 def test_bad_cpl_records_name_the_key(run_text, reference, cpl, name):
     with pytest.raises(UsageError, match=name):

@@ -467,3 +467,19 @@ def test_a_sleeping_task_sees_the_stop_another_tasks_event_handler_makes(sap):
     assert 0 < done - ui < 10 * 20
     assert r["position"]["X"] == pytest.approx(300.0, abs=0.1)
     assert a2 == pytest.approx(50.01 / 64e-6, abs=10)
+
+
+def test_a_scenario_input_without_an_axis_says_so(sap):
+    """An input event written for CPL (an address, no axis) in a rw_SymPas run."""
+    from ncvm.diagnostics import UsageError
+
+    event = '\n[[scenario]]\ntime = 0.1\nkind = "input"\naddress = "E1.0"\n'
+    with pytest.raises(UsageError, match=r"scenario input: no axis given: rw_SymPas events name one with axis"):
+        sap("program P;\nbegin\nend.\n", machine_toml=EO_MACHINE + event)
+
+
+def test_a_ref_position_of_no_axis_is_refused(sap):
+    from ncvm.diagnostics import UsageError
+
+    with pytest.raises(UsageError, match=r"key 'sympas\.ref_positions\.Q9' names no axis of the card \(axes: A1"):
+        sap("program P;\nbegin\nend.\n", machine_toml="[sympas]\nref_positions = { A1 = 5.0, Q9 = 1.0 }\n")

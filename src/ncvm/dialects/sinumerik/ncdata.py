@@ -62,6 +62,10 @@ def _pattern_value(where: str, key: str, v: Any) -> float:
     raise UsageError(f"{where}: key '{key}' must be a number or a bit pattern string")
 
 
+#: per control: the highest MIB address (the range @211/@212 check)
+MIB_TOP = {"810": 249, "820": 249, "850": 499, "880": 499}
+
+
 class NcData:
     """Everything a program reaches through main groups 2, 3 and 4 besides the R parameters."""
 
@@ -129,6 +133,7 @@ class NcData:
         for a in sec.get("alarms", []):
             data.alarms.append((int(a), data.channel))
         data.sob = {str(k): float(v) for k, v in sec.get("sob", {}).items()}
+        data._check_ranges(where, sec)
         data._load_gears(where, sec)
         if not isinstance(sec.get("v24_input", ""), str):
             raise UsageError(f"{where}: key 'sin800.v24_input' must be text (lines such as \"R10=4.5\")")
@@ -175,6 +180,27 @@ class NcData:
             elif key in ("to", "zo", "rot", "central_r", "mib"):
                 out[key] = getattr(self, key)
         return out
+
+    def _check_ranges(self, where: str, sec: dict) -> None:
+        """What the control has no room for, or cannot read as a byte, is refused at the start: a program
+        would meet it only as a CL 800 error at the line that reads it (or not at all)."""
+        from .sysmem import MD_SD, SD  # sysmem reads NcData: imported here, not at the top
+
+        c = self.control
+        beyond = [a for a in sec.get("mib", {}) if int(a) > MIB_TOP[c]]
+        if beyond:
+            raise UsageError(f"{where}: key 'sin800.mib.{beyond[0]}': the {c} has MIB 0-{MIB_TOP[c]}")
+        ranges = [*MD_SD.values(), *SD.values()]
+        for area, width, (lo, hi) in ranges:
+            words = [r for a, w, r in ranges if a == area and w == "word"]
+            for addr, v in self.areas[area].items() if width == "byte" else ():
+                n = int(addr) if addr.isdigit() else -1
+                if lo <= n <= hi and not any(wlo <= n <= whi for wlo, whi in words):
+                    try:
+                        pattern_to_int(v)
+                    except Cl800Error as e:
+                        raise UsageError(f"{where}: key 'sin800.{area}.{addr}' = {v:g}: address {addr} holds a "
+                                         f"byte ({e})") from None
 
     def inch_basic_system(self) -> bool:
         """NC MD bit 5002.4: inch is the basic setting of the NC (L2324-2326)."""

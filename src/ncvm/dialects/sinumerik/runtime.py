@@ -16,7 +16,7 @@ from ...diagnostics import Frame, RuntimeFault, Span, UsageError
 from ...nc.block import Block
 from ...nc.kernel import INCH
 from ...runtime.codegen import program_lines
-from .ncdata import Cl800Error, NcData, int_to_pattern, nc8, pattern_to_int
+from .ncdata import MIB_TOP, Cl800Error, NcData, int_to_pattern, nc8, pattern_to_int
 from .plc import PlcClock
 from .rotation import angle_address, shape_block
 from .spindle import GEAR_M, Gearbox, SpindleReads
@@ -364,7 +364,7 @@ class Channel(SysMem, SpindleReads):
 
     def _mib_index(self, v: float) -> int:
         n = _int(v)
-        top = 499 if self.data.control in ("850", "880") else 249
+        top = MIB_TOP[self.data.control]
         if not 0 <= n <= top:
             raise Cl800Error(f"MIB address {n} outside 0-{top}")
         return n

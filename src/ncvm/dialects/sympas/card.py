@@ -87,10 +87,14 @@ class Card(Commands):
         self._seq = 0
         self.moves: list[Move] = []
         self.inputs = list(cfg["inputs"])
+        from ...diagnostics import UsageError
         for i, inp in enumerate(self.inputs):
             if inp.get("axis") not in self.names:
-                from ...diagnostics import UsageError
                 raise UsageError(f"{machine.source}: key 'sympas.inputs[{i}].axis' names no axis of the card")
+        for name in cfg["ref_positions"]:  # a REF switch of no axis would be ignored unseen
+            if name not in self.names:
+                raise UsageError(f"{machine.source}: key 'sympas.ref_positions.{name}' names no axis of the card "
+                                 f"(axes: {', '.join(self.names)})")
         for ev in machine.scenario:
             self.add_timed(ev.time * TICKS_PER_S, self._scenario_action(ev))
         self.irq_count = 0
@@ -151,6 +155,9 @@ class Card(Commands):
 
     def _axis_by_name(self, name, what):
         from ...diagnostics import UsageError
+        if name is None:  # a CPL or SINUMERIK event names no axis
+            raise UsageError(f"{what}: no axis given: rw_SymPas events name one with axis = ... "
+                             f"(axes: {', '.join(self.names)})")
         if name not in self.names:
             raise UsageError(f"{what}: unknown axis '{name}' (axes: {', '.join(self.names)})")
         return self.axes[self.names.index(name)]

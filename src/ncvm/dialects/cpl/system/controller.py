@@ -225,6 +225,8 @@ def _zs_table(c: Controller, where: str, table: dict) -> dict:
         if row.upper() not in ZS_ROWS:
             _err(f"{where}.{row}", f"unknown row (rows: {', '.join(ZS_ROWS)}, columns, unit, strict)")
         v = [float(x) for x in vals]
+        if len(v) > len(columns):  # a value without a column would be dropped unseen
+            _err(f"{where}.{row}", f"{v} has more values than the {len(columns)} columns ({', '.join(columns)})")
         out["rows"][row.upper()] = v + [0.0] * (len(columns) - len(v))
     return out
 
