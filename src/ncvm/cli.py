@@ -16,7 +16,7 @@ import click
 
 from . import __version__
 from .diagnostics import CompileFailed, UsageError
-from .outpaths import PLOT_SUFFIXES, SCREEN_PICTURE, Output, check_outputs
+from .outpaths import PLOT_SUFFIXES, SCREEN_PICTURE, Output, OutputError, check_outputs
 
 EXIT_OK, EXIT_FAULT, EXIT_USAGE, EXIT_INTERNAL = 0, 1, 2, 70
 
@@ -43,6 +43,16 @@ def _usage_error(ctx, message: str) -> None:
     ctx.exit(EXIT_USAGE)
 
 
+def _interrupted(ctx) -> None:
+    """Exit 1 as an interrupted run does; with --json stdout is still a JSON document."""
+    message = "run interrupted by the user"
+    click.echo(f"ncvm: {message}", err=True)
+    if ctx.meta.get(_JSON):
+        error = {"code": "RUN004", "message": message, "file": None, "line": None, "column": None}
+        click.echo(json.dumps({"status": "error", "error": error}, indent=2))
+    ctx.exit(EXIT_FAULT)
+
+
 class _Guarded(click.Group):
     """Turns usage errors into exit 2 and unexpected exceptions into exit 70 without a traceback.
 
@@ -52,7 +62,13 @@ class _Guarded(click.Group):
 
     def parse_args(self, ctx, args):
         ctx.meta[_JSON] = "--json" in args[:args.index("--")] if "--" in args else "--json" in args
-        return super().parse_args(ctx, args)
+        try:
+            return super().parse_args(ctx, args)
+        except click.UsageError as e:  # an option before the command: ``ncvm --json run ...``
+            if not ctx.meta.get(_JSON):
+                raise
+            _usage_error(ctx, "--json goes after the command: ncvm run --json PROGRAM, ncvm check --json ..."
+                         if getattr(e, "option_name", None) == "--json" else e.format_message())
 
     def invoke(self, ctx):
         try:
@@ -63,6 +79,8 @@ class _Guarded(click.Group):
             if not ctx.meta.get(_JSON):
                 raise
             _usage_error(ctx, e.format_message())
+        except KeyboardInterrupt:  # Ctrl-C outside the run itself (which reports RUN004 with its result)
+            _interrupted(ctx)
         except (click.exceptions.Exit, click.exceptions.Abort, click.ClickException):
             raise
         except Exception as e:  # noqa: BLE001 - the last line of defence
@@ -143,16 +161,22 @@ class _Progress:
               help="Save one screen picture per wait for the operator (softkeys, input).")
 def run(program, dialect, machine, state_dir, as_json, trace, gcode, plot, max_steps, scenario, keys, editor_block,
         screen, screen_dir):
-    """Run PROGRAM on the simulated controller."""
+    """Run PROGRAM on the simulated controller.
+
+    Without --machine the program's folder's machine.toml is used (named on stderr), as by check and
+    compile, else the built-in 3-axis mill.
+    """
     from .api import run as api_run
     from .runtime.session import RunOptions
 
     if not Path(program).is_file():
         raise UsageError(f"no such program: {program}")
+    machine = machine or _folder_machine(program, say=True)
     check_outputs([Output("--trace", trace), Output("--gcode", gcode), Output("--plot", plot, PLOT_SUFFIXES),
                    Output("--screen", screen, (".png",)),
                    Output("--screen-dir", screen_dir, folder=True, names=SCREEN_PICTURE)],
-                  {"program": program, "--machine": machine, "--scenario": scenario, "--keys": keys})
+                  {"program": program, "--machine": machine, "--scenario": scenario, "--keys": keys},
+                  state=state_dir, json_stdout=as_json)
     if keys:
         _check_key_script(keys)
     as_path = lambda value: Path(value) if value else None  # noqa: E731
@@ -174,7 +198,10 @@ def run(program, dialect, machine, state_dir, as_json, trace, gcode, plot, max_s
     if plot:
         from .sinks.plot import plot_toolpath
 
-        plot_toolpath(session.recorder, plot, title=f"{Path(program).name} ({result['dialect']})")
+        try:
+            plot_toolpath(session.recorder, plot, title=f"{Path(program).name} ({result['dialect']})")
+        except OSError as e:
+            raise OutputError(plot, e) from None
     if as_json:
         click.echo(json.dumps(result, indent=2))
     else:
@@ -230,10 +257,15 @@ def _hms(seconds: float) -> str:
     return f"{h}:{m:02d}:{s:06.3f}" if h else f"{m}:{s:06.3f}"
 
 
-def _folder_machine(program: str) -> str | None:
-    """The machine file of a program's own folder (``machine.toml``), if there is one."""
+def _folder_machine(program: str, say: bool = False) -> str | None:
+    """The machine file of a program's own folder (``machine.toml``), if there is one; ``say``: name it on
+    stderr (a run that is not told which machine says which one it took)."""
     path = Path(program).parent / "machine.toml"
-    return str(path) if path.is_file() else None
+    if not path.is_file():
+        return None
+    if say:
+        click.echo(f"ncvm: machine file {path} (the program's folder)", err=True)
+    return str(path)
 
 
 def _programs_in(args) -> list[str]:
@@ -296,11 +328,15 @@ def check(programs, dialect, machine, as_json, all_errors):
 @DIALECT_OPT
 @MACHINE_OPT
 def compile_cmd(source, out, xref, dialect, machine):
-    """Compile SOURCE (CL 800 to @ code)."""
+    """Compile SOURCE (CL 800 to @ code).
+
+    Without --machine the source's folder's machine.toml is used (named on stderr), as by check and run.
+    """
     from .api import compile_program
 
     if not Path(source).is_file():
         raise UsageError(f"no such program: {source}")
+    machine = machine or _folder_machine(source, say=True)
     check_outputs([Output("-o", out), Output("--xref", xref)], {"program": source, "--machine": machine})
     try:
         path = compile_program(source, out, xref, dialect, machine)

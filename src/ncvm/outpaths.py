@@ -34,14 +34,30 @@ class Output:
     parents: bool = False  # a folder: made with its missing parents (else its parent must exist)
 
 
-def check_outputs(outputs: list[Output], inputs: dict[str, str | None]) -> None:
+class OutputError(UsageError):
+    """An output that fails while it is written (a full disk, an I/O error): a usage error, not a bug."""
+
+    def __init__(self, path, error: OSError):
+        super().__init__(f"{path}: cannot write: {_reason(error)}")
+
+
+def check_outputs(outputs: list[Output], inputs: dict[str, str | None], state: str | None = None,
+                  json_stdout: bool = False) -> None:
     """Raise UsageError unless every output can be written and none overwrites an input or another
-    output. ``inputs`` maps an option (or "program") to the file it reads (None: not given)."""
+    output. ``inputs`` maps an option (or "program") to the file it reads (None: not given). No output
+    goes into the ``state`` directory (the permanent store, link tables, controller files), nor, with
+    ``json_stdout``, onto stdout, which carries the JSON document."""
     outputs = [out for out in outputs if out.path]
     read = {what: path for what, path in inputs.items() if path}
     for i, out in enumerate(outputs):
         _check_suffix(out)
+        if state is not None and _inside(out.path, state):
+            raise UsageError(f"{out.option} {out.path}: is inside the state directory {state} (the controller's "
+                             f"memory); write it elsewhere")
         (_check_folder if out.folder else _check_file)(out)
+        if json_stdout and not out.folder and _is_stdout(out.path):
+            raise UsageError(f"{out.option} {out.path}: is stdout, which carries the JSON document; "
+                             f"write it to a file")
         for what, path in read.items():
             if _clash(out, path):
                 writer = "a file it writes" if out.folder else "it"
@@ -71,16 +87,19 @@ def _check_suffix(out: Output) -> None:
 
 def _check_file(out: Output) -> None:
     path = Path(out.path)
+    if path.exists() and not path.is_file() and not path.is_dir():
+        # a device or a pipe, also behind /dev/stdout -> /proc/self/fd/1 -> pipe:[N] (no real path);
+        # opening it could block
+        if not os.access(path, os.W_OK):
+            raise UsageError(f"{out.option} {out.path}: cannot write: {os.strerror(errno.EACCES)}")
+        return
     real = Path(os.path.realpath(path))  # a symbolic link writes where it points
     if real.is_dir():
         raise UsageError(f"{out.option} {out.path}: is a folder, not a file")
     _check_parent(out, real.parent, path.parent)
     try:
         if real.exists():
-            if real.is_file():
-                open(real, "ab").close()  # appends nothing: the file stays as it is until the run writes it
-            elif not os.access(real, os.W_OK):  # a device or a pipe: opening it could block
-                raise PermissionError(errno.EACCES, os.strerror(errno.EACCES))
+            open(real, "ab").close()  # appends nothing: the file stays as it is until the run writes it
         else:
             os.close(os.open(real, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o666))
             real.unlink()
@@ -118,6 +137,21 @@ def _check_parent(out: Output, folder: Path, shown: Path) -> None:
 def _reason(e: OSError) -> str:
     # creating a file where the file system has no such thing (/proc, /sys) fails with ENOENT
     return "files cannot be made there" if e.errno == errno.ENOENT else e.strerror or str(e)
+
+
+def _inside(path: str, folder: str) -> bool:
+    """``path`` is ``folder`` or below it (through any symbolic links)."""
+    real, top = os.path.realpath(path), os.path.realpath(folder)
+    return real == top or real.startswith(top.rstrip(os.sep) + os.sep)
+
+
+def _is_stdout(path: str) -> bool:
+    """``path`` is where stdout goes (/dev/stdout, the file stdout is redirected to); /dev/null takes anything."""
+    try:
+        st = os.stat(path)
+        return os.path.samestat(st, os.fstat(1)) and not os.path.samestat(st, os.stat(os.devnull))
+    except OSError:  # no such file yet, or no stdout
+        return False
 
 
 def _clash(out: Output, path: str) -> bool:

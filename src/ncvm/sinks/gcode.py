@@ -8,6 +8,7 @@ with incremental centres. LinuxCNC's ``rs274`` reads the output.
 from __future__ import annotations
 
 from ..nc.canon import CanonSink
+from ..outpaths import OutputError
 
 ISO_AXES = "XYZABCUVW"
 PLANE_OF = {("X", "Y"): "G17", ("Z", "X"): "G18", ("Y", "Z"): "G19"}
@@ -27,7 +28,10 @@ class GcodeWriter(CanonSink):
         self.plane = "G17"
 
     def _line(self, text: str) -> None:
-        self._f.write(text + "\n")
+        try:
+            self._f.write(text + "\n")
+        except OSError as e:  # a full disk: the run stops with a usage error naming the file
+            raise OutputError(self._f.name, e) from None
 
     def _axes(self, p) -> str:
         return " ".join(f"{n}{_f(v)}" for n, v in zip(self.names, p) if n in ISO_AXES)
@@ -94,4 +98,7 @@ class GcodeWriter(CanonSink):
         self._line("M2")
 
     def end(self):
-        self._f.close()
+        try:
+            self._f.close()
+        except OSError as e:
+            raise OutputError(self._f.name, e) from None
