@@ -170,3 +170,19 @@ def test_run_uses_the_machine_file_of_the_programs_folder_like_check(work):
     assert "ncvm: machine file cell/machine.toml (the program's folder)" in ran.stderr
     given = invoke("run", "cell/turn.din", "--state", "st", "--machine", "cell/machine.toml")
     assert "the program's folder" not in given.stderr
+
+
+# -- a dwell's X is a time, not an axis ---------------------------------------------------------------
+
+@pytest.mark.parametrize("name, text", [
+    ("dwell.din", "N10 G0 Z5\nN20 G4 X2\nN30 M30\n"),
+    ("dwell.cpl", "N10 G0 Z5\nN20 G4 X2\nN30 M30\n"),
+    ("dwell.mpf", "%MPF5\nN10 G0 Z5\nN20 G4 X2\nN30 M30\n"),
+])
+def test_the_dwell_time_x_on_a_machine_without_x_is_no_axis_word(work, name, text):
+    (work / "machine.toml").write_text(LATHE.replace('"X"', '"Y"'))
+    (work / name).write_text(text)
+    assert invoke("check", name).exit_code == 0
+    r = invoke("run", name, "--state", "st", "--json")
+    assert r.exit_code == 0, r.stdout
+    assert json.loads(r.stdout)["cycle_time_s"] >= 2.0

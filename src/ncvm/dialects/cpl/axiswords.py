@@ -11,7 +11,7 @@ from __future__ import annotations
 import re
 
 from ...diagnostics import Diagnostic
-from ...nc.axiswords import is_missing_axis
+from ...nc.axiswords import is_dwell, is_missing_axis, names_axis
 from ...nc.block import ROW_LINE
 from . import ast as A
 from .errors import CplError, diag
@@ -25,7 +25,9 @@ def missing_axis_blocks(prog: A.Program, axes) -> list[tuple[A.NcBlock, str]]:
     out = []
     for s in prog.stmts:
         if isinstance(s, A.NcBlock):
-            address = next((w.address for w in s.words if is_missing_axis(w.address, axes)), None)
+            dwell = is_dwell(w.value for w in s.words if w.address == "G")
+            address = next((w.address for w in s.words
+                            if is_missing_axis(w.address, axes) and names_axis(w.address, dwell)), None)
             if address is not None:
                 out.append((s, address))
     return out
@@ -59,10 +61,11 @@ def refusing(rt, enqueue, refused: dict):
     return checked
 
 
-def check_words(rt, words) -> None:
+def check_words(rt, g, words) -> None:
     """Words made at run time (standalone ``[A$]``, AXP): refused as the block is prepared."""
+    dwell = is_dwell(g)
     for address in words:
-        if is_missing_axis(address, rt.kernel.axis_of):
+        if is_missing_axis(address, rt.kernel.axis_of) and names_axis(address, dwell):
             refuse(rt, address)
 
 

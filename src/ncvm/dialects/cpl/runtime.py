@@ -462,7 +462,7 @@ class CplRuntime:
             g.extend(blk.g)
             m.extend(blk.m)
             words.update(blk.words)
-        check_words(self, words)
+        check_words(self, g, words)
         return Block(tuple(g), tuple(m), words, n, msg, src)
 
     # -- the executed state at the program's time ---------------------------------------------
