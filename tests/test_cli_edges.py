@@ -186,3 +186,13 @@ def test_the_dwell_time_x_on_a_machine_without_x_is_no_axis_word(work, name, tex
     r = invoke("run", name, "--state", "st", "--json")
     assert r.exit_code == 0, r.stdout
     assert json.loads(r.stdout)["cycle_time_s"] >= 2.0
+
+
+# -- a key script on a pipe is read once ---------------------------------------------------------------
+
+def test_a_key_script_from_a_pipe_reaches_the_dialog(work):
+    examples = Path(__file__).parents[1] / "examples" / "cpl"
+    keys = (examples / "flangedlg.keys").read_text()
+    r = ncvm("run", examples / "flangedlg.cpl", "--keys", "/dev/stdin", "--state", "st", input=keys)
+    assert r.returncode == 0, r.stderr
+    assert "FLANGE: 8 holes" in r.stdout

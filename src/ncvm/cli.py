@@ -177,12 +177,11 @@ def run(program, dialect, machine, state_dir, as_json, trace, gcode, plot, max_s
                    Output("--screen-dir", screen_dir, folder=True, names=SCREEN_PICTURE)],
                   {"program": program, "--machine": machine, "--scenario": scenario, "--keys": keys},
                   state=state_dir, json_stdout=as_json)
-    if keys:
-        _check_key_script(keys)
+    key_script = _read_key_script(keys) if keys else None
     as_path = lambda value: Path(value) if value else None  # noqa: E731
     keyboard = keys is None and not as_json and _stdin_is_terminal()
     options = RunOptions(state_dir=Path(state_dir), max_steps=max_steps, trace=as_path(trace),
-                         gcode=as_path(gcode), echo=not as_json, scenario=as_path(scenario), keys=as_path(keys),
+                         gcode=as_path(gcode), echo=not as_json, scenario=as_path(scenario), keys=key_script,
                          keyboard=keyboard, editor_block=editor_block, screen=as_path(screen),
                          screen_dir=as_path(screen_dir))
     # the progress line would draw over the operator's prompts
@@ -219,13 +218,14 @@ def run(program, dialect, machine, state_dir, as_json, trace, gcode, plot, max_s
     sys.exit(EXIT_FAULT if result["error"] else EXIT_OK)
 
 
-def _check_key_script(path: str) -> None:
-    """A key script that does not read is a usage error before the run, not a fault at its first wait."""
+def _read_key_script(path: str):
+    """The key script, read once (``--keys /dev/stdin`` is a pipe); one that does not read is a usage error
+    before the run, not a fault at its first wait."""
     from .dialects.cpl.io.errors import CplRuntimeError
     from .dialects.cpl.io.screen import KeyScript
 
     try:
-        KeyScript.from_file(path)
+        return KeyScript.from_file(path)
     except CplRuntimeError as e:
         raise UsageError(f"--keys {path}: {e.message}") from None
     except UnicodeDecodeError as e:
