@@ -196,3 +196,39 @@ def test_a_key_script_from_a_pipe_reaches_the_dialog(work):
     r = ncvm("run", examples / "flangedlg.cpl", "--keys", "/dev/stdin", "--state", "st", input=keys)
     assert r.returncode == 0, r.stderr
     assert "FLANGE: 8 holes" in r.stdout
+
+
+# -- compile's outputs ---------------------------------------------------------------------------------
+
+CL800 = Path(__file__).parents[1] / "examples" / "cl800" / "hole_pattern.cl8"
+
+
+@pytest.mark.parametrize("args", [["-o", "full.spf"], ["-o", "l.spf", "--xref", "full.spf"]])
+def test_compile_onto_a_full_disk_is_a_usage_error(work, args):
+    os.symlink("/dev/full", "full.spf")
+    r = ncvm("compile", CL800, *args)
+    assert r.returncode == 2, r.stderr
+    assert "full.spf: cannot write: No space left on device" in r.stderr and "internal error" not in r.stderr
+
+
+def test_compile_writes_nothing_into_the_default_state_directory(work):
+    (work / ".ncvm").mkdir()
+    (work / ".ncvm" / "store.sqlite").write_bytes(b"kept")
+    r = invoke("compile", CL800, "-o", ".ncvm/store.sqlite")
+    assert r.exit_code == 2 and "is inside the state directory .ncvm" in r.stderr, r.output
+    assert (work / ".ncvm" / "store.sqlite").read_bytes() == b"kept"
+
+
+# -- what the messages name ----------------------------------------------------------------------------
+
+def test_messages_name_what_the_user_gave(work):
+    os.symlink("nowhere/x.ngc", "dangling.ngc")
+    r = invoke("run", "part.din", "--gcode", "dangling.ngc")
+    assert r.exit_code == 2 and "--gcode dangling.ngc: folder" in r.stderr and "nowhere does not exist" in r.stderr
+    os.mkfifo("pipe.din")
+    r = invoke("run", "pipe.din")
+    assert r.exit_code == 2 and "pipe.din: not a file" in r.stderr, r.stderr
+    (work / "machine.toml").write_text(LATHE)
+    r = invoke("run", "part.din", "--gcode", "machine.toml")
+    assert r.exit_code == 2 and "--gcode machine.toml: it would overwrite the machine file machine.toml" in r.stderr
+    assert LATHE == (work / "machine.toml").read_text()

@@ -19,6 +19,7 @@ from .diagnostics import CompileFailed, UsageError
 from .outpaths import PLOT_SUFFIXES, SCREEN_PICTURE, Output, OutputError, check_outputs
 
 EXIT_OK, EXIT_FAULT, EXIT_USAGE, EXIT_INTERNAL = 0, 1, 2, 70
+DEFAULT_STATE = ".ncvm"
 
 
 def _internal_error(exc: BaseException) -> None:
@@ -140,7 +141,7 @@ class _Progress:
 @click.argument("program", type=click.Path(dir_okay=False))
 @DIALECT_OPT
 @MACHINE_OPT
-@click.option("--state", "state_dir", type=click.Path(file_okay=False), default=".ncvm", show_default=True,
+@click.option("--state", "state_dir", type=click.Path(file_okay=False), default=DEFAULT_STATE, show_default=True,
               help="State directory (permanent store, controller files).")
 @click.option("--json", "as_json", is_flag=True, help="Print one JSON document with the whole result.")
 @click.option("--trace", type=click.Path(dir_okay=False), help="Write every canon call as JSON lines.")
@@ -169,14 +170,13 @@ def run(program, dialect, machine, state_dir, as_json, trace, gcode, plot, max_s
     from .api import run as api_run
     from .runtime.session import RunOptions
 
-    if not Path(program).is_file():
-        raise UsageError(f"no such program: {program}")
-    machine = machine or _folder_machine(program, say=True)
+    _check_program(program)
     check_outputs([Output("--trace", trace), Output("--gcode", gcode), Output("--plot", plot, PLOT_SUFFIXES),
                    Output("--screen", screen, (".png",)),
                    Output("--screen-dir", screen_dir, folder=True, names=SCREEN_PICTURE)],
-                  {"program": program, "--machine": machine, "--scenario": scenario, "--keys": keys},
+                  {"program": program, **_machine_input(program, machine), "--scenario": scenario, "--keys": keys},
                   state=state_dir, json_stdout=as_json)
+    machine = machine or _folder_machine(program, say=True)
     key_script = _read_key_script(keys) if keys else None
     as_path = lambda value: Path(value) if value else None  # noqa: E731
     keyboard = keys is None and not as_json and _stdin_is_terminal()
@@ -257,6 +257,19 @@ def _hms(seconds: float) -> str:
     return f"{h}:{m:02d}:{s:06.3f}" if h else f"{m}:{s:06.3f}"
 
 
+def _check_program(program: str) -> None:
+    path = Path(program)
+    if not path.exists():
+        raise UsageError(f"no such program: {program}")
+    if not path.is_file():
+        raise UsageError(f"{program}: not a file (a program is read from a file)")
+
+
+def _machine_input(program: str, machine: str | None) -> dict[str, str | None]:
+    """The machine file among the inputs no output may overwrite: the given one or the folder's."""
+    return {"--machine": machine} if machine else {"machine file": _folder_machine(program)}
+
+
 def _folder_machine(program: str, say: bool = False) -> str | None:
     """The machine file of a program's own folder (``machine.toml``), if there is one; ``say``: name it on
     stderr (a run that is not told which machine says which one it took)."""
@@ -334,10 +347,11 @@ def compile_cmd(source, out, xref, dialect, machine):
     """
     from .api import compile_program
 
-    if not Path(source).is_file():
-        raise UsageError(f"no such program: {source}")
+    _check_program(source)
+    # compile has no state directory of its own, but a run's default one is no place for its files either
+    check_outputs([Output("-o", out), Output("--xref", xref)], {"program": source, **_machine_input(source, machine)},
+                  state=DEFAULT_STATE)
     machine = machine or _folder_machine(source, say=True)
-    check_outputs([Output("-o", out), Output("--xref", xref)], {"program": source, "--machine": machine})
     try:
         path = compile_program(source, out, xref, dialect, machine)
     except CompileFailed as e:

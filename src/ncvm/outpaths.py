@@ -75,8 +75,18 @@ def refuse_overwrite(option: str, target: Path, source: str) -> None:
         raise UsageError(f"{option} {target}: would overwrite the source {source}; give another name with -o")
 
 
+def write_output(path: Path, text: str) -> None:
+    """Write an output a command makes in one piece (``compile``'s object and listing); a full disk is a
+    usage error naming the file."""
+    try:
+        path.write_text(text, encoding="latin-1")
+    except OSError as e:
+        raise OutputError(path, e) from None
+
+
 def _input_name(what: str, path: str) -> str:
-    return f"{what} {path}" if what == "program" else f"input of {what} {path}"
+    """"the program p.din", "the input of --keys k.keys" (``what`` is an option or the name of an input)."""
+    return f"input of {what} {path}" if what.startswith("-") else f"{what} {path}"
 
 
 def _check_suffix(out: Output) -> None:
@@ -96,7 +106,7 @@ def _check_file(out: Output) -> None:
     real = Path(os.path.realpath(path))  # a symbolic link writes where it points
     if real.is_dir():
         raise UsageError(f"{out.option} {out.path}: is a folder, not a file")
-    _check_parent(out, real.parent, path.parent)
+    _check_parent(out, real.parent, real.parent if path.is_symlink() else path.parent)
     try:
         if real.exists():
             open(real, "ab").close()  # appends nothing: the file stays as it is until the run writes it
