@@ -232,3 +232,13 @@ def test_messages_name_what_the_user_gave(work):
     r = invoke("run", "part.din", "--gcode", "machine.toml")
     assert r.exit_code == 2 and "--gcode machine.toml: it would overwrite the machine file machine.toml" in r.stderr
     assert LATHE == (work / "machine.toml").read_text()
+
+
+def test_ctrl_c_during_a_check_says_what_was_interrupted(work, monkeypatch):
+    def interrupted(*a, **k):
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr("ncvm.api.check", interrupted)
+    r = invoke("check", "part.din", "--json")
+    assert r.exit_code == 1, r.output
+    assert json.loads(r.stdout)["error"]["message"] == "check interrupted by the user"

@@ -46,7 +46,7 @@ def _usage_error(ctx, message: str) -> None:
 
 def _interrupted(ctx) -> None:
     """Exit 1 as an interrupted run does; with --json stdout is still a JSON document."""
-    message = "run interrupted by the user"
+    message = f"{ctx.invoked_subcommand or 'ncvm'} interrupted by the user"
     click.echo(f"ncvm: {message}", err=True)
     if ctx.meta.get(_JSON):
         error = {"code": "RUN004", "message": message, "file": None, "line": None, "column": None}
