@@ -242,3 +242,18 @@ def test_ctrl_c_during_a_check_says_what_was_interrupted(work, monkeypatch):
     r = invoke("check", "part.din", "--json")
     assert r.exit_code == 1, r.output
     assert json.loads(r.stdout)["error"]["message"] == "check interrupted by the user"
+
+
+# -- check and run point at the same word ------------------------------------------------------------
+
+@pytest.mark.parametrize("name, text, column", [
+    ("col.cpl", "N10 G0 X1\n   N20 G1 Y2 B5 F100\n", 14),
+    ("col.mpf", "%MPF6\nN10 G0 X1\nN20 G1 Y2 C5 F100\n", 11),
+])
+def test_run_reports_a_missing_axis_at_the_column_check_shows(work, name, text, column):
+    (work / name).write_text(text)
+    checked = invoke("check", name, "--json")
+    ran = invoke("run", name, "--json", "--state", "st")
+    where = json.loads(checked.stdout)["files"][0]["diagnostics"][0]
+    error = json.loads(ran.stdout)["error"]
+    assert (error["line"], error["column"]) == (where["line"], where["column"]) == (where["line"], column)

@@ -551,7 +551,7 @@ class _Record:
             self.words.append(("_rt.angle_key()", expr, False))
             return
         if missing_axis(a, cg.axes, dwells(self.blk.items)):
-            out.emit(f"_rt.refuse_axis({missing_axis_message(a, cg.axes)!r}, {self.blk.line})", self.blk.line)
+            out.emit(f"_rt.refuse_axis({missing_axis_message(a, cg.axes)!r}, {self.blk.line}, {w.col})", self.blk.line)
             return
         if not const and captured:
             # the value is the one R has where the word stands; later @ code in the block may change R
