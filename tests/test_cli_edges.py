@@ -257,3 +257,19 @@ def test_run_reports_a_missing_axis_at_the_column_check_shows(work, name, text, 
     where = json.loads(checked.stdout)["files"][0]["diagnostics"][0]
     error = json.loads(ran.stdout)["error"]
     assert (error["line"], error["column"]) == (where["line"], where["column"]) == (where["line"], column)
+
+
+# -- a sub-program is an input too --------------------------------------------------------------------
+
+def test_an_output_onto_a_sub_program_is_refused_before_the_run(work):
+    examples = Path(__file__).parents[1] / "examples" / "cpl"
+    for name in ("flange.cpl", "BOLTCIRC", "machine.toml"):
+        (work / name).write_bytes((examples / name).read_bytes())
+    source = (work / "BOLTCIRC").read_bytes()
+    r = invoke("run", "flange.cpl", "--gcode", "BOLTCIRC", "--state", "st")
+    assert r.exit_code == 2, r.output
+    assert "--gcode BOLTCIRC: would overwrite a program the run may call as a sub-program" in r.stderr
+    assert (work / "BOLTCIRC").read_bytes() == source
+    for _ in range(2):  # the flat G-code of the last run is written again
+        r = invoke("run", "flange.cpl", "--gcode", "flange.ngc", "--state", "st")
+        assert r.exit_code == 0 and "FLANGE: 14 holes drilled" in r.stdout, r.output

@@ -167,16 +167,17 @@ def run(program, dialect, machine, state_dir, as_json, trace, gcode, plot, max_s
     Without --machine the program's folder's machine.toml is used (named on stderr), as by check and
     compile, else the built-in 3-axis mill.
     """
+    from .api import machine_for
     from .api import run as api_run
     from .runtime.session import RunOptions
 
     _check_program(program)
+    inputs = {"program": program, **_machine_input(program, machine), "--scenario": scenario, "--keys": keys}
+    machine = machine_for(program, machine or _folder_machine(program, say=True), Path(state_dir))
     check_outputs([Output("--trace", trace), Output("--gcode", gcode), Output("--plot", plot, PLOT_SUFFIXES),
                    Output("--screen", screen, (".png",)),
                    Output("--screen-dir", screen_dir, folder=True, names=SCREEN_PICTURE)],
-                  {"program": program, **_machine_input(program, machine), "--scenario": scenario, "--keys": keys},
-                  state=state_dir, json_stdout=as_json)
-    machine = machine or _folder_machine(program, say=True)
+                  inputs, state=state_dir, json_stdout=as_json, program_path=machine.program_path)
     key_script = _read_key_script(keys) if keys else None
     as_path = lambda value: Path(value) if value else None  # noqa: E731
     keyboard = keys is None and not as_json and _stdin_is_terminal()

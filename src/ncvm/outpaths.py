@@ -42,11 +42,13 @@ class OutputError(UsageError):
 
 
 def check_outputs(outputs: list[Output], inputs: dict[str, str | None], state: str | None = None,
-                  json_stdout: bool = False) -> None:
+                  json_stdout: bool = False, program_path=()) -> None:
     """Raise UsageError unless every output can be written and none overwrites an input or another
     output. ``inputs`` maps an option (or "program") to the file it reads (None: not given). No output
     goes into the ``state`` directory (the permanent store, link tables, controller files), nor, with
-    ``json_stdout``, onto stdout, which carries the JSON document."""
+    ``json_stdout``, onto stdout, which carries the JSON document, nor onto a program in a folder of the
+    machine's ``program_path`` that the run may call (read only when it is called, after the outputs are
+    opened)."""
     outputs = [out for out in outputs if out.path]
     read = {what: path for what, path in inputs.items() if path}
     for i, out in enumerate(outputs):
@@ -62,6 +64,9 @@ def check_outputs(outputs: list[Output], inputs: dict[str, str | None], state: s
             if _clash(out, path):
                 writer = "a file it writes" if out.folder else "it"
                 raise UsageError(f"{out.option} {out.path}: {writer} would overwrite the {_input_name(what, path)}")
+        if not out.folder and _is_program(out.path, program_path):
+            raise UsageError(f"{out.option} {out.path}: would overwrite a program the run may call as a "
+                             f"sub-program; write it elsewhere")
         for other in outputs[:i]:
             folder, file = (out, other) if out.folder else (other, out)
             if not file.folder and _clash(folder, file.path):
@@ -153,6 +158,24 @@ def _inside(path: str, folder: str) -> bool:
     """``path`` is ``folder`` or below it (through any symbolic links)."""
     real, top = os.path.realpath(path), os.path.realpath(folder)
     return real == top or real.startswith(top.rstrip(os.sep) + os.sep)
+
+
+def _is_program(path: str, program_path) -> bool:
+    """An existing file in a folder of the program path with no extension (a CPL sub-program) or a program
+    extension, unless ncvm wrote it (its flat G-code, written again by the next run)."""
+    from .dialects import EXTENSIONS
+    from .sinks.gcode import HEADER
+
+    real = Path(os.path.realpath(path))
+    if not real.is_file() or (real.suffix and real.suffix.lower() not in EXTENSIONS):
+        return False
+    if not any(real.parent == Path(os.path.realpath(folder)) for folder in program_path):
+        return False
+    try:
+        with open(real, "rb") as f:
+            return not f.read(len(HEADER)).decode("latin-1") == HEADER
+    except OSError:
+        return False
 
 
 def _is_stdout(path: str) -> bool:

@@ -13,6 +13,8 @@ from ..outpaths import OutputError
 ISO_AXES = "XYZABCUVW"
 PLANE_OF = {("X", "Y"): "G17", ("Z", "X"): "G18", ("Y", "Z"): "G19"}
 CENTRE_WORDS = {"X": "I", "Y": "J", "Z": "K"}
+#: the first line of every file written, by which the next run knows it may write the file again
+HEADER = "(written by ncvm: flat G-code in machine coordinates)"
 
 
 def _f(v: float) -> str:
@@ -45,7 +47,7 @@ class GcodeWriter(CanonSink):
     def begin(self, axis_names, start):
         self.names = tuple(axis_names)
         extra = [n for n in self.names if n not in ISO_AXES]
-        self._line("(written by ncvm: flat G-code in machine coordinates)")
+        self._line(HEADER)
         if extra:
             self._line(f"(axes {' '.join(extra)} have no ISO address and are left out)")
         # every offset cleared, so the numbers below are machine coordinates on the receiving control too
