@@ -55,8 +55,7 @@ def din_missing_axes(path: str, text: str, segments: list, axes, skip_active: bo
         blk, skip = seg
         if skip and skip_active:
             continue
-        dwell = is_dwell(blk.g)
-        address = next((a for a in blk.words if is_missing_axis(a, axes) and names_axis(a, dwell)), None)
+        address = next((a for a in blk.words if is_missing_axis(a, axes) and names_axis(a, is_dwell(blk.g))), None)
         if address is not None:
             found.append((i, None, blk.src.line, address))
     if not found:

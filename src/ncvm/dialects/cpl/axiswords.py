@@ -25,9 +25,8 @@ def missing_axis_blocks(prog: A.Program, axes) -> list[tuple[A.NcBlock, str]]:
     out = []
     for s in prog.stmts:
         if isinstance(s, A.NcBlock):
-            dwell = is_dwell(w.value for w in s.words if w.address == "G")
-            address = next((w.address for w in s.words
-                            if is_missing_axis(w.address, axes) and names_axis(w.address, dwell)), None)
+            address = next((w.address for w in s.words if is_missing_axis(w.address, axes)
+                            and names_axis(w.address, is_dwell(g.value for g in s.words if g.address == "G"))), None)
             if address is not None:
                 out.append((s, address))
     return out
@@ -75,9 +74,8 @@ def refusing(rt, enqueue, refused: dict):
 
 def check_words(rt, g, words) -> None:
     """Words made at run time (standalone ``[A$]``, AXP): refused as the block is prepared."""
-    dwell = is_dwell(g)
     for address in words:
-        if is_missing_axis(address, rt.kernel.axis_of) and names_axis(address, dwell):
+        if is_missing_axis(address, rt.kernel.axis_of) and names_axis(address, is_dwell(g)):
             refuse(rt, address)
 
 
