@@ -164,8 +164,8 @@ def run(program, dialect, machine, state_dir, as_json, trace, gcode, plot, max_s
         screen, screen_dir):
     """Run PROGRAM on the simulated controller.
 
-    Without --machine the program's folder's machine.toml is used (named on stderr), as by check and
-    compile, else the built-in 3-axis mill.
+    Without --machine the machine.toml in the program's folder is used (named on stderr), as by check
+    and compile, else the built-in 3-axis mill.
     """
     from .api import machine_for
     from .api import run as api_run
@@ -344,7 +344,7 @@ def check(programs, dialect, machine, as_json, all_errors):
 def compile_cmd(source, out, xref, dialect, machine):
     """Compile SOURCE (CL 800 to @ code).
 
-    Without --machine the source's folder's machine.toml is used (named on stderr), as by check and run.
+    Without --machine the machine.toml in the source's folder is used (named on stderr), as by check and run.
     """
     from .api import compile_program
 
