@@ -273,3 +273,11 @@ def test_an_output_onto_a_sub_program_is_refused_before_the_run(work):
     for _ in range(2):  # the flat G-code of the last run is written again
         r = invoke("run", "flange.cpl", "--gcode", "flange.ngc", "--state", "st")
         assert r.exit_code == 0 and "FLANGE: 14 holes drilled" in r.stdout, r.output
+
+
+def test_an_output_into_the_controllers_file_root_is_refused(work):
+    (work / "machine.toml").write_text(LATHE + '[paths]\nfile_root = "ctl"\n')
+    (work / "ctl").mkdir()
+    r = invoke("run", "part.din", "--trace", "ctl/LOG.TXT", "--state", "st")
+    assert r.exit_code == 2, r.output
+    assert "--trace ctl/LOG.TXT: is inside the controller's file root" in r.stderr

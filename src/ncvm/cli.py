@@ -177,7 +177,8 @@ def run(program, dialect, machine, state_dir, as_json, trace, gcode, plot, max_s
     check_outputs([Output("--trace", trace), Output("--gcode", gcode), Output("--plot", plot, PLOT_SUFFIXES),
                    Output("--screen", screen, (".png",)),
                    Output("--screen-dir", screen_dir, folder=True, names=SCREEN_PICTURE)],
-                  inputs, state=state_dir, json_stdout=as_json, program_path=machine.program_path)
+                  inputs, state=state_dir, json_stdout=as_json, program_path=machine.program_path,
+                  file_root=str(machine.file_root))
     key_script = _read_key_script(keys) if keys else None
     as_path = lambda value: Path(value) if value else None  # noqa: E731
     keyboard = keys is None and not as_json and _stdin_is_terminal()

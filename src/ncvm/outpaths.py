@@ -42,20 +42,23 @@ class OutputError(UsageError):
 
 
 def check_outputs(outputs: list[Output], inputs: dict[str, str | None], state: str | None = None,
-                  json_stdout: bool = False, program_path=()) -> None:
+                  json_stdout: bool = False, program_path=(), file_root: str | None = None) -> None:
     """Raise UsageError unless every output can be written and none overwrites an input or another
     output. ``inputs`` maps an option (or "program") to the file it reads (None: not given). No output
-    goes into the ``state`` directory (the permanent store, link tables, controller files), nor, with
+    goes into the ``state`` directory (the permanent store, link tables, controller files) or the
+    machine's ``file_root`` (the files programs read and write as the run goes), nor, with
     ``json_stdout``, onto stdout, which carries the JSON document, nor onto a program in a folder of the
     machine's ``program_path`` that the run may call (read only when it is called, after the outputs are
     opened)."""
     outputs = [out for out in outputs if out.path]
     read = {what: path for what, path in inputs.items() if path}
+    private = {folder: what for folder, what in ((state, "the state directory {} (the controller's memory)"),
+                                                 (file_root, "the controller's file root {} (its files)")) if folder}
     for i, out in enumerate(outputs):
         _check_suffix(out)
-        if state is not None and _inside(out.path, state):
-            raise UsageError(f"{out.option} {out.path}: is inside the state directory {state} (the controller's "
-                             f"memory); write it elsewhere")
+        for folder, what in private.items():
+            if _inside(out.path, folder):
+                raise UsageError(f"{out.option} {out.path}: is inside {what.format(folder)}; write it elsewhere")
         (_check_folder if out.folder else _check_file)(out)
         if json_stdout and not out.folder and _is_stdout(out.path):
             raise UsageError(f"{out.option} {out.path}: is stdout, which carries the JSON document; "
