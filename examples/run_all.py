@@ -1,4 +1,4 @@
-"""Run every example program on the built-in default machine and draw one plot per program.
+"""Run every example program on its folder's machine.toml (else the built-in machine), one plot each.
 
 Used by ``make run``. Sub-programs (files that a main program calls) are listed
 in each dialect folder's ``main.txt`` when only some files are main programs. A

@@ -17,9 +17,10 @@ import click
 from . import __version__
 from .diagnostics import CompileFailed, UsageError
 from .dialects import REGISTRY
-from .outpaths import PLOT_SUFFIXES, SCREEN_PICTURE, Output, check_outputs
+from .outpaths import PLOT_SUFFIXES, SCREEN_PICTURE, Output, OutputError, check_outputs
 
 EXIT_OK, EXIT_FAULT, EXIT_USAGE, EXIT_INTERNAL = 0, 1, 2, 70
+DEFAULT_STATE = ".ncvm"
 
 
 def _internal_error(exc: BaseException) -> None:
@@ -44,6 +45,16 @@ def _usage_error(ctx, message: str) -> None:
     ctx.exit(EXIT_USAGE)
 
 
+def _interrupted(ctx) -> None:
+    """Exit 1 as an interrupted run does; with --json stdout is still a JSON document."""
+    message = f"{ctx.invoked_subcommand or 'ncvm'} interrupted by the user"
+    click.echo(f"ncvm: {message}", err=True)
+    if ctx.meta.get(_JSON):
+        error = {"code": "RUN004", "message": message, "file": None, "line": None, "column": None}
+        click.echo(json.dumps({"status": "error", "error": error}, indent=2))
+    ctx.exit(EXIT_FAULT)
+
+
 class _Guarded(click.Group):
     """Turns usage errors into exit 2 and unexpected exceptions into exit 70 without a traceback.
 
@@ -53,7 +64,13 @@ class _Guarded(click.Group):
 
     def parse_args(self, ctx, args):
         ctx.meta[_JSON] = "--json" in args[:args.index("--")] if "--" in args else "--json" in args
-        return super().parse_args(ctx, args)
+        try:
+            return super().parse_args(ctx, args)
+        except click.UsageError as e:  # an option before the command: ``ncvm --json run ...``
+            if not ctx.meta.get(_JSON):
+                raise
+            _usage_error(ctx, "--json goes after the command: ncvm run --json PROGRAM, ncvm check --json ..."
+                         if getattr(e, "option_name", None) == "--json" else e.format_message())
 
     def invoke(self, ctx):
         try:
@@ -71,6 +88,8 @@ class _Guarded(click.Group):
                 error = {"code": "RUN006", "message": message, "file": None, "line": None, "column": None}
                 click.echo(json.dumps({"status": "error", "error": error}, indent=2))
             ctx.exit(EXIT_FAULT)
+        except KeyboardInterrupt:  # Ctrl-C outside the run itself (which reports RUN004 with its result)
+            _interrupted(ctx)
         except (click.exceptions.Exit, click.exceptions.Abort, click.ClickException):
             raise
         except Exception as e:  # noqa: BLE001 - the last line of defence
@@ -130,7 +149,7 @@ class _Progress:
 @click.argument("program", type=click.Path(dir_okay=False))
 @DIALECT_OPT
 @MACHINE_OPT
-@click.option("--state", "state_dir", type=click.Path(file_okay=False), default=".ncvm", show_default=True,
+@click.option("--state", "state_dir", type=click.Path(file_okay=False), default=DEFAULT_STATE, show_default=True,
               help="State directory (permanent store, controller files).")
 @click.option("--json", "as_json", is_flag=True, help="Print one JSON document with the whole result.")
 @click.option("--trace", type=click.Path(dir_okay=False), help="Write every canon call as JSON lines.")
@@ -154,25 +173,31 @@ class _Progress:
               help="Save one screen picture per wait for the operator (softkeys, input).")
 def run(program, dialect, machine, state_dir, as_json, trace, gcode, plot, max_steps, max_memory, scenario, keys,
         editor_block, screen, screen_dir):
-    """Run PROGRAM on the simulated controller."""
+    """Run PROGRAM on the simulated controller.
+
+    Without --machine the machine.toml in the program's folder is used (named on stderr), as by check
+    and compile, else the built-in 3-axis mill.
+    """
+    from .api import machine_for
     from .api import run as api_run
     from .runtime.memory import parse_size
     from .runtime.session import RunOptions
 
-    if not Path(program).is_file():
-        raise UsageError(f"no such program: {program}")
+    _check_program(program)
+    if not state_dir.strip():  # an unset variable: the store would land in the current directory
+        raise UsageError("--state is empty; give the state directory (default .ncvm)")
+    inputs = {"program": program, **_machine_input(program, machine), "--scenario": scenario, "--keys": keys}
+    machine = machine_for(program, machine or _folder_machine(program, say=True), Path(state_dir))
     check_outputs([Output("--trace", trace), Output("--gcode", gcode), Output("--plot", plot, PLOT_SUFFIXES),
                    Output("--screen", screen, (".png",)),
                    Output("--screen-dir", screen_dir, folder=True, names=SCREEN_PICTURE)],
-                  {"program": program, "--machine": machine, "--scenario": scenario, "--keys": keys})
-    if keys:
-        _check_key_script(keys)
-    if not state_dir.strip():  # an unset variable: the store would land in the current directory
-        raise UsageError("--state is empty; give the state directory (default .ncvm)")
+                  inputs, state=state_dir, json_stdout=as_json, program_path=machine.program_path,
+                  file_root=str(machine.file_root))
+    key_script = _read_key_script(keys) if keys else None
     as_path = lambda value: Path(value) if value else None  # noqa: E731
     keyboard = keys is None and not as_json and _stdin_is_terminal()
     options = RunOptions(state_dir=Path(state_dir), max_steps=max_steps, trace=as_path(trace),
-                         gcode=as_path(gcode), echo=not as_json, scenario=as_path(scenario), keys=as_path(keys),
+                         gcode=as_path(gcode), echo=not as_json, scenario=as_path(scenario), keys=key_script,
                          keyboard=keyboard, editor_block=editor_block, screen=as_path(screen),
                          screen_dir=as_path(screen_dir), plot=bool(plot))
     if max_memory is not None:
@@ -190,7 +215,10 @@ def run(program, dialect, machine, state_dir, as_json, trace, gcode, plot, max_s
     if plot:
         from .sinks.plot import draw
 
-        draw(session.plot, plot, title=f"{Path(program).name} ({result['dialect']})")
+        try:
+            draw(session.plot, plot, title=f"{Path(program).name} ({result['dialect']})")
+        except OSError as e:
+            raise OutputError(plot, e) from None
     if as_json:
         click.echo(json.dumps(result, indent=2))
     else:
@@ -208,13 +236,14 @@ def run(program, dialect, machine, state_dir, as_json, trace, gcode, plot, max_s
     sys.exit(EXIT_FAULT if result["error"] else EXIT_OK)
 
 
-def _check_key_script(path: str) -> None:
-    """A key script that does not read is a usage error before the run, not a fault at its first wait."""
+def _read_key_script(path: str):
+    """The key script, read once (``--keys /dev/stdin`` is a pipe); one that does not read is a usage error
+    before the run, not a fault at its first wait."""
     from .dialects.cpl.io.errors import CplRuntimeError
     from .dialects.cpl.io.screen import KeyScript
 
     try:
-        KeyScript.from_file(path)
+        return KeyScript.from_file(path)
     except CplRuntimeError as e:
         raise UsageError(f"--keys {path}: {e.message}") from None
     except UnicodeDecodeError as e:
@@ -246,10 +275,28 @@ def _hms(seconds: float) -> str:
     return f"{h}:{m:02d}:{s:06.3f}" if h else f"{m}:{s:06.3f}"
 
 
-def _folder_machine(program: str) -> str | None:
-    """The machine file of a program's own folder (``machine.toml``), if there is one."""
+def _check_program(program: str) -> None:
+    path = Path(program)
+    if not path.exists():
+        raise UsageError(f"no such program: {program}")
+    if not path.is_file():
+        raise UsageError(f"{program}: not a file (a program is read from a file)")
+
+
+def _machine_input(program: str, machine: str | None) -> dict[str, str | None]:
+    """The machine file among the inputs no output may overwrite: the given one or the folder's."""
+    return {"--machine": machine} if machine else {"machine file": _folder_machine(program)}
+
+
+def _folder_machine(program: str, say: bool = False) -> str | None:
+    """The machine file of a program's own folder (``machine.toml``), if there is one; ``say``: name it on
+    stderr (a run that is not told which machine says which one it took)."""
     path = Path(program).parent / "machine.toml"
-    return str(path) if path.is_file() else None
+    if not path.is_file():
+        return None
+    if say:
+        click.echo(f"ncvm: machine file {path} (the program's folder)", err=True)
+    return str(path)
 
 
 def _programs_in(args) -> list[str]:
@@ -312,12 +359,17 @@ def check(programs, dialect, machine, as_json, all_errors):
 @DIALECT_OPT
 @MACHINE_OPT
 def compile_cmd(source, out, xref, dialect, machine):
-    """Compile SOURCE (CL 800 to @ code)."""
+    """Compile SOURCE (CL 800 to @ code).
+
+    Without --machine the machine.toml in the source's folder is used (named on stderr), as by check and run.
+    """
     from .api import compile_program
 
-    if not Path(source).is_file():
-        raise UsageError(f"no such program: {source}")
-    check_outputs([Output("-o", out), Output("--xref", xref)], {"program": source, "--machine": machine})
+    _check_program(source)
+    # compile has no state directory of its own, but a run's default one is no place for its files either
+    check_outputs([Output("-o", out), Output("--xref", xref)], {"program": source, **_machine_input(source, machine)},
+                  state=DEFAULT_STATE)
+    machine = machine or _folder_machine(source, say=True)
     try:
         path = compile_program(source, out, xref, dialect, machine)
     except CompileFailed as e:

@@ -34,18 +34,42 @@ class Output:
     parents: bool = False  # a folder: made with its missing parents (else its parent must exist)
 
 
-def check_outputs(outputs: list[Output], inputs: dict[str, str | None]) -> None:
+class OutputError(UsageError):
+    """An output that fails while it is written (a full disk, an I/O error): a usage error, not a bug."""
+
+    def __init__(self, path, error: OSError):
+        super().__init__(f"{path}: cannot write: {_reason(error)}")
+
+
+def check_outputs(outputs: list[Output], inputs: dict[str, str | None], state: str | None = None,
+                  json_stdout: bool = False, program_path=(), file_root: str | None = None) -> None:
     """Raise UsageError unless every output can be written and none overwrites an input or another
-    output. ``inputs`` maps an option (or "program") to the file it reads (None: not given)."""
+    output. ``inputs`` maps an option (or "program") to the file it reads (None: not given). No output
+    goes into the ``state`` directory (the permanent store, link tables, controller files) or the
+    machine's ``file_root`` (the files programs read and write as the run goes), nor, with
+    ``json_stdout``, onto stdout, which carries the JSON document, nor onto a program in a folder of the
+    machine's ``program_path`` that the run may call (read only when it is called, after the outputs are
+    opened)."""
     outputs = [out for out in outputs if out.path]
     read = {what: path for what, path in inputs.items() if path}
+    private = {folder: what for folder, what in ((state, "the state directory {} (the controller's memory)"),
+                                                 (file_root, "the controller's file root {} (its files)")) if folder}
     for i, out in enumerate(outputs):
         _check_suffix(out)
+        for folder, what in private.items():
+            if _inside(out.path, folder):
+                raise UsageError(f"{out.option} {out.path}: is inside {what.format(folder)}; write it elsewhere")
         (_check_folder if out.folder else _check_file)(out)
+        if json_stdout and not out.folder and _is_stdout(out.path):
+            raise UsageError(f"{out.option} {out.path}: is stdout, which carries the JSON document; "
+                             f"write it to a file")
         for what, path in read.items():
             if _clash(out, path):
                 writer = "a file it writes" if out.folder else "it"
                 raise UsageError(f"{out.option} {out.path}: {writer} would overwrite the {_input_name(what, path)}")
+        if not out.folder and _is_program(out.path, program_path):
+            raise UsageError(f"{out.option} {out.path}: would overwrite a program the run may call as a "
+                             f"sub-program; write it elsewhere")
         for other in outputs[:i]:
             folder, file = (out, other) if out.folder else (other, out)
             if not file.folder and _clash(folder, file.path):
@@ -59,8 +83,18 @@ def refuse_overwrite(option: str, target: Path, source: str) -> None:
         raise UsageError(f"{option} {target}: would overwrite the source {source}; give another name with -o")
 
 
+def write_output(path: Path, text: str) -> None:
+    """Write an output a command makes in one piece (``compile``'s object and listing); a full disk is a
+    usage error naming the file."""
+    try:
+        path.write_text(text, encoding="latin-1")
+    except OSError as e:
+        raise OutputError(path, e) from None
+
+
 def _input_name(what: str, path: str) -> str:
-    return f"{what} {path}" if what == "program" else f"input of {what} {path}"
+    """"the program p.din", "the input of --keys k.keys" (``what`` is an option or the name of an input)."""
+    return f"input of {what} {path}" if what.startswith("-") else f"{what} {path}"
 
 
 def _check_suffix(out: Output) -> None:
@@ -71,16 +105,19 @@ def _check_suffix(out: Output) -> None:
 
 def _check_file(out: Output) -> None:
     path = Path(out.path)
+    if path.exists() and not path.is_file() and not path.is_dir():
+        # a device or a pipe, also behind /dev/stdout -> /proc/self/fd/1 -> pipe:[N] (no real path);
+        # opening it could block
+        if not os.access(path, os.W_OK):
+            raise UsageError(f"{out.option} {out.path}: cannot write: {os.strerror(errno.EACCES)}")
+        return
     real = Path(os.path.realpath(path))  # a symbolic link writes where it points
     if real.is_dir():
         raise UsageError(f"{out.option} {out.path}: is a folder, not a file")
-    _check_parent(out, real.parent, path.parent)
+    _check_parent(out, real.parent, real.parent if path.is_symlink() else path.parent)
     try:
         if real.exists():
-            if real.is_file():
-                open(real, "ab").close()  # appends nothing: the file stays as it is until the run writes it
-            elif not os.access(real, os.W_OK):  # a device or a pipe: opening it could block
-                raise PermissionError(errno.EACCES, os.strerror(errno.EACCES))
+            open(real, "ab").close()  # appends nothing: the file stays as it is until the run writes it
         else:
             os.close(os.open(real, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o666))
             real.unlink()
@@ -118,6 +155,39 @@ def _check_parent(out: Output, folder: Path, shown: Path) -> None:
 def _reason(e: OSError) -> str:
     # creating a file where the file system has no such thing (/proc, /sys) fails with ENOENT
     return "files cannot be made there" if e.errno == errno.ENOENT else e.strerror or str(e)
+
+
+def _inside(path: str, folder: str) -> bool:
+    """``path`` is ``folder`` or below it (through any symbolic links)."""
+    real, top = os.path.realpath(path), os.path.realpath(folder)
+    return real == top or real.startswith(top.rstrip(os.sep) + os.sep)
+
+
+def _is_program(path: str, program_path) -> bool:
+    """An existing file in a folder of the program path with no extension (a CPL sub-program) or a program
+    extension, unless ncvm wrote it (its flat G-code, written again by the next run)."""
+    from .dialects import EXTENSIONS
+    from .sinks.gcode import HEADER
+
+    real = Path(os.path.realpath(path))
+    if not real.is_file() or (real.suffix and real.suffix.lower() not in EXTENSIONS):
+        return False
+    if not any(real.parent == Path(os.path.realpath(folder)) for folder in program_path):
+        return False
+    try:
+        with open(real, "rb") as f:
+            return not f.read(len(HEADER)).decode("latin-1") == HEADER
+    except OSError:
+        return False
+
+
+def _is_stdout(path: str) -> bool:
+    """``path`` is where stdout goes (/dev/stdout, the file stdout is redirected to); /dev/null takes anything."""
+    try:
+        st = os.stat(path)
+        return os.path.samestat(st, os.fstat(1)) and not os.path.samestat(st, os.stat(os.devnull))
+    except OSError:  # no such file yet, or no stdout
+        return False
 
 
 def _clash(out: Output, path: str) -> bool:

@@ -25,6 +25,16 @@ def is_missing_axis(address: str, axes) -> bool:
     return (address[:1] in AXIS_LETTERS or len(address) > 1) and address not in axes
 
 
+def names_axis(address: str, dwell: bool) -> bool:
+    """Whether ``address`` stands for an axis in its block: in a dwell block (G4) X is the time, as the kernel
+    reads it (P, X or F seconds), not an axis."""
+    return not (dwell and address == "X")
+
+
+def is_dwell(g_codes) -> bool:
+    return any(g == 4 for g in g_codes)
+
+
 def missing_axis_message(address: str, axes) -> str:
     return f"axis {address} is not configured on this machine (its axes: {' '.join(axes) or 'none'})"
 
@@ -45,7 +55,7 @@ def din_missing_axes(path: str, text: str, segments: list, axes, skip_active: bo
         blk, skip = seg
         if skip and skip_active:
             continue
-        address = next((a for a in blk.words if is_missing_axis(a, axes)), None)
+        address = next((a for a in blk.words if is_missing_axis(a, axes) and names_axis(a, is_dwell(blk.g))), None)
         if address is not None:
             found.append((i, None, blk.src.line, address))
     if not found:

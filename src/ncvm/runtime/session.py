@@ -41,7 +41,8 @@ class RunOptions:
     echo: bool = False  # print operator output to stdout as it happens
     hook: StepHook | None = None
     extra_sinks: list[CanonSink] = field(default_factory=list)
-    keys: Path | None = None  # operator key presses and typed values (a key script) for dialog programs
+    #: operator key presses and typed values for dialog programs: a key script file, or one read already
+    keys: Path | Any | None = None
     keyboard: bool = False  # without a key script: the operator types keys on stdin (a terminal)
     editor_block: str | None = None  # the NC block selected in the editor, for a CPL editor dialog
     scenario: Path | None = None  # scenario file: inputs, probe triggers, ... over simulated time

@@ -8,10 +8,13 @@ with incremental centres. LinuxCNC's ``rs274`` reads the output.
 from __future__ import annotations
 
 from ..nc.canon import CanonSink
+from ..outpaths import OutputError
 
 ISO_AXES = "XYZABCUVW"
 PLANE_OF = {("X", "Y"): "G17", ("Z", "X"): "G18", ("Y", "Z"): "G19"}
 CENTRE_WORDS = {"X": "I", "Y": "J", "Z": "K"}
+#: the first line of every file written, by which the next run knows it may write the file again
+HEADER = "(written by ncvm: flat G-code in machine coordinates)"
 
 
 def _f(v: float) -> str:
@@ -27,7 +30,10 @@ class GcodeWriter(CanonSink):
         self.plane = "G17"
 
     def _line(self, text: str) -> None:
-        self._f.write(text + "\n")
+        try:
+            self._f.write(text + "\n")
+        except OSError as e:  # a full disk: the run stops with a usage error naming the file
+            raise OutputError(self._f.name, e) from None
 
     def _axes(self, p) -> str:
         return " ".join(f"{n}{_f(v)}" for n, v in zip(self.names, p) if n in ISO_AXES)
@@ -41,7 +47,7 @@ class GcodeWriter(CanonSink):
     def begin(self, axis_names, start):
         self.names = tuple(axis_names)
         extra = [n for n in self.names if n not in ISO_AXES]
-        self._line("(written by ncvm: flat G-code in machine coordinates)")
+        self._line(HEADER)
         if extra:
             self._line(f"(axes {' '.join(extra)} have no ISO address and are left out)")
         # every offset cleared, so the numbers below are machine coordinates on the receiving control too
@@ -94,4 +100,7 @@ class GcodeWriter(CanonSink):
         self._line("M2")
 
     def end(self):
-        self._f.close()
+        try:
+            self._f.close()
+        except OSError as e:
+            raise OutputError(self._f.name, e) from None

@@ -5,6 +5,7 @@ from __future__ import annotations
 import json
 
 from ..nc.canon import CanonSink
+from ..outpaths import OutputError
 
 
 class JsonlTrace(CanonSink):
@@ -16,7 +17,10 @@ class JsonlTrace(CanonSink):
         rec = {"call": call, **data}
         if src is not None:
             rec["file"], rec["line"] = src.file, src.line
-        self._f.write(json.dumps(rec) + "\n")
+        try:
+            self._f.write(json.dumps(rec) + "\n")
+        except OSError as e:  # a full disk: the run stops with a usage error naming the file
+            raise OutputError(self._f.name, e) from None
 
     def _pos(self, p) -> dict:
         return {n: round(v, 6) for n, v in zip(self.names, p)}
@@ -63,4 +67,7 @@ class JsonlTrace(CanonSink):
         self._write("program_end", src)
 
     def end(self):
-        self._f.close()
+        try:
+            self._f.close()
+        except OSError as e:
+            raise OutputError(self._f.name, e) from None

@@ -12,7 +12,7 @@ import re
 from pathlib import Path
 
 from ...diagnostics import CompileFailed, UsageError
-from ...outpaths import refuse_overwrite
+from ...outpaths import refuse_overwrite, write_output
 from ..base import Dialect
 from . import ast
 from .atcode import ObjectProgram, compile_program
@@ -112,9 +112,9 @@ class Cl800Dialect(Dialect):
         obj = self.build(path, text, machine)
         target = Path(out) if out else Path(path).with_name(f"L{obj.number}.spf")
         refuse_overwrite("compile", target, path)
-        target.write_text(obj.text(), encoding="latin-1")
+        write_output(target, obj.text())
         if xref:
-            Path(xref).write_text(obj.xref(), encoding="latin-1")
+            write_output(Path(xref), obj.xref())
         return target
 
     def run(self, path, text, session):

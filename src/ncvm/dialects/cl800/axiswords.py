@@ -10,7 +10,7 @@ from dataclasses import fields
 
 from ...diagnostics import Diagnostic, Span, read_lines
 from ...nc.axiswords import missing_axis_message
-from ..sinumerik.codegen import missing_axis
+from ..sinumerik.codegen import dwells, missing_axis
 from ..sinumerik.reader import ReadError, Word, read_block
 from . import ast
 
@@ -27,8 +27,9 @@ def axis_diagnostics(path: str, prog, axes) -> list[Diagnostic]:
             continue  # the object program's reader reports it when it runs
         source = lines[st.line - 1] if st.line <= len(lines) else ""
         base = source.find(st.text, max(st.col - 1, 0))
+        dwell = dwells(words)
         for w in words:
-            if (w.value is not None or w.rref is not None) and missing_axis(w.address, axes):
+            if (w.value is not None or w.rref is not None) and missing_axis(w.address, axes, dwell):
                 column = base + w.col if base >= 0 else st.col
                 out.append(Diagnostic("NC011", missing_axis_message(w.address, axes), Span(path, st.line, column)))
     return out

@@ -10,8 +10,8 @@ from __future__ import annotations
 
 import re
 
-from ...diagnostics import Diagnostic
-from ...nc.axiswords import is_missing_axis
+from ...diagnostics import Diagnostic, read_lines
+from ...nc.axiswords import is_dwell, is_missing_axis, names_axis
 from ...nc.block import ROW_LINE
 from . import ast as A
 from .errors import CplError, diag
@@ -25,7 +25,8 @@ def missing_axis_blocks(prog: A.Program, axes) -> list[tuple[A.NcBlock, str]]:
     out = []
     for s in prog.stmts:
         if isinstance(s, A.NcBlock):
-            address = next((w.address for w in s.words if is_missing_axis(w.address, axes)), None)
+            address = next((w.address for w in s.words if is_missing_axis(w.address, axes)
+                            and names_axis(w.address, is_dwell(g.value for g in s.words if g.address == "G"))), None)
             if address is not None:
                 out.append((s, address))
     return out
@@ -33,12 +34,23 @@ def missing_axis_blocks(prog: A.Program, axes) -> list[tuple[A.NcBlock, str]]:
 
 def axis_diagnostics(prog: A.Program, axes, lines: list[str] | None) -> list[Diagnostic]:
     """``ncvm check``: error 1938 at each word for a missing axis, with the word's column when it is found."""
-    out = []
-    for s, address in missing_axis_blocks(prog, axes):
-        text = lines[s.line - 1] if lines and s.line <= len(lines) else ""
-        out.append(diag(CODE, detail(address, axes), prog.path, s.line,
-                        _word_column(text, address) or s.col or 1, s.cpl))
-    return out
+    return [diag(CODE, detail(address, axes), prog.path, s.line, _column(lines, s, address), s.cpl)
+            for s, address in missing_axis_blocks(prog, axes)]
+
+
+def refused_blocks(prog: A.Program, axes) -> dict[int, tuple[str, int]]:
+    """For a run: line -> (address, column of its word) of the blocks refused with 1938, where the check
+    shows them."""
+    found = missing_axis_blocks(prog, axes)
+    if not found:
+        return {}
+    lines = read_lines(prog.path)  # only for a unit that has such a block
+    return {s.line: (address, _column(lines, s, address)) for s, address in found}
+
+
+def _column(lines: list[str] | None, s: A.NcBlock, address: str) -> int:
+    text = lines[s.line - 1] if lines and s.line <= len(lines) else ""
+    return _word_column(text, address) or s.col or 1
 
 
 def _word_column(text: str, address: str) -> int | None:
@@ -48,27 +60,28 @@ def _word_column(text: str, address: str) -> int | None:
 
 
 def refusing(rt, enqueue, refused: dict):
-    """``enqueue`` for a unit whose blocks on the lines of ``refused`` (line -> address) name a missing axis:
-    such a block is refused with 1938 once the blocks queued before it have run, as if it had been executed."""
+    """``enqueue`` for a unit whose blocks on the lines of ``refused`` (:func:`refused_blocks`) name a missing
+    axis: such a block is refused with 1938 once the blocks queued before it have run, as if it had been
+    executed."""
     def checked(item):
-        address = refused.get(item[ROW_LINE] if item.__class__ is tuple else item.src.line)
-        if address is not None:
-            refuse(rt, address)
+        hit = refused.get(item[ROW_LINE] if item.__class__ is tuple else item.src.line)
+        if hit is not None:
+            refuse(rt, *hit)
         enqueue(item)
 
     return checked
 
 
-def check_words(rt, words) -> None:
+def check_words(rt, g, words) -> None:
     """Words made at run time (standalone ``[A$]``, AXP): refused as the block is prepared."""
     for address in words:
-        if is_missing_axis(address, rt.kernel.axis_of):
+        if is_missing_axis(address, rt.kernel.axis_of) and names_axis(address, is_dwell(g)):
             refuse(rt, address)
 
 
-def refuse(rt, address: str):
+def refuse(rt, address: str, column: int | None = None):
     rt.drain()
-    raise CplError(CODE, detail(address, rt.kernel.axis_names))
+    raise CplError(CODE, detail(address, rt.kernel.axis_names), column)
 
 
 def detail(address: str, axes) -> str:

@@ -63,9 +63,10 @@ def text(code: str) -> str:
 class CplError(Exception):
     """A run-time error raised inside generated code; the runtime adds file and line."""
 
-    def __init__(self, code: str, detail: str = ""):
+    def __init__(self, code: str, detail: str = "", column: int | None = None):
         self.code = code
         self.detail = detail
+        self.column = column  # where in the line, when it is not where the statement starts (a word)
         super().__init__(f"{code}: {message(code, detail)}")
 
 

@@ -32,7 +32,7 @@ from ...nc.midmove import MotionRecorder, position_at
 from ...nc.plainrun import execute_segments, plain_segments
 from ...runtime.memory import out_of_memory
 from . import values as V
-from .axiswords import check_words, missing_axis_blocks, refusing
+from .axiswords import check_words, refused_blocks, refusing
 from .builtins import FUNCTIONS
 from .codegen import HELPER_NAMES, generate
 from .errors import CplError, fault, message
@@ -192,7 +192,7 @@ class CplRuntime:
         }
         for name, b in FUNCTIONS.items():
             h[f"_F_{name.replace('$', '_S')}"] = b.impl
-        refused = {s.line: a for s, a in missing_axis_blocks(self.linked.units[path].prog, self.kernel.axis_of)}
+        refused = refused_blocks(self.linked.units[path].prog, self.kernel.axis_of)
         if refused:  # blocks naming an axis the machine lacks (error 1938); other units enqueue unchecked
             for name in ("_q", "_qr", "_q3"):
                 h[name] = refusing(self, h[name], refused)
@@ -305,6 +305,7 @@ class CplRuntime:
         if not frames:
             return RuntimeFault(code, text, None)
         file, line, cpl, col = frames[-1]
+        col = getattr(e, "column", None) or col
         f = fault(code, detail, file, line, cpl, text=text, column=col or self.first_column(file, line))
         f.stack = [Frame(Path(p).name, Span(p, ln, c or self.first_column(p, ln))) for p, ln, _, c in frames]
         return f
@@ -493,7 +494,7 @@ class CplRuntime:
             g.extend(blk.g)
             m.extend(blk.m)
             words.update(blk.words)
-        check_words(self, words)
+        check_words(self, g, words)
         return Block(tuple(g), tuple(m), words, n, msg, src)
 
     # -- the executed state at the program's time ---------------------------------------------

@@ -15,7 +15,7 @@ from ...nc.canon import Src
 from ...source import read_text
 from . import ast as A
 from .axiswords import CODE as AXIS_CODE
-from .axiswords import detail, missing_axis_blocks
+from .axiswords import detail, refused_blocks
 from .errors import CplError, fault
 from .linker import link, link_one
 from .system.gfuncs import prepare
@@ -41,14 +41,14 @@ def run_unlinked(rt, target: str, name: str) -> None:
     if ln.prog.diagnostics:
         d = ln.prog.diagnostics[0]
         _excluded(rt, target, f"{name} contains CPL blocks", A.Stmt(d.span.line, d.span.column or 1))
-    refused = {s.line: a for s, a in missing_axis_blocks(ln.prog, rt.kernel.axis_of)}
+    refused = refused_blocks(ln.prog, rt.kernel.axis_of)
     for s in ln.prog.stmts:
         if s.skip and rt.block_skip:
             continue
         if s.line in refused:  # a word for an axis the machine lacks (1938), once the blocks before it ran
             rt.drain()
-            raise fault(AXIS_CODE, detail(refused[s.line], rt.kernel.axis_names), target, s.line, s.cpl,
-                        column=s.col or 1)
+            address, column = refused[s.line]
+            raise fault(AXIS_CODE, detail(address, rt.kernel.axis_names), target, s.line, s.cpl, column=column)
         words = {w.address: w.value for w in s.words if w.address not in ("G", "M")}
         g = tuple(int(w.value) if w.value == int(w.value) else w.value for w in s.words if w.address == "G")
         m = tuple(int(w.value) for w in s.words if w.address == "M" and w.value not in (2, 30))

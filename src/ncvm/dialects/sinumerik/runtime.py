@@ -314,10 +314,11 @@ class Channel(SysMem, SpindleReads):
     def fault(self, code: str, message: str, line: int):
         raise RuntimeFault(code, message)
 
-    def refuse_axis(self, message: str, line: int):
-        """A word for an axis the machine lacks (NC011): refused after the blocks decoded before it ran."""
+    def refuse_axis(self, message: str, line: int, column: int | None = None):
+        """A word for an axis the machine lacks (NC011): refused after the blocks decoded before it ran, at the
+        word, where ``ncvm check`` shows it."""
         self.run_buffer()
-        raise RuntimeFault("NC011", message)
+        raise RuntimeFault("NC011", message, Span(self._current_path(), line, column))
 
     # -- main groups 0 and 2 ---------------------------------------------
     def ess(self) -> None:

@@ -43,7 +43,9 @@ class CplIO:
         ``RunOptions.mmc_client``."""
         options = session.options
         keys = None
-        if options.keys:
+        if isinstance(options.keys, KeyScript):  # read once already (a pipe cannot be read twice)
+            keys = options.keys
+        elif options.keys:
             keys = KeyScript.from_file(options.keys)
         elif options.keyboard:
             keys = TerminalKeys(sys.stdin.fileno(), sys.stderr)
