@@ -7,6 +7,7 @@ from __future__ import annotations
 import os
 import shutil
 import sqlite3
+import struct
 import subprocess
 import sys
 import tempfile
@@ -221,6 +222,41 @@ def test_bmp_refuses_a_link_out_and_reads_its_own_folder(cpl, tmp_path):
     assert r["status"] == "ok" and (session.screen.canvas == (255, 0, 0)).all(axis=2).sum() == 64
     r, _ = cpl('10 BMP(10,100,"planted")\nM30\n')
     assert refused(r, 1, "out of the file root")
+
+
+def rle_bomb(width: int, height: int) -> bytes:
+    """An 8-bit run-length BMP of ``width`` x ``height`` pixels in a few hundred bytes: "delta" escapes
+    (0, 2, 0, 255) skip 255 rows each. It holds no byte 13, so a CPL program can write it with PRN#."""
+    rle = b"".join(bytes([0, 2, 0, min(255, height - row)]) for row in range(0, height, 255)) + b"\x00\x01"
+    palette = b"\x00\x00\x00\x00\xff\xff\xff\x00"
+    start = 14 + 40 + len(palette)
+    info = struct.pack("<IiiHHIIiiII", 40, width, height, 1, 8, 1, len(rle), 2835, 2835, 2, 2)
+    return b"BM" + struct.pack("<IHHI", start + len(rle), 0, 0, start) + info + palette + rle
+
+
+def test_bmp_does_not_decode_a_bitmap_far_larger_than_the_screen(cpl, tmp_path):
+    """A program writes a 3000 x 3000 run-length bitmap of 300 bytes and shows it: decoding it would take
+    memory and time out of all proportion to the 633 x 415 window (9000 x 9000 took 900 MB and 3 s
+    per BMP). It warns like a file that holds no image, and the program goes on."""
+    data = rle_bomb(3000, 3000)
+    assert b"\r" not in data and len(data) < 400
+    writes = "".join(f"{20 + i}PRN#(1,{','.join(f'CHR$({b})' for b in data[i * 16:(i + 1) * 16])};)\n"
+                     for i in range((len(data) + 15) // 16))
+    r, session = cpl('10 OPENW(1,"cplbmp/big.bmp",130)\n' + writes + '90 CLOSE(1)\n91 BMP(0,0,"big")\nM30\n')
+    assert (tmp_path / ".ncvm" / "files" / "cplbmp" / "big.bmp").read_bytes().startswith(data)
+    assert r["status"] == "ok", r["error"]
+    assert "warning CPL803: cplbmp\\big.bmp is not existing: 3000 x 3000 pixels, more than 4194304 (2048 x 2048)" in r["output"]
+
+
+def test_bmp_shows_bmp_files_only(cpl, tmp_path):
+    """BMP shows "*.bmp" picture files (L5128): a file of another image format (for which an image library
+    may start helper programs) is not decoded."""
+    bitmaps = tmp_path / ".ncvm" / "files" / "cplbmp"
+    bitmaps.mkdir(parents=True)
+    Image.new("RGB", (8, 8), (255, 0, 0)).save(bitmaps / "png.bmp", format="PNG")
+    r, session = cpl('10 BMP(0,0,"png")\nM30\n')
+    assert r["status"] == "ok" and "warning CPL803: cplbmp\\png.bmp is not existing" in r["output"]
+    assert not (session.screen.canvas == (255, 0, 0)).all(axis=2).any()
 
 
 # -- MCOPS program selection ---------------------------------------------------------------------------------
