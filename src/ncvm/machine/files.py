@@ -14,7 +14,8 @@ opened relative to the one before it (``openat``) with ``O_NOFOLLOW | O_DIRECTOR
   directory), so a link that stays inside the root works and one that leads out of it (``..`` past
   the root, or an absolute target elsewhere) is refused; a directory swapped for a link while the walk runs makes the open fail, never follow it;
 * a directory in ``private`` (the state directory, whose store holds the machine's memory) is
-  never entered, even when it lies inside the root, and a hard link to one of its files is not opened;
+  never entered, nor answered about as a name's last component (FILEACCESS would tell its folder
+  from a missing name), even when it lies inside the root; a hard link to one of its files is not opened;
 * only regular files are opened: a FIFO, device or socket is refused after an ``lstat`` and is not
   opened at all (the open itself uses ``O_NONBLOCK`` and the descriptor is checked again).
 
@@ -189,6 +190,8 @@ class FileRoot:
                     todo[:0] = [p for p in head if p] or ["."]
                     continue
                 if not todo:
+                    if st is not None and stat.S_ISDIR(st.st_mode) and identity(st) in private:
+                        raise FileRootError(f"{shown} is the state directory, outside the file root")
                     yield fds[-1], part, st
                     return
                 if st is None:

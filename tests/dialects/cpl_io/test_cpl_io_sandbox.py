@@ -182,6 +182,21 @@ def test_the_state_directory_is_out_of_reach_with_file_root_dot(cpl, tmp_path, s
     assert again["variables"]["A%"] == 4711
 
 
+def test_the_state_directory_itself_is_no_folder_of_the_file_root(cpl, tmp_path):
+    """FILEACCESS and FILEDATE do not tell the state directory's folder (or a link to it) from a missing
+    name, and OPENW of it is refused as out of reach, like every name below it."""
+    m = machine(tmp_path, file_root=".")
+    assert cpl("10 @1=4711\nM30\n", machine=m)[0]["status"] == "ok"
+    (tmp_path / "state").symlink_to(".ncvm")
+    (tmp_path / "folder").mkdir()
+    r, _ = cpl('1 DIM D$(8),E$(8)\n10 A%=FILEACCESS(".ncvm")\n20 B%=FILEACCESS("state")\n30 C%=FILEACCESS("folder")\n'
+               '40 D$=FILEDATE(".ncvm")\n50 E$=FILEDATE("folder")\nM30\n', machine=m)
+    got = r["variables"]
+    assert (got["A%"], got["B%"], got.get("D$", "")) == (-1, -1, "") and got["C%"] & 8 and got["E$"]
+    r, _ = cpl('10 OPENW(1,".ncvm")\nM30\n', machine=m)
+    assert refused(r, 1, "state directory")
+
+
 def test_the_state_directory_run_from_the_command_line(tmp_path):
     """The same with a real machine file and ``ncvm run``: ERASE of the store is refused."""
     (tmp_path / "machine.toml").write_text('[[axis]]\nname = "X"\n\n[paths]\nfile_root = "."\n')
