@@ -110,14 +110,16 @@ class Machine:
         """The zero offset ``table`` (e.g. "G54"), zeros when the machine file leaves it out."""
         return self.offsets.setdefault(table, [0.0] * len(self.axes))
 
-    def find_program(self, name: str, extensions: tuple[str, ...] = (), ignore_case: bool = True) -> Path | None:
+    def find_program(self, name: str, extensions: tuple[str, ...] = (), ignore_case: bool = True,
+                     private: tuple[Path, ...] = ()) -> Path | None:
         """Search the program path for ``name`` as written, then with each extension (and, unless the
         control tells upper from lower case, in any case). Each folder of the path confines the name
         as a file root does (files.FileRoot): an absolute name or one that climbs out finds nothing,
-        and only a regular file is a program -- so nothing here tells whether a host file exists."""
+        and only a regular file is a program -- so nothing here tells whether a host file exists.
+        ``private``: folders (the state directory) a name may not reach even inside a program folder."""
         candidates = [name] + [name + ext for ext in extensions if not name.lower().endswith(ext.lower())]
         for folder in self.program_path:
-            root = FileRoot(folder)
+            root = FileRoot(folder, private)
             for cand in candidates:
                 place = root.find(cand, ignore_case)  # controls of the era were case-insensitive
                 if place is None:

@@ -291,6 +291,20 @@ def test_mcops_does_not_tell_whether_a_host_file_exists(cpl, tmp_path):
     assert [r["variables"][f"R{i}%"] for i in range(1, len(names) + 1)] == [0, 6, 6, 6, 6, 6]
 
 
+def test_mcops_does_not_tell_whether_a_file_of_the_state_directory_exists(cpl, tmp_path):
+    """The state directory inside a program folder (``ncvm run prog.cpl`` in the program's own folder keeps
+    .ncvm there): MCOPS(4) finds no program in it, so the store is neither selected nor told apart from a
+    missing name."""
+    m = machine(tmp_path)  # program path ".": the folder of prog.cpl, which holds .ncvm
+    (tmp_path / "P1.cpl").write_text("M30\n")
+    assert cpl("10 @1=1\nM30\n", machine=m)[0]["status"] == "ok"
+    names = ["P1", ".ncvm/store.sqlite", ".ncvm/lock", ".ncvm/NONE", ".ncvm"]
+    text = "".join(f'{10 * i} R{i}%=MCOPS(4,2,"{n}")\n' for i, n in enumerate(names, 1)) + "M30\n"
+    r, _ = cpl(text, machine=m)
+    assert r["status"] == "ok", r["error"]
+    assert [r["variables"][f"R{i}%"] for i in range(1, len(names) + 1)] == [0, 6, 6, 6, 6]
+
+
 # -- the permanent-variable declarations -----------------------------------------------------------------------
 @pytest.mark.parametrize("decl", ["anwperm.dat", "wmhperm.dat", "ANWPERM.DAT"])
 def test_a_planted_link_for_the_declarations_is_not_followed(cpl, tmp_path, decl):
