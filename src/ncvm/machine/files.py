@@ -321,3 +321,24 @@ class FileRoot:
         low = name.lower()
         match = next((e for e in sorted(entries) if e.lower() == low), None)
         return None if match is None else Place((match,), match)
+
+
+def find_in(folders: Iterable[Path], candidates: Iterable[str], ignore_case: bool = True,
+            private: Iterable[Path | str] = ()) -> Path | None:
+    """The first regular file one of ``candidates`` names in the first folder that has one (program and
+    list look-ups). Each folder confines the names as a file root does: an absolute name or one that
+    climbs out finds nothing, nor does a link that leads out or a FIFO -- so the answer never tells
+    whether a host file exists. ``private``: folders no name may reach even inside a folder."""
+    for folder in folders:
+        root = FileRoot(folder, private)
+        for cand in candidates:
+            place = root.find(cand, ignore_case)
+            if place is None:
+                continue
+            try:
+                st = root.stat(place)
+            except (FileRootError, OSError):
+                continue
+            if st is not None and stat.S_ISREG(st.st_mode):
+                return root.path_of(place)
+    return None
