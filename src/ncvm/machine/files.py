@@ -301,6 +301,14 @@ class FileRoot:
             if durable:
                 os.fsync(dfd)
 
+    def names(self) -> list[str]:
+        """The names of the root's own entries, sorted (OSError when the root cannot be listed)."""
+        fd = self._open_root(False)
+        try:
+            return sorted(os.listdir(fd))
+        finally:
+            os.close(fd)
+
     def find(self, name: str, ignore_case: bool = False) -> Place | None:
         """The entry ``name`` as written, else (``ignore_case``, a name without a folder) the root's one
         entry of that name in any case; None when there is none or the name is refused. The entry may
@@ -311,11 +319,7 @@ class FileRoot:
                 return place
             if not ignore_case or len(place.parts) != 1:
                 return None
-            fd = self._open_root(False)
-            try:
-                entries = os.listdir(fd)
-            finally:
-                os.close(fd)
+            entries = self.names()
         except (FileRootError, OSError):
             return None
         low = name.lower()
@@ -342,3 +346,31 @@ def find_in(folders: Iterable[Path], candidates: Iterable[str], ignore_case: boo
             if st is not None and stat.S_ISREG(st.st_mode):
                 return root.path_of(place)
     return None
+
+
+def heads(folders: Iterable[Path], suffixes: tuple[str, ...], size: int = 200) -> Iterator[tuple[Path, str]]:
+    """(path, first ``size`` characters) of each regular file directly in the folders whose suffix (lower
+    case, "" for none) is one of ``suffixes``, in name order: the programs a control finds by their
+    header. Confined as :func:`find_in`: a link that leads out, a FIFO or a device is passed over, and
+    only the head of a file is read (a program folder may hold large files)."""
+    for folder in folders:
+        root = FileRoot(folder)
+        try:
+            names = root.names()
+        except OSError:
+            continue
+        for name in names:
+            if Path(name).suffix.lower() not in suffixes:
+                continue
+            place = Place((name,), name)
+            try:
+                fd = root.open(place)
+            except (FileRootError, OSError):
+                continue
+            try:
+                head = os.read(fd, size)
+            except OSError:
+                continue
+            finally:
+                os.close(fd)
+            yield root.path_of(place), head.decode("latin-1")
