@@ -74,6 +74,13 @@ def identity(st: os.stat_result) -> tuple[int, int]:
     return st.st_dev, st.st_ino
 
 
+def _identity_at(folder: str, name: str) -> tuple[int, int] | None:
+    try:
+        return identity(os.stat(os.path.join(folder, name), follow_symlinks=False))
+    except OSError:
+        return None
+
+
 class FileRoot:
     """One folder a program's names are confined to (the file root, the bitmap folder, a program
     folder); ``private``: folders never reachable from it."""
@@ -121,11 +128,13 @@ class FileRoot:
                 pass  # not there yet: nothing to reach
         return ids
 
-    def _private_files(self) -> set[tuple[int, int]]:
-        """The files of the private folders (asked only for a file with more than one name)."""
+    def _private_files(self, root: tuple[int, int]) -> set[tuple[int, int]]:
+        """The files of the private folders (asked only for a file with more than one name), apart from
+        the file root ``root`` (device, inode) when it lies inside one (the built-in machine's)."""
         ids = set()
         for folder in self.private:
-            for here, _dirs, names in os.walk(folder):
+            for here, dirs, names in os.walk(folder):
+                dirs[:] = [d for d in dirs if _identity_at(here, d) != root]
                 for name in names:
                     try:
                         ids.add(identity(os.stat(os.path.join(here, name), follow_symlinks=False)))
@@ -249,7 +258,7 @@ class FileRoot:
         try:
             st = os.fstat(fd)
             self.require_file(st, place.shown)
-            if st.st_nlink > 1 and identity(st) in self._private_files():
+            if st.st_nlink > 1 and identity(st) in self._private_files(identity(os.stat(self.path))):
                 raise FileRootError(f"{place.shown} is a hard link to a file of the state directory")
             os.set_blocking(fd, True)
         except BaseException:

@@ -206,6 +206,23 @@ def test_the_state_directory_run_from_the_command_line(tmp_path):
     assert store_is_intact(tmp_path / ".ncvm")
 
 
+def test_a_hard_link_to_the_store_is_refused_but_not_the_roots_own_hard_links(cpl, tmp_path):
+    """The built-in machine keeps its file root in the state directory (.ncvm/files): a hard link planted
+    there to the store is refused, while two names of one file of the root itself are an ordinary file
+    (they were refused as "a hard link to a file of the state directory")."""
+    assert cpl("10 @1=4711\nM30\n")[0]["status"] == "ok"
+    files = tmp_path / ".ncvm" / "files"
+    files.mkdir()
+    os.link(tmp_path / ".ncvm" / "store.sqlite", files / "planted")
+    (files / "A").write_text("DATA\n")
+    os.link(files / "A", files / "B")
+    r, _ = cpl('10 OPENW(1,"planted")\n20 REWRITE(1)\nM30\n')
+    assert refused(r, 1, "hard link")
+    assert store_is_intact(tmp_path / ".ncvm")
+    r, _ = cpl('1 DIM S$(8)\n10 OPENR(1,"A")\n20 INP#(1,S$)\nM30\n')
+    assert r["status"] == "ok" and r["variables"]["S$"].rstrip() == "DATA", r["error"]
+
+
 # -- bitmaps (BMP) -------------------------------------------------------------------------------------------
 def red_image(path: Path) -> None:
     path.parent.mkdir(parents=True, exist_ok=True)
