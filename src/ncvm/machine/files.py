@@ -13,6 +13,8 @@ opened relative to the one before it (``openat``) with ``O_NOFOLLOW | O_DIRECTOR
 * a symbolic link is read and its target walked the same way (its ``..`` climbs back one opened
   directory), so a link that stays inside the root works and one that leads out of it (``..`` past
   the root, or an absolute target elsewhere) is refused; a directory swapped for a link while the walk runs makes the open fail, never follow it;
+* the machine file in ``private`` is never opened, replaced or removed, under any name: a program
+  that rewrote it would choose the next run's file root;
 * a directory in ``private`` (the state directory, whose store holds the machine's memory) is
   never entered, nor answered about as a name's last component (FILEACCESS would tell its folder
   from a missing name), even when it lies inside the root; a hard link to one of its files is not opened;
@@ -83,7 +85,8 @@ def _identity_at(folder: str, name: str) -> tuple[int, int] | None:
 
 class FileRoot:
     """One folder a program's names are confined to (the file root, the bitmap folder, a program
-    folder); ``private``: folders never reachable from it."""
+    folder); ``private``: folders and files never reachable from it (the state directory, the machine
+    file)."""
 
     def __init__(self, path: Path | str, private: Iterable[Path | str] = ()):
         self.path = Path(path)
@@ -199,8 +202,9 @@ class FileRoot:
                     todo[:0] = [p for p in head if p] or ["."]
                     continue
                 if not todo:
-                    if st is not None and stat.S_ISDIR(st.st_mode) and identity(st) in private:
-                        raise FileRootError(f"{shown} is the state directory, outside the file root")
+                    if st is not None and identity(st) in private:
+                        what = "the state directory" if stat.S_ISDIR(st.st_mode) else "the machine file"
+                        raise FileRootError(f"{shown} is {what}, outside the file root")
                     yield fds[-1], part, st
                     return
                 if st is None:
@@ -258,6 +262,8 @@ class FileRoot:
         try:
             st = os.fstat(fd)
             self.require_file(st, place.shown)
+            if identity(st) in self._private_ids():  # the machine file under another name, a hard link
+                raise FileRootError(f"{place.shown} is the machine file, outside the file root")
             if st.st_nlink > 1 and identity(st) in self._private_files(identity(os.stat(self.path))):
                 raise FileRootError(f"{place.shown} is a hard link to a file of the state directory")
             os.set_blocking(fd, True)

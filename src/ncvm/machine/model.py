@@ -109,6 +109,12 @@ class Machine:
         """The zero offset ``table`` (e.g. "G54"), zeros when the machine file leaves it out."""
         return self.offsets.setdefault(table, [0.0] * len(self.axes))
 
+    def own_files(self) -> tuple[Path, ...]:
+        """The machine file this machine was read from (none for the built-in machine): a program may not
+        reach it even when the file root is its folder."""
+        p = Path(self.source)
+        return (p.absolute(),) if p.is_file() else ()
+
     def find_program(self, name: str, extensions: tuple[str, ...] = (), ignore_case: bool = True,
                      private: tuple[Path, ...] = ()) -> Path | None:
         """Search the program path for ``name`` as written, then with each extension (and, unless the

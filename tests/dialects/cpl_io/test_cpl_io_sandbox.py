@@ -223,6 +223,24 @@ def test_a_hard_link_to_the_store_is_refused_but_not_the_roots_own_hard_links(cp
     assert r["status"] == "ok" and r["variables"]["S$"].rstrip() == "DATA", r["error"]
 
 
+@pytest.mark.parametrize("statement", ['E%=ERASE("machine.toml")', 'OPENW(1,"machine.toml")\n20 REWRITE(1)',
+                                       'SCSL(1,"S",51,"machine.toml")', 'OPENR(1,"machine.toml")',
+                                       'OPENW(1,"linked.toml")\n20 REWRITE(1)', 'FXCR(0,"machine.toml")'])
+def test_the_machine_file_in_the_file_root_is_out_of_reach(tmp_path, statement):
+    """file_root = "." is the machine file's own folder: a program that erased or rewrote the machine file
+    would stop every later run (or, were the file still TOML, choose the next run's file root). It is
+    refused like the state directory, under any name (a hard link too)."""
+    text = '[[axis]]\nname = "X"\n\n[paths]\nfile_root = "."\n'
+    (tmp_path / "machine.toml").write_text(text)
+    os.link(tmp_path / "machine.toml", tmp_path / "linked.toml")
+    done = ncvm_run(tmp_path, f"10 {statement}\nM30\n", "-m", "machine.toml")
+    assert done.returncode == 1 and "error CPL609" in done.stderr and "machine file" in done.stderr, done.stderr
+    assert (tmp_path / "machine.toml").read_text() == text
+    ok = ncvm_run(tmp_path, '1 DIM D$(8)\n10 A%=FILEACCESS("machine.toml")\n20 D$=FILEDATE("machine.toml")\n'
+                            '30 PRN#(0,"A",A%,D$)\nM30\n', "-m", "machine.toml")
+    assert ok.returncode == 0 and ok.stdout.split() == ["A", "-1"], ok.stdout + ok.stderr
+
+
 # -- bitmaps (BMP) -------------------------------------------------------------------------------------------
 def red_image(path: Path) -> None:
     path.parent.mkdir(parents=True, exist_ok=True)
