@@ -246,3 +246,12 @@ def test_the_program_path_answers_for_programs_only(tmp_path):
     assert m.find_program("p1.CPL") == progs / "P1.cpl"
     for name in (str(tmp_path / "OUT.cpl"), "../OUT", "/etc/hostname", "PIPE", "LINK"):
         assert m.find_program(name, (".cpl",)) is None, name
+
+
+def test_program_heads_are_read_as_programs_are_read(tmp_path):
+    """A header behind a UTF-8 byte-order mark is found by its number, as the program itself is read."""
+    (tmp_path / "a.spf").write_bytes(b"\xef\xbb\xbf%SPF 77\nM17\n")
+    (tmp_path / "b.spf").write_bytes(b"%SPF 78\nM17\n")
+    (tmp_path / "c.txt").write_bytes(b"%SPF 79\n")
+    found = dict(files_module.heads([tmp_path], (".spf",)))
+    assert {p.name: h[:7] for p, h in found.items()} == {"a.spf": "%SPF 77", "b.spf": "%SPF 78"}

@@ -13,8 +13,11 @@ opened relative to the one before it (``openat``) with ``O_NOFOLLOW | O_DIRECTOR
 * a symbolic link is read and its target walked the same way (its ``..`` climbs back one opened
   directory), so a link that stays inside the root works and one that leads out of it (``..`` past
   the root, or an absolute target elsewhere) is refused; a directory swapped for a link while the walk runs makes the open fail, never follow it;
+* the machine file in ``private`` is never opened, replaced or removed, under any name: a program
+  that rewrote it would choose the next run's file root;
 * a directory in ``private`` (the state directory, whose store holds the machine's memory) is
-  never entered, even when it lies inside the root, and a hard link to one of its files is not opened;
+  never entered, nor answered about as a name's last component (FILEACCESS would tell its folder
+  from a missing name), even when it lies inside the root; a hard link to one of its files is not opened;
 * only regular files are opened: a FIFO, device or socket is refused after an ``lstat`` and is not
   opened at all (the open itself uses ``O_NONBLOCK`` and the descriptor is checked again).
 
@@ -32,6 +35,8 @@ from collections.abc import Callable, Iterable, Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass
 from pathlib import Path
+
+from ..source import without_bom
 
 _DIRECTORY = os.O_RDONLY | os.O_DIRECTORY | os.O_NOFOLLOW | os.O_CLOEXEC
 _FILE = os.O_NOFOLLOW | os.O_NONBLOCK | os.O_CLOEXEC
@@ -73,9 +78,17 @@ def identity(st: os.stat_result) -> tuple[int, int]:
     return st.st_dev, st.st_ino
 
 
+def _identity_at(folder: str, name: str) -> tuple[int, int] | None:
+    try:
+        return identity(os.stat(os.path.join(folder, name), follow_symlinks=False))
+    except OSError:
+        return None
+
+
 class FileRoot:
     """One folder a program's names are confined to (the file root, the bitmap folder, a program
-    folder); ``private``: folders never reachable from it."""
+    folder); ``private``: folders and files never reachable from it (the state directory, the machine
+    file)."""
 
     def __init__(self, path: Path | str, private: Iterable[Path | str] = ()):
         self.path = Path(path)
@@ -120,11 +133,13 @@ class FileRoot:
                 pass  # not there yet: nothing to reach
         return ids
 
-    def _private_files(self) -> set[tuple[int, int]]:
-        """The files of the private folders (asked only for a file with more than one name)."""
+    def _private_files(self, root: tuple[int, int]) -> set[tuple[int, int]]:
+        """The files of the private folders (asked only for a file with more than one name), apart from
+        the file root ``root`` (device, inode) when it lies inside one (the built-in machine's)."""
         ids = set()
         for folder in self.private:
-            for here, _dirs, names in os.walk(folder):
+            for here, dirs, names in os.walk(folder):
+                dirs[:] = [d for d in dirs if _identity_at(here, d) != root]
                 for name in names:
                     try:
                         ids.add(identity(os.stat(os.path.join(here, name), follow_symlinks=False)))
@@ -189,6 +204,9 @@ class FileRoot:
                     todo[:0] = [p for p in head if p] or ["."]
                     continue
                 if not todo:
+                    if st is not None and identity(st) in private:
+                        what = "the state directory" if stat.S_ISDIR(st.st_mode) else "the machine file"
+                        raise FileRootError(f"{shown} is {what}, outside the file root")
                     yield fds[-1], part, st
                     return
                 if st is None:
@@ -246,7 +264,9 @@ class FileRoot:
         try:
             st = os.fstat(fd)
             self.require_file(st, place.shown)
-            if st.st_nlink > 1 and identity(st) in self._private_files():
+            if identity(st) in self._private_ids():  # the machine file under another name, a hard link
+                raise FileRootError(f"{place.shown} is the machine file, outside the file root")
+            if st.st_nlink > 1 and identity(st) in self._private_files(identity(os.stat(self.path))):
                 raise FileRootError(f"{place.shown} is a hard link to a file of the state directory")
             os.set_blocking(fd, True)
         except BaseException:
@@ -298,6 +318,14 @@ class FileRoot:
             if durable:
                 os.fsync(dfd)
 
+    def names(self) -> list[str]:
+        """The names of the root's own entries, sorted (OSError when the root cannot be listed)."""
+        fd = self._open_root(False)
+        try:
+            return sorted(os.listdir(fd))
+        finally:
+            os.close(fd)
+
     def find(self, name: str, ignore_case: bool = False) -> Place | None:
         """The entry ``name`` as written, else (``ignore_case``, a name without a folder) the root's one
         entry of that name in any case; None when there is none or the name is refused. The entry may
@@ -308,13 +336,58 @@ class FileRoot:
                 return place
             if not ignore_case or len(place.parts) != 1:
                 return None
-            fd = self._open_root(False)
-            try:
-                entries = os.listdir(fd)
-            finally:
-                os.close(fd)
+            entries = self.names()
         except (FileRootError, OSError):
             return None
         low = name.lower()
         match = next((e for e in sorted(entries) if e.lower() == low), None)
         return None if match is None else Place((match,), match)
+
+
+def find_in(folders: Iterable[Path], candidates: Iterable[str], ignore_case: bool = True,
+            private: Iterable[Path | str] = ()) -> Path | None:
+    """The first regular file one of ``candidates`` names in the first folder that has one (program and
+    list look-ups). Each folder confines the names as a file root does: an absolute name or one that
+    climbs out finds nothing, nor does a link that leads out or a FIFO -- so the answer never tells
+    whether a host file exists. ``private``: folders no name may reach even inside a folder."""
+    for folder in folders:
+        root = FileRoot(folder, private)
+        for cand in candidates:
+            place = root.find(cand, ignore_case)
+            if place is None:
+                continue
+            try:
+                st = root.stat(place)
+            except (FileRootError, OSError):
+                continue
+            if st is not None and stat.S_ISREG(st.st_mode):
+                return root.path_of(place)
+    return None
+
+
+def heads(folders: Iterable[Path], suffixes: tuple[str, ...], size: int = 200) -> Iterator[tuple[Path, str]]:
+    """(path, first ``size`` characters) of each regular file directly in the folders whose suffix (lower
+    case, "" for none) is one of ``suffixes``, in name order: the programs a control finds by their
+    header. Confined as :func:`find_in`: a link that leads out, a FIFO or a device is passed over, and
+    only the head of a file is read (a program folder may hold large files)."""
+    for folder in folders:
+        root = FileRoot(folder)
+        try:
+            names = root.names()
+        except OSError:
+            continue
+        for name in names:
+            if Path(name).suffix.lower() not in suffixes:
+                continue
+            place = Place((name,), name)
+            try:
+                fd = root.open(place)
+            except (FileRootError, OSError):
+                continue
+            try:
+                head = os.read(fd, size)
+            except OSError:
+                continue
+            finally:
+                os.close(fd)
+            yield root.path_of(place), without_bom(head.decode("latin-1"))  # read as programs are read

@@ -9,12 +9,11 @@ Dialects read and write it through these objects only; the SQLite store
 
 from __future__ import annotations
 
-import stat
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from .files import FileRoot, FileRootError
+from .files import find_in
 
 
 @dataclass(slots=True)
@@ -104,22 +103,17 @@ class Machine:
         """The zero offset ``table`` (e.g. "G54"), zeros when the machine file leaves it out."""
         return self.offsets.setdefault(table, [0.0] * len(self.axes))
 
-    def find_program(self, name: str, extensions: tuple[str, ...] = (), ignore_case: bool = True) -> Path | None:
+    def own_files(self) -> tuple[Path, ...]:
+        """The machine file this machine was read from (none for the built-in machine): a program may not
+        reach it even when the file root is its folder."""
+        p = Path(self.source)
+        return (p.absolute(),) if p.is_file() else ()
+
+    def find_program(self, name: str, extensions: tuple[str, ...] = (), ignore_case: bool = True,
+                     private: tuple[Path, ...] = ()) -> Path | None:
         """Search the program path for ``name`` as written, then with each extension (and, unless the
-        control tells upper from lower case, in any case). Each folder of the path confines the name
-        as a file root does (files.FileRoot): an absolute name or one that climbs out finds nothing,
-        and only a regular file is a program -- so nothing here tells whether a host file exists."""
+        control tells upper from lower case, in any case), each folder confining the name as a file
+        root does (:func:`files.find_in`). ``private``: folders (the state directory) a name may not
+        reach even inside a program folder."""
         candidates = [name] + [name + ext for ext in extensions if not name.lower().endswith(ext.lower())]
-        for folder in self.program_path:
-            root = FileRoot(folder)
-            for cand in candidates:
-                place = root.find(cand, ignore_case)  # controls of the era were case-insensitive
-                if place is None:
-                    continue
-                try:
-                    st = root.stat(place)
-                except (FileRootError, OSError):
-                    continue
-                if st is not None and stat.S_ISREG(st.st_mode):
-                    return root.path_of(place)
-        return None
+        return find_in(self.program_path, candidates, ignore_case, private)

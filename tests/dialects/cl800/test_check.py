@@ -72,6 +72,24 @@ def test_lists_on_the_program_path(tmp_path: Path):
     assert get_dialect("cl800").build(str(p), text, m).text() == "%SPF81\n@201 R900 K5 M17\n"
 
 
+def test_lists_are_looked_for_inside_the_program_folders_only(tmp_path: Path):
+    """A list name is a name in a program folder, as a program name is (machine.files): "a/../../" with
+    an extension would read ../.ext above the folder, and a link in the folder may lead anywhere; both
+    printed the host file's first line in the diagnostic. They are lists that do not exist (E200)."""
+    progs = tmp_path / "progs"
+    (progs / "a").mkdir(parents=True)
+    (tmp_path / ".ext").write_text("HOST-SECRET\n")
+    (tmp_path / "host.cl8").write_text("HOST-SECRET\n")
+    (progs / "LINKED.cl8").symlink_to(tmp_path / "host.cl8")
+    m = Machine()
+    m.program_path = [progs]
+    for name in ("a/../../", "LINKED"):
+        (progs / "p.cl8").write_text(f'PROGRAM 81;\nCHANNEL NC 1;\nGLOBAL: "{name}";\nBEGIN\nEND.\n')
+        diags = check(progs / "p.cl8", machine=m)
+        assert [(d.code, d.span.line) for d in diags] == [("E200", 3)], name
+        assert not any("HOST-SECRET" in str(d) for d in diags)
+
+
 def test_strict_mode_drops_the_leniencies(tmp_path: Path):
     m = Machine()
     m.sections["cl800"] = {"strict": True}

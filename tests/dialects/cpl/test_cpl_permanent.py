@@ -55,6 +55,17 @@ def test_definable_permanents_created_kept_and_deleted(tmp_path, run_text):
     assert r["variables"]["NEW?"] is True and r["variables"]["L$"] == "FLANGE-1"
 
 
+def test_a_declaration_file_a_program_wrote_is_read_at_the_next_start(tmp_path, run_text):
+    """anwperm.dat written with OPENW/PRN# is in the control's file form (records, then the EOF marker
+    ETX LF); the marker ends the declarations, it is no declaration line (CPL038 before)."""
+    m = mill(tmp_path)
+    r = run_text('10 OPENW(1,"anwperm.dat")\n20 PRN#(1,"DEF INT @COUNTER")\n30 CLOSE(1)\nM30\n', name="w.cpl", machine=m)
+    assert r["status"] == "ok" and (tmp_path / "files" / "anwperm.dat").read_bytes().endswith(b"\x03\n")
+    r = run_text("10 @COUNTER% = 5\nM30\n", name="p.cpl", machine=m)
+    assert r["status"] == "ok", r["error"]
+    assert run_text("10 C% = @COUNTER%\nM30\n", name="p.cpl", machine=m)["variables"]["C%"] == 5
+
+
 def test_declarations_beyond_the_memory_budget_are_error_1869(tmp_path, run_text):
     m = mill(tmp_path)
     # 3 + 20 + 12583 * 8 = 100,687 bytes > 100,678 (manual L580-613)

@@ -215,7 +215,8 @@ DAMAGE = ['10 OPENW(1,"/T.npv")\n11 PRN#(1,"G54 1 2")\n12 CLOSE(1)',  # a row tw
           '10 OPENW(1,"/T.npv")\n11 REWRITE(1)\n12 CLOSE(1)']  # empty
 DAMAGED_TEXT = [["ZS-TABLE CM STRICT=0"] + table_file()[1:], table_file()[:1] + ["X Y Z"] + table_file()[2:],
                 table_file()[:2] + ["G54 1 2 x"] + table_file()[3:], table_file()[:2] + ["G53 0 0 0"] + table_file()[3:],
-                table_file()[:2] + ["G54 0 0 inf"] + table_file()[3:], table_file(columns=("X", "X", "Z"))]
+                table_file()[:2] + ["G54 0 0 inf"] + table_file()[3:], table_file(columns=("X", "X", "Z")),
+                table_file()[:2] + ["G54 1_0 0 0"] + table_file()[3:]]  # Python's float() reads "1_0" as 10
 
 
 @pytest.mark.parametrize("damage", DAMAGE)

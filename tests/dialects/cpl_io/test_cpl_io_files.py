@@ -57,6 +57,7 @@ def test_open_errors(fs):
     assert error_of(fs.OPENW, 1, "P1", 130, 0).code == "CPL603"
     assert error_of(fs.OPENW, 1, "../outside").message.startswith("INVALID FILE NAME")
     assert error_of(fs.OPENW, 1, "A" * 31).code == "CPL609"
+    assert error_of(fs.OPENW, 1, None).message == "INVALID FILE NAME: NUL"  # not Python's "None"
     assert error_of(fs.OPENR, 1, "MISSING").code == "CPL612"
     fs.OPENW(1, "P1")
     assert error_of(fs.OPENW, 2, "P1").code == "CPL611"  # already open for writing

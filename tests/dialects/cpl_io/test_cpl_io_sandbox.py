@@ -7,6 +7,7 @@ from __future__ import annotations
 import os
 import shutil
 import sqlite3
+import struct
 import subprocess
 import sys
 import tempfile
@@ -181,6 +182,21 @@ def test_the_state_directory_is_out_of_reach_with_file_root_dot(cpl, tmp_path, s
     assert again["variables"]["A%"] == 4711
 
 
+def test_the_state_directory_itself_is_no_folder_of_the_file_root(cpl, tmp_path):
+    """FILEACCESS and FILEDATE do not tell the state directory's folder (or a link to it) from a missing
+    name, and OPENW of it is refused as out of reach, like every name below it."""
+    m = machine(tmp_path, file_root=".")
+    assert cpl("10 @1=4711\nM30\n", machine=m)[0]["status"] == "ok"
+    (tmp_path / "state").symlink_to(".ncvm")
+    (tmp_path / "folder").mkdir()
+    r, _ = cpl('1 DIM D$(8),E$(8)\n10 A%=FILEACCESS(".ncvm")\n20 B%=FILEACCESS("state")\n30 C%=FILEACCESS("folder")\n'
+               '40 D$=FILEDATE(".ncvm")\n50 E$=FILEDATE("folder")\nM30\n', machine=m)
+    got = r["variables"]
+    assert (got["A%"], got["B%"], got.get("D$", "")) == (-1, -1, "") and got["C%"] & 8 and got["E$"]
+    r, _ = cpl('10 OPENW(1,".ncvm")\nM30\n', machine=m)
+    assert refused(r, 1, "state directory")
+
+
 def test_the_state_directory_run_from_the_command_line(tmp_path):
     """The same with a real machine file and ``ncvm run``: ERASE of the store is refused."""
     (tmp_path / "machine.toml").write_text('[[axis]]\nname = "X"\n\n[paths]\nfile_root = "."\n')
@@ -188,6 +204,41 @@ def test_the_state_directory_run_from_the_command_line(tmp_path):
     done = ncvm_run(tmp_path, '10 E%=ERASE(".ncvm/store.sqlite")\nM30\n', "-m", "machine.toml")
     assert done.returncode == 1 and "error CPL609" in done.stderr and "state directory" in done.stderr
     assert store_is_intact(tmp_path / ".ncvm")
+
+
+def test_a_hard_link_to_the_store_is_refused_but_not_the_roots_own_hard_links(cpl, tmp_path):
+    """The built-in machine keeps its file root in the state directory (.ncvm/files): a hard link planted
+    there to the store is refused, while two names of one file of the root itself are an ordinary file
+    (they were refused as "a hard link to a file of the state directory")."""
+    assert cpl("10 @1=4711\nM30\n")[0]["status"] == "ok"
+    files = tmp_path / ".ncvm" / "files"
+    files.mkdir()
+    os.link(tmp_path / ".ncvm" / "store.sqlite", files / "planted")
+    (files / "A").write_text("DATA\n")
+    os.link(files / "A", files / "B")
+    r, _ = cpl('10 OPENW(1,"planted")\n20 REWRITE(1)\nM30\n')
+    assert refused(r, 1, "hard link")
+    assert store_is_intact(tmp_path / ".ncvm")
+    r, _ = cpl('1 DIM S$(8)\n10 OPENR(1,"A")\n20 INP#(1,S$)\nM30\n')
+    assert r["status"] == "ok" and r["variables"]["S$"].rstrip() == "DATA", r["error"]
+
+
+@pytest.mark.parametrize("statement", ['E%=ERASE("machine.toml")', 'OPENW(1,"machine.toml")\n20 REWRITE(1)',
+                                       'SCSL(1,"S",51,"machine.toml")', 'OPENR(1,"machine.toml")',
+                                       'OPENW(1,"linked.toml")\n20 REWRITE(1)', 'FXCR(0,"machine.toml")'])
+def test_the_machine_file_in_the_file_root_is_out_of_reach(tmp_path, statement):
+    """file_root = "." is the machine file's own folder: a program that erased or rewrote the machine file
+    would stop every later run (or, were the file still TOML, choose the next run's file root). It is
+    refused like the state directory, under any name (a hard link too)."""
+    text = '[[axis]]\nname = "X"\n\n[paths]\nfile_root = "."\n'
+    (tmp_path / "machine.toml").write_text(text)
+    os.link(tmp_path / "machine.toml", tmp_path / "linked.toml")
+    done = ncvm_run(tmp_path, f"10 {statement}\nM30\n", "-m", "machine.toml")
+    assert done.returncode == 1 and "error CPL609" in done.stderr and "machine file" in done.stderr, done.stderr
+    assert (tmp_path / "machine.toml").read_text() == text
+    ok = ncvm_run(tmp_path, '1 DIM D$(8)\n10 A%=FILEACCESS("machine.toml")\n20 D$=FILEDATE("machine.toml")\n'
+                            '30 PRN#(0,"A",A%,D$)\nM30\n', "-m", "machine.toml")
+    assert ok.returncode == 0 and ok.stdout.split() == ["A", "-1"], ok.stdout + ok.stderr
 
 
 # -- bitmaps (BMP) -------------------------------------------------------------------------------------------
@@ -223,6 +274,41 @@ def test_bmp_refuses_a_link_out_and_reads_its_own_folder(cpl, tmp_path):
     assert refused(r, 1, "out of the file root")
 
 
+def rle_bomb(width: int, height: int) -> bytes:
+    """An 8-bit run-length BMP of ``width`` x ``height`` pixels in a few hundred bytes: "delta" escapes
+    (0, 2, 0, 255) skip 255 rows each. It holds no byte 13, so a CPL program can write it with PRN#."""
+    rle = b"".join(bytes([0, 2, 0, min(255, height - row)]) for row in range(0, height, 255)) + b"\x00\x01"
+    palette = b"\x00\x00\x00\x00\xff\xff\xff\x00"
+    start = 14 + 40 + len(palette)
+    info = struct.pack("<IiiHHIIiiII", 40, width, height, 1, 8, 1, len(rle), 2835, 2835, 2, 2)
+    return b"BM" + struct.pack("<IHHI", start + len(rle), 0, 0, start) + info + palette + rle
+
+
+def test_bmp_does_not_decode_a_bitmap_far_larger_than_the_screen(cpl, tmp_path):
+    """A program writes a 3000 x 3000 run-length bitmap of 300 bytes and shows it: decoding it would take
+    memory and time out of all proportion to the 633 x 415 window (9000 x 9000 took 900 MB and 3 s
+    per BMP). It warns like a file that holds no image, and the program goes on."""
+    data = rle_bomb(3000, 3000)
+    assert b"\r" not in data and len(data) < 400
+    writes = "".join(f"{20 + i}PRN#(1,{','.join(f'CHR$({b})' for b in data[i * 16:(i + 1) * 16])};)\n"
+                     for i in range((len(data) + 15) // 16))
+    r, session = cpl('10 OPENW(1,"cplbmp/big.bmp",130)\n' + writes + '90 CLOSE(1)\n91 BMP(0,0,"big")\nM30\n')
+    assert (tmp_path / ".ncvm" / "files" / "cplbmp" / "big.bmp").read_bytes().startswith(data)
+    assert r["status"] == "ok", r["error"]
+    assert "warning CPL803: cplbmp\\big.bmp is not existing: 3000 x 3000 pixels, more than 4194304 (2048 x 2048)" in r["output"]
+
+
+def test_bmp_shows_bmp_files_only(cpl, tmp_path):
+    """BMP shows "*.bmp" picture files (L5128): a file of another image format (for which an image library
+    may start helper programs) is not decoded."""
+    bitmaps = tmp_path / ".ncvm" / "files" / "cplbmp"
+    bitmaps.mkdir(parents=True)
+    Image.new("RGB", (8, 8), (255, 0, 0)).save(bitmaps / "png.bmp", format="PNG")
+    r, session = cpl('10 BMP(0,0,"png")\nM30\n')
+    assert r["status"] == "ok" and "warning CPL803: cplbmp\\png.bmp is not existing" in r["output"]
+    assert not (session.screen.canvas == (255, 0, 0)).all(axis=2).any()
+
+
 # -- MCOPS program selection ---------------------------------------------------------------------------------
 def test_mcops_does_not_tell_whether_a_host_file_exists(cpl, tmp_path):
     """MCOPS(4) answers 0 for a program it finds and 6 (no program) otherwise: host paths and names out of
@@ -238,6 +324,20 @@ def test_mcops_does_not_tell_whether_a_host_file_exists(cpl, tmp_path):
     r, _ = cpl(text, machine=m)
     assert r["status"] == "ok", r["error"]
     assert [r["variables"][f"R{i}%"] for i in range(1, len(names) + 1)] == [0, 6, 6, 6, 6, 6]
+
+
+def test_mcops_does_not_tell_whether_a_file_of_the_state_directory_exists(cpl, tmp_path):
+    """The state directory inside a program folder (``ncvm run prog.cpl`` in the program's own folder keeps
+    .ncvm there): MCOPS(4) finds no program in it, so the store is neither selected nor told apart from a
+    missing name."""
+    m = machine(tmp_path)  # program path ".": the folder of prog.cpl, which holds .ncvm
+    (tmp_path / "P1.cpl").write_text("M30\n")
+    assert cpl("10 @1=1\nM30\n", machine=m)[0]["status"] == "ok"
+    names = ["P1", ".ncvm/store.sqlite", ".ncvm/lock", ".ncvm/NONE", ".ncvm"]
+    text = "".join(f'{10 * i} R{i}%=MCOPS(4,2,"{n}")\n' for i, n in enumerate(names, 1)) + "M30\n"
+    r, _ = cpl(text, machine=m)
+    assert r["status"] == "ok", r["error"]
+    assert [r["variables"][f"R{i}%"] for i in range(1, len(names) + 1)] == [0, 6, 6, 6, 6]
 
 
 # -- the permanent-variable declarations -----------------------------------------------------------------------

@@ -401,6 +401,20 @@ def test_outp_data_subroutines(tmp_path):
     assert r["variables"]["V24"] == ["PORT 1", "%SPF12", "R1=1", "M17"]
 
 
+def test_programs_found_by_their_header_stay_inside_the_program_folder(tmp_path):
+    """A sub-program call and OUTP DATA find programs by their %SPF header among the files of the program
+    folders: a link there that leads out of the folder is no program (the host file was run and output)."""
+    (tmp_path / "host.spf").write_text("%SPF77\nR1=5\nM17\n")
+    work = tmp_path / "work"
+    work.mkdir()
+    (work / "X.spf").symlink_to(tmp_path / "host.spf")
+    (work / "Y.spf").write_text("%SPF78\nR2=6\nM17\n")
+    r = _ok(work, "%MPF1\nN10 L78\nN20 @a20 K1 @a26 K2 K70 K80\nM30\n")
+    assert (R(r, 1), R(r, 2)) == (0.0, 6.0) and r["variables"]["V24"] == ["PORT 1", "%SPF78", "R2=6", "M17"]
+    r = _run(work, "%MPF1\nN10 L77\nM30\n")
+    assert r["status"] == "error" and R(r, 1) == 0.0
+
+
 def test_pcda_write_bit_range(tmp_path):
     """PCDA(...) = value: bit address 4-6 (L3366, L6674)."""
     assert "PCDA bit 3 outside 4-6" in _cl800_error(tmp_path, "%MPF1\n@44b K1 K1 K3 K1\nM30\n")

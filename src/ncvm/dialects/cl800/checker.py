@@ -11,6 +11,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from ...machine.files import find_in
 from ...source import read_text
 from . import ast
 from .lexer import Lexer, norm
@@ -109,17 +110,9 @@ class Checker:
                 self.sym.by_name[key] = d
 
     def find_list(self, name: str) -> Path | None:
-        for folder in self.search:
-            for cand in [name] + [name + e for e in LIST_EXTENSIONS]:
-                p = folder / cand
-                if p.is_file():
-                    return p
-            if folder.is_dir():
-                low = {name.lower()} | {(name + e).lower() for e in LIST_EXTENSIONS}
-                for q in sorted(folder.iterdir()):
-                    if q.name.lower() in low and q.is_file():
-                        return q
-        return None
+        """The list file ``name`` (or with an extension, in any case) inside one of the search folders,
+        which confine it as the program path does: a name or link that leads out finds nothing."""
+        return find_in(self.search, [name] + [name + e for e in LIST_EXTENSIONS])
 
     def load_list(self, kind: str, name: str, line: int, col: int) -> None:
         where = ast.Node(line, col)

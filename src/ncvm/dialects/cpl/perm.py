@@ -13,6 +13,7 @@ import re
 
 from ...machine.files import FileRoot, FileRootError, Place
 from .errors import CplError
+from .io.files import EOF_MARKER
 from .io.strings import CharacterField
 from .values import to_bool, to_double, to_int, to_real, to_str
 
@@ -68,9 +69,10 @@ def read_declarations(root: FileRoot) -> dict[str, tuple[str, list[int]]]:
 def _declaration_text(root: FileRoot, place: Place, path: str) -> str:
     """A declaration file's text. It is never read through a symbolic link (one planted in the file root
     would hand the start-up another file's lines), nor from a FIFO, device or socket: such an entry is
-    a declaration file error, not an empty declaration -- that would delete every variable it declares."""
+    a declaration file error, not an empty declaration -- that would delete every variable it declares.
+    The text ends at the EOF marker of the control's file form, as a file written with OPENW has it."""
     try:
-        return root.read_bytes(place, follow=False).decode("latin-1")
+        return root.read_bytes(place, follow=False).decode("latin-1").partition(EOF_MARKER[0])[0]
     except FileRootError as e:
         raise DeclError("CPL038", f"{e} (INVALID FILE NAME)", path, 0) from None
     except OSError as e:

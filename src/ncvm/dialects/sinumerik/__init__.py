@@ -14,6 +14,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from ...diagnostics import CompileFailed
+from ...machine.files import heads
 from ...runtime.codegen import PySource
 from ...source import read_text
 from ..base import Dialect
@@ -22,6 +23,7 @@ from .lint import stop_dec_lint
 from .ncdata import NAMESPACE, NcData
 from .reader import PartProgram, read_program
 from .runtime import NAMESPACE_GLOBALS, Channel
+from .v24 import PROGRAM_SUFFIXES
 
 _HEADER = re.compile(r"^\s*%\s*(SPF|MPF)\s*(\d+)\s*$", re.I | re.M)
 _AT = re.compile(r"@[0-9a-f]{3}\b", re.I)
@@ -78,18 +80,10 @@ class SubProgramLibrary:
             p = self.machine.find_program(name, (".spf", ".SPF"))
             if p is not None:
                 return p
-        for folder in self.machine.program_path:
-            if not folder.is_dir():
-                continue
-            for p in sorted(folder.iterdir()):
-                if p.is_file() and p.suffix.lower() in (".spf", ".mpf", ".txt", ""):
-                    try:
-                        head = read_text(p)[:200]
-                    except OSError:
-                        continue
-                    m = _HEADER.search(head)
-                    if m and m.group(1).upper() == "SPF" and int(m.group(2)) == number:
-                        return p
+        for p, head in heads(self.machine.program_path, PROGRAM_SUFFIXES):
+            m = _HEADER.search(head)
+            if m and m.group(1).upper() == "SPF" and int(m.group(2)) == number:
+                return p
         return None
 
 

@@ -24,6 +24,7 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
+from ...machine.files import heads
 from ...source import read_text
 from .ncdata import Cl800Error
 
@@ -36,6 +37,8 @@ AREA_OF_TYPE = {5: ("nc_md", "MD"), 8: ("nc_sd", "SD"), 9: ("plc_md", "MDP")}
 _LINE = re.compile(r"(?:(?P<area>MDP|MD|SD)(?P<addr>\d+)|R(?P<r>\d+))=(?P<value>[-+]?[\d.]+)$")
 _TO = re.compile(r"D(\d+)((?:\s+P\d+=[-+]?[\d.]+)+)$")
 _ZO = re.compile(r"G5([4-7])\s+(.*)$")
+#: the files of a program folder that may hold a program (found by its %MPF/%SPF header)
+PROGRAM_SUFFIXES = (".spf", ".mpf", ".txt", "")
 _PROGRAM = re.compile(r"\s*%\s*(MPF|SPF)\s*(\d+)", re.I)
 
 
@@ -88,17 +91,10 @@ def data_lines(data, programs, kind: int, start: int, end: int) -> list[str]:
 def find_programs(folders: list[Path], kind: str, start: int, end: int) -> list[Path]:
     """Programs %<kind><n> with start <= n <= end along the program path, by number."""
     found: dict[int, Path] = {}
-    for folder in folders:
-        if not folder.is_dir():
-            continue
-        for p in sorted(folder.iterdir()):
-            if p.is_file() and p.suffix.lower() in (".spf", ".mpf", ".txt", ""):
-                try:
-                    m = _PROGRAM.match(read_text(p)[:200])
-                except OSError:
-                    continue
-                if m and m.group(1).upper() == kind and start <= int(m.group(2)) <= end:
-                    found.setdefault(int(m.group(2)), p)
+    for p, head in heads(folders, PROGRAM_SUFFIXES):
+        m = _PROGRAM.match(head)
+        if m and m.group(1).upper() == kind and start <= int(m.group(2)) <= end:
+            found.setdefault(int(m.group(2)), p)
     return [found[n] for n in sorted(found)]
 
 

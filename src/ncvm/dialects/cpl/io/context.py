@@ -50,7 +50,7 @@ class CplIO:
         elif options.keyboard:
             keys = TerminalKeys(sys.stdin.fileno(), sys.stderr)
         io = cls(session.machine.file_root, clock=session.machine.clock, keys=keys, say=session.say, typ2=typ2,
-                 private=(options.state_dir,))
+                 private=(options.state_dir, *session.machine.own_files()))
         if isinstance(keys, TerminalKeys):
             keys.view = io.screen.text_view
         io.mmc.attach(options.mmc_client)

@@ -116,7 +116,7 @@ class CplFiles:
             name = f"P{name}"
         text = text_of(name)
         if not text or not text.strip() or "\x00" in text:  # CHR$(0) ends a name on the control's side
-            raise fail("INVALID_FILE_NAME", repr(text))
+            raise fail("INVALID_FILE_NAME", "NUL" if text is None else repr(text))
         text = text.strip()
         base = text.replace("\\", "/").rstrip("/").split("/")[-1]
         if len(base) > MAX_NAME or base in (".", ".."):

@@ -26,6 +26,8 @@ from .values import text_of
 WIDTH, HEIGHT = 633, 415  # whole CPL window (A.3.C)
 GRAPH_TOP = 374  # highest graphics y (L4988)
 BAND = 40  # softkey band under the graphics area (GPR offset, L5100)
+#: the largest bitmap BMP decodes (16 times the window; what lies outside the window is cut off anyway)
+MAX_BITMAP_PIXELS = 2048 * 2048
 
 RGB = tuple[int, int, int]
 
@@ -402,9 +404,9 @@ class Graphics:
             raise fail("INVALID_FILE_NAME", str(e)) from None
         except OSError:
             data = None
-        src = _image(data) if data is not None else None
+        src, why = _image(data) if data is not None else (None, "")
         if src is None:
-            self._warn(warning("BITMAP_MISSING", name=file))
+            self._warn(warning("BITMAP_MISSING", why, name=file))
             return
         top = GRAPH_TOP - y
         h, w = min(src.shape[0], HEIGHT - top), min(src.shape[1], WIDTH - x)
@@ -430,12 +432,18 @@ class Graphics:
             self.warn(w)
 
 
-def _image(data: bytes):
-    """The RGB pixels of an image file's bytes, None when they hold no image PIL can read."""
+def _image(data: bytes) -> tuple[np.ndarray | None, str]:
+    """The RGB pixels of a BMP file's bytes, or None and why not. Only the BMP format is decoded (the
+    manual's "*.bmp" picture files; other formats can make an image library start helper programs),
+    and only up to :data:`MAX_BITMAP_PIXELS`: its header is read first, because a run-length bitmap
+    of a few hundred bytes, which a program can write itself, may declare 9000 x 9000 pixels."""
     from PIL import Image
 
     try:
-        with Image.open(io.BytesIO(data)) as im:
-            return np.asarray(im.convert("RGB"), dtype=np.uint8)
+        with Image.open(io.BytesIO(data), formats=("BMP",)) as im:
+            width, height = im.size
+            if width * height > MAX_BITMAP_PIXELS:
+                return None, f"{width} x {height} pixels, more than {MAX_BITMAP_PIXELS} (2048 x 2048)"
+            return np.asarray(im.convert("RGB"), dtype=np.uint8), ""
     except (OSError, ValueError, Image.DecompressionBombError):
-        return None
+        return None, ""

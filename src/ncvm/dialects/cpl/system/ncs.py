@@ -372,7 +372,8 @@ def f_mcops(rt, fct, chan, p1=None, p2=None, p3=None, p4=None):
         if own:
             return 11
         name = nul(p1)
-        if rt.machine.find_program(name, (".cpl", ".CPL"), ignore_case=False) is None:
+        private = (rt.session.options.state_dir, *rt.machine.own_files())  # a program folder may hold them
+        if rt.machine.find_program(name, (".cpl", ".CPL"), ignore_case=False, private=private) is None:
             return NO_PROGRAM
         st["selected"][chan] = name
         return OK

@@ -19,6 +19,7 @@ A table is written whole into a temporary file beside it, synced, and renamed ov
 from __future__ import annotations
 
 import math
+import re
 import stat
 
 from ....machine.files import Place
@@ -29,6 +30,8 @@ MAGIC = "ZS-TABLE"
 UNITS = {"MM": "mm", "INCH": "inch"}
 MAX_COLUMNS = 64  # the column index of FXC is 1..64 (L1736)
 WIDTH = 16
+#: a value as ncvm writes it (repr of a float); float() alone would also read "1_0" as 10
+NUMBER = re.compile(r"[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?")
 
 
 def records_of(table: dict) -> list[str]:
@@ -75,10 +78,9 @@ def parse(records: list[str], shown: str) -> dict:
             raise _damaged(shown, n, f"row {words[0]!r} ({'twice' if row in rows else 'G54..G59, G154..G159, G254..G259'})")
         if len(words) - 1 != len(columns):
             raise _damaged(shown, n, f"{len(words) - 1} values for {len(columns)} columns")
-        try:
-            values = [float(w) for w in words[1:]]
-        except ValueError:
-            raise _damaged(shown, n, "a value is no number") from None
+        if not all(NUMBER.fullmatch(w) for w in words[1:]):
+            raise _damaged(shown, n, "a value is no number")
+        values = [float(w) for w in words[1:]]
         if not all(math.isfinite(v) for v in values):
             raise _damaged(shown, n, "a value is no finite number")
         rows[row] = values
