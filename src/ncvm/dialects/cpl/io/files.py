@@ -100,6 +100,7 @@ class CplFiles:
     on_editor_block: Callable[[str], None] | None = None
     durable: bool = True
     handles: dict[int, Handle] = field(default_factory=dict)
+    #: the PRN#(0) lines and warnings, kept only while no ``message`` / ``warn`` listener takes them
     messages: list[str] = field(default_factory=list)
     warnings: list[CplWarning] = field(default_factory=list)
     _message_pending: str = ""
@@ -405,14 +406,16 @@ class CplFiles:
                 self.on_editor_block(self.editor_block)
             return
         for line in text.split("\r"):
-            self.messages.append(line)
             if self.message is not None:
                 self.message(line)
+            else:
+                self.messages.append(line)
 
     def _warn(self, w: CplWarning) -> None:
-        self.warnings.append(w)
         if self.warn is not None:
             self.warn(w)
+        else:
+            self.warnings.append(w)
 
     # -- INP# ------------------------------------------------------------------------------
     def INP(self, n, *targets, semicolon: bool = False) -> list:  # noqa: N802 - INP#
