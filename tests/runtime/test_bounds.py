@@ -56,6 +56,23 @@ def test_cli_streams_every_line_but_json_keeps_a_bounded_number(tmp_path):
     assert doc["output"][0].split() == ["LINE", "1"] and doc["output"][-1].split() == ["LINE", str(n)]
 
 
+@pytest.mark.parametrize(("name", "text"), [("p.cpl", PRINTS.format(n=1_000_000)),
+                                            ("p.sap", "program P; var i: integer;\nbegin for i := 1 to 1000000 do "
+                                                      "writeln('LINE ', i); end.\n")],
+                         ids=["cpl", "sympas"])
+def test_cli_stops_quietly_when_its_output_is_closed(tmp_path, name, text):
+    """``ncvm run PROG | head -1``: the run stops at the next line it prints, without a traceback."""
+    prog = tmp_path / name
+    prog.write_text(text)
+    proc = subprocess.Popen([*NCVM, "run", str(prog), "--state", str(tmp_path / "s")], stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE, text=True)
+    assert proc.stdout.readline().split() == ["LINE", "1"]
+    proc.stdout.close()
+    stderr = proc.stderr.read()
+    assert proc.wait(timeout=60) == 1
+    assert "internal error" not in stderr and "Traceback" not in stderr and "Broken pipe" not in stderr, stderr
+
+
 class Hog(CanonSink):
     """A sink that holds on to memory at every move (as a toolpath held in full would)."""
 
