@@ -58,8 +58,8 @@ ZS_TABLE = Table((
 PLC_KEY = Text(pattern=r"(I|O|M|D[0-9]+|DB|DF|T|C|SM|S|EI|EO):[0-9]+", shape="<type><DM>:<byte> such as \"I:10\"")
 
 CPL = Table((
-    Field("lookahead", NONNEG_INT, "NC blocks prepared ahead of execution; 0 = no limit (WAIT / program end "
-                                   "drain)", 0, "blocks"),
+    Field("lookahead", NONNEG_INT, "NC blocks prepared ahead of execution; 0 = the control's block buffer: up "
+                                   "to 20,000 blocks wait, then the older 10,000 run", 0, "blocks"),
     Field("calls", Table(other=Either((NAME, Table((Field("program", NAME, "sub-program", required=True),
                                                     Field("modal", Flag(), "called again after every block with "
                                                                            "an axis word, until G80", False)))),
