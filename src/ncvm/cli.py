@@ -1,7 +1,7 @@
 """The ``ncvm`` command: run, check and compile programs of the legacy CNC languages.
 
-Exit codes of ``run``: 0 normal end, 1 compile errors or a run-time fault,
-2 usage error, 70 internal error (a bug in ncvm: please report it).
+Exit codes of ``run``: 0 normal end, 1 compile errors or a run-time fault (or stdout was
+closed, as by ``| head``: the run stops there), 2 usage error, 70 internal error (a bug in ncvm: please report it).
 """
 
 from __future__ import annotations
@@ -31,6 +31,13 @@ def _internal_error(exc: BaseException) -> None:
     click.echo(f"ncvm: internal error: {type(exc).__name__}: {exc}", err=True)
     click.echo("This is a bug in ncvm, not in your program. Please report it with the program and the "
                "command line (NCVM_DEBUG=1 shows the traceback).", err=True)
+
+
+def _detach_stdout() -> None:
+    """Point stdout at /dev/null, so that flushing it at exit does not fail once more."""
+    devnull = os.open(os.devnull, os.O_WRONLY)
+    os.dup2(devnull, sys.stdout.fileno())
+    os.close(devnull)
 
 
 _JSON = "ncvm.json"  # ctx.meta: --json is on the command line
@@ -90,6 +97,9 @@ class _Guarded(click.Group):
             ctx.exit(EXIT_FAULT)
         except KeyboardInterrupt:  # Ctrl-C outside the run itself (which reports RUN004 with its result)
             _interrupted(ctx)
+        except BrokenPipeError:  # stdout went away (`ncvm run ... | head`): stop as the other tools of a pipe do
+            _detach_stdout()
+            ctx.exit(EXIT_FAULT)
         except (click.exceptions.Exit, click.exceptions.Abort, click.ClickException):
             raise
         except Exception as e:  # noqa: BLE001 - the last line of defence

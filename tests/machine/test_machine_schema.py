@@ -426,3 +426,11 @@ def test_declared_keys_are_the_ones_the_dialects_read():
     for key, allowed in RECORD_KEYS.items():
         assert set(_fields("cpl", key)) == allowed, key
     assert set(section_defaults("sin800")) == KNOWN_KEYS
+
+
+def test_cpl_lookahead_0_is_documented_as_the_block_buffer():
+    """`[cpl] lookahead = 0` (the default) is the bounded block buffer, no longer "no limit"."""
+    from ncvm.dialects.cpl.runtime import BLOCK_BUFFER
+
+    text = json_schema()["properties"]["cpl"]["properties"]["lookahead"]["description"]
+    assert "no limit" not in text and f"{BLOCK_BUFFER:,}" in text and f"{BLOCK_BUFFER // 2:,}" in text, text

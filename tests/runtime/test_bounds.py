@@ -56,6 +56,23 @@ def test_cli_streams_every_line_but_json_keeps_a_bounded_number(tmp_path):
     assert doc["output"][0].split() == ["LINE", "1"] and doc["output"][-1].split() == ["LINE", str(n)]
 
 
+@pytest.mark.parametrize(("name", "text"), [("p.cpl", PRINTS.format(n=1_000_000)),
+                                            ("p.sap", "program P; var i: integer;\nbegin for i := 1 to 1000000 do "
+                                                      "writeln('LINE ', i); end.\n")],
+                         ids=["cpl", "sympas"])
+def test_cli_stops_quietly_when_its_output_is_closed(tmp_path, name, text):
+    """``ncvm run PROG | head -1``: the run stops at the next line it prints, without a traceback."""
+    prog = tmp_path / name
+    prog.write_text(text)
+    proc = subprocess.Popen([*NCVM, "run", str(prog), "--state", str(tmp_path / "s")], stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE, text=True)
+    assert proc.stdout.readline().split() == ["LINE", "1"]
+    proc.stdout.close()
+    stderr = proc.stderr.read()
+    assert proc.wait(timeout=60) == 1
+    assert "internal error" not in stderr and "Traceback" not in stderr and "Broken pipe" not in stderr, stderr
+
+
 class Hog(CanonSink):
     """A sink that holds on to memory at every move (as a toolpath held in full would)."""
 
@@ -126,3 +143,29 @@ def test_cli_program_too_large_to_read_within_the_limit_is_run006(tmp_path):
                          capture_output=True, text=True)
     assert run.returncode == 1
     assert "error RUN006: out of memory" in run.stderr and "internal error" not in run.stderr
+
+
+WRITES = """\
+10 OPENW(1, "LOG", 130)
+20 FOR I% = 1 TO 1000
+30 PRN#(1, "RECORD ", I%)
+40 NEXT I%
+50 CLOSE(1)
+M30
+"""
+
+
+@pytest.mark.parametrize(("space", "code"), [(2000, "CPL614"), (0, None)], ids=["bounded", "no-limit"])
+def test_a_cpl_run_writes_at_most_its_file_space(tmp_path, run_text, space, code):
+    from ncvm.machine.config import machine_from_dict
+
+    machine = machine_from_dict({"axis": [{"name": "X"}, {"name": "Y"}, {"name": "Z"}],
+                                 "paths": {"program_path": ["."], "file_root": "files"},
+                                 "cpl": {"file_space": space}}, "<test>", tmp_path)
+    r = run_text(WRITES, name="w.cpl", machine=machine)
+    log = (tmp_path / "files" / "LOG").read_text(encoding="latin-1")
+    if code is None:
+        assert r["status"] == "ok" and log.count("\n") == 1001
+    else:
+        assert r["error"]["code"] == code and r["error"]["line"] == 3, r["error"]
+        assert len(log) <= space and log.endswith("\x03\n")  # the records before it and the EOF marker

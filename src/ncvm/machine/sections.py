@@ -77,8 +77,8 @@ ZS_TABLE = Table((
 PLC_KEY = Text(pattern=r"(I|O|M|D[0-9]+|DB|DF|T|C|SM|S|EI|EO):[0-9]+", shape="<type><DM>:<byte> such as \"I:10\"")
 
 CPL = Table((
-    Field("lookahead", NONNEG_INT, "NC blocks prepared ahead of execution; 0 = no limit (WAIT / program end "
-                                   "drain)", 0, "blocks"),
+    Field("lookahead", NONNEG_INT, "NC blocks prepared ahead of execution; 0 = the control's block buffer: up "
+                                   "to 20,000 blocks wait, then the older 10,000 run", 0, "blocks"),
     Field("calls", Table(other=Either((NAME, Table((Field("program", NAME, "sub-program", required=True),
                                                     Field("modal", Flag(), "called again after every block with "
                                                                            "an axis word, until G80", False)))),
@@ -131,6 +131,8 @@ CPL = Table((
     )), max_len=10), "work areas and dead ranges (SD 200)", []),
     Field("language", NONNEG_INT, "national language (MACODA 6010 00010, SD(14))", 1),
     Field("date_format", Text(choices=("DD.MM.YY", "DD.MM")), "what DATE returns", "DD.MM.YY"),
+    Field("file_space", NONNEG_INT, "bytes the files a program writes (OPENW/PRN#, SCSL, ZS tables) may grow by "
+                                    "in one run, then FILE MEMORY FULL (CPL614); 0 = no limit", 1 << 30, "bytes"),
 ))
 
 # -- [cl800] ----------------------------------------------------------------------------------------

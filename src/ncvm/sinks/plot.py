@@ -17,7 +17,9 @@ from .toolpath import ARC, FEED, RAPID, ToolpathRecorder
 
 TOOL_COLOURS = ["tab:blue", "tab:orange", "tab:green", "tab:red", "tab:purple", "tab:brown", "tab:pink", "tab:olive"]
 MAX_POINTS = 200_000  # points drawn, all lines together (and as many plunge marks)
-BUCKET = 32  # thinning keeps at most 8 of each 32 consecutive points of a line
+#: thinning keeps at most 8 of each BUCKET consecutive points of a line (first, last, the extremes of X, Y, Z): on
+#: a smooth curve only the two ends, so 16 (not more) keeps its chords close to it
+BUCKET = 16
 
 
 class PlotPoints:

@@ -28,3 +28,26 @@ def test_cplio_for_session(tmp_path):
                               "warning CPL803: cplbmp\\nothing.bmp is not existing"]
     assert (tmp_path / "end.png").stat().st_size > 1000
     assert not io.mode.ljust and io.files.handles == {}
+
+
+def test_screen_of_a_run_does_not_keep_what_the_session_keeps(tmp_path):
+    """Millions of PRN#(0) lines and warnings: the session keeps a bounded number of lines; the files and the
+    screen used to keep every line and warning as well."""
+    import tracemalloc
+
+    session = Session(Machine(file_root=tmp_path / "files"), RunOptions(state_dir=tmp_path / ".ncvm",
+                                                                        max_output_lines=10), dialect="cpl")
+    io = CplIO.for_session(session)
+    tracemalloc.start()
+    try:
+        before = tracemalloc.get_traced_memory()[0]
+        for i in range(25_000):
+            io.files.PRN(0, "LINE ", i)
+            io.files.PRN(0, "#", 123)  # a line and a warning (format overflow)
+        io.screen.BMP(0, 0, "nothing")  # a warning of the graphics
+        grown = tracemalloc.get_traced_memory()[0] - before
+    finally:
+        tracemalloc.stop()
+    assert session.output.dropped == 75_001 - 10
+    assert session.output.lines()[-1] == "warning CPL803: cplbmp\\nothing.bmp is not existing"
+    assert grown < 200_000, grown  # was ~6 MB: each line and warning kept by the files and the screen

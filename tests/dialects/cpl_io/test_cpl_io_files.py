@@ -191,6 +191,35 @@ def test_block_exceeds_1024_bytes(fs):
     assert error_of(fs.PRN, 1, "A" * 25).code == "CPL604"
 
 
+def test_files_of_a_run_grow_by_at_most_the_file_space(fs):
+    """A runaway PRN# loop ends with FILE MEMORY FULL (CPL614), over every file the run writes; the file
+    keeps its records and its EOF marker; what REWRITE gives back can be written again."""
+    fs.space = 1000
+    fs.OPENW(1, "LOG")
+    for _ in range(9):
+        fs.PRN(1, "A" * 99)  # 100 bytes a record
+    fs.OPENW(2, "OTHER")
+    err = error_of(fs.PRN, 2, "B" * 99)
+    assert err.code == "CPL614" and "1,000 bytes" in err.message, err.message
+    assert content(fs, "LOG") == ("A" * 99 + "\n") * 9 + ETX and content(fs, "OTHER") == ETX
+    fs.REWRITE(1)
+    for _ in range(9):
+        fs.PRN(1, "C" * 99)  # as much as the file held before
+    fs.CLOSE(1)
+    assert content(fs, "LOG") == ("C" * 99 + "\n") * 9 + ETX
+
+
+def test_a_write_the_host_refuses_is_a_file_error_not_a_crash(fs, monkeypatch):
+    fs.OPENW(1, "LOG")
+
+    def disk_full(fd, data, offset):
+        raise OSError(28, "No space left on device")
+
+    monkeypatch.setattr(os, "pwrite", disk_full)
+    err = error_of(fs.PRN, 1, "A")
+    assert err.code == "CPL615" and err.message == "FILE CANNOT BE WRITTEN: LOG: No space left on device"
+
+
 def test_chr13_starts_a_new_record(fs):
     fs.OPENW(1, "P1")
     fs.PRN(1, "ONE", "\r", "TWO")

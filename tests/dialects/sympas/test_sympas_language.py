@@ -146,6 +146,15 @@ def test_write_formats(sap):
     assert r["output"] == ["a1 bTRUE c100 0.3333333333", "next"]
 
 
+def test_task_string_keeps_the_255_characters_it_shows(sap):
+    """A WRITE loop without WRITELN: the string is cut at 255 characters as it grows (it used to grow and be
+    copied at every WRITE, and at the program end the whole string was shown)."""
+    r = sap(prog("for i := 1 to 2000 do write('0123456789');", "var i: integer;"))
+    assert r["output"] == ["0123456789" * 25 + "01234"]
+    r = sap(prog("for i := 1 to 2000 do write('0123456789'); writeln('end'); writeln('next');", "var i: integer;"))
+    assert r["output"] == ["0123456789" * 25 + "01234", "next"]
+
+
 def test_common_buffer_roundtrip(sap):
     # §6.6.52-54, 76-78
     r = sap(prog("WRCBD(8, 100.2e-128); WRCBI(500, -1000); WRCBS(504, 3.99);"

@@ -14,6 +14,9 @@ from .symbols import EVENTS
 from .values import fault
 
 RUNNING, STOPPED, STEP, ENDED, ERROR, READY, EMPTY = "RUNNING", "STOPPED", "STEP", "ENDED", "ERROR", "READY", "EMPTY"
+#: characters of a task's output string that are shown (and kept: a WRITE loop without WRITELN would grow
+#: the string, and each WRITE copy it, without end)
+MAX_STRING = 255
 TASK_SYS = ("DTCA1", "DTCA2", "DTCA3", "LET", "LST", "PHI", "PN1", "PN2", "PN3", "TRAC", "TROVR", "TROVRST",
             "TRTVL", "TRVL", "NFRAX", "PU", "SSFP", "TU")
 _I32 = struct.Struct("<i")
@@ -243,11 +246,12 @@ class Task:
         if self.tskinfo & 2:
             self.line = ""
             self.tskinfo = 0
-        self.line += "".join(items)
+        if len(self.line) < MAX_STRING:
+            self.line = (self.line + "".join(items))[:MAX_STRING]
         self.tskinfo |= 1
         if newline:
             self.tskinfo |= 2
-            self.card.session.say(self.line[:255])
+            self.card.session.say(self.line)
             if self.card.sys["MODEREG"] & (1 << 26):
                 self.state = STOPPED
                 return True

@@ -14,7 +14,7 @@ from pathlib import Path
 
 from ....machine.files import FileRoot
 from .errors import CplWarning
-from .files import CplFiles
+from .files import FILE_SPACE, CplFiles
 from .format import OutputMode
 from .mmc import Mmc
 from .screen import KeyScript, Screen
@@ -38,7 +38,8 @@ class CplIO:
     @classmethod
     def for_session(cls, session, typ2: bool = False) -> "CplIO":
         """The I/O of a run: the machine's file root and clock, output to say; the key script of
-        ``--keys`` or, with ``keyboard``, the operator at the terminal on stdin; the editor block of
+        ``--keys`` or, with ``keyboard``, the operator at the terminal on stdin; the file space of
+        ``[cpl] file_space``; the editor block of
         ``--editor-block``, whose text after the run is the result's ``editor_block``; the MMC client of
         ``RunOptions.mmc_client``."""
         options = session.options
@@ -51,6 +52,7 @@ class CplIO:
             keys = TerminalKeys(sys.stdin.fileno(), sys.stderr)
         io = cls(session.machine.file_root, clock=session.machine.clock, keys=keys, say=session.say, typ2=typ2,
                  private=(options.state_dir, *session.machine.own_files()))
+        io.files.space = int((session.machine.sections.get("cpl") or {}).get("file_space", FILE_SPACE))
         if isinstance(keys, TerminalKeys):
             keys.view = io.screen.text_view
         io.mmc.attach(options.mmc_client)

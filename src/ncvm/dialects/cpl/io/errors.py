@@ -37,6 +37,8 @@ ERRORS: dict[str, tuple[str, str, str]] = {
     "FILE_ALREADY_OPEN": ("CPL611", "FILE ALREADY OPEN FOR WRITING", "L3897"),
     "FILE_NOT_FOUND": ("CPL612", "FILE DOES NOT EXIST", "L3895 (OPENR of a missing file)"),
     "WRONG_ACCESS": ("CPL613", "FILE NOT OPENED FOR THIS ACCESS", "L4109, L4268, L4309"),
+    "FILE_MEMORY_FULL": ("CPL614", "FILE MEMORY FULL", "(simulator: [cpl] file_space, docs/decisions.md)"),
+    "FILE_NOT_WRITTEN": ("CPL615", "FILE CANNOT BE WRITTEN", "(simulator: the host refused the write)"),
     # warnings (the program continues)
     "PRN_FORMAT_INCORRECT": ("CPL620", "PRN FORMAT INCORRECT", "L4035"),
     "FILE_NOT_ERASED": ("CPL621", "FILE NOT ERASED", "L4396"),

@@ -74,6 +74,10 @@ class Handle:
         return sum(len(r) + 1 for r in self.records[:rec])
 
 
+#: bytes a run's files may grow by without ``[cpl] file_space`` (docs/decisions.md)
+FILE_SPACE = 1 << 30
+
+
 @dataclass
 class CplFiles:
     """The file table of one CPL program run.
@@ -99,7 +103,12 @@ class CplFiles:
     #: told the new text each time PRN#(0) overwrites the editor block
     on_editor_block: Callable[[str], None] | None = None
     durable: bool = True
+    #: bytes the program's files may grow by in this run (``[cpl] file_space``; 0: no limit): the
+    #: controller's file memory, so that a runaway PRN# loop ends with FILE MEMORY FULL, not a full disk
+    space: int = 0
+    grown: int = 0  # what the run's writes added to its files, less what REWRITE and shorter files gave back
     handles: dict[int, Handle] = field(default_factory=dict)
+    #: the PRN#(0) lines and warnings, kept only while no ``message`` / ``warn`` listener takes them
     messages: list[str] = field(default_factory=list)
     warnings: list[CplWarning] = field(default_factory=list)
     _message_pending: str = ""
@@ -300,14 +309,28 @@ class CplFiles:
                 pass  # a simulated time beyond what the file system can stamp: the file keeps its real time
 
     def _write_at(self, h: Handle, offset: int, text: str, end: int | None = None) -> None:
-        """``text`` written at byte ``offset``; the file cut at ``end`` when given; synced and dated."""
+        """``text`` written at byte ``offset``; the file cut at ``end`` when given; synced and dated.
+        FILE MEMORY FULL before a write past the run's file space, FILE CANNOT BE WRITTEN when the host
+        refuses it (a full disk)."""
         data = text.encode("latin-1", errors="replace")
-        while data:
-            done = os.pwrite(h.fd, data, offset)
-            data, offset = data[done:], offset + done
-        if end is not None:
-            os.ftruncate(h.fd, end)
-        self._stamp(h.fd)
+        try:
+            size = os.fstat(h.fd).st_size
+            growth = (end if end is not None else max(size, offset + len(data))) - size
+            self._check_space(h.name, growth)
+            while data:
+                done = os.pwrite(h.fd, data, offset)
+                data, offset = data[done:], offset + done
+            if end is not None:
+                os.ftruncate(h.fd, end)
+            self._stamp(h.fd)
+        except OSError as e:
+            raise fail("FILE_NOT_WRITTEN", f"{h.name}: {e.strerror}") from None
+        self.grown += growth  # a file cut shorter (REWRITE) gives its space back
+
+    def _check_space(self, name: str, growth: int) -> None:
+        if self.space and growth > 0 and self.grown + growth > self.space:
+            raise fail("FILE_MEMORY_FULL", f"{name}: the files of this run may grow by {self.space:,} bytes "
+                                           f"([cpl] file_space), {self.grown:,} are written")
 
     def _rewrite_all(self, h: Handle) -> None:
         data = "".join(r + "\n" for r in h.records) + EOF_MARKER
@@ -317,9 +340,14 @@ class CplFiles:
         """Write a whole file in the control's form atomically (FileRoot.replace: a temporary file beside
         it, synced and dated like every file the program writes, renamed over the old one keeping its
         access rights), so a crash leaves either the old file or the new one, never a half-written one.
-        INVALID FILE NAME when the name is refused; OSError when it cannot be written."""
+        INVALID FILE NAME when the name is refused, FILE MEMORY FULL past the run's file space; OSError when it
+        cannot be written."""
         data = ("".join(r + "\n" for r in records) + EOF_MARKER).encode("latin-1", errors="replace")
+        st = self.stat_of(place)
+        growth = len(data) - (st.st_size if st is not None else 0)
+        self._check_space(place.shown, growth)
         self._confined(self.fileroot.replace, place, data, finish=self._stamp, durable=self.durable)
+        self.grown += growth
 
     def _append_record(self, h: Handle, text: str) -> None:
         """A completed record at the EOF marker (sequential files): written over the old marker."""
@@ -405,14 +433,16 @@ class CplFiles:
                 self.on_editor_block(self.editor_block)
             return
         for line in text.split("\r"):
-            self.messages.append(line)
             if self.message is not None:
                 self.message(line)
+            else:
+                self.messages.append(line)
 
     def _warn(self, w: CplWarning) -> None:
-        self.warnings.append(w)
         if self.warn is not None:
             self.warn(w)
+        else:
+            self.warnings.append(w)
 
     # -- INP# ------------------------------------------------------------------------------
     def INP(self, n, *targets, semicolon: bool = False) -> list:  # noqa: N802 - INP#

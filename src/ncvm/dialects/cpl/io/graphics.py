@@ -108,7 +108,7 @@ class Graphics:
         #: the bitmap folder: BMP's names are confined to it as file names are to the file root
         self.bitmaps = bitmap_dir if isinstance(bitmap_dir, FileRoot) or bitmap_dir is None else FileRoot(bitmap_dir)
         self.warn = warn
-        self.warnings: list[CplWarning] = []
+        self.warnings: list[CplWarning] = []  # kept only while no warn listener takes them
         self.foreground = True
         self._clear_rect(0, 0, WIDTH, HEIGHT)
 
@@ -427,9 +427,10 @@ class Graphics:
         self.text_pixels[top:top + h, x:x + w] = False
 
     def _warn(self, w: CplWarning) -> None:
-        self.warnings.append(w)
         if self.warn is not None:
             self.warn(w)
+        else:
+            self.warnings.append(w)
 
 
 def _image(data: bytes) -> tuple[np.ndarray | None, str]:

@@ -6,7 +6,8 @@ the bottom (8 keys, 5 in ``(TYP2)`` mode, 3 lines of 9 characters each), the DLG
 the operator's keys, which come from a *key script* (see :class:`KeyScript` and docs/cpl-io.md).
 
 ``output_lines()`` gives what the program showed the operator, in order: every DSP and PRN text and
-every message-window line (PRN#(0,...) when :meth:`Screen.message` is the files' message callback);
+every message-window line (PRN#(0,...) when :meth:`Screen.message` is the files' message callback),
+unless an ``on_output`` listener takes the lines (a run's session keeps a bounded number of them);
 ``save_png(path)`` renders the whole window.
 """
 
@@ -243,8 +244,8 @@ class Screen(Graphics):
         self.styles: list[tuple[int, int, int, int]] = [self.font]
         self.fields: dict[str, Field] = {}
         self.in_dialog = False
-        self.log: list[str] = []
-        self.on_output = None  # called with every line added to the log (CplIO sends it to session.say)
+        self.log: list[str] = []  # the lines shown, kept only while no on_output listener takes them
+        self.on_output = None  # called with every line shown, instead of the log (CplIO sends it to session.say)
         self.on_wait = None  # called when SFK or INP starts waiting for the operator (--screen-dir pictures)
         self.editing: str | None = None  # the variable whose INP field waits for the operator
         self.labels: list[tuple[int, int, str, tuple[int, int, int, int], int]] = []  # GPR texts
@@ -299,9 +300,10 @@ class Screen(Graphics):
         self._log(text)
 
     def _log(self, text: str) -> None:
-        self.log.append(text)
         if self.on_output is not None:
             self.on_output(text)
+        else:
+            self.log.append(text)
 
     def _clear_text(self) -> None:
         self.chars = [[" "] * COLUMNS for _ in range(LINES)]

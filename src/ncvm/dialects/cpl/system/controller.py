@@ -14,8 +14,8 @@ from dataclasses import dataclass, field
 from ....diagnostics import UsageError
 from .gfuncs import NcFuncs
 
-#: every key [cpl] may hold (lookahead and calls belong to the language runtime)
-CPL_KEYS = {"lookahead", "calls", "channel", "axes", "zs_unit", "zs_active", "zs_tables", "tc_unit", "tc_tables",
+#: every key [cpl] may hold (lookahead and calls belong to the language runtime, file_space to its files)
+CPL_KEYS = {"lookahead", "file_space", "calls", "channel", "axes", "zs_unit", "zs_active", "zs_tables", "tc_unit", "tc_tables",
             "tool_database", "macoda", "plc", "errors", "override", "language", "date_format", "areas", "spindle"}
 AXIS_KEYS = {"index", "name", "channel", "type", "probe", "position", "lag", "sercos", "jog"}
 ZS_ROWS = tuple(f"G{b + i}" for b in (54, 154, 254) for i in range(6))
