@@ -153,3 +153,26 @@ def test_control_characters_in_graphic_text(run_text):
     """GPR with CHR$(13): a control character takes a blank place (it has no glyph)."""
     r = run_text('10 GPR(100,100,CHR$(13)+"A"+CHR$(10))\nM30\n', name="p.cpl")
     assert r["status"] == "ok", r["error"]
+
+
+R_OVERFLOW = "N10 R1=99999999 R5=15000\nN20 R2=R1*R1*R1*R1\nN30 R3=R2*R2*R2*R2*R2*R2*R2*R2*R2\n"
+
+
+@pytest.mark.parametrize("name, text, line", [
+    # a product beyond the double range was infinity: the move went to X inf with an inf cycle time
+    ("inf.mpf", "%MPF1\n" + R_OVERFLOW + "N40 R4=R3*R3\nN50 G1 X=R4 F100\nM30\n", 5),
+    # infinity less infinity was NaN, a position of NaN
+    ("nan.mpf", "%MPF1\n" + R_OVERFLOW + "N40 R4=R3*R3-R3*R3\nN50 G1 X=R4 F100\nM30\n", 5),
+    ("feed.mpf", "%MPF1\n" + R_OVERFLOW + "N40 R4=R3*R3\nN50 G1 X10 F=R4\nM30\n", 5),
+    # SQRTS of two huge values
+    ("sqrts.mpf", "%MPF1\n" + R_OVERFLOW + "N40 R4=R3*R1*R1*R5\nN50 @614 R6 R4 R4\nN60 G1 X=R6 F100\nM30\n", 6),
+    ("inf.cl8", CL8 + "  R60 = 99999999;\n" + "  R60 = R60*R60*R60*R60;\n" * 4 + "  (:G01 X=R60 F100:); LF;\nEND.\n",
+     None),
+])
+def test_an_r_value_beyond_the_double_range_is_the_cl800_error(run_text, name, text, line):
+    r = run_text(text, name=name)
+    assert r["status"] == "error" and r["error"]["code"] == "CL800", r["error"]
+    assert "outside the R parameter range" in r["error"]["message"]
+    if line is not None:
+        assert r["error"]["line"] == line
+    assert r["motion"]["feed_moves"] == 0
