@@ -176,3 +176,22 @@ def test_an_r_value_beyond_the_double_range_is_the_cl800_error(run_text, name, t
     if line is not None:
         assert r["error"]["line"] == line
     assert r["motion"]["feed_moves"] == 0
+
+
+@pytest.mark.parametrize("fn", ["SIN", "COS", "sin", "cos"])
+def test_sin_and_cos_of_infinity_give_no_valid_value_in_sympas(run_text, fn):
+    """A math function's invalid argument gives NaN, no error (digest §6.3.1); SIN(inf) was an internal error."""
+    r = run_text(f"program p;\nvar x: double;\nbegin\n  x := 1e300;\n  x := {fn}(x * x);\n  writeln(x);\nend.\n",
+                 name="p.sap")
+    assert r["status"] == "ok", r["error"]
+    assert r["output"] == ["nan"]
+
+
+@pytest.mark.parametrize("command", ["MCRW(A1 := 1.0, A2 := 0.0, PHI := 1e300)",
+                                     "MHRW(A1 := 1.0, A2 := 0.0, PHI := 1e20, A3 := 1.0)",
+                                     "MCR3DW(A1 := 1.0, A2 := 0.0, A3 := 0.0, PHI := 1e300, PN3 := 1.0)"])
+def test_an_arc_beyond_the_card_range_is_an_invalid_parameter(run_text, command):
+    """PHI := 1e300 was an internal error (OverflowError), PHI := 1e20 a helix of 1.7e16 s."""
+    r = run_text(f"program p;\nbegin\n  {command};\nend.\n", name="p.sap")
+    assert (r["error"]["code"], r["error"]["line"]) == ("32768", 3), r["error"]
+    assert "beyond the card's position range" in r["error"]["message"]
