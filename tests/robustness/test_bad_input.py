@@ -195,3 +195,15 @@ def test_an_arc_beyond_the_card_range_is_an_invalid_parameter(run_text, command)
     r = run_text(f"program p;\nbegin\n  {command};\nend.\n", name="p.sap")
     assert (r["error"]["code"], r["error"]["line"]) == ("32768", 3), r["error"]
     assert "beyond the card's position range" in r["error"]["message"]
+
+
+def test_a_long_line_of_letters_is_read_in_linear_time(tmp_path):
+    """Each letter scanned the rest of its run for an extended address (Q1=25): 80,000 letters took 300 s."""
+    import time
+
+    path = tmp_path / "p.mpf"
+    path.write_text("%MPF1\nN10 " + "A" * 100_000 + "\nM30\n", encoding="latin-1")
+    start = time.perf_counter()
+    d = check(path)[0]
+    assert time.perf_counter() - start < 20
+    assert (d.code, d.span.line, d.span.column) == ("SIN001", 2, 5)
