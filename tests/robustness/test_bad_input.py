@@ -207,3 +207,41 @@ def test_a_long_line_of_letters_is_read_in_linear_time(tmp_path):
     d = check(path)[0]
     assert time.perf_counter() - start < 20
     assert (d.code, d.span.line, d.span.column) == ("SIN001", 2, 5)
+
+
+#: characters str.splitlines() takes for line ends that no control does: FF (a printed listing's page
+#: break), VT, FS/GS/RS and NEL (byte 85 of Latin-1)
+NOT_LINE_ENDS = ["\f", "\v", "\x1c", "\x1d", "\x1e", "\x85"]
+
+
+@pytest.mark.parametrize("char", NOT_LINE_ENDS)
+@pytest.mark.parametrize("name, text, line, source", [
+    ("p.din", "G0 X0 (page{c}break)\nG1 X@ F100\nM30\n", 2, "G1 X@ F100"),
+    ("p.cpl", "(page{c}break)\n10 A=(\nM30\n", 2, "10 A=("),
+    ("p.mpf", "%MPF1\nN10 (page{c}break) G0 X0\nN20 X@\nM30\n", 3, "N20 X@"),
+    ("p.sap", "program p;\n{{ page{c}break }}\nbegin\n  x := 1;\nend.\n", 4, "  x := 1;"),
+    ("p.cl8", "PROGRAM 9;\nCHANNEL NC 0;\n(* page{c}break *)\nBEGIN\n  R60 = @;\nEND.\n", 5, "  R60 = @;"),
+])
+def test_only_lf_cr_end_a_line(tmp_path, char, name, text, line, source):
+    """A form feed in a comment broke the comment in two and shifted the lines after it (and the source
+    line shown with a diagnostic was another one)."""
+    path = tmp_path / name
+    path.write_text(text.format(c=char), encoding="latin-1")
+    d = check(path)[0]
+    assert d.span.line == line, d.render()
+    assert d.render().split("\n")[1] == "    " + source
+
+
+def test_a_file_is_read_once_for_all_its_diagnostics(tmp_path, monkeypatch):
+    """ncvm check read the file again for each diagnostic: 100,000 bad lines took minutes."""
+    from ncvm import diagnostics
+
+    path = tmp_path / "p.din"
+    path.write_text("G1 X@\n" * 50, encoding="latin-1")
+    diags = check(path)
+    reads = []
+    real = diagnostics.read_lines
+    monkeypatch.setattr(diagnostics, "read_lines", lambda p: reads.append(p) or real(p))
+    rendered = diagnostics.render_all(diags)
+    assert len(diags) == 50 and len(reads) == 1
+    assert rendered[49].split("\n")[1] == "    G1 X@"

@@ -16,6 +16,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..diagnostics import Diagnostic, Span
+from ..source import lines as program_lines
 from ..source import too_many_decades, word_number
 from .canon import Src
 
@@ -237,12 +238,12 @@ def read_din_segments(path: str, text: str) -> tuple[list, list[Diagnostic]]:
     :class:`PlainRun`; the others (comments, block skip, ``%``, other words,
     errors) go through :func:`parse_din_line` one by one.
     """
-    lines = text.splitlines()
+    lines = program_lines(text)
     flat = text.replace("\r\n", "\n")
     segments: list = []
     diags: list[Diagnostic] = []
     if flat.count("\n") + (not flat.endswith("\n")) != len(lines):
-        # line breaks of str.splitlines other than LF: read line by line
+        # lone CR line ends: read line by line
         general = range(1, len(lines) + 1)
         columns = None
     else:

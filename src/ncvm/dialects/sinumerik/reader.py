@@ -14,7 +14,17 @@ import re
 from dataclasses import dataclass, field
 
 from ...diagnostics import Diagnostic, Span
-from ...source import ALNUM, LETTERS, WORD_DECADES, decades, int_literal, is_digits, too_many_decades, word_number
+from ...source import (
+    ALNUM,
+    LETTERS,
+    WORD_DECADES,
+    decades,
+    int_literal,
+    is_digits,
+    lines,
+    too_many_decades,
+    word_number,
+)
 from .atcodes import AT_CODES
 
 
@@ -91,7 +101,7 @@ def read_program(path: str, text: str) -> tuple[PartProgram, list[Diagnostic]]:
     blocks: list[NcBlock] = []
     diags: list[Diagnostic] = []
     kind, number = "", None
-    for lineno, raw in enumerate(text.splitlines(), 1):
+    for lineno, raw in enumerate(lines(text), 1):
         line = raw.rstrip("\r\n\x1a")
         stripped = line.strip()
         if not stripped:
