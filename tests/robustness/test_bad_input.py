@@ -245,3 +245,16 @@ def test_a_file_is_read_once_for_all_its_diagnostics(tmp_path, monkeypatch):
     rendered = diagnostics.render_all(diags)
     assert len(diags) == 50 and len(reads) == 1
     assert rendered[49].split("\n")[1] == "    G1 X@"
+
+
+def test_long_numbers_before_a_bad_character_are_read_at_once(tmp_path):
+    """The clean-line regex tried every split of every digit run: three 300-digit words and an '@' never ended
+    (found by the fuzz test)."""
+    import time
+
+    path = tmp_path / "p.din"
+    path.write_text("G1 " + " ".join("X" + "1" * 300 for _ in range(3)) + " @\nM30\n", encoding="latin-1")
+    start = time.perf_counter()
+    d = check(path)[0]
+    assert time.perf_counter() - start < 20
+    assert (d.code, d.span.line) == ("NC001", 1)

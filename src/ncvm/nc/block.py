@@ -67,8 +67,10 @@ def block_row(blk: Block) -> tuple | None:
 
 #: one address word of plain DIN: a letter and a number (front ends with richer blocks read their own)
 WORD = re.compile(r"\s*([A-Z])\s*([-+]?(?:\d+\.?\d*|\.\d+))")
-#: a line body made of nothing but words: checked in one regex call before the words are read
-CLEAN_BODY = re.compile(r"(?:\s*[A-Z]\s*[-+]?(?:\d+\.?\d*|\.\d+))*\s*")
+#: a line body made of nothing but words: checked in one regex call before the words are read. Possessive:
+#: ``\d+\.?\d*`` splits a run of digits in as many ways as it is long, and a bad character after a few long
+#: numbers made the failing match try them all (a line of three 300-digit words and an '@' never ended)
+CLEAN_BODY = re.compile(r"(?:\s*+[A-Z]\s*+[-+]?+(?:\d++(?:\.\d*+)?+|\.\d++))*+\s*+")
 
 
 class DinSyntaxError(Exception):
