@@ -15,7 +15,7 @@ from pathlib import Path
 import click
 
 from . import __version__
-from .diagnostics import CompileFailed, UsageError
+from .diagnostics import CompileFailed, UsageError, render_all
 from .dialects import REGISTRY
 from .outpaths import PLOT_SUFFIXES, SCREEN_PICTURE, Output, OutputError, check_outputs
 
@@ -350,8 +350,8 @@ def check(programs, dialect, machine, as_json, all_errors):
         failed |= bool(errors)
         report.append({"file": program, "ok": not errors, "diagnostics": [d.to_json() for d in diags]})
         if not as_json:
-            for d in diags:
-                click.echo(d.render(), err=True)
+            for text in render_all(diags):
+                click.echo(text, err=True)
     if as_json:
         click.echo(json.dumps({"files": report}, indent=2))
     else:
@@ -383,8 +383,8 @@ def compile_cmd(source, out, xref, dialect, machine):
     try:
         path = compile_program(source, out, xref, dialect, machine)
     except CompileFailed as e:
-        for d in e.diagnostics:
-            click.echo(d.render(), err=True)
+        for text in render_all(e.diagnostics):
+            click.echo(text, err=True)
         sys.exit(EXIT_FAULT)
     click.echo(f"ncvm: wrote {path}", err=True)
 

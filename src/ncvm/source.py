@@ -48,6 +48,21 @@ def read_text(path: str | Path) -> str:
     return without_bom(Path(path).read_text(encoding="latin-1"))
 
 
+def lines(text: str) -> list[str]:
+    """The lines of a program text, ended by LF, CR LF or a lone CR, as the controls end their blocks.
+
+    Unlike ``str.splitlines`` a form feed (the page break of a printed listing), a vertical tab, the
+    separators 1C-1E and NEL (85, a Latin-1 letter's neighbour) stay characters of their line: splitting
+    there broke comments in two and shifted every line number after them.
+    """
+    if "\r" in text:
+        text = text.replace("\r\n", "\n").replace("\r", "\n")
+    out = text.split("\n")
+    if out[-1] == "":
+        out.pop()
+    return out
+
+
 def without_bom(text: str) -> str:
     return text[len(BOM):] if text.startswith(BOM) else text
 

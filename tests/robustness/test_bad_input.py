@@ -153,3 +153,108 @@ def test_control_characters_in_graphic_text(run_text):
     """GPR with CHR$(13): a control character takes a blank place (it has no glyph)."""
     r = run_text('10 GPR(100,100,CHR$(13)+"A"+CHR$(10))\nM30\n', name="p.cpl")
     assert r["status"] == "ok", r["error"]
+
+
+R_OVERFLOW = "N10 R1=99999999 R5=15000\nN20 R2=R1*R1*R1*R1\nN30 R3=R2*R2*R2*R2*R2*R2*R2*R2*R2\n"
+
+
+@pytest.mark.parametrize("name, text, line", [
+    # a product beyond the double range was infinity: the move went to X inf with an inf cycle time
+    ("inf.mpf", "%MPF1\n" + R_OVERFLOW + "N40 R4=R3*R3\nN50 G1 X=R4 F100\nM30\n", 5),
+    # infinity less infinity was NaN, a position of NaN
+    ("nan.mpf", "%MPF1\n" + R_OVERFLOW + "N40 R4=R3*R3-R3*R3\nN50 G1 X=R4 F100\nM30\n", 5),
+    ("feed.mpf", "%MPF1\n" + R_OVERFLOW + "N40 R4=R3*R3\nN50 G1 X10 F=R4\nM30\n", 5),
+    # SQRTS of two huge values
+    ("sqrts.mpf", "%MPF1\n" + R_OVERFLOW + "N40 R4=R3*R1*R1*R5\nN50 @614 R6 R4 R4\nN60 G1 X=R6 F100\nM30\n", 6),
+    ("inf.cl8", CL8 + "  R60 = 99999999;\n" + "  R60 = R60*R60*R60*R60;\n" * 4 + "  (:G01 X=R60 F100:); LF;\nEND.\n",
+     None),
+])
+def test_an_r_value_beyond_the_double_range_is_the_cl800_error(run_text, name, text, line):
+    r = run_text(text, name=name)
+    assert r["status"] == "error" and r["error"]["code"] == "CL800", r["error"]
+    assert "outside the R parameter range" in r["error"]["message"]
+    if line is not None:
+        assert r["error"]["line"] == line
+    assert r["motion"]["feed_moves"] == 0
+
+
+@pytest.mark.parametrize("fn", ["SIN", "COS", "sin", "cos"])
+def test_sin_and_cos_of_infinity_give_no_valid_value_in_sympas(run_text, fn):
+    """A math function's invalid argument gives NaN, no error (digest §6.3.1); SIN(inf) was an internal error."""
+    r = run_text(f"program p;\nvar x: double;\nbegin\n  x := 1e300;\n  x := {fn}(x * x);\n  writeln(x);\nend.\n",
+                 name="p.sap")
+    assert r["status"] == "ok", r["error"]
+    assert r["output"] == ["nan"]
+
+
+@pytest.mark.parametrize("command", ["MCRW(A1 := 1.0, A2 := 0.0, PHI := 1e300)",
+                                     "MHRW(A1 := 1.0, A2 := 0.0, PHI := 1e20, A3 := 1.0)",
+                                     "MCR3DW(A1 := 1.0, A2 := 0.0, A3 := 0.0, PHI := 1e300, PN3 := 1.0)"])
+def test_an_arc_beyond_the_card_range_is_an_invalid_parameter(run_text, command):
+    """PHI := 1e300 was an internal error (OverflowError), PHI := 1e20 a helix of 1.7e16 s."""
+    r = run_text(f"program p;\nbegin\n  {command};\nend.\n", name="p.sap")
+    assert (r["error"]["code"], r["error"]["line"]) == ("32768", 3), r["error"]
+    assert "beyond the card's position range" in r["error"]["message"]
+
+
+def test_a_long_line_of_letters_is_read_in_linear_time(tmp_path):
+    """Each letter scanned the rest of its run for an extended address (Q1=25): 80,000 letters took 300 s."""
+    import time
+
+    path = tmp_path / "p.mpf"
+    path.write_text("%MPF1\nN10 " + "A" * 100_000 + "\nM30\n", encoding="latin-1")
+    start = time.perf_counter()
+    d = check(path)[0]
+    assert time.perf_counter() - start < 20
+    assert (d.code, d.span.line, d.span.column) == ("SIN001", 2, 5)
+
+
+#: characters str.splitlines() takes for line ends that no control does: FF (a printed listing's page
+#: break), VT, FS/GS/RS and NEL (byte 85 of Latin-1)
+NOT_LINE_ENDS = ["\f", "\v", "\x1c", "\x1d", "\x1e", "\x85"]
+
+
+@pytest.mark.parametrize("char", NOT_LINE_ENDS)
+@pytest.mark.parametrize("name, text, line, source", [
+    ("p.din", "G0 X0 (page{c}break)\nG1 X@ F100\nM30\n", 2, "G1 X@ F100"),
+    ("p.cpl", "(page{c}break)\n10 A=(\nM30\n", 2, "10 A=("),
+    ("p.mpf", "%MPF1\nN10 (page{c}break) G0 X0\nN20 X@\nM30\n", 3, "N20 X@"),
+    ("p.sap", "program p;\n{{ page{c}break }}\nbegin\n  x := 1;\nend.\n", 4, "  x := 1;"),
+    ("p.cl8", "PROGRAM 9;\nCHANNEL NC 0;\n(* page{c}break *)\nBEGIN\n  R60 = @;\nEND.\n", 5, "  R60 = @;"),
+])
+def test_only_lf_cr_end_a_line(tmp_path, char, name, text, line, source):
+    """A form feed in a comment broke the comment in two and shifted the lines after it (and the source
+    line shown with a diagnostic was another one)."""
+    path = tmp_path / name
+    path.write_text(text.format(c=char), encoding="latin-1")
+    d = check(path)[0]
+    assert d.span.line == line, d.render()
+    assert d.render().split("\n")[1] == "    " + source
+
+
+def test_a_file_is_read_once_for_all_its_diagnostics(tmp_path, monkeypatch):
+    """ncvm check read the file again for each diagnostic: 100,000 bad lines took minutes."""
+    from ncvm import diagnostics
+
+    path = tmp_path / "p.din"
+    path.write_text("G1 X@\n" * 50, encoding="latin-1")
+    diags = check(path)
+    reads = []
+    real = diagnostics.read_lines
+    monkeypatch.setattr(diagnostics, "read_lines", lambda p: reads.append(p) or real(p))
+    rendered = diagnostics.render_all(diags)
+    assert len(diags) == 50 and len(reads) == 1
+    assert rendered[49].split("\n")[1] == "    G1 X@"
+
+
+def test_long_numbers_before_a_bad_character_are_read_at_once(tmp_path):
+    """The clean-line regex tried every split of every digit run: three 300-digit words and an '@' never ended
+    (found by the fuzz test)."""
+    import time
+
+    path = tmp_path / "p.din"
+    path.write_text("G1 " + " ".join("X" + "1" * 300 for _ in range(3)) + " @\nM30\n", encoding="latin-1")
+    start = time.perf_counter()
+    d = check(path)[0]
+    assert time.perf_counter() - start < 20
+    assert (d.code, d.span.line) == ("NC001", 1)

@@ -11,6 +11,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..diagnostics import Diagnostic, Span
+from ..source import lines as program_lines
 from .block import PLAIN_WORDS, PlainRun, word_column
 
 #: DIN 66025 axis addresses: X Y Z, the parallel axes U V W, the rotary axes A B C
@@ -60,7 +61,7 @@ def din_missing_axes(path: str, text: str, segments: list, axes, skip_active: bo
             found.append((i, None, blk.src.line, address))
     if not found:
         return []
-    lines = text.splitlines()  # for the columns (not split when nothing is found: a large program costs)
+    lines = program_lines(text)  # for the columns (not split when nothing is found: a large program costs)
     return [(i, row, Diagnostic("NC011", missing_axis_message(a, axes),
                                 Span(path, line, word_column(lines[line - 1], a) if line <= len(lines) else None)))
             for i, row, line, a in found]

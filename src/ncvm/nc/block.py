@@ -16,6 +16,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..diagnostics import Diagnostic, Span
+from ..source import lines as program_lines
 from ..source import too_many_decades, word_number
 from .canon import Src
 
@@ -66,8 +67,10 @@ def block_row(blk: Block) -> tuple | None:
 
 #: one address word of plain DIN: a letter and a number (front ends with richer blocks read their own)
 WORD = re.compile(r"\s*([A-Z])\s*([-+]?(?:\d+\.?\d*|\.\d+))")
-#: a line body made of nothing but words: checked in one regex call before the words are read
-CLEAN_BODY = re.compile(r"(?:\s*[A-Z]\s*[-+]?(?:\d+\.?\d*|\.\d+))*\s*")
+#: a line body made of nothing but words: checked in one regex call before the words are read. Possessive:
+#: ``\d+\.?\d*`` splits a run of digits in as many ways as it is long, and a bad character after a few long
+#: numbers made the failing match try them all (a line of three 300-digit words and an '@' never ended)
+CLEAN_BODY = re.compile(r"(?:\s*+[A-Z]\s*+[-+]?+(?:\d++(?:\.\d*+)?+|\.\d++))*+\s*+")
 
 
 class DinSyntaxError(Exception):
@@ -237,12 +240,12 @@ def read_din_segments(path: str, text: str) -> tuple[list, list[Diagnostic]]:
     :class:`PlainRun`; the others (comments, block skip, ``%``, other words,
     errors) go through :func:`parse_din_line` one by one.
     """
-    lines = text.splitlines()
+    lines = program_lines(text)
     flat = text.replace("\r\n", "\n")
     segments: list = []
     diags: list[Diagnostic] = []
     if flat.count("\n") + (not flat.endswith("\n")) != len(lines):
-        # line breaks of str.splitlines other than LF: read line by line
+        # lone CR line ends: read line by line
         general = range(1, len(lines) + 1)
         columns = None
     else:

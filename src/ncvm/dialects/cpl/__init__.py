@@ -10,6 +10,7 @@ from __future__ import annotations
 import re
 
 from ...diagnostics import CompileFailed, read_lines
+from ...source import lines as program_lines
 from ..base import Dialect
 from .axiswords import axis_diagnostics
 from .codegen import generate
@@ -24,7 +25,7 @@ class CplDialect(Dialect):
     id = "cpl"
 
     def sniff(self, text: str) -> int:
-        lines = [ln for ln in text.splitlines()[:200] if ln.strip()]
+        lines = [ln for ln in program_lines(text)[:200] if ln.strip()]
         if not lines:
             return 0
         hits = sum(1 for ln in lines if _CPL_LINE.match(ln))
@@ -50,7 +51,7 @@ class CplDialect(Dialect):
     def check(self, path, text, machine, all_errors=False):
         res, diags = self.link(path, text, machine)
         for ln in res.units.values():
-            lines = text.splitlines() if ln.prog.path == path else read_lines(ln.prog.path)
+            lines = program_lines(text) if ln.prog.path == path else read_lines(ln.prog.path)
             diags += axis_diagnostics(ln.prog, machine.axis_names, lines)
         return diags
 

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from ...source import DIGITS, LETTERS, NAME_CHARS, int_literal, upper
+from ...source import DIGITS, LETTERS, NAME_CHARS, int_literal, lines, upper
 
 #: reserved words (manual §2.4.1, cleaned up in digest §2.3), plus TO, SCSL and the unused ones
 KEYWORDS = frozenset("""
@@ -111,7 +111,7 @@ class CplBlock:
 def classify(text: str) -> list[Line]:
     out: list[Line] = []
     cont = False
-    for i, raw in enumerate(text.splitlines(), 1):
+    for i, raw in enumerate(lines(text), 1):
         line = raw.rstrip("\r\n")
         stripped = line.strip()
         if not stripped:

@@ -12,6 +12,7 @@ from __future__ import annotations
 import re
 
 from ...machine.files import FileRoot, FileRootError, Place
+from ...source import lines
 from .errors import CplError
 from .io.files import EOF_MARKER
 from .io.strings import CharacterField
@@ -44,7 +45,7 @@ def read_declarations(root: FileRoot) -> dict[str, tuple[str, list[int]]]:
         if place is None:
             continue
         path = str(root.path_of(place))
-        for no, line in enumerate(_declaration_text(root, place, path).splitlines(), 1):
+        for no, line in enumerate(lines(_declaration_text(root, place, path)), 1):
             if not line.strip():
                 continue
             m = DECL.match(line)

@@ -9,6 +9,7 @@ from ...nc.axiswords import din_missing_axes
 from ...nc.block import PlainRun, read_din_segments
 from ...nc.canon import Src
 from ...nc.plainrun import execute_columns
+from ...source import lines as program_lines
 from ..base import Dialect
 
 _DIN_LINE = re.compile(r"^\s*(N\d+\s*)?([GMXYZFST]-?\d|\(|%|/|$)", re.I)
@@ -18,7 +19,7 @@ class DinDialect(Dialect):
     id = "din"
 
     def sniff(self, text: str) -> int:
-        lines = [ln for ln in text.splitlines()[:200] if ln.strip()]
+        lines = [ln for ln in program_lines(text)[:200] if ln.strip()]
         if not lines:
             return 0
         hits = sum(1 for ln in lines if _DIN_LINE.match(ln))

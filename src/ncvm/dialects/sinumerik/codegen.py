@@ -22,6 +22,8 @@ from .atcodes import COMPARE
 from .reader import Arith, AtInstr, NcBlock, Note, Operand, PartProgram, Word
 
 #: M functions the kernel handles itself; any other goes to the PLC
+#: NC functions whose result may leave the double range for finite operands (SQRTS of two huge values)
+OVERFLOWING = frozenset({"614"})
 _STANDARD_M = frozenset((0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 17, 30))
 
 
@@ -268,7 +270,11 @@ class UnitCodegen:
         self.written.add(it.target)
         if self.strict:
             expr = f"_nc8({expr})"
-        return f"{self.r(it.target)} = {expr}"
+        target = self.r(it.target)
+        if self.strict or len(it.terms) == 1:
+            return f"{target} = {expr}"
+        # only arithmetic can leave the double range; x - x is 0.0 (false) unless x is infinite or NaN
+        return f"{target} = {expr}; {target} - {target} and _finite({target})"
 
     def _jump(self, out: PySource, idx: int, blk: NcBlock, number: int, rec: "_Record") -> None:
         """Lines that leave the block for block ``number`` (±, digest §5.3 rule 4)."""
@@ -452,6 +458,8 @@ class UnitCodegen:
             "659": lambda: f"(0.0 if {x} != 0.0 else 1.0)",
         }
         me = v(target)
+        if code in OVERFLOWING and not self.strict:
+            return self.store(target, f"_finite({exprs[code]()})")
         if code in exprs:
             return self.store(target, exprs[code]())
         if code == "620":

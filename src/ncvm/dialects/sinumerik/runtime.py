@@ -46,6 +46,15 @@ def _ptr(value: float) -> int:
     return n
 
 
+def _finite(value: float) -> float:
+    """A computed R value. A product or sum beyond the double range is infinity (and infinity less
+    infinity NaN), far outside the +/-99999999 of an R parameter (L7079): the CL 800 error, never a
+    position or a feed."""
+    if value - value == 0.0:
+        return value
+    raise Cl800Error(f"{value:g} is outside the R parameter range +/-99999999")
+
+
 def _int(value: float) -> int:
     n = int(value)
     if n != value:
@@ -56,7 +65,7 @@ def _int(value: float) -> int:
 NAMESPACE_GLOBALS = {
     "_Block": Block, "_int": _int, "_ptr": _ptr, "_hypot": math.hypot, "_sin": math.sin,
     "_cos": math.cos, "_trunc": math.trunc, "_DEG": DEG,
-    "_nc8": nc8,
+    "_nc8": nc8, "_finite": _finite,
 }
 
 

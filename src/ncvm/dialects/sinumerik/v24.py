@@ -25,7 +25,7 @@ import re
 from pathlib import Path
 
 from ...machine.files import heads
-from ...source import read_text
+from ...source import lines, read_text
 from .ncdata import Cl800Error
 
 OUTPUT_TYPES = {1: "main programs", 2: "subroutines", 5: "NC machine data", 6: "tool offsets",
@@ -84,7 +84,7 @@ def data_lines(data, programs, kind: int, start: int, end: int) -> list[str]:
         return out
     out = []
     for path in programs("MPF" if kind == 1 else "SPF", start, end):
-        out.extend(read_text(path).splitlines())
+        out.extend(lines(read_text(path)))
     return out
 
 
@@ -104,7 +104,7 @@ def read_in(channel, kind: int, text: str) -> None:
     if kind not in INPUT_TYPES:
         raise Cl800Error(f"INP: data type {kind} is not one of {', '.join(map(str, INPUT_TYPES))}")
     data = channel.data
-    for raw in text.splitlines():
+    for raw in lines(text):
         line = raw.strip()
         if not line:
             continue

@@ -15,7 +15,7 @@ from ...nc.canon import Src
 from . import recording
 from .lookahead import retime
 from .motion import TICKS_PER_S, Chain, Move, Profile
-from .values import MAX_COUNTS, beyond_counts, fault
+from .values import MAX_COUNTS, arc_counts, beyond_counts, fault
 
 _GET_M = attrgetter("m")
 
@@ -214,7 +214,7 @@ class Commands:
         nfrax = int(tk.sysp["NFRAX"])
         lin2 = sum(((p1[k] - p0[k]) * self.weight(tk, axes[k])) ** 2 for k in range(2, len(axes))
                    if not nfrax >> axes[k] & 1)
-        length = math.sqrt((radius * phi) ** 2 + lin2)
+        length = math.sqrt(arc_counts(radius, phi, phi_deg) ** 2 + lin2)
         mv = Move(axes, p0, p1, "arc", self.src(tk, loc), start)
         mv.center, mv.radius, mv.a0, mv.phi, mv.plane = c, radius, a0, phi, (0, 1)
         if w != (1.0, 1.0):
@@ -265,7 +265,7 @@ class Commands:
         p1 = tuple(self.round_counts(x) for x in rotate(p0, c, n, phi))
         mv = Move(axes, p0, p1, "arc3d", self.src(tk, loc), start)
         mv.center, mv.radius, mv.phi, mv.normal = c, radius, phi, n
-        if not self.start_path(tk, mv, abs(radius * phi), loc):
+        if not self.start_path(tk, mv, arc_counts(radius, phi, tk.sysp["PHI"]), loc):
             return self._wait(tk, axes, wait)
         return self._wait(tk, axes, wait)
 

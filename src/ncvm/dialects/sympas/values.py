@@ -107,9 +107,10 @@ MATH = {
     "POWER": _safe(math.pow), "SIN": _safe(math.sin), "SINH": _safe(math.sinh),
     "SQR": lambda x: float(x) * x, "SQRT": _safe(math.sqrt), "TAN": _safe(math.tan), "TANH": _safe(math.tanh),
 }
-MATH["COS"] = math.cos  # fast paths: these cannot fail on finite input
-MATH["SIN"] = math.sin
-MATH["ATAN"] = math.atan
+# fast paths: SIN and COS fail only on inf (a product beyond the double range), x - x is 0.0 for every finite x
+MATH["COS"] = lambda x: math.cos(x) if x - x == 0.0 else math.nan
+MATH["SIN"] = lambda x: math.sin(x) if x - x == 0.0 else math.nan
+MATH["ATAN"] = math.atan  # cannot fail, not even on inf
 MATH["TANH"] = math.tanh
 
 
@@ -120,6 +121,16 @@ MAX_COUNTS = 2.0 ** 53
 
 def beyond_counts(target: float):
     fault(32768, f"target position {target:g} is beyond the card's position range ({MAX_COUNTS:.0f} counts)")
+
+
+def arc_counts(radius: float, phi: float, phi_deg: float) -> float:
+    """The path of an arc of ``radius`` counts through ``phi`` radians. A path beyond the position range
+    (PHI := 1e300 turns) is an invalid parameter like such a target, not a move of endless time."""
+    arc = abs(radius * phi)
+    if not arc <= MAX_COUNTS:
+        fault(32768, f"PHI := {phi_deg:g}: an arc of {arc:g} counts is beyond the card's position range "
+                     f"({MAX_COUNTS:.0f} counts)")
+    return arc
 
 
 def axis_values(items: tuple) -> tuple:
