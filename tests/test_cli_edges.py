@@ -115,15 +115,17 @@ def test_json_before_the_command_is_a_json_usage_error(work, args):
 
 # -- Ctrl-C outside the run itself --------------------------------------------------------------------
 
-def test_ctrl_c_before_the_run_starts_gives_a_json_document(work, monkeypatch):
+@pytest.mark.parametrize("command", ["run", "check"])
+def test_ctrl_c_outside_the_run_gives_a_json_document_naming_the_command(work, monkeypatch, command):
     def interrupted(*a, **k):
         raise KeyboardInterrupt
 
-    monkeypatch.setattr("ncvm.api.run", interrupted)
-    r = invoke("run", "part.din", "--json")
+    monkeypatch.setattr(f"ncvm.api.{command}", interrupted)
+    r = invoke(command, "part.din", "--json")
     assert r.exit_code == 1, r.output
     doc = json.loads(r.stdout)
     assert doc["status"] == "error" and doc["error"]["code"] == "RUN004"
+    assert doc["error"]["message"] == f"{command} interrupted by the user"
     assert "interrupted" in r.stderr and "Aborted" not in r.stderr
 
 
@@ -232,16 +234,6 @@ def test_messages_name_what_the_user_gave(work):
     r = invoke("run", "part.din", "--gcode", "machine.toml")
     assert r.exit_code == 2 and "--gcode machine.toml: it would overwrite the machine file machine.toml" in r.stderr
     assert LATHE == (work / "machine.toml").read_text()
-
-
-def test_ctrl_c_during_a_check_says_what_was_interrupted(work, monkeypatch):
-    def interrupted(*a, **k):
-        raise KeyboardInterrupt
-
-    monkeypatch.setattr("ncvm.api.check", interrupted)
-    r = invoke("check", "part.din", "--json")
-    assert r.exit_code == 1, r.output
-    assert json.loads(r.stdout)["error"]["message"] == "check interrupted by the user"
 
 
 # -- check and run point at the same word ------------------------------------------------------------

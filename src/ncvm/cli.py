@@ -43,23 +43,25 @@ def _detach_stdout() -> None:
 _JSON = "ncvm.json"  # ctx.meta: --json is on the command line
 
 
+def _stop(ctx, stderr_line: str, status: str, code: str | None, message: str, exit_code: int) -> None:
+    """End the command before or outside a run: one line on stderr and, with --json, a document on stdout
+    with the keys of a run's error (no source position), so stdout is always JSON."""
+    click.echo(stderr_line, err=True)
+    if ctx.meta.get(_JSON):
+        error = {"code": code, "message": message, "file": None, "line": None, "column": None}
+        click.echo(json.dumps({"status": status, "error": error}, indent=2))
+    ctx.exit(exit_code)
+
+
 def _usage_error(ctx, message: str) -> None:
     """Exit 2 with the message on stderr; with --json also the usage_error document on stdout."""
-    click.echo(f"ncvm: error: {message}", err=True)
-    if ctx.meta.get(_JSON):
-        error = {"code": None, "message": message, "file": None, "line": None, "column": None}
-        click.echo(json.dumps({"status": "usage_error", "error": error}, indent=2))
-    ctx.exit(EXIT_USAGE)
+    _stop(ctx, f"ncvm: error: {message}", "usage_error", None, message, EXIT_USAGE)
 
 
 def _interrupted(ctx) -> None:
     """Exit 1 as an interrupted run does; with --json stdout is still a JSON document."""
     message = f"{ctx.invoked_subcommand or 'ncvm'} interrupted by the user"
-    click.echo(f"ncvm: {message}", err=True)
-    if ctx.meta.get(_JSON):
-        error = {"code": "RUN004", "message": message, "file": None, "line": None, "column": None}
-        click.echo(json.dumps({"status": "error", "error": error}, indent=2))
-    ctx.exit(EXIT_FAULT)
+    _stop(ctx, f"ncvm: {message}", "error", "RUN004", message, EXIT_FAULT)
 
 
 class _Guarded(click.Group):
@@ -90,11 +92,7 @@ class _Guarded(click.Group):
             _usage_error(ctx, e.format_message())
         except MemoryError:  # before a run could report it (reading a huge program); a run reports RUN006 itself
             message = "out of memory (the limit of a run is set with --max-memory)"
-            click.echo(f"ncvm: error RUN006: {message}", err=True)
-            if ctx.meta.get(_JSON):
-                error = {"code": "RUN006", "message": message, "file": None, "line": None, "column": None}
-                click.echo(json.dumps({"status": "error", "error": error}, indent=2))
-            ctx.exit(EXIT_FAULT)
+            _stop(ctx, f"ncvm: error RUN006: {message}", "error", "RUN006", message, EXIT_FAULT)
         except KeyboardInterrupt:  # Ctrl-C outside the run itself (which reports RUN004 with its result)
             _interrupted(ctx)
         except BrokenPipeError:  # stdout went away (`ncvm run ... | head`): stop as the other tools of a pipe do

@@ -233,6 +233,9 @@ def test_a_lock_left_by_a_killed_run_is_taken_over(tmp_path):
     assert (state / "lock").read_text() == ""
 
 
+KIND_WORDS = {"fifo": "FIFO", "directory": "directory", "symbolic link": "symbolic link"}
+
+
 @pytest.mark.parametrize("kind", ["fifo", "directory"])
 def test_a_lock_that_is_no_plain_file_is_refused_naming_it(tmp_path, kind):
     state = tmp_path / "st"
@@ -244,7 +247,7 @@ def test_a_lock_that_is_no_plain_file_is_refused_naming_it(tmp_path, kind):
     prog = tmp_path / "count.cpl"
     prog.write_text(QUIET)
     line = refused(ncvm("run", str(prog), "--state", str(state)))
-    assert f"{state / 'lock'} is a {kind}, not a file" in line and "remove it" in line
+    assert f"{state / 'lock'} is a {KIND_WORDS[kind]}, not a file" in line and "remove it" in line
 
 
 @pytest.mark.parametrize("side", ["-wal", "-shm"])
@@ -279,7 +282,7 @@ def test_a_store_that_is_no_plain_file_is_refused_naming_it(tmp_path, kind):
     prog = tmp_path / "count.cpl"
     prog.write_text(QUIET)
     line = refused(ncvm("run", str(prog), "--state", str(state)))
-    assert f"{state / 'store.sqlite'} is a {kind}, not a file" in line and "move it away" in line
+    assert f"{state / 'store.sqlite'} is a {KIND_WORDS[kind]}, not a file" in line and "move it away" in line
 
 
 def test_a_state_that_is_a_broken_symlink_is_named_as_such(tmp_path):

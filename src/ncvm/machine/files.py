@@ -57,7 +57,8 @@ class Place:
     shown: str
 
 
-def _kind(mode: int) -> str:
+def file_kind(mode: int) -> str:
+    """What an entry that is no regular file is, for a message ("a FIFO", "a directory", ...)."""
     for test, word in ((stat.S_ISDIR, "a directory"), (stat.S_ISFIFO, "a FIFO"), (stat.S_ISSOCK, "a socket"),
                        (stat.S_ISCHR, "a device"), (stat.S_ISBLK, "a device"), (stat.S_ISLNK, "a symbolic link")):
         if test(mode):
@@ -233,7 +234,7 @@ class FileRoot:
     def require_file(st: os.stat_result, shown: str) -> None:
         """Refuse anything but a regular file (a directory, FIFO, device, socket or link)."""
         if not stat.S_ISREG(st.st_mode):
-            raise FileRootError(f"{shown} is {_kind(st.st_mode)}, not a file")
+            raise FileRootError(f"{shown} is {file_kind(st.st_mode)}, not a file")
 
     # -- what a program does with a name ------------------------------------------------------
     def stat(self, place: Place, follow: bool = True) -> os.stat_result | None:

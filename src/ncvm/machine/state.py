@@ -15,6 +15,7 @@ import stat
 from pathlib import Path
 
 from ..diagnostics import UsageError
+from .files import file_kind
 
 LOCK_NAME = "lock"
 STORE_NAME = "store.sqlite"
@@ -107,11 +108,7 @@ def not_a_file(path: Path) -> str | None:
         mode = os.lstat(path).st_mode
     except OSError:
         return None
-    if stat.S_ISREG(mode):
-        return None
-    kinds = {stat.S_ISLNK: "a symbolic link", stat.S_ISDIR: "a directory", stat.S_ISFIFO: "a fifo",
-             stat.S_ISSOCK: "a socket"}
-    return next((name for test, name in kinds.items() if test(mode)), "a device")
+    return None if stat.S_ISREG(mode) else file_kind(mode)
 
 
 def _holds_a_pid(fd: int) -> bool:
