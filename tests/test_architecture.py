@@ -18,8 +18,6 @@ PACKAGE = SRC / "ncvm"
 KNOWN = {
     ("ncvm.runtime.session", "ncvm.sinks.limits"): "issue 13: the API chooses the sinks",
     ("ncvm.runtime.session", "ncvm.sinks.toolpath"): "issue 13: the API chooses the sinks",
-    ("ncvm.dialects.cl800.axiswords", "ncvm.dialects.sinumerik.codegen"): "issue 13: cl800 moves into sinumerik/",
-    ("ncvm.dialects.cl800.axiswords", "ncvm.dialects.sinumerik.reader"): "issue 13: cl800 moves into sinumerik/",
 }
 
 #: import cycles that exist today, each removed by issue 13 (none may be added)

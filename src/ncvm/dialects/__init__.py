@@ -28,7 +28,7 @@ class Entry(NamedTuple):
 REGISTRY = {
     "din": Entry("ncvm.dialects.din", "plain DIN 66025 / ISO 6983", (".din", ".ngc", ".nc", ".iso")),
     "cpl": Entry("ncvm.dialects.cpl", "Bosch Rexroth CPL (Typ3 osa / PNC)", (".cpl",)),
-    "cl800": Entry("ncvm.dialects.cl800", "Siemens CL 800 cycle language (compiled to SINUMERIK 800 @ code)",
+    "cl800": Entry("ncvm.dialects.sinumerik.cl800", "Siemens CL 800 cycle language (compiled to SINUMERIK 800 @ code)",
                    (".cl8", ".cl800")),
     "sin800": Entry("ncvm.dialects.sinumerik", "SINUMERIK 800 NC: @ code and DIN part programs (%MPF/%SPF)",
                     (".mpf", ".spf")),

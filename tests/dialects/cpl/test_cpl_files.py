@@ -1,5 +1,5 @@
 """Manual chapter 6 (files) as CPL programs: each example of the manual run through the front end, with the
-file contents the cpl_io tests state for the same example (tests/dialects/cpl_io/test_cpl_io_files.py)."""
+file contents the cpl_io tests state for the same example (tests/dialects/cpl/io/test_cpl_io_files.py)."""
 
 from __future__ import annotations
 

@@ -11,8 +11,8 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from ...machine.files import find_in
-from ...source import read_text
+from ....machine.files import find_in
+from ....source import read_text
 from . import ast
 from .lexer import Lexer, norm
 from .messages import Cl800Error

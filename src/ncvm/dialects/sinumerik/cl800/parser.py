@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from contextlib import contextmanager
 
-from ...source import LETTERS, MAX_NESTING, NAME_CHARS, too_deep
+from ....source import LETTERS, MAX_NESTING, NAME_CHARS, too_deep
 from . import ast
 from .lexer import KEYWORDS, KEYWORDS_UPPER, Token, norm
 from .messages import Cl800Error

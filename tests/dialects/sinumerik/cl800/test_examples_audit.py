@@ -106,7 +106,7 @@ def test_5_3_7_6_pattern_operations_program_59(tmp_path):
     _r, states = _states(MANUAL / "m5_3_7_6_logic_patterns.cl8", tmp_path)
     _ever(states, R52=10111111, R53=10011111, R54=100000, R55=11011111)
     # R56 = NOT R50 is computed in the pop + M17 block, after the hook's last look: the same @654 on the
-    # same pattern is asserted in tests/dialects/sin800/test_sin800.py (B11010011)
+    # same pattern is asserted in tests/dialects/sinumerik/test_sin800.py (B11010011)
 
 
 def test_5_3_7_6_boolean_operations_program_60(tmp_path):

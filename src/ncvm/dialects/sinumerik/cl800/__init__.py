@@ -11,9 +11,10 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
-from ...diagnostics import CompileFailed, UsageError
-from ...outpaths import refuse_overwrite, write_output
-from ..base import Dialect
+from ....diagnostics import CompileFailed, UsageError
+from ....outpaths import refuse_overwrite, write_output
+from ...base import Dialect
+from ... import get_dialect
 from . import ast
 from .atcode import ObjectProgram, compile_program
 from .axiswords import axis_diagnostics
@@ -118,8 +119,6 @@ class Cl800Dialect(Dialect):
         return target
 
     def run(self, path, text, session):
-        from .. import get_dialect
-
         obj = self.build(path, text, session.machine)
         obj_path = str(Path(path).with_name(f"L{obj.number}.spf"))
         get_dialect("sin800").run(obj_path, obj.text(), session)

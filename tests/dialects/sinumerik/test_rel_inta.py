@@ -108,6 +108,6 @@ def test_inta_starts_where_the_buffered_blocks_end(tmp_path):
 
 
 def test_inta_input_byte_out_of_range_is_a_cl800_error(tmp_path):
-    # arcs: tests/dialects/sin800/test_inta_arcs.py
+    # arcs: tests/dialects/sinumerik/test_inta_arcs.py
     r = _run(tmp_path, "%MPF1\n@736 K1 K3 K0 G1 X10 F100\nM30\n")
     assert r["error"]["code"] == "CL800"

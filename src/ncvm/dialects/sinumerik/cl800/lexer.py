@@ -10,7 +10,7 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 
-from ...source import DIGITS, LETTERS, int_literal
+from ....source import DIGITS, LETTERS, int_literal
 from .messages import Cl800Error
 
 MAX_LINE = 79  # one screen line of the WS 800 A editor (E208)

@@ -11,7 +11,7 @@ import pytest
 from ncvm.api import compile_program, run
 from ncvm.runtime.session import RunOptions
 
-EXAMPLES = Path(__file__).parents[3] / "examples" / "cl800"
+EXAMPLES = Path(__file__).parents[4] / "examples" / "cl800"
 
 
 @pytest.mark.parametrize("source,obj", [("hole_pattern.cl8", "L101.spf"), ("deep_hole_drilling.cl8", "L81.spf")])

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from ...diagnostics import Diagnostic, Span
+from ....diagnostics import Diagnostic, Span
 
 #: number -> text as the manual prints it (OCR slips corrected per digest §11, A20)
 MESSAGES = {

@@ -13,7 +13,7 @@ from ncvm.api import compile_program
 HERE = Path(__file__).parent
 MANUAL = HERE / "manual"
 ALL_SOURCES = sorted(MANUAL.glob("*.cl8")) + sorted((HERE / "golden").glob("*.cl8")) + sorted(
-    (HERE.parents[2] / "examples" / "cl800").glob("*.cl8"))
+    (HERE.parents[3] / "examples" / "cl800").glob("*.cl8"))
 
 
 @pytest.mark.parametrize("source", sorted(MANUAL.glob("*.cl8")), ids=lambda p: p.stem)

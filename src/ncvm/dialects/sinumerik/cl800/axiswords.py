@@ -8,10 +8,10 @@ from __future__ import annotations
 
 from dataclasses import fields
 
-from ...diagnostics import Diagnostic, Span, read_lines
-from ...nc.axiswords import missing_axis_message
-from ..sinumerik.codegen import dwells, missing_axis
-from ..sinumerik.reader import ReadError, Word, read_block
+from ....diagnostics import Diagnostic, Span, read_lines
+from ....nc.axiswords import missing_axis_message
+from ..codegen import dwells, missing_axis
+from ..reader import ReadError, Word, read_block
 from . import ast
 
 
