@@ -13,8 +13,8 @@ from pathlib import Path
 
 from ....diagnostics import CompileFailed, UsageError
 from ....outpaths import refuse_overwrite, write_output
-from ...base import Dialect
 from ... import get_dialect
+from ...base import Dialect
 from . import ast
 from .atcode import ObjectProgram, compile_program
 from .axiswords import axis_diagnostics
