@@ -20,7 +20,6 @@ import functools
 import itertools
 import math
 import re
-import traceback
 from collections import deque
 from pathlib import Path
 
@@ -30,6 +29,7 @@ from ...nc.block import ROW_LINE, Block, DinSyntaxError, as_block, parse_din_lin
 from ...nc.canon import Canon, Src
 from ...nc.midmove import MotionRecorder, position_at
 from ...nc.plainrun import execute_segments, plain_segments
+from ...runtime.locate import generated_frames
 from ...runtime.memory import out_of_memory
 from . import values as V
 from .axiswords import check_words, refused_blocks, refusing
@@ -294,12 +294,9 @@ class CplRuntime:
             code, detail = "RUN006", ""
         else:
             raise e
-        frames = []
-        for fs in traceback.extract_tb(e.__traceback__):
-            uc = self._codes.get(fs.filename)
-            if uc is not None:
-                line = uc.src.source_line(fs.lineno)
-                frames.append((fs.filename, line, uc.cpl_lines.get(line), uc.src.source_col(fs.lineno)))
+        codes = self._codes
+        frames = [(g.filename, g.line, codes[g.filename].cpl_lines.get(g.line), g.col)
+                  for g in generated_frames(e.__traceback__, {path: uc.src for path, uc in codes.items()})]
         text = e.message if isinstance(e, CplRuntimeError) else message(code, detail) if code != "RUN006" \
             else out_of_memory(self.session.options.max_memory).message
         if not frames:

@@ -15,7 +15,7 @@ from collections import deque
 from ...diagnostics import Frame, RuntimeFault, Span, UsageError
 from ...nc.block import Block
 from ...nc.kernel import INCH
-from ...runtime.codegen import program_lines
+from ...runtime.locate import fault_line
 from .ncdata import MIB_TOP, Cl800Error, NcData, int_to_pattern, nc8, pattern_to_int
 from .plc import PlcClock
 from .rotation import angle_address, shape_block
@@ -240,9 +240,9 @@ class Channel(SysMem, SpindleReads):
 
     def _locate(self, f: RuntimeFault, unit) -> None:
         if f.span is None:
-            lines = program_lines(sys.exc_info()[2], unit.source.filename)
-            if lines:
-                f.span = Span(unit.path, unit.source.source_line(lines[-1]))
+            line = fault_line(sys.exc_info()[2], unit.source)
+            if line is not None:
+                f.span = Span(unit.path, line)
         if not f.stack:
             f.stack = [Frame(fr.unit, None) for fr in self.frames]
             for i in range(len(self.frames) - 1):
