@@ -65,7 +65,7 @@ def check(path: str | Path, dialect: str | None = None, machine: Machine | str |
 
 @dataclass
 class RunResult:
-    """The outcome of one run; :meth:`to_json` is the document of ``ncvm run --json`` (docs/cli.md)."""
+    """The outcome of one run; :meth:`to_json` is the document of ``ncvm run --json`` (README.md)."""
 
     dialect: str
     error: Diagnostic | None
