@@ -1,5 +1,5 @@
 """The machine file has one section per dialect of the registry, and a dialect's options dataclass is its
-section, checked and typed (machine/sections.py)."""
+section, checked and filled in by machine/config.py."""
 
 from __future__ import annotations
 
@@ -11,8 +11,9 @@ import pytest
 from ncvm.diagnostics import UsageError
 from ncvm.dialects import REGISTRY
 from ncvm.dialects.sinumerik.cl800 import Options, options
+from ncvm.machine.config import dialect_options
 from ncvm.machine.model import Machine
-from ncvm.machine.sections import DIALECT_SECTIONS, SECTIONS, dialect_options
+from ncvm.machine.sections import DIALECT_SECTIONS, SECTIONS
 from ncvm.machine.spec import MACHINE_FILE, section_defaults
 
 

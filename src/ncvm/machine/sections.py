@@ -1,33 +1,15 @@
 """The dialect sections of the machine file ([cpl], [cl800], [sin800], [sympas], [din]), declared.
 
 They live here, beside the rest of the machine-file schema, because machine/ may not import the
-dialects and the reference (docgen.py) is generated from machine/ alone; one section per dialect of the
+dialects and the reference (docgen.py) is generated from machine/ alone: one section per dialect of the
 registry (dialects/__init__.py), named by its id (a test ties the two lists). A dialect reads its section
-from ``Machine.sections``; one that declares its options as a dataclass gets them checked and typed by
-:func:`dialect_options` (a test checks that its defaults are the ones declared here).
+from ``Machine.sections``; one that declares its options as a dataclass gets them checked and filled in
+by ``config.dialect_options`` (a test checks that its defaults are the ones declared here).
 """
 
 from __future__ import annotations
 
-from typing import Any, Mapping, TypeVar
-
-from ..diagnostics import UsageError
-from .schema import (
-    Check,
-    Ctx,
-    Either,
-    Field,
-    Flag,
-    ListOf,
-    Number,
-    Said,
-    SchemaError,
-    Table,
-    Text,
-    join,
-    unique,
-    validate,
-)
+from .schema import Check, Ctx, Either, Field, Flag, ListOf, Number, Said, SchemaError, Table, Text, join, unique
 
 NUMBER = Number()
 POSITIVE = Number(gt=0)
@@ -310,17 +292,3 @@ DIALECT_SECTIONS = (
 
 #: dialect id -> the table of its section
 SECTIONS: dict[str, Table] = {f.name: f.type for f in DIALECT_SECTIONS}
-
-Options = TypeVar("Options")
-
-
-def dialect_options(cls: type[Options], sections: Mapping[str, Any], dialect: str) -> Options:
-    """The ``[dialect]`` section of a machine's ``sections`` as the dataclass ``cls`` the dialect declares
-    its options in (its fields are the section's keys, with the defaults declared here). The section is
-    checked against the schema first: a Machine built in Python has not been through the loader."""
-    section = dict(sections.get(dialect) or {})
-    try:
-        validate(SECTIONS[dialect], section, path=dialect)
-    except SchemaError as e:
-        raise UsageError(f"machine file error: {e}") from None
-    return cls(**section)

@@ -13,7 +13,7 @@ from dataclasses import asdict, dataclass
 from pathlib import Path
 
 from ....diagnostics import CompileFailed, UsageError
-from ....machine.sections import dialect_options
+from ....machine.config import dialect_options
 from ....outpaths import refuse_overwrite, write_output
 from ... import get_dialect
 from ...base import Dialect
