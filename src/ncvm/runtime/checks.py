@@ -9,7 +9,7 @@ reports its first violations at the end, in ``limit_violations``; the run goes o
 
 from __future__ import annotations
 
-from typing import Callable, NamedTuple, Protocol, Sequence
+from typing import Any, Callable, NamedTuple, Protocol, Sequence
 
 DEAD, WORK = "dead range", "work area"
 
@@ -34,7 +34,11 @@ class Violation(Protocol):
 
 
 class MotionCheck(Protocol):
-    """A check of the recorded moves (it asked the recorder to show it them: ``recorder.watch``)."""
+    """A check of the recorded moves: it asks the recorder to show it them (``recorder.watch(check)``)."""
+
+    def observe(self, moves: Any, lo: int, hi: int) -> None:
+        """Moves ``lo``..``hi`` of the recorder's window (``moves.window()``, ``moves.src(i)`` ...)."""
+        ...
 
     def first(self) -> Sequence[Violation]:
         """The first violation of each thing checked, in program order (every move seen)."""
