@@ -1,17 +1,33 @@
-"""The public Python API: load a machine, check, run and compile programs."""
+"""The public Python API: load a machine, check, run and compile programs.
+
+A run is put together here: the API chooses the canon sinks from the run options (toolpath recorder,
+soft-limit check, trace, G-code, plot points), hands them to the :class:`Session` with the run's checks
+(front ends add theirs, e.g. CPL work areas) and turns the outcome into a :class:`RunResult`.
+"""
 
 from __future__ import annotations
 
 import dataclasses
+from dataclasses import dataclass, field
+from functools import partial
 from pathlib import Path
+from typing import Any
 
 from .diagnostics import CompileFailed, Diagnostic, UsageError
 from .dialects import detect_dialect, get_dialect
 from .machine.config import load_machine, load_scenario
 from .machine.model import Machine
 from .machine.state import StateLock
+from .nc.canon import CanonSink
+from .runtime.checks import Checks
 from .runtime.memory import memory_limit
-from .runtime.session import RunOptions, Session, run_guarded
+from .runtime.session import RunOptions, RunSinks, Session, run_guarded, set_default_sinks
+from .sinks.areas import zone_check
+from .sinks.gcode import GcodeWriter
+from .sinks.limits import LimitCheck
+from .sinks.plot import PlotPoints
+from .sinks.toolpath import MotionSummary, ToolpathRecorder
+from .sinks.trace import JsonlTrace
 from .source import read_text
 
 
@@ -47,9 +63,100 @@ def check(path: str | Path, dialect: str | None = None, machine: Machine | str |
     return get_dialect(d).check(str(path), text, machine_for(path, machine), all_errors)
 
 
-def run(path: str | Path, dialect: str | None = None, machine: Machine | str | Path | None = None,
-        options: RunOptions | None = None) -> tuple[dict, Session]:
-    """Run a program; returns the result document of ``ncvm run --json`` and the session.
+@dataclass
+class RunResult:
+    """The outcome of one run; :meth:`to_json` is the document of ``ncvm run --json`` (README.md)."""
+
+    dialect: str
+    error: Diagnostic | None
+    output: list[str]
+    output_dropped: int  # operator output lines between the kept first and last half
+    variables: dict[str, Any]
+    position: dict[str, float]  # workpiece coordinates at the end
+    motion: MotionSummary
+    cycle_time_s: float
+    steps: int
+    limit_violations: list[str]  # soft limits first, then the front end's checks (work areas ...)
+    extra: dict[str, Any]  # dialect-specific parts of the document (Session.extra)
+    session: Session = field(repr=False, compare=False)  # its recorder, plot points, screen ... for the caller
+
+    @property
+    def status(self) -> str:
+        return "error" if self.error else "ok"
+
+    @classmethod
+    def of(cls, session: Session, recorder: ToolpathRecorder, error: Diagnostic | None) -> RunResult:
+        """The result of ``session``, whose moves ``recorder`` recorded, ended by ``error`` (or None)."""
+        return cls(
+            dialect=session.dialect, error=error, output=session.output.lines(),
+            output_dropped=session.output.dropped, variables=dict(session.variables),
+            position=session.kernel.workpiece_position(), motion=recorder.summary(),
+            cycle_time_s=session.machine.clock.now,
+            # a runaway is caught just past the limit; straight code (no loop, no jump back) may pass it
+            steps=session.steps.limit if error and error.code == "RUN001" else session.steps.steps,
+            limit_violations=[v.message() for v in session.checks.violations()],
+            extra=dict(session.extra), session=session)
+
+    def to_json(self) -> dict:
+        out = {
+            "status": self.status,
+            "dialect": self.dialect,
+            "error": None,
+            "output": self.output,
+            "output_dropped": self.output_dropped,
+            "variables": {k: _jsonable(v) for k, v in self.variables.items()},
+            "position": self.position,
+            "motion": self.motion.to_json(),
+            "cycle_time_s": self.cycle_time_s,
+            "steps": self.steps,
+            "limit_violations": self.limit_violations,
+        }
+        out.update({k: _jsonable(v) for k, v in self.extra.items()})
+        if self.error:
+            e = self.error
+            out["error"] = {"code": e.code, "message": e.message, "file": e.span.file if e.span else None,
+                            "line": e.span.line if e.span else None, "column": e.span.column if e.span else None}
+            if e.notes:
+                out["error"]["stack"] = list(e.notes)
+        return out
+
+
+def _jsonable(v: Any) -> Any:
+    if isinstance(v, (bool, int, str)) or v is None:
+        return v
+    if isinstance(v, float):
+        return v if v == v and v not in (float("inf"), float("-inf")) else str(v)
+    if isinstance(v, (list, tuple)):
+        return [_jsonable(x) for x in v]
+    if isinstance(v, dict):
+        return {str(k): _jsonable(x) for k, x in v.items()}
+    if hasattr(v, "item"):  # numpy scalars
+        return _jsonable(v.item())
+    return str(v)
+
+
+def run_sinks(machine: Machine, options: RunOptions) -> RunSinks:
+    """The sinks of a run: the toolpath recorder and the soft-limit check always; the trace, the G-code
+    and the plot points when the options ask for them; then the caller's ``extra_sinks``."""
+    recorder = ToolpathRecorder(keep=options.keep_toolpath)
+    checks = Checks(area_check=partial(zone_check, recorder=recorder))
+    checks.add(LimitCheck(machine.axes, recorder))  # reported first, before the front end's checks
+    canon: list[CanonSink] = [recorder]
+    if options.trace:
+        canon.append(JsonlTrace(options.trace))
+    if options.gcode:
+        canon.append(GcodeWriter(options.gcode))
+    canon.extend(options.extra_sinks)
+    return RunSinks(canon, recorder, checks, PlotPoints(recorder) if options.plot else None)
+
+
+#: a Session built directly (tests, tools driving a front end) gets the same sinks as a run
+set_default_sinks(run_sinks)
+
+
+def run_program(path: str | Path, dialect: str | None = None, machine: Machine | str | Path | None = None,
+                options: RunOptions | None = None) -> RunResult:
+    """Run a program on the simulated controller.
 
     The run (reading the program included) may grow the process by ``options.max_memory``: past it the
     result is error RUN006, or MemoryError when the program could not even be read.
@@ -65,7 +172,8 @@ def run(path: str | Path, dialect: str | None = None, machine: Machine | str | P
             m = dataclasses.replace(m, scenario=sorted([*m.scenario, *load_scenario(options.scenario, m.axis_names)],
                                                        key=lambda e: e.time))
         with StateLock(options.state_dir):  # the controller's memory: one run at a time, refused at once
-            session = Session(m, options, dialect=d)
+            sinks = run_sinks(m, options)
+            session = Session(m, options, dialect=d, sinks=sinks)
             error: Diagnostic | None
             try:
                 error = run_guarded(session, lambda: front.run(str(path), text, session))
@@ -73,7 +181,15 @@ def run(path: str | Path, dialect: str | None = None, machine: Machine | str | P
                 error = e.diagnostics[0]
             finally:
                 session.close()
-    return session.result(error), session
+    return RunResult.of(session, sinks.recorder, error)
+
+
+def run(path: str | Path, dialect: str | None = None, machine: Machine | str | Path | None = None,
+        options: RunOptions | None = None) -> tuple[dict, Session]:
+    """Run a program (as :func:`run_program`); returns the result document of ``ncvm run --json`` and the
+    session."""
+    result = run_program(path, dialect, machine, options)
+    return result.to_json(), result.session
 
 
 def compile_program(path: str | Path, out: str | Path | None = None, xref: str | Path | None = None,

@@ -10,14 +10,20 @@ import json
 import os
 import sys
 import threading
+import traceback
 from pathlib import Path
 
 import click
 
-from . import __version__
-from .diagnostics import CompileFailed, UsageError, render_all
-from .dialects import REGISTRY
+from . import __version__, api
+from .diagnostics import CompileFailed, Diagnostic, Span, UsageError, render_all
+from .dialects import EXTENSIONS, REGISTRY
+from .machine.docgen import json_text
+from .machine.docgen import markdown as tables
 from .outpaths import PLOT_SUFFIXES, SCREEN_PICTURE, Output, OutputError, check_outputs
+from .runtime.memory import parse_size
+from .runtime.session import RunOptions
+from .sinks.plot import draw
 
 EXIT_OK, EXIT_FAULT, EXIT_USAGE, EXIT_INTERNAL = 0, 1, 2, 70
 DEFAULT_STATE = ".ncvm"
@@ -25,8 +31,6 @@ DEFAULT_STATE = ".ncvm"
 
 def _internal_error(exc: BaseException) -> None:
     if os.environ.get("NCVM_DEBUG") == "1":
-        import traceback
-
         traceback.print_exception(exc)
     click.echo(f"ncvm: internal error: {type(exc).__name__}: {exc}", err=True)
     click.echo("This is a bug in ncvm, not in your program. Please report it with the program and the "
@@ -135,7 +139,7 @@ class _Progress:
     def _loop(self):
         if self._stop.wait(1.0):
             return
-        from rich.console import Console
+        from rich.console import Console  # only a run on a terminal that lasts a second draws it: not at start-up
 
         console = Console(stderr=True)
         with console.status("running") as status:
@@ -186,16 +190,11 @@ def run(program, dialect, machine, state_dir, as_json, trace, gcode, plot, max_s
     Without --machine the machine.toml in the program's folder is used (named on stderr), as by check
     and compile, else the built-in 3-axis mill.
     """
-    from .api import machine_for
-    from .api import run as api_run
-    from .runtime.memory import parse_size
-    from .runtime.session import RunOptions
-
     _check_program(program)
     if not state_dir.strip():  # an unset variable: the store would land in the current directory
         raise UsageError("--state is empty; give the state directory (default .ncvm)")
     inputs = {"program": program, **_machine_input(program, machine), "--scenario": scenario, "--keys": keys}
-    machine = machine_for(program, machine or _folder_machine(program, say=True), Path(state_dir))
+    machine = api.machine_for(program, machine or _folder_machine(program, say=True), Path(state_dir))
     check_outputs([Output("--trace", trace), Output("--gcode", gcode), Output("--plot", plot, PLOT_SUFFIXES),
                    Output("--screen", screen, (".png",)),
                    Output("--screen-dir", screen_dir, folder=True, names=SCREEN_PICTURE)],
@@ -214,15 +213,13 @@ def run(program, dialect, machine, state_dir, as_json, trace, gcode, plot, max_s
     progress = _Progress(enabled=sys.stderr.isatty() and not as_json and not keyboard)
     options.on_session = lambda s: setattr(progress, "session", s)
     with progress:
-        result, session = api_run(program, dialect, machine, options)
+        result, session = api.run(program, dialect, machine, options)
     if (screen or screen_dir) and session.screen is None:
         click.echo(f"ncvm: warning: dialect '{result['dialect']}' has no operator screen; nothing saved", err=True)
     if editor_block is not None and result["dialect"] != "cpl":
         click.echo(f"ncvm: warning: dialect '{result['dialect']}' has no editor dialog; --editor-block ignored",
                    err=True)
     if plot:
-        from .sinks.plot import draw
-
         try:
             draw(session.plot, plot, title=f"{Path(program).name} ({result['dialect']})")
         except OSError as e:
@@ -231,8 +228,6 @@ def run(program, dialect, machine, state_dir, as_json, trace, gcode, plot, max_s
         click.echo(json.dumps(result, indent=2))
     else:
         if result["error"]:
-            from .diagnostics import Diagnostic, Span
-
             e = result["error"]
             span = Span(e["file"], e["line"], e["column"]) if e["file"] and e["line"] else None
             click.echo(Diagnostic(e["code"], e["message"], span, notes=e.get("stack", [])).render(), err=True)
@@ -247,6 +242,7 @@ def run(program, dialect, machine, state_dir, as_json, trace, gcode, plot, max_s
 def _read_key_script(path: str):
     """The key script, read once (``--keys /dev/stdin`` is a pipe); one that does not read is a usage error
     before the run, not a fault at its first wait."""
+    # CPL's key script: a dialect loads when a run needs it (the registry is lazy by design), not at start-up
     from .dialects.cpl.io.errors import CplRuntimeError
     from .dialects.cpl.io.screen import KeyScript
 
@@ -309,8 +305,6 @@ def _folder_machine(program: str, say: bool = False) -> str | None:
 
 def _programs_in(args) -> list[str]:
     """The programs named, with every program file below a named folder (an archive), by extension."""
-    from .dialects import EXTENSIONS
-
     out = []
     for arg in args:
         path = Path(arg)
@@ -335,13 +329,11 @@ def check(programs, dialect, machine, as_json, all_errors):
     A folder stands for every program file below it (known extensions), so a whole archive is checked
     at once; each program uses the machine file of its own folder unless --machine is given.
     """
-    from .api import check as api_check
-
     report, failed = [], False
     programs = _programs_in(programs)
     for program in programs:
         try:
-            diags = api_check(program, dialect, machine or _folder_machine(program), all_errors)
+            diags = api.check(program, dialect, machine or _folder_machine(program), all_errors)
         except CompileFailed as e:
             diags = e.diagnostics
         errors = [d for d in diags if d.severity == "error"]
@@ -371,15 +363,13 @@ def compile_cmd(source, out, xref, dialect, machine):
 
     Without --machine the machine.toml in the source's folder is used (named on stderr), as by check and run.
     """
-    from .api import compile_program
-
     _check_program(source)
     # compile has no state directory of its own, but a run's default one is no place for its files either
     check_outputs([Output("-o", out), Output("--xref", xref)], {"program": source, **_machine_input(source, machine)},
                   state=DEFAULT_STATE)
     machine = machine or _folder_machine(source, say=True)
     try:
-        path = compile_program(source, out, xref, dialect, machine)
+        path = api.compile_program(source, out, xref, dialect, machine)
     except CompileFailed as e:
         for text in render_all(e.diagnostics):
             click.echo(text, err=True)
@@ -391,9 +381,6 @@ def compile_cmd(source, out, xref, dialect, machine):
 @click.option("--markdown", is_flag=True, help="The reference tables of docs/machine-file.md instead.")
 def machine_schema(markdown):
     """Print the JSON Schema of machine files (for editors)."""
-    from .machine.docgen import json_text
-    from .machine.docgen import markdown as tables
-
     click.echo(tables() if markdown else json_text(), nl=False)
 
 

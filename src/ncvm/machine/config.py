@@ -11,11 +11,12 @@ import re
 import tomllib
 from importlib import resources
 from pathlib import Path
+from typing import Any, Mapping, TypeVar
 
 from ..diagnostics import UsageError
 from .model import Axis, Machine, PlcImage, ScenarioEvent, SimClock, Tool
 from .schema import MISSING, NO_AXES, Ctx, SchemaError, validate
-from .sections import DIALECT_SECTIONS
+from .sections import DIALECT_SECTIONS, SECTIONS
 from .spec import MACHINE_FILE, SCENARIO_FILE
 
 
@@ -120,6 +121,20 @@ def machine_from_dict(data: dict, where: str = "<dict>", folder: Path = Path("."
 
 
 NUMERIC_AXIS_KEYS = ("min", "max", "rapid", "max_feed", "accel")
+
+Options = TypeVar("Options")
+
+
+def dialect_options(cls: type[Options], sections: Mapping[str, Any], dialect: str) -> Options:
+    """The ``[dialect]`` section of a machine's ``sections`` as the dataclass ``cls`` the dialect declares
+    its options in (its fields are the section's keys, with the defaults of sections.py). The section is
+    checked against its schema first: a Machine built in Python has not been through the loader."""
+    section = dict(sections.get(dialect) or {})
+    try:
+        validate(SECTIONS[dialect], section, path=dialect)
+    except SchemaError as e:
+        raise UsageError(f"machine file error: {e}") from None
+    return cls(**section)
 
 
 def _events(entries: list[dict]) -> list[ScenarioEvent]:

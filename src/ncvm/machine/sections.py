@@ -1,9 +1,10 @@
 """The dialect sections of the machine file ([cpl], [cl800], [sin800], [sympas], [din]), declared.
 
 They live here, beside the rest of the machine-file schema, because machine/ may not import the
-dialects; the dialects still read their section from ``Machine.sections`` (a test checks that the
-defaults declared here are the ones they use). Moving each spec into its dialect, handed to the schema
-by the dialect registry, is issue 13's work.
+dialects and the reference (docgen.py) is generated from machine/ alone: one section per dialect of the
+registry (dialects/__init__.py), named by its id (a test ties the two lists). A dialect reads its section
+from ``Machine.sections``; one that declares its options as a dataclass gets them checked and filled in
+by ``config.dialect_options`` (a test checks that its defaults are the ones declared here).
 """
 
 from __future__ import annotations
@@ -288,3 +289,6 @@ DIALECT_SECTIONS = (
     Field("sympas", SYMPAS, "rw_SymPas card (docs/sympas.md)"),
     Field("din", DIN, "plain DIN 66025: no options"),
 )
+
+#: dialect id -> the table of its section
+SECTIONS: dict[str, Table] = {f.name: f.type for f in DIALECT_SECTIONS}

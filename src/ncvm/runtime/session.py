@@ -1,9 +1,10 @@
 """One run of one program on one simulated controller.
 
-A :class:`Session` wires the machine, the permanent store, the NC kernel and
-the canon sinks together, gives the front ends what they share (operator
-output, step counter, variables to report) and turns the outcome into the
-result of ``ncvm run`` (see :meth:`Session.result`).
+A :class:`Session` wires the machine, the permanent store and the NC kernel to the canon sinks the API
+chose (api.py builds them: toolpath recorder, soft-limit check, trace, G-code, plot), and gives the
+front ends what they share: operator output, step counter, variables to report, the run's checks
+(:class:`~ncvm.runtime.checks.Checks`, where a front end adds its own). The API turns it into the result
+of ``ncvm run`` (``api.RunResult``).
 """
 
 from __future__ import annotations
@@ -12,15 +13,14 @@ import sys
 from collections import deque
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any, Callable
+from typing import Any, Callable, Protocol
 
 from ..diagnostics import Diagnostic, RuntimeFault
 from ..machine.model import Machine
 from ..machine.store import Store
 from ..nc.canon import Canon, CanonSink
 from ..nc.kernel import NcKernel
-from ..sinks.limits import LimitCheck
-from ..sinks.toolpath import ToolpathRecorder
+from .checks import Checks
 from .memory import default_max_memory, out_of_memory
 from .steps import DEFAULT_MAX_STEPS, StepCounter, StepHook
 
@@ -53,10 +53,40 @@ class RunOptions:
     mmc_client: Callable[[list, list], tuple] | None = None
 
 
-class Session:
-    """Everything one run shares between a front end, the kernel and the sinks."""
+class MoveLog(Protocol):
+    """The sink that records the moves (the API's toolpath recorder): checks watch it, the progress line
+    counts it."""
 
-    def __init__(self, machine: Machine, options: RunOptions | None = None, dialect: str = ""):
+    def __len__(self) -> int: ...
+
+
+@dataclass
+class RunSinks:
+    """The sinks of one run as the API chose them (api.run_sinks): the canon sinks, the one of them that
+    records the moves, the checks of the recorded moves and the points of a toolpath plot (kept for the
+    caller to draw). Empty: the kernel moves and nothing is recorded."""
+
+    canon: list[CanonSink] = field(default_factory=list)
+    recorder: MoveLog | None = None
+    checks: Checks = field(default_factory=Checks)
+    plot: Any = None
+
+
+#: the sinks of a session built without them: api.py installs its choice when it is imported (the ncvm
+#: package imports it), so runtime/ neither chooses nor imports a sink
+_default_sinks: Callable[[Machine, RunOptions], RunSinks] | None = None
+
+
+def set_default_sinks(choose: Callable[[Machine, RunOptions], RunSinks]) -> None:
+    global _default_sinks
+    _default_sinks = choose
+
+
+class Session:
+    """Everything one run shares between a front end, the kernel and the sinks (see :class:`RunSinks`)."""
+
+    def __init__(self, machine: Machine, options: RunOptions | None = None, dialect: str = "",
+                 sinks: RunSinks | None = None):
         self.machine = machine
         self.options = options or RunOptions()
         self.dialect = dialect
@@ -65,23 +95,12 @@ class Session:
         #: dialect-specific parts of the result document (e.g. the rw_SymPas card's LPR recordings)
         self.extra: dict[str, Any] = {}
         self.steps = StepCounter(self.options.max_steps, self.options.hook)
-        self.recorder = ToolpathRecorder(keep=self.options.keep_toolpath)
-        self.limits = LimitCheck(machine.axes, self.recorder)  # watches the recorded moves
-        self.plot = None
-        if self.options.plot:
-            from ..sinks.plot import PlotPoints
-            self.plot = PlotPoints(self.recorder)
-        #: more checks of the recorded moves a front end adds (e.g. CPL's work areas and dead ranges); each
-        #: has ``first()`` -> violations with ``line`` and ``message()``, reported with the soft limits
-        self.limit_checks: list = []
-        sinks: list[CanonSink] = [self.recorder]
-        if self.options.trace:
-            from ..sinks.trace import JsonlTrace
-            sinks.append(JsonlTrace(self.options.trace))
-        if self.options.gcode:
-            from ..sinks.gcode import GcodeWriter
-            sinks.append(GcodeWriter(self.options.gcode))
-        sinks.extend(self.options.extra_sinks)
+        chosen = sinks or (_default_sinks(machine, self.options) if _default_sinks else RunSinks())
+        self.recorder = chosen.recorder
+        self.plot = chosen.plot
+        #: the checks of the recorded moves; a front end adds its own (e.g. CPL's work areas and dead ranges)
+        self.checks = chosen.checks
+        sinks = chosen.canon
         self.sinks = sinks
         self.canon = Canon(sinks)
         self.canon.message = self._message_fanout(self.canon.message)
@@ -121,55 +140,6 @@ class Session:
         if self._store is not None:
             self._store.close()
             self._store = None
-
-    def violations(self) -> list:
-        """Soft-limit violations, then those of the front end's checks, each list in program order."""
-        out = list(self.limits.first())
-        for check in self.limit_checks:
-            out.extend(check.first())
-        return out
-
-    def result(self, error: Diagnostic | None) -> dict:
-        """The JSON document of ``ncvm run --json``."""
-        motion = self.recorder.summary()
-        out = {
-            "status": "error" if error else "ok",
-            "dialect": self.dialect,
-            "error": None,
-            "output": self.output.lines(),
-            "output_dropped": self.output.dropped,
-            "variables": {k: _jsonable(v) for k, v in self.variables.items()},
-            "position": self.kernel.workpiece_position(),
-            "motion": motion.to_json(),
-            "cycle_time_s": self.machine.clock.now,
-            # a runaway is caught just past the limit; straight code (no loop, no jump back) may pass it
-            "steps": self.steps.limit if error and error.code == "RUN001" else self.steps.steps,
-            "limit_violations": [v.message() for v in self.violations()],
-        }
-        out.update({k: _jsonable(v) for k, v in self.extra.items()})
-        if error:
-            out["error"] = {"code": error.code, "message": error.message,
-                            "file": error.span.file if error.span else None,
-                            "line": error.span.line if error.span else None,
-                            "column": error.span.column if error.span else None}
-            if error.notes:
-                out["error"]["stack"] = list(error.notes)
-        return out
-
-
-def _jsonable(v: Any) -> Any:
-    if isinstance(v, (bool, int, str)) or v is None:
-        return v
-    if isinstance(v, float):
-        return v if v == v and v not in (float("inf"), float("-inf")) else str(v)
-    if isinstance(v, (list, tuple)):
-        return [_jsonable(x) for x in v]
-    if isinstance(v, dict):
-        return {str(k): _jsonable(x) for k, x in v.items()}
-    if hasattr(v, "item"):  # numpy scalars
-        return _jsonable(v.item())
-    return str(v)
-
 
 def run_guarded(session: Session, runner) -> Diagnostic | None:
     """Call ``runner()``; a run-time fault becomes a Diagnostic. CompileFailed and bugs propagate."""

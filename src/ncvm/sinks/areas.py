@@ -1,7 +1,8 @@
 """Protection-zone check: moves that enter a dead range or leave a work area.
 
 A zone is an axis-parallel rectangle on two machine axes (machine coordinates,
-mm). Like :class:`~ncvm.sinks.limits.LimitCheck` it watches the toolpath
+mm; :class:`~ncvm.runtime.checks.Area`, the kind of zone front ends register). Like
+:class:`~ncvm.sinks.limits.LimitCheck` it watches the toolpath
 recorder, a window of moves at a time, and reports the first offending move per
 zone; the run goes on. Work areas are convex, so a move stays inside exactly when its
 extent (end points, widened by where arcs reach) does. Dead ranges are open
@@ -15,12 +16,13 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import Sequence
 
 import numpy as np
 
 from ..nc import arcs
+from ..runtime.checks import DEAD, WORK, Area
 
-DEAD, WORK = "dead range", "work area"
 TOL = 1e-6  # mm: touching an edge is neither entering a dead range nor leaving a work area
 
 
@@ -163,9 +165,9 @@ def _arc_enters(z: Zone, start, end, spec) -> bool:
     return False
 
 
-def zone_check(areas, axis_names, recorder) -> ZoneCheck:
-    """Build the check from ``(number, kind, (axis name, axis name), (centre a, centre b), (size a, size b))``
-    records; a zone is ``centre ± size / 2`` on each of its axes."""
+def zone_check(areas: Sequence[Area], axis_names, recorder) -> ZoneCheck:
+    """Build the check from :class:`~ncvm.runtime.checks.Area` records (or tuples of its fields); a zone
+    is ``centre ± size / 2`` on each of its axes."""
     names = [n.upper() for n in axis_names]
     zones = []
     for number, kind, (na, nb), centre, size in areas:

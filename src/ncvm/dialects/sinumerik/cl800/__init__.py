@@ -9,9 +9,11 @@ dialect, as the object program was loaded into the NC.
 from __future__ import annotations
 
 import re
+from dataclasses import asdict, dataclass
 from pathlib import Path
 
 from ....diagnostics import CompileFailed, UsageError
+from ....machine.config import dialect_options
 from ....outpaths import refuse_overwrite, write_output
 from ... import get_dialect
 from ...base import Dialect
@@ -33,22 +35,21 @@ def search_path(path: str, machine) -> list[Path]:
     return folders
 
 
-#: the machine file's [cl800] keys and their defaults (docs/cl800.md)
-OPTIONS = {"strict": False, "control": "880"}
-CONTROLS = ("810", "820", "850", "880")
+@dataclass(frozen=True)
+class Options:
+    """The machine file's [cl800] section (docs/cl800.md; its schema is machine/sections.py's CL800)."""
+
+    strict: bool = False  # drop the compiler's leniencies
+    control: str = "880"  # the target control: 810, 820, 850 or 880
 
 
-def options(machine) -> dict:
-    """The [cl800] section of the machine file; an unknown key or a wrong type is a usage error."""
-    section = dict(getattr(machine, "sections", {}).get("cl800", {}) or {})
-    for key, value in section.items():
-        if key not in OPTIONS:
-            raise UsageError(f"machine file: unknown key 'cl800.{key}' (known: {', '.join(OPTIONS)})")
-        if not isinstance(value, type(OPTIONS[key])):
-            raise UsageError(f"machine file: key 'cl800.{key}' must be {type(OPTIONS[key]).__name__}")
-    if section.get("control", "880") not in CONTROLS:
-        raise UsageError(f"machine file: key 'cl800.control' must be one of {', '.join(CONTROLS)}")
-    return {**OPTIONS, **section}
+#: the [cl800] keys and their defaults
+OPTIONS = asdict(Options())
+
+
+def options(machine) -> Options:
+    """The [cl800] section of the machine; an unknown key or a wrong value is a usage error."""
+    return dialect_options(Options, getattr(machine, "sections", {}), "cl800")
 
 
 _PROGRAM_START = re.compile(r"\s*PROGRAM\b")
@@ -76,7 +77,7 @@ class Cl800Dialect(Dialect):
 
     def analyse(self, path: str, text: str, machine):
         opts = options(machine)
-        prog, sym, errors = check_program(path, text, search_path(path, machine), opts["strict"], opts["control"])
+        prog, sym, errors = check_program(path, text, search_path(path, machine), opts.strict, opts.control)
         return prog, sym, errors
 
     def check(self, path, text, machine, all_errors=False):

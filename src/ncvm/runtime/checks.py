@@ -1,0 +1,72 @@
+"""Checks of a run's motion, and how a front end registers one without knowing the sinks.
+
+The API builds the toolpath recorder and the soft-limit check (sinks/) and hands the session a
+:class:`Checks`; a front end adds its own through it: a :class:`MotionCheck` it built itself, or the
+control's protection zones (:class:`Area`, e.g. CPL work areas and dead ranges, manual ch. 4), which
+the check the API supplied watches. Each check is told of the recorded moves a window at a time and
+reports its first violations at the end, in ``limit_violations``; the run goes on.
+"""
+
+from __future__ import annotations
+
+from typing import Any, Callable, NamedTuple, Protocol, Sequence
+
+DEAD, WORK = "dead range", "work area"
+
+
+class Area(NamedTuple):
+    """A protection zone: an axis-parallel rectangle ``centre ± size / 2`` on two machine axes (machine
+    coordinates, mm). A move may not enter a DEAD one nor leave a WORK one."""
+
+    number: int  # 1.. as the control counts them
+    kind: str  # DEAD or WORK
+    axes: tuple[str, str]
+    centre: tuple[float, float]
+    size: tuple[float, float]
+
+
+class Violation(Protocol):
+    """One reported violation: where it happened first and what it was."""
+
+    line: int
+
+    def message(self) -> str: ...
+
+
+class MotionCheck(Protocol):
+    """A check of the recorded moves: it asks the recorder to show it them (``recorder.watch(check)``)."""
+
+    def observe(self, moves: Any, lo: int, hi: int) -> None:
+        """Moves ``lo``..``hi`` of the recorder's window (``moves.window()``, ``moves.src(i)`` ...)."""
+        ...
+
+    def first(self) -> Sequence[Violation]:
+        """The first violation of each thing checked, in program order (every move seen)."""
+        ...
+
+
+#: builds the check of some areas on the machine axes named (the API supplies it: sinks.areas.zone_check)
+AreaCheckFactory = Callable[[Sequence[Area], Sequence[str]], MotionCheck]
+
+
+class Checks:
+    """The checks of one run, reported in the order they were added."""
+
+    def __init__(self, area_check: AreaCheckFactory | None = None):
+        self._area_check = area_check
+        self._checks: list[MotionCheck] = []
+
+    def add(self, check: MotionCheck) -> None:
+        self._checks.append(check)
+
+    def add_areas(self, areas: Sequence[Area], axis_names: Sequence[str]) -> None:
+        """Watch the moves for ``areas`` from now on (before the first move: the start is not checked)."""
+        if not areas:
+            return
+        if self._area_check is None:  # a session built without sinks records no moves: say so, never pass silently
+            raise RuntimeError("this session records no moves: protection zones cannot be checked")
+        self.add(self._area_check(areas, axis_names))
+
+    def violations(self) -> list[Violation]:
+        """Every check's first violations, check by check."""
+        return [v for check in self._checks for v in check.first()]

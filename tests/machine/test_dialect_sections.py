@@ -1,0 +1,40 @@
+"""The machine file has one section per dialect of the registry, and a dialect's options dataclass is its
+section, checked and filled in by machine/config.py."""
+
+from __future__ import annotations
+
+import dataclasses
+import re
+
+import pytest
+
+from ncvm.diagnostics import UsageError
+from ncvm.dialects import REGISTRY
+from ncvm.dialects.sinumerik.cl800 import Options, options
+from ncvm.machine.config import dialect_options
+from ncvm.machine.model import Machine
+from ncvm.machine.sections import DIALECT_SECTIONS, SECTIONS
+from ncvm.machine.spec import MACHINE_FILE, section_defaults
+
+
+def test_one_section_per_dialect_of_the_registry():
+    assert sorted(f.name for f in DIALECT_SECTIONS) == sorted(REGISTRY)
+    assert set(SECTIONS) <= {f.name for f in MACHINE_FILE.fields}
+
+
+def test_the_cl800_options_are_its_section():
+    assert {f.name: f.default for f in dataclasses.fields(Options)} == section_defaults("cl800")
+    m = Machine()
+    assert options(m) == Options()
+    m.sections["cl800"] = {"control": "810", "strict": True}
+    assert options(m) == Options(strict=True, control="810")
+
+
+@pytest.mark.parametrize("section, message", [
+    ({"stict": True}, "cl800.stict = true: unknown key (known: strict, control)"),
+    ({"strict": 1}, "cl800.strict = 1: must be true or false"),
+    ({"control": "999"}, 'cl800.control = "999": must be one of "810", "820", "850", "880"'),
+])
+def test_a_bad_section_built_in_python_is_refused_as_a_machine_file_is(section, message):
+    with pytest.raises(UsageError, match=re.escape("machine file error: " + message)):
+        dialect_options(Options, {"cl800": section}, "cl800")
