@@ -239,9 +239,9 @@ def refuse(events: list[Event], takes: tuple[type, ...], control: str) -> None:
     machine file is silently ignored."""
     for ev in events:
         if not isinstance(ev, takes):
-            forms = ", ".join(dict.fromkeys(t.form for t in takes))
+            forms = ", ".join(dict.fromkeys(t.form for t in takes)) or "none"
             raise UsageError(f"scenario event at {ev.time:g} s: {ev.form}, which the {control} cannot use "
-                             f"(it takes {forms})")
+                             f"(scenario events it takes: {forms})")
 
 
 def of_type(events: list[Event], *types: type) -> list[Event]:
