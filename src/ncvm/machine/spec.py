@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from typing import Any
 
+from .scenario import CHECKS as EVENT_CHECKS
 from .schema import (
     Check,
     Ctx,
@@ -27,7 +28,6 @@ from .schema import (
     show,
     unique,
 )
-from .scenario import CHECKS as EVENT_CHECKS
 from .sections import DIALECT_SECTIONS
 
 NUMBER = Number()

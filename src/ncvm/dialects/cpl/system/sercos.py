@@ -15,7 +15,6 @@ from ..io.errors import CplRuntimeError, fail
 from .axes import nul
 from .positions import f_apos
 
-
 #: the scenario events the SERCOS functions read
 SERCOS_EVENTS = (SercosLock,)
 
