@@ -26,11 +26,12 @@ from ...machine.scenario import (
 )
 from ...nc.block import Block
 from ...nc.kernel import INCH
+from ...nc.spindle import SINUMERIK_GEARS, Gearbox
 from ...runtime.codegen import program_lines
 from .ncdata import MIB_TOP, Cl800Error, NcData, int_to_pattern, nc8, pattern_to_int
 from .plc import PlcClock
 from .rotation import angle_address, shape_block
-from .spindle import GEAR_M, Gearbox, SpindleReads
+from .spindle import GEAR_M, SpindleReads
 from .sysmem import SysMem
 
 DEG = math.pi / 180.0
@@ -129,7 +130,7 @@ class Channel(SysMem, SpindleReads):
         for ev in of_type(session.machine.scenario, PlcTimer, PlcCounter):
             self.plc_clock.parse_event(ev)  # faults in the scenario before the run
         self.m_functions = {f"M{int(k)}": dict(v) for k, v in sec.get("m_functions", {}).items()}
-        self.gearbox = Gearbox(self.kernel, data.gear, data.gears)
+        self.gearbox = Gearbox(self.kernel, SINUMERIK_GEARS, data.gear, data.gears, Cl800Error, "[sin800] gears")
         # G96 takes the radius from X; axis 1 may be programmed as a diameter (as for PREP CYC)
         self.kernel.css_diameter = self.kernel.css_axis == 0 and bool(data.areas["nc_md"].get("diameter_axis1", 0.0))
         canon = session.canon
@@ -142,7 +143,7 @@ class Channel(SysMem, SpindleReads):
             self.advance_scenario()  # what the PLC did before this block
             self.plc_clock.m_function(code, self.session.machine.clock.now)
             if code in GEAR_M:
-                self.gearbox.select(code)
+                self.gearbox.select(GEAR_M[code])
             if code in self.m_functions:
                 self.m_function(code)
 
