@@ -86,13 +86,11 @@ def _run(tmp_path, program: str, name: str, scenario: str, dialect=None):
     ("p.mpf", "%MPF1\nR1=1\nM30\n", 'kind = "input"\naddress = "E1.0"',
      r"an input by address \(CPL\), which the SINUMERIK control cannot use"),
     ("p.mpf", "%MPF1\nR1=1\nM30\n", 'kind = "fixed_stop"\nX = 1', r"a fixed_stop event \(CPL\), which the SINUMERIK"),
-    ("p.ngc", "G0 X1\nM30\n", 'kind = "probe"\nX = 1', r"a probe event, which the DIN 66025 kernel cannot use "
-                                                       r"\(scenario events it takes: none\)"),
 ])
 def test_a_control_refuses_an_event_it_cannot_use(tmp_path, name, program, scenario, expected):
     with pytest.raises(UsageError, match=r"scenario event at 0.5 s: " + expected if "probe event at" not in expected
                        else expected):
-        _run(tmp_path, program, name, scenario, dialect="din" if name.endswith(".ngc") else None)
+        _run(tmp_path, program, name, scenario)
 
 
 def test_sympas_refuses_a_sinumerik_timer(tmp_path):

@@ -5,7 +5,6 @@ from __future__ import annotations
 import re
 
 from ...diagnostics import CompileFailed, RuntimeFault
-from ...machine.scenario import refuse
 from ...nc.axiswords import din_missing_axes
 from ...nc.block import PlainRun, read_din_segments
 from ...nc.canon import Src
@@ -35,7 +34,6 @@ class DinDialect(Dialect):
         segments, diags = read_din_segments(path, text)
         if diags:
             raise CompileFailed(diags)
-        refuse(session.machine.scenario, (), "DIN 66025 kernel")  # nothing in a DIN program reads them
         kernel = session.kernel
         skip_active = bool(session.machine.setting_data.get("block_skip", True))
         # a block with a word for an axis the machine lacks is refused when the run reaches it (found here,
