@@ -163,8 +163,8 @@ INPUT_FORMS = "address (CPL), byte and bit (SINUMERIK) or axis and bit (rw_SymPa
 def _input_form(entry: dict, path: str, ctx=None) -> None:
     """An input event names its input one way: address, byte/bit or axis/bit, with the bit in that form's
     range; without address or axis it is SINUMERIK's byte/bit form."""
-    given = [k for k in ("address", "byte", "axis") if k in entry]
-    if "address" in entry and len(given) + ("bit" in entry) > 1 or "axis" in entry and "byte" in entry:
+    with_address = "address" in entry and any(k in entry for k in ("byte", "bit", "axis"))
+    if with_address or "axis" in entry and "byte" in entry:
         raise SchemaError(path, entry, f"names its input more than one way: give {INPUT_FORMS}")
     if "address" in entry:
         return

@@ -576,7 +576,7 @@ class SysMem:
     def plc_set_event(self, ev) -> None:
         """A scripted change of a PLC I/Q/P/F bit or byte (``[[scenario]]`` kind "plc", a PlcChange)."""
         if ev.bit is not None:
-            self.plc_bit(ev.plc, ev.area, ev.byte, ev.bit, 1 if (1 if ev.value is None else ev.value) else 0, ev.time)
+            self.plc_bit(ev.plc, ev.area, ev.byte, ev.bit, 1 if ev.value is None or ev.value else 0, ev.time)
             return
         value = 0 if ev.value is None else ev.value
         self._put_byte(ev.plc, ev.area, ev.byte,
