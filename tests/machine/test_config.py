@@ -8,6 +8,7 @@ import pytest
 
 from ncvm.diagnostics import UsageError
 from ncvm.machine.config import load_machine
+from ncvm.machine.scenario import InterfaceBit, ProbeSwitch
 
 EXAMPLES = Path(__file__).parents[2] / "examples" / "machines"
 
@@ -49,7 +50,7 @@ def test_offsets_start_position_and_scenario(tmp_path):
     assert m.start_position == [1.0, 2.0]
     assert m.offset("G55") == [10.0, -5.0] and m.offset("G56") == [0.0, 0.0]
     assert [(e.time, e.kind) for e in m.scenario] == [(1.5, "probe"), (3.0, "input")]
-    assert m.scenario[1].data == {"address": "E1.0", "value": True}
+    assert m.scenario[1] == InterfaceBit(3.0, "E1.0", True)
 
 
 # malformed files, key by key: tests/machine/test_machine_schema.py
@@ -72,8 +73,7 @@ def test_scenario_file_loads_sorted_and_names_bad_keys(tmp_path):
     p.write_text('[[scenario]]\ntime = 4\nkind = "input"\naddress = "E1.0"\nvalue = true\n'
                  '[[scenario]]\ntime = 0.5\nkind = "probe"\nX = 12.5\n')
     events = load_scenario(p, ("X",))
-    assert [(e.time, e.kind, e.data) for e in events] == [(0.5, "probe", {"X": 12.5}),
-                                                         (4.0, "input", {"address": "E1.0", "value": True})]
+    assert events == [ProbeSwitch(0.5, {"X": 12.5}), InterfaceBit(4.0, "E1.0", True)]
     p.write_text('[[scenario]]\ntime = 1\nkind = "input"\n[axis]\nname = "X"\n')
     with pytest.raises(UsageError, match="scenario file error: axis = .*: unknown key"):
         load_scenario(p)

@@ -302,7 +302,7 @@ def test_scenario_file_is_checked_against_the_machine_axes(tmp_path):
     p.write_text("[[scenario]]\ntime = 0\nkind = 'probe'\nQ = 1.0\n")
     with pytest.raises(UsageError, match=r"scenario file error: scenario\[0\]\.Q = 1\.0: unknown key"):
         load_scenario(p, ("X", "Y", "Z"))
-    assert load_scenario(p, ("X", "Q"))[0].data == {"Q": 1.0}
+    assert load_scenario(p, ("X", "Q"))[0].position == {"Q": 1.0}
     p.write_text("[[scenario]]\ntime = 1\nkind = 'input'\n[axis]\nname = 'X'\n")
     with pytest.raises(UsageError, match=r"axis = \{ name = \"X\" \}: unknown key \(known: scenario; a scenario file holds only"):
         load_scenario(p)

@@ -14,7 +14,8 @@ from pathlib import Path
 from typing import Any, Mapping, TypeVar
 
 from ..diagnostics import UsageError
-from .model import Axis, Machine, PlcImage, ScenarioEvent, SimClock, Tool
+from .model import Axis, Machine, PlcImage, SimClock, Tool
+from .scenario import Event, from_tables
 from .schema import MISSING, NO_AXES, Ctx, SchemaError, validate
 from .sections import DIALECT_SECTIONS, SECTIONS
 from .spec import MACHINE_FILE, SCENARIO_FILE
@@ -115,7 +116,7 @@ def machine_from_dict(data: dict, where: str = "<dict>", folder: Path = Path("."
     paths = data.get("paths", {})
     m.program_path = [(folder / p) for p in paths.get("program_path", ["."])]
     m.file_root = folder / paths.get("file_root", "files")
-    m.scenario = _events(data.get("scenario", []))
+    m.scenario = from_tables(data.get("scenario", []))
     m.sections = {sec.name: data[sec.name] for sec in DIALECT_SECTIONS if sec.name in data}
     return m
 
@@ -137,16 +138,10 @@ def dialect_options(cls: type[Options], sections: Mapping[str, Any], dialect: st
     return cls(**section)
 
 
-def _events(entries: list[dict]) -> list[ScenarioEvent]:
-    events = [ScenarioEvent(float(ev["time"]), ev["kind"], {k: v for k, v in ev.items() if k not in ("time", "kind")})
-              for ev in entries]
-    return sorted(events, key=lambda e: e.time)
-
-
-def load_scenario(path: str | Path, axis_names: tuple[str, ...] = ()) -> list[ScenarioEvent]:
+def load_scenario(path: str | Path, axis_names: tuple[str, ...] = ()) -> list[Event]:
     """A scenario file (``--scenario``): ``[[scenario]]`` tables as in a machine file, nothing else.
     Events that name axes (probe, fixed_stop) are checked against ``axis_names``."""
     p = Path(path)
     data = _parse(p, "scenario file")
     _checked(SCENARIO_FILE, data, str(p), Ctx(tuple(axis_names)), "scenario file")
-    return _events(data.get("scenario", []))
+    return from_tables(data.get("scenario", []))

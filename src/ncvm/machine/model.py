@@ -14,6 +14,7 @@ from pathlib import Path
 from typing import Any
 
 from .files import find_in
+from .scenario import Event
 
 
 @dataclass(slots=True)
@@ -63,15 +64,6 @@ class PlcImage:
     words: dict[str, Any] = field(default_factory=dict)
 
 
-@dataclass(slots=True)
-class ScenarioEvent:
-    """Something that happens to the machine at a simulated time (an input changes, a probe triggers)."""
-
-    time: float
-    kind: str  # "input", "probe", "alarm", ...
-    data: dict[str, Any]
-
-
 @dataclass
 class Machine:
     """A simulated controller: the data a real control holds about its machine."""
@@ -89,7 +81,7 @@ class Machine:
     start_position: list[float] | None = None
     program_path: list[Path] = field(default_factory=lambda: [Path(".")])
     file_root: Path = Path("files")
-    scenario: list[ScenarioEvent] = field(default_factory=list)
+    scenario: list[Event] = field(default_factory=list)
     #: raw TOML tables of dialect-specific sections ([cpl], [sin800], [sympas], ...)
     sections: dict[str, Any] = field(default_factory=dict)
     source: str = "<built-in>"

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from typing import Any
 
+from .scenario import CHECKS as EVENT_CHECKS
 from .schema import (
     Check,
     Ctx,
@@ -83,24 +84,26 @@ TOOL = Table((
 
 PLC_BITS = Table(other=Either((Flag(), INT), "true/false or an integer"), keys=NAME, keys_doc="address")
 
-#: [[scenario]] events by kind; the dialect that reads each kind is named in its doc
+#: [[scenario]] events by kind (machine/scenario.py types them); the dialect that reads each kind is named in
+#: its doc, and a dialect refuses an event it cannot use
 INPUT_VALUE = Either((Flag(), Number(integer=True, min=0, max=1)), "true/false or 0/1")
 PLC_NO = Number(integer=True, min=1, max=4)
 SCENARIO = Tagged("kind", (
     Field("time", NONNEG, "when it happens (simulated time from the start)", unit="s", required=True),
 ), {
     "input": Table((
-        Field("address", NAME, "CPL: the interface bit, e.g. \"IC(3,0,1)\""),
-        Field("byte", Number(integer=True, min=1, max=2), "SINUMERIK: external input byte", 1),
-        Field("bit", Number(integer=True, min=0, max=32), "SINUMERIK: bit 0-7; rw_SymPas: digital input 1-32"),
-        Field("axis", NAME, "rw_SymPas: the axis whose digital input changes"),
+        Field("address", NAME, "CPL: the interface bit, e.g. \"IC(3,0,1)\" (no byte, bit or axis with it)"),
+        Field("byte", Number(integer=True, min=1, max=2), "SINUMERIK: external input byte (with bit)", 1),
+        Field("bit", Number(integer=True, min=0, max=32), "SINUMERIK: bit 0-7 of the byte (0 when left out); "
+                                                          "rw_SymPas: digital input 1-32 of the axis"),
+        Field("axis", NAME, "rw_SymPas: the axis whose digital input changes (with bit)"),
         Field("value", INPUT_VALUE, "the new level", True),
-    )),
+    ), checks=(Check(*EVENT_CHECKS["input"]),)),
     "probe": Table((
-        Field("input", Number(integer=True, min=1, max=2), "SINUMERIK: probe input of MEAS M", 1),
+        Field("input", Number(integer=True, min=1, max=2), "the probe input (SINUMERIK MEAS M: 1 or 2; CPL: 1)", 1),
         Field("position", Table(other=NUMBER, keys=AxisName(), keys_doc="axis name"),
-              "SINUMERIK: where the probe switches (machine coordinates)", unit="mm"),
-    ), other=NUMBER, keys=AxisName(), keys_doc="axis name (CPL: where the probe switches, machine coordinates, mm)"),
+              "where the probe switches (machine coordinates), as a table (SINUMERIK's form)", unit="mm"),
+    ), other=NUMBER, keys=AxisName(), keys_doc="axis name (CPL: where the probe switches, machine coordinates, mm)", checks=(Check(*EVENT_CHECKS["probe"]),)),
     "fixed_stop": Table(other=NUMBER, keys=AxisName(), keys_doc="axis name (CPL G375: where the axis stops, mm)"),
     "sercos": Table((Field("locked", Flag(), "CPL: the SERCOS service channel is locked from now on", True),)),
     "plc": Table((

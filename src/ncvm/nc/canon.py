@@ -133,6 +133,11 @@ class CanonSink:
     def aux(self, code: str, src: Src) -> None:
         """An auxiliary function handed to the PLC (e.g. a machine-specific M function)."""
 
+    def probe(self, trip: dict[str, float] | None, src: Src) -> None:
+        """A probe move (LinuxCNC's STRAIGHT_PROBE: CPL G75/G275/G375, SINUMERIK MEAS M) follows, cut where
+        the probe switches: ``trip`` is the latched machine position of each measured axis, None when the
+        probe does not switch (the move reaches its target)."""
+
     def message(self, text: str, src: Src) -> None:
         """An operator message (MSG, comment directed at the operator)."""
 
@@ -147,7 +152,7 @@ class CanonSink:
 
 
 _METHODS = ("begin", "rapid", "feed", "arc", "move_batch", "dwell", "tool_change", "tool_offset", "spindle", "coolant",
-            "aux", "message", "stop", "program_end", "end")
+            "aux", "probe", "message", "stop", "program_end", "end")
 
 
 class Canon:

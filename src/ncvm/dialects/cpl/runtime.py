@@ -24,6 +24,7 @@ from pathlib import Path
 
 from ...diagnostics import Frame, RuntimeFault, Span
 from ...machine.model import PlcImage, SimClock
+from ...machine.scenario import EventQueue, InterfaceBit, of_type, refuse
 from ...nc.block import ROW_LINE, Block, DinSyntaxError, as_block, parse_din_line
 from ...nc.canon import Canon, Src
 from ...nc.midmove import MotionRecorder, position_at
@@ -48,7 +49,8 @@ from .system.controller import load_controller
 from .system.gfuncs import Typ3Block, activate, prepare
 from .system.ncs import ControlReset
 from .system.plc import f_ic
-from .system.positions import MEASURING_G, probe_block
+from .system.positions import MEASURING_G, PROBE_EVENTS, check_probe_events, probe_block
+from .system.sercos import SERCOS_EVENTS
 from .unlinked import link_late, run_unlinked
 
 _EXTENDED = re.compile(r"\s*([A-Za-z][A-Za-z0-9_]*[0-9_][A-Za-z0-9_]*)\s*=\s*([-+]?(?:\d+\.?\d*|\.\d+))\s*$")
@@ -120,8 +122,10 @@ class CplRuntime:
         #: the block still moving at the program's time: (block, position before it, its recorded motion,
         #: the executed count after it); see executed_position
         self.running = None
-        self._events = [e for e in self.machine.scenario if e.kind == "input"]
-        self._next_event = 0
+        refuse(self.machine.scenario, (InterfaceBit, *PROBE_EVENTS, *SERCOS_EVENTS), "CPL control")
+        check_probe_events(self.machine.scenario)
+        #: the interface-bit changes still to come; IC reads apply those up to the program's time
+        self._events = EventQueue(of_type(self.machine.scenario, InterfaceBit))
         self.ctl = load_controller(self.machine, lambda: session.store)  # chapter 4 controller state
         #: the main program's local variables at a fault (generated code fills it in)
         self.fault_locals: dict = {}
@@ -399,6 +403,7 @@ class CplRuntime:
     def enqueue_probe(self, blk) -> None:
         """Measuring blocks (G75, G275, G375) are executed before preparation goes on (manual §4.2, SD(9) L2309)."""
         if MEASURING_G.intersection(blk.g):
+            self.drain()  # the kernel stands at the block's start when the probe move is announced
             self.queue.append(probe_block(self, blk))
             self.drain()
         else:
@@ -536,10 +541,8 @@ class CplRuntime:
         return f_ic(self, *args)
 
     def _apply_events(self, t: float) -> None:
-        while self._next_event < len(self._events) and self._events[self._next_event].time <= t:
-            ev = self._events[self._next_event]
-            self.machine.plc.inputs[str(ev.data.get("address"))] = ev.data.get("value")
-            self._next_event += 1
+        for ev in self._events.due(t):
+            self.machine.plc.inputs[ev.address] = ev.value
 
     def wait(self, ic, neg: bool, state, duration):
         """0: condition met at the call; 1: the duration ran out; 2: the condition became true while waiting."""
@@ -561,11 +564,9 @@ class CplRuntime:
 
         if met():
             return 0
-        for k in range(self._next_event, len(self._events)):
-            te = self._events[k].time
-            if deadline is not None and te > deadline:
-                break
-            self.advance(max(te, start))
+        events = self._events
+        while (te := events.next_time()) is not None and (deadline is None or te <= deadline):
+            self.advance(max(te, start))  # IC applies the event at its time
             if met():
                 return 2
         if deadline is not None:

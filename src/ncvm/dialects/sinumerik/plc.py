@@ -202,28 +202,19 @@ class PlcClock:
         else:
             self.counters.setdefault(key, Counter()).act(action, value)
 
-    def parse_event(self, kind: str, data: dict, when: float) -> tuple:
-        """``[[scenario]]`` kind "timer" / "counter" as (kind, key, action, value) for :meth:`act`
-        (with the event's time): the PLC program acts at that time."""
-        where = f"scenario {kind} event at {when:g} s"
-        for name in data:
-            if name not in ("plc", "number", "action", "value", "base"):
-                raise UsageError(f"{where}: unknown key '{name}' (known: plc, number, action, value, base)")
-        plc = data.get("plc", 1)
-        if plc not in (1, 2, 3, 4):
-            raise UsageError(f"{where}: 'plc' must be a PLC number 1-4")
-        key = (plc, _number(where, data.get("number")))
-        actions = TIMER_ACTIONS if kind == "timer" else COUNTER_ACTIONS
-        action = str(data.get("action", actions[0]))
-        if action not in actions:
-            raise UsageError(f"{where}: action '{action}' is not one of {', '.join(actions)}")
+    def parse_event(self, ev) -> tuple:
+        """A ``[[scenario]]`` timer or counter event (PlcTimer, PlcCounter; the machine file's schema has
+        checked its keys) as (kind, key, action, value) for :meth:`act` (with the event's time): the PLC
+        program acts at that time."""
+        where = f"scenario {ev.kind} event at {ev.time:g} s"
+        timer = ev.kind == "timer"
+        key = (ev.plc, ev.number)
         value = None
-        if "value" in data and action in ("start", "set"):
-            value = (time_value(where, data["value"], data.get("base")) if kind == "timer"
-                     else _count(where, data["value"]))
-        elif action == "start" and self.timers.get(key, Timer()).load is None:
+        if ev.value is not None and ev.action in ("start", "set"):
+            value = time_value(where, ev.value, ev.base) if timer else _count(where, ev.value)
+        elif ev.action == "start" and self.timers.get(key, Timer()).load is None:
             raise UsageError(f"{where}: starting timer {key[1]} needs the time 'value' it loads")
-        return ("T" if kind == "timer" else "C"), key, action, value
+        return ("T" if timer else "C"), key, ev.action, value
 
 
 def _number(where: str, number) -> int:

@@ -12,14 +12,26 @@ import re
 import sys
 
 from ...diagnostics import Frame, RuntimeFault, Span, UsageError
+from ...machine.scenario import (
+    Alarm,
+    EventQueue,
+    ExternalInput,
+    PlcChange,
+    PlcCounter,
+    PlcTimer,
+    ProbeSwitch,
+    of_type,
+    refuse,
+)
 from ...nc.block import Block
 from ...nc.kernel import INCH
+from ...nc.spindle import SINUMERIK_GEARS, Gearbox
 from ...runtime.buffer import BlockBuffer
 from ...runtime.locate import fault_line
 from .ncdata import MIB_TOP, Cl800Error, NcData, int_to_pattern, nc8, pattern_to_int
 from .plc import PlcClock
 from .rotation import angle_address, shape_block
-from .spindle import GEAR_M, Gearbox, SpindleReads
+from .spindle import GEAR_M, SpindleReads
 from .sysmem import SysMem
 
 DEG = math.pi / 180.0
@@ -69,6 +81,10 @@ NAMESPACE_GLOBALS = {
 }
 
 
+#: the scenario events the SINUMERIK channel reads
+SINUMERIK_EVENTS = (ExternalInput, PlcChange, PlcTimer, PlcCounter, Alarm, ProbeSwitch)
+
+
 class Channel(SysMem, SpindleReads):
     """One NC channel running a main program and its sub-programs."""
 
@@ -107,14 +123,14 @@ class Channel(SysMem, SpindleReads):
         SysMem.__init__(self)
         self.angle_used = False  # a block carried the angle address (PANG, @447)
         self.route()
-        self._scenario = list(session.machine.scenario)
+        refuse(session.machine.scenario, SINUMERIK_EVENTS, "SINUMERIK control")
+        self._scenario = EventQueue(session.machine.scenario)
         self.plc_clock = PlcClock(f"{session.machine.source}: [sin800]", data.plc)
         self.plc_clock.write_bit = self.plc_bit
-        for ev in self._scenario:
-            if ev.kind in ("timer", "counter"):
-                self.plc_clock.parse_event(ev.kind, ev.data, ev.time)  # faults in the scenario before the run
+        for ev in of_type(session.machine.scenario, PlcTimer, PlcCounter):
+            self.plc_clock.parse_event(ev)  # faults in the scenario before the run
         self.m_functions = {f"M{int(k)}": dict(v) for k, v in sec.get("m_functions", {}).items()}
-        self.gearbox = Gearbox(self.kernel, data.gear, data.gears)
+        self.gearbox = Gearbox(self.kernel, SINUMERIK_GEARS, data.gear, data.gears, Cl800Error, "[sin800] gears")
         # G96 takes the radius from X; axis 1 may be programmed as a diameter (as for PREP CYC)
         self.kernel.css_diameter = self.kernel.css_axis == 0 and bool(data.areas["nc_md"].get("diameter_axis1", 0.0))
         canon = session.canon
@@ -127,7 +143,7 @@ class Channel(SysMem, SpindleReads):
             self.advance_scenario()  # what the PLC did before this block
             self.plc_clock.m_function(code, self.session.machine.clock.now)
             if code in GEAR_M:
-                self.gearbox.select(code)
+                self.gearbox.select(GEAR_M[code])
             if code in self.m_functions:
                 self.m_function(code)
 
@@ -422,29 +438,27 @@ class Channel(SysMem, SpindleReads):
     def advance_scenario(self) -> None:
         """Scripted events and PLC timers running out, in time order, up to the current simulated time."""
         now = self.session.machine.clock.now
-        scenario = self._scenario
         expire = self.plc_clock.expire
-        while scenario and scenario[0].time <= now:
-            expire(scenario[0].time)
-            self._apply_event(scenario.pop(0))
+        for ev in self._scenario.due(now):
+            expire(ev.time)
+            self._apply_event(ev)
         expire(now)
 
     def _apply_event(self, ev) -> None:
-        d = ev.data
-        if ev.kind == "input":
-            byte, bit, value = int(d.get("byte", 1)), int(d.get("bit", 0)), int(d.get("value", 1))
-            if value:
-                self.data.inputs[byte] |= 1 << bit
+        kind = ev.__class__
+        if kind is ExternalInput:
+            if ev.value:
+                self.data.inputs[ev.byte] |= 1 << ev.bit
             else:
-                self.data.inputs[byte] &= ~(1 << bit)
-        elif ev.kind == "plc":
-            self.plc_set_event(d, ev.time)
-        elif ev.kind in ("timer", "counter"):
-            self.plc_clock.act(*self.plc_clock.parse_event(ev.kind, d, ev.time), ev.time)
-        elif ev.kind == "alarm":
-            self.data.alarms.append((int(d.get("number", 0)), self.data.channel))
-        elif ev.kind == "probe":
-            self.probes.append(d)
+                self.data.inputs[ev.byte] &= ~(1 << ev.bit)
+        elif kind is PlcChange:
+            self.plc_set_event(ev)
+        elif kind is PlcTimer or kind is PlcCounter:
+            self.plc_clock.act(*self.plc_clock.parse_event(ev), ev.time)
+        elif kind is Alarm:
+            self.data.alarms.append((ev.number, self.data.channel))
+        elif kind is ProbeSwitch:
+            self.probes.append(ev)
 
     def ext_input(self, byte: float, bit: float) -> bool:
         b, k = _int(byte), _int(bit)
@@ -460,4 +474,4 @@ class Channel(SysMem, SpindleReads):
             if not self._scenario:
                 raise RuntimeFault("SIN007", f"{what}: input {byte}.{bit} never becomes {int(level)} "
                                              f"(no further scenario event)")
-            clock.advance(self._scenario[0].time - clock.now)
+            clock.advance(self._scenario.next_time() - clock.now)

@@ -8,18 +8,20 @@ manual asks for STOP DEC before ACSP/ACSS, L2668), programmed setpoints read
 what decoding has reached (the kernel's state plus the blocks still waiting in
 the decode buffer).
 
-Gear stages (docs/decisions.md): M41-M45 select stage 1-5, M40 selects the
-stage automatically from the speed, using the maximum speed of each stage in
-``[sin800] gears``; ``[sin800] gear`` is the stage at power-on.
+Gear stages (docs/decisions.md; the gearbox model is nc/spindle.py): M41-M45
+select stage 1-5, M40 selects the stage automatically from the speed, using the
+maximum speed of each stage in ``[sin800] gears``; ``[sin800] gear`` is the
+stage at power-on.
 """
 
 from __future__ import annotations
 
+from ...nc.spindle import SINUMERIK_GEARS
 from .ncdata import Cl800Error
 
 MASTER_SPINDLE = 1
-#: M function -> gear stage (M40: automatic selection)
-GEAR_M = {"M40": 0, "M41": 1, "M42": 2, "M43": 3, "M44": 4, "M45": 5}
+#: the gear M functions as the channel sees them ("M41") -> their number in the gear table (nc/spindle.py)
+GEAR_M = {f"M{m}": m for m in SINUMERIK_GEARS.stages}
 
 
 def _whole(v: float) -> int:
@@ -37,42 +39,6 @@ def spindle_number(v: float, top: int, what: str) -> int:
     if n not in (0, MASTER_SPINDLE):
         raise Cl800Error(f"{what}: spindle {n} does not exist on this machine (only spindle {MASTER_SPINDLE})")
     return MASTER_SPINDLE
-
-
-class Gearbox:
-    """The active gear stage of the master spindle and the speed limit it sets for G96."""
-
-    def __init__(self, kernel, stage: int, maxima: list[float]):
-        self.kernel = kernel
-        self.maxima = maxima  # maximum speed (rev/min) of stage 1, 2, ...
-        self.auto = False
-        self.stage = stage
-        self._limit()
-
-    def select(self, code: str) -> None:
-        """An executed M40-M45."""
-        stage = GEAR_M[code]
-        if stage == 0:
-            self.auto = True
-        else:
-            if self.maxima and stage > len(self.maxima):
-                raise Cl800Error(f"{code}: gear stage {stage} has no maximum speed in [sin800] gears")
-            self.auto = False
-            self.stage = stage
-        self._limit()
-
-    def active(self) -> int:
-        """Under M40 the lowest stage whose maximum speed reaches the commanded speed (else the top one)."""
-        if self.auto and self.maxima:
-            speed = abs(self.kernel.spindle_speed())
-            self.stage = next((i for i, top in enumerate(self.maxima, 1) if speed <= top), len(self.maxima))
-        return self.stage
-
-    def _limit(self) -> None:
-        k = self.kernel
-        if not self.maxima:
-            return
-        k.max_speed = max(self.maxima) if self.auto else self.maxima[self.stage - 1]
 
 
 class SpindleReads:

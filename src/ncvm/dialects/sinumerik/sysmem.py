@@ -11,8 +11,10 @@ from __future__ import annotations
 import math
 
 from ...diagnostics import RuntimeFault
+from ...machine.scenario import ExternalInput, ProbeSwitch
 from ...nc.block import Block
 from ...nc.dynamics import trapezoid_distance, trapezoid_time
+from ...nc.probe import OffPath, ProbeLatch, announce, trip_on_path
 from . import v24
 from .contour import check_window, contour_elements, intersect
 from .inta_path import arc_path, straight_path
@@ -63,7 +65,7 @@ class SysMem:
     """Mixed into the channel: system memory access, NC functions and I/O."""
 
     def __init__(self):
-        self.probes: list[dict] = []
+        self.probes: list[ProbeSwitch] = []  # probe events whose time has come, not yet used by MEAS M
         self.contours: dict[int, list] = {}
         self.g16_plane: tuple[int, int, int] | None = None
         self.g16_minus = (False, False, False)
@@ -571,17 +573,14 @@ class SysMem:
     def _set_dw(self, plc: dict, db: float, dw: float, value: int) -> None:
         plc["DB"][str(_i(db))][_i(dw)] = value & 0xFFFF
 
-    def plc_set_event(self, d: dict, when: float) -> None:
-        """A scripted change of a PLC I/Q/P/F bit or byte (``[[scenario]]`` kind "plc")."""
-        no = int(d.get("plc", 1))
-        area = str(d.get("area", "I")).upper()
-        byte = int(d.get("byte", 0))
-        if "bit" in d:
-            self.plc_bit(no, area, byte, int(d["bit"]), 1 if d.get("value", 1) else 0, when)
+    def plc_set_event(self, ev) -> None:
+        """A scripted change of a PLC I/Q/P/F bit or byte (``[[scenario]]`` kind "plc", a PlcChange)."""
+        if ev.bit is not None:
+            self.plc_bit(ev.plc, ev.area, ev.byte, ev.bit, 1 if ev.value is None or ev.value else 0, ev.time)
             return
-        value = d.get("value", 0)
-        self._put_byte(no, area, byte, int(value, 2) if isinstance(value, str) else pattern_to_int(float(value)),
-                       when)
+        value = 0 if ev.value is None else ev.value
+        self._put_byte(ev.plc, ev.area, ev.byte,
+                       int(value, 2) if isinstance(value, str) else pattern_to_int(float(value)), ev.time)
 
     def rotation_active(self) -> bool:
         """A settable or programmable coordinate rotation is selected (some angle is not 0)."""
@@ -724,9 +723,7 @@ class SysMem:
         for ev in self._scenario:
             if ev.time > until:
                 break
-            d = ev.data
-            if ev.kind == "input" and int(d.get("byte", 1)) == byte and int(d.get("bit", 0)) == bit \
-                    and bool(int(d.get("value", 1))) == level:
+            if ev.__class__ is ExternalInput and ev.byte == byte and ev.bit == bit and ev.value == level:
                 return max(ev.time, now)
         return None
 
@@ -757,6 +754,7 @@ class SysMem:
             value = turned[name] * scale
             end[name] = value if machine else k.offset_vec[i] + (value if absolute else k.prog[i] + value)
         hit = self._trigger_point(self._probe_hit(probe), start, end)
+        announce(k.canon, ProbeLatch(probe, dict(hit)), _src(self, line))
         angle = angle_address(self) if self.angle_used else None  # resolved into the axis words
         out = {n: v for n, v in words.items() if n not in k.axis_of and n != angle}
         cut = {}
@@ -779,33 +777,19 @@ class SysMem:
         return out
 
     @staticmethod
-    def _trigger_point(hit: dict, start: dict, end: dict) -> dict:
-        """Machine positions of the traversing axes when the probe switches: those the probe event gives;
-        the others on the block's straight path at the point the given ones locate."""
-        pos = {n: float(v) for n, v in hit.get("position", {}).items() if n in start}
-        known = next((n for n in pos if abs(end[n] - start[n]) > 1e-12), None)
-        out = {}
-        for name in start:
-            if name in pos:
-                out[name] = pos[name]
-            elif known is None:
-                raise RuntimeFault("SIN007", f"MEAS M: the probe event gives no position for axis {name}")
-            else:
-                t = (pos[known] - start[known]) / (end[known] - start[known])
-                if not -1e-9 <= t <= 1.0 + 1e-9:
-                    raise RuntimeFault("SIN007", f"MEAS M: the probe position {known} = {pos[known]:g} is not on "
-                                                 f"the block's path ({start[known]:g} to {end[known]:g})")
-                out[name] = start[name] + t * (end[name] - start[name])
-        return out
+    def _trigger_point(hit, start: dict, end: dict) -> dict:
+        """Machine positions of the traversing axes when the probe switches (nc/probe.py)."""
+        try:
+            return trip_on_path(hit.position, start, end)
+        except OffPath as e:
+            raise RuntimeFault("SIN007", f"MEAS M: {e}") from None
 
-    def _probe_hit(self, probe: int) -> dict:
+    def _probe_hit(self, probe: int) -> ProbeSwitch:
         self.advance_scenario()
-        for i, ev in enumerate(self._scenario):
-            if ev.kind == "probe" and int(ev.data.get("input", 1)) == probe:
-                self._scenario.pop(i)
-                self.probes.append(ev.data)
-                break
-        hits = [p for p in self.probes if int(p.get("input", 1)) == probe]
+        ev = self._scenario.take(lambda e: e.__class__ is ProbeSwitch and e.input == probe)
+        if ev is not None:
+            self.probes.append(ev)
+        hits = [p for p in self.probes if p.input == probe]
         if not hits:
             raise RuntimeFault("SIN007", f"MEAS M: probe {probe} never switches (no probe event in the scenario)")
         hit = hits[0]

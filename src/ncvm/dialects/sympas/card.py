@@ -12,6 +12,7 @@ import heapq
 import math
 
 from ...diagnostics import Frame, RuntimeFault, Span
+from ...machine.scenario import AxisInput, CommonInteger, PositionError
 from ...runtime.locate import generated_frames
 from . import recording
 from .commands import Commands
@@ -126,33 +127,34 @@ class Card(Commands):
             self.timed_done += 1
 
     def _scenario_action(self, ev):
-        d = ev.data
+        """The card's action for a scenario event (machine/scenario.py): an axis' digital input, its
+        following error or a common integer; any other event is refused before the run."""
         from ...diagnostics import UsageError
-        if ev.kind == "input":
-            ax = self._axis_by_name(d.get("axis"), "scenario input")
-            bit = int(d.get("bit", 0))
-            if not 1 <= bit <= 32:
-                raise UsageError("scenario input: 'bit' must be 1..32")
-            mask = 1 << (bit - 1)
-            value = bool(d.get("value", True))
+        if ev.__class__ is AxisInput:
+            ax = self._axis_by_name(ev.axis, "scenario input")
+            mask = 1 << (ev.bit - 1)
+            value = ev.value
 
             def act():
                 ax.digi = (ax.digi | mask) if value else (ax.digi & ~mask)
             return act
-        if ev.kind == "poserr":
-            ax = self._axis_by_name(d.get("axis"), "scenario poserr")
-            value = float(d.get("value", 0.0))
+        if ev.__class__ is PositionError:
+            ax = self._axis_by_name(ev.axis, "scenario poserr")
+            value = ev.value
 
             def act():
                 ax.poserr = value
             return act
-        if ev.kind == "ci":
-            idx, value = int(d.get("index", 0)), int(d.get("value", 0))
+        if ev.__class__ is CommonInteger:
+            idx, value = ev.index, ev.value
 
             def act():
                 self.ci[idx] = value
             return act
-        raise UsageError(f"scenario kind '{ev.kind}' is not known to the sympas card (input, poserr, ci)")
+        if ev.kind == "input":  # an input written for CPL (address) or SINUMERIK (byte)
+            self._axis_by_name(None, "scenario input")
+        raise UsageError(f"scenario event at {ev.time:g} s: {ev.form}, which the sympas card cannot use "
+                         f"(it takes input with axis and bit, poserr, ci)")
 
     def _axis_by_name(self, name, what):
         from ...diagnostics import UsageError

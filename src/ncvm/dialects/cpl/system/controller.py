@@ -12,6 +12,8 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from ....diagnostics import UsageError
+from ....machine.scenario import EventQueue, FixedStop, ProbeSwitch, of_type
+from ....nc.probe import ProbeLatch
 from .gfuncs import NcFuncs
 
 #: every key [cpl] may hold (lookahead and calls belong to the language runtime, file_space to its files)
@@ -69,6 +71,10 @@ class Controller:
     g_active: NcFuncs = field(default_factory=NcFuncs)  # ... and as executed
     areas: list[dict] = field(default_factory=list)  # work areas and dead ranges 1..10 (SD 200)
     store: object = None
+    #: what the last measuring block measured (G75 by default: PROBE, CPROBE read it)
+    probe: ProbeLatch = field(default_factory=lambda: ProbeLatch(75))
+    #: the "probe" and "fixed_stop" scenario events no measuring block has used yet (one per block)
+    probe_events: EventQueue = field(default_factory=EventQueue)
 
     # -- axes ----------------------------------------------------------------------------------
     def channel_axes(self, ch: int) -> list[PhysAxis]:
@@ -131,7 +137,7 @@ def load_controller(machine, store=None) -> Controller:
 
 
 def _build(machine, cfg: dict, store) -> Controller:
-    c = Controller(store=store)
+    c = Controller(store=store, probe_events=EventQueue(of_type(machine.scenario, ProbeSwitch, FixedStop)))
     c.channel = int(cfg.get("channel", 1))
     axes = cfg.get("axes")
     if axes is None:

@@ -29,12 +29,13 @@ from __future__ import annotations
 from dataclasses import dataclass, replace
 
 from ....nc.block import Block
+from ....nc.spindle import CPL_GEARS
 from ..errors import CplError
 
 WORD_CODES = frozenset((130, 131, 168, 268, 328, 580, 581))  # their block's words are their values
 COMPENSATIONS = frozenset([146] + [g + 45 for g in range(100, 900, 100)] + [g + 47 for g in range(100, 900, 100)])
 TYP3_G = WORD_CODES | COMPENSATIONS
-GEARS = frozenset((40, 41, 42, 43, 44, 48))  # M40 automatic gear range, M41-M44 gear 1-4, M48 neutral
+GEARS = CPL_GEARS.codes  # M40 automatic gear range, M41-M44 gear 1-4, M48 neutral (nc/spindle.py)
 INCH = 25.4
 N_LOGICAL = 8  # the shifts are kept for logical axes 1..8 (SD index range 1..8)
 

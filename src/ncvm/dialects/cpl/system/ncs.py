@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import zlib
 
+from ....nc.spindle import CPL_GEARS
 from ..errors import CplError
 from ..io.strings import CharacterField
 from .axes import kernel_index, nul
@@ -256,7 +257,7 @@ def _status(rt, typ: int, ch: int, system, own):
     if typ == 65:
         return [c.spindle["group"]] + [0] * 7
     if typ == 66:  # 1 automatic gear selection (M40), 0 a gear chosen by hand
-        return [1 if c.g_active.gear == 40 else 0] + [0] * 7
+        return [1 if CPL_GEARS.is_auto(c.g_active.gear) else 0] + [0] * 7
     if typ == 70:
         return [_state(rt)["reselect"].get(ch, 1)]
     return None

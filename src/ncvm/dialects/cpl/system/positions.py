@@ -17,6 +17,9 @@ from __future__ import annotations
 
 import copy
 
+from ....diagnostics import UsageError
+from ....machine.scenario import FixedStop, ProbeSwitch, of_type
+from ....nc.probe import ProbeLatch, announce, stop_words
 from ..errors import CplError
 from .axes import kernel_index, resolve, to_unit
 from .gfuncs import program_shift
@@ -113,43 +116,49 @@ def probe_block(rt, blk):
     move stops there and the latch holds them. G275 measures only its one programmed axis (L1591): the
     event's position of that axis is latched and the move goes on to its end point. G375 travels its one
     axis towards a fixed stop: a "fixed_stop" event stops it at the event's position, which the latch
-    holds. Without an event the end point is reached, nothing is latched and SD(9) gives 1."""
+    holds. Without an event the end point is reached, nothing is latched and SD(9) gives 1. The canon
+    ``probe`` call announces the move (nc/probe.py)."""
     codes = [g for g in blk.g if g in MEASURING_G]
     if len(codes) > 1:
         raise CplError("CPL040", f"G{codes[0]:g} and G{codes[1]:g} cannot stand in one block")
     code = int(codes[0])
     c, k = rt.ctl, rt.prepared_kernel()
     words = dict(blk.words)
-    c.probe_latch, c.probe_code = None, code
+    latch = c.probe = ProbeLatch(code)
     if code == PROBE_INPUT:
-        trigger = _next_event(rt, "probe")
+        trigger = _next_event(c, ProbeSwitch)
         if trigger is not None:
-            c.probe_latch = {name: v for name, v in trigger.items() if name in k.axis_of}
-            _stop_at(k, words, c.probe_latch)
+            latch.position = {name: v for name, v in trigger.items() if name in k.axis_of}
+            stop_words(k, words, latch.position)
     else:
         name = _measured_axis(k, words, code)
-        event = _next_event(rt, "probe" if code == ON_THE_FLY else "fixed_stop")
+        event = _next_event(c, ProbeSwitch if code == ON_THE_FLY else FixedStop)
         if event is not None and name in event:
-            c.probe_latch = {name: event[name]}
+            latch.position = {name: event[name]}
             if code == FIXED_STOP:
-                _stop_at(k, words, c.probe_latch)
+                stop_words(k, words, latch.position)
+    announce(rt.kernel.canon, latch, blk.src)
     out = copy.copy(blk)
     out.g, out.words = tuple(1 if x in MEASURING_G else x for x in blk.g), words
     return out
 
 
-def _next_event(rt, kind: str) -> dict | None:
+#: the scenario events the measuring blocks read (CPL has one probe input)
+PROBE_EVENTS = (ProbeSwitch, FixedStop)
+
+
+def check_probe_events(events) -> None:
+    """CPL has one probe input: a probe event for another one would never switch (refused before the run)."""
+    for ev in of_type(events, ProbeSwitch):
+        if ev.input != 1:
+            raise UsageError(f"scenario probe event at {ev.time:g} s: input = {ev.input}: the CPL control has "
+                             f"one probe input (1)")
+
+
+def _next_event(c, kind: type) -> dict | None:
     """The next unused scenario event of ``kind`` as axis name -> MCS position; one per measuring block."""
-    c = rt.ctl
-    used = getattr(c, "events_used", None)
-    if used is None:
-        used = c.events_used = {}
-    events = [e for e in rt.machine.scenario if e.kind == kind]
-    n = used.get(kind, 0)
-    if n >= len(events):
-        return None
-    used[kind] = n + 1
-    return {str(a).upper(): float(v) for a, v in events[n].data.items()}
+    ev = c.probe_events.take(lambda e: e.__class__ is kind)
+    return None if ev is None else ev.position
 
 
 def _measured_axis(k, words, code: int) -> str:
@@ -161,20 +170,9 @@ def _measured_axis(k, words, code: int) -> str:
     return named[0]
 
 
-def _stop_at(k, words, latch: dict) -> None:
-    """End the block's move where the latched axes stopped: their words become the program position of
-    that point."""
-    switch = [latch.get(name, p) for name, p in zip(k.axis_names, k.machine_pos)]
-    target = k.program_position(switch)
-    for name in latch:
-        if name in words:
-            i = k.axis_of[name]
-            words[name] = (target[i] if k.absolute else target[i] - k.prog[i]) / k.scale
-
-
 def probe_latch(rt) -> dict | None:
     """The axis positions (MCS) measured by the last measuring block, None if nothing was measured."""
-    return getattr(rt.ctl, "probe_latch", None)
+    return rt.ctl.probe.position
 
 
 def _latched(rt, ax) -> float:
@@ -184,7 +182,7 @@ def _latched(rt, ax) -> float:
     if latch is None:
         raise CplError("CPL040", "the probe has not switched (check SD(9) first)")
     if ax.name not in latch:
-        code = getattr(rt.ctl, "probe_code", PROBE_INPUT)
+        code = rt.ctl.probe.code
         if code != PROBE_INPUT:
             raise CplError("CPL040", f"axis {ax.name} was not measured: G{code} measures only its programmed axis")
         return _executed_mcs(rt, ax)
@@ -215,7 +213,7 @@ def f_cprobe(rt, sel, seltype=1):
     probe must be enabled (MACODA 1003 00012) for every axis of the channel, not only the one read (L1441)."""
     ax = resolve(rt, sel, seltype)
     c = rt.ctl
-    code = getattr(c, "probe_code", PROBE_INPUT)
+    code = c.probe.code
     if code != PROBE_INPUT:
         raise CplError("CPL040", f"CPROBE cannot read a G{code} measurement: it measures a single axis (L1449)")
     blocked = [a.name for a in c.channel_axes(c.channel) if not a.probe]

@@ -9,17 +9,21 @@ the run-time error SERCOS SERVICE CHANNEL IS LOCKED.
 
 from __future__ import annotations
 
+from ....machine.scenario import SercosLock
 from ..errors import CplError
 from ..io.errors import CplRuntimeError, fail
 from .axes import nul
 from .positions import f_apos
 
+#: the scenario events the SERCOS functions read
+SERCOS_EVENTS = (SercosLock,)
+
 
 def _locked(rt) -> bool:
     locked = False
     for ev in rt.machine.scenario:
-        if ev.kind == "sercos" and ev.time <= rt.t_prep:
-            locked = bool(ev.data.get("locked", True))
+        if ev.__class__ is SercosLock and ev.time <= rt.t_prep:
+            locked = ev.locked
     return locked
 
 

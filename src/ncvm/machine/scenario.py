@@ -1,0 +1,293 @@
+"""Scenario events: what happens to the machine over simulated time (``[[scenario]]`` tables), typed.
+
+Each kind of event is one dataclass whose fields name its addressing: an input changes by the interface
+bit's address (CPL), by byte and bit (SINUMERIK external input) or by axis and digital input (rw_SymPas),
+and each is its own type, so a controller takes the forms it can use and refuses the others by name
+(:func:`refuse`). spec.py declares the TOML form and checks it when the file is read (:data:`CHECKS`);
+:func:`from_table` builds the events from the checked tables. :class:`EventQueue` hands them out in
+time order as simulated time reaches them.
+"""
+
+from __future__ import annotations
+
+import bisect
+from dataclasses import dataclass, field
+from typing import Any, ClassVar, Iterator
+
+from ..diagnostics import UsageError
+from .schema import MISSING, SchemaError, join
+
+
+@dataclass(frozen=True)
+class Event:
+    """Something that happens at ``time`` (s of simulated time from the start)."""
+
+    time: float
+    kind: ClassVar[str] = ""
+    #: the addressing in words, for a controller's refusal
+    form: ClassVar[str] = ""
+
+
+@dataclass(frozen=True)
+class InterfaceBit(Event):
+    """CPL: the PLC interface bit ``address`` ("IC(bit,group,index)") gets ``value``."""
+
+    address: str = ""
+    value: bool = True
+    kind: ClassVar[str] = "input"
+    form: ClassVar[str] = "an input by address (CPL)"
+
+
+@dataclass(frozen=True)
+class ExternalInput(Event):
+    """SINUMERIK: external input ``byte`` (1, 2), ``bit`` (0-7) gets ``value``."""
+
+    byte: int = 1
+    bit: int = 0
+    value: bool = True
+    kind: ClassVar[str] = "input"
+    form: ClassVar[str] = "an input by byte and bit (SINUMERIK)"
+
+
+@dataclass(frozen=True)
+class AxisInput(Event):
+    """rw_SymPas: digital input ``bit`` (1-32) of the axis ``axis`` gets ``value``."""
+
+    axis: str = ""
+    bit: int = 1
+    value: bool = True
+    kind: ClassVar[str] = "input"
+    form: ClassVar[str] = "an input by axis and bit (rw_SymPas)"
+
+
+@dataclass(frozen=True)
+class ProbeSwitch(Event):
+    """The probe on input ``input`` switches where the axes reach ``position`` (axis name, upper case ->
+    machine coordinate); CPL writes the axes as keys of the event, SINUMERIK in a ``position`` table."""
+
+    position: dict[str, float] = field(default_factory=dict)
+    input: int = 1
+    kind: ClassVar[str] = "probe"
+    form: ClassVar[str] = "a probe event"
+
+
+@dataclass(frozen=True)
+class FixedStop(Event):
+    """CPL G375: the axes stop against a fixed stop at ``position`` (axis name -> machine coordinate)."""
+
+    position: dict[str, float] = field(default_factory=dict)
+    kind: ClassVar[str] = "fixed_stop"
+    form: ClassVar[str] = "a fixed_stop event (CPL)"
+
+
+@dataclass(frozen=True)
+class SercosLock(Event):
+    """CPL: the SERCOS service channel is locked (or free again) from now on."""
+
+    locked: bool = True
+    kind: ClassVar[str] = "sercos"
+    form: ClassVar[str] = "a sercos event (CPL)"
+
+
+@dataclass(frozen=True)
+class PlcChange(Event):
+    """SINUMERIK: a PLC I/Q/P/F bit (``bit`` given) or whole byte changes."""
+
+    plc: int = 1
+    area: str = "I"
+    byte: int = 0
+    bit: int | None = None
+    value: Any = None  # a bit: true/false; a byte: digit-coded number or bit-pattern string
+    kind: ClassVar[str] = "plc"
+    form: ClassVar[str] = "a plc event (SINUMERIK)"
+
+
+@dataclass(frozen=True)
+class PlcTimer(Event):
+    """SINUMERIK: the PLC program starts or resets a timer."""
+
+    number: int = 0
+    plc: int = 1
+    action: str = "start"
+    value: float | None = None
+    base: float | None = None
+    kind: ClassVar[str] = "timer"
+    form: ClassVar[str] = "a timer event (SINUMERIK)"
+
+
+@dataclass(frozen=True)
+class PlcCounter(Event):
+    """SINUMERIK: the PLC program counts a counter up or down, sets or resets it."""
+
+    number: int = 0
+    plc: int = 1
+    action: str = "up"
+    value: int | None = None
+    kind: ClassVar[str] = "counter"
+    form: ClassVar[str] = "a counter event (SINUMERIK)"
+
+
+@dataclass(frozen=True)
+class Alarm(Event):
+    """SINUMERIK: NC alarm ``number`` becomes pending."""
+
+    number: int = 0
+    kind: ClassVar[str] = "alarm"
+    form: ClassVar[str] = "an alarm event (SINUMERIK)"
+
+
+@dataclass(frozen=True)
+class PositionError(Event):
+    """rw_SymPas: the following error of an axis becomes ``value``."""
+
+    axis: str = ""
+    value: float = 0.0
+    kind: ClassVar[str] = "poserr"
+    form: ClassVar[str] = "a poserr event (rw_SymPas)"
+
+
+@dataclass(frozen=True)
+class CommonInteger(Event):
+    """rw_SymPas: the common integer CI<index> becomes ``value``."""
+
+    index: int = 0
+    value: int = 0
+    kind: ClassVar[str] = "ci"
+    form: ClassVar[str] = "a ci event (rw_SymPas)"
+
+
+# -- reading the checked tables ----------------------------------------------------------------
+INPUT_FORMS = "address (CPL), byte and bit (SINUMERIK) or axis and bit (rw_SymPas)"
+
+
+def _input_form(entry: dict, path: str, ctx=None) -> None:
+    """An input event names its input one way: address, byte/bit or axis/bit, with the bit in that form's
+    range; without address or axis it is SINUMERIK's byte/bit form."""
+    with_address = "address" in entry and any(k in entry for k in ("byte", "bit", "axis"))
+    if with_address or "axis" in entry and "byte" in entry:
+        raise SchemaError(path, entry, f"names its input more than one way: give {INPUT_FORMS}")
+    if "address" in entry:
+        return
+    if "axis" in entry and "bit" not in entry:
+        raise SchemaError(join(path, "bit"), MISSING, "is missing: an axis input names its digital input 1-32")
+    bit = entry.get("bit", 0)  # SINUMERIK: bit 0 of the byte when left out
+    lo, hi = (1, 32) if "axis" in entry else (0, 7)
+    if not lo <= bit <= hi:
+        what = "an axis' digital input (rw_SymPas)" if "axis" in entry else "a bit of an input byte (SINUMERIK)"
+        raise SchemaError(join(path, "bit"), bit, f"must be {lo} to {hi} for {what}")
+
+
+def _probe_form(entry: dict, path: str, ctx=None) -> None:
+    """The switch position is given once: as axis keys (CPL) or as a ``position`` table (SINUMERIK)."""
+    axes = [k for k in entry if k not in ("time", "kind", "input", "position")]
+    if axes and "position" in entry:
+        raise SchemaError(join(path, axes[0]), entry[axes[0]],
+                          "the position is given twice: axis keys here and a position table")
+
+
+#: per kind, the rules across its keys that spec.py checks when the file is read
+CHECKS = {"input": ("one addressing: " + INPUT_FORMS, _input_form),
+          "probe": ("the position as axis keys or as a position table, not both", _probe_form)}
+
+
+def _axes(table: dict) -> dict[str, float]:
+    return {str(k).upper(): float(v) for k, v in table.items()}
+
+
+def from_table(entry: dict) -> Event:
+    """The typed event of one ``[[scenario]]`` table the schema has checked."""
+    t, kind, d = float(entry["time"]), entry["kind"], entry
+    if kind == "input":
+        value = bool(d.get("value", True))
+        if "address" in d:
+            return InterfaceBit(t, str(d["address"]), value)
+        if "axis" in d:
+            return AxisInput(t, str(d["axis"]), int(d["bit"]), value)
+        return ExternalInput(t, int(d.get("byte", 1)), int(d.get("bit", 0)), value)
+    if kind == "probe":
+        given = d.get("position", {k: v for k, v in d.items() if k not in ("time", "kind", "input")})
+        return ProbeSwitch(t, _axes(given), int(d.get("input", 1)))
+    if kind == "fixed_stop":
+        return FixedStop(t, _axes({k: v for k, v in d.items() if k not in ("time", "kind")}))
+    if kind == "sercos":
+        return SercosLock(t, bool(d.get("locked", True)))
+    if kind == "plc":
+        return PlcChange(t, int(d.get("plc", 1)), str(d.get("area", "I")).upper(), int(d.get("byte", 0)),
+                         int(d["bit"]) if "bit" in d else None, d.get("value"))
+    if kind == "timer":
+        return PlcTimer(t, int(d["number"]), int(d.get("plc", 1)), str(d.get("action", "start")),
+                        d.get("value"), d.get("base"))
+    if kind == "counter":
+        return PlcCounter(t, int(d["number"]), int(d.get("plc", 1)), str(d.get("action", "up")), d.get("value"))
+    if kind == "alarm":
+        return Alarm(t, int(d["number"]))
+    if kind == "poserr":
+        return PositionError(t, str(d["axis"]), float(d.get("value", 0.0)))
+    if kind == "ci":
+        return CommonInteger(t, int(d.get("index", 0)), int(d.get("value", 0)))
+    raise ValueError(f"scenario kind {kind!r} has no event type")  # spec.py admits only the kinds above
+
+
+def from_tables(entries: list[dict]) -> list[Event]:
+    """The events of a machine or scenario file, in time order (events at the same time as written)."""
+    return sorted((from_table(e) for e in entries), key=lambda e: e.time)
+
+
+# -- what a controller takes --------------------------------------------------------------------
+def refuse(events: list[Event], takes: tuple[type, ...], control: str) -> None:
+    """Raise a usage error naming the first event of a type ``control`` cannot use: no event of the
+    machine file is silently ignored."""
+    for ev in events:
+        if not isinstance(ev, takes):
+            forms = ", ".join(dict.fromkeys(t.form for t in takes)) or "none"
+            raise UsageError(f"scenario event at {ev.time:g} s: {ev.form}, which the {control} cannot use "
+                             f"(scenario events it takes: {forms})")
+
+
+def of_type(events: list[Event], *types: type) -> list[Event]:
+    return [e for e in events if isinstance(e, types)]
+
+
+class EventQueue:
+    """Events in time order, handed out when simulated time reaches them (:meth:`due`); an event may also
+    be taken out ahead of its time (:meth:`take`: the next probe event a measuring block uses)."""
+
+    __slots__ = ("_events", "_times")
+
+    def __init__(self, events: list[Event] = ()):
+        self._events = sorted(events, key=lambda e: e.time)
+        self._times = [e.time for e in self._events]
+
+    def __bool__(self) -> bool:
+        return bool(self._events)
+
+    def __len__(self) -> int:
+        return len(self._events)
+
+    def __iter__(self) -> Iterator[Event]:
+        """The events still to come, in time order (they stay queued)."""
+        return iter(list(self._events))
+
+    def next_time(self) -> float | None:
+        """When the next event happens; None when none is left."""
+        return self._times[0] if self._times else None
+
+    def due(self, now: float) -> Iterator[Event]:
+        """Pop the events whose time has come (time <= ``now``), in order; one at a time, so an event's
+        effect may look at the queue."""
+        while self._times and self._times[0] <= now:
+            self._times.pop(0)
+            yield self._events.pop(0)
+
+    def take(self, match) -> Event | None:
+        """Remove and return the first queued event ``match(event)`` accepts, whatever its time."""
+        for i, ev in enumerate(self._events):
+            if match(ev):
+                del self._events[i], self._times[i]
+                return ev
+        return None
+
+    def push(self, ev: Event) -> None:
+        i = bisect.bisect_right(self._times, ev.time)
+        self._times.insert(i, ev.time)
+        self._events.insert(i, ev)

@@ -1,0 +1,63 @@
+"""Probing: a move toward a target that stops where the probe switches (LinuxCNC's STRAIGHT_PROBE).
+
+The scenario says where the probe switches (machine coordinates of some axes); a measuring block's
+straight move is cut there: :func:`trip_on_path` finds the switch point on the block's path,
+:func:`stop_words` rewrites the block's axis words so the move ends at it. What was measured is a
+:class:`ProbeLatch`; the control announces it to the sinks with the canon call ``probe`` just before
+the move (:func:`announce`). Used by CPL's measuring blocks G75/G275/G375 and SINUMERIK's MEAS M.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+
+@dataclass
+class ProbeLatch:
+    """What the last probe move measured: ``position`` holds the machine coordinates of the measured
+    axes when the probe switched (by axis name), None when it did not switch; ``code`` is the measuring
+    function that took it (the control's own number, e.g. CPL's G75)."""
+
+    code: int = 0
+    position: dict[str, float] | None = None
+
+
+class OffPath(ValueError):
+    """The probe event's position cannot be reached on the block's path (the message says why)."""
+
+
+def trip_on_path(given: dict[str, float], start: dict[str, float], end: dict[str, float]) -> dict[str, float]:
+    """Machine positions of the moving axes (``start`` -> ``end``) when the probe switches: those
+    ``given`` names; the others on the block's straight path at the point the given ones locate."""
+    pos = {n: float(v) for n, v in given.items() if n in start}
+    known = next((n for n in pos if abs(end[n] - start[n]) > 1e-12), None)
+    out = {}
+    for name in start:
+        if name in pos:
+            out[name] = pos[name]
+        elif known is None:
+            raise OffPath(f"the probe event gives no position for axis {name}")
+        else:
+            t = (pos[known] - start[known]) / (end[known] - start[known])
+            if not -1e-9 <= t <= 1.0 + 1e-9:
+                raise OffPath(f"the probe position {known} = {pos[known]:g} is not on the block's path "
+                              f"({start[known]:g} to {end[known]:g})")
+            out[name] = start[name] + t * (end[name] - start[name])
+    return out
+
+
+def stop_words(kernel, words: dict, stop: dict[str, float]) -> None:
+    """End a block's move where the axes of ``stop`` stop (machine coordinates): their words in ``words``
+    become the program position of that point under the kernel's offsets and transformation (the other
+    axes keep their programmed end)."""
+    switch = [stop.get(name, p) for name, p in zip(kernel.axis_names, kernel.machine_pos)]
+    target = kernel.program_position(switch)
+    for name in stop:
+        if name in words:
+            i = kernel.axis_of[name]
+            words[name] = (target[i] if kernel.absolute else target[i] - kernel.prog[i]) / kernel.scale
+
+
+def announce(canon, latch: ProbeLatch, src) -> None:
+    """The canon call of a probe move, made just before its (cut) move goes out."""
+    canon.probe(None if latch.position is None else dict(latch.position), src)
