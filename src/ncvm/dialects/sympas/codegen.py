@@ -17,6 +17,16 @@ from . import ast as A
 from .symbols import AxisSpec, Builtin, Const, Routine, SysParam, Var
 
 INT_WRAP = "(_t if -2147483648 <= (_t := {}) <= 2147483647 else _ovf(_t))"
+#: math functions generated inline (a wrapper's call costs more than the function): the function where its
+#: argument is valid, NaN (the manual's "no valid return value") elsewhere. SIN and COS fail on +-inf only,
+#: where x - x is NaN (0.0 for every finite x)
+_INLINE = {
+    "SQRT": "(_msqrt(_t) if (_t := {}) >= 0 else _NAN)",
+    "SIN": "(_msin(_t) if (_t := {}) - _t == 0.0 else _NAN)",
+    "COS": "(_mcos(_t) if (_t := {}) - _t == 0.0 else _NAN)",
+}
+#: their unchecked forms, for an assignment that catches the ValueError (CodeGen.assign_value)
+_UNCHECKED = {"SIN": "_msin({})", "COS": "_mcos({})"}
 
 
 class CodeGen:
@@ -30,6 +40,7 @@ class CodeGen:
         self._loc_ids: dict[tuple[str, int], int] = {}
         self.tmp = 0
         self.const_axes = not checker.axis_an_written
+        self.unchecked = False  # SIN and COS unchecked: the statement catches their ValueError (assign_value)
 
     # -- helpers ---------------------------------------------------------------------
     def loc(self, node) -> int:
@@ -136,7 +147,7 @@ class CodeGen:
                 # a run of plain assignments: count them once
                 self.emit(f"_n += {j - i}", body[i])
                 for s in body[i:j]:
-                    self.assign(s.target, self.expr(s.value), s.value.ty, s)
+                    self.assign_value(s)
                 self.event_point(body[j - 1])
                 i = j
             else:
@@ -149,7 +160,7 @@ class CodeGen:
         if isinstance(s, A.Assign):
             self.emit("_n += 1", s)
             self.flush_if_needed(s.value, s)
-            self.assign(s.target, self.expr(s.value), s.value.ty, s)
+            self.assign_value(s)
             self.event_point(s)
         elif isinstance(s, A.CallStmt):
             self.emit("_n += 1", s)
@@ -226,6 +237,26 @@ class CodeGen:
     def int_value(self, e) -> str:
         code = self.expr(e)
         return f"_t2i({code})" if e.ty == "timer" else code
+
+    def assign_value(self, s: A.Assign) -> None:
+        """``target := value``. Into a variable, SIN and COS run unchecked inside ``try``: they raise
+        ValueError on +-inf only, and then the value is worked out again with the checked forms (NaN). A value
+        with a routine call (its side effects would repeat) or no SIN or COS is checked inline."""
+        code = self.expr(s.value)
+        target = s.target
+        if not (isinstance(target, A.Name) and not isinstance(target.sym, SysParam)) or "yield" in code \
+                or not ("_msin(" in code or "_mcos(" in code):
+            self.assign(target, code, s.value.ty, s)
+            return
+        self.unchecked = True
+        try:
+            fast = self.expr(s.value)
+        finally:
+            self.unchecked = False
+        with self.src.block("try:", self.loc(s)):
+            self.assign(target, fast, s.value.ty, s)
+        with self.src.block("except ValueError:", self.loc(s)):
+            self.assign(target, code, s.value.ty, s)
 
     def assign(self, target, code: str, src_ty: str, node) -> None:
         if isinstance(target, A.Name):
@@ -384,8 +415,10 @@ class CodeGen:
         args = ", ".join(self.arg(a, p) for a, p in zip(c.args, b.params))
         if c.name.startswith("RDCB"):
             return f"tk.{c.name.lower()}({args})"
-        if c.name == "SQRT":
-            return f"(_msqrt(_t) if (_t := {args}) >= 0 else _NAN)"
+        if self.unchecked and c.name in _UNCHECKED:
+            return _UNCHECKED[c.name].format(args)
+        if c.name in _INLINE:
+            return _INLINE[c.name].format(args)
         if c.name == "ABS":
             return f"abs({args})" if c.args[0].ty == "double" else f"float(abs({args}))"
         return f"_F_{c.name}({args})"
