@@ -132,14 +132,14 @@ def test_acceptance_program_end_state(tmp_path, acceptance_program, ui_held):
     result, session = run(path, machine=machine, options=RunOptions(state_dir=tmp_path / ".ncvm"))
     assert result["status"] == "ok", result["error"]
     assert result["output"] == ["acc=15 d=5 ok=TRUE", "moved"]
-    task0 = session.card.tasks[0]
+    task0 = session.controller.scheduler.tasks[0]
     assert task0.state == "ENDED"
     assert task0.tskinfo & 2
     if ui_held:
         # about 1 s of busy waiting checks events after every statement: thousands of calls
-        assert session.card.ci[1] > 1000
+        assert session.controller.ci[1] > 1000
     else:
-        assert session.card.ci[1] == 0
+        assert session.controller.ci[1] == 0
 
 
 def test_eveo_leaves_the_task_ended(tmp_path):
@@ -152,8 +152,8 @@ def test_eveo_leaves_the_task_ended(tmp_path):
     machine.write_text(axes_toml(3) + EVEO_MACHINE)
     result, session = run(path, machine=machine, options=RunOptions(state_dir=tmp_path / ".ncvm"))
     assert result["status"] == "ok", result["error"]
-    assert session.card.tasks[0].state == "ENDED"
-    assert session.card.ci[0] == 999
+    assert session.controller.scheduler.tasks[0].state == "ENDED"
+    assert session.controller.ci[0] == 999
     assert 1.0 < result["cycle_time_s"] <= 1.0 + 1010 / SEC
 
 

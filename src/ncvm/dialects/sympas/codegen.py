@@ -316,7 +316,7 @@ class CodeGen:
             self.emit("    yield from tk.stopped()", node)
         elif b.form == "S":
             axes = ", ".join(self.axis_ref(a) for a in c.axes)
-            self.emit(f"_g = _card.cmd_{name.lower()}(tk, ({axes},), {loc})", node)
+            self.emit(f"_g = _C_{name.lower()}(_card, tk, ({axes},), {loc})", node)
             self.emit("if _g is not None: yield from _g", node)
         else:
             for p in c.params:
@@ -326,11 +326,11 @@ class CodeGen:
             flags = {p.name for p in c.params}
             target = "DTCA1" in flags or "DTCA2" in flags or "DTCA3" in flags
             base = name.lower()
-            call = f"_card.cmd_{base}(tk, _it, {loc}{', True' if target else ''})"
+            call = f"_C_{base}(_card, tk, _it, {loc}{', True' if target else ''})"
             if base in ("mlaw", "mlrw") and self.const_axes and all(isinstance(a.sym, AxisSpec) for a in c.axes):
                 # the common waiting line: one call when nothing else can happen meanwhile
                 self.emit(f"_it = _axis_values(({items},))", node)
-                self.emit(f"if not _card.fast_line(tk, _it, {loc}, {base == 'mlrw'}):", node)
+                self.emit(f"if not _fast_line(_card, tk, _it, {loc}, {base == 'mlrw'}):", node)
                 self.emit(f"    _g = {call}", node)
                 self.emit("    if _g is not None: yield from _g", node)
             else:
