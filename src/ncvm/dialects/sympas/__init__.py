@@ -15,6 +15,7 @@ from ...diagnostics import CompileFailed, Diagnostic, Span, UsageError
 from ...nc.canon import Src
 from ...source import read_text
 from ..base import Dialect
+from . import qualifiers
 from .card import Card
 from .checker import Checker
 from .codegen import CodeGen
@@ -26,8 +27,10 @@ from .motion import TICKS_PER_S
 from .parser import Parser
 from .values import namespace
 
-#: the card's commands in the generated code's globals (codegen: _C_<name>(card, tk, items, loc))
-_COMMANDS = {"_C_" + name: fn for name, fn in COMMANDS.items()} | {"_fast_line": fast_line}
+#: the card's commands and qualifiers in the generated code's globals (codegen: _C_<name>(card, tk, items, loc))
+_CARD_CALLS = {"_C_" + name: fn for name, fn in COMMANDS.items()} | {
+    "_fast_line": fast_line, "_get_qual": qualifiers.get_qual, "_set_qual": qualifiers.set_qual,
+    "_get_bit": qualifiers.get_bit, "_set_bit": qualifiers.set_bit}
 _SNIFF = re.compile(r"\b(begin|end\.|procedure|writeln|MLAW?|MLRW?|JAW?|STARTCNCT|\{\$TASK)\b", re.I)
 
 
@@ -47,7 +50,7 @@ class Unit:
 
     def namespace(self, card) -> dict:
         ns = namespace(card)
-        ns.update(_COMMANDS)
+        ns.update(_CARD_CALLS)
         exec(self.code, ns)
         return ns
 

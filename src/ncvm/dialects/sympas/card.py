@@ -1,9 +1,9 @@
 """The simulated APCI-8001/8008 card: its parts and the state they share.
 
 The card owns its axes (axes.py), the axes' spoolers (spooler.py) and the scheduler of the 4 tasks
-(scheduler.py), and holds the system registers, zero offsets and the run's events. The commands of
-the manual are functions over these parts (commands/). Axis positions are computed from the motion
-profiles at the asking task's time.
+(scheduler.py), and holds the system registers, CI/CD, zero offsets and the moves not yet retired. The
+manual's commands (commands/), the axis qualifiers (qualifiers.py) and the events (events.py) are
+functions over it. Axis positions are computed from the motion profiles at the asking task's time.
 """
 
 from __future__ import annotations
@@ -20,7 +20,6 @@ from .task import RUNNING, STOPPED
 from .values import MAX_COUNTS, beyond_counts, fault
 
 PU_FACTOR = {0: 1.0, 1: 25.4, 2: 1000.0, 3: 360.0, 4: 1.0, 5: 180.0 / math.pi}
-EVENT_INPUTS = {"EVEO": ("EO",), "EVDNR": ("DR",), "EVLSH": ("LSL", "LSR"), "EVUI": ("UI",)}
 
 
 class Card:
@@ -98,35 +97,6 @@ class Card:
             raise UsageError(f"{what}: unknown axis '{name}' (axes: {', '.join(self.names)})")
         return self.axes[self.names.index(name)]
 
-    # -- events (§6.4) --------------------------------------------------------------------------------
-    def input_active(self, ax: AxisState, inp: dict) -> bool:
-        level = bool(ax.digi >> (int(inp["bit"]) - 1) & 1)
-        return level != bool(inp.get("active_low", False))
-
-    def event_active(self, name: str, t: float) -> bool:
-        if name in EVENT_INPUTS:
-            funcs = EVENT_INPUTS[name]
-            for inp in self.inputs:
-                if inp.get("function") in funcs:
-                    ax = self.axes[self.names.index(inp["axis"])]
-                    active = self.input_active(ax, inp)
-                    if name == "EVDNR":
-                        active = not active  # drive not ready: the DR input became inactive
-                    if active:
-                        return True
-            return False
-        if name == "EVLSS":
-            if self.cfg["soft_limit_reaction"] not in ("TOM", "SMA"):
-                return False
-            for ax in self.axes:
-                p = self.mpos(ax, t)
-                if p < ax.q["sll"] or p > ax.q["slr"]:
-                    return True
-            return False
-        if name == "EVMPE":
-            return any(ax.closed and abs(ax.poserr) > ax.q["mpe"] for ax in self.axes)
-        return False
-
     # -- positions ----------------------------------------------------------------------------------------
     def check_axis(self, ax: int) -> AxisState:
         if not 0 <= ax < len(self.axes):
@@ -152,88 +122,6 @@ class Card:
 
     def busy(self, a: AxisState, t: float) -> bool:
         return a.move is not None and a.move.t1 > t
-
-    def axst(self, a: AxisState, t: float) -> int:
-        b = self.cfg["axst_bits"]
-        v = a.flags
-        if (not self.busy(a, t) or a.move.drift) and not a.spool:
-            v |= 1 << b["profile_end"]
-            if abs(a.poserr) <= a.q["ipw"]:
-                v |= 1 << b["in_position"]
-        if a.closed:
-            v |= 1 << b["loop_closed"]
-        if a.homed:
-            v |= 1 << b["homed"]
-        for inp in self.inputs:
-            if inp["axis"] == a.name and self.input_active(a, inp):
-                key = {"EO": "eo", "LSL": "lsh_left", "LSR": "lsh_right"}.get(inp.get("function"))
-                if key:
-                    v |= 1 << b[key]
-        p = self.mpos(a, t)
-        if p < a.q["sll"]:
-            v |= 1 << b["lss_left"]
-        if p > a.q["slr"]:
-            v |= 1 << b["lss_right"]
-        if a.closed and abs(a.poserr) > a.q["mpe"]:
-            v |= 1 << b["mpe"]
-        return v
-
-    # -- qualifiers (§6.3.3) ---------------------------------------------------------------------------------
-    def get_qual(self, tk, ax: int, name: str):
-        a = self.check_axis(ax)
-        t = tk.time
-        if name in ("dp", "rp"):
-            u = self.mpos(a, t) - self.user_shift(a)
-            return u - a.poserr if name == "rp" else u
-        if name == "tp":
-            return a.target - self.user_shift(a)
-        if name in ("dv", "rv"):
-            return self.axis_velocity(a, t)
-        if name == "poserr":
-            return a.poserr
-        if name == "zerooffset":
-            return a.zerooffset
-        if name == "axst":
-            return self.axst(a, t)
-        if name in ("digi", "digo", "ifs"):
-            return getattr(a, name)
-        if name in ("kp", "ki", "kd", "kpl", "kfca", "kfcv"):
-            return a.staged[name]
-        if name == "lsm":  # the running chain's unfinished segments still hold their entries
-            return (self.spooler.capacity - self.spooler.used(ax, t)) * 64
-        if name == "mcis":
-            return sum(1 for e in a.spool if e[0] == "move") + self.spooler.chain_pending(ax, t)
-        return a.q[name]
-
-    def set_qual(self, tk, ax: int, name: str, value) -> None:
-        a = self.check_axis(ax)
-        if isinstance(value, float) and not math.isfinite(value):
-            # NaN or inf (a math function's "no valid return value") as a position, velocity or gain
-            fault(32768, f"{a.name}.{name} := {value}: not a valid parameter value")
-        if name in ("digi", "ifs"):
-            setattr(a, name, 0 if name == "ifs" else a.digi)  # writing clears the latched flags (L1444)
-            return
-        if name == "digo":
-            a.digo = value & 0xFFFFFFFF
-            return
-        if name == "dp":
-            shift = self.user_shift(a)
-            self.retire_axis(a, tk.time)
-            a.m = a.target = value + shift
-            return
-        if name in ("kp", "ki", "kd", "kpl", "kfca", "kfcv"):
-            a.staged[name] = value
-            return
-        a.q[name] = value
-
-    def get_bit(self, tk, ax: int, squal: str, bit: int) -> bool:
-        word = {"digib": "digi", "digob": "digo", "ifsb": "ifs", "axstb": "axst"}[squal]
-        return bool(self.get_qual(tk, ax, word) >> (bit - 1) & 1)
-
-    def set_bit(self, ax: int, squal: str, bit: int, value: bool) -> None:
-        a = self.check_axis(ax)
-        mask = 1 << (bit - 1)
-        a.digo = (a.digo | mask) if value else (a.digo & ~mask)
 
     # -- system registers ----------------------------------------------------------------------------------------
     def get_sys(self, name: str):
@@ -401,13 +289,6 @@ class Card:
         finally:
             tk.held = None
             tk.leaves_wait()
-
-    def events_follow_motion(self, tk) -> bool:
-        """Whether an event ``tk`` has enabled can change while the axes move: EVLSS (an axis crossing its
-        soft limit) when the soft-limit reaction raises it. The input events change with timed actions only."""
-        return ("EVLSS" in tk.enabled and self.cfg["soft_limit_reaction"] in ("TOM", "SMA")
-                and any(a.move is not None for a in self.axes))
-
 
     # -- system reset and the end of the run -----------------------------------------------------------------------------
     def reset_system(self, t: float) -> None:

@@ -269,7 +269,7 @@ class CodeGen:
         q = target
         ax = self.axis_ref(q.axis)
         if q.bit is not None:
-            self.emit(f"tk.card.set_bit({ax}, {q.qual!r}, {q.bitno}, {code})", node)
+            self.emit(f"_set_bit(tk.card, {ax}, {q.qual!r}, {q.bitno}, {code})", node)
         elif q.qual == "an":
             sym = q.axis.sym
             value = convert(code, src_ty, "integer")
@@ -278,7 +278,7 @@ class CodeGen:
             else:
                 self.emit(f"{sym.py} = {value}", node)
         else:
-            self.emit(f"tk.card.set_qual(tk, {ax}, {q.qual!r}, {convert(code, src_ty, q.ty)})", node)
+            self.emit(f"_set_qual(tk.card, tk, {ax}, {q.qual!r}, {convert(code, src_ty, q.ty)})", node)
 
     def axis_ref(self, name: A.Name) -> str:
         sym = name.sym
@@ -378,10 +378,10 @@ class CodeGen:
         if isinstance(e, A.Qual):
             ax = self.axis_ref(e.axis)
             if e.bit is not None:
-                return f"tk.card.get_bit(tk, {ax}, {e.qual!r}, {e.bitno})"
+                return f"_get_bit(tk.card, tk, {ax}, {e.qual!r}, {e.bitno})"
             if e.qual == "an":
                 return ax
-            return f"tk.card.get_qual(tk, {ax}, {e.qual!r})"
+            return f"_get_qual(tk.card, tk, {ax}, {e.qual!r})"
         if isinstance(e, A.Call):
             return self.call_expr(e)
         if isinstance(e, A.Unary):

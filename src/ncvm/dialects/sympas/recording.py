@@ -19,6 +19,7 @@ from __future__ import annotations
 import math
 
 from .motion import TICKS_PER_S
+from .values import fault
 
 SAMPLES = 1000
 FIELDS = ("t", "dp", "rp", "dv", "rv", "poserr")
@@ -62,7 +63,6 @@ def start(card, tk, axes) -> None:
     """LPR/LPRS: arm one recording per axis, all on the same time grid."""
     lst, let = float(tk.sysp["LST"]), float(tk.sysp["LET"])
     if lst < 0.0 or let < 0.0:
-        from .values import fault
         fault(256, f"LST = {lst:g} s and LET = {let:g} s must not be negative")
     f, ts = card.units(tk)
     servo = card.scheduler.servo

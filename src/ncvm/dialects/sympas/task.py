@@ -10,6 +10,7 @@ from __future__ import annotations
 import math
 import struct
 
+from .events import event_active, events_follow_motion
 from .symbols import EVENTS
 from .values import fault
 
@@ -118,7 +119,7 @@ class Task:
             fn = self.enabled.get(name)
             if fn is None:
                 continue
-            active = card.event_active(name, self.time)
+            active = event_active(card, name, self.time)
             if edge:
                 was = name in self.active_before
                 if active:
@@ -154,7 +155,7 @@ class Task:
                 self.sleeps_until(tick if ends is None else ends, poll)
                 if poll and self.enabled:
                     cycle = (math.floor(self.time / servo) + 1) * servo
-                    if card.events_follow_motion(self):
+                    if events_follow_motion(card, self):
                         self.waits_for = None  # a handler can start in any cycle
                     else:
                         quiet = sched.quiet_until(self)

@@ -144,4 +144,6 @@ lprs = lpr
 
 
 #: the commands of this group by name (codegen calls them as _C_<name>)
-COMMANDS = {"cl": cl, "clv": clv, "ol": ol, "ra": ra, "rptodp": rptodp, "shp": shp, "szpa": szpa, "szpr": szpr, "uf": uf, "utrovr": utrovr, "lpr": lpr, "lprs": lprs}
+COMMANDS = {
+    "cl": cl, "clv": clv, "ol": ol, "ra": ra, "rptodp": rptodp, "shp": shp, "szpa": szpa, "szpr": szpr, "uf":
+    uf, "utrovr": utrovr, "lpr": lpr, "lprs": lprs}

@@ -60,7 +60,8 @@ def _jog(card, tk, items, loc, relative: bool, wait: bool):
             owner = Chain(segs, start, [0.0] * len(segs), [0] * len(segs))
             owner.jog = True
         if v1 > 0.0:  # arrive with the jog target velocity and keep moving (digest §10.5, A-60)
-            card.scheduler.add_timed(owner.t1, _drift_action(card, a, owner, v1, 1.0 if p1 >= segs[-1].p0[0] else -1.0, src))
+            sign = 1.0 if p1 >= segs[-1].p0[0] else -1.0
+            card.scheduler.add_timed(owner.t1, _drift_action(card, a, owner, v1, sign, src))
         a.move = owner
         card.live.add(owner)
     return then_wait(card, tk, axes, wait)
@@ -220,7 +221,9 @@ def jhiw(card, tk, items, loc):
 
 
 #: the commands of this group by name (codegen calls them as _C_<name>)
-COMMANDS = {"ja": ja, "jaw": jaw, "jr": jr, "jrw": jrw, "jhl": jhl, "jhlw": jhlw, "jhr": jhr, "jhrw": jhrw, "jhi": jhi, "jhiw": jhiw}
+COMMANDS = {
+    "ja": ja, "jaw": jaw, "jr": jr, "jrw": jrw, "jhl": jhl, "jhlw": jhlw, "jhr": jhr, "jhrw": jhrw, "jhi":
+    jhi, "jhiw": jhiw}
 
 
 def jog_plan(p0: float, p1: float, v0: float, vel: float, acc: float, jerk: float, jtv: float) -> list:

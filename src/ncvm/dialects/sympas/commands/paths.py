@@ -238,4 +238,7 @@ mha, mhaw, mhr, mhrw = mca, mcaw, mcr, mcrw  # helices: circles with further axe
 
 
 #: the commands of this group by name (codegen calls them as _C_<name>)
-COMMANDS = {"mla": mla, "mlaw": mlaw, "mlr": mlr, "mlrw": mlrw, "mca": mca, "mcaw": mcaw, "mcr": mcr, "mcrw": mcrw, "mha": mha, "mhaw": mhaw, "mhr": mhr, "mhrw": mhrw, "mca3d": mca3d, "mca3dw": mca3dw, "mcr3d": mcr3d, "mcr3dw": mcr3dw}
+COMMANDS = {
+    "mla": mla, "mlaw": mlaw, "mlr": mlr, "mlrw": mlrw, "mca": mca, "mcaw": mcaw, "mcr": mcr, "mcrw": mcrw,
+    "mha": mha, "mhaw": mhaw, "mhr": mhr, "mhrw": mhrw, "mca3d": mca3d, "mca3dw": mca3dw, "mcr3d": mcr3d,
+    "mcr3dw": mcr3dw}

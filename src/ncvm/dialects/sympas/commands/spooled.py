@@ -56,7 +56,8 @@ def _waiting_spool(card, tk, axes, cap: int):
             until = card.spooler.free_at(axes, cap, tk.time)
             if until is None or until <= tk.time:
                 return
-            yield from tk.wait_until(card.scheduler.wake_time(tk, until), ends=until)  # inf: held by TROVR = 0, as a W-wait
+            # until = inf: held by TROVR = 0, as a W-wait
+            yield from tk.wait_until(card.scheduler.wake_time(tk, until), ends=until)
     finally:
         tk.held = None
         tk.leaves_wait()
@@ -237,7 +238,8 @@ def _join(card, tk, chain, segs: list, targets: list, mode: int, ssf_after: list
     the running one if it has not begun its final ramp (Profile.replannable), are planned anew with
     the new ones by the look-ahead, so the axes do not stop at the old end (digest §10.5, L1391)."""
     now = tk.time
-    chain.prune(now - card.scheduler.slice - card.scheduler.servo, card.canon, len(card.axes))  # other tasks lag by a slice at most
+    sched = card.scheduler  # other tasks lag by a slice at most
+    chain.prune(now - sched.slice - sched.servo, card.canon, len(card.axes))
     old = len(chain.segs)
     if not segs:
         for _, act in ssf_after:
@@ -303,4 +305,6 @@ def _ssf_at_end(card, chain, seg, act, tick: float, armed: list) -> None:
 
 
 #: the commands of this group by name (codegen calls them as _C_<name>)
-COMMANDS = {"smla": smla, "smlr": smlr, "smca": smca, "smcr": smcr, "smha": smha, "smhr": smhr, "smca3d": smca3d, "smcr3d": smcr3d, "ssf": ssf, "ssms": ssms, "ssmsw": ssmsw}
+COMMANDS = {
+    "smla": smla, "smlr": smlr, "smca": smca, "smcr": smcr, "smha": smha, "smhr": smhr, "smca3d": smca3d,
+    "smcr3d": smcr3d, "ssf": ssf, "ssms": ssms, "ssmsw": ssmsw}
