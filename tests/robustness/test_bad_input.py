@@ -187,6 +187,20 @@ def test_sin_and_cos_of_infinity_give_no_valid_value_in_sympas(run_text, fn):
     assert r["output"] == ["nan"]
 
 
+@pytest.mark.parametrize(("statement", "output"), [
+    ("writeln(SIN(x * x))", ["nan", "1e+300"]), ("writeln(COS(x * x) + 1)", ["nan", "1e+300"]),
+    ("if COS(x * x) <> COS(x * x) then writeln('nan')", ["nan", "1e+300"]),
+    ("x := SIN(x * x) + twice(x)", ["twice", "nan"])])
+def test_sin_and_cos_of_infinity_give_nan_in_every_context(run_text, statement, output):
+    """Outside a plain assignment (and in one with a routine call, which must run once) SIN and COS check
+    their argument inline; a plain assignment catches the unchecked function's error instead."""
+    text = ("program p;\nvar x: double;\nfunction twice(v: double): double;\nbegin\n  writeln('twice');\n"
+            f"  twice := v + v;\nend;\nbegin\n  x := 1e300;\n  {statement};\n  writeln(x);\nend.\n")
+    r = run_text(text, name="p.sap")
+    assert r["status"] == "ok", r["error"]
+    assert r["output"] == output
+
+
 @pytest.mark.parametrize("command", ["MCRW(A1 := 1.0, A2 := 0.0, PHI := 1e300)",
                                      "MHRW(A1 := 1.0, A2 := 0.0, PHI := 1e20, A3 := 1.0)",
                                      "MCR3DW(A1 := 1.0, A2 := 0.0, A3 := 0.0, PHI := 1e300, PN3 := 1.0)"])

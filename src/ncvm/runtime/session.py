@@ -94,6 +94,7 @@ class Session:
         self.variables: dict[str, Any] = {}
         #: dialect-specific parts of the result document (e.g. the rw_SymPas card's LPR recordings)
         self.extra: dict[str, Any] = {}
+        self.controller: Any = None  # the dialect's controller of this run (the rw_SymPas card), for tools
         self.steps = StepCounter(self.options.max_steps, self.options.hook)
         chosen = sinks or (_default_sinks(machine, self.options) if _default_sinks else RunSinks())
         self.recorder = chosen.recorder

@@ -26,6 +26,21 @@ def sap(tmp_path):
 
 
 @pytest.fixture
+def sap_on(tmp_path):
+    """sap_on(text, machine_text) -> result of a run on a machine file written in full."""
+
+    def _run(text: str, machine_text: str, **opts):
+        path = tmp_path / "audit.sap"
+        path.write_text(text, encoding="latin-1")
+        machine = tmp_path / "audit_machine.toml"
+        machine.write_text(machine_text, encoding="utf-8")
+        result, _ = run(path, machine=machine, options=RunOptions(state_dir=tmp_path / ".ncvm", **opts))
+        return result
+
+    return _run
+
+
+@pytest.fixture
 def sap_check(tmp_path):
     """sap_check(text) -> list of (code, line) of the errors ``ncvm check`` reports."""
 

@@ -11,13 +11,15 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
-from ...diagnostics import CompileFailed, Diagnostic, UsageError
+from ...diagnostics import CompileFailed, Diagnostic, Span, UsageError
 from ...nc.canon import Src
 from ...source import read_text
 from ..base import Dialect
+from . import qualifiers
 from .card import Card
 from .checker import Checker
 from .codegen import CodeGen
+from .commands import COMMANDS, fast_line
 from .config import sympas_config
 from .errors import SympasError
 from .lexer import Lexer
@@ -25,6 +27,10 @@ from .motion import TICKS_PER_S
 from .parser import Parser
 from .values import namespace
 
+#: the card's commands and qualifiers in the generated code's globals (codegen: _C_<name>(card, tk, items, loc))
+_CARD_CALLS = {"_C_" + name: fn for name, fn in COMMANDS.items()} | {
+    "_fast_line": fast_line, "_get_qual": qualifiers.get_qual, "_set_qual": qualifiers.set_qual,
+    "_get_bit": qualifiers.get_bit, "_set_bit": qualifiers.set_bit}
 _SNIFF = re.compile(r"\b(begin|end\.|procedure|writeln|MLAW?|MLRW?|JAW?|STARTCNCT|\{\$TASK)\b", re.I)
 
 
@@ -44,6 +50,7 @@ class Unit:
 
     def namespace(self, card) -> dict:
         ns = namespace(card)
+        ns.update(_CARD_CALLS)
         exec(self.code, ns)
         return ns
 
@@ -91,7 +98,6 @@ def compile_units(path: str, text: str, machine, warnings: list | None = None, s
 
 
 def _span(node):
-    from ...diagnostics import Span
     return Span(node.file, node.line, node.col)
 
 
@@ -126,27 +132,28 @@ class SympasDialect(Dialect):
         except SympasError as e:
             raise CompileFailed([e.diagnostic()]) from None
         card = Card(session, cfg)
-        session.card = card
+        session.controller = card
+        tasks = card.scheduler.tasks
         main = units[0]
         for u in units:
             n = u.task if u.task is not None else 0
-            if card.tasks[n].unit is not None:
+            if tasks[n].unit is not None:
                 raise CompileFailed([Diagnostic("SP010", f"two programs are loaded into task {n}",
                                                 _span(u.prog))])
-            card.tasks[n].load(u)
-        main_task = card.tasks[main.task if main.task is not None else 0]
+            tasks[n].load(u)
+        main_task = tasks[main.task if main.task is not None else 0]
         main_task.start(0.0)
         try:
-            card.run()
+            card.scheduler.run()
         finally:
-            session.steps.steps += card.steps
-            card.steps = 0
+            session.steps.steps += card.scheduler.steps
+            card.scheduler.steps = 0
             end = card.finish()
             if card.recordings:
                 session.extra["recordings"] = {card.names[ax]: rec.to_json(card.names[ax])
                                                for ax, rec in sorted(card.recordings.items())}
             session.machine.clock.now = end / TICKS_PER_S
-            for tk in card.tasks:
+            for tk in tasks:
                 if tk.line and not tk.tskinfo & 2:
                     session.say(tk.line)  # an unterminated WRITE string is still shown
                     tk.tskinfo |= 2

@@ -17,6 +17,16 @@ from . import ast as A
 from .symbols import AxisSpec, Builtin, Const, Routine, SysParam, Var
 
 INT_WRAP = "(_t if -2147483648 <= (_t := {}) <= 2147483647 else _ovf(_t))"
+#: math functions generated inline (a wrapper's call costs more than the function): the function where its
+#: argument is valid, NaN (the manual's "no valid return value") elsewhere. SIN and COS fail on +-inf only,
+#: where x - x is NaN (0.0 for every finite x)
+_INLINE = {
+    "SQRT": "(_msqrt(_t) if (_t := {}) >= 0 else _NAN)",
+    "SIN": "(_msin(_t) if (_t := {}) - _t == 0.0 else _NAN)",
+    "COS": "(_mcos(_t) if (_t := {}) - _t == 0.0 else _NAN)",
+}
+#: their unchecked forms, for an assignment that catches the ValueError (CodeGen.assign_value)
+_UNCHECKED = {"SIN": "_msin({})", "COS": "_mcos({})"}
 
 
 class CodeGen:
@@ -30,6 +40,7 @@ class CodeGen:
         self._loc_ids: dict[tuple[str, int], int] = {}
         self.tmp = 0
         self.const_axes = not checker.axis_an_written
+        self.unchecked = False  # SIN and COS unchecked: the statement catches their ValueError (assign_value)
 
     # -- helpers ---------------------------------------------------------------------
     def loc(self, node) -> int:
@@ -136,7 +147,7 @@ class CodeGen:
                 # a run of plain assignments: count them once
                 self.emit(f"_n += {j - i}", body[i])
                 for s in body[i:j]:
-                    self.assign(s.target, self.expr(s.value), s.value.ty, s)
+                    self.assign_value(s)
                 self.event_point(body[j - 1])
                 i = j
             else:
@@ -149,7 +160,7 @@ class CodeGen:
         if isinstance(s, A.Assign):
             self.emit("_n += 1", s)
             self.flush_if_needed(s.value, s)
-            self.assign(s.target, self.expr(s.value), s.value.ty, s)
+            self.assign_value(s)
             self.event_point(s)
         elif isinstance(s, A.CallStmt):
             self.emit("_n += 1", s)
@@ -227,6 +238,26 @@ class CodeGen:
         code = self.expr(e)
         return f"_t2i({code})" if e.ty == "timer" else code
 
+    def assign_value(self, s: A.Assign) -> None:
+        """``target := value``. Into a variable, SIN and COS run unchecked inside ``try``: they raise
+        ValueError on +-inf only, and then the value is worked out again with the checked forms (NaN). A value
+        with a routine call (its side effects would repeat) or no SIN or COS is checked inline."""
+        code = self.expr(s.value)
+        target = s.target
+        if not (isinstance(target, A.Name) and not isinstance(target.sym, SysParam)) or "yield" in code \
+                or not ("_msin(" in code or "_mcos(" in code):
+            self.assign(target, code, s.value.ty, s)
+            return
+        self.unchecked = True
+        try:
+            fast = self.expr(s.value)
+        finally:
+            self.unchecked = False
+        with self.src.block("try:", self.loc(s)):
+            self.assign(target, fast, s.value.ty, s)
+        with self.src.block("except ValueError:", self.loc(s)):
+            self.assign(target, code, s.value.ty, s)
+
     def assign(self, target, code: str, src_ty: str, node) -> None:
         if isinstance(target, A.Name):
             sym = target.sym
@@ -238,7 +269,7 @@ class CodeGen:
         q = target
         ax = self.axis_ref(q.axis)
         if q.bit is not None:
-            self.emit(f"tk.card.set_bit({ax}, {q.qual!r}, {q.bitno}, {code})", node)
+            self.emit(f"_set_bit(tk.card, {ax}, {q.qual!r}, {q.bitno}, {code})", node)
         elif q.qual == "an":
             sym = q.axis.sym
             value = convert(code, src_ty, "integer")
@@ -247,7 +278,7 @@ class CodeGen:
             else:
                 self.emit(f"{sym.py} = {value}", node)
         else:
-            self.emit(f"tk.card.set_qual(tk, {ax}, {q.qual!r}, {convert(code, src_ty, q.ty)})", node)
+            self.emit(f"_set_qual(tk.card, tk, {ax}, {q.qual!r}, {convert(code, src_ty, q.ty)})", node)
 
     def axis_ref(self, name: A.Name) -> str:
         sym = name.sym
@@ -285,7 +316,7 @@ class CodeGen:
             self.emit("    yield from tk.stopped()", node)
         elif b.form == "S":
             axes = ", ".join(self.axis_ref(a) for a in c.axes)
-            self.emit(f"_g = _card.cmd_{name.lower()}(tk, ({axes},), {loc})", node)
+            self.emit(f"_g = _C_{name.lower()}(_card, tk, ({axes},), {loc})", node)
             self.emit("if _g is not None: yield from _g", node)
         else:
             for p in c.params:
@@ -295,11 +326,11 @@ class CodeGen:
             flags = {p.name for p in c.params}
             target = "DTCA1" in flags or "DTCA2" in flags or "DTCA3" in flags
             base = name.lower()
-            call = f"_card.cmd_{base}(tk, _it, {loc}{', True' if target else ''})"
+            call = f"_C_{base}(_card, tk, _it, {loc}{', True' if target else ''})"
             if base in ("mlaw", "mlrw") and self.const_axes and all(isinstance(a.sym, AxisSpec) for a in c.axes):
                 # the common waiting line: one call when nothing else can happen meanwhile
                 self.emit(f"_it = _axis_values(({items},))", node)
-                self.emit(f"if not _card.fast_line(tk, _it, {loc}, {base == 'mlrw'}):", node)
+                self.emit(f"if not _fast_line(_card, tk, _it, {loc}, {base == 'mlrw'}):", node)
                 self.emit(f"    _g = {call}", node)
                 self.emit("    if _g is not None: yield from _g", node)
             else:
@@ -347,10 +378,10 @@ class CodeGen:
         if isinstance(e, A.Qual):
             ax = self.axis_ref(e.axis)
             if e.bit is not None:
-                return f"tk.card.get_bit(tk, {ax}, {e.qual!r}, {e.bitno})"
+                return f"_get_bit(tk.card, tk, {ax}, {e.qual!r}, {e.bitno})"
             if e.qual == "an":
                 return ax
-            return f"tk.card.get_qual(tk, {ax}, {e.qual!r})"
+            return f"_get_qual(tk.card, tk, {ax}, {e.qual!r})"
         if isinstance(e, A.Call):
             return self.call_expr(e)
         if isinstance(e, A.Unary):
@@ -384,8 +415,10 @@ class CodeGen:
         args = ", ".join(self.arg(a, p) for a, p in zip(c.args, b.params))
         if c.name.startswith("RDCB"):
             return f"tk.{c.name.lower()}({args})"
-        if c.name == "SQRT":
-            return f"(_msqrt(_t) if (_t := {args}) >= 0 else _NAN)"
+        if self.unchecked and c.name in _UNCHECKED:
+            return _UNCHECKED[c.name].format(args)
+        if c.name in _INLINE:
+            return _INLINE[c.name].format(args)
         if c.name == "ABS":
             return f"abs({args})" if c.args[0].ty == "double" else f"float(abs({args}))"
         return f"_F_{c.name}({args})"

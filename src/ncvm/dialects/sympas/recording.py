@@ -19,6 +19,7 @@ from __future__ import annotations
 import math
 
 from .motion import TICKS_PER_S
+from .values import fault
 
 SAMPLES = 1000
 FIELDS = ("t", "dp", "rp", "dv", "rv", "poserr")
@@ -62,10 +63,9 @@ def start(card, tk, axes) -> None:
     """LPR/LPRS: arm one recording per axis, all on the same time grid."""
     lst, let = float(tk.sysp["LST"]), float(tk.sysp["LET"])
     if lst < 0.0 or let < 0.0:
-        from .values import fault
         fault(256, f"LST = {lst:g} s and LET = {let:g} s must not be negative")
     f, ts = card.units(tk)
-    servo = card.servo
+    servo = card.scheduler.servo
     t_a = servo / TICKS_PER_S
     k = max(1, math.ceil(let / (SAMPLES * t_a) - 1e-9))
     call = tk.time
@@ -73,7 +73,7 @@ def start(card, tk, axes) -> None:
     for ax in axes:
         rec = Recording(ax, call, first, k * servo, f, ts)
         card.recordings[ax] = rec
-        card.add_timed(first, _sampler(card, rec))
+        card.scheduler.add_timed(first, _sampler(card, rec))
 
 
 def _sampler(card, rec: Recording):
@@ -82,7 +82,7 @@ def _sampler(card, rec: Recording):
             return  # replaced by a later LPR of the axis
         rec.take(card)
         if not rec.complete:
-            card.add_timed(rec.tick(len(rec.samples)), act)
+            card.scheduler.add_timed(rec.tick(len(rec.samples)), act)
     return act
 
 

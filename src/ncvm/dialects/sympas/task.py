@@ -10,6 +10,7 @@ from __future__ import annotations
 import math
 import struct
 
+from .events import event_active, events_follow_motion
 from .symbols import EVENTS
 from .values import fault
 
@@ -32,24 +33,25 @@ class TaskEnd(Exception):
 
 
 class Task:
-    def __init__(self, card, number: int):
+    def __init__(self, card, sched, number: int):
         self.card = card
+        self.sched = sched  # the card's scheduler: the clock, the step count, the other tasks
         self.number = number
         self.state = EMPTY
         self.unit = None
         self.ns: dict | None = None
         self.gen = None
         self.time = 0.0
-        self.iq = 1.0 / card.q
+        self.iq = 1.0 / sched.q
         self.budget = 1
         self.check_at = 0.0
         self.depth = 0
         self.main_locals = None
-        self.held = None  # card.steps when this task last found its W-wait held by TROVR = 0
+        self.held = None  # sched.steps when this task last found its W-wait held by TROVR = 0
         self.waits_for: float | None = None  # while it sleeps: when it acts again if nothing else happens
-        self.waits_mark = 0  # card.acts when waits_for was worked out (valid while no task has acted since)
+        self.waits_mark = 0  # sched.acts when waits_for was worked out (valid while no task has acted since)
         self.polls = False  # whether it looks for events while it sleeps
-        self.polled = -1  # card.timed_done when it last looked for events
+        self.polled = -1  # sched.timed_done when it last looked for events
         self.max_depth = int(card.cfg["max_call_depth"])
         self.reset_state()
 
@@ -76,18 +78,19 @@ class Task:
     def flush(self, n: int) -> None:
         if n:
             self.time += n * self.iq
-            self.card.steps += n
+            self.sched.steps += n
             self.budget -= n
 
     def clock(self, n: int) -> int:
-        return (int(self.time + n * self.iq) + self.card.clock0) & 0xFFFFFFFF
+        return (int(self.time + n * self.iq) + self.sched.clock0) & 0xFFFFFFFF
 
     def set_budget(self) -> None:
         if self.step_once:
             self.budget = 1  # STEPCNCT: stop at the next check point
             return
-        room = (self.check_at - self.time) * self.card.q
-        left = self.card.step_limit - self.card.steps + 1
+        sched = self.sched
+        room = (self.check_at - self.time) * sched.q
+        left = sched.step_limit - sched.steps + 1
         # with events enabled a check point due now polls even with no statement counted since the last
         # (right after a WT, L2232); otherwise at least one statement runs between check points
         self.budget = max(0 if self.enabled else 1, min(int(room) if room < 1e15 else 1 << 60, left))
@@ -95,9 +98,9 @@ class Task:
     def checkin(self, n: int):
         """A loop back-edge: account the statements, let other tasks run, poll events."""
         self.flush(n)
-        card = self.card
-        if card.steps > card.step_limit:
-            card.runaway()
+        sched = self.sched
+        if sched.steps > sched.step_limit:
+            sched.runaway()
         if self.time >= self.check_at or self.step_once:
             if self.step_once:
                 self.step_once = False
@@ -110,13 +113,13 @@ class Task:
     def poll_events(self):
         """Run the highest-priority enabled event whose condition holds (§6.4, L1598-1610)."""
         card = self.card
-        self.polled = card.timed_done
+        self.polled = self.sched.timed_done
         edge = card.cfg["event_trigger"] == "edge"
         for name in EVENTS:
             fn = self.enabled.get(name)
             if fn is None:
                 continue
-            active = card.event_active(name, self.time)
+            active = event_active(card, name, self.time)
             if edge:
                 was = name in self.active_before
                 if active:
@@ -135,7 +138,7 @@ class Task:
             return True
 
     def others_running(self) -> bool:
-        return any(t.state == RUNNING and t is not self for t in self.card.tasks)
+        return any(t.state == RUNNING and t is not self for t in self.sched.tasks)
 
     def wait_until(self, tick: float, poll: bool = True, ends: float | None = None):
         """Sleep until ``tick``; ``ends`` is when the wait itself ends if nothing else happens (a W-wait
@@ -144,17 +147,18 @@ class Task:
         motion, else at the next timed action or when another task can act (the input events change with
         nothing else)."""
         card = self.card
-        servo = card.servo
+        sched = self.sched
+        servo = sched.servo
         try:
             while self.time < tick:
                 step = tick
                 self.sleeps_until(tick if ends is None else ends, poll)
                 if poll and self.enabled:
                     cycle = (math.floor(self.time / servo) + 1) * servo
-                    if card.events_follow_motion(self):
+                    if events_follow_motion(card, self):
                         self.waits_for = None  # a handler can start in any cycle
                     else:
-                        quiet = card.quiet_until(self)
+                        quiet = sched.quiet_until(self)
                         cycle = max(cycle, math.ceil(quiet / servo) * servo if quiet < math.inf else quiet)
                     step = min(tick, cycle)
                 self.time = step
@@ -162,7 +166,7 @@ class Task:
                 if poll and self.enabled and not self.in_handler:
                     self.waits_for = None  # a handler that starts acts now
                     if (yield from self.poll_events()):
-                        card.acts += 1
+                        sched.acts += 1
         finally:
             if ends is None:
                 self.leaves_wait()
@@ -173,17 +177,17 @@ class Task:
         """This task sleeps and, if nothing else happens, acts again at ``ends`` (other waiting tasks plan
         their next look by it while no task has acted since); ``poll``: it looks for events meanwhile."""
         self.waits_for = ends
-        self.waits_mark = self.card.acts
+        self.waits_mark = self.sched.acts
         self.polls = poll and bool(self.enabled)
 
     def leaves_wait(self) -> None:
         """The wait is over: what the task does next may change what the others wait for."""
         self.waits_for = None
-        self.card.acts += 1
+        self.sched.acts += 1
 
     def fast_wait(self, tick: float, poll: bool = True) -> bool:
         """Advance to ``tick`` at once when nothing can happen before (no other task, no timed action)."""
-        if (poll and self.enabled) or self.others_running() or self.card.next_timed() <= tick:
+        if (poll and self.enabled) or self.others_running() or self.sched.next_timed() <= tick:
             return False
         if tick > self.time:
             self.time = tick
@@ -276,7 +280,7 @@ class Task:
     def _task(self, n: int) -> Task:
         if not 0 <= n <= 3:
             fault(256, f"task number {n} outside 0..3")
-        return self.card.tasks[n]
+        return self.sched.tasks[n]
 
     def startcnct(self, n: int):
         t = self._task(n)
@@ -297,7 +301,7 @@ class Task:
 
     def contcnct(self, n: int):
         t = self._task(n)
-        self.card.solo = None
+        self.sched.solo = None
         if t.state in (STOPPED, STEP) and t is not self:
             t.state = RUNNING
             t.time = max(t.time, self.time)
@@ -305,7 +309,7 @@ class Task:
 
     def stepcnct(self, n: int):
         t = self._task(n)
-        self.card.solo = None
+        self.sched.solo = None
         if t.state in (STOPPED, STEP) and t is not self:
             t.state = RUNNING
             t.step_once = True
@@ -340,7 +344,7 @@ class Task:
         self.state = READY
 
     def start(self, at: float) -> None:
-        self.card.solo = None
+        self.sched.solo = None
         self.reset_state()
         self.ns = self.unit.namespace(self.card)
         self.gen = self.ns["_main"](self)

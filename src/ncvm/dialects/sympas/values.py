@@ -107,9 +107,7 @@ MATH = {
     "POWER": _safe(math.pow), "SIN": _safe(math.sin), "SINH": _safe(math.sinh),
     "SQR": lambda x: float(x) * x, "SQRT": _safe(math.sqrt), "TAN": _safe(math.tan), "TANH": _safe(math.tanh),
 }
-# fast paths: SIN and COS fail only on inf (a product beyond the double range), x - x is 0.0 for every finite x
-MATH["COS"] = lambda x: math.cos(x) if x - x == 0.0 else math.nan
-MATH["SIN"] = lambda x: math.sin(x) if x - x == 0.0 else math.nan
+# fast paths (SQRT, SIN and COS are generated inline: codegen._INLINE)
 MATH["ATAN"] = math.atan  # cannot fail, not even on inf
 MATH["TANH"] = math.tanh
 
@@ -150,7 +148,7 @@ def namespace(card) -> dict:
         return wrap32(x)
 
     ns = {"_ovf": ovf, "_idiv": idiv, "_imod": imod, "_rdiv": rdiv, "_f32": f32, "_t2i": t2i, "_toint": toint,
-          "_msqrt": math.sqrt, "_NAN": math.nan, "_fmt": fmt, "_DIGITS": int(card.cfg["write_digits"]), "_fault": fault, "_axis_values": axis_values, "_Goto": Goto, "_GOTO": GOTO, "__builtins__": __builtins__}
+          "_msqrt": math.sqrt, "_msin": math.sin, "_mcos": math.cos, "_NAN": math.nan, "_fmt": fmt, "_DIGITS": int(card.cfg["write_digits"]), "_fault": fault, "_axis_values": axis_values, "_Goto": Goto, "_GOTO": GOTO, "__builtins__": __builtins__}
     for name, fn in MATH.items():
         ns["_F_" + name] = fn
     return ns

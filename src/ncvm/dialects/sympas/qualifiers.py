@@ -1,0 +1,100 @@
+"""The axis qualifiers (§6.3.3): ``A1.dp``, ``A1.axst``, ``A1.digob.3`` … read and written by generated code.
+
+Generated code calls ``_get_qual(card, tk, ax, name)`` and its siblings (codegen); ``axst`` is the status
+word of an axis, with the bits the machine file names (``sympas.axst_bits``).
+"""
+
+from __future__ import annotations
+
+import math
+
+from .axes import AxisState
+from .events import input_active
+from .values import fault
+
+
+def axst(card, a: AxisState, t: float) -> int:
+    """The status word of axis ``a`` at ``t``: its sticky flags, motion, loop, homing, inputs and limits."""
+    b = card.cfg["axst_bits"]
+    v = a.flags
+    if (not card.busy(a, t) or a.move.drift) and not a.spool:
+        v |= 1 << b["profile_end"]
+        if abs(a.poserr) <= a.q["ipw"]:
+            v |= 1 << b["in_position"]
+    if a.closed:
+        v |= 1 << b["loop_closed"]
+    if a.homed:
+        v |= 1 << b["homed"]
+    for inp in card.inputs:
+        if inp["axis"] == a.name and input_active(a, inp):
+            key = {"EO": "eo", "LSL": "lsh_left", "LSR": "lsh_right"}.get(inp.get("function"))
+            if key:
+                v |= 1 << b[key]
+    p = card.mpos(a, t)
+    if p < a.q["sll"]:
+        v |= 1 << b["lss_left"]
+    if p > a.q["slr"]:
+        v |= 1 << b["lss_right"]
+    if a.closed and abs(a.poserr) > a.q["mpe"]:
+        v |= 1 << b["mpe"]
+    return v
+
+
+def get_qual(card, tk, ax: int, name: str):
+    a = card.check_axis(ax)
+    t = tk.time
+    if name in ("dp", "rp"):
+        u = card.mpos(a, t) - card.user_shift(a)
+        return u - a.poserr if name == "rp" else u
+    if name == "tp":
+        return a.target - card.user_shift(a)
+    if name in ("dv", "rv"):
+        return card.axis_velocity(a, t)
+    if name == "poserr":
+        return a.poserr
+    if name == "zerooffset":
+        return a.zerooffset
+    if name == "axst":
+        return axst(card, a, t)
+    if name in ("digi", "digo", "ifs"):
+        return getattr(a, name)
+    if name in ("kp", "ki", "kd", "kpl", "kfca", "kfcv"):
+        return a.staged[name]
+    if name == "lsm":  # the running chain's unfinished segments still hold their entries
+        return (card.spooler.capacity - card.spooler.used(ax, t)) * 64
+    if name == "mcis":
+        return sum(1 for e in a.spool if e[0] == "move") + card.spooler.chain_pending(ax, t)
+    return a.q[name]
+
+
+def set_qual(card, tk, ax: int, name: str, value) -> None:
+    a = card.check_axis(ax)
+    if isinstance(value, float) and not math.isfinite(value):
+        # NaN or inf (a math function's "no valid return value") as a position, velocity or gain
+        fault(32768, f"{a.name}.{name} := {value}: not a valid parameter value")
+    if name in ("digi", "ifs"):
+        setattr(a, name, 0 if name == "ifs" else a.digi)  # writing clears the latched flags (L1444)
+        return
+    if name == "digo":
+        a.digo = value & 0xFFFFFFFF
+        return
+    if name == "dp":
+        shift = card.user_shift(a)
+        card.retire_axis(a, tk.time)
+        a.m = a.target = value + shift
+        return
+    if name in ("kp", "ki", "kd", "kpl", "kfca", "kfcv"):
+        a.staged[name] = value
+        return
+    a.q[name] = value
+
+
+def get_bit(card, tk, ax: int, squal: str, bit: int) -> bool:
+    word = {"digib": "digi", "digob": "digo", "ifsb": "ifs", "axstb": "axst"}[squal]
+    return bool(get_qual(card, tk, ax, word) >> (bit - 1) & 1)
+
+
+def set_bit(card, ax: int, squal: str, bit: int, value: bool) -> None:
+    a = card.check_axis(ax)
+    mask = 1 << (bit - 1)
+    a.digo = (a.digo | mask) if value else (a.digo & ~mask)

@@ -1,0 +1,201 @@
+"""The scheduler of the card's 4 CNC tasks on one deterministic 64 us clock (digest §10.1).
+
+The task with the smallest local time runs until it waits or passes the others by a slice; timed actions
+(scenario events, SSF entries, homing latches, recording samples) are applied in time order.
+"""
+
+from __future__ import annotations
+
+import heapq
+import math
+
+from ...diagnostics import Frame, RuntimeFault, Span
+from ...runtime.locate import generated_frames
+from .task import ENDED, ERROR, RUNNING, Task, TaskEnd
+
+
+class Scheduler:
+    def __init__(self, card, cfg: dict, counter):
+        self.counter = counter  # the run's StepCounter: the step limit and the statements counted before
+        self.q = int(cfg["statements_per_tick"])
+        self.servo = float(cfg["servo_ticks"])
+        self.slice = float(cfg["task_slice_ticks"])
+        self.clock0 = int(cfg["clock_start"]) & 0xFFFFFFFF
+        self.tasks = [Task(card, self, n) for n in range(4)]
+        self.steps = 0
+        self.acts = 0  # counts the moments a task may have changed the card (see quiet_until)
+        self.timed_done = 0  # timed actions and scenario events carried out so far
+        self.step_limit = counter.limit - counter.steps
+        self.timed: list = []  # heap of (tick, seq, fn)
+        self._seq = 0
+        self.fault: RuntimeFault | None = None  # the first run-time error of a task (reported at the end)
+        self.solo = None  # the only running task, when there is just one
+
+    # -- timed actions -----------------------------------------------------------------------------
+    def add_timed(self, tick: float, fn) -> None:
+        self._seq += 1
+        heapq.heappush(self.timed, (tick, self._seq, fn))
+        for tk in self.tasks:  # the running task must come back to the scheduler in time for it
+            if tk.state == RUNNING and tk.check_at > tick:
+                tk.check_at = tick
+                tk.set_budget()
+
+    def next_timed(self) -> float:
+        return self.timed[0][0] if self.timed else math.inf
+
+    def apply_timed(self, upto: float) -> None:
+        while self.timed and self.timed[0][0] <= upto:
+            _, _, fn = heapq.heappop(self.timed)
+            fn()
+            self.timed_done += 1
+
+    # -- waiting tasks ----------------------------------------------------------------------------------
+    def wake_time(self, tk, until: float) -> float:
+        """When a task waiting for ``until`` looks again: at ``until`` if it runs alone, else every servo
+        cycle; ``until`` = inf is motion held by TROVR = 0, which only another task, an event or a timed
+        action can release (a stall with none of them is RUN005)."""
+        if until == math.inf:
+            self._check_stall(tk)
+            step = tk.time + self.servo
+            if not tk.others_running():
+                step = max(step, min(self.next_timed(), tk.time + 1000.0 * self.servo))
+            return step
+        if not tk.others_running():
+            return until
+        # looking every servo cycle, the task could first see a change at the first of its cycles at or
+        # after the moment another task or a timed action can act: it looks then, not in every cycle before
+        quiet = self.quiet_until(tk)
+        if quiet == math.inf:
+            return until
+        return min(until, tk.time + self.servo * max(1, math.ceil((quiet - tk.time) / self.servo)))
+
+    def quiet_until(self, tk) -> float:
+        """The earliest moment something outside ``tk`` can change the card: another running task acts no
+        earlier than its own time (the scheduler runs the earliest task first), a sleeping one when its wait
+        ends (as it worked that out, if no task has acted since), a timed action or scenario event at its
+        time. Until then only ``tk``'s own motion goes on."""
+        t = self.next_timed()
+        acts, done = self.acts, self.timed_done
+        for o in self.tasks:
+            if o is not tk and o.state == RUNNING:
+                if o.waits_for is None or o.waits_mark != acts or (o.polls and o.polled != done):
+                    at = o.time  # it may act when it looks next: a handler may start after a timed action
+                else:
+                    at = o.waits_for
+                if at < t:
+                    t = at
+        return t
+
+    def _check_stall(self, tk) -> None:
+        """Run-time error RUN005 when every running task waits on held motion and nothing ran since
+        they last looked, with no timed action ahead: no UTROVR can come any more (the card would hang)."""
+        quiet = tk.held == self.steps
+        tk.held = self.steps
+        if not quiet or self.next_timed() < math.inf:
+            return
+        if all(t.held == self.steps for t in self.tasks if t.state == RUNNING):
+            raise RuntimeFault("RUN005", "waiting for ever: the axes are held by TROVR = 0 and no task "
+                                         "can raise the override any more")
+
+
+    # -- the scheduler loop ----------------------------------------------------------------------------
+    def run(self) -> None:
+        """Run the tasks until none is running. A run-time error halts only its own task (§8, L2259):
+        the others go on, and the first error becomes the run's error when they are done."""
+        try:
+            self._run()
+        except RuntimeFault as e:
+            if e.code == "RUN001" and self.fault is not None:
+                raise self.fault from None  # the others ran away after the error: the error is the news
+            raise
+        if self.fault is not None:
+            raise self.fault
+
+    def _run(self) -> None:
+        tasks = self.tasks
+        while True:
+            running = [t for t in tasks if t.state == RUNNING]
+            if not running:
+                return
+            tk = min(running, key=lambda t: (t.time, t.number))
+            self.solo = tk if len(running) == 1 else None
+            self.apply_timed(tk.time)
+            if tk.state != RUNNING:
+                continue  # a timed action (RS by ForbidTargetVel) halted it
+            horizon = math.inf
+            for o in running:
+                if o is not tk:
+                    horizon = min(horizon, o.time + self.slice)
+            horizon = min(horizon, self.next_timed())
+            if tk.enabled:
+                horizon = min(horizon, tk.time)
+            tk.check_at = horizon
+            tk.set_budget()
+            if tk.waits_for is None:
+                self.acts += 1  # a task that is not sleeping may change anything
+            try:
+                next(tk.gen)
+            except StopIteration:
+                tk.state = ENDED
+                tk.enabled.clear()
+            except BaseException as e:  # noqa: B036 - every way a task stops is handled or re-raised
+                self.capture_locals(tk, e.__traceback__)
+                if isinstance(e, TaskEnd):
+                    tk.enabled.clear()
+                    if e.restart:
+                        tk.start(tk.time)
+                    else:
+                        tk.state = ENDED
+                    continue
+                if isinstance(e, RuntimeFault) and e.code == "RUN001":
+                    raise
+                if isinstance(e, RecursionError):
+                    fault8 = RuntimeFault("8", "stack overflow: calls nested too deep")
+                    fault8.__traceback__ = e.__traceback__
+                    e = fault8
+                if isinstance(e, RuntimeFault):
+                    tk.state = ERROR
+                    tk.enabled.clear()
+                    located = self.locate(tk, e)
+                    if self.fault is None:
+                        self.fault = located
+                    continue
+                raise
+
+    def capture_locals(self, tk, tb) -> None:
+        """Keep the main block's locals (its variables) when the task stops by an exception."""
+        if tk.unit:
+            for g in generated_frames(tb, {tk.unit.pyname: tk.unit.src}):
+                if g.frame.f_code.co_name == "_main":
+                    tk.main_locals = dict(g.frame.f_locals)
+
+    def locate(self, tk, e: RuntimeFault) -> RuntimeFault:
+        if e.span is not None and getattr(e, "number", None) is None:
+            return e
+        unit = tk.unit
+        frames = generated_frames(e.__traceback__, {unit.pyname: unit.src})
+        stack = []
+        for g in frames:
+            name = g.frame.f_code.co_name
+            stack.append(Frame("main program" if name == "_main" else name[2:], Span(*unit.locs[g.line])))
+        span = stack[-1].span if stack else None
+        if e.code == "8" and len(stack) >= 2:
+            span = stack[-2].span  # the call that did not fit, not the routine's header
+            stack = stack[:-1]
+        if len(stack) > 20:
+            stack = stack[:5] + [Frame(f"... {len(stack) - 20} more calls ...", None)] + stack[-15:]
+        # statements counted but not yet handed to the task when the fault struck
+        for g in frames:
+            self.steps += int(g.frame.f_locals.get("_n", 0) or 0)
+        tk.error |= int(e.code) if e.code.isdigit() else 0
+        tk.error_line = span.line if span else 0
+        msg = e.message
+        if len(self.tasks) and tk.number != 0:
+            msg = f"{msg} (task {tk.number})"
+        return RuntimeFault(e.code, msg, span, stack)
+
+    def runaway(self):
+        self.counter.steps += self.steps
+        self.steps = 0
+        raise RuntimeFault("RUN001", f"step limit of {self.counter.limit:,} statements reached "
+                                     "(runaway program? raise it with --max-steps)")
