@@ -14,6 +14,7 @@ from collections import deque
 
 from ...diagnostics import Frame, RuntimeFault, Span, UsageError
 from ...nc.block import Block
+from ...nc.canon import CanonSink, Src
 from ...nc.kernel import INCH
 from ...runtime.codegen import program_lines
 from .ncdata import MIB_TOP, Cl800Error, NcData, int_to_pattern, nc8, pattern_to_int
@@ -69,6 +70,16 @@ NAMESPACE_GLOBALS = {
 }
 
 
+class PlcAnswers(CanonSink):
+    """The PLC's answer to an M function it is handed (canon ``aux``), after the sinks have recorded it."""
+
+    def __init__(self, answer):
+        self.answer = answer
+
+    def aux(self, code: str, src: Src) -> None:
+        self.answer(code)
+
+
 class Channel(SysMem, SpindleReads):
     """One NC channel running a main program and its sub-programs."""
 
@@ -117,24 +128,20 @@ class Channel(SysMem, SpindleReads):
         self.gearbox = Gearbox(self.kernel, data.gear, data.gears)
         # G96 takes the radius from X; axis 1 may be programmed as a diameter (as for PREP CYC)
         self.kernel.css_diameter = self.kernel.css_axis == 0 and bool(data.areas["nc_md"].get("diameter_axis1", 0.0))
-        canon = session.canon
-        plain_aux = canon.aux
-
-        def aux(code, src):
-            """M functions the PLC answers: gear stages (M40-M45), R parameters it loads (m_functions),
-            timers and counters wired to them."""
-            plain_aux(code, src)
-            self.advance_scenario()  # what the PLC did before this block
-            self.plc_clock.m_function(code, self.session.machine.clock.now)
-            if code in GEAR_M:
-                self.gearbox.select(code)
-            if code in self.m_functions:
-                self.m_function(code)
-
-        canon.aux = aux
+        session.canon.add(PlcAnswers(self.answer_m))
         if data.inch_basic_system():  # G70 is the power-on state (MDNBI(5002,4), L2324-2326)
             self.kernel.scale = INCH
         self.apply_offsets()
+
+    def answer_m(self, code: str) -> None:
+        """M functions the PLC answers: gear stages (M40-M45), R parameters it loads (m_functions),
+        timers and counters wired to them."""
+        self.advance_scenario()  # what the PLC did before this block
+        self.plc_clock.m_function(code, self.session.machine.clock.now)
+        if code in GEAR_M:
+            self.gearbox.select(code)
+        if code in self.m_functions:
+            self.m_function(code)
 
     def _strict_power_on(self, source: str) -> None:
         """strict_nc: R parameters from the machine file and the store keep 8 significant digits too."""
@@ -154,7 +161,7 @@ class Channel(SysMem, SpindleReads):
         k = self.kernel
         shaped = self.angle_used or self.rotation_active()
         self.execute_now = self.execute_shaped if shaped else k.execute
-        self.linear = self.linear_shaped if shaped else k._linear
+        self.linear = self.linear_shaped if shaped else k.linear
         self.execute = self.decode_into_buffer if self.decode_ahead > 0 else self.execute_now
 
     def execute_shaped(self, block: Block) -> None:
@@ -163,7 +170,7 @@ class Channel(SysMem, SpindleReads):
 
     def linear_shaped(self, k, motion: int, words: dict, src) -> None:
         """The generated G0/G1 fast path while a rotation is selected."""
-        k._linear(k, motion, shape_block(self, Block((), (), words, None, None, src), None).words, src)
+        k.linear(k, motion, shape_block(self, Block((), (), words, None, None, src), None).words, src)
 
     def execute_angle(self, block: Block) -> None:
         """A block with the programmed angle (PANG or the angle address word)."""
