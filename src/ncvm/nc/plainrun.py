@@ -21,12 +21,12 @@ from __future__ import annotations
 
 import math
 from itertools import compress, groupby, repeat
-from operator import attrgetter, is_not, itemgetter
+from operator import attrgetter, is_not
 
 import numpy as np
 
 from . import arcs
-from .block import PLAIN_WORDS, ROW_LINE, ROW_SRC, Block, PlainRun, block_row
+from .block import PLAIN_WORDS, ROW_WORD, Block, PlainRun, block_row, row_g, row_line, row_src
 from .canon import BatchArcs, MoveBatch
 from .kernel import PLANES
 
@@ -232,15 +232,15 @@ def _extent(sa, sb, ca, cb, r, a0, angle) -> np.ndarray:
                             np.where(full, cb - r, lo_b), np.where(full, cb + r, hi_b)))
 
 
-_SRC, _FILE = itemgetter(ROW_SRC), attrgetter("file")
-_G_COLUMN, _LINE_COLUMN = itemgetter(0), itemgetter(ROW_LINE)
-_WORD_COLUMN = {a: itemgetter(k) for k, a in enumerate(PLAIN_WORDS, 1)}
+_SRC, _FILE = row_src, attrgetter("file")
+_G_COLUMN, _LINE_COLUMN = row_g, row_line
+_WORD_COLUMN = {a: ROW_WORD[a] for a in PLAIN_WORDS}
 
 
 def plain_segments(items: list, addresses: str | set = PLAIN_WORDS) -> list:
     """A motion queue's items as segments: :class:`PlainRun` stretches and single blocks.
 
-    Plain rows (tuples, see :func:`~ncvm.nc.block.row_block`) are plain by
+    Plain rows (tuples laid out as :class:`~ncvm.nc.block.PlainRow`) are plain by
     construction; a :class:`Block` itself (a front end's other subclasses carry
     more than words) is plain when :func:`block_row` can hold it. A stretch of
     plain items from one file becomes a run; other blocks stay as they are.

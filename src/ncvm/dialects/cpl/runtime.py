@@ -24,7 +24,7 @@ from collections import deque
 from pathlib import Path
 
 from ...diagnostics import Frame, RuntimeFault, Span
-from ...nc.block import ROW_LINE, Block, DinSyntaxError, as_block, parse_din_line
+from ...nc.block import Block, DinSyntaxError, as_block, parse_din_line, plain_row
 from ...nc.canon import CanonSink, Src
 from ...nc.midmove import MotionRecorder, position_at
 from ...nc.plainrun import execute_segments, plain_segments
@@ -163,7 +163,7 @@ class CplRuntime:
             if c[0] == "src":
                 out.append(Src(path, c[1]))
             elif c[0] == "plain row":
-                out.append((*c[1], Src(path, c[1][ROW_LINE])))
+                out.append(plain_row(c[1], path))
             else:
                 _, g, m, words, n, msg, line = c
                 out.append(Block(g, m, dict(words), n, msg, Src(path, line)))
