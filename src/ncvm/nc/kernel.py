@@ -511,8 +511,7 @@ class NcKernel:
         turns = max(0, int(words.get("P", 1)) - 1)
         spec = ArcSpec(a, b, (ca, cb), cw, radius, turns)
         angle = arcs.sweep(sa, sb, ea, eb, ca, cb, cw, turns)
-        helix = math.sqrt(sum((e - s) ** 2 for i, (s, e) in enumerate(zip(start, end)) if i != a and i != b))
-        length = arcs.arc_length(radius, angle, helix)
+        length = arcs.arc_length(radius, angle, arcs.helix_travel(start, end, a, b))
         t = trapezoid_time(length, *arc_limits(self.n_axes, a, b, length, self.feed / 60.0, self.dyn.max_feed,
                                                self.dyn.accel))
         self.machine.clock.advance(t)

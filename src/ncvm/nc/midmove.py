@@ -66,7 +66,7 @@ def position_at(moves: list, dyn, t: float, before: tuple) -> tuple:
 def _profile(kind: int, start, end, spec, feed: float, dyn) -> tuple[float, float, float]:
     """Path length, speed and acceleration of a move, as the kernel times it."""
     if kind == ARC:
-        length = arcs.arc_length(spec.radius, _sweep(start, end, spec), _helix(start, end, spec))
+        length = arcs.arc_length(spec.radius, _sweep(start, end, spec), arcs.helix_travel(start, end, spec.a, spec.b))
         return (length, *arc_limits(len(start), spec.a, spec.b, length, feed / 60.0, dyn.max_feed, dyn.accel))
     deltas = tuple(map(sub, end, start))
     length = math.sqrt(sum(d * d for d in deltas))
@@ -77,10 +77,6 @@ def _profile(kind: int, start, end, spec, feed: float, dyn) -> tuple[float, floa
 def _sweep(start, end, spec) -> float:
     ca, cb = spec.center
     return arcs.sweep(start[spec.a], start[spec.b], end[spec.a], end[spec.b], ca, cb, spec.cw, spec.turns)
-
-
-def _helix(start, end, spec) -> float:
-    return math.sqrt(sum((e - s) ** 2 for i, (s, e) in enumerate(zip(start, end)) if i != spec.a and i != spec.b))
 
 
 def _point(kind: int, start, end, spec, f: float) -> tuple:
