@@ -166,9 +166,15 @@ class NcKernel:
         self._set_offsets_keep_machine()
         self.canon.tool_offset(length, src)
 
+    def shown_position(self) -> list[float]:
+        """The programmed position (mm) as the control shows it: as programmed, or with the transform applied
+        when the transform says the control shows it so (``transform.shown``, SINUMERIK's rotation)."""
+        t = self.transform
+        return self.prog if t is None or not getattr(t, "shown", False) else t.forward(self.prog)
+
     def workpiece_position(self) -> dict[str, float]:
-        """Programmed position per axis in the current unit, as a program sees it."""
-        return {n: p / self.scale for n, p in zip(self.axis_names, self.prog)}
+        """Programmed position per axis in the current unit, as a program sees it (:meth:`shown_position`)."""
+        return {n: p / self.scale for n, p in zip(self.axis_names, self.shown_position())}
 
     # -- faults ----------------------------------------------------------
     def fault(self, code: str, message: str, src: Src | None):

@@ -100,13 +100,15 @@ class Affine:
 
 class AffineTransform:
     """One :class:`Affine` as the kernel's transformation object (see :meth:`NcKernel.set_transform`), its
-    inverse computed once."""
+    inverse computed once. ``shown``: the control shows positions with the transform applied (SINUMERIK's
+    coordinate rotation), not as programmed (CPL's G37/G38/G138)."""
 
-    __slots__ = ("map", "_inv")
+    __slots__ = ("map", "_inv", "shown")
 
-    def __init__(self, affine: Affine):
+    def __init__(self, affine: Affine, shown: bool = False):
         self.map = affine
         self._inv = affine.inverse()  # SingularTransform when there is none
+        self.shown = shown
 
     def forward(self, vec) -> list[float]:
         return self.map.apply(vec)

@@ -19,7 +19,7 @@ from ...nc.kernel import INCH
 from ...runtime.codegen import program_lines
 from .ncdata import MIB_TOP, Cl800Error, NcData, int_to_pattern, nc8, pattern_to_int
 from .plc import PlcClock
-from .rotation import angle_address, shape_block
+from .rotation import angle_address, rotate_for, shape_block
 from .spindle import GEAR_M, Gearbox, SpindleReads
 from .sysmem import SysMem
 
@@ -117,6 +117,8 @@ class Channel(SysMem, SpindleReads):
         self.tool_d = 0
         SysMem.__init__(self)
         self.angle_used = False  # a block carried the angle address (PANG, @447)
+        #: (first plane axis, second plane axis, degrees) of the rotation set as the kernel's transform, or None
+        self.rotation_key: tuple | None = None
         self.route()
         self._scenario = list(session.machine.scenario)
         self.plc_clock = PlcClock(f"{session.machine.source}: [sin800]", data.plc)
@@ -160,17 +162,22 @@ class Channel(SysMem, SpindleReads):
         ``linear`` after rotation writes and calls."""
         k = self.kernel
         shaped = self.angle_used or self.rotation_active()
+        if not shaped and self.rotation_key is not None:  # every angle is 0 again
+            k.set_transform(None)
+            self.rotation_key = None
         self.execute_now = self.execute_shaped if shaped else k.execute
         self.linear = self.linear_shaped if shaped else k.linear
         self.execute = self.decode_into_buffer if self.decode_ahead > 0 else self.execute_now
 
     def execute_shaped(self, block: Block) -> None:
+        rotate_for(self, block)
         key = angle_address(self) if self.angle_used else None
-        self.kernel.execute(shape_block(self, block, key))
+        self.kernel.execute(shape_block(self, block, key, turn=False))
 
     def linear_shaped(self, k, motion: int, words: dict, src) -> None:
-        """The generated G0/G1 fast path while a rotation is selected."""
-        k.linear(k, motion, shape_block(self, Block((), (), words, None, None, src), None).words, src)
+        """The generated G0/G1 fast path while a rotation is selected: the kernel's transformed path."""
+        rotate_for(self, Block((), (), words, None, None, src))
+        k.linear(k, motion, words, src)
 
     def execute_angle(self, block: Block) -> None:
         """A block with the programmed angle (PANG or the angle address word)."""
