@@ -89,21 +89,17 @@ def shape_block(channel, block: Block, angle_key: str | None, turn: bool = True)
     words = block.words
     k = channel.kernel
     h, v, absolute, theta = block_frame(channel, block)
-    if not turn:
-        if angle_key not in words:
-            return block
-        theta_turn = 0.0
-    elif theta == 0.0 and angle_key not in words:
+    turned = theta if turn else 0.0
+    if turned == 0.0 and angle_key not in words:
         return block
-    else:
-        theta_turn = theta
     words = dict(words)
     if h not in k.axis_of or v not in k.axis_of:
         raise Cl800Error(f"the plane needs the axes {h} and {v}")
     ch, cv = program_point(channel, h, v, theta)
     if angle_key in words:
         _resolve_angle(words, words.pop(angle_key), h, v, absolute, ch, cv)
-    theta = theta_turn
+    if not turn:
+        return Block(block.g, block.m, words, block.n, block.msg, block.src)
     if theta != 0.0 and (h in words or v in words):
         if absolute:
             words[h], words[v] = _turn(words.get(h, ch), words.get(v, cv), theta)
