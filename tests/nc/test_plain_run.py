@@ -229,3 +229,14 @@ def test_mixed_programs_columns_and_blocks_agree(tmp_path):
         (plain, _), (stepped, _) = _both(tmp_path / str(k), _mixed_program(rnd))
         for key in ("status", "error", "position", "motion", "cycle_time_s", "steps"):
             _same(plain[key], stepped[key])
+
+
+def test_a_plain_row_names_its_fields_and_round_trips_a_compiled_block():
+    from ncvm.nc.block import PLAIN_WORDS, PlainRow, plain_row, row_block
+    from ncvm.nc.canon import Src
+
+    assert PlainRow._fields[1:8] == tuple(PLAIN_WORDS)
+    row = PlainRow._make(plain_row((1, 2.0, math.nan, math.nan, math.nan, math.nan, math.nan, 100.0, 7, 30), "p.cpl"))
+    assert (row.g, row.X, row.F, row.line, row.n, row.src) == (1, 2.0, 100.0, 7, 30, Src("p.cpl", 7))
+    blk = row_block(row)
+    assert (blk.g, blk.words, blk.n, blk.src) == ((1,), {"X": 2.0, "F": 100.0}, 30, Src("p.cpl", 7))

@@ -1,8 +1,15 @@
-"""Arc geometry: centres from I/J/K or R, sweep angles, lengths, exact extents, sample points."""
+"""Arc geometry: centres from I/J/K or R, sweep angles, lengths, exact extents, sample points.
+
+Sweep, length and extent are here in two forms side by side: scalar for the
+kernel's block-by-block path and column-wise (suffix ``_columns``, numpy) for
+:mod:`ncvm.nc.plainrun`, giving the same values (``tests/nc/test_motion_formulas.py``).
+"""
 
 from __future__ import annotations
 
 import math
+
+import numpy as np
 
 TWO_PI = 2.0 * math.pi
 #: a full circle is programmed by an end point equal to the start point (within this, mm)
@@ -63,6 +70,19 @@ def sweep(sa: float, sb: float, ea: float, eb: float, ca: float, cb: float, cw: 
     return d + TWO_PI * turns
 
 
+def sweep_columns(sa, sb, ea, eb, ca, cb, cw) -> tuple[np.ndarray, np.ndarray]:
+    """:func:`sweep` (no extra turns), column-wise; returns the sweeps and the start angles."""
+    a0 = np.arctan2(sb - cb, sa - ca)
+    d = np.arctan2(eb - cb, ea - ca) - a0
+    for _ in range(3):
+        d = np.where(cw & (d >= -1e-12), d - TWO_PI, d)
+        d = np.where(~cw & (d <= 1e-12), d + TWO_PI, d)
+    d = np.where(cw & (d < -TWO_PI), d + TWO_PI, d)
+    d = np.where(~cw & (d > TWO_PI), d - TWO_PI, d)
+    closed = np.hypot(ea - sa, eb - sb) < SAME_POINT
+    return np.where(closed, np.where(cw, -TWO_PI, TWO_PI), d), a0
+
+
 def check_radii(sa, sb, ea, eb, ca, cb) -> float:
     """Start radius; raises :class:`ArcError` when the end lies on another radius."""
     r0 = math.hypot(sa - ca, sb - cb)
@@ -80,6 +100,20 @@ def arc_length(radius: float, angle: float, helix: float = 0.0) -> float:
     """Length of an arc (or helix with linear travel ``helix``) of ``angle`` radians."""
     planar = abs(angle) * radius
     return math.hypot(planar, helix) if helix else planar
+
+
+def helix_travel(start, end, a: int, b: int) -> float:
+    """The straight travel of the axes off the arc's plane (``a``, ``b``): a helix's rise."""
+    return math.sqrt(sum((e - s) ** 2 for i, (s, e) in enumerate(zip(start, end)) if i != a and i != b))
+
+
+def helix_travel_columns(start, end, a: int, b: int) -> np.ndarray:
+    """:func:`helix_travel`, column-wise over rows of ``start`` and ``end`` (moves, axes)."""
+    helix = np.zeros(len(start))
+    for i in range(start.shape[1]):
+        if i != a and i != b:
+            helix = helix + (end[:, i] - start[:, i]) ** 2
+    return np.sqrt(helix)
 
 
 def arc_plane_extent(sa, sb, ca, cb, radius, angle) -> tuple[float, float, float, float]:
@@ -105,6 +139,35 @@ def arc_plane_extent(sa, sb, ca, cb, radius, angle) -> tuple[float, float, float
             lo_b = cb - radius
         k += 1
     return lo_a, hi_a, lo_b, hi_b
+
+
+def arc_length_columns(radius, angle, helix) -> np.ndarray:
+    """:func:`arc_length`, column-wise."""
+    planar = np.abs(angle) * radius
+    return np.where(helix != 0.0, np.hypot(planar, helix), planar)
+
+
+def arc_plane_extent_columns(sa, sb, ca, cb, r, a0, angle) -> np.ndarray:
+    """:func:`arc_plane_extent`, column-wise, given the start angles ``a0``: rows of (lo_a, hi_a, lo_b, hi_b)."""
+    half_pi = math.pi / 2
+    a1 = a0 + angle
+    ea, eb = ca + r * np.cos(a1), cb + r * np.sin(a1)
+    lo_a, hi_a = np.minimum(sa, ea), np.maximum(sa, ea)
+    lo_b, hi_b = np.minimum(sb, eb), np.maximum(sb, eb)
+    lo = np.where(angle >= 0, a0, a1)
+    hi = np.where(angle >= 0, a1, a0)
+    k0 = np.ceil(lo / half_pi)
+    for j in range(5):
+        kq = k0 + j
+        inside = kq * half_pi <= hi
+        q = np.mod(kq, 4)
+        hi_a = np.where(inside & (q == 0), ca + r, hi_a)
+        hi_b = np.where(inside & (q == 1), cb + r, hi_b)
+        lo_a = np.where(inside & (q == 2), ca - r, lo_a)
+        lo_b = np.where(inside & (q == 3), cb - r, lo_b)
+    full = np.abs(angle) >= TWO_PI - 1e-12
+    return np.column_stack((np.where(full, ca - r, lo_a), np.where(full, ca + r, hi_a),
+                            np.where(full, cb - r, lo_b), np.where(full, cb + r, hi_b)))
 
 
 def arc_points(start, end, spec, max_seg_deg: float = 5.0):

@@ -12,6 +12,8 @@ from __future__ import annotations
 import math
 import re
 from dataclasses import dataclass
+from operator import itemgetter
+from typing import NamedTuple
 
 import numpy as np
 
@@ -38,17 +40,46 @@ class Block:
         return f"Block(g={self.g}, m={self.m}, words={self.words}, n={self.n})"
 
 
-#: a plain block as a motion queue holds it -- at most a motion G code (G0-G3), no M code or message,
-#: words only for PLAIN_WORDS -- as a tuple, far cheaper to build than a Block:
-#: (motion G code or -1, X, Y, Z, I, J, K, F with NaN for a missing word, line, N or None, Src).
-#: Queues run stretches of them column-wise (:func:`ncvm.nc.plainrun.plain_segments`).
-ROW_LINE, ROW_N, ROW_SRC = 8, 9, 10
+class PlainRow(NamedTuple):
+    """The layout of a plain row: a plain block as a motion queue holds it -- at most a motion G code (G0-G3),
+    no M code or message, words only for PLAIN_WORDS. Queues run stretches of rows column-wise
+    (:func:`ncvm.nc.plainrun.plain_segments`).
+
+    A queued row is a plain ``tuple`` in this field order, not an instance: CPL code queues one per executed
+    block, and a tuple display costs a fifth of building a NamedTuple there. Read its fields with the
+    getters below (``row_line(row)``), or ``PlainRow._make(row)`` where speed does not matter.
+    """
+
+    g: int  # the motion G code, -1 for none
+    X: float  # NaN for a missing word, as every word
+    Y: float
+    Z: float
+    I: float  # noqa: E741 (the address letter)
+    J: float
+    K: float
+    F: float
+    line: int  # the physical line of the block
+    n: int | None  # its block number
+    src: Src
+
+
+_FIELD = {name: i for i, name in enumerate(PlainRow._fields)}
+row_g, row_line, row_n, row_src = (itemgetter(_FIELD[name]) for name in ("g", "line", "n", "src"))
+#: address -> the getter of its word in a row
+ROW_WORD = {a: itemgetter(_FIELD[a]) for a in PlainRow._fields[1:8]}
+_ROW_WORDS = itemgetter(*(_FIELD[a] for a in PlainRow._fields[1:8]))
+
+
+def plain_row(values: tuple, file: str) -> tuple:
+    """The row of a compiled plain block: ``values`` are its fields up to ``n``, the block is in ``file``."""
+    return (*values, Src(file, row_line(values)))
 
 
 def row_block(row: tuple) -> Block:
     """A plain row as the Block the kernel executes."""
-    words = {a: v for a, v in zip(PLAIN_WORDS, row[1:8]) if v == v}
-    return Block((row[0],) if row[0] >= 0 else (), (), words, row[ROW_N], None, row[ROW_SRC])
+    words = {a: v for a, v in zip(PLAIN_WORDS, _ROW_WORDS(row)) if v == v}
+    g = row_g(row)
+    return Block((g,) if g >= 0 else (), (), words, row_n(row), None, row_src(row))
 
 
 def as_block(item):

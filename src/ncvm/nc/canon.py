@@ -156,17 +156,41 @@ _METHODS = ("begin", "rapid", "feed", "arc", "move_batch", "dwell", "tool_change
 
 
 class Canon:
-    """Fans each canon call out to the sinks that override it.
+    """Fans each canon call out to the sinks, then to the listeners, that override it.
 
-    Methods are bound once at construction, so a call costs one Python call per
-    interested sink and nothing for sinks that do not care.
+    Sinks are given at construction (what a run records and writes); listeners are added and removed
+    while it runs, by the controller parts that react to canon calls (a front end keeping the last
+    message, a PLC answering M functions, a recorder of the moves of a block). A listener is a
+    :class:`CanonSink` subclass that overrides the calls it cares about. Methods are bound when the
+    set changes, so a call costs one Python call per interested receiver and nothing for the others.
     """
 
     def __init__(self, sinks: list[CanonSink]):
         self.sinks = list(sinks)
-        for name in _METHODS:
-            bound = [getattr(s, name) for s in self.sinks if _overrides(s, name)]
+        self.listeners: list[CanonSink] = []
+        self._bind(_METHODS)
+
+    def add(self, listener: CanonSink) -> CanonSink:
+        """Call ``listener``'s overridden canon methods after the sinks' (and earlier listeners'); returns it."""
+        self.listeners.append(listener)
+        self._bind(_names(listener))
+        return listener
+
+    def remove(self, listener: CanonSink) -> None:
+        """Stop calling ``listener``."""
+        self.listeners.remove(listener)
+        self._bind(_names(listener))
+
+    def _bind(self, names) -> None:
+        receivers = self.sinks + self.listeners
+        for name in names:
+            bound = [getattr(s, name) for s in receivers if _overrides(s, name)]
             setattr(self, name, _fan_out(bound, name))
+
+
+def _names(sink: CanonSink) -> list[str]:
+    """The canon calls ``sink`` takes part in."""
+    return [name for name in _METHODS if _overrides(sink, name)]
 
 
 def _overrides(sink: CanonSink, name: str) -> bool:
@@ -175,25 +199,30 @@ def _overrides(sink: CanonSink, name: str) -> bool:
     return any(getattr(type(sink), n) is not getattr(CanonSink, n) for n in names)
 
 
-def _fan_out(bound, name: str = ""):
+def _two_maker(name: str):
+    """``make(f, g)`` -> a function calling f then g with canon call ``name``'s parameters spelled out:
+    no ``*args`` packing on the hot path (every move calls it). Compiled once per call name."""
+    params = ", ".join(p for p in inspect.signature(getattr(CanonSink, name)).parameters if p != "self")
+    namespace: dict = {}
+    exec(f"def make(f, g):\n    def two({params}):\n        f({params})\n        g({params})\n    return two\n",
+         namespace)
+    return namespace["make"]
+
+
+_TWO = {name: _two_maker(name) for name in _METHODS}
+
+
+def _nothing(*args) -> None:
+    return None
+
+
+def _fan_out(bound, name: str):
     if not bound:
-        return lambda *args: None
+        return _nothing
     if len(bound) == 1:
         return bound[0]
-    if len(bound) == 2 and name:
-        # spelled-out parameters: no *args packing on the hot path (every move calls this)
-        params = ", ".join(p for p in inspect.signature(getattr(CanonSink, name)).parameters if p != "self")
-        namespace = {"f": bound[0], "g": bound[1]}
-        exec(f"def two({params}):\n    f({params})\n    g({params})\n", namespace)
-        return namespace["two"]
     if len(bound) == 2:
-        f, g = bound
-
-        def two(*args):
-            f(*args)
-            g(*args)
-
-        return two
+        return _TWO[name](*bound)
 
     def many(*args):
         for f in bound:

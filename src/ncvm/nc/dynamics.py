@@ -4,12 +4,21 @@ Each move starts and ends at rest (no look-ahead blending, as a conservative
 control without it would run). The path speed is the programmed feed (or
 rapid rate), capped so no axis exceeds its own maximum; the path acceleration
 is capped the same way by each axis's acceleration.
+
+Every formula is here twice, side by side: the scalar form the kernel uses block
+by block, and the column form (suffix ``_columns``, numpy) that
+:mod:`ncvm.nc.plainrun` uses for a run of plain blocks, with the same float
+operations in the same order, so both give the same times
+(``tests/nc/test_motion_formulas.py``). The kernel's straight-move hot path,
+:mod:`ncvm.nc.fastmove`, is :func:`move_time` unrolled per machine.
 """
 
 from __future__ import annotations
 
 import math
 from operator import sub
+
+import numpy as np
 
 
 class AxisDynamics:
@@ -42,6 +51,15 @@ def trapezoid_time(length: float, v: float, a: float) -> float:
     return 2.0 * math.sqrt(length / a)
 
 
+def trapezoid_time_columns(length, v, a) -> np.ndarray:
+    """:func:`trapezoid_time`, column-wise."""
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        t = np.where((a <= 0.0) | (a == math.inf), length / v,
+                     np.where(length * a >= v * v, length / v + v / a, 2.0 * np.sqrt(length / a)))
+        t = np.where(v <= 0.0, math.inf, t)
+        return np.where(length > 0.0, t, 0.0)
+
+
 def move_time(deltas, length: float, speed: float, limits: tuple, accel: tuple) -> float:
     """Time for a straight move with per-axis ``deltas`` and path ``length`` (mm).
 
@@ -67,6 +85,28 @@ def path_limits(deltas, length: float, speed: float, limits: tuple, accel: tuple
     return v, a
 
 
+def straight_time_columns(dyn: AxisDynamics, start, end, rapid, feed) -> np.ndarray:
+    """:meth:`AxisDynamics.straight_time` column-wise: rows of ``start`` and ``end`` (moves, axes), ``rapid`` a
+    bool column, ``feed`` in mm/min (ignored where rapid)."""
+    d = end - start
+    sq = d[:, 0] * d[:, 0]
+    for i in range(1, d.shape[1]):
+        sq = sq + d[:, i] * d[:, i]
+    length = np.sqrt(sq)
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        inv = 1.0 / length
+        v = np.where(rapid, math.inf, feed / 60.0)
+        a = np.full(len(d), math.inf)
+        for i in range(d.shape[1]):
+            di = d[:, i]
+            nz = di != 0.0
+            share = np.abs(di) * inv
+            vmax = np.where(rapid, dyn.rapid[i], dyn.max_feed[i])
+            v = np.where(nz & (vmax < v * share), vmax / share, v)
+            a = np.where(nz & (dyn.accel[i] < a * share), dyn.accel[i] / share, a)
+        return trapezoid_time_columns(length, v, a)
+
+
 def arc_limits(n_axes: int, a: int, b: int, length: float, speed: float, limits: tuple,
                accel: tuple) -> tuple[float, float]:
     """Path speed and acceleration of an arc of ``length`` in the plane of axes ``a`` and ``b``: an arc moves
@@ -74,6 +114,20 @@ def arc_limits(n_axes: int, a: int, b: int, length: float, speed: float, limits:
     chord = [0.0] * n_axes
     chord[a] = chord[b] = length / math.sqrt(2.0)
     return path_limits(chord, length, speed, limits, accel)
+
+
+def arc_limits_columns(a: int, b: int, length, speed, limits: tuple, accel: tuple) -> tuple:
+    """:func:`arc_limits`, column-wise: ``length`` and ``speed`` (mm/s) are columns."""
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        chord = length / math.sqrt(2.0)
+        share = np.abs(chord) / length
+        v = speed
+        acc = np.full(len(length), math.inf)
+        nz = chord != 0.0
+        for i in sorted((a, b)):
+            v = np.where(nz & (limits[i] < v * share), limits[i] / share, v)
+            acc = np.where(nz & (accel[i] < acc * share), accel[i] / share, acc)
+    return v, acc
 
 
 def trapezoid_distance(length: float, v: float, a: float, t: float) -> float:

@@ -19,11 +19,12 @@ programmed position and the offsets: machine = transform(programmed) + offsets.
 
 from __future__ import annotations
 
+import copy
 import math
 from operator import add
 
 from ..diagnostics import RuntimeFault, Span
-from ..machine.model import Machine
+from ..machine.model import Machine, PlcImage, SimClock
 from . import arcs
 from .canon import ArcSpec, Canon, Src
 from .dynamics import AxisDynamics, arc_limits, trapezoid_time
@@ -49,7 +50,10 @@ class NcKernel:
         self.n_axes = len(names)
         self.dyn = AxisDynamics(machine.axes)
         self._fast_linear = make_linear(names, self.dyn)
-        self._linear = self._fast_linear
+        #: the straight move (G0/G1 without G53): ``linear(kernel, motion, words, src)``, a plain function of
+        #: the kernel (generated code calls it without a bound method). The generated fast path, or the
+        #: general one while a transform is set (see set_transform); a front end calls it, never replaces it
+        self.linear = self._fast_linear
         #: G number -> handler(kernel, g, words, src) -> True when the block's axis words are parameters
         self.g_handlers: dict = {}
         #: None, or an object with forward(vec), inverse(vec) and plane_similarity(a, b) (see set_transform)
@@ -90,6 +94,30 @@ class NcKernel:
         self.stopped_at: str | None = None
         canon.begin(names, self.machine_pos)
 
+    # -- copies and placement ----------------------------------------------
+    def fork(self) -> NcKernel:
+        """A copy that runs blocks ahead of this kernel (a shadow of the state after the prepared blocks, a
+        look-ahead): the same modal state, offsets and position, its own clock (at this one's time) and PLC
+        image, and no canon output. Running blocks on either leaves the other as it is; the machine's tables
+        (zero offsets, tools) stay shared."""
+        k = copy.copy(self)
+        m = copy.copy(self.machine)
+        m.clock = SimClock(m.clock.now, m.clock.start_epoch)
+        plc = m.plc
+        m.plc = PlcImage(dict(plc.inputs), dict(plc.outputs), dict(plc.flags), dict(plc.words))
+        k.machine = m
+        k.canon = Canon([])
+        k.prog, k.g92, k.offset_vec, k.additive = list(self.prog), list(self.g92), list(self.offset_vec), \
+            list(self.additive)
+        return k
+
+    def place(self, machine_pos, prog=None) -> None:
+        """Put the axes at ``machine_pos`` without a move and without a canon call (a control that moved
+        them itself, e.g. a card's axis commands). The programmed position follows from the active offsets
+        and transform, or is ``prog`` when the caller keeps its own zero point."""
+        self.machine_pos = tuple(machine_pos)
+        self.prog = list(prog) if prog is not None else self.program_position(self.machine_pos)
+
     # -- offsets ---------------------------------------------------------
     def _recompute_offsets(self) -> None:
         wo = self.machine.offset(self.work_offset) if self.work_offset else [0.0] * self.n_axes
@@ -117,7 +145,7 @@ class NcKernel:
         (which knows nothing of it). The tool stays put; the programmed position moves.
         """
         self.transform = transform
-        self._linear = self._fast_linear if transform is None else _transformed_linear
+        self.linear = self._fast_linear if transform is None else _transformed_linear
         self._set_offsets_keep_machine()
 
     def set_work_offset(self, name: str | None) -> None:
@@ -138,9 +166,15 @@ class NcKernel:
         self._set_offsets_keep_machine()
         self.canon.tool_offset(length, src)
 
+    def shown_position(self) -> list[float]:
+        """The programmed position (mm) as the control shows it: as programmed, or with the transform applied
+        when the transform says the control shows it so (``transform.shown``, SINUMERIK's rotation)."""
+        t = self.transform
+        return self.prog if t is None or not getattr(t, "shown", False) else t.forward(self.prog)
+
     def workpiece_position(self) -> dict[str, float]:
-        """Programmed position per axis in the current unit, as a program sees it."""
-        return {n: p / self.scale for n, p in zip(self.axis_names, self.prog)}
+        """Programmed position per axis in the current unit, as a program sees it (:meth:`shown_position`)."""
+        return {n: p / self.scale for n, p in zip(self.axis_names, self.shown_position())}
 
     # -- faults ----------------------------------------------------------
     def fault(self, code: str, message: str, src: Src | None):
@@ -237,7 +271,7 @@ class NcKernel:
         else:
             self.motion = motion
             if motion < 2 and not machine_coords:
-                self._linear(self, motion, words, src)  # the common case, without the _move call
+                self.linear(self, motion, words, src)  # the common case, without the _move call
             else:
                 self._move(motion, words, machine_coords, src)
         for mc in block.m:
@@ -414,7 +448,7 @@ class NcKernel:
 
     def _move(self, motion: int, words, machine_coords: bool, src: Src) -> None:
         if motion < 2 and not machine_coords:
-            self._linear(self, motion, words, src)
+            self.linear(self, motion, words, src)
             return
         self._general_move(motion, words, machine_coords, src)
 
@@ -483,8 +517,7 @@ class NcKernel:
         turns = max(0, int(words.get("P", 1)) - 1)
         spec = ArcSpec(a, b, (ca, cb), cw, radius, turns)
         angle = arcs.sweep(sa, sb, ea, eb, ca, cb, cw, turns)
-        helix = math.sqrt(sum((e - s) ** 2 for i, (s, e) in enumerate(zip(start, end)) if i != a and i != b))
-        length = arcs.arc_length(radius, angle, helix)
+        length = arcs.arc_length(radius, angle, arcs.helix_travel(start, end, a, b))
         t = trapezoid_time(length, *arc_limits(self.n_axes, a, b, length, self.feed / 60.0, self.dyn.max_feed,
                                                self.dyn.accel))
         self.machine.clock.advance(t)

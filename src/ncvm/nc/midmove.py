@@ -13,46 +13,38 @@ import math
 from operator import sub
 
 from . import arcs
+from .canon import CanonSink
 from .dynamics import arc_limits, path_limits, trapezoid_distance, trapezoid_time
 
 RAPID, FEED, ARC = 0, 1, 2
 
 
-class MotionRecorder:
-    """Records the motion canon calls of the blocks a kernel executes while it is installed on the canon.
+class MotionRecorder(CanonSink):
+    """Records the motion canon calls of the blocks a kernel executes while it listens on the canon.
 
-    Each entry is ``(kind, start, end, spec, feed)`` with the machine clock at the call, which the kernel makes
-    after it has advanced the clock by the move (or dwell) time: the time the motion ends.
+    Each entry is ``(time, kind, start, end, spec, feed)`` with the machine clock at the call, which the
+    kernel makes after it has advanced the clock by the move (or dwell) time: the time the motion ends.
     """
-
-    _NAMES = ("rapid", "feed", "arc")
 
     def __init__(self, canon, clock):
         self.canon, self.clock = canon, clock
         self.moves: list = []
-        self._saved = {name: getattr(canon, name) for name in self._NAMES}
 
     def __enter__(self) -> MotionRecorder:
-        canon, saved, moves, clock = self.canon, self._saved, self.moves, self.clock
-
-        def rapid(start, end, src):
-            moves.append((clock.now, RAPID, start, end, None, math.inf))
-            saved["rapid"](start, end, src)
-
-        def feed(start, end, f, src):
-            moves.append((clock.now, FEED, start, end, None, f))
-            saved["feed"](start, end, f, src)
-
-        def arc(start, end, spec, f, src):
-            moves.append((clock.now, ARC, start, end, spec, f))
-            saved["arc"](start, end, spec, f, src)
-
-        canon.rapid, canon.feed, canon.arc = rapid, feed, arc
+        self.canon.add(self)
         return self
 
     def __exit__(self, *exc) -> None:
-        for name, fn in self._saved.items():
-            setattr(self.canon, name, fn)
+        self.canon.remove(self)
+
+    def rapid(self, start, end, src) -> None:
+        self.moves.append((self.clock.now, RAPID, start, end, None, math.inf))
+
+    def feed(self, start, end, feed, src) -> None:
+        self.moves.append((self.clock.now, FEED, start, end, None, feed))
+
+    def arc(self, start, end, spec, feed, src) -> None:
+        self.moves.append((self.clock.now, ARC, start, end, spec, feed))
 
 
 def position_at(moves: list, dyn, t: float, before: tuple) -> tuple:
@@ -74,7 +66,7 @@ def position_at(moves: list, dyn, t: float, before: tuple) -> tuple:
 def _profile(kind: int, start, end, spec, feed: float, dyn) -> tuple[float, float, float]:
     """Path length, speed and acceleration of a move, as the kernel times it."""
     if kind == ARC:
-        length = arcs.arc_length(spec.radius, _sweep(start, end, spec), _helix(start, end, spec))
+        length = arcs.arc_length(spec.radius, _sweep(start, end, spec), arcs.helix_travel(start, end, spec.a, spec.b))
         return (length, *arc_limits(len(start), spec.a, spec.b, length, feed / 60.0, dyn.max_feed, dyn.accel))
     deltas = tuple(map(sub, end, start))
     length = math.sqrt(sum(d * d for d in deltas))
@@ -85,10 +77,6 @@ def _profile(kind: int, start, end, spec, feed: float, dyn) -> tuple[float, floa
 def _sweep(start, end, spec) -> float:
     ca, cb = spec.center
     return arcs.sweep(start[spec.a], start[spec.b], end[spec.a], end[spec.b], ca, cb, spec.cw, spec.turns)
-
-
-def _helix(start, end, spec) -> float:
-    return math.sqrt(sum((e - s) ** 2 for i, (s, e) in enumerate(zip(start, end)) if i != spec.a and i != spec.b))
 
 
 def _point(kind: int, start, end, spec, f: float) -> tuple:

@@ -21,18 +21,17 @@ from __future__ import annotations
 
 import math
 from itertools import compress, groupby, repeat
-from operator import attrgetter, is_not, itemgetter
+from operator import attrgetter, is_not
 
 import numpy as np
 
 from . import arcs
-from .block import PLAIN_WORDS, ROW_LINE, ROW_SRC, Block, PlainRun, block_row
+from .block import PLAIN_WORDS, ROW_WORD, Block, PlainRun, block_row, row_g, row_line, row_src
 from .canon import BatchArcs, MoveBatch
+from .dynamics import arc_limits_columns, straight_time_columns, trapezoid_time_columns
 from .kernel import PLANES
 
 RAPID, FEED, ARC = 0, 1, 2
-HALF_PI = math.pi / 2
-SQRT2 = math.sqrt(2.0)
 
 
 def _carry(present: np.ndarray, values: np.ndarray, initial: float) -> np.ndarray:
@@ -87,8 +86,8 @@ def execute_columns(k, run: PlainRun, lo: int, hi: int) -> int | None:
             return stop if before is None else before
         found, times[arc_pos] = done
     straight = np.flatnonzero(kind != ARC)
-    times[straight] = _straight_times(k, start[straight], end[straight], kind[straight] == RAPID,
-                                      move_feed[straight])
+    times[straight] = straight_time_columns(k.dyn, start[straight], end[straight], kind[straight] == RAPID,
+                                            move_feed[straight])
 
     clock = k.machine.clock
     clock.now = float(np.cumsum(np.concatenate(([clock.now], times)))[-1])  # in move order, as one by one
@@ -129,37 +128,6 @@ def _finish(k, motion, feed, prog, end_row, lo, hi, end) -> int | None:
     return None if end_row == hi - lo else lo + end_row
 
 
-def _straight_times(k, start, end, rapid, feed) -> np.ndarray:
-    """Move times of straight moves: the formula of :mod:`ncvm.nc.fastmove`, column-wise."""
-    dyn = k.dyn
-    d = end - start
-    sq = d[:, 0] * d[:, 0]
-    for i in range(1, d.shape[1]):
-        sq = sq + d[:, i] * d[:, i]
-    length = np.sqrt(sq)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        inv = 1.0 / length
-        v = np.where(rapid, math.inf, feed / 60.0)
-        a = np.full(len(d), math.inf)
-        for i in range(d.shape[1]):
-            di = d[:, i]
-            nz = di != 0.0
-            share = np.abs(di) * inv
-            vmax = np.where(rapid, dyn.rapid[i], dyn.max_feed[i])
-            v = np.where(nz & (vmax < v * share), vmax / share, v)
-            a = np.where(nz & (dyn.accel[i] < a * share), dyn.accel[i] / share, a)
-        return _trapezoid(length, v, a)
-
-
-def _trapezoid(length, v, a) -> np.ndarray:
-    """:func:`ncvm.nc.dynamics.trapezoid_time`, column-wise."""
-    with np.errstate(divide="ignore", invalid="ignore"):
-        t = np.where((a <= 0.0) | (a == math.inf), length / v,
-                     np.where(length * a >= v * v, length / v + v / a, 2.0 * np.sqrt(length / a)))
-        t = np.where(v <= 0.0, math.inf, t)
-        return np.where(length > 0.0, t, 0.0)
-
-
 def _arcs(k, arc_pos, start, end, centre_words, feed, cw, a: int, b: int) -> tuple[BatchArcs, np.ndarray] | int:
     """Centre (I/J/K words), radius check, sweep, length, extent and time of the arcs at ``arc_pos`` among
     the moves, or the index (among the arcs) of the first whose end lies on another radius."""
@@ -172,75 +140,24 @@ def _arcs(k, arc_pos, start, end, centre_words, feed, cw, a: int, b: int) -> tup
     bad = np.flatnonzero(((diff > arcs.RADIUS_ABS_TOL) & (diff > arcs.RADIUS_REL_TOL * r0)) | (r0 < arcs.SAME_POINT))
     if len(bad):
         return int(bad[0])
-    a0 = np.arctan2(sb - cb, sa - ca)
-    angle = _sweep(np.arctan2(eb - cb, ea - ca) - a0, cw, np.hypot(ea - sa, eb - sb) < arcs.SAME_POINT)
-    helix = np.zeros(len(arc_pos))
-    for i in range(k.n_axes):
-        if i != a and i != b:
-            helix = helix + (end[arc_pos, i] - start[arc_pos, i]) ** 2
-    helix = np.sqrt(helix)
-    planar = np.abs(angle) * r0
-    length = np.where(helix != 0.0, np.hypot(planar, helix), planar)
-    # an arc moves both plane axes at once: timed as a straight move of the same length (NcKernel._arc),
-    # the axes limiting it in axis order
-    dyn = k.dyn
-    with np.errstate(divide="ignore", invalid="ignore"):
-        chord = length / SQRT2
-        share = np.abs(chord) / length
-        v = feed / 60.0
-        acc = np.full(len(arc_pos), math.inf)
-        nz = chord != 0.0
-        for i in sorted((a, b)):
-            v = np.where(nz & (dyn.max_feed[i] < v * share), dyn.max_feed[i] / share, v)
-            acc = np.where(nz & (dyn.accel[i] < acc * share), dyn.accel[i] / share, acc)
+    angle, a0 = arcs.sweep_columns(sa, sb, ea, eb, ca, cb, cw)
+    length = arcs.arc_length_columns(r0, angle, arcs.helix_travel_columns(start[arc_pos], end[arc_pos], a, b))
+    # an arc moves both plane axes at once: timed as a straight move of the same length (NcKernel._arc)
+    v, acc = arc_limits_columns(a, b, length, feed / 60.0, k.dyn.max_feed, k.dyn.accel)
     arcs_found = BatchArcs(arc_pos, a, b, np.column_stack((ca, cb)), cw, r0, angle, length,
-                           _extent(sa, sb, ca, cb, r0, a0, angle))
-    return arcs_found, _trapezoid(length, v, acc)
+                           arcs.arc_plane_extent_columns(sa, sb, ca, cb, r0, a0, angle))
+    return arcs_found, trapezoid_time_columns(length, v, acc)
 
 
-def _sweep(d, cw, closed) -> np.ndarray:
-    """:func:`ncvm.nc.arcs.sweep` (no extra turns), column-wise."""
-    two_pi = arcs.TWO_PI
-    d = d.copy()
-    for _ in range(3):
-        d = np.where(cw & (d >= -1e-12), d - two_pi, d)
-        d = np.where(~cw & (d <= 1e-12), d + two_pi, d)
-    d = np.where(cw & (d < -two_pi), d + two_pi, d)
-    d = np.where(~cw & (d > two_pi), d - two_pi, d)
-    return np.where(closed, np.where(cw, -two_pi, two_pi), d)
-
-
-def _extent(sa, sb, ca, cb, r, a0, angle) -> np.ndarray:
-    """:func:`ncvm.nc.arcs.arc_plane_extent`, column-wise: rows of (lo_a, hi_a, lo_b, hi_b)."""
-    a1 = a0 + angle
-    ea, eb = ca + r * np.cos(a1), cb + r * np.sin(a1)
-    lo_a, hi_a = np.minimum(sa, ea), np.maximum(sa, ea)
-    lo_b, hi_b = np.minimum(sb, eb), np.maximum(sb, eb)
-    lo = np.where(angle >= 0, a0, a1)
-    hi = np.where(angle >= 0, a1, a0)
-    k0 = np.ceil(lo / HALF_PI)
-    for j in range(5):
-        kq = k0 + j
-        inside = kq * HALF_PI <= hi
-        q = np.mod(kq, 4)
-        hi_a = np.where(inside & (q == 0), ca + r, hi_a)
-        hi_b = np.where(inside & (q == 1), cb + r, hi_b)
-        lo_a = np.where(inside & (q == 2), ca - r, lo_a)
-        lo_b = np.where(inside & (q == 3), cb - r, lo_b)
-    full = np.abs(angle) >= arcs.TWO_PI - 1e-12
-    return np.column_stack((np.where(full, ca - r, lo_a), np.where(full, ca + r, hi_a),
-                            np.where(full, cb - r, lo_b), np.where(full, cb + r, hi_b)))
-
-
-_SRC, _FILE = itemgetter(ROW_SRC), attrgetter("file")
-_G_COLUMN, _LINE_COLUMN = itemgetter(0), itemgetter(ROW_LINE)
-_WORD_COLUMN = {a: itemgetter(k) for k, a in enumerate(PLAIN_WORDS, 1)}
+_SRC, _FILE = row_src, attrgetter("file")
+_G_COLUMN, _LINE_COLUMN = row_g, row_line
+_WORD_COLUMN = {a: ROW_WORD[a] for a in PLAIN_WORDS}
 
 
 def plain_segments(items: list, addresses: str | set = PLAIN_WORDS) -> list:
     """A motion queue's items as segments: :class:`PlainRun` stretches and single blocks.
 
-    Plain rows (tuples, see :func:`~ncvm.nc.block.row_block`) are plain by
+    Plain rows (tuples laid out as :class:`~ncvm.nc.block.PlainRow`) are plain by
     construction; a :class:`Block` itself (a front end's other subclasses carry
     more than words) is plain when :func:`block_row` can hold it. A stretch of
     plain items from one file becomes a run; other blocks stay as they are.

@@ -98,6 +98,28 @@ class Affine:
         return k1, c1[0] * c2[1] - c1[1] * c2[0] < 0.0
 
 
+class AffineTransform:
+    """One :class:`Affine` as the kernel's transformation object (see :meth:`NcKernel.set_transform`), its
+    inverse computed once. ``shown``: the control shows positions with the transform applied (SINUMERIK's
+    coordinate rotation), not as programmed (CPL's G37/G38/G138)."""
+
+    __slots__ = ("map", "_inv", "shown")
+
+    def __init__(self, affine: Affine, shown: bool = False):
+        self.map = affine
+        self._inv = affine.inverse()  # SingularTransform when there is none
+        self.shown = shown
+
+    def forward(self, vec) -> list[float]:
+        return self.map.apply(vec)
+
+    def inverse(self, vec) -> list[float]:
+        return self._inv.apply(vec)
+
+    def plane_similarity(self, a: int, b: int) -> tuple[float, bool] | None:
+        return self.map.plane_similarity(a, b)
+
+
 def _cos_sin(degrees: float) -> tuple[float, float]:
     """cos and sin of an angle in degrees, exact at multiples of 90 degrees (no 6e-17 residues)."""
     q, r = divmod(degrees, 90.0)

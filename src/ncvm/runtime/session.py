@@ -104,7 +104,7 @@ class Session:
         sinks = chosen.canon
         self.sinks = sinks
         self.canon = Canon(sinks)
-        self.canon.message = self._message_fanout(self.canon.message)
+        self.canon.add(OperatorMessages(self.say))
         self.kernel = NcKernel(machine, self.canon)
         self._store: Store | None = None
         #: the operator screen of dialects that have one (CPL dialogs); anything with ``save_png(path)``
@@ -126,13 +126,6 @@ class Session:
             self.output.append(line)
             if self.options.echo:
                 print(line, flush=True)
-
-    def _message_fanout(self, inner):
-        def message(text, src):
-            self.say(text)
-            inner(text, src)
-
-        return message
 
     # -- the run ---------------------------------------------------------
     def close(self) -> None:
@@ -156,6 +149,16 @@ def run_guarded(session: Session, runner) -> Diagnostic | None:
     except MemoryError:
         return out_of_memory(session.options.max_memory)
     return None
+
+
+class OperatorMessages(CanonSink):
+    """Shows the program's operator messages (canon ``message``) to the operator."""
+
+    def __init__(self, say):
+        self.say = say
+
+    def message(self, text: str, src) -> None:
+        self.say(text)
 
 
 class OperatorOutput:

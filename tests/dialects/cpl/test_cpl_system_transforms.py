@@ -217,7 +217,7 @@ def test_plain_straight_moves_leave_the_fast_path_while_a_transformation_is_acti
     assert result["status"] == "ok", result["error"]
     ends = [tuple(e[:2]) for e in session.recorder.arrays()["end"]]
     assert ends == [(1.0, 1.0), (6.0, 8.0), (10.0, 8.0), (7.0, 2.0)]
-    assert session.kernel._linear is session.kernel._fast_linear
+    assert session.kernel.linear is session.kernel._fast_linear
 
 
 # -- the rest of the control sees them ---------------------------------------------------------------

@@ -193,3 +193,37 @@ def test_int_sec_starts_at_the_current_point_of_the_program_frame(tmp_path):
                        "@711 R70 R54 R62 X100 Y50\n", G54_30)
     v = r["variables"]
     assert (v["R70"], v["R71"], v["R72"]) == pytest.approx((1.0, 50.0, 50.0))
+
+
+def test_the_rotation_is_the_kernels_transform_and_ends_with_the_angle(tmp_path):
+    """A selected rotation is an Affine rotation set as the kernel's transform (straight moves leave the
+    generated path); positions are shown turned; writing the angle back to 0 clears it."""
+    from ncvm.nc.transform import Affine
+
+    (tmp_path / "on").mkdir()
+    r, session = run_mpf(tmp_path / "on", "%MPF1\n@437 K0 K1 K1 K90\nG54 G90 G1 X10 Y0 F1000\n", ok=True,
+                         session=True)
+    k = session.kernel
+    assert k.transform.map.m == Affine.rotation(3, 0, 1, 90.0).m and k.linear is not k._fast_linear
+    assert k.prog == pytest.approx([10.0, 0.0, 0.0], abs=1e-9)  # as programmed ...
+    assert _xy(r) == pytest.approx((0.0, 10.0), abs=1e-9)  # ... shown turned
+    (tmp_path / "off").mkdir()
+    r, session = run_mpf(tmp_path / "off", "%MPF1\n@437 K0 K1 K1 K90\nG54 G90 G1 X10 Y0 F1000\n@437 K0 K1 K1 K0\n"
+                         "X20\n", ok=True, session=True)
+    assert session.kernel.transform is None and session.kernel.linear is session.kernel._fast_linear
+    assert _xy(r) == pytest.approx((20.0, 10.0), abs=1e-9)
+
+
+def test_a_plane_axis_missing_in_a_block_that_changes_the_zero_offset_stays_put(tmp_path):
+    """As without a rotation (the kernel's rule): the axis a block does not program keeps its machine position
+    through the zero offset change; under 90 degrees the program's Y is the machine's X (docs/decisions.md)."""
+    extra = "rotation = { settable = [90.0, 90.0, 0.0, 0.0] }\n"
+    machine_text = MACHINE_OFFSETS
+    r = run_mpf(tmp_path, "%MPF1\nG54 G90 G1 X10 Y3 F1000\nG55 X20\n", extra, machine_text=machine_text, ok=True)
+    # G54: (10, 3) turned = (-3, 10) at the machine; G55 (5, 7): the machine X stays -3, the program's X20
+    # is the machine's Y 20 + 7; shown relative to G55: (-8, 20)
+    assert _xy(r) == pytest.approx((-8.0, 20.0), abs=1e-9)
+
+
+MACHINE_OFFSETS = ('[[axis]]\nname = "X"\n[[axis]]\nname = "Y"\n[[axis]]\nname = "Z"\n'
+                   '[offsets]\nG54 = [0.0, 0.0, 0.0]\nG55 = [5.0, 7.0, 0.0]\n[sin800]\ncontrol = "880"\n')

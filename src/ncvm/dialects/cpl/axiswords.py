@@ -12,7 +12,7 @@ import re
 
 from ...diagnostics import Diagnostic, read_lines
 from ...nc.axiswords import is_dwell, is_missing_axis, names_axis
-from ...nc.block import ROW_LINE
+from ...nc.block import row_line
 from . import ast as A
 from .errors import CplError, diag
 
@@ -64,7 +64,7 @@ def refusing(rt, enqueue, refused: dict):
     axis: such a block is refused with 1938 once the blocks queued before it have run, as if it had been
     executed."""
     def checked(item):
-        hit = refused.get(item[ROW_LINE] if item.__class__ is tuple else item.src.line)
+        hit = refused.get(row_line(item) if item.__class__ is tuple else item.src.line)
         if hit is not None:
             refuse(rt, *hit)
         enqueue(item)

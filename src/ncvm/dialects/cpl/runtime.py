@@ -15,7 +15,6 @@ time all the same: ``executed_position`` interpolates the axes along that block'
 
 from __future__ import annotations
 
-import copy
 import functools
 import itertools
 import math
@@ -23,10 +22,9 @@ import re
 from pathlib import Path
 
 from ...diagnostics import Frame, RuntimeFault, Span
-from ...machine.model import PlcImage, SimClock
 from ...machine.scenario import EventQueue, InterfaceBit, of_type, refuse
-from ...nc.block import ROW_LINE, Block, DinSyntaxError, as_block, parse_din_line
-from ...nc.canon import Canon, Src
+from ...nc.block import Block, DinSyntaxError, as_block, parse_din_line, plain_row
+from ...nc.canon import CanonSink, Src
 from ...nc.midmove import MotionRecorder, position_at
 from ...nc.plainrun import execute_segments, plain_segments
 from ...runtime.buffer import BlockBuffer
@@ -70,6 +68,16 @@ class ProgramClock:
     @property
     def now(self) -> float:
         return self._rt.t_prep
+
+
+class KeptMessage(CanonSink):
+    """The controller keeps the last executed MSG text (MCODS 28)."""
+
+    def __init__(self, ctl):
+        self.ctl = ctl
+
+    def message(self, text: str, src: Src) -> None:
+        self.ctl.message = text
 
 
 class EndProgram(Exception):
@@ -130,20 +138,10 @@ class CplRuntime:
         #: the main program's local variables at a fault (generated code fills it in)
         self.fault_locals: dict = {}
         self.sys_procs = {name: row[0] for name, row in SYSTEM_PROCS.items()}
-        self._keep_messages(session.canon)
+        session.canon.add(KeptMessage(self.ctl))  # the shadow kernel has its own canon
         system_setup(self)
         self._probing = any(getattr(w, "address", None) == "G" and (w.value in MEASURING_G or w.expr is not None)
                             for u in linked.units.values() for st in u.prog.stmts for w in getattr(st, "words", ()))
-
-    def _keep_messages(self, canon) -> None:
-        """The controller keeps the last executed MSG text (MCODS 28); the shadow kernel has its own canon."""
-        shown = canon.message
-
-        def message(text, src):
-            self.ctl.message = text
-            shown(text, src)
-
-        canon.message = message
 
     # -- units ----------------------------------------------------------------------
     def unit(self, path: str):
@@ -174,7 +172,7 @@ class CplRuntime:
             if c[0] == "src":
                 out.append(Src(path, c[1]))
             elif c[0] == "plain row":
-                out.append((*c[1], Src(path, c[1][ROW_LINE])))
+                out.append(plain_row(c[1], path))
             else:
                 _, g, m, words, n, msg, line = c
                 out.append(Block(g, m, dict(words), n, msg, Src(path, line)))
@@ -444,14 +442,7 @@ class CplRuntime:
         block preparation), while MPOS reads the executed state. A scratch copy of the kernel runs the
         blocks still in the queue, with no canon output and its own clock and PLC image."""
         if self._shadow is None or self._shadow_at < self.executed:
-            k = self.kernel
-            shadow = copy.copy(k)
-            m = copy.copy(k.machine)
-            m.clock = SimClock(k.machine.clock.now, k.machine.clock.start_epoch)
-            m.plc = PlcImage(dict(m.plc.inputs), dict(m.plc.outputs), dict(m.plc.flags), dict(m.plc.words))
-            shadow.machine = m
-            shadow.canon = Canon([])
-            shadow.prog, shadow.g92, shadow.offset_vec = list(k.prog), list(k.g92), list(k.offset_vec)
+            shadow = self.kernel.fork()
             self._shadow, self._shadow_at = shadow, self.executed
         # the blocks prepared since, taken from the new end of the queue (skipping the older ones would cost
         # the length of the queue at every CPOS)

@@ -1,13 +1,16 @@
-"""Coordinate rotation and the angle address (PANG, @447): blocks shaped before they reach the kernel.
+"""Coordinate rotation and the angle address (PANG, @447), applied when a block executes.
 
 Both act in the active plane, in the program's units, when a block executes
 (rotation angles written by @437-@43a act at once even on blocks already
 decoded, manual L4325-4334). The rotation turns the programmed plane
 coordinates about the workpiece zero by the settable angle of the selected
 zero offset (G54-G57 = group 1-4) plus the programmable angles of G58 and G59,
-counter-clockwise from the plane's first axis; arc centres turn with them.
+counter-clockwise from the plane's first axis; arc centres turn with them. It is
+the kernel's coordinate transform (:func:`rotation_transform`, set before each
+block), shown applied: positions a program reads are in the turned frame.
 The angle address completes a straight line: with one plane axis programmed,
 the other follows from the start point and the angle (docs/decisions.md, sin800).
+MEAS M and INTA work on the block's words turned by hand (:func:`machine_frame`).
 """
 
 from __future__ import annotations
@@ -16,6 +19,7 @@ import math
 
 from ...nc.block import Block
 from ...nc.kernel import PLANES
+from ...nc.transform import Affine, AffineTransform
 from .ncdata import Cl800Error
 
 _CENTRE = {"X": "I", "Y": "J", "Z": "K"}
@@ -62,12 +66,31 @@ def _turn(a: float, b: float, deg: float) -> tuple[float, float]:
     return a * c - b * s, a * s + b * c
 
 
-def shape_block(channel, block: Block, angle_key: str | None) -> Block:
-    """The block as the kernel must see it: the angle word resolved, then the rotation applied."""
+def rotate_for(channel, block: Block) -> None:
+    """Set the kernel's transform to the coordinate rotation ``block`` executes under (none at 0 degrees)."""
+    k = channel.kernel
+    h, v, _absolute, theta = block_frame(channel, block)
+    key = (h, v, theta) if theta != 0.0 else None
+    if key != channel.rotation_key:
+        if key is not None and (h not in k.axis_of or v not in k.axis_of):
+            raise Cl800Error(f"the plane needs the axes {h} and {v}")
+        k.set_transform(None if key is None else rotation_transform(k, *key))
+        channel.rotation_key = key
+
+
+def rotation_transform(k, h: str, v: str, theta: float) -> AffineTransform:
+    """The kernel transform turning plane (h, v) by ``theta`` degrees about the workpiece zero, shown applied."""
+    return AffineTransform(Affine.rotation(k.n_axes, k.axis_of[h], k.axis_of[v], theta), shown=True)
+
+
+def shape_block(channel, block: Block, angle_key: str | None, turn: bool = True) -> Block:
+    """The block with the angle word resolved, and the rotation applied to its words when ``turn`` (MEAS M and
+    INTA; blocks the kernel executes are turned by its transform, see :func:`rotate_for`)."""
     words = block.words
     k = channel.kernel
     h, v, absolute, theta = block_frame(channel, block)
-    if theta == 0.0 and angle_key not in words:
+    turned = theta if turn else 0.0
+    if turned == 0.0 and angle_key not in words:
         return block
     words = dict(words)
     if h not in k.axis_of or v not in k.axis_of:
@@ -75,6 +98,8 @@ def shape_block(channel, block: Block, angle_key: str | None) -> Block:
     ch, cv = program_point(channel, h, v, theta)
     if angle_key in words:
         _resolve_angle(words, words.pop(angle_key), h, v, absolute, ch, cv)
+    if not turn:
+        return Block(block.g, block.m, words, block.n, block.msg, block.src)
     if theta != 0.0 and (h in words or v in words):
         if absolute:
             words[h], words[v] = _turn(words.get(h, ch), words.get(v, cv), theta)

@@ -24,13 +24,14 @@ from ...machine.scenario import (
     refuse,
 )
 from ...nc.block import Block
+from ...nc.canon import CanonSink, Src
 from ...nc.kernel import INCH
 from ...nc.spindle import SINUMERIK_GEARS, Gearbox
 from ...runtime.buffer import BlockBuffer
 from ...runtime.locate import fault_line
 from .ncdata import MIB_TOP, Cl800Error, NcData, int_to_pattern, nc8, pattern_to_int
 from .plc import PlcClock
-from .rotation import angle_address, shape_block
+from .rotation import angle_address, rotate_for, shape_block
 from .spindle import GEAR_M, SpindleReads
 from .sysmem import SysMem
 
@@ -85,6 +86,16 @@ NAMESPACE_GLOBALS = {
 SINUMERIK_EVENTS = (ExternalInput, PlcChange, PlcTimer, PlcCounter, Alarm, ProbeSwitch)
 
 
+class PlcAnswers(CanonSink):
+    """The PLC's answer to an M function it is handed (canon ``aux``), after the sinks have recorded it."""
+
+    def __init__(self, answer):
+        self.answer = answer
+
+    def aux(self, code: str, src: Src) -> None:
+        self.answer(code)
+
+
 class Channel(SysMem, SpindleReads):
     """One NC channel running a main program and its sub-programs."""
 
@@ -122,6 +133,8 @@ class Channel(SysMem, SpindleReads):
         self.tool_d = 0
         SysMem.__init__(self)
         self.angle_used = False  # a block carried the angle address (PANG, @447)
+        #: (first plane axis, second plane axis, degrees) of the rotation set as the kernel's transform, or None
+        self.rotation_key: tuple | None = None
         self.route()
         refuse(session.machine.scenario, SINUMERIK_EVENTS, "SINUMERIK control")
         self._scenario = EventQueue(session.machine.scenario)
@@ -133,24 +146,20 @@ class Channel(SysMem, SpindleReads):
         self.gearbox = Gearbox(self.kernel, SINUMERIK_GEARS, data.gear, data.gears, Cl800Error, "[sin800] gears")
         # G96 takes the radius from X; axis 1 may be programmed as a diameter (as for PREP CYC)
         self.kernel.css_diameter = self.kernel.css_axis == 0 and bool(data.areas["nc_md"].get("diameter_axis1", 0.0))
-        canon = session.canon
-        plain_aux = canon.aux
-
-        def aux(code, src):
-            """M functions the PLC answers: gear stages (M40-M45), R parameters it loads (m_functions),
-            timers and counters wired to them."""
-            plain_aux(code, src)
-            self.advance_scenario()  # what the PLC did before this block
-            self.plc_clock.m_function(code, self.session.machine.clock.now)
-            if code in GEAR_M:
-                self.gearbox.select(GEAR_M[code])
-            if code in self.m_functions:
-                self.m_function(code)
-
-        canon.aux = aux
+        session.canon.add(PlcAnswers(self.answer_m))
         if data.inch_basic_system():  # G70 is the power-on state (MDNBI(5002,4), L2324-2326)
             self.kernel.scale = INCH
         self.apply_offsets()
+
+    def answer_m(self, code: str) -> None:
+        """M functions the PLC answers: gear stages (M40-M45), R parameters it loads (m_functions),
+        timers and counters wired to them."""
+        self.advance_scenario()  # what the PLC did before this block
+        self.plc_clock.m_function(code, self.session.machine.clock.now)
+        if code in GEAR_M:
+            self.gearbox.select(GEAR_M[code])
+        if code in self.m_functions:
+            self.m_function(code)
 
     def _strict_power_on(self, source: str) -> None:
         """strict_nc: R parameters from the machine file and the store keep 8 significant digits too."""
@@ -169,18 +178,23 @@ class Channel(SysMem, SpindleReads):
         ``linear`` after rotation writes and calls."""
         k = self.kernel
         shaped = self.angle_used or self.rotation_active()
+        if not shaped and self.rotation_key is not None:  # every angle is 0 again
+            k.set_transform(None)
+            self.rotation_key = None
         self.execute_now = self.execute_shaped if shaped else k.execute
-        self.linear = self.linear_shaped if shaped else k._linear
+        self.linear = self.linear_shaped if shaped else k.linear
         self.execute = self.decode_into_buffer if self.decode_ahead > 0 else self.execute_now
         self.buffer.execute = self.execute_now
 
     def execute_shaped(self, block: Block) -> None:
+        rotate_for(self, block)
         key = angle_address(self) if self.angle_used else None
-        self.kernel.execute(shape_block(self, block, key))
+        self.kernel.execute(shape_block(self, block, key, turn=False))
 
     def linear_shaped(self, k, motion: int, words: dict, src) -> None:
-        """The generated G0/G1 fast path while a rotation is selected."""
-        k._linear(k, motion, shape_block(self, Block((), (), words, None, None, src), None).words, src)
+        """The generated G0/G1 fast path while a rotation is selected: the kernel's transformed path."""
+        rotate_for(self, Block((), (), words, None, None, src))
+        k.linear(k, motion, words, src)
 
     def execute_angle(self, block: Block) -> None:
         """A block with the programmed angle (PANG or the angle address word)."""

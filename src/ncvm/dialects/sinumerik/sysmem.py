@@ -701,7 +701,8 @@ class SysMem:
         scale = 25.4 if 70 in g else (1.0 if 71 in g else k.scale)
         machine = 53 in g
         relative = not machine and (False if 90 in g else (True if 91 in g else not k.absolute))
-        start = [(k.machine_pos[i] if machine else k.prog[i]) / scale for i in range(k.n_axes)]
+        prog = k.shown_position()  # the turned frame, as the block's words are
+        start = [(k.machine_pos[i] if machine else prog[i]) / scale for i in range(k.n_axes)]
         feed = turned["F"] * scale if "F" in turned else k.feed  # mm/min
         if motion < 2:
             return straight_path(k, motion == 0, turned, start, scale, relative, feed)
@@ -748,11 +749,12 @@ class SysMem:
         scale = 25.4 if 70 in g else (1.0 if 71 in g else k.scale)
         absolute = True if 90 in g else (False if 91 in g else k.absolute)
         start = {n: k.machine_pos[k.axis_of[n]] for n in moving}
+        shown = k.shown_position()  # the turned frame, as the block's words are
         end = {}
         for name in moving:
             i = k.axis_of[name]
             value = turned[name] * scale
-            end[name] = value if machine else k.offset_vec[i] + (value if absolute else k.prog[i] + value)
+            end[name] = value if machine else k.offset_vec[i] + (value if absolute else shown[i] + value)
         hit = self._trigger_point(self._probe_hit(probe), start, end)
         announce(k.canon, ProbeLatch(probe, dict(hit)), _src(self, line))
         angle = angle_address(self) if self.angle_used else None  # resolved into the axis words
@@ -772,7 +774,7 @@ class SysMem:
                 self.load_r(reg, value)
                 reg += 1
             prog = hit[name] - (0.0 if machine else k.offset_vec[i])
-            cut[name] = prog / scale if absolute or machine else (prog - k.prog[i]) / scale
+            cut[name] = prog / scale if absolute or machine else (prog - shown[i]) / scale
         out.update(cut if machine else program_frame(cut, frame))
         return out
 

@@ -159,10 +159,8 @@ class SympasDialect(Dialect):
                     tk.tskinfo |= 2
             if main_task.ns is not None:
                 session.variables = main.variables(main_task)
-            kernel = session.kernel
-            pos = tuple(a.m for a in card.axes)
-            kernel.machine_pos = pos
-            kernel.prog = [m - card.user_shift(a) for m, a in zip(pos, card.axes)]
+            pos = [a.m for a in card.axes]
+            session.kernel.place(pos, [m - card.user_shift(a) for m, a in zip(pos, card.axes)])
 
 
 DIALECT = SympasDialect()

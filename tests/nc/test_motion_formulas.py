@@ -1,0 +1,116 @@
+"""The motion formulas in their forms side by side agree: scalar (the kernel, block by block), column-wise
+(nc/plainrun.py, a run of plain blocks) and generated (nc/fastmove.py, the kernel's straight-move path).
+
+Move times over a grid of lengths, feeds and limits (incl. zero and unlimited acceleration, a feed above
+the axes' maxima, zero-length moves); arcs over sweeps in both directions, full circles and helices."""
+
+from __future__ import annotations
+
+import itertools
+import math
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from ncvm.machine.config import machine_from_dict
+from ncvm.nc import arcs
+from ncvm.nc.canon import Canon, Src
+from ncvm.nc.dynamics import (
+    AxisDynamics,
+    arc_limits,
+    arc_limits_columns,
+    straight_time_columns,
+    trapezoid_time,
+    trapezoid_time_columns,
+)
+from ncvm.nc.kernel import NcKernel
+
+SRC = Src("t", 1)
+AXES = [{"name": "X", "rapid": 20000.0, "max_feed": 8000.0, "accel": 2.0},
+        {"name": "Y", "rapid": 15000.0, "max_feed": 5000.0, "accel": 800.0},
+        {"name": "Z", "rapid": 6000.0, "max_feed": 3000.0, "accel": 300.0}]
+
+
+def test_trapezoid_time_scalar_and_columns_agree_on_a_grid():
+    lengths = [0.0, 1e-9, 0.001, 0.5, 3.0, 250.0, 1e5]
+    speeds = [0.0, 1e-3, 0.5, 16.7, 500.0, math.inf]
+    accels = [0.0, 1e-3, 2.0, 980.0, math.inf]
+    grid = list(itertools.product(lengths, speeds, accels))
+    length, v, a = (np.array(col) for col in zip(*grid))
+    columns = trapezoid_time_columns(length, v, a)
+    for (ln, vv, aa), t in zip(grid, columns.tolist()):
+        assert t == trapezoid_time(ln, vv, aa), (ln, vv, aa)
+
+
+coord = st.floats(-500.0, 500.0, allow_nan=False)
+point = st.tuples(coord, coord, coord)
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.lists(st.tuples(point, point, st.booleans(), st.floats(0.0, 20000.0)), min_size=1, max_size=20))
+def test_straight_move_time_scalar_columns_and_generated_agree(moves):
+    m = machine_from_dict({"axis": AXES})
+    dyn = AxisDynamics(m.axes)
+    start = np.array([s for s, _e, _r, _f in moves])
+    end = np.array([e for _s, e, _r, _f in moves])
+    rapid = np.array([r for _s, _e, r, _f in moves])
+    feed = np.array([f for _s, _e, _r, f in moves])
+    columns = straight_time_columns(dyn, start, end, rapid, feed).tolist()
+    k = NcKernel(m, Canon([]))
+    clock = m.clock
+    for (s, e, r, f), t in zip(moves, columns):
+        scalar = dyn.straight_time(s, e, math.inf if r else f / 60.0, rapid=r)
+        assert t == pytest.approx(scalar, rel=1e-12, abs=1e-15)
+        if not r and f <= 0.0:
+            continue  # the generated path faults (NC006) before it times the move
+        k.place(s)
+        k.feed = f
+        clock.now = 0.0
+        k.linear(k, 0 if r else 1, dict(zip("XYZ", e)), SRC)
+        assert clock.now == t
+
+
+radius = st.floats(0.01, 1000.0)
+angle = st.floats(-math.pi, math.pi)
+
+
+@st.composite
+def arc_cases(draw):
+    """(start, end, centre, cw, helix rise): a sweep of any size in either direction, or a full circle."""
+    ca, cb, r = draw(coord), draw(coord), draw(radius)
+    a0 = draw(angle)
+    full = draw(st.booleans())
+    a1 = a0 if full else a0 + draw(st.floats(-2 * math.pi + 1e-3, 2 * math.pi - 1e-3))
+    start = (ca + r * math.cos(a0), cb + r * math.sin(a0))
+    end = start if full else (ca + r * math.cos(a1), cb + r * math.sin(a1))
+    return start, end, (ca, cb), draw(st.booleans()), draw(st.sampled_from([0.0, 0.5, 40.0]))
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.lists(arc_cases(), min_size=1, max_size=16), st.floats(1.0, 20000.0))
+def test_arc_sweep_length_extent_and_time_scalar_and_columns_agree(cases, feed):
+    dyn = AxisDynamics(machine_from_dict({"axis": AXES}).axes)
+    cols = [np.array(c) for c in zip(*[(s[0], s[1], e[0], e[1], c[0], c[1], cw) for s, e, c, cw, _h in cases])]
+    sa, sb, ea, eb, ca, cb, cw = cols
+    cw = cw.astype(bool)
+    r0 = np.hypot(sa - ca, sb - cb)
+    sweeps, a0 = arcs.sweep_columns(sa, sb, ea, eb, ca, cb, cw)
+    start3 = np.column_stack((sa, sb, np.zeros(len(cases))))
+    end3 = np.column_stack((ea, eb, np.array([h for *_x, h in cases])))
+    lengths = arcs.arc_length_columns(r0, sweeps, arcs.helix_travel_columns(start3, end3, 0, 1))
+    extents = arcs.arc_plane_extent_columns(sa, sb, ca, cb, r0, a0, sweeps)
+    v, acc = arc_limits_columns(0, 1, lengths, feed / 60.0, dyn.max_feed, dyn.accel)
+    times = trapezoid_time_columns(lengths, v, acc)
+    for k, ((s, e, c, clockwise, _rise), s3, e3) in enumerate(zip(cases, start3.tolist(), end3.tolist())):
+        radius_k = math.hypot(s[0] - c[0], s[1] - c[1])
+        sweep = arcs.sweep(*s, *e, *c, clockwise)
+        assert sweeps[k] == pytest.approx(sweep, abs=1e-12)
+        if s == e:
+            assert abs(sweep) == 2 * math.pi and (sweep < 0) == clockwise  # a full circle
+        length = arcs.arc_length(radius_k, sweep, arcs.helix_travel(s3, e3, 0, 1))
+        assert lengths[k] == pytest.approx(length, rel=1e-12)
+        assert extents[k].tolist() == pytest.approx(arcs.arc_plane_extent(*s, *c, radius_k, sweep), abs=1e-9)
+        t = trapezoid_time(length, *arc_limits(3, 0, 1, length, feed / 60.0, dyn.max_feed, dyn.accel))
+        assert times[k] == pytest.approx(t, rel=1e-12)
