@@ -19,6 +19,7 @@ from ...nc.block import Block
 from ...nc.canon import Src
 from ...runtime.codegen import PySource
 from .atcodes import COMPARE
+from .finite import checked
 from .reader import Arith, AtInstr, NcBlock, Note, Operand, PartProgram, Word
 
 #: M functions the kernel handles itself; any other goes to the PLC
@@ -242,12 +243,17 @@ class UnitCodegen:
         writes_after = [False] * len(items)
         for i in range(len(items) - 2, -1, -1):
             writes_after[i] = writes_after[i + 1] or isinstance(items[i + 1], (Arith, AtInstr))
+        checks = _arith_checks(items)
         for i, it in enumerate(items):
             if isinstance(it, Word):
                 rec.word(out, it, writes_after[i])
             elif isinstance(it, Arith):
                 rec.settle_int_sec(out)
                 out.emit(self._arith(it), line)
+                if i in checks and not self.strict:
+                    # x - x is 0.0 (false) unless x is infinite or NaN
+                    target = self.r(it.target)
+                    out.emit(f"if {target} - {target}: _finite({target})", line)
             elif isinstance(it, Note):
                 rec.note(it)
             elif isinstance(it, AtInstr):
@@ -270,11 +276,7 @@ class UnitCodegen:
         self.written.add(it.target)
         if self.strict:
             expr = f"_nc8({expr})"
-        target = self.r(it.target)
-        if self.strict or len(it.terms) == 1:
-            return f"{target} = {expr}"
-        # only arithmetic can leave the double range; x - x is 0.0 (false) unless x is infinite or NaN
-        return f"{target} = {expr}; {target} - {target} and _finite({target})"
+        return f"{self.r(it.target)} = {expr}"
 
     def _jump(self, out: PySource, idx: int, blk: NcBlock, number: int, rec: "_Record") -> None:
         """Lines that leave the block for block ``number`` (±, digest §5.3 rule 4)."""
@@ -475,6 +477,21 @@ class UnitCodegen:
                 return self.store(target, f"(1.0 if {x} != 0.0 else 0.0)")
             return self.store(target, f"(1.0 if {x} {COMPARE[code[2]]} {y} else 0.0)")
         raise AssertionError(code)
+
+
+def _arith_checks(items: list) -> set[int]:
+    """Indexes of the R assignments of a block whose result must be checked for the double range
+    (only arithmetic can leave it; :mod:`.finite` says which)."""
+    out: set[int] = set()
+    run: list[int] = []
+    for i, it in enumerate([*items, None]):
+        if isinstance(it, Arith):
+            run.append(i)
+            continue
+        if run:
+            out.update(k for k, need in zip(run, checked([items[k] for k in run])) if need)
+            run = []
+    return out
 
 
 def _jump_numbers(it: AtInstr):
