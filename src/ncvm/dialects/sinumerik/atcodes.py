@@ -12,6 +12,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from .errors import ReadError
+
 
 @dataclass(frozen=True, slots=True)
 class AtSpec:
@@ -24,8 +26,6 @@ class AtSpec:
         return None if self.kinds is None else len(self.kinds)
 
     def check(self, code: str, ops, col: int) -> None:
-        from .reader import ReadError
-
         if self.kinds is None:
             _check_variable(code, ops, col)
             return
@@ -46,8 +46,6 @@ _NAMES = {"K": "<Const>", "R": "<R-Par>", "V": "<Var>", "W": "<Value>", "J": "<C
 
 
 def _check_variable(code: str, ops, col: int) -> None:
-    from .reader import ReadError
-
     if code in ("040", "042"):
         if not ops or ops[0].kind != "K" or ops[0].value != int(ops[0].value) or ops[0].value < 1:
             raise ReadError(col, f"@{code}: K<n> (number of R parameters) expected first", "SIN003")

@@ -16,7 +16,8 @@ from ...diagnostics import Frame, RuntimeFault, Span, UsageError
 from ...nc.block import Block
 from ...nc.kernel import INCH
 from ...runtime.codegen import program_lines
-from .ncdata import MIB_TOP, Cl800Error, NcData, int_to_pattern, nc8, pattern_to_int
+from .errors import Cl800Error
+from .ncdata import MIB_TOP, NcData, int_to_pattern, nc8, pattern_to_int
 from .plc import PlcClock
 from .rotation import angle_address, shape_block
 from .spindle import GEAR_M, Gearbox, SpindleReads

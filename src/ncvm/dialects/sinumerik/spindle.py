@@ -15,7 +15,7 @@ stage automatically from the speed, using the maximum speed of each stage in
 
 from __future__ import annotations
 
-from .ncdata import Cl800Error
+from .errors import Cl800Error
 
 MASTER_SPINDLE = 1
 #: M function -> gear stage (M40: automatic selection)

@@ -9,31 +9,21 @@ range of manual ch.10; a value outside a range is the NC alarm "CL 800 error".
 from __future__ import annotations
 
 import math
+import struct
 
 from ...diagnostics import RuntimeFault
 from ...nc.block import Block
+from ...nc.canon import Src
 from ...nc.dynamics import trapezoid_distance, trapezoid_time
+from ...nc.kernel import PLANES
 from . import v24
 from .contour import check_window, contour_elements, intersect
+from .errors import Cl800Error
 from .inta_path import arc_path, straight_path
-from .ncdata import Cl800Error, int_to_pattern, nc8, pattern_to_int
+from .ncdata import CHANNEL_ARG, MD_SD, SD, int_to_pattern, nc8, pattern_to_int
 from .rotation import angle_address, block_frame, machine_frame, program_frame, program_point
 from .spindle import MASTER_SPINDLE
 
-#: code -> (area, width, (lo, hi) address range); width: word, byte, bit
-MD_SD = {
-    "0": ("nc_md", "word", (0, 4999)), "1": ("nc_md", "byte", (5000, 6999)), "2": ("nc_md", "bit", (5000, 6999)),
-    "3": ("cycle_md", "word", (0, 4149)), "4": ("cycle_md", "byte", (800, 8049)),
-    "5": ("cycle_md", "bit", (800, 8049)),
-    "6": ("plc_md", "word", (0, 5999)), "7": ("plc_md", "byte", (2000, 8999)), "8": ("plc_md", "bit", (2000, 8999)),
-    "9": ("drive_md", "word", (0, 4960)), "a": ("drive_md", "byte", (2440, 4630)),
-    "b": ("drive_md", "bit", (2440, 4630)),
-}
-SD = {
-    "0": ("nc_sd", "word", (0, 4999)), "1": ("nc_sd", "byte", (5000, 9999)), "2": ("nc_sd", "bit", (5000, 9999)),
-    "3": ("cycle_sd", "word", (0, 499)), "4": ("cycle_sd", "byte", (800, 949)), "5": ("cycle_sd", "bit", (800, 949)),
-}
-CHANNEL_ARG = {"cycle_md", "cycle_sd"}
 #: programmed control words of digital drives, read (@34b/@34c) and written (@44b/@44c): name, unit, top byte
 DRIVE_CONTROL = {"34b": ("PCDA", "axis", 1), "44b": ("PCDA", "axis", 1), "34c": ("PCDS", "spindle", 5),
                  "44c": ("PCDS", "spindle", 5)}  # first argument is the channel (0 = own)
@@ -508,7 +498,6 @@ class SysMem:
             n = 2 if code == "3b2" else _rng("number of data words", args[3], 1, 3 if code == "3b1" else 2)
             words = [self._dw(plc, args[1], args[2] + k) for k in range(n)]
             if code == "3b2":
-                import struct
                 return struct.unpack(">f", struct.pack(">HH", *words))[0]
             if code == "3b1":
                 digits = "".join(f"{w:04x}" for w in words)
@@ -549,7 +538,6 @@ class SysMem:
             self._put_byte(no, "F", n + 1, raw & 0xFF)
         elif code in ("4b0", "4b1", "4b2"):
             if code == "4b2":
-                import struct
                 words = list(struct.unpack(">HH", struct.pack(">f", value)))
             elif code == "4b1":
                 n = _rng("number of data words", where[3], 1, 3)
@@ -611,7 +599,6 @@ class SysMem:
         if self.g16_plane:
             h, v = self.g16_plane[0], self.g16_plane[1]
             return k.axis_names[h - 1], k.axis_names[v - 1]
-        from ...nc.kernel import PLANES
         a, b = PLANES[k.plane][:2]
         return a, b
 
@@ -880,6 +867,4 @@ def _to_dim(value: float, bits: int, dim: int) -> int:
 
 
 def _src(channel, line: int):
-    from ...nc.canon import Src
-
     return Src(channel._current_path(), line)
