@@ -246,7 +246,7 @@ def _read_at(s: str, i: int, items: list) -> int:
         i = k
         if want is None and code in ("040", "042") and len(ops) == 1:
             want = 1 + int(v)
-    spec.check(code, ops, col)
+    spec.check(ops, col)
     items.append(AtInstr(code, ops, col))
     return i
 

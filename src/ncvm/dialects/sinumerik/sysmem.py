@@ -17,6 +17,7 @@ from ...nc.canon import Src
 from ...nc.dynamics import trapezoid_distance, trapezoid_time
 from ...nc.kernel import PLANES
 from . import v24
+from .atcodes import AT_CODES
 from .contour import check_window, contour_elements, intersect
 from .errors import Cl800Error
 from .inta_path import arc_path, straight_path
@@ -155,50 +156,66 @@ class SysMem:
         self.R[first:first + len(values)] = [fix(v) for v in values]
 
     def _read(self, code: str, target: int, args: tuple):
-        sub, fn = code[1], code[2]
+        return getattr(self, AT_CODES[code].run)(code, args)
+
+    def md_read(self, code: str, args: tuple):
+        """MDN ... MDDBI (@300-@30b): machine data; the last digit of the code names the area."""
+        return self._mem_read(*MD_SD[code[2]], args)
+
+    def sd_read(self, code: str, args: tuple):
+        """SEN ... SEZBI (@310-@315): setting data."""
+        return self._mem_read(*SD[code[2]], args)
+
+    def to_read(self, code: str, args: tuple) -> float:
+        """TOS (@320): a tool offset parameter."""
+        return self._to(args)[_rng("TO parameter P", args[2], 0, 15)]
+
+    def acpw(self, code: str, args: tuple) -> float:
+        """ACPW (@360): the actual position in the workpiece system."""
+        return self.kernel.workpiece_position()[self.kernel.axis_names[self._axis(args[0])]]
+
+    def acp(self, code: str, args: tuple):
+        """ACPM / ACP (@361/@362): the machine position; of a rotary axis the angle and the turns."""
+        i = self._axis(args[0])
+        pos = self.kernel.machine_pos[i] / self.kernel.scale
+        if self.session.machine.axes[i].rotary:
+            return [pos % 360.0, float(math.floor(pos / 360.0))]
+        return pos
+
+    def acas(self, code: str, args: tuple) -> list[float]:
+        """ACAS (@367): the axes of the plane (G16) and the master spindle."""
+        self._own_channel(args[0])
+        plane = self.g16_plane or {17: (1, 2, 3), 18: (3, 1, 2), 19: (2, 3, 1)}[self.kernel.plane]
+        out = [float(a + (128 if m else 0)) for a, m in zip(plane, self.g16_minus)]
+        return out + [0.0, float(MASTER_SPINDLE)]
+
+    def acd(self, code: str, args: tuple) -> float:
+        """ACD (@36a): the active D number."""
+        self._own_channel(args[0])
+        return float(self.tool_d)
+
+    def acg(self, code: str, args: tuple) -> float:
+        """ACG (@36b): the active G function of a group."""
+        self._own_channel(args[0])
+        return self._acg(_rng("G group", args[1], 0, 23))
+
+    def sob(self, code: str, args: tuple) -> float:
+        """SOB (@371): a status bit of the machine file's ``sob`` table."""
+        self._own_channel(args[0], independent=99)
         d = self.data
-        if sub == "0":
-            return self._mem_read(*MD_SD[fn], args)
-        if sub == "1":
-            return self._mem_read(*SD[fn], args)
-        if code == "320":
-            return self._to(args)[_rng("TO parameter P", args[2], 0, 15)]
-        if sub == "3":
-            return self._zo_read(code, args)
-        if code in ("342", "345", "363", "364", "3e4"):
-            return self.spindle_read(code, args)
-        if code in ("34b", "34c", "3e1", "3e2", "3e3"):
-            return self._drive_bit(code, args)
-        if code == "360":
-            return self.kernel.workpiece_position()[self.kernel.axis_names[self._axis(args[0])]]
-        if code in ("361", "362"):
-            i = self._axis(args[0])
-            pos = self.kernel.machine_pos[i] / self.kernel.scale
-            if self.session.machine.axes[i].rotary:
-                return [pos % 360.0, float(math.floor(pos / 360.0))]
-            return pos
-        if code in ("367", "36a", "36b"):
-            self._own_channel(args[0])  # ACAS, ACD, ACG
-        if code == "367":
-            plane = self.g16_plane or {17: (1, 2, 3), 18: (3, 1, 2), 19: (2, 3, 1)}[self.kernel.plane]
-            out = [float(a + (128 if m else 0)) for a, m in zip(plane, self.g16_minus)]
-            return out + [0.0, float(MASTER_SPINDLE)]
-        if code == "36a":
-            return float(self.tool_d)
-        if code == "36b":
-            return self._acg(_rng("G group", args[1], 0, 23))
-        if code == "371":
-            self._own_channel(args[0], independent=99)
-            return d.sob.get(f"{_i(args[0])}:{_i(args[1])}", d.sob.get(str(_i(args[1])), 0.0))
-        if code == "372":
-            return float(d.channel)
-        if sub in "89ab":
-            return self.plc_read(code, args)
-        if code == "3c0":
-            return [n + ch / 100.0 for n, ch in d.alarms] or 0.0
-        if code == "3d0":
-            return float(len(d.alarms))
-        raise Cl800Error(f"@{code} is not available")
+        return d.sob.get(f"{_i(args[0])}:{_i(args[1])}", d.sob.get(str(_i(args[1])), 0.0))
+
+    def ppch(self, code: str, args: tuple) -> float:
+        """PPCH (@372): the channel number."""
+        return float(self.data.channel)
+
+    def alnp(self, code: str, args: tuple):
+        """ALNP (@3c0): the pending alarms, number + channel/100 each."""
+        return [n + ch / 100.0 for n, ch in self.data.alarms] or 0.0
+
+    def alnpz(self, code: str, args: tuple) -> float:
+        """ALNPZ (@3d0): the number of pending alarms."""
+        return float(len(self.data.alarms))
 
     def _data_area(self, area: str, width: str, rng: tuple) -> tuple:
         """The address range of an MD/SD area on this control; the CL 800 error where the control has no
@@ -263,7 +280,7 @@ class SysMem:
             self.data.to[key] = [0.0] * 16
         return self.data.to[key]
 
-    def _zo_read(self, code: str, args: tuple) -> float:
+    def zo_read(self, code: str, args: tuple) -> float:
         d = self.data
         if code == "330":
             g = _rng("ZO group", args[0], 1, 4)
@@ -300,7 +317,7 @@ class SysMem:
             return float(state[group])
         return float(ACG_GROUPS.get(group, (0,))[0])
 
-    def _drive_bit(self, code: str, args: tuple) -> float:
+    def drive_read(self, code: str, args: tuple) -> float:
         """RSDA/RSDS/RSDD: status bits of the digital drives, from the machine file (``sob`` keys
         ``3e1:axis:byte:bit`` ...); PCDA/PCDS: the programmed control bits, as PCDA/PCDS wrote them."""
         if code in DRIVE_CONTROL:
@@ -319,74 +336,78 @@ class SysMem:
 
     # -- writes (main group 4) -------------------------------------------
     def write(self, code: str, args: tuple) -> None:
-        if code not in ("437", "438", "439", "43a"):
+        if AT_CODES[code].lower != "write_rotation":
             # data written by decoding serves the blocks decoded after it; rotation angles act at once,
             # even on blocks already decoded (L4325-4334)
             self.run_buffer()
-        sub, fn = code[1], code[2]
-        d = self.data
         *where, value = args
-        if sub in "01":
-            area, width, rng = (MD_SD if sub == "0" else SD)[fn]
-            rng = self._data_area(area, width, rng)
-            where = self._channel_args(area, tuple(where))
-            addr = _rng(f"{area} address", where[0], *rng)
-            table = d.areas[area]
-            if width == "word":
-                table[str(addr)] = float(value)
-            elif area == "drive_md":  # MDDBY/MDDBI(w, hl[, bit]): a byte of a drive MD word
-                word = int(table.get(str(addr), 0.0))
-                shift = 8 * _rng("byte (0 low / 1 high)", where[1], 0, 1)
-                byte = (word >> shift) & 0xFF
-                if width == "byte":
-                    byte = pattern_to_int(value)
-                else:
-                    if value not in (0.0, 1.0):
-                        raise Cl800Error(f"bit value {value:g} is not 0 or 1")
-                    bit = _rng("bit", where[2], 0, 7)
-                    byte = byte | (1 << bit) if value else byte & ~(1 << bit)
-                table[str(addr)] = float((word & ~(0xFF << shift)) | (byte << shift))
-            elif width == "byte":
-                pattern_to_int(value)
-                table[str(addr)] = float(value)
+        getattr(self, AT_CODES[code].run)(code, tuple(where), value)
+
+    def md_write(self, code: str, where: tuple, value: float) -> None:
+        """MDN ... MDDBI (@400-@40b): machine data; the last digit of the code names the area."""
+        self._mem_write(*MD_SD[code[2]], where, value)
+
+    def sd_write(self, code: str, where: tuple, value: float) -> None:
+        """SEN ... SEZBI (@410-@415): setting data."""
+        self._mem_write(*SD[code[2]], where, value)
+
+    def _mem_write(self, area: str, width: str, rng: tuple, where: tuple, value: float) -> None:
+        d = self.data
+        rng = self._data_area(area, width, rng)
+        where = self._channel_args(area, where)
+        addr = _rng(f"{area} address", where[0], *rng)
+        table = d.areas[area]
+        if width == "word":
+            table[str(addr)] = float(value)
+        elif area == "drive_md":  # MDDBY/MDDBI(w, hl[, bit]): a byte of a drive MD word
+            word = int(table.get(str(addr), 0.0))
+            shift = 8 * _rng("byte (0 low / 1 high)", where[1], 0, 1)
+            byte = (word >> shift) & 0xFF
+            if width == "byte":
+                byte = pattern_to_int(value)
             else:
-                bit = _rng("bit", where[1], 0, 7)
                 if value not in (0.0, 1.0):
                     raise Cl800Error(f"bit value {value:g} is not 0 or 1")
-                bits = pattern_to_int(table.get(str(addr), 0.0))
-                bits = bits | (1 << bit) if value else bits & ~(1 << bit)
-                table[str(addr)] = int_to_pattern(bits)
-            d.dirty.add(area)
-            return
-        if code in ("420", "423"):
-            p = self._to(tuple(where))
-            i = _rng("TO parameter P", where[2], 0, 15)
-            p[i] = value if code == "420" else p[i] + value
-            d.dirty.add("to")
-            if self.tool_d and _i(where[1]) == self.tool_d:
-                self.select_d(self.tool_d, 0)
-            return
-        if sub == "3":
-            self._zo_write(code, where, value)
-            return
-        if code in DRIVE_CONTROL:
+                bit = _rng("bit", where[2], 0, 7)
+                byte = byte | (1 << bit) if value else byte & ~(1 << bit)
+            table[str(addr)] = float((word & ~(0xFF << shift)) | (byte << shift))
+        elif width == "byte":
+            pattern_to_int(value)
+            table[str(addr)] = float(value)
+        else:
+            bit = _rng("bit", where[1], 0, 7)
             if value not in (0.0, 1.0):
                 raise Cl800Error(f"bit value {value:g} is not 0 or 1")
-            d.sob[self._control_bit(code, tuple(where), writing=True)] = float(value)
-            return
-        if code == "4e1":  # SATC (L3562-3579, L6704): kept per spindle and gear stage
-            spindle, gear = _rng("spindle", where[0], 0, 6), _rng("gear stage", where[1], 1, 8)
-            d.sob[f"SATC:{spindle}:{gear}"] = float(_rng("acceleration time constant", value, 0, 16000))
-            return
-        if sub in "89ab":
-            self.plc_write(code, tuple(where), value)
-            return
-        if code == "4c0":
-            self.cycle_alarm(value)
-            return
-        raise Cl800Error(f"@{code} is not available")
+            bits = pattern_to_int(table.get(str(addr), 0.0))
+            bits = bits | (1 << bit) if value else bits & ~(1 << bit)
+            table[str(addr)] = int_to_pattern(bits)
+        d.dirty.add(area)
 
-    def _zo_write(self, code: str, where: list, value: float) -> None:
+    def to_write(self, code: str, where: tuple, value: float) -> None:
+        """TOS / TOAD (@420/@423): set or add to a tool offset parameter."""
+        p = self._to(where)
+        i = _rng("TO parameter P", where[2], 0, 15)
+        p[i] = value if code == "420" else p[i] + value
+        self.data.dirty.add("to")
+        if self.tool_d and _i(where[1]) == self.tool_d:
+            self.select_d(self.tool_d, 0)
+
+    def drive_write(self, code: str, where: tuple, value: float) -> None:
+        """PCDA / PCDS (@44b/@44c): a programmed control bit of a digital drive."""
+        if value not in (0.0, 1.0):
+            raise Cl800Error(f"bit value {value:g} is not 0 or 1")
+        self.data.sob[self._control_bit(code, where, writing=True)] = float(value)
+
+    def satc(self, code: str, where: tuple, value: float) -> None:
+        """SATC (L3562-3579, L6704): kept per spindle and gear stage."""
+        spindle, gear = _rng("spindle", where[0], 0, 6), _rng("gear stage", where[1], 1, 8)
+        self.data.sob[f"SATC:{spindle}:{gear}"] = float(_rng("acceleration time constant", value, 0, 16000))
+
+    def alnz(self, code: str, where: tuple, value: float) -> None:
+        """ALNZ (@4c0): raise a cycle alarm."""
+        self.cycle_alarm(value)
+
+    def zo_write(self, code: str, where: tuple, value: float) -> None:
         d = self.data
         if code in ("430", "431"):
             g = _rng("ZO group", where[0], 1, 4)
@@ -577,21 +598,27 @@ class SysMem:
 
     # -- main group 7 ------------------------------------------------------
     def nc_function(self, code: str, args: tuple, line: int) -> None:
-        if code == "714" or (code == "715" and self.rotation_active()):
-            self.stop_dec()  # lockstep (decode_ahead = 0): the buffer is always empty
-            return
-        if code == "715":
-            return  # STOP DEC1 waits only while a coordinate rotation is selected (L4330-4334)
-        if code == "713":
-            target = args[0]
-            check_window(target, 2, ((0, 98), (900, 998)), "PREP CYC output")  # L4268
-            diameter = self.data.areas["nc_md"].get("diameter_axis1", 0.0)
-            self.store(target, [1.0 if self.kernel.scale == 1.0 else 0.03937, 2.0 if diameter else 1.0])
-            return
-        if code == "710":
-            self.prep_ref(int(args[0]), int(args[1]))
-            return
-        raise Cl800Error(f"@{code} is not available")
+        getattr(self, AT_CODES[code].run)(args)
+
+    def stop_dec_now(self, args: tuple) -> None:
+        """STOP DEC (@714)."""
+        self.stop_dec()  # lockstep (decode_ahead = 0): the buffer is always empty
+
+    def stop_dec1(self, args: tuple) -> None:
+        """STOP DEC1 (@715) waits only while a coordinate rotation is selected (L4330-4334)."""
+        if self.rotation_active():
+            self.stop_dec()
+
+    def prep_cyc(self, args: tuple) -> None:
+        """PREP CYC (@713): the unit factor and the diameter flag into R<v>, R<v+1>."""
+        target = args[0]
+        check_window(target, 2, ((0, 98), (900, 998)), "PREP CYC output")  # L4268
+        diameter = self.data.areas["nc_md"].get("diameter_axis1", 0.0)
+        self.store(target, [1.0 if self.kernel.scale == 1.0 else 0.03937, 2.0 if diameter else 1.0])
+
+    def prep_ref_args(self, args: tuple) -> None:
+        """PREP REF (@710) with the R numbers of its operands."""
+        self.prep_ref(int(args[0]), int(args[1]))
 
     # -- PREP REF / INT SEC ------------------------------------------------
     def _plane_axes(self) -> tuple[str, str]:
