@@ -5,7 +5,8 @@ from __future__ import annotations
 import pytest
 
 from ncvm.diagnostics import RuntimeFault
-from ncvm.runtime.codegen import PySource, compile_cached, program_lines
+from ncvm.runtime.codegen import PySource, compile_cached
+from ncvm.runtime.locate import generated_frames
 from ncvm.runtime.steps import StepCounter
 
 
@@ -33,8 +34,7 @@ def test_generated_code_runs_and_faults_map_to_program_lines():
         ns["main"](counter, out)
     assert out == [10]
     assert counter.steps == 20
-    lines = program_lines(exc.tb, "<prog.x>")
-    assert [src.source_line(n) for n in lines] == [6]
+    assert [f.line for f in generated_frames(exc.tb, {"<prog.x>": src})] == [6]
 
 
 def test_compile_cache_returns_the_same_code_object_for_the_same_text():

@@ -4,14 +4,14 @@ Front ends emit Python lines through :class:`PySource`, tagging each with the
 source line it came from. The compiled code object is cached by the hash of
 the generated text (the analogue of a control's link table), and the line map
 turns a Python traceback back into the program's file and line when a fault
-happens, so generated code need not track its position at run time.
+happens (runtime.locate), so generated code need not track its position at run time.
 """
 
 from __future__ import annotations
 
 import hashlib
 from contextlib import contextmanager
-from types import CodeType, TracebackType
+from types import CodeType
 
 _CODE_CACHE: dict[str, CodeType] = {}
 
@@ -79,13 +79,3 @@ def compile_cached(text: str, filename: str) -> CodeType:
         code = compile(text, filename, "exec")
         _CODE_CACHE[key] = code
     return code
-
-
-def program_lines(tb: TracebackType | None, filename: str) -> list[int]:
-    """The generated-code line numbers of ``filename`` in a traceback, outermost first."""
-    out = []
-    while tb is not None:
-        if tb.tb_frame.f_code.co_filename == filename:
-            out.append(tb.tb_lineno)
-        tb = tb.tb_next
-    return out

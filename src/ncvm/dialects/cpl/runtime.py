@@ -20,8 +20,6 @@ import functools
 import itertools
 import math
 import re
-import traceback
-from collections import deque
 from pathlib import Path
 
 from ...diagnostics import Frame, RuntimeFault, Span
@@ -30,6 +28,8 @@ from ...nc.block import ROW_LINE, Block, DinSyntaxError, as_block, parse_din_lin
 from ...nc.canon import Canon, Src
 from ...nc.midmove import MotionRecorder, position_at
 from ...nc.plainrun import execute_segments, plain_segments
+from ...runtime.buffer import BlockBuffer
+from ...runtime.locate import generated_frames
 from ...runtime.memory import out_of_memory
 from . import values as V
 from .axiswords import check_words, refused_blocks, refusing
@@ -91,10 +91,15 @@ class CplRuntime:
             self.io.screen.on_wait = self.save_wait_picture
         self.globals: dict = {}
         self.perm = Permanents(session)
-        self.queue: deque = deque()
-        #: queue an NC block (or a plain row); preparation waits when the look-ahead is full
-        self.enqueue = self.queue_limited if self.lookahead > 0 else self._buffered(BLOCK_BUFFER)
-        self.executed = 0  # blocks taken from the queue and executed so far
+        #: the motion queue: ``lookahead`` blocks, else the block buffer, whose older half executes when
+        #: it is full; ``enqueue`` queues an NC block (or a plain row)
+        if self.lookahead > 0:
+            self.queue = BlockBuffer(self.lookahead, self.execute_queued, execute_many=self.execute_run)
+            self.enqueue = self.queue_limited
+        else:
+            self.queue = BlockBuffer(BLOCK_BUFFER - 1, self.execute_queued, spill=BLOCK_BUFFER - BLOCK_BUFFER // 2,
+                                     execute_many=self.execute_run)
+            self.enqueue = self.queue.put
         self.row_words: set[str] = set()  # the addresses the plain rows of the units made so far have
         self._shadow = None  # the NC state after every prepared block (see prepared_kernel)
         self._shadow_at = 0
@@ -294,12 +299,9 @@ class CplRuntime:
             code, detail = "RUN006", ""
         else:
             raise e
-        frames = []
-        for fs in traceback.extract_tb(e.__traceback__):
-            uc = self._codes.get(fs.filename)
-            if uc is not None:
-                line = uc.src.source_line(fs.lineno)
-                frames.append((fs.filename, line, uc.cpl_lines.get(line), uc.src.source_col(fs.lineno)))
+        codes = self._codes
+        frames = [(g.filename, g.line, codes[g.filename].cpl_lines.get(g.line), g.col)
+                  for g in generated_frames(e.__traceback__, {path: uc.src for path, uc in codes.items()})]
         text = e.message if isinstance(e, CplRuntimeError) else message(code, detail) if code != "RUN006" \
             else out_of_memory(self.session.options.max_memory).message
         if not frames:
@@ -384,22 +386,14 @@ class CplRuntime:
             self.globals[key] = value
 
     # -- NC blocks and the motion queue ---------------------------------------------------------
-    def _buffered(self, size: int):
-        """The queue's append for the block buffer: when ``size`` blocks wait, the older half is executed."""
-        queue, append, spill = self.queue, self.queue.append, self.execute_oldest
-
-        def enqueue(blk) -> None:
-            append(blk)
-            if len(queue) >= size:
-                spill(size - size // 2)
-
-        return enqueue
+    @property
+    def executed(self) -> int:
+        """Blocks taken from the queue and executed so far."""
+        return self.queue.executed
 
     def queue_limited(self, blk) -> None:
         """The look-ahead is full: preparation waits until the oldest block has been executed."""
-        self.queue.append(blk)
-        if len(self.queue) > self.lookahead:
-            self.execute_one()
+        if self.queue.put(blk):
             self.t_prep = max(self.t_prep, self.machine.clock.now)
 
     def enqueue_probe(self, blk) -> None:
@@ -418,9 +412,8 @@ class CplRuntime:
         else:
             self.enqueue(blk)
 
-    def execute_one(self) -> None:
-        blk = self.queue.popleft()
-        self.executed += 1
+    def execute_queued(self, blk) -> None:
+        """The queue's "execute one" step: nothing executes after the program end."""
         if not self.kernel.ended:
             self.execute_block(blk)
 
@@ -433,17 +426,11 @@ class CplRuntime:
 
     def drain(self) -> None:
         """WAIT without parameters: stop preparation until every block before it has been executed."""
-        self.execute_oldest(len(self.queue))
+        self.queue.drain()
 
-    def execute_oldest(self, n: int) -> None:
-        """Execute the ``n`` oldest queued blocks (runs of plain blocks column-wise); preparation waits for them."""
-        q = self.queue
-        if n >= len(q):
-            blocks = list(q)
-            q.clear()
-        else:
-            blocks = [q.popleft() for _ in range(n)]
-        self.executed += len(blocks)
+    def execute_run(self, blocks: list) -> None:
+        """Execute the oldest queued blocks, taken out together (runs of plain blocks column-wise);
+        preparation waits for them."""
         execute_segments(self.kernel, plain_segments(blocks, self.row_words), self.execute_block)
         self.t_prep = max(self.t_prep, self.machine.clock.now)
 
@@ -524,7 +511,7 @@ class CplRuntime:
         if not clock.now > self.t_prep:
             if not self.queue or self.kernel.ended:
                 return False
-            self.execute_one()
+            self.queue.execute_one()
         self.t_prep = max(self.t_prep, clock.now)
         return True
 
@@ -539,7 +526,7 @@ class CplRuntime:
                 while queue and clock.now < t_end and not kernel.ended:
                     blk, before = queue[0], kernel.machine_pos
                     rec.moves.clear()
-                    self.execute_one()
+                    self.queue.execute_one()
             self.running = (blk, before, list(rec.moves), self.executed)
         if clock.now < t_end:
             clock.now = t_end

@@ -10,12 +10,12 @@ from __future__ import annotations
 import math
 import re
 import sys
-from collections import deque
 
 from ...diagnostics import Frame, RuntimeFault, Span, UsageError
 from ...nc.block import Block
 from ...nc.kernel import INCH
-from ...runtime.codegen import program_lines
+from ...runtime.buffer import BlockBuffer
+from ...runtime.locate import fault_line
 from .errors import Cl800Error
 from .ncdata import MIB_TOP, NcData, int_to_pattern, nc8, pattern_to_int
 from .plc import PlcClock
@@ -88,7 +88,7 @@ class Channel(SysMem, SpindleReads):
         # decode-ahead (digest §10.5): 0 = lockstep; N = up to N decoded blocks wait for execution
         self.decode_ahead = int(sec.get("decode_ahead", 0))
         self.strict = bool(sec.get("strict_nc", False))  # R stores rounded to 8 digits (digest §10.4)
-        self.buffer: deque = deque()
+        self.buffer = BlockBuffer(self.decode_ahead, self.execute)  # route() keeps its step on the current path
         self.pending_r: dict[int, float] = {}  # PLC answers and measured values not yet seen by decoding
         self.R = [0.0] * 1000
         self.written: set[int] = set()
@@ -157,6 +157,7 @@ class Channel(SysMem, SpindleReads):
         self.execute_now = self.execute_shaped if shaped else k.execute
         self.linear = self.linear_shaped if shaped else k._linear
         self.execute = self.decode_into_buffer if self.decode_ahead > 0 else self.execute_now
+        self.buffer.execute = self.execute_now
 
     def execute_shaped(self, block: Block) -> None:
         key = angle_address(self) if self.angle_used else None
@@ -184,19 +185,13 @@ class Channel(SysMem, SpindleReads):
     def decode_into_buffer(self, block: Block) -> None:
         """A decoded block waits in the NC buffer; the oldest executes once more than N are waiting.
         Blocks that stop or end the program (M0/M1/M2/M30) empty the buffer at once."""
-        buf = self.buffer
-        buf.append(block)
+        self.buffer.put(block)
         if any(m in (0, 1, 2, 30) for m in block.m):
-            self.run_buffer()
-        elif len(buf) > self.decode_ahead:
-            self.execute_now(buf.popleft())
+            self.buffer.drain()
 
     def run_buffer(self) -> None:
         """Execute every decoded block still waiting (decoding needs the executed state)."""
-        buf = self.buffer
-        execute = self.execute_now
-        while buf:
-            execute(buf.popleft())
+        self.buffer.drain()
 
     def stop_dec(self) -> None:
         """@714 STOP DEC: decoding waits until the buffer is empty; R parameters loaded by the PLC or by
@@ -241,9 +236,9 @@ class Channel(SysMem, SpindleReads):
 
     def _locate(self, f: RuntimeFault, unit) -> None:
         if f.span is None:
-            lines = program_lines(sys.exc_info()[2], unit.source.filename)
-            if lines:
-                f.span = Span(unit.path, unit.source.source_line(lines[-1]))
+            line = fault_line(sys.exc_info()[2], unit.source)
+            if line is not None:
+                f.span = Span(unit.path, line)
         if not f.stack:
             f.stack = [Frame(fr.unit, None) for fr in self.frames]
             for i in range(len(self.frames) - 1):

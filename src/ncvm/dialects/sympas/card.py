@@ -11,7 +11,8 @@ from __future__ import annotations
 import heapq
 import math
 
-from ...diagnostics import RuntimeFault, Span
+from ...diagnostics import Frame, RuntimeFault, Span
+from ...runtime.locate import generated_frames
 from . import recording
 from .commands import Commands
 from .motion import TICKS_PER_S, Move
@@ -615,27 +616,20 @@ class Card(Commands):
 
     def capture_locals(self, tk, tb) -> None:
         """Keep the main block's locals (its variables) when the task stops by an exception."""
-        while tb is not None:
-            code = tb.tb_frame.f_code
-            if code.co_name == "_main" and tk.unit and code.co_filename == tk.unit.pyname:
-                tk.main_locals = dict(tb.tb_frame.f_locals)
-            tb = tb.tb_next
+        if tk.unit:
+            for g in generated_frames(tb, {tk.unit.pyname: tk.unit.src}):
+                if g.frame.f_code.co_name == "_main":
+                    tk.main_locals = dict(g.frame.f_locals)
 
     def locate(self, tk, e: RuntimeFault) -> RuntimeFault:
         if e.span is not None and getattr(e, "number", None) is None:
             return e
         unit = tk.unit
-        frames = []
-        tb = e.__traceback__
-        while tb is not None:
-            code = tb.tb_frame.f_code
-            if code.co_filename == unit.pyname:
-                loc = unit.locs[unit.src.source_line(tb.tb_lineno)]
-                name = code.co_name
-                frames.append((("main program" if name == "_main" else name[2:]), loc))
-            tb = tb.tb_next
-        from ...diagnostics import Frame
-        stack = [Frame(n, Span(f, ln)) for n, (f, ln) in frames]
+        frames = generated_frames(e.__traceback__, {unit.pyname: unit.src})
+        stack = []
+        for g in frames:
+            name = g.frame.f_code.co_name
+            stack.append(Frame("main program" if name == "_main" else name[2:], Span(*unit.locs[g.line])))
         span = stack[-1].span if stack else None
         if e.code == "8" and len(stack) >= 2:
             span = stack[-2].span  # the call that did not fit, not the routine's header
@@ -643,11 +637,8 @@ class Card(Commands):
         if len(stack) > 20:
             stack = stack[:5] + [Frame(f"... {len(stack) - 20} more calls ...", None)] + stack[-15:]
         # statements counted but not yet handed to the task when the fault struck
-        tb = e.__traceback__
-        while tb is not None:
-            if tb.tb_frame.f_code.co_filename == unit.pyname:
-                self.steps += int(tb.tb_frame.f_locals.get("_n", 0) or 0)
-            tb = tb.tb_next
+        for g in frames:
+            self.steps += int(g.frame.f_locals.get("_n", 0) or 0)
         tk.error |= int(e.code) if e.code.isdigit() else 0
         tk.error_line = span.line if span else 0
         msg = e.message
