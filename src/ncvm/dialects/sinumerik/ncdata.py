@@ -47,6 +47,22 @@ def nc8(value: float) -> float:
     return r + 0.0  # no -0.0
 
 
+def whole(v: float) -> int:
+    """An operand that must be a whole number (the CL 800 error otherwise)."""
+    n = int(v)
+    if n != v:
+        raise Cl800Error(f"{v:g} is not a whole number")
+    return n
+
+
+def in_range(what: str, v: float, lo: int, hi: int) -> int:
+    """A whole-number operand within ``lo``..``hi`` (the CL 800 error otherwise)."""
+    n = whole(v)
+    if not lo <= n <= hi:
+        raise Cl800Error(f"{what} {n} outside {lo}-{hi}")
+    return n
+
+
 def pattern_to_int(value: float) -> int:
     """A digit-coded pattern (e.g. 10010.0) as its 8-bit integer."""
     if value < 0 or value != int(value):

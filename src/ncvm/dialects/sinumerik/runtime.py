@@ -19,6 +19,7 @@ from ...runtime.locate import fault_line
 from .errors import Cl800Error
 from .ncdata import MIB_TOP, NcData, int_to_pattern, nc8, pattern_to_int
 from .plc import PlcClock
+from .plcmem import Plc
 from .rotation import angle_address, shape_block
 from .spindle import GEAR_M, Gearbox, SpindleReads
 from .sysmem import SysMem
@@ -110,7 +111,7 @@ class Channel(SysMem, SpindleReads):
         self.route()
         self._scenario = list(session.machine.scenario)
         self.plc_clock = PlcClock(f"{session.machine.source}: [sin800]", data.plc)
-        self.plc_clock.write_bit = self.plc_bit
+        self.plc = Plc(data, self.plc_clock, session.machine.clock, self.advance_scenario)
         for ev in self._scenario:
             if ev.kind in ("timer", "counter"):
                 self.plc_clock.parse_event(ev.kind, ev.data, ev.time)  # faults in the scenario before the run
@@ -305,8 +306,7 @@ class Channel(SysMem, SpindleReads):
                 m = _PLC_SOURCE.match(source.strip().upper())
                 if m is None:
                     raise Cl800Error(f"{code}: cannot read PLC data '{source}' (write DB<n>.DW<m> or PLC<k>.DB<n>.DW<m>)")
-                plc = self._plc(float(m.group(1) or 1))
-                value = float(self._dw(plc, float(m.group(2)), float(m.group(3))))
+                value = float(self.plc.data_word(float(m.group(1) or 1), float(m.group(2)), float(m.group(3))))
             else:
                 value = float(source)
             self.load_r(n, value)
@@ -439,7 +439,7 @@ class Channel(SysMem, SpindleReads):
             else:
                 self.data.inputs[byte] &= ~(1 << bit)
         elif ev.kind == "plc":
-            self.plc_set_event(d, ev.time)
+            self.plc.set_event(d, ev.time)
         elif ev.kind in ("timer", "counter"):
             self.plc_clock.act(*self.plc_clock.parse_event(ev.kind, d, ev.time), ev.time)
         elif ev.kind == "alarm":
