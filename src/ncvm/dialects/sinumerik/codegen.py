@@ -621,7 +621,7 @@ class _Record:
                 key = f"_rt.centre_name({axis}, {line})"
             self.words.append((key, tmp, False))
         elif code == "442":
-            self.words.append((f"_rt.spindle_word({cg.val(ops[0])}, {line})", tmp, False))
+            self.words.append((f"_rt.spindle.word({cg.val(ops[0])}, {line})", tmp, False))
         elif code == "446":
             self.words.append(("'R'", tmp, False))
         elif code == "447":

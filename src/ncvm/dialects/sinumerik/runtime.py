@@ -21,7 +21,7 @@ from .ncdata import MIB_TOP, NcData, int_to_pattern, nc8, pattern_to_int
 from .plc import PlcClock
 from .plcmem import Plc
 from .rotation import angle_address, shape_block
-from .spindle import GEAR_M, Gearbox, SpindleReads
+from .spindle import GEAR_M, Gearbox, Spindle
 from .sysmem import SysMem
 
 DEG = math.pi / 180.0
@@ -71,7 +71,7 @@ NAMESPACE_GLOBALS = {
 }
 
 
-class Channel(SysMem, SpindleReads):
+class Channel(SysMem):
     """One NC channel running a main program and its sub-programs."""
 
     def __init__(self, session, data: NcData, loader):
@@ -116,7 +116,7 @@ class Channel(SysMem, SpindleReads):
             if ev.kind in ("timer", "counter"):
                 self.plc_clock.parse_event(ev.kind, ev.data, ev.time)  # faults in the scenario before the run
         self.m_functions = {f"M{int(k)}": dict(v) for k, v in sec.get("m_functions", {}).items()}
-        self.gearbox = Gearbox(self.kernel, data.gear, data.gears)
+        self.spindle = Spindle(self.kernel, data, self.buffer, Gearbox(self.kernel, data.gear, data.gears))
         # G96 takes the radius from X; axis 1 may be programmed as a diameter (as for PREP CYC)
         self.kernel.css_diameter = self.kernel.css_axis == 0 and bool(data.areas["nc_md"].get("diameter_axis1", 0.0))
         canon = session.canon
@@ -129,7 +129,7 @@ class Channel(SysMem, SpindleReads):
             self.advance_scenario()  # what the PLC did before this block
             self.plc_clock.m_function(code, self.session.machine.clock.now)
             if code in GEAR_M:
-                self.gearbox.select(code)
+                self.spindle.gearbox.select(code)
             if code in self.m_functions:
                 self.m_function(code)
 
