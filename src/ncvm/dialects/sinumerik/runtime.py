@@ -17,6 +17,7 @@ from ...nc.kernel import INCH
 from ...runtime.buffer import BlockBuffer
 from ...runtime.locate import fault_line
 from .errors import Cl800Error
+from .memory import SystemMemory
 from .ncdata import MIB_TOP, NcData, int_to_pattern, nc8, pattern_to_int
 from .plc import PlcClock
 from .plcmem import Plc
@@ -80,6 +81,7 @@ class Channel(SysMem):
         self.execute = session.kernel.execute
         self.counter = session.steps
         self.data = data
+        self.memory = SystemMemory(data)
         self.loader = loader  # number -> compiled unit (or None)
         sec = session.machine.sections.get("sin800", {})
         self.block_skip = bool(sec.get("block_skip", session.machine.setting_data.get("block_skip", True)))
