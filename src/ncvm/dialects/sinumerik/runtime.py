@@ -21,6 +21,7 @@ from .memory import SystemMemory
 from .ncdata import MIB_TOP, NcData, int_to_pattern, nc8, pattern_to_int
 from .plc import PlcClock
 from .plcmem import Plc
+from .probe import Probe
 from .rotation import angle_address, shape_block
 from .spindle import GEAR_M, Gearbox, Spindle
 from .sysmem import SysMem
@@ -112,6 +113,7 @@ class Channel(SysMem):
         self.angle_used = False  # a block carried the angle address (PANG, @447)
         self.route()
         self._scenario = list(session.machine.scenario)
+        self.probe = Probe(self._scenario, self.advance_scenario)
         self.plc_clock = PlcClock(f"{session.machine.source}: [sin800]", data.plc)
         self.plc = Plc(data, self.plc_clock, session.machine.clock, self.advance_scenario)
         for ev in self._scenario:
@@ -447,7 +449,7 @@ class Channel(SysMem):
         elif ev.kind == "alarm":
             self.data.alarms.append((int(d.get("number", 0)), self.data.channel))
         elif ev.kind == "probe":
-            self.probes.append(d)
+            self.probe.probes.append(d)
 
     def ext_input(self, byte: float, bit: float) -> bool:
         b, k = _int(byte), _int(bit)

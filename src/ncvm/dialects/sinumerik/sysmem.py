@@ -43,7 +43,6 @@ class SysMem:
     functions, probing, I/O)."""
 
     def __init__(self):
-        self.probes: list[dict] = []
         self.contours: dict[int, list] = {}
         self.g16_plane: tuple[int, int, int] | None = None
         self.g16_minus = (False, False, False)
@@ -452,7 +451,7 @@ class SysMem:
             i = k.axis_of[name]
             value = turned[name] * scale
             end[name] = value if machine else k.offset_vec[i] + (value if absolute else k.prog[i] + value)
-        hit = self._trigger_point(self._probe_hit(probe), start, end)
+        hit = self.probe.trigger_point(self.probe.hit(probe), start, end)
         angle = angle_address(self) if self.angle_used else None  # resolved into the axis words
         out = {n: v for n, v in words.items() if n not in k.axis_of and n != angle}
         cut = {}
@@ -473,40 +472,6 @@ class SysMem:
             cut[name] = prog / scale if absolute or machine else (prog - k.prog[i]) / scale
         out.update(cut if machine else program_frame(cut, frame))
         return out
-
-    @staticmethod
-    def _trigger_point(hit: dict, start: dict, end: dict) -> dict:
-        """Machine positions of the traversing axes when the probe switches: those the probe event gives;
-        the others on the block's straight path at the point the given ones locate."""
-        pos = {n: float(v) for n, v in hit.get("position", {}).items() if n in start}
-        known = next((n for n in pos if abs(end[n] - start[n]) > 1e-12), None)
-        out = {}
-        for name in start:
-            if name in pos:
-                out[name] = pos[name]
-            elif known is None:
-                raise RuntimeFault("SIN007", f"MEAS M: the probe event gives no position for axis {name}")
-            else:
-                t = (pos[known] - start[known]) / (end[known] - start[known])
-                if not -1e-9 <= t <= 1.0 + 1e-9:
-                    raise RuntimeFault("SIN007", f"MEAS M: the probe position {known} = {pos[known]:g} is not on "
-                                                 f"the block's path ({start[known]:g} to {end[known]:g})")
-                out[name] = start[name] + t * (end[name] - start[name])
-        return out
-
-    def _probe_hit(self, probe: int) -> dict:
-        self.advance_scenario()
-        for i, ev in enumerate(self._scenario):
-            if ev.kind == "probe" and int(ev.data.get("input", 1)) == probe:
-                self._scenario.pop(i)
-                self.probes.append(ev.data)
-                break
-        hits = [p for p in self.probes if int(p.get("input", 1)) == probe]
-        if not hits:
-            raise RuntimeFault("SIN007", f"MEAS M: probe {probe} never switches (no probe event in the scenario)")
-        hit = hits[0]
-        self.probes.remove(hit)
-        return hit
 
     # -- main group a: operator panel and V24 -------------------------------
     def io(self, code: str, args: tuple) -> None:
