@@ -15,6 +15,7 @@ from pathlib import Path
 
 from ...diagnostics import CompileFailed
 from ...machine.files import heads
+from ...nc.canon import Src
 from ...runtime.codegen import PySource
 from ...source import read_text
 from ..base import Dialect
@@ -121,7 +122,6 @@ class Sin800Dialect(Dialect):
             channel.run_unit(unit, name, None)
             channel.stop_dec()  # the end of the program: every decoded block executes
             if not session.kernel.ended and not channel.halted:
-                from ...nc.canon import Src
                 last = unit.program.blocks[-1].line if unit.program.blocks else 1
                 session.kernel.end_program(Src(path, last))
         finally:

@@ -13,17 +13,18 @@ by number (pointers, push/pop, sub-program calls, multi-register results).
 
 from __future__ import annotations
 
+from typing import NamedTuple
+
 from ...diagnostics import Diagnostic, Span
 from ...nc.axiswords import is_dwell, is_missing_axis, missing_axis_message, names_axis
 from ...nc.block import Block
 from ...nc.canon import Src
 from ...runtime.codegen import PySource
-from .atcodes import COMPARE
+from .atcodes import AT_CODES, AtCode
+from .finite import checked
 from .reader import Arith, AtInstr, NcBlock, Note, Operand, PartProgram, Word
 
 #: M functions the kernel handles itself; any other goes to the PLC
-#: NC functions whose result may leave the double range for finite operands (SQRTS of two huge values)
-OVERFLOWING = frozenset({"614"})
 _STANDARD_M = frozenset((0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 17, 30))
 
 
@@ -242,12 +243,17 @@ class UnitCodegen:
         writes_after = [False] * len(items)
         for i in range(len(items) - 2, -1, -1):
             writes_after[i] = writes_after[i + 1] or isinstance(items[i + 1], (Arith, AtInstr))
+        checks = _arith_checks(items)
         for i, it in enumerate(items):
             if isinstance(it, Word):
                 rec.word(out, it, writes_after[i])
             elif isinstance(it, Arith):
                 rec.settle_int_sec(out)
                 out.emit(self._arith(it), line)
+                if i in checks and not self.strict:
+                    # x - x is 0.0 (false) unless x is infinite or NaN
+                    target = self.r(it.target)
+                    out.emit(f"if {target} - {target}: _finite({target})", line)
             elif isinstance(it, Note):
                 rec.note(it)
             elif isinstance(it, AtInstr):
@@ -270,11 +276,7 @@ class UnitCodegen:
         self.written.add(it.target)
         if self.strict:
             expr = f"_nc8({expr})"
-        target = self.r(it.target)
-        if self.strict or len(it.terms) == 1:
-            return f"{target} = {expr}"
-        # only arithmetic can leave the double range; x - x is 0.0 (false) unless x is infinite or NaN
-        return f"{target} = {expr}; {target} - {target} and _finite({target})"
+        return f"{self.r(it.target)} = {expr}"
 
     def _jump(self, out: PySource, idx: int, blk: NcBlock, number: int, rec: "_Record") -> None:
         """Lines that leave the block for block ``number`` (±, digest §5.3 rule 4)."""
@@ -288,141 +290,195 @@ class UnitCodegen:
         out.emit(f"_blk = {self.labels[target]}; continue")
 
     def _at(self, out: PySource, idx: int, blk: NcBlock, it: AtInstr, rec: "_Record") -> bool:
-        code, ops = it.code, it.operands
-        line = blk.line
-        emit = out.emit
-        has_ptr = any(o.kind == "P" for o in ops)
-        if has_ptr:
-            emit("@SYNC_OUT", line)
-        g = code[0]
-        if code == "100":
-            if ops[0].kind == "K":
-                self._jump(out, idx, blk, int(ops[0].value), rec)
-            else:
-                rec.finish(out, jumping=True)
-                table = self.const({b.n: [] for b in self.prog.blocks if b.n is not None}, "_T")
-                for i, b in enumerate(self.prog.blocks):
-                    if b.n is not None:
-                        self.consts[table][b.n].append((i, self.labels[i]))
-                emit(f"_blk = _rt.dynamic_target({table}, {self.val(ops[0])}, {idx}, {line})")
-                emit(f"if _st > _lim: _rt.runaway({line})")
-                emit("continue")
-            return False
-        if code == "111":
-            var = self.val(ops[0])
-            first = True
-            for value, target in zip(ops[1::2], ops[2::2]):
-                emit(f"{'if' if first else 'elif'} {var} == {self.val(value)}:", line)
-                first = False
-                out._indent += 1
-                self._jump(out, idx, blk, int(target.value), rec)
-                out._indent -= 1
-            return True
-        if g == "1":
-            cond = self._condition(code, ops)
-            emit(f"if {cond}:", line)
-            out._indent += 1
-            self._jump(out, idx, blk, int(ops[2].value), rec)
-            out._indent -= 1
-            return True
-        if g == "4" and code[1] == "4":
-            rec.setpoint(out, code, ops)
-            return True
-        if code == "706":
-            rec.machine_coords = True
-            return True
-        if code == "711":  # INT SEC works on the destination written in the same block
-            if has_ptr:
-                emit("@SYNC_OUT", line)
-            rec.int_sec = (self._ref(ops[0]), self._ref(ops[1]))
-            return True
-        if code == "720":  # MEAS M cuts the motion of its own block at the probe's trigger point
-            rec.meas = (self._ref(ops[0]), self.val(ops[1]))
-            return True
-        if code == "730":  # REL waits once its own block has executed (L4409-4413)
-            rec.rel = tuple(rec.capture(out, o) for o in ops)
-            return True
-        if code == "736":  # INTA cuts the motion of its own block when the input fires (L4417-4436)
-            rec.inta = tuple(rec.capture(out, o) for o in ops)
-            return True
-        lines = self._statement(code, ops, line)
+        """Lower one @ code by its row's ``lower``; False when the rest of the block is never read."""
+        if any(o.kind == "P" for o in it.operands):
+            out.emit("@SYNC_OUT", blk.line)
+        at = _Site(out, idx, blk, it, AT_CODES[it.code], rec)
+        return getattr(self, f"lower_{at.row.lower}")(at)
+
+    def _lines(self, at: "_Site", lines: list[str]) -> bool:
+        """Emit a statement's lines (R parameters reloaded after it where it used a pointer)."""
         for text in lines:
-            emit(text, line)
-        if has_ptr:
-            emit("@SYNC_IN", line)
+            at.out.emit(text, at.blk.line)
+        if any(o.kind == "P" for o in at.it.operands):
+            at.out.emit("@SYNC_IN", at.blk.line)
         return True
 
-    def _condition(self, code: str, ops: list[Operand]) -> str:
-        """The condition under which the branch code *jumps* (digest §11 A48)."""
-        a, b = self.val(ops[0]), self.val(ops[1])
-        if code[1] in "234":
-            return f"not ({a} {COMPARE[code[2]]} {b})"
-        if code == "151":
-            return f"{a} > {b}"
-        if code == "161":
-            return f"{a} < {b}"
-        if code in ("187", "197"):
-            return f"not _rt.ext_input({a}, {b})"
-        return f"_rt.ext_input({a}, {b})"  # 188, 198: continue while the input reads 0
+    # -- main groups 0 and 1: program structure, branching ---------------
+    def lower_ess(self, at: "_Site") -> bool:
+        return self._lines(at, ["_rt.ess()"])
 
-    def _statement(self, code: str, ops: list[Operand], line: int) -> list[str]:
-        v = self.val
-        g = code[0]
-        if code == "00f":
-            return ["_rt.ess()"]
-        if code in ("040", "041", "042", "043"):
-            regs = [int(o.value) for o in ops[1:]] if code in ("040", "042") else \
-                list(range(int(ops[0].value), int(ops[1].value) + 1))
-            regs_c = self.const(tuple(regs), "_P")
-            fn = "push" if code in ("040", "041") else "pop"
-            return ["@SYNC_OUT", f"_rt.{fn}({regs_c}, {line})", "@SYNC_IN"]
-        if g == "2":
-            if code == "200":
-                return self.store(ops[0], "0.0")
-            if code == "201":
-                return self.store(ops[0], v(ops[1]))
-            if code == "202":
-                if ops[0].kind == "R" and ops[1].kind == "R":
-                    a, b = v(ops[0]), v(ops[1])
-                    return [f"{a}, {b} = {b}, {a}"]
-                return [f"_rt.xchg({self._ref(ops[0])}, {self._ref(ops[1])})", "@SYNC_IN"]
-            if code == "203":
-                return self.store(ops[0], f"_rt.bit({v(ops[1])}, {int(ops[2].value)})")
-            if code == "210":
-                return [f"_rt.mib_clear({v(ops[0])}, {v(ops[1])})"]
-            if code == "211":
-                return self.store(ops[0], f"_rt.mib_read({v(ops[1])})")
-            if code == "212":
-                return [f"_rt.mib_write({v(ops[0])}, {v(ops[1])})"]
-        if g == "6":
-            return self._math(code, ops)
-        if g == "3":
-            args = ", ".join(v(o) for o in ops[1:])
-            if ops[0].kind == "R":
-                self.written.add(int(ops[0].value))
-                return ["@SYNC_OUT", f"_rt.read({code!r}, {int(ops[0].value)}, ({args}{',' if args else ''}))",
-                        "@SYNC_IN"]
-            return ["@SYNC_OUT", f"_rt.read({code!r}, _ptr({self.r(int(ops[0].value))}), "
-                                 f"({args}{',' if args else ''}))", "@SYNC_IN"]
-        if g == "4" or g == "a" or g == "7":
-            args = ", ".join(v(o) for o in ops)
-            if code in ("710", "713"):
-                refs = ", ".join(self._ref(o) if i == 0 or code == "710" else v(o)
-                                 for i, o in enumerate(ops))
-                return ["@SYNC_OUT", f"_rt.nc_function({code!r}, ({refs},), {line})", "@SYNC_IN"]
-            if code == "a27":  # OUTP PARA outputs the R parameters as they are now
-                return ["@SYNC_OUT", f"_rt.io({code!r}, ({args},))"]
-            if code == "a28":  # INP may load R parameters
-                return ["@SYNC_OUT", f"_rt.io({code!r}, ({args},))", "@SYNC_IN"]
-            if code in ("714", "715"):  # STOP DEC hands over R parameters loaded during execution
-                return ["@SYNC_OUT", f"_rt.nc_function({code!r}, (), {line})", "@SYNC_IN"]
-            fn = "write" if g == "4" else ("io" if g == "a" else "nc_function")
-            extra = f", {line}" if g == "7" else ""
-            lines = [f"_rt.{fn}({code!r}, ({args}{',' if args else ''}){extra})"]
-            if code in ("437", "438", "439", "43a"):  # a rotation angle may switch block shaping on or off
-                lines.append("_ex = _rt.execute; _lin = _rt.linear")
-            return lines
-        raise AssertionError(code)
+    def lower_push(self, at: "_Site") -> bool:
+        return self._push_pop(at, "push")
+
+    def lower_pop(self, at: "_Site") -> bool:
+        return self._push_pop(at, "pop")
+
+    def _push_pop(self, at: "_Site", fn: str) -> bool:
+        ops = at.it.operands
+        regs = [int(o.value) for o in ops[1:]] if at.row.kinds is None else \
+            list(range(int(ops[0].value), int(ops[1].value) + 1))
+        regs_c = self.const(tuple(regs), "_P")
+        return self._lines(at, ["@SYNC_OUT", f"_rt.{fn}({regs_c}, {at.blk.line})", "@SYNC_IN"])
+
+    def lower_goto(self, at: "_Site") -> bool:
+        out, idx, blk, rec, op = at.out, at.idx, at.blk, at.rec, at.it.operands[0]
+        if op.kind == "K":
+            self._jump(out, idx, blk, int(op.value), rec)
+            return False
+        rec.finish(out, jumping=True)
+        table = self.const({b.n: [] for b in self.prog.blocks if b.n is not None}, "_T")
+        for i, b in enumerate(self.prog.blocks):
+            if b.n is not None:
+                self.consts[table][b.n].append((i, self.labels[i]))
+        out.emit(f"_blk = _rt.dynamic_target({table}, {self.val(op)}, {idx}, {blk.line})")
+        out.emit(f"if _st > _lim: _rt.runaway({blk.line})")
+        out.emit("continue")
+        return False
+
+    def lower_case(self, at: "_Site") -> bool:
+        ops, out = at.it.operands, at.out
+        var = self.val(ops[0])
+        first = True
+        for value, target in zip(ops[1::2], ops[2::2]):
+            out.emit(f"{'if' if first else 'elif'} {var} == {self.val(value)}:", at.blk.line)
+            first = False
+            out._indent += 1
+            self._jump(out, at.idx, at.blk, int(target.value), at.rec)
+            out._indent -= 1
+        return True
+
+    def lower_branch(self, at: "_Site") -> bool:
+        """Jump when the row's condition holds (digest §11 A48)."""
+        ops, out = at.it.operands, at.out
+        out.emit(f"if {at.row.expr.format(a=self.val(ops[0]), b=self.val(ops[1]))}:", at.blk.line)
+        out._indent += 1
+        self._jump(out, at.idx, at.blk, int(ops[2].value), at.rec)
+        out._indent -= 1
+        return True
+
+    # -- main group 2: general data transfer ------------------------------
+    def lower_clear(self, at: "_Site") -> bool:
+        return self._lines(at, self.store(at.it.operands[0], "0.0"))
+
+    def lower_assign(self, at: "_Site") -> bool:
+        ops = at.it.operands
+        return self._lines(at, self.store(ops[0], self.val(ops[1])))
+
+    def lower_xchg(self, at: "_Site") -> bool:
+        ops = at.it.operands
+        if ops[0].kind == "R" and ops[1].kind == "R":
+            a, b = self.val(ops[0]), self.val(ops[1])
+            return self._lines(at, [f"{a}, {b} = {b}, {a}"])
+        return self._lines(at, [f"_rt.xchg({self._ref(ops[0])}, {self._ref(ops[1])})", "@SYNC_IN"])
+
+    def lower_bit(self, at: "_Site") -> bool:
+        ops = at.it.operands
+        return self._lines(at, self.store(ops[0], f"_rt.bit({self.val(ops[1])}, {int(ops[2].value)})"))
+
+    def lower_mib_clear(self, at: "_Site") -> bool:
+        ops = at.it.operands
+        return self._lines(at, [f"_rt.mib_clear({self.val(ops[0])}, {self.val(ops[1])})"])
+
+    def lower_mib_read(self, at: "_Site") -> bool:
+        ops = at.it.operands
+        return self._lines(at, self.store(ops[0], f"_rt.mib_read({self.val(ops[1])})"))
+
+    def lower_mib_write(self, at: "_Site") -> bool:
+        ops = at.it.operands
+        return self._lines(at, [f"_rt.mib_write({self.val(ops[0])}, {self.val(ops[1])})"])
+
+    # -- main groups 3 and 4: system memory --------------------------------
+    def lower_read(self, at: "_Site") -> bool:
+        code, ops = at.it.code, at.it.operands
+        args = ", ".join(self.val(o) for o in ops[1:])
+        if ops[0].kind == "R":
+            self.written.add(int(ops[0].value))
+            target = str(int(ops[0].value))
+        else:
+            target = f"_ptr({self.r(int(ops[0].value))})"
+        return self._lines(at, ["@SYNC_OUT", f"_rt.read({code!r}, {target}, ({args}{',' if args else ''}))",
+                                "@SYNC_IN"])
+
+    def lower_write(self, at: "_Site") -> bool:
+        return self._lines(at, [self._write(at)])
+
+    def lower_write_rotation(self, at: "_Site") -> bool:
+        """A rotation angle may switch block shaping on or off: the execute and linear functions change."""
+        return self._lines(at, [self._write(at), "_ex = _rt.execute; _lin = _rt.linear"])
+
+    def _write(self, at: "_Site") -> str:
+        args = ", ".join(self.val(o) for o in at.it.operands)
+        return f"_rt.write({at.it.code!r}, ({args}{',' if args else ''}))"
+
+    def lower_setpoint(self, at: "_Site") -> bool:
+        at.rec.setpoint(at.out, at.it.code, at.it.operands)
+        return True
+
+    # -- main group 6: mathematical and logical functions -----------------
+    def lower_math(self, at: "_Site") -> bool:
+        ops, row = at.it.operands, at.row
+        target = ops[0]
+        expr = row.expr.format(me=self.val(target), x=self.val(ops[1]) if len(ops) > 1 else None,
+                               y=self.val(ops[2]) if len(ops) > 2 else None,
+                               k=int(ops[1].value) if len(ops) > 1 else None)
+        if row.overflows and not self.strict:
+            expr = f"_finite({expr})"
+        return self._lines(at, self.store(target, expr))
+
+    # -- main group 7: NC-specific functions --------------------------------
+    def lower_pos_msys(self, at: "_Site") -> bool:
+        at.rec.machine_coords = True
+        return True
+
+    def lower_int_sec(self, at: "_Site") -> bool:
+        """INT SEC works on the destination written in the same block."""
+        ops = at.it.operands
+        if any(o.kind == "P" for o in ops):
+            at.out.emit("@SYNC_OUT", at.blk.line)
+        at.rec.int_sec = (self._ref(ops[0]), self._ref(ops[1]))
+        return True
+
+    def lower_meas_m(self, at: "_Site") -> bool:
+        """MEAS M cuts the motion of its own block at the probe's trigger point."""
+        ops = at.it.operands
+        at.rec.meas = (self._ref(ops[0]), self.val(ops[1]))
+        return True
+
+    def lower_rel(self, at: "_Site") -> bool:
+        """REL waits once its own block has executed (L4409-4413)."""
+        at.rec.rel = tuple(at.rec.capture(at.out, o) for o in at.it.operands)
+        return True
+
+    def lower_inta(self, at: "_Site") -> bool:
+        """INTA cuts the motion of its own block when the input fires (L4417-4436)."""
+        at.rec.inta = tuple(at.rec.capture(at.out, o) for o in at.it.operands)
+        return True
+
+    def lower_nc_refs(self, at: "_Site") -> bool:
+        """PREP REF / PREP CYC: the R numbers of the results (and of the sub-program for PREP REF)."""
+        code, ops = at.it.code, at.it.operands
+        refs = ", ".join(self._ref(o) if i == 0 or code == "710" else self.val(o) for i, o in enumerate(ops))
+        return self._lines(at, ["@SYNC_OUT", f"_rt.nc_function({code!r}, ({refs},), {at.blk.line})", "@SYNC_IN"])
+
+    def lower_stop_dec(self, at: "_Site") -> bool:
+        """STOP DEC hands over R parameters loaded during execution."""
+        return self._lines(at, ["@SYNC_OUT", f"_rt.nc_function({at.it.code!r}, (), {at.blk.line})", "@SYNC_IN"])
+
+    # -- main group a: I/O --------------------------------------------------
+    def lower_io(self, at: "_Site") -> bool:
+        args = ", ".join(self.val(o) for o in at.it.operands)
+        return self._lines(at, [f"_rt.io({at.it.code!r}, ({args}{',' if args else ''}))"])
+
+    def lower_io_out(self, at: "_Site") -> bool:
+        """OUTP PARA outputs the R parameters as they are now."""
+        args = ", ".join(self.val(o) for o in at.it.operands)
+        return self._lines(at, ["@SYNC_OUT", f"_rt.io({at.it.code!r}, ({args},))"])
+
+    def lower_io_in(self, at: "_Site") -> bool:
+        """INP may load R parameters."""
+        args = ", ".join(self.val(o) for o in at.it.operands)
+        return self._lines(at, ["@SYNC_OUT", f"_rt.io({at.it.code!r}, ({args},))", "@SYNC_IN"])
 
     def _ref(self, op: Operand) -> str:
         """The R number an operand designates (pointers resolved at run time)."""
@@ -430,51 +486,31 @@ class UnitCodegen:
             return str(int(op.value))
         return f"_ptr({self.r(int(op.value))})"
 
-    def _math(self, code: str, ops: list[Operand]) -> list[str]:
-        v = self.val
-        x = v(ops[1]) if len(ops) > 1 else None
-        y = v(ops[2]) if len(ops) > 2 else None
-        target = ops[0]
-        exprs = {
-            "610": lambda: f"abs({x})",
-            "613": lambda: f"_rt.sqrt({x})",
-            "614": lambda: f"_hypot({x}, {y})",
-            "630": lambda: f"_sin({x} * _DEG)",
-            "631": lambda: f"_cos({x} * _DEG)",
-            "632": lambda: f"_rt.tan({x})",
-            "634": lambda: f"_rt.arc_sin({x})",
-            "637": lambda: f"_rt.angle({x}, {y})",
-            "640": lambda: f"_rt.ln({x})",
-            "641": lambda: f"_rt.inv_ln({x})",
-            "650": lambda: f"_rt.pattern_op('OR', {x}, {y})",
-            "651": lambda: f"_rt.pattern_op('XOR', {x}, {y})",
-            "652": lambda: f"_rt.pattern_op('AND', {x}, {y})",
-            "653": lambda: f"_rt.pattern_op('NAND', {x}, {y})",
-            "654": lambda: f"_rt.pattern_op('NOT', {x}, 0.0)",
-            "655": lambda: f"(1.0 if ({x} != 0.0 or {y} != 0.0) else 0.0)",
-            "656": lambda: f"(1.0 if (({x} != 0.0) != ({y} != 0.0)) else 0.0)",
-            "657": lambda: f"(1.0 if ({x} != 0.0 and {y} != 0.0) else 0.0)",
-            "658": lambda: f"(0.0 if ({x} != 0.0 and {y} != 0.0) else 1.0)",
-            "659": lambda: f"(0.0 if {x} != 0.0 else 1.0)",
-        }
-        me = v(target)
-        if code in OVERFLOWING and not self.strict:
-            return self.store(target, f"_finite({exprs[code]()})")
-        if code in exprs:
-            return self.store(target, exprs[code]())
-        if code == "620":
-            return self.store(target, f"{me} + 1.0")
-        if code == "621":
-            return self.store(target, f"{me} - 1.0")
-        if code == "622":
-            return self.store(target, f"float(_trunc({me}))")
-        if code in ("660", "661"):
-            return self.store(target, f"_rt.set_bit({me}, {int(ops[1].value)}, {1 if code == '661' else 0})")
-        if code.startswith("67"):
-            if code == "670":
-                return self.store(target, f"(1.0 if {x} != 0.0 else 0.0)")
-            return self.store(target, f"(1.0 if {x} {COMPARE[code[2]]} {y} else 0.0)")
-        raise AssertionError(code)
+
+class _Site(NamedTuple):
+    """Where an @ code is lowered: the output, the block and its record, the instruction and its row."""
+
+    out: PySource
+    idx: int
+    blk: NcBlock
+    it: AtInstr
+    row: AtCode
+    rec: "_Record"
+
+
+def _arith_checks(items: list) -> set[int]:
+    """Indexes of the R assignments of a block whose result must be checked for the double range
+    (only arithmetic can leave it; :mod:`.finite` says which)."""
+    out: set[int] = set()
+    run: list[int] = []
+    for i, it in enumerate([*items, None]):
+        if isinstance(it, Arith):
+            run.append(i)
+            continue
+        if run:
+            out.update(k for k, need in zip(run, checked([items[k] for k in run])) if need)
+            run = []
+    return out
 
 
 def _jump_numbers(it: AtInstr):
@@ -484,7 +520,7 @@ def _jump_numbers(it: AtInstr):
     elif code == "111":
         for t in it.operands[2::2]:
             yield int(t.value)
-    elif code[0] == "1":
+    elif AT_CODES[code].lower == "branch":
         yield int(ops[2].value)
 
 
@@ -585,7 +621,7 @@ class _Record:
                 key = f"_rt.centre_name({axis}, {line})"
             self.words.append((key, tmp, False))
         elif code == "442":
-            self.words.append((f"_rt.spindle_word({cg.val(ops[0])}, {line})", tmp, False))
+            self.words.append((f"_rt.spindle.word({cg.val(ops[0])}, {line})", tmp, False))
         elif code == "446":
             self.words.append(("'R'", tmp, False))
         elif code == "447":

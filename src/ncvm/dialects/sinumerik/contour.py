@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import math
 
-from .ncdata import Cl800Error
+from .errors import Cl800Error
 from .reader import Word
 
 

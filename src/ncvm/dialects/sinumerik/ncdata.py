@@ -11,6 +11,7 @@ from __future__ import annotations
 from typing import Any
 
 from ...diagnostics import UsageError
+from .errors import Cl800Error
 
 NAMESPACE = "sin800"
 #: data areas kept by address (word or byte address -> number)
@@ -20,10 +21,21 @@ KNOWN_KEYS = {"control", "channel", "m0", "block_skip", "max_call_depth", "r", "
               "m_functions", "decode_ahead", "strict_nc", "gear", "gears", "v24_input",
               *AREAS}
 PERSISTED = (*AREAS, "to", "zo", "rot", "mib", "central_r")
-
-
-class Cl800Error(Exception):
-    """The NC alarm "CL 800 error" (manual L725-728, digest §8): the channel stops."""
+#: the MD (@30x/@40x) and SD (@31x/@41x) areas by the last digit of the code: (area, width, (lo, hi)
+#: address range); width: word, byte, bit (L6500-6522, L6624-6646)
+MD_SD = {
+    "0": ("nc_md", "word", (0, 4999)), "1": ("nc_md", "byte", (5000, 6999)), "2": ("nc_md", "bit", (5000, 6999)),
+    "3": ("cycle_md", "word", (0, 4149)), "4": ("cycle_md", "byte", (800, 8049)),
+    "5": ("cycle_md", "bit", (800, 8049)),
+    "6": ("plc_md", "word", (0, 5999)), "7": ("plc_md", "byte", (2000, 8999)), "8": ("plc_md", "bit", (2000, 8999)),
+    "9": ("drive_md", "word", (0, 4960)), "a": ("drive_md", "byte", (2440, 4630)),
+    "b": ("drive_md", "bit", (2440, 4630)),
+}
+SD = {
+    "0": ("nc_sd", "word", (0, 4999)), "1": ("nc_sd", "byte", (5000, 9999)), "2": ("nc_sd", "bit", (5000, 9999)),
+    "3": ("cycle_sd", "word", (0, 499)), "4": ("cycle_sd", "byte", (800, 949)), "5": ("cycle_sd", "bit", (800, 949)),
+}
+CHANNEL_ARG = {"cycle_md", "cycle_sd"}
 
 
 def nc8(value: float) -> float:
@@ -33,6 +45,22 @@ def nc8(value: float) -> float:
     if not abs(r) <= 99999999.0:
         raise Cl800Error(f"{value:g} is outside the R parameter range +/-99999999")
     return r + 0.0  # no -0.0
+
+
+def whole(v: float) -> int:
+    """An operand that must be a whole number (the CL 800 error otherwise)."""
+    n = int(v)
+    if n != v:
+        raise Cl800Error(f"{v:g} is not a whole number")
+    return n
+
+
+def in_range(what: str, v: float, lo: int, hi: int) -> int:
+    """A whole-number operand within ``lo``..``hi`` (the CL 800 error otherwise)."""
+    n = whole(v)
+    if not lo <= n <= hi:
+        raise Cl800Error(f"{what} {n} outside {lo}-{hi}")
+    return n
 
 
 def pattern_to_int(value: float) -> int:
@@ -184,8 +212,6 @@ class NcData:
     def _check_ranges(self, where: str, sec: dict) -> None:
         """What the control has no room for, or cannot read as a byte, is refused at the start: a program
         would meet it only as a CL 800 error at the line that reads it (or not at all)."""
-        from .sysmem import MD_SD, SD  # sysmem reads NcData: imported here, not at the top
-
         c = self.control
         beyond = [a for a in sec.get("mib", {}) if int(a) > MIB_TOP[c]]
         if beyond:

@@ -26,6 +26,7 @@ from ...source import (
     word_number,
 )
 from .atcodes import AT_CODES
+from .errors import ReadError
 
 
 @dataclass(slots=True)
@@ -82,13 +83,6 @@ class PartProgram:
     kind: str  # "MPF", "SPF" or "" (no header)
     number: int | None
     blocks: list[NcBlock]
-
-
-class ReadError(Exception):
-    def __init__(self, col: int, message: str, code: str = "SIN001"):
-        self.col = col
-        self.message = message
-        self.code = code
 
 
 _DIGITS = "0123456789"
@@ -252,7 +246,7 @@ def _read_at(s: str, i: int, items: list) -> int:
         i = k
         if want is None and code in ("040", "042") and len(ops) == 1:
             want = 1 + int(v)
-    spec.check(code, ops, col)
+    spec.check(ops, col)
     items.append(AtInstr(code, ops, col))
     return i
 

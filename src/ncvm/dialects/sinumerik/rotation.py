@@ -20,7 +20,7 @@ import math
 from ...nc.block import Block
 from ...nc.kernel import PLANES
 from ...nc.transform import Affine, AffineTransform
-from .ncdata import Cl800Error
+from .errors import Cl800Error
 
 _CENTRE = {"X": "I", "Y": "J", "Z": "K"}
 #: MD byte 5001 names the angle address; the manual gives only 11 = A (L2325-2326, L3060)

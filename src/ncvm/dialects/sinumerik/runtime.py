@@ -29,10 +29,14 @@ from ...nc.kernel import INCH
 from ...nc.spindle import SINUMERIK_GEARS, Gearbox
 from ...runtime.buffer import BlockBuffer
 from ...runtime.locate import fault_line
-from .ncdata import MIB_TOP, Cl800Error, NcData, int_to_pattern, nc8, pattern_to_int
+from .errors import Cl800Error
+from .memory import SystemMemory
+from .ncdata import MIB_TOP, NcData, int_to_pattern, nc8, pattern_to_int
 from .plc import PlcClock
+from .plcmem import Plc
+from .probe import Probe
 from .rotation import angle_address, rotate_for, shape_block
-from .spindle import GEAR_M, SpindleReads
+from .spindle import GEAR_M, Spindle
 from .sysmem import SysMem
 
 DEG = math.pi / 180.0
@@ -96,7 +100,7 @@ class PlcAnswers(CanonSink):
         self.answer(code)
 
 
-class Channel(SysMem, SpindleReads):
+class Channel(SysMem):
     """One NC channel running a main program and its sub-programs."""
 
     def __init__(self, session, data: NcData, loader):
@@ -105,6 +109,7 @@ class Channel(SysMem, SpindleReads):
         self.execute = session.kernel.execute
         self.counter = session.steps
         self.data = data
+        self.memory = SystemMemory(data)
         self.loader = loader  # number -> compiled unit (or None)
         sec = session.machine.sections.get("sin800", {})
         self.block_skip = bool(sec.get("block_skip", session.machine.setting_data.get("block_skip", True)))
@@ -138,12 +143,14 @@ class Channel(SysMem, SpindleReads):
         self.route()
         refuse(session.machine.scenario, SINUMERIK_EVENTS, "SINUMERIK control")
         self._scenario = EventQueue(session.machine.scenario)
+        self.probe = Probe(self._scenario, self.advance_scenario)
         self.plc_clock = PlcClock(f"{session.machine.source}: [sin800]", data.plc)
-        self.plc_clock.write_bit = self.plc_bit
+        self.plc = Plc(data, self.plc_clock, session.machine.clock, self.advance_scenario)
         for ev in of_type(session.machine.scenario, PlcTimer, PlcCounter):
             self.plc_clock.parse_event(ev)  # faults in the scenario before the run
         self.m_functions = {f"M{int(k)}": dict(v) for k, v in sec.get("m_functions", {}).items()}
-        self.gearbox = Gearbox(self.kernel, SINUMERIK_GEARS, data.gear, data.gears, Cl800Error, "[sin800] gears")
+        gearbox = Gearbox(self.kernel, SINUMERIK_GEARS, data.gear, data.gears, Cl800Error, "[sin800] gears")
+        self.spindle = Spindle(self.kernel, data, self.buffer, gearbox)
         # G96 takes the radius from X; axis 1 may be programmed as a diameter (as for PREP CYC)
         self.kernel.css_diameter = self.kernel.css_axis == 0 and bool(data.areas["nc_md"].get("diameter_axis1", 0.0))
         session.canon.add(PlcAnswers(self.answer_m))
@@ -157,7 +164,7 @@ class Channel(SysMem, SpindleReads):
         self.advance_scenario()  # what the PLC did before this block
         self.plc_clock.m_function(code, self.session.machine.clock.now)
         if code in GEAR_M:
-            self.gearbox.select(GEAR_M[code])
+            self.spindle.gearbox.select(GEAR_M[code])
         if code in self.m_functions:
             self.m_function(code)
 
@@ -334,8 +341,7 @@ class Channel(SysMem, SpindleReads):
                 m = _PLC_SOURCE.match(source.strip().upper())
                 if m is None:
                     raise Cl800Error(f"{code}: cannot read PLC data '{source}' (write DB<n>.DW<m> or PLC<k>.DB<n>.DW<m>)")
-                plc = self._plc(float(m.group(1) or 1))
-                value = float(self._dw(plc, float(m.group(2)), float(m.group(3))))
+                value = float(self.plc.data_word(float(m.group(1) or 1), float(m.group(2)), float(m.group(3))))
             else:
                 value = float(source)
             self.load_r(n, value)
@@ -466,13 +472,13 @@ class Channel(SysMem, SpindleReads):
             else:
                 self.data.inputs[ev.byte] &= ~(1 << ev.bit)
         elif kind is PlcChange:
-            self.plc_set_event(ev)
+            self.plc.set_event(ev)
         elif kind is PlcTimer or kind is PlcCounter:
             self.plc_clock.act(*self.plc_clock.parse_event(ev), ev.time)
         elif kind is Alarm:
             self.data.alarms.append((ev.number, self.data.channel))
         elif kind is ProbeSwitch:
-            self.probes.append(ev)
+            self.probe.probes.append(ev)
 
     def ext_input(self, byte: float, bit: float) -> bool:
         b, k = _int(byte), _int(bit)

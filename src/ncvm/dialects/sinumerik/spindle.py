@@ -16,8 +16,8 @@ stage at power-on.
 
 from __future__ import annotations
 
-from ...nc.spindle import SINUMERIK_GEARS
-from .ncdata import Cl800Error
+from ...nc.spindle import SINUMERIK_GEARS, Gearbox
+from .errors import Cl800Error
 
 MASTER_SPINDLE = 1
 #: the gear M functions as the channel sees them ("M41") -> their number in the gear table (nc/spindle.py)
@@ -41,16 +41,23 @@ def spindle_number(v: float, top: int, what: str) -> int:
     return MASTER_SPINDLE
 
 
-class SpindleReads:
-    """Mixed into the channel: the spindle's @ code reads."""
+class Spindle:
+    """The channel's spindle: its gear stages and its @ code reads. ``buffer``: the decoded blocks not yet
+    executed (their S words and G96/G97 are the programmed setpoints)."""
 
-    def spindle_word(self, v: float, line: int) -> str:
+    def __init__(self, kernel, data, buffer, gearbox: Gearbox):
+        self.kernel = kernel
+        self.data = data
+        self.buffer = buffer
+        self.gearbox = gearbox
+
+    def word(self, v: float, line: int) -> str:
         """PRSS(<spindle>) = value (@442, L3318-3326): the S word of the block; spindle 0 is the master
         spindle, the only one here."""
         spindle_number(v, 1 if self.data.control in ("810", "820") else 6, "PRSS")
         return "S"
 
-    def spindle_read(self, code: str, args: tuple) -> float:
+    def read(self, code: str, args: tuple) -> float:
         k = self.kernel
         wide = 6 if self.data.control == "880" else 4  # ch.6 table L4907-4912
         if code == "363":

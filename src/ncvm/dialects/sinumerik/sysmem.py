@@ -1,71 +1,50 @@
-"""Main groups 3, 4, 7 and a: system memory <-> R parameters, NC functions, I/O (digest §4.3-4.7).
+"""Main groups 3, 4, 7 and a as the channel runs them (digest §4.3-4.7).
 
 Reads are ``read(code, target, args)`` (the result goes to R<target>, and on
 for multi-register results); writes are ``write(code, args)`` with the value
-last. Each table row names the data area, the access width and the address
-range of manual ch.10; a value outside a range is the NC alarm "CL 800 error".
+last; both, and ``nc_function``, call the run-time function the code's row
+names: on the channel's parts (``memory``, ``plc``, ``spindle``) or here,
+where the kernel and the program are needed: zero offsets and positions, the
+G state, PREP REF / INT SEC, REL / INTA, MEAS M, the operator panel and V24.
 """
 
 from __future__ import annotations
 
 import math
+from operator import attrgetter
 
 from ...diagnostics import RuntimeFault
-from ...machine.scenario import ExternalInput, ProbeSwitch
+from ...machine.scenario import ExternalInput
 from ...nc.block import Block
+from ...nc.canon import Src
 from ...nc.dynamics import trapezoid_distance, trapezoid_time
-from ...nc.probe import OffPath, ProbeLatch, announce, trip_on_path
+from ...nc.kernel import PLANES
+from ...nc.probe import ProbeLatch, announce
 from . import v24
+from .atcodes import AT_CODES
 from .contour import check_window, contour_elements, intersect
+from .errors import Cl800Error
 from .inta_path import arc_path, straight_path
-from .ncdata import Cl800Error, int_to_pattern, nc8, pattern_to_int
+from .ncdata import in_range as _rng
+from .ncdata import nc8
+from .ncdata import whole as _i
 from .rotation import angle_address, block_frame, machine_frame, program_frame, program_point
 from .spindle import MASTER_SPINDLE
 
-#: code -> (area, width, (lo, hi) address range); width: word, byte, bit
-MD_SD = {
-    "0": ("nc_md", "word", (0, 4999)), "1": ("nc_md", "byte", (5000, 6999)), "2": ("nc_md", "bit", (5000, 6999)),
-    "3": ("cycle_md", "word", (0, 4149)), "4": ("cycle_md", "byte", (800, 8049)),
-    "5": ("cycle_md", "bit", (800, 8049)),
-    "6": ("plc_md", "word", (0, 5999)), "7": ("plc_md", "byte", (2000, 8999)), "8": ("plc_md", "bit", (2000, 8999)),
-    "9": ("drive_md", "word", (0, 4960)), "a": ("drive_md", "byte", (2440, 4630)),
-    "b": ("drive_md", "bit", (2440, 4630)),
-}
-SD = {
-    "0": ("nc_sd", "word", (0, 4999)), "1": ("nc_sd", "byte", (5000, 9999)), "2": ("nc_sd", "bit", (5000, 9999)),
-    "3": ("cycle_sd", "word", (0, 499)), "4": ("cycle_sd", "byte", (800, 949)), "5": ("cycle_sd", "bit", (800, 949)),
-}
-CHANNEL_ARG = {"cycle_md", "cycle_sd"}
-#: programmed control words of digital drives, read (@34b/@34c) and written (@44b/@44c): name, unit, top byte
-DRIVE_CONTROL = {"34b": ("PCDA", "axis", 1), "44b": ("PCDA", "axis", 1), "34c": ("PCDS", "spindle", 5),
-                 "44c": ("PCDS", "spindle", 5)}  # first argument is the channel (0 = own)
-PLC_BIT_AREA = {"380": "I", "381": "Q", "382": "F", "482": "F"}
-PLC_BYTE_AREA = {"390": "I", "391": "Q", "392": "P", "393": "F", "493": "F"}
-PLC_WORD_AREA = {"3a0": "I", "3a1": "Q", "3a2": "P", "3a3": "F", "4a3": "F"}
+#: G group -> its G functions, the first the power-on state (ACG, @36b)
 ACG_GROUPS = {0: (0, 1, 10, 11, 2, 3, 33, 34, 35, 6, 12, 13, 5, 7), 1: (9,), 2: (17, 18, 19, 16), 3: (40, 41, 42),
               4: (53,), 5: (54, 55, 56, 57), 6: (4, 25, 26, 58, 59, 92, 74), 7: (60, 63, 64, 62), 8: (70, 71),
               9: tuple(range(80, 90)), 10: (90, 91, 68), 11: (94, 95, 96, 97), 13: (50, 51)}
 
-
-def _i(v: float) -> int:
-    n = int(v)
-    if n != v:
-        raise Cl800Error(f"{v:g} is not a whole number")
-    return n
-
-
-def _rng(what: str, v: float, lo: int, hi: int) -> int:
-    n = _i(v)
-    if not lo <= n <= hi:
-        raise Cl800Error(f"{what} {n} outside {lo}-{hi}")
-    return n
+#: @ code -> the channel's run-time function of its row (``plc.read``: a function of the channel's PLC)
+_RUN = {code: attrgetter(row.run) for code, row in AT_CODES.items() if row.run}
 
 
 class SysMem:
-    """Mixed into the channel: system memory access, NC functions and I/O."""
+    """Mixed into the channel: the @ codes that need its kernel and program (offsets, positions, NC
+    functions, probing, I/O)."""
 
     def __init__(self):
-        self.probes: list[ProbeSwitch] = []  # probe events whose time has come, not yet used by MEAS M
         self.contours: dict[int, list] = {}
         self.g16_plane: tuple[int, int, int] | None = None
         self.g16_minus = (False, False, False)
@@ -167,115 +146,38 @@ class SysMem:
         self.R[first:first + len(values)] = [fix(v) for v in values]
 
     def _read(self, code: str, target: int, args: tuple):
-        sub, fn = code[1], code[2]
-        d = self.data
-        if sub == "0":
-            return self._mem_read(*MD_SD[fn], args)
-        if sub == "1":
-            return self._mem_read(*SD[fn], args)
-        if code == "320":
-            return self._to(args)[_rng("TO parameter P", args[2], 0, 15)]
-        if sub == "3":
-            return self._zo_read(code, args)
-        if code in ("342", "345", "363", "364", "3e4"):
-            return self.spindle_read(code, args)
-        if code in ("34b", "34c", "3e1", "3e2", "3e3"):
-            return self._drive_bit(code, args)
-        if code == "360":
-            return self.kernel.workpiece_position()[self.kernel.axis_names[self._axis(args[0])]]
-        if code in ("361", "362"):
-            i = self._axis(args[0])
-            pos = self.kernel.machine_pos[i] / self.kernel.scale
-            if self.session.machine.axes[i].rotary:
-                return [pos % 360.0, float(math.floor(pos / 360.0))]
-            return pos
-        if code in ("367", "36a", "36b"):
-            self._own_channel(args[0])  # ACAS, ACD, ACG
-        if code == "367":
-            plane = self.g16_plane or {17: (1, 2, 3), 18: (3, 1, 2), 19: (2, 3, 1)}[self.kernel.plane]
-            out = [float(a + (128 if m else 0)) for a, m in zip(plane, self.g16_minus)]
-            return out + [0.0, float(MASTER_SPINDLE)]
-        if code == "36a":
-            return float(self.tool_d)
-        if code == "36b":
-            return self._acg(_rng("G group", args[1], 0, 23))
-        if code == "371":
-            self._own_channel(args[0], independent=99)
-            return d.sob.get(f"{_i(args[0])}:{_i(args[1])}", d.sob.get(str(_i(args[1])), 0.0))
-        if code == "372":
-            return float(d.channel)
-        if sub in "89ab":
-            return self.plc_read(code, args)
-        if code == "3c0":
-            return [n + ch / 100.0 for n, ch in d.alarms] or 0.0
-        if code == "3d0":
-            return float(len(d.alarms))
-        raise Cl800Error(f"@{code} is not available")
+        return _RUN[code](self)(code, args)
 
-    def _data_area(self, area: str, width: str, rng: tuple) -> tuple:
-        """The address range of an MD/SD area on this control; the CL 800 error where the control has no
-        such data (ch.6 table L4817-4845: cycle MD/SD on the 850/880 only, drive MD on the 810/820 only;
-        PLC MD words 0-1999 and bytes 2000-3999 on the 810/820, 0-5999 and 6000-8999 on the 850/880,
-        L6506-6508)."""
-        control = self.data.control
-        small = control in ("810", "820")
-        if area in ("cycle_md", "cycle_sd") and small:
-            raise Cl800Error(f"cycle {'machine' if area == 'cycle_md' else 'setting'} data exist on the "
-                             f"SINUMERIK 850/880 only, not on the {control}")
-        if area == "drive_md" and not small:
-            raise Cl800Error(f"drive machine data exist on the SINUMERIK 810/820 only, not on the {control}")
-        if area == "plc_md":
-            return ((0, 1999) if small else (0, 5999)) if width == "word" else ((2000, 3999) if small else (6000, 8999))
-        return rng
+    def acpw(self, code: str, args: tuple) -> float:
+        """ACPW (@360): the actual position in the workpiece system."""
+        return self.kernel.workpiece_position()[self.kernel.axis_names[self._axis(args[0])]]
 
-    def _mem_read(self, area: str, width: str, rng: tuple, args: tuple):
-        rng = self._data_area(area, width, rng)
-        args = self._channel_args(area, args)
-        table = self.data.areas[area]
-        addr = _rng(f"{area} address", args[0], *rng)
-        if width == "word":
-            return table.get(str(addr), 0.0)
-        if area == "drive_md":  # MDDBY(w, hl): low (0) / high (1) byte of a word
-            word = int(table.get(str(addr), 0.0))
-            hl = _rng("byte (0 low / 1 high)", args[1], 0, 1)
-            byte = (word >> (8 * hl)) & 0xFF
-            if width == "byte":
-                return int_to_pattern(byte)
-            return float((byte >> _rng("bit", args[2], 0, 7)) & 1)
-        pattern = table.get(str(addr), 0.0)
-        if width == "byte":
-            return pattern
-        return float((pattern_to_int(pattern) >> _rng("bit", args[1], 0, 7)) & 1)
+    def acp(self, code: str, args: tuple):
+        """ACPM / ACP (@361/@362): the machine position; of a rotary axis the angle and the turns."""
+        i = self._axis(args[0])
+        pos = self.kernel.machine_pos[i] / self.kernel.scale
+        if self.session.machine.axes[i].rotary:
+            return [pos % 360.0, float(math.floor(pos / 360.0))]
+        return pos
 
-    def _channel_args(self, area: str, args: tuple) -> tuple:
-        if area in CHANNEL_ARG:
-            self._own_channel(args[0])
-            return args[1:]
-        return args
+    def acas(self, code: str, args: tuple) -> list[float]:
+        """ACAS (@367): the axes of the plane (G16) and the master spindle."""
+        self.memory.own_channel(args[0])
+        plane = self.g16_plane or {17: (1, 2, 3), 18: (3, 1, 2), 19: (2, 3, 1)}[self.kernel.plane]
+        out = [float(a + (128 if m else 0)) for a, m in zip(plane, self.g16_minus)]
+        return out + [0.0, float(MASTER_SPINDLE)]
 
-    def _own_channel(self, v: float, independent: int | None = None) -> None:
-        """A channel operand (0 = own channel, 0-16): the simulated NC CPU runs only this channel, so any
-        other channel's system memory is on another CPU, the "CL 800 error" (L2351, L2553, L2693).
-        ``independent``: the number that means channel-independent data (SOB: 99)."""
-        ch = _i(v)
-        if ch == independent:
-            return
-        _rng("channel", ch, 0, 16)
-        if ch not in (0, self.data.channel):
-            raise Cl800Error(f"channel {ch} is not on this NC CPU")
+    def acd(self, code: str, args: tuple) -> float:
+        """ACD (@36a): the active D number."""
+        self.memory.own_channel(args[0])
+        return float(self.tool_d)
 
-    def _to(self, args: tuple) -> list[float]:
-        top_area = {"810": 0, "820": 0, "850": 8, "880": 16}[self.data.control]
-        area = _rng("TO area", args[0], 0, top_area)
-        if area == 0:
-            area = self.data.to_area
-        d = _rng("D number", args[1], 1, {"810": 99, "820": 99, "850": 409, "880": 818}[self.data.control])
-        key = f"{area}:{d}"
-        if key not in self.data.to:
-            self.data.to[key] = [0.0] * 16
-        return self.data.to[key]
+    def acg(self, code: str, args: tuple) -> float:
+        """ACG (@36b): the active G function of a group."""
+        self.memory.own_channel(args[0])
+        return self._acg(_rng("G group", args[1], 0, 23))
 
-    def _zo_read(self, code: str, args: tuple) -> float:
+    def zo_read(self, code: str, args: tuple) -> float:
         d = self.data
         if code == "330":
             g = _rng("ZO group", args[0], 1, 4)
@@ -298,7 +200,7 @@ class SysMem:
                 total += k.tool_length
             return total
         if code in ("337", "338"):
-            self._channel_args("cycle_md", args[:1])
+            self.memory.channel_args("cycle_md", args[:1])
             kind = "settable" if code == "337" else "programmable"
             g = _rng("rotation group", args[1], 1, 4 if code == "337" else 2)
             return d.rot.get(f"{kind}:{g}", 0.0)
@@ -312,93 +214,29 @@ class SysMem:
             return float(state[group])
         return float(ACG_GROUPS.get(group, (0,))[0])
 
-    def _drive_bit(self, code: str, args: tuple) -> float:
-        """RSDA/RSDS/RSDD: status bits of the digital drives, from the machine file (``sob`` keys
-        ``3e1:axis:byte:bit`` ...); PCDA/PCDS: the programmed control bits, as PCDA/PCDS wrote them."""
-        if code in DRIVE_CONTROL:
-            return self.data.sob.get(self._control_bit(code, args), 0.0)
-        key = f"{code}:{':'.join(str(_i(a)) for a in args)}"
-        return self.data.sob.get(key, 0.0)
-
-    def _control_bit(self, code: str, args: tuple, writing: bool = False) -> str:
-        """The key of one bit of a programmed control word of a digital drive: PCDA (axis 1-24, byte 0/1,
-        bit 0-7, written 4-6) or PCDS (spindle 1-10, byte 0-5, bit 0-7) (L2571-2587, L6543-6544, L6674)."""
-        name, units, top_byte = DRIVE_CONTROL[code]
-        unit = _rng(f"{name} {units} number", args[0], 1, 24 if units == "axis" else 10)
-        byte = _rng(f"{name} byte", args[1], 0, top_byte)
-        bit = _rng(f"{name} bit", args[2], *((4, 6) if writing and name == "PCDA" else (0, 7)))
-        return f"{name}:{unit}:{byte}:{bit}"
-
     # -- writes (main group 4) -------------------------------------------
     def write(self, code: str, args: tuple) -> None:
-        if code not in ("437", "438", "439", "43a"):
+        if AT_CODES[code].lower != "write_rotation":
             # data written by decoding serves the blocks decoded after it; rotation angles act at once,
             # even on blocks already decoded (L4325-4334)
             self.run_buffer()
-        sub, fn = code[1], code[2]
-        d = self.data
         *where, value = args
-        if sub in "01":
-            area, width, rng = (MD_SD if sub == "0" else SD)[fn]
-            rng = self._data_area(area, width, rng)
-            where = self._channel_args(area, tuple(where))
-            addr = _rng(f"{area} address", where[0], *rng)
-            table = d.areas[area]
-            if width == "word":
-                table[str(addr)] = float(value)
-            elif area == "drive_md":  # MDDBY/MDDBI(w, hl[, bit]): a byte of a drive MD word
-                word = int(table.get(str(addr), 0.0))
-                shift = 8 * _rng("byte (0 low / 1 high)", where[1], 0, 1)
-                byte = (word >> shift) & 0xFF
-                if width == "byte":
-                    byte = pattern_to_int(value)
-                else:
-                    if value not in (0.0, 1.0):
-                        raise Cl800Error(f"bit value {value:g} is not 0 or 1")
-                    bit = _rng("bit", where[2], 0, 7)
-                    byte = byte | (1 << bit) if value else byte & ~(1 << bit)
-                table[str(addr)] = float((word & ~(0xFF << shift)) | (byte << shift))
-            elif width == "byte":
-                pattern_to_int(value)
-                table[str(addr)] = float(value)
-            else:
-                bit = _rng("bit", where[1], 0, 7)
-                if value not in (0.0, 1.0):
-                    raise Cl800Error(f"bit value {value:g} is not 0 or 1")
-                bits = pattern_to_int(table.get(str(addr), 0.0))
-                bits = bits | (1 << bit) if value else bits & ~(1 << bit)
-                table[str(addr)] = int_to_pattern(bits)
-            d.dirty.add(area)
-            return
-        if code in ("420", "423"):
-            p = self._to(tuple(where))
-            i = _rng("TO parameter P", where[2], 0, 15)
-            p[i] = value if code == "420" else p[i] + value
-            d.dirty.add("to")
-            if self.tool_d and _i(where[1]) == self.tool_d:
-                self.select_d(self.tool_d, 0)
-            return
-        if sub == "3":
-            self._zo_write(code, where, value)
-            return
-        if code in DRIVE_CONTROL:
-            if value not in (0.0, 1.0):
-                raise Cl800Error(f"bit value {value:g} is not 0 or 1")
-            d.sob[self._control_bit(code, tuple(where), writing=True)] = float(value)
-            return
-        if code == "4e1":  # SATC (L3562-3579, L6704): kept per spindle and gear stage
-            spindle, gear = _rng("spindle", where[0], 0, 6), _rng("gear stage", where[1], 1, 8)
-            d.sob[f"SATC:{spindle}:{gear}"] = float(_rng("acceleration time constant", value, 0, 16000))
-            return
-        if sub in "89ab":
-            self.plc_write(code, tuple(where), value)
-            return
-        if code == "4c0":
-            self.cycle_alarm(value)
-            return
-        raise Cl800Error(f"@{code} is not available")
+        _RUN[code](self)(code, tuple(where), value)
 
-    def _zo_write(self, code: str, where: list, value: float) -> None:
+    def to_write(self, code: str, where: tuple, value: float) -> None:
+        """TOS / TOAD (@420/@423): set or add to a tool offset parameter."""
+        p = self.memory.to_entry(where)
+        i = _rng("TO parameter P", where[2], 0, 15)
+        p[i] = value if code == "420" else p[i] + value
+        self.data.dirty.add("to")
+        if self.tool_d and _i(where[1]) == self.tool_d:
+            self.select_d(self.tool_d, 0)
+
+    def alnz(self, code: str, where: tuple, value: float) -> None:
+        """ALNZ (@4c0): raise a cycle alarm."""
+        self.cycle_alarm(value)
+
+    def zo_write(self, code: str, where: tuple, value: float) -> None:
         d = self.data
         if code in ("430", "431"):
             g = _rng("ZO group", where[0], 1, 4)
@@ -417,7 +255,7 @@ class SysMem:
             d.load_preset(self._axis(where[0]), value)
             return
         elif code in ("437", "438", "439", "43a"):
-            self._channel_args("cycle_md", tuple(where[:1]))
+            self.memory.channel_args("cycle_md", tuple(where[:1]))
             kind = "settable" if code in ("437", "438") else "programmable"
             g = _rng("rotation group", where[1], 1, 4 if kind == "settable" else 2)
             key = f"{kind}:{g}"
@@ -437,172 +275,33 @@ class SysMem:
         if n <= 4299 and self.cycle_alarm_stop:
             raise RuntimeFault(str(n), f"cycle alarm {n} (ALNZ)")
 
-    # -- PLC (850/880) -----------------------------------------------------
-    def _plc_no(self, v: float) -> int:
-        """The PLC number; scripted PLC events up to now have happened when the NC looks at a PLC."""
-        if self.data.control not in ("850", "880"):
-            raise Cl800Error("PLC access needs a SINUMERIK 850 or 880")
-        n = _rng("PLC number", v, 1, 4 if self.data.control == "880" else 2)
-        self.advance_scenario()
-        return n
-
-    def _plc(self, v: float) -> dict:
-        return self.data.plc.setdefault(self._plc_no(v), {})
-
-    def _put_byte(self, plc_no: int, area: str, byte: int, bits: int, when: float | None = None) -> None:
-        """Store a PLC I/Q/P/F byte; rising edges of bits wired to timers and counters drive them."""
-        plc = self.data.plc.setdefault(plc_no, {})
-        old = self._byte(plc, area, byte, True)
-        plc.setdefault(area, {})[str(byte)] = int_to_pattern(bits)
-        now = self.session.machine.clock.now if when is None else when
-        self.plc_clock.byte_changed(plc_no, area, byte, old, bits & 0xFF, now)
-
-    def _byte(self, plc: dict, area: str, byte: int, writing: bool = False) -> int:
-        table = plc.setdefault(area, {})
-        if str(byte) not in table:
-            if area == "P" and not writing:
-                raise Cl800Error(f"peripheral byte {byte} does not exist: the PLC goes to STOP")
-            return 0
-        v = table[str(byte)]
-        return pattern_to_int(float(v)) if isinstance(v, (int, float)) else int(str(v), 2)
-
-    def plc_bit(self, plc_no: int, area: str, byte: int, bit: int, value: int, when: float | None = None) -> None:
-        """Set or clear one PLC bit (at time ``when``, default now)."""
-        bits = self._byte(self.data.plc.setdefault(plc_no, {}), area, byte, True)
-        self._put_byte(plc_no, area, byte, bits | (1 << bit) if value else bits & ~(1 << bit), when)
-
-    def _dw(self, plc: dict, db: float, dw: float) -> int:
-        b = _i(db)
-        if not (1 <= b <= 255 or 1000 <= b <= 1255):
-            raise Cl800Error(f"data block {b} outside DB 1-255 / DX 1000-1255")
-        words = plc.setdefault("DB", {}).get(str(b))
-        n = _rng("data word", dw, 0, 2043)
-        if words is None or n >= len(words):
-            raise Cl800Error(f"DB{b} DW{n} does not exist in the PLC")
-        return int(words[n]) & 0xFFFF
-
-    def plc_read(self, code: str, args: tuple):
-        plc = self._plc(args[0])
-        if code in PLC_BIT_AREA:
-            top = 255 if PLC_BIT_AREA[code] == "F" else 127
-            return float((self._byte(plc, PLC_BIT_AREA[code], _rng("byte", args[1], 0, top))
-                          >> _rng("bit", args[2], 0, 7)) & 1)
-        if code == "383":
-            return float((self._dw(plc, args[1], args[2]) >> _rng("bit", args[3], 0, 15)) & 1)
-        if code in PLC_BYTE_AREA:
-            top = 255 if PLC_BYTE_AREA[code] == "F" else 127
-            return int_to_pattern(self._byte(plc, PLC_BYTE_AREA[code], _rng("byte", args[1], 0, top)))
-        if code in ("394", "395"):
-            w = self._dw(plc, args[1], args[2])
-            return int_to_pattern(w >> 8 if code == "394" else w & 0xFF)
-        if code in PLC_WORD_AREA:
-            area = PLC_WORD_AREA[code]
-            n = _rng("word", args[1], 0, 254 if area == "F" else 126)
-            word = (self._byte(plc, area, n) << 8) | self._byte(plc, area, n + 1)
-            return _from_dim(word, 16, _i(args[2]))
-        if code in ("3a4", "3a5"):
-            no, number = _i(args[0]), _rng("timer/counter number", args[1], 0, 255)
-            if code == "3a4":  # seconds, 2 digits after the decimal point (L2852)
-                return self.plc_clock.timer_seconds(no, number, self.session.machine.clock.now)
-            return self.plc_clock.counter_value(no, number)
-        if code in ("3b0", "3b1", "3b2"):
-            # no. of DW: PLCDF 1/2 (L2870-2894), PLCDB 1-3 (L2896-2924), as for the writes @4b0/@4b1
-            n = 2 if code == "3b2" else _rng("number of data words", args[3], 1, 3 if code == "3b1" else 2)
-            words = [self._dw(plc, args[1], args[2] + k) for k in range(n)]
-            if code == "3b2":
-                import struct
-                return struct.unpack(">f", struct.pack(">HH", *words))[0]
-            if code == "3b1":
-                digits = "".join(f"{w:04x}" for w in words)
-                if any(c not in "0123456789" for c in digits):
-                    raise Cl800Error(f"DB data {digits} is not BCD")
-                return _scale(int(digits), _i(args[4]) % 100)
-            raw = 0
-            for w in words:
-                raw = (raw << 16) | w
-            return _from_dim(raw, 16 * n, _i(args[4]) % 10)
-        raise Cl800Error(f"@{code} is not available")
-
-    def plc_write(self, code: str, where: tuple, value: float) -> None:
-        no = self._plc_no(where[0])
-        plc = self.data.plc.setdefault(no, {})
-        if code == "482":
-            byte = _rng("byte", where[1], 0, 255)
-            if value not in (0.0, 1.0):
-                raise Cl800Error(f"bit value {value:g} is not 0 or 1")
-            self.plc_bit(no, "F", byte, _rng("bit", where[2], 0, 7), int(value))
-        elif code == "483":
-            w = self._dw(plc, where[1], where[2])
-            k = _rng("bit", where[3], 0, 15)
-            if value not in (0.0, 1.0):
-                raise Cl800Error(f"bit value {value:g} is not 0 or 1")
-            self._set_dw(plc, where[1], where[2], w | (1 << k) if value else w & ~(1 << k))
-        elif code == "493":
-            self._put_byte(no, "F", _rng("byte", where[1], 0, 255), pattern_to_int(value))
-        elif code in ("494", "495"):
-            w = self._dw(plc, where[1], where[2])
-            b = pattern_to_int(value)
-            w = (b << 8) | (w & 0xFF) if code == "494" else (w & 0xFF00) | b
-            self._set_dw(plc, where[1], where[2], w)
-        elif code == "4a3":
-            n = _rng("word", where[1], 0, 254)
-            raw = _to_dim(value, 16, _i(where[2]))
-            self._put_byte(no, "F", n, raw >> 8)
-            self._put_byte(no, "F", n + 1, raw & 0xFF)
-        elif code in ("4b0", "4b1", "4b2"):
-            if code == "4b2":
-                import struct
-                words = list(struct.unpack(">HH", struct.pack(">f", value)))
-            elif code == "4b1":
-                n = _rng("number of data words", where[3], 1, 3)
-                v = round(abs(value) * 10 ** max(0, _i(where[4]) % 100 - 1))
-                digits = f"{v:0{4 * n}d}"
-                if len(digits) > 4 * n:
-                    raise Cl800Error(f"{value:g} does not fit {n} BCD data words")
-                words = [int(digits[4 * k:4 * k + 4], 16) for k in range(n)]
-            else:
-                n = _rng("number of data words", where[3], 1, 2)
-                raw = _to_dim(value, 16 * n, _i(where[4]) % 10)
-                words = [(raw >> (16 * (n - 1 - k))) & 0xFFFF for k in range(n)]
-            for k, w in enumerate(words):
-                self._dw(plc, where[1], where[2] + k)
-                self._set_dw(plc, where[1], where[2] + k, w)
-        else:
-            raise Cl800Error(f"@{code} is not available")
-
-    def _set_dw(self, plc: dict, db: float, dw: float, value: int) -> None:
-        plc["DB"][str(_i(db))][_i(dw)] = value & 0xFFFF
-
-    def plc_set_event(self, ev) -> None:
-        """A scripted change of a PLC I/Q/P/F bit or byte (``[[scenario]]`` kind "plc", a PlcChange)."""
-        if ev.bit is not None:
-            self.plc_bit(ev.plc, ev.area, ev.byte, ev.bit, 1 if ev.value is None or ev.value else 0, ev.time)
-            return
-        value = 0 if ev.value is None else ev.value
-        self._put_byte(ev.plc, ev.area, ev.byte,
-                       int(value, 2) if isinstance(value, str) else pattern_to_int(float(value)), ev.time)
-
     def rotation_active(self) -> bool:
         """A settable or programmable coordinate rotation is selected (some angle is not 0)."""
         return any(a != 0.0 for a in self.data.rot.values())
 
     # -- main group 7 ------------------------------------------------------
     def nc_function(self, code: str, args: tuple, line: int) -> None:
-        if code == "714" or (code == "715" and self.rotation_active()):
-            self.stop_dec()  # lockstep (decode_ahead = 0): the buffer is always empty
-            return
-        if code == "715":
-            return  # STOP DEC1 waits only while a coordinate rotation is selected (L4330-4334)
-        if code == "713":
-            target = args[0]
-            check_window(target, 2, ((0, 98), (900, 998)), "PREP CYC output")  # L4268
-            diameter = self.data.areas["nc_md"].get("diameter_axis1", 0.0)
-            self.store(target, [1.0 if self.kernel.scale == 1.0 else 0.03937, 2.0 if diameter else 1.0])
-            return
-        if code == "710":
-            self.prep_ref(int(args[0]), int(args[1]))
-            return
-        raise Cl800Error(f"@{code} is not available")
+        _RUN[code](self)(args)
+
+    def stop_dec_now(self, args: tuple) -> None:
+        """STOP DEC (@714)."""
+        self.stop_dec()  # lockstep (decode_ahead = 0): the buffer is always empty
+
+    def stop_dec1(self, args: tuple) -> None:
+        """STOP DEC1 (@715) waits only while a coordinate rotation is selected (L4330-4334)."""
+        if self.rotation_active():
+            self.stop_dec()
+
+    def prep_cyc(self, args: tuple) -> None:
+        """PREP CYC (@713): the unit factor and the diameter flag into R<v>, R<v+1>."""
+        target = args[0]
+        check_window(target, 2, ((0, 98), (900, 998)), "PREP CYC output")  # L4268
+        diameter = self.data.areas["nc_md"].get("diameter_axis1", 0.0)
+        self.store(target, [1.0 if self.kernel.scale == 1.0 else 0.03937, 2.0 if diameter else 1.0])
+
+    def prep_ref_args(self, args: tuple) -> None:
+        """PREP REF (@710) with the R numbers of its operands."""
+        self.prep_ref(int(args[0]), int(args[1]))
 
     # -- PREP REF / INT SEC ------------------------------------------------
     def _plane_axes(self) -> tuple[str, str]:
@@ -610,7 +309,6 @@ class SysMem:
         if self.g16_plane:
             h, v = self.g16_plane[0], self.g16_plane[1]
             return k.axis_names[h - 1], k.axis_names[v - 1]
-        from ...nc.kernel import PLANES
         a, b = PLANES[k.plane][:2]
         return a, b
 
@@ -755,7 +453,7 @@ class SysMem:
             i = k.axis_of[name]
             value = turned[name] * scale
             end[name] = value if machine else k.offset_vec[i] + (value if absolute else shown[i] + value)
-        hit = self._trigger_point(self._probe_hit(probe), start, end)
+        hit = self.probe.trigger_point(self.probe.hit(probe), start, end)
         announce(k.canon, ProbeLatch(probe, dict(hit)), _src(self, line))
         angle = angle_address(self) if self.angle_used else None  # resolved into the axis words
         out = {n: v for n, v in words.items() if n not in k.axis_of and n != angle}
@@ -777,26 +475,6 @@ class SysMem:
             cut[name] = prog / scale if absolute or machine else (prog - shown[i]) / scale
         out.update(cut if machine else program_frame(cut, frame))
         return out
-
-    @staticmethod
-    def _trigger_point(hit, start: dict, end: dict) -> dict:
-        """Machine positions of the traversing axes when the probe switches (nc/probe.py)."""
-        try:
-            return trip_on_path(hit.position, start, end)
-        except OffPath as e:
-            raise RuntimeFault("SIN007", f"MEAS M: {e}") from None
-
-    def _probe_hit(self, probe: int) -> ProbeSwitch:
-        self.advance_scenario()
-        ev = self._scenario.take(lambda e: e.__class__ is ProbeSwitch and e.input == probe)
-        if ev is not None:
-            self.probes.append(ev)
-        hits = [p for p in self.probes if p.input == probe]
-        if not hits:
-            raise RuntimeFault("SIN007", f"MEAS M: probe {probe} never switches (no probe event in the scenario)")
-        hit = hits[0]
-        self.probes.remove(hit)
-        return hit
 
     # -- main group a: operator panel and V24 -------------------------------
     def io(self, code: str, args: tuple) -> None:
@@ -820,14 +498,14 @@ class SysMem:
         elif code == "a25":
             ch = _rng("channel", args[0], 0, 16)
             if ch:
-                self._own_channel(ch)
+                self.memory.own_channel(ch)
             self.v24.extend(v24.zo_lines(self.data, self.session.machine.offset, self.kernel.axis_names, ch))
         elif code == "a26":
             folders = self.session.machine.program_path
             self.v24.extend(v24.data_lines(self.data, lambda kind, a, b: v24.find_programs(folders, kind, a, b),
                                            _i(args[0]), _i(args[1]), _i(args[2])))
         elif code == "a27":
-            self._own_channel(args[0])
+            self.memory.own_channel(args[0])
             lo, hi = _rng("R number", args[1], 0, 999), _rng("R number", args[2], 0, 999)
             for n in range(lo, hi + 1):
                 self.v24.append(f"R{n}={v24.fmt(self.R[n])}")
@@ -840,32 +518,5 @@ class SysMem:
             raise Cl800Error(f"@{code} is not available")
 
 
-def _scale(raw: int, dim: int) -> float:
-    return float(raw) if dim <= 1 else raw / 10 ** (dim - 1)
-
-
-def _from_dim(raw: int, bits: int, dim: int) -> float:
-    if dim >= 100:
-        digits = f"{raw:0{bits // 4}x}"
-        if any(c not in "0123456789" for c in digits):
-            raise Cl800Error(f"{digits} is not BCD")
-        return _scale(int(digits), dim - 100)
-    if raw >= 1 << (bits - 1):
-        raw -= 1 << bits
-    return _scale(raw, dim % 10)
-
-
-def _to_dim(value: float, bits: int, dim: int) -> int:
-    if dim >= 100:
-        v = round(abs(value) * 10 ** max(0, dim - 101))
-        return int(f"{v:0{bits // 4}d}", 16)
-    raw = round(value * 10 ** max(0, dim % 10 - 1))
-    if not -(1 << (bits - 1)) <= raw < (1 << (bits - 1)):
-        raise Cl800Error(f"{value:g} overflows a {bits}-bit PLC value")
-    return raw & ((1 << bits) - 1)
-
-
 def _src(channel, line: int):
-    from ...nc.canon import Src
-
     return Src(channel._current_path(), line)

@@ -26,7 +26,7 @@ from pathlib import Path
 
 from ...machine.files import heads
 from ...source import lines, read_text
-from .ncdata import Cl800Error
+from .errors import Cl800Error
 
 OUTPUT_TYPES = {1: "main programs", 2: "subroutines", 5: "NC machine data", 6: "tool offsets",
                 8: "setting data", 9: "PLC machine data"}

@@ -21,7 +21,7 @@ from . import ast
 from .atcode import ObjectProgram, compile_program
 from .axiswords import axis_diagnostics
 from .checker import check_program
-from .messages import Cl800Error
+from .messages import CompilerMessage
 
 _SNIFF = re.compile(r"^\s*(PROGRAM\s+\d+\s*;|EXTERNAL\s+\d+\s*;|CHANNEL\s+NC\s+\d+|BEGIN\b|END\.|ENDEXTERN)", re.M)
 
@@ -89,7 +89,7 @@ class Cl800Dialect(Dialect):
         if not errs and isinstance(prog, ast.Program):
             try:
                 compile_program(path, prog, sym)  # S064, S120, S125-S127 show only while generating code
-            except Cl800Error as e:
+            except CompilerMessage as e:
                 diags.append(e.diagnostic())
         return diags + axis_diagnostics(path, prog, machine.axis_names)
 
@@ -97,7 +97,7 @@ class Cl800Dialect(Dialect):
         last = _last_text_line(text)
         if _PROGRAM_START.match(_strip_comments(text)) and not re.search(r"\bEND\s*\.\s*$", last[1]):
             # the WS 800 A compiles only a program file that ends with END.<CR> (E300, L6236)
-            raise CompileFailed([Cl800Error("E300", path, last[0], None, "the file does not end with END.")
+            raise CompileFailed([CompilerMessage("E300", path, last[0], None, "the file does not end with END.")
                                  .diagnostic()])
         prog, sym, errors = self.analyse(path, text, machine)
         errs = [e for e in errors if not e.code.startswith("W")]
@@ -107,7 +107,7 @@ class Cl800Dialect(Dialect):
             raise UsageError(f"{path}: external lists are not compiled (WS 800 A compiles programs only)")
         try:
             return compile_program(path, prog, sym)
-        except Cl800Error as e:
+        except CompilerMessage as e:
             raise CompileFailed([e.diagnostic()]) from None
 
     def compile(self, path, text, machine, out, xref):

@@ -15,7 +15,7 @@ from dataclasses import dataclass, field
 from . import ast
 from .checker import Symbols
 from .lexer import norm
-from .messages import Cl800Error
+from .messages import CompilerMessage
 from .tables import FUNCTIONS, LOGIC, NC_FUNCTIONS, PROCEDURES, RELOPS, SYS_READS, SYS_WRITES
 
 MAX_BLOCK = 120  # characters per NC block (L1008, S064)
@@ -80,8 +80,8 @@ class Compiler:
         self.label_index: dict[str, int] = {}
 
     # -- blocks --------------------------------------------------------------
-    def err(self, code: str, line: int, detail: str = "") -> Cl800Error:
-        return Cl800Error(code, self.path, line, None, detail)
+    def err(self, code: str, line: int, detail: str = "") -> CompilerMessage:
+        return CompilerMessage(code, self.path, line, None, detail)
 
     def emit(self, text: str, line: int | None = None) -> None:
         line = self.line if line is None else line

@@ -11,7 +11,8 @@ from dataclasses import fields
 from ....diagnostics import Diagnostic, Span, read_lines
 from ....nc.axiswords import missing_axis_message
 from ..codegen import dwells, missing_axis
-from ..reader import ReadError, Word, read_block
+from ..errors import ReadError
+from ..reader import Word, read_block
 from . import ast
 
 

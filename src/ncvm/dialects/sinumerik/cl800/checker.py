@@ -15,7 +15,7 @@ from ....machine.files import find_in
 from ....source import read_text
 from . import ast
 from .lexer import Lexer, norm
-from .messages import Cl800Error
+from .messages import CompilerMessage
 from .parser import Parser
 from .tables import FUNCTIONS, NC_FUNCTIONS, PROCEDURES, SYS_READS
 
@@ -57,13 +57,13 @@ class Checker:
     def __init__(self, path: str, prog: ast.Program, search: list[Path], control: str = "880"):
         self.path, self.prog, self.search = path, prog, search
         self.max_program = 999 if control in ("810", "820") else 9999  # L1069
-        self.errors: list[Cl800Error] = []
+        self.errors: list[CompilerMessage] = []
         self.sym = Symbols()
         self.placed: dict[str, int] = {}
         self.gotos: list[ast.Goto] = []
 
     def err(self, code: str, node, detail: str = "", file: str | None = None) -> None:
-        self.errors.append(Cl800Error(code, file or self.path, node.line, node.col, detail))
+        self.errors.append(CompilerMessage(code, file or self.path, node.line, node.col, detail))
 
     # -- declarations --------------------------------------------------------
     def check(self) -> Symbols:
@@ -76,10 +76,10 @@ class Checker:
             self.declare(d)
         for key, (_num, line, col, _raw) in prog.consts.items():
             if key in self.sym.by_name:
-                self.errors.append(Cl800Error("E036", self.path, line, col))
+                self.errors.append(CompilerMessage("E036", self.path, line, col))
         for key, (line, col, _raw) in prog.labels.items():
             if key in self.sym.by_name or key in prog.consts:
-                self.errors.append(Cl800Error("E036", self.path, line, col))
+                self.errors.append(CompilerMessage("E036", self.path, line, col))
         self.block(prog.body, top=True)
         for g in self.gotos:
             key = norm(g.target)
@@ -125,7 +125,7 @@ class Checker:
             self.errors.append(min(errors, key=lambda e: (e.line, e.col or 0)))
             return
         if not isinstance(unit, ast.ExtList):
-            self.errors.append(Cl800Error("E014", str(p), 1, 1))
+            self.errors.append(CompilerMessage("E014", str(p), 1, 1))
             return
         term2 = (unit.ident or "").split("-")[1].strip() if unit.ident and "-" in unit.ident else None
         if term2 is not None and term2.upper() != name.upper():
@@ -138,7 +138,7 @@ class Checker:
                 return
         wrong = [d for d in unit.decls if d.cls != kind]
         if wrong:
-            self.errors.append(Cl800Error("E016" if kind == "GLOBAL" else "E015", str(p), wrong[0].line, wrong[0].col))
+            self.errors.append(CompilerMessage("E016" if kind == "GLOBAL" else "E015", str(p), wrong[0].line, wrong[0].col))
             return
         list_errors = check_list(str(p), unit)
         if list_errors:
@@ -323,19 +323,19 @@ class Checker:
         return e
 
 
-def check_list(path: str, lst: ast.ExtList) -> list[Cl800Error]:
+def check_list(path: str, lst: ast.ExtList) -> list[CompilerMessage]:
     """A list on its own: R ranges per class and channel, no R number or name twice (digest §1.5)."""
     errors, by_r, by_name = [], set(), set()
     for d in lst.decls:
         if d.cls == "GLOBAL" and lst.channel is None:
-            errors.append(Cl800Error("E012", path, d.line, d.col, "GLOBAL lists need CHANNEL NC"))
+            errors.append(CompilerMessage("E012", path, d.line, d.col, "GLOBAL lists need CHANNEL NC"))
         elif not any(d.r in rng for rng in RANGES[d.cls]) or d.cls == "GLOBAL" and (lst.channel == 0) != (d.r >= 150):
-            errors.append(Cl800Error("E054", path, d.line, d.col,
+            errors.append(CompilerMessage("E054", path, d.line, d.col,
                                      "R100..R149 per channel, R150..R199 in a CHANNEL NC 0 list, R900..R999 central"))
         elif d.r in by_r:
-            errors.append(Cl800Error("E042", path, d.line, d.col, f"R{d.r}"))
+            errors.append(CompilerMessage("E042", path, d.line, d.col, f"R{d.r}"))
         elif d.name and norm(d.name) in by_name:
-            errors.append(Cl800Error("E036", path, d.line, d.col, d.name))
+            errors.append(CompilerMessage("E036", path, d.line, d.col, d.name))
         by_r.add(d.r)
         if d.name:
             by_name.add(norm(d.name))

@@ -11,7 +11,7 @@ import re
 from dataclasses import dataclass
 
 from ....source import DIGITS, LETTERS, int_literal
-from .messages import Cl800Error
+from .messages import CompilerMessage
 
 MAX_LINE = 79  # one screen line of the WS 800 A editor (E208)
 
@@ -71,14 +71,14 @@ def norm(name: str) -> str:
 
 
 class Lexer:
-    """Turns a source text into tokens; problems become :class:`Cl800Error` s in ``errors``."""
+    """Turns a source text into tokens; problems become :class:`CompilerMessage` s in ``errors``."""
 
     def __init__(self, path: str, text: str, legacy_names: bool = True):
         self.path, self.text, self.legacy = path, text.replace("\r", ""), legacy_names
-        self.errors: list[Cl800Error] = []
+        self.errors: list[CompilerMessage] = []
 
     def err(self, code: str, line: int, col: int | None, detail: str = "") -> None:
-        self.errors.append(Cl800Error(code, self.path, line, col, detail))
+        self.errors.append(CompilerMessage(code, self.path, line, col, detail))
 
     def tokens(self) -> list[Token]:
         text, out = self.text, []

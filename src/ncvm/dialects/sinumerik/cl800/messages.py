@@ -81,7 +81,7 @@ MESSAGES = {
 }
 
 
-class Cl800Error(Exception):
+class CompilerMessage(Exception):
     """One WS 800 A message at a source position; becomes a Diagnostic."""
 
     def __init__(self, code: str, file: str, line: int, col: int | None = None, detail: str = "",

@@ -14,7 +14,7 @@ from contextlib import contextmanager
 from ....source import LETTERS, MAX_NESTING, NAME_CHARS, too_deep
 from . import ast
 from .lexer import KEYWORDS, KEYWORDS_UPPER, Token, norm
-from .messages import Cl800Error
+from .messages import CompilerMessage
 from .tables import FUNCTIONS, NC_FUNCTIONS, PROCEDURES, RELOPS, SYS_READS, SYS_WRITES, TWO_WORD
 
 TYPES = ("INTEGER", "REAL", "PATTERN", "BOOLEAN")
@@ -28,7 +28,7 @@ class Parser:
     def __init__(self, path: str, tokens: list[Token], source: str, strict: bool = False):
         self.path, self.toks, self.pos, self.strict = path, tokens, 0, strict
         self.lines = source.replace("\r", "").split("\n")
-        self.errors: list[Cl800Error] = []
+        self.errors: list[CompilerMessage] = []
         self.consts: set[str] = set()
         self.statements = 0  # statements (BEGIN ... END too) the parser is inside: NEST001 beyond MAX_NESTING
         self.operands = 0  # nested operands (brackets, operators, arguments): NEST001 beyond MAX_NESTING
@@ -47,9 +47,9 @@ class Parser:
             self.pos += 1
         return t
 
-    def fail(self, code: str, tok: Token | None = None, detail: str = "") -> Cl800Error:
+    def fail(self, code: str, tok: Token | None = None, detail: str = "") -> CompilerMessage:
         t = tok or self.tok
-        return Cl800Error(code, self.path, t.line, t.col, detail, t.end_col if t.text else None)
+        return CompilerMessage(code, self.path, t.line, t.col, detail, t.end_col if t.text else None)
 
     def is_sym(self, s: str) -> bool:
         return self.tok.kind == "SYM" and self.tok.text == s
@@ -141,7 +141,7 @@ class Parser:
     def guarded(self, fn, *args):
         try:
             return fn(*args)
-        except Cl800Error as e:
+        except CompilerMessage as e:
             self.errors.append(e)
             self.sync()
             return None
@@ -152,7 +152,7 @@ class Parser:
         try:
             prog.number = self.uint(header=True)
             self.expect_sym(";", "E001")
-        except Cl800Error as e:
+        except CompilerMessage as e:
             self.errors.append(e)
             self.sync()
         self.guarded(self.channel, prog, False)
@@ -317,7 +317,7 @@ class Parser:
             if not 1 <= lst.number <= 9999:
                 raise self.fail("E027", self.toks[self.pos - 1], "list number 1..9999")
             self.expect_sym(";", "E001")
-        except Cl800Error as e:
+        except CompilerMessage as e:
             self.errors.append(e)
             self.sync()
         while self.tok.kind != "EOF" and not self.is_kw("ENDEXTERN"):
@@ -372,7 +372,7 @@ class Parser:
                     continue
                 # a closing bracket without its opener: "[" / "(" expected
                 raise self.fail("E007" if self.is_sym("]") else "E005" if self.is_sym(")") else "E001")
-            except Cl800Error as e:
+            except CompilerMessage as e:
                 self.errors.append(e)
                 self.sync()
 

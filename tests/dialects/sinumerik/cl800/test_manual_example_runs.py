@@ -1,5 +1,5 @@
-"""Audit of the manual's example programs (digest §9, §5.9): the examples that were only compiled now also
-run, and their results are the ones the manual states (or are computed by hand here).
+"""The manual's example programs of chapters 4, 5, 7 and 8 (digest §9, §5.9) run, and their results are
+the ones the manual states (or are computed by hand here).
 
 The object programs are subroutines: their LOCAL parameters are popped back at ``M17``. The debug hook
 sees the R parameters before every block, so ``_states`` gives the values a program had before each of
