@@ -16,6 +16,7 @@ from .axiswords import axis_diagnostics
 from .codegen import generate
 from .linker import link
 from .linktables import LinkTables
+from .runtime import CplRuntime
 
 _CPL_LINE = re.compile(r"^\s*\d+\s*(REM|IF|FOR|WHILE|GOTO|CALL|DIM|CASE|[A-Z#@][A-Z0-9_]*[%!?$]?\s*(\(.*\))?\s*=)",
                        re.I)
@@ -56,8 +57,6 @@ class CplDialect(Dialect):
         return diags
 
     def run(self, path, text, session):
-        from .runtime import CplRuntime
-
         tables = LinkTables(session.options.state_dir / "link", session.machine.file_root)
         res, diags = self.link(path, text, session.machine, tables)
         if diags:

@@ -238,7 +238,7 @@ class Gen:
         if not b.min_args <= n <= b.max_args:
             raise GenError("CPL001", f"{e.name} takes {b.min_args}..{b.max_args} arguments, not {n}")
         codes, types = [], []
-        refs, out = getattr(b, "refs", ()), getattr(b, "out", None)
+        refs, out = b.refs, b.out
         backs: list = []  # (variable, python expression) to store after the call
         for k, a in enumerate(e.args):
             if a is None:

@@ -24,7 +24,7 @@ import traceback
 from collections import deque
 from pathlib import Path
 
-from ...diagnostics import Frame, RuntimeFault, Span
+from ...diagnostics import CompileFailed, Frame, RuntimeFault, Span
 from ...machine.model import PlcImage, SimClock
 from ...nc.block import ROW_LINE, Block, DinSyntaxError, as_block, parse_din_line
 from ...nc.canon import Canon, Src
@@ -147,7 +147,6 @@ class CplRuntime:
         if uc is None:
             uc, diags = generate(ln, hook)
             if diags:
-                from ...diagnostics import CompileFailed
                 raise CompileFailed(diags)
             if not hook:
                 ln.unit = uc
