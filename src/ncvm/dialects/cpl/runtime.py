@@ -471,6 +471,10 @@ class CplRuntime:
             self._shadow_at += 1
         return self._shadow
 
+    def forget_prepared(self) -> None:
+        """Offsets or tool tables changed under the prepared blocks: the prepared state is built again."""
+        self._shadow = None
+
     def loose(self, g, m, words, loose, n, msg, src):
         """A block with standalone [A$] words: each value is NC text such as "G1" (manual L2110)."""
         g, m, words = list(g), list(m), dict(words)

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 from ..table import Builtin
 from . import areas, ncs, offsets, plc, positions, sercos, sysdata, tools, transforms
+from .context import SystemContext
 
 
 def _b(impl, lo, hi, res, section, **kw) -> Builtin:
@@ -63,7 +64,7 @@ SYSTEM_PROCS = {
 }
 
 
-def setup(rt) -> None:
+def setup(rt: SystemContext) -> None:
     """At program start: the active ZS table and K4 are the NC kernel's offsets and tools; the kernel
     knows the G functions of the transformations (G60/G67, G37-G39, G138); the active work areas and
     dead ranges watch the motion."""
