@@ -1,8 +1,8 @@
 """Bosch Rexroth CPL (Customer Programming Language, Typ3 osa / PNC): CPL blocks mixed with DIN 66025 NC blocks.
 
 Pipeline: lexer (line classification, tokens) -> parser (flat statements) -> linker (structure pairing,
-jump targets, sub-programs; cached by content) -> codegen (Python source) -> runtime (motion queue,
-permanents, calls) -> NC kernel.
+jump targets, sub-programs; cached by content) -> checker (types, type errors) -> codegen (Python source)
+-> runtime (motion queue, permanents, calls) -> NC kernel.
 """
 
 from __future__ import annotations
@@ -13,6 +13,7 @@ from ...diagnostics import CompileFailed, read_lines
 from ...source import lines as program_lines
 from ..base import Dialect
 from .axiswords import axis_diagnostics
+from .checker import check
 from .codegen import generate
 from .linker import link
 from .linktables import LinkTables
@@ -38,7 +39,8 @@ class CplDialect(Dialect):
         for ln in res.units.values():  # type errors of every program whose own blocks link (check lists them all)
             if not ln.diagnostics:
                 if ln.unit is None:
-                    uc, more = generate(ln)
+                    types, more = check(ln)
+                    uc, more = (None, more) if more else generate(ln, types)
                     if more:
                         diags.extend(more)
                     else:

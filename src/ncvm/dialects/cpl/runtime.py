@@ -34,6 +34,7 @@ from ...runtime.memory import out_of_memory
 from . import values as V
 from .axiswords import check_words, refused_blocks, refusing
 from .builtins import FUNCTIONS
+from .checker import check
 from .codegen import HELPER_NAMES, generate
 from .errors import CplError, fault, message
 from .io import strings as S
@@ -145,7 +146,8 @@ class CplRuntime:
         hook = self.hook is not None
         uc = ln.unit if not hook else None
         if uc is None:
-            uc, diags = generate(ln, hook)
+            types, diags = check(ln)
+            uc, diags = (None, diags) if diags else generate(ln, types, hook)
             if diags:
                 raise CompileFailed(diags)
             if not hook:
