@@ -18,9 +18,7 @@ PACKAGE = SRC / "ncvm"
 KNOWN: dict[tuple[str, str], str] = {}
 
 #: import cycles that exist today, each removed by issue 13 (none may be added)
-KNOWN_CYCLES = {
-    ("ncvm.dialects.cpl.builtins", "ncvm.dialects.cpl.system", "ncvm.dialects.cpl.builtins"),
-}
+KNOWN_CYCLES: set[tuple[str, ...]] = set()
 
 
 def module_name(path: Path) -> str:

@@ -1,8 +1,8 @@
 """Bosch Rexroth CPL (Customer Programming Language, Typ3 osa / PNC): CPL blocks mixed with DIN 66025 NC blocks.
 
 Pipeline: lexer (line classification, tokens) -> parser (flat statements) -> linker (structure pairing,
-jump targets, sub-programs; cached by content) -> codegen (Python source) -> runtime (motion queue,
-permanents, calls) -> NC kernel.
+jump targets, sub-programs; cached by content) -> checker (types, type errors) -> codegen (Python source)
+-> runtime (motion queue, permanents, calls) -> NC kernel.
 """
 
 from __future__ import annotations
@@ -13,9 +13,11 @@ from ...diagnostics import CompileFailed, read_lines
 from ...source import lines as program_lines
 from ..base import Dialect
 from .axiswords import axis_diagnostics
+from .checker import check
 from .codegen import generate
 from .linker import link
 from .linktables import LinkTables
+from .runtime import CplRuntime
 
 _CPL_LINE = re.compile(r"^\s*\d+\s*(REM|IF|FOR|WHILE|GOTO|CALL|DIM|CASE|[A-Z#@][A-Z0-9_]*[%!?$]?\s*(\(.*\))?\s*=)",
                        re.I)
@@ -37,7 +39,8 @@ class CplDialect(Dialect):
         for ln in res.units.values():  # type errors of every program whose own blocks link (check lists them all)
             if not ln.diagnostics:
                 if ln.unit is None:
-                    uc, more = generate(ln)
+                    types, more = check(ln)
+                    uc, more = (None, more) if more else generate(ln, types)
                     if more:
                         diags.extend(more)
                     else:
@@ -56,8 +59,6 @@ class CplDialect(Dialect):
         return diags
 
     def run(self, path, text, session):
-        from .runtime import CplRuntime
-
         tables = LinkTables(session.options.state_dir / "link", session.machine.file_root)
         res, diags = self.link(path, text, session.machine, tables)
         if diags:

@@ -10,11 +10,11 @@ Functions that read the machine (chapter 4, table in the system package) take th
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
-from typing import Callable
 
 from .errors import CplError
 from .io import strings as S
+from .system import SYSTEM_FUNCTIONS
+from .table import Builtin
 from .values import not_nul, type_name
 
 
@@ -145,18 +145,6 @@ def f_inkey(io):
     return io.screen.INKEY()
 
 
-@dataclass(frozen=True, slots=True)
-class Builtin:
-    impl: Callable
-    min_args: int
-    max_args: int
-    result: str  # I R D B S, "=" first argument's type, "RD", "?" decided at run time
-    section: str
-    rt: bool = False
-    io: bool = False  # takes the run's CplIO first (chapters 6-9)
-    params: str = ""  # per argument: S string, I/N number, checked when the type is known at compile time
-
-
 FUNCTIONS: dict[str, Builtin] = {
     "ABS": Builtin(f_abs, 1, 1, "=", "§2.5.1 L793"),
     "INT": Builtin(f_int, 1, 1, "I", "§2.5.1 L804"),
@@ -186,8 +174,6 @@ FUNCTIONS: dict[str, Builtin] = {
     "INKEY": Builtin(f_inkey, 0, 0, "I", "§7 L4625", io=True),
 }
 
-from .system import SYSTEM_FUNCTIONS  # noqa: E402 - chapter 4 (the system package uses Builtin)
-
-FUNCTIONS.update(SYSTEM_FUNCTIONS)
+FUNCTIONS.update(SYSTEM_FUNCTIONS)  # chapter 4
 
 __all__ = ["FUNCTIONS", "Builtin"]

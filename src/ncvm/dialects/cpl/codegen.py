@@ -2,13 +2,13 @@
 
 Programs without GOTO become structured Python (if/while); programs with GOTO become a basic-block
 dispatch loop (``while True: if _pc == k: ...``) so a jump may leave any structure. Local variables
-are Python locals; NUL is ``None``. Types are known from the suffixes, so most conversions and the
-REAL (binary32) comparison rule of digest §4.2 are decided here, not at run time.
+are Python locals; NUL is ``None``. The checker (checker.py) has resolved the type of every expression
+and refused what the control refuses; from those types most conversions and the REAL (binary32)
+comparison rule of digest §4.2 are decided here, not at run time. Codegen only emits.
 """
 
 from __future__ import annotations
 
-import inspect
 import marshal
 import math
 
@@ -16,9 +16,20 @@ from ...nc.block import PLAIN_WORDS
 from ...runtime.codegen import PySource
 from . import ast as A
 from .builtins import FUNCTIONS
+from .checker import (
+    IO_PROCS,
+    NUMERIC,
+    Raw,
+    Types,
+    chain,
+    const_step,
+    increment_type,
+    is_char_field,
+    is_field_view,
+    needs_field,
+    step_type,
+)
 from .errors import diag
-from .io.files import CplFiles
-from .io.screen import Screen
 from .lexer import VarName
 from .system import SYSTEM_PROCS
 from .system.gfuncs import GEARS, TYP3_G
@@ -31,14 +42,8 @@ _PLAIN = frozenset(PLAIN_WORDS)
 PARAM_VIEW = {"%": "_pint", "": "_tor", "!": "_tod", "?": "_tob", "$": "_pstr"}
 SUFFIX_TAG = {"%": "i", "": "r", "!": "d", "?": "b", "$": "s"}
 AXIS_LETTERS = set("XYZABCUVW")
-NUMERIC = ("I", "R", "D")
-
-
-class GenError(Exception):
-    def __init__(self, code: str, detail: str, stmt: A.Stmt | None = None):
-        self.code = code
-        self.detail = detail
-        self.stmt = stmt
+#: the structured statements: the index after one is past its end marker
+STRUCTURES = (A.If, A.Case, A.For, A.While, A.Repeat)
 
 
 class UnitCode:
@@ -65,12 +70,13 @@ class UnitCode:
 
 
 class Gen:
-    def __init__(self, ln, hook: bool = False):
+    def __init__(self, ln, types: Types, hook: bool = False):
         self.ln = ln
         self.prog = ln.prog
         self.stmts = ln.prog.stmts
         self.path = ln.prog.path
         self.src = PySource(self.path)
+        self.types = types
         self.hook = hook
         self.locals: dict[VarName, str] = {}
         self.consts: list = []
@@ -78,9 +84,9 @@ class Gen:
         self.fields = ln.fields
         self.cur = None
         self.flat = ln.uses_goto  # the GOTO form: a dispatch loop over basic blocks
-        self.errors: list | None = None  # (GenError, statement) of every statement, when collecting them
         self.max_param = 0
         self.row_words: set[str] = set()
+        self.pc: dict = {}  # GOTO form: statement index (or ("t", FOR index)) -> basic block number
         #: statements counted into _n ahead of time but not yet executed, while a stretch is emitted
         self._ahead = 0
         #: generated body line index -> that number, for the lines where it is not 0 (see generate)
@@ -117,93 +123,58 @@ class Gen:
     def ex(self, e) -> tuple[str, str]:
         """(python expression, type) with type in I R D B S, N (NUL) or ? (known only at run time)."""
         t = type(e)
-        if t is A.Num:
-            return repr(e.value), e.type
-        if t is _Raw:
+        if t is Raw:
             return e.code, e.ty
+        ty = self.types[e]
+        if t is A.Num:
+            return repr(e.value), ty
         if t is A.Str:
-            return repr(e.value), "S"
+            return repr(e.value), ty
         if t is A.BoolLit:
-            return ("True" if e.value else "False"), "B"
+            return ("True" if e.value else "False"), ty
         if t is A.Nul:
-            return "None", "N"
+            return "None", ty
         if t is A.Var:
-            return self.read(e)
+            return self.read(e), ty
         if t is A.Unary:
-            code, ty = self.ex(e.operand)
-            if e.op == "NOT":
-                if ty == "B":
-                    return f"(not _cond({code}))" if _maybe_nul(e.operand) else f"(not {code})", "B"
-                if ty == "I":
-                    return f"(~{code})", "I"
-                if ty in ("?",):
-                    return f"_lnot({code})", "?"
-                raise GenError("CPL032", f"NOT of {_a(ty)} value")
-            if ty not in NUMERIC + ("?",):
-                raise GenError("CPL032", f"sign of {_a(ty)} value")
-            return (f"(-{code})" if e.op == "-" else code), ty
+            return self.unary(e), ty
         if t is A.Func:
-            return self.func(e)
-        if t is A.Bin:
-            return self.binary(e)
-        raise GenError("CPL001", f"cannot compile {e!r}")
+            return self.func(e), ty
+        return self.binary(e), ty
 
-    def binary(self, e: A.Bin) -> tuple[str, str]:
+    def unary(self, e: A.Unary) -> str:
+        code, ty = self.ex(e.operand)
+        if e.op == "NOT":
+            if ty == "B":
+                return f"(not _cond({code}))" if _maybe_nul(e.operand) else f"(not {code})"
+            return f"(~{code})" if ty == "I" else f"_lnot({code})"
+        return f"(-{code})" if e.op == "-" else code
+
+    def binary(self, e: A.Bin) -> str:
         op = e.op
         if op in ("=", "<>") and (isinstance(e.right, A.Nul) or isinstance(e.left, A.Nul)):
-            other = e.left if isinstance(e.right, A.Nul) else e.right
-            code, _ = self.ex(other)
-            return (f"({code} is None)" if op == "=" else f"({code} is not None)"), "B"
-        if op == "+" and self._is_string(e):
-            parts = self._chain(e)
-            if len(parts) > 3:
-                raise GenError("2153", f"string chaining of {len(parts)} operands (at most 3)")
-            codes = []
-            for p in parts:
-                c, ty = self.ex(p)
-                if ty not in ("S", "?"):
-                    raise GenError("CPL032", f"'+' joins strings, not {_a(ty)} value")
-                codes.append(c)
-            return "(" + " + ".join(codes) + ")", "S"
+            code = self.ex(e.left if isinstance(e.right, A.Nul) else e.right)[0]
+            return f"({code} is None)" if op == "=" else f"({code} is not None)"
+        if op == "+" and self.types[e] == "S":  # a string chain
+            return "(" + " + ".join(self.ex(p)[0] for p in chain(e)) + ")"
         lc, lt = self.ex(e.left)
         rc, rt = self.ex(e.right)
         if op in ("AND", "OR", "XOR"):
-            pyop = {"AND": "&", "OR": "|", "XOR": "^"}[op]
-            if lt == rt and lt in ("B", "I"):
-                if lt == "B" and (_maybe_nul(e.left) or _maybe_nul(e.right)):
-                    return f"_logic({op!r}, {lc}, {rc})", "B"
-                return f"({lc} {pyop} {rc})", lt
-            if "?" in (lt, rt) and {lt, rt} <= {"B", "I", "?"}:
-                return f"_logic({op!r}, {lc}, {rc})", (lt if lt != "?" else rt)
-            raise GenError("CPL032", f"{op} of {_tname(lt)} and {_tname(rt)}")
+            if lt == rt and lt in ("B", "I") and not (lt == "B" and (_maybe_nul(e.left) or _maybe_nul(e.right))):
+                return f"({lc} {LOGIC[op]} {rc})"
+            return f"_logic({op!r}, {lc}, {rc})"
         if op in ("+", "-", "*", "/"):
-            for ty in (lt, rt):
-                if ty not in NUMERIC + ("?",):
-                    raise GenError("CPL032", f"'{op}' of {_a(ty)} value")
             if op == "/" or lt != rt:  # an INTEGER result leaving INTEGER arithmetic: 32 bits (manual L655)
                 lc, rc = _int32(e.left, lc, lt), _int32(e.right, rc, rt)
-            if op == "/":
-                ty = "D" if "D" in (lt, rt) or "?" in (lt, rt) else "R"
-                return f"({lc} / {rc})", ty
-            if lt == "I" and rt == "I":
-                return f"({lc} {op} {rc})", "I"
-            if "?" in (lt, rt):
-                return f"({lc} {op} {rc})", "?"
-            return f"({lc} {op} {rc})", ("D" if "D" in (lt, rt) else "R")
-        # relational
-        pyop = {"=": "==", "<>": "!=", "<": "<", ">": ">", "<=": "<=", ">=": ">="}[op]
+            return f"({lc} {op} {rc})"
+        pyop = RELATION[op]
         if pyop in ("==", "!="):  # Python's == takes None silently; NUL is an error unless compared to NUL
             lc, rc = _not_nul(e.left, lc, lt), _not_nul(e.right, rc, rt)
         if lt in NUMERIC and rt in NUMERIC:
             lc, rc = _int32(e.left, lc, lt), _int32(e.right, rc, rt)
             if "D" not in (lt, rt) and "R" in (lt, rt):
                 lc, rc = self._single(e.left, lc, lt), self._single(e.right, rc, rt)
-            return f"({lc} {pyop} {rc})", "B"
-        if lt == rt or "?" in (lt, rt):
-            if lt == "B" and pyop not in ("==", "!="):
-                raise GenError("CPL032", f"'{op}' on BOOLEAN values")
-            return f"({lc} {pyop} {rc})", "B"
-        raise GenError("CPL032", f"comparison of {_tname(lt)} with {_tname(rt)}")
+        return f"({lc} {pyop} {rc})"
 
     def _single(self, e, code: str, ty: str) -> str:
         """An operand of a REAL comparison rounded to binary32 (digest §4.2), unless it already is."""
@@ -215,71 +186,43 @@ class Gen:
             return code  # REAL variables hold binary32 values already
         return f"_f32({code})"
 
-    def _is_string(self, e) -> bool:
-        if isinstance(e, A.Bin) and e.op == "+":
-            return self._is_string(e.left) or self._is_string(e.right)
-        try:
-            return self.ex(e)[1] == "S"
-        except GenError:
-            return False
-
-    def _chain(self, e) -> list:
-        if isinstance(e, A.Bin) and e.op == "+":
-            return self._chain(e.left) + self._chain(e.right)
-        return [e]
-
-    def func(self, e: A.Func) -> tuple[str, str]:
-        if e.name == "MMC":
-            raise GenError("CPL001", "MMC(...) stands as a statement or as r% = MMC(...)")
-        b = FUNCTIONS.get(e.name)
-        if b is None:
-            raise GenError("CPL037", f"{e.name} is not implemented (docs/cpl.md lists what is missing)")
-        n = len(e.args)
-        if not b.min_args <= n <= b.max_args:
-            raise GenError("CPL001", f"{e.name} takes {b.min_args}..{b.max_args} arguments, not {n}")
+    def func(self, e: A.Func) -> str:
+        b = FUNCTIONS[e.name]
         codes, types = [], []
-        refs, out = getattr(b, "refs", ()), getattr(b, "out", None)
+        out = b.out
         backs: list = []  # (variable, python expression) to store after the call
         for k, a in enumerate(e.args):
             if a is None:
                 codes.append("None")
                 types.append("N")
                 continue
-            if k in refs and isinstance(a, A.Var) and not a.index:
+            if k in b.refs and isinstance(a, A.Var) and not a.index:
                 codes.append(self.by_name(a, backs))  # a field given by its bare name (GETERR, MCODS)
                 types.append("F")
                 continue
             c, ty = self.ex(a)
-            want = b.params[k:k + 1]
-            if want == "S" and ty in NUMERIC + ("B",) or want in ("I", "N") and ty in ("S", "B"):
-                raise GenError("CPL032", f"{e.name}: argument {k + 1} is {_a(ty)} value")
             if k == out:
                 c = f"(0 if {c} is None else {c})"  # present, even when not yet assigned
             codes.append(c)
             types.append(ty)
-        res = b.result
-        if res == "=":
-            res = types[0] if types[0] in NUMERIC else "?"
-        elif res == "RD":
-            res = "D" if types[0] in ("D", "?") else "R"
         if len(codes) == 1 and types[0] in NUMERIC and e.name in INLINE:
-            return INLINE[e.name].format(codes[0]), res
+            return INLINE[e.name].format(codes[0])
         fn = f"_F_{e.name.replace('$', '_S')}"
         if e.name == "STR$" and types[-1] == "D":
             codes[-1] = f"_Dbl({codes[-1]})"  # the standard format depends on the value's type
         args = ", ".join((["_rt"] if b.rt else []) + (["_io"] if b.io else []) + codes)
         if out is not None and (out >= len(e.args) or e.args[out] is None):
-            return f"{fn}({args})[0]", res  # the variable is not given: only the result
+            return f"{fn}({args})[0]"  # the variable is not given: only the result
         if out is not None or backs:
             t = self.temp("r")
             if out is not None:  # the function returns (result, new value of argument ``out``)
-                backs.insert(0, (e.args[out] if out < len(e.args) else None, f"{t}[1]"))
+                backs.insert(0, (e.args[out], f"{t}[1]"))
                 call = f"({t} := {fn}({args}))"
             else:
                 call = f"({t} := ({fn}({args}),))"
-            puts = [self.put(target, value, e.name) for target, value in backs]
-            return f"({call}, {', '.join(puts)}, {t}[0])[-1]", res
-        return f"{fn}({args})", res
+            puts = [self.put(target, value) for target, value in backs]
+            return f"({call}, {', '.join(puts)}, {t}[0])[-1]"
+        return f"{fn}({args})"
 
     def by_name(self, a: A.Var, backs: list) -> str:
         """(field, type) for a field given by name; a simple numeric local variable travels in a box
@@ -289,17 +232,12 @@ class Gen:
             return f"({self.local(v)}, {v.type!r})"
         if v.cls == "G":
             return f"(_gfield({v.display!r}), {v.type!r})"
-        if v.cls == "L" and v.type in NUMERIC:
-            box = self.temp("b")
-            backs.append((a, f"{box}[1]"))
-            return f"(({box} := [None, {self.local(v)}]), {v.type!r})"
-        raise GenError("CPL035", f"{v.display}: a DIMensioned local or global field is needed here")
+        box = self.temp("b")
+        backs.append((a, f"{box}[1]"))
+        return f"(({box} := [None, {self.local(v)}]), {v.type!r})"
 
-    def put(self, target, value: str, name: str) -> str:
+    def put(self, target: A.Var, value: str) -> str:
         """An assignment inside an expression (walrus for locals) of a numeric local or global variable."""
-        if not isinstance(target, A.Var) or target.index or target.var.cls not in ("L", "G") \
-                or target.var.type not in NUMERIC:
-            raise GenError("CPL001", f"{name}: a numeric local or global variable is needed here")
         ty = target.var.type
         conv = f"_toi({value})" if ty == "I" else (f"_f32({value})" if ty == "R" else f"_tod({value})")
         if target.var.cls == "L":
@@ -307,62 +245,39 @@ class Gen:
         return f"_G.__setitem__({target.var.display!r}, {conv})"
 
     # -- variables ----------------------------------------------------------------
-    def read(self, e: A.Var) -> tuple[str, str]:
+    def read(self, e: A.Var) -> str:
         v = e.var
-        ty = v.type
         idx = [self.index(i) for i in e.index] if e.index else []
         if v.cls == "L":
             name = self.local(v)
-            dims = self.fields.get(v)
-            if dims is None:
-                if idx:
-                    raise GenError("CPL035", f"{v.display} is used with an index but never DIMensioned")
-                if ty == "S":
-                    return f"_sv({name})", "S"
-                return name, ty
-            return self._field_read(name, v, dims, idx), ty
+            if self.fields.get(v) is None:
+                return f"_sv({name})" if v.type == "S" else name
+            return self._field_read(name, v, idx)
         if v.cls == "G":
             key = repr(v.display)
             if not idx:
-                return (f"_sv(_G.get({key}))" if ty == "S" else f"_G.get({key})"), ty
-            return self._field_read(f"_gfield({key})", v, len(idx) if ty != "S" else len(idx) + 1, idx), ty
+                return f"_sv(_G.get({key}))" if v.type == "S" else f"_G.get({key})"
+            return self._field_read(f"_gfield({key})", v, idx)
         if v.cls == "P":
-            if idx:
-                raise GenError("CPL001", f"{v.display} is not a field")
-            return f"_PM.get_n({v.name})", "I"
+            return f"_PM.get_n({v.name})"
         if v.cls == "R":
-            if len(idx) != 1:
-                raise GenError("CPL001", "@_R needs one index (1..100)")
-            return f"_PM.get_r({idx[0]})", "D"
+            return f"_PM.get_r({idx[0]})"
         if v.cls == "D":
-            return f"_PM.get_d({v.name!r}, {v.suffix!r}, ({', '.join(idx)}{',' if idx else ''}))", ty
-        if v.cls == "A":
-            if idx:
-                raise GenError("CPL001", f"parameter {v.display} has no index")
-            k = int(v.name)
-            self.max_param = max(self.max_param, k)
-            return f"{PARAM_VIEW[v.suffix]}(P[{k - 1}])", ty
-        raise GenError("CPL012", v.display)
+            return f"_PM.get_d({v.name!r}, {v.suffix!r}, ({', '.join(idx)}{',' if idx else ''}))"
+        k = int(v.name)  # a parameter Pn
+        self.max_param = max(self.max_param, k)
+        return f"{PARAM_VIEW[v.suffix]}(P[{k - 1}])"
 
-    def _field_read(self, base: str, v: VarName, dims: int, idx: list[str]) -> str:
+    @staticmethod
+    def _field_read(base: str, v: VarName, idx: list[str]) -> str:
         if v.suffix == "$":
-            if dims == 1:
-                if idx:
-                    raise GenError("CPL001", f"{v.display} is a 1-dimensional character field: no index")
-                return f"_sv({base})"
-            if len(idx) != 1:
-                raise GenError("CPL001", f"{v.display}: one index selects a string of the 2-dimensional field")
-            return f"{base}.row({idx[0]}).text"
-        if len(idx) != dims:
-            raise GenError("CPL001", f"{v.display} needs {dims} ind{'ex' if dims == 1 else 'ices'}")
+            return f"{base}.row({idx[0]}).text" if idx else f"_sv({base})"
         return base + "".join(f"[{i}]" for i in idx)
 
     def index(self, e) -> str:
         code, ty = self.ex(e)
         if isinstance(e, A.Num) and ty == "I":
             return code
-        if ty not in ("I", "?"):
-            raise GenError("CPL031", f"index must be INTEGER, not {_tname(ty)}")
         return f"_ix({code})"
 
     # -- assignment --------------------------------------------------------------
@@ -371,28 +286,20 @@ class Gen:
         if ty == "N":
             return "None"
         if target_type == "I":
-            if isinstance(e, A.Num) and ty == "I" and not -2147483648 <= e.value <= 2147483647:
-                raise GenError("CPL027", f"{e.value} outside -2147483648..2147483647")
             if ty == "I":
                 if isinstance(e, (A.Num, A.Var)):
                     return code
                 return f"_toi({code})"  # a function result too: ABS(-2147483648), BCD(99999999) leave the range
             if ty in ("R", "D"):
                 return "_bad_assign('REAL value assigned to an INTEGER variable (use INT or ROUND)')"
-            if ty in ("B", "S"):
-                raise GenError("CPL021", f"{_tname(ty)} value assigned to an INTEGER variable")
             return f"_toi({code})"
         if target_type == "R":
-            if ty in ("B", "S"):
-                raise GenError("CPL021", f"{_tname(ty)} value assigned to a REAL variable")
             if isinstance(e, A.Var):  # a variable or parameter copied as it is: NUL stays NUL
                 return code if ty == "R" else f"_tor({code})"
             if isinstance(e, A.Num):
                 return repr(f32(e.value))
             return f"_f32({_int32(e, code, ty)})" if ty != "?" else f"_tor({code})"
         if target_type == "D":
-            if ty in ("B", "S"):
-                raise GenError("CPL021", f"{_tname(ty)} value assigned to a DOUBLE variable")
             if isinstance(e, A.Num):
                 return repr(float(e.value))
             if ty == "I":
@@ -400,136 +307,94 @@ class Gen:
             # a computed DOUBLE can overflow to infinity, which _tod refuses (range +/-1e308)
             return code if ty in ("R", "D") and isinstance(e, A.Var) else f"_tod({code})"
         if target_type == "B":
-            if ty in NUMERIC or ty == "S":
-                raise GenError("CPL021", f"{_tname(ty)} value assigned to a BOOLEAN variable")
             return code if ty == "B" and not _maybe_nul(e) else f"_tob({code})"
-        if target_type == "S":
-            if ty in NUMERIC or ty == "B":
-                raise GenError("CPL021", f"{_tname(ty)} value assigned to a CHARACTER variable")
-            return code
-        raise GenError("CPL001", "bad target")
+        return code  # CHARACTER
 
     def assign(self, s: A.Assign) -> None:
         tv = s.target
         v = tv.var
-        line = s.line
         if s.mid is not None:
             self.mid_write(s)
             return
-        if v.cls == "A":
-            raise GenError("CPL036", f"{v.display} = ...")
         e = s.expr
-        # string rules: concatenation / STR$ / TRIM$ of a chain only into character fields (manual §5)
-        is_field_target = self._is_char_field(tv)
-        if v.suffix == "$" and not is_field_target and v.cls in ("L",) and self._needs_field(e):
-            raise GenError("CPL025", f"{v.display} is not DIMensioned; '+' results go to character fields only")
-        if v.suffix == "$" and v.cls == "L" and not is_field_target and isinstance(e, A.Func) and e.name == "MID$" \
-                and len(e.args) >= 2 and isinstance(e.args[0], A.Var) and self._is_char_field(e.args[0]) \
-                and e.args[0].var.cls == "L" and len(e.args[0].index or ()) == self.fields[e.args[0].var] - 1:
-            # a live view into the field, or into one string of a 2-dimensional field (manual L3373-3401)
-            src = self.local(e.args[0].var)
-            if e.args[0].index:
-                src = f"{src}.row({self.index(e.args[0].index[0])})"
-            start = self.ex(e.args[1])[0]
-            count = self.ex(e.args[2])[0] if len(e.args) > 2 and e.args[2] is not None else "None"
-            self.emit(f"{self.local(v)} = _view({src}, {start}, {count})", line)
+        if is_field_view(s, self.fields):
+            self.field_view(s)
             return
         if isinstance(e, A.Func) and e.name == "MMC":
-            code, ty = self.mmc(e.args, line), "I"
+            code, ty = self.mmc(e.args, s.line), "I"
         else:
             code, ty = self.ex(e)
         if v.cls == "L":
-            name = self.local(v)
-            dims = self.fields.get(v)
-            if dims is None:
-                if tv.index:
-                    raise GenError("CPL035", f"{v.display} is used with an index but never DIMensioned")
-                if v.type == "I" and ty == "I" and isinstance(e, (A.Bin, A.Unary)):
-                    # INTEGER arithmetic: check the 32-bit range inline (cheaper than a call)
-                    self.emit(f"{name} = {code}", line)
-                    self.emit(f"if not -2147483648 <= {name} <= 2147483647: {name} = _toi({name})", line)
-                    return
-                if v.type == "D" and ty in ("R", "D") and not isinstance(e, (A.Var, A.Num)):
-                    # computed DOUBLE: x - x is 0.0 unless x is infinity or NaN (the result left the range)
-                    self.emit(f"{name} = {code}", line)
-                    self.emit(f"if {name} - {name}: {name} = _tod({name})", line)
-                    return
-                value = self.convert(v.type, e, code, ty)
-                self.emit(f"{name} = {value}", line)
-                return
+            self.assign_local(s, code, ty)
+        elif v.cls == "G":
+            self.assign_global(s, code, ty)
+        elif v.cls == "P":
+            self.emit(f"_PM.set_n({v.name}, {code})", s.line)
+        elif v.cls == "R":
+            self.emit(f"_PM.set_r({self.index(tv.index[0])}, {code})", s.line)
+        else:  # a definable permanent
             idx = [self.index(i) for i in tv.index] if tv.index else []
-            if v.suffix == "$":
-                if dims == 1:
-                    if idx:
-                        raise GenError("CPL001", f"{v.display} is a 1-dimensional character field: no index")
-                    self.emit(f"_setf({name}, {self.convert('S', e, code, ty)})", line)
-                else:
-                    if len(idx) != 1:
-                        raise GenError("CPL001", f"{v.display}: one index selects a string of the field")
-                    self.emit(f"_setf({name}.row({idx[0]}), {self.convert('S', e, code, ty)})", line)
-                return
-            if len(idx) != dims:
-                raise GenError("CPL001", f"{v.display} needs {dims} ind{'ex' if dims == 1 else 'ices'}")
-            self.emit(f"{name}{''.join(f'[{i}]' for i in idx)} = {self.convert(v.type, e, code, ty)}", line)
-            return
-        if v.cls == "G":
-            key = repr(v.display)
-            if ty == "N" and not tv.index:
-                self.emit(f"_G.pop({key}, None)", line)
-                return
-            value = self.convert(v.type, e, code, ty)
-            if not tv.index:
-                if v.suffix == "$":
-                    self.emit(f"_gset_s({key}, {value}, {self._needs_field(e)})", line)
-                else:
-                    self.emit(f"_G[{key}] = {value}", line)
-                return
-            idx = [self.index(i) for i in tv.index]
-            if v.suffix == "$":
-                self.emit(f"_setf(_gfield({key}).row({idx[0]}), {value})", line)
-            else:
-                self.emit(f"_gfield({key}){''.join(f'[{i}]' for i in idx)} = {value}", line)
-            return
-        if v.cls == "P":
-            self.emit(f"_PM.set_n({v.name}, {code})", line)
-            return
-        if v.cls == "R":
-            if not tv.index or len(tv.index) != 1:
-                raise GenError("CPL001", "@_R needs one index (1..100)")
-            self.emit(f"_PM.set_r({self.index(tv.index[0])}, {code})", line)
-            return
-        if v.cls == "D":
-            idx = [self.index(i) for i in tv.index] if tv.index else []
-            self.emit(f"_PM.set_d({v.name!r}, {v.suffix!r}, ({', '.join(idx)}{',' if idx else ''}), {code})", line)
-            return
-        raise GenError("CPL012", v.display)
+            self.emit(f"_PM.set_d({v.name!r}, {v.suffix!r}, ({', '.join(idx)}{',' if idx else ''}), {code})", s.line)
 
-    def _is_char_field(self, tv: A.Var) -> bool:
+    def field_view(self, s: A.Assign) -> None:
+        """``A$ = MID$(F$, ...)``: a live view into the field, or into one string of a 2-dimensional field
+        (manual L3373-3401)."""
+        e = s.expr
+        src = self.local(e.args[0].var)
+        if e.args[0].index:
+            src = f"{src}.row({self.index(e.args[0].index[0])})"
+        start = self.ex(e.args[1])[0]
+        count = self.ex(e.args[2])[0] if len(e.args) > 2 and e.args[2] is not None else "None"
+        self.emit(f"{self.local(s.target.var)} = _view({src}, {start}, {count})", s.line)
+
+    def assign_local(self, s: A.Assign, code: str, ty: str) -> None:
+        tv, e, line = s.target, s.expr, s.line
         v = tv.var
-        if v.suffix != "$":
-            return False
-        if v.cls == "L":
-            return v in self.fields
-        return v.cls in ("G", "D")  # decided at run time
+        name = self.local(v)
+        dims = self.fields.get(v)
+        if dims is None:
+            if v.type == "I" and ty == "I" and isinstance(e, (A.Bin, A.Unary)):
+                # INTEGER arithmetic: check the 32-bit range inline (cheaper than a call)
+                self.emit(f"{name} = {code}", line)
+                self.emit(f"if not -2147483648 <= {name} <= 2147483647: {name} = _toi({name})", line)
+            elif v.type == "D" and ty in ("R", "D") and not isinstance(e, (A.Var, A.Num)):
+                # computed DOUBLE: x - x is 0.0 unless x is infinity or NaN (the result left the range)
+                self.emit(f"{name} = {code}", line)
+                self.emit(f"if {name} - {name}: {name} = _tod({name})", line)
+            else:
+                self.emit(f"{name} = {self.convert(v.type, e, code, ty)}", line)
+            return
+        idx = [self.index(i) for i in tv.index] if tv.index else []
+        if v.suffix == "$":
+            row = f"{name}.row({idx[0]})" if dims != 1 else name
+            self.emit(f"_setf({row}, {self.convert('S', e, code, ty)})", line)
+            return
+        self.emit(f"{name}{''.join(f'[{i}]' for i in idx)} = {self.convert(v.type, e, code, ty)}", line)
 
-    def _needs_field(self, e) -> bool:
-        """Results that only a character field may receive: '+' chains, STR$, MID$/TRIM$ of a chain."""
-        if isinstance(e, A.Bin) and e.op == "+":
-            return True
-        if isinstance(e, A.Func) and e.name == "STR$":
-            return True
-        if isinstance(e, A.Func) and e.name in ("MID$", "TRIM$") and e.args and isinstance(e.args[0], A.Bin):
-            return True
-        return False
+    def assign_global(self, s: A.Assign, code: str, ty: str) -> None:
+        tv, e, line = s.target, s.expr, s.line
+        v = tv.var
+        key = repr(v.display)
+        if ty == "N" and not tv.index:
+            self.emit(f"_G.pop({key}, None)", line)
+            return
+        value = self.convert(v.type, e, code, ty)
+        if not tv.index:
+            if v.suffix == "$":
+                self.emit(f"_gset_s({key}, {value}, {needs_field(e)})", line)
+            else:
+                self.emit(f"_G[{key}] = {value}", line)
+            return
+        idx = [self.index(i) for i in tv.index]
+        if v.suffix == "$":
+            self.emit(f"_setf(_gfield({key}).row({idx[0]}), {value})", line)
+        else:
+            self.emit(f"_gfield({key}){''.join(f'[{i}]' for i in idx)} = {value}", line)
 
     def mid_write(self, s: A.Assign) -> None:
         tv = s.target
         v = tv.var
-        if v.suffix != "$":
-            raise GenError("CPL032", "MID$(...) = needs a character field")
         if v.cls == "L":
-            if v not in self.fields:
-                raise GenError("CPL025", f"MID$({v.display},...)= : {v.display} is not DIMensioned")
             base = self.local(v)
             if tv.index:
                 base += f".row({self.index(tv.index[0])})"
@@ -537,20 +402,16 @@ class Gen:
             base = f"_G.get({v.display!r})"
             if tv.index:
                 base = f"_gfield({v.display!r}).row({self.index(tv.index[0])})"
-        elif v.cls == "D":
-            base = self.field_ref(tv)
         else:
-            raise GenError("CPL032", f"MID$(...) = : {v.display} is not a character field")
+            base = self.field_ref(tv)
         start = self.ex(s.mid[0])[0]
         count = self.ex(s.mid[1])[0] if s.mid[1] is not None else "None"
-        code, ty = self.ex(s.expr)
-        if ty not in ("S", "?"):
-            raise GenError("CPL032", "MID$(...) = needs a string")
+        code = self.ex(s.expr)[0]
         self.emit(f"_midw({base}, {start}, {count}, {code})", s.line)
 
     def store(self, tv: A.Var, value_code: str, value_type: str, line: int) -> None:
         """Assign an already computed value (WAIT result, FOR counter)."""
-        self.assign(A.Assign(line=line, target=tv, expr=_Raw(value_code, value_type)))
+        self.assign(A.Assign(line=line, target=tv, expr=Raw(value_code, value_type)))
 
     # -- statements -----------------------------------------------------------------
     def simple(self, i: int, s) -> None:
@@ -561,22 +422,13 @@ class Gen:
             self.emit(f"_hook({line}, locals())", line)
         if t is A.Assign:
             self.assign(s)
-        elif t is A.LabelDef:
-            pass
         elif t is A.CallStmt:
             args = ", ".join(self.arg(a) for a in s.args)
             self.emit("_st.steps += _n; _n = 0", line)
             self.emit(f"_call({s.name!r}, ({args}{',' if s.args else ''}), {s.din}, {line})", line)
             self.emit("_lim = _st.limit - _st.steps", line)
         elif t is A.Dim:
-            for var, sizes in s.items:
-                kind = "S" if var.suffix == "$" else var.type
-                if var.cls == "L":
-                    name = self.local(var)
-                    self.emit(f"{name} = _dim({name}, {tuple(sizes)!r}, {kind!r})", line)
-                else:
-                    key = repr(var.display)
-                    self.emit(f"_G[{key}] = _dim(_G.get({key}), {tuple(sizes)!r}, {kind!r})", line)
+            self.dim(s)
         elif t is A.Pdim:
             self.emit(f"P = _pdim(P, {s.var.name}, {s.size})", line)
         elif t is A.Wait:
@@ -585,8 +437,16 @@ class Gen:
             self.proc(s)
         elif t is A.NcBlock:
             self.nc(s)
-        else:
-            raise GenError("CPL001", f"unexpected {t.__name__}")
+
+    def dim(self, s: A.Dim) -> None:
+        for var, sizes in s.items:
+            kind = "S" if var.suffix == "$" else var.type
+            if var.cls == "L":
+                name = self.local(var)
+                self.emit(f"{name} = _dim({name}, {tuple(sizes)!r}, {kind!r})", s.line)
+            else:
+                key = repr(var.display)
+                self.emit(f"_G[{key}] = _dim(_G.get({key}), {tuple(sizes)!r}, {kind!r})", s.line)
 
     def arg(self, e) -> str:
         if e is None:
@@ -599,10 +459,6 @@ class Gen:
         if s.plain:
             self.emit("_drain()", line)
             return
-        if s.state is not None and self.ex(s.state)[1] not in ("B", "?"):
-            raise GenError("CPL032", "the <state> of a WAIT condition is a BOOLEAN expression (manual §4.1)")
-        if s.result is not None and s.result.var.type != "I":
-            raise GenError("CPL032", "the <result var> of WAIT is an INTEGER variable (manual §4.1)")
         ic = "None"
         if s.ic is not None:
             ic = "(" + ", ".join(self.arg(a) for a in s.ic) + ("," if s.ic else "") + ")"
@@ -614,61 +470,40 @@ class Gen:
             self.store(s.result, r, "I", line)
 
     def proc(self, s: A.Proc) -> None:
-        """Statements of chapters 6-9: calls into the run's CplIO (``_io``), see docs/cpl-io.md."""
+        """Statements of chapters 4-9: calls into the run's CplIO (``_io``, see docs/cpl-io.md), system
+        procedures, functions called as statements."""
         line = s.line
         name = s.name
         if name in ("LJUST", "NJUST"):
             self.emit(f"_io.mode.{name}()", line)
-            return
-        if name in ("PRN#", "INP#"):
-            if not s.args or s.args[0] is None:
-                raise GenError("CPL001", f"{name} needs a file number")
-            if name == "PRN#":
-                items = ", ".join(self.out_arg(a) if k else self.set_arg(a) for k, a in enumerate(s.args))
-                self.emit(f"_io.files.PRN({items}, semicolon={s.no_end})", line)
-            else:
-                self.inp_file(s)
-            return
-        if name == "SFK":
+        elif name == "PRN#":
+            items = ", ".join(self.out_arg(a) if k else self.set_arg(a) for k, a in enumerate(s.args))
+            self.emit(f"_io.files.PRN({items}, semicolon={s.no_end})", line)
+        elif name == "INP#":
+            self.inp_file(s)
+        elif name == "SFK":
             self.sfk(s)
-            return
-        if name == "INP":
-            if len(s.args) != 1 or not isinstance(s.args[0], A.Var):
-                raise GenError("CPL001", "INP(var) needs one variable")
+        elif name == "INP":
             tv = s.args[0]
             cur, ty = self.ex(tv)
             r = self.temp("i")
             self.emit(f"{r} = _io.screen.INP({tv.var.display!r}, {cur}, {ty!r})", line)
             self.store(tv, r, "?", line)
-            return
-        if name == "PRN" and len(s.args) == 4 and isinstance(s.args[3], A.Var):
+        elif name == "PRN" and len(s.args) == 4 and isinstance(s.args[3], A.Var):
             args = ", ".join(self.out_arg(a) for a in s.args)
             self.emit(f"_io.screen.PRN({args}, name={s.args[3].var.display!r})", line)
-            return
-        if name == "MMC":
+        elif name == "MMC":
             self.emit(self.mmc(s.args, line), line)
-            return
-        target = "files" if name == "ERASE" else IO_PROCS.get(name)
-        if target is not None:
-            lo, hi = io_arity(target, name)
-            if not lo <= len(s.args) <= hi:
-                most = f"..{hi}" if hi < 99 else " or more"
-                raise GenError("CPL001", f"{name} takes {lo}{most} arguments, not {len(s.args)}")
+        elif name == "ERASE" or name in IO_PROCS:
+            target = "files" if name == "ERASE" else IO_PROCS[name]
             self.emit(f"_io.{target}.{name}({self.args(s, TEXT_FROM.get(name, 99))})", line)
-            return
-        if s.name in FUNCTIONS and s.name not in SYSTEM_PROCS:  # SCSL(...), MCOPS(...) as a statement
-            self.emit(self.func(A.Func(s.name, s.args, 0))[0], line)
-            return
-        if s.name in SYSTEM_PROCS:  # chapter 4: FXC(...)=v and friends, FXCR, FXDEL, FXINS
-            _, lo, hi = SYSTEM_PROCS[s.name]
-            if not lo <= len(s.args) <= hi:
-                raise GenError("CPL001", f"{s.name.rstrip('=')} takes {lo}..{hi} arguments, not {len(s.args)}")
+        elif name not in SYSTEM_PROCS:  # SCSL(...), MCOPS(...) as a statement
+            self.emit(self.func(A.Func(name, s.args, 0)), line)
+        else:  # chapter 4: FXC(...)=v and friends, FXCR, FXDEL, FXINS
             args = [self.ex(a)[0] if a is not None else "None" for a in s.args]
-            if s.name.endswith("="):
+            if name.endswith("="):
                 args[-1] = f"value={args[-1]}"
-            self.emit(f"_rt.sys_procs[{s.name!r}](_rt, {', '.join(args)})", line)
-            return
-        raise GenError("CPL037", f"{s.name} is not implemented (docs/cpl.md lists what is missing)")
+            self.emit(f"_rt.sys_procs[{name!r}](_rt, {', '.join(args)})", line)
 
     def args(self, s: A.Proc, text_from: int = 99) -> str:
         """The arguments of an I/O statement; those before position ``text_from`` (positions, sizes, names,
@@ -692,21 +527,16 @@ class Gen:
     def inp_file(self, s: A.Proc) -> None:
         """INP#(n, targets...): character fields are filled in place, plain variables get the values read."""
         line = s.line
-        if len(s.args) < 2:
-            raise GenError("CPL001", "INP# needs a file number and at least one variable: INP#(n,v1[,v2...])")
         targets, stores = [], []
         for k, a in enumerate(s.args[1:]):
-            if isinstance(a, A.Var) and a.var.suffix == "$" and self._is_char_field(a):
+            if isinstance(a, A.Var) and a.var.suffix == "$" and is_char_field(a, self.fields):
                 targets.append(self.field_ref(a))
-            elif isinstance(a, A.Func) and a.name == "MID$" and isinstance(a.args[0], A.Var) \
-                    and self._is_char_field(a.args[0]):
+            elif isinstance(a, A.Func):  # MID$ of a character field
                 count = self.arg(a.args[2]) if len(a.args) > 2 else "None"
                 targets.append(f"_SView({self.field_ref(a.args[0])}, {self.arg(a.args[1])}, {count})")
-            elif isinstance(a, A.Var):
+            else:
                 targets.append(repr(a.var.type if a.var.suffix != "$" else "S"))
                 stores.append((k, a))
-            else:
-                raise GenError("CPL001", "INP# reads into variables")
         r = self.temp("r")
         self.emit(f"{r} = _io.files.INP({self.set_arg(s.args[0])}, {', '.join(targets)}, semicolon={s.no_end})",
                   line)
@@ -716,22 +546,15 @@ class Gen:
     def field_ref(self, tv: A.Var) -> str:
         """The character field object itself (not its text), for functions that write into it."""
         v = tv.var
-        if v.cls == "L":
-            base = self.local(v)
-        elif v.cls == "G":
-            base = f"_gfield({v.display!r})"
-        elif v.cls == "D":  # a definable permanent: the field (or its row) writes through to the store
+        if v.cls == "D":  # a definable permanent: the field (or its row) writes through to the store
             idx = [self.index(i) for i in tv.index or ()]
             return f"_PM.char_field({v.name!r}, ({', '.join(idx)}{',' if idx else ''}))"
-        else:
-            raise GenError("CPL032", f"{v.display} is not a character field")
+        base = self.local(v) if v.cls == "L" else f"_gfield({v.display!r})"
         if tv.index:
             base += f".row({self.index(tv.index[0])})"
         return base
 
     def sfk(self, s: A.Proc) -> None:
-        if not s.args or not isinstance(s.args[0], A.Var):
-            raise GenError("CPL001", "SFK(var, texts...) needs a variable first")
         tv = s.args[0]
         cur, ty = self.ex(tv)
         texts = "".join(f", {self.arg(a)}" for a in s.args[1:])
@@ -741,8 +564,6 @@ class Gen:
 
     def mmc(self, args: list, line: int) -> str:
         """MMC(v1,...,v20): names and values go to the client; the values it sends back are stored."""
-        if not args or any(not isinstance(a, A.Var) for a in args):
-            raise GenError("CPL001", "MMC takes CPL variables only")
         names = tuple(a.var.display for a in args)
         values = ", ".join(self.ex(a)[0] for a in args)
         r = self.temp("m")
@@ -751,94 +572,83 @@ class Gen:
             self.store(a, f"{r}[1][{k}]", "?", line)
         return f"{r}[0]"
 
+    # -- NC blocks ----------------------------------------------------------------------
     def nc(self, s: A.NcBlock) -> None:
+        """An NC block: its words into the motion queue, then the WAIT, the sub-program call, the program end."""
         line = s.line
-        src = self.const(("src", line))
-        g_const, m_const, g_dyn, m_dyn = [], [], [], []
-        words_const, words_dyn = {}, []
-        for w in s.words:
-            if w.expr is None:
-                if w.address == "G":
-                    v = w.value
-                    g_const.append(int(v) if v == int(v) else v)
-                elif w.address == "M":
-                    m_const.append(int(w.value))
-                else:
-                    words_const[w.address] = w.value
-            else:
-                code, ty = self.ex(w.expr)
-                if ty not in NUMERIC + ("?",):
-                    raise GenError("CPL032", f"[ ] value of address {w.address} is {_tname(ty)}")
-                e = w.expr
-                if isinstance(e, A.Var) and e.var.cls == "A" and e.var.suffix == "" and not e.index:
-                    code = f"_wtor(P[{int(e.var.name) - 1}])"  # REAL view of a parameter, checked as a word
-                elif isinstance(e, (A.Var, A.Func)) or ty == "?":
-                    code = f"_word({code})"
-                if w.address == "G":
-                    g_dyn.append(f"_nocall('G', {code})")
-                elif w.address == "M":
-                    m_dyn.append(f"_nocall('M', {code})")
-                else:
-                    words_dyn.append((w.address, code))
-        ends = s.ends
-        m_sub = [m for m in m_const if m not in (2, 30)]
-        has_motion = any(k[0] in AXIS_LETTERS for k in words_const) or any(a[0] in AXIS_LETTERS for a, _ in words_dyn)
-        has_motion = has_motion and not PARAMETER_G.intersection(g_const)  # G60 X5: a shift, no travel
+        src = self.const(("src", line))  # every block has its constant, queued or not
+        words = NcWords(s, self.word)
         if s.skip:
             self.emit("if not _rt.block_skip:", line)
             self.src._indent += 1
-        queued = bool(g_const or m_const or words_const or g_dyn or m_dyn or words_dyn or s.loose or s.msg is not None)
-        if queued:
-            dynamic = bool(g_dyn or m_dyn or words_dyn or s.loose)
-            typ3 = g_dyn or m_dyn or s.loose or TYP3_G.intersection(g_const) or GEARS.intersection(m_const)
-            enqueue = "_q3" if typ3 else "_q"
-            # a plain block (a motion G code at most, words of PLAIN_WORDS): the queue runs it column-wise
-            plain = (not m_const and not m_dyn and not g_dyn and not s.loose and s.msg is None
-                     and len(g_const) <= 1 and set(g_const) <= {0, 1, 2, 3}
-                     and set(words_const) <= _PLAIN and all(a in _PLAIN for a, _ in words_dyn))
-            if plain:
-                self.plain_row(s, src, g_const, dict(words_const), dict(words_dyn), dynamic)
-            elif not dynamic:
-                blk = self.const(("block", tuple(g_const), tuple(m_const), dict(words_const), s.n, s.msg, line))
-                if ends and m_sub != m_const:
-                    blk_sub = self.const(("block", tuple(g_const), tuple(m_sub), dict(words_const), s.n, s.msg, line))
-                    self.emit(f"{enqueue}({blk} if _main else {blk_sub})", line)
-                else:
-                    self.emit(f"{enqueue}({blk})", line)
-            else:
-                g = "(" + ", ".join([repr(x) for x in g_const] + g_dyn) + ("," if (g_const or g_dyn) else "") + ")"
-                m_list = [repr(x) for x in m_const]
-                m = "(" + ", ".join(m_list + [f"_mval({c})" for c in m_dyn]) + ("," if (m_list or m_dyn) else "") + ")"
-                if ends and m_sub != m_const:
-                    m_sub_list = [repr(x) for x in m_sub]
-                    m_s = "(" + ", ".join(m_sub_list + [f"_mval({c})" for c in m_dyn]) + \
-                          ("," if (m_sub_list or m_dyn) else "") + ")"
-                    m = f"({m} if _main else {m_s})"
-                items = [f"{k!r}: {v!r}" for k, v in words_const.items()] + [f"{k!r}: {c}" for k, c in words_dyn]
-                words = "{" + ", ".join(items) + "}"
-                if s.loose:
-                    loose = "(" + ", ".join(self.arg(x) for x in s.loose) + ",)"
-                    self.emit(f"{enqueue}(_loose({g}, {m}, {words}, {loose}, {s.n!r}, {s.msg!r}, {src}))", line)
-                else:
-                    self.emit(f"{enqueue}(_Block({g}, {m}, {words}, {s.n!r}, {s.msg!r}, {src}))", line)
-            if 80 in g_const:
+        if words.queued:
+            self.nc_queue(s, words, src)
+            if 80 in words.g_const:
                 self.emit("_modal[0] = None", line)
-            elif has_motion and self.ln.modal_calls:
+            elif words.has_motion and self.ln.modal_calls:
                 self.emit(f"if _modal[0] is not None: _modal_call({line})", line)
         if s.wait:
             self.emit("_drain()", line)
         if s.call is not None:
-            name, args, modal = s.call
-            argc = ", ".join(self.arg(a) for a in args)
-            self.emit("_st.steps += _n; _n = 0", line)
-            self.emit(f"_call({name!r}, ({argc}{',' if args else ''}), False, {line})", line)
-            self.emit("_lim = _st.limit - _st.steps", line)
-            if modal:
-                self.emit(f"_modal[0] = ({name!r}, ({argc}{',' if args else ''}))", line)
-        if ends:
+            self.nc_call(s)
+        if s.ends:
             self.emit("raise _EP", line)
         if s.skip:
             self.src._indent -= 1
+
+    def word(self, w: A.NcWord) -> str:
+        """The Python expression of an [expr] word's value."""
+        code, ty = self.ex(w.expr)
+        e = w.expr
+        if isinstance(e, A.Var) and e.var.cls == "A" and e.var.suffix == "" and not e.index:
+            return f"_wtor(P[{int(e.var.name) - 1}])"  # REAL view of a parameter, checked as a word
+        if isinstance(e, (A.Var, A.Func)) or ty == "?":
+            return f"_word({code})"
+        return code
+
+    def nc_queue(self, s: A.NcBlock, w: NcWords, src: str) -> None:
+        """Queue the block: a plain row, a constant block, or one built at run time."""
+        line = s.line
+        typ3 = w.g_dyn or w.m_dyn or s.loose or TYP3_G.intersection(w.g_const) or GEARS.intersection(w.m_const)
+        enqueue = "_q3" if typ3 else "_q"
+        if w.plain:
+            self.plain_row(s, src, w.g_const, dict(w.words_const), dict(w.words_dyn), w.dynamic)
+        elif not w.dynamic:
+            blk = self.const(("block", tuple(w.g_const), tuple(w.m_const), dict(w.words_const), s.n, s.msg, line))
+            if s.ends and w.m_sub != w.m_const:
+                blk_sub = self.const(("block", tuple(w.g_const), tuple(w.m_sub), dict(w.words_const), s.n, s.msg,
+                                      line))
+                self.emit(f"{enqueue}({blk} if _main else {blk_sub})", line)
+            else:
+                self.emit(f"{enqueue}({blk})", line)
+        else:
+            self.nc_dynamic(s, w, enqueue, src)
+
+    def nc_dynamic(self, s: A.NcBlock, w: NcWords, enqueue: str, src: str) -> None:
+        """A block with [expr] words: its G, M and word values are computed when the block is prepared."""
+        line = s.line
+        g = "(" + ", ".join([repr(x) for x in w.g_const] + w.g_dyn) + ("," if (w.g_const or w.g_dyn) else "") + ")"
+        m = _m_tuple(w.m_const, w.m_dyn)
+        if s.ends and w.m_sub != w.m_const:
+            m = f"({m} if _main else {_m_tuple(w.m_sub, w.m_dyn)})"
+        items = [f"{k!r}: {v!r}" for k, v in w.words_const.items()] + [f"{k!r}: {c}" for k, c in w.words_dyn]
+        words = "{" + ", ".join(items) + "}"
+        if s.loose:
+            loose = "(" + ", ".join(self.arg(x) for x in s.loose) + ",)"
+            self.emit(f"{enqueue}(_loose({g}, {m}, {words}, {loose}, {s.n!r}, {s.msg!r}, {src}))", line)
+        else:
+            self.emit(f"{enqueue}(_Block({g}, {m}, {words}, {s.n!r}, {s.msg!r}, {src}))", line)
+
+    def nc_call(self, s: A.NcBlock) -> None:
+        """The sub-program call of an NC block (L, or a drilling cycle's G81-G86 made modal)."""
+        line = s.line
+        name, args, modal = s.call
+        argc = ", ".join(self.arg(a) for a in args)
+        self.emit("_st.steps += _n; _n = 0", line)
+        self.emit(f"_call({name!r}, ({argc}{',' if args else ''}), False, {line})", line)
+        self.emit("_lim = _st.limit - _st.steps", line)
+        if modal:
+            self.emit(f"_modal[0] = ({name!r}, ({argc}{',' if args else ''}))", line)
 
     def plain_row(self, s: A.NcBlock, src: str, g: list, const: dict, dyn: dict, dynamic: bool) -> None:
         """A plain block goes into the queue as a plain row (nc.block): a tuple, no Block and no dict."""
@@ -860,7 +670,7 @@ class Gen:
             s = self.stmts[i]
             if not isinstance(s, A.LabelDef):
                 n += 1
-            i = pair[i]["end"] + 1 if type(s) in (A.If, A.Case, A.For, A.While, A.Repeat) else i + 1
+            i = pair[i]["end"] + 1 if type(s) in STRUCTURES else i + 1
         return n
 
     def structured(self, a: int, b: int, extra: int = 0) -> None:
@@ -887,7 +697,7 @@ class Gen:
 
     @staticmethod
     def _next_index(i: int, t, pair) -> int:
-        return pair[i]["end"] + 1 if t in (A.If, A.Case, A.For, A.While, A.Repeat) else i + 1
+        return pair[i]["end"] + 1 if t in STRUCTURES else i + 1
 
     def _structured_one(self, i: int, s, t, pair) -> None:
         """One statement of a stretch (a whole structure for IF, CASE and the loops)."""
@@ -937,62 +747,42 @@ class Gen:
     def case_selector(self, s) -> tuple[str, str]:
         """The temporary that holds a CASE value, and the Python statement that sets it."""
         sel = self.temp("c")
-        code, ty = self.ex(s.expr)
-        if ty not in ("I", "?"):
-            raise GenError("CPL032", f"CASE needs an INTEGER expression, not {_tname(ty)}")
-        return sel, f"{sel} = _caseval({code})"
+        return sel, f"{sel} = _caseval({self.ex(s.expr)[0]})"
 
     def condition(self, e) -> str:
         code, ty = self.ex(e)
-        if ty == "B":
-            return f"_cond({code})" if _maybe_nul(e) else code
-        if ty == "?":
-            return f"_cond({code})"
-        raise GenError("CPL032", f"condition must be BOOLEAN, not {_tname(ty)}")
+        return code if ty == "B" and not _maybe_nul(e) else f"_cond({code})"
 
-    def for_parts(self, i: int, s: A.For):
+    def for_parts(self, s: A.For):
+        """The counter, its type, the start (code, type), the end's code and the constant step (or None)."""
         v = s.var
-        if v.var.type not in NUMERIC or v.var.cls == "A":  # any numerical variable (§2.5.5 L924), not a parameter
-            raise GenError("CPL001", "FOR needs a numeric variable")
-        ctype = v.var.type
-        start_code, start_ty = self.ex(s.start)
-        end_code, end_ty = self.ex(s.end)
-        if end_ty not in NUMERIC + ("?",):
-            raise GenError("CPL032", "FOR end value must be a number")
-        step = s.step
-        const_step = None
-        if step is None:
-            const_step = 1
-        elif isinstance(step, A.Num):
-            const_step = step.value
-        elif isinstance(step, A.Unary) and step.op == "-" and isinstance(step.operand, A.Num):
-            const_step = -step.operand.value
-        return v, ctype, (start_code, start_ty), end_code, const_step
+        start = self.ex(s.start)
+        end_code = self.ex(s.end)[0]
+        return v, v.var.type, start, end_code, const_step(s.step)
 
     def for_loop(self, i: int, s: A.For, end: int) -> None:
-        v, ctype, start, end_code, const_step = self.for_parts(i, s)
+        v, ctype, start, end_code, step = self.for_parts(s)
         fe = self.temp("fe")
         fs = self.temp("fs")
         self.store(v, start[0], start[1], s.line)
         self.emit(f"{fe} = {end_code}", s.line)
-        counter, _ = self.read(v)
-        if const_step is not None:
-            test = f"{counter} <= {fe}" if const_step >= 0 else f"{counter} >= {fe}"
-            step_code = repr(const_step)
-            step_ty = "I" if isinstance(const_step, int) else "R"
+        counter = self.read(v)
+        if step is not None:
+            test = f"{counter} <= {fe}" if step >= 0 else f"{counter} >= {fe}"
+            step_code = repr(step)
         else:
-            step_code, step_ty = self.ex(s.step)
+            step_code = self.ex(s.step)[0]
             self.emit(f"{fs} = {step_code}", s.line)
             test = f"({counter} <= {fe} if {fs} >= 0 else {counter} >= {fe})"
         nxt = self.stmts[end]
         with self.block(f"while {test}:", s.line):
             self.structured(i + 1, end, extra=1)
-            if const_step is not None:
+            if step is not None:
                 inc_code = f"({counter} + {step_code})"
             else:
                 self.emit(f"{fs} = {step_code}", nxt.line)
                 inc_code = f"({counter} + {fs})"
-            inc_ty = "I" if ctype == "I" and step_ty == "I" else ("D" if "D" in (ctype, step_ty) else "R")
+            inc_ty = increment_type(ctype, step_type(step, self.types, s.step))
             if ctype == "I" and inc_ty == "I" and v.var.cls == "L" and not v.index:
                 self.emit(f"{counter} = {inc_code}", nxt.line)
             else:
@@ -1005,32 +795,8 @@ class Gen:
     # -- dispatch code (programs with GOTO) ---------------------------------------------------
     def dispatch(self) -> None:
         stmts = self.stmts
-        pair = self.ln.pair
         n = len(stmts)
-        leaders = {0}
-        for i, s in enumerate(stmts):
-            t = type(s)
-            if t is A.Goto:
-                leaders.add(self.ln.jumps[i])
-            elif t is A.If:
-                info = pair[i]
-                leaders.add(info["else"] + 1 if info["else"] is not None else info["end"] + 1)
-                leaders.add(info["end"] + 1)
-            elif t is A.Case:
-                info = pair[i]
-                for arm in info["arms"]:
-                    leaders.add(arm + 1)
-                if info["otherwise"] is not None:
-                    leaders.add(info["otherwise"] + 1)
-                leaders.add(info["end"] + 1)
-            elif t is A.For:
-                leaders.add(pair[i]["end"] + 1)
-                leaders.add(("t", i))
-            elif t is A.While:
-                leaders.add(i)
-                leaders.add(pair[i]["end"] + 1)
-            elif t is A.Repeat:
-                leaders.add(i + 1)
+        leaders = self.leaders()
         order = sorted((x for x in leaders if isinstance(x, int)))
         pc: dict = {}
         for x in order:
@@ -1053,6 +819,36 @@ class Gen:
             self.emit("break")
             self.src._indent -= 1
 
+    def leaders(self) -> set:
+        """The statements that begin a basic block (jump targets, the statements after a structure's parts),
+        and ("t", i) for the test of the FOR loop at i."""
+        pair = self.ln.pair
+        leaders: set = {0}
+        for i, s in enumerate(self.stmts):
+            t = type(s)
+            if t is A.Goto:
+                leaders.add(self.ln.jumps[i])
+            elif t is A.If:
+                info = pair[i]
+                leaders.add(info["else"] + 1 if info["else"] is not None else info["end"] + 1)
+                leaders.add(info["end"] + 1)
+            elif t is A.Case:
+                info = pair[i]
+                for arm in info["arms"]:
+                    leaders.add(arm + 1)
+                if info["otherwise"] is not None:
+                    leaders.add(info["otherwise"] + 1)
+                leaders.add(info["end"] + 1)
+            elif t is A.For:
+                leaders.add(pair[i]["end"] + 1)
+                leaders.add(("t", i))
+            elif t is A.While:
+                leaders.add(i)
+                leaders.add(pair[i]["end"] + 1)
+            elif t is A.Repeat:
+                leaders.add(i + 1)
+        return leaders
+
     def _open(self, k: int) -> None:
         self.emit(f"if _pc == {k}:")
         self.src._indent += 1
@@ -1069,16 +865,7 @@ class Gen:
             self.emit(part, line)
 
     def lower(self, i: int, s) -> None:
-        """One statement in the GOTO form; when collecting (``errors`` is a list), a type error is noted
-        and the next statement goes on, so one check reports every statement's error."""
-        if self.errors is None:
-            return self._lower(i, s)
-        try:
-            self._lower(i, s)
-        except GenError as e:
-            self.errors.append((e, e.stmt or s))
-
-    def _lower(self, i: int, s) -> None:
+        """One statement in the GOTO form."""
         self.cur = s
         t = type(s)
         pair = self.ln.pair
@@ -1106,37 +893,9 @@ class Gen:
         elif t in (A.CaseLabel, A.Otherwise):
             self.emit_jump(pair[i]["end"] + 1, line)
         elif t is A.For:
-            v, ctype, start, end_code, const_step = self.for_parts(i, s)
-            fe, fs = f"_fe{i}", f"_fs{i}"
-            self.store(v, start[0], start[1], line)
-            self.emit(f"{fe} = {end_code}", line)
-            if const_step is not None:
-                self.emit(f"{fs} = {const_step!r}", line)
-            else:
-                self.emit(f"{fs} = {self.ex(s.step)[0]}", line)
-            self._close(self.pc[("t", i)])
-            self._open(self.pc[("t", i)])
-            counter = self.read(v)[0]
-            self.emit("_n += 1", line)
-            with self.block(f"if not ({counter} <= {fe} if {fs} >= 0 else {counter} >= {fe}):", line):
-                self.emit_jump(pair[i]["end"] + 1, line)
+            self.lower_for(i, s)
         elif t is A.Next:
-            j = pair[i]["for"]
-            f = self.stmts[j]
-            try:
-                v, ctype, start, end_code, const_step = self.for_parts(j, f)
-            except GenError:
-                if self.errors is None:
-                    raise
-                return  # the FOR statement has reported it
-            fs = f"_fs{j}"
-            if const_step is None:
-                self.emit(f"{fs} = {self.ex(f.step)[0]}", line)
-            counter = self.read(v)[0]
-            step_ty = "I" if isinstance(const_step, int) else ("R" if const_step is not None else self.ex(f.step)[1])
-            inc_ty = "I" if ctype == "I" and step_ty == "I" else ("D" if "D" in (ctype, step_ty) else "R")
-            self.store(v, f"({counter} + {fs})", inc_ty, line)
-            self.emit_jump(("t", j), line)
+            self.lower_next(i, s)
         elif t is A.While:
             self.emit("_n += 1", line)
             with self.block(f"if not {self.condition(s.cond)}:", line):
@@ -1154,6 +913,40 @@ class Gen:
         else:
             self.emit("_n += 1", line)
             self.simple(i, s)
+
+    def lower_for(self, i: int, s: A.For) -> None:
+        """FOR in the GOTO form: the start and the limits, then the test, a basic block of its own."""
+        pair = self.ln.pair
+        line = s.line
+        v, ctype, start, end_code, step = self.for_parts(s)
+        fe, fs = f"_fe{i}", f"_fs{i}"
+        self.store(v, start[0], start[1], line)
+        self.emit(f"{fe} = {end_code}", line)
+        if step is not None:
+            self.emit(f"{fs} = {step!r}", line)
+        else:
+            self.emit(f"{fs} = {self.ex(s.step)[0]}", line)
+        self._close(self.pc[("t", i)])
+        self._open(self.pc[("t", i)])
+        counter = self.read(v)
+        self.emit("_n += 1", line)
+        with self.block(f"if not ({counter} <= {fe} if {fs} >= 0 else {counter} >= {fe}):", line):
+            self.emit_jump(pair[i]["end"] + 1, line)
+
+    def lower_next(self, i: int, s: A.Next) -> None:
+        """NEXT in the GOTO form: the step (a computed STEP again) and the jump back to the test."""
+        pair = self.ln.pair
+        line = s.line
+        j = pair[i]["for"]
+        f = self.stmts[j]
+        v, ctype, start, end_code, step = self.for_parts(f)
+        fs = f"_fs{j}"
+        if step is None:
+            self.emit(f"{fs} = {self.ex(f.step)[0]}", line)
+        counter = self.read(v)
+        inc_ty = increment_type(ctype, step_type(step, self.types, f.step))
+        self.store(v, f"({counter} + {fs})", inc_ty, line)
+        self.emit_jump(("t", j), line)
 
     # -- the unit ------------------------------------------------------------------------
     def generate(self) -> UnitCode:
@@ -1208,12 +1001,57 @@ class Gen:
         return UnitCode(self.path, src, self.consts, cpl_lines, report, self.row_words)
 
 
-class _Raw:
-    """An already compiled value (used to store WAIT results and FOR counters through the assignment rules)."""
 
-    def __init__(self, code: str, ty: str):
-        self.code = code
-        self.ty = ty
+
+class NcWords:
+    """The words of an NC block sorted for emitting: constant and computed G, M and address words."""
+
+    def __init__(self, s: A.NcBlock, word):
+        self.g_const: list = []
+        self.m_const: list = []
+        self.g_dyn: list[str] = []
+        self.m_dyn: list[str] = []
+        self.words_const: dict = {}
+        self.words_dyn: list[tuple[str, str]] = []
+        for w in s.words:
+            if w.expr is None:
+                if w.address == "G":
+                    v = w.value
+                    self.g_const.append(int(v) if v == int(v) else v)
+                elif w.address == "M":
+                    self.m_const.append(int(w.value))
+                else:
+                    self.words_const[w.address] = w.value
+            else:
+                code = word(w)
+                if w.address == "G":
+                    self.g_dyn.append(f"_nocall('G', {code})")
+                elif w.address == "M":
+                    self.m_dyn.append(f"_nocall('M', {code})")
+                else:
+                    self.words_dyn.append((w.address, code))
+        #: the M functions of the block in a sub-program (M2/M30 end the sub-program, not the run)
+        self.m_sub = [m for m in self.m_const if m not in (2, 30)]
+        moves = any(k[0] in AXIS_LETTERS for k in self.words_const) or any(a[0] in AXIS_LETTERS for a, _ in self.words_dyn)
+        self.has_motion = moves and not PARAMETER_G.intersection(self.g_const)  # G60 X5: a shift, no travel
+        self.queued = bool(self.g_const or self.m_const or self.words_const or self.g_dyn or self.m_dyn
+                           or self.words_dyn or s.loose or s.msg is not None)
+        self.dynamic = bool(self.g_dyn or self.m_dyn or self.words_dyn or s.loose)
+        # a plain block (a motion G code at most, words of PLAIN_WORDS): the queue runs it column-wise
+        self.plain = (not self.m_const and not self.m_dyn and not self.g_dyn and not s.loose and s.msg is None
+                      and len(self.g_const) <= 1 and set(self.g_const) <= {0, 1, 2, 3}
+                      and set(self.words_const) <= _PLAIN and all(a in _PLAIN for a, _ in self.words_dyn))
+
+
+def _m_tuple(m_const: list, m_dyn: list[str]) -> str:
+    """The Python tuple of a block's M functions: the constant ones, then the computed ones."""
+    items = [repr(x) for x in m_const] + [f"_mval({c})" for c in m_dyn]
+    return "(" + ", ".join(items) + ("," if items else "") + ")"
+
+
+#: CPL's logical and relational operators as Python's
+LOGIC = {"AND": "&", "OR": "|", "XOR": "^"}
+RELATION = {"=": "==", "<>": "!=", "<": "<", ">": ">", "<=": "<=", ">=": ">="}
 
 
 def _not_nul(e, code: str, ty: str) -> str:
@@ -1248,31 +1086,8 @@ def _maybe_nul(e) -> bool:
     return isinstance(e, (A.Var, A.Func))
 
 
-def _tname(ty: str) -> str:
-    return {"I": "INTEGER", "R": "REAL", "D": "DOUBLE", "B": "BOOLEAN", "S": "CHARACTER", "N": "NUL",
-            "?": "unknown"}.get(ty, ty)
-
-
 #: output statements whose arguments from this position on are printed (NUL prints nothing)
 TEXT_FROM = {"DSP": 2, "PRN": 2}
-
-
-#: statements that are plain calls of a CplIO part: name -> attribute of ``_io`` (chapters 6-8)
-IO_PROCS = {
-    **{n: "files" for n in ("OPENR", "OPENW", "CLOSE", "REWRITE", "SEEK")},
-    **{n: "screen" for n in ("DSP", "PRN", "DLG", "ENDDLG", "CSF", "TFO", "COL", "RGB", "GMD", "GWD", "MWD", "LIN",
-                              "CIR", "FIL", "CLG", "CLR", "CLS", "GPR", "BMP", "DLF")},
-}
-
-def io_arity(target: str, name: str) -> tuple[int, int]:
-    """How many arguments the statement ``name`` of a CplIO part takes: its method's positional parameters
-    (99 = any number), so that a wrong count is a compile error rather than a failed call at run time."""
-    method = getattr({"files": CplFiles, "screen": Screen}[target], name)
-    params = list(inspect.signature(method).parameters.values())[1:]  # without self
-    positional = [p for p in params if p.kind == p.POSITIONAL_OR_KEYWORD]
-    lo = sum(1 for p in positional if p.default is p.empty)
-    hi = 99 if any(p.kind == p.VAR_POSITIONAL for p in params) else len(positional)
-    return lo, hi
 
 
 #: built-ins with a numeric argument known at compile time, written inline (no call, no type check)
@@ -1296,43 +1111,19 @@ HELPER_NAMES = (
 ) + tuple(f"_F_{name.replace('$', '_S')}" for name in FUNCTIONS)
 
 
-def generate(ln, hook: bool = False) -> tuple[UnitCode | None, list]:
-    """Generate the unit for a linked program; diagnostics for errors only code generation sees (types).
+def generate(ln, types: Types, hook: bool = False) -> tuple[UnitCode | None, list]:
+    """Generate the unit for a linked program the checker passed (``types`` are its results).
 
     Structures nested deeper than Python's blocks allow are generated in the flat (GOTO) form instead; an
     expression too deep for Python is the manual's NESTING TOO DEEP (2153, §2.5.1 L782: the depth a control
     allows depends on the memory the expression needs)."""
     for flat in ((True,) if ln.uses_goto else (False, True)):
-        g = Gen(ln, hook)
+        g = Gen(ln, types, hook)
         g.flat = flat
         try:
             return g.generate(), []
-        except GenError as e:
-            return None, [_diag(ln, err, s) for err, s in _every_type_error(ln) or [(e, e.stmt or g.cur)]]
         except (RecursionError, SyntaxError, MemoryError) as e:
             line = g.src.source_line(e.lineno) if isinstance(e, SyntaxError) and e.lineno else 0
             s = next((x for x in g.stmts if x.line == line), None) or g.cur
     return None, [diag("2153", "expression or structure too deep to evaluate", ln.prog.path, s.line if s else 1,
                        (s.col or None) if s else None, s.cpl if s else None)]
-
-
-def _every_type_error(ln) -> list:
-    """The type errors of every statement: the program generated again in the GOTO form, where each statement
-    (an IF's condition, a FOR's limits, ...) is lowered on its own, noting each error and going on."""
-    g = Gen(ln)
-    g.flat, g.errors = True, []
-    try:
-        g.generate()
-    except (GenError, RecursionError, SyntaxError, MemoryError):
-        pass
-    return sorted(g.errors, key=lambda es: (es[1].line if es[1] else 0, (es[1].col or 0) if es[1] else 0))
-
-
-def _diag(ln, e: GenError, s):
-    return diag(e.code, e.detail, ln.prog.path, s.line if s else 1, (s.col or None) if s else None,
-                s.cpl if s else None)
-
-
-def _a(ty: str) -> str:
-    name = _tname(ty)
-    return ("an " if name[0] in "AEIOU" else "a ") + name

@@ -21,7 +21,7 @@ import math
 import re
 from pathlib import Path
 
-from ...diagnostics import Frame, RuntimeFault, Span
+from ...diagnostics import CompileFailed, Frame, RuntimeFault, Span
 from ...machine.scenario import EventQueue, InterfaceBit, of_type, refuse
 from ...nc.block import Block, DinSyntaxError, as_block, parse_din_line, plain_row
 from ...nc.canon import CanonSink, Src
@@ -33,6 +33,7 @@ from ...runtime.memory import out_of_memory
 from . import values as V
 from .axiswords import check_words, refused_blocks, refusing
 from .builtins import FUNCTIONS
+from .checker import check
 from .codegen import HELPER_NAMES, generate
 from .errors import CplError, fault, message
 from .io import strings as S
@@ -152,9 +153,9 @@ class CplRuntime:
         hook = self.hook is not None
         uc = ln.unit if not hook else None
         if uc is None:
-            uc, diags = generate(ln, hook)
+            types, diags = check(ln)
+            uc, diags = (None, diags) if diags else generate(ln, types, hook)
             if diags:
-                from ...diagnostics import CompileFailed
                 raise CompileFailed(diags)
             if not hook:
                 ln.unit = uc
@@ -454,6 +455,10 @@ class CplRuntime:
                 self._shadow.execute(as_block(blk))
             self._shadow_at += 1
         return self._shadow
+
+    def forget_prepared(self) -> None:
+        """Offsets or tool tables changed under the prepared blocks: the prepared state is built again."""
+        self._shadow = None
 
     def loose(self, g, m, words, loose, n, msg, src):
         """A block with standalone [A$] words: each value is NC text such as "G1" (manual L2110)."""

@@ -73,7 +73,7 @@ def _whole(value, name: str) -> int:
 
 def font_for(number: int, cut: int, em_px: int):
     """A PIL font for TFO font ``number`` with ``cut`` (0..3), ``em_px`` pixels to the em."""
-    import matplotlib
+    import matplotlib  # imported when text is drawn: 0.16 s with PIL that most runs never need
     from PIL import ImageFont
 
     _name, family, forced = FONTS[number]

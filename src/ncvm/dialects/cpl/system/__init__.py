@@ -1,6 +1,6 @@
 """CPL system functions of manual chapter 4 on the simulated controller (digest §6.4-6.14, §8).
 
-SYSTEM_FUNCTIONS has the row format of builtins.FUNCTIONS (merged there); ``refs`` names argument
+SYSTEM_FUNCTIONS has the row format of builtins.FUNCTIONS (table.Builtin; merged there); ``refs`` names argument
 positions passed by name (a field the function fills), ``out`` the one variable it writes back (MCODS's
 version). SYSTEM_PROCS are the statement forms: ``FXC(...)=v`` and friends (name ending in '=') and the
 procedures FXCR, FXDEL, FXINS.
@@ -8,20 +8,13 @@ procedures FXCR, FXDEL, FXINS.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
-from ..builtins import Builtin
+from ..table import Builtin
 from . import areas, ncs, offsets, plc, positions, sercos, sysdata, tools, transforms
+from .context import SystemContext
 
 
-@dataclass(frozen=True, slots=True)
-class SysBuiltin(Builtin):
-    refs: tuple = ()
-    out: int | None = None
-
-
-def _b(impl, lo, hi, res, section, **kw) -> SysBuiltin:
-    return SysBuiltin(impl, lo, hi, res, section, True, **kw)
+def _b(impl, lo, hi, res, section, **kw) -> Builtin:
+    return Builtin(impl, lo, hi, res, section, True, **kw)
 
 
 SYSTEM_FUNCTIONS: dict[str, Builtin] = {
@@ -71,7 +64,7 @@ SYSTEM_PROCS = {
 }
 
 
-def setup(rt) -> None:
+def setup(rt: SystemContext) -> None:
     """At program start: the active ZS table and K4 are the NC kernel's offsets and tools; the kernel
     knows the G functions of the transformations (G60/G67, G37-G39, G138); the active work areas and
     dead ranges watch the motion."""

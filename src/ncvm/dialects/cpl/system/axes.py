@@ -10,10 +10,11 @@ axes of other channels hold their configured position (nothing moves them in thi
 from __future__ import annotations
 
 from ..errors import CplError
+from .context import SystemContext
 from .controller import PhysAxis
 
 
-def ctl(rt):
+def ctl(rt: SystemContext):
     return rt.ctl
 
 
@@ -23,7 +24,7 @@ def nul(v):
     return v
 
 
-def resolve(rt, sel, seltype=1, chan=None, *, own_only: bool = True, physical_ok: bool = True) -> PhysAxis:
+def resolve(rt: SystemContext, sel, seltype=1, chan=None, *, own_only: bool = True, physical_ok: bool = True) -> PhysAxis:
     """The physical axis behind a selection; run-time errors 1938 (not configured) and 1970 (other channel)."""
     c = rt.ctl
     sel = nul(sel)
@@ -63,7 +64,7 @@ def resolve(rt, sel, seltype=1, chan=None, *, own_only: bool = True, physical_ok
     return ax
 
 
-def kernel_index(rt, ax: PhysAxis) -> int | None:
+def kernel_index(rt: SystemContext, ax: PhysAxis) -> int | None:
     """The NC kernel's index of an axis of the calling channel, else None."""
     if ax.channel != rt.ctl.channel:
         return None

@@ -70,6 +70,10 @@ class Controller:
     g_programmed: NcFuncs = field(default_factory=NcFuncs)  # Typ3 G functions at block preparation
     g_active: NcFuncs = field(default_factory=NcFuncs)  # ... and as executed
     areas: list[dict] = field(default_factory=list)  # work areas and dead ranges 1..10 (SD 200)
+    #: what MCOPS changed in the channels of a run: operating modes (MCOPS 7), selected programs,
+    #: return-to-path settings, jog recording, automatic re-selection (channel -> value)
+    ncs: dict[str, dict] = field(default_factory=lambda: {"mode": {}, "selected": {}, "return": {}, "recording": {},
+                                                          "reselect": {}})
     store: object = None
     #: what the last measuring block measured (G75 by default: PROBE, CPROBE read it)
     probe: ProbeLatch = field(default_factory=lambda: ProbeLatch(75))
@@ -89,15 +93,6 @@ class Controller:
     def persist(self, ns: str, key: str, value) -> None:
         if self.store is not None:
             self.store().put(ns, key, value)
-
-
-def ncs_state(rt) -> dict:
-    """What MCOPS changed in the channels of a run: operating modes (MCOPS 7), selected programs,
-    return-to-path settings, jog recording, automatic re-selection (channel -> value)."""
-    st = getattr(rt, "_ncs", None)
-    if st is None:
-        st = rt._ncs = {"mode": {}, "selected": {}, "return": {}, "recording": {}, "reselect": {}}
-    return st
 
 
 #: operating mode (MCOPS 7 / MCODS 31) -> SD(13): 0 single block or step, 1 automatic, 2 program block

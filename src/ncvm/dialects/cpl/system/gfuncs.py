@@ -31,6 +31,7 @@ from dataclasses import dataclass, replace
 from ....nc.block import Block
 from ....nc.spindle import CPL_GEARS
 from ..errors import CplError
+from .context import SystemContext
 
 WORD_CODES = frozenset((130, 131, 168, 268, 328, 580, 581))  # their block's words are their values
 COMPENSATIONS = frozenset([146] + [g + 45 for g in range(100, 900, 100)] + [g + 47 for g in range(100, 900, 100)])
@@ -70,7 +71,7 @@ class Typ3Block(Block):
         return bool(self.g or self.m or self.words or self.msg is not None)
 
 
-def prepare(rt, blk: Block) -> Block:
+def prepare(rt: SystemContext, blk: Block) -> Block:
     """Take the Typ3 G functions (and the gear M functions) out of a block at preparation."""
     if not (TYP3_G.intersection(blk.g) or GEARS.intersection(blk.m)):
         return blk
@@ -99,7 +100,7 @@ def _compensation(st: NcFuncs, g: int) -> NcFuncs:
     return replace(st, external=g) if g % 100 == 45 else replace(st, general=g)
 
 
-def _with_words(rt, blk: Block, code: int, st: NcFuncs, words: dict) -> NcFuncs:
+def _with_words(rt: SystemContext, blk: Block, code: int, st: NcFuncs, words: dict) -> NcFuncs:
     """G168/G268, G130/G131, G328, G580/G581: the values of the block's words (taken out of ``words``)."""
     c = rt.ctl
     logical = c.channel_axes(c.channel)[:N_LOGICAL]
@@ -145,7 +146,7 @@ def _couple(st: NcFuncs, axes, words: dict, n_logical: int, scale: float) -> tup
     return tuple(sorted([cp for cp in st.coupling if cp[0] != slave] + [entry]))
 
 
-def activate(rt, kernel, blk: Typ3Block) -> None:
+def activate(rt: SystemContext, kernel, blk: Typ3Block) -> None:
     """Execution of a Typ3Block: its state becomes active (on the NC kernel, or on the prepared copy)."""
     if kernel is rt.kernel:
         rt.ctl.g_active = blk.state
@@ -154,7 +155,7 @@ def activate(rt, kernel, blk: Typ3Block) -> None:
         kernel.execute(blk)
 
 
-def additive(rt, kernel, state: NcFuncs) -> list[float]:
+def additive(rt: SystemContext, kernel, state: NcFuncs) -> list[float]:
     """The kernel's additive offsets: external shifts G160/G260/G360 plus the shifts G168 and G268."""
     c = rt.ctl
     logical = [a.name for a in c.channel_axes(c.channel)]
@@ -165,7 +166,7 @@ def additive(rt, kernel, state: NcFuncs) -> list[float]:
     return add
 
 
-def program_shift(rt, kernel, i: int) -> float:
+def program_shift(rt: SystemContext, kernel, i: int) -> float:
     """G168 + G268 (mm) of kernel axis i: part of the kernel's additive offset that is no axis zero shift."""
     c = rt.ctl
     st = c.g_active if kernel is rt.kernel else c.g_programmed

@@ -14,7 +14,7 @@ from ....nc.spindle import CPL_GEARS
 from ..errors import CplError
 from ..io.strings import CharacterField
 from .axes import kernel_index, nul
-from .controller import ncs_state
+from .context import SystemContext
 from .gfuncs import GEARS, program_shift
 from .offsets import push_to_kernel
 from .sysdata import g_of_group
@@ -36,28 +36,24 @@ KERNEL_M = frozenset((0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 30))
 MODES = (1, 2, 4, 5, 6, 7, 10, 11, 12, 13, 14)
 
 
-def _state(rt) -> dict:
-    return ncs_state(rt)
-
-
 def _channels(c) -> list[int]:
     return sorted({a.channel for a in c.axes.values() if a.channel > 0})
 
 
-def _sav_ipo(rt, ch: int) -> list[int]:
+def _sav_ipo(rt: SystemContext, ch: int) -> list[int]:
     """SAV and IPO state (digest §8.6): the own channel is active while blocks are prepared or queued."""
     if ch == rt.ctl.channel:
         return [3, 1 if rt.queue or rt.moving() else 3]
-    return [2 if _state(rt)["selected"].get(ch) else 1, 3]
+    return [2 if rt.ctl.ncs["selected"].get(ch) else 1, 3]
 
 
-def _positions(rt, axes, mcs=True) -> list[float]:
+def _positions(rt: SystemContext, axes, mcs=True) -> list[float]:
     """MCS positions at the program's time, or (mcs=False) the programmed end points of the executed blocks."""
     pos = rt.executed_position() if mcs else rt.kernel.prog
     return [a.position if (i := kernel_index(rt, a)) is None else pos[i] for a in axes]
 
 
-def _coordinates(rt, axes, wcs: bool) -> list[float]:
+def _coordinates(rt: SystemContext, axes, wcs: bool) -> list[float]:
     """MCODS 71 (WCS) and 72 (BCS): the MCS without the axis zero shifts and the tool length (G92 and the
     program shifts G168/G268 stay in); the WCS also without the coordinate transformation G138, which lies
     between the two (manual L1323)."""
@@ -69,7 +65,7 @@ def _coordinates(rt, axes, wcs: bool) -> list[float]:
             for a in axes]
 
 
-def _data(rt, typ: int, ch: int, size: int, axisno, idno):
+def _data(rt: SystemContext, typ: int, ch: int, size: int, axisno, idno):
     """The data of service ``typ`` as a list (numbers) or a string; None = not available."""
     c, k = rt.ctl, rt.kernel
     system = [c.axes[i] for i in sorted(c.axes)]
@@ -104,9 +100,9 @@ def _data(rt, typ: int, ch: int, size: int, axisno, idno):
     if typ == 29:
         return [0]
     if typ == 30:
-        return str(rt.linked.main.prog.path) if ch == c.channel else _state(rt)["selected"].get(ch, "")
+        return str(rt.linked.main.prog.path) if ch == c.channel else rt.ctl.ncs["selected"].get(ch, "")
     if typ == 31:
-        return [_state(rt)["mode"].get(ch, 5)]
+        return [rt.ctl.ncs["mode"].get(ch, 5)]
     if typ == 32:
         return _sav_ipo(rt, ch)
     if typ in (33, 59, 60):
@@ -136,7 +132,7 @@ def _data(rt, typ: int, ch: int, size: int, axisno, idno):
     return _more(rt, typ, ch, system, own, axisno, idno)
 
 
-def _spindle_speed(rt) -> float:
+def _spindle_speed(rt: SystemContext) -> float:
     """The commanded speed with the potentiometer, held within the permissible range (MCODS 19/20)."""
     c, k = rt.ctl, rt.kernel
     if not k.spindle_dir:
@@ -144,7 +140,7 @@ def _spindle_speed(rt) -> float:
     return min(max(k.speed * c.override["spindle"] / 100.0, c.spindle["min"]), c.spindle["max"])
 
 
-def _more(rt, typ: int, ch: int, system, own, axisno, idno):
+def _more(rt: SystemContext, typ: int, ch: int, system, own, axisno, idno):
     """Further services: lags, spindles, in-position and travel flags, end points, distance to go."""
     c, k = rt.ctl, rt.kernel
     moving = bool(rt.queue) or rt.moving()
@@ -172,10 +168,10 @@ def _more(rt, typ: int, ch: int, system, own, axisno, idno):
                 out.append(p.machine_pos[i] - (p.g92[i] if typ == 16 else 0.0))
         return out
     if typ == 46:
-        how, where = _state(rt)["return"].get(ch, (1, 3))
-        return [how, where, 1 if _state(rt)["recording"].get(ch, True) else 0]
+        how, where = rt.ctl.ncs["return"].get(ch, (1, 3))
+        return [how, where, 1 if rt.ctl.ncs["recording"].get(ch, True) else 0]
     if typ == 48:
-        return [_state(rt)["mode"].get(a.channel, 5) if a.channel > 0 else 0 for a in own]
+        return [rt.ctl.ncs["mode"].get(a.channel, 5) if a.channel > 0 else 0 for a in own]
     if typ == 52:
         return [sum(c.external[g][j] for g in c.external) for j in range(8)]
     if typ == 61:
@@ -218,7 +214,7 @@ def _more(rt, typ: int, ch: int, system, own, axisno, idno):
     return _status(rt, typ, ch, system, own)
 
 
-def _status(rt, typ: int, ch: int, system, own):
+def _status(rt: SystemContext, typ: int, ch: int, system, own):
     """Compensations, spindle limits and gears, jog speeds, messages, potentiometers, waiting states."""
     c, k = rt.ctl, rt.kernel
     if typ in (11, 12):  # tool radius compensation: G41/G42 of G group 8
@@ -259,14 +255,14 @@ def _status(rt, typ: int, ch: int, system, own):
     if typ == 66:  # 1 automatic gear selection (M40), 0 a gear chosen by hand
         return [1 if CPL_GEARS.is_auto(c.g_active.gear) else 0] + [0] * 7
     if typ == 70:
-        return [_state(rt)["reselect"].get(ch, 1)]
+        return [rt.ctl.ncs["reselect"].get(ch, 1)]
     return None
 
 
 DRIVE_TEXTS = {55: "S-0-0030", 56: "S-0-0140", 57: "S-0-0141"}  # manufacturer version, controller, motor
 
 
-def _drive(rt, typ, system, axisno, idno):
+def _drive(rt: SystemContext, typ, system, axisno, idno):
     """55-57: a drive's identification texts (axisno, 0 = axis 1); 62: SERCOS ``idno`` of every axis from
     the cyclic telegram (S-0-0051 the actual position), -2147483648 where the telegram lacks it."""
     c = rt.ctl
@@ -289,7 +285,7 @@ def _drive(rt, typ, system, axisno, idno):
     return out
 
 
-def f_mcods(rt, typ, chan, version, buffer, size, axisno=None, idno=None, p1=None):
+def f_mcods(rt: SystemContext, typ, chan, version, buffer, size, axisno=None, idno=None, p1=None):
     """MCODS(type,chan,version,buffer,size[,axisno[,idno[,P1]]]) -> (status, new version)."""
     c = rt.ctl
     typ, chan, size = (_whole(v) for v in (typ, chan, size))
@@ -343,10 +339,10 @@ def _fill(ref, data, size: int) -> None:
         buffer[n] = int(round(v)) if ty == "I" else float(v)
 
 
-def f_mcops(rt, fct, chan, p1=None, p2=None, p3=None, p4=None):
+def f_mcops(rt: SystemContext, fct, chan, p1=None, p2=None, p3=None, p4=None):
     """MCOPS(fct,chan[,p1..p4]): a process service on a channel; returns an NCS status code (L3128-3231)."""
     c = rt.ctl
-    st = _state(rt)
+    st = rt.ctl.ncs
     if chan != -2 and chan not in _channels(c):
         return NO_CHANNEL
     own = chan == c.channel
@@ -405,7 +401,7 @@ def f_mcops(rt, fct, chan, p1=None, p2=None, p3=None, p4=None):
     return SYNTAX
 
 
-def f_axp(rt, axis, value, axtype=1):
+def f_axp(rt: SystemContext, axis, value, axtype=1):
     """AXP: NC text '<axis name><value>' for an axis given by number (L2352-2376)."""
     c = rt.ctl
     if axis.__class__ is not int:

@@ -18,6 +18,7 @@ from ..errors import CplError
 from ..io.values import is_text, text_of
 from . import zsfile
 from .axes import kernel_index, nul, resolve, to_unit
+from .context import SystemContext
 from .controller import EXTERNAL, ZS_ROWS, new_zs_table
 from .gfuncs import additive
 from .positions import axis_zs
@@ -27,7 +28,7 @@ DB_TABLES = {1: "V1", 2: "V2", 3: "V3"}
 
 
 # -- the tables and the kernel ---------------------------------------------------------------------
-def setup(rt) -> None:
+def setup(rt: SystemContext) -> None:
     """At start: make sure V1..V3 and the active table exist; the active table and the kernel agree;
     other tables of the machine file (or of an older store) become files."""
     c = rt.ctl
@@ -52,7 +53,7 @@ def setup(rt) -> None:
     push_to_kernel(rt)
 
 
-def _tables_to_files(rt) -> None:
+def _tables_to_files(rt: SystemContext) -> None:
     """A table of [cpl] zs_tables (or of a store written before tables were files) that is neither a
     database table nor the active one is written to its file under the file root (a name without a
     path lies in the root) when that file does not exist yet; an existing file wins."""
@@ -80,7 +81,7 @@ def _to_mm(v: float, unit: str) -> float:
     return v * INCH if unit == "inch" else v
 
 
-def push_to_kernel(rt) -> None:
+def push_to_kernel(rt: SystemContext) -> None:
     """The active table's G54..G59 rows, the external shifts and G168/G268 into the NC kernel (in mm)."""
     c, k = rt.ctl, rt.kernel
     table = c.zs_tables[c.zs_active]
@@ -90,7 +91,7 @@ def push_to_kernel(rt) -> None:
             if name in table["columns"]:
                 vec[i] = _to_mm(table["rows"][row][table["columns"].index(name)], table["unit"])
     k.set_additive_offset(additive(rt, k, c.g_active))
-    rt._shadow = None  # the prepared state is rebuilt with the new offsets
+    rt.forget_prepared()  # the prepared state is rebuilt with the new offsets
 
 
 # -- naming a table ------------------------------------------------------------------------------
@@ -125,7 +126,7 @@ def _store_key(c, text: str) -> str | None:
     return text if text in c.zs_tables else None
 
 
-def open_table(rt, name) -> Table:
+def open_table(rt: SystemContext, name) -> Table:
     """The table ``name`` (a string) means; CPL040 when it does not exist or its file is damaged."""
     c = rt.ctl
     text = _name_text(name)
@@ -136,7 +137,7 @@ def open_table(rt, name) -> Table:
     return Table(place.shown, place, zsfile.read(rt.io.files, place))
 
 
-def f_fileaccess(rt, io, name) -> int:
+def f_fileaccess(rt: SystemContext, io, name) -> int:
     """FILEACCESS (§6 L4406). A table file answers like any file; a database table (V1..V3, the active
     table) has no file, and answers as a readable and writable one (6) when no file has its name."""
     bits = io.files.FILEACCESS(nul(name))
@@ -146,7 +147,7 @@ def f_fileaccess(rt, io, name) -> int:
     return bits
 
 
-def _table(rt, table) -> Table:
+def _table(rt: SystemContext, table) -> Table:
     """The table of FXC's third argument: omitted = the active one, 1..3 = V1..V3, a string = a name."""
     c = rt.ctl
     if table is None:
@@ -197,7 +198,7 @@ def _convert(v: float, src: str, dst: str | None) -> float:
     return v * INCH if src == "inch" else v / INCH
 
 
-def _external_axis(rt, sel) -> tuple[int, bool]:
+def _external_axis(rt: SystemContext, sel) -> tuple[int, bool]:
     c = rt.ctl
     logical = [a.name for a in c.channel_axes(c.channel)][:8]
     sel = nul(sel)
@@ -212,7 +213,7 @@ def _external_axis(rt, sel) -> tuple[int, bool]:
     return abs(sel) - 1, sel < 0
 
 
-def f_fxc(rt, sel, gaddr=None, table=None, unit=None):
+def f_fxc(rt: SystemContext, sel, gaddr=None, table=None, unit=None):
     """FXC read: a ZS table value, an external shift, or with only the axis the sum of the active shifts."""
     c = rt.ctl
     if gaddr is None and table is None:
@@ -236,7 +237,7 @@ def f_fxc(rt, sel, gaddr=None, table=None, unit=None):
     return _convert(t["rows"][_row(gaddr)][col], t["unit"], _unit(unit))
 
 
-def p_fxc_set(rt, sel, gaddr=None, table=None, unit=None, value=None):
+def p_fxc_set(rt: SystemContext, sel, gaddr=None, table=None, unit=None, value=None):
     """FXC(...)=value: positive selection replaces, negative (or '-NAME') adds (L1744-1779)."""
     c = rt.ctl
     value = nul(value)
@@ -265,7 +266,7 @@ def p_fxc_set(rt, sel, gaddr=None, table=None, unit=None, value=None):
     table.save(rt)
 
 
-def p_fxcr(rt, layout, name, classif=0):
+def p_fxcr(rt: SystemContext, layout, name, classif=0):
     """FXCR: create an axis ZS table file, one column per channel axis (chan > 0), per system axis (0),
     or with the layout of an existing table (L1781-1796). The unit is MACODA 9020 00010."""
     c = rt.ctl
@@ -293,7 +294,7 @@ def p_fxcr(rt, layout, name, classif=0):
     Table(place.shown, place, table).save(rt)
 
 
-def p_fxdel(rt, name, col):
+def p_fxdel(rt: SystemContext, name, col):
     """FXDEL: delete a column given by axis name or index (L1798-1827)."""
     table = open_table(rt, name)
     t = table.data
@@ -306,7 +307,7 @@ def p_fxdel(rt, name, col):
     table.save(rt)
 
 
-def p_fxins(rt, name, pos, axis, axtype=1):
+def p_fxins(rt: SystemContext, name, pos, axis, axtype=1):
     """FXINS: insert a column for an axis in front of column pos (L1829-1840); axtype 0 rotary, 1 linear."""
     table = open_table(rt, name)
     t = table.data

@@ -11,6 +11,7 @@ import time as _time
 
 from ..errors import CplError
 from .axes import nul
+from .context import SystemContext
 
 #: group -> (highest bit, default index is the channel?)
 IC_GROUPS = {0: (111, True), 1: (111, False), 2: (111, False), 3: (95, True), 4: (63, False), 5: (63, False),
@@ -18,7 +19,7 @@ IC_GROUPS = {0: (111, True), 1: (111, False), 2: (111, False), 3: (95, True), 4:
 OUTPUT_GROUPS = (3, 4, 5, 7, 9)
 
 
-def ic_key(rt, bit, group=None, index=None) -> str:
+def ic_key(rt: SystemContext, bit, group=None, index=None) -> str:
     bit, group = nul(bit), 0 if group is None else group
     if group not in IC_GROUPS:
         raise CplError("CPL023", f"IC group {group}: 0..9")
@@ -42,7 +43,7 @@ def _index_range(c, group: int) -> tuple[int, int]:
     return 1, 1  # one spindle; the global and HighSpeed interfaces have index 1
 
 
-def f_ic(rt, bit, group=None, index=None) -> bool:
+def f_ic(rt: SystemContext, bit, group=None, index=None) -> bool:
     """IC read: an interface bit; input groups follow the scenario's timed events (L2379-2418)."""
     key = ic_key(rt, bit, group, index)
     rt._apply_events(rt.t_prep)
@@ -52,7 +53,7 @@ def f_ic(rt, bit, group=None, index=None) -> bool:
     return bool(plc.inputs.get(key, False))
 
 
-def p_ic_set(rt, bit, group=None, index=None, value=None):
+def p_ic_set(rt: SystemContext, bit, group=None, index=None, value=None):
     """IC(bit,0,chan)=bool: only the channel outputs 81..96 (bits 80..95), written with group 0 (L2404)."""
     if group != 0 or bit.__class__ is not int or not 80 <= bit <= 95:
         raise CplError("CPL040", "IC can be written only as IC(80..95,0,channel) (channel outputs 81..96)")
@@ -64,7 +65,7 @@ def p_ic_set(rt, bit, group=None, index=None, value=None):
 PLC_TYPES = {1: "I", 2: "O", 3: "M", 4: "D", 5: "DB", 6: "DF", 7: "T", 8: "C", 9: "SM", 10: "S", 11: "EI", 12: "EO"}
 
 
-def _plc_args(rt, ptype, dm, addr, size):
+def _plc_args(rt: SystemContext, ptype, dm, addr, size):
     if ptype not in PLC_TYPES:
         raise CplError("CPL023", f"PLC type {ptype!r}: 1..12")
     if ptype == 4 and dm is None:
@@ -76,7 +77,7 @@ def _plc_args(rt, ptype, dm, addr, size):
     return f"{PLC_TYPES[ptype]}{dm if ptype == 4 else ''}:"
 
 
-def f_plc(rt, ptype, dm, addr, size):
+def f_plc(rt: SystemContext, ptype, dm, addr, size):
     """PLC read: bytes big-endian; timers give the remaining ms, counters their value (L2420-2468)."""
     prefix = _plc_args(rt, ptype, dm, addr, size)
     mem = rt.ctl.plc
@@ -92,7 +93,7 @@ def f_plc(rt, ptype, dm, addr, size):
     return v
 
 
-def p_plc_set(rt, ptype, dm, addr, size, value=None):
+def p_plc_set(rt: SystemContext, ptype, dm, addr, size, value=None):
     """PLC(4,dm,addr,size)=value: only data modules MACODA 2060 00100 .. + 2060 00110 - 1 may be written."""
     c = rt.ctl
     prefix = _plc_args(rt, ptype, dm, addr, size)
@@ -107,28 +108,28 @@ def p_plc_set(rt, ptype, dm, addr, size, value=None):
         v >>= 8
 
 
-def f_clock(rt) -> int:
+def f_clock(rt: SystemContext) -> int:
     """CLOCK: the system time counter in ms at the program's time (simulated: a WAIT lets it run on to the
     end of the executed blocks, or by its duration, also into the middle of a block still moving)."""
     return int(round(rt.t_prep * 1000.0))
 
 
-def _now(rt):
+def _now(rt: SystemContext):
     return _time.gmtime(rt.machine.clock.start_epoch + rt.t_prep)
 
 
-def f_date(rt) -> str:
+def f_date(rt: SystemContext) -> str:
     t = _now(rt)
     text = f"{t.tm_mday:02d}.{t.tm_mon:02d}"
     return text if rt.ctl.date_format == "DD.MM" else f"{text}.{t.tm_year % 100:02d}"
 
 
-def f_time(rt) -> str:
+def f_time(rt: SystemContext) -> str:
     t = _now(rt)
     return f"{t.tm_hour:02d}.{t.tm_min:02d}.{t.tm_sec:02d}"
 
 
-def f_geterr(rt, chan, cat, errarr, count=1):
+def f_geterr(rt: SystemContext, chan, cat, errarr, count=1):
     """GETERR: fill errarr(k,1..3) with number, channel, category, oldest first; the count of current
     errors for chan and cat, or -1 (L2508-2618)."""
     cat = 0 if cat is None else cat

@@ -22,22 +22,23 @@ from ....machine.scenario import FixedStop, ProbeSwitch, of_type
 from ....nc.probe import ProbeLatch, announce, stop_words
 from ..errors import CplError
 from .axes import kernel_index, resolve, to_unit
+from .context import SystemContext
 from .gfuncs import program_shift
 
 
-def _executed_mcs(rt, ax) -> float:
+def _executed_mcs(rt: SystemContext, ax) -> float:
     i = kernel_index(rt, ax)
     return ax.position if i is None else rt.executed_position()[i]
 
 
-def axis_zs(rt, k, i: int) -> float:
+def axis_zs(rt: SystemContext, k, i: int) -> float:
     """Axis zero shifts (G54.., external) of kernel axis i: the offset without G92, the program
     coordinate shifts G168/G268 and the tool length."""
     tool = k.tool_length if i == k.tool_axis else 0.0
     return k.offset_vec[i] - k.g92[i] - program_shift(rt, k, i) - tool
 
 
-def f_axo(rt, sel, seltype=1):
+def f_axo(rt: SystemContext, sel, seltype=1):
     """AXO: the last activated G92 shift of a coordinate, at block preparation (L1388-1402)."""
     ax = resolve(rt, sel, seltype)
     k = rt.prepared_kernel()
@@ -45,7 +46,7 @@ def f_axo(rt, sel, seltype=1):
     return 0.0 if i is None else to_unit(k, ax, k.g92[i])
 
 
-def f_cpos(rt, sel, seltype=1):
+def f_cpos(rt: SystemContext, sel, seltype=1):
     """CPOS: the last programmed absolute position (PCS) of a coordinate, at block preparation (L1404-1428)."""
     ax = resolve(rt, sel, seltype)
     k = rt.prepared_kernel()
@@ -53,7 +54,7 @@ def f_cpos(rt, sel, seltype=1):
     return ax.position if i is None else to_unit(k, ax, k.prog[i])
 
 
-def f_wpos(rt, sel, seltype=1, chan=None):
+def f_wpos(rt: SystemContext, sel, seltype=1, chan=None):
     """WPOS: the interpolated command position in the WCS, at block execution (L1475-1499).
 
     Foreign channels are allowed; an asynchronous axis acts like SPOS."""
@@ -69,13 +70,13 @@ def f_wpos(rt, sel, seltype=1, chan=None):
     return to_unit(k, ax, wcs[i] + k.offset_vec[i] - axis_zs(rt, k, i))
 
 
-def f_mpos(rt, sel, axtype=1, chan=None):
+def f_mpos(rt: SystemContext, sel, axtype=1, chan=None):
     """MPOS: the interpolated command position in the MCS, at block execution (L1539-1565)."""
     ax = resolve(rt, sel, axtype, chan, own_only=False)
     return to_unit(rt.kernel, ax, _executed_mcs(rt, ax))
 
 
-def _physical(rt, sel):
+def _physical(rt: SystemContext, sel):
     c = rt.ctl
     if isinstance(sel, str):
         ax = c.by_name(sel)
@@ -90,13 +91,13 @@ def _physical(rt, sel):
     return ax
 
 
-def f_spos(rt, sel):
+def f_spos(rt: SystemContext, sel):
     """SPOS: the axis command value of a physical axis, relative to machine zero (L1688-1714)."""
     ax = _physical(rt, sel)
     return to_unit(rt.kernel, ax, _executed_mcs(rt, ax))
 
 
-def f_apos(rt, sel):
+def f_apos(rt: SystemContext, sel):
     """APOS: the actual (feedback) value = command value minus the configured following error (L1662-1686)."""
     ax = _physical(rt, sel)
     return to_unit(rt.kernel, ax, _executed_mcs(rt, ax) - ax.lag)

@@ -13,13 +13,14 @@ from ....machine.scenario import SercosLock
 from ..errors import CplError
 from ..io.errors import CplRuntimeError, fail
 from .axes import nul
+from .context import SystemContext
 from .positions import f_apos
 
 #: the scenario events the SERCOS functions read
 SERCOS_EVENTS = (SercosLock,)
 
 
-def _locked(rt) -> bool:
+def _locked(rt: SystemContext) -> bool:
     locked = False
     for ev in rt.machine.scenario:
         if ev.__class__ is SercosLock and ev.time <= rt.t_prep:
@@ -27,7 +28,7 @@ def _locked(rt) -> bool:
     return locked
 
 
-def _param(rt, axis, idtype, idno):
+def _param(rt: SystemContext, axis, idtype, idno):
     c = rt.ctl
     ax = c.by_name(axis) if isinstance(axis, str) else c.axes.get(nul(axis))
     if ax is None:
@@ -45,7 +46,7 @@ def _param(rt, axis, idtype, idno):
     return ax, key, store[key]
 
 
-def f_scs(rt, axis, idtype, idno, res=None):
+def f_scs(rt: SystemContext, axis, idtype, idno, res=None):
     """SCS -> (value, result code). A list parameter cannot be read with SCS (L2137)."""
     ax, key, value = _param(rt, axis, idtype, idno)
     if isinstance(value, list):
@@ -59,7 +60,7 @@ def f_scs(rt, axis, idtype, idno, res=None):
     return value, 0
 
 
-def f_scsl(rt, axis, idtype, idno, filename, res=None):
+def f_scsl(rt: SystemContext, axis, idtype, idno, filename, res=None):
     """SCSL -> (0, result code): the list elements as records of an ASCII file (LF each, ETX LF at the end),
     written whole or not at all; a name the file root refuses is INVALID FILE NAME (result 2 with res%)."""
     ax, key, value = _param(rt, axis, idtype, idno)

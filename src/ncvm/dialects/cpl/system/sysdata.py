@@ -11,7 +11,8 @@ import math
 from ..errors import CplError
 from ..values import sv
 from .axes import nul
-from .controller import MAX_AREAS, SD13_OF_MODE, ncs_state
+from .context import SystemContext
+from .controller import MAX_AREAS, SD13_OF_MODE
 from .gfuncs import N_LOGICAL
 from .positions import probe_switched
 from .transforms import active_group
@@ -54,7 +55,7 @@ def g_of_group(k, group: int, typ3=None) -> int:
     raise CplError("CPL023", f"G group {group}: 1..48")
 
 
-def _pair(rt, which):
+def _pair(rt: SystemContext, which):
     if which not in (1, 2):
         raise CplError("CPL023", f"index {which}: 1 (last programmed) or 2 (active)")
     return rt.prepared_kernel() if which == 1 else rt.kernel
@@ -64,7 +65,7 @@ def _spindle(k) -> int:
     return {1: 3, -1: 4, 0: 0}[k.spindle_dir]
 
 
-def f_sd(rt, group, i1=None, i2=None, i3=None):
+def f_sd(rt: SystemContext, group, i1=None, i2=None, i3=None):
     """SD: system data as INTEGER (L2196-2312)."""
     c = rt.ctl
     group = nul(group)
@@ -111,7 +112,7 @@ def f_sd(rt, group, i1=None, i2=None, i3=None):
             return -1  # no 2nd spindle
         raise CplError("CPL023", f"SD(12,{i1})")
     if group == 13:  # the machining mode of the own channel (automatic unless MCOPS 7 changed it, L2241)
-        return SD13_OF_MODE.get(ncs_state(rt)["mode"].get(c.channel, 5), 1)
+        return SD13_OF_MODE.get(c.ncs["mode"].get(c.channel, 5), 1)
     if group == 14:
         return c.macoda[601000010][0]
     if group == 15:
@@ -146,20 +147,20 @@ def _whole(v):
     return int(math.copysign(math.floor(abs(v) + 0.5), v))
 
 
-def _length(rt, kernel, n: int, mm: float) -> float:
+def _length(rt: SystemContext, kernel, n: int, mm: float) -> float:
     """mm of logical axis n -> programming units (rotary axes: degrees)."""
     ax = rt.ctl.channel_axes(rt.ctl.channel)[n - 1]
     return mm if ax.rotary else mm / kernel.scale
 
 
-def _logical(rt, a) -> int:
+def _logical(rt: SystemContext, a) -> int:
     n = len(rt.ctl.channel_axes(rt.ctl.channel))
     if a.__class__ is not int or not 1 <= a <= min(n, N_LOGICAL):
         raise CplError("1938", f"logical axis {a!r} is not applied (1..{min(n, N_LOGICAL)})")
     return a
 
 
-def _typ3(rt, group, i1, i2):
+def _typ3(rt: SystemContext, group, i1, i2):
     """Groups 68/168/268 (coordinate shifts), 131 (G131), 328 (G328), 581 (axis coupling): REAL values."""
     c = rt.ctl
     if group in (68, 168, 268):
@@ -186,7 +187,7 @@ def _typ3(rt, group, i1, i2):
     return _coupling(rt, i1, i2)
 
 
-def _coupling(rt, i1, i2):
+def _coupling(rt: SystemContext, i1, i2):
     """Group 581: SD(581,0,m) = m if logical axis m is a master; SD(581,s,0..3) for slave s."""
     st, k = rt.ctl.g_programmed, rt.prepared_kernel()
     if i1 == 0:
@@ -205,7 +206,7 @@ def _coupling(rt, i1, i2):
     return _length(rt, k, s if i2 == 1 else cp[1], cp[2] if i2 == 1 else cp[4])
 
 
-def _area(rt, i1, i2):
+def _area(rt: SystemContext, i1, i2):
     """Group 200: work areas and dead ranges of the channel ([cpl] areas), values in programming units."""
     areas = rt.ctl.areas
     if i1 == 1 and i2 is None:
@@ -226,7 +227,7 @@ def _area(rt, i1, i2):
     return _whole(value if ax.rotary else value / rt.kernel.scale)
 
 
-def _axis_numbers(rt, group, i1, i2):
+def _axis_numbers(rt: SystemContext, group, i1, i2):
     c = rt.ctl
     logical = c.channel_axes(c.channel if group != 24 else nul(i2))
     if group in (22, 25):
@@ -247,7 +248,7 @@ def _axis_numbers(rt, group, i1, i2):
     return ax.index
 
 
-def f_sdr(rt, group, i1=None, i2=None):
+def f_sdr(rt: SystemContext, group, i1=None, i2=None):
     """SDR: system data as REAL (L2313-2351)."""
     c = rt.ctl
     group = nul(group)
@@ -269,7 +270,7 @@ OLD_MACODA = {100100001: 100300001, 100100002: 100300002, 100100003: 100100001, 
               101500006: 101500100, 101500007: 101500001}
 
 
-def f_mca(rt, param, index, chan=None):
+def f_mca(rt: SystemContext, param, index, chan=None):
     """MCA: a MACODA value; index 0-based; chan own channel by default, -1 = basic setting (L2054-2089)."""
     c = rt.ctl
     param = nul(param)
@@ -284,7 +285,7 @@ def f_mca(rt, param, index, chan=None):
     return values[index]
 
 
-def f_ncf(rt, text):
+def f_ncf(rt: SystemContext, text):
     """NCF: the text of the last programmed function of the modal group of ``text`` (L2090-2113)."""
     text = sv(nul(text))
     if not isinstance(text, str) or not text.upper().startswith("G") or not text[1:].isdigit():

@@ -11,19 +11,20 @@ from ....machine.model import Tool
 from ..errors import CplError
 from ..values import sv
 from .axes import nul
+from .context import SystemContext
 
 INCH = 25.4
 STANDARD_TABLES = {4: "K4", 5: "K5"}
 GENERAL_FIELDS = 8  # L(2)3, R, L(2)1, L(2)2, TO, type (read only), Euler angles 1 and 2
 
 
-def setup(rt) -> None:
+def setup(rt: SystemContext) -> None:
     """K4 and the machine's tool table agree (persisted K4 values win)."""
     for group, (h, d) in rt.ctl.tc_tables["K4"].items():
         _to_machine(rt, group, h, d)
 
 
-def _to_machine(rt, group: int, h: float, d: float) -> None:
+def _to_machine(rt: SystemContext, group: int, h: float, d: float) -> None:
     unit = rt.ctl.tc_unit
     h, d = (h * INCH, d * INCH) if unit == "inch" else (h, d)
     tool = rt.machine.tools.get(group)
@@ -80,7 +81,7 @@ def _conv(v: float, src: str, dst) -> float:
     return v * INCH if src == "inch" else v / INCH
 
 
-def f_tc(rt, sel, group=None, table=None, unit=None):
+def f_tc(rt: SystemContext, sel, group=None, table=None, unit=None):
     """TC read: a table value in ``unit``; TC(sel) alone = the active compensation at block preparation."""
     c = rt.ctl
     if group is None:
@@ -106,7 +107,7 @@ def f_tc(rt, sel, group=None, table=None, unit=None):
     return v if col >= 4 else v / scale
 
 
-def p_tc_set(rt, sel, group=None, table=None, unit=None, value=None):
+def p_tc_set(rt: SystemContext, sel, group=None, table=None, unit=None, value=None):
     """TC(...)=value: replace (sel > 0) or add (sel < 0), converting from ``unit`` to the table unit."""
     c = rt.ctl
     value = nul(value)
@@ -125,7 +126,7 @@ def p_tc_set(rt, sel, group=None, table=None, unit=None, value=None):
         c.persist("cpl.tc", name, {str(g): vals for g, vals in c.tc_tables[name].items()})
         if name == "K4":
             _to_machine(rt, group, *values)
-            rt._shadow = None
+            rt.forget_prepared()
         return
     if table not in (0, None):
         raise CplError("CPL023", "external and general compensation use table 0")
@@ -164,14 +165,14 @@ def _tda_key(c, sector, place, fld, tooltab):
     return key
 
 
-def f_tda(rt, sector, place, fld, tooltab=1):
+def f_tda(rt: SystemContext, sector, place, fld, tooltab=1):
     """TDA read: INTEGER fields 3-7 and 9-48, STRING fields 8 and 49 (L1895-1966)."""
     c = rt.ctl
     key = _tda_key(c, sector, place, fld, tooltab)
     return c.tdb[key].get(fld, "" if fld in STRING_FIELDS else 0)
 
 
-def p_tda_set(rt, sector, place, fld, tooltab=1, value=None):
+def p_tda_set(rt: SystemContext, sector, place, fld, tooltab=1, value=None):
     """TDA(...)=value: the value's type must match the field's (INTEGER, or a STRING of at most 31)."""
     c = rt.ctl
     key = _tda_key(c, sector, place, fld, tooltab)

@@ -28,6 +28,7 @@ from ....nc.kernel import PLANES
 from ....nc.transform import Affine, SingularTransform
 from ..errors import CplError
 from .axes import kernel_index, nul, resolve, to_unit
+from .context import SystemContext
 
 #: the addresses of the scaling factors of X, Y and Z (the interpolation parameters of those axes)
 FACTOR_WORDS = {"X": "I", "Y": "J", "Z": "K"}
@@ -181,7 +182,7 @@ G_HANDLERS = {60: g60, 67: g67, 37: g37_38, 38: g37_38, 39: g39, 138: g138}
 PARAMETER_G = frozenset((60, 37, 38, 138))
 
 
-def setup(rt) -> None:
+def setup(rt: SystemContext) -> None:
     """At program start: the NC kernel knows the Bosch transformation G functions."""
     rt.kernel.g_handlers.update(G_HANDLERS)
 
@@ -196,20 +197,20 @@ def active_group(k, group: int) -> int | None:
 
 
 # -- COF, DPC, SCL --------------------------------------------------------------------------------------
-def _coordinate(rt, sel, seltype):
+def _coordinate(rt: SystemContext, sel, seltype):
     """(prepared kernel, axis, kernel index) of a coordinate of the own channel."""
     ax = resolve(rt, sel, seltype)
     k = rt.prepared_kernel()
     return k, ax, kernel_index(rt, ax)
 
 
-def f_cof(rt, sel, seltype=1):
+def f_cof(rt: SystemContext, sel, seltype=1):
     """COF: the last programmed G60 contour shift of a coordinate (L1969-1988); COF(0) is an error."""
     k, ax, i = _coordinate(rt, sel, seltype)
     return 0.0 if i is None else to_unit(k, ax, programmed(k).contour[i])
 
 
-def f_dpc(rt, sel, seltype=1):
+def f_dpc(rt: SystemContext, sel, seltype=1):
     """DPC: the last programmed G138 shift of a coordinate; DPC(0) the rotation angle (L1992-2018)."""
     if nul(sel) == 0 and sel.__class__ is int and seltype in (None, 1):
         return programmed(rt.prepared_kernel()).dpc_angle
@@ -217,7 +218,7 @@ def f_dpc(rt, sel, seltype=1):
     return 0.0 if i is None else to_unit(k, ax, programmed(k).dpc_shift[i])
 
 
-def f_scl(rt, what, sel=None, seltype=1):
+def f_scl(rt: SystemContext, what, sel=None, seltype=1):
     """SCL: 0 the last programmed G38 angle, 1 the pole, 2 the scaling factor of a coordinate (L2022-2050)."""
     what = nul(what)
     if what == 0 and what.__class__ is int:
