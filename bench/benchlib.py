@@ -9,7 +9,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 HERE = Path(__file__).parent
-PEERS = HERE.parent.parent / "shared" / "bench" / "peers"
+PEERS = HERE / "peers"  # the LinuxCNC peer programs and the flat-program generator
 WORK = HERE / ".work"
 
 
