@@ -1,6 +1,6 @@
 """CPL cases: the peer programs loop_arith, loop_motion and subcalls written in CPL, and rs274 on the originals.
 
-Each CPL program does the work of its LinuxCNC peer in /work/shared/bench/peers: the same loop counts,
+Each CPL program does the work of its LinuxCNC peer in bench/peers: the same loop counts,
 the same arithmetic (MOD written as I% - INT(I%/7)*7, CPL has no MOD), the same moves and calls.
 """
 
