@@ -23,6 +23,7 @@ from ...machine.scenario import (
     of_type,
     refuse,
 )
+from ...nc import cutter
 from ...nc.block import Block
 from ...nc.canon import CanonSink, Src
 from ...nc.kernel import INCH
@@ -107,6 +108,8 @@ class Channel(SysMem):
         self.session = session
         self.kernel = session.kernel
         self.execute = session.kernel.execute
+        # G41/G42 take the radius from the TO area by D number: not read yet, refused
+        self.kernel.cutter_radius = cutter.refusal("the tool radius of the SINUMERIK TO area (D number)")
         self.counter = session.steps
         self.data = data
         self.memory = SystemMemory(data)
