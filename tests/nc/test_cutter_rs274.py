@@ -95,12 +95,15 @@ def test_compensated_contours_agree_with_rs274(tmp_path):
         text, _ = contour(seed)
         ngc = tmp_path / f"c{seed}.ngc"
         ngc.write_text(text)
-        table = tmp_path / "tool.tbl"
-        table.write_text(f"T1 P1 D{2 * radius / 25.4:.6f} Z0\n")
+        table = tmp_path / f"tool{seed}.tbl"
         canon = tmp_path / f"c{seed}.canon"
-        output = rs274_run(ngc, table, canon)
-        canon_text = canon.read_text()
-        stopped = rs274_error_line(text, canon_text, output)
+        for _ in range(3):  # the peer now and then stops short on this machine: a refusal must repeat
+            table.write_text(f"T1 P1 D{2 * radius / 25.4:.6f} Z0\n")
+            output = rs274_run(ngc, table, canon)
+            canon_text = canon.read_text()
+            stopped = rs274_error_line(text, canon_text, output)
+            if stopped is None or stopped > 4:
+                break
         machine = machine_from_dict({"axis": [{"name": a} for a in "XYZ"],
                                      "tool": [{"number": 1, "radius": radius}]})
         trace = tmp_path / f"c{seed}.jsonl"
