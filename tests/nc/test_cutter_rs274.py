@@ -79,6 +79,20 @@ def rs274_run(ngc, table, canon) -> str:
     pytest.skip(f"rs274 keeps crashing (signal {-proc.returncode}); the peer is not usable here")
 
 
+def rs274_settled(ngc, table, canon) -> tuple[str, str]:
+    """rs274's canon calls and messages, once two runs in a row agree: on this machine rs274 processes
+    running at the same time now and then disturb each other's tool table (a run stops at the tool
+    change, or cuts with another radius)."""
+    last = None
+    for _ in range(6):
+        output = rs274_run(ngc, table, canon)
+        now = (canon.read_text(), output)
+        if now == last:
+            return now
+        last = now
+    pytest.skip("rs274 gives a different answer at every run here; the peer is not usable")
+
+
 def rs274_error_line(program: str, canon_text: str, output: str) -> int | None:
     """The program line rs274 stopped at (it prints the block after its message), None when it ran to the end."""
     if "PROGRAM_END" in canon_text:
@@ -96,14 +110,9 @@ def test_compensated_contours_agree_with_rs274(tmp_path):
         ngc = tmp_path / f"c{seed}.ngc"
         ngc.write_text(text)
         table = tmp_path / f"tool{seed}.tbl"
-        canon = tmp_path / f"c{seed}.canon"
-        for _ in range(3):  # the peer now and then stops short on this machine: a refusal must repeat
-            table.write_text(f"T1 P1 D{2 * radius / 25.4:.6f} Z0\n")
-            output = rs274_run(ngc, table, canon)
-            canon_text = canon.read_text()
-            stopped = rs274_error_line(text, canon_text, output)
-            if stopped is None or stopped > 4:
-                break
+        table.write_text(f"T1 P1 D{2 * radius / 25.4:.6f} Z0\n")
+        canon_text, output = rs274_settled(ngc, table, tmp_path / f"c{seed}.canon")
+        stopped = rs274_error_line(text, canon_text, output)
         machine = machine_from_dict({"axis": [{"name": a} for a in "XYZ"],
                                      "tool": [{"number": 1, "radius": radius}]})
         trace = tmp_path / f"c{seed}.jsonl"
