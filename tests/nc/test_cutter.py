@@ -121,6 +121,32 @@ def test_cpl_refuses_compensation_naming_the_d_number_source(run_text, tmp_path)
     assert r["error"]["code"] == "NC005" and "D number" in r["error"]["message"], r["error"]
 
 
-def test_sinumerik_refuses_compensation_naming_the_to_area(run_text, tmp_path):
-    r, _ = _run(run_text, tmp_path, "%MPF1\nN10 G1 X10 F100\nN20 G41 X20\nN30 M30\n", name="p.mpf")
-    assert r["error"]["code"] == "NC005" and "TO area" in r["error"]["message"], r["error"]
+SIN_MACHINE = {"axis": MACHINE["axis"], "sin800": {"control": "880", "tool_offsets": [
+    {"d": 1, "p": [1, 20, 0.0, 0.0, 5.0, 0.0, 0.0, 0.08]},  # shank cutter: radius P4 5.0 + wear P7 0.08
+    {"d": 2, "p": [2, 1, 0.0, 0.0, 0.8]}]}}  # a turning tool (cutting position)
+
+
+def _sin_contour() -> str:
+    body = CONTOUR.replace("G21 G17 G90 G40\nT1 M6\n", "").replace("G41 D1", "G41 D1").replace("M2", "M30")
+    return "%MPF1\n" + "".join(f"N{10 * i} {line}\n" for i, line in enumerate(body.splitlines(), 1))
+
+
+def test_sinumerik_takes_the_radius_from_the_to_area_and_cuts_the_same_contour(run_text, tmp_path):
+    """CL 800 TO table (digest: type 20-29 shank cutter, P4 radius + P7 radius wear): the shared geometry."""
+    trace = tmp_path / "trace.jsonl"
+    r = run_text(_sin_contour(), name="p.mpf", machine=machine_from_dict(SIN_MACHINE), trace=trace)
+    assert r["status"] == "ok", r["error"]
+    calls = [json.loads(line) for line in trace.read_text().splitlines()]
+    assert _moves(calls) == RS274_PATH
+
+
+def test_sinumerik_refuses_compensation_with_a_turning_tool(run_text, tmp_path):
+    text = "%MPF1\nN10 G1 X10 F100\nN20 G41 D2 X20\nN30 M30\n"
+    r = run_text(text, name="p.mpf", machine=machine_from_dict(SIN_MACHINE))
+    assert r["error"]["code"] == "NC005" and "tool type 1" in r["error"]["message"], r["error"]
+
+
+def test_sinumerik_refuses_another_d_while_compensation_is_on(run_text, tmp_path):
+    text = "%MPF1\nN10 G0 X-20 Y-20\nN20 G41 D1 G1 X0 Y0 F500\nN30 G1 X50 D2\nN40 M30\n"
+    r = run_text(text, name="p.mpf", machine=machine_from_dict(SIN_MACHINE))
+    assert r["error"]["code"] == "NC005" and r["error"]["line"] == 4, r["error"]

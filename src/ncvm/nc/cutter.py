@@ -184,6 +184,7 @@ class CutterComp:
     def detach(self) -> None:
         """Compensation is over: the kernel's own canon and straight-move path again."""
         self.release()
+        from .kernel import _transformed_linear
         k = self.kernel
         k.comp = None
         k.canon = self.canon
@@ -463,9 +464,10 @@ class _HeldCanon:
 
 
 def _compensated_linear(kernel, motion: int, words, src: Src) -> None:
-    """The kernel's straight move while compensation is on."""
-    kernel.comp.move(motion, words, src)
-
-
-def _transformed_linear(kernel, motion: int, words, src: Src) -> None:
-    kernel._general_move(motion, words, False, src)
+    """The kernel's straight move while compensation is on (a front end that kept this function past G40
+    reaches the kernel's own path through it)."""
+    comp = kernel.comp
+    if comp is None:
+        kernel.linear(kernel, motion, words, src)
+    else:
+        comp.move(motion, words, src)

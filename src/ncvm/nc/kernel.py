@@ -149,8 +149,12 @@ class NcKernel:
         stay circles, else None. While one is set, straight moves leave the generated fast path
         (which knows nothing of it). The tool stays put; the programmed position moves.
         """
+        if self.comp is not None and transform is not None:
+            self.fault("NC005", "a coordinate transformation while cutter radius compensation is on is not "
+                       "supported by ncvm (G40 first)", None)
         self.transform = transform
-        self.linear = self._fast_linear if transform is None else _transformed_linear
+        if self.comp is None:  # compensation keeps its own straight-move path
+            self.linear = self._fast_linear if transform is None else _transformed_linear
         self._set_offsets_keep_machine()
 
     def set_work_offset(self, name: str | None) -> None:

@@ -23,7 +23,6 @@ from ...machine.scenario import (
     of_type,
     refuse,
 )
-from ...nc import cutter
 from ...nc.block import Block
 from ...nc.canon import CanonSink, Src
 from ...nc.kernel import INCH
@@ -108,8 +107,7 @@ class Channel(SysMem):
         self.session = session
         self.kernel = session.kernel
         self.execute = session.kernel.execute
-        # G41/G42 take the radius from the TO area by D number: not read yet, refused
-        self.kernel.cutter_radius = cutter.refusal("the tool radius of the SINUMERIK TO area (D number)")
+        self.kernel.cutter_radius = self.cutter_radius  # G41/G42: the radius of the TO area's offset D
         self.counter = session.steps
         self.data = data
         self.memory = SystemMemory(data)
