@@ -150,3 +150,12 @@ def test_sinumerik_refuses_another_d_while_compensation_is_on(run_text, tmp_path
     text = "%MPF1\nN10 G0 X-20 Y-20\nN20 G41 D1 G1 X0 Y0 F500\nN30 G1 X50 D2\nN40 M30\n"
     r = run_text(text, name="p.mpf", machine=machine_from_dict(SIN_MACHINE))
     assert r["error"]["code"] == "NC005" and r["error"]["line"] == 4, r["error"]
+
+
+def test_sinumerik_acg_reports_the_compensation_group(run_text, tmp_path):
+    """ACG (@36b) group 3: G40 G41 G42 (CL 800 manual §11.5 L7392-7410)."""
+    text = ("%MPF1\nN10 G0 X-20 Y-20\nN20 @36b R1 K0 K3\nN30 G42 D1 G1 X0 Y0 F500\nN40 @36b R2 K0 K3\n"
+            "N50 G1 X50\nN60 G40 G1 X70 Y-20\nN70 @36b R3 K0 K3\nN80 M30\n")
+    r = run_text(text, name="p.mpf", machine=machine_from_dict(SIN_MACHINE))
+    assert r["status"] == "ok", r["error"]
+    assert [r["variables"].get(f"R{n}") for n in (1, 2, 3)] == [40.0, 42.0, 40.0]

@@ -83,7 +83,13 @@ def select(kernel, g: int, words, src: Src) -> None:
         radius, side = -radius, -side
     if comp is not None:
         comp.detach()
-    CutterComp(kernel, side, radius)
+    CutterComp(kernel, side, radius).g = g
+
+
+def active_g(kernel) -> int:
+    """The G function of the compensation group in force: 40, 41 or 42 (as programmed)."""
+    comp = kernel.comp
+    return 40 if comp is None or comp.leaving else comp.g
 
 
 class CutterComp:
@@ -94,6 +100,7 @@ class CutterComp:
         self.kernel = kernel
         self.side = side
         self.radius = radius
+        self.g = 41 if side == LEFT else 42  # as programmed (select sets it)
         an, bn = PLANES[kernel.plane][:2]
         if an not in kernel.axis_of or bn not in kernel.axis_of:
             kernel.fault("NC009", f"plane G{kernel.plane} needs axes {an} and {bn}", None)

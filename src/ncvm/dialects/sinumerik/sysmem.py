@@ -15,6 +15,7 @@ from operator import attrgetter
 
 from ...diagnostics import RuntimeFault
 from ...machine.scenario import ExternalInput
+from ...nc import cutter
 from ...nc.block import Block
 from ...nc.canon import Src
 from ...nc.dynamics import trapezoid_distance, trapezoid_time
@@ -230,7 +231,7 @@ class SysMem:
     def _acg(self, group: int) -> float:
         k = self.kernel
         state = {0: k.motion, 2: k.plane, 5: int(k.work_offset[1:]) if k.work_offset else 0,
-                 8: 70 if k.scale != 1.0 else 71, 10: 90 if k.absolute else 91}
+                 3: cutter.active_g(k), 8: 70 if k.scale != 1.0 else 71, 10: 90 if k.absolute else 91}
         if group in state:
             return float(state[group])
         return float(ACG_GROUPS.get(group, (0,))[0])
