@@ -114,11 +114,6 @@ def test_trapezoidal_cycle_time(run_text):
     assert r["cycle_time_s"] == pytest.approx(2 * math.sqrt(0.001 / 1000))
 
 
-def test_cutter_compensation_faults_clearly(run_text):
-    r = run_text("G1 X1 F10\nG41 X5\n")
-    assert r["error"]["code"] == "NC005" and "not yet supported" in r["error"]["message"]
-
-
 def test_feed_without_f_faults(run_text):
     r = run_text("G1 X10\n")
     assert r["error"]["code"] == "NC006"

@@ -25,7 +25,7 @@ from operator import add
 
 from ..diagnostics import RuntimeFault, Span
 from ..machine.model import Machine, PlcImage, SimClock
-from . import arcs
+from . import arcs, cutter
 from .canon import ArcSpec, Canon, Src
 from .dynamics import AxisDynamics, arc_limits, trapezoid_time
 from .fastmove import make_linear
@@ -58,6 +58,11 @@ class NcKernel:
         self.g_handlers: dict = {}
         #: None, or an object with forward(vec), inverse(vec) and plane_similarity(a, b) (see set_transform)
         self.transform = None
+        #: the active cutter radius compensation (:class:`ncvm.nc.cutter.CutterComp`), None under G40
+        self.comp = None
+        #: where G41/G42 take the tool radius: ``radius(kernel, g, words, src) -> mm``; a front end whose
+        #: control numbers its tool data otherwise sets its own (or a refusal)
+        self.cutter_radius = cutter.iso_radius
         # modal state
         self.motion = 0
         self.plane = 17
@@ -144,8 +149,12 @@ class NcKernel:
         stay circles, else None. While one is set, straight moves leave the generated fast path
         (which knows nothing of it). The tool stays put; the programmed position moves.
         """
+        if self.comp is not None and transform is not None:
+            self.fault("NC005", "a coordinate transformation while cutter radius compensation is on is not "
+                       "supported by ncvm (G40 first)", None)
         self.transform = transform
-        self.linear = self._fast_linear if transform is None else _transformed_linear
+        if self.comp is None:  # compensation keeps its own straight-move path
+            self.linear = self._fast_linear if transform is None else _transformed_linear
         self._set_offsets_keep_machine()
 
     def set_work_offset(self, name: str | None) -> None:
@@ -186,6 +195,8 @@ class NcKernel:
         src = block.src
         words = block.words
         canon = self.canon
+        if self.comp is not None:
+            self.comp.check_block(block)
         if block.msg is not None:
             canon.message(block.msg, src)
         dwell_block = False
@@ -215,14 +226,14 @@ class NcKernel:
                 self.set_work_offset(WORK_OFFSETS[g])
             elif g == 53:
                 machine_coords = True
-            elif g == 40 or g == 94 or g == 80 or g == 64 or g == 60:
+            elif g == 40 or g == 41 or g == 42:
+                cutter.select(self, g, words, src)
+            elif g == 94 or g == 80 or g == 64 or g == 60:
                 pass
             elif g == 96:
                 self.css = True
             elif g == 97:
                 self._g97()
-            elif g in (41, 42):
-                self.fault("NC005", f"G{g}: cutter radius compensation not yet supported", src)
             elif g == 43 or g == 44:
                 number = int(words.get("H", words.get("D", self.tool)))
                 length = self._tool(number, src).length if number else 0.0
@@ -287,7 +298,7 @@ class NcKernel:
         """Whether plain motion blocks may run column-wise (:mod:`ncvm.nc.plainrun`) now: not while a coordinate
         transformation maps every target, nor under G96, where each block sets the spindle speed anew, nor
         when a dialect handles a motion G code itself."""
-        return self.transform is None and not self.css and not (self.g_handlers and _MOTION_G & self.g_handlers.keys())
+        return self.transform is None and not self.css and self.comp is None and not (self.g_handlers and _MOTION_G & self.g_handlers.keys())
 
     # -- spindle -----------------------------------------------------------
     def spindle_speed(self) -> float:
@@ -392,6 +403,8 @@ class NcKernel:
         if not self.ended:
             self.ended = True
             self.canon.program_end(src)
+            if self.comp is not None:
+                self.comp.detach()
 
     def _set_offset_table(self, words, src: Src) -> None:
         """G10 L2 P<n>: write zero offset table n (1 = G54 ... 6 = G59) from the axis words, no motion."""
@@ -453,6 +466,9 @@ class NcKernel:
         self._general_move(motion, words, machine_coords, src)
 
     def _general_move(self, motion: int, words, machine_coords: bool, src: Src) -> None:
+        if self.comp is not None:
+            self.comp.move(motion, words, src)
+            return
         prog, moved = self._target(words, machine_coords)
         if not moved and not (motion >= 2 and ("I" in words or "J" in words or "K" in words)):
             return
@@ -465,14 +481,10 @@ class NcKernel:
             prog = self.program_position(end)
         else:
             end = tuple(map(add, self.transform.forward(prog), self.offset_vec))
-        if motion == 0:
-            self.machine.clock.advance(self.dyn.straight_time(start, end, math.inf, rapid=True))
-            self.canon.rapid(start, end, src)
-        elif motion == 1:
-            if self.feed <= 0.0:
+        if motion < 2:
+            if motion and self.feed <= 0.0:
                 self.fault("NC006", self.no_feed_message(1), src)
-            self.machine.clock.advance(self.dyn.straight_time(start, end, self.feed / 60.0, rapid=False))
-            self.canon.feed(start, end, self.feed, src)
+            self.straight_out(motion, start, end, self.feed, src, self.canon)
         else:
             self._arc(motion == 2, start, end, words, src, prog)
         self.prog = prog
@@ -481,7 +493,7 @@ class NcKernel:
     def _arc(self, cw: bool, start, end, words, src: Src, prog) -> None:
         if self.feed <= 0.0:
             self.fault("NC006", self.no_feed_message(2 if cw else 3), src)
-        an, bn, _nn, iw, jw = PLANES[self.plane]
+        an, bn = PLANES[self.plane][:2]
         if an not in self.axis_of or bn not in self.axis_of:
             self.fault("NC004", f"plane G{self.plane} needs axes {an} and {bn}", src)
         a, b = self.axis_of[an], self.axis_of[bn]
@@ -490,17 +502,7 @@ class NcKernel:
             sa, sb, ea, eb = start[a], start[b], end[a], end[b]
         else:  # the circle is programmed untransformed: its geometry first, then its centre mapped
             sa, sb, ea, eb = self.prog[a], self.prog[b], prog[a], prog[b]
-        try:
-            if "R" in words and iw not in words and jw not in words:
-                ca, cb = arcs.center_from_radius(sa, sb, ea, eb, words["R"] * self.scale, cw)
-            elif iw in words or jw in words:
-                ca = sa + words.get(iw, 0.0) * self.scale
-                cb = sb + words.get(jw, 0.0) * self.scale
-            else:
-                self.fault("NC003", f"G{2 if cw else 3} needs a centre ({iw}/{jw}) or a radius (R)", src)
-            radius = arcs.check_radii(sa, sb, ea, eb, ca, cb)
-        except arcs.ArcError as e:
-            self.fault("NC002", str(e), src)
+        ca, cb, radius = self.arc_centre(cw, sa, sb, ea, eb, words, src)
         if t is not None:
             similar = t.plane_similarity(a, b)
             if similar is None:
@@ -515,13 +517,42 @@ class NcKernel:
             cw ^= mirrored
             sa, sb, ea, eb = start[a], start[b], end[a], end[b]
         turns = max(0, int(words.get("P", 1)) - 1)
-        spec = ArcSpec(a, b, (ca, cb), cw, radius, turns)
-        angle = arcs.sweep(sa, sb, ea, eb, ca, cb, cw, turns)
-        length = arcs.arc_length(radius, angle, arcs.helix_travel(start, end, a, b))
-        t = trapezoid_time(length, *arc_limits(self.n_axes, a, b, length, self.feed / 60.0, self.dyn.max_feed,
+        self.arc_out(start, end, ArcSpec(a, b, (ca, cb), cw, radius, turns), self.feed, src, self.canon)
+
+    def arc_centre(self, cw: bool, sa: float, sb: float, ea: float, eb: float, words, src: Src):
+        """(centre a, centre b, radius) of the arc from (sa, sb) to (ea, eb) in the active plane, from its R or
+        its centre words; faults as the control does on a missing centre or unequal radii."""
+        _an, _bn, _nn, iw, jw = PLANES[self.plane]
+        try:
+            if "R" in words and iw not in words and jw not in words:
+                ca, cb = arcs.center_from_radius(sa, sb, ea, eb, words["R"] * self.scale, cw)
+            elif iw in words or jw in words:
+                ca = sa + words.get(iw, 0.0) * self.scale
+                cb = sb + words.get(jw, 0.0) * self.scale
+            else:
+                self.fault("NC003", f"G{2 if cw else 3} needs a centre ({iw}/{jw}) or a radius (R)", src)
+            return ca, cb, arcs.check_radii(sa, sb, ea, eb, ca, cb)
+        except arcs.ArcError as e:
+            self.fault("NC002", str(e), src)
+
+    def straight_out(self, motion: int, start, end, feed: float, src: Src, canon) -> None:
+        """A straight move (0 rapid, 1 at ``feed``) leaves: the clock runs its time, ``canon`` hears it."""
+        if motion == 0:
+            self.machine.clock.advance(self.dyn.straight_time(start, end, math.inf, rapid=True))
+            canon.rapid(start, end, src)
+        else:
+            self.machine.clock.advance(self.dyn.straight_time(start, end, feed / 60.0, rapid=False))
+            canon.feed(start, end, feed, src)
+
+    def arc_out(self, start, end, spec: ArcSpec, feed: float, src: Src, canon) -> None:
+        """An arc leaves: the clock runs its time, ``canon`` hears it."""
+        sa, sb, ea, eb = start[spec.a], start[spec.b], end[spec.a], end[spec.b]
+        angle = arcs.sweep(sa, sb, ea, eb, *spec.center, spec.cw, spec.turns)
+        length = arcs.arc_length(spec.radius, angle, arcs.helix_travel(start, end, spec.a, spec.b))
+        t = trapezoid_time(length, *arc_limits(self.n_axes, spec.a, spec.b, length, feed / 60.0, self.dyn.max_feed,
                                                self.dyn.accel))
         self.machine.clock.advance(t)
-        self.canon.arc(start, end, spec, self.feed, src)
+        canon.arc(start, end, spec, feed, src)
 
 
 def _transformed_linear(kernel: NcKernel, motion: int, words, src: Src) -> None:

@@ -23,6 +23,7 @@ from pathlib import Path
 
 from ...diagnostics import CompileFailed, Frame, RuntimeFault, Span
 from ...machine.scenario import EventQueue, InterfaceBit, of_type, refuse
+from ...nc import cutter
 from ...nc.block import Block, DinSyntaxError, as_block, parse_din_line, plain_row
 from ...nc.canon import CanonSink, Src
 from ...nc.midmove import MotionRecorder, position_at
@@ -90,6 +91,8 @@ class CplRuntime:
         self.session = session
         self.machine = session.machine
         self.kernel = session.kernel
+        # G41/G42 take the radius from the D numbers / TC selection (manual's G41/G42): not read yet, refused
+        self.kernel.cutter_radius = cutter.refusal("the tool radius of the CPL control's D number / TC selection")
         self.linked = linked
         cfg = self.machine.sections.get("cpl", {}) or {}
         self.lookahead = int(cfg.get("lookahead", 0))

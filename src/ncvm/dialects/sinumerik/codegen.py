@@ -730,6 +730,8 @@ class _Record:
                 out.emit("@SYNC_IN", line)
             if any(x in (0, 1, 2, 30) for x in m):
                 out.emit("if (_K.ended or _K.stopped_at) and _rt.halt(): return 1", line)
+        if any(x in (40, 41, 42) for x in self.g):  # compensation on or off: the straight-move path changes
+            out.emit("_rt.route(); _ex = _rt.execute; _lin = _rt.linear", line)
         if self.rel is not None:
             out.emit(f"_rt.read_in_inhibit({self.rel[0]}, {self.rel[1]}, {line})", line)
         if self.call is not None:

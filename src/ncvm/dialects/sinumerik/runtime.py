@@ -107,6 +107,7 @@ class Channel(SysMem):
         self.session = session
         self.kernel = session.kernel
         self.execute = session.kernel.execute
+        self.kernel.cutter_radius = self.cutter_radius  # G41/G42: the radius of the TO area's offset D
         self.counter = session.steps
         self.data = data
         self.memory = SystemMemory(data)

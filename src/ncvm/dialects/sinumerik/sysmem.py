@@ -15,6 +15,7 @@ from operator import attrgetter
 
 from ...diagnostics import RuntimeFault
 from ...machine.scenario import ExternalInput
+from ...nc import cutter
 from ...nc.block import Block
 from ...nc.canon import Src
 from ...nc.dynamics import trapezoid_distance, trapezoid_time
@@ -95,6 +96,10 @@ class SysMem:
         """D word: tool offset D of the channel's TO area; length = P2 + P5 + P8 on the tool axis."""
         self.run_buffer()
         n = _i(d)
+        comp = self.kernel.comp
+        if comp is not None and not comp.leaving and n != self.tool_d:
+            raise RuntimeFault("NC005", f"D{n}: another tool offset while G41/G42 is on is not supported by ncvm "
+                               "(G40 first)")
         self.tool_d = n
         if n == 0:
             length = 0.0
@@ -105,6 +110,23 @@ class SysMem:
             tool_type = int(p[1])
             length = p[3] + p[6] + p[9] if 1 <= tool_type <= 9 else p[2] + p[5] + p[8]
         self.kernel.set_tool_length(length, _src(self, line))
+
+    def cutter_radius(self, kernel, g: int, words, src) -> float:
+        """G41/G42: the radius of the selected tool offset D, P4 + P7 (geometry + wear) of a shank or angle
+        cutter or a grinding wheel (types 20-39, 50-59), 0 for a drill (10-19) or without D (table L615)."""
+        n = self.tool_d
+        if not n:
+            return 0.0
+        p = self.data.to.get(f"{self.data.to_area}:{n}")
+        if p is None:
+            kernel.fault("NC008", f"D{n}: no tool offset D{n} in TO area {self.data.to_area}", src)
+        tool_type = int(p[1]) if len(p) > 1 else 0
+        if 10 <= tool_type <= 19:
+            return 0.0
+        if not (20 <= tool_type <= 39 or 50 <= tool_type <= 59):
+            kernel.fault("NC005", f"G{g}: cutter radius compensation for tool type {tool_type} of D{n} (turning or "
+                         "5D tools, cutting positions) is not supported by ncvm", src)
+        return sum(p[i] for i in (4, 7) if i < len(p))
 
     def g16(self, letters: list, line: int) -> None:
         self.run_buffer()
@@ -209,7 +231,7 @@ class SysMem:
     def _acg(self, group: int) -> float:
         k = self.kernel
         state = {0: k.motion, 2: k.plane, 5: int(k.work_offset[1:]) if k.work_offset else 0,
-                 8: 70 if k.scale != 1.0 else 71, 10: 90 if k.absolute else 91}
+                 3: cutter.active_g(k), 8: 70 if k.scale != 1.0 else 71, 10: 90 if k.absolute else 91}
         if group in state:
             return float(state[group])
         return float(ACG_GROUPS.get(group, (0,))[0])
