@@ -13,16 +13,14 @@ import json
 import math
 import random
 import re
-import shutil
-import subprocess
 
 import pytest
+from rs274peer import RS274, rs274
 
 from ncvm.api import run
 from ncvm.machine.config import machine_from_dict
 from ncvm.runtime.session import RunOptions
 
-RS274 = shutil.which("rs274")
 pytestmark = pytest.mark.skipif(RS274 is None, reason="rs274 not installed (Debian package linuxcnc-uspace)")
 
 N_PROGRAMS = 24
@@ -157,14 +155,8 @@ def ncvm_moves(trace_path) -> list[tuple[str, tuple, tuple | None]]:
 
 
 def run_rs274(ngc, canon) -> None:
-    """``rs274 -g``; the peer itself now and then dies of a signal on this machine: try it again then."""
-    for _ in range(3):
-        proc = subprocess.run([RS274, "-g", str(ngc), str(canon)], stdin=subprocess.DEVNULL,
-                              stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, timeout=60)
-        if proc.returncode >= 0:
-            assert proc.returncode == 0, f"rs274 rejected {ngc.name} (exit {proc.returncode})"
-            return
-    pytest.skip(f"rs274 keeps crashing (signal {-proc.returncode}); the peer is not usable here")
+    proc = rs274(ngc, canon)
+    assert proc.returncode == 0, f"rs274 rejected {ngc.name} (exit {proc.returncode}): {proc.stderr}"
 
 
 def test_generated_programs_agree_with_rs274(tmp_path):

@@ -58,6 +58,8 @@ class NcKernel:
         self.g_handlers: dict = {}
         #: None, or an object with forward(vec), inverse(vec) and plane_similarity(a, b) (see set_transform)
         self.transform = None
+        #: when an arc's end lies too far off its start radius (a machine datum of the control's profile)
+        self.arc_tolerance = arcs.KERNEL
         # modal state
         self.motion = 0
         self.plane = 17
@@ -492,13 +494,13 @@ class NcKernel:
             sa, sb, ea, eb = self.prog[a], self.prog[b], prog[a], prog[b]
         try:
             if "R" in words and iw not in words and jw not in words:
-                ca, cb = arcs.center_from_radius(sa, sb, ea, eb, words["R"] * self.scale, cw)
+                ca, cb = arcs.center_from_radius(sa, sb, ea, eb, words["R"] * self.scale, cw, self.arc_tolerance.reach)
             elif iw in words or jw in words:
                 ca = sa + words.get(iw, 0.0) * self.scale
                 cb = sb + words.get(jw, 0.0) * self.scale
             else:
                 self.fault("NC003", f"G{2 if cw else 3} needs a centre ({iw}/{jw}) or a radius (R)", src)
-            radius = arcs.check_radii(sa, sb, ea, eb, ca, cb)
+            radius = arcs.check_radii(sa, sb, ea, eb, ca, cb, self.arc_tolerance, self.scale != 1.0)
         except arcs.ArcError as e:
             self.fault("NC002", str(e), src)
         if t is not None:

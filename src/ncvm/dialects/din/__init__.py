@@ -11,6 +11,7 @@ from ...nc.canon import Src
 from ...nc.plainrun import execute_columns
 from ...source import lines as program_lines
 from ..base import Dialect
+from .options import arc_tolerance, options
 
 _DIN_LINE = re.compile(r"^\s*(N\d+\s*)?([GMXYZFST]-?\d|\(|%|/|$)", re.I)
 
@@ -35,6 +36,7 @@ class DinDialect(Dialect):
         if diags:
             raise CompileFailed(diags)
         kernel = session.kernel
+        kernel.arc_tolerance = arc_tolerance(options(session.machine))
         skip_active = bool(session.machine.setting_data.get("block_skip", True))
         # a block with a word for an axis the machine lacks is refused when the run reaches it (found here,
         # once, so the blocks before it run as they are)
