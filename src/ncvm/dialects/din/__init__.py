@@ -8,6 +8,7 @@ from ...diagnostics import CompileFailed, RuntimeFault
 from ...nc.axiswords import din_missing_axes
 from ...nc.block import PlainRun, read_din_segments
 from ...nc.canon import Src
+from ...nc.cycles import CannedCycles
 from ...nc.plainrun import execute_columns
 from ...source import lines as program_lines
 from ..base import Dialect
@@ -37,6 +38,7 @@ class DinDialect(Dialect):
             raise CompileFailed(diags)
         kernel = session.kernel
         kernel.arc_tolerance = arc_tolerance(options(session.machine))
+        kernel.canned = CannedCycles()
         skip_active = bool(session.machine.setting_data.get("block_skip", True))
         # a block with a word for an axis the machine lacks is refused when the run reaches it (found here,
         # once, so the blocks before it run as they are)
