@@ -145,6 +145,7 @@ NCVM_CODES = {
     "NC009": "invalid parameter of a G function (a scaling factor of 0, a plane without its axes)",
     "NC010": "G96 at radius 0 without a spindle speed limit",
     "NC011": "axis word for an axis the machine does not have (the CPL control's run-time error 1938)",
+    "NC012": "a LinuxCNC program: # parameters, O-words or [expressions] are not DIN 66025 (one per program)",
     "LIM001": "travel limit exceeded",
     "RUN001": "step limit reached (runaway program?)",
     "RUN002": "sub-program not found",

@@ -12,6 +12,7 @@ from ...nc.cycles import CannedCycles
 from ...nc.plainrun import execute_columns
 from ...source import lines as program_lines
 from ..base import Dialect
+from .ngc import fold_extensions
 from .options import arc_tolerance, options
 
 _DIN_LINE = re.compile(r"^\s*(N\d+\s*)?([GMXYZFST]-?\d|\(|%|/|$)", re.I)
@@ -29,13 +30,14 @@ class DinDialect(Dialect):
 
     def check(self, path, text, machine, all_errors=False):
         segments, diags = read_din_segments(path, text)
+        diags = fold_extensions(diags, program_lines(text)) if diags else diags
         diags += [d for _i, _row, d in din_missing_axes(path, text, segments, machine.axis_names)]
         return sorted(diags, key=lambda d: (d.span.line, d.span.column or 0))
 
     def run(self, path, text, session):
         segments, diags = read_din_segments(path, text)
         if diags:
-            raise CompileFailed(diags)
+            raise CompileFailed(fold_extensions(diags, program_lines(text)))
         kernel = session.kernel
         kernel.arc_tolerance = arc_tolerance(options(session.machine))
         kernel.canned = CannedCycles()
