@@ -11,6 +11,10 @@ from rs274peer import AXES, ncvm_moves, needs_rs274, rs274, rs274_moves
 
 from ncvm.api import run
 from ncvm.machine.config import machine_from_dict
+from ncvm.nc.block import Block
+from ncvm.nc.canon import Canon, Src
+from ncvm.nc.cycles import CannedCycles
+from ncvm.nc.kernel import NcKernel
 from ncvm.runtime.session import RunOptions
 
 XYZ = {"axis": [{"name": a} for a in AXES]}
@@ -169,3 +173,13 @@ def test_generated_cycle_programs_agree_with_rs274(tmp_path):
         compared += len(ours)
     assert programs == N_PROGRAMS and compared > 40 * N_PROGRAMS
     print(f"compared {compared} moves of {programs} canned-cycle programs with rs274: all equal")
+
+
+def test_a_fork_keeps_its_own_cycle_state():
+    k = NcKernel(machine_from_dict(XYZ), Canon([]))
+    k.canned = CannedCycles()
+    k.execute(Block((0, 99), (), {"Z": 5.0, "F": 100.0}, None, None, Src("t", 1)))
+    shadow = k.fork()
+    shadow.execute(Block((98, 81), (), {"X": 1.0, "R": 2.0, "Z": -1.0}, None, None, Src("t", 2)))
+    assert (k.canned.retract_to_r, k.canned.r, k.motion) == (True, 0.0, 0)
+    assert (shadow.canned.retract_to_r, shadow.canned.r, shadow.motion) == (False, 2.0, 81)

@@ -114,6 +114,7 @@ class NcKernel:
         k.canon = Canon([])
         k.prog, k.g92, k.offset_vec, k.additive = list(self.prog), list(self.g92), list(self.offset_vec), \
             list(self.additive)
+        k.canned = copy.copy(self.canned)
         return k
 
     def place(self, machine_pos, prog=None) -> None:
