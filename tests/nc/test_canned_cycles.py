@@ -88,9 +88,11 @@ def _r(v: float) -> str:
 
 
 def generate(seed: int) -> str:
-    """A program of canned cycles: every cycle, the three planes, G90/G91, G98/G99, L, P, Q, G80 and moves."""
+    """A program of canned cycles: every cycle, the three planes, G90/G91, G98/G99, L, P, Q, G80 and moves,
+    in mm or in inch."""
     rnd = random.Random(seed)
-    out = ["G21 G17 G90 G94 G40 G49 F300 S1000 M3", f"G10 L2 P1 X{_r(rnd.uniform(-20, 20))} Y{_r(rnd.uniform(-20, 20))} "
+    units = 20 if seed % 4 == 3 else 21  # every fourth program in inch (the same numbers, read as inches)
+    out = [f"G{units} G17 G90 G94 G40 G49 F300 S1000 M3", f"G10 L2 P1 X{_r(rnd.uniform(-20, 20))} Y{_r(rnd.uniform(-20, 20))} "
            f"Z{_r(rnd.uniform(-5, 5))}", "G54", f"G0 X{_r(rnd.uniform(-30, 30))} Y{_r(rnd.uniform(-30, 30))} "
            f"Z{_r(rnd.uniform(5, 30))}"]
     plane, spindle = 17, 1
@@ -164,7 +166,8 @@ def test_generated_cycle_programs_agree_with_rs274(tmp_path):
         theirs = rs274_moves(canon.read_text())
         result, trace = run_din(tmp_path, text, f"cyc{seed}")
         assert result["status"] == "ok", (seed, result["error"])
-        ours = ncvm_moves(trace)
+        unit = 25.4 if text.startswith("G20") else 1.0  # rs274 reports positions in the program's unit
+        ours = [(kind, tuple(v / unit for v in end), c) for kind, end, c in ncvm_moves(trace)]
         assert len(ours) == len(theirs), f"seed {seed}: {len(ours)} moves against rs274's {len(theirs)}"
         for i, ((k1, e1, _c1), (k2, e2, _c2)) in enumerate(zip(ours, theirs)):
             assert (k1, e1) == (k2, pytest.approx(e2, abs=1e-4)), f"seed {seed}, move {i + 1}"
@@ -172,7 +175,7 @@ def test_generated_cycle_programs_agree_with_rs274(tmp_path):
         programs += 1
         compared += len(ours)
     assert programs == N_PROGRAMS and compared > 40 * N_PROGRAMS
-    print(f"compared {compared} moves of {programs} canned-cycle programs with rs274: all equal")
+    print(f"compared {compared} moves of {programs} canned-cycle programs (10 in inch) with rs274: all equal")
 
 
 def test_a_fork_keeps_its_own_cycle_state():
