@@ -147,6 +147,7 @@ NCVM_CODES = {
     "NC011": "axis word for an axis the machine does not have (the CPL control's run-time error 1938)",
     "NC012": "cutter radius compensation cannot place the tool (gouging, entry too short, tool too large for an "
              "arc, or a change not allowed while it is on)",
+    "NC013": "a LinuxCNC program: # parameters, O-words or [expressions] are not DIN 66025 (one per program)",
     "LIM001": "travel limit exceeded",
     "RUN001": "step limit reached (runaway program?)",
     "RUN002": "sub-program not found",

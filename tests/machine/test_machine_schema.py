@@ -227,7 +227,8 @@ def cases():
         ("[sympas]\nzero_offsets = { 1 = [5.0] }\n", 'sympas.zero_offsets.1 = [5.0]: must give 3 values'),
         ("[sympas]\nfoo = 1\n", "sympas.foo = 1: unknown key (known: axis_names,"),
         # [din], deep nesting, not TOML
-        ("[din]\nfoo = 1\n", "din.foo = 1: unknown key (DIN 66025 programs take no options"),
+        ("[din]\nfoo = 1\n", "din.foo = 1: unknown key (known: arc_radius_tolerance, arc_radius_tolerance_inch, "
+                                "arc_radius_relative)"),
         ("din = 5\n", "din = 5: must be a table"),
         (deep_tables, "a = { a = { a = { ... } } }: unknown key"),
         ("!x = " + "[" * 3000 + "]" * 3000 + "\n", "not valid TOML: arrays or inline tables nested too deeply"),

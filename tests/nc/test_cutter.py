@@ -97,6 +97,8 @@ def test_program_stop_releases_the_held_move_first(run_text, tmp_path):
     ("G0 X-20 Y-20\nG41 D1 G1 X0 Y0 F500\nG42 D1\n", 3, "on already"),
     ("G19\nG41 D1\n", 2, "G17 or G18"),
     ("G41 D1.5\n", 1, "whole number"),
+    # LinuxCNC: "Cannot use canned cycles with cutter radius compensation"
+    ("G0 X-20 Y-20 Z5\nG41 D1 G1 X0 Y0 F500\nG81 X10 Y0 Z-2 R1\n", 3, "no canned cycle"),
 ])
 def test_compensation_refuses_what_linuxcnc_refuses(run_text, tmp_path, text, line, words):
     r, _ = _run(run_text, tmp_path, text)

@@ -280,14 +280,23 @@ SYMPAS = Table((
     Field("boardtype", NONNEG_INT, "value of BOARDTYPE", 8001),
 ))
 
-DIN = Table(closed_why="DIN 66025 programs take no options: [din] must be empty")
+DIN = Table((
+    Field("arc_radius_tolerance", POSITIVE, "an arc's end radius may differ from its start radius by this much "
+                                            "in a metric program (LinuxCNC's CENTER_ARC_RADIUS_TOLERANCE_MM: "
+                                            "2 × 0.01 × √2), or by `arc_radius_relative` of the radius; never "
+                                            "by more than 100 times this", 0.02 * 2 ** 0.5, "mm"),
+    Field("arc_radius_tolerance_inch", POSITIVE, "... in an inch program (G20/G70; LinuxCNC's "
+                                                 "CENTER_ARC_RADIUS_TOLERANCE_INCH: 2 × 0.001 × √2)",
+          0.002 * 2 ** 0.5, "inch"),
+    Field("arc_radius_relative", NONNEG, "relative tolerance of the end radius (of the larger radius)", 0.001),
+))
 
 DIALECT_SECTIONS = (
     Field("cpl", CPL, "Bosch Rexroth CPL (docs/cpl.md)"),
     Field("cl800", CL800, "CL 800 compiler (docs/cl800.md)"),
     Field("sin800", SIN800, "SINUMERIK 800 @ code (docs/sin800.md)"),
     Field("sympas", SYMPAS, "rw_SymPas card (docs/sympas.md)"),
-    Field("din", DIN, "plain DIN 66025: no options"),
+    Field("din", DIN, "plain DIN 66025 / ISO 6983, LinuxCNC rs274 the reference (docs/din.md)"),
 )
 
 #: dialect id -> the table of its section

@@ -8,26 +8,70 @@ kernel's block-by-block path and column-wise (suffix ``_columns``, numpy) for
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 import numpy as np
 
 TWO_PI = 2.0 * math.pi
 #: a full circle is programmed by an end point equal to the start point (within this, mm)
 SAME_POINT = 1e-9
-#: end radius may differ from start radius by this much (mm) *or* this fraction before it is a fault
-RADIUS_ABS_TOL = 0.002
-RADIUS_REL_TOL = 0.001
+INCH = 25.4
+
+
+@dataclass(frozen=True, slots=True)
+class RadiusTolerance:
+    """How far an arc's end may lie off the circle through its start before the control refuses the block.
+
+    An arc is refused when its end radius differs from its start radius by more than ``limit`` times the
+    absolute tolerance, or by more than the absolute tolerance *and* more than ``relative`` of the larger
+    radius. ``absolute`` holds in metric programs (mm), ``absolute_inch`` in inch programs (inch), as
+    LinuxCNC's CENTER_ARC_RADIUS_TOLERANCE_MM/_INCH. A radius-format arc may fall ``reach`` (mm) short of
+    half its chord; a centre closer than ``zero`` (mm) to the start or end is a zero-radius arc.
+    """
+
+    absolute: float
+    absolute_inch: float
+    relative: float
+    limit: float = math.inf
+    reach: float = 0.002
+    zero: float = 1e-9
+
+    def allowed(self, inch: bool) -> float:
+        """The absolute tolerance in mm for a program in inch (G20/G70) or in mm."""
+        return self.absolute_inch * INCH if inch else self.absolute
+
+    def refuses(self, r0: float, r1: float, inch: bool) -> bool:
+        """Whether start radius ``r0`` and end radius ``r1`` (mm) are too far apart."""
+        diff = abs(r0 - r1)
+        tol = self.allowed(inch)
+        return diff > self.limit * tol or (diff > tol and diff > self.relative * max(r0, r1))
+
+    def refuses_columns(self, r0: np.ndarray, r1: np.ndarray, inch: bool) -> np.ndarray:
+        """:meth:`refuses` column-wise, with the zero-radius test."""
+        diff = np.abs(r0 - r1)
+        tol = self.allowed(inch)
+        return ((diff > self.limit * tol) | ((diff > tol) & (diff > self.relative * np.maximum(r0, r1)))
+                | (r0 < self.zero) | (r1 < self.zero))
+
+
+#: LinuxCNC rs274ngc's rule (interp_arc.cc arc_data_ijk/arc_data_r with the defaults of interp_internal.hh):
+#: 2 * 0.01 * sqrt(2) mm or 2 * 0.001 * sqrt(2) inch absolute, 0.1 % relative, never more than 100 times the
+#: absolute; R may fall 0.00005 inch short; radii under that are zero. The `din` default.
+RS274 = RadiusTolerance(0.02 * math.sqrt(2.0), 0.002 * math.sqrt(2.0), 0.001, 100.0, 0.00005 * INCH, 0.00005 * INCH)
+#: the kernel's rule where a control's manual gives none (CPL, SINUMERIK): 0.002 mm or 0.1 %, no cap
+KERNEL = RadiusTolerance(0.002, 0.002 / INCH, 0.001)
 
 
 class ArcError(ValueError):
     """Geometry that no control would accept (radius mismatch, impossible R)."""
 
 
-def center_from_radius(sa: float, sb: float, ea: float, eb: float, r: float, cw: bool) -> tuple[float, float]:
+def center_from_radius(sa: float, sb: float, ea: float, eb: float, r: float, cw: bool,
+                       reach: float = KERNEL.reach) -> tuple[float, float]:
     """Centre of the arc of signed radius ``r`` from (sa, sb) to (ea, eb).
 
     As in DIN 66025 and LinuxCNC: r > 0 takes the arc of at most 180 degrees,
-    r < 0 the one of more than 180 degrees.
+    r < 0 the one of more than 180 degrees. ``r`` may fall ``reach`` (mm) short of half the chord.
     """
     dx, dy = ea - sa, eb - sb
     chord = math.hypot(dx, dy)
@@ -35,7 +79,7 @@ def center_from_radius(sa: float, sb: float, ea: float, eb: float, r: float, cw:
         raise ArcError("a radius-format arc needs an end point different from its start point")
     half = chord / 2.0
     rad = abs(r)
-    if rad < half - RADIUS_ABS_TOL:
+    if half - rad > reach:
         raise ArcError(f"radius {rad:g} is too small for a chord of {chord:g}")
     h = math.sqrt(max(rad * rad - half * half, 0.0))
     mx, my = sa + dx / 2.0, sb + dy / 2.0
@@ -83,16 +127,16 @@ def sweep_columns(sa, sb, ea, eb, ca, cb, cw) -> tuple[np.ndarray, np.ndarray]:
     return np.where(closed, np.where(cw, -TWO_PI, TWO_PI), d), a0
 
 
-def check_radii(sa, sb, ea, eb, ca, cb) -> float:
-    """Start radius; raises :class:`ArcError` when the end lies on another radius."""
+def check_radii(sa, sb, ea, eb, ca, cb, tolerance: RadiusTolerance = KERNEL, inch: bool = False) -> float:
+    """Start radius; raises :class:`ArcError` when the end lies on another radius (``tolerance``, for a
+    program in inch or mm) or the radius is zero."""
     r0 = math.hypot(sa - ca, sb - cb)
     r1 = math.hypot(ea - ca, eb - cb)
-    diff = abs(r0 - r1)
-    if diff > RADIUS_ABS_TOL and diff > RADIUS_REL_TOL * r0:
-        raise ArcError(f"radius to end of arc differs from radius to start: start radius {r0:.4f}, end radius "
-                       f"{r1:.4f}, difference {diff:.4f}")
-    if r0 < SAME_POINT:
+    if r0 < tolerance.zero or r1 < tolerance.zero:
         raise ArcError("zero radius arc")
+    if tolerance.refuses(r0, r1, inch):
+        raise ArcError(f"radius to end of arc differs from radius to start: start radius {r0:.4f}, end radius "
+                       f"{r1:.4f}, difference {abs(r0 - r1):.4f}")
     return r0
 
 

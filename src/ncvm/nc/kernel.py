@@ -63,6 +63,11 @@ class NcKernel:
         #: where G41/G42 take the tool radius: ``radius(kernel, g, words, src) -> mm``; a front end whose
         #: control numbers its tool data otherwise sets its own (or a refusal)
         self.cutter_radius = cutter.iso_radius
+        #: when an arc's end lies too far off its start radius (a machine datum of the control's profile)
+        self.arc_tolerance = arcs.KERNEL
+        #: None, or the canned cycles of a profile that has them (:class:`ncvm.nc.cycles.CannedCycles`): then
+        #: its G codes (G73, G74, G80-G89, G98, G99) are its own, and G80 leaves no motion mode active
+        self.canned = None
         # modal state
         self.motion = 0
         self.plane = 17
@@ -114,6 +119,7 @@ class NcKernel:
         k.canon = Canon([])
         k.prog, k.g92, k.offset_vec, k.additive = list(self.prog), list(self.g92), list(self.offset_vec), \
             list(self.additive)
+        k.canned = copy.copy(self.canned)
         return k
 
     def place(self, machine_pos, prog=None) -> None:
@@ -205,6 +211,7 @@ class NcKernel:
         motion = self.motion
         handlers = self.g_handlers
         extra = None
+        cycle_g = False
         for g in block.g:
             if handlers and g in handlers:
                 extra = [g] if extra is None else extra + [g]
@@ -228,7 +235,7 @@ class NcKernel:
                 machine_coords = True
             elif g == 40 or g == 41 or g == 42:
                 cutter.select(self, g, words, src)
-            elif g == 94 or g == 80 or g == 64 or g == 60:
+            elif g == 94 or g == 64 or g == 60:
                 pass
             elif g == 96:
                 self.css = True
@@ -248,6 +255,15 @@ class NcKernel:
             elif g == 10:
                 self._set_offset_table(words, src)
                 return
+            elif self.canned is not None and g in self.canned.codes:
+                if self.comp is not None and g < 98:
+                    self.fault("NC012", f"G{g}: no canned cycle while cutter radius compensation is on", src)
+                if g >= 98:
+                    self.canned.retract_to_r = g == 99
+                else:
+                    motion, cycle_g = g, True
+            elif g == 80:
+                pass
             else:
                 self.fault("NC004", f"G{g} is not supported", src)
         words_taken = False
@@ -279,6 +295,8 @@ class NcKernel:
             self._set_position(words)
         elif words_taken:
             self.motion = motion
+        elif motion >= 73 and self.canned is not None:
+            self.canned.block(self, motion, cycle_g, words, src)
         else:
             self.motion = motion
             if motion < 2 and not machine_coords:
@@ -298,7 +316,8 @@ class NcKernel:
         """Whether plain motion blocks may run column-wise (:mod:`ncvm.nc.plainrun`) now: not while a coordinate
         transformation maps every target, nor under G96, where each block sets the spindle speed anew, nor
         when a dialect handles a motion G code itself."""
-        return self.transform is None and not self.css and self.comp is None and not (self.g_handlers and _MOTION_G & self.g_handlers.keys())
+        return self.transform is None and not self.css and self.comp is None and self.motion < 4 and not (
+            self.g_handlers and _MOTION_G & self.g_handlers.keys())
 
     # -- spindle -----------------------------------------------------------
     def spindle_speed(self) -> float:
@@ -392,6 +411,10 @@ class NcKernel:
             self.machine.plc.outputs[f"M{mc}"] = True
             canon.aux(f"M{mc}", src)
 
+    def turn_spindle(self, direction: int, src: Src) -> None:
+        """Start the spindle clockwise (1), counter-clockwise (-1) or stop it (0), as M3, M4, M5 do."""
+        self._m_before(3 if direction > 0 else 4 if direction < 0 else 5, src)
+
     def _m_after(self, mc: int, src: Src) -> None:
         if mc == 0 or mc == 1:
             self.stopped_at = f"M{mc}"
@@ -465,6 +488,20 @@ class NcKernel:
             return
         self._general_move(motion, words, machine_coords, src)
 
+    def straight_to(self, prog, rapid: bool, src: Src) -> None:
+        """A straight move to the programmed position ``prog`` (mm, every axis), at rapid or at the modal feed:
+        the moves a canned cycle makes."""
+        start = self.machine_pos
+        end = tuple(map(add, prog if self.transform is None else self.transform.forward(prog), self.offset_vec))
+        if rapid:
+            self.machine.clock.advance(self.dyn.straight_time(start, end, math.inf, rapid=True))
+            self.canon.rapid(start, end, src)
+        else:
+            self.machine.clock.advance(self.dyn.straight_time(start, end, self.feed / 60.0, rapid=False))
+            self.canon.feed(start, end, self.feed, src)
+        self.prog = list(prog)
+        self.machine_pos = end
+
     def _general_move(self, motion: int, words, machine_coords: bool, src: Src) -> None:
         if self.comp is not None:
             self.comp.move(motion, words, src)
@@ -525,13 +562,14 @@ class NcKernel:
         _an, _bn, _nn, iw, jw = PLANES[self.plane]
         try:
             if "R" in words and iw not in words and jw not in words:
-                ca, cb = arcs.center_from_radius(sa, sb, ea, eb, words["R"] * self.scale, cw)
+                ca, cb = arcs.center_from_radius(sa, sb, ea, eb, words["R"] * self.scale, cw,
+                                                 self.arc_tolerance.reach)
             elif iw in words or jw in words:
                 ca = sa + words.get(iw, 0.0) * self.scale
                 cb = sb + words.get(jw, 0.0) * self.scale
             else:
                 self.fault("NC003", f"G{2 if cw else 3} needs a centre ({iw}/{jw}) or a radius (R)", src)
-            return ca, cb, arcs.check_radii(sa, sb, ea, eb, ca, cb)
+            return ca, cb, arcs.check_radii(sa, sb, ea, eb, ca, cb, self.arc_tolerance, self.scale != 1.0)
         except arcs.ArcError as e:
             self.fault("NC002", str(e), src)
 

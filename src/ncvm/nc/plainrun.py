@@ -136,8 +136,7 @@ def _arcs(k, arc_pos, start, end, centre_words, feed, cw, a: int, b: int) -> tup
     ca = sa + np.nan_to_num(centre_words[0]) * k.scale
     cb = sb + np.nan_to_num(centre_words[1]) * k.scale
     r0 = np.hypot(sa - ca, sb - cb)
-    diff = np.abs(r0 - np.hypot(ea - ca, eb - cb))
-    bad = np.flatnonzero(((diff > arcs.RADIUS_ABS_TOL) & (diff > arcs.RADIUS_REL_TOL * r0)) | (r0 < arcs.SAME_POINT))
+    bad = np.flatnonzero(k.arc_tolerance.refuses_columns(r0, np.hypot(ea - ca, eb - cb), k.scale != 1.0))
     if len(bad):
         return int(bad[0])
     angle, a0 = arcs.sweep_columns(sa, sb, ea, eb, ca, cb, cw)

@@ -8,9 +8,13 @@ from ...diagnostics import CompileFailed, RuntimeFault
 from ...nc.axiswords import din_missing_axes
 from ...nc.block import PlainRun, read_din_segments
 from ...nc.canon import Src
+from ...nc.cycles import CannedCycles
 from ...nc.plainrun import execute_columns
 from ...source import lines as program_lines
 from ..base import Dialect
+from .ngc import fold_extensions
+from .options import arc_tolerance, options
+from .support import address_refusal, refused_address, unsupported
 
 _DIN_LINE = re.compile(r"^\s*(N\d+\s*)?([GMXYZFST]-?\d|\(|%|/|$)", re.I)
 
@@ -27,18 +31,24 @@ class DinDialect(Dialect):
 
     def check(self, path, text, machine, all_errors=False):
         segments, diags = read_din_segments(path, text)
+        diags = fold_extensions(diags, program_lines(text)) if diags else diags
         diags += [d for _i, _row, d in din_missing_axes(path, text, segments, machine.axis_names)]
+        diags += unsupported(path, segments, program_lines(text), machine.axis_names)
         return sorted(diags, key=lambda d: (d.span.line, d.span.column or 0))
 
     def run(self, path, text, session):
         segments, diags = read_din_segments(path, text)
         if diags:
-            raise CompileFailed(diags)
+            raise CompileFailed(fold_extensions(diags, program_lines(text)))
         kernel = session.kernel
+        kernel.arc_tolerance = arc_tolerance(options(session.machine))
+        kernel.canned = CannedCycles()
         skip_active = bool(session.machine.setting_data.get("block_skip", True))
         # a block with a word for an axis the machine lacks is refused when the run reaches it (found here,
         # once, so the blocks before it run as they are)
-        refused = din_missing_axes(path, text, segments, kernel.axis_of, skip_active)[:1]
+        refused = (din_missing_axes(path, text, segments, kernel.axis_of, skip_active)
+                   + _refused_addresses(path, text, segments, kernel.axis_of, skip_active))
+        refused = sorted(refused, key=lambda r: (r[0], r[1] or 0))[:1]
         if refused:
             at, row, refusal = refused[0]
             segments = segments[:at] + ([segments[at].head(row)] if row else [])
@@ -89,6 +99,18 @@ class DinDialect(Dialect):
             counter.steps += done
         if not kernel.ended and last_src is not None:
             kernel.end_program(last_src)
+
+
+def _refused_addresses(path: str, text: str, segments: list, axes, skip_active: bool) -> list:
+    """The first block with an address the profile refuses (NC007), as (segment index, None, Diagnostic); plain
+    runs have none."""
+    for i, seg in enumerate(segments):
+        if isinstance(seg, PlainRun) or (seg[1] and skip_active):
+            continue
+        address = refused_address(seg[0], axes)
+        if address is not None:
+            return [(i, None, address_refusal(path, seg[0], program_lines(text)[seg[0].src.line - 1], address))]
+    return []
 
 
 DIALECT = DinDialect()

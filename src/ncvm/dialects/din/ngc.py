@@ -1,0 +1,49 @@
+"""LinuxCNC's own extensions of G-code in a `din` program, named once instead of line by line.
+
+rs274ngc reads more than DIN 66025 / ISO 6983: numbered and named parameters (``#1``, ``#<depth>``),
+O-word sub-programs, loops and conditions (``o100 sub``, ``o<x> if [...]``), and expressions in
+brackets (``X[#1 + 2]``, ``sin[30]``). ncvm's `din` runs plain blocks only, so each such line is a syntax
+error (NC001); a program written for LinuxCNC had hundreds of them. The reader's NC001 diagnostics of
+those lines become one NC013 that says what the program is.
+"""
+
+from __future__ import annotations
+
+import re
+
+from ...diagnostics import Diagnostic, Span
+
+_COMMENTS = re.compile(r"\([^)]*\)|;.*")
+#: (what, how it shows in a line without its comments)
+FEATURES = (
+    ("named parameters (#<name>)", re.compile(r"#\s*<")),
+    ("# parameters", re.compile(r"#\s*[\d\[]")),
+    ("O-words (sub-programs, loops, conditions)", re.compile(r"^\s*(?:/\s*)?(?:N\d+\s*)?O\s*(?:<|\d+\s*[A-Z])", re.I)),
+    ("expressions in brackets", re.compile(r"\[")),
+)
+
+
+def fold_extensions(diags: list[Diagnostic], lines: list[str]) -> list[Diagnostic]:
+    """``diags`` with the NC001 of every line that uses a LinuxCNC extension replaced by one NC013 (at the
+    first such line); the other diagnostics as they are."""
+    used: dict[str, None] = {}
+    first = None
+    count = 0
+    kept = []
+    for d in diags:
+        line = lines[d.span.line - 1] if d.code == "NC001" and d.span and d.span.line <= len(lines) else None
+        found = [what for what, pattern in FEATURES if line is not None and pattern.search(_COMMENTS.sub("", line))]
+        if not found:
+            kept.append(d)
+            continue
+        used.update(dict.fromkeys(found))
+        count += 1
+        first = first or d
+    if first is None:
+        return diags
+    what = ", ".join(used)
+    lines_text = "1 line" if count == 1 else f"{count} lines"
+    folded = Diagnostic("NC013", f"this is a LinuxCNC program, not DIN 66025: it uses LinuxCNC's extensions of "
+                                 f"G-code ({what}; {lines_text}, the first here), which ncvm does not run (README: "
+                                 f"which .ngc files run)", Span(first.span.file, first.span.line, first.span.column))
+    return sorted([folded, *kept], key=lambda d: (d.span.line, d.span.column or 0) if d.span else (0, 0))

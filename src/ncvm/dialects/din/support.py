@@ -1,0 +1,87 @@
+"""What the `din` profile runs, and the warnings of ``ncvm check`` for what it refuses.
+
+A run stops at a G function the kernel does not implement (NC004; NC005 for cutter radius compensation)
+and at an address no function of the profile reads (NC007). ``ncvm check`` reports each such function
+and address as a *warning* with the code the run stops with, and the words "not supported by ncvm", so
+a check without warnings means the run will not stop on an unsupported function; errors stay the
+program's own (the syntax, the axes of the machine). ``tests/dialects/din/test_support.py`` holds this
+table against the kernel: every G number the table lacks faults there, every one it has does not.
+"""
+
+from __future__ import annotations
+
+import re
+
+from ...diagnostics import Diagnostic, Span
+from ...nc.axiswords import AXIS_LETTERS
+from ...nc.block import WORD, PlainRun
+from ...nc.cycles import CODES as CYCLE_CODES
+
+#: the G functions the profile runs (nc/kernel.py NcKernel.execute, nc/cycles.py)
+G_FUNCTIONS = frozenset({0, 1, 2, 3, 4, 10, 17, 18, 19, 20, 21, 40, 41, 42, 43, 44, 49, 53, 54, 55, 56, 57, 58, 59, 60,
+                         64, 70, 71, 90, 91, 92, 92.1, 94, 96, 97}) | CYCLE_CODES
+#: refused G functions whose code is not NC004
+G_CODES: dict[float, str] = {}
+#: the addresses its functions read besides the axes (O: a program number, as ISO controls read it; it does
+#: nothing); every other letter is refused (NC007), an axis letter the machine lacks is NC011 (nc/axiswords.py)
+ADDRESSES = frozenset("DFGHIJKLMNOPQRST")
+_COMMENTS = re.compile(r"\([^)]*\)|;.*")
+
+
+def refused_address(blk, axes) -> str | None:
+    """The first address of ``blk`` the profile refuses (an axis letter the machine lacks is NC011's)."""
+    return next((a for a in blk.words if _refused_letter(a, axes)), None)
+
+
+def _refused_letter(address: str, axes) -> bool:
+    return address not in ADDRESSES and address not in axes and address not in AXIS_LETTERS
+
+
+def _refused_g(g, words) -> bool:
+    """A G function the profile does not run, or G10 other than L2 P1..P6."""
+    return g not in G_FUNCTIONS or (g == 10 and (words.get("L") != 2 or words.get("P") not in (1, 2, 3, 4, 5, 6)))
+
+
+def address_refusal(path: str, blk, line_text: str, address: str) -> Diagnostic:
+    return Diagnostic("NC007", f"address {address} is not supported by ncvm (no function of the din profile "
+                               "reads it)", Span(path, blk.src.line, _column(line_text, address, None)))
+
+
+def unsupported(path: str, segments: list, lines: list[str], axes) -> list[Diagnostic]:
+    """Warnings for the G functions and addresses of a program the run would refuse: the first block of
+    each, with the number of blocks that use it."""
+    found: dict = {}  # (kind, what) -> [first block, count]
+    for seg in segments:
+        if isinstance(seg, PlainRun):
+            continue  # G0-G3 and X Y Z I J K F only
+        blk = seg[0]
+        for g in blk.g:
+            if _refused_g(g, blk.words):
+                found.setdefault(("G", g), [blk, 0])[1] += 1
+        for a in blk.words:
+            if _refused_letter(a, axes):
+                found.setdefault(("A", a), [blk, 0])[1] += 1
+    out = []
+    for (kind, what), (blk, count) in found.items():
+        text = lines[blk.src.line - 1] if blk.src.line <= len(lines) else ""
+        more = f"; {count} blocks use it" if count > 1 else ""
+        if kind == "G":
+            name = f"G{what:g}"
+            d = Diagnostic(G_CODES.get(what, "NC004"), f"{name} is not supported by ncvm: the run stops here{more}",
+                           Span(path, blk.src.line, _column(text, "G", what)), severity="warning")
+            if what == 10:
+                d.message = f"G10 other than G10 L2 P1..P6 is not supported by ncvm: the run stops here{more}"
+        else:
+            d = address_refusal(path, blk, text, what)
+            d.severity, d.message = "warning", d.message + f": the run stops here{more}"
+        out.append(d)
+    return out
+
+
+def _column(text: str, letter: str, value) -> int | None:
+    """The column of the word ``letter`` (with ``value``, when given) in a line, comments left out."""
+    body = _COMMENTS.sub(lambda m: " " * len(m.group()), text.upper())
+    for mt in WORD.finditer(body):
+        if mt.group(1) == letter and (value is None or float(mt.group(2)) == value):
+            return mt.start(1) + 1
+    return None
