@@ -144,8 +144,8 @@ class Sin800Dialect(Dialect):
                 store.put(NAMESPACE, key, value)
         session.variables = {f"R{n}": R[n] for n in range(1000)
                              if R[n] != 0.0 or R[n] != initial[n] or n in written}
-        if channel.v24:
-            session.variables["V24"] = list(channel.v24)
+        if channel.panel.v24:
+            session.variables["V24"] = list(channel.panel.v24)
 
 
 DIALECT = Sin800Dialect()
