@@ -10,9 +10,12 @@ import pytest
 
 from ncvm.diagnostics import UsageError
 from ncvm.dialects import REGISTRY
+from ncvm.dialects.sinumerik.options import Options as Sin800Options
+from ncvm.dialects.sinumerik.options import options as sin800_options
 from ncvm.dialects.sinumerik.cl800 import Options, options
 from ncvm.machine.config import dialect_options
-from ncvm.machine.model import Machine
+from ncvm.machine.model import Axis, Machine
+from ncvm.machine.schema import Said
 from ncvm.machine.sections import DIALECT_SECTIONS, SECTIONS
 from ncvm.machine.spec import MACHINE_FILE, section_defaults
 
@@ -38,3 +41,31 @@ def test_the_cl800_options_are_its_section():
 def test_a_bad_section_built_in_python_is_refused_as_a_machine_file_is(section, message):
     with pytest.raises(UsageError, match=re.escape("machine file error: " + message)):
         dialect_options(Options, {"cl800": section}, "cl800")
+
+
+def _declared(cls) -> dict:
+    """Field name -> default of an options dataclass (a default factory called)."""
+    return {f.name: f.default_factory() if f.default_factory is not dataclasses.MISSING else f.default
+            for f in dataclasses.fields(cls)}
+
+
+@pytest.mark.parametrize("dialect, cls", [("sin800", Sin800Options)])
+def test_each_options_dataclass_is_its_section(dialect, cls):
+    """One field per key; a default the schema says in words (``Said``: taken from elsewhere) is None."""
+    declared = _declared(cls)
+    documented = section_defaults(dialect)
+    assert set(declared) == set(documented)
+    for key, default in documented.items():
+        assert declared[key] == (None if isinstance(default, Said) or default is None else default), key
+
+
+def test_the_sin800_options_are_checked_with_the_machine_axes():
+    m = Machine()
+    m.axes = [Axis("X"), Axis("Y")]
+    m.sections["sin800"] = {"zero_offsets": {"G54": [1.0, 2.0]}, "decode_ahead": 2}
+    opts = sin800_options(m)
+    assert opts.zero_offsets == {"G54": [1.0, 2.0]} and opts.decode_ahead == 2 and opts.control == "880"
+    m.sections["sin800"] = {"zero_offsets": {"G54": [1.0, 2.0, 3.0]}}
+    with pytest.raises(UsageError, match=re.escape("machine file error: sin800.zero_offsets.G54 = [1.0, 2.0, 3.0]: "
+                                                   "must give 2 values, one per axis (X, Y)")):
+        sin800_options(m)

@@ -39,6 +39,7 @@ from .meas import meas_m
 from .memory import SystemMemory
 from .ncdata import MIB_TOP, NcData, int_to_pattern, nc8, pattern_to_int
 from .offsets import Offsets
+from .options import options
 from .panel import Panel
 from .plc import PlcClock
 from .plcmem import Plc
@@ -123,19 +124,20 @@ class Channel:
         self.counter = session.steps
         self.data = data
         self.loader = loader  # number -> compiled unit (or None)
-        sec = session.machine.sections.get("sin800", {})
-        self.block_skip = bool(sec.get("block_skip", session.machine.setting_data.get("block_skip", True)))
-        self.m0_stops = str(sec.get("m0", "stop")) == "stop"
-        self.max_depth = int(sec.get("max_call_depth", 8))
-        self.memory = SystemMemory(data, session.say, bool(sec.get("cycle_alarm_stop", True)))
+        sec = options(session.machine)
+        skip = sec.block_skip
+        self.block_skip = bool(session.machine.setting_data.get("block_skip", True) if skip is None else skip)
+        self.m0_stops = sec.m0 == "stop"
+        self.max_depth = sec.max_call_depth
+        self.memory = SystemMemory(data, session.say, sec.cycle_alarm_stop)
         # decode-ahead (digest §10.5): 0 = lockstep; N = up to N decoded blocks wait for execution
-        self.decode_ahead = int(sec.get("decode_ahead", 0))
-        self.strict = bool(sec.get("strict_nc", False))  # R stores rounded to 8 digits (digest §10.4)
+        self.decode_ahead = sec.decode_ahead
+        self.strict = sec.strict_nc  # R stores rounded to 8 digits (digest §10.4)
         self.buffer = BlockBuffer(self.decode_ahead, self.execute)  # route() keeps its step on the current path
         self.pending_r: dict[int, float] = {}  # PLC answers and measured values not yet seen by decoding
         self.R = [0.0] * 1000
         self.written: set[int] = set()
-        for name, v in sec.get("r", {}).items():
+        for name, v in sec.r.items():
             self.R[int(str(name).upper().lstrip("R"))] = float(v)
         for k, v in data.central_r.items():
             self.R[int(k)] = float(v)
@@ -162,7 +164,7 @@ class Channel:
         self.plc = Plc(data, self.plc_clock, session.machine.clock, self.advance_scenario)
         for ev in of_type(session.machine.scenario, PlcTimer, PlcCounter):
             self.plc_clock.parse_event(ev)  # faults in the scenario before the run
-        self.m_functions = {f"M{int(k)}": dict(v) for k, v in sec.get("m_functions", {}).items()}
+        self.m_functions = {f"M{int(k)}": dict(v) for k, v in sec.m_functions.items()}
         gearbox = Gearbox(self.kernel, SINUMERIK_GEARS, data.gear, data.gears, Cl800Error, "[sin800] gears")
         self.spindle = Spindle(self.kernel, data, self.buffer, gearbox)
         # G96 takes the radius from X; axis 1 may be programmed as a diameter (as for PREP CYC)
