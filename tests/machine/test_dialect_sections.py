@@ -10,9 +10,9 @@ import pytest
 
 from ncvm.diagnostics import UsageError
 from ncvm.dialects import REGISTRY
+from ncvm.dialects.sinumerik.cl800 import Options, options
 from ncvm.dialects.sinumerik.options import Options as Sin800Options
 from ncvm.dialects.sinumerik.options import options as sin800_options
-from ncvm.dialects.sinumerik.cl800 import Options, options
 from ncvm.machine.config import dialect_options
 from ncvm.machine.model import Axis, Machine
 from ncvm.machine.schema import Said
