@@ -13,6 +13,8 @@ from ncvm.dialects import REGISTRY
 from ncvm.dialects.sinumerik.cl800 import Options, options
 from ncvm.dialects.sinumerik.options import Options as Sin800Options
 from ncvm.dialects.sinumerik.options import options as sin800_options
+from ncvm.dialects.sympas.config import Options as SympasOptions
+from ncvm.dialects.sympas.config import sympas_config
 from ncvm.machine.config import dialect_options
 from ncvm.machine.model import Axis, Machine
 from ncvm.machine.schema import Said
@@ -49,14 +51,28 @@ def _declared(cls) -> dict:
             for f in dataclasses.fields(cls)}
 
 
-@pytest.mark.parametrize("dialect, cls", [("sin800", Sin800Options)])
+@pytest.mark.parametrize("dialect, cls", [("sin800", Sin800Options), ("sympas", SympasOptions)])
 def test_each_options_dataclass_is_its_section(dialect, cls):
-    """One field per key; a default the schema says in words (``Said``: taken from elsewhere) is None."""
+    """One field per key, with the documented default; a default the schema says in words (``Said``) is
+    filled in by the dialect."""
     declared = _declared(cls)
     documented = section_defaults(dialect)
     assert set(declared) == set(documented)
     for key, default in documented.items():
-        assert declared[key] == (None if isinstance(default, Said) or default is None else default), key
+        if not isinstance(default, Said):
+            assert declared[key] == default, key
+
+
+def test_the_sympas_options_fill_in_the_axis_names_and_the_tables():
+    m = Machine()
+    m.axes = [Axis("X"), Axis("Y")]
+    m.sections["sympas"] = {"axst_bits": {"homed": 20}, "busy_move": "override"}
+    opts = sympas_config(m)
+    assert opts.axis_names == ["A1", "A2"] and opts.busy_move == "override"
+    assert opts.axst_bits["homed"] == 20 and opts.axst_bits["eo"] == 4 and opts.ssf_codes["write_ci"] == 1
+    m.sections["sympas"] = {"axis_names": ["P", "Q", "R"]}
+    with pytest.raises(UsageError, match=re.escape('sympas.axis_names = ["P", "Q", "R"]: must give 2 values')):
+        sympas_config(m)
 
 
 def test_the_sin800_options_are_checked_with_the_machine_axes():

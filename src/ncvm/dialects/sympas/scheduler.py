@@ -11,16 +11,17 @@ import math
 
 from ...diagnostics import Frame, RuntimeFault, Span
 from ...runtime.locate import generated_frames
+from .config import Options
 from .task import ENDED, ERROR, RUNNING, Task, TaskEnd
 
 
 class Scheduler:
-    def __init__(self, card, cfg: dict, counter):
+    def __init__(self, card, cfg: Options, counter):
         self.counter = counter  # the run's StepCounter: the step limit and the statements counted before
-        self.q = int(cfg["statements_per_tick"])
-        self.servo = float(cfg["servo_ticks"])
-        self.slice = float(cfg["task_slice_ticks"])
-        self.clock0 = int(cfg["clock_start"]) & 0xFFFFFFFF
+        self.q = int(cfg.statements_per_tick)
+        self.servo = float(cfg.servo_ticks)
+        self.slice = float(cfg.task_slice_ticks)
+        self.clock0 = int(cfg.clock_start) & 0xFFFFFFFF
         self.tasks = [Task(card, self, n) for n in range(4)]
         self.steps = 0
         self.acts = 0  # counts the moments a task may have changed the card (see quiet_until)
