@@ -11,7 +11,7 @@ from __future__ import annotations
 import math
 
 from ...diagnostics import UsageError
-from ...machine.scenario import AxisInput, CommonInteger, PositionError
+from ...machine.scenario import AxisInput, CommonInteger, EventQueue, PositionError
 from . import recording
 from .axes import AxisState
 from .config import Options
@@ -54,7 +54,8 @@ class Card:
                 raise UsageError(f"{machine.source}: key 'sympas.ref_positions.{name}' names no axis of the card "
                                  f"(axes: {', '.join(self.names)})")
         for ev in machine.scenario:
-            self.scheduler.add_timed(ev.time * TICKS_PER_S, self._scenario_action(ev))
+            self._scenario_action(ev)  # an event the card cannot use is refused before the run
+        self.scheduler.set_events(EventQueue(machine.scenario), self.apply_event)
         self.irq_count = 0
         self.live: set = set()  # moves that have not retired yet
         self.counts = float(cfg.counts_per_unit)
@@ -62,6 +63,10 @@ class Card:
         self.recordings: dict = {}  # axis number -> LPR/LPRS Recording (recording.py)
 
     # -- scenario events ------------------------------------------------------------------------------
+    def apply_event(self, ev) -> None:
+        """A scenario event whose time has come."""
+        self._scenario_action(ev)()
+
     def _scenario_action(self, ev):
         """The card's action for a scenario event (machine/scenario.py): an axis' digital input, its
         following error or a common integer; any other event is refused before the run."""
