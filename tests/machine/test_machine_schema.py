@@ -416,19 +416,6 @@ def _fields(section: str, key: str) -> dict:
     return {f.name: f for f in node.fields}
 
 
-def test_declared_keys_are_the_ones_the_dialects_read():
-    """The dialects still check a section they are handed directly (a Machine built in Python); their key
-    lists and the schema's must not drift apart."""
-    from ncvm.dialects.cpl.system.controller import AXIS_KEYS, CPL_KEYS, RECORD_KEYS
-    from ncvm.dialects.sinumerik.ncdata import KNOWN_KEYS
-
-    assert set(section_defaults("cpl")) == CPL_KEYS
-    assert set(_fields("cpl", "axes")) == AXIS_KEYS
-    for key, allowed in RECORD_KEYS.items():
-        assert set(_fields("cpl", key)) == allowed, key
-    assert set(section_defaults("sin800")) == KNOWN_KEYS
-
-
 def test_cpl_lookahead_0_is_documented_as_the_block_buffer():
     """`[cpl] lookahead = 0` (the default) is the bounded block buffer, no longer "no limit"."""
     from ncvm.dialects.cpl.runtime import BLOCK_BUFFER

@@ -11,7 +11,7 @@ import re
 import tomllib
 from importlib import resources
 from pathlib import Path
-from typing import Any, Mapping, TypeVar
+from typing import Any, Mapping, Sequence, TypeVar
 
 from ..diagnostics import UsageError
 from .model import Axis, Machine, PlcImage, SimClock, Tool
@@ -126,13 +126,16 @@ NUMERIC_AXIS_KEYS = ("min", "max", "rapid", "max_feed", "accel")
 Options = TypeVar("Options")
 
 
-def dialect_options(cls: type[Options], sections: Mapping[str, Any], dialect: str) -> Options:
+def dialect_options(cls: type[Options], sections: Mapping[str, Any], dialect: str,
+                    axes: Sequence[Axis] = ()) -> Options:
     """The ``[dialect]`` section of a machine's ``sections`` as the dataclass ``cls`` the dialect declares
     its options in (its fields are the section's keys, with the defaults of sections.py). The section is
-    checked against its schema first: a Machine built in Python has not been through the loader."""
+    checked against its schema first: a Machine built in Python has not been through the loader.
+    ``axes``: the machine's axes, for keys with a value per axis."""
     section = dict(sections.get(dialect) or {})
+    ctx = Ctx(tuple(a.name for a in axes), tuple((a.min, a.max) for a in axes))
     try:
-        validate(SECTIONS[dialect], section, path=dialect)
+        validate(SECTIONS[dialect], section, ctx, path=dialect)
     except SchemaError as e:
         raise UsageError(f"machine file error: {e}") from None
     return cls(**section)

@@ -279,6 +279,11 @@ class EventQueue:
             self._times.pop(0)
             yield self._events.pop(0)
 
+    def pop(self) -> Event:
+        """Remove and return the next event (the queue must not be empty)."""
+        self._times.pop(0)
+        return self._events.pop(0)
+
     def take(self, match) -> Event | None:
         """Remove and return the first queued event ``match(event)`` accepts, whatever its time."""
         for i, ev in enumerate(self._events):

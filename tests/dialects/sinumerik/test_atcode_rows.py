@@ -9,10 +9,18 @@ from ncvm.dialects.sinumerik import atcodes
 from ncvm.dialects.sinumerik.atcodes import AT_CODES
 from ncvm.dialects.sinumerik.cl800 import tables
 from ncvm.dialects.sinumerik.codegen import UnitCodegen
+from ncvm.dialects.sinumerik.cycles import Cycles
 from ncvm.dialects.sinumerik.memory import SystemMemory
+from ncvm.dialects.sinumerik.offsets import Offsets
+from ncvm.dialects.sinumerik.panel import Panel
 from ncvm.dialects.sinumerik.plcmem import Plc
+from ncvm.dialects.sinumerik.positions import Positions
 from ncvm.dialects.sinumerik.runtime import Channel
 from ncvm.dialects.sinumerik.spindle import Spindle
+
+#: the channel's parts a row's run-time function may belong to (``plc.read``)
+PARTS = {"": Channel, "memory": SystemMemory, "plc": Plc, "spindle": Spindle, "offsets": Offsets,
+         "positions": Positions, "cycles": Cycles, "panel": Panel}
 
 ROWS = sorted(AT_CODES.values(), key=lambda r: r.code)
 
@@ -23,7 +31,7 @@ def test_each_row_has_its_lowering_and_run_time_function(row):
     assert callable(getattr(UnitCodegen, f"lower_{row.lower}"))
     if row.run is not None:  # a function of the channel or of one of its parts (``plc.read``)
         part, _, name = row.run.rpartition(".")
-        assert callable(getattr({"": Channel, "memory": SystemMemory, "plc": Plc, "spindle": Spindle}[part], name))
+        assert callable(getattr(PARTS[part], name))
     # the channel's entry points dispatch by the row: every code they receive has a run-time function
     if row.lower in ("read", "write", "write_rotation", "nc_refs", "stop_dec", "io", "io_out", "io_in"):
         assert row.run is not None

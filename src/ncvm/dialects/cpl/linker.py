@@ -17,6 +17,7 @@ from ...machine.model import Machine
 from ...source import read_text
 from . import ast as A
 from .errors import diag
+from .options import options
 from .parser import parse_program
 
 MAX_CASE_NESTING = 10
@@ -54,7 +55,7 @@ def call_table(machine: Machine) -> dict:
     """[cpl] calls: address -> program, with the modal flag (e.g. G81 = {program = "CYC81", modal = true}),
     over the drilling cycles every control has (an entry of the machine file replaces one of them)."""
     out = dict(DRILLING_CYCLES)
-    for key, val in (machine.sections.get("cpl", {}).get("calls", {}) or {}).items():
+    for key, val in options(machine).calls.items():
         if isinstance(val, str):
             out[key.upper()] = (val, False)
         else:

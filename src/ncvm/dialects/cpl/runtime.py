@@ -42,6 +42,7 @@ from .io.context import CplIO
 from .io.errors import CplRuntimeError
 from .io.values import CplText, Double
 from .linker import SUB_EXTENSIONS, LinkResult, call_table
+from .options import options
 from .perm import DeclError, Permanents
 from .system import SYSTEM_PROCS
 from .system import setup as system_setup
@@ -94,8 +95,7 @@ class CplRuntime:
         # G41/G42 take the radius from the D numbers / TC selection (manual's G41/G42): not read yet, refused
         self.kernel.cutter_radius = cutter.refusal("the tool radius of the CPL control's D number / TC selection")
         self.linked = linked
-        cfg = self.machine.sections.get("cpl", {}) or {}
-        self.lookahead = int(cfg.get("lookahead", 0))
+        self.lookahead = options(self.machine).lookahead
         self.block_skip = bool(self.machine.setting_data.get("block_skip", True))
         self.io = CplIO.for_session(session, typ2=linked.main.prog.typ2)
         self.io.files.clock = ProgramClock(self)  # files the program writes are dated at its time

@@ -22,6 +22,7 @@ from ..base import Dialect
 from .codegen import UnitCodegen, axis_diagnostics
 from .lint import stop_dec_lint
 from .ncdata import NAMESPACE, NcData
+from .options import options
 from .reader import PartProgram, read_program
 from .runtime import NAMESPACE_GLOBALS, Channel
 from .v24 import PROGRAM_SUFFIXES
@@ -107,9 +108,9 @@ class Sin800Dialect(Dialect):
         """Run a main program or @ code object text (``%SPF<n>`` / ``%MPF<n>``, digest §5.3)."""
         machine = session.machine
         debug = session.steps.hook is not None
-        sec = machine.sections.get("sin800", {})
-        ahead = int(sec.get("decode_ahead", 0)) > 0
-        strict = bool(sec.get("strict_nc", False))
+        sec = options(machine)
+        ahead = sec.decode_ahead > 0
+        strict = sec.strict_nc
         unit = compile_unit(path, text, machine.axis_names, "main", debug, ahead, strict)
         data = NcData.from_machine(machine)
         store = session.store
@@ -144,8 +145,8 @@ class Sin800Dialect(Dialect):
                 store.put(NAMESPACE, key, value)
         session.variables = {f"R{n}": R[n] for n in range(1000)
                              if R[n] != 0.0 or R[n] != initial[n] or n in written}
-        if channel.v24:
-            session.variables["V24"] = list(channel.v24)
+        if channel.panel.v24:
+            session.variables["V24"] = list(channel.panel.v24)
 
 
 DIALECT = Sin800Dialect()

@@ -616,9 +616,9 @@ class _Record:
         tmp = self.capture(out, ops[-1])
         if code in ("440", "448"):
             axis = cg.val(ops[0])
-            key = f"_rt.axis_name({axis}, {line})"
+            key = f"_rt.positions.axis_name({axis}, {line})"
             if code == "448":
-                key = f"_rt.centre_name({axis}, {line})"
+                key = f"_rt.positions.centre_name({axis}, {line})"
             self.words.append((key, tmp, False))
         elif code == "442":
             self.words.append((f"_rt.spindle.word({cg.val(ops[0])}, {line})", tmp, False))
@@ -634,7 +634,7 @@ class _Record:
         line = self.blk.line
         pairs = ", ".join(f"{k}: {v}" for k, v, _c in words)
         out.emit("@SYNC_OUT", line)
-        out.emit(f"_rt.int_sec({self.int_sec[0]}, {self.int_sec[1]}, {tuple(g)!r}, {{{pairs}}}, {line})", line)
+        out.emit(f"_rt.cycles.int_sec({self.int_sec[0]}, {self.int_sec[1]}, {tuple(g)!r}, {{{pairs}}}, {line})", line)
         out.emit("@SYNC_IN", line)
 
     def settle_int_sec(self, out: PySource) -> None:
@@ -664,14 +664,14 @@ class _Record:
             passes = [w for w in self.words if w[0] == "'P'"]
             self.passes = f"_int({passes[-1][1]})" if passes else "1"
         if self.g16:
-            out.emit(f"_rt.g16({self.g16!r}, {line})", line)
+            out.emit(f"_rt.positions.g16({self.g16!r}, {line})", line)
         if any(x in (58, 59) for x in self.g):
             group = 1 if 58 in self.g else 2
             pairs = ", ".join(f"({k}, {v})" for k, v, _c in words)
-            out.emit(f"_rt.programmable_zo({group}, [{pairs}], {line})", line)
+            out.emit(f"_rt.offsets.programmable_zo({group}, [{pairs}], {line})", line)
             words = []
         if self.d is not None:
-            out.emit(f"_rt.select_d({self.d}, {line})", line)
+            out.emit(f"_rt.offsets.select_d({self.d}, {line})", line)
         if self.int_sec is not None:
             self._emit_int_sec(out, g, words)
             words = []
@@ -680,7 +680,7 @@ class _Record:
             out.emit("@SYNC_OUT", line)
             if self.angle:
                 out.emit("_rt.use_angle()", line)
-            out.emit(f"_wm = _rt.meas({self.meas[0]}, {self.meas[1]}, {tuple(g)!r}, {{{pairs}}}, {line})", line)
+            out.emit(f"_wm = _meas_m(_rt, {self.meas[0]}, {self.meas[1]}, {tuple(g)!r}, {{{pairs}}}, {line})", line)
             out.emit("@SYNC_IN", line)
             srcname = cg.const(src, "_S")
             out.emit(f"_ex(_Block({tuple(g)!r}, {tuple(m)!r}, _wm, {self.blk.n!r}, {self.msg!r}, {srcname}))", line)
@@ -691,9 +691,9 @@ class _Record:
             srcname = cg.const(src, "_S")
             if self.angle:
                 out.emit("_rt.use_angle()", line)
-            out.emit(f"_wm = _rt.inta({ax}, {byte}, {bit}, {tuple(g)!r}, {{{pairs}}}, {line})", line)
+            out.emit(f"_wm = _rt.rel_inta.inta({ax}, {byte}, {bit}, {tuple(g)!r}, {{{pairs}}}, {line})", line)
             out.emit(f"_rt.execute_now(_Block({tuple(g)!r}, {tuple(m)!r}, _wm, {self.blk.n!r}, {self.msg!r}, "
-                     f"{srcname})); _rt.inta_done()", line)
+                     f"{srcname})); _rt.rel_inta.inta_done()", line)
             if any(x in (0, 1, 2, 30) for x in m):
                 out.emit("if (_K.ended or _K.stopped_at) and _rt.halt(): return 1", line)
             g, m, words = [], [], []
@@ -733,7 +733,7 @@ class _Record:
         if any(x in (40, 41, 42) for x in self.g):  # compensation on or off: the straight-move path changes
             out.emit("_rt.route(); _ex = _rt.execute; _lin = _rt.linear", line)
         if self.rel is not None:
-            out.emit(f"_rt.read_in_inhibit({self.rel[0]}, {self.rel[1]}, {line})", line)
+            out.emit(f"_rt.rel_inta.read_in_inhibit({self.rel[0]}, {self.rel[1]}, {line})", line)
         if self.call is not None:
             out.emit("_ctr.steps += _st; _st = 0", line)
             out.emit("@SYNC_OUT", line)

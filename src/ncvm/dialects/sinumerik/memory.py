@@ -8,6 +8,9 @@ range of manual ch.10; a value outside a range, or another channel's data, is th
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
+from ...diagnostics import RuntimeFault
 from .errors import Cl800Error
 from .ncdata import CHANNEL_ARG, MD_SD, SD, NcData, int_to_pattern, pattern_to_int
 from .ncdata import in_range as _rng
@@ -21,8 +24,10 @@ DRIVE_CONTROL = {"34b": ("PCDA", "axis", 1), "44b": ("PCDA", "axis", 1), "34c": 
 class SystemMemory:
     """The NC data of one channel as its @ code reads and writes see them."""
 
-    def __init__(self, data: NcData):
+    def __init__(self, data: NcData, say: Callable[[str], None], cycle_alarm_stop: bool):
         self.data = data
+        self.say = say  # a message in the run's output
+        self.cycle_alarm_stop = cycle_alarm_stop  # ALNZ 4000-4299 stop the program ([sin800])
 
     def md_read(self, code: str, args: tuple):
         """MDN ... MDDBI (@300-@30b): machine data; the last digit of the code names the area."""
@@ -53,6 +58,17 @@ class SystemMemory:
     def alnpz(self, code: str, args: tuple) -> float:
         """ALNPZ (@3d0): the number of pending alarms."""
         return float(len(self.data.alarms))
+
+    def alnz(self, code: str, where: tuple, value: float) -> None:
+        """ALNZ (@4c0): raise a cycle alarm; 4000-4299 stop the program unless ``cycle_alarm_stop`` is off."""
+        n = _i(value)
+        top5 = 5299 if self.data.control == "880" else 5099
+        if not (4000 <= n <= 4299 or 5000 <= n <= top5):
+            raise Cl800Error(f"cycle alarm {n} outside 4000-4299, 5000-{top5}")
+        self.data.alarms.append((n, self.data.channel))
+        self.say(f"cycle alarm {n}")
+        if n <= 4299 and self.cycle_alarm_stop:
+            raise RuntimeFault(str(n), f"cycle alarm {n} (ALNZ)")
 
     def _data_area(self, area: str, width: str, rng: tuple) -> tuple:
         """The address range of an MD/SD area on this control; the CL 800 error where the control has no

@@ -12,14 +12,11 @@ from typing import Any
 
 from ...diagnostics import UsageError
 from .errors import Cl800Error
+from .options import Options, options
 
 NAMESPACE = "sin800"
 #: data areas kept by address (word or byte address -> number)
 AREAS = ("nc_md", "cycle_md", "plc_md", "drive_md", "nc_sd", "cycle_sd")
-KNOWN_KEYS = {"control", "channel", "m0", "block_skip", "max_call_depth", "r", "mib", "tool_offsets",
-              "zero_offsets", "rotation", "inputs", "plc", "alarms", "sob", "cycle_alarm_stop", "to_area",
-              "m_functions", "decode_ahead", "strict_nc", "gear", "gears", "v24_input",
-              *AREAS}
 PERSISTED = (*AREAS, "to", "zo", "rot", "mib", "central_r")
 #: the MD (@30x/@40x) and SD (@31x/@41x) areas by the last digit of the code: (area, width, (lo, hi)
 #: address range); width: word, byte, bit (L6500-6522, L6624-6646)
@@ -123,25 +120,20 @@ class NcData:
     @classmethod
     def from_machine(cls, machine) -> "NcData":
         data = cls(len(machine.axes))
-        sec = machine.sections.get("sin800", {})
+        sec = options(machine)
         where = f"{machine.source}: [sin800]"
-        for key in sec:
-            if key not in KNOWN_KEYS:
-                raise UsageError(f"{where}: unknown key 'sin800.{key}' (known: {', '.join(sorted(KNOWN_KEYS))})")
-        data.control = str(sec.get("control", "880"))
-        if data.control not in ("810", "820", "850", "880"):
-            raise UsageError(f"{where}: key 'sin800.control' must be \"810\", \"820\", \"850\" or \"880\"")
-        data.channel = int(sec.get("channel", 1))
-        data.to_area = int(sec.get("to_area", 0))
+        data.control = sec.control
+        data.channel = sec.channel
+        data.to_area = sec.to_area
         for area in AREAS:
-            for addr, v in sec.get(area, {}).items():
+            for addr, v in sec.area(area).items():
                 data.areas[area][str(addr)] = _pattern_value(where, f"sin800.{area}.{addr}", v)
-        for i, t in enumerate(sec.get("tool_offsets", [])):
+        for i, t in enumerate(sec.tool_offsets):
             if "d" not in t or "p" not in t:
                 raise UsageError(f"{where}: key 'sin800.tool_offsets[{i}]' needs 'd' and 'p' (P0..P15)")
             p = [float(x) for x in t["p"]] + [0.0] * 16
             data.to[f"{int(t.get('area', 0))}:{int(t['d'])}"] = p[:16]
-        for name, v in sec.get("zero_offsets", {}).items():
+        for name, v in sec.zero_offsets.items():
             if isinstance(v, dict):
                 for part in ("coarse", "fine"):
                     if part in v:
@@ -149,38 +141,32 @@ class NcData:
                                                                          v[part])
             else:
                 data.zo[name.upper()] = data._vector(where, f"zero_offsets.{name}", v)
-        for kind, angles in sec.get("rotation", {}).items():
+        for kind, angles in sec.rotation.items():
             for g, a in enumerate(angles, 1):
                 data.rot[f"{kind}:{g}"] = float(a)
-        for addr, v in sec.get("mib", {}).items():
+        for addr, v in sec.mib.items():
             data.mib[int(addr)] = float(v)
-        for byte, v in sec.get("inputs", {}).items():
+        for byte, v in sec.inputs.items():
             data.inputs[int(byte)] = pattern_to_int(_pattern_value(where, f"sin800.inputs.{byte}", v))
-        for plc_no, areas in sec.get("plc", {}).items():
+        for plc_no, areas in sec.plc.items():
             data.plc[int(plc_no)] = {k.upper(): dict(v) for k, v in areas.items()}
-        for a in sec.get("alarms", []):
+        for a in sec.alarms:
             data.alarms.append((int(a), data.channel))
-        data.sob = {str(k): float(v) for k, v in sec.get("sob", {}).items()}
+        data.sob = {str(k): float(v) for k, v in sec.sob.items()}
         data._check_ranges(where, sec)
         data._load_gears(where, sec)
-        if not isinstance(sec.get("v24_input", ""), str):
-            raise UsageError(f"{where}: key 'sin800.v24_input' must be text (lines such as \"R10=4.5\")")
-        data.v24_input = sec.get("v24_input", "")
-        for name, v in sec.get("r", {}).items():
+        data.v24_input = sec.v24_input
+        for name, v in sec.r.items():
             n = int(str(name).upper().lstrip("R"))
             if n >= 900:
                 data.central_r[str(n)] = float(v)
         return data
 
-    def _load_gears(self, where: str, sec: dict) -> None:
-        gears = sec.get("gears", [])
-        if not isinstance(gears, list) or len(gears) > 5 or not all(
-                isinstance(g, (int, float)) and not isinstance(g, bool) and g > 0 for g in gears):
-            raise UsageError(f"{where}: key 'sin800.gears' must list the maximum speed (> 0) of gear stages 1-5")
-        self.gears = [float(g) for g in gears]
-        gear = sec.get("gear", 1)
+    def _load_gears(self, where: str, sec: Options) -> None:
+        self.gears = [float(g) for g in sec.gears]
+        gear = sec.gear
         top = len(self.gears) or 5
-        if not isinstance(gear, int) or isinstance(gear, bool) or not 1 <= gear <= top:
+        if not 1 <= gear <= top:
             raise UsageError(f"{where}: key 'sin800.gear' must be a gear stage 1-{top}")
         self.gear = gear
 
@@ -209,11 +195,11 @@ class NcData:
                 out[key] = getattr(self, key)
         return out
 
-    def _check_ranges(self, where: str, sec: dict) -> None:
+    def _check_ranges(self, where: str, sec: Options) -> None:
         """What the control has no room for, or cannot read as a byte, is refused at the start: a program
         would meet it only as a CL 800 error at the line that reads it (or not at all)."""
         c = self.control
-        beyond = [a for a in sec.get("mib", {}) if int(a) > MIB_TOP[c]]
+        beyond = [a for a in sec.mib if int(a) > MIB_TOP[c]]
         if beyond:
             raise UsageError(f"{where}: key 'sin800.mib.{beyond[0]}': the {c} has MIB 0-{MIB_TOP[c]}")
         ranges = [*MD_SD.values(), *SD.values()]

@@ -36,6 +36,11 @@ def angle_address(channel) -> str:
     return name
 
 
+def rotation_active(channel) -> bool:
+    """A settable or programmable coordinate rotation is selected (some angle is not 0)."""
+    return any(a != 0.0 for a in channel.data.rot.values())
+
+
 def block_frame(channel, block: Block) -> tuple[str, str, bool, float]:
     """(first plane axis, second plane axis, absolute?, rotation angle in degrees) for this block."""
     k = channel.kernel
@@ -44,7 +49,7 @@ def block_frame(channel, block: Block) -> tuple[str, str, bool, float]:
     if plane is not None:
         h, v = PLANES[plane][:2]
     else:
-        h, v = channel._plane_axes()
+        h, v = channel.positions.plane_axes()
     absolute = k.absolute
     if 90 in g:
         absolute = True

@@ -2,7 +2,9 @@
 
 One :class:`Channel` per run. Generated units (see codegen) receive it as
 ``_rt``; hot operations (R arithmetic, jumps, comparisons) are inline Python,
-everything that touches NC data goes through the methods here.
+everything that touches NC data goes through the channel: its entry points
+``read``/``write``/``nc_function``/``io`` call the run-time function the @ code's
+row names (``row.run``), a method of one of the channel's parts.
 """
 
 from __future__ import annotations
@@ -10,6 +12,7 @@ from __future__ import annotations
 import math
 import re
 import sys
+from operator import attrgetter
 
 from ...diagnostics import Frame, RuntimeFault, Span, UsageError
 from ...machine.scenario import (
@@ -29,15 +32,22 @@ from ...nc.kernel import INCH
 from ...nc.spindle import SINUMERIK_GEARS, Gearbox
 from ...runtime.buffer import BlockBuffer
 from ...runtime.locate import fault_line
+from .atcodes import AT_CODES
+from .cycles import Cycles
 from .errors import Cl800Error
+from .meas import meas_m
 from .memory import SystemMemory
 from .ncdata import MIB_TOP, NcData, int_to_pattern, nc8, pattern_to_int
+from .offsets import Offsets
+from .options import options
+from .panel import Panel
 from .plc import PlcClock
 from .plcmem import Plc
+from .positions import Positions
 from .probe import Probe
-from .rotation import angle_address, rotate_for, shape_block
+from .rel_inta import RelInta
+from .rotation import angle_address, rotate_for, rotation_active, shape_block
 from .spindle import GEAR_M, Spindle
-from .sysmem import SysMem
 
 DEG = math.pi / 180.0
 _PLC_SOURCE = re.compile(r"^(?:PLC(\d)\.)?DB(\d+)\.DW(\d+)$")
@@ -82,8 +92,11 @@ def _int(value: float) -> int:
 NAMESPACE_GLOBALS = {
     "_Block": Block, "_int": _int, "_ptr": _ptr, "_hypot": math.hypot, "_sin": math.sin,
     "_cos": math.cos, "_trunc": math.trunc, "_DEG": DEG,
-    "_nc8": nc8, "_finite": _finite,
+    "_nc8": nc8, "_finite": _finite, "_meas_m": meas_m,
 }
+
+#: @ code -> the run-time function its row names, on the channel or one of its parts (``plc.read``)
+_RUN = {code: attrgetter(row.run) for code, row in AT_CODES.items() if row.run}
 
 
 #: the scenario events the SINUMERIK channel reads
@@ -100,31 +113,31 @@ class PlcAnswers(CanonSink):
         self.answer(code)
 
 
-class Channel(SysMem):
-    """One NC channel running a main program and its sub-programs."""
+class Channel:
+    """One NC channel running a main program and its sub-programs; its parts hold the NC data and the @ code
+    functions (docs/architecture.md, SINUMERIK)."""
 
     def __init__(self, session, data: NcData, loader):
         self.session = session
         self.kernel = session.kernel
         self.execute = session.kernel.execute
-        self.kernel.cutter_radius = self.cutter_radius  # G41/G42: the radius of the TO area's offset D
         self.counter = session.steps
         self.data = data
-        self.memory = SystemMemory(data)
         self.loader = loader  # number -> compiled unit (or None)
-        sec = session.machine.sections.get("sin800", {})
-        self.block_skip = bool(sec.get("block_skip", session.machine.setting_data.get("block_skip", True)))
-        self.m0_stops = str(sec.get("m0", "stop")) == "stop"
-        self.max_depth = int(sec.get("max_call_depth", 8))
-        self.cycle_alarm_stop = bool(sec.get("cycle_alarm_stop", True))
+        sec = options(session.machine)
+        skip = sec.block_skip
+        self.block_skip = bool(session.machine.setting_data.get("block_skip", True) if skip is None else skip)
+        self.m0_stops = sec.m0 == "stop"
+        self.max_depth = sec.max_call_depth
+        self.memory = SystemMemory(data, session.say, sec.cycle_alarm_stop)
         # decode-ahead (digest §10.5): 0 = lockstep; N = up to N decoded blocks wait for execution
-        self.decode_ahead = int(sec.get("decode_ahead", 0))
-        self.strict = bool(sec.get("strict_nc", False))  # R stores rounded to 8 digits (digest §10.4)
+        self.decode_ahead = sec.decode_ahead
+        self.strict = sec.strict_nc  # R stores rounded to 8 digits (digest §10.4)
         self.buffer = BlockBuffer(self.decode_ahead, self.execute)  # route() keeps its step on the current path
         self.pending_r: dict[int, float] = {}  # PLC answers and measured values not yet seen by decoding
         self.R = [0.0] * 1000
         self.written: set[int] = set()
-        for name, v in sec.get("r", {}).items():
+        for name, v in sec.r.items():
             self.R[int(str(name).upper().lstrip("R"))] = float(v)
         for k, v in data.central_r.items():
             self.R[int(k)] = float(v)
@@ -132,24 +145,27 @@ class Channel(SysMem):
             self._strict_power_on(session.machine.source)
         self.push_stack: list[tuple[tuple[int, ...], list[float]]] = []
         self.frames: list[Frame] = []
+        self._paths: list[str] = []  # the file of each running unit, as ``frames``
         self.halted = False
         self.ess_enabled = False
-        self.panel: list[str] = []  # menus called by WRT PIC, for RECALL PIC
-        self.v24: list[str] = []
-        self.tool_d = 0
-        SysMem.__init__(self)
+        self.positions = Positions(self)
+        self.offsets = Offsets(self)
+        self.kernel.cutter_radius = self.offsets.cutter_radius  # G41/G42: the radius of the TO area's offset D
+        self.cycles = Cycles(self)
+        self.rel_inta = RelInta(self)
+        self.panel = Panel(self)
         self.angle_used = False  # a block carried the angle address (PANG, @447)
         #: (first plane axis, second plane axis, degrees) of the rotation set as the kernel's transform, or None
         self.rotation_key: tuple | None = None
         self.route()
         refuse(session.machine.scenario, SINUMERIK_EVENTS, "SINUMERIK control")
-        self._scenario = EventQueue(session.machine.scenario)
-        self.probe = Probe(self._scenario, self.advance_scenario)
+        self.scenario = EventQueue(session.machine.scenario)  # the scenario events still to come
+        self.probe = Probe(self.scenario, self.advance_scenario)
         self.plc_clock = PlcClock(f"{session.machine.source}: [sin800]", data.plc)
         self.plc = Plc(data, self.plc_clock, session.machine.clock, self.advance_scenario)
         for ev in of_type(session.machine.scenario, PlcTimer, PlcCounter):
             self.plc_clock.parse_event(ev)  # faults in the scenario before the run
-        self.m_functions = {f"M{int(k)}": dict(v) for k, v in sec.get("m_functions", {}).items()}
+        self.m_functions = {f"M{int(k)}": dict(v) for k, v in sec.m_functions.items()}
         gearbox = Gearbox(self.kernel, SINUMERIK_GEARS, data.gear, data.gears, Cl800Error, "[sin800] gears")
         self.spindle = Spindle(self.kernel, data, self.buffer, gearbox)
         # G96 takes the radius from X; axis 1 may be programmed as a diameter (as for PREP CYC)
@@ -157,7 +173,7 @@ class Channel(SysMem):
         session.canon.add(PlcAnswers(self.answer_m))
         if data.inch_basic_system():  # G70 is the power-on state (MDNBI(5002,4), L2324-2326)
             self.kernel.scale = INCH
-        self.apply_offsets()
+        self.offsets.apply()
 
     def answer_m(self, code: str) -> None:
         """M functions the PLC answers: gear stages (M40-M45), R parameters it loads (m_functions),
@@ -185,7 +201,7 @@ class Channel(SysMem):
         through the decode buffer when decoding runs ahead. Generated code re-reads ``execute`` and
         ``linear`` after rotation writes and calls."""
         k = self.kernel
-        shaped = self.angle_used or self.rotation_active()
+        shaped = self.angle_used or rotation_active(self)
         if not shaped and self.rotation_key is not None:  # every angle is 0 again
             k.set_transform(None)
             self.rotation_key = None
@@ -239,6 +255,15 @@ class Channel(SysMem):
             R[n] = v
         self.pending_r.clear()
 
+    def stop_dec_now(self, args: tuple) -> None:
+        """STOP DEC (@714)."""
+        self.stop_dec()  # lockstep (decode_ahead = 0): the buffer is always empty
+
+    def stop_dec1(self, args: tuple) -> None:
+        """STOP DEC1 (@715) waits only while a coordinate rotation is selected (L4330-4334)."""
+        if rotation_active(self):
+            self.stop_dec()
+
     def load_r(self, n: int, value: float) -> None:
         """An R parameter written by execution (PLC answer, measured value), not by decoding."""
         if self.strict:
@@ -247,6 +272,40 @@ class Channel(SysMem):
             self.pending_r[n] = value
         else:
             self.R[n] = value
+
+    # -- the @ codes of main groups 3, 4, 7 and a (digest §4.3-4.7) ----------
+    def read(self, code: str, target: int, args: tuple) -> None:
+        """A read: the value goes to R<target> (and on, for multi-register results)."""
+        value = _RUN[code](self)(code, args)
+        R = self.R
+        fix = nc8 if self.strict else float
+        if isinstance(value, list):
+            if target + len(value) > 1000:
+                raise Cl800Error(f"result registers R{target}..R{target + len(value) - 1} do not exist")
+            for i, v in enumerate(value):
+                R[target + i] = fix(v)
+        else:
+            R[target] = fix(value)
+
+    def store(self, first: int, values: list[float]) -> None:
+        """Results of an NC function into R<first>... (8 significant digits under strict_nc)."""
+        fix = nc8 if self.strict else float
+        self.R[first:first + len(values)] = [fix(v) for v in values]
+
+    def write(self, code: str, args: tuple) -> None:
+        """A write, the value last."""
+        if AT_CODES[code].lower != "write_rotation":
+            # data written by decoding serves the blocks decoded after it; rotation angles act at once,
+            # even on blocks already decoded (L4325-4334)
+            self.run_buffer()
+        *where, value = args
+        _RUN[code](self)(code, tuple(where), value)
+
+    def nc_function(self, code: str, args: tuple, line: int) -> None:
+        _RUN[code](self)(args)
+
+    def io(self, code: str, args: tuple) -> None:
+        _RUN[code](self)(code, args)
 
     # -- running units ---------------------------------------------------
     def run_unit(self, unit, frame_name: str, call_span: Span | None) -> int:
@@ -299,6 +358,10 @@ class Channel(SysMem):
 
     def _current_path(self) -> str:
         return self._paths[-1] if self._paths else ""
+
+    def src(self, line: int) -> Src:
+        """Where a canon call of the running unit comes from."""
+        return Src(self._current_path(), line)
 
     def halt(self) -> bool:
         """After M0/M1/M2/M30: True when the run stops here."""
@@ -460,7 +523,7 @@ class Channel(SysMem):
         """Scripted events and PLC timers running out, in time order, up to the current simulated time."""
         now = self.session.machine.clock.now
         expire = self.plc_clock.expire
-        for ev in self._scenario.due(now):
+        for ev in self.scenario.due(now):
             expire(ev.time)
             self._apply_event(ev)
         expire(now)
@@ -492,7 +555,7 @@ class Channel(SysMem):
         """Simulated time runs on until the scripted input reaches ``level``."""
         clock = self.session.machine.clock
         while self.ext_input(byte, bit) != level:
-            if not self._scenario:
+            if not self.scenario:
                 raise RuntimeFault("SIN007", f"{what}: input {byte}.{bit} never becomes {int(level)} "
                                              f"(no further scenario event)")
-            clock.advance(self._scenario.next_time() - clock.now)
+            clock.advance(self.scenario.next_time() - clock.now)

@@ -162,7 +162,7 @@ def _put_zo(channel, g: int, rest: str) -> None:
             raise Cl800Error(f"INP: '{word}' is not an axis value")
         coarse[channel.kernel.axis_of[axis]] = float(word[len(axis):])
         fine[channel.kernel.axis_of[axis]] = 0.0
-    channel.apply_offsets()
+    channel.offsets.apply()
 
 
 def _number(text: str) -> bool:

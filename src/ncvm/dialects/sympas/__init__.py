@@ -82,7 +82,7 @@ def compile_units(path: str, text: str, machine, warnings: list | None = None, s
     progs = Parser(toks, warn).programs()
     checkers = []
     for prog in progs:
-        chk = Checker(cfg["axis_names"], warn)
+        chk = Checker(cfg.axis_names, warn)
         chk.program(prog)
         checkers.append(chk)
     stepping = stepping or any(chk.steps_tasks for chk in checkers)
@@ -120,7 +120,7 @@ class SympasDialect(Dialect):
         try:
             cfg = sympas_config(session.machine)
             texts = [(path, text)]
-            for extra in cfg["load"]:
+            for extra in cfg.load:
                 p = session.machine.find_program(extra) or Path(path).parent / extra
                 if not p.is_file():
                     raise UsageError(f"sympas.load: program '{extra}' not found")

@@ -2,13 +2,14 @@
 
 from __future__ import annotations
 
+from .config import Options
 from .motion import Move
 
 
 class AxisState:
     """One axis channel (digest §10.3). Positions are machine coordinates in axis units."""
 
-    def __init__(self, number: int, name: str, cfg_axis, cfg: dict):
+    def __init__(self, number: int, name: str, cfg_axis, cfg: Options):
         self.number = number
         self.name = name
         self.m = 0.0  # machine position at rest (or at the start of `move`)
@@ -16,7 +17,7 @@ class AxisState:
         self.move: Move | None = None
         self.ref = 0.0  # home shift: user = machine - ref - zerooffset - ZO
         self.zerooffset = 0.0
-        self.closed = bool(cfg["loop_closed"])
+        self.closed = bool(cfg.loop_closed)
         self.homed = False
         self.flags = 0  # sticky axst flags (refused, saf, home_failed, spool_halted)
         self.digi = 0

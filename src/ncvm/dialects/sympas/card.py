@@ -11,9 +11,10 @@ from __future__ import annotations
 import math
 
 from ...diagnostics import UsageError
-from ...machine.scenario import AxisInput, CommonInteger, PositionError
+from ...machine.scenario import AxisInput, CommonInteger, EventQueue, PositionError
 from . import recording
 from .axes import AxisState
+from .config import Options
 from .motion import TICKS_PER_S, Move
 from .scheduler import Scheduler
 from .spooler import Spooler
@@ -24,43 +25,48 @@ PU_FACTOR = {0: 1.0, 1: 25.4, 2: 1000.0, 3: 360.0, 4: 1.0, 5: 180.0 / math.pi}
 
 
 class Card:
-    def __init__(self, session, cfg: dict):
+    def __init__(self, session, cfg: Options):
         self.session = session
         self.cfg = cfg
         self.canon = session.canon
         machine = session.machine
-        self.names = cfg["axis_names"]
+        self.names = cfg.axis_names
         self.axes = [AxisState(i, n, a, cfg) for i, (n, a) in enumerate(zip(self.names, machine.axes))]
         start = machine.start_position or [0.0] * len(self.axes)
         for ax, p in zip(self.axes, start):
             ax.m = ax.target = float(p)
         self.rotary = [a.rotary for a in machine.axes]
         self.sys = {"MODEREG": 0, "ERRORREG": 0, "CFLAG": 0, "GFAUX": 1.0, "IRQPC": False, "LEDGN": False,
-                    "LEDRD": False, "LEDYL": False, "NOA": len(self.axes), "BOARDTYPE": int(cfg["boardtype"]),
-                    "OSVERSION": int(cfg["osversion"])}
+                    "LEDRD": False, "LEDYL": False, "NOA": len(self.axes), "BOARDTYPE": int(cfg.boardtype),
+                    "OSVERSION": int(cfg.osversion)}
         self.ci = [0] * 1000
         self.cd = [0.0] * 1000
-        self.zo = {int(k): [float(x) for x in v] for k, v in cfg["zero_offsets"].items()}
+        self.zo = {int(k): [float(x) for x in v] for k, v in cfg.zero_offsets.items()}
         self.active_zo = 0
-        self.spooler = Spooler(self.axes, int(cfg["spool_capacity"]))
+        self.spooler = Spooler(self.axes, int(cfg.spool_capacity))
         self.scheduler = Scheduler(self, cfg, session.steps)
-        self.inputs = list(cfg["inputs"])
+        self.inputs = list(cfg.inputs)
         for i, inp in enumerate(self.inputs):
             if inp.get("axis") not in self.names:
                 raise UsageError(f"{machine.source}: key 'sympas.inputs[{i}].axis' names no axis of the card")
-        for name in cfg["ref_positions"]:  # a REF switch of no axis would be ignored unseen
+        for name in cfg.ref_positions:  # a REF switch of no axis would be ignored unseen
             if name not in self.names:
                 raise UsageError(f"{machine.source}: key 'sympas.ref_positions.{name}' names no axis of the card "
                                  f"(axes: {', '.join(self.names)})")
         for ev in machine.scenario:
-            self.scheduler.add_timed(ev.time * TICKS_PER_S, self._scenario_action(ev))
+            self._scenario_action(ev)  # an event the card cannot use is refused before the run
+        self.scheduler.set_events(EventQueue(machine.scenario), self.apply_event)
         self.irq_count = 0
         self.live: set = set()  # moves that have not retired yet
-        self.counts = float(cfg["counts_per_unit"])
-        self.refused_mask = 1 << cfg["axst_bits"]["refused"]
+        self.counts = float(cfg.counts_per_unit)
+        self.refused_mask = 1 << cfg.axst_bits["refused"]
         self.recordings: dict = {}  # axis number -> LPR/LPRS Recording (recording.py)
 
     # -- scenario events ------------------------------------------------------------------------------
+    def apply_event(self, ev) -> None:
+        """A scenario event whose time has come."""
+        self._scenario_action(ev)()
+
     def _scenario_action(self, ev):
         """The card's action for a scenario event (machine/scenario.py): an axis' digital input, its
         following error or a common integer; any other event is refused before the run."""
@@ -186,7 +192,7 @@ class Card:
         pu = int(tk.sysp["PU"])
         tu = int(tk.sysp["TU"])
         if pu in (6, 7):
-            f = 1.0 / float(self.cfg["counts_per_unit"])
+            f = 1.0 / float(self.cfg.counts_per_unit)
         elif pu in PU_FACTOR:
             f = PU_FACTOR[pu]
         else:
@@ -213,7 +219,7 @@ class Card:
         return min(1.0, max(0.0, max(float(self.axes[ax].q["jerkrel"]) for ax in axes)))
 
     def round_counts(self, x: float) -> float:
-        c = float(self.cfg["counts_per_unit"])
+        c = float(self.cfg.counts_per_unit)
         counts = x * c
         if not -MAX_COUNTS <= counts <= MAX_COUNTS:
             beyond_counts(x)
@@ -229,7 +235,7 @@ class Card:
         plan = ovr if ovr > 0.0 else 1.0  # under a feed hold the move is planned at 100 % and held
         v = tk.sysp["TRVL"] * f / ts * plan
         acc = tk.sysp["TRAC"] * f / (ts * ts)
-        bit = 1 << self.cfg["axst_bits"]["refused"]
+        bit = 1 << self.cfg.axst_bits["refused"]
         if length <= 0 or v <= 0 or acc <= 0:
             for ax in mv.axes:
                 self.axes[ax].flags |= bit
@@ -260,8 +266,8 @@ class Card:
         for ax in axes:
             a = self.axes[ax]
             if self.busy(a, t) and ax not in moving:
-                if self.cfg["busy_move"] == "refuse":
-                    a.flags |= 1 << self.cfg["axst_bits"]["refused"]
+                if self.cfg.busy_move == "refuse":
+                    a.flags |= 1 << self.cfg.axst_bits["refused"]
                     return None
                 self.retire_axis(a, t)
         return self.all_positions(t)

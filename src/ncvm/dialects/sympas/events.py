@@ -31,7 +31,7 @@ def event_active(card, name: str, t: float) -> bool:
                     return True
         return False
     if name == "EVLSS":
-        if card.cfg["soft_limit_reaction"] not in ("TOM", "SMA"):
+        if card.cfg.soft_limit_reaction not in ("TOM", "SMA"):
             return False
         for ax in card.axes:
             p = card.mpos(ax, t)
@@ -46,5 +46,5 @@ def event_active(card, name: str, t: float) -> bool:
 def events_follow_motion(card, tk) -> bool:
     """Whether an event ``tk`` has enabled can change while the axes move: EVLSS (an axis crossing its
     soft limit) when the soft-limit reaction raises it. The input events change with timed actions only."""
-    return ("EVLSS" in tk.enabled and card.cfg["soft_limit_reaction"] in ("TOM", "SMA")
+    return ("EVLSS" in tk.enabled and card.cfg.soft_limit_reaction in ("TOM", "SMA")
             and any(a.move is not None for a in card.axes))

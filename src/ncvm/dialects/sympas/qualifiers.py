@@ -15,7 +15,7 @@ from .values import fault
 
 def axst(card, a: AxisState, t: float) -> int:
     """The status word of axis ``a`` at ``t``: its sticky flags, motion, loop, homing, inputs and limits."""
-    b = card.cfg["axst_bits"]
+    b = card.cfg.axst_bits
     v = a.flags
     if (not card.busy(a, t) or a.move.drift) and not a.spool:
         v |= 1 << b["profile_end"]

@@ -1,7 +1,9 @@
 """The scheduler of the card's 4 CNC tasks on one deterministic 64 us clock (digest §10.1).
 
-The task with the smallest local time runs until it waits or passes the others by a slice; timed actions
-(scenario events, SSF entries, homing latches, recording samples) are applied in time order.
+The task with the smallest local time runs until it waits or passes the others by a slice; the scenario
+events (machine/scenario.py's ``EventQueue``, times in s) and the card's timed actions (SSF entries, homing
+latches, recording samples, drift: a heap in ticks) are applied in one time order, an event before an
+action of the same tick.
 """
 
 from __future__ import annotations
@@ -10,17 +12,20 @@ import heapq
 import math
 
 from ...diagnostics import Frame, RuntimeFault, Span
+from ...machine.scenario import EventQueue
 from ...runtime.locate import generated_frames
+from .config import Options
+from .motion import TICKS_PER_S
 from .task import ENDED, ERROR, RUNNING, Task, TaskEnd
 
 
 class Scheduler:
-    def __init__(self, card, cfg: dict, counter):
+    def __init__(self, card, cfg: Options, counter):
         self.counter = counter  # the run's StepCounter: the step limit and the statements counted before
-        self.q = int(cfg["statements_per_tick"])
-        self.servo = float(cfg["servo_ticks"])
-        self.slice = float(cfg["task_slice_ticks"])
-        self.clock0 = int(cfg["clock_start"]) & 0xFFFFFFFF
+        self.q = int(cfg.statements_per_tick)
+        self.servo = float(cfg.servo_ticks)
+        self.slice = float(cfg.task_slice_ticks)
+        self.clock0 = int(cfg.clock_start) & 0xFFFFFFFF
         self.tasks = [Task(card, self, n) for n in range(4)]
         self.steps = 0
         self.acts = 0  # counts the moments a task may have changed the card (see quiet_until)
@@ -28,6 +33,9 @@ class Scheduler:
         self.step_limit = counter.limit - counter.steps
         self.timed: list = []  # heap of (tick, seq, fn)
         self._seq = 0
+        self.events = EventQueue()  # the scenario events still to come (Card sets them)
+        self.event_act = None  # the card's function that applies a scenario event
+        self._event_tick = math.inf  # the tick of the next scenario event
         self.fault: RuntimeFault | None = None  # the first run-time error of a task (reported at the end)
         self.solo = None  # the only running task, when there is just one
 
@@ -40,13 +48,37 @@ class Scheduler:
                 tk.check_at = tick
                 tk.set_budget()
 
+    def set_events(self, events: EventQueue, act) -> None:
+        """The scenario events, applied by ``act(event)`` when their time comes."""
+        self.events, self.event_act = events, act
+        self._event_tick = self._tick_of_next_event()
+
+    def _tick_of_next_event(self) -> float:
+        t = self.events.next_time()
+        return math.inf if t is None else t * TICKS_PER_S
+
     def next_timed(self) -> float:
-        return self.timed[0][0] if self.timed else math.inf
+        """The tick of the next scenario event or timed action."""
+        t = self.timed[0][0] if self.timed else math.inf
+        return t if t < self._event_tick else self._event_tick
 
     def apply_timed(self, upto: float) -> None:
-        while self.timed and self.timed[0][0] <= upto:
-            _, _, fn = heapq.heappop(self.timed)
-            fn()
+        """Carry out the scenario events and timed actions up to tick ``upto``, in time order."""
+        timed = self.timed
+        while True:
+            t = timed[0][0] if timed else math.inf
+            e = self._event_tick
+            if e <= t:  # an event first (none left: both are inf)
+                if e > upto or e == math.inf:
+                    return
+                ev = self.events.pop()
+                self._event_tick = self._tick_of_next_event()
+                self.event_act(ev)
+            elif t <= upto:
+                _, _, fn = heapq.heappop(timed)
+                fn()
+            else:
+                return
             self.timed_done += 1
 
     # -- waiting tasks ----------------------------------------------------------------------------------

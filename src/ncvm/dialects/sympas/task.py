@@ -52,14 +52,14 @@ class Task:
         self.waits_mark = 0  # sched.acts when waits_for was worked out (valid while no task has acted since)
         self.polls = False  # whether it looks for events while it sleeps
         self.polled = -1  # sched.timed_done when it last looked for events
-        self.max_depth = int(card.cfg["max_call_depth"])
+        self.max_depth = int(card.cfg.max_call_depth)
         self.reset_state()
 
     def reset_state(self) -> None:
         cfg = self.card.cfg
         self.sysp = {n: 0.0 for n in TASK_SYS}
-        self.sysp.update(TRVL=float(cfg["trvl"]), TRAC=float(cfg["trac"]), TRTVL=float(cfg["trtvl"]),
-                         TROVR=float(cfg["trovr"]), PU=int(cfg["pu"]), TU=int(cfg["tu"]), NFRAX=0, SSFP=0,
+        self.sysp.update(TRVL=float(cfg.trvl), TRAC=float(cfg.trac), TRTVL=float(cfg.trtvl),
+                         TROVR=float(cfg.trovr), PU=int(cfg.pu), TU=int(cfg.tu), NFRAX=0, SSFP=0,
                          PN3=1.0)
         self.cb = bytearray(1000)
         self.line = ""
@@ -114,7 +114,7 @@ class Task:
         """Run the highest-priority enabled event whose condition holds (§6.4, L1598-1610)."""
         card = self.card
         self.polled = self.sched.timed_done
-        edge = card.cfg["event_trigger"] == "edge"
+        edge = card.cfg.event_trigger == "edge"
         for name in EVENTS:
             fn = self.enabled.get(name)
             if fn is None:

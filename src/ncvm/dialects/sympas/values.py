@@ -148,7 +148,7 @@ def namespace(card) -> dict:
         return wrap32(x)
 
     ns = {"_ovf": ovf, "_idiv": idiv, "_imod": imod, "_rdiv": rdiv, "_f32": f32, "_t2i": t2i, "_toint": toint,
-          "_msqrt": math.sqrt, "_msin": math.sin, "_mcos": math.cos, "_NAN": math.nan, "_fmt": fmt, "_DIGITS": int(card.cfg["write_digits"]), "_fault": fault, "_axis_values": axis_values, "_Goto": Goto, "_GOTO": GOTO, "__builtins__": __builtins__}
+          "_msqrt": math.sqrt, "_msin": math.sin, "_mcos": math.cos, "_NAN": math.nan, "_fmt": fmt, "_DIGITS": int(card.cfg.write_digits), "_fault": fault, "_axis_values": axis_values, "_Goto": Goto, "_GOTO": GOTO, "__builtins__": __builtins__}
     for name, fn in MATH.items():
         ns["_F_" + name] = fn
     return ns

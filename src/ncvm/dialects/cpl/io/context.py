@@ -13,8 +13,9 @@ import sys
 from pathlib import Path
 
 from ....machine.files import FileRoot
+from ..options import options as cpl_options
 from .errors import CplWarning
-from .files import FILE_SPACE, CplFiles
+from .files import CplFiles
 from .format import OutputMode
 from .mmc import Mmc
 from .screen import KeyScript, Screen
@@ -52,7 +53,7 @@ class CplIO:
             keys = TerminalKeys(sys.stdin.fileno(), sys.stderr)
         io = cls(session.machine.file_root, clock=session.machine.clock, keys=keys, say=session.say, typ2=typ2,
                  private=(options.state_dir, *session.machine.own_files()))
-        io.files.space = int((session.machine.sections.get("cpl") or {}).get("file_space", FILE_SPACE))
+        io.files.space = cpl_options(session.machine).file_space
         if isinstance(keys, TerminalKeys):
             keys.view = io.screen.text_view
         io.mmc.attach(options.mmc_client)

@@ -14,12 +14,10 @@ from dataclasses import dataclass, field
 from ....diagnostics import UsageError
 from ....machine.scenario import EventQueue, FixedStop, ProbeSwitch, of_type
 from ....nc.probe import ProbeLatch
+from ..options import Options, options
 from .gfuncs import NcFuncs
 
 #: every key [cpl] may hold (lookahead and calls belong to the language runtime, file_space to its files)
-CPL_KEYS = {"lookahead", "file_space", "calls", "channel", "axes", "zs_unit", "zs_active", "zs_tables", "tc_unit", "tc_tables",
-            "tool_database", "macoda", "plc", "errors", "override", "language", "date_format", "areas", "spindle"}
-AXIS_KEYS = {"index", "name", "channel", "type", "probe", "position", "lag", "sercos", "jog"}
 ZS_ROWS = tuple(f"G{b + i}" for b in (54, 154, 254) for i in range(6))
 EXTERNAL = ("G160", "G260", "G360")
 TDA_FIELDS = 49
@@ -103,38 +101,20 @@ def _err(key: str, why: str):
     raise UsageError(f"[cpl] {key}: {why}")
 
 
-#: keys of the records in [cpl] lists and tables
-RECORD_KEYS = {"tool_database": {"sector", "place", "fields"}, "errors": {"number", "channel", "category"},
-               "override": {"feed", "spindle", "spindle2", "axis"}, "spindle": {"min", "max", "group"},
-               "areas": {"type", "axes", "centre", "extent", "active"}}
-
-
 def load_controller(machine, store=None) -> Controller:
-    """Build the controller from ``machine.sections['cpl']``; unknown keys are errors naming the key."""
-    cfg = machine.sections.get("cpl", {}) or {}
-    for key in cfg:
-        if key not in CPL_KEYS:
-            _err(key, f"unknown key (known: {', '.join(sorted(CPL_KEYS))})")
-    for key, allowed in RECORD_KEYS.items():
-        single = key in ("override", "spindle")  # one table, not a list of tables
-        value = cfg.get(key) or ({} if single else [])
-        for i, rec in enumerate(value if isinstance(value, list) else [value], 1):
-            if not isinstance(rec, dict):
-                _err(f"{key}[{i}]", "must be a table")
-            for k in rec:
-                if k not in allowed:
-                    _err(f"{key}.{k}" if single else f"{key}[{i}].{k}",
-                         f"unknown key (known: {', '.join(sorted(allowed))})")
+    """Build the controller from the machine's ``[cpl]`` options (checked against the schema, unknown keys
+    named, by ``options``)."""
+    cfg = options(machine)
     try:
         return _build(machine, cfg, store)
     except (KeyError, ValueError, TypeError, AttributeError) as e:
         raise UsageError(f"[cpl]: bad value ({type(e).__name__}: {e})") from None
 
 
-def _build(machine, cfg: dict, store) -> Controller:
+def _build(machine, cfg: Options, store) -> Controller:
     c = Controller(store=store, probe_events=EventQueue(of_type(machine.scenario, ProbeSwitch, FixedStop)))
-    c.channel = int(cfg.get("channel", 1))
-    axes = cfg.get("axes")
+    c.channel = cfg.channel
+    axes = cfg.axes
     if axes is None:
         for i, a in enumerate(machine.axes, 1):
             c.axes[i] = PhysAxis(i, a.name.upper(), c.channel, a.kind == "rotary")
@@ -142,9 +122,6 @@ def _build(machine, cfg: dict, store) -> Controller:
         for i, a in enumerate(axes, 1):
             if isinstance(a, str):
                 a = {"name": a}
-            for k in a:
-                if k not in AXIS_KEYS:
-                    _err(f"axes[{i}].{k}", f"unknown key (known: {', '.join(sorted(AXIS_KEYS))})")
             if "name" not in a:
                 _err(f"axes[{i}]", "needs a name")
             idx = int(a.get("index", i))
@@ -155,38 +132,32 @@ def _build(machine, cfg: dict, store) -> Controller:
             c.axes[idx] = PhysAxis(idx, str(a["name"]).upper(), int(a.get("channel", c.channel)), kind == "rotary",
                                    bool(a.get("probe", True)), float(a.get("position", 0.0)), float(a.get("lag", 0.0)),
                                    float(a.get("jog", 1000.0)))
-    for unit_key in ("zs_unit", "tc_unit"):
-        u = cfg.get(unit_key, "mm")
-        if u not in ("mm", "inch"):
-            _err(unit_key, f"{u!r} (mm or inch)")
-        setattr(c, unit_key, u)
-    c.zs_active = str(cfg.get("zs_active", "V1"))
-    for name, table in (cfg.get("zs_tables") or {}).items():
+    c.zs_unit, c.tc_unit = cfg.zs_unit, cfg.tc_unit
+    c.zs_active = cfg.zs_active
+    for name, table in cfg.zs_tables.items():
         c.zs_tables[name] = _zs_table(c, f"zs_tables.{name}", table)
-    for name, groups in (cfg.get("tc_tables") or {}).items():
+    for name, groups in cfg.tc_tables.items():
         c.tc_tables[name] = {int(g): [float(x) for x in v] + [0.0] * (2 - len(v)) for g, v in groups.items()}
     if "K4" not in c.tc_tables:  # the machine's tool table is compensation table K4
         c.tc_tables["K4"] = {t.number: [t.length, t.radius] for t in machine.tools.values()}
     c.tc_tables.setdefault("K5", {})
-    for rec in cfg.get("tool_database") or []:
+    for rec in cfg.tool_database:
         fields = {int(k): v for k, v in (rec.get("fields") or {}).items()}
         c.tdb[(int(rec["sector"]), int(rec["place"]))] = fields
-    for num, vals in (cfg.get("macoda") or {}).items():
+    for num, vals in cfg.macoda.items():
         c.macoda[int(str(num).replace(" ", ""))] = vals if isinstance(vals, list) else [vals]
-    for key, val in (cfg.get("plc") or {}).items():
+    for key, val in cfg.plc.items():
         c.plc[str(key)] = int(val)
-    for e in cfg.get("errors") or []:
+    for e in cfg.errors:
         c.errors.append({"number": int(e["number"]), "channel": int(e.get("channel", -1)),
                          "category": int(e.get("category", 0))})
-    c.override.update({k: int(v) for k, v in (cfg.get("override") or {}).items()})
-    c.spindle.update({k: (int(v) if k == "group" else float(v)) for k, v in (cfg.get("spindle") or {}).items()})
+    c.override.update({k: int(v) for k, v in cfg.override.items()})
+    c.spindle.update({k: (int(v) if k == "group" else float(v)) for k, v in cfg.spindle.items()})
     if not 0 <= c.spindle["group"] <= 4:
         _err("spindle.group", f"{c.spindle['group']} (0 no group, 1..4)")
-    c.language = int(cfg.get("language", 1))
-    c.date_format = str(cfg.get("date_format", "DD.MM.YY"))
-    if c.date_format not in ("DD.MM.YY", "DD.MM"):
-        _err("date_format", f"{c.date_format!r} (DD.MM.YY or DD.MM)")
-    c.areas = [_area(c, i, a) for i, a in enumerate(cfg.get("areas") or [], 1)]
+    c.language = cfg.language
+    c.date_format = cfg.date_format
+    c.areas = [_area(c, i, a) for i, a in enumerate(cfg.areas, 1)]
     _default_macoda(c)
     if store is not None:
         _load_persistent(c, store())

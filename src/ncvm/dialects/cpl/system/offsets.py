@@ -16,6 +16,7 @@ from ....diagnostics import UsageError
 from ....machine.files import FileRootError, Place
 from ..errors import CplError
 from ..io.values import is_text, text_of
+from ..options import options
 from . import zsfile
 from .axes import kernel_index, nul, resolve, to_unit
 from .context import SystemContext
@@ -40,7 +41,7 @@ def setup(rt: SystemContext) -> None:
     if c.zs_active not in c.zs_tables:
         c.zs_tables[c.zs_active] = new_zs_table(names, c.zs_unit)
     table = c.zs_tables[c.zs_active]
-    configured = rt.machine.sections.get("cpl", {}).get("zs_tables", {}) or {}
+    configured = options(rt.machine).zs_tables
     persisted = c.store is not None and c.zs_active in c.store().items("cpl.zs")
     if c.zs_active not in configured and not persisted:
         # the machine file's [offsets] are the active table's G54..G59 rows

@@ -1,6 +1,6 @@
 """Main group 3: system memory -> R parameter (planning guide ch.10, L6492-6612).
 
-``run``: the channel's function that reads the value (``Channel.read`` stores it in R<target>...).
+``run``: the function (of the channel's part) that reads the value (``Channel.read`` stores it in R<target>...).
 """
 
 from __future__ import annotations
@@ -27,26 +27,26 @@ ROWS = (
     AtCode("314", "SEZBY", "VWW", 6521, "read", run="memory.sd_read", cl800="read"),
     AtCode("315", "SEZBI", "VWWW", 6522, "read", run="memory.sd_read", cl800="read"),
     AtCode("320", "TOS", "VWWW", 6526, "read", run="memory.to_read", cl800="read"),
-    AtCode("330", "ZOA", "VWWW", 6530, "read", run="zo_read", cl800="read"),
-    AtCode("331", "ZOPR", "VWW", 6531, "read", run="zo_read", cl800="read"),
-    AtCode("332", "ZOE", "VW", 6532, "read", run="zo_read", cl800="read"),
-    AtCode("333", "ZOD", "VW", 6533, "read", run="zo_read", cl800="read"),
-    AtCode("334", "ZOPS", "VW", 6534, "read", run="zo_read", cl800="read"),
-    AtCode("336", "ZOS", "VW", 6535, "read", run="zo_read", cl800="read"),
-    AtCode("337", "ZOADW", "VWWW", 6536, "read", run="zo_read", cl800="read"),
-    AtCode("338", "ZOPRDW", "VWWW", 6537, "read", run="zo_read", cl800="read"),
+    AtCode("330", "ZOA", "VWWW", 6530, "read", run="offsets.zo_read", cl800="read"),
+    AtCode("331", "ZOPR", "VWW", 6531, "read", run="offsets.zo_read", cl800="read"),
+    AtCode("332", "ZOE", "VW", 6532, "read", run="offsets.zo_read", cl800="read"),
+    AtCode("333", "ZOD", "VW", 6533, "read", run="offsets.zo_read", cl800="read"),
+    AtCode("334", "ZOPS", "VW", 6534, "read", run="offsets.zo_read", cl800="read"),
+    AtCode("336", "ZOS", "VW", 6535, "read", run="offsets.zo_read", cl800="read"),
+    AtCode("337", "ZOADW", "VWWW", 6536, "read", run="offsets.zo_read", cl800="read"),
+    AtCode("338", "ZOPRDW", "VWWW", 6537, "read", run="offsets.zo_read", cl800="read"),
     AtCode("342", "PRSS", "VWW", 6541, "read", run="spindle.read", cl800="read"),
     AtCode("345", "PRVC", "VWW", 6542, "read", run="spindle.read", cl800="read"),
     AtCode("34b", "PCDA", "VWWW", 6543, "read", run="memory.drive_read", cl800="read"),
     AtCode("34c", "PCDS", "VWWW", 6544, "read", run="memory.drive_read", cl800="read"),
-    AtCode("360", "ACPW", "VW", 6549, "read", run="acpw", cl800="read"),
-    AtCode("361", "ACPM", "VW", 6550, "read", run="acp", cl800="read", regs=2),
-    AtCode("362", "ACP", "VW", 6551, "read", run="acp", cl800="read", regs=2),
+    AtCode("360", "ACPW", "VW", 6549, "read", run="positions.acpw", cl800="read"),
+    AtCode("361", "ACPM", "VW", 6550, "read", run="positions.acp", cl800="read", regs=2),
+    AtCode("362", "ACP", "VW", 6551, "read", run="positions.acp", cl800="read", regs=2),
     AtCode("363", "ACSP", "VW", 6552, "read", run="spindle.read", cl800="read"),
     AtCode("364", "ACSS", "VW", 6553, "read", run="spindle.read", cl800="read"),
-    AtCode("367", "ACAS", "VW", 6554, "read", run="acas", cl800="read", regs=5),
-    AtCode("36a", "ACD", "VW", 6555, "read", run="acd", cl800="read"),
-    AtCode("36b", "ACG", "VWW", 6556, "read", run="acg", cl800="read"),
+    AtCode("367", "ACAS", "VW", 6554, "read", run="positions.acas", cl800="read", regs=5),
+    AtCode("36a", "ACD", "VW", 6555, "read", run="offsets.acd", cl800="read"),
+    AtCode("36b", "ACG", "VWW", 6556, "read", run="positions.acg", cl800="read"),
     AtCode("371", "SOB", "VWW", 6561, "read", run="memory.sob", cl800="read"),
     AtCode("372", "PPCH", "V", 6562, "read", run="memory.ppch", cl800="read"),
     AtCode("380", "PLCI", "VWWW", 6566, "read", run="plc.read", cl800="read"),

@@ -1,6 +1,6 @@
 """Main group 4: R parameter -> system memory; the value written is the last operand (planning guide ch.10, L6614-6704).
 
-``run``: the channel's function that writes the value (``Channel.write``); @44x are setpoints of the
+``run``: the function (of the channel's part) that writes the value (``Channel.write``); @44x are setpoints of the
 block record (codegen), @44b/@44c the drives' control bits.
 """
 
@@ -27,17 +27,17 @@ ROWS = (
     AtCode("413", "SEZ", "WWW", 6644, "write", run="memory.sd_write", cl800="write"),
     AtCode("414", "SEZBY", "WWW", 6645, "write", run="memory.sd_write", cl800="write"),
     AtCode("415", "SEZBI", "WWWW", 6646, "write", run="memory.sd_write", cl800="write"),
-    AtCode("420", "TOS", "WWWW", 6650, "write", run="to_write", cl800="write"),
-    AtCode("423", "TOAD", "WWWW", 6651, "write", run="to_write", cl800="write"),
-    AtCode("430", "ZOA", "WWWW", 6655, "write", run="zo_write", cl800="write"),
-    AtCode("431", "ZOFA", "WWWW", 6656, "write", run="zo_write", cl800="write"),
-    AtCode("432", "ZOPR", "WWW", 6657, "write", run="zo_write", cl800="write"),
-    AtCode("434", "ZOD", "WW", 6658, "write", run="zo_write", cl800="write"),
-    AtCode("435", "ZOPS", "WW", 6659, "write", run="zo_write", cl800="write"),
-    AtCode("437", "ZOADW", "WWWW", 6660, "write_rotation", run="zo_write", cl800="write"),
-    AtCode("438", "ZOFADW", "WWWW", 6661, "write_rotation", run="zo_write", cl800="write"),
-    AtCode("439", "ZOPRDW", "WWWW", 6662, "write_rotation", run="zo_write", cl800="write"),
-    AtCode("43a", "ZOFPRDW", "WWWW", 6663, "write_rotation", run="zo_write", cl800="write"),
+    AtCode("420", "TOS", "WWWW", 6650, "write", run="offsets.to_write", cl800="write"),
+    AtCode("423", "TOAD", "WWWW", 6651, "write", run="offsets.to_write", cl800="write"),
+    AtCode("430", "ZOA", "WWWW", 6655, "write", run="offsets.zo_write", cl800="write"),
+    AtCode("431", "ZOFA", "WWWW", 6656, "write", run="offsets.zo_write", cl800="write"),
+    AtCode("432", "ZOPR", "WWW", 6657, "write", run="offsets.zo_write", cl800="write"),
+    AtCode("434", "ZOD", "WW", 6658, "write", run="offsets.zo_write", cl800="write"),
+    AtCode("435", "ZOPS", "WW", 6659, "write", run="offsets.zo_write", cl800="write"),
+    AtCode("437", "ZOADW", "WWWW", 6660, "write_rotation", run="offsets.zo_write", cl800="write"),
+    AtCode("438", "ZOFADW", "WWWW", 6661, "write_rotation", run="offsets.zo_write", cl800="write"),
+    AtCode("439", "ZOPRDW", "WWWW", 6662, "write_rotation", run="offsets.zo_write", cl800="write"),
+    AtCode("43a", "ZOFPRDW", "WWWW", 6663, "write_rotation", run="offsets.zo_write", cl800="write"),
     AtCode("440", "PRAP", "WW", 6669, "setpoint", cl800="write"),
     AtCode("442", "PRSS", "WW", 6670, "setpoint", cl800="write"),
     AtCode("446", "PRAD", "W", 6671, "setpoint", cl800="write"),
@@ -54,6 +54,6 @@ ROWS = (
     AtCode("4b0", "PLCDF", "WWWWWW", 6694, "write", run="plc.write", cl800="write"),
     AtCode("4b1", "PLCDB", "WWWWWW", 6695, "write", run="plc.write", cl800="write"),
     AtCode("4b2", "PLCDG", "WWWW", 6696, "write", run="plc.write", cl800="write"),
-    AtCode("4c0", "ALNZ", "W", 6700, "write", run="alnz", cl800="write"),
+    AtCode("4c0", "ALNZ", "W", 6700, "write", run="memory.alnz", cl800="write"),
     AtCode("4e1", "SATC", "WWW", 6704, "write", run="memory.satc", cl800="write"),
 )

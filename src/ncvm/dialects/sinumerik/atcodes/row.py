@@ -16,7 +16,8 @@ from ..errors import ReadError
 @dataclass(frozen=True, slots=True)
 class AtCode:
     """``lower``: the code generator's ``lower_<lower>`` method that turns the code into Python;
-    ``run``: the channel's method that executes it at run time (groups 3, 4, 7, a); ``expr``: the Python
+    ``run``: the run-time function that executes it (groups 3, 4, 7, a), a method of the
+    channel or of one of its parts (``offsets.zo_read``); ``expr``: the Python
     template of a jump condition (group 1) or a result (group 6); ``overflows``: the result may leave the
     double range for finite operands. ``cl800``: how a CL 800 program writes the code (``function``,
     ``read``, ``write``, ``nc_function``, ``procedure``, ``logic``) under ``name`` (default the

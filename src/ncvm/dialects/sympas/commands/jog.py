@@ -91,7 +91,7 @@ def _drift_action(card, a, mv, v: float, sign: float, src):
             return  # stopped or replaced before it got there
         t = mv.t1
         card.retire(mv)
-        bits = card.cfg["axst_bits"]
+        bits = card.cfg.axst_bits
         a.flags |= 1 << bits["saf"]
         run_on(card, a, t, sign * v, src)
         mode = card.sys["MODEREG"]
@@ -133,8 +133,8 @@ def _home(card, tk, axes, loc, direction: int, wait: bool, limits=None):
     if start is None:
         return then_wait(card, tk, axes, wait)
     src = source_of(tk, loc)
-    refs = card.cfg["ref_positions"]
-    failed = 1 << card.cfg["axst_bits"]["home_failed"]
+    refs = card.cfg.ref_positions
+    failed = 1 << card.cfg.axst_bits["home_failed"]
     for k, ax in enumerate(axes):
         a = card.axes[ax]
         p0 = start[ax]
@@ -145,7 +145,7 @@ def _home(card, tk, axes, loc, direction: int, wait: bool, limits=None):
             if ok and a.q["hac"] > 0:
                 overrun = direction * a.q["hvl"] ** 2 / (2.0 * a.q["hac"])
         else:
-            period = float(card.cfg["index_period"])
+            period = float(card.cfg.index_period)
             d = 1 if limits[k] >= 0 else -1
             ref = (math.floor(p0 / period) + 1) * period if d > 0 else (math.ceil(p0 / period) - 1) * period
             ok = abs(ref - p0) <= abs(limits[k])

@@ -54,8 +54,7 @@ def fast_line(card, tk, items, loc, relative: bool) -> bool:
     else:
         v = math.sqrt(length * acc)
         end_t = tk.time + 2.0 * length / v * 15625.0
-    timed = card.scheduler.timed
-    if timed and timed[0][0] <= end_t:
+    if card.scheduler.next_timed() <= end_t:
         return False
     for ax, _ in items:
         a = axes[ax]
@@ -121,7 +120,7 @@ def _circle(card, tk, items, loc, relative: bool, wait: bool, target: bool = Fal
     phi_deg = tk.sysp["PHI"]
     if target:
         # target-point mode: the circle items give the end point, DTCA1/2 the centre (digest)
-        rel_center = relative or bool(card.cfg["dtca_always_relative"])
+        rel_center = relative or bool(card.cfg.dtca_always_relative)
         d1, d2 = tk.sysp["DTCA1"] * sc[0], tk.sysp["DTCA2"] * sc[1]
         c = (q0[0] + d1, q0[1] + d2) if rel_center else (d1 + qs[0], d2 + qs[1])
         e = (q0[0] + vals[0], q0[1] + vals[1]) if relative else (vals[0] + qs[0], vals[1] + qs[1])
@@ -129,7 +128,7 @@ def _circle(card, tk, items, loc, relative: bool, wait: bool, target: bool = Fal
         r1 = math.hypot(e[0] - c[0], e[1] - c[1])
         if r0 == 0 or abs(r1 - r0) > 1e-3 * r0 + 1e-9:
             for ax in axes:
-                card.axes[ax].flags |= 1 << card.cfg["axst_bits"]["refused"]
+                card.axes[ax].flags |= 1 << card.cfg.axst_bits["refused"]
             return then_wait(card, tk, axes, wait)
         a0 = math.atan2(q0[1] - c[1], q0[0] - c[0])
         a1 = math.atan2(e[1] - c[1], e[0] - c[0])
@@ -201,7 +200,7 @@ def _circle3d(card, tk, items, loc, relative: bool, wait: bool, target: bool = F
     nl = math.sqrt(sum(x * x for x in n))
     if nl == 0:
         for ax in axes:
-            card.axes[ax].flags |= 1 << card.cfg["axst_bits"]["refused"]
+            card.axes[ax].flags |= 1 << card.cfg.axst_bits["refused"]
         return then_wait(card, tk, axes, wait)
     n = tuple(x / nl for x in n)
     c = tuple(p0[k] + vals[k] if relative else vals[k] + sh[k] for k in range(3))

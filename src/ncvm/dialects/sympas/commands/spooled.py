@@ -104,12 +104,12 @@ def ssf(card, tk, items, loc):
 
 
 def _ssf_action(card, code: int, items):
-    codes = card.cfg["ssf_codes"]
+    codes = card.cfg.ssf_codes
 
     def act():
         for ax, v in items:
             if code == codes["write_ci"]:
-                card.ci[int(card.cfg["ssf_ci_index"])] = int(v)
+                card.ci[int(card.cfg.ssf_ci_index)] = int(v)
             elif code == codes["set_output"]:
                 bit = int(v)
                 if 1 <= bit <= 32:
@@ -132,7 +132,7 @@ def ssmsw(card, tk, axes, loc):
 def _chain(card, tk, axes, loc):
     """Spooled segments run back to back; consecutive path segments join at their target
     velocity (lookahead.py) and run as one :class:`Chain` without stopping in between."""
-    codes = card.cfg["ssf_codes"]
+    codes = card.cfg.ssf_codes
     saved_sysp, saved_t = tk.sysp, tk.time
     card.spooler.planning_chain = True  # under a feed hold the chain is planned at 100 % and held as a whole
     t = tk.time
@@ -146,8 +146,8 @@ def _chain(card, tk, axes, loc):
         mv = card.axes[ax].move
         if mv is not None:
             t = max(t, mv.t1)
-    busy = card.cfg["busy_move"]
-    card.cfg["busy_move"] = "override"
+    busy = card.cfg.busy_move
+    card.cfg.busy_move = "override"
     segs, targets, ssf_after, full0 = [], [], [], None
     try:
         while True:
@@ -196,7 +196,7 @@ def _chain(card, tk, axes, loc):
                 targets.append(max(0.0, sysp["TRTVL"] * f / ts * mv.ovr0))
                 t = mv.t1
     finally:
-        card.cfg["busy_move"] = busy
+        card.cfg.busy_move = busy
         tk.sysp, tk.time = saved_sysp, saved_t
         card.spooler.planning_chain = False
         if join is not None:

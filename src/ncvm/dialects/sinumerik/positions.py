@@ -1,0 +1,111 @@
+"""The channel's axes and plane as @ code sees them: axis numbers, G16, and the actual-value reads ACPW,
+ACPM/ACP, ACAS and ACG (planning guide ch.10, L6549-6556; digest §4.3).
+
+Positions and the G state are the kernel's *executed* state (the manual asks for STOP DEC before
+reading them in the own channel, L2618-2734).
+"""
+
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING
+
+from ...nc import cutter
+from ...nc.kernel import PLANES
+from .errors import Cl800Error
+from .ncdata import in_range as _rng
+from .spindle import MASTER_SPINDLE
+
+if TYPE_CHECKING:
+    from .runtime import Channel
+
+#: G group -> its G functions, the first the power-on state (ACG, @36b)
+ACG_GROUPS = {0: (0, 1, 10, 11, 2, 3, 33, 34, 35, 6, 12, 13, 5, 7), 1: (9,), 2: (17, 18, 19, 16), 3: (40, 41, 42),
+              4: (53,), 5: (54, 55, 56, 57), 6: (4, 25, 26, 58, 59, 92, 74), 7: (60, 63, 64, 62), 8: (70, 71),
+              9: tuple(range(80, 90)), 10: (90, 91, 68), 11: (94, 95, 96, 97), 13: (50, 51)}
+
+
+def axis_index(kernel, v: float) -> int:
+    """Axis number 1..n (manual: 1-24 on the 880) -> axis index."""
+    return _rng("axis number", v, 1, kernel.n_axes) - 1
+
+
+class Positions:
+    """The plane G16 selects and the reads of positions and G functions."""
+
+    def __init__(self, channel: Channel):
+        self.channel = channel
+        self.kernel = channel.kernel
+        self.g16_plane: tuple[int, int, int] | None = None  # axis numbers of the G16 plane
+        self.g16_minus = (False, False, False)  # G16 with a minus sign before the axis
+
+    def axis_name(self, v: float, line: int) -> str:
+        return self.kernel.axis_names[axis_index(self.kernel, v)]
+
+    def centre_name(self, v: float, line: int) -> str:
+        name = self.axis_name(v, line)
+        centre = {"X": "I", "Y": "J", "Z": "K"}.get(name)
+        if centre is None:
+            raise Cl800Error(f"PRIP: axis {name} has no interpolation parameter")
+        return centre
+
+    def g16(self, letters: list, line: int) -> None:
+        self.channel.run_buffer()
+        axes = []
+        minus = []
+        for name, neg in letters:
+            if name not in self.kernel.axis_of:
+                raise Cl800Error(f"G16: {name} is not an axis")
+            axes.append(self.kernel.axis_of[name] + 1)
+            minus.append(neg)
+        if len(axes) < 2:
+            raise Cl800Error("G16 needs at least two axes")
+        while len(axes) < 3:
+            axes.append(0)
+        while len(minus) < 3:
+            minus.append(False)
+        self.g16_plane = tuple(axes[:3])
+        self.g16_minus = tuple(minus[:3])
+        plane = {(1, 2): 17, (3, 1): 18, (2, 3): 19}.get((axes[0], axes[1]))
+        if plane:
+            self.kernel.plane = plane
+
+    def plane_axes(self) -> tuple[str, str]:
+        """The first and second axis of the active plane (G16 or G17-G19)."""
+        k = self.kernel
+        if self.g16_plane:
+            h, v = self.g16_plane[0], self.g16_plane[1]
+            return k.axis_names[h - 1], k.axis_names[v - 1]
+        a, b = PLANES[k.plane][:2]
+        return a, b
+
+    def acpw(self, code: str, args: tuple) -> float:
+        """ACPW (@360): the actual position in the workpiece system."""
+        k = self.kernel
+        return k.workpiece_position()[k.axis_names[axis_index(k, args[0])]]
+
+    def acp(self, code: str, args: tuple):
+        """ACPM / ACP (@361/@362): the machine position; of a rotary axis the angle and the turns."""
+        i = axis_index(self.kernel, args[0])
+        pos = self.kernel.machine_pos[i] / self.kernel.scale
+        if self.channel.session.machine.axes[i].rotary:
+            return [pos % 360.0, float(math.floor(pos / 360.0))]
+        return pos
+
+    def acas(self, code: str, args: tuple) -> list[float]:
+        """ACAS (@367): the axes of the plane (G16) and the master spindle."""
+        self.channel.memory.own_channel(args[0])
+        plane = self.g16_plane or {17: (1, 2, 3), 18: (3, 1, 2), 19: (2, 3, 1)}[self.kernel.plane]
+        out = [float(a + (128 if m else 0)) for a, m in zip(plane, self.g16_minus)]
+        return out + [0.0, float(MASTER_SPINDLE)]
+
+    def acg(self, code: str, args: tuple) -> float:
+        """ACG (@36b): the active G function of a group."""
+        self.channel.memory.own_channel(args[0])
+        group = _rng("G group", args[1], 0, 23)
+        k = self.kernel
+        state = {0: k.motion, 2: k.plane, 5: int(k.work_offset[1:]) if k.work_offset else 0,
+                 3: cutter.active_g(k), 8: 70 if k.scale != 1.0 else 71, 10: 90 if k.absolute else 91}
+        if group in state:
+            return float(state[group])
+        return float(ACG_GROUPS.get(group, (0,))[0])
