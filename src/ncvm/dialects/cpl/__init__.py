@@ -15,6 +15,7 @@ from ..base import Dialect
 from .axiswords import axis_diagnostics
 from .checker import check
 from .codegen import generate
+from .lexer import ETX
 from .linker import link
 from .linktables import LinkTables
 from .runtime import CplRuntime
@@ -27,7 +28,10 @@ class CplDialect(Dialect):
     id = "cpl"
 
     def sniff(self, text: str) -> int:
-        lines = [ln for ln in program_lines(text)[:200] if ln.strip()]
+        lines = [ln for ln in program_lines(text) if ln.strip()]
+        if lines and lines[-1].startswith(ETX):  # the control's end-of-file marker: a file it kept (L3867)
+            return 100
+        lines = lines[:200]
         if not lines:
             return 0
         hits = sum(1 for ln in lines if _CPL_LINE.match(ln))

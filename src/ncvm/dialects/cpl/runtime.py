@@ -40,7 +40,7 @@ from .io import strings as S
 from .io.context import CplIO
 from .io.errors import CplRuntimeError
 from .io.values import CplText, Double
-from .linker import SUB_EXTENSIONS, LinkResult, call_table
+from .linker import MAX_SUB_NESTING, SUB_EXTENSIONS, LinkResult, call_table
 from .perm import DeclError, Permanents
 from .system import SYSTEM_PROCS
 from .system import setup as system_setup
@@ -53,7 +53,6 @@ from .system.sercos import SERCOS_EVENTS
 from .unlinked import link_late, run_unlinked
 
 _EXTENDED = re.compile(r"\s*([A-Za-z][A-Za-z0-9_]*[0-9_][A-Za-z0-9_]*)\s*=\s*([-+]?(?:\d+\.?\d*|\.\d+))\s*$")
-MAX_NESTING = 7  # sub-program levels below the main program (manual §2.1 L323)
 #: blocks prepared ahead of execution without ``[cpl] lookahead`` (the manual gives no size; docs/decisions.md)
 BLOCK_BUFFER = 20_000
 
@@ -324,7 +323,7 @@ class CplRuntime:
     # -- sub-programs -----------------------------------------------------------------------
     def call(self, caller: str, name: str, args: tuple, din: bool, line: int) -> None:
         stack, active, units = self.stack, self.active, self.linked.units
-        if len(stack) >= MAX_NESTING:
+        if len(stack) >= MAX_SUB_NESTING:
             raise CplError("CPL007", f"CALL {name}")
         target = self.linked.resolve.get((caller, name))
         if target is None:
