@@ -101,10 +101,13 @@ def test_clock_measures_a_block_l2476(run):
     assert r["variables"]["DIFF%"] == round(r["cycle_time_s"] * 1000)
 
 
-def test_date_and_time_from_the_simulated_clock(run):
+def test_date_and_time_from_the_simulated_clock_l2496(run):
+    """L2496: DATE gives the date "in DD.MM form"; ``[cpl] date_format = "DD.MM.YY"`` adds the year."""
     start = 1795442399.0  # 2026-11-23 13:59:59 UTC
     v = run("10 WAIT(,2000)\n30 A$=DATE\n40 B$=TIME\nM30\n", clock={"start": start})["variables"]
-    assert v == {"A$": "23.11.26", "B$": "14.00.01"}
+    assert v == {"A$": "23.11", "B$": "14.00.01"}
+    v = run("30 A$=DATE\nM30\n", clock={"start": start}, cpl={"date_format": "DD.MM.YY"})["variables"]
+    assert v == {"A$": "23.11.26"}
 
 
 ERRORS = [{"number": 1856, "channel": 1, "category": 2}, {"number": 1938, "channel": 2, "category": 6},

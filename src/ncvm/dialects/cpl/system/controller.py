@@ -16,9 +16,10 @@ from ....machine.scenario import EventQueue, FixedStop, ProbeSwitch, of_type
 from ....nc.probe import ProbeLatch
 from .gfuncs import NcFuncs
 
-#: every key [cpl] may hold (lookahead and calls belong to the language runtime, file_space to its files)
-CPL_KEYS = {"lookahead", "file_space", "calls", "channel", "axes", "zs_unit", "zs_active", "zs_tables", "tc_unit", "tc_tables",
-            "tool_database", "macoda", "plc", "errors", "override", "language", "date_format", "areas", "spindle"}
+#: every key [cpl] may hold (lookahead and calls belong to the language runtime, file_space and file_zeros to its files)
+CPL_KEYS = {"lookahead", "file_space", "file_zeros", "calls", "channel", "axes", "zs_unit", "zs_active", "zs_tables",
+            "tc_unit", "tc_tables", "tool_database", "macoda", "plc", "errors", "override", "language", "date_format",
+            "areas", "spindle"}
 AXIS_KEYS = {"index", "name", "channel", "type", "probe", "position", "lag", "sercos", "jog"}
 ZS_ROWS = tuple(f"G{b + i}" for b in (54, 154, 254) for i in range(6))
 EXTERNAL = ("G160", "G260", "G360")
@@ -66,7 +67,7 @@ class Controller:
     spindle: dict[str, float] = field(default_factory=lambda: {"min": 0.0, "max": 8000.0, "group": 0})
     message: str = ""  # the last message programmed with MSG and executed (MCODS 28)
     language: int = 1
-    date_format: str = "DD.MM.YY"
+    date_format: str = "DD.MM"
     g_programmed: NcFuncs = field(default_factory=NcFuncs)  # Typ3 G functions at block preparation
     g_active: NcFuncs = field(default_factory=NcFuncs)  # ... and as executed
     areas: list[dict] = field(default_factory=list)  # work areas and dead ranges 1..10 (SD 200)
@@ -183,7 +184,7 @@ def _build(machine, cfg: dict, store) -> Controller:
     if not 0 <= c.spindle["group"] <= 4:
         _err("spindle.group", f"{c.spindle['group']} (0 no group, 1..4)")
     c.language = int(cfg.get("language", 1))
-    c.date_format = str(cfg.get("date_format", "DD.MM.YY"))
+    c.date_format = str(cfg.get("date_format", "DD.MM"))
     if c.date_format not in ("DD.MM.YY", "DD.MM"):
         _err("date_format", f"{c.date_format!r} (DD.MM.YY or DD.MM)")
     c.areas = [_area(c, i, a) for i, a in enumerate(cfg.get("areas") or [], 1)]
