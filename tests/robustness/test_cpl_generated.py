@@ -162,8 +162,8 @@ def test_mid_view_into_a_row_of_a_two_dimensional_field(run_text):
 
 
 @pytest.mark.parametrize("stmt, code", [
-    ('MWD(0,"A",0,1)', "CPL801"), ('LIN(0,0,"A",1)', "CPL801"), ('CIR(0,0,"A")', "CPL801"),
-    ('GPR("A",1,"X")', "CPL801"), ("GPR(1,1,5)", "CPL023"), ("BMP(1,1,5)", "CPL023"), ('TFO("A")', "CPL023"),
+    ('MWD(0,"A",0,1)', "CPL023"), ('LIN(0,0,"A",1)', "CPL023"), ('CIR(0,0,"A")', "CPL023"),
+    ('GPR("A",1,"X")', "CPL023"), ("GPR(1,1,5)", "CPL023"), ("BMP(1,1,5)", "CPL023"), ('TFO("A")', "CPL023"),
     ("I% = ERASE(1.5)", "CPL023"),
 ])
 def test_graphics_and_text_arguments_of_the_wrong_type(run_text, stmt, code):

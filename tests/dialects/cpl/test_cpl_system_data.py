@@ -35,8 +35,11 @@ def test_g_groups_with_one_state_in_the_kernel_sd1_and_ncf(run):
     assert (v["A%"], v["B%"], v["C$"], v["D$"], v["E%"], v["F$"]) == (64, 94, "G64", "G94", -1, "")
 
 
-def test_sd9_without_probing_is_not_switched(run):
-    assert run("1 A%=SD(9)\nM30\n")["variables"]["A%"] == 1
+def test_sd9_before_any_measuring_block_is_g75_not_active_l2229(run):
+    """L2229: SD(9)=0 "G75 not active", SD(9)=1 "G75 active" (the probe has not switched yet). Before any G75
+    ran no measurement is active: 0 (it read 1, "not switched"); a G75 whose probe never switched gives 1."""
+    v = run("1 A%=SD(9)\nN2 G75 X10 F1000\n3 B%=SD(9)\nM30\n")["variables"]
+    assert (v["A%"], v["B%"]) == (0, 1)
 
 
 def test_mca_old_number_example_l2077(run):

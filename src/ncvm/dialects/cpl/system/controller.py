@@ -76,8 +76,8 @@ class Controller:
     ncs: dict[str, dict] = field(default_factory=lambda: {"mode": {}, "selected": {}, "return": {}, "recording": {},
                                                           "reselect": {}})
     store: object = None
-    #: what the last measuring block measured (G75 by default: PROBE, CPROBE read it)
-    probe: ProbeLatch = field(default_factory=lambda: ProbeLatch(75))
+    #: what the last measuring block measured (PROBE, CPROBE read it); code 0: none has run
+    probe: ProbeLatch = field(default_factory=lambda: ProbeLatch(0))
     #: the "probe" and "fixed_stop" scenario events no measuring block has used yet (one per block)
     probe_events: EventQueue = field(default_factory=EventQueue)
 
