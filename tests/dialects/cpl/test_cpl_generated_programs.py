@@ -71,10 +71,11 @@ def test_call_din_of_a_program_written_in_the_same_run_l1097(run_text, machine):
 
 
 def test_call_din_of_a_missing_program_is_found_when_it_runs(run_text, machine, tmp_path):
-    """Not linked, so not looked for at link time: the blocks before the call run, the call is CPL005."""
+    """Not linked, so not looked for at link time: the blocks before the call run, the call is CPL005. Check
+    warns (the program may be written before the call), and the warning does not refuse the run."""
     main = tmp_path / "main.cpl"
     main.write_text("10 #A% = 1\n20 CALL NOSUCH DIN\n30 #A% = 2\nM30\n")
-    assert [d.code for d in check(main, machine=machine)] == []
+    assert [(d.code, d.severity, d.span.line) for d in check(main, machine=machine)] == [("CPL005", "warning", 2)]
     r = run_text(main.read_text(), name="main.cpl", machine=machine)
     assert r["error"]["code"] == "CPL005" and r["error"]["line"] == 2 and r["variables"]["#A%"] == 1
 
@@ -82,3 +83,18 @@ def test_call_din_of_a_missing_program_is_found_when_it_runs(run_text, machine, 
 def test_a_linked_call_of_a_missing_program_is_still_a_link_error(run_text, machine):
     r = run_text('10 PRN#(0,"started")\n20 CALL NOSUCH\nM30\n', name="main.cpl", machine=machine)
     assert r["error"]["code"] == "CPL005" and r["output"] == []
+
+
+def test_check_warns_of_a_din_called_program_with_cpl_l1104(run_text, machine, tmp_path):
+    """L1104: a CPL program called with DIN gives an error "at program runtime". Check says so beforehand, as
+    a warning at the call (the program may still change before the call runs); the run still stops there."""
+    (tmp_path / "PSUB").write_text("N10 G1 X10 F100\n20 X = 1\n")
+    main = tmp_path / "main.cpl"
+    main.write_text("10 #A% = 1\n20 CALL PSUB DIN\nM30\n")
+    diags = check(main, machine=machine)
+    assert [(d.code, d.severity, d.span.line) for d in diags] == [("CPL030", "warning", 2)]
+    assert "PSUB contains CPL blocks" in diags[0].message
+    r = run_text(main.read_text(), name="main.cpl", machine=machine)
+    assert r["error"]["code"] == "CPL030" and r["variables"]["#A%"] == 1
+    (tmp_path / "PSUB").write_text("N10 G1 X10 F100\n")
+    assert check(main, machine=machine) == []

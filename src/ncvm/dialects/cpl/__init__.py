@@ -19,6 +19,7 @@ from .lexer import ETX
 from .linker import link
 from .linktables import LinkTables
 from .runtime import CplRuntime
+from .unlinked import din_call_warnings
 
 _CPL_LINE = re.compile(r"^\s*\d+\s*(REM|IF|FOR|WHILE|GOTO|CALL|DIM|CASE|[A-Z#@][A-Z0-9_]*[%!?$]?\s*(\(.*\))?\s*=)",
                        re.I)
@@ -60,7 +61,7 @@ class CplDialect(Dialect):
         for ln in res.units.values():
             lines = program_lines(text) if ln.prog.path == path else read_lines(ln.prog.path)
             diags += axis_diagnostics(ln.prog, machine.axis_names, lines)
-        return diags
+        return diags + din_call_warnings(res, machine)
 
     def run(self, path, text, session):
         tables = LinkTables(session.options.state_dir / "link", session.machine.file_root)
