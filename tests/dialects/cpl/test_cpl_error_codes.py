@@ -46,3 +46,12 @@ def test_invalid_integer_value_is_cpl027_everywhere_l4130(run, text):
 def test_invalid_parameter_is_cpl023_everywhere_l3390(run, text):
     r = run(text)
     assert r["error"]["code"] == "CPL023" and r["error"]["message"].startswith("INVALID PARAMETER")
+
+
+@pytest.mark.parametrize("text", [
+    "10 D! = 1000000000000000000000000000000.0\n20 R = D! * D!\nM30\n",  # a REAL beyond +/-1e38
+    '10 OPENW(1,"P1") : PRN#(1,"1' + "0" * 400 + '") : CLOSE(1)\n20 OPENR(1,"P1") : INP#(1,D!)\nM30\n',  # L4130
+])
+def test_invalid_float_value_is_cpl042_everywhere_l4130(run, text):
+    r = run(text)
+    assert r["error"]["code"] == "CPL042" and r["error"]["message"].startswith("INVALID FLOAT VALUE")

@@ -52,6 +52,7 @@ CODES: dict[str, tuple[str, str]] = {
     "CPL038": ("declaration file error", "§2.4.3 L615-637"),
     "CPL039": ("WAIT condition can never be met (simulator deadlock)", "digest §5.10"),
     "CPL041": ("SERCOS SERVICE CHANNEL IS LOCKED", "§4.9 L2156"),
+    "CPL042": ("INVALID FLOAT VALUE", "§6.4 L4130 (INP#), a REAL or DOUBLE result beyond its range"),
     "CPL040": ("runtime error", "chapter 4: system data not available or not allowed (digest §7.1)"),
 }
 

@@ -294,7 +294,7 @@ class CplRuntime:
         elif isinstance(e, ValueError):
             code, detail = "CPL029", "argument outside the domain of the function (SQRT of a negative number?)"
         elif isinstance(e, OverflowError):
-            code, detail = "CPL027", "number too large"
+            code, detail = "CPL042", "number too large"  # a float result beyond the DOUBLE range
         elif isinstance(e, RecursionError):
             code, detail = "CPL007", ""
         elif isinstance(e, MemoryError):  # the run's memory limit (runtime.memory), reported where it was reached

@@ -2,8 +2,8 @@
 
 The manual names these errors by text only (it numbers just 2153 and 2167), so each
 gets a stable project code. One error has one code: the chapter-5 string errors, INVALID PARAMETER
-(also of the graphics functions) and INVALID INTEGER VALUE share the language's codes (CPL021-CPL025,
-CPL027, see ``cpl/errors.py``), the others are grouped by manual chapter (CPL6xx files, CPL7xx dialog,
+(also of the graphics functions), INVALID INTEGER VALUE and INVALID FLOAT VALUE share the language's codes
+(CPL021-CPL025, CPL027, CPL042, see ``cpl/errors.py``), the others are grouped by manual chapter (CPL6xx files, CPL7xx dialog,
 CPL8xx graphics, CPL9xx MMC); the message is the manual's text. The CPL front end
 turns :class:`CplRuntimeError` into :class:`ncvm.diagnostics.RuntimeFault`
 (``RuntimeFault(err.code, err.message, span, stack)``).
@@ -30,7 +30,7 @@ ERRORS: dict[str, tuple[str, str, str]] = {
     "INVALID_COMPONENT_LENGTH": ("CPL603", "INVALID COMPONENT LENGTH", "L3921, L3935, L3993"),
     "BLOCK_EXCEEDS_1024": ("CPL604", "BLOCK EXCEEDS 1024 BYTES", "L4033, L4059"),
     "INVALID_INTEGER_VALUE": ("CPL027", "INVALID INTEGER VALUE", "L4130"),  # the language's error
-    "INVALID_FLOAT_VALUE": ("CPL606", "INVALID FLOAT VALUE", "L4130"),
+    "INVALID_FLOAT_VALUE": ("CPL042", "INVALID FLOAT VALUE", "L4130"),  # the language's error
     "INVALID_FILE_NUMBER": ("CPL607", "INVALID FILE NUMBER", "L4209, L4276, L4315"),
     "INVALID_COMPONENT": ("CPL608", "INVALID COMPONENT", "L4282"),
     "INVALID_FILE_NAME": ("CPL609", "INVALID FILE NAME", "L4387"),
