@@ -286,7 +286,7 @@ def _too_deep(main: Linked, units: dict, resolve: dict) -> list[Diagnostic]:
     """CPL007 at the call that opens an 8th sub-program level (manual §2.1 L325: at most 7-fold nesting),
     found in the linked call chains before anything runs; a CALL ... DIN and what it reaches are not linked,
     so only the run finds a level they add."""
-    longest: dict[str, tuple[int, tuple]] = {}  # path -> (levels below it, (call statement, callee) ...)
+    longest: dict[str, tuple[int, tuple]] = {}  # path -> (levels below it, ((caller, call, callee name), ...))
 
     def below(ln: Linked) -> tuple[int, tuple]:
         path = ln.prog.path
@@ -307,5 +307,5 @@ def _too_deep(main: Linked, units: dict, resolve: dict) -> list[Diagnostic]:
         return []
     caller, s, name = chain[MAX_SUB_NESTING]
     via = " -> ".join(Path(c.prog.path).name for c, _s, _n in chain[:MAX_SUB_NESTING + 1])
-    return [diag("CPL007", f"CALL {name} would be level {MAX_SUB_NESTING + 1} (via {via})",
+    return [diag("CPL007", f"the call of {name} would be level {MAX_SUB_NESTING + 1} (via {via})",
                  caller.prog.path, s.line, s.col or None, s.cpl)]
