@@ -156,7 +156,7 @@ def cases():
         ("[cpl]\noverride = { rapid = 50 }\n", "cpl.override.rapid = 50: unknown key"),
         ("[cpl]\nspindle = { group = 5 }\n", "cpl.spindle.group = 5: must be 0 to 4"),
         ("[cpl]\nspindle = { min = 100, max = 50 }\n", "cpl.spindle.min = 100: is greater than max = 50"),
-        ("[cpl]\ndate_format = 'YY.MM.DD'\n", 'cpl.date_format = "YY.MM.DD": must be one of "DD.MM.YY"'),
+        ("[cpl]\ndate_format = 'YY.MM.DD'\n", 'cpl.date_format = "YY.MM.DD": must be one of "DD.MM", "DD.MM.YY"'),
         ("[cpl]\nareas = [{ type = 'forbidden' }]\n", 'cpl.areas[0].type = "forbidden": must be one of'),
         ("[cpl]\nareas = [" + ", ".join(["{}"] * 11) + "]\n", "cpl.areas = [{}, {}, {}, {}, {}, {}, {}, {}, ...]: "
                                                               "must have at most 10 entries"),

@@ -131,7 +131,9 @@ CPL = Table((
         Field("active", Flag(), "watched from the start", True),
     )), max_len=10), "work areas and dead ranges (SD 200)", []),
     Field("language", NONNEG_INT, "national language (MACODA 6010 00010, SD(14))", 1),
-    Field("date_format", Text(choices=("DD.MM.YY", "DD.MM")), "what DATE returns", "DD.MM.YY"),
+    Field("date_format", Text(choices=("DD.MM", "DD.MM.YY")), "what DATE returns (manual L2496: DD.MM)", "DD.MM"),
+    Field("file_zeros", Text(choices=("suppress", "keep")), "trailing zeros of REAL and DOUBLE values PRN# writes "
+                                                            "to files (manual L4001: suppressed)", "suppress"),
     Field("file_space", NONNEG_INT, "bytes the files a program writes (OPENW/PRN#, SCSL, ZS tables) may grow by "
                                     "in one run, then FILE MEMORY FULL (CPL614); 0 = no limit", 1 << 30, "bytes"),
 ))

@@ -161,7 +161,7 @@ def test_d9_gpr_labels_along_a_sine(tmp_path):
             '70 GPR(700,0,"X")\nM30\n')
     r, s = run_cpl(tmp_path, text)
     assert r["output"][:4] == ["pixel", "1", "pixel", "2"]
-    assert r["error"]["code"] == "CPL801" and r["error"]["line"] == 7
+    assert r["error"]["code"] == "CPL023" and r["error"]["line"] == 7
 
 
 def test_d10_mmc_without_a_client(tmp_path):
@@ -265,7 +265,7 @@ def test_colour_tables_rgb_bitmaps_and_clearing(tmp_path):
     assert r["error"] is None
     assert px(s.screen, 50, 50) == s.screen.rgb(0) and s.screen.grid_lines()[2] == ""
     r, _ = run_cpl(tmp_path, '10 COL(8)\nM30\n')
-    assert r["error"]["code"] == "CPL801"
+    assert r["error"]["code"] == "CPL023"
     r, _ = run_cpl(tmp_path, '10 GWD(100,500,100,350) : MWD(0,400,0,100)\nM30\n')
     assert r["error"]["code"] == "CPL802"
 
@@ -293,3 +293,12 @@ def test_typ2_programs_get_five_softkeys_l4464(tmp_path, first):
     typ2 = "TYP2" in first
     assert r["output"][0] == "SFK [1:A] [2:B] [3:C] [4:D] [5:E]" + ("" if typ2 else " [6:F]")
     assert s.screen.softkey_count == (5 if typ2 else 8)
+
+
+def test_dsp_past_column_79_is_cut_in_the_output_too_l4547(tmp_path):
+    """L4547: DSP columns run from 1 to 79. Text that runs past column 79 is cut on the screen, and the run's
+    output (the JSON "output") says what the screen shows, not the whole text."""
+    r, s = run_cpl(tmp_path, '10 DSP(3,70,"ABCDEFGHIJKLMNOP")\n20 DSP(4,1,"X=",12.5)\nM30\n')
+    assert r["error"] is None
+    assert s.screen.grid_lines()[2] == " " * 69 + "ABCDEFGHIJ"
+    assert r["output"] == ["ABCDEFGHIJ", "X=  12.500"]

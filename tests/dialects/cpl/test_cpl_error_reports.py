@@ -104,3 +104,26 @@ def test_check_reports_the_type_error_of_every_statement(tmp_path, reference):
     diags = check(path, machine=reference())
     assert [(d.code, d.span.line, d.span.column) for d in diags] == [
         ("CPL032", 1, 4), ("CPL021", 4, 4), ("CPL032", 5, 4), ("CPL021", 7, 4)]
+
+
+@pytest.mark.parametrize("text, col", [
+    ("10 IF A%>1 AND B%<2 THEN X=1 ENDIF\n", 18),
+    ("10 WHILE A%>1 OR B%<2 DO A%=0 END\n", 20),
+    ("10 REPEAT\n20 A%=A%+1\n30 UNTIL A%=1 XOR A%=2\n", 0),
+    ("10 C?=A%>1 AND B%<2\n", 18),
+])
+def test_comparisons_joined_by_and_or_need_parentheses_l851(tmp_path, reference, text, col):
+    """L851/L872: AND binds like `*`, OR and XOR like `+`, tighter than a comparison, so `A%>1 AND B%<2` is
+    `A% > (1 AND B%) < 2`; the manual writes every compound condition in parentheses (L4648). The error says
+    so, at the second comparison, in every statement that takes a condition (it said "THEN expected")."""
+    from ncvm.api import check
+    path = tmp_path / "c.cpl"
+    path.write_text(text)
+    diags = check(path, machine=reference())
+    assert [d.code for d in diags] == ["CPL001"]
+    assert "comparisons joined by AND, OR or XOR need parentheses" in diags[0].message
+    if col:
+        assert diags[0].span.column == col
+    path.write_text(text.replace("A%>1 AND B%<2", "(A%>1) AND (B%<2)").replace("A%>1 OR B%<2", "(A%>1) OR (B%<2)")
+                    .replace("A%=1 XOR A%=2", "(A%=1) XOR (A%=2)"))
+    assert check(path, machine=reference()) == []

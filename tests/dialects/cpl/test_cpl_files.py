@@ -127,7 +127,9 @@ def test_format_overflow_warns_and_ljust_writes_nc_blocks(cpl):
                   '30 PRN#(1,"N10 X",1.5," Y",20," Z","###.###",-3.25)\n40 NJUST\n50 PRN#(1,"N20 X",1.5)\n'
                   '60 CLOSE(1)\nM30\n')
     ok(r)
-    assert content(root, "P1") == "X=**\nN10 X1.500 Y20 Z-3.250\nN20 X   1.500\n" + ETX
+    # L4001: trailing zeros of the standard format suppressed (blanks where the field is formatted); the
+    # template ###.### keeps its decimals
+    assert content(root, "P1") == "X=**\nN10 X1.5 Y20 Z-3.250\nN20 X   1.5  \n" + ETX
     assert r["output"] == ["warning CPL620: PRN FORMAT INCORRECT: X=**"]
 
 
@@ -172,7 +174,7 @@ def test_f12_close_example_positions_round_trip(cpl):
     r, _ = cpl('10 XPOS=12.5 : YPOS=-3.0\n20 OPENW(1,"P5",500,"AXISPOS") : REWRITE(1)\n'
                '30 PRN#(1,"X AXIS",XPOS,"Y AXIS",YPOS) : CLOSE(1)\n40 DIM A$(35) : OPENR(1,"P5") : INP#(1,A$)\n'
                '50 CLOSE(1)\nM30\n')
-    assert ok(r)["variables"]["A$"] == "X AXIS  12.500Y AXIS  -3.000"
+    assert ok(r)["variables"]["A$"] == "X AXIS  12.5  Y AXIS  -3    "  # L4001: trailing zeros suppressed
 
 
 def test_f13_filepos_sequential(cpl):
@@ -361,3 +363,20 @@ def test_names_never_leave_the_file_root_from_a_sub_directory(tmp_path, name, co
     assert not (tmp_path / ".ncvm" / "ESCAPE").exists() and not (tmp_path / "ESCAPE").exists()
     if code is None:
         assert any(p.name in ("LOG2", "LOG3") for p in root.rglob("*"))
+
+
+def test_file_output_suppresses_trailing_zeros_l4001(cpl, reference, tmp_path):
+    """L4001: for file output "Leading and trailing zeros are suppressed. This also applies to left-justified
+    output": REAL 12.5 is written 12.5, 3.0 as 3, DOUBLE 0.25 as 0.25; formatted output keeps the field's
+    width (the point stays in its column), STR$ keeps its fixed decimals (L3531-3538), and a template the
+    same. ``[cpl] file_zeros = "keep"`` writes the fixed decimals of STR$ and DSP."""
+    text = ('10 OPENW(1,"P1") : D! = 0.25 : R = 3.0 : DIM A$(10) : A$ = STR$(2.5)\n20 PRN#(1,"[",12.5,"][",R,"][",D!,"]")\n'
+            '30 LJUST : PRN#(1,"X",12.5," Y",R," Z",-0.5," U",D!," V","##.##",1.5," ",A$," ",100)\n'
+            '40 CLOSE(1)\nM30\n')
+    r, root = cpl(text)
+    ok(r)
+    assert content(root, "P1") == ("[  12.5  ][   3    ][        0.25    ]\nX12.5 Y3 Z-0.5 U0.25 V1.50    2.500 100\n"
+                                   + ETX)
+    r, _ = cpl(text, machine=reference(cpl={"file_zeros": "keep"}))
+    ok(r)
+    assert content(tmp_path / "files", "P1").splitlines()[1] == "X12.500 Y3.000 Z-0.500 U0.250000 V1.50    2.500 100"

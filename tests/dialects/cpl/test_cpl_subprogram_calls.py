@@ -4,7 +4,11 @@ from linking (§3.3), program names along the program path, CALL statements.
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import pytest
+
+from ncvm.api import check
 
 
 @pytest.fixture
@@ -162,3 +166,44 @@ def test_drilling_cycle_runs_after_the_moves_of_a_called_program(run, reference)
     r = run("1 #HOLES% = 0\nN1 G0 X0 Y0 Z10\nN2 G81 [-5]\n10 CALL ROW\nN5 G80\nM30\n")
     assert r["status"] == "ok", r["error"]
     assert r["variables"]["#HOLES%"] == 3
+
+
+def _chain(folder, levels: int, deepest: str = "10 #DEEP% = 1\n") -> None:
+    """L1 calls L2 ... calls L<levels>, the last one runs ``deepest``."""
+    for k in range(1, levels):
+        (folder / f"L{k}").write_text(f"10 CALL L{k + 1}\n")
+    (folder / f"L{levels}").write_text(deepest)
+
+
+def test_eight_sub_program_levels_are_a_link_error_l325(run, reference, tmp_path):
+    """§2.1 L325: "CPL permits a maximum 7-fold nesting depth". A chain of 8 fixed in the source is reported by
+    check, at the call that opens level 8, and the run stops before anything ran (it used to find it at run
+    time, after the main program had written its file)."""
+    m = reference()
+    _chain(m.program_path[0], 8)
+    main = tmp_path / "p.cpl"
+    main.write_text('10 OPENW(1,"PLOG",1024,"log") : PRN#(1,"started") : CLOSE(1)\n20 IF #GO% = 1 THEN\n'
+                    "30 CALL L1\n40 ENDIF\nM30\n")
+    diags = check(main, machine=m)
+    assert [(d.code, Path(d.span.file).name, d.span.line) for d in diags] == [("CPL007", "L7", 1)]
+    assert "L8 would be level 8" in diags[0].message
+    r = run(main.read_text())
+    assert r["error"]["code"] == "CPL007" and r["error"]["file"].endswith("L7")
+    assert not (m.file_root / "PLOG").exists()
+
+
+def test_seven_sub_program_levels_run_l325(run, reference):
+    m = reference()
+    _chain(m.program_path[0], 7)
+    r = run("10 CALL L1\nM30\n")
+    assert r["error"] is None, r["error"]
+    assert r["variables"] == {"#DEEP%": 1}
+
+
+def test_the_deepest_chain_counts_not_the_first_one_found_l325(run, reference):
+    """A sub-program reached first on a short chain and again on a long one: the long one is level 8."""
+    m = reference()
+    _chain(m.program_path[0], 7, "10 CALL SHARED\n")
+    (m.program_path[0] / "SHARED").write_text("10 #DEEP% = 1\n")
+    r = run("10 CALL SHARED\n20 CALL L1\nM30\n")
+    assert r["error"]["code"] == "CPL007" and r["variables"] == {}

@@ -35,8 +35,11 @@ def test_g_groups_with_one_state_in_the_kernel_sd1_and_ncf(run):
     assert (v["A%"], v["B%"], v["C$"], v["D$"], v["E%"], v["F$"]) == (64, 94, "G64", "G94", -1, "")
 
 
-def test_sd9_without_probing_is_not_switched(run):
-    assert run("1 A%=SD(9)\nM30\n")["variables"]["A%"] == 1
+def test_sd9_before_any_measuring_block_is_g75_not_active_l2229(run):
+    """L2229: SD(9)=0 "G75 not active", SD(9)=1 "G75 active" (the probe has not switched yet). Before any G75
+    ran no measurement is active: 0 (it read 1, "not switched"); a G75 whose probe never switched gives 1."""
+    v = run("1 A%=SD(9)\nN2 G75 X10 F1000\n3 B%=SD(9)\nM30\n")["variables"]
+    assert (v["A%"], v["B%"]) == (0, 1)
 
 
 def test_mca_old_number_example_l2077(run):
@@ -101,10 +104,13 @@ def test_clock_measures_a_block_l2476(run):
     assert r["variables"]["DIFF%"] == round(r["cycle_time_s"] * 1000)
 
 
-def test_date_and_time_from_the_simulated_clock(run):
+def test_date_and_time_from_the_simulated_clock_l2496(run):
+    """L2496: DATE gives the date "in DD.MM form"; ``[cpl] date_format = "DD.MM.YY"`` adds the year."""
     start = 1795442399.0  # 2026-11-23 13:59:59 UTC
     v = run("10 WAIT(,2000)\n30 A$=DATE\n40 B$=TIME\nM30\n", clock={"start": start})["variables"]
-    assert v == {"A$": "23.11.26", "B$": "14.00.01"}
+    assert v == {"A$": "23.11", "B$": "14.00.01"}
+    v = run("30 A$=DATE\nM30\n", clock={"start": start}, cpl={"date_format": "DD.MM.YY"})["variables"]
+    assert v == {"A$": "23.11.26"}
 
 
 ERRORS = [{"number": 1856, "channel": 1, "category": 2}, {"number": 1938, "channel": 2, "category": 6},

@@ -55,8 +55,9 @@ def test_fxc_example_l1767(run, tmp_path):
     assert v["R1"] == 80.0 and v["R2"] == 22.0 and v["R4"] == 40.0 and v["R5"] == 6.0 and v["R6"] == 20.0
     assert v["R3"] == pytest.approx(10.0) and v["R3I"] == pytest.approx(10.0 / 25.4)
     assert v["R7"] == 40.0
-    # the sum of the active shifts: G54 of the active table V1 (X 5, Z 1) plus the external G160 Z 40
-    assert v["X_SUM"] == 5.0 and v["Z_SUM"] == 41.0
+    # the sum of the active shifts: G54 of the active table V1 (X 5, Z 1); the external G160 Z 40 is written
+    # but not selected (G167 at power-on, group 30 of L2305), so it is not active
+    assert v["X_SUM"] == 5.0 and v["Z_SUM"] == 1.0
     # the file: X = 20 + 2 (lines 2-3), Z = 10/25.4 inch = 10 mm (line 4), U_CH1 = 0 + 20 (line 8);
     # G254 Z = 3 + 3 (lines 6-7); nothing else changed
     z = 10 / 25.4 * 25.4
@@ -90,10 +91,10 @@ def test_fxc_example_l1767_as_printed(run, tmp_path):
     tmp_path). The table file does not exist before: the machine file's zs_tables creates it."""
     r = run(FXC_AS_PRINTED, cpl={"zs_tables": {TAB: {"G54": [0.0] * 8}}})
     assert r["status"] == "ok", r["error"]
-    # the active shifts: G54 of the active table V1 (the kernel starts in G54) with Y = 80 (line 1), and the
-    # external G160 with Z = 40 (line 5); G255 (line 8) is not selected. X: nothing.
+    # the active shifts: G54 of the active table V1 (the kernel starts in G54) with Y = 80 (line 1); the
+    # external G160 with Z = 40 (line 5) and G255 (line 8) are not selected. X: nothing.
     r["variables"].pop("TAB$")
-    assert r["variables"] == {"X_SUM": 0.0, "Y_SUM": 80.0, "Z_SUM": 40.0, "R2": 22.0, "R4": 3.0, "R7": 20.0}
+    assert r["variables"] == {"X_SUM": 0.0, "Y_SUM": 80.0, "Z_SUM": 0.0, "R2": 22.0, "R4": 3.0, "R7": 20.0}
     assert records(tmp_path / "files/usr/user/NPV1.npv") == table_file(
         ("G54", 22.0, 0.0, 10 / 25.4 * 25.4, 0.0, 0.0, 0.0, 20.0, 0.0),
         ("G254", 0.0, 0.0, 3.0, 0.0, 0.0, 0.0, 0.0, 0.0), columns=ALL_AXES)
@@ -342,3 +343,24 @@ def test_tda_errors(run, stmt, code):
 @pytest.mark.parametrize("stmt", ['FXDEL(-1,1)', 'FXINS(0,1,"U")', 'A=FXC(1,54,TRUE)'])
 def test_a_table_name_that_is_no_string_is_a_type_error(run, stmt):
     assert run(f"10 {stmt}\nM30\n")["error"]["code"] == "CPL032"
+
+
+def test_external_zero_shift_acts_only_when_selected_l1773_l2305(run):
+    """L1773: FXC("Z",160,0)=40 assigns the external shift G160; G160/G167 are G group 30 of the SD(1) table
+    (L2305). Written, it does not move the axes (it did, with no G160 anywhere); G160 selects it, G260 the
+    second one instead, G167 none. MPOS is the machine position, WPOS the workpiece position (it stays)."""
+    text = ('10 FXC("X",160,0)=40 : FXC("X",260,0)=5\nN20 G0 X10\n30 WAIT\n40 A=MPOS(1) : A%=SD(1,30,1)\n'
+            'N50 G160 X10\n60 WAIT\n70 B=MPOS(1) : B%=SD(1,30,1) : BW=WPOS(1) : BS=FXC("X")\n'
+            'N80 G260 X10\n90 WAIT\n100 C=MPOS(1)\nN110 G167 X10\n120 WAIT\n130 D=MPOS(1) : D%=SD(1,30,1)\nM30\n')
+    r = run(text)
+    assert r["status"] == "ok", r["error"]
+    v = r["variables"]
+    assert (v["A"], v["A%"]) == (10.0, 167)
+    assert (v["B"], v["B%"], v["BW"], v["BS"]) == (50.0, 160, 10.0, 40.0)
+    assert v["C"] == 15.0
+    assert (v["D"], v["D%"]) == (10.0, 167)
+
+
+def test_two_external_zero_shifts_in_one_block_are_refused(run):
+    r = run("N10 G160 G260 X10\nM30\n")
+    assert r["error"]["code"] == "CPL040" and "G group 30" in r["error"]["message"]

@@ -15,9 +15,11 @@ from ..base import Dialect
 from .axiswords import axis_diagnostics
 from .checker import check
 from .codegen import generate
+from .lexer import ETX
 from .linker import link
 from .linktables import LinkTables
 from .runtime import CplRuntime
+from .unlinked import din_call_warnings
 
 _CPL_LINE = re.compile(r"^\s*\d+\s*(REM|IF|FOR|WHILE|GOTO|CALL|DIM|CASE|[A-Z#@][A-Z0-9_]*[%!?$]?\s*(\(.*\))?\s*=)",
                        re.I)
@@ -27,7 +29,10 @@ class CplDialect(Dialect):
     id = "cpl"
 
     def sniff(self, text: str) -> int:
-        lines = [ln for ln in program_lines(text)[:200] if ln.strip()]
+        lines = [ln for ln in program_lines(text) if ln.strip()]
+        if lines and lines[-1].startswith(ETX):  # the control's end-of-file marker: a file it kept (L3867)
+            return 100
+        lines = lines[:200]
         if not lines:
             return 0
         hits = sum(1 for ln in lines if _CPL_LINE.match(ln))
@@ -56,7 +61,7 @@ class CplDialect(Dialect):
         for ln in res.units.values():
             lines = program_lines(text) if ln.prog.path == path else read_lines(ln.prog.path)
             diags += axis_diagnostics(ln.prog, machine.axis_names, lines)
-        return diags
+        return diags + din_call_warnings(res, machine)
 
     def run(self, path, text, session):
         tables = LinkTables(session.options.state_dir / "link", session.machine.file_root)

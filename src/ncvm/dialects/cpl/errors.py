@@ -34,11 +34,11 @@ CODES: dict[str, tuple[str, str]] = {
     "CPL020": ("VARIABLE NOT ASSIGNED", "§2.5 NUL (digest §4.4)"),
     "CPL021": ("INVALID ASSIGNMENT", "§5 L3545"),
     "CPL022": ("INVALID FIELD LIMIT", "§5.1 L3358"),
-    "CPL023": ("INVALID PARAMETER", "§5.2 L3390"),
+    "CPL023": ("INVALID PARAMETER", "§5.2 L3390, §6 L4237-4286, graphics value ranges"),
     "CPL024": ("CHARACTER FIELD NOT ASSIGNED", "§5.3 L3427"),
     "CPL025": ("inadmissible assignment to a non-dimensioned string variable", "§5 L3609-3614, L3789"),
     "CPL026": ("invalid variable", "§3.4 L1159 (PDIM)"),
-    "CPL027": ("INVALID INTEGER VALUE", "digest §4.2"),
+    "CPL027": ("INVALID INTEGER VALUE", "§6.4 L4130 (INP#), digest §4.2"),
     "CPL028": ("division by zero", "runtime error"),
     "CPL029": ("runtime error", "§2.5.1 (SQRT of a negative number, function domain)"),
     "CPL030": ("sub-program excluded from linking (DIN) contains CPL", "§3.3 L1104"),
@@ -52,6 +52,7 @@ CODES: dict[str, tuple[str, str]] = {
     "CPL038": ("declaration file error", "§2.4.3 L615-637"),
     "CPL039": ("WAIT condition can never be met (simulator deadlock)", "digest §5.10"),
     "CPL041": ("SERCOS SERVICE CHANNEL IS LOCKED", "§4.9 L2156"),
+    "CPL042": ("INVALID FLOAT VALUE", "§6.4 L4130 (INP#), a REAL or DOUBLE result beyond its range"),
     "CPL040": ("runtime error", "chapter 4: system data not available or not allowed (digest §7.1)"),
 }
 

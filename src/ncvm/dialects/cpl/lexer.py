@@ -108,11 +108,20 @@ class CplBlock:
     error: LexError | None = None  # the first lexical error in one of its lines (the block is not parsed)
 
 
+#: the control's end-of-file marker: every file it keeps ends with ETX LF after the last record (manual §6.1.2
+#: L3867), so does a program CPL wrote itself with PRN# (L4003, L4057)
+ETX = "\x03"
+
+
 def classify(text: str) -> list[Line]:
+    """The lines of a program up to the end-of-file marker: a line starting with ETX ends the usable data
+    (L3867); what follows it is not part of the program."""
     out: list[Line] = []
     cont = False
     for i, raw in enumerate(lines(text), 1):
         line = raw.rstrip("\r\n")
+        if line.startswith(ETX):
+            break
         stripped = line.strip()
         if not stripped:
             out.append(Line("blank", None, "", 0, i))

@@ -21,6 +21,8 @@ from .options import options
 from .parser import parse_program
 
 MAX_CASE_NESTING = 10
+#: sub-program levels below the main program (manual §2.1 L325: "CPL permits a maximum 7-fold nesting depth")
+MAX_SUB_NESTING = 7
 SUB_EXTENSIONS = (".cpl", ".CPL")  # names are case-sensitive (§6.1.1); the extension is ncvm's, in either case
 
 #: how often a program was really linked (tests check that unchanged programs are taken from the cache)
@@ -233,7 +235,7 @@ def _collect(ln: Linked) -> None:
 class LinkResult:
     main: Linked
     units: dict  # resolved path -> Linked
-    resolve: dict  # (caller path, name as written) -> resolved path, or None for an unlinked (DIN) program
+    resolve: dict  # (caller path, name as written) -> resolved path; a CALL ... DIN is found when it runs
     diagnostics: list
 
 
@@ -248,6 +250,8 @@ def link(path: str, text: str, machine: Machine, tables=None) -> LinkResult:
 
     def visit(ln: Linked, chain: list[str]) -> None:
         for name, din, s in ln.calls:
+            if din:  # excluded from linking (§3.3 L1097): found when it is called, so a program may write it first
+                continue
             found = machine.find_program(name, SUB_EXTENSIONS, ignore_case=False)
             if found is None:
                 diags.append(diag("CPL005", f"{name} (program path: "
@@ -256,8 +260,6 @@ def link(path: str, text: str, machine: Machine, tables=None) -> LinkResult:
                 continue
             sub_path = str(found)
             resolve[(ln.prog.path, name)] = sub_path
-            if din:
-                continue
             if sub_path in chain or Path(sub_path).resolve() == Path(ln.prog.path).resolve():
                 diags.append(diag("CPL006", f"{name} calls itself (via {' -> '.join(Path(c).name for c in chain)})",
                                   ln.prog.path, s.line, s.col or None, s.cpl))
@@ -277,4 +279,34 @@ def link(path: str, text: str, machine: Machine, tables=None) -> LinkResult:
             visit(sub, chain + [sub_path])
 
     visit(main, [path])
+    diags.extend(_too_deep(main, units, resolve))
     return LinkResult(main, units, resolve, diags)
+
+
+def _too_deep(main: Linked, units: dict, resolve: dict) -> list[Diagnostic]:
+    """CPL007 at the call that opens an 8th sub-program level (manual §2.1 L325: at most 7-fold nesting),
+    found in the linked call chains before anything runs; a CALL ... DIN and what it reaches are not linked,
+    so only the run finds a level they add."""
+    longest: dict[str, tuple[int, tuple]] = {}  # path -> (levels below it, ((caller, call, callee name), ...))
+
+    def below(ln: Linked) -> tuple[int, tuple]:
+        path = ln.prog.path
+        if path not in longest:
+            longest[path] = (0, ())  # the call graph has no cycle here (CPL006 was reported otherwise)
+            best = (0, ())
+            for name, din, s in ln.calls:
+                sub = units.get(resolve.get((path, name))) if not din else None
+                if sub is not None:
+                    depth, chain = below(sub)
+                    if depth + 1 > best[0]:
+                        best = (depth + 1, ((ln, s, name),) + chain)
+            longest[path] = best
+        return longest[path]
+
+    depth, chain = below(main)
+    if depth <= MAX_SUB_NESTING:
+        return []
+    caller, s, name = chain[MAX_SUB_NESTING]
+    via = " -> ".join(Path(c.prog.path).name for c, _s, _n in chain[:MAX_SUB_NESTING + 1])
+    return [diag("CPL007", f"the call of {name} would be level {MAX_SUB_NESTING + 1} (via {via})",
+                 caller.prog.path, s.line, s.col or None, s.cpl)]

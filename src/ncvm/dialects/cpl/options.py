@@ -30,8 +30,9 @@ class Options:
     spindle: dict[str, float] = field(default_factory=dict)  # min, max, group; missing ones at their default
     areas: list[dict] = field(default_factory=list)  # work areas and dead ranges
     language: int = 1
-    date_format: str = "DD.MM.YY"
+    date_format: str = "DD.MM"  # DATE as L2496 shows it; "DD.MM.YY" adds the year
     file_space: int = 1 << 30  # bytes the files a program writes may grow by in one run
+    file_zeros: str = "suppress"  # PRN# to files drops trailing zeros (L4001); "keep" keeps them
 
 
 def options(machine) -> Options:

@@ -33,6 +33,9 @@ class ParseError(Exception):
 _PROGRAM_NAME = re.compile(r"(?!\.\.?$)[A-Za-z0-9_.]+")
 
 
+COMPARISONS = ("=", "<>", "<", ">", "<=", ">=")
+
+
 class BlockParser:
     """Parses the statements of one CPL block into the program's flat list."""
 
@@ -393,10 +396,16 @@ class BlockParser:
     def expr(self):
         left = self.simple()
         t = self.peek()
-        if t is not None and t.kind == "op" and t.val in ("=", "<>", "<", ">", "<=", ">="):
+        if t is not None and t.kind == "op" and t.val in COMPARISONS:
             self.next()
             right = self.simple()
             left = A.Bin(t.val, left, right)
+            again = self.peek()
+            if again is not None and again.kind == "op" and again.val in COMPARISONS:
+                # AND/OR/XOR bind tighter than a comparison (Pascal levels, §2.5.1): A%>1 AND B%<2 reads as
+                # A% > (1 AND B%) < 2 (L851, L872; the manual parenthesises every compound condition, L4648)
+                self.error("CPL001", "a second comparison: comparisons joined by AND, OR or XOR need "
+                                     "parentheses, e.g. (A%>1) AND (B%<2)", again)
         return left
 
     def simple(self):

@@ -41,7 +41,7 @@ from .io import strings as S
 from .io.context import CplIO
 from .io.errors import CplRuntimeError
 from .io.values import CplText, Double
-from .linker import SUB_EXTENSIONS, LinkResult, call_table
+from .linker import MAX_SUB_NESTING, SUB_EXTENSIONS, LinkResult, call_table
 from .options import options
 from .perm import DeclError, Permanents
 from .system import SYSTEM_PROCS
@@ -55,7 +55,6 @@ from .system.sercos import SERCOS_EVENTS
 from .unlinked import link_late, run_unlinked
 
 _EXTENDED = re.compile(r"\s*([A-Za-z][A-Za-z0-9_]*[0-9_][A-Za-z0-9_]*)\s*=\s*([-+]?(?:\d+\.?\d*|\.\d+))\s*$")
-MAX_NESTING = 7  # sub-program levels below the main program (manual §2.1 L323)
 #: blocks prepared ahead of execution without ``[cpl] lookahead`` (the manual gives no size; docs/decisions.md)
 BLOCK_BUFFER = 20_000
 
@@ -298,7 +297,7 @@ class CplRuntime:
         elif isinstance(e, ValueError):
             code, detail = "CPL029", "argument outside the domain of the function (SQRT of a negative number?)"
         elif isinstance(e, OverflowError):
-            code, detail = "CPL027", "number too large"
+            code, detail = "CPL042", "number too large"  # a float result beyond the DOUBLE range
         elif isinstance(e, RecursionError):
             code, detail = "CPL007", ""
         elif isinstance(e, MemoryError):  # the run's memory limit (runtime.memory), reported where it was reached
@@ -327,7 +326,7 @@ class CplRuntime:
     # -- sub-programs -----------------------------------------------------------------------
     def call(self, caller: str, name: str, args: tuple, din: bool, line: int) -> None:
         stack, active, units = self.stack, self.active, self.linked.units
-        if len(stack) >= MAX_NESTING:
+        if len(stack) >= MAX_SUB_NESTING:
             raise CplError("CPL007", f"CALL {name}")
         target = self.linked.resolve.get((caller, name))
         if target is None:

@@ -9,15 +9,15 @@ such a program reaches was not linked with the main program; it is linked when i
 
 from __future__ import annotations
 
-from ...diagnostics import CompileFailed
+from ...diagnostics import CompileFailed, Diagnostic
 from ...nc.block import Block
 from ...nc.canon import Src
 from ...source import read_text
 from . import ast as A
 from .axiswords import CODE as AXIS_CODE
 from .axiswords import detail, refused_blocks
-from .errors import CplError, fault
-from .linker import link, link_one
+from .errors import CplError, diag, fault
+from .linker import SUB_EXTENSIONS, call_table, link, link_one
 from .system.gfuncs import prepare
 from .system.transforms import PARAMETER_G
 
@@ -28,19 +28,9 @@ def run_unlinked(rt, target: str, name: str) -> None:
     """Run the DIN blocks of ``target`` on the runtime ``rt`` (its queue, its calls, its modal sub-program)."""
     text = read_text(target)
     ln = link_one(target, text, rt.calls)
-    for s in ln.prog.stmts:
-        if not isinstance(s, A.NcBlock):
-            _excluded(rt, target, f"{name} contains CPL blocks", s)
-        if any(w.expr is not None for w in s.words) or s.loose:
-            _excluded(rt, target, f"{name} uses CPL expressions [ ] in an NC block (line {s.line})", s)
-        if s.call is not None:
-            try:
-                _constants(s.call[1], name, s.line)
-            except CplError as e:
-                _excluded(rt, target, e.detail, s)
-    if ln.prog.diagnostics:
-        d = ln.prog.diagnostics[0]
-        _excluded(rt, target, f"{name} contains CPL blocks", A.Stmt(d.span.line, d.span.column or 1))
+    found = cpl_in(ln, name)
+    if found is not None:
+        _excluded(rt, target, *found)
     refused = refused_blocks(ln.prog, rt.kernel.axis_of)
     for s in ln.prog.stmts:
         if s.skip and rt.block_skip:
@@ -68,6 +58,51 @@ def run_unlinked(rt, target: str, name: str) -> None:
             rt.drain()
         if s.ends:
             return
+
+
+def cpl_in(ln, name: str) -> tuple[str, A.Stmt] | None:
+    """The first CPL element of a program excluded from linking, as (what it is, where), or None."""
+    for s in ln.prog.stmts:
+        if not isinstance(s, A.NcBlock):
+            return f"{name} contains CPL blocks", s
+        if any(w.expr is not None for w in s.words) or s.loose:
+            return f"{name} uses CPL expressions [ ] in an NC block (line {s.line})", s
+        if s.call is not None:
+            try:
+                _constants(s.call[1], name, s.line)
+            except CplError as e:
+                return e.detail, s
+    if ln.prog.diagnostics:
+        d = ln.prog.diagnostics[0]
+        return f"{name} contains CPL blocks", A.Stmt(d.span.line, d.span.column or 1)
+    return None
+
+
+def din_call_warnings(res, machine) -> list[Diagnostic]:
+    """What ``ncvm check`` can say of the CALL ... DIN sub-programs, which are not linked (L1097) and fail
+    only when the call runs: one that holds CPL (CPL030, L1104), one not there (yet: a program may write it
+    before the call). Warnings: the run is not refused for them."""
+    calls = call_table(machine)
+    out = []
+    for ln in res.units.values():
+        for name, din, s in ln.calls:
+            if not din:
+                continue
+            found = machine.find_program(name, SUB_EXTENSIONS, ignore_case=False)
+            if found is None:
+                detail, code = f"{name} is not there now; CALL ... DIN looks for it when the call runs", "CPL005"
+            else:
+                try:
+                    hit = cpl_in(link_one(str(found), read_text(found), calls), name)
+                except OSError:
+                    continue  # the run reports it when the call is reached
+                if hit is None:
+                    continue
+                detail, code = f"{hit[0]}: the run stops when the call is reached", "CPL030"
+            d = diag(code, detail, ln.prog.path, s.line, s.col or None, s.cpl)
+            d.severity = "warning"
+            out.append(d)
+    return out
 
 
 def _excluded(rt, target: str, detail: str, s: A.Stmt):

@@ -26,13 +26,13 @@ def f32(v):
     try:
         r = _unpack(_pack(v))[0]
     except OverflowError:
-        raise CplError("CPL029", "value outside the REAL range (+/-1e38)") from None
+        raise CplError("CPL042", "value outside the REAL range (+/-1e38)") from None
     except struct.error:
         if v is None:
             raise TypeError("NUL") from None
         raise CplError("CPL021", f"{type_name(v)} value where a number is expected") from None
     if r - r != 0.0:  # infinity or NaN: a DOUBLE result beyond the REAL range packs without OverflowError
-        raise CplError("CPL029", "value outside the REAL range (+/-1e38)")
+        raise CplError("CPL042", "value outside the REAL range (+/-1e38)")
     return r
 
 
@@ -76,7 +76,7 @@ def to_real(v):
 def to_double(v):
     if v.__class__ is float:
         if v - v != 0.0:  # infinity or NaN: the result left the DOUBLE range
-            raise CplError("CPL029", "value outside the DOUBLE range (+/-1e308)")
+            raise CplError("CPL042", "value outside the DOUBLE range (+/-1e308)")
         return v
     if v.__class__ is int:
         return float(v)

@@ -23,7 +23,7 @@ def test_cplio_for_session(tmp_path):
     io.files.PRN(0, "#", 123)  # overflow: a warning in the output
     io.screen.BMP(0, 0, "nothing")
     io.end_program(png=tmp_path / "end.png")
-    assert (tmp_path / "files" / "LOG").read_text(encoding="latin-1") == "X1.500\n\x03\n"
+    assert (tmp_path / "files" / "LOG").read_text(encoding="latin-1") == "X1.5\n\x03\n"
     assert session.output.lines() == ["MSG 7", "N=123", "SFK [1:A] [2:B]", "warning CPL620: PRN FORMAT INCORRECT: *", "*",
                               "warning CPL803: cplbmp\\nothing.bmp is not existing"]
     assert (tmp_path / "end.png").stat().st_size > 1000

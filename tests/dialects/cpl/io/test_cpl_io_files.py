@@ -234,7 +234,7 @@ def test_ljust_for_nc_programs(fs):
     fs.mode.NJUST()
     fs.PRN(1, "N20 X", 1.5)
     fs.CLOSE(1)
-    assert content(fs, "P1") == "N10 X1.500 Y20 Z-3.250\nN20 X   1.500\n" + ETX
+    assert content(fs, "P1") == "N10 X1.5 Y20 Z-3.250\nN20 X   1.5  \n" + ETX  # L4001
 
 
 def test_f9_inp_nul_without_moving_and_string_takes_its_dim(fs):
@@ -303,7 +303,7 @@ def test_f12_close_example_positions_round_trip(fs):
     a = dim(35)
     fs.INP(1, a)
     fs.CLOSE(1)
-    assert a.text == "X AXIS  12.500Y AXIS  -3.000"
+    assert a.text == "X AXIS  12.5  Y AXIS  -3    "  # L4001: trailing zeros suppressed
 
 
 def test_f13_filepos_sequential(fs):

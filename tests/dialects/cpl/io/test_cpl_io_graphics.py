@@ -103,15 +103,15 @@ def test_colour_tables_and_col():
     assert (s.text_color, s.text_bg) == (6, 5)
     s.COL(None, None, None, None, 1, 4)
     assert (s.softkey_color, s.softkey_bg) == (1, 4)
-    assert error_of(s.COL, 8).code == "CPL801"
-    assert error_of(s.COL, None, None, None, 4).code == "CPL801"
-    assert error_of(s.RGB, 0, 256, 0, 0).code == "CPL801"
+    assert error_of(s.COL, 8).code == "CPL023"
+    assert error_of(s.COL, None, None, None, 4).code == "CPL023"
+    assert error_of(s.RGB, 0, 256, 0, 0).code == "CPL023"
 
 
 def test_gwd_mwd_checks_and_clipping():
     s = Screen()
     for bad in ((0, 633, 0, 100), (10, 10, 0, 100), (0, 100, 50, 375), (-1, 100, 0, 100)):
-        assert error_of(s.GWD, *bad).code == "CPL801"
+        assert error_of(s.GWD, *bad).code == "CPL023"
     s.GWD(100, 500, 100, 350)
     assert error_of(s.MWD, 0, 400, 0, 100).code == "CPL802"
     s.MWD(0, 40, 0, 25)
@@ -134,7 +134,7 @@ def test_gmd_erase_and_toggle():
     s.LIN(0, 9, 100, 9)
     row = [px(s, x, 9) == s.rgb(1) for x in range(0, 100)]
     assert row[:6] == [True] * 6 and row[6:10] == [False] * 4
-    assert error_of(s.GMD, 5).code == "CPL801"
+    assert error_of(s.GMD, 5).code == "CPL023"
 
 
 def test_cir_full_circle_omitted_values_repeat():
@@ -146,7 +146,7 @@ def test_cir_full_circle_omitted_values_repeat():
     assert px(s, 280, 160) == s.rgb(1)
     s.CIR(100, None, None)
     assert px(s, 130, 160) == s.rgb(1)
-    assert error_of(Screen().CIR, None, 1, 1).code == "CPL801"
+    assert error_of(Screen().CIR, None, 1, 1).code == "CPL023"
 
 
 def test_fil_with_contour_colour_and_clear_commands():
@@ -157,7 +157,7 @@ def test_fil_with_contour_colour_and_clear_commands():
     s.FIL(30, 30, 0, 5, 3)
     assert px(s, 30, 30) == s.rgb(5) and px(s, 11, 11) == s.rgb(5) and px(s, 10, 10) == s.rgb(3)
     assert px(s, 70, 30) == s.rgb(0)
-    assert error_of(s.FIL, 30, 30, 6, 5).code == "CPL801"
+    assert error_of(s.FIL, 30, 30, 6, 5).code == "CPL023"
     s.GWD(0, 40, 0, 40)
     s.CLR()
     assert px(s, 30, 30) == s.rgb(0) and px(s, 50, 50) == s.rgb(5)
@@ -188,7 +188,7 @@ def test_d9_gpr_labels_along_a_sine(tmp_path):
     assert np.all(box == text, axis=2).sum() > 20
     assert not np.all(s.canvas[GRAPH_TOP - 175 - 9: GRAPH_TOP - 175 + 3, 10:60] == text, axis=2).any()
     assert s.output_lines()[:2] == ["pixel", "1"]
-    assert error_of(s.GPR, 700, 0, "X").code == "CPL801"
+    assert error_of(s.GPR, 700, 0, "X").code == "CPL023"
     s.save_png(tmp_path / "d9.png")
 
 
@@ -207,7 +207,7 @@ def test_bmp_raster_operations_and_missing_file(tmp_path):
     assert px(s, 11, 99) == (255, 0, 255)
     s.BMP(0, 0, "missing")  # into the softkey band; a missing file warns and the program goes on
     assert [w.message for w in s.warnings] == ["cplbmp\\missing.bmp is not existing"]
-    assert error_of(s.BMP, 0, 0, "logo", 9).code == "CPL801"
+    assert error_of(s.BMP, 0, 0, "logo", 9).code == "CPL023"
 
 
 def test_screen_png_with_text_softkeys_and_fonts(tmp_path):

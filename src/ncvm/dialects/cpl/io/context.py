@@ -40,7 +40,7 @@ class CplIO:
     def for_session(cls, session, typ2: bool = False) -> "CplIO":
         """The I/O of a run: the machine's file root and clock, output to say; the key script of
         ``--keys`` or, with ``keyboard``, the operator at the terminal on stdin; the file space of
-        ``[cpl] file_space``; the editor block of
+        ``[cpl] file_space``, the zeros of ``[cpl] file_zeros``; the editor block of
         ``--editor-block``, whose text after the run is the result's ``editor_block``; the MMC client of
         ``RunOptions.mmc_client``."""
         options = session.options
@@ -53,7 +53,9 @@ class CplIO:
             keys = TerminalKeys(sys.stdin.fileno(), sys.stderr)
         io = cls(session.machine.file_root, clock=session.machine.clock, keys=keys, say=session.say, typ2=typ2,
                  private=(options.state_dir, *session.machine.own_files()))
-        io.files.space = cpl_options(session.machine).file_space
+        cpl = cpl_options(session.machine)
+        io.files.space = cpl.file_space
+        io.files.trim_zeros = cpl.file_zeros == "suppress"
         if isinstance(keys, TerminalKeys):
             keys.view = io.screen.text_view
         io.mmc.attach(options.mmc_client)

@@ -1,9 +1,10 @@
 """The CPL run-time errors and warnings of manual chapters 5-9, as one exception class and a table.
 
 The manual names these errors by text only (it numbers just 2153 and 2167), so each
-gets a stable project code: the chapter-5 string errors share the language's codes
-(CPL021-CPL025, see ``cpl/errors.py``), the others are grouped by manual chapter (CPL6xx
-files, CPL7xx dialog, CPL8xx graphics, CPL9xx MMC); the message is the manual's text. The CPL front end
+gets a stable project code. One error has one code: the chapter-5 string errors, INVALID PARAMETER
+(also of the graphics functions), INVALID INTEGER VALUE and INVALID FLOAT VALUE share the language's codes
+(CPL021-CPL025, CPL027, CPL042, see ``cpl/errors.py``), the others are grouped by manual chapter (CPL6xx files, CPL7xx dialog,
+CPL8xx graphics, CPL9xx MMC); the message is the manual's text. The CPL front end
 turns :class:`CplRuntimeError` into :class:`ncvm.diagnostics.RuntimeFault`
 (``RuntimeFault(err.code, err.message, span, stack)``).
 """
@@ -28,8 +29,8 @@ ERRORS: dict[str, tuple[str, str, str]] = {
     "ILLEGAL_FILE_SIZE": ("CPL602", "ILLEGAL FILE SIZE", "L3918"),
     "INVALID_COMPONENT_LENGTH": ("CPL603", "INVALID COMPONENT LENGTH", "L3921, L3935, L3993"),
     "BLOCK_EXCEEDS_1024": ("CPL604", "BLOCK EXCEEDS 1024 BYTES", "L4033, L4059"),
-    "INVALID_INTEGER_VALUE": ("CPL605", "INVALID INTEGER VALUE", "L4130"),
-    "INVALID_FLOAT_VALUE": ("CPL606", "INVALID FLOAT VALUE", "L4130"),
+    "INVALID_INTEGER_VALUE": ("CPL027", "INVALID INTEGER VALUE", "L4130"),  # the language's error
+    "INVALID_FLOAT_VALUE": ("CPL042", "INVALID FLOAT VALUE", "L4130"),  # the language's error
     "INVALID_FILE_NUMBER": ("CPL607", "INVALID FILE NUMBER", "L4209, L4276, L4315"),
     "INVALID_COMPONENT": ("CPL608", "INVALID COMPONENT", "L4282"),
     "INVALID_FILE_NAME": ("CPL609", "INVALID FILE NAME", "L4387"),
@@ -50,7 +51,7 @@ ERRORS: dict[str, tuple[str, str, str]] = {
     "KEY_SCRIPT_EMPTY": ("CPL705", "waiting for a key, but the key script is exhausted", "(simulator)"),
     "KEY_SCRIPT_SYNTAX": ("CPL706", "key script line not understood", "(simulator)"),
     # chapter 8, graphics
-    "INVALID_GRAPHICS_VALUE": ("CPL801", "INVALID PARAMETER", "L4929, L4958, L4994, L5063 (value range)"),
+    "INVALID_GRAPHICS_VALUE": ("CPL023", "INVALID PARAMETER", "L4929, L4958, L4994, L5063 (value range)"),
     "WINDOW_RATIO": ("CPL802", "MWD side ratio differs from the GWD window", "L5007"),
     "BITMAP_MISSING": ("CPL803", "cplbmp\\{name}.bmp is not existing", "L5153"),
     # chapter 9

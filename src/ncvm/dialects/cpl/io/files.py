@@ -106,6 +106,9 @@ class CplFiles:
     #: bytes the program's files may grow by in this run (``[cpl] file_space``; 0: no limit): the
     #: controller's file memory, so that a runaway PRN# loop ends with FILE MEMORY FULL, not a full disk
     space: int = 0
+    #: numbers written to files lose their trailing zeros (L4001); ``[cpl] file_zeros = "keep"`` keeps the
+    #: fixed decimals of STR$ and DSP
+    trim_zeros: bool = True
     grown: int = 0  # what the run's writes added to its files, less what REWRITE and shorter files gave back
     handles: dict[int, Handle] = field(default_factory=dict)
     #: the PRN#(0) lines and warnings, kept only while no ``message`` / ``warn`` listener takes them
@@ -379,7 +382,7 @@ class CplFiles:
         h = self._handle(n)
         if not h.writing:
             raise fail("WRONG_ACCESS", f"PRN# needs OPENW ({h.name})")
-        text = self._format(items)
+        text = self._format(items, trim=self.trim_zeros)
         segments = text.split("\r")  # CHR$(13) starts a new record
         for i, seg in enumerate(segments):
             last = i == len(segments) - 1
@@ -415,8 +418,8 @@ class CplFiles:
             if h.off >= h.reclen:
                 h.rec, h.off = rec + 1, 0
 
-    def _format(self, items) -> str:
-        result = format_items(items, ljust=self.mode.ljust, on_overflow="star")
+    def _format(self, items, trim: bool = False) -> str:
+        result = format_items(items, ljust=self.mode.ljust, on_overflow="star", trim=trim)
         if result.overflows:
             self._warn(warning("PRN_FORMAT_INCORRECT", result.text))
         return result.text

@@ -77,8 +77,10 @@ def template_shape(template: str) -> tuple[int, int]:
     return len(before), len(after)
 
 
-def standard_text(value, kind: str, *, ljust: bool = False) -> str:
-    """``value`` in the standard format of its type (widened, never cut, if it is too large)."""
+def standard_text(value, kind: str, *, ljust: bool = False, trim: bool = False) -> str:
+    """``value`` in the standard format of its type (widened, never cut, if it is too large). ``trim``: the
+    output to files, whose trailing zeros are suppressed (L4001): blanks in the formatted field, so the point
+    keeps its column, nothing under LJUST; a point with no decimals left goes too."""
     if kind == "B":
         return "TRUE" if value else "FALSE"
     if kind == "N":
@@ -89,6 +91,11 @@ def standard_text(value, kind: str, *, ljust: bool = False) -> str:
     text = format_number(value, kind, int_digits, decimals, pad=not ljust)
     if text is None:
         text = format_number(value, kind, 400, decimals, pad=False) or "*"
+    if trim and decimals and "." in text:
+        width = len(text)
+        text = text.rstrip("0").rstrip(".")
+        if not ljust:
+            text = text.ljust(width)
     return text.lstrip() if ljust else text
 
 
@@ -98,12 +105,13 @@ class Formatted:
     overflows: int  # templates that got '*' because the value did not fit
 
 
-def format_items(items: Iterable, *, ljust: bool = False, on_overflow: str = "star") -> Formatted:
+def format_items(items: Iterable, *, ljust: bool = False, on_overflow: str = "star", trim: bool = False) -> Formatted:
     """Concatenate the arguments of PRN#/DSP/PRN/STR$ by the template-queue rule.
 
     ``on_overflow``: ``"star"`` fills a template whose value does not fit with ``*`` and counts
     it (PRN# then warns PRN FORMAT INCORRECT); ``"error"`` raises ``format not permitted`` (DSP).
-    ``ljust``: LJUST is active, numbers lose their leading blanks.
+    ``ljust``: LJUST is active, numbers lose their leading blanks. ``trim``: numbers in their standard format
+    lose their trailing zeros (output to files, L4001); a template keeps the decimals it asks for.
     """
     pieces: list[str] = []
     waiting: deque[tuple[int, str]] = deque()
@@ -132,7 +140,7 @@ def format_items(items: Iterable, *, ljust: bool = False, on_overflow: str = "st
                 text = "*" * len(template)
             pieces[index] = text
         else:
-            pieces.append(standard_text(item, kind, ljust=ljust))
+            pieces.append(standard_text(item, kind, ljust=ljust, trim=trim))
     return Formatted("".join(pieces), overflows)
 
 

@@ -269,11 +269,12 @@ class Screen(Graphics):
     def _write(self, line: int, column: int, text: str) -> None:
         style = self._style()
         row = line - 1
-        for i, ch in enumerate(text[: COLUMNS - column + 1]):  # cut at the right edge, no error
+        shown = text[: COLUMNS - column + 1]  # cut at the right edge (column 79, L4547), no error
+        for i, ch in enumerate(shown):
             c = column - 1 + i
             self.chars[row][c] = ch
             self.cells[row, c] = (self.text_color, self.text_bg, style, 1)
-        self._log(text)
+        self._log(shown)  # the output says what the screen shows
 
     def grid_lines(self) -> list[str]:
         """The 46 text lines as shown (trailing blanks dropped)."""

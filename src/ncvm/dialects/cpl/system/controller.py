@@ -17,7 +17,6 @@ from ....nc.probe import ProbeLatch
 from ..options import Options, options
 from .gfuncs import NcFuncs
 
-#: every key [cpl] may hold (lookahead and calls belong to the language runtime, file_space to its files)
 ZS_ROWS = tuple(f"G{b + i}" for b in (54, 154, 254) for i in range(6))
 EXTERNAL = ("G160", "G260", "G360")
 TDA_FIELDS = 49
@@ -64,7 +63,7 @@ class Controller:
     spindle: dict[str, float] = field(default_factory=lambda: {"min": 0.0, "max": 8000.0, "group": 0})
     message: str = ""  # the last message programmed with MSG and executed (MCODS 28)
     language: int = 1
-    date_format: str = "DD.MM.YY"
+    date_format: str = "DD.MM"
     g_programmed: NcFuncs = field(default_factory=NcFuncs)  # Typ3 G functions at block preparation
     g_active: NcFuncs = field(default_factory=NcFuncs)  # ... and as executed
     areas: list[dict] = field(default_factory=list)  # work areas and dead ranges 1..10 (SD 200)
@@ -73,8 +72,8 @@ class Controller:
     ncs: dict[str, dict] = field(default_factory=lambda: {"mode": {}, "selected": {}, "return": {}, "recording": {},
                                                           "reselect": {}})
     store: object = None
-    #: what the last measuring block measured (G75 by default: PROBE, CPROBE read it)
-    probe: ProbeLatch = field(default_factory=lambda: ProbeLatch(75))
+    #: what the last measuring block measured (PROBE, CPROBE read it); code 0: none has run
+    probe: ProbeLatch = field(default_factory=lambda: ProbeLatch(0))
     #: the "probe" and "fixed_stop" scenario events no measuring block has used yet (one per block)
     probe_events: EventQueue = field(default_factory=EventQueue)
 

@@ -18,6 +18,10 @@ the seeds; the forms below are recorded in docs/decisions.md:
 * ``G145``..``G845`` select an external, ``G147``..``G847`` a general tool compensation (values: TC with
   table 0); ``G146`` deselects both. Stored only (digest §12 tier 2); MCODS 51/54 read them.
 * ``M40``..``M44``, ``M48``: the spindle gear range (MCODS 64-67); the M function also goes to the PLC.
+* ``G160``, ``G260``, ``G360`` select the external zero shift of that number (FXC with table 0 writes its
+  values, L1759-1773), ``G167`` deselects it (G group 30 of the SD(1) table, L2305): one is active at a
+  time, as one external tool compensation G145..G845 is; at power-on G167. Only the selected shift moves
+  the axes.
 
 A block carrying one of them is split at preparation: the programmed state changes at once (SD index
 1, "last programmed"); the rest of the block is queued as a :class:`Typ3Block` that carries the state,
@@ -35,7 +39,10 @@ from .context import SystemContext
 
 WORD_CODES = frozenset((130, 131, 168, 268, 328, 580, 581))  # their block's words are their values
 COMPENSATIONS = frozenset([146] + [g + 45 for g in range(100, 900, 100)] + [g + 47 for g in range(100, 900, 100)])
-TYP3_G = WORD_CODES | COMPENSATIONS
+#: G group 30: the external zero shifts G160/G260/G360 and G167, no external shift
+EXTERNAL_ZS = frozenset((160, 260, 360, 167))
+NO_EXTERNAL_ZS = 167
+TYP3_G = WORD_CODES | COMPENSATIONS | EXTERNAL_ZS
 GEARS = CPL_GEARS.codes  # M40 automatic gear range, M41-M44 gear 1-4, M48 neutral (nc/spindle.py)
 INCH = 25.4
 N_LOGICAL = 8  # the shifts are kept for logical axes 1..8 (SD index range 1..8)
@@ -56,6 +63,7 @@ class NcFuncs:
     external: int = 0  # selected external tool compensation G145..G845, 0 = none
     general: int = 0  # selected general tool compensation G147..G847, 0 = none
     gear: int = 40  # spindle gear range (M40 automatic at power-on)
+    external_zs: int = NO_EXTERNAL_ZS  # selected external zero shift G160/G260/G360, G167 = none
 
 
 class Typ3Block(Block):
@@ -80,6 +88,11 @@ def prepare(rt: SystemContext, blk: Block) -> Block:
     for mc in blk.m:
         if mc in GEARS:
             st = replace(st, gear=mc)
+    shifts = [g for g in blk.g if g in EXTERNAL_ZS]
+    if len(shifts) > 1:
+        raise CplError("CPL040", f"G{shifts[0]} and G{shifts[1]} cannot stand in one block (G group 30)")
+    if shifts:
+        st = replace(st, external_zs=shifts[0])
     for g in blk.g:
         if g in COMPENSATIONS:
             st = _compensation(st, g)
@@ -156,14 +169,22 @@ def activate(rt: SystemContext, kernel, blk: Typ3Block) -> None:
 
 
 def additive(rt: SystemContext, kernel, state: NcFuncs) -> list[float]:
-    """The kernel's additive offsets: external shifts G160/G260/G360 plus the shifts G168 and G268."""
+    """The kernel's additive offsets: the selected external shift (G160/G260/G360) plus G168 and G268."""
     c = rt.ctl
     logical = [a.name for a in c.channel_axes(c.channel)]
+    external = external_shift(c, state)
     add = [0.0] * kernel.n_axes
     for i, name in enumerate(kernel.axis_names):
         if name in logical and (n := logical.index(name)) < N_LOGICAL:
-            add[i] = sum(vec[n] for vec in c.external.values()) + state.g168[n] + state.g268[n]
+            add[i] = external[n] + state.g168[n] + state.g268[n]
     return add
+
+
+def external_shift(c, state: NcFuncs) -> list[float]:
+    """The external zero shift ``state`` selects, logical axes 1..8 in mm (all 0 under G167)."""
+    if state.external_zs == NO_EXTERNAL_ZS:
+        return [0.0] * N_LOGICAL
+    return list(c.external[f"G{state.external_zs}"])
 
 
 def program_shift(rt: SystemContext, kernel, i: int) -> float:

@@ -15,7 +15,7 @@ from ..errors import CplError
 from ..io.strings import CharacterField
 from .axes import kernel_index, nul
 from .context import SystemContext
-from .gfuncs import GEARS, program_shift
+from .gfuncs import GEARS, external_shift, program_shift
 from .offsets import push_to_kernel
 from .sysdata import g_of_group
 
@@ -173,7 +173,7 @@ def _more(rt: SystemContext, typ: int, ch: int, system, own, axisno, idno):
     if typ == 48:
         return [rt.ctl.ncs["mode"].get(a.channel, 5) if a.channel > 0 else 0 for a in own]
     if typ == 52:
-        return [sum(c.external[g][j] for g in c.external) for j in range(8)]
+        return external_shift(c, c.g_active)
     if typ == 61:
         return [2 if a.rotary else 1 for a in own]
     if typ == 63:

@@ -106,6 +106,8 @@ def f_apos(rt: SystemContext, sel):
 # -- measuring: G75, G275, G375 -----------------------------------------------------------------
 #: the measuring G functions of §4.2: "probe input", "on-the-fly measurement", "measuring fixed stop"
 PROBE_INPUT, ON_THE_FLY, FIXED_STOP = 75, 275, 375
+#: the latch's code before any measuring block ran
+NO_MEASUREMENT = 0
 MEASURING_G = frozenset((PROBE_INPUT, ON_THE_FLY, FIXED_STOP))
 
 
@@ -215,7 +217,7 @@ def f_cprobe(rt, sel, seltype=1):
     ax = resolve(rt, sel, seltype)
     c = rt.ctl
     code = c.probe.code
-    if code != PROBE_INPUT:
+    if code not in (NO_MEASUREMENT, PROBE_INPUT):
         raise CplError("CPL040", f"CPROBE cannot read a G{code} measurement: it measures a single axis (L1449)")
     blocked = [a.name for a in c.channel_axes(c.channel) if not a.probe]
     if blocked:
@@ -232,5 +234,7 @@ def f_cprobe(rt, sel, seltype=1):
 
 
 def probe_switched(rt) -> int:
-    """SD(9): 0 = the probe switched (after G375: the fixed stop was reached), 1 = not (L2229-2230)."""
-    return 0 if probe_latch(rt) is not None else 1
+    """SD(9) (L2229-2230): 1 = a measurement is active and the probe has not switched (G375: the fixed stop
+    is not yet reached); 0 = it switched, or no measuring block has run ("G75 not active")."""
+    latch = rt.ctl.probe
+    return 0 if latch.position is not None or latch.code == NO_MEASUREMENT else 1

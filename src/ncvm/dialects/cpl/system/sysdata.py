@@ -32,6 +32,8 @@ def g_of_group(k, group: int, typ3=None) -> int:
     group ``group``; -1 for a group it does not apply."""
     if group == 28 and typ3 is not None:
         return typ3.external or 146  # external tool compensation G145..G845, G146 = none
+    if group == 30 and typ3 is not None:
+        return typ3.external_zs  # external zero shift G160/G260/G360, G167 = none
     if group == 2:
         return k.motion
     if group == 3:
