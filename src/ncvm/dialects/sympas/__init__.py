@@ -153,6 +153,7 @@ class SympasDialect(Dialect):
                 session.extra["recordings"] = {card.names[ax]: rec.to_json(card.names[ax])
                                                for ax, rec in sorted(card.recordings.items())}
             session.machine.clock.now = end / TICKS_PER_S
+            session.extra["sympas"] = card.summary()
             for tk in tasks:
                 if tk.line and not tk.tskinfo & 2:
                     session.say(tk.line)  # an unterminated WRITE string is still shown

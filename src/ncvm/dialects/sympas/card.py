@@ -17,7 +17,8 @@ from .axes import AxisState
 from .motion import TICKS_PER_S, Move
 from .scheduler import Scheduler
 from .spooler import Spooler
-from .task import RUNNING, STOPPED
+from .task import RUNNING, STEP, STOPPED
+from .timeline import Timeline
 from .values import MAX_COUNTS, beyond_counts, fault
 
 PU_FACTOR = {0: 1.0, 1: 25.4, 2: 1000.0, 3: 360.0, 4: 1.0, 5: 180.0 / math.pi}
@@ -59,6 +60,7 @@ class Card:
         self.counts = float(cfg["counts_per_unit"])
         self.refused_mask = 1 << cfg["axst_bits"]["refused"]
         self.recordings: dict = {}  # axis number -> LPR/LPRS Recording (recording.py)
+        self.timeline = Timeline(self, [a.m for a in self.axes])  # reports the retired moves in time order
 
     # -- scenario events ------------------------------------------------------------------------------
     def _scenario_action(self, ev):
@@ -169,7 +171,20 @@ class Card:
             if a.move is mv:
                 a.m = fin[k]
                 a.move = None
-        mv.emit(self.canon, len(self.axes))
+        mv.emit(self.timeline)
+
+    def horizon(self) -> float:
+        """The earliest tick at which a move can still begin or change: a move not retired yet (a chain's
+        first segment not retired), or a new move of a task that can still run (at its time or later)."""
+        t = min((tk.time for tk in self.scheduler.tasks if tk.state in (RUNNING, STOPPED, STEP)), default=math.inf)
+        for mv in self.live:
+            segs = getattr(mv, "segs", None)
+            t0 = min((m.t0 for m in segs if not m.retired), default=mv.t0) if segs else mv.t0
+            t = min(t, t0)
+        for a in self.axes:
+            if a.move is not None and a.move not in self.live:
+                t = min(t, a.move.t0)
+        return t
 
     def settle(self, axes, t: float) -> None:
         """Retire finished moves of ``axes`` (positions become rest positions)."""
@@ -291,6 +306,10 @@ class Card:
             tk.held = None
             tk.leaves_wait()
 
+    def summary(self) -> dict:
+        """The card's part of the run's JSON document (``sympas``)."""
+        return {"profile_length": round(self.timeline.profile_length, 9)}
+
     # -- system reset and the end of the run -----------------------------------------------------------------------------
     def reset_system(self, t: float) -> None:
         for a in self.axes:
@@ -318,4 +337,7 @@ class Card:
         recording.run_out(self)  # the card goes on sampling after the programs end
         for mv in sorted({id(a.move): a.move for a in self.axes if a.move is not None}.values(), key=lambda m: m.t0):
             self.retire(mv)
+        for mv in list(self.live):  # started and replaced before they ran (not an axis's move any more)
+            self.retire(mv)
+        self.timeline.report(math.inf)
         return end

@@ -16,7 +16,7 @@ def _spool(card, tk, items, loc, kind: str, target: bool = False):
     for ax in axes:
         card.check_axis(ax)
     sysp = dict(tk.sysp)
-    entry = ("move", kind, tuple(items), source_of(tk, loc), target, sysp)
+    entry = ("move", kind, tuple(items), source_of(tk, loc), target, sysp, card.spooler.ticket())
     cap = card.spooler.capacity
     if any(card.spooler.used(ax, tk.time) >= cap for ax in axes):
         # AutoSpool (MODEREG bit 5, L1396): with the spooler full, its processing starts and further
@@ -97,7 +97,7 @@ def smcr3d(card, tk, items, loc, target=False):
 
 def ssf(card, tk, items, loc):
     code = int(tk.sysp["SSFP"])
-    entry = ("ssf", code, tuple(items), loc)
+    entry = ("ssf", code, tuple(items), loc, card.spooler.ticket())
     for ax, _ in items:
         card.check_axis(ax).spool.append(entry)
     return None
@@ -151,12 +151,11 @@ def _chain(card, tk, axes, loc):
     segs, targets, ssf_after, full0 = [], [], [], None
     try:
         while True:
-            e = None
-            for ax in axes:
-                sp = card.axes[ax].spool
-                if sp and not card.axes[ax].spool_halted:
-                    e = sp[0]
-                    break
+            # the entries run in the order they were spooled, across the axes (a square of four SMLR
+            # is a square): the oldest entry at the head of a started spooler is next
+            heads = [card.axes[ax].spool[0] for ax in axes
+                     if card.axes[ax].spool and not card.axes[ax].spool_halted]
+            e = min(heads, key=lambda h: h[-1], default=None)
             if e is None:
                 break
             e_axes = [ax for ax, _ in e[2]]
@@ -173,7 +172,7 @@ def _chain(card, tk, axes, loc):
                 else:
                     ssf_after.append((len(segs), _ssf_action(card, e[1], e[2])))
                 continue
-            _, kind, items, eloc, target, sysp = e
+            _, kind, items, eloc, target, sysp, _ = e
             tk.sysp = sysp
             tk.time = t
             if full0 is None:
@@ -239,7 +238,7 @@ def _join(card, tk, chain, segs: list, targets: list, mode: int, ssf_after: list
     the new ones by the look-ahead, so the axes do not stop at the old end (digest §10.5, L1391)."""
     now = tk.time
     sched = card.scheduler  # other tasks lag by a slice at most
-    chain.prune(now - sched.slice - sched.servo, card.canon, len(card.axes))
+    chain.prune(now - sched.slice - sched.servo, card.timeline)
     old = len(chain.segs)
     if not segs:
         for _, act in ssf_after:
