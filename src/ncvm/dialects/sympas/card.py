@@ -308,7 +308,15 @@ class Card:
 
     def summary(self) -> dict:
         """The card's part of the run's JSON document (``sympas``)."""
-        return {"profile_length": round(self.timeline.profile_length, 9)}
+        tasks = []
+        for tk in self.scheduler.tasks:
+            if tk.unit is None:
+                continue
+            where = tk.where() if tk.state in (RUNNING, STOPPED, STEP) else None
+            tasks.append({"task": tk.number, "program": tk.unit.prog.name, "state": tk.state,
+                          "file": where[0] if where else None, "line": where[1] if where else None,
+                          "error": tk.error, "error_line": tk.error_line or None})
+        return {"profile_length": round(self.timeline.profile_length, 9), "tasks": tasks}
 
     # -- system reset and the end of the run -----------------------------------------------------------------------------
     def reset_system(self, t: float) -> None:
@@ -322,7 +330,8 @@ class Card:
 
     def finish(self) -> float:
         """Let running moves end; report them; the run's end time in ticks."""
-        end = max([t.time for t in self.scheduler.tasks] + [0.0])
+        idle = self.scheduler.idle_end
+        end = idle if idle is not None else max([t.time for t in self.scheduler.tasks] + [0.0])
         for a in self.axes:
             if a.move is not None and not a.move.drift:
                 mv = a.move

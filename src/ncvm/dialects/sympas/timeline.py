@@ -36,11 +36,14 @@ class Timeline:
         self.pending: list = []  # retired moves not (completely) reported yet
         #: path units the card's profiles ran, each along its own path (moves at the same time add up)
         self.profile_length = 0.0
+        self.last_end = 0.0  # the latest end of a retired move: the axes stand still after it
 
     def add(self, mv) -> None:
         """A move retired: it is final and is reported when the time it ran is reported."""
         if mv.t1 > mv.t0:
             self.profile_length += mv.stop_s if mv.stop_s is not None else mv.prof.length
+            if mv.t1 > self.last_end:
+                self.last_end = mv.t1
             self.pending.append(mv)
             if len(self.pending) >= HOLD:
                 self.report(self.card.horizon())
@@ -51,6 +54,7 @@ class Timeline:
             self.report(math.inf)
         self.canon.feed(start, end, feed, src)
         self.profile_length += length
+        self.last_end = max(self.last_end, t1)
         self.pos[:] = end
         self.t = t1
 
