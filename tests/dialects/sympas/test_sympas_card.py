@@ -173,7 +173,8 @@ def test_spooler_with_ssf_and_ssms(sap):
 
 
 def test_ssf_spool_halt_and_output(sap):
-    r = sap(prog("SMLA(A1 := 10.0); SSF(A1 := 0, SSFP := 1000); SMLA(A1 := 20.0); SSMSW(A1); x := A1.dp;"
+    # the spooler halts after the first segment; SSMSW would wait for the rest too (L2101), SSMS does not
+    r = sap(prog("SMLA(A1 := 10.0); SSF(A1 := 0, SSFP := 1000); SMLA(A1 := 20.0); SSMS(A1); WT(15625); x := A1.dp;"
                  "SSMSW(A1); y := A1.dp; SSF(A1 := 3, SSFP := 1001); SSMSW(A1); o := A1.digo;",
                  "var x, y: double; o: integer;"))
     assert (r["variables"]["x"], r["variables"]["y"], r["variables"]["o"]) == (10.0, 20.0, 4)

@@ -314,9 +314,9 @@ def test_ssf_output_example_on_four_axes_L2091(sap_on):
 
 def test_ssf_spool_halt_on_three_axes_L2091(sap):
     # L2091: SSF(A1:=0, A2:=0, A3:=0, SSFP:=1000) halts the spoolers of A1, A2 and A3; the
-    # segment behind it waits for the next SSMS
+    # segment behind it waits for the next SSMS (SSMSW would wait for it too, L2101: SSMS and WT here)
     r = sap(prog("SMLA(A1 := 1.0, A2 := 1.0, A3 := 1.0);\nSSF(A1:=0, A2:=0, A3:=0, SSFP:=1000);\n"
-                 "SMLA(A1 := 2.0, A2 := 2.0, A3 := 2.0);\nSSMSW(A1, A2, A3);\nz1 := A3.dp;\nSSMSW(A1, A2, A3);\n"
+                 "SMLA(A1 := 2.0, A2 := 2.0, A3 := 2.0);\nSSMS(A1, A2, A3); WT(15625);\nz1 := A3.dp;\nSSMSW(A1, A2, A3);\n"
                  "z2 := A3.dp;", "var z1, z2: double;"))
     assert r["status"] == "ok", r["error"]
     assert (r["variables"]["z1"], r["variables"]["z2"]) == (1.0, 2.0)

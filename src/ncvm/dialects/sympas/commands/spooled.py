@@ -125,8 +125,27 @@ def ssms(card, tk, axes, loc):
 
 
 def ssmsw(card, tk, axes, loc):
+    """SSMSW waits until all spooled profiles of the axes are done (L2101-2108): behind a spooler halt
+    (SSF 1000) that means until an SSMS, from another task, has run the rest too."""
     ssms(card, tk, axes, loc)
-    return card.wait_axes(tk, axes)
+    g = card.wait_axes(tk, axes)
+    if g is None and not _spooled(card, axes):
+        return None
+    return _wait_spooled(card, tk, axes, g)
+
+
+def _spooled(card, axes) -> bool:
+    return any(e[0] == "move" for ax in axes for e in card.axes[ax].spool)
+
+
+def _wait_spooled(card, tk, axes, g):
+    while True:
+        if g is not None:
+            yield from g
+        if not _spooled(card, axes):
+            return
+        yield from tk.wait_until(tk.time + card.scheduler.servo)  # halted: look again every servo cycle
+        g = card.wait_axes(tk, axes)
 
 
 def _chain(card, tk, axes, loc):
