@@ -12,6 +12,7 @@ import math
 
 from ...diagnostics import UsageError
 from ...machine.scenario import AxisInput, CommonInteger, PositionError
+from ...nc.canon import Src
 from . import recording
 from .axes import AxisState
 from .motion import TICKS_PER_S, Move
@@ -244,14 +245,13 @@ class Card:
         plan = ovr if ovr > 0.0 else 1.0  # under a feed hold the move is planned at 100 % and held
         v = tk.sysp["TRVL"] * f / ts * plan
         acc = tk.sysp["TRAC"] * f / (ts * ts)
-        bit = 1 << self.cfg["axst_bits"]["refused"]
         if length <= 0 or v <= 0 or acc <= 0:
-            for ax in mv.axes:
-                self.axes[ax].flags |= bit
+            why = "no travel" if length <= 0 else "TRVL = 0" if v <= 0 else "TRAC = 0"
+            self.refuse(tk, mv.axes, why, loc)
             return False
         for ax in mv.axes:
             a = self.axes[ax]
-            a.flags &= ~bit
+            a.flags &= ~self.refused_mask
         mv.start(t, length, v, acc, self.jerk(mv.axes))
         mv.ovr0 = plan
         if ovr <= 0.0 and not self.spooler.planning_chain:
@@ -262,6 +262,18 @@ class Card:
             a.move = mv
             a.target = mv.p1[k]
         return True
+
+    def refuse(self, tk, axes, why: str, loc) -> None:
+        """The card discards a path profile: the axes' refused bit, and a message (L1415) unless MODEREG
+        bit 29 (InhibitProfileRefuse) suppresses it."""
+        for ax in axes:
+            self.axes[ax].flags |= self.refused_mask
+        if self.sys["MODEREG"] & (1 << 29):
+            return
+        src = loc if isinstance(loc, Src) else tk.unit.srcs[loc]
+        names = ", ".join(self.names[ax] for ax in axes)
+        task = f" (task {tk.number})" if tk.number else ""
+        self.session.say(f"{src.file}:{src.line}: profile refused: {why} ({names}){task}")
 
     def prepare(self, tk, axes, loc: int, moving=()):
         """Common start of a move command: axis checks, busy rule (not for the ``moving`` axes, which the
@@ -276,7 +288,7 @@ class Card:
             a = self.axes[ax]
             if self.busy(a, t) and ax not in moving:
                 if self.cfg["busy_move"] == "refuse":
-                    a.flags |= 1 << self.cfg["axst_bits"]["refused"]
+                    self.refuse(tk, axes, f"axis {a.name} is still in a profile", loc)
                     return None
                 self.retire_axis(a, t)
         return self.all_positions(t)

@@ -128,8 +128,8 @@ def _circle(card, tk, items, loc, relative: bool, wait: bool, target: bool = Fal
         r0 = math.hypot(q0[0] - c[0], q0[1] - c[1])
         r1 = math.hypot(e[0] - c[0], e[1] - c[1])
         if r0 == 0 or abs(r1 - r0) > 1e-3 * r0 + 1e-9:
-            for ax in axes:
-                card.axes[ax].flags |= 1 << card.cfg["axst_bits"]["refused"]
+            card.refuse(tk, axes, "radius 0" if r0 == 0 else f"the end point is not on the circle (radius {r0:g} at "
+                                  f"the start, {r1:g} at the end)", loc)
             return then_wait(card, tk, axes, wait)
         a0 = math.atan2(q0[1] - c[1], q0[0] - c[0])
         a1 = math.atan2(e[1] - c[1], e[0] - c[0])
@@ -200,8 +200,7 @@ def _circle3d(card, tk, items, loc, relative: bool, wait: bool, target: bool = F
     n = (tk.sysp["PN1"], tk.sysp["PN2"], tk.sysp["PN3"])
     nl = math.sqrt(sum(x * x for x in n))
     if nl == 0:
-        for ax in axes:
-            card.axes[ax].flags |= 1 << card.cfg["axst_bits"]["refused"]
+        card.refuse(tk, axes, "the plane normal PN1, PN2, PN3 is 0", loc)
         return then_wait(card, tk, axes, wait)
     n = tuple(x / nl for x in n)
     c = tuple(p0[k] + vals[k] if relative else vals[k] + sh[k] for k in range(3))
