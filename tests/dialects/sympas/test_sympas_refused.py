@@ -44,3 +44,24 @@ begin
 end.
 """)
     assert r["variables"]["b"] is True and len(r["output"]) == 1
+
+
+def test_a_profile_that_would_never_end_is_refused_L1415(sap):
+    """TRVL = 1e-310 is > 0 but the move would take for ever: refused with a message, not a hold."""
+    r = sap("program R;\nbegin\n  TRVL := 1.0e-310;\n  MLAW(A1 := 100.0);\nend.\n")
+    assert r["error"] is None and r["position"]["X"] == 0.0
+    assert r["output"][0].endswith("prog.sap:4: profile refused: TRVL = 1e-310: the profile would never end (A1)")
+
+
+def test_the_json_document_has_no_infinity(tmp_path):
+    import json
+
+    from ncvm.api import run_program
+    from ncvm.runtime.session import RunOptions
+
+    path = tmp_path / "p.sap"
+    path.write_text("program R;\nvar d: double;\nbegin\n  d := 1.0e308 * 10.0;\nend.\n", encoding="latin-1")
+    result = run_program(path, options=RunOptions(state_dir=tmp_path / ".ncvm"))
+    result.cycle_time_s = float("inf")  # as an endless hold would give
+    text = json.dumps(result.to_json(), allow_nan=False)
+    assert "Infinity" not in text

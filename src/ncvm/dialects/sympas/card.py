@@ -253,6 +253,9 @@ class Card:
             a = self.axes[ax]
             a.flags &= ~self.refused_mask
         mv.start(t, length, v, acc, self.jerk(mv.axes))
+        if not math.isfinite(mv.t1):
+            self.refuse(tk, mv.axes, f"TRVL = {tk.sysp['TRVL']:g}: the profile would never end", loc)
+            return False
         mv.ovr0 = plan
         if ovr <= 0.0 and not self.spooler.planning_chain:
             mv.override(t, 0.0, 0.0)  # TROVR = 0: it waits at its start for a raised override
