@@ -55,7 +55,7 @@ def fast_line(card, tk, items, loc, relative: bool) -> bool:
         v = math.sqrt(length * acc)
         end_t = tk.time + 2.0 * length / v * 15625.0
     timed = card.scheduler.timed
-    if timed and timed[0][0] <= end_t:
+    if (timed and timed[0][0] <= end_t) or end_t == math.inf:  # a profile that never ends: refused there
         return False
     for ax, _ in items:
         a = axes[ax]
