@@ -36,3 +36,29 @@ def test_ssmsw_behind_a_halt_nothing_restarts_is_a_deadlock_L2101(sap):
     r = sap(HALT.replace("  SSMS(A1);", "  WT(1);"))
     assert r["error"]["code"] == "RUN005" and r["error"]["line"] == 9
     assert r["position"]["X"] == 100.0
+
+
+def test_axst_bits_12_and_13_spooler_running_and_halted(sap):
+    """axst bit 12 while the spooler works off its profiles, bit 13 while it is halted (SSF 1000, L2091)
+    with profiles behind the halt (docs/sympas.md: the provisional axst layout)."""
+    r = sap("""program B;
+var run1, halt1, run2, halt2, run3, halt3: boolean;
+begin
+  TRVL := 100.0; TRAC := 1000.0;
+  SMLR(A1 := 100.0);
+  SSF(A1 := 0, SSFP := 1000);
+  SMLR(A1 := 50.0);
+  SSMS(A1);
+  WT(100);
+  run1 := A1.axstb.13; halt1 := A1.axstb.14;
+  WT(3 * 15625);
+  run2 := A1.axstb.13; halt2 := A1.axstb.14;
+  SSMSW(A1);
+  run3 := A1.axstb.13; halt3 := A1.axstb.14;
+end.
+""")
+    v = r["variables"]
+    assert (v["run1"], v["halt1"]) == (True, False)
+    assert (v["run2"], v["halt2"]) == (False, True)
+    assert (v["run3"], v["halt3"]) == (False, False)
+    assert r["position"]["X"] == 150.0

@@ -10,6 +10,7 @@ import math
 
 from .axes import AxisState
 from .events import input_active
+from .motion import Chain
 from .values import fault
 
 
@@ -21,6 +22,11 @@ def axst(card, a: AxisState, t: float) -> int:
         v |= 1 << b["profile_end"]
         if abs(a.poserr) <= a.q["ipw"]:
             v |= 1 << b["in_position"]
+    mv = a.move
+    if mv is not None and mv.t1 > t and not mv.jog and isinstance(mv, Chain):
+        v |= 1 << b["spool_running"]  # its spooler is working off a chain
+    elif a.spool_halted and any(e[0] == "move" for e in a.spool):
+        v |= 1 << b["spool_halted"]  # halted by SSF 1000 with profiles waiting behind the halt
     if a.closed:
         v |= 1 << b["loop_closed"]
     if a.homed:
