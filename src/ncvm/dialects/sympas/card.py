@@ -13,7 +13,7 @@ import math
 from ...diagnostics import UsageError
 from ...machine.scenario import AxisInput, CommonInteger, PositionError
 from ...nc.canon import Src
-from . import recording
+from . import recording, softlimits
 from .axes import AxisState
 from .motion import TICKS_PER_S, Move
 from .scheduler import Scheduler
@@ -264,6 +264,8 @@ class Card:
             a = self.axes[ax]
             a.move = mv
             a.target = mv.p1[k]
+        if not self.spooler.planning_chain:  # a chain is watched when its times are planned (spooled.py)
+            softlimits.watch(self, mv)
         return True
 
     def refuse(self, tk, axes, why: str, loc) -> None:

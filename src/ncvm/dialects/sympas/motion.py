@@ -476,3 +476,19 @@ def rotate(p, c, n, ang):
     dot = n[0] * v[0] + n[1] * v[1] + n[2] * v[2]
     cross = (n[1] * v[2] - n[2] * v[1], n[2] * v[0] - n[0] * v[2], n[0] * v[1] - n[1] * v[0])
     return tuple(c[k] + v[k] * cs + cross[k] * sn + n[k] * dot * (1 - cs) for k in range(3))
+
+
+def reach_tick(mv, dist: float, after: float) -> float:
+    """The first tick (after ``after``) at which move ``mv`` has run ``dist`` along its path, by bisection of
+    its monotonic s(t); a held move (no end) is looked at again 1000 ticks later."""
+    hi = mv.t1
+    if hi == math.inf:
+        return after + 1000.0
+    lo = after
+    for _ in range(60):
+        mid = 0.5 * (lo + hi)
+        if mv.s_at(mid) >= dist - 1e-9:
+            hi = mid
+        else:
+            lo = mid
+    return hi

@@ -75,7 +75,8 @@ class Scheduler:
                 step = max(step, min(self.next_timed(), tk.time + 1000.0 * self.servo))
             return step
         if not tk.others_running():
-            return until
+            nt = self.next_timed()  # a timed action (a soft-limit stop) may end the move before
+            return min(until, nt) if nt > tk.time else until
         # looking every servo cycle, the task could first see a change at the first of its cycles at or
         # after the moment another task or a timed action can act: it looks then, not in every cycle before
         quiet = self.quiet_until(tk)

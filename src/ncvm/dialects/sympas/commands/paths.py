@@ -42,6 +42,8 @@ def fast_line(card, tk, items, loc, relative: bool) -> bool:
         if not -MAX_COUNTS <= q <= MAX_COUNTS:
             beyond_counts(target)
         p = round(q) / c
+        if not a.q["sll"] <= p <= a.q["slr"]:
+            return False  # beyond a soft limit: the general path stops it there (softlimits.py)
         d = p - pos[ax]
         l2 += d * d
         pos[ax] = p

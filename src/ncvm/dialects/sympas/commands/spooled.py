@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import math
 
+from .. import softlimits
 from ..lookahead import retime
 from ..motion import TICKS_PER_S, Chain
 from .common import source_of
@@ -237,6 +238,7 @@ def _chain(card, tk, axes, loc):
     for ax in chain.axes:
         a = card.axes[ax]
         a.move = chain
+    softlimits.watch(card, chain)
     for k, act in ssf_after:
         _arm_ssf(card, chain, segs[k - 1], act)
 
@@ -288,6 +290,7 @@ def _join(card, tk, chain, segs: list, targets: list, mode: int, ssf_after: list
     chain.refresh()
     for ax in chain.axes:
         card.axes[ax].move = chain
+    softlimits.watch(card, chain)
     for entry in list(chain.ssf):  # SSF entries between re-planned segments act at their new ends
         seg, act, armed = entry
         if armed[0] and seg in part:
