@@ -167,10 +167,12 @@ class Card:
     def retire(self, mv: Move) -> None:
         self.live.discard(mv)
         fin = mv.final()
+        exact = self.sys["MODEREG"] & 0x100  # ExactTargetPos (L1399): no rounding to whole counts
+        c = self.counts
         for k, ax in enumerate(mv.axes):
             a = self.axes[ax]
             if a.move is mv:
-                a.m = fin[k]
+                a.m = fin[k] if exact or not math.isfinite(fin[k]) else round(fin[k] * c) / c
                 a.move = None
         mv.emit(self.timeline)
 

@@ -49,7 +49,11 @@ def axst(card, a: AxisState, t: float) -> int:
 def get_qual(card, tk, ax: int, name: str):
     a = card.check_axis(ax)
     t = tk.time
+    timed = card.scheduler.timed
+    if timed and timed[0][0] <= t:  # a timed action due (a homing latch at profile end) acts before the read
+        card.scheduler.apply_timed(t)
     if name in ("dp", "rp"):
+        card.settle((ax,), t)  # a profile that has ended: its end rounded to whole counts (card.retire)
         u = card.mpos(a, t) - card.user_shift(a)
         return u - a.poserr if name == "rp" else u
     if name == "tp":
