@@ -108,3 +108,38 @@ begin
 end.
 """)
     assert r["error"] is None and r["output"] == ["400000"]
+
+
+def test_rs_is_reported_as_a_system_reset_not_a_normal_end_L2043(sap):
+    r = sap("""{$TASK 0}
+program R;
+begin
+  STARTCNCT(1);
+  TRVL := 100.0;
+  MLA(A1 := 100.0);
+  WT(1000);
+  RS;
+  writeln('not here');
+end.
+
+{$TASK 1}
+program L;
+begin
+  while TRUE do WT(20);
+end.
+""")
+    assert r["error"] is None
+    assert r["ended"].startswith("ended by RS (system reset) at ") and r["ended"].endswith("prog.sap:8")
+    assert r["output"][0].endswith("prog.sap:8: RS: system reset by task 0: the axes stop, the running tasks "
+                                   "are stopped")
+    assert [t["state"] for t in r["sympas"]["tasks"]] == ["STOPPED", "STOPPED"]
+    assert 0.0 < r["position"]["X"] < 100.0
+
+
+def test_the_summary_line_says_how_the_run_ended(tmp_path):
+    from ncvm.cli import _summary
+
+    doc = {"status": "ok", "ended": "ended with task(s) 1 still looping", "steps": 5, "cycle_time_s": 1.0,
+           "motion": {"rapid_moves": 0, "feed_moves": 0, "arc_moves": 0, "rapid_length": 0.0, "feed_length": 0.0,
+                      "bounds": {}}}
+    assert _summary(doc).startswith("ncvm: ended with task(s) 1 still looping: 5 steps")

@@ -156,6 +156,9 @@ class SympasDialect(Dialect):
                                                for ax, rec in sorted(card.recordings.items())}
             session.machine.clock.now = end / TICKS_PER_S
             session.extra["sympas"] = card.summary()
+            if card.scheduler.left_running:
+                session.extra.setdefault("ended", "ended with task(s) " + ", ".join(
+                    str(t.number) for t in card.scheduler.left_running) + " still looping")
             for tk in card.scheduler.left_running:
                 where = tk.where()
                 place = f" at {where[0]}:{where[1]}" if where else ""

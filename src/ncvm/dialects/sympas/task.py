@@ -291,6 +291,11 @@ class Task:
         yield
 
     def rs(self):
+        where = self.where()
+        place = f"{where[0]}:{where[1]}: " if where else ""
+        self.card.session.say(f"{place}RS: system reset by task {self.number}: the axes stop, the running tasks "
+                              "are stopped")
+        self.card.session.extra["ended"] = f"ended by RS (system reset) at {place.rstrip(': ') or 'task ' + str(self.number)}"
         self.card.reset_system(self.time)
         yield
 
