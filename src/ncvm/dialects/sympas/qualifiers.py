@@ -9,6 +9,7 @@ from __future__ import annotations
 import math
 
 from .axes import AxisState
+from .commands.jog import new_override
 from .events import input_active
 from .motion import Chain
 from .values import fault
@@ -97,6 +98,8 @@ def set_qual(card, tk, ax: int, name: str, value) -> None:
         a.staged[name] = value
         return
     a.q[name] = value
+    if name == "jovr":
+        new_override(card, tk, ax)  # the running jog follows its new override
 
 
 def get_bit(card, tk, ax: int, squal: str, bit: int) -> bool:

@@ -69,6 +69,18 @@ def _jog(card, tk, items, loc, relative: bool, wait: bool):
     return then_wait(card, tk, axes, wait)
 
 
+def new_override(card, tk, ax: int) -> None:
+    """A new jovr of a jogging axis acts on the running jog: it goes on to its target with jvl * jovr from
+    the velocity it has (re-planned as a JA to the same target)."""
+    a = card.axes[ax]
+    mv = a.move
+    if not _jogging(card, a, tk.time) or mv.drift:
+        return
+    src = (mv.segs[-1] if isinstance(mv, Chain) else mv).src
+    g = _jog(card, tk, ((ax, a.target - card.user_shift(a)),), src, False, False)
+    assert g is None  # not a W form: it does not wait
+
+
 def run_on(card, a, t: float, v: float, src) -> None:
     """From ``t`` the axis runs on at the signed velocity ``v`` until a stop (JS, MS, RA) or the end of the
     run; at profile end for the W-waits (a drift)."""
