@@ -62,3 +62,28 @@ end.
     assert (v["run2"], v["halt2"]) == (False, True)
     assert (v["run3"], v["halt3"]) == (False, False)
     assert r["position"]["X"] == 150.0
+
+
+FULL = """program F;
+var k: integer;
+begin
+  TRVL := 100.0; TRAC := 1000.0;
+  {MODE}
+  for k := 1 to 6 do
+    SMLR(A1 := 10.0);
+  SSMSW(A1);
+end.
+"""
+
+
+def test_a_full_spooler_starts_itself_only_with_autospool_L1396(sap):
+    r = sap(FULL.replace("{MODE}", "MODEREG := MODEREG or $20;"), machine_toml="[sympas]\nspool_capacity = 4\n")
+    assert r["error"] is None and r["position"]["X"] == 60.0
+
+
+def test_without_autospool_a_full_spooler_waits_for_an_ssms_L1396(sap):
+    """Without MODEREG bit 5 nothing starts the full spooler: the 5th SMLR waits for ever (RUN005 at
+    once, with its line)."""
+    r = sap(FULL.replace("{MODE}", ""), machine_toml="[sympas]\nspool_capacity = 4\n")
+    assert r["error"]["code"] == "RUN005" and r["error"]["line"] == 7
+    assert r["position"]["X"] == 0.0

@@ -11,6 +11,8 @@ from ..motion import TICKS_PER_S, Chain
 from .common import source_of
 from .paths import COMMANDS as PATH_MOVES
 
+AUTOSPOOL = 0x20  # MODEREG bit 5 (L1396)
+
 
 def _spool(card, tk, items, loc, kind: str, target: bool = False):
     axes = tuple(ax for ax, _ in items)
@@ -20,8 +22,12 @@ def _spool(card, tk, items, loc, kind: str, target: bool = False):
     entry = ("move", kind, tuple(items), source_of(tk, loc), target, sysp, card.spooler.ticket())
     cap = card.spooler.capacity
     if any(card.spooler.used(ax, tk.time) >= cap for ax in axes):
+        if not card.sys["MODEREG"] & AUTOSPOOL:
+            # without AutoSpool the full spooler is not started (L1396): the task waits for room, which
+            # only an SSMS of another task can make (else a deadlock, RUN005)
+            return _enter_after(card, tk, _wait_room(card, tk, axes, cap), axes, entry, cap, loc)
         # AutoSpool (MODEREG bit 5, L1396): with the spooler full, its processing starts and further
-        # profiles are entered only when memory is free again; without the bit the task blocks as well (A-59)
+        # profiles are entered only when memory is free again
         ssms(card, tk, axes, loc)
         g = _wait_spool(card, tk, axes, cap)
         if g is not None:
@@ -33,13 +39,22 @@ def _spool(card, tk, items, loc, kind: str, target: bool = False):
 def _enter(card, tk, axes, entry, cap: int, loc) -> None:
     for ax in axes:
         card.axes[ax].spool.append(entry)
-    if any(card.spooler.used(ax, tk.time) >= cap for ax in axes):
+    if card.sys["MODEREG"] & AUTOSPOOL and any(card.spooler.used(ax, tk.time) >= cap for ax in axes):
         ssms(card, tk, axes, loc)  # the spooler is full now: AutoSpool starts it
 
 
 def _enter_after(card, tk, wait, axes, entry, cap: int, loc):
     yield from wait
     _enter(card, tk, axes, entry, cap, loc)
+
+
+def _wait_room(card, tk, axes, cap: int):
+    """Wait, looking every servo cycle, until every axis of ``axes`` has a free spooler entry."""
+    try:
+        while any(card.spooler.used(ax, tk.time) >= cap for ax in axes):
+            yield from tk.wait_until(tk.time + card.scheduler.servo)
+    finally:
+        tk.leaves_wait()
 
 
 def _wait_spool(card, tk, axes, cap: int):
