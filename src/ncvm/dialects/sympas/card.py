@@ -61,6 +61,7 @@ class Card:
         self.counts = float(cfg["counts_per_unit"])
         self.refused_mask = 1 << cfg["axst_bits"]["refused"]
         self.recordings: dict = {}  # axis number -> LPR/LPRS Recording (recording.py)
+        self.output_log: list = []  # {"task", "text"} of each line a task wrote (WRITELN)
         self.timeline = Timeline(self, [a.m for a in self.axes])  # reports the retired moves in time order
 
     # -- scenario events ------------------------------------------------------------------------------
@@ -335,7 +336,22 @@ class Card:
             tasks.append({"task": tk.number, "program": tk.unit.prog.name, "state": tk.state,
                           "file": where[0] if where else None, "line": where[1] if where else None,
                           "error": tk.error, "error_line": tk.error_line or None})
-        return {"profile_length": round(self.timeline.profile_length, 9), "tasks": tasks}
+        rec = self.session.recorder
+        bounds = rec.summary().bounds if rec is not None else {}
+        machine = self.session.machine.axis_names
+        axes = {}
+        for a in self.axes:
+            shift = self.user_shift(a)
+            b = bounds.get(machine[a.number])
+            axes[a.name] = {"machine_axis": machine[a.number], "position": a.m - shift, "machine_position": a.m,
+                            "bounds_machine": b, "bounds_program": [b[0] - shift, b[1] - shift] if b else None}
+        return {"profile_length": round(self.timeline.profile_length, 9), "tasks": tasks,
+                "axes": axes, "frames": "position and bounds_program: the program's coordinates (dp) with the "
+                                        "zero offsets in force at the end; machine_position, bounds_machine: "
+                                        "the machine's",
+                "ci": {str(i): v for i, v in enumerate(self.ci) if v},
+                "cd": {str(i): v for i, v in enumerate(self.cd) if v},
+                "output": self.output_log}
 
     # -- system reset and the end of the run -----------------------------------------------------------------------------
     def reset_system(self, t: float) -> None:

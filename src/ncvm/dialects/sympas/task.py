@@ -273,6 +273,7 @@ class Task:
         if newline:
             self.tskinfo |= 2
             self.card.session.say(self.line)
+            self.card.output_log.append({"task": self.number, "text": self.line})
             if self.card.sys["MODEREG"] & (1 << 26):
                 self.state = STOPPED
                 return True
