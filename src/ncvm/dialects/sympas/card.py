@@ -179,8 +179,9 @@ class Card:
 
     def horizon(self) -> float:
         """The earliest tick at which a move can still begin or change: a move not retired yet (a chain's
-        first segment not retired), or a new move of a task that can still run (at its time or later)."""
-        t = min((tk.time for tk in self.scheduler.tasks if tk.state in (RUNNING, STOPPED, STEP)), default=math.inf)
+        first segment not retired), or a new move of a running task (at its time or later)."""
+        # a stopped task goes on (CONTCNCT, STEPCNCT) at the time of the task that lets it: only running ones count
+        t = min((tk.time for tk in self.scheduler.tasks if tk.state == RUNNING), default=math.inf)
         for mv in self.live:
             segs = getattr(mv, "segs", None)
             t0 = min((m.t0 for m in segs if not m.retired), default=mv.t0) if segs else mv.t0

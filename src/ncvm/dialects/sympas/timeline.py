@@ -19,7 +19,7 @@ from ...nc.canon import ArcSpec
 from .motion import TICKS_PER_S, TWO_PI
 
 #: largest distance (axis units) of a sampled combined path from the real one
-TOLERANCE = 1e-3
+TOLERANCE = 1e-2
 #: moves held before the reported time is moved on to the horizon
 HOLD = 512
 _MAX_DEPTH = 12
@@ -34,6 +34,7 @@ class Timeline:
         self.pos = list(start)  # every axis at time ``t``, as reported so far
         self.t = 0.0
         self.pending: list = []  # retired moves not (completely) reported yet
+        self.hold = HOLD  # report when this many are pending
         #: path units the card's profiles ran, each along its own path (moves at the same time add up)
         self.profile_length = 0.0
         self.last_end = 0.0  # the latest end of a retired move: the axes stand still after it
@@ -45,8 +46,10 @@ class Timeline:
             if mv.t1 > self.last_end:
                 self.last_end = mv.t1
             self.pending.append(mv)
-            if len(self.pending) >= HOLD:
+            if len(self.pending) >= self.hold:
                 self.report(self.card.horizon())
+                # a horizon held back (a move held by TROVR = 0) must not make every add a report
+                self.hold = max(HOLD, 2 * len(self.pending))
 
     def direct(self, start, end, feed: float, src, t1: float, length: float) -> None:
         """A straight move of idle axes while no other move runs (the fast path of MLAW/MLRW)."""
