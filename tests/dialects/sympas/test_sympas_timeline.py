@@ -126,3 +126,48 @@ begin
 end.
 """)
     _combined_checks(result, arr, gcode)
+
+
+MANY = """{$TASK 0}
+program Many;
+var k: integer;
+begin
+  STARTCNCT(1);
+  TRVL := 100.0; TRAC := 1000.0;
+  for k := 1 to 150 do
+  begin
+    MLA(A1 := 10.0, A2 := 5.0);
+    WT(3000);
+    MLA(A1 := 0.0, A2 := 0.0);
+    WT(3000);
+  end;
+  STOPCNCT(1);
+end.
+
+{$TASK 1}
+program Other;
+begin
+  TRVL := 50.0; TRAC := 1000.0;
+  while TRUE do
+  begin
+    MLAW(A3 := -3.0);
+    MLAW(A3 := 0.0);
+  end;
+end.
+"""
+
+
+def test_reporting_while_the_run_goes_on_gives_the_same_path(tmp_path, monkeypatch):
+    """The timeline reports its held moves up to the horizon while the tasks run (more than HOLD moves):
+    the toolpath is the same as when everything is reported at the end."""
+    from ncvm.dialects.sympas import timeline
+
+    (tmp_path / "a").mkdir()
+    (tmp_path / "b").mkdir()
+    monkeypatch.setattr(timeline, "HOLD", 64)
+    r1, a1, _, _ = _run(tmp_path / "a", MANY)
+    monkeypatch.setattr(timeline, "HOLD", 10 ** 9)
+    r2, a2, _, _ = _run(tmp_path / "b", MANY)
+    assert len(a1["end"]) > 64
+    assert (a1["end"] == a2["end"]).all() and (a1["kind"] == a2["kind"]).all()
+    assert r1["motion"] == r2["motion"]
