@@ -200,11 +200,12 @@ class Scheduler:
             self.idle_end = max(card.timeline.last_end, main.time)  # the run's work was done then
             self.left_running = [t for t in self.tasks if t.state == RUNNING]
             return True
+        q = self._quiet
+        if q is not None and q[0] == since and tk.time < q[2] + self.quiet_ticks:
+            return False  # compared once per window
         snap = self._snapshot()
-        if self._quiet is None or self._quiet[0] != since or self._quiet[1] != snap:
+        if q is None or q[0] != since or q[1] != snap:
             self._quiet = (since, snap, tk.time)
-            return False
-        if tk.time < self._quiet[2] + self.quiet_ticks:
             return False
         waiting = [t for t in self.tasks if t.state == RUNNING]
         places = ", ".join(f"task {t.number} at line {w[1]}" for t in waiting if (w := t.where()) is not None)
