@@ -32,6 +32,7 @@ class Timeline:
         self.card = card
         self.canon = card.canon
         self.pos = list(start)  # every axis at time ``t``, as reported so far
+        self.rest = None  # the state after a direct move, until a report makes it ``pos``
         self.t = 0.0
         self.pending: list = []  # retired moves not (completely) reported yet
         self.hold = HOLD  # report when this many are pending
@@ -57,13 +58,14 @@ class Timeline:
             self.report(math.inf)
         self.canon.feed(start, end, feed, src)
         self.profile_length += length
-        self.last_end = max(self.last_end, t1)
-        self.pos[:] = end
-        self.t = t1
+        self.last_end = self.t = t1  # every axis was idle: nothing ends later
+        self.rest = end  # the state of all axes now (made the list ``pos`` when a report needs it)
 
     # -- reporting ----------------------------------------------------------------------------------
     def report(self, horizon: float) -> None:
         """Report what the axes did up to ``horizon`` (inf: everything retired)."""
+        if self.rest is not None:
+            self.pos, self.rest = list(self.rest), None
         pending = sorted(self.pending, key=lambda m: m.t0)
         n = len(pending)
         i = 0
