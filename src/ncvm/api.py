@@ -118,7 +118,7 @@ class RunResult:
                             "line": e.span.line if e.span else None, "column": e.span.column if e.span else None}
             if e.notes:
                 out["error"]["stack"] = list(e.notes)
-        return out
+        return _jsonable(out)  # no Infinity or NaN anywhere: they are not JSON
 
 
 def _jsonable(v: Any) -> Any:

@@ -266,7 +266,9 @@ def _stdin_is_terminal() -> bool:
 def _summary(result: dict) -> str:
     m = result["motion"]
     bounds = " ".join(f"{a}[{lo:.3f},{hi:.3f}]" for a, (lo, hi) in m["bounds"].items())
-    status = "ended normally" if result["status"] == "ok" else f"stopped with error {result['error']['code']}"
+    # a front end may say how a run without error ended ("ended": e.g. by a system reset)
+    status = result.get("ended", "ended normally") if result["status"] == "ok" \
+        else f"stopped with error {result['error']['code']}"
     return (f"ncvm: {status}: {result['steps']:,} steps, {m['rapid_moves']} rapid / {m['feed_moves']} feed / "
             f"{m['arc_moves']} arc moves, path {m['rapid_length'] + m['feed_length']:.3f} mm "
             f"(feed {m['feed_length']:.3f}), cycle time {_hms(result['cycle_time_s'])}"

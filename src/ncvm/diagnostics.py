@@ -153,7 +153,7 @@ NCVM_CODES = {
     "RUN002": "sub-program not found",
     "RUN003": "call nesting too deep",
     "RUN004": "run interrupted by the user",
-    "RUN005": "waiting for ever (motion held with no way to go on)",
+    "RUN005": "waiting for ever (motion held, or every task waiting, with no way to go on)",
     "RUN006": "memory limit reached (--max-memory)",
     "IO001": "file access outside the controller's file root",
     "NEST001": "statements or expressions nested deeper than ncvm reads where the manual sets no limit "

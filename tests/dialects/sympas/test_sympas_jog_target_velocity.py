@@ -47,5 +47,7 @@ def test_jsatsaf_stops_all_axes_and_sets_errorreg_bit_19(sap):
 def test_forbid_target_vel_executes_rs_and_sets_errorreg_bit_1(sap):
     # RS halts every task: the writeln after the jog is never reached, the axis stands at its target
     r = sap(prog("MODEREG := $800;\nJRW(A1 := 10.0);\nWT(2000);\nwriteln('not reached');"))
-    assert r["output"] == []
+    # the reset is reported (issue 15), the writeln is not reached
+    assert len(r["output"]) == 1 and "RS: system reset by ForbidTargetVel (MODEREG bit 11)" in r["output"][0]
+    assert r["ended"].startswith("ended by RS (system reset) at ")
     assert r["position"]["X"] == pytest.approx(10.0, abs=0.001)

@@ -151,10 +151,10 @@ def test_function_with_parameters_forward_L1182_1194(sap):
 
 def test_function_definition_with_forward_repeated_as_printed_L1191(tmp_path):
     # L1191 repeats `; forward;` on the defining header; the digest reads it as a slip and
-    # does not accept it. Taken literally, the second header is one more forward declaration and the
-    # block after it is read as the main program, which ends at `end;` (line 11) where `.` is due.
+    # does not accept it; the error is at the stray `forward` of the definition (line 8), not at the
+    # `end;` (line 11) where the block, read as the main program, would want its `.` (issue 15)
     errors = errors_of(tmp_path, FUNC_B.replace("{DEF}", " forward;"))
-    assert errors == [("SP001", 11)]
+    assert errors == [("SP001", 8)]
 
 
 def test_parameterless_function_recursion_needs_empty_parens_L1146(sap):

@@ -25,6 +25,7 @@ from .errors import SympasError
 from .lexer import Lexer
 from .motion import TICKS_PER_S
 from .parser import Parser
+from .scheduler import QUIET_S
 from .values import namespace
 
 #: the card's commands and qualifiers in the generated code's globals (codegen: _C_<name>(card, tk, items, loc))
@@ -143,6 +144,7 @@ class SympasDialect(Dialect):
             tasks[n].load(u)
         main_task = tasks[main.task if main.task is not None else 0]
         main_task.start(0.0)
+        card.scheduler.main = main_task
         try:
             card.scheduler.run()
         finally:
@@ -153,6 +155,15 @@ class SympasDialect(Dialect):
                 session.extra["recordings"] = {card.names[ax]: rec.to_json(card.names[ax])
                                                for ax, rec in sorted(card.recordings.items())}
             session.machine.clock.now = end / TICKS_PER_S
+            session.extra["sympas"] = card.summary()
+            if card.scheduler.left_running:
+                session.extra.setdefault("ended", "ended with task(s) " + ", ".join(
+                    str(t.number) for t in card.scheduler.left_running) + " still looping")
+            for tk in card.scheduler.left_running:
+                where = tk.where()
+                place = f" at {where[0]}:{where[1]}" if where else ""
+                session.say(f"task {tk.number} still running{place} when the run ended: task {main_task.number} "
+                            f"has ended and nothing moved for {QUIET_S:g} s (docs/sympas.md)")
             for tk in tasks:
                 if tk.line and not tk.tskinfo & 2:
                     session.say(tk.line)  # an unterminated WRITE string is still shown

@@ -27,6 +27,7 @@ class AxisState:
         self.ovr = 1.0  # path override (UTROVR), 0 = feed hold
         self.spool: list = []
         self.spool_halted = False
+        self.limit_stop = False  # stopped at a soft limit by the soft-limit reaction (softlimits.py)
         acc = cfg_axis.accel
         self.q = {"jvl": cfg_axis.rapid / 60.0, "jac": acc, "jtv": 0.0, "jovr": 1.0, "sdec": acc,
                   "hvl": cfg_axis.max_feed / 600.0, "hac": acc, "ipw": 0.01, "mpe": 1.0,

@@ -12,13 +12,15 @@ import math
 
 from ...diagnostics import UsageError
 from ...machine.scenario import AxisInput, CommonInteger, EventQueue, PositionError
-from . import recording
+from ...nc.canon import Src
+from . import recording, softlimits
 from .axes import AxisState
 from .config import Options
 from .motion import TICKS_PER_S, Move
 from .scheduler import Scheduler
 from .spooler import Spooler
-from .task import RUNNING, STOPPED
+from .task import RUNNING, STEP, STOPPED
+from .timeline import Timeline
 from .values import MAX_COUNTS, beyond_counts, fault
 
 PU_FACTOR = {0: 1.0, 1: 25.4, 2: 1000.0, 3: 360.0, 4: 1.0, 5: 180.0 / math.pi}
@@ -61,6 +63,8 @@ class Card:
         self.counts = float(cfg.counts_per_unit)
         self.refused_mask = 1 << cfg.axst_bits["refused"]
         self.recordings: dict = {}  # axis number -> LPR/LPRS Recording (recording.py)
+        self.output_log: list = []  # {"task", "text"} of each line a task wrote (WRITELN)
+        self.timeline = Timeline(self, [a.m for a in self.axes])  # reports the retired moves in time order
 
     # -- scenario events ------------------------------------------------------------------------------
     def apply_event(self, ev) -> None:
@@ -170,12 +174,28 @@ class Card:
     def retire(self, mv: Move) -> None:
         self.live.discard(mv)
         fin = mv.final()
+        exact = self.sys["MODEREG"] & 0x100  # ExactTargetPos (L1399): no rounding to whole counts
+        c = self.counts
         for k, ax in enumerate(mv.axes):
             a = self.axes[ax]
             if a.move is mv:
-                a.m = fin[k]
+                a.m = fin[k] if exact or not math.isfinite(fin[k]) else round(fin[k] * c) / c
                 a.move = None
-        mv.emit(self.canon, len(self.axes))
+        mv.emit(self.timeline)
+
+    def horizon(self) -> float:
+        """The earliest tick at which a move can still begin or change: a move not retired yet (a chain's
+        first segment not retired), or a new move of a running task (at its time or later)."""
+        # a stopped task goes on (CONTCNCT, STEPCNCT) at the time of the task that lets it: only running ones count
+        t = min((tk.time for tk in self.scheduler.tasks if tk.state == RUNNING), default=math.inf)
+        for mv in self.live:
+            segs = getattr(mv, "segs", None)
+            t0 = min((m.t0 for m in segs if not m.retired), default=mv.t0) if segs else mv.t0
+            t = min(t, t0)
+        for a in self.axes:
+            if a.move is not None and a.move not in self.live:
+                t = min(t, a.move.t0)
+        return t
 
     def settle(self, axes, t: float) -> None:
         """Retire finished moves of ``axes`` (positions become rest positions)."""
@@ -235,15 +255,17 @@ class Card:
         plan = ovr if ovr > 0.0 else 1.0  # under a feed hold the move is planned at 100 % and held
         v = tk.sysp["TRVL"] * f / ts * plan
         acc = tk.sysp["TRAC"] * f / (ts * ts)
-        bit = 1 << self.cfg.axst_bits["refused"]
         if length <= 0 or v <= 0 or acc <= 0:
-            for ax in mv.axes:
-                self.axes[ax].flags |= bit
+            why = "no travel" if length <= 0 else "TRVL = 0" if v <= 0 else "TRAC = 0"
+            self.refuse(tk, mv.axes, why, loc)
             return False
         for ax in mv.axes:
             a = self.axes[ax]
-            a.flags &= ~bit
+            a.flags &= ~self.refused_mask
         mv.start(t, length, v, acc, self.jerk(mv.axes))
+        if not math.isfinite(mv.t1):
+            self.refuse(tk, mv.axes, f"TRVL = {tk.sysp['TRVL']:g}: the profile would never end", loc)
+            return False
         mv.ovr0 = plan
         if ovr <= 0.0 and not self.spooler.planning_chain:
             mv.override(t, 0.0, 0.0)  # TROVR = 0: it waits at its start for a raised override
@@ -252,7 +274,21 @@ class Card:
             a = self.axes[ax]
             a.move = mv
             a.target = mv.p1[k]
+        if not self.spooler.planning_chain:  # a chain is watched when its times are planned (spooled.py)
+            softlimits.watch(self, mv)
         return True
+
+    def refuse(self, tk, axes, why: str, loc) -> None:
+        """The card discards a path profile: the axes' refused bit, and a message (L1415) unless MODEREG
+        bit 29 (InhibitProfileRefuse) suppresses it."""
+        for ax in axes:
+            self.axes[ax].flags |= self.refused_mask
+        if self.sys["MODEREG"] & (1 << 29):
+            return
+        src = loc if isinstance(loc, Src) else tk.unit.srcs[loc]
+        names = ", ".join(self.names[ax] for ax in axes)
+        task = f" (task {tk.number})" if tk.number else ""
+        self.session.say(f"{src.file}:{src.line}: profile refused: {why} ({names}){task}")
 
     def prepare(self, tk, axes, loc: int, moving=()):
         """Common start of a move command: axis checks, busy rule (not for the ``moving`` axes, which the
@@ -267,7 +303,7 @@ class Card:
             a = self.axes[ax]
             if self.busy(a, t) and ax not in moving:
                 if self.cfg.busy_move == "refuse":
-                    a.flags |= 1 << self.cfg.axst_bits["refused"]
+                    self.refuse(tk, axes, f"axis {a.name} is still in a profile", loc)
                     return None
                 self.retire_axis(a, t)
         return self.all_positions(t)
@@ -297,6 +333,33 @@ class Card:
             tk.held = None
             tk.leaves_wait()
 
+    def summary(self) -> dict:
+        """The card's part of the run's JSON document (``sympas``)."""
+        tasks = []
+        for tk in self.scheduler.tasks:
+            if tk.unit is None:
+                continue
+            where = tk.where() if tk.state in (RUNNING, STOPPED, STEP) else None
+            tasks.append({"task": tk.number, "program": tk.unit.prog.name, "state": tk.state,
+                          "file": where[0] if where else None, "line": where[1] if where else None,
+                          "error": tk.error, "error_line": tk.error_line or None})
+        rec = self.session.recorder
+        bounds = rec.summary().bounds if rec is not None else {}
+        machine = self.session.machine.axis_names
+        axes = {}
+        for a in self.axes:
+            shift = self.user_shift(a)
+            b = bounds.get(machine[a.number])
+            axes[a.name] = {"machine_axis": machine[a.number], "position": a.m - shift, "machine_position": a.m,
+                            "bounds_machine": b, "bounds_program": [b[0] - shift, b[1] - shift] if b else None}
+        return {"profile_length": round(self.timeline.profile_length, 9), "tasks": tasks,
+                "axes": axes, "frames": "position and bounds_program: the program's coordinates (dp) with the "
+                                        "zero offsets in force at the end; machine_position, bounds_machine: "
+                                        "the machine's",
+                "ci": {str(i): v for i, v in enumerate(self.ci) if v},
+                "cd": {str(i): v for i, v in enumerate(self.cd) if v},
+                "output": self.output_log}
+
     # -- system reset and the end of the run -----------------------------------------------------------------------------
     def reset_system(self, t: float) -> None:
         for a in self.axes:
@@ -309,7 +372,8 @@ class Card:
 
     def finish(self) -> float:
         """Let running moves end; report them; the run's end time in ticks."""
-        end = max([t.time for t in self.scheduler.tasks] + [0.0])
+        idle = self.scheduler.idle_end
+        end = idle if idle is not None else max([t.time for t in self.scheduler.tasks] + [0.0])
         for a in self.axes:
             if a.move is not None and not a.move.drift:
                 mv = a.move
@@ -324,4 +388,7 @@ class Card:
         recording.run_out(self)  # the card goes on sampling after the programs end
         for mv in sorted({id(a.move): a.move for a in self.axes if a.move is not None}.values(), key=lambda m: m.t0):
             self.retire(mv)
+        for mv in list(self.live):  # started and replaced before they ran (not an axis's move any more)
+            self.retire(mv)
+        self.timeline.report(math.inf)
         return end

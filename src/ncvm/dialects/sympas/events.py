@@ -37,6 +37,8 @@ def event_active(card, name: str, t: float) -> bool:
             p = card.mpos(ax, t)
             if p < ax.q["sll"] or p > ax.q["slr"]:
                 return True
+            if ax.limit_stop and (p <= ax.q["sll"] + 1e-6 or p >= ax.q["slr"] - 1e-6):
+                return True  # stopped on the limit by the soft-limit reaction (softlimits.py)
         return False
     if name == "EVMPE":
         return any(ax.closed and abs(ax.poserr) > ax.q["mpe"] for ax in card.axes)

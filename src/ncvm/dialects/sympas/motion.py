@@ -5,15 +5,15 @@ A :class:`Move` is a straight line, a circle/helix in a plane, or a 3-D circle
 over a group of axes, in machine coordinates and axis units (mm, deg), with a
 rest-to-rest velocity profile (digest §10.5). Positions at any
 simulated time are computed from the profile, so waits, CLOCK and events see
-the axes where they really are. A move is reported to the canon interface when
-it retires (ends, is stopped, or the run ends), with the geometry it really ran.
+the axes where they really are. A move is handed to the timeline (timeline.py) when
+it retires (ends, is stopped, or the run ends), which reports it with what the other axes do meanwhile.
 """
 
 from __future__ import annotations
 
 import math
 
-from ...nc.canon import ArcSpec, Src
+from ...nc.canon import Src
 
 TICKS_PER_S = 15625.0
 TWO_PI = 2.0 * math.pi
@@ -337,52 +337,12 @@ class Move:
         return self.point(self.stop_s if self.stop_s is not None else self.prof.length)
 
     # -- reporting ----------------------------------------------------------------------------
-    def emit(self, canon, names_count: int) -> None:
-        """Tell the canon interface what this move really ran (called once, when it retires)."""
+    def emit(self, timeline) -> None:
+        """Hand this move, final now, to the timeline that reports it (called once, when it retires)."""
         if self.retired:
             return
         self.retired = True
-        start = list(self.start_all)
-        end = list(self.start_all)
-        fin = self.final()
-        for k, ax in enumerate(self.axes):
-            start[ax] = self.p0[k]
-            end[ax] = fin[k]
-        start, end = tuple(start), tuple(end)
-        if self.jog:
-            canon.rapid(start, end, self.src)
-            return
-        if self.kind == "line":
-            canon.feed(start, end, self.feed, self.src)
-            return
-        s_end = self.stop_s if self.stop_s is not None else self.prof.length
-        if self.kind == "arc" and self.plane_w is None:
-            i, j = self.plane
-            frac = s_end / self.prof.length if self.prof.length > 0 else 1.0
-            swept = self.phi * frac
-            n_full = abs(swept) / TWO_PI
-            whole = math.floor(n_full + 1e-9)
-            if whole >= 1 and abs(n_full - round(n_full)) < 1e-9:
-                turns = int(round(n_full)) - 1
-            else:
-                turns = int(whole)
-            if abs(swept) < 1e-12:
-                canon.feed(start, end, self.feed, self.src)
-                return
-            spec = ArcSpec(self.axes[i], self.axes[j], self.center, swept < 0, self.radius, turns)
-            canon.arc(start, end, spec, self.feed, self.src)
-            return
-        # 3-D circle, or a circle on a rotary axis's surface: a polyline of feeds, at most 5 degrees per segment
-        n = max(1, int(math.ceil(abs(self.phi) * s_end / max(self.prof.length, 1e-12) / math.radians(5.0))))
-        prev = start
-        for k in range(1, n + 1):
-            p = self.point(s_end * k / n)
-            cur = list(self.start_all)
-            for m, ax in enumerate(self.axes):
-                cur[ax] = p[m]
-            cur = tuple(cur)
-            canon.feed(prev, cur, self.feed, self.src)
-            prev = cur
+        timeline.add(self)
 
 
 class Chain:
@@ -418,7 +378,7 @@ class Chain:
         self.moderegs.extend(moderegs)
         self.refresh()
 
-    def prune(self, before: float, canon, names_count: int) -> None:
+    def prune(self, before: float, timeline) -> None:
         """Report and drop the segments that ended before ``before``, so that a chain joined again and again
         (AutoSpool) stays as short as the spooler; no one asks for times that far back any more."""
         k = 0
@@ -427,7 +387,7 @@ class Chain:
         if not k:
             return
         for m in self.segs[:k]:
-            m.emit(canon, names_count)
+            m.emit(timeline)
         del self.segs[:k], self.targets[:k], self.moderegs[:k]
         kept = {id(m) for m in self.segs}
         self.ssf = [e for e in self.ssf if id(e[0]) in kept]
@@ -502,12 +462,12 @@ class Chain:
         held = next((m for m in self.segs if m.t1 == math.inf), None)
         return held.standstill() if held is not None else math.inf
 
-    def emit(self, canon, names_count: int) -> None:
+    def emit(self, timeline) -> None:
         if self.retired:
             return
         self.retired = True
         for m in self.segs:
-            m.emit(canon, names_count)
+            m.emit(timeline)
 
 
 def rotate(p, c, n, ang):
@@ -516,3 +476,19 @@ def rotate(p, c, n, ang):
     dot = n[0] * v[0] + n[1] * v[1] + n[2] * v[2]
     cross = (n[1] * v[2] - n[2] * v[1], n[2] * v[0] - n[0] * v[2], n[0] * v[1] - n[1] * v[0])
     return tuple(c[k] + v[k] * cs + cross[k] * sn + n[k] * dot * (1 - cs) for k in range(3))
+
+
+def reach_tick(mv, dist: float, after: float) -> float:
+    """The first tick (after ``after``) at which move ``mv`` has run ``dist`` along its path, by bisection of
+    its monotonic s(t); a held move (no end) is looked at again 1000 ticks later."""
+    hi = mv.t1
+    if hi == math.inf:
+        return after + 1000.0
+    lo = after
+    for _ in range(60):
+        mid = 0.5 * (lo + hi)
+        if mv.s_at(mid) >= dist - 1e-9:
+            hi = mid
+        else:
+            lo = mid
+    return hi

@@ -25,6 +25,7 @@ class Parser:
     def __init__(self, tokens: list[Token], warn=None):
         self.toks = tokens
         self.i = 0
+        self.forwards: set[str] = set()  # routines declared forward so far (a stray second forward, L1191)
         self.warn = warn or (lambda code, msg, tok: None)
         # nesting where the manual sets no limit ("nahezu beliebiger Tiefe", L1004): NEST001 beyond ncvm's
         self.statements = 0  # statements the parser is inside
@@ -94,6 +95,7 @@ class Parser:
 
     def program(self) -> A.Program:
         t = self.tok
+        self.forwards.clear()
         prog = A.Program(t.file, t.line, t.col)
         self.directives(prog)
         if self.at_kw("program"):
@@ -235,8 +237,14 @@ class Parser:
             r.result = ty.value
         self.expect_op(";")
         if self.at_kw("forward"):
+            fw = self.tok
             self.advance()
             self.expect_op(";")
+            key = r.name.lower()
+            if key in self.forwards and self.at_kw("begin"):  # the definition, with a stray 'forward'
+                self.error(f"'forward' in the definition of {r.name}: it repeats the heading without 'forward' "
+                           "(L1185-1191)", fw)
+            self.forwards.add(key)
             r.forward = True
             return r
         while True:

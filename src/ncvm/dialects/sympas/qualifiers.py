@@ -9,7 +9,9 @@ from __future__ import annotations
 import math
 
 from .axes import AxisState
+from .commands.jog import new_override
 from .events import input_active
+from .motion import Chain
 from .values import fault
 
 
@@ -21,6 +23,11 @@ def axst(card, a: AxisState, t: float) -> int:
         v |= 1 << b["profile_end"]
         if abs(a.poserr) <= a.q["ipw"]:
             v |= 1 << b["in_position"]
+    mv = a.move
+    if mv is not None and mv.t1 > t and not mv.jog and isinstance(mv, Chain):
+        v |= 1 << b["spool_running"]  # its spooler is working off a chain
+    elif a.spool_halted and any(e[0] == "move" for e in a.spool):
+        v |= 1 << b["spool_halted"]  # halted by SSF 1000 with profiles waiting behind the halt
     if a.closed:
         v |= 1 << b["loop_closed"]
     if a.homed:
@@ -43,7 +50,10 @@ def axst(card, a: AxisState, t: float) -> int:
 def get_qual(card, tk, ax: int, name: str):
     a = card.check_axis(ax)
     t = tk.time
+    if card.scheduler.next_timed() <= t:  # a timed action due (a homing latch at profile end) acts before the read
+        card.scheduler.apply_timed(t)
     if name in ("dp", "rp"):
+        card.settle((ax,), t)  # a profile that has ended: its end rounded to whole counts (card.retire)
         u = card.mpos(a, t) - card.user_shift(a)
         return u - a.poserr if name == "rp" else u
     if name == "tp":
@@ -87,6 +97,8 @@ def set_qual(card, tk, ax: int, name: str, value) -> None:
         a.staged[name] = value
         return
     a.q[name] = value
+    if name == "jovr":
+        new_override(card, tk, ax)  # the running jog follows its new override
 
 
 def get_bit(card, tk, ax: int, squal: str, bit: int) -> bool:

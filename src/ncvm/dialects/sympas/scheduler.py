@@ -18,9 +18,14 @@ from .config import Options
 from .motion import TICKS_PER_S
 from .task import ENDED, ERROR, RUNNING, Task, TaskEnd
 
+#: simulated seconds the card must stay quiet (no motion, no timed action or scenario event) before the run
+#: ends with tasks still looping (after the main task ended), or is a deadlock (docs/decisions.md)
+QUIET_S = 10.0
+
 
 class Scheduler:
     def __init__(self, card, cfg: Options, counter):
+        self.card = card
         self.counter = counter  # the run's StepCounter: the step limit and the statements counted before
         self.q = int(cfg.statements_per_tick)
         self.servo = float(cfg.servo_ticks)
@@ -38,6 +43,13 @@ class Scheduler:
         self._event_tick = math.inf  # the tick of the next scenario event
         self.fault: RuntimeFault | None = None  # the first run-time error of a task (reported at the end)
         self.solo = None  # the only running task, when there is just one
+        self.main: Task | None = None  # the task of the program run (its end ends the run, see _quiet_end)
+        self.last_timed = 0.0  # tick of the last timed action applied
+        self.clock_reads = 0  # CLOCK reads so far (a task waiting for a time is not deadlocked)
+        self.quiet_ticks = QUIET_S * TICKS_PER_S
+        self._quiet = None  # (quiet since, snapshot, taken at): the deadlock watch
+        self.idle_end: float | None = None  # the run's end when it ended with tasks still looping
+        self.left_running: list = []  # those tasks
 
     # -- timed actions -----------------------------------------------------------------------------
     def add_timed(self, tick: float, fn) -> None:
@@ -72,10 +84,12 @@ class Scheduler:
                 if e > upto or e == math.inf:
                     return
                 ev = self.events.pop()
+                self.last_timed = max(self.last_timed, e)
                 self._event_tick = self._tick_of_next_event()
                 self.event_act(ev)
             elif t <= upto:
-                _, _, fn = heapq.heappop(timed)
+                tick, _, fn = heapq.heappop(timed)
+                self.last_timed = max(self.last_timed, tick)
                 fn()
             else:
                 return
@@ -93,7 +107,8 @@ class Scheduler:
                 step = max(step, min(self.next_timed(), tk.time + 1000.0 * self.servo))
             return step
         if not tk.others_running():
-            return until
+            nt = self.next_timed()  # a timed action (a soft-limit stop) may end the move before
+            return min(until, nt) if nt > tk.time else until
         # looking every servo cycle, the task could first see a change at the first of its cycles at or
         # after the moment another task or a timed action can act: it looks then, not in every cycle before
         quiet = self.quiet_until(tk)
@@ -154,11 +169,13 @@ class Scheduler:
             self.apply_timed(tk.time)
             if tk.state != RUNNING:
                 continue  # a timed action (RS by ForbidTargetVel) halted it
+            if self.next_timed() == math.inf and not self.card.live and self._quiet_end(tk):
+                return
             horizon = math.inf
             for o in running:
                 if o is not tk:
                     horizon = min(horizon, o.time + self.slice)
-            horizon = min(horizon, self.next_timed())
+            horizon = min(horizon, self.next_timed(), tk.time + 0.25 * self.quiet_ticks)  # back to see if it is over
             if tk.enabled:
                 horizon = min(horizon, tk.time)
             tk.check_at = horizon
@@ -193,6 +210,49 @@ class Scheduler:
                         self.fault = located
                     continue
                 raise
+
+    # -- the end of a run that does not end by itself --------------------------------------------------
+    def _quiet_end(self, tk) -> bool:
+        """Whether the run is over although tasks still run: the card has been quiet (nothing moves, no
+        timed action or scenario event ahead) for QUIET_S since the main task ended, and ``tk``, the task
+        due next, does not wake from a sleep that began before then (it may still start a move). The
+        manual's monitor tasks loop for ever (L1548): they end with the run. With the main task still
+        running, a quiet card whose state (CI, CD, the tasks' variables, CLOCK reads) has not changed over
+        another QUIET_S is a deadlock: RUN005 with each task's line."""
+        card, main = self.card, self.main
+        since = max(card.timeline.last_end, self.last_timed)
+        ended = main is not None and main.state in (ENDED, ERROR)
+        if ended:
+            since = max(since, main.time)
+        if tk.time < since + self.quiet_ticks:
+            return False
+        if ended:
+            if tk.waits_for is not None and tk.slept_at < since + self.quiet_ticks:
+                return False
+            self.idle_end = max(card.timeline.last_end, main.time)  # the run's work was done then
+            self.left_running = [t for t in self.tasks if t.state == RUNNING]
+            return True
+        q = self._quiet
+        if q is not None and q[0] == since and tk.time < q[2] + self.quiet_ticks:
+            return False  # compared once per window
+        snap = self._snapshot()
+        if q is None or q[0] != since or q[1] != snap:
+            self._quiet = (since, snap, tk.time)
+            return False
+        waiting = [t for t in self.tasks if t.state == RUNNING]
+        places = ", ".join(f"task {t.number} at line {w[1]}" for t in waiting if (w := t.where()) is not None)
+        at = (main.where() if main is not None and main.state == RUNNING else None) or waiting[0].where()
+        raise RuntimeFault("RUN005", f"waiting for ever: every running task waits for something no task, move or "
+                                     f"scenario event can bring ({places})",
+                           Span(at[0], at[1], 1) if at else None)
+
+    def _snapshot(self) -> tuple:
+        card = self.card
+        tasks = []
+        for t in self.tasks:
+            if t.state == RUNNING and t.unit is not None and t.ns is not None:
+                tasks.append((t.number, repr(t.unit.variables(t)), t.where()))
+        return (tuple(card.ci), tuple(card.cd), repr(card.sys), self.clock_reads, tuple(tasks))
 
     def capture_locals(self, tk, tb) -> None:
         """Keep the main block's locals (its variables) when the task stops by an exception."""

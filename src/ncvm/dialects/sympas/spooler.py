@@ -14,6 +14,12 @@ class Spooler:
         self.axes = axes
         self.capacity = capacity  # entries per axis (sympas.spool_capacity)
         self.planning_chain = False  # SSMS is planning a chain: no feed hold on its single segments
+        self._tickets = 0
+
+    def ticket(self) -> int:
+        """The sequence number of a new spooler entry: entries run in the order they were spooled."""
+        self._tickets += 1
+        return self._tickets
 
     def chain_pending(self, ax: int, t: float) -> int:
         """Segments of axis ``ax``'s running chain not finished at ``t``: they still hold spooler memory."""

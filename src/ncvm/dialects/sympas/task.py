@@ -48,6 +48,7 @@ class Task:
         self.depth = 0
         self.main_locals = None
         self.held = None  # sched.steps when this task last found its W-wait held by TROVR = 0
+        self.slept_at = 0.0  # when its last sleep (WT, a wait for events) began
         self.waits_for: float | None = None  # while it sleeps: when it acts again if nothing else happens
         self.waits_mark = 0  # sched.acts when waits_for was worked out (valid while no task has acted since)
         self.polls = False  # whether it looks for events while it sleeps
@@ -82,6 +83,7 @@ class Task:
             self.budget -= n
 
     def clock(self, n: int) -> int:
+        self.sched.clock_reads += 1  # a task reading the clock may be waiting for a time (not a deadlock)
         return (int(self.time + n * self.iq) + self.sched.clock0) & 0xFFFFFFFF
 
     def set_budget(self) -> None:
@@ -137,6 +139,20 @@ class Task:
                 self.in_handler = False
             return True
 
+    def where(self):
+        """(file, line) of the statement this task stands at (suspended in a wait or at a check point), or None."""
+        if self.unit is None or self.gen is None:
+            return None
+        name, src = self.unit.pyname, self.unit.src
+        g, frame = self.gen, None
+        while g is not None and hasattr(g, "gi_frame"):
+            if g.gi_frame is not None and g.gi_frame.f_code.co_filename == name:
+                frame = g.gi_frame
+            g = g.gi_yieldfrom
+        if frame is None:
+            return None
+        return self.unit.locs[src.source_line(frame.f_lineno)]
+
     def others_running(self) -> bool:
         return any(t.state == RUNNING and t is not self for t in self.sched.tasks)
 
@@ -149,6 +165,7 @@ class Task:
         card = self.card
         sched = self.sched
         servo = sched.servo
+        self.slept_at = self.time
         try:
             while self.time < tick:
                 step = tick
@@ -256,6 +273,7 @@ class Task:
         if newline:
             self.tskinfo |= 2
             self.card.session.say(self.line)
+            self.card.output_log.append({"task": self.number, "text": self.line})
             if self.card.sys["MODEREG"] & (1 << 26):
                 self.state = STOPPED
                 return True
@@ -274,6 +292,11 @@ class Task:
         yield
 
     def rs(self):
+        where = self.where()
+        place = f"{where[0]}:{where[1]}: " if where else ""
+        self.card.session.say(f"{place}RS: system reset by task {self.number}: the axes stop, the running tasks "
+                              "are stopped")
+        self.card.session.extra["ended"] = f"ended by RS (system reset) at {place.rstrip(': ') or 'task ' + str(self.number)}"
         self.card.reset_system(self.time)
         yield
 

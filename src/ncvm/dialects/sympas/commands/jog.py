@@ -5,7 +5,8 @@ from __future__ import annotations
 
 import math
 
-from ..motion import TICKS_PER_S, Chain, Move, Profile
+from .. import softlimits
+from ..motion import TICKS_PER_S, Chain, Move, Profile, reach_tick
 from .common import source_of, then_wait
 
 
@@ -64,7 +65,20 @@ def _jog(card, tk, items, loc, relative: bool, wait: bool):
             card.scheduler.add_timed(owner.t1, _drift_action(card, a, owner, v1, sign, src))
         a.move = owner
         card.live.add(owner)
+        softlimits.watch(card, owner)
     return then_wait(card, tk, axes, wait)
+
+
+def new_override(card, tk, ax: int) -> None:
+    """A new jovr of a jogging axis acts on the running jog: it goes on to its target with jvl * jovr from
+    the velocity it has (re-planned as a JA to the same target)."""
+    a = card.axes[ax]
+    mv = a.move
+    if not _jogging(card, a, tk.time) or mv.drift:
+        return
+    src = (mv.segs[-1] if isinstance(mv, Chain) else mv).src
+    g = _jog(card, tk, ((ax, a.target - card.user_shift(a)),), src, False, False)
+    assert g is None  # not a W form: it does not wait
 
 
 def run_on(card, a, t: float, v: float, src) -> None:
@@ -97,6 +111,9 @@ def _drift_action(card, a, mv, v: float, sign: float, src):
         mode = card.sys["MODEREG"]
         if mode & (1 << 11):
             card.sys["ERRORREG"] |= 1 << 1
+            card.session.say(f"{src.file}:{src.line}: RS: system reset by ForbidTargetVel (MODEREG bit 11): "
+                             f"{a.name} reached its jog target with jtv")
+            card.session.extra["ended"] = f"ended by RS (system reset) at {src.file}:{src.line}"
             card.reset_system(t)
         elif mode & (1 << 28):
             card.sys["ERRORREG"] |= 1 << 19
@@ -189,10 +206,10 @@ def _latch_at(card, a, mv, dist: float, ref: float, latch: str) -> None:
         if mv.s_at(tick) >= dist - 1e-9:
             _homed(a, ref, latch)
         elif mv.t1 == math.inf or mv.s_at(mv.t1) >= dist - 1e-9:
-            later = _reach_tick(mv, dist, tick)  # held or slowed by the override: look again then
+            later = reach_tick(mv, dist, tick)  # held or slowed by the override: look again then
             card.scheduler.add_timed(later, lambda: when_there(later))
 
-    first = _reach_tick(mv, dist, mv.t0)
+    first = reach_tick(mv, dist, mv.t0)
     card.scheduler.add_timed(first, lambda: when_there(first))
 
 
@@ -251,19 +268,3 @@ def jog_plan(p0: float, p1: float, v0: float, vel: float, acc: float, jerk: floa
         v1 = min(jtv, math.sqrt(w * w + 2.0 * ae * L)) if jtv > 0.0 else 0.0
         pieces.append((p0, p1, Profile(L, max(vel, v1), acc, w, v1, jerk)))
     return pieces
-
-
-def _reach_tick(mv, dist: float, after: float) -> float:
-    """The first tick (after ``after``) at which move ``mv`` has run ``dist`` along its path, by bisection of
-    its monotonic s(t); a held move (no end) is looked at again 1000 ticks later."""
-    hi = mv.t1
-    if hi == math.inf:
-        return after + 1000.0
-    lo = after
-    for _ in range(60):
-        mid = 0.5 * (lo + hi)
-        if mv.s_at(mid) >= dist - 1e-9:
-            hi = mid
-        else:
-            lo = mid
-    return hi

@@ -42,6 +42,8 @@ def fast_line(card, tk, items, loc, relative: bool) -> bool:
         if not -MAX_COUNTS <= q <= MAX_COUNTS:
             beyond_counts(target)
         p = round(q) / c
+        if not a.q["sll"] <= p <= a.q["slr"]:
+            return False  # beyond a soft limit: the general path stops it there (softlimits.py)
         d = p - pos[ax]
         l2 += d * d
         pos[ax] = p
@@ -54,7 +56,7 @@ def fast_line(card, tk, items, loc, relative: bool) -> bool:
     else:
         v = math.sqrt(length * acc)
         end_t = tk.time + 2.0 * length / v * 15625.0
-    if card.scheduler.next_timed() <= end_t:
+    if card.scheduler.next_timed() <= end_t or end_t == math.inf:  # a profile that never ends: refused there
         return False
     for ax, _ in items:
         a = axes[ax]
@@ -62,7 +64,7 @@ def fast_line(card, tk, items, loc, relative: bool) -> bool:
         if a.flags:
             a.flags &= ~card.refused_mask
     tk.time = end_t
-    card.canon.feed(start, tuple(pos), v * 60.0, source_of(tk, loc))
+    card.timeline.direct(start, tuple(pos), v * 60.0, source_of(tk, loc), end_t, length)
     return True
 
 
@@ -127,8 +129,8 @@ def _circle(card, tk, items, loc, relative: bool, wait: bool, target: bool = Fal
         r0 = math.hypot(q0[0] - c[0], q0[1] - c[1])
         r1 = math.hypot(e[0] - c[0], e[1] - c[1])
         if r0 == 0 or abs(r1 - r0) > 1e-3 * r0 + 1e-9:
-            for ax in axes:
-                card.axes[ax].flags |= 1 << card.cfg.axst_bits["refused"]
+            card.refuse(tk, axes, "radius 0" if r0 == 0 else f"the end point is not on the circle (radius {r0:g} at "
+                                  f"the start, {r1:g} at the end)", loc)
             return then_wait(card, tk, axes, wait)
         a0 = math.atan2(q0[1] - c[1], q0[0] - c[0])
         a1 = math.atan2(e[1] - c[1], e[0] - c[0])
@@ -199,8 +201,7 @@ def _circle3d(card, tk, items, loc, relative: bool, wait: bool, target: bool = F
     n = (tk.sysp["PN1"], tk.sysp["PN2"], tk.sysp["PN3"])
     nl = math.sqrt(sum(x * x for x in n))
     if nl == 0:
-        for ax in axes:
-            card.axes[ax].flags |= 1 << card.cfg.axst_bits["refused"]
+        card.refuse(tk, axes, "the plane normal PN1, PN2, PN3 is 0", loc)
         return then_wait(card, tk, axes, wait)
     n = tuple(x / nl for x in n)
     c = tuple(p0[k] + vals[k] if relative else vals[k] + sh[k] for k in range(3))

@@ -5,10 +5,13 @@ from __future__ import annotations
 
 import math
 
+from .. import softlimits
 from ..lookahead import retime
 from ..motion import TICKS_PER_S, Chain
 from .common import source_of
 from .paths import COMMANDS as PATH_MOVES
+
+AUTOSPOOL = 0x20  # MODEREG bit 5 (L1396)
 
 
 def _spool(card, tk, items, loc, kind: str, target: bool = False):
@@ -16,11 +19,15 @@ def _spool(card, tk, items, loc, kind: str, target: bool = False):
     for ax in axes:
         card.check_axis(ax)
     sysp = dict(tk.sysp)
-    entry = ("move", kind, tuple(items), source_of(tk, loc), target, sysp)
+    entry = ("move", kind, tuple(items), source_of(tk, loc), target, sysp, card.spooler.ticket())
     cap = card.spooler.capacity
     if any(card.spooler.used(ax, tk.time) >= cap for ax in axes):
+        if not card.sys["MODEREG"] & AUTOSPOOL:
+            # without AutoSpool the full spooler is not started (L1396): the task waits for room, which
+            # only an SSMS of another task can make (else a deadlock, RUN005)
+            return _enter_after(card, tk, _wait_room(card, tk, axes, cap), axes, entry, cap, loc)
         # AutoSpool (MODEREG bit 5, L1396): with the spooler full, its processing starts and further
-        # profiles are entered only when memory is free again; without the bit the task blocks as well (A-59)
+        # profiles are entered only when memory is free again
         ssms(card, tk, axes, loc)
         g = _wait_spool(card, tk, axes, cap)
         if g is not None:
@@ -32,13 +39,22 @@ def _spool(card, tk, items, loc, kind: str, target: bool = False):
 def _enter(card, tk, axes, entry, cap: int, loc) -> None:
     for ax in axes:
         card.axes[ax].spool.append(entry)
-    if any(card.spooler.used(ax, tk.time) >= cap for ax in axes):
+    if card.sys["MODEREG"] & AUTOSPOOL and any(card.spooler.used(ax, tk.time) >= cap for ax in axes):
         ssms(card, tk, axes, loc)  # the spooler is full now: AutoSpool starts it
 
 
 def _enter_after(card, tk, wait, axes, entry, cap: int, loc):
     yield from wait
     _enter(card, tk, axes, entry, cap, loc)
+
+
+def _wait_room(card, tk, axes, cap: int):
+    """Wait, looking every servo cycle, until every axis of ``axes`` has a free spooler entry."""
+    try:
+        while any(card.spooler.used(ax, tk.time) >= cap for ax in axes):
+            yield from tk.wait_until(tk.time + card.scheduler.servo)
+    finally:
+        tk.leaves_wait()
 
 
 def _wait_spool(card, tk, axes, cap: int):
@@ -97,7 +113,7 @@ def smcr3d(card, tk, items, loc, target=False):
 
 def ssf(card, tk, items, loc):
     code = int(tk.sysp["SSFP"])
-    entry = ("ssf", code, tuple(items), loc)
+    entry = ("ssf", code, tuple(items), loc, card.spooler.ticket())
     for ax, _ in items:
         card.check_axis(ax).spool.append(entry)
     return None
@@ -125,8 +141,27 @@ def ssms(card, tk, axes, loc):
 
 
 def ssmsw(card, tk, axes, loc):
+    """SSMSW waits until all spooled profiles of the axes are done (L2101-2108): behind a spooler halt
+    (SSF 1000) that means until an SSMS, from another task, has run the rest too."""
     ssms(card, tk, axes, loc)
-    return card.wait_axes(tk, axes)
+    g = card.wait_axes(tk, axes)
+    if g is None and not _spooled(card, axes):
+        return None
+    return _wait_spooled(card, tk, axes, g)
+
+
+def _spooled(card, axes) -> bool:
+    return any(e[0] == "move" for ax in axes for e in card.axes[ax].spool)
+
+
+def _wait_spooled(card, tk, axes, g):
+    while True:
+        if g is not None:
+            yield from g
+        if not _spooled(card, axes):
+            return
+        yield from tk.wait_until(tk.time + card.scheduler.servo)  # halted: look again every servo cycle
+        g = card.wait_axes(tk, axes)
 
 
 def _chain(card, tk, axes, loc):
@@ -151,12 +186,11 @@ def _chain(card, tk, axes, loc):
     segs, targets, ssf_after, full0 = [], [], [], None
     try:
         while True:
-            e = None
-            for ax in axes:
-                sp = card.axes[ax].spool
-                if sp and not card.axes[ax].spool_halted:
-                    e = sp[0]
-                    break
+            # the entries run in the order they were spooled, across the axes (a square of four SMLR
+            # is a square): the oldest entry at the head of a started spooler is next
+            heads = [card.axes[ax].spool[0] for ax in axes
+                     if card.axes[ax].spool and not card.axes[ax].spool_halted]
+            e = min(heads, key=lambda h: h[-1], default=None)
             if e is None:
                 break
             e_axes = [ax for ax, _ in e[2]]
@@ -173,7 +207,7 @@ def _chain(card, tk, axes, loc):
                 else:
                     ssf_after.append((len(segs), _ssf_action(card, e[1], e[2])))
                 continue
-            _, kind, items, eloc, target, sysp = e
+            _, kind, items, eloc, target, sysp, _ = e
             tk.sysp = sysp
             tk.time = t
             if full0 is None:
@@ -219,6 +253,7 @@ def _chain(card, tk, axes, loc):
     for ax in chain.axes:
         a = card.axes[ax]
         a.move = chain
+    softlimits.watch(card, chain)
     for k, act in ssf_after:
         _arm_ssf(card, chain, segs[k - 1], act)
 
@@ -239,7 +274,7 @@ def _join(card, tk, chain, segs: list, targets: list, mode: int, ssf_after: list
     the new ones by the look-ahead, so the axes do not stop at the old end (digest §10.5, L1391)."""
     now = tk.time
     sched = card.scheduler  # other tasks lag by a slice at most
-    chain.prune(now - sched.slice - sched.servo, card.canon, len(card.axes))
+    chain.prune(now - sched.slice - sched.servo, card.timeline)
     old = len(chain.segs)
     if not segs:
         for _, act in ssf_after:
@@ -270,6 +305,7 @@ def _join(card, tk, chain, segs: list, targets: list, mode: int, ssf_after: list
     chain.refresh()
     for ax in chain.axes:
         card.axes[ax].move = chain
+    softlimits.watch(card, chain)
     for entry in list(chain.ssf):  # SSF entries between re-planned segments act at their new ends
         seg, act, armed = entry
         if armed[0] and seg in part:
