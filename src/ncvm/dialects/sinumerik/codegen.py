@@ -297,11 +297,11 @@ class UnitCodegen:
         return getattr(self, f"lower_{at.row.lower}")(at)
 
     def _lines(self, at: "_Site", lines: list[str]) -> bool:
-        """Emit a statement's lines (R parameters reloaded after it where it used a pointer)."""
+        """Emit a statement's lines. Each line that writes the R array itself (a store through a pointer,
+        a read, a call of the channel) reloads the named R parameters after it: a reload here as well
+        would discard a result stored into a named R parameter (``@201 R22 P21``)."""
         for text in lines:
             at.out.emit(text, at.blk.line)
-        if any(o.kind == "P" for o in at.it.operands):
-            at.out.emit("@SYNC_IN", at.blk.line)
         return True
 
     # -- main groups 0 and 1: program structure, branching ---------------
