@@ -41,12 +41,12 @@ def test_l6480_assignment_from_a_pointer_into_a_named_r_parameter(tmp_path: Path
 #: the values of the <Value> operands (R10..): 1 is a channel, an axis, a spindle, a bit number, a sine
 _VALUES = (1.0, 1.0, 1.0, 1.0, 1.0, 1.0)
 #: codes whose <Value> operands name data: ones that exist on the machine (operand index: value; the
-#: MD/SD areas of L6500-6522, the PLC's DB 2)
+#: MD/SD areas of L6500-6522; OUTP DATA the tool offsets, L4508-4517, not the program text itself)
 _DATA = {"301": {1: 5002}, "302": {1: 5002}, "307": {1: 6000}, "308": {1: 6000}, "311": {1: 5013},
          "312": {1: 5013}, "304": {2: 801}, "305": {2: 801}, "314": {2: 802}, "315": {2: 802},
          "401": {0: 5002}, "402": {0: 5002}, "407": {0: 6000}, "408": {0: 6000}, "411": {0: 5013},
          "412": {0: 5013}, "404": {1: 801}, "405": {1: 801}, "414": {1: 802}, "415": {1: 802},
-         "4c0": {0: 4000}}
+         "4c0": {0: 4000}, "a26": {0: 6}}
 #: the value of the <Var> operands (R30..): a bit pattern, so that the pattern codes accept it
 _VAR = 101.0
 
