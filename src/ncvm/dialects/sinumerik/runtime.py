@@ -113,7 +113,8 @@ class Channel(SysMem):
         self.loader = loader  # number -> compiled unit (or None)
         sec = session.machine.sections.get("sin800", {})
         self.block_skip = bool(sec.get("block_skip", session.machine.setting_data.get("block_skip", True)))
-        self.m0_stops = str(sec.get("m0", "stop")) == "stop"
+        # M0: the run goes on as after the operator's cycle start, unless [sin800] m0 = "stop"
+        self.m0_stops = self.kernel.m0_stops = str(sec.get("m0", "continue")) == "stop"
         self.max_depth = int(sec.get("max_call_depth", 8))
         self.cycle_alarm_stop = bool(sec.get("cycle_alarm_stop", True))
         # decode-ahead (digest §10.5): 0 = lockstep; N = up to N decoded blocks wait for execution
@@ -306,8 +307,7 @@ class Channel(SysMem):
             self.halted = True
             return True
         if k.stopped_at == "M0" and self.m0_stops:
-            self.halted = True
-            self.session.say("program stopped at M0")
+            self.halted = True  # the kernel's stop line says so
             return True
         k.stopped_at = None
         return False
