@@ -114,3 +114,16 @@ def test_program_number_range_per_control(tmp_path: Path):
     m.sections["cl800"] = {"control": "810"}
     [diag] = d.check(str(tmp_path / "p.cl8"), text, m)
     assert diag.code == "E027" and "1..999" in diag.message
+
+
+@pytest.mark.parametrize("name", ["hole_pattern.cl8", "deep_hole_drilling.cl8"])
+def test_e208_is_an_editor_message_the_manual_listings_7_3_and_7_4_compile(tmp_path: Path, name: str):
+    """L6218-6230: E208 (line longer than one screen line) is caused by incorrect editor operation; the
+    compiler takes the listings of 7.3 and 7.4 with their lines of 85-89 characters (L5378, L5530)."""
+    from ncvm.api import compile_program
+
+    src = Path(__file__).parents[4] / "examples" / "cl800" / name
+    assert max(len(line) for line in src.read_text().splitlines()) > 84
+    assert check(src) == []
+    compile_program(src, out=tmp_path / "out.spf")
+    assert (tmp_path / "out.spf").read_text().startswith("%SPF")
