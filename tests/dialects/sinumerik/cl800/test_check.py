@@ -127,3 +127,26 @@ def test_e208_is_an_editor_message_the_manual_listings_7_3_and_7_4_compile(tmp_p
     assert check(src) == []
     compile_program(src, out=tmp_path / "out.spf")
     assert (tmp_path / "out.spf").read_text().startswith("%SPF")
+
+
+def _warnings(tmp_path: Path, body: str) -> list[tuple[str, int]]:
+    src = tmp_path / "sd.cl8"
+    src.write_text("PROGRAM 7;\nCHANNEL NC 0;\nPAR REAL: R10, R11, R12;\nBEGIN\n" + body + "END.\n")
+    return [(d.code, d.span.line) for d in check(src)]
+
+
+def test_l4301_actual_value_read_needs_stop_dec_in_a_block_before_it(tmp_path: Path):
+    """L4301, L2668: STOP DEC before each read of actual values, in the block before the read. The
+    compiler packs statements into one NC block until LF: a move, STOP DEC and the read in one block
+    read the position before the move (SIN010 at the read's source line)."""
+    assert _warnings(tmp_path, "  (: G0 X10 :);\n  R10 = ACPM (1);\n") == [("SIN010", 6)]
+    assert _warnings(tmp_path, "  (: G0 X10 :);\n  STOP DEC;\n  R10 = ACPM (1);\n") == [("SIN010", 7)]
+    assert _warnings(tmp_path, "  (: G0 X10 :); LF;\n  STOP DEC;\n  R10 = ACPM (1);\n") == []
+    assert _warnings(tmp_path, "  (: G0 X10 :); LF;\n  R11 = 1; LF;\n  R10 = ACPM (1);\n") == [("SIN010", 7)]
+
+
+def test_l4301_stop_dec_after_each_measurement(tmp_path: Path):
+    """L4301: STOP DEC after each "measure" (MEAS M); the warning names the MEAS M statement's line."""
+    meas = "  R10 = MEAS M (1); PRAP (1) = 20; LF;\n"
+    assert _warnings(tmp_path, meas + "  R11 = R10 + 1;\n") == [("SIN010", 5)]
+    assert _warnings(tmp_path, meas + "  STOP DEC;\n  R11 = R10 + 1;\n") == []

@@ -22,6 +22,7 @@ from .atcode import ObjectProgram, compile_program
 from .axiswords import axis_diagnostics
 from .checker import check_program
 from .messages import CompilerMessage
+from .stopdec import stop_dec_diagnostics
 
 _SNIFF = re.compile(r"^\s*(PROGRAM\s+\d+\s*;|EXTERNAL\s+\d+\s*;|CHANNEL\s+NC\s+\d+|BEGIN\b|END\.|ENDEXTERN)", re.M)
 
@@ -88,9 +89,11 @@ class Cl800Dialect(Dialect):
             return [errs[0]]
         if not errs and isinstance(prog, ast.Program):
             try:
-                compile_program(path, prog, sym)  # S064, S120, S125-S127 show only while generating code
+                obj = compile_program(path, prog, sym)  # S064, S120, S125-S127 show only while generating code
             except CompilerMessage as e:
                 diags.append(e.diagnostic())
+            else:
+                diags += stop_dec_diagnostics(path, obj)
         return diags + axis_diagnostics(path, prog, machine.axis_names)
 
     def build(self, path: str, text: str, machine) -> ObjectProgram:

@@ -54,6 +54,21 @@ class ObjectProgram:
         lines += [f"{b.source_line:5d} {b.text()}" for b in self.blocks]
         return "\n".join(lines) + "\n"
 
+    def source_line(self, line: int, column: int | None = None) -> int:
+        """The source line of the statement that produced the object text at ``line`` (1: the ``%SPF``
+        header), ``column``: the statement whose words stand there (None: the block's first)."""
+        if line <= 1 or line - 2 >= len(self.blocks):
+            return self.header_line
+        blk = self.blocks[line - 2]
+        at = len(f"N{blk.number} ") + 1 if blk.number is not None else 1
+        found = blk.source_line
+        for text, src in blk.items:
+            if column is not None and column < at:
+                break
+            found = src
+            at += len(text) + 1
+        return found
+
 
 def fmt_number(v) -> str:
     """A constant as the NC reads it: no '+', no trailing zeros or '.' (digest §5.3)."""
