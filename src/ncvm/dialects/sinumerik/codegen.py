@@ -423,7 +423,7 @@ class UnitCodegen:
                                y=self.val(ops[2]) if len(ops) > 2 else None,
                                k=int(ops[1].value) if len(ops) > 1 else None)
         if row.overflows and not self.strict:
-            expr = f"_finite({expr})"
+            expr = f"_r_value({expr})"  # (strict stores check the range themselves)
         return self._lines(at, self.store(target, expr))
 
     # -- main group 7: NC-specific functions --------------------------------

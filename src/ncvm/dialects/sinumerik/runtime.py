@@ -31,7 +31,7 @@ from ...runtime.buffer import BlockBuffer
 from ...runtime.locate import fault_line
 from .errors import Cl800Error
 from .memory import SystemMemory
-from .ncdata import MIB_TOP, NcData, int_to_pattern, nc8, pattern_to_int
+from .ncdata import MIB_TOP, R_LIMIT, NcData, int_to_pattern, nc8, pattern_to_int, r_value
 from .plc import PlcClock
 from .plcmem import Plc
 from .probe import Probe
@@ -72,6 +72,20 @@ def _finite(value: float) -> float:
     raise Cl800Error(f"{value:g} is outside the R parameter range +/-99999999")
 
 
+def _sin(x: float) -> float:
+    """SIN of an angle in degrees; the NC takes -360 to +360 (L3779)."""
+    if -360.0 <= x <= 360.0:
+        return math.sin(x * DEG)
+    raise Cl800Error(f"SIN({x:g}): the angle must lie between -360 and +360 degrees")
+
+
+def _cos(x: float) -> float:
+    """COS of an angle in degrees; the NC takes -360 to +360 (L3800)."""
+    if -360.0 <= x <= 360.0:
+        return math.cos(x * DEG)
+    raise Cl800Error(f"COS({x:g}): the angle must lie between -360 and +360 degrees")
+
+
 def _int(value: float) -> int:
     n = int(value)
     if n != value:
@@ -80,9 +94,9 @@ def _int(value: float) -> int:
 
 
 NAMESPACE_GLOBALS = {
-    "_Block": Block, "_int": _int, "_ptr": _ptr, "_hypot": math.hypot, "_sin": math.sin,
-    "_cos": math.cos, "_trunc": math.trunc, "_DEG": DEG,
-    "_nc8": nc8, "_finite": _finite,
+    "_Block": Block, "_int": _int, "_ptr": _ptr, "_hypot": math.hypot, "_sin": _sin,
+    "_cos": _cos, "_trunc": math.trunc,
+    "_nc8": nc8, "_finite": _finite, "_r_value": r_value,
 }
 
 
@@ -425,10 +439,13 @@ class Channel(SysMem):
 
     # -- main group 6 helpers --------------------------------------------
     def tan(self, x: float) -> float:
-        c = math.cos(x * DEG)
-        if abs(c) < 1e-12:
-            raise Cl800Error(f"TAN({x:g}) is not defined")
-        return math.sin(x * DEG) / c
+        """TAN takes 0 to +/-89.999999, +/-90.00001 to 269.9999 and +/-270.0001 to +/-360 degrees (L3821):
+        near the poles the result would leave the R range."""
+        a = abs(x)
+        if a > 360.0 or 89.999999 < a < 90.00001 or 269.9999 < a < 270.0001:
+            raise Cl800Error(f"TAN({x:.10g}) is not defined: the angle must lie in 0 to +/-89.999999, +/-90.00001 "
+                             "to 269.9999 or +/-270.0001 to +/-360 degrees")
+        return math.sin(x * DEG) / math.cos(x * DEG)
 
     def sqrt(self, x: float) -> float:
         if x < 0.0:
@@ -446,9 +463,11 @@ class Channel(SysMem):
         return math.log(x)
 
     def inv_ln(self, x: float) -> float:
-        if x > 709.0:  # e**709.8 is the largest double; the NC's range ends long before
-            raise Cl800Error(f"INV LN({x:g}): the result is too large")
-        return math.exp(x)
+        if x <= 709.0:  # e**709.8 is the largest double
+            value = math.exp(x)
+            if value <= R_LIMIT:
+                return value
+        raise Cl800Error(f"INV LN({x:g}): the result is outside the R parameter range +/-99999999 (L7079)")
 
     def angle(self, a: float, b: float) -> float:
         d = math.degrees(math.atan2(a, b))
