@@ -28,7 +28,7 @@ from ...nc.canon import CanonSink, Src
 from ...nc.kernel import INCH
 from ...nc.spindle import SINUMERIK_GEARS, Gearbox
 from ...runtime.buffer import BlockBuffer
-from ...runtime.locate import fault_line
+from ...runtime.locate import generated_frames
 from .errors import Cl800Error
 from .memory import SystemMemory
 from .ncdata import MIB_TOP, R_LIMIT, NcData, int_to_pattern, nc8, pattern_to_int, r_value
@@ -287,9 +287,9 @@ class Channel(SysMem):
 
     def _locate(self, f: RuntimeFault, unit) -> None:
         if f.span is None:
-            line = fault_line(sys.exc_info()[2], unit.source)
-            if line is not None:
-                f.span = Span(unit.path, line)
+            frames = generated_frames(sys.exc_info()[2], {unit.source.filename: unit.source})
+            if frames:
+                f.span = Span(unit.path, frames[-1].line, frames[-1].col)
         if not f.stack:
             f.stack = [Frame(fr.unit, None) for fr in self.frames]
             for i in range(len(self.frames) - 1):

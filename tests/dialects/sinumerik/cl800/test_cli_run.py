@@ -76,3 +76,18 @@ def test_compile_refuses_a_file_without_end_dot(tmp_path: Path):
     assert res.exit_code == 1 and "open.cl8:4: error E300: File cannot be compiled" in res.output
     res = CliRunner().invoke(cli, ["check", str(src)])
     assert "error E060" in res.output  # the editor's analysis reports the missing END.
+
+
+def test_a_run_time_error_names_the_cl800_statement(tmp_path: Path):
+    """Issue 15: a CL 800 error of the run is reported at the .cl8 statement that caused it (here the second
+    of two statements the compiler packed into one NC block), not at the object program the run never
+    writes; the object block is in a note."""
+    src = tmp_path / "rt.cl8"
+    src.write_text("PROGRAM 7;\nCHANNEL NC 0;\nPAR REAL: R10, R11;\nBEGIN\n  R10 = 5;\n  R11 = INV LN (100);\nEND.\n")
+    result, _ = run(src, options=RunOptions(state_dir=tmp_path / ".ncvm"))
+    err = result["error"]
+    assert (err["code"], err["file"], err["line"]) == ("CL800", str(src), 6)
+    assert err["stack"] == ["object program L7.spf line 2: @201 R10 K5 @641 R11 K100 M17"]
+    assert not (tmp_path / "L7.spf").exists()
+    res = CliRunner().invoke(cli, ["run", str(src)])
+    assert res.exit_code == 1 and "rt.cl8:6: error CL800" in res.output and "R11 = INV LN (100);" in res.output

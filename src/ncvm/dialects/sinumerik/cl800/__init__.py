@@ -9,10 +9,10 @@ dialect, as the object program was loaded into the NC.
 from __future__ import annotations
 
 import re
-from dataclasses import asdict, dataclass
+from dataclasses import asdict, dataclass, replace
 from pathlib import Path
 
-from ....diagnostics import CompileFailed, UsageError
+from ....diagnostics import CompileFailed, RuntimeFault, Span, UsageError
 from ....machine.config import dialect_options
 from ....outpaths import refuse_overwrite, write_output
 from ... import get_dialect
@@ -125,7 +125,39 @@ class Cl800Dialect(Dialect):
     def run(self, path, text, session):
         obj = self.build(path, text, session.machine)
         obj_path = str(Path(path).with_name(f"L{obj.number}.spf"))
-        get_dialect("sin800").run(obj_path, obj.text(), session)
+        try:
+            get_dialect("sin800").run(obj_path, obj.text(), session)
+        except RuntimeFault as fault:
+            where = _ObjectPlaces(path, obj_path, obj)
+            fault.notes += where.note(fault.span)
+            fault.span = where.place(fault.span)
+            fault.stack = [replace(f, span=where.place(f.span)) for f in fault.stack]
+            raise
+        except CompileFailed as failed:  # the NC's reader refused a block (DIN code the compiler passed on)
+            where = _ObjectPlaces(path, obj_path, obj)
+            for d in failed.diagnostics:
+                d.notes = where.note(d.span) + d.notes
+                d.span = where.place(d.span)
+            raise
+
+
+class _ObjectPlaces:
+    """Places in the object program, which a run of the source never writes to disk, as the CL 800
+    statements that produced their blocks; the object block itself goes into a note."""
+
+    def __init__(self, path: str, obj_path: str, obj: ObjectProgram):
+        self.path, self.obj_path, self.obj = path, obj_path, obj
+
+    def place(self, span: Span | None) -> Span | None:
+        if span is None or span.file != self.obj_path:
+            return span
+        return Span(self.path, self.obj.source_line(span.line, span.column))
+
+    def note(self, span: Span | None) -> list[str]:
+        if span is None or span.file != self.obj_path or not 2 <= span.line <= len(self.obj.blocks) + 1:
+            return []
+        return [f"object program {Path(self.obj_path).name} line {span.line}: "
+                f"{self.obj.blocks[span.line - 2].text()}"]
 
 
 DIALECT = Cl800Dialect()

@@ -60,10 +60,12 @@ class ObjectProgram:
         if line <= 1 or line - 2 >= len(self.blocks):
             return self.header_line
         blk = self.blocks[line - 2]
+        if column is None:
+            return blk.source_line
         at = len(f"N{blk.number} ") + 1 if blk.number is not None else 1
         found = blk.source_line
         for text, src in blk.items:
-            if column is not None and column < at:
+            if column < at:
                 break
             found = src
             at += len(text) + 1
