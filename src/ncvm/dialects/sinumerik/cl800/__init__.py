@@ -114,12 +114,17 @@ class Cl800Dialect(Dialect):
             raise CompileFailed([e.diagnostic()]) from None
 
     def compile(self, path, text, machine, out, xref):
+        """The object program; with ``xref`` the cross-reference listing instead, which a dedicated
+        compilation writes without object code (L361), unless ``out`` asks for the object as well."""
         obj = self.build(path, text, machine)
+        if xref:
+            refuse_overwrite("compile", Path(xref), path)
+            write_output(Path(xref), obj.xref())
+            if not out:
+                return Path(xref)
         target = Path(out) if out else Path(path).with_name(f"L{obj.number}.spf")
         refuse_overwrite("compile", target, path)
         write_output(target, obj.text())
-        if xref:
-            write_output(Path(xref), obj.xref())
         return target
 
     def run(self, path, text, session):
