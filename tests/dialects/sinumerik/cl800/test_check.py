@@ -150,3 +150,24 @@ def test_l4301_stop_dec_after_each_measurement(tmp_path: Path):
     meas = "  R10 = MEAS M (1); PRAP (1) = 20; LF;\n"
     assert _warnings(tmp_path, meas + "  R11 = R10 + 1;\n") == [("SIN010", 5)]
     assert _warnings(tmp_path, meas + "  STOP DEC;\n  R11 = R10 + 1;\n") == []
+
+
+def _first(tmp_path: Path, decl: str, body: str) -> tuple[str, int]:
+    src = tmp_path / "p.cl8"
+    src.write_text(f"PROGRAM 7;\nCHANNEL NC 0;\n{decl}BEGIN\n{body}END.\n")
+    d = check(src)[0]
+    return d.code, d.span.line
+
+
+def test_l7074_a_bit_pattern_with_other_digits_is_e051(tmp_path: Path):
+    """L7074-7075: a bit pattern has 8 digits 0/1; B00000002 is E051 (bit pattern outside limits)."""
+    assert _first(tmp_path, "LOCAL PATTERN: R60;\n", "  R60 = B00000002;\n") == ("E051", 5)
+
+
+def test_l1297_a_label_has_at_most_8_characters(tmp_path: Path):
+    """L1297: the name of a label can have up to 8 characters."""
+    assert _first(tmp_path, "LABEL: Destinat9;\n", "  GOTO Destinat9;\n  Destinat9: R0 = 1;\n") == ("E061", 3)
+    src = tmp_path / "p.cl8"
+    src.write_text("PROGRAM 7;\nCHANNEL NC 0;\nPAR INTEGER: R0;\nLABEL: Destinat;\nBEGIN\n  GOTO Destinat;\n"
+                   "  Destinat: R0 = 1;\nEND.\n")
+    assert check(src) == []

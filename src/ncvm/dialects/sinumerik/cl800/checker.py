@@ -8,6 +8,7 @@ message numbers. Code generation then assumes a valid tree.
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -31,6 +32,8 @@ WINDOWS = {
     "PREP CYC": ((98, 998),),
 }
 LIST_EXTENSIONS = (".cl8", ".cl800", ".ext", ".lst8")
+#: an undeclared name that is a bit pattern but for its digits (B00000002): E051, not E037
+_DIGIT_PATTERN = re.compile(r"[Bb][0-9]{1,8}")
 
 
 @dataclass
@@ -260,6 +263,8 @@ class Checker:
             d = self.sym.by_name.get(key)
             if d is None:
                 code = "E054" if key in self.prog.consts or key in self.prog.labels else "E037"
+                if code == "E037" and _DIGIT_PATTERN.fullmatch(op.name):
+                    code = "E051"  # B00000002: a bit pattern with a digit other than 0 and 1 (L7074-7075)
                 self.err(code, op, op.name)
             return d
         d = self.sym.by_r.get(op.r)

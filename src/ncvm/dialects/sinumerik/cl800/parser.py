@@ -275,6 +275,8 @@ class Parser:
             while True:
                 n = self.new_name()
                 key = norm(n.text)
+                if len(n.text) > 8:
+                    raise self.fail("E061", n, f"a label has at most 8 characters (L1297): {n.text}")
                 if key in prog.labels:
                     raise self.fail("E036", n)
                 prog.labels[key] = (n.line, n.col, n.text)
