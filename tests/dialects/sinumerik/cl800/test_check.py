@@ -171,3 +171,13 @@ def test_l1297_a_label_has_at_most_8_characters(tmp_path: Path):
     src.write_text("PROGRAM 7;\nCHANNEL NC 0;\nPAR INTEGER: R0;\nLABEL: Destinat;\nBEGIN\n  GOTO Destinat;\n"
                    "  Destinat: R0 = 1;\nEND.\n")
     assert check(src) == []
+
+
+@pytest.mark.parametrize("kind", ["REAL", "INTEGER", "PATTERN"])
+def test_l4730_a_condition_is_boolean_not_a_variable_of_another_type(tmp_path: Path, kind: str):
+    """L4730-4748: IF takes a BOOLEAN condition; a REAL (INTEGER, PATTERN) variable alone is E030."""
+    body = "  IF R60 THEN R61 = 1; ENDIF;\n"
+    assert _first(tmp_path, f"LOCAL {kind}: R60;\nLOCAL BOOLEAN: R61;\n", body) == ("E030", 6)
+    src = tmp_path / "p.cl8"
+    src.write_text(f"PROGRAM 7;\nCHANNEL NC 0;\nLOCAL BOOLEAN: R60, R61;\nBEGIN\n{body}END.\n")
+    assert check(src) == []

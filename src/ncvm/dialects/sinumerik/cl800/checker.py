@@ -233,8 +233,8 @@ class Checker:
         arithmetic = isinstance(e, (ast.Num, ast.Call)) or (
             isinstance(e, ast.Binary) and e.op in ("+", "-", "*", "/", "OR", "XOR", "AND", "NAND")) or (
             isinstance(e, ast.Unary) and e.op in ("-", "NOT"))
-        if arithmetic:
-            self.err("E030", e)
+        if arithmetic or (isinstance(e, ast.Operand) and e.type in ("REAL", "INTEGER", "PATTERN")):
+            self.err("E030", e)  # a REAL, INTEGER or PATTERN variable alone is no condition
         return e
 
     def nc_function(self, target: ast.Operand, call: ast.Call) -> None:
