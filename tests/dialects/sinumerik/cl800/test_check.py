@@ -181,3 +181,24 @@ def test_l4730_a_condition_is_boolean_not_a_variable_of_another_type(tmp_path: P
     src = tmp_path / "p.cl8"
     src.write_text(f"PROGRAM 7;\nCHANNEL NC 0;\nLOCAL BOOLEAN: R60, R61;\nBEGIN\n{body}END.\n")
     assert check(src) == []
+
+
+@pytest.mark.parametrize(("decl", "where"), [
+    ("LABEL: Dest;\nLOCAL REAL: R60:=Dest;\n", (4, 13)),   # the variable is the second declaration
+    ("LOCAL REAL: R60:=Dest;\nLABEL: Dest;\n", (4, 8)),    # the label is
+    ("CONST: Dest:=5;\nLABEL: Dest;\n", (4, 8)),
+])
+def test_e036_names_the_second_declaration(tmp_path: Path, decl: str, where: tuple[int, int]):
+    """E036 (variable name double, L6194) stands where the name is declared the second time."""
+    src = tmp_path / "p.cl8"
+    src.write_text(f"PROGRAM 7;\nCHANNEL NC 0;\n{decl}BEGIN\n  R60 = 1;\nEND.\n")
+    d = [d for d in check(src, all_errors=True) if d.code == "E036"][0]
+    assert (d.span.line, d.span.column) == where
+
+
+def test_e010_a_missing_dot_after_end_is_reported_at_end(tmp_path: Path):
+    """E010 ("." expected): at the END of a 7-line file, not at a line 8 the file does not have."""
+    src = tmp_path / "p.cl8"
+    src.write_text("PROGRAM 7;\nCHANNEL NC 0;\nLOCAL REAL: R60;\nBEGIN\n  R60 = 1;\n  R60 = 2;\nEND\n")
+    d = check(src)[0]
+    assert (d.code, d.span.line, d.span.column) == ("E010", 7, 4)

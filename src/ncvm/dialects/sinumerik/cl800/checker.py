@@ -77,12 +77,16 @@ class Checker:
             self.load_list(*ref)
         for d in prog.decls:
             self.declare(d)
+        # a name declared twice is reported where it is declared the second time
         for key, (_num, line, col, _raw) in prog.consts.items():
             if key in self.sym.by_name:
-                self.errors.append(CompilerMessage("E036", self.path, line, col))
+                self._double(self.sym.by_name[key], line, col)
         for key, (line, col, _raw) in prog.labels.items():
-            if key in self.sym.by_name or key in prog.consts:
-                self.errors.append(CompilerMessage("E036", self.path, line, col))
+            if key in self.sym.by_name:
+                self._double(self.sym.by_name[key], line, col)
+            elif key in prog.consts:
+                other = prog.consts[key]
+                self.errors.append(CompilerMessage("E036", self.path, *max((line, col), (other[1], other[2]))))
         self.block(prog.body, top=True)
         for g in self.gotos:
             key = norm(g.target)
@@ -284,6 +288,13 @@ class Checker:
             if d.cls != "POINTER":
                 self.err("E054", op, f"R{d.r} is not a POINTER")
             op.type = ""
+
+    def _double(self, d: ast.Decl, line: int, col: int) -> None:
+        """E036 for a CONST or LABEL name that a variable declaration (``d``) also declares: at the later
+        of the two (a variable from a list file counts as declared first: the header names the lists)."""
+        if d.file in ("", self.path) and (d.line, d.col) > (line, col):
+            line, col = d.line, d.col
+        self.errors.append(CompilerMessage("E036", self.path, line, col, d.name or ""))
 
     def bit(self, b: ast.Bit, write: bool = False) -> None:
         if isinstance(b.bit, str):

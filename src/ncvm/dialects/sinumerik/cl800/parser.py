@@ -172,7 +172,8 @@ class Parser:
         end = self.advance()
         prog.end_line = end.line
         if not self.is_sym("."):
-            self.errors.append(self.fail("E010"))
+            # where the dot belongs, right after END (not at the next token, which may be the end of the file)
+            self.errors.append(CompilerMessage("E010", self.path, end.line, end.col + len(end.text)))
         else:
             self.advance()
         if self.tok.kind != "EOF":
