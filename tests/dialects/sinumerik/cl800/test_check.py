@@ -202,3 +202,35 @@ def test_e010_a_missing_dot_after_end_is_reported_at_end(tmp_path: Path):
     src.write_text("PROGRAM 7;\nCHANNEL NC 0;\nLOCAL REAL: R60;\nBEGIN\n  R60 = 1;\n  R60 = 2;\nEND\n")
     d = check(src)[0]
     assert (d.code, d.span.line, d.span.column) == ("E010", 7, 4)
+
+
+def test_l1145_the_id_designation_has_its_fixed_terms(tmp_path: Path):
+    """L1116-1145: terms 1-4 of ID are fixed and separated by hyphens; ``ID (X);`` is E032."""
+    assert _first(tmp_path, "ID (X);\n", "") == ("E032", 3)
+    src = tmp_path / "p.cl8"
+    src.write_text("PROGRAM 7;\nCHANNEL NC 0;\nID (0-EXAMPLE-22.07.85-KUB-SIEM:MA:850:02);\nBEGIN\nEND.\n")
+    assert check(src) == []
+
+
+def _lists(tmp_path: Path, refs: str) -> tuple[str, str, int]:
+    (tmp_path / "A.cl8").write_text('EXTERNAL 50;\nCHANNEL NC 0;\nGLOBAL REAL: R150:=x;\nENDEXTERN\n')
+    (tmp_path / "B.cl8").write_text('EXTERNAL 51;\nCHANNEL NC 0;\nCENTRAL REAL: R950:=y;\nENDEXTERN\n')
+    (tmp_path / "C.cl8").write_text('CHANNEL NC 0;\nGLOBAL REAL: R152:=z;\nENDEXTERN\n')
+    src = tmp_path / "p.cl8"
+    src.write_text(f"PROGRAM 7;\nCHANNEL NC 0;\n{refs}BEGIN\nEND.\n")
+    d = check(src)[0]
+    return d.code, Path(d.span.file).name, d.span.line
+
+
+def test_l1307_a_list_that_does_not_start_with_external_is_e014(tmp_path: Path):
+    """L1307-1318: a declaration list starts with EXTERNAL <list number>; E014 "EXTERNAL" expected."""
+    assert _lists(tmp_path, 'GLOBAL: "C";\n') == ("E014", "C.cl8", 1)
+
+
+@pytest.mark.parametrize("refs", ['GLOBAL: "A"; "B";\n', 'GLOBAL: "A"; CENTRAL: "B";\n'])
+def test_e035_one_list_reference_per_line(tmp_path: Path, refs: str):
+    """E035 (only one file name possible per line, L6190): two list names on one line."""
+    assert _lists(tmp_path, refs) == ("E035", "p.cl8", 3)
+    src = tmp_path / "ok.cl8"
+    src.write_text('PROGRAM 8;\nCHANNEL NC 0;\nGLOBAL: "A";\nCENTRAL: "B";\nBEGIN\nEND.\n')
+    assert check(src) == []

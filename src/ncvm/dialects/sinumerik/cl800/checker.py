@@ -32,6 +32,8 @@ WINDOWS = {
     "PREP CYC": ((98, 998),),
 }
 LIST_EXTENSIONS = (".cl8", ".cl800", ".ext", ".lst8")
+#: a file that begins (after comments) with EXTERNAL: a declaration list, whatever its errors
+_EXTERNAL_FIRST = re.compile(r"\s*(?:\(\*.*?\*\)\s*)*EXTERNAL\b", re.S | re.I)
 #: an undeclared name that is a bit pattern but for its digits (B00000002): E051, not E037
 _DIGIT_PATTERN = re.compile(r"[Bb][0-9]{1,8}")
 
@@ -127,7 +129,11 @@ class Checker:
         if p is None:
             self.err("E200", where, f'list "{name}"')
             return
-        unit, errors = parse_source(str(p), read_text(p))
+        text = read_text(p)
+        unit, errors = parse_source(str(p), text)
+        if not isinstance(unit, ast.ExtList) and not _EXTERNAL_FIRST.match(text):
+            self.errors.append(CompilerMessage("E014", str(p), 1, 1))  # a list starts with EXTERNAL (L1307)
+            return
         if errors:
             self.errors.append(min(errors, key=lambda e: (e.line, e.col or 0)))
             return
