@@ -234,3 +234,13 @@ def test_e035_one_list_reference_per_line(tmp_path: Path, refs: str):
     src = tmp_path / "ok.cl8"
     src.write_text('PROGRAM 8;\nCHANNEL NC 0;\nGLOBAL: "A";\nCENTRAL: "B";\nBEGIN\nEND.\n')
     assert check(src) == []
+
+
+def test_l4338_ess_stands_at_the_start_of_the_statement_part(tmp_path: Path):
+    """L4338: ESS "must be located at the start of the statement part"; elsewhere it is refused rather
+    than moved to the start of the object program."""
+    assert _first(tmp_path, "PAR INTEGER: R1;\n", "  R1 = 1;\n  ESS;\n") == ("E061", 6)
+    assert _first(tmp_path, "PAR INTEGER: R1;\n", "  IF R1 > 0 THEN ESS; ENDIF;\n") == ("E061", 5)
+    src = tmp_path / "p.cl8"
+    src.write_text("PROGRAM 7;\nCHANNEL NC 0;\nPAR INTEGER: R1;\nBEGIN\n  ESS;\n  R1 = 1;\nEND.\n")
+    assert check(src) == []

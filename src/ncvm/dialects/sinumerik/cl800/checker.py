@@ -190,6 +190,9 @@ class Checker:
             st.args = [self.value(a) for a in st.args]
             st.value = self.value(st.value)
         elif isinstance(st, ast.Proc):
+            if st.name == "ESS" and not (self.prog.body and st is self.prog.body[0]):
+                # the compiler would put @00f at the start of the object program, where ESS belongs
+                self.err("E061", st, "ESS must be at the start of the statement part (L4338)")
             kinds = PROCEDURES.get(st.name, ("", "x"))[1] if st.name != "ESS" else ""
             new = []
             for kind, a in zip(kinds, st.args):
