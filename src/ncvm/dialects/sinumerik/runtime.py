@@ -72,18 +72,10 @@ def _finite(value: float) -> float:
     raise Cl800Error(f"{value:g} is outside the R parameter range +/-99999999")
 
 
-def _sin(x: float) -> float:
-    """SIN of an angle in degrees; the NC takes -360 to +360 (L3779)."""
-    if -360.0 <= x <= 360.0:
-        return math.sin(x * DEG)
-    raise Cl800Error(f"SIN({x:g}): the angle must lie between -360 and +360 degrees")
-
-
-def _cos(x: float) -> float:
-    """COS of an angle in degrees; the NC takes -360 to +360 (L3800)."""
-    if -360.0 <= x <= 360.0:
-        return math.cos(x * DEG)
-    raise Cl800Error(f"COS({x:g}): the angle must lie between -360 and +360 degrees")
+def _bad_angle(function: str, x: float) -> float:
+    """SIN and COS take angles of -360 to +360 degrees (L3779, L3800); the generated code checks the range
+    in line and calls this beyond it."""
+    raise Cl800Error(f"{function}({x:g}): the angle must lie between -360 and +360 degrees")
 
 
 def _int(value: float) -> int:
@@ -94,8 +86,8 @@ def _int(value: float) -> int:
 
 
 NAMESPACE_GLOBALS = {
-    "_Block": Block, "_int": _int, "_ptr": _ptr, "_hypot": math.hypot, "_sin": _sin,
-    "_cos": _cos, "_trunc": math.trunc,
+    "_Block": Block, "_int": _int, "_ptr": _ptr, "_hypot": math.hypot, "_sin": math.sin,
+    "_cos": math.cos, "_trunc": math.trunc, "_DEG": DEG, "_bad_angle": _bad_angle,
     "_nc8": nc8, "_finite": _finite, "_r_value": r_value,
 }
 
