@@ -357,7 +357,9 @@ def check(programs, dialect, machine, as_json, all_errors):
 @cli.command(name="compile")
 @click.argument("source", type=click.Path(dir_okay=False))
 @click.option("-o", "out", type=click.Path(dir_okay=False), help="Object program to write.")
-@click.option("--xref", type=click.Path(dir_okay=False), help="Cross-reference listing to write.")
+@click.option("--xref", type=click.Path(dir_okay=False), is_flag=False, flag_value="",
+              help="Write the cross-reference listing (default name: the source's, .lst) and no object "
+                   "program unless -o names one.")
 @DIALECT_OPT
 @MACHINE_OPT
 def compile_cmd(source, out, xref, dialect, machine):
@@ -366,6 +368,8 @@ def compile_cmd(source, out, xref, dialect, machine):
     Without --machine the machine.toml in the source's folder is used (named on stderr), as by check and run.
     """
     _check_program(source)
+    if xref == "":
+        xref = str(Path(source).with_suffix(".lst"))  # the listing has the source's file name (CL 800 L361)
     # compile has no state directory of its own, but a run's default one is no place for its files either
     check_outputs([Output("-o", out), Output("--xref", xref)], {"program": source, **_machine_input(source, machine)},
                   state=DEFAULT_STATE)

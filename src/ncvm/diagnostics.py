@@ -120,11 +120,12 @@ class RuntimeFault(NcvmError):
         self.message = message
         self.span = span
         self.stack = stack or []
+        self.notes: list[str] = []  # more about where it happened (e.g. the object block of a CL 800 statement)
         super().__init__(f"{code}: {message}")
 
     def diagnostic(self) -> Diagnostic:
         notes = [f"called from {f}" for f in reversed(self.stack[:-1])] if len(self.stack) > 1 else []
-        return Diagnostic(self.code, self.message, self.span, notes=notes)
+        return Diagnostic(self.code, self.message, self.span, notes=self.notes + notes)
 
 
 class UsageError(NcvmError):

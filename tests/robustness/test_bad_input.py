@@ -272,3 +272,13 @@ def test_long_numbers_before_a_bad_character_are_read_at_once(tmp_path):
     d = check(path)[0]
     assert time.perf_counter() - start < 20
     assert (d.code, d.span.line) == ("NC001", 1)
+
+
+@pytest.mark.parametrize("name", ["L5.spf", "other.mpf"])
+def test_a_byte_order_mark_is_read_as_nothing_in_a_sin800_sub_program(tmp_path, name):
+    """Issue 15 (SINUMERIK 9): a sub-program found by its name or by its %SPF header, saved with a BOM."""
+    (tmp_path / name).write_bytes(b"\xef\xbb\xbf%SPF5\nN001 R20=200\nM17\n")
+    (tmp_path / "main.mpf").write_text("%MPF1\nL5\nM30\n")
+    result, _ = run(tmp_path / "main.mpf", options=RunOptions(state_dir=tmp_path / ".ncvm"))
+    assert result["status"] == "ok", result["error"]
+    assert result["variables"]["R20"] == 200.0

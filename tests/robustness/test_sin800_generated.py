@@ -361,7 +361,9 @@ def test_generated_at_code_program_runs_or_faults_sensibly(tmp_path, origins, se
 def test_generated_cl800_source_runs_like_its_object_file(tmp_path, origins, seed):
     number, text = cl800_program(seed)
     folder = _folder(tmp_path, "p", {"p.cl8": text})
-    assert api.check(folder / "p.cl8", machine=folder / "machine.toml") == [], text
+    # warnings only: the STOP DEC lint (SIN010) judges the generated reads of actual values (issue 15)
+    diags = api.check(folder / "p.cl8", machine=folder / "machine.toml")
+    assert [d for d in diags if d.severity != "warning" or d.code != "SIN010"] == [], text
     obj = compile_program(folder / "p.cl8", folder / f"L{number}.spf", machine=folder / "machine.toml")
     by_source, by_object = _run(folder / "p.cl8"), _run(obj, dialect="sin800")
     assert all(_origin_ok(o) for o in origins), f"{text}\nfault {by_source['error']} came from {origins}"
@@ -369,8 +371,10 @@ def test_generated_cl800_source_runs_like_its_object_file(tmp_path, origins, see
         assert by_source[key] == by_object[key], (key, text)
     assert (by_source["error"] is None) == (by_object["error"] is None), text
     if by_source["error"]:
-        for key in ("code", "message", "line"):
+        for key in ("code", "message"):
             assert by_source["error"][key] == by_object["error"][key], (key, text)
+        # the source run names the CL 800 statement, with the object block it stopped in (issue 15)
+        assert f" line {by_object['error']['line']}: " in by_source["error"]["stack"][0], text
 
 
 def test_generators_are_deterministic_and_valid():
@@ -387,7 +391,7 @@ def test_generators_are_deterministic_and_valid():
     ("R1=-4 @613 R2 R1", "SQRT(-4): no square root of a negative number"),
     ("@640 R2 K0", "LN(0): no logarithm of zero or a negative number"),
     ("@634 R2 K1.5", "ARC SIN(1.5): the sine must lie between -1 and 1"),
-    ("@641 R2 K1000", "INV LN(1000): the result is too large"),
+    ("@641 R2 K1000", "INV LN(1000): the result is outside the R parameter range +/-99999999 (L7079)"),
 ])
 def test_fault_names_the_users_mistake(run_text, text, message):
     result = run_text(f"%MPF1\n{text}\nM30\n", name="P1.mpf", dialect="sin800")

@@ -188,7 +188,7 @@ SIN800 = Table((
     Field("control", Text(choices=CONTROLS), "ranges of TO areas, D numbers, MIB, PLC", "880"),
     Field("channel", Number(integer=True, min=1, max=16), "the channel the program runs in (PPCH)", 1),
     Field("m0", Text(choices=("stop", "continue")), "M0 ends the run, or continues as if start were pressed",
-          "stop"),
+          "continue"),
     Field("block_skip", Flag(), "'/' blocks are skipped", Said("[setting_data] block_skip")),
     Field("max_call_depth", Number(integer=True, min=1), "sub-program nesting depth", 8),
     Field("cycle_alarm_stop", Flag(), "ALNZ 4000-4299 stop the program", True),

@@ -102,6 +102,10 @@ class NcKernel:
         self.prog = [m - o for m, o in zip(start, self.offset_vec)]
         self.ended = False
         self.stopped_at: str | None = None
+        #: M0 ends the run (a dialect's option); by default the run goes on as after the operator's cycle start
+        self.m0_stops = False
+        #: the block number of the last programmed stop (None: the block has none)
+        self.stop_block: int | None = None
         canon.begin(names, self.machine_pos)
 
     # -- copies and placement ----------------------------------------------
@@ -304,7 +308,7 @@ class NcKernel:
             else:
                 self._move(motion, words, machine_coords, src)
         for mc in block.m:
-            self._m_after(mc, src)
+            self._m_after(mc, src, block.n)
 
     def no_feed_message(self, g: int) -> str:
         """NC006: a move at feed with no feed rate, or with a negative one."""
@@ -415,9 +419,10 @@ class NcKernel:
         """Start the spindle clockwise (1), counter-clockwise (-1) or stop it (0), as M3, M4, M5 do."""
         self._m_before(3 if direction > 0 else 4 if direction < 0 else 5, src)
 
-    def _m_after(self, mc: int, src: Src) -> None:
+    def _m_after(self, mc: int, src: Src, n: int | None = None) -> None:
         if mc == 0 or mc == 1:
             self.stopped_at = f"M{mc}"
+            self.stop_block = n
             self.canon.stop(f"M{mc}", src)
         elif mc == 2 or mc == 30:
             self.end_program(src)
@@ -596,3 +601,10 @@ class NcKernel:
 def _transformed_linear(kernel: NcKernel, motion: int, words, src: Src) -> None:
     """The straight move while a transformation is active: the general path, not the generated one."""
     kernel._general_move(motion, words, False, src)
+
+
+def programmed_stop_line(kernel: NcKernel, src: Src) -> str:
+    """The operator's line for an M0 (the same in every dialect): where it stood, and whether the run ends
+    there or goes on as after the operator's cycle start."""
+    where = f"N{kernel.stop_block}" if kernel.stop_block is not None else f"line {src.line}"
+    return f"M0 at {where}: programmed stop ({'run ends' if kernel.m0_stops else 'continued'})"

@@ -19,7 +19,7 @@ from ..diagnostics import Diagnostic, RuntimeFault
 from ..machine.model import Machine
 from ..machine.store import Store
 from ..nc.canon import Canon, CanonSink
-from ..nc.kernel import NcKernel
+from ..nc.kernel import NcKernel, programmed_stop_line
 from .checks import Checks
 from .memory import default_max_memory, out_of_memory
 from .steps import DEFAULT_MAX_STEPS, StepCounter, StepHook
@@ -104,8 +104,9 @@ class Session:
         sinks = chosen.canon
         self.sinks = sinks
         self.canon = Canon(sinks)
-        self.canon.add(OperatorMessages(self.say))
-        self.kernel = NcKernel(machine, self.canon)
+        messages = OperatorMessages(self.say)
+        self.canon.add(messages)
+        self.kernel = messages.kernel = NcKernel(machine, self.canon)
         self._store: Store | None = None
         #: the operator screen of dialects that have one (CPL dialogs); anything with ``save_png(path)``
         self.screen = None
@@ -152,13 +153,19 @@ def run_guarded(session: Session, runner) -> Diagnostic | None:
 
 
 class OperatorMessages(CanonSink):
-    """Shows the program's operator messages (canon ``message``) to the operator."""
+    """Shows the program's operator messages (canon ``message``) and its programmed stops (M0) to the
+    operator."""
 
     def __init__(self, say):
         self.say = say
+        self.kernel: NcKernel | None = None
 
     def message(self, text: str, src) -> None:
         self.say(text)
+
+    def stop(self, kind: str, src) -> None:
+        if kind == "M0" and self.kernel is not None:
+            self.say(programmed_stop_line(self.kernel, src))
 
 
 class OperatorOutput:

@@ -91,3 +91,13 @@ def test_lint_meas_m_without_stop_dec(tmp_path):
 
 def test_lint_quiet_without_motion_or_with_stop_dec(tmp_path):
     assert _lint(tmp_path, "%MPF1\n@361 R1 K1\nG1 X1 F100\n@714\n@362 R2 K1\n") == []
+
+
+def test_lint_read_in_the_block_of_the_motion_l2668(tmp_path):
+    """L2668: STOP DEC in the block before the read. A move in the read's own block executes after the
+    read, whether or not @714 stands between them."""
+    for text in ("%MPF1\nG1 X10 F100 @361 R1 K1\n", "%MPF1\nG1 X10 F100 @714 @361 R1 K1\n"):
+        diags = _lint(tmp_path, text)
+        assert [(d.code, d.span.line) for d in diags] == [("SIN010", 2)]
+        assert "same NC block" in diags[0].message
+    assert _lint(tmp_path, "%MPF1\n@361 R1 K1 G1 X10 F100\n") == []  # the read before the move is meant

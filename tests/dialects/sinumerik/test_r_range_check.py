@@ -71,3 +71,31 @@ def test_a_value_flowing_into_a_checked_assignment_is_checked_there():
     assert checked(run) == [True, True]
     run = [_a(90, ("", "R", 6), ("*", "K", 2.5)), _a(2, ("", "R", 90), ("/", "K", 3))]
     assert checked(run) == [True, False]
+
+
+@pytest.mark.parametrize(("block", "message"), [
+    ("R1=89.9999999 @632 R2 R1", "TAN(89.9999999) is not defined"),   # L3821: 0 to +/-89.999999
+    ("@632 R2 K-270.00001", "TAN(-270.00001) is not defined"),       # L3821: +/-270.0001 to +/-360
+    ("@632 R2 K400", "TAN(400) is not defined"),
+    ("@641 R2 K100", "INV LN(100): the result is outside the R parameter range +/-99999999"),  # L7079
+    ("@641 R2 K18.5", "INV LN(18.5): the result is outside the R parameter range +/-99999999"),
+    ("@614 R2 K80000000 K80000000", "outside the R parameter range +/-99999999"),  # SQRTS: 1.13e8
+    ("@630 R2 K361", "SIN(361): the angle must lie between -360 and +360 degrees"),  # L3779
+    ("R1=-720 @631 R2 R1", "COS(-720): the angle must lie between -360 and +360 degrees"),  # L3800
+])
+def test_function_results_and_angles_beyond_the_manual_ranges_are_the_cl800_error(tmp_path, block, message):
+    """L7077-7080: an R value lies within +/-99999999; L3779/L3800/L3821: the angle ranges of SIN, COS, TAN.
+    A result or an argument beyond them stops the run with the CL 800 error instead of being stored."""
+    result = run_mpf(tmp_path, f"%MPF1\nN10 {block}\nN20 M30\n")
+    assert result["error"]["code"] == "CL800" and message in result["error"]["message"], result["error"]
+    assert result["error"]["line"] == 2 and result["variables"].get("R2", 0.0) == 0.0
+
+
+def test_function_results_at_the_edges_of_the_manual_ranges(tmp_path):
+    """TAN(89.999999) = 57295779.5, INV LN(18.42) = 99931948.8, SIN(-360), COS(360): all within range."""
+    result = run_mpf(tmp_path, "%MPF1\n@632 R1 K89.999999 @641 R2 K18.42 @630 R3 K-360 @631 R4 K360 "
+                               "@632 R5 K90.00001\nM30\n", ok=True)
+    v = result["variables"]
+    assert v["R1"] == pytest.approx(57295779.5, rel=1e-7) and v["R2"] == pytest.approx(99931948.77, rel=1e-8)
+    assert v["R3"] == pytest.approx(0.0, abs=1e-12) and v["R4"] == 1.0
+    assert v["R5"] == pytest.approx(-5729577.9, rel=1e-6)

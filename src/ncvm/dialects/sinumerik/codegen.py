@@ -166,10 +166,11 @@ class UnitCodegen:
         src.emit("try:")
         src._indent = 2
         src.emit("while True:")
-        for text, line in zip(body.lines, body.line_map):
+        for text, line, col in zip(body.lines, body.line_map, body.col_map):
             text = text.replace("@SYNC_IN", sync_in).replace("@SYNC_OUT", sync_out)
             src.lines.append(text)
             src.line_map.append(line)
+            src.col_map.append(col)
         src._indent = 3
         src.emit("return 0", self.prog.blocks[-1].line if self.prog.blocks else 0)
         src._indent = 1
@@ -245,25 +246,34 @@ class UnitCodegen:
             writes_after[i] = writes_after[i + 1] or isinstance(items[i + 1], (Arith, AtInstr))
         checks = _arith_checks(items)
         for i, it in enumerate(items):
-            if isinstance(it, Word):
-                rec.word(out, it, writes_after[i])
-            elif isinstance(it, Arith):
-                rec.settle_int_sec(out)
-                out.emit(self._arith(it), line)
-                if i in checks and not self.strict:
-                    # x - x is 0.0 (false) unless x is infinite or NaN
-                    target = self.r(it.target)
-                    out.emit(f"if {target} - {target}: _finite({target})", line)
-            elif isinstance(it, Note):
-                rec.note(it)
-            elif isinstance(it, AtInstr):
-                rec.settle_int_sec(out)
-                if not self._at(out, idx, blk, it, rec):
-                    break  # an unconditional jump: the rest of the block is never read
+            start = len(out.col_map)
+            self._item(out, idx, blk, rec, it, i, checks, writes_after)
+            out.col_map[start:] = [it.col if c is None else c for c in out.col_map[start:]]  # faults at the item
+            if rec.jumped:
+                break  # an unconditional jump: the rest of the block is never read
         else:
             rec.finish(out)
         if blk.skip:
             out._indent -= 1
+
+    def _item(self, out: PySource, idx: int, blk: NcBlock, rec: "_Record", it, i: int, checks: set[int],
+              writes_after: list[bool]) -> None:
+        """The lines of one item of a block."""
+        line = blk.line
+        if isinstance(it, Word):
+            rec.word(out, it, writes_after[i])
+        elif isinstance(it, Arith):
+            rec.settle_int_sec(out)
+            out.emit(self._arith(it), line)
+            if i in checks and not self.strict:
+                # x - x is 0.0 (false) unless x is infinite or NaN
+                target = self.r(it.target)
+                out.emit(f"if {target} - {target}: _finite({target})", line)
+        elif isinstance(it, Note):
+            rec.note(it)
+        elif isinstance(it, AtInstr):
+            rec.settle_int_sec(out)
+            rec.jumped = not self._at(out, idx, blk, it, rec)
 
     def _arith(self, it: Arith) -> str:
         expr = ""
@@ -297,11 +307,11 @@ class UnitCodegen:
         return getattr(self, f"lower_{at.row.lower}")(at)
 
     def _lines(self, at: "_Site", lines: list[str]) -> bool:
-        """Emit a statement's lines (R parameters reloaded after it where it used a pointer)."""
+        """Emit a statement's lines. Each line that writes the R array itself (a store through a pointer,
+        a read, a call of the channel) reloads the named R parameters after it: a reload here as well
+        would discard a result stored into a named R parameter (``@201 R22 P21``)."""
         for text in lines:
             at.out.emit(text, at.blk.line)
-        if any(o.kind == "P" for o in at.it.operands):
-            at.out.emit("@SYNC_IN", at.blk.line)
         return True
 
     # -- main groups 0 and 1: program structure, branching ---------------
@@ -423,7 +433,7 @@ class UnitCodegen:
                                y=self.val(ops[2]) if len(ops) > 2 else None,
                                k=int(ops[1].value) if len(ops) > 1 else None)
         if row.overflows and not self.strict:
-            expr = f"_finite({expr})"
+            expr = f"_r_value({expr})"  # (strict stores check the range themselves)
         return self._lines(at, self.store(target, expr))
 
     # -- main group 7: NC-specific functions --------------------------------
@@ -544,6 +554,7 @@ class _Record:
         self.rel: tuple[str, ...] | None = None
         self.inta: tuple[str, ...] | None = None
         self.angle = False  # the block carries the programmed angle (PANG or the angle address word)
+        self.jumped = False  # an unconditional jump was taken: the rest of the block is never read
         self._captured = 0
 
     def note(self, it: Note) -> None:

@@ -28,45 +28,56 @@ MOTION_CODES = frozenset(("440", "446", "447", "448", "720"))
 _NOT_MOTION = frozenset("GMFSTDLPHN")
 
 
-def _moves(items) -> bool:
-    if any(isinstance(it, Word) and it.address == "G" and it.value == 4 for it in items):
-        return False  # G04 X<seconds> is a dwell: its X is a time, not a position
-    for it in items:
-        if isinstance(it, Word) and it.address not in _NOT_MOTION and (it.value is not None or it.rref):
-            return True
-        if isinstance(it, Word) and it.address == "L":
-            return True  # a sub-program may move
-        if isinstance(it, AtInstr) and it.code in MOTION_CODES:
-            return True
-    return False
+def _is_motion(it) -> bool:
+    """An item that moves an axis when its block executes (a sub-program call may move)."""
+    if isinstance(it, Word):
+        return it.address == "L" or (it.address not in _NOT_MOTION and (it.value is not None or bool(it.rref)))
+    return isinstance(it, AtInstr) and it.code in MOTION_CODES
 
 
-def _turns_spindle(items) -> bool:
+def _dwells(items) -> bool:
+    """G04 X<seconds> is a dwell: its X is a time, not a position."""
+    return any(isinstance(it, Word) and it.address == "G" and it.value == 4 for it in items)
+
+
+def _turns_spindle(items) -> int | None:
+    """The column of the block's first spindle word (or dwell); None when it has none."""
     for it in items:
         if not isinstance(it, Word):
             continue
         if it.address == "S" or (it.address == "M" and it.value in _SPINDLE_M) or \
                 (it.address == "G" and it.value in (4, 96, 97)):
-            return True
-    return False
+            return it.col
+    return None
 
 
-def stop_dec_lint(prog: PartProgram) -> list[Diagnostic]:
+def _same_place(line: int, col: int) -> tuple[int, int]:
+    return line, col
+
+
+def stop_dec_lint(prog: PartProgram, place=_same_place, path: str | None = None) -> list[Diagnostic]:
     """Warnings (severity "warning") for reads of the executed state with no STOP DEC since the last motion,
-    and for a MEAS M whose next block is not STOP DEC."""
+    and for a MEAS M whose next block is not STOP DEC. ``place`` maps a (line, column) of the program to
+    the one reported, in ``path`` (default the program's): a CL 800 check reports at its source."""
     out: list[Diagnostic] = []
-    moved_at: int | None = None  # line of the last motion block with no STOP DEC after it
-    spun_at: int | None = None  # line of the last spindle block (or dwell) with no STOP DEC after it
-    measured_at: int | None = None  # line of a MEAS M still waiting for its STOP DEC
+    path = prog.path if path is None else path
+    moved_at: tuple[int, int] | None = None  # the last motion with no STOP DEC after it
+    spun_at: tuple[int, int] | None = None  # the last spindle block (or dwell) with no STOP DEC after it
+    measured_at: tuple[int, int] | None = None  # a MEAS M still waiting for its STOP DEC
     for blk in prog.blocks:
         if measured_at is not None and blk.items:
             first = blk.items[0]
             if not (isinstance(first, AtInstr) and first.code == "714"):
-                out.append(Diagnostic(CODE, f"MEAS M in line {measured_at} is not followed by STOP DEC; "
+                line, col = place(*measured_at)
+                out.append(Diagnostic(CODE, f"MEAS M in line {line} is not followed by STOP DEC; "
                                             "the measured values reach the R parameters only after the block "
-                                            "has executed", Span(prog.path, measured_at, 1), severity="warning"))
+                                            "has executed", Span(path, line, col), severity="warning"))
             measured_at = None
+        dwell = _dwells(blk.items)
+        here: tuple[int, int] | None = None  # the first motion of this block: it executes after the block's reads
         for it in blk.items:
+            if here is None and not dwell and _is_motion(it):
+                here = (blk.line, it.col)
             if not isinstance(it, AtInstr):
                 continue
             changed_at = moved_at
@@ -74,15 +85,21 @@ def stop_dec_lint(prog: PartProgram) -> list[Diagnostic]:
                 changed_at = spun_at
             if it.code == "714":
                 moved_at = spun_at = None
+            elif it.code in ACTUAL_READS and here is not None:
+                out.append(Diagnostic(CODE, f"{ACTUAL_READS[it.code]} reads the executed state, but the motion in "
+                                            f"line {place(*here)[0]} is in the same NC block and executes after "
+                                            "the read: end the block (LF) before STOP DEC",
+                                      Span(path, *place(blk.line, it.col)), severity="warning"))
             elif it.code in ACTUAL_READS and changed_at is not None:
                 what = "motion" if changed_at == moved_at else "spindle block"
                 out.append(Diagnostic(CODE, f"{ACTUAL_READS[it.code]} reads the executed state, but the {what} "
-                                            f"in line {changed_at} has no STOP DEC since: it may see stale data",
-                                      Span(prog.path, blk.line, it.col), severity="warning"))
+                                            f"in line {place(*changed_at)[0]} has no STOP DEC since: it may see "
+                                            "stale data", Span(path, *place(blk.line, it.col)), severity="warning"))
             elif it.code == "720":
-                measured_at = blk.line
-        if _moves(blk.items):
-            moved_at = blk.line
-        if _turns_spindle(blk.items):
-            spun_at = blk.line
+                measured_at = (blk.line, it.col)
+        if here is not None:
+            moved_at = here
+        col = _turns_spindle(blk.items)
+        if col is not None:
+            spun_at = (blk.line, col)
     return out

@@ -35,13 +35,21 @@ SD = {
 CHANNEL_ARG = {"cycle_md", "cycle_sd"}
 
 
+#: the largest magnitude of an R value (L7077-7080)
+R_LIMIT = 99999999.0
+
+
+def r_value(value: float) -> float:
+    """A function result as an R value: beyond +/-99999999 (L7079), or inf/NaN, it is the "CL 800 error"."""
+    if -R_LIMIT <= value <= R_LIMIT:
+        return value
+    raise Cl800Error(f"{value:g} is outside the R parameter range +/-99999999")
+
+
 def nc8(value: float) -> float:
     """Strict NC numerics (digest §10.4): 8 significant decimal digits in the range +/-0.00000001 to
     +/-99999999 (L7079); a larger value is the "CL 800 error"."""
-    r = round(float(f"{value:.8g}"), 8)
-    if not abs(r) <= 99999999.0:
-        raise Cl800Error(f"{value:g} is outside the R parameter range +/-99999999")
-    return r + 0.0  # no -0.0
+    return r_value(round(float(f"{value:.8g}"), 8)) + 0.0  # no -0.0
 
 
 def whole(v: float) -> int:

@@ -15,7 +15,7 @@ class Options:
 
     control: str = "880"  # ranges of TO areas, D numbers, MIB, PLC: 810, 820, 850 or 880
     channel: int = 1  # the channel the program runs in (PPCH)
-    m0: str = "stop"  # "stop" or "continue"
+    m0: str = "continue"  # "continue" as after the operator's cycle start, or "stop"
     block_skip: bool | None = None  # None: [setting_data] block_skip
     max_call_depth: int = 8
     cycle_alarm_stop: bool = True  # ALNZ 4000-4299 stop the program

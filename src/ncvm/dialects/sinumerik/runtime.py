@@ -31,13 +31,13 @@ from ...nc.canon import CanonSink, Src
 from ...nc.kernel import INCH
 from ...nc.spindle import SINUMERIK_GEARS, Gearbox
 from ...runtime.buffer import BlockBuffer
-from ...runtime.locate import fault_line
+from ...runtime.locate import generated_frames
 from .atcodes import AT_CODES
 from .cycles import Cycles
 from .errors import Cl800Error
 from .meas import meas_m
 from .memory import SystemMemory
-from .ncdata import MIB_TOP, NcData, int_to_pattern, nc8, pattern_to_int
+from .ncdata import MIB_TOP, R_LIMIT, NcData, int_to_pattern, nc8, pattern_to_int, r_value
 from .offsets import Offsets
 from .options import options
 from .panel import Panel
@@ -82,6 +82,12 @@ def _finite(value: float) -> float:
     raise Cl800Error(f"{value:g} is outside the R parameter range +/-99999999")
 
 
+def _bad_angle(function: str, x: float) -> float:
+    """SIN and COS take angles of -360 to +360 degrees (L3779, L3800); the generated code checks the range
+    in line and calls this beyond it."""
+    raise Cl800Error(f"{function}({x:g}): the angle must lie between -360 and +360 degrees")
+
+
 def _int(value: float) -> int:
     n = int(value)
     if n != value:
@@ -91,8 +97,8 @@ def _int(value: float) -> int:
 
 NAMESPACE_GLOBALS = {
     "_Block": Block, "_int": _int, "_ptr": _ptr, "_hypot": math.hypot, "_sin": math.sin,
-    "_cos": math.cos, "_trunc": math.trunc, "_DEG": DEG,
-    "_nc8": nc8, "_finite": _finite, "_meas_m": meas_m,
+    "_cos": math.cos, "_trunc": math.trunc, "_DEG": DEG, "_bad_angle": _bad_angle,
+    "_nc8": nc8, "_finite": _finite, "_r_value": r_value, "_meas_m": meas_m,
 }
 
 #: @ code -> the run-time function its row names, on the channel or one of its parts (``plc.read``)
@@ -127,7 +133,8 @@ class Channel:
         sec = options(session.machine)
         skip = sec.block_skip
         self.block_skip = bool(session.machine.setting_data.get("block_skip", True) if skip is None else skip)
-        self.m0_stops = sec.m0 == "stop"
+        # M0: the run goes on as after the operator's cycle start, unless [sin800] m0 = "stop"
+        self.m0_stops = self.kernel.m0_stops = sec.m0 == "stop"
         self.max_depth = sec.max_call_depth
         self.memory = SystemMemory(data, session.say, sec.cycle_alarm_stop)
         # decode-ahead (digest §10.5): 0 = lockstep; N = up to N decoded blocks wait for execution
@@ -332,9 +339,9 @@ class Channel:
 
     def _locate(self, f: RuntimeFault, unit) -> None:
         if f.span is None:
-            line = fault_line(sys.exc_info()[2], unit.source)
-            if line is not None:
-                f.span = Span(unit.path, line)
+            frames = generated_frames(sys.exc_info()[2], {unit.source.filename: unit.source})
+            if frames:
+                f.span = Span(unit.path, frames[-1].line, frames[-1].col)
         if not f.stack:
             f.stack = [Frame(fr.unit, None) for fr in self.frames]
             for i in range(len(self.frames) - 1):
@@ -370,8 +377,7 @@ class Channel:
             self.halted = True
             return True
         if k.stopped_at == "M0" and self.m0_stops:
-            self.halted = True
-            self.session.say("program stopped at M0")
+            self.halted = True  # the kernel's stop line says so
             return True
         k.stopped_at = None
         return False
@@ -489,10 +495,13 @@ class Channel:
 
     # -- main group 6 helpers --------------------------------------------
     def tan(self, x: float) -> float:
-        c = math.cos(x * DEG)
-        if abs(c) < 1e-12:
-            raise Cl800Error(f"TAN({x:g}) is not defined")
-        return math.sin(x * DEG) / c
+        """TAN takes 0 to +/-89.999999, +/-90.00001 to 269.9999 and +/-270.0001 to +/-360 degrees (L3821):
+        near the poles the result would leave the R range."""
+        a = abs(x)
+        if a > 360.0 or 89.999999 < a < 90.00001 or 269.9999 < a < 270.0001:
+            raise Cl800Error(f"TAN({x:.10g}) is not defined: the angle must lie in 0 to +/-89.999999, +/-90.00001 "
+                             "to 269.9999 or +/-270.0001 to +/-360 degrees")
+        return math.sin(x * DEG) / math.cos(x * DEG)
 
     def sqrt(self, x: float) -> float:
         if x < 0.0:
@@ -510,9 +519,11 @@ class Channel:
         return math.log(x)
 
     def inv_ln(self, x: float) -> float:
-        if x > 709.0:  # e**709.8 is the largest double; the NC's range ends long before
-            raise Cl800Error(f"INV LN({x:g}): the result is too large")
-        return math.exp(x)
+        if x <= 709.0:  # e**709.8 is the largest double
+            value = math.exp(x)
+            if value <= R_LIMIT:
+                return value
+        raise Cl800Error(f"INV LN({x:g}): the result is outside the R parameter range +/-99999999 (L7079)")
 
     def angle(self, a: float, b: float) -> float:
         d = math.degrees(math.atan2(a, b))

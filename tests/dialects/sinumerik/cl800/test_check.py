@@ -114,3 +114,133 @@ def test_program_number_range_per_control(tmp_path: Path):
     m.sections["cl800"] = {"control": "810"}
     [diag] = d.check(str(tmp_path / "p.cl8"), text, m)
     assert diag.code == "E027" and "1..999" in diag.message
+
+
+@pytest.mark.parametrize("name", ["hole_pattern.cl8", "deep_hole_drilling.cl8"])
+def test_e208_is_an_editor_message_the_manual_listings_7_3_and_7_4_compile(tmp_path: Path, name: str):
+    """L6218-6230: E208 (line longer than one screen line) is caused by incorrect editor operation; the
+    compiler takes the listings of 7.3 and 7.4 with their lines of 85-89 characters (L5378, L5530)."""
+    from ncvm.api import compile_program
+
+    src = Path(__file__).parents[4] / "examples" / "cl800" / name
+    assert max(len(line) for line in src.read_text().splitlines()) > 84
+    assert check(src) == []
+    compile_program(src, out=tmp_path / "out.spf")
+    assert (tmp_path / "out.spf").read_text().startswith("%SPF")
+
+
+def _warnings(tmp_path: Path, body: str) -> list[tuple[str, int]]:
+    src = tmp_path / "sd.cl8"
+    src.write_text("PROGRAM 7;\nCHANNEL NC 0;\nPAR REAL: R10, R11, R12;\nBEGIN\n" + body + "END.\n")
+    return [(d.code, d.span.line) for d in check(src)]
+
+
+def test_l4301_actual_value_read_needs_stop_dec_in_a_block_before_it(tmp_path: Path):
+    """L4301, L2668: STOP DEC before each read of actual values, in the block before the read. The
+    compiler packs statements into one NC block until LF: a move, STOP DEC and the read in one block
+    read the position before the move (SIN010 at the read's source line)."""
+    assert _warnings(tmp_path, "  (: G0 X10 :);\n  R10 = ACPM (1);\n") == [("SIN010", 6)]
+    assert _warnings(tmp_path, "  (: G0 X10 :);\n  STOP DEC;\n  R10 = ACPM (1);\n") == [("SIN010", 7)]
+    assert _warnings(tmp_path, "  (: G0 X10 :); LF;\n  STOP DEC;\n  R10 = ACPM (1);\n") == []
+    assert _warnings(tmp_path, "  (: G0 X10 :); LF;\n  R11 = 1; LF;\n  R10 = ACPM (1);\n") == [("SIN010", 7)]
+
+
+def test_l4301_stop_dec_after_each_measurement(tmp_path: Path):
+    """L4301: STOP DEC after each "measure" (MEAS M); the warning names the MEAS M statement's line."""
+    meas = "  R10 = MEAS M (1); PRAP (1) = 20; LF;\n"
+    assert _warnings(tmp_path, meas + "  R11 = R10 + 1;\n") == [("SIN010", 5)]
+    assert _warnings(tmp_path, meas + "  STOP DEC;\n  R11 = R10 + 1;\n") == []
+
+
+def _first(tmp_path: Path, decl: str, body: str) -> tuple[str, int]:
+    src = tmp_path / "p.cl8"
+    src.write_text(f"PROGRAM 7;\nCHANNEL NC 0;\n{decl}BEGIN\n{body}END.\n")
+    d = check(src)[0]
+    return d.code, d.span.line
+
+
+def test_l7074_a_bit_pattern_with_other_digits_is_e051(tmp_path: Path):
+    """L7074-7075: a bit pattern has 8 digits 0/1; B00000002 is E051 (bit pattern outside limits)."""
+    assert _first(tmp_path, "LOCAL PATTERN: R60;\n", "  R60 = B00000002;\n") == ("E051", 5)
+
+
+def test_l1297_a_label_has_at_most_8_characters(tmp_path: Path):
+    """L1297: the name of a label can have up to 8 characters."""
+    assert _first(tmp_path, "LABEL: Destinat9;\n", "  GOTO Destinat9;\n  Destinat9: R0 = 1;\n") == ("E061", 3)
+    src = tmp_path / "p.cl8"
+    src.write_text("PROGRAM 7;\nCHANNEL NC 0;\nPAR INTEGER: R0;\nLABEL: Destinat;\nBEGIN\n  GOTO Destinat;\n"
+                   "  Destinat: R0 = 1;\nEND.\n")
+    assert check(src) == []
+
+
+@pytest.mark.parametrize("kind", ["REAL", "INTEGER", "PATTERN"])
+def test_l4730_a_condition_is_boolean_not_a_variable_of_another_type(tmp_path: Path, kind: str):
+    """L4730-4748: IF takes a BOOLEAN condition; a REAL (INTEGER, PATTERN) variable alone is E030."""
+    body = "  IF R60 THEN R61 = 1; ENDIF;\n"
+    assert _first(tmp_path, f"LOCAL {kind}: R60;\nLOCAL BOOLEAN: R61;\n", body) == ("E030", 6)
+    src = tmp_path / "p.cl8"
+    src.write_text(f"PROGRAM 7;\nCHANNEL NC 0;\nLOCAL BOOLEAN: R60, R61;\nBEGIN\n{body}END.\n")
+    assert check(src) == []
+
+
+@pytest.mark.parametrize(("decl", "where"), [
+    ("LABEL: Dest;\nLOCAL REAL: R60:=Dest;\n", (4, 13)),   # the variable is the second declaration
+    ("LOCAL REAL: R60:=Dest;\nLABEL: Dest;\n", (4, 8)),    # the label is
+    ("CONST: Dest:=5;\nLABEL: Dest;\n", (4, 8)),
+])
+def test_e036_names_the_second_declaration(tmp_path: Path, decl: str, where: tuple[int, int]):
+    """E036 (variable name double, L6194) stands where the name is declared the second time."""
+    src = tmp_path / "p.cl8"
+    src.write_text(f"PROGRAM 7;\nCHANNEL NC 0;\n{decl}BEGIN\n  R60 = 1;\nEND.\n")
+    d = [d for d in check(src, all_errors=True) if d.code == "E036"][0]
+    assert (d.span.line, d.span.column) == where
+
+
+def test_e010_a_missing_dot_after_end_is_reported_at_end(tmp_path: Path):
+    """E010 ("." expected): at the END of a 7-line file, not at a line 8 the file does not have."""
+    src = tmp_path / "p.cl8"
+    src.write_text("PROGRAM 7;\nCHANNEL NC 0;\nLOCAL REAL: R60;\nBEGIN\n  R60 = 1;\n  R60 = 2;\nEND\n")
+    d = check(src)[0]
+    assert (d.code, d.span.line, d.span.column) == ("E010", 7, 4)
+
+
+def test_l1145_the_id_designation_has_its_fixed_terms(tmp_path: Path):
+    """L1116-1145: terms 1-4 of ID are fixed and separated by hyphens; ``ID (X);`` is E032."""
+    assert _first(tmp_path, "ID (X);\n", "") == ("E032", 3)
+    src = tmp_path / "p.cl8"
+    src.write_text("PROGRAM 7;\nCHANNEL NC 0;\nID (0-EXAMPLE-22.07.85-KUB-SIEM:MA:850:02);\nBEGIN\nEND.\n")
+    assert check(src) == []
+
+
+def _lists(tmp_path: Path, refs: str) -> tuple[str, str, int]:
+    (tmp_path / "A.cl8").write_text('EXTERNAL 50;\nCHANNEL NC 0;\nGLOBAL REAL: R150:=x;\nENDEXTERN\n')
+    (tmp_path / "B.cl8").write_text('EXTERNAL 51;\nCHANNEL NC 0;\nCENTRAL REAL: R950:=y;\nENDEXTERN\n')
+    (tmp_path / "C.cl8").write_text('CHANNEL NC 0;\nGLOBAL REAL: R152:=z;\nENDEXTERN\n')
+    src = tmp_path / "p.cl8"
+    src.write_text(f"PROGRAM 7;\nCHANNEL NC 0;\n{refs}BEGIN\nEND.\n")
+    d = check(src)[0]
+    return d.code, Path(d.span.file).name, d.span.line
+
+
+def test_l1307_a_list_that_does_not_start_with_external_is_e014(tmp_path: Path):
+    """L1307-1318: a declaration list starts with EXTERNAL <list number>; E014 "EXTERNAL" expected."""
+    assert _lists(tmp_path, 'GLOBAL: "C";\n') == ("E014", "C.cl8", 1)
+
+
+@pytest.mark.parametrize("refs", ['GLOBAL: "A"; "B";\n', 'GLOBAL: "A"; CENTRAL: "B";\n'])
+def test_e035_one_list_reference_per_line(tmp_path: Path, refs: str):
+    """E035 (only one file name possible per line, L6190): two list names on one line."""
+    assert _lists(tmp_path, refs) == ("E035", "p.cl8", 3)
+    src = tmp_path / "ok.cl8"
+    src.write_text('PROGRAM 8;\nCHANNEL NC 0;\nGLOBAL: "A";\nCENTRAL: "B";\nBEGIN\nEND.\n')
+    assert check(src) == []
+
+
+def test_l4338_ess_stands_at_the_start_of_the_statement_part(tmp_path: Path):
+    """L4338: ESS "must be located at the start of the statement part"; elsewhere it is refused rather
+    than moved to the start of the object program."""
+    assert _first(tmp_path, "PAR INTEGER: R1;\n", "  R1 = 1;\n  ESS;\n") == ("E061", 6)
+    assert _first(tmp_path, "PAR INTEGER: R1;\n", "  IF R1 > 0 THEN ESS; ENDIF;\n") == ("E061", 5)
+    src = tmp_path / "p.cl8"
+    src.write_text("PROGRAM 7;\nCHANNEL NC 0;\nPAR INTEGER: R1;\nBEGIN\n  ESS;\n  R1 = 1;\nEND.\n")
+    assert check(src) == []

@@ -17,10 +17,25 @@ GOLDEN = Path(__file__).parent / "golden"
 def test_compile_command_writes_object_and_listing(tmp_path: Path):
     src = tmp_path / "if.cl8"
     src.write_text((GOLDEN / "b_if_then_else.cl8").read_text())
-    res = CliRunner().invoke(cli, ["compile", str(src), "--xref", str(tmp_path / "if.lst")])
+    res = CliRunner().invoke(cli, ["compile", str(src), "-o", str(tmp_path / "L505.spf"),
+                                   "--xref", str(tmp_path / "x.lst")])
     assert res.exit_code == 0, res.output
     assert (tmp_path / "L505.spf").read_text() == (GOLDEN / "b_if_then_else.spf").read_text()
-    assert (tmp_path / "if.lst").read_text() == (GOLDEN / "b_if_then_else.lst").read_text()
+    assert (tmp_path / "x.lst").read_text() == (GOLDEN / "b_if_then_else.lst").read_text()
+
+
+def test_l361_the_cross_reference_run_writes_the_listing_under_the_source_name_and_no_object(tmp_path: Path):
+    """L361: a dedicated compilation creates no object code that can be loaded in the NC, but a listing file
+    with the same file name as the source code; L363-365: each statement has its source line."""
+    src = tmp_path / "if.cl8"
+    src.write_text((GOLDEN / "b_if_then_else.cl8").read_text())
+    res = CliRunner().invoke(cli, ["compile", str(src), "--xref"])
+    assert res.exit_code == 0, res.output
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["if.cl8", "if.lst"]
+    listing = (tmp_path / "if.lst").read_text().splitlines()
+    # ACD (line 4) and the IF (line 5) share the first NC block with the push (line 3): each has its line
+    assert listing[1:4] == ["    3 @041 R70 R71", "    4   @36a R70 K1",
+                            "    5   @124 R70 K20 K2001 @201 R71 K1500 @100 K2002"]
 
 
 def test_compile_command_reports_the_first_error(tmp_path: Path):
@@ -76,3 +91,18 @@ def test_compile_refuses_a_file_without_end_dot(tmp_path: Path):
     assert res.exit_code == 1 and "open.cl8:4: error E300: File cannot be compiled" in res.output
     res = CliRunner().invoke(cli, ["check", str(src)])
     assert "error E060" in res.output  # the editor's analysis reports the missing END.
+
+
+def test_a_run_time_error_names_the_cl800_statement(tmp_path: Path):
+    """Issue 15: a CL 800 error of the run is reported at the .cl8 statement that caused it (here the second
+    of two statements the compiler packed into one NC block), not at the object program the run never
+    writes; the object block is in a note."""
+    src = tmp_path / "rt.cl8"
+    src.write_text("PROGRAM 7;\nCHANNEL NC 0;\nPAR REAL: R10, R11;\nBEGIN\n  R10 = 5;\n  R11 = INV LN (100);\nEND.\n")
+    result, _ = run(src, options=RunOptions(state_dir=tmp_path / ".ncvm"))
+    err = result["error"]
+    assert (err["code"], err["file"], err["line"]) == ("CL800", str(src), 6)
+    assert err["stack"] == ["object program L7.spf line 2: @201 R10 K5 @641 R11 K100 M17"]
+    assert not (tmp_path / "L7.spf").exists()
+    res = CliRunner().invoke(cli, ["run", str(src)])
+    assert res.exit_code == 1 and "rt.cl8:6: error CL800" in res.output and "R11 = INV LN (100);" in res.output

@@ -9,10 +9,10 @@ dialect, as the object program was loaded into the NC.
 from __future__ import annotations
 
 import re
-from dataclasses import asdict, dataclass
+from dataclasses import asdict, dataclass, replace
 from pathlib import Path
 
-from ....diagnostics import CompileFailed, UsageError
+from ....diagnostics import CompileFailed, RuntimeFault, Span, UsageError
 from ....machine.config import dialect_options
 from ....outpaths import refuse_overwrite, write_output
 from ... import get_dialect
@@ -22,6 +22,7 @@ from .atcode import ObjectProgram, compile_program
 from .axiswords import axis_diagnostics
 from .checker import check_program
 from .messages import CompilerMessage
+from .stopdec import stop_dec_diagnostics
 
 _SNIFF = re.compile(r"^\s*(PROGRAM\s+\d+\s*;|EXTERNAL\s+\d+\s*;|CHANNEL\s+NC\s+\d+|BEGIN\b|END\.|ENDEXTERN)", re.M)
 
@@ -88,9 +89,11 @@ class Cl800Dialect(Dialect):
             return [errs[0]]
         if not errs and isinstance(prog, ast.Program):
             try:
-                compile_program(path, prog, sym)  # S064, S120, S125-S127 show only while generating code
+                obj = compile_program(path, prog, sym)  # S064, S120, S125-S127 show only while generating code
             except CompilerMessage as e:
                 diags.append(e.diagnostic())
+            else:
+                diags += stop_dec_diagnostics(path, obj)
         return diags + axis_diagnostics(path, prog, machine.axis_names)
 
     def build(self, path: str, text: str, machine) -> ObjectProgram:
@@ -111,18 +114,55 @@ class Cl800Dialect(Dialect):
             raise CompileFailed([e.diagnostic()]) from None
 
     def compile(self, path, text, machine, out, xref):
+        """The object program; with ``xref`` the cross-reference listing instead, which a dedicated
+        compilation writes without object code (L361), unless ``out`` asks for the object as well."""
         obj = self.build(path, text, machine)
+        if xref:
+            refuse_overwrite("compile", Path(xref), path)
+            write_output(Path(xref), obj.xref())
+            if not out:
+                return Path(xref)
         target = Path(out) if out else Path(path).with_name(f"L{obj.number}.spf")
         refuse_overwrite("compile", target, path)
         write_output(target, obj.text())
-        if xref:
-            write_output(Path(xref), obj.xref())
         return target
 
     def run(self, path, text, session):
         obj = self.build(path, text, session.machine)
         obj_path = str(Path(path).with_name(f"L{obj.number}.spf"))
-        get_dialect("sin800").run(obj_path, obj.text(), session)
+        try:
+            get_dialect("sin800").run(obj_path, obj.text(), session)
+        except RuntimeFault as fault:
+            where = _ObjectPlaces(path, obj_path, obj)
+            fault.notes += where.note(fault.span)
+            fault.span = where.place(fault.span)
+            fault.stack = [replace(f, span=where.place(f.span)) for f in fault.stack]
+            raise
+        except CompileFailed as failed:  # the NC's reader refused a block (DIN code the compiler passed on)
+            where = _ObjectPlaces(path, obj_path, obj)
+            for d in failed.diagnostics:
+                d.notes = where.note(d.span) + d.notes
+                d.span = where.place(d.span)
+            raise
+
+
+class _ObjectPlaces:
+    """Places in the object program, which a run of the source never writes to disk, as the CL 800
+    statements that produced their blocks; the object block itself goes into a note."""
+
+    def __init__(self, path: str, obj_path: str, obj: ObjectProgram):
+        self.path, self.obj_path, self.obj = path, obj_path, obj
+
+    def place(self, span: Span | None) -> Span | None:
+        if span is None or span.file != self.obj_path:
+            return span
+        return Span(self.path, self.obj.source_line(span.line, span.column))
+
+    def note(self, span: Span | None) -> list[str]:
+        if span is None or span.file != self.obj_path or not 2 <= span.line <= len(self.obj.blocks) + 1:
+            return []
+        return [f"object program {Path(self.obj_path).name} line {span.line}: "
+                f"{self.obj.blocks[span.line - 2].text()}"]
 
 
 DIALECT = Cl800Dialect()

@@ -50,9 +50,41 @@ class ObjectProgram:
         return "\n".join([f"%SPF{self.number}"] + [b.text() for b in self.blocks]) + "\n"
 
     def xref(self) -> str:
+        """The cross-reference listing (L355-365): every statement's object code under the number of its
+        source line; a statement that starts an NC block begins at column 7, one that continues the block
+        is indented by two more."""
         lines = [f"{self.header_line:5d} %SPF{self.number}"]
-        lines += [f"{b.source_line:5d} {b.text()}" for b in self.blocks]
+        for b in self.blocks:
+            groups: list[tuple[int, list[str]]] = []
+            for text, src in b.items:
+                if groups and groups[-1][0] == src:
+                    groups[-1][1].append(text)
+                else:
+                    groups.append((src, [text]))
+            if b.number is not None:
+                if groups:
+                    groups[0][1].insert(0, f"N{b.number}")
+                else:
+                    groups.append((b.line, [f"N{b.number}"]))
+            lines += [f"{src:5d} {'  ' * (k > 0)}{' '.join(words)}" for k, (src, words) in enumerate(groups)]
         return "\n".join(lines) + "\n"
+
+    def source_line(self, line: int, column: int | None = None) -> int:
+        """The source line of the statement that produced the object text at ``line`` (1: the ``%SPF``
+        header), ``column``: the statement whose words stand there (None: the block's first)."""
+        if line <= 1 or line - 2 >= len(self.blocks):
+            return self.header_line
+        blk = self.blocks[line - 2]
+        if column is None:
+            return blk.source_line
+        at = len(f"N{blk.number} ") + 1 if blk.number is not None else 1
+        found = blk.source_line
+        for text, src in blk.items:
+            if column < at:
+                break
+            found = src
+            at += len(text) + 1
+        return found
 
 
 def fmt_number(v) -> str:

@@ -8,6 +8,7 @@ message numbers. Code generation then assumes a valid tree.
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -31,6 +32,10 @@ WINDOWS = {
     "PREP CYC": ((98, 998),),
 }
 LIST_EXTENSIONS = (".cl8", ".cl800", ".ext", ".lst8")
+#: a file that begins (after comments) with EXTERNAL: a declaration list, whatever its errors
+_EXTERNAL_FIRST = re.compile(r"\s*(?:\(\*.*?\*\)\s*)*EXTERNAL\b", re.S | re.I)
+#: an undeclared name that is a bit pattern but for its digits (B00000002): E051, not E037
+_DIGIT_PATTERN = re.compile(r"[Bb][0-9]{1,8}")
 
 
 @dataclass
@@ -74,12 +79,16 @@ class Checker:
             self.load_list(*ref)
         for d in prog.decls:
             self.declare(d)
+        # a name declared twice is reported where it is declared the second time
         for key, (_num, line, col, _raw) in prog.consts.items():
             if key in self.sym.by_name:
-                self.errors.append(CompilerMessage("E036", self.path, line, col))
+                self._double(self.sym.by_name[key], line, col)
         for key, (line, col, _raw) in prog.labels.items():
-            if key in self.sym.by_name or key in prog.consts:
-                self.errors.append(CompilerMessage("E036", self.path, line, col))
+            if key in self.sym.by_name:
+                self._double(self.sym.by_name[key], line, col)
+            elif key in prog.consts:
+                other = prog.consts[key]
+                self.errors.append(CompilerMessage("E036", self.path, *max((line, col), (other[1], other[2]))))
         self.block(prog.body, top=True)
         for g in self.gotos:
             key = norm(g.target)
@@ -120,7 +129,11 @@ class Checker:
         if p is None:
             self.err("E200", where, f'list "{name}"')
             return
-        unit, errors = parse_source(str(p), read_text(p))
+        text = read_text(p)
+        unit, errors = parse_source(str(p), text)
+        if not isinstance(unit, ast.ExtList) and not _EXTERNAL_FIRST.match(text):
+            self.errors.append(CompilerMessage("E014", str(p), 1, 1))  # a list starts with EXTERNAL (L1307)
+            return
         if errors:
             self.errors.append(min(errors, key=lambda e: (e.line, e.col or 0)))
             return
@@ -177,6 +190,9 @@ class Checker:
             st.args = [self.value(a) for a in st.args]
             st.value = self.value(st.value)
         elif isinstance(st, ast.Proc):
+            if st.name == "ESS" and not (self.prog.body and st is self.prog.body[0]):
+                # the compiler would put @00f at the start of the object program, where ESS belongs
+                self.err("E061", st, "ESS must be at the start of the statement part (L4338)")
             kinds = PROCEDURES.get(st.name, ("", "x"))[1] if st.name != "ESS" else ""
             new = []
             for kind, a in zip(kinds, st.args):
@@ -230,8 +246,8 @@ class Checker:
         arithmetic = isinstance(e, (ast.Num, ast.Call)) or (
             isinstance(e, ast.Binary) and e.op in ("+", "-", "*", "/", "OR", "XOR", "AND", "NAND")) or (
             isinstance(e, ast.Unary) and e.op in ("-", "NOT"))
-        if arithmetic:
-            self.err("E030", e)
+        if arithmetic or (isinstance(e, ast.Operand) and e.type in ("REAL", "INTEGER", "PATTERN")):
+            self.err("E030", e)  # a REAL, INTEGER or PATTERN variable alone is no condition
         return e
 
     def nc_function(self, target: ast.Operand, call: ast.Call) -> None:
@@ -260,6 +276,8 @@ class Checker:
             d = self.sym.by_name.get(key)
             if d is None:
                 code = "E054" if key in self.prog.consts or key in self.prog.labels else "E037"
+                if code == "E037" and _DIGIT_PATTERN.fullmatch(op.name):
+                    code = "E051"  # B00000002: a bit pattern with a digit other than 0 and 1 (L7074-7075)
                 self.err(code, op, op.name)
             return d
         d = self.sym.by_r.get(op.r)
@@ -279,6 +297,13 @@ class Checker:
             if d.cls != "POINTER":
                 self.err("E054", op, f"R{d.r} is not a POINTER")
             op.type = ""
+
+    def _double(self, d: ast.Decl, line: int, col: int) -> None:
+        """E036 for a CONST or LABEL name that a variable declaration (``d``) also declares: at the later
+        of the two (a variable from a list file counts as declared first: the header names the lists)."""
+        if d.file in ("", self.path) and (d.line, d.col) > (line, col):
+            line, col = d.line, d.col
+        self.errors.append(CompilerMessage("E036", self.path, line, col, d.name or ""))
 
     def bit(self, b: ast.Bit, write: bool = False) -> None:
         if isinstance(b.bit, str):

@@ -13,8 +13,6 @@ from dataclasses import dataclass
 from ....source import DIGITS, LETTERS, int_literal
 from .messages import CompilerMessage
 
-MAX_LINE = 79  # one screen line of the WS 800 A editor (E208)
-
 #: every CL 800 word (digest §3.1) plus the system memory and function names of §4
 KEYWORDS = frozenset("""
 PROGRAM CHANNEL NC COM ESS ID PW EXTERNAL ENDEXTERN GLOBAL CENTRAL PAR LOCAL POINTER CONST LABEL
@@ -81,10 +79,9 @@ class Lexer:
         self.errors.append(CompilerMessage(code, self.path, line, col, detail))
 
     def tokens(self) -> list[Token]:
+        # no line length limit: E208 (one screen line) is a message of the editor, not of the compiler
+        # (L6218-6230), and the manual's own listings 7.3 and 7.4 have lines of 85-89 characters
         text, out = self.text, []
-        for n, ln in enumerate(text.split("\n"), 1):
-            if len(ln.expandtabs(8)) > MAX_LINE:
-                self.err("E208", n, MAX_LINE + 1)
         i, line, bol = 0, 1, 0
         size = len(text)
         while i < size:

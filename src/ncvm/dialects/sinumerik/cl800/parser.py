@@ -9,6 +9,7 @@ ELSE/ENDIF/END optional, ``:=`` for ``=``, ``,`` or ``.`` in IF INT pairs,
 
 from __future__ import annotations
 
+import re
 from contextlib import contextmanager
 
 from ....source import LETTERS, MAX_NESTING, NAME_CHARS, too_deep
@@ -172,7 +173,8 @@ class Parser:
         end = self.advance()
         prog.end_line = end.line
         if not self.is_sym("."):
-            self.errors.append(self.fail("E010"))
+            # where the dot belongs, right after END (not at the next token, which may be the end of the file)
+            self.errors.append(CompilerMessage("E010", self.path, end.line, end.col + len(end.text)))
         else:
             self.advance()
         if self.tok.kind != "EOF":
@@ -204,8 +206,7 @@ class Parser:
     def ident(self, unit) -> None:
         self.advance()
         text = self.paren_text("E032")
-        first = text.split("-")[0].strip()
-        if not text or len(text) > 40 or ("-" in text and len(first) != 1):
+        if not _ident_ok(text, self.strict):
             raise self.fail("E032", self.toks[self.pos - 1])
         unit.ident = text
         self.expect_sym(";", "E001")
@@ -241,8 +242,12 @@ class Parser:
                 raise self.fail("E034", s)
             if self.is_sym(",") or (self.tok.kind == "STRING"):
                 raise self.fail("E035")
+            if prog.list_refs and prog.list_refs[-1][2] == t.line:
+                raise self.fail("E035", t, "one list reference per line")
             prog.list_refs.append((t.text, name, s.line, s.col))
             self.expect_sym(";", "E001")
+            if self.tok.kind == "STRING" and self.tok.line == s.line:
+                raise self.fail("E035", detail="one list reference per line")
         elif t.is_kw("PAR", "LOCAL", "POINTER"):
             self.advance()
             if t.text == "POINTER":
@@ -275,6 +280,8 @@ class Parser:
             while True:
                 n = self.new_name()
                 key = norm(n.text)
+                if len(n.text) > 8:
+                    raise self.fail("E061", n, f"a label has at most 8 characters (L1297): {n.text}")
                 if key in prog.labels:
                     raise self.fail("E036", n)
                 prog.labels[key] = (n.line, n.col, n.text)
@@ -777,3 +784,18 @@ class Parser:
         if t.kind == "EOF":
             raise self.fail("E060")
         raise self.fail("E061", detail="operand expected")
+
+
+def _ident_ok(text: str, strict: bool) -> bool:
+    """ID designation (L1116-1145): at most 40 characters; terms 1-4 fixed, separated by hyphens: the
+    consecutive number (1 character), the file designation (8), the date (DD.MM.YY), the programmer (3).
+    The manual's own examples leave out the date and initials (``0-BEISP2-...``) or give longer file
+    designations (``0-HOLE PATTERN-...``): unless ``strict``, the number and a file designation suffice."""
+    terms = [t.strip() for t in text.split("-")]
+    if len(text) > 40 or len(terms) < 2 or len(terms[0]) != 1 or not terms[1]:
+        return False
+    if not strict:
+        return True
+    return (len(terms) >= 4 and len(terms[1]) <= 8 and re.fullmatch(r"\d\d\.\d\d\.\d\d", terms[2]) is not None
+            and len(terms[3]) == 3)
+
