@@ -14,8 +14,8 @@ from ncvm.dialects.cpl.options import Options as CplOptions
 from ncvm.dialects.sinumerik.cl800 import Options, options
 from ncvm.dialects.sinumerik.options import Options as Sin800Options
 from ncvm.dialects.sinumerik.options import options as sin800_options
-from ncvm.dialects.sympas.config import Options as SympasOptions
-from ncvm.dialects.sympas.config import sympas_config
+from ncvm.dialects.sympas.options import Options as SympasOptions
+from ncvm.dialects.sympas.options import sympas_config
 from ncvm.machine.config import dialect_options
 from ncvm.machine.model import Axis, Machine
 from ncvm.machine.schema import NO_DEFAULT, Said

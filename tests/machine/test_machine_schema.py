@@ -391,7 +391,7 @@ def test_cli_prints_the_json_schema():
 
 def test_declared_defaults_are_the_ones_the_dialects_use():
     from ncvm.dialects.sinumerik.cl800 import OPTIONS
-    from ncvm.dialects.sympas.config import AXST_BITS, DEFAULTS, SSF_CODES
+    from ncvm.dialects.sympas.options import AXST_BITS, DEFAULTS, SSF_CODES
 
     declared = section_defaults("sympas")
     for key, value in DEFAULTS.items():

@@ -6,8 +6,8 @@ from __future__ import annotations
 import math
 from types import SimpleNamespace
 
-from ncvm.dialects.sympas.config import Options
 from ncvm.dialects.sympas.motion import TICKS_PER_S
+from ncvm.dialects.sympas.options import Options
 from ncvm.dialects.sympas.scheduler import Scheduler
 from ncvm.machine.scenario import CommonInteger, EventQueue
 

@@ -1,6 +1,6 @@
 """The SINUMERIK family's errors: the NC alarm "CL 800 error" at run time, a part program the reader refuses.
 
-The WS 800 A compiler's messages (E/S/W numbers) are :class:`.cl800.messages.CompilerMessage`.
+The WS 800 A compiler's messages (E/S/W numbers) are :class:`.cl800.errors.CompilerMessage`.
 """
 
 from __future__ import annotations

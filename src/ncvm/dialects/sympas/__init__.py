@@ -20,10 +20,10 @@ from .card import Card
 from .checker import Checker
 from .codegen import CodeGen
 from .commands import COMMANDS, fast_line
-from .config import sympas_config
 from .errors import SympasError
 from .lexer import Lexer
 from .motion import TICKS_PER_S
+from .options import sympas_config
 from .parser import Parser
 from .scheduler import QUIET_S
 from .values import namespace

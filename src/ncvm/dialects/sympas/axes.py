@@ -2,8 +2,8 @@
 
 from __future__ import annotations
 
-from .config import Options
 from .motion import Move
+from .options import Options
 
 
 class AxisState:

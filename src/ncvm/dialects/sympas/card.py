@@ -15,8 +15,8 @@ from ...machine.scenario import AxisInput, CommonInteger, EventQueue, PositionEr
 from ...nc.canon import Src
 from . import recording, softlimits
 from .axes import AxisState
-from .config import Options
 from .motion import TICKS_PER_S, Move
+from .options import Options
 from .scheduler import Scheduler
 from .spooler import Spooler
 from .task import RUNNING, STEP, STOPPED

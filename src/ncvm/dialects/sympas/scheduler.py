@@ -14,8 +14,8 @@ import math
 from ...diagnostics import Frame, RuntimeFault, Span
 from ...machine.scenario import EventQueue
 from ...runtime.locate import generated_frames
-from .config import Options
 from .motion import TICKS_PER_S
+from .options import Options
 from .task import ENDED, ERROR, RUNNING, Task, TaskEnd
 
 #: simulated seconds the card must stay quiet (no motion, no timed action or scenario event) before the run

@@ -18,10 +18,10 @@ from ....outpaths import refuse_overwrite, write_output
 from ... import get_dialect
 from ...base import Dialect
 from . import ast
-from .atcode import ObjectProgram, compile_program
 from .axiswords import axis_diagnostics
 from .checker import check_program
-from .messages import CompilerMessage
+from .codegen import ObjectProgram, compile_program
+from .errors import CompilerMessage
 from .stopdec import stop_dec_diagnostics
 
 _SNIFF = re.compile(r"^\s*(PROGRAM\s+\d+\s*;|EXTERNAL\s+\d+\s*;|CHANNEL\s+NC\s+\d+|BEGIN\b|END\.|ENDEXTERN)", re.M)

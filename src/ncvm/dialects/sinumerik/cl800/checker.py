@@ -15,8 +15,8 @@ from pathlib import Path
 from ....machine.files import find_in
 from ....source import read_text
 from . import ast
+from .errors import CompilerMessage
 from .lexer import Lexer, norm
-from .messages import CompilerMessage
 from .parser import Parser
 from .tables import FUNCTIONS, NC_FUNCTIONS, PROCEDURES, SYS_READS
 

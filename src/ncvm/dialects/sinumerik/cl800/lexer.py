@@ -11,7 +11,7 @@ import re
 from dataclasses import dataclass
 
 from ....source import DIGITS, LETTERS, int_literal
-from .messages import CompilerMessage
+from .errors import CompilerMessage
 
 #: every CL 800 word (digest §3.1) plus the system memory and function names of §4
 KEYWORDS = frozenset("""

@@ -14,8 +14,8 @@ from contextlib import contextmanager
 
 from ....source import LETTERS, MAX_NESTING, NAME_CHARS, too_deep
 from . import ast
+from .errors import CompilerMessage
 from .lexer import KEYWORDS, KEYWORDS_UPPER, Token, norm
-from .messages import CompilerMessage
 from .tables import FUNCTIONS, NC_FUNCTIONS, PROCEDURES, RELOPS, SYS_READS, SYS_WRITES, TWO_WORD
 
 TYPES = ("INTEGER", "REAL", "PATTERN", "BOOLEAN")

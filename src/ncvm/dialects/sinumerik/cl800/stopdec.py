@@ -11,7 +11,7 @@ from __future__ import annotations
 from ....diagnostics import Diagnostic
 from ..lint import stop_dec_lint
 from ..reader import read_program
-from .atcode import ObjectProgram
+from .codegen import ObjectProgram
 
 
 def stop_dec_diagnostics(path: str, obj: ObjectProgram) -> list[Diagnostic]:

@@ -14,8 +14,8 @@ from dataclasses import dataclass, field
 
 from . import ast
 from .checker import Symbols
+from .errors import CompilerMessage
 from .lexer import norm
-from .messages import CompilerMessage
 from .tables import FUNCTIONS, LOGIC, NC_FUNCTIONS, PROCEDURES, RELOPS, SYS_READS, SYS_WRITES
 
 MAX_BLOCK = 120  # characters per NC block (L1008, S064)
