@@ -13,6 +13,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from ...diagnostics import Diagnostic
+from ...machine.files import find_in
 from ...machine.model import Machine
 from ...source import read_text
 from . import ast as A
@@ -24,6 +25,22 @@ MAX_CASE_NESTING = 10
 #: sub-program levels below the main program (manual §2.1 L325: "CPL permits a maximum 7-fold nesting depth")
 MAX_SUB_NESTING = 7
 SUB_EXTENSIONS = (".cpl", ".CPL")  # names are case-sensitive (§6.1.1); the extension is ncvm's, in either case
+
+
+def find_din_program(machine: Machine, name: str, private: tuple[Path, ...] = ()) -> Path | None:
+    """A ``CALL name DIN`` sub-program: along the program path, then in the file root. On the control the
+    programs and the files a program writes are one file memory (§6.1), so a program may write an NC
+    program with OPENW/PRN# and call it (L1097, L4003)."""
+    found = machine.find_program(name, SUB_EXTENSIONS, ignore_case=False, private=private)
+    if found is None:
+        found = find_in([machine.file_root], [name, *(name + ext for ext in SUB_EXTENSIONS)], False,
+                        private + machine.own_files())
+    return found
+
+
+def where_looked(machine: Machine) -> str:
+    """The folders a CALL looks in, for its CPL005."""
+    return f"program path: {', '.join(str(p) for p in machine.program_path)}; file root: {machine.file_root}"
 
 #: how often a program was really linked (tests check that unchanged programs are taken from the cache)
 LINK_STATS = {"linked": 0}

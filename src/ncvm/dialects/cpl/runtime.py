@@ -41,7 +41,7 @@ from .io import strings as S
 from .io.context import CplIO
 from .io.errors import CplRuntimeError
 from .io.values import CplText, Double
-from .linker import MAX_SUB_NESTING, SUB_EXTENSIONS, LinkResult, call_table
+from .linker import MAX_SUB_NESTING, LinkResult, call_table, find_din_program, where_looked
 from .options import options
 from .perm import DeclError, Permanents
 from .system import SYSTEM_PROCS
@@ -330,9 +330,9 @@ class CplRuntime:
             raise CplError("CPL007", f"CALL {name}")
         target = self.linked.resolve.get((caller, name))
         if target is None:
-            found = self.machine.find_program(name, SUB_EXTENSIONS, ignore_case=False)
+            found = find_din_program(self.machine, name, (self.session.options.state_dir,))
             if found is None:
-                raise CplError("CPL005", name)
+                raise CplError("CPL005", f"{name} ({where_looked(self.machine)})")
             target = str(found)
         if target in active:
             raise CplError("CPL006", name)

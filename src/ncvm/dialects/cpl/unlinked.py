@@ -17,7 +17,7 @@ from . import ast as A
 from .axiswords import CODE as AXIS_CODE
 from .axiswords import detail, refused_blocks
 from .errors import CplError, diag, fault
-from .linker import SUB_EXTENSIONS, call_table, link, link_one
+from .linker import call_table, find_din_program, link, link_one
 from .system.gfuncs import prepare
 from .system.transforms import PARAMETER_G
 
@@ -88,7 +88,7 @@ def din_call_warnings(res, machine) -> list[Diagnostic]:
         for name, din, s in ln.calls:
             if not din:
                 continue
-            found = machine.find_program(name, SUB_EXTENSIONS, ignore_case=False)
+            found = find_din_program(machine, name)
             if found is None:
                 detail, code = f"{name} is not there now; CALL ... DIN looks for it when the call runs", "CPL005"
             else:
