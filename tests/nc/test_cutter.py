@@ -111,6 +111,18 @@ def test_d_word_naming_a_missing_tool_is_nc008(run_text, tmp_path):
     assert r["error"]["code"] == "NC008"
 
 
+def test_g41_d0_takes_the_radius_of_the_tool_in_the_spindle_as_rs274(run_text, tmp_path):
+    """rs274 2.9 (`rs274 -t` with T1 P1 D0.4): `T1 M6` then `G41 D0` cuts as `G41` and `G41 D1`."""
+    paths = []
+    for d in ("D0", "", "D1"):
+        r, calls = _run(run_text, tmp_path, f"T1 M6\nG0 X-20 Y-20\nG41 {d} G1 X0 Y0 F500\nG1 X50 Y0\nG1 X50 Y30\n"
+                                            "G40 G1 X80 Y40\nM2\n")
+        assert r["status"] == "ok", r["error"]
+        paths.append(_moves(calls))
+    assert paths[0] == paths[1] == paths[2]
+    assert paths[0][1] == ("feed", -3.5921, 3.5921, None)  # rs274: STRAIGHT_FEED(-3.5921, 3.5921, ...)
+
+
 def test_g41_without_a_tool_radius_cuts_the_programmed_path(run_text, tmp_path):
     """LinuxCNC: with radius 0 (no D word and no tool in the spindle) compensation changes nothing."""
     r, calls = _run(run_text, tmp_path, "G41 G1 X10 Y5 F100\nG1 X20\nG40 G1 X0\n")

@@ -44,14 +44,14 @@ _DEFERRED = ("message", "dwell", "spindle", "coolant", "aux", "probe", "tool_off
 
 
 def iso_radius(kernel, g: int, words, src: Src) -> float:
-    """ISO / LinuxCNC: D names the tool whose radius counts (a whole number); without D the tool in the spindle."""
-    if "D" not in words:
-        number = kernel.tool
-    else:
+    """ISO / LinuxCNC: D names the tool whose radius counts (a whole number); without D, or with D0, the tool
+    in the spindle (rs274 2.9 does so for D0); no tool in the spindle: radius 0."""
+    number = kernel.tool
+    if "D" in words:
         d = words["D"]
         if d != int(d) or d < 0:
             kernel.fault("NC012", f"G{g}: D{d:g} must name a tool by a whole number >= 0", src)
-        number = int(d)
+        number = int(d) or kernel.tool
     return kernel._tool(number, src).radius if number else 0.0
 
 

@@ -86,8 +86,8 @@ class Offsets:
         if 10 <= tool_type <= 19:
             return 0.0
         if not (20 <= tool_type <= 39 or 50 <= tool_type <= 59):
-            kernel.fault("NC005", f"G{g}: cutter radius compensation for tool type {tool_type} of D{n} (turning or "
-                         "5D tools, cutting positions) is not supported by ncvm", src)
+            kernel.fault("NC005", f"G{g}: cutter radius compensation for tool type {tool_type} of D{n} is not "
+                         "supported by ncvm (it compensates cutters and grinding wheels, types 20-39 and 50-59)", src)
         return sum(p[i] for i in (4, 7) if i < len(p))
 
     def acd(self, code: str, args: tuple) -> float:
