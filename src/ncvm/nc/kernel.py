@@ -311,6 +311,9 @@ class NcKernel:
         elif motion >= 73 and self.canned is not None:
             self.canned.block(self, motion, cycle_g, words, src)
         else:
+            if motion < 2 and "R" in words:  # rs274: "R word with no G code that uses it"; never dropped silently
+                self.fault("NC009", "a circle radius (R; SINUMERIK B) on a straight move (G0/G1): no function of the block uses "
+                           "it (a corner rounding between straight blocks is not supported by ncvm)", src)
             self.motion = motion
             if motion < 2 and not machine_coords:
                 self.linear(self, motion, words, src)  # the common case, without the _move call

@@ -112,6 +112,8 @@ def test_code_runs(tmp_path, code):
     body = f"@{code} {SAMPLES[code]}".rstrip()
     if code in ("042", "043"):
         body = f"@{'040' if code == '042' else '041'} {SAMPLES[code]}\n" + body
+    if code == "446":  # the programmed radius of a circle: a radius on a straight block is refused (NC009)
+        body += " G2 X20 Y0"
     result = _write(tmp_path, f"%MPF1\n{prelude}G1 F100\n{body}\nM30\n", {"L20.spf": "%SPF20\nX10 Y0\nX0 Y10 M17\n"},
                     "810" if code in DRIVE_MD else "880")
     assert result["status"] == "ok", result["error"]
