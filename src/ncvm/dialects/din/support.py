@@ -20,8 +20,6 @@ from ...nc.cycles import CODES as CYCLE_CODES
 #: the G functions the profile runs (nc/kernel.py NcKernel.execute, nc/cycles.py)
 G_FUNCTIONS = frozenset({0, 1, 2, 3, 4, 10, 17, 18, 19, 20, 21, 40, 41, 42, 43, 44, 49, 53, 54, 55, 56, 57, 58, 59, 60,
                          64, 70, 71, 90, 91, 92, 92.1, 94, 96, 97}) | CYCLE_CODES
-#: refused G functions whose code is not NC004
-G_CODES: dict[float, str] = {}
 #: the addresses its functions read besides the axes (O: a program number, as ISO controls read it; it does
 #: nothing); every other letter is refused (NC007), an axis letter the machine lacks is NC011 (nc/axiswords.py)
 ADDRESSES = frozenset("DFGHIJKLMNOPQRST")
@@ -67,7 +65,7 @@ def unsupported(path: str, segments: list, lines: list[str], axes) -> list[Diagn
         more = f"; {count} blocks use it" if count > 1 else ""
         if kind == "G":
             name = f"G{what:g}"
-            d = Diagnostic(G_CODES.get(what, "NC004"), f"{name} is not supported by ncvm: the run stops here{more}",
+            d = Diagnostic("NC004", f"{name} is not supported by ncvm: the run stops here{more}",
                            Span(path, blk.src.line, _column(text, "G", what)), severity="warning")
             if what == 10:
                 d.message = f"G10 other than G10 L2 P1..P6 is not supported by ncvm: the run stops here{more}"

@@ -332,24 +332,11 @@ class Compiler:
         elif isinstance(st, ast.IfInt):
             self.if_int(st)
         elif isinstance(st, ast.While):
-            start = self.allocate("WHILE", st.depth, st.line)
-            cont = self.allocate("WHILE", st.depth, st.line)
-            self.numbered(start)
-            self.condition(3, st.cond, cont)
-            self.free(mark)
-            self.statements(st.body)
-            self.emit(f"@100 K-{start}", st.line)
-            self.numbered(cont, st.line)
+            self.while_loop("WHILE", st, mark, lambda cont: self.condition(3, st.cond, cont))
         elif isinstance(st, ast.WhileInt):
-            start = self.allocate("WHILEINT", st.depth, st.line)
-            cont = self.allocate("WHILEINT", st.depth, st.line)
-            self.numbered(start)
             code = "198" if st.negated else "197"
-            self.emit(f"@{code} {self.value(st.byte)} {self.value(st.bit)} K{cont}")
-            self.free(mark)
-            self.statements(st.body)
-            self.emit(f"@100 K-{start}", st.line)
-            self.numbered(cont, st.line)
+            self.while_loop("WHILEINT", st, mark, lambda cont: self.emit(
+                f"@{code} {self.value(st.byte)} {self.value(st.bit)} K{cont}"))
         elif isinstance(st, ast.Repeat):
             start = self.allocate("REPEAT", st.depth, st.line)
             cont = self.allocate("REPEAT", st.depth, st.line)
@@ -394,6 +381,18 @@ class Compiler:
             else:
                 ops.append(self.value(a))
         self.emit(" ".join([f"@{code}"] + ops))
+
+    def while_loop(self, kind: str, st, mark: int, exit_test) -> None:
+        """WHILE and WHILE INT: the start block, ``exit_test(cont)`` jumping past the loop, the body, the jump
+        back, the block after the loop."""
+        start = self.allocate(kind, st.depth, st.line)
+        cont = self.allocate(kind, st.depth, st.line)
+        self.numbered(start)
+        exit_test(cont)
+        self.free(mark)
+        self.statements(st.body)
+        self.emit(f"@100 K-{start}", st.line)
+        self.numbered(cont, st.line)
 
     def if_stmt(self, st: ast.If) -> None:
         other = self.allocate("IF", st.depth, st.line) if st.orelse is not None else None

@@ -84,8 +84,7 @@ def _linear(card, tk, items, loc, relative: bool, wait: bool):
     mv = Move(axes, p0, p1, "line", source_of(tk, loc), start)
     if any(nfrax >> ax & 1 or card.rotary[ax] for ax in axes) and length > 0.0:
         mv.weights = tuple(0.0 if nfrax >> ax & 1 else weight(card, tk, ax) for ax in axes)
-    if not card.start_path(tk, mv, length, loc):
-        return then_wait(card, tk, axes, wait)
+    card.start_path(tk, mv, length, loc)  # refused or started: a W form waits for its axes either way
     return then_wait(card, tk, axes, wait)
 
 
@@ -105,14 +104,21 @@ def mlrw(card, tk, items, loc):
     return _linear(card, tk, items, loc, True, True)
 
 
-def _circle(card, tk, items, loc, relative: bool, wait: bool, target: bool = False):
+def _prepared(card, tk, items, loc):
+    """The axes of a circle command and the card's state at its start: (axes, start positions or None when
+    the card refuses the command, unit factor, start positions of the axes, their user shifts)."""
     axes = tuple(ax for ax, _ in items)
     start = card.prepare(tk, axes, loc)
     if start is None:
-        return then_wait(card, tk, axes, wait)
+        return axes, None, 0.0, (), []
     f, _ = card.units(tk)
-    p0 = tuple(start[ax] for ax in axes)
-    sh = [card.user_shift(card.axes[ax]) for ax in axes]
+    return axes, start, f, tuple(start[ax] for ax in axes), [card.user_shift(card.axes[ax]) for ax in axes]
+
+
+def _circle(card, tk, items, loc, relative: bool, wait: bool, target: bool = False):
+    axes, start, f, p0, sh = _prepared(card, tk, items, loc)
+    if start is None:
+        return then_wait(card, tk, axes, wait)
     # the plane in path units: a rotary axis in a translational interpolation on its surface (effradius)
     w = (weight(card, tk, axes[0]), weight(card, tk, axes[1]))
     sc = (scale(card, tk, axes[0], f) * w[0], scale(card, tk, axes[1], f) * w[1])
@@ -168,8 +174,7 @@ def _circle(card, tk, items, loc, relative: bool, wait: bool, target: bool = Fal
         mv.plane_w = w
     if w != (1.0, 1.0) or any(nfrax >> ax & 1 or card.rotary[ax] for ax in axes[2:]):
         mv.weights = w + tuple(0.0 if nfrax >> ax & 1 else weight(card, tk, ax) for ax in axes[2:])
-    if not card.start_path(tk, mv, length, loc):
-        return then_wait(card, tk, axes, wait)
+    card.start_path(tk, mv, length, loc)  # refused or started: a W form waits for its axes either way
     return then_wait(card, tk, axes, wait)
 
 
@@ -190,13 +195,9 @@ def mcrw(card, tk, items, loc, target=False):
 
 
 def _circle3d(card, tk, items, loc, relative: bool, wait: bool, target: bool = False):
-    axes = tuple(ax for ax, _ in items)
-    start = card.prepare(tk, axes, loc)
+    axes, start, f, p0, sh = _prepared(card, tk, items, loc)
     if start is None:
         return then_wait(card, tk, axes, wait)
-    f, _ = card.units(tk)
-    p0 = tuple(start[ax] for ax in axes)
-    sh = [card.user_shift(card.axes[ax]) for ax in axes]
     vals = [v * f for _, v in items]
     n = (tk.sysp["PN1"], tk.sysp["PN2"], tk.sysp["PN3"])
     nl = math.sqrt(sum(x * x for x in n))
@@ -213,8 +214,7 @@ def _circle3d(card, tk, items, loc, relative: bool, wait: bool, target: bool = F
     p1 = tuple(card.round_counts(x) for x in rotate(p0, c, n, phi))
     mv = Move(axes, p0, p1, "arc3d", source_of(tk, loc), start)
     mv.center, mv.radius, mv.phi, mv.normal = c, radius, phi, n
-    if not card.start_path(tk, mv, arc_counts(radius, phi, tk.sysp["PHI"]), loc):
-        return then_wait(card, tk, axes, wait)
+    card.start_path(tk, mv, arc_counts(radius, phi, tk.sysp["PHI"]), loc)  # refused or started: a W form waits for its axes either way
     return then_wait(card, tk, axes, wait)
 
 
