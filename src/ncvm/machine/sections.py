@@ -231,6 +231,8 @@ SIN800 = Table((
     Field("gear", Number(integer=True, min=1, max=5), "gear stage of the master spindle at power-on", 1),
     Field("gears", ListOf(POSITIVE, max_len=5), "maximum speed of gear stages 1..", [], "rev/min"),
     Field("v24_input", Text(), "what INP reads from the V24 port", ""),
+    Field("radius_address", Text(choices=("B", "U")), "the address of the circle radius (machine data; the "
+          "manual's contour writes B, many programs U)", "B"),
 ))
 
 # -- [sympas] ---------------------------------------------------------------------------------------

@@ -477,4 +477,6 @@ def _compensated_linear(kernel, motion: int, words, src: Src) -> None:
     if comp is None:
         kernel.linear(kernel, motion, words, src)
     else:
+        if kernel.spindle_bound:
+            kernel.spindle_update(motion, src)
         comp.move(motion, words, src)

@@ -18,8 +18,8 @@ def make_linear(axis_names: tuple[str, ...], dyn):
         return lambda k, motion, words, src: None  # a controller without axes has nothing to move
     idx = range(n)
     lines = ["def linear(k, motion, words, src):",
-             "    if k.css:",
-             "        k._css_update(src)  # G96: the speed for the radius at the start of the move",
+             "    if k.spindle_bound:",
+             "        k.spindle_update(motion, src)  # G96: the speed for the radius here; G95: the feed for it",
              "    get = words.get",
              "    sc = k.scale",
              "    ab = k.absolute",

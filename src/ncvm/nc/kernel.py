@@ -25,7 +25,7 @@ from operator import add
 
 from ..diagnostics import RuntimeFault, Span
 from ..machine.model import Machine, PlcImage, SimClock
-from . import arcs, cutter
+from . import arcs, cutter, threads
 from .canon import ArcSpec, Canon, Src
 from .dynamics import AxisDynamics, arc_limits, trapezoid_time
 from .fastmove import make_linear
@@ -65,6 +65,9 @@ class NcKernel:
         self.linear = self._fast_linear
         #: G number -> handler(kernel, g, words, src) -> True when the block's axis words are parameters
         self.g_handlers: dict = {}
+        #: a dialect's own modal motion modes beside G0-G3 (the threads G33-G35, nc/threads.py): G number ->
+        #: ``move(kernel, g, words, src)``, run for every block with axis words while the mode is active
+        self.motion_modes: dict = {}
         #: None, or an object with forward(vec), inverse(vec) and plane_similarity(a, b) (see set_transform)
         self.transform = None
         #: the active cutter radius compensation (:class:`ncvm.nc.cutter.CutterComp`), None under G40
@@ -94,6 +97,12 @@ class NcKernel:
         self.max_speed = math.inf  # spindle speed limit under G96 (set by the dialect)
         self.css_axis = self.axis_of.get("X")  # the transverse axis whose position is the radius
         self.css_diameter = False  # that axis is programmed as a diameter
+        #: G95: F is a feed per revolution (mm/rev), kept here; ``feed`` is then the path feed it gives at the
+        #: spindle speed of each move's start (nc/threads.py)
+        self.per_rev = False
+        self.feed_per_rev = 0.0
+        #: G96 or G95 is on: every move first re-reads the spindle (spindle_update)
+        self.spindle_bound = False
         self.tool = 0  # tool in spindle
         self.next_tool = 0
         self.work_offset = "G54"
@@ -251,7 +260,7 @@ class NcKernel:
             elif g == 94 or g == 64 or g == 60:
                 pass
             elif g == 96:
-                self.css = True
+                self.css = self.spindle_bound = True
             elif g == 97:
                 self._g97()
             elif g == 43 or g == 44:
@@ -277,14 +286,19 @@ class NcKernel:
                     motion, cycle_g = g, True
             elif g == 80:
                 pass
+            elif g in self.motion_modes:
+                motion = g
             else:
                 self.fault("NC004", f"G{g} is not supported", src)
         words_taken = False
         if extra is not None:
             for g in extra:
                 words_taken = handlers[g](self, g, words, src) or words_taken
-        if "F" in words and not dwell_block:
-            self.feed = words["F"] * self.scale if self.scale != 1.0 else words["F"]
+        if "F" in words and not dwell_block and not (self.motion_modes and motion in self.motion_modes):
+            if self.per_rev:
+                self.feed_per_rev = words["F"] * self.scale if self.scale != 1.0 else words["F"]
+            else:
+                self.feed = words["F"] * self.scale if self.scale != 1.0 else words["F"]
         if "S" in words:
             if self.css:
                 self.cutting_speed = words["S"]
@@ -323,7 +337,11 @@ class NcKernel:
             self._m_after(mc, src, block.n)
 
     def no_feed_message(self, g: int) -> str:
-        """NC006: a move at feed with no feed rate, or with a negative one."""
+        """NC006: a move at feed with no feed rate, or with a negative one, or under G95 with the spindle standing."""
+        if self.per_rev:
+            standing = threads.no_feed_message(self, g)
+            if standing is not None:
+                return standing
         if self.feed < 0.0:
             return f"G{g} with a negative feed rate F{self.feed / self.scale:g} (program a positive F word)"
         return f"G{g} with feed rate 0 (program an F word)"
@@ -332,7 +350,7 @@ class NcKernel:
         """Whether plain motion blocks may run column-wise (:mod:`ncvm.nc.plainrun`) now: not while a coordinate
         transformation maps every target, nor under G96, where each block sets the spindle speed anew, nor
         when a dialect handles a motion G code itself."""
-        return self.transform is None and not self.css and self.comp is None and self.motion < 4 and not (
+        return self.transform is None and not self.spindle_bound and self.comp is None and self.motion < 4 and not (
             self.g_handlers and _MOTION_G & self.g_handlers.keys())
 
     # -- spindle -----------------------------------------------------------
@@ -360,6 +378,14 @@ class NcKernel:
         if self.css:
             self._css_update(None)
         return self.spindle_dir * self.spindle_speed()
+
+    def spindle_update(self, motion: int, src: Src) -> None:
+        """Before a move (``motion`` 0 rapid, else at feed): G96's speed for the radius here, then G95's path
+        feed for that speed."""
+        if self.css:
+            self._css_update(src)
+        if self.per_rev:
+            threads.per_rev_feed(self, motion, src)
 
     def _css_update(self, src: Src | None, announce: bool = True) -> None:
         """G96: speed = cutting speed / (2 pi r) at the transverse axis position now. Blocks update it at
@@ -391,6 +417,7 @@ class NcKernel:
             self._spindle_fold()
             self.speed = self.css_speed
             self.css = False
+            self.spindle_bound = self.per_rev
 
     def _tool(self, number: int, src: Src):
         tool = self.machine.tools.get(number)
@@ -508,6 +535,8 @@ class NcKernel:
     def straight_to(self, prog, rapid: bool, src: Src) -> None:
         """A straight move to the programmed position ``prog`` (mm, every axis), at rapid or at the modal feed:
         the moves a canned cycle makes."""
+        if self.spindle_bound:
+            self.spindle_update(0 if rapid else 1, src)
         start = self.machine_pos
         end = tuple(map(add, prog if self.transform is None else self.transform.forward(prog), self.offset_vec))
         if rapid:
@@ -520,6 +549,11 @@ class NcKernel:
         self.machine_pos = end
 
     def _general_move(self, motion: int, words, machine_coords: bool, src: Src) -> None:
+        if self.spindle_bound:
+            self.spindle_update(motion, src)
+        if motion > 3 and motion in self.motion_modes:
+            self.motion_modes[motion](self, motion, words, src)
+            return
         if self.comp is not None:
             self.comp.move(motion, words, src)
             return

@@ -150,8 +150,10 @@ def test_prep_ref_int_sec_manual_example(tmp_path):
     r = _run(tmp_path, main, files={"L20.spf": contour})
     assert r["status"] == "ok", r["error"]
     assert R(r, 70) == 1.0 and R(r, 71) == 250.0 and R(r, 72) == pytest.approx(320.0)
-    # the element found is the second one: (Y50, X400) -> (Y300, X300), G1, not the last
-    assert [R(r, n) for n in range(54, 62)] == [50.0, 400.0, 300.0, 300.0, 0.0, 0.0, 1.0, 0.0]
+    # the element found is the line after the B100 rounding (test_radius_address.py): from the rounding's end
+    # (Y112.861, X374.856) to (Y300, X300), G1, not the last
+    assert [R(r, n) for n in range(54, 62)] == pytest.approx([112.860932, 374.855627, 300.0, 300.0, 0.0, 0.0, 1.0,
+                                                             0.0])
     assert r["position"]["X"] == 750.0  # INT SEC's destination words do not move the axes
 
 

@@ -5,6 +5,7 @@ from __future__ import annotations
 import re
 
 from ...diagnostics import CompileFailed, RuntimeFault
+from ...nc import threads
 from ...nc.axiswords import din_missing_axes
 from ...nc.block import PlainRun, read_din_segments
 from ...nc.canon import Src
@@ -17,6 +18,14 @@ from .options import arc_tolerance, options
 from .support import address_refusal, refused_address, unsupported
 
 _DIN_LINE = re.compile(r"^\s*(N\d+\s*)?([GMXYZFST]-?\d|\(|%|/|$)", re.I)
+
+
+def setup_kernel(kernel) -> None:
+    """The din profile's functions beyond the kernel's own: the canned cycles, G94/G95 (units per minute or
+    per revolution) and G33 (spindle-synchronised motion), as LinuxCNC has them."""
+    kernel.canned = CannedCycles()
+    kernel.g_handlers.update(threads.FEED_MODES)
+    kernel.motion_modes.update(threads.ISO_THREADS)
 
 
 class DinDialect(Dialect):
@@ -42,7 +51,7 @@ class DinDialect(Dialect):
             raise CompileFailed(fold_extensions(diags, program_lines(text)))
         kernel = session.kernel
         kernel.arc_tolerance = arc_tolerance(options(session.machine))
-        kernel.canned = CannedCycles()
+        setup_kernel(kernel)
         skip_active = bool(session.machine.setting_data.get("block_skip", True))
         # a block with a word for an axis the machine lacks is refused when the run reaches it (found here,
         # once, so the blocks before it run as they are)

@@ -44,11 +44,11 @@ class Unit:
 
 
 def compile_unit(path: str, text: str, axis_names: tuple[str, ...], name: str, debug: bool = False,
-                 decode_ahead: bool = False, strict: bool = False) -> Unit:
+                 decode_ahead: bool = False, strict: bool = False, radius: str = "B") -> Unit:
     prog, diags = read_program(path, text)
     if diags:
         raise CompileFailed(diags)
-    gen = UnitCodegen(prog, name, axis_names, debug, decode_ahead, strict)
+    gen = UnitCodegen(prog, name, axis_names, debug, decode_ahead, strict, radius)
     source, consts = gen.build()
     namespace = dict(NAMESPACE_GLOBALS)
     namespace.update(consts)
@@ -59,11 +59,13 @@ def compile_unit(path: str, text: str, axis_names: tuple[str, ...], name: str, d
 class SubProgramLibrary:
     """Finds, reads and compiles sub-programs L<n> along the program path, once each."""
 
-    def __init__(self, machine, debug: bool = False, decode_ahead: bool = False, strict: bool = False):
+    def __init__(self, machine, debug: bool = False, decode_ahead: bool = False, strict: bool = False,
+                 radius: str = "B"):
         self.machine = machine
         self.debug = debug
         self.decode_ahead = decode_ahead
         self.strict = strict
+        self.radius = radius
         self.units: dict[int, Unit | None] = {}
 
     def __call__(self, number: int) -> Unit | None:
@@ -74,7 +76,7 @@ class SubProgramLibrary:
             else:
                 text = read_text(path)
                 self.units[number] = compile_unit(str(path), text, self.machine.axis_names, f"L{number}",
-                                                  self.debug, self.decode_ahead, self.strict)
+                                                  self.debug, self.decode_ahead, self.strict, self.radius)
         return self.units[number]
 
     def find(self, number: int) -> Path | None:
@@ -102,7 +104,8 @@ class Sin800Dialect(Dialect):
         prog, diags = read_program(path, text)
         if diags:
             return diags if all_errors else diags[:1]
-        return axis_diagnostics(prog, machine.axis_names) + stop_dec_lint(prog)  # the lint: warnings (§10.5)
+        radius = options(machine).radius_address
+        return axis_diagnostics(prog, machine.axis_names, radius) + stop_dec_lint(prog)  # the lint: warnings (§10.5)
 
     def run(self, path, text, session):
         """Run a main program or @ code object text (``%SPF<n>`` / ``%MPF<n>``, digest §5.3)."""
@@ -111,11 +114,11 @@ class Sin800Dialect(Dialect):
         sec = options(machine)
         ahead = sec.decode_ahead > 0
         strict = sec.strict_nc
-        unit = compile_unit(path, text, machine.axis_names, "main", debug, ahead, strict)
+        unit = compile_unit(path, text, machine.axis_names, "main", debug, ahead, strict, sec.radius_address)
         data = NcData.from_machine(machine)
         store = session.store
         data.overlay(store.items(NAMESPACE))
-        library = SubProgramLibrary(machine, debug, ahead, strict)
+        library = SubProgramLibrary(machine, debug, ahead, strict, sec.radius_address)
         channel = Channel(session, data, library)
         name = f"%{unit.program.kind}{unit.program.number}" if unit.program.kind else Path(path).name
         initial = list(channel.R)

@@ -26,16 +26,18 @@ from .reader import Arith, AtInstr, NcBlock, Note, Operand, PartProgram, Word
 
 #: M functions the kernel handles itself; any other goes to the PLC
 _STANDARD_M = frozenset((0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 17, 30))
+#: G80-G89 (internal G group 9): select or end a drilling cycle (drilling.py)
+_CYCLE_G = frozenset(range(80, 90))
 
 
 def _num(v: float) -> str:
     return repr(float(v))
 
 
-def missing_axis(address: str, axes, dwell: bool = False) -> bool:
-    """A word for an axis the machine lacks (NC011); A and B without such axes are the angle and the radius,
-    X in a dwell block (``dwell``, :func:`dwells`) the time."""
-    return address not in ("A", "B") and is_missing_axis(address, axes) and names_axis(address, dwell)
+def missing_axis(address: str, axes, dwell: bool = False, radius: str = "B") -> bool:
+    """A word for an axis the machine lacks (NC011); A and the radius address (B or U, machine data) without
+    such axes are the angle and the circle radius, X in a dwell block (``dwell``, :func:`dwells`) the time."""
+    return address not in ("A", radius) and is_missing_axis(address, axes) and names_axis(address, dwell)
 
 
 def dwells(items) -> bool:
@@ -43,20 +45,21 @@ def dwells(items) -> bool:
     return is_dwell(it.value for it in items if isinstance(it, Word) and it.address == "G")
 
 
-def axis_diagnostics(prog: PartProgram, axes) -> list[Diagnostic]:
+def axis_diagnostics(prog: PartProgram, axes, radius: str = "B") -> list[Diagnostic]:
     """``ncvm check``: the words for axes the machine lacks, where a run refuses them."""
     return [Diagnostic("NC011", missing_axis_message(it.address, axes), Span(prog.path, blk.line, it.col))
             for blk in prog.blocks for it in blk.items
             if isinstance(it, Word) and (it.value is not None or it.rref is not None)
-            and missing_axis(it.address, axes, dwells(blk.items))]
+            and missing_axis(it.address, axes, dwells(blk.items), radius)]
 
 
 class UnitCodegen:
     """Turns one :class:`PartProgram` into Python source for ``_unit(_rt)``."""
 
     def __init__(self, prog: PartProgram, unit: str, axis_names: tuple[str, ...], debug: bool = False,
-                 decode_ahead: bool = False, strict: bool = False):
+                 decode_ahead: bool = False, strict: bool = False, radius: str = "B"):
         self.prog = prog
+        self.radius = radius  # the circle radius address ([sin800] radius_address): the kernel's R
         self.debug = debug  # a debug build calls the step hook before every block
         # with decode-ahead every block goes through the channel's buffer (no direct kernel moves)
         self.decode_ahead = decode_ahead
@@ -158,6 +161,7 @@ class UnitCodegen:
         src.emit("def _unit(_rt):", 0)
         src._indent = 1
         src.emit("_R = _rt.R; _ex = _rt.execute; _K = _rt.kernel; _ctr = _rt.counter; _lin = _rt.linear")
+        src.emit("_cyc = _rt.drilling.armed  # the drilling cycle a block with an axis word calls (G81-G89)")
         src.emit("_lim = _ctr.limit - _ctr.steps; _st = 0; _blk = 0")
         used = sorted(self.used)
         sync_in = "; ".join(f"r{n} = _R[{n}]" for n in used) or "pass"
@@ -199,10 +203,10 @@ class UnitCodegen:
                 return None
             if it.address == "A" and "A" not in self.axes:
                 return None  # the angle address needs the start point (rotation.py)
-            if missing_axis(it.address, self.axes, dwells(blk.items)):
+            if missing_axis(it.address, self.axes, dwells(blk.items), self.radius):
                 return None  # refused where it stands (NC011)
             if it.address == "G":
-                if it.value in (16, 58, 59):
+                if it.value in (16, 58, 59) or it.value in _CYCLE_G:
                     return None
                 g.append(int(it.value) if it.value == int(it.value) else it.value)
             elif it.address == "M":
@@ -210,7 +214,7 @@ class UnitCodegen:
                     return None  # stops and ends need checks; PLC M functions may load R parameters
                 m.append(int(it.value))
             else:
-                words["R" if it.address == "B" and "B" not in self.axes else it.address] = it.value
+                words["R" if it.address == self.radius and self.radius not in self.axes else it.address] = it.value
         if not g and not m and not words and msg is None:
             return Block((), (), {}, blk.n, None, Src(self.prog.path, blk.line))  # a block that only counts
         return Block(tuple(g), tuple(m), words, blk.n, msg, Src(self.prog.path, blk.line))
@@ -222,11 +226,31 @@ class UnitCodegen:
         line = run[0].src.line
         todo = tuple(b for b in run if b.g or b.m or b.words or b.msg is not None)
         out.emit(f"_st += {len(run)}", line)
+        positions = any(_positions(self.axes, b.words, b.g) for b in todo)
+        if positions:  # a selected drilling cycle runs after each block that travels
+            out.emit("if _cyc:", line)
+            out._indent += 1
+            self.cycle_call(out, line, f"_rt.drilling.run_blocks({self.const(todo, '_RUN')}, {line})")
+            out._indent -= 1
+            out.emit("else:", line)
+            out._indent += 1
         if len(todo) == 1:
             out.emit(f"_ex({self.const(todo[0], '_B')})", line)
         elif todo:
             out.emit(f"for _b in {self.const(todo, '_RUN')}: _ex(_b)", line)
+        if positions:
+            out._indent -= 1
         run.clear()
+
+    def cycle_call(self, out: PySource, line: int, call: str) -> None:
+        """Lines that run the selected drilling cycle (``call``), as an L call runs its sub-program."""
+        out.emit("_ctr.steps += _st; _st = 0", line)
+        out.emit("@SYNC_OUT", line)
+        out.emit(call, line)
+        out.emit("@SYNC_IN", line)
+        out.emit("_ex = _rt.execute; _lin = _rt.linear; _cyc = _rt.drilling.armed", line)
+        out.emit("_lim = _ctr.limit - _ctr.steps", line)
+        out.emit("if _K.ended or _rt.halted: return 1", line)
 
     # -- one block -------------------------------------------------------
     def _block(self, out: PySource, idx: int, blk: NcBlock) -> None:
@@ -523,6 +547,11 @@ def _arith_checks(items: list) -> set[int]:
     return out
 
 
+def _positions(axes, words: dict, g) -> bool:
+    """A constant block that travels: an axis word, not the time of a dwell."""
+    return any(a in axes for a in words) and not is_dwell(g)
+
+
 def _jump_numbers(it: AtInstr):
     code, ops = it.code, it.operands
     if code == "100":
@@ -554,6 +583,7 @@ class _Record:
         self.rel: tuple[str, ...] | None = None
         self.inta: tuple[str, ...] | None = None
         self.angle = False  # the block carries the programmed angle (PANG or the angle address word)
+        self.cycle_g: int | None = None  # G80-G89 in the block
         self.jumped = False  # an unconditional jump was taken: the rest of the block is never read
         self._captured = 0
 
@@ -586,6 +616,8 @@ class _Record:
             if a == "G":
                 gv = float(w.value)
                 self.g.append(int(gv) if gv == int(gv) else gv)
+                if gv in _CYCLE_G:
+                    self.cycle_g = int(gv)
             else:
                 self.m.append(int(w.value))
             return
@@ -595,14 +627,14 @@ class _Record:
         if a == "D":
             self.d = expr
             return
-        if a == "B" and "B" not in cg.axes:
-            a = "R"  # SINUMERIK 8xx radius address for circles (B100, L4237)
+        if a == cg.radius and a not in cg.axes:
+            a = "R"  # SINUMERIK 8xx radius address for circles (machine data: B100 in L4237, or U)
         if a == "A" and "A" not in cg.axes:
             # the angle address (NC MD byte 5001 = 11, L2325-2326) when A is not an axis
             self.angle = True
             self.words.append(("_rt.angle_key()", expr, False))
             return
-        if missing_axis(a, cg.axes, dwells(self.blk.items)):
+        if missing_axis(a, cg.axes, dwells(self.blk.items), cg.radius):
             out.emit(f"_rt.refuse_axis({missing_axis_message(a, cg.axes)!r}, {self.blk.line}, {w.col})", self.blk.line)
             return
         if not const and captured:
@@ -670,10 +702,16 @@ class _Record:
         m = [x for x in self.m if x != 17]
         src = Src(cg.prog.path, line)
         words = self.words
+        axis_keys = {repr(a) for a in cg.axes}
         if self.call is not None:
             words = [w for w in words if w[0] != "'P'"]
             passes = [w for w in self.words if w[0] == "'P'"]
             self.passes = f"_int({passes[-1][1]})" if passes else "1"
+        if self.cycle_g is not None:
+            out.emit(f"_rt.drilling.select({self.cycle_g}); _cyc = _rt.drilling.armed", line)
+        travels = (self.call is None and self.meas is None and self.inta is None and self.int_sec is None
+                   and any(k in axis_keys or k.startswith("_rt.positions.axis_name(") for k, _v, _c in words)
+                   and not dwells(self.blk.items) and not any(x in (58, 59) for x in self.g))
         if self.g16:
             out.emit(f"_rt.positions.g16({self.g16!r}, {line})", line)
         if any(x in (58, 59) for x in self.g):
@@ -708,7 +746,6 @@ class _Record:
             if any(x in (0, 1, 2, 30) for x in m):
                 out.emit("if (_K.ended or _K.stopped_at) and _rt.halt(): return 1", line)
             g, m, words = [], [], []
-        axis_keys = {repr(a) for a in cg.axes}
         fast = (not cg.decode_ahead and not m and self.msg is None and len(g) <= 1 and all(x in (0, 1) for x in g) and words
                 and all(k in axis_keys for k, _v, _c in words))
         if fast:
@@ -741,6 +778,11 @@ class _Record:
                 out.emit("@SYNC_IN", line)
             if any(x in (0, 1, 2, 30) for x in m):
                 out.emit("if (_K.ended or _K.stopped_at) and _rt.halt(): return 1", line)
+        if travels:  # a selected drilling cycle runs where the block took the tool
+            out.emit("if _cyc:", line)
+            out._indent += 1
+            cg.cycle_call(out, line, f"_rt.drilling.call({line})")
+            out._indent -= 1
         if any(x in (40, 41, 42) for x in self.g):  # compensation on or off: the straight-move path changes
             out.emit("_rt.route(); _ex = _rt.execute; _lin = _rt.linear", line)
         if self.rel is not None:
@@ -750,7 +792,7 @@ class _Record:
             out.emit("@SYNC_OUT", line)
             out.emit(f"_rt.call({self.call}, {self.passes}, {line})", line)
             out.emit("@SYNC_IN", line)
-            out.emit("_ex = _rt.execute; _lin = _rt.linear", line)
+            out.emit("_ex = _rt.execute; _lin = _rt.linear; _cyc = _rt.drilling.armed", line)
             out.emit("_lim = _ctr.limit - _ctr.steps", line)
             out.emit("if _K.ended or _rt.halted: return 1", line)
         if m17 and not jumping:

@@ -4,18 +4,29 @@ PREP REF walks a contour sub-program one element per call (a cursor per input
 register Rm, reset when Rm+3 = 1). INT SEC intersects one element with the
 path from the current position to the destination written in the same block.
 Coordinates are (V, H): V the 2nd axis of the plane, H the 1st (G17: Y, X).
+
+The circle radius address (machine data, ``[sin800] radius_address``: B as in the manual's contour, or U)
+on a circle is its radius; on a straight block followed by another straight block it rounds the corner
+between them with that radius (the manual's ``N5 X400 Y50 B100``, L4216): PREP REF then hands out the
+shortened line, the rounding (G2/G3, tangent to both) and the line from the rounding on, one element per
+call. A radius next to a circle (a rounding the manual does not show) is refused.
 """
 
 from __future__ import annotations
 
 import math
 
+from ...nc import arcs
 from .errors import Cl800Error
 from .reader import Word
 
 
-def contour_elements(program, plane_axes: tuple[str, str], start: tuple[float, float], R) -> list[list[float]]:
-    """[sv, sh, ev, eh, iv, ih, g, control] per element of the contour sub-program."""
+def contour_elements(program, plane_axes: tuple[str, str], start: tuple[float, float], R,
+                     radius: str = "B", axes=()) -> list[list[float]]:
+    """[sv, sh, ev, eh, iv, ih, g, control] per element of the contour sub-program, with the roundings its
+    radius words ask for. The other of B and U, when the machine has no such axis, is refused: it is the
+    radius address of another machine."""
+    other = "U" if radius == "B" else "B"
     h_name, v_name = plane_axes
     centre = {"X": "I", "Y": "J", "Z": "K"}
     ih_name, iv_name = centre.get(h_name, "I"), centre.get(v_name, "J")
@@ -23,6 +34,7 @@ def contour_elements(program, plane_axes: tuple[str, str], start: tuple[float, f
     g = 1.0
     absolute = True
     out: list[list[float]] = []
+    rounding: list[float | None] = []  # the radius word of each element
     for blk in program.blocks:
         words: dict[str, float] = {}
         ms: list[int] = []
@@ -45,13 +57,81 @@ def contour_elements(program, plane_axes: tuple[str, str], start: tuple[float, f
         if h_name in words or v_name in words:
             eh = words.get(h_name, h if absolute else 0.0) + (0.0 if absolute else h)
             ev = words.get(v_name, v if absolute else 0.0) + (0.0 if absolute else v)
-            out.append([v, h, ev, eh, words.get(iv_name, 0.0), words.get(ih_name, 0.0), g, 1.0 if end17 else 0.0])
+            iv, ih = words.get(iv_name, 0.0), words.get(ih_name, 0.0)
+            b = words.get(radius)
+            if other in words and other not in axes:
+                raise Cl800Error(f"contour block N{blk.n}: {other}{words[other]:g}: the circle radius address of this "
+                                 f"machine is {radius} ([sin800] radius_address), and {other} is not one of its axes")
+            if g in (2.0, 3.0) and b is not None:
+                if iv_name not in words and ih_name not in words:  # a circle given by its radius
+                    try:
+                        ch, cv = arcs.center_from_radius(h, v, eh, ev, b, g == 2.0)
+                    except arcs.ArcError as e:
+                        raise Cl800Error(f"contour block N{blk.n}: {e}") from None
+                    iv, ih = cv - v, ch - h
+                b = None
+            out.append([v, h, ev, eh, iv, ih, g, 1.0 if end17 else 0.0])
+            rounding.append(b)
             v, h = ev, eh
         elif end17:
             out.append([v, h, v, h, 0.0, 0.0, g, 2.0])
+            rounding.append(None)
         if end17:
             break
+    return _rounded(out, rounding, radius)
+
+
+def _rounded(elements: list[list[float]], rounding: list, radius: str) -> list[list[float]]:
+    """The elements with a rounding arc after each straight element that has a radius word."""
+    out: list[list[float]] = []
+    for i, el in enumerate(elements):
+        el = list(el)
+        if out and out[-1][6] in (2.0, 3.0) and rounding[i - 1] is not None:
+            el[0], el[1] = out[-1][2], out[-1][3]  # the line goes on from the rounding's end
+        r = rounding[i]
+        if r is None:
+            out.append(el)
+            continue
+        nxt = elements[i + 1] if i + 1 < len(elements) and elements[i + 1][7] != 2.0 else None
+        if el[6] not in (0.0, 1.0) or nxt is None or nxt[6] not in (0.0, 1.0):
+            raise Cl800Error(f"{radius}{r:g}: a rounding is read between two straight contour blocks only; "
+                             "next to a circle or at the end of the contour it is not supported by ncvm")
+        arc = _corner_arc((el[0], el[1]), (el[2], el[3]), (nxt[2], nxt[3]), r, radius)
+        if arc is None:
+            out.append(el)  # the lines go straight on: nothing to round
+            continue
+        el[2], el[3] = arc[0], arc[1]
+        out += [el, arc]
     return out
+
+
+def _corner_arc(a, c, b, r: float, radius: str) -> list[float] | None:
+    """The rounding of radius ``r`` at corner ``c`` between the lines a->c and c->b, points (v, h): the element
+    [t1v, t1h, t2v, t2h, iv, ih, G2/G3, 0], or None when the lines go straight on."""
+    if r <= 0.0:
+        raise Cl800Error(f"{radius}{r:g}: a rounding needs a positive radius")
+    (av, ah), (cv, ch), (bv, bh) = a, c, b
+    l1, l2 = math.hypot(cv - av, ch - ah), math.hypot(bv - cv, bh - ch)
+    if l1 < 1e-9 or l2 < 1e-9:
+        raise Cl800Error(f"{radius}{r:g}: a rounding needs two lines of non-zero length")
+    u1h, u1v = (ch - ah) / l1, (cv - av) / l1
+    u2h, u2v = (bh - ch) / l2, (bv - cv) / l2
+    cross = u1h * u2v - u1v * u2h  # > 0: the contour turns left (counter-clockwise in H-V)
+    dot = u1h * u2h + u1v * u2v
+    turn = math.atan2(abs(cross), dot)
+    if turn < 1e-9:
+        return None
+    if math.pi - turn < 1e-9:
+        raise Cl800Error(f"{radius}{r:g}: the contour turns back on itself; there is no rounding")
+    t = r * math.tan(turn / 2.0)
+    if t > l1 + 1e-9 or t > l2 + 1e-9:
+        raise Cl800Error(f"{radius}{r:g}: the rounding needs {t:.4g} mm of each line, the lines are "
+                         f"{l1:.4g} and {l2:.4g} mm long")
+    t1h, t1v = ch - u1h * t, cv - u1v * t
+    t2h, t2v = ch + u2h * t, cv + u2v * t
+    side = 1.0 if cross > 0 else -1.0  # the centre lies left of the first line on a left turn
+    oh, ov = t1h - side * u1v * r, t1v + side * u1h * r
+    return [t1v, t1h, t2v, t2h, ov - t1v, oh - t1h, 3.0 if cross > 0 else 2.0, 0.0]
 
 
 def intersect(element: list[float], p: tuple[float, float], d: tuple[float, float]) -> tuple[float, float] | None:

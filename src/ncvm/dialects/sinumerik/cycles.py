@@ -49,7 +49,8 @@ class Cycles:
             unit = ch.loader(number)
             if unit is None:
                 raise RuntimeFault("RUN002", f"PREP REF: contour sub-program L{number} not found")
-            cursor = [contour_elements(unit.program, ch.positions.plane_axes(), (R[rm + 1], R[rm + 2]), R), 0]
+            cursor = [contour_elements(unit.program, ch.positions.plane_axes(), (R[rm + 1], R[rm + 2]), R,
+                                       ch.radius_address, ch.kernel.axis_of), 0]
             self.contours[rm] = cursor
             R[rm + 3] = 0.0
         elements, i = cursor

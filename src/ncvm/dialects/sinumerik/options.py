@@ -41,6 +41,7 @@ class Options:
     gear: int = 1  # gear stage of the master spindle at power-on
     gears: list[float] = field(default_factory=list)  # maximum speed of gear stages 1..
     v24_input: str = ""  # what INP reads from the V24 port
+    radius_address: str = "B"  # the circle radius address (machine data): B as the manual's contour, or U
 
     def area(self, name: str) -> dict[str, Any]:
         """One of the MD/SD areas by its key (ncdata.AREAS)."""

@@ -13,6 +13,7 @@ from typing import TYPE_CHECKING
 from ...nc import cutter
 from ...nc.kernel import PLANES
 from .errors import Cl800Error
+from .feeds import active_group_11
 from .ncdata import in_range as _rng
 from .spindle import MASTER_SPINDLE
 
@@ -105,7 +106,8 @@ class Positions:
         group = _rng("G group", args[1], 0, 23)
         k = self.kernel
         state = {0: k.motion, 2: k.plane, 5: int(k.work_offset[1:]) if k.work_offset else 0,
-                 3: cutter.active_g(k), 8: 70 if k.scale != 1.0 else 71, 10: 90 if k.absolute else 91}
+                 3: cutter.active_g(k), 8: 70 if k.scale != 1.0 else 71, 10: 90 if k.absolute else 91,
+                 9: self.channel.drilling.executed, 11: active_group_11(k)}
         if group in state:
             return float(state[group])
         return float(ACG_GROUPS.get(group, (0,))[0])

@@ -32,8 +32,10 @@ from ...nc.kernel import INCH, refused_g
 from ...nc.spindle import SINUMERIK_GEARS, Gearbox
 from ...runtime.buffer import BlockBuffer
 from ...runtime.locate import generated_frames
+from . import feeds
 from .atcodes import AT_CODES
 from .cycles import Cycles
+from .drilling import Drilling
 from .errors import Cl800Error
 from .meas import meas_m
 from .memory import SystemMemory
@@ -141,6 +143,7 @@ class Channel:
         # M0: the run goes on as after the operator's cycle start, unless [sin800] m0 = "stop"
         self.m0_stops = self.kernel.m0_stops = sec.m0 == "stop"
         self.max_depth = sec.max_call_depth
+        self.radius_address = sec.radius_address  # B or U: the circle radius (machine data)
         self.memory = SystemMemory(data, session.say, sec.cycle_alarm_stop)
         # decode-ahead (digest §10.5): 0 = lockstep; N = up to N decoded blocks wait for execution
         self.decode_ahead = sec.decode_ahead
@@ -164,6 +167,9 @@ class Channel:
         self.offsets = Offsets(self)
         self.kernel.cutter_radius = self.offsets.cutter_radius  # G41/G42: the radius of the TO area's offset D
         self.kernel.g_handlers.update(SINUMERIK_REFUSED)
+        feeds.setup(self.kernel)  # G94-G97, the threads G33-G35
+        self.drilling = Drilling(self)  # G80-G89: the drilling cycles L81-L89
+        self.kernel.g_handlers.update(self.drilling.handlers())
         self.cycles = Cycles(self)
         self.rel_inta = RelInta(self)
         self.panel = Panel(self)

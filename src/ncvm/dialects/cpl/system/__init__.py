@@ -8,6 +8,7 @@ procedures FXCR, FXDEL, FXINS.
 
 from __future__ import annotations
 
+from ....nc import threads
 from ..table import Builtin
 from . import areas, ncs, offsets, plc, positions, sercos, sysdata, tools, transforms
 from .context import SystemContext
@@ -72,3 +73,4 @@ def setup(rt: SystemContext) -> None:
     areas.setup(rt)
     tools.setup(rt)
     transforms.setup(rt)
+    rt.kernel.g_handlers.update(threads.FEED_MODES)  # G94/G95, feed per minute or per revolution (L2817)

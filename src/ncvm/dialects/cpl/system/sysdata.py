@@ -47,7 +47,7 @@ def g_of_group(k, group: int, typ3=None) -> int:
     if group == 15:
         return int(k.work_offset[1:]) if k.work_offset else 53
     if group == 7:
-        return 94  # feed in mm/min: the kernel refuses G93 and G95
+        return 95 if k.per_rev else 94  # feed per minute or per revolution (L2817); the kernel refuses G93
     if group == 25:
         return 64  # continuous-path mode: the kernel takes G64 and refuses G65
     if group in (18, 19):

@@ -94,7 +94,7 @@ class Cl800Dialect(Dialect):
                 diags.append(e.diagnostic())
             else:
                 diags += stop_dec_diagnostics(path, obj)
-        return diags + axis_diagnostics(path, prog, machine.axis_names)
+        return diags + axis_diagnostics(path, prog, machine.axis_names, options(machine).radius_address)
 
     def build(self, path: str, text: str, machine) -> ObjectProgram:
         last = _last_text_line(text)

@@ -16,7 +16,7 @@ from ..reader import Word, read_block
 from . import ast
 
 
-def axis_diagnostics(path: str, prog, axes) -> list[Diagnostic]:
+def axis_diagnostics(path: str, prog, axes, radius: str = "B") -> list[Diagnostic]:
     if not isinstance(prog, ast.Program):
         return []
     lines = read_lines(path) or []
@@ -30,7 +30,7 @@ def axis_diagnostics(path: str, prog, axes) -> list[Diagnostic]:
         base = source.find(st.text, max(st.col - 1, 0))
         dwell = dwells(words)
         for w in words:
-            if (w.value is not None or w.rref is not None) and missing_axis(w.address, axes, dwell):
+            if (w.value is not None or w.rref is not None) and missing_axis(w.address, axes, dwell, radius):
                 column = base + w.col if base >= 0 else st.col
                 out.append(Diagnostic("NC011", missing_axis_message(w.address, axes), Span(path, st.line, column)))
     return out

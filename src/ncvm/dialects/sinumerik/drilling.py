@@ -1,0 +1,85 @@
+"""G80-G89 of the SINUMERIK 8xx (internal G group 9, CL 800 manual L7406): the drilling cycles L81-L89.
+
+G81 to G89 select the drilling cycle sub-program L81 to L89, found along the program path as any
+``L<n>`` call finds its sub-program; the cycle reads its data from R parameters that the program sets
+before (the transfer parameters, manual L483-486; the manual's deep-hole drilling cycle PROGRAM 81,
+L5404-5542, reads R22 start point, R24 degression, R25 first depth, R26 final depth, R27/R28 dwell times).
+The selection is modal until G80: the block that selects the cycle and every later block with an axis
+word first travels to its position (with the motion of group 0, G0 or G1) and then runs the cycle there,
+as ``L8x`` written after the block would. A block that selects a cycle without an axis word only selects
+it. The cycle's own blocks do not call it again. A selected cycle whose program is missing stops the run
+at the selecting block (RUN002).
+
+The selection is decode state (the program's blocks call the cycle as they are decoded, like any L
+call); the kernel hears G80-G89 too (:meth:`Drilling.executed_g`, a ``kernel.g_handlers`` entry), so
+that ACG reads the group's executed function.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from ...diagnostics import RuntimeFault
+from ...nc.axiswords import is_dwell
+
+if TYPE_CHECKING:
+    from .runtime import Channel
+
+#: the G functions of group 9
+GROUP_9 = tuple(range(80, 90))
+
+
+class Drilling:
+    """The channel's selected drilling cycle (None: G80) and its calls."""
+
+    def __init__(self, channel: Channel):
+        self.channel = channel
+        self.selected: int | None = None  # as decoding has reached
+        self.executed = 80  # the group's function as the kernel has executed it (ACG)
+        self.busy = False  # a cycle runs: its own blocks do not call it
+
+    @property
+    def armed(self) -> int | None:
+        """The cycle a block with an axis word calls now: none under G80 and none inside the cycle."""
+        return None if self.busy else self.selected
+
+    def select(self, g: int) -> None:
+        """A block with G80-G89 is decoded."""
+        if g == 80:
+            self.selected = None
+            return
+        if self.channel.loader(g) is None:
+            raise RuntimeFault("RUN002", f"G{g} calls the drilling cycle L{g}, which is not on the program path "
+                                         f"(looked for L{g}.spf and %SPF{g} files)")
+        self.selected = g
+
+    def call(self, line: int) -> None:
+        """Run the selected cycle at the position the block just reached."""
+        g = self.selected
+        self.busy = True
+        try:
+            self.channel.call(g, 1, line)
+        finally:
+            self.busy = False
+
+    def run_blocks(self, blocks: tuple, line: int) -> None:
+        """A run of constant blocks while a cycle is selected: the cycle after each block that travels."""
+        ch = self.channel
+        axes = ch.kernel.axis_of
+        for b in blocks:
+            ch.execute(b)
+            if ch.kernel.ended or ch.halted:
+                return
+            if self.armed is not None and not is_dwell(b.g) and any(a in axes for a in b.words):
+                self.call(b.src.line)
+                if ch.kernel.ended or ch.halted:
+                    return
+
+    def executed_g(self, kernel, g, words, src) -> bool:
+        """The kernel's handler of G80-G89: the block's axis words stay its target."""
+        self.executed = int(g)
+        return False
+
+    def handlers(self) -> dict:
+        """The ``kernel.g_handlers`` entries of group 9."""
+        return {g: self.executed_g for g in GROUP_9}

@@ -1,0 +1,86 @@
+"""The SINUMERIK circle radius address (machine data, ``[sin800] radius_address``, B or U) and the rounding
+it asks for between two straight contour blocks (issue 14 part 1; CL 800 manual §5.3.8.2, L4107-4282).
+
+The manual's contour (L4214-4218): start (X750, Y50), ``N5 X400 Y50 B100``, ``N10 X300 Y300``,
+``N15 X100 Y400 M17``. B100 rounds the corner at (400, 50) with radius 100: the lines turn by
+atan2(250, 100) - 180 deg = 68.2 deg to the right, so the rounding is a G2 arc tangent to both lines,
+100 tan(34.1 deg) = 67.703 mm before and after the corner, centre (X467.703, Y150). PREP REF counts it
+as an element of its own; INT SEC still finds the manual's X = 320, Y = 250 on the line after it.
+"""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+from sin800_helpers import R, machine, run_mpf
+
+from ncvm.api import check
+from ncvm.diagnostics import UsageError
+
+CONTOUR = "L20\nN5 X400 Y50 B100\nN10 X300 Y300\nN15 X100 Y400 M17\n"
+FIVE_PREP_REFS = ("%MPF30\nR50=20 R52=750 R51=50 R53=1\n@710 R100 R50\n@710 R110 R50\n@710 R120 R50\n"
+                  "@710 R130 R50\n@710 R140 R50\nM30\n")
+
+
+def _elements(r, count=5):
+    return [[R(r, base + i) for i in range(8)] for base in range(100, 100 + 10 * count, 10)]
+
+
+def _expected():
+    t = 100 * math.tan((math.pi - math.atan2(250, -100)) / 2)  # half the turn between (-1, 0) and (-100, 250)
+    u = (-100 / math.hypot(100, 250), 250 / math.hypot(100, 250))  # (h, v) of the second line
+    t2 = (400 + u[0] * t, 50 + u[1] * t)
+    return t, [[50.0, 750.0, 50.0, 400 + t, 0.0, 0.0, 1.0, 0.0],  # (V, H): Y then X
+               [50.0, 400 + t, t2[1], t2[0], 100.0, 0.0, 2.0, 0.0],  # G2, centre 100 above its start
+               [t2[1], t2[0], 300.0, 300.0, 0.0, 0.0, 1.0, 0.0],
+               [300.0, 300.0, 400.0, 100.0, 0.0, 0.0, 1.0, 1.0],  # the block with M17
+               [400.0, 100.0, 400.0, 100.0, 0.0, 0.0, 1.0, 2.0]]  # past the end: only M17
+
+
+def test_prep_ref_counts_the_b100_rounding_of_the_manuals_contour_as_an_element_l4216(tmp_path):
+    r = run_mpf(tmp_path, FIVE_PREP_REFS, files={"L20.spf": CONTOUR}, ok=True)
+    t, expected = _expected()
+    assert t == pytest.approx(67.703296, abs=1e-6)
+    assert _elements(r) == [pytest.approx(e, abs=1e-9) for e in expected]
+
+
+def test_the_radius_address_is_machine_data_u_as_in_many_programs(tmp_path):
+    """``radius_address = "U"``: U100 is the rounding, the same elements; B is then not the radius."""
+    r = run_mpf(tmp_path, FIVE_PREP_REFS, 'radius_address = "U"\n',
+                files={"L20.spf": CONTOUR.replace("B100", "U100")}, ok=True)
+    assert _elements(r) == [pytest.approx(e, abs=1e-9) for e in _expected()[1]]
+    r = run_mpf(tmp_path, FIVE_PREP_REFS, 'radius_address = "U"\n', files={"L20.spf": CONTOUR})
+    assert r["error"]["code"] == "CL800" and "radius_address" in r["error"]["message"], r["error"]
+
+
+def test_the_radius_address_must_be_b_or_u(tmp_path):
+    with pytest.raises(UsageError, match="radius_address"):
+        run_mpf(tmp_path, "%MPF1\nM30\n", 'radius_address = "Q"\n')
+
+
+def test_u_on_a_circle_is_its_radius(tmp_path):
+    """A circle given by its radius in the contour: G3 from (X0, Y0) to (X20, Y0) with U10, a half circle
+    about (X10, Y0): I = 10, J = 0."""
+    r = run_mpf(tmp_path, "%MPF1\nR50=21 R51=0 R52=0 R53=1\n@710 R100 R50\nM30\n", 'radius_address = "U"\n',
+                files={"L21.spf": "L21\nN5 G3 X20 Y0 U10 M17\n"}, ok=True)
+    assert [R(r, 100 + i) for i in range(8)] == pytest.approx([0.0, 0.0, 0.0, 20.0, 0.0, 10.0, 3.0, 1.0])
+
+
+def test_a_rounding_next_to_a_circle_is_refused_clearly(tmp_path):
+    r = run_mpf(tmp_path, "%MPF1\nR50=22 R51=0 R52=0 R53=1\n@710 R100 R50\nM30\n",
+                files={"L22.spf": "L22\nN5 X10 B2\nN10 G2 X20 Y10 I0 J10 M17\n"})
+    assert r["error"]["code"] == "CL800" and "not supported by ncvm" in r["error"]["message"], r["error"]
+
+
+def test_a_radius_on_a_straight_block_of_a_run_stops_with_nc009_naming_the_rounding(tmp_path):
+    """In motion (not through PREP REF) the rounding between straight blocks is refused, never dropped."""
+    r = run_mpf(tmp_path, "%MPF1\nG0 X0 Y0\nG1 X100 Y0 U10 F100\nX100 Y100\nM30\n", 'radius_address = "U"\n')
+    assert r["error"]["code"] == "NC009" and r["error"]["line"] == 3, r["error"]
+
+
+def test_check_takes_the_radius_address_from_the_machine(tmp_path):
+    (tmp_path / "machine.toml").write_text(machine() + 'radius_address = "U"\n')
+    (tmp_path / "c.spf").write_text(CONTOUR.replace("B100", "U100"))
+    diags = check(tmp_path / "c.spf", dialect="sin800", machine=tmp_path / "machine.toml")
+    assert not [d for d in diags if d.code == "NC011"]
