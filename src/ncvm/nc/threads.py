@@ -73,6 +73,11 @@ def _turning(k, g: int, src: Src) -> float:
     return rpm
 
 
+def _travels(k, words) -> bool:
+    """The block has an axis word: a block without one (M2, S ...) leaves the thread mode as it is."""
+    return any(n in words for n in k.axis_of)
+
+
 def _thread_move(k, g: int, words, src: Src, lead_of):
     """The common part of a thread block: target, checks, then ``lead_of(start, end)`` -> revolutions."""
     if k.comp is not None:
@@ -96,6 +101,8 @@ def _thread_move(k, g: int, words, src: Src, lead_of):
 
 def iso_g33(k, g: int, words, src: Src) -> None:
     """LinuxCNC's G33: K is the distance along the path per revolution, in every block; no F."""
+    if not _travels(k, words):
+        return
     if "F" in words:
         k.fault("NC009", "F word used with G33 (the thread's speed follows the spindle: K is its lead)", src)
     if "K" not in words:
@@ -123,6 +130,8 @@ class SinumerikThreads:
         return {33: self.move, 34: self.move, 35: self.move}
 
     def move(self, k, g: int, words, src: Src) -> None:
+        if not _travels(k, words):
+            return
         given = [(axis, w) for axis, w in LEAD_WORDS.items() if w in words]
         if len(given) > 1:
             k.fault("NC009", f"G{g}: one lead word (I, J or K), not {' and '.join(w for _a, w in given)}", src)
