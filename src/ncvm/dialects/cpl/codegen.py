@@ -645,6 +645,8 @@ class Gen:
         name, args, modal = s.call
         argc = ", ".join(self.arg(a) for a in args)
         self.emit("_st.steps += _n; _n = 0", line)
+        if modal:  # a new selection replaces the old one, whose repetitions must not run inside this call
+            self.emit("_modal[0] = None", line)
         self.emit(f"_call({name!r}, ({argc}{',' if args else ''}), False, {line})", line)
         self.emit("_lim = _st.limit - _st.steps", line)
         if modal:
