@@ -478,5 +478,5 @@ def _compensated_linear(kernel, motion: int, words, src: Src) -> None:
         kernel.linear(kernel, motion, words, src)
     else:
         if kernel.spindle_bound:
-            kernel.spindle_update(motion, src)
+            kernel.spindle_update(src)
         comp.move(motion, words, src)

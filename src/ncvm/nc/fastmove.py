@@ -19,7 +19,7 @@ def make_linear(axis_names: tuple[str, ...], dyn):
     idx = range(n)
     lines = ["def linear(k, motion, words, src):",
              "    if k.spindle_bound:",
-             "        k.spindle_update(motion, src)  # G96: the speed for the radius here; G95: the feed for it",
+             "        k.spindle_update(src)  # G96: the speed for the radius here; G95: the feed for it",
              "    get = words.get",
              "    sc = k.scale",
              "    ab = k.absolute",

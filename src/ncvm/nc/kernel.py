@@ -12,7 +12,8 @@ programmed + offsets. Canon calls carry machine positions.
 
 Dialect extension points: ``g_handlers`` maps extra G numbers to handlers
 (``handler(kernel, g, words, src) -> bool``, True when the block's axis words
-were parameters, not a target), run after the block's other G codes; and
+were parameters, not a target), run after the block's other G codes; ``motion_modes`` maps a dialect's
+own modal motion G numbers (threads) to their move functions; and
 :meth:`NcKernel.set_transform` puts a coordinate transformation between the
 programmed position and the offsets: machine = transform(programmed) + offsets.
 """
@@ -326,7 +327,7 @@ class NcKernel:
             self.canned.block(self, motion, cycle_g, words, src)
         else:
             if motion < 2 and "R" in words:  # rs274: "R word with no G code that uses it"; never dropped silently
-                self.fault("NC009", "a circle radius (R; SINUMERIK B) on a straight move (G0/G1): no function of the block uses "
+                self.fault("NC009", "a circle radius (R; SINUMERIK B or U) on a straight move (G0/G1): no function of the block uses "
                            "it (a corner rounding between straight blocks is not supported by ncvm)", src)
             self.motion = motion
             if motion < 2 and not machine_coords:
@@ -379,13 +380,12 @@ class NcKernel:
             self._css_update(None)
         return self.spindle_dir * self.spindle_speed()
 
-    def spindle_update(self, motion: int, src: Src) -> None:
-        """Before a move (``motion`` 0 rapid, else at feed): G96's speed for the radius here, then G95's path
-        feed for that speed."""
+    def spindle_update(self, src: Src) -> None:
+        """Before a move: G96's speed for the radius here, then G95's path feed for that speed."""
         if self.css:
             self._css_update(src)
         if self.per_rev:
-            threads.per_rev_feed(self, motion, src)
+            threads.per_rev_feed(self)
 
     def _css_update(self, src: Src | None, announce: bool = True) -> None:
         """G96: speed = cutting speed / (2 pi r) at the transverse axis position now. Blocks update it at
@@ -536,7 +536,7 @@ class NcKernel:
         """A straight move to the programmed position ``prog`` (mm, every axis), at rapid or at the modal feed:
         the moves a canned cycle makes."""
         if self.spindle_bound:
-            self.spindle_update(0 if rapid else 1, src)
+            self.spindle_update(src)
         start = self.machine_pos
         end = tuple(map(add, prog if self.transform is None else self.transform.forward(prog), self.offset_vec))
         if rapid:
@@ -550,7 +550,7 @@ class NcKernel:
 
     def _general_move(self, motion: int, words, machine_coords: bool, src: Src) -> None:
         if self.spindle_bound:
-            self.spindle_update(motion, src)
+            self.spindle_update(src)
         if motion > 3 and motion in self.motion_modes:
             self.motion_modes[motion](self, motion, words, src)
             return

@@ -29,7 +29,7 @@ from .canon import Src
 LEAD_WORDS = {"X": "I", "Y": "J", "Z": "K"}
 
 
-def per_rev_feed(k, motion: int, src: Src) -> None:
+def per_rev_feed(k) -> None:
     """G95: the path feed (mm/min) of the move about to start, from F (mm/rev) and the spindle speed; 0 while
     the spindle stands, so a move at feed stops with NC006 and :func:`no_feed_message`'s words."""
     k.feed = k.feed_per_rev * abs(k.actual_speed())
