@@ -84,3 +84,13 @@ def test_check_takes_the_radius_address_from_the_machine(tmp_path):
     (tmp_path / "c.spf").write_text(CONTOUR.replace("B100", "U100"))
     diags = check(tmp_path / "c.spf", dialect="sin800", machine=tmp_path / "machine.toml")
     assert not [d for d in diags if d.code == "NC011"]
+
+
+@pytest.mark.parametrize("address, refused", [("U", False), ("B", True)])
+def test_cl800_check_takes_the_radius_address_of_the_nc(tmp_path, address, refused):
+    """A CL 800 program's DIN blocks are checked with the NC's machine data ([sin800] radius_address)."""
+    (tmp_path / "machine.toml").write_text(machine() + f'radius_address = "{address}"\n')
+    (tmp_path / "c.cl8").write_text("PROGRAM 20;\nCHANNEL NC 1;\nID (0-CONTOUR);\nBEGIN\n(:X400 Y50 U100:); LF;\n"
+                                    "(:X300 Y300 M17:); LF;\nEND.\n")
+    diags = check(tmp_path / "c.cl8", dialect="cl800", machine=tmp_path / "machine.toml")
+    assert bool([d for d in diags if d.code == "NC011"]) == refused, diags

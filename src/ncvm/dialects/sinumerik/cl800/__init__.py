@@ -17,6 +17,7 @@ from ....machine.config import dialect_options
 from ....outpaths import refuse_overwrite, write_output
 from ... import get_dialect
 from ...base import Dialect
+from ..options import options as sin800_options
 from . import ast
 from .axiswords import axis_diagnostics
 from .checker import check_program
@@ -94,7 +95,8 @@ class Cl800Dialect(Dialect):
                 diags.append(e.diagnostic())
             else:
                 diags += stop_dec_diagnostics(path, obj)
-        return diags + axis_diagnostics(path, prog, machine.axis_names, options(machine).radius_address)
+        radius = sin800_options(machine).radius_address  # the NC's machine data, [sin800]
+        return diags + axis_diagnostics(path, prog, machine.axis_names, radius)
 
     def build(self, path: str, text: str, machine) -> ObjectProgram:
         last = _last_text_line(text)
