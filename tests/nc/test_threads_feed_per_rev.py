@@ -125,3 +125,19 @@ def test_cpl_g95_path_feed_in_mm_per_min_l2817(tmp_path):
     assert r["status"] == "ok", r["error"]
     assert [f for _e, f in _feed_moves(rows)] == pytest.approx([100.0])
     assert r["variables"]["A%"] == 95
+
+
+def test_din_canned_cycle_under_g95_drills_at_f_times_s(tmp_path):
+    """G81 under G95 F0.1 at S600: the feed down is 60 mm/min (10 mm in 10 s); without a new F after G95 the
+    cycle stops with NC006 instead of moving at feed 0."""
+    r, rows = _run(tmp_path, "G21 G90 G17\nS600 M3\nG0 X0 Y0 Z5\nG95 F0.1\nG81 X10 Y0 R2 Z-8\nG80\nM2\n", "din", "p.din")
+    assert r["status"] == "ok", r["error"]
+    assert [(e["Z"], f) for e, f in _feed_moves(rows)] == [(-8.0, pytest.approx(60.0))]
+    r, _rows = _run(tmp_path, "G21 G90 G17\nS600 M3 F100\nG0 X0 Y0 Z5\nG95\nG81 X10 Y0 R2 Z-8\nM2\n", "din", "p.din")
+    assert r["error"]["code"] == "NC006" and r["error"]["line"] == 5, r["error"]
+
+
+def test_sinumerik_thread_whose_lead_axis_does_not_move_is_refused(tmp_path):
+    """K is the lead along Z: a block moving X only cannot take it (I would be X's)."""
+    r, _rows = _run(tmp_path, "%MPF1\nS600 M3\nG33 X20 K2\nM30\n", "sin800", "p.mpf", "[sin800]\n")
+    assert r["error"]["code"] == "NC009" and "lead" in r["error"]["message"], r["error"]

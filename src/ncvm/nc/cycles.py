@@ -54,6 +54,8 @@ class CannedCycles:
         previous = k.motion
         if not explicit and not names:
             return  # nothing to drill: a block with F, S, M ... only
+        if k.spindle_bound:
+            k.spindle_update(src)  # G95: the feed for the spindle speed now
         if k.feed <= 0.0:
             k.fault("NC006", k.no_feed_message(motion), src)
         if cn not in k.axis_of or an not in k.axis_of or bn not in k.axis_of:

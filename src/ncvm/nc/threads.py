@@ -56,7 +56,7 @@ def g95(k, g, words, src: Src) -> bool:
     """G95: F is a feed per revolution. As rs274, the feed must be programmed anew (F0 until then)."""
     if not k.per_rev:
         k.per_rev = k.spindle_bound = True
-        k.feed_per_rev = 0.0
+        k.feed_per_rev = k.feed = 0.0
     return False
 
 
@@ -92,6 +92,9 @@ def _thread_move(k, g: int, words, src: Src, lead_of):
     end = tuple(p + o for p, o in zip(prog, k.offset_vec))
     length = math.dist(start, end)
     revolutions = lead_of(start, end, length)
+    if length > 0.0 and revolutions <= 0.0:
+        k.fault("NC009", f"G{g}: the block does not move along the axis its lead belongs to (a thread along X "
+                "takes its lead as I, along Y as J, along Z as K)", src)
     minutes = revolutions / rpm
     feed = length / minutes if minutes > 0.0 else 0.0  # the mean path feed (mm/min) of the thread
     k.straight_out(1, start, end, feed, src, k.canon)
