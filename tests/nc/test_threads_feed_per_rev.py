@@ -141,3 +141,40 @@ def test_sinumerik_thread_whose_lead_axis_does_not_move_is_refused(tmp_path):
     """K is the lead along Z: a block moving X only cannot take it (I would be X's)."""
     r, _rows = _run(tmp_path, "%MPF1\nS600 M3\nG33 X20 K2\nM30\n", "sin800", "p.mpf", "[sin800]\n")
     assert r["error"]["code"] == "NC009" and "lead" in r["error"]["message"], r["error"]
+
+
+def _random_thread_program(rnd) -> str:
+    out = ["G21 G17 G90 G94 F500", f"S{rnd.choice((300, 800, 1200))} M3", "G0 X0 Y0 Z5"]
+    for _ in range(rnd.randint(4, 10)):
+        pick = rnd.random()
+        axes = " ".join(f"{a}{rnd.uniform(-20, 20):.3f}" for a in rnd.sample("XYZ", rnd.randint(1, 3)))
+        if pick < 0.3:
+            out.append(f"G33 {axes} K{rnd.choice((0.5, 1, 1.25, 2.5))}")
+        elif pick < 0.5:
+            out.append(f"G95 G1 {axes} F{rnd.choice((0.05, 0.1, 0.2))}")
+        elif pick < 0.65:
+            out.append(f"G94 G1 {axes} F{rnd.randint(100, 900)}")
+        elif pick < 0.8:
+            out.append(f"G{rnd.choice((90, 91))} G0 {axes}")
+        else:
+            out.append(f"G1 {axes}")
+    return "\n".join(out + ["G90 M5", "M2"]) + "\n"
+
+
+@pytest.mark.skipif(shutil.which("rs274") is None, reason="LinuxCNC rs274 is not installed")
+def test_generated_thread_and_per_rev_programs_end_where_rs274_ends(tmp_path):
+    """30 generated programs (G33 K, G95/G94 switches with F, G90/G91): every end point as rs274's."""
+    rnd = __import__("random").Random(14)
+    compared = 0
+    for i in range(30):
+        text = _random_thread_program(rnd)
+        (tmp_path / f"g{i}.ngc").write_text(text)
+        proc = subprocess.run(["rs274", "-g", str(tmp_path / f"g{i}.ngc")], capture_output=True, text=True, timeout=60)
+        theirs = [tuple(round(float(v), 4) for v in line.split("(")[1].split(",")[:3])
+                  for line in proc.stdout.splitlines() if "STRAIGHT_FEED(" in line or "STRAIGHT_TRAVERSE(" in line]
+        r, rows = _run(tmp_path, text, "din", f"g{i}.din")
+        ours = [tuple(round(row["end"][a], 4) for a in "XYZ") for row in rows if row["call"] in ("feed", "rapid")]
+        assert ours == theirs, text
+        assert r["status"] == "ok", (text, r["error"])
+        compared += len(ours)
+    assert compared > 150
