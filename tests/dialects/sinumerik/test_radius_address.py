@@ -73,10 +73,72 @@ def test_a_rounding_next_to_a_circle_is_refused_clearly(tmp_path):
     assert r["error"]["code"] == "CL800" and "not supported by ncvm" in r["error"]["message"], r["error"]
 
 
-def test_a_radius_on_a_straight_block_of_a_run_stops_with_nc009_naming_the_rounding(tmp_path):
-    """In motion (not through PREP REF) the rounding between straight blocks is refused, never dropped."""
-    r = run_mpf(tmp_path, "%MPF1\nG0 X0 Y0\nG1 X100 Y0 U10 F100\nX100 Y100\nM30\n", 'radius_address = "U"\n')
-    assert r["error"]["code"] == "NC009" and r["error"]["line"] == 3, r["error"]
+def _moves(tmp_path, text, extra="", files=None):
+    import json
+
+    from ncvm.api import run
+    from ncvm.runtime.session import RunOptions
+    (tmp_path / "machine.toml").write_text(machine() + extra)
+    for name, body in (files or {}).items():
+        (tmp_path / name).write_text(body)
+    (tmp_path / "p.mpf").write_text(text)
+    result, _ = run(tmp_path / "p.mpf", dialect="sin800", machine=tmp_path / "machine.toml",
+                    options=RunOptions(state_dir=tmp_path / ".s", trace=tmp_path / "t.jsonl"))
+    rows = [json.loads(x) for x in (tmp_path / "t.jsonl").read_text().splitlines()]
+    moves = [(row["call"], round(row["end"]["X"], 6), round(row["end"]["Y"], 6),
+              tuple(round(c, 6) for c in row["center"]) if row["call"] == "arc" else None,
+              row.get("cw")) for row in rows if row["call"] in ("feed", "rapid", "arc")]
+    return result, moves
+
+
+def test_the_manuals_contour_run_as_motion_rounds_the_b100_corner_l4216(tmp_path):
+    """L20 run from (X750, Y50): the line to X467.703, the G2 rounding about (X467.703, Y150) to
+    (X374.856, Y112.861), the line to (X300, Y300), the line to (X100, Y400): PREP REF's elements, cut."""
+    r, moves = _moves(tmp_path, "%MPF1\nG0 X750 Y50\nG1 F500\nL20\nM30\n",
+                      files={"L20.spf": CONTOUR.replace("L20\n", "%SPF20\n")})  # the title line as a header
+    assert r["status"] == "ok", r["error"]
+    t, el = _expected()
+    assert moves == [("rapid", 750.0, 50.0, None, None), ("feed", round(400 + t, 6), 50.0, None, None),
+                     ("arc", round(el[1][3], 6), round(el[1][2], 6), (round(400 + t, 6), 150.0), True),
+                     ("feed", 300.0, 300.0, None, None), ("feed", 100.0, 400.0, None, None)]
+
+
+def test_chained_roundings_of_an_incremental_square(tmp_path):
+    """A 20 mm square in G91 with U2 at three corners: each side 20 - 2 x 2 at the rounded ends, three
+    quarter circles; the path 4 x 20 - 6 x 2 + 3 x pi; back at the start."""
+    r, moves = _moves(tmp_path, "%MPF1\nG0 X0 Y0\nG91 G1 F300 X20 U2\nY20 U2\nX-20 U2\nY-20\nM30\n",
+                      'radius_address = "U"\n')
+    assert r["status"] == "ok", r["error"]
+    assert [m[0] for m in moves] == ["rapid", "feed", "arc", "feed", "arc", "feed", "arc", "feed"]
+    assert moves[-1][1:3] == (0.0, 0.0) and moves[2][3] == (18.0, 2.0) and moves[2][4] is False
+    assert r["motion"]["feed_length"] == pytest.approx(80 - 12 + 3 * math.pi)
+
+
+def test_decode_ahead_rounds_the_same_corner(tmp_path):
+    text = "%MPF1\nG0 X0 Y0\nG1 X100 Y0 B10 F100\nX100 Y100\nM30\n"
+    (tmp_path / "a").mkdir()
+    (tmp_path / "b").mkdir()
+    assert _moves(tmp_path / "a", text)[1] == _moves(tmp_path / "b", text, "decode_ahead = 2\n")[1]
+
+
+@pytest.mark.parametrize("text, why", [
+    ("G1 X100 Y0 B10 F100\nG0 X100 Y100\nM30\n", "not a straight move at feed"),
+    ("G1 X100 Y0 B10 F100\nM30\n", "G or M functions"),
+    ("G1 X100 Y0 B10 F100\n", "program ends"),
+    ("G1 X100 Y0 B10 F100\nX100 Y100 Z5\nM30\n", "leave the plane"),
+    ("G1 X100 Y0 B10 F100\nG2 X110 Y10 I0 J10\nM30\n", "not a straight move at feed"),
+    ("G1 X10 Y0 B20 F100\nX10 Y100\nM30\n", "the lines are"),
+])
+def test_a_rounding_the_control_could_not_make_here_stops_with_nc009(tmp_path, text, why):
+    r = run_mpf(tmp_path, "%MPF1\nG0 X0 Y0\n" + text)
+    assert r["error"]["code"] in ("NC009", "CL800") and why in r["error"]["message"], r["error"]
+    assert r["error"]["line"] == 3
+
+
+def test_g0_with_the_radius_stays_refused_by_the_kernel(tmp_path):
+    """A rapid move has no rounding: the kernel's NC009 (a circle radius on a straight move), as for din."""
+    r = run_mpf(tmp_path, "%MPF1\nG0 X10 Y0 B5\nX10 Y10\nM30\n")
+    assert r["error"]["code"] == "NC009" and r["error"]["line"] == 2, r["error"]
 
 
 def test_check_takes_the_radius_address_from_the_machine(tmp_path):

@@ -205,6 +205,8 @@ class UnitCodegen:
                 return None  # the angle address needs the start point (rotation.py)
             if missing_axis(it.address, self.axes, dwells(blk.items), self.radius):
                 return None  # refused where it stands (NC011)
+            if it.address == self.radius and self.radius not in self.axes:
+                return None  # the circle radius: the block passes the corner rounding (rounding.py)
             if it.address == "G":
                 if it.value in (16, 58, 59) or it.value in _CYCLE_G:
                     return None
@@ -759,6 +761,8 @@ class _Record:
                 out.emit(f"if _mo < 2: _lin(_K, _mo, {{{d}}}, {srcname})", line)
                 out.emit(f"else: _ex(_Block((), (), {{{d}}}, {self.blk.n!r}, None, {srcname}))", line)
         elif g or m or words or self.msg is not None:
+            if any(k == "'R'" for k, _v, _c in words):  # a circle radius: a G1 block rounds its corner
+                out.emit("_rt.use_rounding(); _ex = _rt.execute; _lin = _rt.linear", line)
             # a machine-specific M function may hand PLC data to R parameters ([sin800] m_functions)
             plc_m = any(x not in _STANDARD_M for x in m)
             if plc_m:

@@ -49,6 +49,7 @@ from .positions import Positions
 from .probe import Probe
 from .rel_inta import RelInta
 from .rotation import angle_address, rotate_for, rotation_active, shape_block
+from .rounding import CornerRounding
 from .spindle import GEAR_M, Spindle
 
 DEG = math.pi / 180.0
@@ -176,6 +177,7 @@ class Channel:
         self.angle_used = False  # a block carried the angle address (PANG, @447)
         #: (first plane axis, second plane axis, degrees) of the rotation set as the kernel's transform, or None
         self.rotation_key: tuple | None = None
+        self.rounding = CornerRounding(self)  # a radius on a G1 block rounds the corner to the next block
         self.route()
         refuse(session.machine.scenario, SINUMERIK_EVENTS, "SINUMERIK control")
         self.scenario = EventQueue(session.machine.scenario)  # the scenario events still to come
@@ -226,6 +228,9 @@ class Channel:
             self.rotation_key = None
         self.execute_now = self.execute_shaped if shaped else k.execute
         self.linear = self.linear_shaped if shaped else k.linear
+        if self.rounding.used:  # the corner rounding sees every block first
+            self.rounding.inner, self.rounding.inner_linear = self.execute_now, self.linear
+            self.execute_now, self.linear = self.rounding.execute, self.rounding.linear
         self.execute = self.decode_into_buffer if self.decode_ahead > 0 else self.execute_now
         self.buffer.execute = self.execute_now
 
@@ -250,6 +255,12 @@ class Channel:
             self.angle_used = True
             self.route()
 
+    def use_rounding(self) -> None:
+        """From the first block with the circle radius on, blocks pass the corner rounding (rounding.py)."""
+        if not self.rounding.used:
+            self.rounding.used = True
+            self.route()
+
     def angle_key(self) -> str:
         return angle_address(self)
 
@@ -269,6 +280,7 @@ class Channel:
         """@714 STOP DEC: decoding waits until the buffer is empty; R parameters loaded by the PLC or by
         MEAS M meanwhile become visible to the blocks that follow."""
         self.run_buffer()
+        self.rounding.finish()
         R = self.R
         for n, v in self.pending_r.items():
             R[n] = v
