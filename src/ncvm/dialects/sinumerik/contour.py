@@ -96,7 +96,7 @@ def _rounded(elements: list[list[float]], rounding: list, radius: str) -> list[l
         if el[6] not in (0.0, 1.0) or nxt is None or nxt[6] not in (0.0, 1.0):
             raise Cl800Error(f"{radius}{r:g}: a rounding is read between two straight contour blocks only; "
                              "next to a circle or at the end of the contour it is not supported by ncvm")
-        arc = _corner_arc((el[0], el[1]), (el[2], el[3]), (nxt[2], nxt[3]), r, radius)
+        arc = corner_arc((el[0], el[1]), (el[2], el[3]), (nxt[2], nxt[3]), r, radius)
         if arc is None:
             out.append(el)  # the lines go straight on: nothing to round
             continue
@@ -105,7 +105,7 @@ def _rounded(elements: list[list[float]], rounding: list, radius: str) -> list[l
     return out
 
 
-def _corner_arc(a, c, b, r: float, radius: str) -> list[float] | None:
+def corner_arc(a, c, b, r: float, radius: str) -> list[float] | None:
     """The rounding of radius ``r`` at corner ``c`` between the lines a->c and c->b, points (v, h): the element
     [t1v, t1h, t2v, t2h, iv, ih, G2/G3, 0], or None when the lines go straight on."""
     if r <= 0.0:

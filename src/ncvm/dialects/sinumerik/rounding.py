@@ -20,7 +20,7 @@ from typing import TYPE_CHECKING
 from ...diagnostics import RuntimeFault, Span
 from ...nc.block import Block
 from ...nc.kernel import PLANES
-from .contour import _corner_arc
+from .contour import corner_arc
 from .errors import Cl800Error
 
 if TYPE_CHECKING:
@@ -100,7 +100,7 @@ class CornerRounding:
                for i in range(k.n_axes)):
             self._refuse(held, "a rounding between moves that leave the plane is not supported by ncvm")
         try:
-            arc = _corner_arc((start[b], start[a]), (corner[b], corner[a]), (end[b], end[a]), held.words["R"] * k.scale,
+            arc = corner_arc((start[b], start[a]), (corner[b], corner[a]), (end[b], end[a]), held.words["R"] * k.scale,
                               self.channel.radius_address)
         except Cl800Error as e:
             self._refuse(held, str(e))
