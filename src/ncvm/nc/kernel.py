@@ -349,7 +349,7 @@ class NcKernel:
 
     def columns_ok(self) -> bool:
         """Whether plain motion blocks may run column-wise (:mod:`ncvm.nc.plainrun`) now: not while a coordinate
-        transformation maps every target, nor under G96, where each block sets the spindle speed anew, nor
+        transformation maps every target, nor under G96 or G95, where each move re-reads the spindle, nor
         when a dialect handles a motion G code itself."""
         return self.transform is None and not self.spindle_bound and self.comp is None and self.motion < 4 and not (
             self.g_handlers and _MOTION_G & self.g_handlers.keys())
