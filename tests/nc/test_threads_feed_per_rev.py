@@ -11,11 +11,10 @@ from __future__ import annotations
 
 import json
 import math
-import shutil
-import subprocess
 from pathlib import Path
 
 import pytest
+from rs274peer import needs_rs274, rs274
 
 from ncvm.api import run
 from ncvm.runtime.session import RunOptions
@@ -78,18 +77,24 @@ def test_din_g33_errors_as_rs274(tmp_path, text, code, words):
     assert r["error"]["code"] == code and words in r["error"]["message"], r["error"]
 
 
-@pytest.mark.skipif(shutil.which("rs274") is None, reason="LinuxCNC rs274 is not installed")
+def _rs274_ends(tmp_path: Path, name: str, text: str) -> list[tuple]:
+    """The end point of each straight move ``rs274 -g`` reports (it stops with 0 on a program error)."""
+    (tmp_path / f"{name}.ngc").write_text(text)
+    proc = rs274(tmp_path / f"{name}.ngc", tmp_path / f"{name}.canon")
+    assert proc.returncode == 0, proc.stderr
+    out = (tmp_path / f"{name}.canon").read_text()
+    return [tuple(round(float(v), 4) for v in line.split("(")[1].split(",")[:3])
+            for line in out.splitlines() if "STRAIGHT_FEED(" in line or "STRAIGHT_TRAVERSE(" in line]
+
+
+@needs_rs274
 def test_din_thread_and_per_rev_end_points_match_rs274(tmp_path):
     text = ("G21 G90 G17\nS800 M3\nG0 X1 Y2 Z5\nG33 Z-12.5 K1.25\nG33 X4 Z-20 K2\nG0 X10\nG95 F0.2\nG1 X15 Y3\n"
             "G91 G1 X-2 Z1\nG90 G94 F300\nG1 X0 Y0\nG91 G33 Z-3 K0.5\nM2\n")
     r, rows = _run(tmp_path, text, "din", "p.din")
     assert r["status"] == "ok", r["error"]
     ours = [tuple(round(row["end"][a], 4) for a in "XYZ") for row in rows if row["call"] in ("feed", "rapid")]
-    (tmp_path / "p.ngc").write_text(text)
-    out = subprocess.run(["rs274", "-g", str(tmp_path / "p.ngc")], capture_output=True, text=True, timeout=60).stdout
-    theirs = [tuple(round(float(v), 4) for v in line.split("(")[1].split(",")[:3])
-              for line in out.splitlines() if "STRAIGHT_FEED(" in line or "STRAIGHT_TRAVERSE(" in line]
-    assert ours == theirs and len(ours) == 8
+    assert ours == _rs274_ends(tmp_path, "p", text) and len(ours) == 8
 
 
 def test_sinumerik_g33_lead_k_and_g34_increasing_lead_f_l7397(tmp_path):
@@ -161,17 +166,14 @@ def _random_thread_program(rnd) -> str:
     return "\n".join(out + ["G90 M5", "M2"]) + "\n"
 
 
-@pytest.mark.skipif(shutil.which("rs274") is None, reason="LinuxCNC rs274 is not installed")
+@needs_rs274
 def test_generated_thread_and_per_rev_programs_end_where_rs274_ends(tmp_path):
     """30 generated programs (G33 K, G95/G94 switches with F, G90/G91): every end point as rs274's."""
     rnd = __import__("random").Random(14)
     compared = 0
     for i in range(30):
         text = _random_thread_program(rnd)
-        (tmp_path / f"g{i}.ngc").write_text(text)
-        proc = subprocess.run(["rs274", "-g", str(tmp_path / f"g{i}.ngc")], capture_output=True, text=True, timeout=60)
-        theirs = [tuple(round(float(v), 4) for v in line.split("(")[1].split(",")[:3])
-                  for line in proc.stdout.splitlines() if "STRAIGHT_FEED(" in line or "STRAIGHT_TRAVERSE(" in line]
+        theirs = _rs274_ends(tmp_path, f"g{i}", text)
         r, rows = _run(tmp_path, text, "din", f"g{i}.din")
         ours = [tuple(round(row["end"][a], 4) for a in "XYZ") for row in rows if row["call"] in ("feed", "rapid")]
         assert ours == theirs, text
