@@ -2,8 +2,9 @@
 
 Straight moves are most of what any program does, so the kernel compiles this
 function once for its machine's axes instead of looping over axis lists:
-target from the block's words, machine end point, and the move time of
-:func:`ncvm.nc.dynamics.move_time` (same formula, unrolled).
+target from the block's words, machine end point, and the move's path speed and
+acceleration of :func:`ncvm.nc.dynamics.path_limits` (same formula, unrolled), handed to the
+path planner (:mod:`ncvm.nc.planner`) as one row.
 """
 
 from __future__ import annotations
@@ -48,7 +49,6 @@ def make_linear(axis_names: tuple[str, ...], dyn):
               "        if feed <= 0.0:",
               "            k.fault('NC006', k.no_feed_message(1), src)",
               "        v = feed / 60.0",
-              "    t = 0.0",
               "    if length > 0.0:",
               "        a = _INF",
               "        inv = 1.0 / length"]
@@ -62,16 +62,13 @@ def make_linear(axis_names: tuple[str, ...], dyn):
                   "                v = vmax / share",
                   f"            if {acc!r} < a * share:",
                   f"                a = {acc!r} / share"]
-    lines += ["        if v <= 0.0:",
-              "            t = _INF",
-              "        elif a <= 0.0 or a == _INF:",
-              "            t = length / v",
-              "        elif length * a >= v * v:",
-              "            t = length / v + v / a",
-              "        else:",
-              "            t = 2.0 * _sqrt(length / a)",
-              "        if t > 0.0:",
-              "            k.machine.clock.now += t",
+    lines += [*(f"        u{i} = d{i} * inv" for i in idx),
+              "        pl = k.planner",
+              "        rows = pl.rows",
+              f"        rows.append((length, v, a, 3 if motion == 0 else k.exact, "
+              f"{', '.join(f'u{i}' for i in idx)}, {', '.join(f'u{i}' for i in idx)}))",
+              "        if len(rows) > pl.limit:",
+              "            pl.commit()",
               "    if motion == 0:",
               "        k.canon.rapid(start, end, src)",
               "    else:",
