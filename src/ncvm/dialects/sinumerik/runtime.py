@@ -30,6 +30,7 @@ from ...nc.block import Block
 from ...nc.canon import CanonSink, Src
 from ...nc.kernel import INCH, refused_g
 from ...nc.spindle import SINUMERIK_GEARS, Gearbox
+from ...nc.planner import STOP_END
 from ...runtime.buffer import BlockBuffer
 from ...runtime.locate import generated_frames
 from .atcodes import AT_CODES
@@ -107,6 +108,9 @@ _RUN = {code: attrgetter(row.run) for code, row in AT_CODES.items() if row.run}
 
 #: G numbers outside the 810-880 G groups (CL 800 manual L7392-7410) whose ISO meaning the kernel would
 #: otherwise use: the units are G70/G71
+#: the path control's G codes (kernel.ISO_PATH_CODES): G60 exact stop (the power-on state), G64 continuous
+#: path, G09 exact stop at the end of its block (docs/decisions.md)
+SINUMERIK_PATH_CODES = {9: "block", 60: "exact", 64: "continuous"}
 SINUMERIK_REFUSED = {20: refused_g("not in the SINUMERIK G groups; units are G70/G71"),
                      21: refused_g("not in the SINUMERIK G groups; units are G70/G71")}
 
@@ -164,6 +168,8 @@ class Channel:
         self.offsets = Offsets(self)
         self.kernel.cutter_radius = self.offsets.cutter_radius  # G41/G42: the radius of the TO area's offset D
         self.kernel.g_handlers.update(SINUMERIK_REFUSED)
+        self.kernel.path_codes = SINUMERIK_PATH_CODES
+        self.kernel.exact = STOP_END  # G60 until the program selects G64
         self.cycles = Cycles(self)
         self.rel_inta = RelInta(self)
         self.panel = Panel(self)
@@ -263,6 +269,7 @@ class Channel:
         """@714 STOP DEC: decoding waits until the buffer is empty; R parameters loaded by the PLC or by
         MEAS M meanwhile become visible to the blocks that follow."""
         self.run_buffer()
+        self.kernel.planner.stop()  # decoding waits for the axes: they stop
         R = self.R
         for n, v in self.pending_r.items():
             R[n] = v
