@@ -33,10 +33,10 @@ class JsonlTrace(CanonSink):
         self._held.append(rec)
         self._release()
 
-    def _move(self, call: str, src, start, end, **data) -> None:
+    def _move(self, call: str, src, p0, p1, **data) -> None:
         if not self._planned:
             self._write(call, src, **data)
-        elif start == end and call != "arc":
+        elif p0 == p1 and call != "arc":
             self._write(call, src, **data, time=0.0, v_entry=0.0, v_exit=0.0)  # no time: not planned
         elif self._early:
             self._write(call, src, **data, **self._early.popleft())
