@@ -110,9 +110,9 @@ class RunResult:
             "position": self.position,
             "motion": self.motion.to_json(),
             "cycle_time_s": self.cycle_time_s,
-            "cycle_time_model": self.cycle_time_model,
             "steps": self.steps,
             "limit_violations": self.limit_violations,
+            "cycle_time_model": self.cycle_time_model,
         }
         out.update({k: _jsonable(v) for k, v in self.extra.items()})
         if self.error:

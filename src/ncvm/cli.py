@@ -274,7 +274,8 @@ def _summary(result: dict) -> str:
         else f"stopped with error {result['error']['code']}"
     return (f"ncvm: {status}: {result['steps']:,} steps, {m['rapid_moves']} rapid / {m['feed_moves']} feed / "
             f"{m['arc_moves']} arc moves, path {m['rapid_length'] + m['feed_length']:.3f} mm "
-            f"(feed {m['feed_length']:.3f}), cycle time {_hms(result['cycle_time_s'])} ({result['cycle_time_model']})"
+            f"(feed {m['feed_length']:.3f}), cycle time {_hms(result['cycle_time_s'])}"
+            + (f" ({result['cycle_time_model']})" if "cycle_time_model" in result else "")
             + (f", bounds {bounds}" if bounds else ""))
 
 
