@@ -29,8 +29,8 @@ from ...machine.scenario import (
 from ...nc.block import Block
 from ...nc.canon import CanonSink, Src
 from ...nc.kernel import INCH, refused_g
-from ...nc.spindle import SINUMERIK_GEARS, Gearbox
 from ...nc.planner import STOP_END
+from ...nc.spindle import SINUMERIK_GEARS, Gearbox
 from ...runtime.buffer import BlockBuffer
 from ...runtime.locate import generated_frames
 from .atcodes import AT_CODES
