@@ -13,6 +13,7 @@ import numpy as np
 import pytest
 
 from ncvm.machine.config import machine_from_dict
+from ncvm.nc.dynamics import AxisDynamics
 from ncvm.nc.planner import Planner, junction_speeds2, move_times
 
 AXES = [{"name": n, "min": -2000.0, "max": 2000.0} for n in "XYZ"]
@@ -205,10 +206,10 @@ def test_passes_match_the_loops(window):
         def timing(self, *args):
             self.args = args
 
-    planner = Planner(Clock(), Canon(), (A, A, A), window=window, tolerance=0.05)
-    w = planner._speeds(length, v, a, flags, u, u)
+    planner = Planner(Clock(), Canon(), AxisDynamics(machine().axes), window=window, tolerance=0.05)
+    w = planner._speeds(np.vstack((length, v, a, flags, u.T, u.T)))
     j = np.zeros(p)
-    j[1:] = junction_speeds2(u[:-1], u[1:], v[:-1], v[1:], flags[:-1], flags[1:], np.full(3, A), 0.05)
+    j[1:] = junction_speeds2(u[:-1].T, u[1:].T, v[:-1], v[1:], np.zeros(p - 1, bool), np.full(3, A), 0.05)
     assert w == pytest.approx(_reference(length, v, a, j, window), rel=1e-9, abs=1e-9)
     times = move_times(length, v, a, w[:-1], w[1:])
     assert (times > 0).all() and (np.sqrt(w[1:]) <= np.maximum(v, 0) + 1e-9).all()

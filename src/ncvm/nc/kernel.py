@@ -65,14 +65,14 @@ class NcKernel:
         self.dyn = AxisDynamics(machine.axes)
         motion = machine.motion
         #: the path planner: moves wait in it untimed until their look-ahead window is complete (nc.planner)
-        self.planner = Planner(machine.clock, canon, self.dyn.accel, motion.model, motion.lookahead,
+        self.planner = Planner(machine.clock, canon, self.dyn, motion.model, motion.lookahead,
                                motion.corner_tolerance)
         #: the G codes of the path control (see ISO_PATH_CODES); a front end sets its control's
         self.path_codes = ISO_PATH_CODES
         #: the row flags of a move at feed: STOP_END under modal exact stop, 0 in continuous-path mode
         self.exact = 0
         self.tool_change_time = float(motion.tool_change_time)
-        self._fast_linear = make_linear(names, self.dyn)
+        self._fast_linear = make_linear(names)
         #: the straight move (G0/G1 without G53): ``linear(kernel, motion, words, src)``, a plain function of
         #: the kernel (generated code calls it without a bound method). The generated fast path, or the
         #: general one while a transform is set (see set_transform); a front end calls it, never replaces it
