@@ -213,3 +213,35 @@ def test_passes_match_the_loops(window):
     assert w == pytest.approx(_reference(length, v, a, j, window), rel=1e-9, abs=1e-9)
     times = move_times(length, v, a, w[:-1], w[1:])
     assert (times > 0).all() and (np.sqrt(w[1:]) <= np.maximum(v, 0) + 1e-9).all()
+
+
+# -- SINUMERIK: G60 exact stop is the power-on state, G64 blends, STOP DEC stops -------------------------
+def test_sinumerik_exact_stop_by_default_and_g64_continuous_path(tmp_path):
+    from tests.dialects.sinumerik.sin800_helpers import run_mpf
+
+    one = 10.0 / 50.0 + 50.0 / A  # 10 mm at 50 mm/s from rest to rest
+    r = run_mpf(tmp_path, "%MPF1\nN10 G1 G90 X10 F3000\nN20 X20\nM30\n", ok=True)
+    assert r["cycle_time_s"] == pytest.approx(2 * one)
+    r = run_mpf(tmp_path, "%MPF1\nN10 G64 G1 G90 X10 F3000\nN20 X20\nM30\n", ok=True)
+    assert r["cycle_time_s"] == pytest.approx(20.0 / 50.0 + 50.0 / A)
+    r = run_mpf(tmp_path, "%MPF1\nN10 G64 G1 G90 X10 F3000\nN15 G09 X20\nN20 X30\nN25 X40\nM30\n", ok=True)
+    assert r["cycle_time_s"] == pytest.approx(2 * (20.0 / 50.0 + 50.0 / A))
+    r = run_mpf(tmp_path, "%MPF1\nN10 G64 G1 G90 X10 F3000\n@714\nN20 X20\nM30\n", ok=True)
+    assert r["cycle_time_s"] == pytest.approx(2 * one)
+
+
+def test_column_path_and_block_path_plan_alike(run_text, tmp_path):
+    # the same contour as a DIN program (plain rows, column-wise), as CPL blocks (its block buffer runs them
+    # column-wise too) and as SINUMERIK blocks (one by one: the hot path and arc_out)
+    from tests.dialects.sinumerik.sin800_helpers import run_mpf
+
+    moves = ["G1 X10 Y0", "G1 X10 Y10", "G3 X0 Y20 I-10 J0", "G1 X-5 Y20", "G2 X-15 Y20 I-5 J0", "G1 X-15 Y0"]
+    din = run_text("G90 G64 F2400\n" + "\n".join(moves) + "\nM2\n", machine=machine())
+    cpl = run_text("N1 G90 F2400\n" + "\n".join(f"N{i + 2} {m}" for i, m in enumerate(moves)) + "\nM30\n",
+                   name="c.cpl", machine=machine())
+    sin = run_mpf(tmp_path, "%MPF1\nN1 G64 G90 F2400\n" + "\n".join(f"N{i + 2} {m}" for i, m in enumerate(moves))
+                  + "\nM30\n", ok=True)
+    assert din["cycle_time_s"] == pytest.approx(cpl["cycle_time_s"], rel=1e-12)
+    assert din["cycle_time_s"] == pytest.approx(sin["cycle_time_s"], rel=1e-12)
+    rest = run_text("G90 G64 F2400\n" + "\n".join(moves) + "\nM2\n", machine=machine(), time_model="rest-to-rest")
+    assert din["cycle_time_s"] < rest["cycle_time_s"]
