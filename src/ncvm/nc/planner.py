@@ -34,6 +34,7 @@ columns (:mod:`ncvm.nc.plainrun`).
 from __future__ import annotations
 
 import math
+from struct import pack as _pack
 
 import numpy as np
 
@@ -121,7 +122,7 @@ class Planner:
         if not rows:
             return
         n = self.n
-        r = np.fromiter(rows, float, len(rows)).reshape(-1, self.width).T
+        r = np.frombuffer(_pack(f"{len(rows)}d", *rows)).reshape(-1, self.width).T
         rows.clear()
         ends = r[3] < 0.0  # an arc's end tangent, in the row after its own
         u_out = None
