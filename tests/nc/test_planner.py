@@ -119,7 +119,7 @@ def test_iso_modal_exact_stop(run_text, stop):
 def test_g09_stops_at_the_end_of_its_block_only(run_text):
     text = "G90 G64 F3000\nG1 X1\nG09 G1 X2\nG1 X3\nG1 X4\nM2\n"
     r = run_text(text, machine=machine())
-    # two pairs of blended 1 mm moves: 2 mm at 44.72 mm/s peak... each pair is a 2 mm trapezoid
+    # G09 ends the second block at rest: each pair of blended 1 mm moves runs as one 2 mm triangle
     assert r["cycle_time_s"] == pytest.approx(2 * 2 * math.sqrt(2.0 / A))
 
 
@@ -216,31 +216,33 @@ def test_passes_match_the_loops(window):
 
 
 # -- SINUMERIK: G60 exact stop is the power-on state, G64 blends, STOP DEC stops -------------------------
-def test_sinumerik_exact_stop_by_default_and_g64_continuous_path(tmp_path):
-    from tests.dialects.sinumerik.sin800_helpers import run_mpf
+def run_mpf(run_text, text: str) -> dict:
+    r = run_text(text, name="p.mpf", machine=machine())
+    assert r["status"] == "ok", r["error"]
+    return r
 
+
+def test_sinumerik_exact_stop_by_default_and_g64_continuous_path(run_text):
     one = 10.0 / 50.0 + 50.0 / A  # 10 mm at 50 mm/s from rest to rest
-    r = run_mpf(tmp_path, "%MPF1\nN10 G1 G90 X10 F3000\nN20 X20\nM30\n", ok=True)
+    r = run_mpf(run_text, "%MPF1\nN10 G1 G90 X10 F3000\nN20 X20\nM30\n")
     assert r["cycle_time_s"] == pytest.approx(2 * one)
-    r = run_mpf(tmp_path, "%MPF1\nN10 G64 G1 G90 X10 F3000\nN20 X20\nM30\n", ok=True)
+    r = run_mpf(run_text, "%MPF1\nN10 G64 G1 G90 X10 F3000\nN20 X20\nM30\n")
     assert r["cycle_time_s"] == pytest.approx(20.0 / 50.0 + 50.0 / A)
-    r = run_mpf(tmp_path, "%MPF1\nN10 G64 G1 G90 X10 F3000\nN15 G09 X20\nN20 X30\nN25 X40\nM30\n", ok=True)
+    r = run_mpf(run_text, "%MPF1\nN10 G64 G1 G90 X10 F3000\nN15 G09 X20\nN20 X30\nN25 X40\nM30\n")
     assert r["cycle_time_s"] == pytest.approx(2 * (20.0 / 50.0 + 50.0 / A))
-    r = run_mpf(tmp_path, "%MPF1\nN10 G64 G1 G90 X10 F3000\n@714\nN20 X20\nM30\n", ok=True)
+    r = run_mpf(run_text, "%MPF1\nN10 G64 G1 G90 X10 F3000\n@714\nN20 X20\nM30\n")
     assert r["cycle_time_s"] == pytest.approx(2 * one)
 
 
-def test_column_path_and_block_path_plan_alike(run_text, tmp_path):
+def test_column_path_and_block_path_plan_alike(run_text):
     # the same contour as a DIN program (plain rows, column-wise), as CPL blocks (its block buffer runs them
     # column-wise too) and as SINUMERIK blocks (one by one: the hot path and arc_out)
-    from tests.dialects.sinumerik.sin800_helpers import run_mpf
-
     moves = ["G1 X10 Y0", "G1 X10 Y10", "G3 X0 Y20 I-10 J0", "G1 X-5 Y20", "G2 X-15 Y20 I-5 J0", "G1 X-15 Y0"]
     din = run_text("G90 G64 F2400\n" + "\n".join(moves) + "\nM2\n", machine=machine())
     cpl = run_text("N1 G90 F2400\n" + "\n".join(f"N{i + 2} {m}" for i, m in enumerate(moves)) + "\nM30\n",
                    name="c.cpl", machine=machine())
-    sin = run_mpf(tmp_path, "%MPF1\nN1 G64 G90 F2400\n" + "\n".join(f"N{i + 2} {m}" for i, m in enumerate(moves))
-                  + "\nM30\n", ok=True)
+    sin = run_mpf(run_text, "%MPF1\nN1 G64 G90 F2400\n" + "\n".join(f"N{i + 2} {m}" for i, m in enumerate(moves))
+                  + "\nM30\n")
     assert din["cycle_time_s"] == pytest.approx(cpl["cycle_time_s"], rel=1e-12)
     assert din["cycle_time_s"] == pytest.approx(sin["cycle_time_s"], rel=1e-12)
     rest = run_text("G90 G64 F2400\n" + "\n".join(moves) + "\nM2\n", machine=machine(), time_model="rest-to-rest")
