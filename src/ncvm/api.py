@@ -75,6 +75,7 @@ class RunResult:
     position: dict[str, float]  # workpiece coordinates at the end
     motion: MotionSummary
     cycle_time_s: float
+    cycle_time_model: str  # "look-ahead", "rest-to-rest" or "card" (rw_SymPas): how moves were timed
     steps: int
     limit_violations: list[str]  # soft limits first, then the front end's checks (work areas ...)
     extra: dict[str, Any]  # dialect-specific parts of the document (Session.extra)
@@ -92,6 +93,7 @@ class RunResult:
             output_dropped=session.output.dropped, variables=dict(session.variables),
             position=session.kernel.workpiece_position(), motion=recorder.summary(),
             cycle_time_s=session.machine.clock.now,
+            cycle_time_model=session.time_model or session.kernel.time_model(),
             # a runaway is caught just past the limit; straight code (no loop, no jump back) may pass it
             steps=session.steps.limit if error and error.code == "RUN001" else session.steps.steps,
             limit_violations=[v.message() for v in session.checks.violations()],
@@ -110,6 +112,7 @@ class RunResult:
             "cycle_time_s": self.cycle_time_s,
             "steps": self.steps,
             "limit_violations": self.limit_violations,
+            "cycle_time_model": self.cycle_time_model,
         }
         out.update({k: _jsonable(v) for k, v in self.extra.items()})
         if self.error:

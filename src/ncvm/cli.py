@@ -149,7 +149,7 @@ class _Progress:
                     # front ends that count steps in batches (din) report them only at the end
                     steps = f"{s.steps.steps:,} steps, " if s.steps.steps else ""
                     status.update(f"running: {steps}{len(s.recorder):,} moves, "
-                                  f"{s.machine.clock.now:.1f} s machine time")
+                                  f"{s.machine.clock.settled:.1f} s machine time")  # no flush: another thread
 
     def __exit__(self, *exc):
         self._stop.set()
@@ -183,8 +183,11 @@ class _Progress:
 @click.option("--screen", type=click.Path(dir_okay=False), help="Save the operator screen at the end (.png).")
 @click.option("--screen-dir", type=click.Path(file_okay=False),
               help="Save one screen picture per wait for the operator (softkeys, input).")
+@click.option("--time-model", type=click.Choice(["lookahead", "rest-to-rest"]),
+              help="How move times are planned (default: the machine file's [motion] model, lookahead): blocks "
+                   "blended in continuous-path mode, or every block from rest to rest.")
 def run(program, dialect, machine, state_dir, as_json, trace, gcode, plot, max_steps, max_memory, scenario, keys,
-        editor_block, screen, screen_dir):
+        editor_block, screen, screen_dir, time_model):
     """Run PROGRAM on the simulated controller.
 
     Without --machine the machine.toml in the program's folder is used (named on stderr), as by check
@@ -206,7 +209,7 @@ def run(program, dialect, machine, state_dir, as_json, trace, gcode, plot, max_s
     options = RunOptions(state_dir=Path(state_dir), max_steps=max_steps, trace=as_path(trace),
                          gcode=as_path(gcode), echo=not as_json, scenario=as_path(scenario), keys=key_script,
                          keyboard=keyboard, editor_block=editor_block, screen=as_path(screen),
-                         screen_dir=as_path(screen_dir), plot=bool(plot))
+                         screen_dir=as_path(screen_dir), plot=bool(plot), time_model=time_model)
     if max_memory is not None:
         options.max_memory = parse_size(max_memory)
     # the progress line would draw over the operator's prompts
@@ -272,6 +275,7 @@ def _summary(result: dict) -> str:
     return (f"ncvm: {status}: {result['steps']:,} steps, {m['rapid_moves']} rapid / {m['feed_moves']} feed / "
             f"{m['arc_moves']} arc moves, path {m['rapid_length'] + m['feed_length']:.3f} mm "
             f"(feed {m['feed_length']:.3f}), cycle time {_hms(result['cycle_time_s'])}"
+            + (f" ({result['cycle_time_model']})" if "cycle_time_model" in result else "")
             + (f", bounds {bounds}" if bounds else ""))
 
 

@@ -144,7 +144,9 @@ def test_hand_computed_run(tmp_path):
     path = tmp_path / "p.ngc"
     # machine default: feed limits well above F600 (10 mm/s); acceleration from the default machine
     path.write_text("G1 X10 F600\nG3 X0 Y10 I-10 J0\nG1 X0 Y0\nM2\n")
-    result, session = run(path, dialect="din", options=RunOptions(keep_toolpath=True, state_dir=tmp_path / ".n"))
+    # timed from rest to rest (the corners are blended otherwise: tests/nc/test_planner.py)
+    result, session = run(path, dialect="din", options=RunOptions(keep_toolpath=True, state_dir=tmp_path / ".n",
+                                                                  time_model="rest-to-rest"))
     arc = math.pi * 10 / 2
     assert result["motion"]["feed_length"] == pytest.approx(10 + arc + 10)
     assert result["motion"]["bounds"]["X"] == pytest.approx([0.0, 10.0])

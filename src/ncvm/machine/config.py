@@ -14,7 +14,7 @@ from pathlib import Path
 from typing import Any, Mapping, Sequence, TypeVar
 
 from ..diagnostics import UsageError
-from .model import Axis, Machine, PlcImage, SimClock, Tool
+from .model import Axis, Machine, MotionData, PlcImage, SimClock, Tool
 from .scenario import Event, from_tables
 from .schema import MISSING, NO_AXES, Ctx, SchemaError, validate
 from .sections import DIALECT_SECTIONS, SECTIONS
@@ -113,6 +113,7 @@ def machine_from_dict(data: dict, where: str = "<dict>", folder: Path = Path("."
     m.plc = PlcImage(inputs=dict(plc.get("inputs", {})), outputs=dict(plc.get("outputs", {})),
                      flags=dict(plc.get("flags", {})), words=dict(plc.get("words", {})))
     m.clock = SimClock(start_epoch=float(data.get("clock", {}).get("start", 1_700_000_000.0)))
+    m.motion = MotionData(**data.get("motion", {}))
     paths = data.get("paths", {})
     m.program_path = [(folder / p) for p in paths.get("program_path", ["."])]
     m.file_root = folder / paths.get("file_root", "files")

@@ -42,16 +42,54 @@ class Tool:
     name: str = ""
 
 
-@dataclass(slots=True)
 class SimClock:
-    """Simulated time in seconds. Programs never see the wall clock, so runs repeat exactly."""
+    """Simulated time in seconds. Programs never see the wall clock, so runs repeat exactly.
 
-    now: float = 0.0
-    start_epoch: float = 1_700_000_000.0  # the controller's calendar at power-on (machine file: clock.start)
+    Moves wait untimed in the path planner (:mod:`ncvm.nc.planner`) until their look-ahead window is
+    complete. Reading or setting ``now`` first calls ``pending`` (the planner's exact stop), so nothing
+    ever reads a time a later block could change; ``settled`` is the time without that flush (a shadow
+    kernel's start, the planner's own bookkeeping).
+    """
+
+    __slots__ = ("settled", "start_epoch", "pending")
+
+    def __init__(self, now: float = 0.0, start_epoch: float = 1_700_000_000.0):
+        self.settled = now
+        self.start_epoch = start_epoch  # the controller's calendar at power-on (machine file: clock.start)
+        self.pending = None  # called before ``now`` is read or set: times the moves still waiting
+
+    @property
+    def now(self) -> float:
+        if self.pending is not None:
+            self.pending()
+        return self.settled
+
+    @now.setter
+    def now(self, value: float) -> None:
+        if self.pending is not None:
+            self.pending()
+        self.settled = value
+
+    def settle(self, now: float) -> None:
+        """The planner has timed moves up to ``now``."""
+        self.settled = now
 
     def advance(self, seconds: float) -> None:
         if seconds > 0.0:
             self.now += seconds
+
+    def __repr__(self) -> str:
+        return f"SimClock(now={self.settled!r}, start_epoch={self.start_epoch!r})"
+
+
+@dataclass(slots=True)
+class MotionData:
+    """The path control's machine data (machine file ``[motion]``): how move times are planned."""
+
+    model: str = "lookahead"  # "lookahead" (blocks blended in continuous-path mode) or "rest-to-rest"
+    lookahead: int = 100  # blocks the control looks ahead (its block buffer)
+    corner_tolerance: float = 0.02  # mm a blended corner may deviate from the programmed corner
+    tool_change_time: float = 0.0  # s an M6 tool change takes
 
 
 @dataclass(slots=True)
@@ -78,6 +116,7 @@ class Machine:
     plc: PlcImage = field(default_factory=PlcImage)
     alarms: list[str] = field(default_factory=list)
     clock: SimClock = field(default_factory=SimClock)
+    motion: MotionData = field(default_factory=MotionData)
     start_position: list[float] | None = None
     program_path: list[Path] = field(default_factory=lambda: [Path(".")])
     file_root: Path = Path("files")

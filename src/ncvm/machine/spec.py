@@ -166,6 +166,18 @@ MACHINE_FILE = Table((
         Field("flags", PLC_BITS, "PLC flags (markers) by address", {}),
         Field("words", Table(other=INT, keys=NAME, keys_doc="address"), "PLC data words by address", {}),
     )), "the PLC interface image at power-on"),
+    Field("motion", Table((
+        Field("model", Text(choices=("lookahead", "rest-to-rest")),
+              "how move times are planned: blocks blended in continuous-path mode with look-ahead, or every "
+              "block from rest to rest (the old model; `ncvm run --time-model` overrides it)", "lookahead"),
+        Field("lookahead", Number(integer=True, min=1, max=100000),
+              "blocks the path control looks ahead (its block buffer): every move can still brake to rest "
+              "within this many", 100, "blocks"),
+        Field("corner_tolerance", NONNEG,
+              "how far a blended corner may pass the programmed corner point in continuous-path mode "
+              "(0: every corner is an exact stop); a DIN program's `G64 P..` sets it", 0.02, "mm"),
+        Field("tool_change_time", NONNEG, "how long an M6 tool change takes (the axes stand)", 0.0, "s"),
+    )), "the path control of the DIN, CPL and SINUMERIK runs: cycle-time planning (docs/planner.md)"),
     Field("clock", Table((Field("start", Number(min=0, max=253402300799), "the controller's calendar at power-on",
                                 1700000000, "Unix time, s"),)), "the simulated clock"),
     Field("paths", Table((

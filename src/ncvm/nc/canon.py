@@ -115,6 +115,13 @@ class CanonSink:
             else:
                 self.arc(start, end, arcs[i], feed, src)
 
+    def timing(self, times, entry, exit) -> None:
+        """The path planner (:mod:`ncvm.nc.planner`) has timed the next moves, oldest first: numpy columns of
+        their times (s) and entry and exit path speeds (mm/min). Moves are timed in the order of their
+        rapid, feed and arc calls (a straight move of length 0 is not timed: it takes no time), but a
+        move may be timed before or after its call, as its look-ahead window completes. All three None:
+        the moves from now on are timed by the front end's own model (the rw_SymPas card), not reported."""
+
     def dwell(self, seconds: float, src: Src) -> None:
         """Wait with axes standing still."""
 
@@ -151,7 +158,7 @@ class CanonSink:
         """The run is over (normally or by a fault): flush files."""
 
 
-_METHODS = ("begin", "rapid", "feed", "arc", "move_batch", "dwell", "tool_change", "tool_offset", "spindle", "coolant",
+_METHODS = ("begin", "rapid", "feed", "arc", "move_batch", "timing", "dwell", "tool_change", "tool_offset", "spindle", "coolant",
             "aux", "probe", "message", "stop", "program_end", "end")
 
 

@@ -1,7 +1,7 @@
 """How long a move takes on the machine: trapezoidal velocity profiles.
 
-Each move starts and ends at rest (no look-ahead blending, as a conservative
-control without it would run). The path speed is the programmed feed (or
+:func:`trapezoid_time` is a move from rest to rest; the path planner
+(:mod:`ncvm.nc.planner`) blends moves in continuous-path mode from these limits. The path speed is the programmed feed (or
 rapid rate), capped so no axis exceeds its own maximum; the path acceleration
 is capped the same way by each axis's acceleration.
 
@@ -89,10 +89,20 @@ def straight_time_columns(dyn: AxisDynamics, start, end, rapid, feed) -> np.ndar
     """:meth:`AxisDynamics.straight_time` column-wise: rows of ``start`` and ``end`` (moves, axes), ``rapid`` a
     bool column, ``feed`` in mm/min (ignored where rapid)."""
     d = end - start
+    length = lengths_columns(d)
+    return trapezoid_time_columns(length, *straight_limits_columns(dyn, d, length, rapid, feed))
+
+
+def lengths_columns(d) -> np.ndarray:
+    """Path length of each row of per-axis ``d`` (moves, axes), summed in axis order as the scalar form."""
     sq = d[:, 0] * d[:, 0]
     for i in range(1, d.shape[1]):
         sq = sq + d[:, i] * d[:, i]
-    length = np.sqrt(sq)
+    return np.sqrt(sq)
+
+
+def straight_limits_columns(dyn: AxisDynamics, d, length, rapid, feed) -> tuple:
+    """:func:`path_limits` column-wise: path speed and acceleration of straight moves ``d`` (moves, axes)."""
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         inv = 1.0 / length
         v = np.where(rapid, math.inf, feed / 60.0)
@@ -104,7 +114,7 @@ def straight_time_columns(dyn: AxisDynamics, start, end, rapid, feed) -> np.ndar
             vmax = np.where(rapid, dyn.rapid[i], dyn.max_feed[i])
             v = np.where(nz & (vmax < v * share), vmax / share, v)
             a = np.where(nz & (dyn.accel[i] < a * share), dyn.accel[i] / share, a)
-        return trapezoid_time_columns(length, v, a)
+        return v, a
 
 
 def arc_limits(n_axes: int, a: int, b: int, length: float, speed: float, limits: tuple,

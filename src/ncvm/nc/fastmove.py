@@ -2,8 +2,9 @@
 
 Straight moves are most of what any program does, so the kernel compiles this
 function once for its machine's axes instead of looping over axis lists:
-target from the block's words, machine end point, and the move time of
-:func:`ncvm.nc.dynamics.move_time` (same formula, unrolled).
+target from the block's words, machine end point, and the move handed to the path planner
+(:mod:`ncvm.nc.planner`) as one row of its deltas and feed: the planner works out the path
+speed and acceleration of :func:`ncvm.nc.dynamics.path_limits` column-wise (same formula).
 """
 
 from __future__ import annotations
@@ -11,7 +12,7 @@ from __future__ import annotations
 import math
 
 
-def make_linear(axis_names: tuple[str, ...], dyn):
+def make_linear(axis_names: tuple[str, ...]):
     """``linear(kernel, motion, words, src)`` for these axes; same result as the general path."""
     n = len(axis_names)
     if n == 0:
@@ -47,31 +48,13 @@ def make_linear(axis_names: tuple[str, ...], dyn):
               "        feed = k.feed",
               "        if feed <= 0.0:",
               "            k.fault('NC006', k.no_feed_message(1), src)",
-              "        v = feed / 60.0",
-              "    t = 0.0",
+              "        v = feed",
               "    if length > 0.0:",
-              "        a = _INF",
-              "        inv = 1.0 / length"]
-    for i in idx:
-        # the machine's limits are constants of the generated code
-        rapid, feed, acc = float(dyn.rapid[i]), float(dyn.max_feed[i]), float(dyn.accel[i])
-        lines += [f"        if d{i}:",
-                  f"            share = abs(d{i}) * inv",
-                  f"            vmax = {rapid!r} if motion == 0 else {feed!r}",
-                  "            if vmax < v * share:",
-                  "                v = vmax / share",
-                  f"            if {acc!r} < a * share:",
-                  f"                a = {acc!r} / share"]
-    lines += ["        if v <= 0.0:",
-              "            t = _INF",
-              "        elif a <= 0.0 or a == _INF:",
-              "            t = length / v",
-              "        elif length * a >= v * v:",
-              "            t = length / v + v / a",
-              "        else:",
-              "            t = 2.0 * _sqrt(length / a)",
-              "        if t > 0.0:",
-              "            k.machine.clock.now += t",
+              "        pl = k.planner",
+              "        rows = pl.rows",
+              f"        rows += (-1.0, v, 0.0, 3 if motion == 0 else k.exact, {', '.join(f'd{i}' for i in idx)})",
+              "        if len(rows) > pl.limit:",
+              "            pl.commit()",
               "    if motion == 0:",
               "        k.canon.rapid(start, end, src)",
               "    else:",

@@ -22,14 +22,15 @@ from __future__ import annotations
 
 import copy
 import math
-from operator import add
+from operator import add, sub
 
 from ..diagnostics import RuntimeFault, Span
 from ..machine.model import Machine, PlcImage, SimClock
 from . import arcs, cutter, threads
 from .canon import ArcSpec, Canon, Src
-from .dynamics import AxisDynamics, arc_limits, trapezoid_time
+from .dynamics import AxisDynamics, arc_limits, path_limits
 from .fastmove import make_linear
+from .planner import LOOKAHEAD, POSITIONING, STOP_END, Planner, arc_tangents
 
 INCH = 25.4
 #: plane G number -> (first axis, second axis, normal axis, first centre word, second centre word)
@@ -37,6 +38,10 @@ PLANES = {17: ("X", "Y", "Z", "I", "J"), 18: ("Z", "X", "Y", "K", "I"), 19: ("Y"
 WORK_OFFSETS = {54: "G54", 55: "G55", 56: "G56", 57: "G57", 58: "G58", 59: "G59"}
 NON_AXIS = frozenset("FSTDHIJKRPLN")
 _MOTION_G = frozenset((0, 1, 2, 3))
+#: G number -> what it does to the path control: "block" (exact stop at the end of this block: G09),
+#: "exact" (modal exact stop), "continuous" (modal continuous path), "blend" (continuous path, P the corner
+#: tolerance: LinuxCNC's G64 P). ISO/DIN here; each control names its own (docs/decisions.md, docs/planner.md)
+ISO_PATH_CODES = {9: "block", 60: "exact", 61: "exact", 61.1: "exact", 64: "blend"}
 
 
 def refused_g(meaning: str):
@@ -59,7 +64,16 @@ class NcKernel:
         self.axis_of = {n: i for i, n in enumerate(names)}
         self.n_axes = len(names)
         self.dyn = AxisDynamics(machine.axes)
-        self._fast_linear = make_linear(names, self.dyn)
+        motion = machine.motion
+        #: the path planner: moves wait in it untimed until their look-ahead window is complete (nc.planner)
+        self.planner = Planner(machine.clock, canon, self.dyn, motion.model, motion.lookahead,
+                               motion.corner_tolerance)
+        #: the G codes of the path control (see ISO_PATH_CODES); a front end sets its control's
+        self.path_codes = ISO_PATH_CODES
+        #: the row flags of a move at feed: STOP_END under modal exact stop, 0 in continuous-path mode
+        self.exact = 0
+        self.tool_change_time = float(motion.tool_change_time)
+        self._fast_linear = make_linear(names)
         #: the straight move (G0/G1 without G53): ``linear(kernel, motion, words, src)``, a plain function of
         #: the kernel (generated code calls it without a bound method). The generated fast path, or the
         #: general one while a transform is set (see set_transform); a front end calls it, never replaces it
@@ -135,11 +149,12 @@ class NcKernel:
         (zero offsets, tools) stay shared."""
         k = copy.copy(self)
         m = copy.copy(self.machine)
-        m.clock = SimClock(m.clock.now, m.clock.start_epoch)
+        m.clock = SimClock(m.clock.settled, m.clock.start_epoch)  # no flush: the shadow's time is its own
         plc = m.plc
         m.plc = PlcImage(dict(plc.inputs), dict(plc.outputs), dict(plc.flags), dict(plc.words))
         k.machine = m
         k.canon = Canon([])
+        k.planner = self.planner.fork(m.clock, k.canon)
         k.prog, k.g92, k.offset_vec, k.additive = list(self.prog), list(self.g92), list(self.offset_vec), \
             list(self.additive)
         k.canned = copy.copy(self.canned)
@@ -235,9 +250,13 @@ class NcKernel:
         handlers = self.g_handlers
         extra = None
         cycle_g = False
+        block_stop = False
+        path_codes = self.path_codes
         for g in block.g:
             if handlers and g in handlers:
                 extra = [g] if extra is None else extra + [g]
+            elif g in path_codes:
+                block_stop = self._path_mode(path_codes[g], words, src) or block_stop
             elif g in (0, 1, 2, 3):
                 motion = g
             elif g == 4:
@@ -312,11 +331,15 @@ class NcKernel:
             self._css_update(src)
         if "T" in words:
             self.next_tool = int(words["T"])
-        for mc in block.m:
-            self._m_before(mc, src)
+        if block.m:
+            self.planner.stop()  # M functions are exact stops: the axes stand while the PLC acts
+            block_stop = True
+            for mc in block.m:
+                self._m_before(mc, src)
         if dwell_block:
             # LinuxCNC writes the time as P, SINUMERIK and DIN controls as X or F (seconds)
             seconds = words.get("P", words.get("X", words.get("F", 0.0)))
+            self.planner.stop()
             self.machine.clock.advance(seconds)
             canon.dwell(seconds, src)
         elif set_position:
@@ -334,8 +357,28 @@ class NcKernel:
                 self.linear(self, motion, words, src)  # the common case, without the _move call
             else:
                 self._move(motion, words, machine_coords, src)
+        if block_stop:
+            self.planner.stop()
         for mc in block.m:
             self._m_after(mc, src, block.n)
+
+    def _path_mode(self, mode: str, words, src: Src) -> bool:
+        """A G code of the path control (see ISO_PATH_CODES); True when the block ends in an exact stop."""
+        if mode == "block":
+            return True
+        if mode == "exact":
+            self.exact = STOP_END
+        else:
+            self.exact = 0
+            if mode == "blend" and "P" in words:
+                if words["P"] < 0.0:
+                    self.fault("NC004", f"G64 P{words['P']:g}: the path tolerance cannot be negative", src)
+                self.planner.tolerance = words["P"] * self.scale
+        return False
+
+    def time_model(self) -> str:
+        """The cycle-time model of this run, as the summary names it."""
+        return "look-ahead" if self.planner.model == LOOKAHEAD else "rest-to-rest"
 
     def no_feed_message(self, g: int) -> str:
         """NC006: a move at feed with no feed rate, or with a negative one, or under G95 with the spindle standing."""
@@ -432,6 +475,7 @@ class NcKernel:
                 self.fault("NC008", f"tool {self.next_tool} is not in the tool table", src)
             self.tool = self.next_tool
             canon.tool_change(self.tool, src)
+            self.machine.clock.advance(self.tool_change_time)
         elif mc == 3 or mc == 4:
             self._spindle_fold()
             self.spindle_dir = 1 if mc == 3 else -1
@@ -467,6 +511,7 @@ class NcKernel:
             self.end_program(src)
 
     def end_program(self, src: Src) -> None:
+        self.planner.stop()
         if not self.ended:
             self.ended = True
             self.canon.program_end(src)
@@ -539,12 +584,7 @@ class NcKernel:
             self.spindle_update(src)
         start = self.machine_pos
         end = tuple(map(add, prog if self.transform is None else self.transform.forward(prog), self.offset_vec))
-        if rapid:
-            self.machine.clock.advance(self.dyn.straight_time(start, end, math.inf, rapid=True))
-            self.canon.rapid(start, end, src)
-        else:
-            self.machine.clock.advance(self.dyn.straight_time(start, end, self.feed / 60.0, rapid=False))
-            self.canon.feed(start, end, self.feed, src)
+        self.straight_out(0 if rapid else 1, start, end, self.feed, src, self.canon)
         self.prog = list(prog)
         self.machine_pos = end
 
@@ -626,11 +666,18 @@ class NcKernel:
 
     def straight_out(self, motion: int, start, end, feed: float, src: Src, canon) -> None:
         """A straight move (0 rapid, 1 at ``feed``) leaves: the clock runs its time, ``canon`` hears it."""
+        deltas = tuple(map(sub, end, start))
+        length = math.sqrt(sum(d * d for d in deltas))
+        if length > 0.0:
+            dyn = self.dyn
+            rapid = motion == 0
+            v, a = path_limits(deltas, length, math.inf if rapid else feed / 60.0,
+                               dyn.rapid if rapid else dyn.max_feed, dyn.accel)
+            u = tuple(d / length for d in deltas)
+            self.planner.add(length, v, a, POSITIONING if rapid else self.exact, u, u)
         if motion == 0:
-            self.machine.clock.advance(self.dyn.straight_time(start, end, math.inf, rapid=True))
             canon.rapid(start, end, src)
         else:
-            self.machine.clock.advance(self.dyn.straight_time(start, end, feed / 60.0, rapid=False))
             canon.feed(start, end, feed, src)
 
     def arc_out(self, start, end, spec: ArcSpec, feed: float, src: Src, canon) -> None:
@@ -638,9 +685,12 @@ class NcKernel:
         sa, sb, ea, eb = start[spec.a], start[spec.b], end[spec.a], end[spec.b]
         angle = arcs.sweep(sa, sb, ea, eb, *spec.center, spec.cw, spec.turns)
         length = arcs.arc_length(spec.radius, angle, arcs.helix_travel(start, end, spec.a, spec.b))
-        t = trapezoid_time(length, *arc_limits(self.n_axes, spec.a, spec.b, length, feed / 60.0, self.dyn.max_feed,
-                                               self.dyn.accel))
-        self.machine.clock.advance(t)
+        v, a = arc_limits(self.n_axes, spec.a, spec.b, length, feed / 60.0, self.dyn.max_feed, self.dyn.accel)
+        planner = self.planner
+        if planner.model == LOOKAHEAD:  # the centripetal acceleration the plane axes can give: v^2 <= a r
+            v = min(v, math.sqrt(min(self.dyn.accel[spec.a], self.dyn.accel[spec.b]) * spec.radius))
+        u_in, u_out = arc_tangents(start, end, spec, angle, length, self.n_axes)
+        planner.add(length, v, a, self.exact if length > 0.0 else POSITIONING, u_in, u_out)
         canon.arc(start, end, spec, feed, src)
 
 

@@ -7,7 +7,8 @@ an N number, one motion G code (G0 to G3) and X Y Z I J K F words. The reader
 block has no such word. :func:`execute_columns` then does for the whole run what
 :meth:`NcKernel.execute` does block by block -- modal motion and feed carried
 forward, G90/G91 targets, offsets, arc centres, the radius check, sweep
-angles, extents and move times -- and hands the moves to the canon interface
+angles, extents and the moves' speed limits and tangents -- hands the moves to
+the path planner (:mod:`ncvm.nc.planner`) as columns and to the canon interface
 as one :class:`~ncvm.nc.canon.MoveBatch`. The results are the block-by-block
 results (same formulas, same order of float operations, the clock summed in
 move order); ``tests/nc/test_plain_run.py`` holds the two paths side by side.
@@ -28,8 +29,9 @@ import numpy as np
 from . import arcs
 from .block import PLAIN_WORDS, ROW_WORD, Block, PlainRun, block_row, row_g, row_line, row_src
 from .canon import BatchArcs, MoveBatch
-from .dynamics import arc_limits_columns, straight_time_columns, trapezoid_time_columns
+from .dynamics import arc_limits_columns, lengths_columns, straight_limits_columns
 from .kernel import PLANES
+from .planner import LOOKAHEAD, POSITIONING, arc_tangents_columns
 
 RAPID, FEED, ARC = 0, 1, 2
 
@@ -74,7 +76,12 @@ def execute_columns(k, run: PlainRun, lo: int, hi: int) -> int | None:
     start = np.vstack((np.asarray(k.machine_pos, dtype=float), end[:-1]))
     kind = np.minimum(motion[idx], ARC).astype(np.int8)
     move_feed = feed[idx]
-    times = np.zeros(len(idx))
+    d = end - start
+    length = lengths_columns(d)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        u_in = d / length[:, None]
+    u_out = u_in
+    v, acc = straight_limits_columns(k.dyn, d, length, kind == RAPID, move_feed)
     arc_pos = np.flatnonzero(kind == ARC)
     found = None
     if len(arc_pos):
@@ -84,13 +91,15 @@ def execute_columns(k, run: PlainRun, lo: int, hi: int) -> int | None:
             stop = lo + int(idx[arc_pos[done]])
             before = execute_columns(k, run, lo, stop) if stop > lo else None  # passes: nothing before is judged
             return stop if before is None else before
-        found, times[arc_pos] = done
-    straight = np.flatnonzero(kind != ARC)
-    times[straight] = straight_time_columns(k.dyn, start[straight], end[straight], kind[straight] == RAPID,
-                                            move_feed[straight])
-
-    clock = k.machine.clock
-    clock.now = float(np.cumsum(np.concatenate(([clock.now], times)))[-1])  # in move order, as one by one
+        found, (length[arc_pos], v[arc_pos], acc[arc_pos], tangents) = done
+        u_out = u_in.copy()
+        u_in[arc_pos], u_out[arc_pos] = tangents
+    # the moves to the planner (a straight move of length 0 takes no time), then to the canon, as one by one
+    flags = np.where(kind == RAPID, POSITIONING, k.exact)
+    timed = (kind == ARC) | (length > 0.0)
+    if not timed.all():
+        length, v, acc, flags, u_in, u_out = (c[timed] for c in (length, v, acc, flags, u_in, u_out))
+    k.planner.add_columns(length, v, acc, flags, u_in, u_out)
     k.canon.move_batch(MoveBatch(kind, start, end, move_feed, run.file, run.lines[lo:hi][idx], found))
     return _finish(k, motion, feed, prog, end_row, lo, hi, end)
 
@@ -128,9 +137,10 @@ def _finish(k, motion, feed, prog, end_row, lo, hi, end) -> int | None:
     return None if end_row == hi - lo else lo + end_row
 
 
-def _arcs(k, arc_pos, start, end, centre_words, feed, cw, a: int, b: int) -> tuple[BatchArcs, np.ndarray] | int:
-    """Centre (I/J/K words), radius check, sweep, length, extent and time of the arcs at ``arc_pos`` among
-    the moves, or the index (among the arcs) of the first whose end lies on another radius."""
+def _arcs(k, arc_pos, start, end, centre_words, feed, cw, a: int, b: int) -> tuple[BatchArcs, tuple] | int:
+    """Centre (I/J/K words), radius check, sweep, length, extent, path speed and acceleration and tangents
+    of the arcs at ``arc_pos`` among the moves, or the index (among the arcs) of the first whose end lies on
+    another radius."""
     sa, sb = start[arc_pos, a], start[arc_pos, b]
     ea, eb = end[arc_pos, a], end[arc_pos, b]
     ca = sa + np.nan_to_num(centre_words[0]) * k.scale
@@ -143,9 +153,13 @@ def _arcs(k, arc_pos, start, end, centre_words, feed, cw, a: int, b: int) -> tup
     length = arcs.arc_length_columns(r0, angle, arcs.helix_travel_columns(start[arc_pos], end[arc_pos], a, b))
     # an arc moves both plane axes at once: timed as a straight move of the same length (NcKernel._arc)
     v, acc = arc_limits_columns(a, b, length, feed / 60.0, k.dyn.max_feed, k.dyn.accel)
-    arcs_found = BatchArcs(arc_pos, a, b, np.column_stack((ca, cb)), cw, r0, angle, length,
+    if k.planner.model == LOOKAHEAD:  # the centripetal acceleration the plane axes can give (NcKernel.arc_out)
+        v = np.minimum(v, np.sqrt(min(k.dyn.accel[a], k.dyn.accel[b]) * r0))
+    centre = np.column_stack((ca, cb))
+    arcs_found = BatchArcs(arc_pos, a, b, centre, cw, r0, angle, length,
                            arcs.arc_plane_extent_columns(sa, sb, ca, cb, r0, a0, angle))
-    return arcs_found, trapezoid_time_columns(length, v, acc)
+    tangents = arc_tangents_columns(start[arc_pos], end[arc_pos], a, b, centre, r0, angle, length)
+    return arcs_found, (length, v, acc, tangents)
 
 
 _SRC, _FILE = row_src, attrgetter("file")

@@ -46,6 +46,8 @@ class RunOptions:
     keyboard: bool = False  # without a key script: the operator types keys on stdin (a terminal)
     editor_block: str | None = None  # the NC block selected in the editor, for a CPL editor dialog
     scenario: Path | None = None  # scenario file: inputs, probe triggers, ... over simulated time
+    #: "lookahead" or "rest-to-rest": the cycle-time model instead of the machine file's ``[motion] model``
+    time_model: str | None = None
     screen: Path | None = None  # save the operator screen as it stands at the end (PNG)
     screen_dir: Path | None = None  # save one screen picture per wait for the operator (softkey, input)
     on_session: Callable[["Session"], None] | None = None  # told of the session as soon as it exists
@@ -107,6 +109,10 @@ class Session:
         messages = OperatorMessages(self.say)
         self.canon.add(messages)
         self.kernel = messages.kernel = NcKernel(machine, self.canon)
+        if self.options.time_model:
+            self.kernel.planner.model = self.options.time_model
+        #: the cycle-time model when a front end times its moves itself (rw_SymPas: "card"), else None
+        self.time_model: str | None = None
         self._store: Store | None = None
         #: the operator screen of dialects that have one (CPL dialogs); anything with ``save_png(path)``
         self.screen = None
@@ -130,6 +136,7 @@ class Session:
 
     # -- the run ---------------------------------------------------------
     def close(self) -> None:
+        self.kernel.planner.stop()  # the moves still waiting are timed (they end at rest) before the sinks end
         for s in self.sinks:
             s.end()
         if self._store is not None:

@@ -1,26 +1,69 @@
-"""JSONL trace: one canon call per line, with the source file and line that caused it."""
+"""JSONL trace: one canon call per line, with the source file and line that caused it.
+
+A move's line also holds what the path planner made of it (:mod:`ncvm.nc.planner`): ``time`` (s),
+``v_entry`` and ``v_exit`` (path speed at its start and end, mm/min). The planner times a move when its
+look-ahead window is complete, so lines wait here until the moves before and including them are timed:
+at most the planner's window and chunk of moves, and every line is out when the run ends.
+"""
 
 from __future__ import annotations
 
 import json
+from collections import deque
 
 from ..nc.canon import CanonSink
 from ..outpaths import OutputError
+
+_UNTIMED = object()  # a move's time before the planner has timed it
 
 
 class JsonlTrace(CanonSink):
     def __init__(self, path):
         self._f = open(path, "w", encoding="utf-8")
         self.names: tuple[str, ...] = ()
+        self._held: deque = deque()  # records waiting for the moves before them (or themselves) to be timed
+        self._untimed: deque = deque()  # the move records among them still without a time, oldest first
+        self._early: deque = deque()  # timings of moves whose call has not come yet
+        self._planned = True  # the path planner times the moves (not a card of its own)
 
     def _write(self, call: str, src, **data) -> None:
         rec = {"call": call, **data}
         if src is not None:
             rec["file"], rec["line"] = src.file, src.line
+        self._held.append(rec)
+        self._release()
+
+    def _move(self, call: str, src, p0, p1, **data) -> None:
+        if not self._planned:
+            self._write(call, src, **data)
+        elif p0 == p1 and call != "arc":
+            self._write(call, src, **data, time=0.0, v_entry=0.0, v_exit=0.0)  # no time: not planned
+        elif self._early:
+            self._write(call, src, **data, **self._early.popleft())
+        else:
+            self._write(call, src, **data, time=_UNTIMED)
+            self._untimed.append(self._held[-1])
+
+    def _release(self) -> None:
+        held = self._held
         try:
-            self._f.write(json.dumps(rec) + "\n")
+            while held and held[0].get("time") is not _UNTIMED:
+                self._f.write(json.dumps(held.popleft()) + "\n")
         except OSError as e:  # a full disk: the run stops with a usage error naming the file
             raise OutputError(self._f.name, e) from None
+
+    def timing(self, times, entry, exit):
+        if times is None:
+            self._planned = False
+            return
+        untimed, early = self._untimed, self._early
+        for t, v0, v1 in zip(times.tolist(), entry.tolist(), exit.tolist()):
+            data = {"time": t, "v_entry": round(v0, 6), "v_exit": round(v1, 6)}
+            if untimed:
+                untimed.popleft().update(data)
+            else:
+                early.append(data)
+        self._release()
 
     def _pos(self, p) -> dict:
         return {n: round(v, 6) for n, v in zip(self.names, p)}
@@ -30,14 +73,14 @@ class JsonlTrace(CanonSink):
         self._write("begin", None, position=self._pos(start))
 
     def rapid(self, start, end, src):
-        self._write("rapid", src, end=self._pos(end))
+        self._move("rapid", src, start, end, end=self._pos(end))
 
     def feed(self, start, end, feed, src):
-        self._write("feed", src, end=self._pos(end), feed=feed)
+        self._move("feed", src, start, end, end=self._pos(end), feed=feed)
 
     def arc(self, start, end, spec, feed, src):
-        self._write("arc", src, end=self._pos(end), center=[spec.center[0], spec.center[1]],
-                    plane=[self.names[spec.a], self.names[spec.b]], cw=spec.cw, turns=spec.turns, feed=feed)
+        self._move("arc", src, start, end, end=self._pos(end), center=[spec.center[0], spec.center[1]],
+                   plane=[self.names[spec.a], self.names[spec.b]], cw=spec.cw, turns=spec.turns, feed=feed)
 
     def dwell(self, seconds, src):
         self._write("dwell", src, seconds=seconds)
@@ -67,6 +110,10 @@ class JsonlTrace(CanonSink):
         self._write("program_end", src)
 
     def end(self):
+        for rec in self._untimed:  # a run stopped by a fault before its last moves were timed
+            rec["time"] = None
+        self._untimed.clear()
+        self._release()
         try:
             self._f.close()
         except OSError as e:

@@ -53,8 +53,12 @@ def test_wait_500_ms_into_a_move_sees_the_axis_half_way(tmp_path, run_text):
 
 
 def test_wait_does_not_change_toolpath_position_or_cycle_time(tmp_path, run_text):
-    plain = run_text("N10 G1 X100 F6000\nN20 G1 Y50\nM30\n", name="a.cpl", machine=mill(tmp_path))
-    waited = run_text("N10 G1 X100 F6000\n10 WAIT(,500)\nN20 G1 Y50\nM30\n", name="b.cpl", machine=mill(tmp_path))
+    # rest to rest: a timed WAIT reads the clock, an exact stop after N10, where the look-ahead planner would
+    # blend the corner of the plain run (tests/nc/test_planner.py, docs/planner.md)
+    rest = "rest-to-rest"
+    plain = run_text("N10 G1 X100 F6000\nN20 G1 Y50\nM30\n", name="a.cpl", machine=mill(tmp_path), time_model=rest)
+    waited = run_text("N10 G1 X100 F6000\n10 WAIT(,500)\nN20 G1 Y50\nM30\n", name="b.cpl", machine=mill(tmp_path),
+                      time_model=rest)
     assert waited["motion"] == plain["motion"]
     assert waited["position"] == plain["position"]
     # N20 is prepared at 0.5 s and starts when N10 ends: 1.28333 s + 50/83.333 + 0.08333 = 1.96667 s

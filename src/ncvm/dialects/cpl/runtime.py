@@ -57,6 +57,9 @@ from .unlinked import link_late, run_unlinked
 _EXTENDED = re.compile(r"\s*([A-Za-z][A-Za-z0-9_]*[0-9_][A-Za-z0-9_]*)\s*=\s*([-+]?(?:\d+\.?\d*|\.\d+))\s*$")
 #: blocks prepared ahead of execution without ``[cpl] lookahead`` (the manual gives no size; docs/decisions.md)
 BLOCK_BUFFER = 20_000
+#: the path control's G codes (nc.kernel.ISO_PATH_CODES): G61 exact stop, G62 continuous path (the
+#: power-on state), one group of the SD(1) table (L2302); G60 is the contour shift here (docs/decisions.md)
+CPL_PATH_CODES = {61: "exact", 62: "continuous"}
 
 
 class ProgramClock:
@@ -93,6 +96,7 @@ class CplRuntime:
         self.kernel = session.kernel
         # G41/G42 take the radius from the D numbers / TC selection (manual's G41/G42): not read yet, refused
         self.kernel.cutter_radius = cutter.refusal("the tool radius of the CPL control's D number / TC selection")
+        self.kernel.path_codes = CPL_PATH_CODES
         self.linked = linked
         self.lookahead = options(self.machine).lookahead
         self.block_skip = bool(self.machine.setting_data.get("block_skip", True))
@@ -128,7 +132,7 @@ class CplRuntime:
         self.hook = session.options.hook
         self._fns: dict = {}
         self._codes: dict = {}
-        #: the program's own time (s): where block preparation stands in simulated time
+        self._t_follows = False
         self.t_prep = self.machine.clock.now
         #: the block still moving at the program's time: (block, position before it, its recorded motion,
         #: the executed count after it); see executed_position
@@ -396,10 +400,24 @@ class CplRuntime:
         """Blocks taken from the queue and executed so far."""
         return self.queue.executed
 
+    @property
+    def t_prep(self) -> float:
+        """The program's own time (s): where block preparation stands in simulated time. After preparation
+        waited for execution it is the clock's time, read (and so the waiting moves timed: an exact stop)
+        only when something reads it."""
+        if self._t_follows:
+            self._t_follows = False
+            self._t_prep = max(self._t_prep, self.machine.clock.now)
+        return self._t_prep
+
+    @t_prep.setter
+    def t_prep(self, value: float) -> None:
+        self._t_prep, self._t_follows = value, False
+
     def queue_limited(self, blk) -> None:
         """The look-ahead is full: preparation waits until the oldest block has been executed."""
         if self.queue.put(blk):
-            self.t_prep = max(self.t_prep, self.machine.clock.now)
+            self._t_follows = True
 
     def enqueue_probe(self, blk) -> None:
         """Measuring blocks (G75, G275, G375) are executed before preparation goes on (manual §4.2, SD(9) L2309)."""
@@ -431,14 +449,16 @@ class CplRuntime:
             self.kernel.execute(as_block(blk))
 
     def drain(self) -> None:
-        """WAIT without parameters: stop preparation until every block before it has been executed."""
+        """WAIT without parameters: stop preparation until every block before it has been executed (the axes
+        stop: an exact stop)."""
         self.queue.drain()
+        self.kernel.planner.stop()
 
     def execute_run(self, blocks: list) -> None:
         """Execute the oldest queued blocks, taken out together (runs of plain blocks column-wise);
         preparation waits for them."""
         execute_segments(self.kernel, plain_segments(blocks, self.row_words), self.execute_block)
-        self.t_prep = max(self.t_prep, self.machine.clock.now)
+        self._t_follows = True  # preparation waited for these blocks (t_prep)
 
     def prepared_kernel(self):
         """The NC state after every *prepared* block: what CPOS and AXO read (manual §4.2.1, values at

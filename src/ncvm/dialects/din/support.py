@@ -18,8 +18,8 @@ from ...nc.block import WORD, PlainRun
 from ...nc.cycles import CODES as CYCLE_CODES
 
 #: the G functions the profile runs (nc/kernel.py NcKernel.execute, nc/cycles.py, nc/threads.py)
-G_FUNCTIONS = frozenset({0, 1, 2, 3, 4, 10, 17, 18, 19, 20, 21, 33, 40, 41, 42, 43, 44, 49, 53, 54, 55, 56, 57, 58, 59,
-                         60, 64, 70, 71, 90, 91, 92, 92.1, 94, 95, 96, 97}) | CYCLE_CODES
+G_FUNCTIONS = frozenset({0, 1, 2, 3, 4, 9, 10, 17, 18, 19, 20, 21, 33, 40, 41, 42, 43, 44, 49, 53, 54, 55, 56, 57, 58, 59,
+                         60, 61, 61.1, 64, 70, 71, 90, 91, 92, 92.1, 94, 95, 96, 97}) | CYCLE_CODES
 #: the addresses its functions read besides the axes (O: a program number, as ISO controls read it; it does
 #: nothing); every other letter is refused (NC007), an axis letter the machine lacks is NC011 (nc/axiswords.py)
 ADDRESSES = frozenset("DFGHIJKLMNOPQRST")

@@ -29,6 +29,7 @@ from ...machine.scenario import (
 from ...nc.block import Block
 from ...nc.canon import CanonSink, Src
 from ...nc.kernel import INCH, refused_g
+from ...nc.planner import STOP_END
 from ...nc.spindle import SINUMERIK_GEARS, Gearbox
 from ...runtime.buffer import BlockBuffer
 from ...runtime.locate import generated_frames
@@ -110,6 +111,9 @@ _RUN = {code: attrgetter(row.run) for code, row in AT_CODES.items() if row.run}
 
 #: G numbers outside the 810-880 G groups (CL 800 manual L7392-7410) whose ISO meaning the kernel would
 #: otherwise use: the units are G70/G71
+#: the path control's G codes (kernel.ISO_PATH_CODES): G60 exact stop (the power-on state), G64 continuous
+#: path, G09 exact stop at the end of its block (docs/decisions.md)
+SINUMERIK_PATH_CODES = {9: "block", 60: "exact", 64: "continuous"}
 SINUMERIK_REFUSED = {20: refused_g("not in the SINUMERIK G groups; units are G70/G71"),
                      21: refused_g("not in the SINUMERIK G groups; units are G70/G71")}
 
@@ -171,6 +175,8 @@ class Channel:
         feeds.setup(self.kernel)  # G94-G97, the threads G33-G35
         self.drilling = Drilling(self)  # G80-G89: the drilling cycles L81-L89
         self.kernel.g_handlers.update(self.drilling.handlers())
+        self.kernel.path_codes = SINUMERIK_PATH_CODES
+        self.kernel.exact = STOP_END  # G60 until the program selects G64
         self.cycles = Cycles(self)
         self.rel_inta = RelInta(self)
         self.panel = Panel(self)
@@ -281,6 +287,7 @@ class Channel:
         MEAS M meanwhile become visible to the blocks that follow."""
         self.run_buffer()
         self.rounding.finish()
+        self.kernel.planner.stop()  # decoding waits for the axes: they stop
         R = self.R
         for n, v in self.pending_r.items():
             R[n] = v

@@ -31,6 +31,9 @@ class Card:
         self.session = session
         self.cfg = cfg
         self.canon = session.canon
+        # the card times its moves itself (its own velocity profiles), not the path planner
+        session.canon.timing(None, None, None)
+        session.time_model = "card"
         machine = session.machine
         self.names = cfg.axis_names
         self.axes = [AxisState(i, n, a, cfg) for i, (n, a) in enumerate(zip(self.names, machine.axes))]

@@ -1,0 +1,278 @@
+"""The look-ahead path planner: how long moves take when the control blends blocks (continuous path).
+
+A control in continuous-path mode (ISO/SINUMERIK G64, Bosch G62) does not stop at the end of every
+block: it passes each junction between two moves at a speed the corner allows, and it looks a number of
+blocks ahead (its block buffer) so that it can always still brake to rest within them. The planner does
+the same, after the ideas of grbl's junction-deviation planner and LinuxCNC's trajectory planner (G64
+with a path tolerance); the formulas are written out in docs/planner.md:
+
+* junction speed: the corner between two moves is rounded by the circular arc tangent to both that
+  stays within the corner tolerance of the corner point (``R = tol sin(h) / (1 - sin(h))``, h half the
+  angle between the moves), passed at the speed whose centripetal acceleration the axes can give in the
+  junction's direction (``v^2 = a R``); never faster than either move's own speed. A straight-on
+  junction runs at the lower of the two speeds, a reversal stops;
+* arcs: their speed is capped by the centripetal acceleration ``v^2 <= a R`` (the plane axes' smaller
+  acceleration), straights and arcs by each axis's maximum feed and acceleration
+  (:mod:`ncvm.nc.dynamics`);
+* the window: every junction is passed no faster than lets the axes stop at the end of the window of
+  ``lookahead`` moves that starts there (backward pass), and no faster than they can reach from the
+  move before (forward pass); each move is then a trapezoid between its entry and exit speeds.
+
+Exact stops (a rapid positioning, G60/G61/G09, M functions, dwells, tool changes, waits, program end)
+are junctions at speed 0. The ``rest-to-rest`` model makes every junction one: the old model.
+
+Time and the clock: moves wait in the planner untimed; they are timed when the window moves on (a
+chunk of moves whose window is complete) or when the pending moves are flushed. Reading the simulated
+clock flushes (:class:`ncvm.machine.model.SimClock` calls :meth:`Planner.stop`): the pending moves end at
+rest, as an exact stop, so what a program reads is never a time that a later block could still change.
+
+Both passes are minimum-plus recurrences that become running minima of prefix sums, so a whole chunk
+is planned with a few numpy operations whether its moves came one by one (the kernel's ``rows``) or as
+columns (:mod:`ncvm.nc.plainrun`).
+"""
+
+from __future__ import annotations
+
+import math
+from struct import pack as _pack
+
+import numpy as np
+
+from .dynamics import lengths_columns, straight_limits_columns, trapezoid_time_columns
+
+LOOKAHEAD = "lookahead"
+REST = "rest-to-rest"
+MODELS = (LOOKAHEAD, REST)
+#: row flags: the move ends at rest / starts at rest (a rapid positioning has both)
+STOP_END, STOP_START, POSITIONING = 1, 2, 3
+#: moves planned at once beyond the window (the bound on what waits untimed)
+CHUNK = 4096
+_STRAIGHT, _REVERSAL = -0.999999, 0.999999  # cosines where a junction counts as straight on / as a reversal
+
+
+class Planner:
+    """Moves waiting to be timed, the oldest first, and the speed the last timed one left at.
+
+    A move is ``length`` (mm), its speed and acceleration limits ``v`` (mm/s) and ``a`` (mm/s^2),
+    :data:`STOP_END` / :data:`STOP_START` ``flags`` and the unit tangents at its start and end (equal for a
+    straight move). Waiting moves are kept as arrays of fields by moves (every field a contiguous row for
+    numpy); :mod:`ncvm.nc.plainrun` adds such columns.
+
+    Moves added one by one go to ``rows``, a flat list (the cheapest append), ``4 + n`` numbers each:
+    ``length, v, a, flags, *u_in``, followed for an arc by ``0, 0, 0, -1, *u_out`` (its end tangent). The
+    kernel's straight-move hot path adds ``-1, feed, 0, flags, *deltas`` (feed in mm/min, inf for a rapid
+    move): length, limits and tangent of such a row are worked out here, column-wise, with the formulas of
+    :func:`ncvm.nc.dynamics.path_limits`; it calls :meth:`commit` when ``rows`` holds more than ``limit``.
+    """
+
+    __slots__ = ("clock", "canon", "dyn", "accel", "n", "width", "model", "window", "tolerance", "rows",
+                 "blocks", "limit", "entry2")
+
+    def __init__(self, clock, canon, dyn, model: str = LOOKAHEAD, window: int = 100, tolerance: float = 0.02):
+        self.clock = clock
+        self.canon = canon  # told each timed move's time and speeds (canon ``timing``)
+        self.dyn = dyn  # the axes' limits (nc.dynamics.AxisDynamics)
+        self.accel = np.asarray(dyn.accel, dtype=float)
+        self.n = len(dyn.accel)
+        self.width = 4 + self.n  # the numbers of one row
+        self.model = model
+        self.window = max(1, int(window))
+        self.tolerance = float(tolerance)
+        self.rows: list[float] = []  # moves added one by one, flat
+        self.blocks: list[np.ndarray] = []  # moves waiting as arrays (fields, moves), before ``rows``
+        self.limit = (self.window + CHUNK) * self.width
+        self.entry2 = 0.0  # squared speed (mm/s)^2 the first waiting move starts with
+        clock.pending = self.stop
+
+    def fork(self, clock, canon) -> Planner:
+        """An empty planner of the same machine data on another clock (a shadow kernel's)."""
+        return Planner(clock, canon, self.dyn, self.model, self.window, self.tolerance)
+
+    # -- adding moves ------------------------------------------------------------------------------
+    def add(self, length: float, v: float, a: float, flags: int, u_in, u_out) -> None:
+        """One move (see the class doc for the fields)."""
+        rows = self.rows
+        rows += (length, v, a, flags, *u_in)
+        if u_out != u_in:
+            rows += (0.0, 0.0, 0.0, -1.0, *u_out)
+        if len(rows) > self.limit:
+            self.commit()
+
+    def add_columns(self, length, v, a, flags, u_in, u_out) -> None:
+        """Many moves as columns (``u_in``, ``u_out``: arrays of moves by axes)."""
+        if not len(length):
+            return
+        self._materialise()
+        n = self.n
+        block = np.empty((4 + 2 * n, len(length)))
+        block[0], block[1], block[2], block[3] = length, v, a, flags
+        block[4:4 + n] = u_in.T
+        block[4 + n:] = u_out.T
+        self.blocks.append(block)
+        if self.waiting() > self.window + CHUNK:
+            self.commit()
+
+    def waiting(self) -> int:
+        """Moves waiting (an arc added one by one counts twice until it is materialised)."""
+        return sum(b.shape[1] for b in self.blocks) + len(self.rows) // self.width
+
+    def _materialise(self) -> None:
+        """The moves of ``rows`` as an array (fields, moves) at the end of ``blocks``."""
+        rows = self.rows
+        if not rows:
+            return
+        n = self.n
+        r = np.frombuffer(_pack(f"{len(rows)}d", *rows)).reshape(-1, self.width).T
+        rows.clear()
+        ends = r[3] < 0.0  # an arc's end tangent, in the row after its own
+        u_out = None
+        if ends.any():
+            at = np.flatnonzero(ends)
+            u_out = r[4:].copy()
+            u_out[:, at - 1] = r[4:, at]
+            keep = ~ends
+            r, u_out = r[:, keep], u_out[:, keep]
+        m = np.empty((4 + 2 * n, r.shape[1]))
+        m[:4] = r[:4]
+        m[4:4 + n] = r[4:]
+        derived = np.flatnonzero(r[0] < 0.0)  # the hot path's straight moves: deltas and the feed
+        if len(derived):
+            d = r[4:, derived].T
+            length = lengths_columns(d)
+            rapid = r[3, derived] == POSITIONING
+            v, a = straight_limits_columns(self.dyn, d, length, rapid, r[1, derived])
+            m[0, derived], m[1, derived], m[2, derived] = length, v, a
+            m[4:4 + n, derived] = (d / length[:, None]).T
+        m[4 + n:] = m[4:4 + n] if u_out is None else u_out
+        if u_out is not None and len(derived):
+            m[4 + n:, derived] = m[4:4 + n, derived]
+        self.blocks.append(m)
+
+    # -- timing ------------------------------------------------------------------------------------
+    def commit(self) -> None:
+        """Time the waiting moves whose window is complete (all but the last ``window``)."""
+        self._materialise()
+        self._plan(self.waiting() - self.window)
+
+    def stop(self) -> None:
+        """Exact stop: time every waiting move, the last ending at rest."""
+        if self.rows or self.blocks:
+            self._plan(None)
+        self.entry2 = 0.0
+
+    def _plan(self, k: int | None) -> None:
+        self._materialise()
+        m = self.blocks[0] if len(self.blocks) == 1 else np.concatenate(self.blocks, axis=1)
+        p = m.shape[1]
+        k = p if k is None else k
+        if k <= 0:
+            self.blocks = [m]
+            return
+        length, v, a = m[0], m[1], m[2]
+        w = self._speeds(m)
+        times = move_times(length[:k], v[:k], a[:k], w[:k], w[1:k + 1])
+        clock = self.clock
+        clock.settle(float(np.cumsum(np.concatenate(([clock.settled], times)))[-1]))  # in move order
+        self.entry2 = float(w[k])
+        self.blocks = [m[:, k:]] if k < p else []
+        self.canon.timing(times, np.sqrt(w[:k]) * 60.0, np.sqrt(w[1:k + 1]) * 60.0)
+
+    def _speeds(self, m) -> np.ndarray:
+        """Squared junction speeds of the moves ``m`` (fields, moves): the entry of each move, then the exit
+        of the last (0: it may have to stop)."""
+        length, v, a = m[0], m[1], m[2]
+        p = len(length)
+        j = np.zeros(p + 1)
+        if self.model == LOOKAHEAD and p > 1:
+            n = self.n
+            flags = m[3].astype(np.int64)
+            stop = ((flags[:-1] & STOP_END) | (flags[1:] & STOP_START)) != 0
+            if not stop.all():
+                j[1:p] = junction_speeds2(m[4 + n:4 + 2 * n, :-1], m[4:4 + n, 1:], v[:-1], v[1:], stop,
+                                          self.accel, self.tolerance)
+        j[0] = self.entry2
+        if not j.any():  # every move from rest to rest (exact stop, the rest-to-rest model)
+            return j
+        c = 2.0 * a * length  # what each move can change the squared speed by
+        s = np.zeros(p + 1)
+        np.cumsum(c, out=s[1:])
+        # backward: b_i = min over k >= i of (j_k + s_k) - s_i; and a stop within the window of moves from i
+        b = np.minimum.accumulate((j + s)[::-1])[::-1] - s
+        win = self.window
+        if win < p:
+            np.minimum(b[:p + 1 - win], s[win:] - s[:p + 1 - win], out=b[:p + 1 - win])
+        b[0] = j[0]
+        # forward: w_i = min over k <= i of (b_k - s_k) + s_i
+        w = np.minimum.accumulate(b - s) + s
+        return np.maximum(w, 0.0, out=w)
+
+
+def junction_speeds2(u_prev, u_next, v_prev, v_next, stop, accel, tolerance: float) -> np.ndarray:
+    """Squared speeds (mm/s)^2 at the junctions from moves ending with tangent ``u_prev`` to moves starting
+    with ``u_next`` (unit vectors, arrays of axes by junctions), at most both moves' speeds; 0 where
+    ``stop`` (either side stops) or the moves reverse."""
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        cos = -np.einsum("ij,ij->j", u_prev, u_next)
+        jv = u_next - u_prev  # the direction the velocity changes in: the axes' acceleration limits apply there
+        # min over axes of accel_i / (|jv_i| / |jv|)
+        acc = np.sqrt(np.einsum("ij,ij->j", jv, jv)) / (np.abs(jv) / accel[:, None]).max(axis=0)
+        sin_half = np.sqrt(np.maximum(0.5 * (1.0 - cos), 0.0))
+        slower = np.minimum(v_prev, v_next)
+        slower *= slower
+        j = np.minimum(acc * (tolerance * sin_half / (1.0 - sin_half)), slower)
+    straight = cos <= _STRAIGHT
+    j[straight] = slower[straight]
+    j[(cos >= _REVERSAL) | stop] = 0.0
+    return j
+
+
+def move_times(length, v, a, w0, w1) -> np.ndarray:
+    """Time of each move from squared entry speed ``w0`` to squared exit speed ``w1``: accelerate, cruise at
+    ``v`` if the length allows, decelerate. Moves from rest to rest take :func:`trapezoid_time_columns`'s
+    time exactly (the rest-to-rest model's figures stay as they were)."""
+    rest = (w0 == 0.0) & (w1 == 0.0)
+    if rest.all():
+        return trapezoid_time_columns(length, v, a)
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        v0, v1 = np.sqrt(w0), np.sqrt(w1)
+        cruise = length - (2.0 * v * v - w0 - w1) / (2.0 * a)
+        peak = np.minimum(v, np.sqrt(a * length + 0.5 * (w0 + w1)))
+        peak = np.maximum(peak, np.maximum(v0, v1))
+        t = (2.0 * peak - v0 - v1) / a + np.maximum(cruise, 0.0) / v
+    rest = np.flatnonzero(rest)
+    if len(rest):
+        t[rest] = trapezoid_time_columns(length[rest], v[rest], a[rest])
+    return t
+
+
+def arc_tangents(start, end, spec, sweep: float, length: float, n: int) -> tuple[tuple, tuple]:
+    """Unit tangents at the start and end of an arc (a helix: the axes off the plane move linearly)."""
+    a, b = spec.a, spec.b
+    ca, cb = spec.center
+    turn = 1.0 if sweep >= 0.0 else -1.0
+    plane = spec.radius * abs(sweep)
+    tangents = []
+    for p in (start, end):
+        phi = math.atan2(p[b] - cb, p[a] - ca)
+        u = [(e - s) / length if length > 0.0 else 0.0 for s, e in zip(start, end)]
+        u[a] = -turn * math.sin(phi) * plane / length if length > 0.0 else 0.0
+        u[b] = turn * math.cos(phi) * plane / length if length > 0.0 else 0.0
+        tangents.append(tuple(u))
+    return tangents[0], tangents[1]
+
+
+def arc_tangents_columns(start, end, a: int, b: int, center, radius, sweep, length):
+    """:func:`arc_tangents` for columns of arcs in one plane: (u_in, u_out), arrays of arcs by axes."""
+    with np.errstate(divide="ignore", invalid="ignore"):
+        inv = np.where(length > 0.0, 1.0 / length, 0.0)
+        line = (end - start) * inv[:, None]
+        plane = radius * np.abs(sweep) * inv
+        turn = np.where(sweep >= 0.0, 1.0, -1.0)
+        out = []
+        for p in (start, end):
+            phi = np.arctan2(p[:, b] - center[:, 1], p[:, a] - center[:, 0])
+            u = line.copy()
+            u[:, a] = -turn * np.sin(phi) * plane
+            u[:, b] = turn * np.cos(phi) * plane
+            out.append(u)
+    return out[0], out[1]
