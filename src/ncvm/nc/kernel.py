@@ -10,6 +10,11 @@ Coordinates: the kernel keeps the *programmed* position (workpiece
 coordinates, mm) and the sum of active offsets per axis; machine position =
 programmed + offsets. Canon calls carry machine positions.
 
+The G functions a block may carry, and what each does, come from the kernel's control profile
+(:mod:`ncvm.nc.profiles`, selected with :meth:`NcKernel.use_profile`; ``iso`` by default): a G number
+is one dict lookup, whose row says whether it sets modal state at once, is the block's motion, a dwell,
+and so on. A number the profile lacks stops the block with NC004.
+
 Dialect extension points: ``g_handlers`` maps extra G numbers to handlers
 (``handler(kernel, g, words, src) -> bool``, True when the block's axis words
 were parameters, not a target), run after the block's other G codes; and
@@ -29,11 +34,10 @@ from . import arcs, cutter
 from .canon import ArcSpec, Canon, Src
 from .dynamics import AxisDynamics, arc_limits, trapezoid_time
 from .fastmove import make_linear
+from .profiles import ALONE, CYCLE, DWELL, INCH, LATE, MACHINE, MOTION, POSITION, SET, Profile
 
-INCH = 25.4
 #: plane G number -> (first axis, second axis, normal axis, first centre word, second centre word)
 PLANES = {17: ("X", "Y", "Z", "I", "J"), 18: ("Z", "X", "Y", "K", "I"), 19: ("Y", "Z", "X", "J", "K")}
-WORK_OFFSETS = {54: "G54", 55: "G55", 56: "G56", 57: "G57", 58: "G58", 59: "G59"}
 NON_AXIS = frozenset("FSTDHIJKRPLN")
 _MOTION_G = frozenset((0, 1, 2, 3))
 
@@ -50,7 +54,7 @@ def refused_g(meaning: str):
 class NcKernel:
     """Executes blocks on a :class:`Machine`, reporting motion through a :class:`Canon`."""
 
-    def __init__(self, machine: Machine, canon: Canon):
+    def __init__(self, machine: Machine, canon: Canon, profile: Profile | None = None):
         self.machine = machine
         self.canon = canon
         names = machine.axis_names
@@ -65,6 +69,11 @@ class NcKernel:
         self.linear = self._fast_linear
         #: G number -> handler(kernel, g, words, src) -> True when the block's axis words are parameters
         self.g_handlers: dict = {}
+        #: the control profile: its G table (``g_table``, G number -> (run, handler)) and the handlers of the
+        #: addresses it reads (``word_handlers``), see use_profile
+        if profile is None:
+            from .profiles.iso import ISO as profile
+        self.use_profile(profile)
         #: None, or an object with forward(vec), inverse(vec) and plane_similarity(a, b) (see set_transform)
         self.transform = None
         #: the active cutter radius compensation (:class:`ncvm.nc.cutter.CutterComp`), None under G40
@@ -117,6 +126,19 @@ class NcKernel:
         self.stop_block: int | None = None
         canon.begin(names, self.machine_pos)
 
+    def use_profile(self, profile: Profile) -> None:
+        """Read blocks as the control of ``profile`` does (a dialect selects its control's profile)."""
+        self.profile = profile
+        self.g_table = profile.dispatch
+        self.word_handlers = profile.word_handlers
+        #: group -> G number programmed, for the groups whose active function is all ncvm models of them
+        #: (profiles.modal_only); a group not in it has the profile's default
+        self.modal: dict = {}
+
+    def active_in(self, group: str):
+        """The G number active in a ``modal`` group of the profile."""
+        return self.modal.get(group, self.profile.defaults.get(group))
+
     # -- copies and placement ----------------------------------------------
     def fork(self) -> NcKernel:
         """A copy that runs blocks ahead of this kernel (a shadow of the state after the prepared blocks, a
@@ -133,6 +155,7 @@ class NcKernel:
         k.prog, k.g92, k.offset_vec, k.additive = list(self.prog), list(self.g92), list(self.offset_vec), \
             list(self.additive)
         k.canned = copy.copy(self.canned)
+        k.modal = dict(self.modal)
         return k
 
     def place(self, machine_pos, prog=None) -> None:
@@ -225,64 +248,49 @@ class NcKernel:
         handlers = self.g_handlers
         extra = None
         cycle_g = False
+        table = self.g_table
         for g in block.g:
             if handlers and g in handlers:
                 extra = [g] if extra is None else extra + [g]
-            elif g in (0, 1, 2, 3):
+                continue
+            entry = table.get(g)
+            if entry is None:
+                self.fault("NC004", f"G{g:g} is not supported", src)
+            run = entry[0]
+            if run == SET:
+                entry[1](self, g, words, src)
+            elif run == MOTION:
                 motion = g
-            elif g == 4:
+            elif run == DWELL:
                 dwell_block = True
-            elif g in (17, 18, 19):
-                self.plane = g
-            elif g == 90:
-                self.absolute = True
-            elif g == 91:
-                self.absolute = False
-            elif g in (70, 20):
-                self.scale = INCH
-            elif g in (71, 21):
-                self.scale = 1.0
-            elif g in WORK_OFFSETS:
-                self.set_work_offset(WORK_OFFSETS[g])
-            elif g == 53:
-                machine_coords = True
-            elif g == 40 or g == 41 or g == 42:
-                cutter.select(self, g, words, src)
-            elif g == 94 or g == 64 or g == 60:
-                pass
-            elif g == 96:
-                self.css = True
-            elif g == 97:
-                self._g97()
-            elif g == 43 or g == 44:
-                number = int(words.get("H", words.get("D", self.tool)))
-                length = self._tool(number, src).length if number else 0.0
-                self.set_tool_length(length if g == 43 else -length, src)
-            elif g == 49:
-                self.set_tool_length(0.0, src)
-            elif g == 92:
-                set_position = True
-            elif g == 92.1:
-                self.g92 = [0.0] * self.n_axes
-                self._set_offsets_keep_machine()
-            elif g == 10:
-                self._set_offset_table(words, src)
-                return
-            elif self.canned is not None and g in self.canned.codes:
-                if self.comp is not None and g < 98:
+            elif run == LATE:
+                extra = [g] if extra is None else extra + [g]
+            elif run == CYCLE:
+                if self.canned is None or g not in self.canned.codes:
+                    if g != 80:
+                        self.fault("NC004", f"G{g:g} is not supported", src)
+                elif self.comp is not None and g < 98:
                     self.fault("NC012", f"G{g}: no canned cycle while cutter radius compensation is on", src)
-                if g >= 98:
+                elif g >= 98:
                     self.canned.retract_to_r = g == 99
                 else:
                     motion, cycle_g = g, True
-            elif g == 80:
-                pass
-            else:
-                self.fault("NC004", f"G{g} is not supported", src)
+            elif run == POSITION:
+                set_position = True
+            elif run == MACHINE:
+                machine_coords = True
+            else:  # ALONE: the block is this function alone (G10 L2 writes a table)
+                entry[1](self, g, words, src)
+                return
         words_taken = False
         if extra is not None:
             for g in extra:
-                words_taken = handlers[g](self, g, words, src) or words_taken
+                handler = handlers[g] if g in handlers else table[g][1]
+                words_taken = handler(self, g, words, src) or words_taken
+        if self.word_handlers:
+            for letter, handler in self.word_handlers.items():
+                if letter in words:
+                    handler(self, words[letter], words, src)
         if "F" in words and not dwell_block:
             self.feed = words["F"] * self.scale if self.scale != 1.0 else words["F"]
         if "S" in words:

@@ -15,11 +15,10 @@ import re
 from ...diagnostics import Diagnostic, Span
 from ...nc.axiswords import AXIS_LETTERS
 from ...nc.block import WORD, PlainRun
-from ...nc.cycles import CODES as CYCLE_CODES
+from ...nc.profiles.iso import ISO
 
-#: the G functions the profile runs (nc/kernel.py NcKernel.execute, nc/cycles.py)
-G_FUNCTIONS = frozenset({0, 1, 2, 3, 4, 10, 17, 18, 19, 20, 21, 40, 41, 42, 43, 44, 49, 53, 54, 55, 56, 57, 58, 59, 60,
-                         64, 70, 71, 90, 91, 92, 92.1, 94, 96, 97}) | CYCLE_CODES
+#: the G functions the profile runs (its rows, nc/profiles/iso.py)
+G_FUNCTIONS = frozenset(ISO.by_g)
 #: the addresses its functions read besides the axes (O: a program number, as ISO controls read it; it does
 #: nothing); every other letter is refused (NC007), an axis letter the machine lacks is NC011 (nc/axiswords.py)
 ADDRESSES = frozenset("DFGHIJKLMNOPQRST")
