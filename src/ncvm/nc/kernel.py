@@ -34,7 +34,8 @@ from . import arcs, cutter
 from .canon import ArcSpec, Canon, Src
 from .dynamics import AxisDynamics, arc_limits, trapezoid_time
 from .fastmove import make_linear
-from .profiles import ALONE, CYCLE, DWELL, INCH, LATE, MACHINE, MOTION, POSITION, SET, Profile
+from .profiles import CYCLE, DWELL, LATE, MACHINE, MOTION, POSITION, SET, Profile
+from .profiles import INCH as INCH  # the unit of G70, read by the dialects
 
 #: plane G number -> (first axis, second axis, normal axis, first centre word, second centre word)
 PLANES = {17: ("X", "Y", "Z", "I", "J"), 18: ("Z", "X", "Y", "K", "I"), 19: ("Y", "Z", "X", "J", "K")}
