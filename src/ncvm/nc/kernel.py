@@ -34,7 +34,7 @@ from . import arcs, cutter
 from .canon import ArcSpec, Canon, Src
 from .dynamics import AxisDynamics, arc_limits, trapezoid_time
 from .fastmove import make_linear
-from .profiles import CYCLE, DWELL, LATE, MACHINE, MOTION, POSITION, SET, Profile
+from .profiles import CYCLE, DWELL, LATE, MACHINE, MOTION, POSITION, SET, Profile, unknown_g
 from .profiles import INCH as INCH  # the unit of G70, read by the dialects
 
 #: plane G number -> (first axis, second axis, normal axis, first centre word, second centre word)
@@ -82,6 +82,9 @@ class NcKernel:
         #: where G41/G42 take the tool radius: ``radius(kernel, g, words, src) -> mm``; a front end whose
         #: control numbers its tool data otherwise sets its own (or a refusal)
         self.cutter_radius = cutter.iso_radius
+        #: where a profile's length compensation word (Bosch H) takes its length:
+        #: ``length(kernel, table, group, src) -> mm``; None: the machine's tool table (profiles.typ3osa)
+        self.length_compensation = None
         #: when an arc's end lies too far off its start radius (a machine datum of the control's profile)
         self.arc_tolerance = arcs.KERNEL
         #: None, or the canned cycles of a profile that has them (:class:`ncvm.nc.cycles.CannedCycles`): then
@@ -256,7 +259,7 @@ class NcKernel:
                 continue
             entry = table.get(g)
             if entry is None:
-                self.fault("NC004", f"G{g:g} is not supported", src)
+                unknown_g(self, g, src)
             run = entry[0]
             if run == SET:
                 entry[1](self, g, words, src)

@@ -48,7 +48,7 @@ class Row:
     status: str
     run: int = SET
     handler: Callable | None = None
-    code: str = "NC004"  # the code a refused row stops the run with
+    code: str = ""  # the code a refused row stops the run with ("" for a row ncvm runs)
 
 
 @dataclass(frozen=True, slots=True)
@@ -89,7 +89,7 @@ class Profile:
     def refused(self, g) -> Row | None:
         """The row of a G function the profile refuses (None: it runs it, or the kernel does not know it)."""
         row = self.by_g.get(g)
-        return row if row is not None and row.status == REFUSED else None
+        return row if row is not None and row.code else None
 
     def group_of(self, g) -> str | None:
         row = self.by_g.get(g)
@@ -106,6 +106,12 @@ def refusal(meaning: str, code: str = "NC004"):
 def refused(g, group: str, meaning: str, line: str, status: str = REFUSED, code: str = "NC004") -> Row:
     """A row the kernel refuses with NC004 naming ``meaning``."""
     return Row(g, group, meaning, line, status, SET, refusal(meaning, code), code)
+
+
+def unknown_g(kernel, g, src):
+    """NC004 for a G number the profile does not have."""
+    kernel.fault("NC004", f"G{g:g} is not a G function of the {kernel.profile.name} profile: not supported by ncvm",
+                 src)
 
 
 def modal_only(group: str):
