@@ -28,7 +28,8 @@ from ...machine.scenario import (
 )
 from ...nc.block import Block
 from ...nc.canon import CanonSink, Src
-from ...nc.kernel import INCH, refused_g
+from ...nc.kernel import INCH
+from ...nc.profiles.sinumerik8xx import SINUMERIK8XX
 from ...nc.spindle import SINUMERIK_GEARS, Gearbox
 from ...runtime.buffer import BlockBuffer
 from ...runtime.locate import generated_frames
@@ -105,11 +106,6 @@ NAMESPACE_GLOBALS = {
 _RUN = {code: attrgetter(row.run) for code, row in AT_CODES.items() if row.run}
 
 
-#: G numbers outside the 810-880 G groups (CL 800 manual L7392-7410) whose ISO meaning the kernel would
-#: otherwise use: the units are G70/G71
-SINUMERIK_REFUSED = {20: refused_g("not in the SINUMERIK G groups; units are G70/G71"),
-                     21: refused_g("not in the SINUMERIK G groups; units are G70/G71")}
-
 #: the scenario events the SINUMERIK channel reads
 SINUMERIK_EVENTS = (ExternalInput, PlcChange, PlcTimer, PlcCounter, Alarm, ProbeSwitch)
 
@@ -163,7 +159,7 @@ class Channel:
         self.positions = Positions(self)
         self.offsets = Offsets(self)
         self.kernel.cutter_radius = self.offsets.cutter_radius  # G41/G42: the radius of the TO area's offset D
-        self.kernel.g_handlers.update(SINUMERIK_REFUSED)
+        self.kernel.use_profile(SINUMERIK8XX)  # the 810-880 G groups (nc/profiles/sinumerik8xx.py)
         self.cycles = Cycles(self)
         self.rel_inta = RelInta(self)
         self.panel = Panel(self)
