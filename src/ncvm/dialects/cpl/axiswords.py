@@ -13,6 +13,8 @@ import re
 from ...diagnostics import Diagnostic, read_lines
 from ...nc.axiswords import is_dwell, is_missing_axis, names_axis
 from ...nc.block import row_line
+from ...nc.profiles.check import g_column, refused_g_warnings
+from ...nc.profiles.typ3osa import TYP3OSA
 from . import ast as A
 from .errors import CplError, diag
 
@@ -36,6 +38,17 @@ def axis_diagnostics(prog: A.Program, axes, lines: list[str] | None) -> list[Dia
     """``ncvm check``: error 1938 at each word for a missing axis, with the word's column when it is found."""
     return [diag(CODE, detail(address, axes), prog.path, s.line, _column(lines, s, address), s.cpl)
             for s, address in missing_axis_blocks(prog, axes)]
+
+
+def refused_g_diagnostics(prog: A.Program, lines: list[str] | None) -> list[Diagnostic]:
+    """``ncvm check``: warnings for the G functions the Typ3 osa profile refuses (nc/profiles/check.py)."""
+    uses = []
+    for s in prog.stmts:
+        if isinstance(s, A.NcBlock):
+            text = lines[s.line - 1] if lines and s.line <= len(lines) else ""
+            uses.extend((w.value, s.line, g_column(text, w.value) or s.col or 1) for w in s.words
+                        if w.address == "G" and w.value is not None)
+    return refused_g_warnings(TYP3OSA, prog.path, uses)
 
 
 def refused_blocks(prog: A.Program, axes) -> dict[int, tuple[str, int]]:

@@ -19,6 +19,8 @@ from ...diagnostics import Diagnostic, Span
 from ...nc.axiswords import is_dwell, is_missing_axis, missing_axis_message, names_axis
 from ...nc.block import Block
 from ...nc.canon import Src
+from ...nc.profiles.check import refused_g_warnings
+from ...nc.profiles.sinumerik8xx import SINUMERIK8XX
 from ...runtime.codegen import PySource
 from .atcodes import AT_CODES, AtCode
 from .finite import checked
@@ -41,6 +43,17 @@ def missing_axis(address: str, axes, dwell: bool = False) -> bool:
 def dwells(items) -> bool:
     """A dwell block (G4): its X is the time."""
     return is_dwell(it.value for it in items if isinstance(it, Word) and it.address == "G")
+
+
+def refused_g_diagnostics(prog: PartProgram) -> list[Diagnostic]:
+    """``ncvm check``: warnings for the G functions the SINUMERIK 810-880 profile refuses (nc/profiles/check.py)."""
+    return refused_g_warnings(SINUMERIK8XX, prog.path, [(it.value, blk.line, it.col) for blk in prog.blocks
+                                                         for it in blk.items if g_word(it)])
+
+
+def g_word(it) -> bool:
+    """A G word with a constant value (G=R.. is refused by the block compiler itself, SIN001)."""
+    return isinstance(it, Word) and it.address == "G" and it.value is not None
 
 
 def axis_diagnostics(prog: PartProgram, axes) -> list[Diagnostic]:

@@ -107,8 +107,8 @@ ROWS = (
     _row(53, "0 non-modal", "move in machine coordinates (this block)", "rs274 group 0", MACHINE),
     *(_row(g, "12 coordinate system", f"select work offset {name}", "rs274 group 12", SET, work_offset)
       for g, name in WORK_OFFSETS.items()),
-    _row(60, "0 non-modal", "unidirectional positioning (positions as G0)", "rs274 group 0", SET, nothing),
-    _row(64, "13 path control", "path blending", "rs274 group 13", SET, nothing),
+    _row(60, "0 non-modal", "unidirectional approach (ncvm moves straight to the target)", "rs274 group 0", SET, nothing),
+    _row(64, "13 path control", "path blending (ncvm times each move to rest)", "rs274 group 13", SET, nothing),
     _row(70, "6 units", "inch (DIN 66025)", "DIN 66025", SET, inch),
     _row(71, "6 units", "millimetre (DIN 66025)", "DIN 66025", SET, metric),
     _row(90, "3 distance mode", "absolute distances", "rs274 group 3", SET, absolute),
