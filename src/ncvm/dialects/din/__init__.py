@@ -10,6 +10,8 @@ from ...nc.block import PlainRun, read_din_segments
 from ...nc.canon import Src
 from ...nc.cycles import CannedCycles
 from ...nc.plainrun import execute_columns
+from ...nc.profiles.iso import ISO
+from ...nc.profiles.named import PROFILES
 from ...source import lines as program_lines
 from ..base import Dialect
 from .ngc import fold_extensions
@@ -33,7 +35,8 @@ class DinDialect(Dialect):
         segments, diags = read_din_segments(path, text)
         diags = fold_extensions(diags, program_lines(text)) if diags else diags
         diags += [d for _i, _row, d in din_missing_axes(path, text, segments, machine.axis_names)]
-        diags += unsupported(path, segments, program_lines(text), machine.axis_names)
+        diags += unsupported(path, segments, program_lines(text), machine.axis_names,
+                             PROFILES[options(machine).profile])
         return sorted(diags, key=lambda d: (d.span.line, d.span.column or 0))
 
     def run(self, path, text, session):
@@ -41,8 +44,11 @@ class DinDialect(Dialect):
         if diags:
             raise CompileFailed(fold_extensions(diags, program_lines(text)))
         kernel = session.kernel
-        kernel.arc_tolerance = arc_tolerance(options(session.machine))
-        kernel.canned = CannedCycles()
+        opts = options(session.machine)
+        kernel.arc_tolerance = arc_tolerance(opts)
+        profile = PROFILES[opts.profile]  # [din] profile: the control whose G table the blocks are read with
+        kernel.use_profile(profile)
+        kernel.canned = CannedCycles() if profile is ISO else None  # LinuxCNC's canned cycles are the iso rows
         skip_active = bool(session.machine.setting_data.get("block_skip", True))
         # a block with a word for an axis the machine lacks is refused when the run reaches it (found here,
         # once, so the blocks before it run as they are)

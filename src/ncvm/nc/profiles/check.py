@@ -10,25 +10,27 @@ from __future__ import annotations
 import re
 
 from ...diagnostics import Diagnostic, Span
-from . import Profile
+from . import DIALECT, Profile
 
 _COMMENTS = re.compile(r"\([^)]*\)|;.*")
 
 
-def refused_g_warnings(profile: Profile, path: str, uses) -> list[Diagnostic]:
-    """``uses``: (G number, line, column or None) of every constant G word of a program, in program order."""
+def refused_g_warnings(profile: Profile, path: str, uses, dialect_runs: bool = True) -> list[Diagnostic]:
+    """``uses``: (G number, line, column or None) of every constant G word of a program, in program order.
+    ``dialect_runs``: the profile's own dialect runs the rows it takes out of the block (a ``din`` program
+    read with another control's profile has no such front end: those rows are refused too)."""
     found: dict = {}  # g -> [line, column, count]
     by_g = profile.by_g
     for g, line, column in uses:
         row = by_g.get(g)
-        if row is None or row.code:
+        if row is None or row.code or (not dialect_runs and row.status == DIALECT):
             found.setdefault(g, [line, column, 0])[2] += 1
     out = []
     for g, (line, column, count) in found.items():
         row = by_g.get(g)
         what = f"G{g:g} ({row.meaning})" if row else f"G{g:g} (not a G function of the {profile.name} profile)"
         more = f"; {count} blocks use it" if count > 1 else ""
-        out.append(Diagnostic(row.code if row else "NC004", f"{what} is not supported by ncvm: the run stops here{more}",
+        out.append(Diagnostic(row.code if row and row.code else "NC004", f"{what} is not supported by ncvm: the run stops here{more}",
                               Span(path, line, column), severity="warning"))
     return out
 

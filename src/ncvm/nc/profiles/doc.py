@@ -9,11 +9,9 @@ import sys
 from pathlib import Path
 
 from . import Profile
-from .iso import ISO
-from .sinumerik8xx import SINUMERIK8XX
-from .typ3osa import TYP3OSA
+from .named import PROFILES as BY_NAME
 
-PROFILES = (ISO, TYP3OSA, SINUMERIK8XX)
+PROFILES = tuple(BY_NAME.values())
 DIALECTS = {"iso": "`din` (and `[din] profile` of the machine file)", "typ3osa": "`cpl`",
             "sinumerik8xx": "`sin800`, `cl800`"}
 DOC = Path(__file__).resolve().parents[4] / "docs" / "profiles.md"
