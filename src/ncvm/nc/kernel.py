@@ -43,15 +43,6 @@ NON_AXIS = frozenset("FSTDHIJKRPLN")
 _MOTION_G = frozenset((0, 1, 2, 3))
 
 
-def refused_g(meaning: str):
-    """A ``g_handlers`` entry for a G number the dialect's control gives a meaning ncvm does not run yet:
-    the block stops with NC004 naming that meaning, so the ISO meaning of the number is never used in its
-    place (issue 14: Bosch G20 selects a plane, not inch)."""
-    def refuse(kernel, g, words, src):
-        kernel.fault("NC004", f"G{g} ({meaning}) is not supported by ncvm", src)
-    return refuse
-
-
 class NcKernel:
     """Executes blocks on a :class:`Machine`, reporting motion through a :class:`Canon`."""
 
