@@ -135,3 +135,18 @@ def test_every_group_of_the_supplementary_table_has_its_rows_l2302():
     for group, numbers in table.items():
         for g in numbers:
             assert TYP3OSA.group_of(g) == str(group), g
+
+
+def test_an_address_no_function_reads_stops_the_run_and_check_warns_of_it(run, run_text, reference, tmp_path):
+    """Issue 14 §1 "never silently ignore a word", §5 "check sees what run will refuse": E is no address of
+    the Typ3 osa profile (its addresses: the axes, F S T H D I J K R, P, G M N L); the run stops there with
+    NC007 after the block before it moved, and check warns in the same code."""
+    from ncvm.api import check
+
+    r = run("N1 G1 X1 F100\nN2 G1 X2 E5\nM30\n")
+    assert r["error"]["code"] == "NC007" and r["error"]["line"] == 2 and r["position"]["X"] == 1.0
+    assert "not supported by ncvm" in r["error"]["message"]
+    prog = tmp_path / "e.cpl"
+    prog.write_text("N1 G1 X1 F100\nN2 G1 X2 E5\nM30\n")
+    diags = check(prog, dialect="cpl", machine=reference())
+    assert [(d.code, d.span.line, d.span.column, d.severity) for d in diags] == [("NC007", 2, 10, "warning")]

@@ -54,3 +54,16 @@ def test_every_internal_group_of_the_table_has_its_rows_l7392():
     for group, numbers in table.items():
         for g in numbers:
             assert SINUMERIK8XX.group_of(g) == str(group), g
+
+
+def test_an_address_no_function_reads_stops_the_run_and_check_warns_of_it(tmp_path):
+    """Q is no address of the SINUMERIK blocks ncvm runs: NC007 where it stands (after N10 moved), and a
+    warning of ``ncvm check`` in the same code; an axis the machine lacks stays the error NC011."""
+    from ncvm.api import check
+
+    r = run_mpf(tmp_path, "%MPF1\nN10 G1 X1 F100\nN20 X2 Q7\nN30 M30\n", machine_text=LATHE)
+    assert r["error"]["code"] == "NC007" and r["error"]["line"] == 3 and r["position"]["X"] == 1.0
+    (tmp_path / "q.mpf").write_text("%MPF1\nN10 G1 X1 F100\nN20 X2 Q7 Y3\nN30 M30\n")
+    diags = check(tmp_path / "q.mpf", dialect="sin800", machine=tmp_path / "machine.toml")
+    assert sorted((d.code, d.span.line, d.severity) for d in diags) == [("NC007", 3, "warning"),
+                                                                        ("NC011", 3, "error")]

@@ -426,11 +426,11 @@ class Channel:
     def fault(self, code: str, message: str, line: int):
         raise RuntimeFault(code, message)
 
-    def refuse_axis(self, message: str, line: int, column: int | None = None):
-        """A word for an axis the machine lacks (NC011): refused after the blocks decoded before it ran, at the
-        word, where ``ncvm check`` shows it."""
+    def refuse_axis(self, refusal: tuple[str, str], line: int, column: int | None = None):
+        """A word for an axis the machine lacks (NC011) or an address ncvm reads not (NC007), as (code, message):
+        refused after the blocks decoded before it ran, at the word, where ``ncvm check`` shows it."""
         self.run_buffer()
-        raise RuntimeFault("NC011", message, Span(self._current_path(), line, column))
+        raise RuntimeFault(*refusal, Span(self._current_path(), line, column))
 
     # -- main groups 0 and 2 ---------------------------------------------
     def ess(self) -> None:

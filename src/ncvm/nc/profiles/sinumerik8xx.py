@@ -22,6 +22,7 @@ from . import (
     MOTION,
     REFUSED,
     SET,
+    Address,
     Profile,
     Row,
     refusal,
@@ -121,8 +122,23 @@ ROWS = (
     _no(21, "", "not in the SINUMERIK G groups; units are G70/G71"),
 )
 
+ADDRESSES = (
+    Address("F", "feed; the dwell time after G4 (G4 F=R27, L5465)", "L1053", IMPLEMENTED),
+    Address("S", "spindle speed; the cutting speed under G96; the limit after G92", "L6542", IMPLEMENTED),
+    Address("T", "tool", "", IMPLEMENTED),
+    Address("D", "tool offset of the TO area (length, and the radius of G41/G42)", "", IMPLEMENTED),
+    Address("L", "sub-program call (L50 P1)", "", IMPLEMENTED),
+    Address("P", "number of passes of an L call", "", IMPLEMENTED),
+    Address("I", "circle centre, first axis (PRIP)", "L3350", IMPLEMENTED),
+    Address("J", "circle centre, second axis (PRIP)", "L3350", IMPLEMENTED),
+    Address("K", "circle centre, third axis (PRIP)", "L3350", IMPLEMENTED),
+    Address("R", "circle radius (PRAD)", "", IMPLEMENTED),
+    Address("B", "circle radius where B is no axis (N5 X400 Y50 B100, L4237)", "L4237", CYCLES),
+    Address("A", "the angle address where A is no axis (PANG)", "", IMPLEMENTED),
+)
+
 SINUMERIK8XX = Profile(
-    "sinumerik8xx", "Siemens CL 800 planning guide §11.5 (SINUMERIK 810-880)", ROWS,
+    "sinumerik8xx", "Siemens CL 800 planning guide §11.5 (SINUMERIK 810-880)", ROWS, ADDRESSES,
     defaults={"0": 0, "2": 17, "3": 40, "5": 54, "7": 60, "8": 71, "9": 80, "10": 90, "11": 94},
     groups={"0": "interpolation", "1": "exact stop", "2": "plane", "3": "cutter radius compensation",
             "4": "zero offset suppression", "5": "settable zero offset", "6": "blockwise functions",

@@ -9,10 +9,10 @@ from __future__ import annotations
 
 from dataclasses import fields
 
-from ....diagnostics import Diagnostic, Span, read_lines
-from ....nc.axiswords import missing_axis_message
+from ....diagnostics import Diagnostic, read_lines
 from ....nc.profiles.check import refused_g_warnings
 from ....nc.profiles.sinumerik8xx import SINUMERIK8XX
+from ..codegen import _word_diagnostic as word_diagnostic
 from ..codegen import dwells, g_word, missing_axis
 from ..errors import ReadError
 from ..reader import Word, read_block
@@ -37,7 +37,7 @@ def axis_diagnostics(path: str, prog, axes) -> list[Diagnostic]:
         for w in words:
             if (w.value is not None or w.rref is not None) and missing_axis(w.address, axes, dwell):
                 column = base + w.col if base >= 0 else st.col
-                out.append(Diagnostic("NC011", missing_axis_message(w.address, axes), Span(path, st.line, column)))
+                out.append(word_diagnostic(path, st.line, column, w.address, axes))
     return out + refused_g_warnings(SINUMERIK8XX, path, uses)
 
 
