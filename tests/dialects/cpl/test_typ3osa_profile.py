@@ -150,3 +150,13 @@ def test_an_address_no_function_reads_stops_the_run_and_check_warns_of_it(run, r
     prog.write_text("N1 G1 X1 F100\nN2 G1 X2 E5\nM30\n")
     diags = check(prog, dialect="cpl", machine=reference())
     assert [(d.code, d.span.line, d.span.column, d.severity) for d in diags] == [("NC007", 2, 10, "warning")]
+
+
+def test_g90_g91_dimensions_and_g92_set_actual_value_l2302_l2817(run):
+    """G90/G91 (group 4, L2302) and G92 "set actual value" (MCODS 1, L2817): after G92 X0 at X10 the program
+    position 5 is machine position 15; SD(1,4,1) reports 91 while incremental."""
+    r = run("N1 G91 G1 X5 F100\nN2 X5\n3 WAIT\n4 A%=SD(1,4,1)\nN5 G90 G92 X0\nN6 X5\n7 WAIT\n8 B=MPOS(1) : C%=SD(1,4,1)\n"
+            "M30\n")
+    assert r["status"] == "ok", r["error"]
+    v = r["variables"]
+    assert (v["A%"], v["B"], v["C%"]) == (91, 15.0, 90)
