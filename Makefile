@@ -24,9 +24,11 @@ test: $(BIN)/ncvm
 bench: $(BIN)/ncvm
 	$(BIN)/python bench/run.py
 
-# Regenerate the machine-file reference (docs/machine-file.md tables, docs/machine-file.schema.json).
+# Regenerate the machine-file reference (docs/machine-file.md tables, docs/machine-file.schema.json) and the
+# control profiles' G tables (docs/profiles.md).
 docs: $(BIN)/ncvm
 	$(BIN)/python -m ncvm.machine.docgen
+	$(BIN)/python -m ncvm.nc.profiles.doc
 
 clean:
 	rm -rf $(VENV) out .ncvm .pytest_cache

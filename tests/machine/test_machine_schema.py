@@ -228,7 +228,7 @@ def cases():
         ("[sympas]\nfoo = 1\n", "sympas.foo = 1: unknown key (known: axis_names,"),
         # [din], deep nesting, not TOML
         ("[din]\nfoo = 1\n", "din.foo = 1: unknown key (known: arc_radius_tolerance, arc_radius_tolerance_inch, "
-                                "arc_radius_relative)"),
+                                "arc_radius_relative, profile)"),
         ("din = 5\n", "din = 5: must be a table"),
         (deep_tables, "a = { a = { a = { ... } } }: unknown key"),
         ("!x = " + "[" * 3000 + "]" * 3000 + "\n", "not valid TOML: arrays or inline tables nested too deeply"),

@@ -293,6 +293,9 @@ DIN = Table((
                                                  "CENTER_ARC_RADIUS_TOLERANCE_INCH: 2 × 0.001 × √2)",
           0.002 * 2 ** 0.5, "inch"),
     Field("arc_radius_relative", NONNEG, "relative tolerance of the end radius (of the larger radius)", 0.001),
+    Field("profile", Text(choices=("iso", "typ3osa", "sinumerik8xx")), "the control whose G table the program's "
+          "G functions are read with (docs/profiles.md): iso = LinuxCNC rs274; typ3osa = Bosch Typ3 osa; "
+          "sinumerik8xx = SINUMERIK 810-880", "iso"),
 ))
 
 DIALECT_SECTIONS = (

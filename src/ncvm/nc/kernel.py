@@ -10,6 +10,11 @@ Coordinates: the kernel keeps the *programmed* position (workpiece
 coordinates, mm) and the sum of active offsets per axis; machine position =
 programmed + offsets. Canon calls carry machine positions.
 
+The G functions a block may carry, and what each does, come from the kernel's control profile
+(:mod:`ncvm.nc.profiles`, selected with :meth:`NcKernel.use_profile`; ``iso`` by default): a G number
+is one dict lookup, whose row says whether it sets modal state at once, is the block's motion, a dwell,
+and so on. A number the profile lacks stops the block with NC004.
+
 Dialect extension points: ``g_handlers`` maps extra G numbers to handlers
 (``handler(kernel, g, words, src) -> bool``, True when the block's axis words
 were parameters, not a target), run after the block's other G codes; ``motion_modes`` maps a dialect's
@@ -31,11 +36,11 @@ from .canon import ArcSpec, Canon, Src
 from .dynamics import AxisDynamics, arc_limits, path_limits
 from .fastmove import make_linear
 from .planner import LOOKAHEAD, POSITIONING, STOP_END, Planner, arc_tangents
+from .profiles import CYCLE, DWELL, LATE, MACHINE, MOTION, POSITION, SET, Profile, unknown_g
+from .profiles import INCH as INCH  # the unit of G70, read by the dialects
 
-INCH = 25.4
 #: plane G number -> (first axis, second axis, normal axis, first centre word, second centre word)
 PLANES = {17: ("X", "Y", "Z", "I", "J"), 18: ("Z", "X", "Y", "K", "I"), 19: ("Y", "Z", "X", "J", "K")}
-WORK_OFFSETS = {54: "G54", 55: "G55", 56: "G56", 57: "G57", 58: "G58", 59: "G59"}
 NON_AXIS = frozenset("FSTDHIJKRPLN")
 _MOTION_G = frozenset((0, 1, 2, 3))
 #: G number -> what it does to the path control: "block" (exact stop at the end of this block: G09),
@@ -44,19 +49,10 @@ _MOTION_G = frozenset((0, 1, 2, 3))
 ISO_PATH_CODES = {9: "block", 60: "exact", 61: "exact", 61.1: "exact", 64: "blend"}
 
 
-def refused_g(meaning: str):
-    """A ``g_handlers`` entry for a G number the dialect's control gives a meaning ncvm does not run yet:
-    the block stops with NC004 naming that meaning, so the ISO meaning of the number is never used in its
-    place (issue 14: Bosch G20 selects a plane, not inch)."""
-    def refuse(kernel, g, words, src):
-        kernel.fault("NC004", f"G{g} ({meaning}) is not supported by ncvm", src)
-    return refuse
-
-
 class NcKernel:
     """Executes blocks on a :class:`Machine`, reporting motion through a :class:`Canon`."""
 
-    def __init__(self, machine: Machine, canon: Canon):
+    def __init__(self, machine: Machine, canon: Canon, profile: Profile | None = None):
         self.machine = machine
         self.canon = canon
         names = machine.axis_names
@@ -83,6 +79,11 @@ class NcKernel:
         #: a dialect's own modal motion modes beside G0-G3 (the threads G33-G35, nc/threads.py): G number ->
         #: ``move(kernel, g, words, src)``, run for every block with axis words while the mode is active
         self.motion_modes: dict = {}
+        #: the control profile: its G table (``g_table``, G number -> (run, handler)) and the handlers of the
+        #: addresses it reads (``word_handlers``), see use_profile
+        if profile is None:
+            from .profiles.iso import ISO as profile
+        self.use_profile(profile)
         #: None, or an object with forward(vec), inverse(vec) and plane_similarity(a, b) (see set_transform)
         self.transform = None
         #: the active cutter radius compensation (:class:`ncvm.nc.cutter.CutterComp`), None under G40
@@ -90,6 +91,9 @@ class NcKernel:
         #: where G41/G42 take the tool radius: ``radius(kernel, g, words, src) -> mm``; a front end whose
         #: control numbers its tool data otherwise sets its own (or a refusal)
         self.cutter_radius = cutter.iso_radius
+        #: where a profile's length compensation word (Bosch H) takes its length:
+        #: ``length(kernel, table, group, src) -> mm``; None: the machine's tool table (profiles.typ3osa)
+        self.length_compensation = None
         #: when an arc's end lies too far off its start radius (a machine datum of the control's profile)
         self.arc_tolerance = arcs.KERNEL
         #: None, or the canned cycles of a profile that has them (:class:`ncvm.nc.cycles.CannedCycles`): then
@@ -141,6 +145,19 @@ class NcKernel:
         self.stop_block: int | None = None
         canon.begin(names, self.machine_pos)
 
+    def use_profile(self, profile: Profile) -> None:
+        """Read blocks as the control of ``profile`` does (a dialect selects its control's profile)."""
+        self.profile = profile
+        self.g_table = profile.dispatch
+        self.word_handlers = profile.word_handlers
+        #: group -> G number programmed, for the groups whose active function is all ncvm models of them
+        #: (profiles.modal_only); a group not in it has the profile's default
+        self.modal: dict = {}
+
+    def active_in(self, group: str):
+        """The G number active in a ``modal`` group of the profile."""
+        return self.modal.get(group, self.profile.defaults.get(group))
+
     # -- copies and placement ----------------------------------------------
     def fork(self) -> NcKernel:
         """A copy that runs blocks ahead of this kernel (a shadow of the state after the prepared blocks, a
@@ -158,6 +175,7 @@ class NcKernel:
         k.prog, k.g92, k.offset_vec, k.additive = list(self.prog), list(self.g92), list(self.offset_vec), \
             list(self.additive)
         k.canned = copy.copy(self.canned)
+        k.modal = dict(self.modal)
         return k
 
     def place(self, machine_pos, prog=None) -> None:
@@ -252,69 +270,57 @@ class NcKernel:
         cycle_g = False
         block_stop = False
         path_codes = self.path_codes
+        motion_modes = self.motion_modes
+        table = self.g_table
         for g in block.g:
             if handlers and g in handlers:
                 extra = [g] if extra is None else extra + [g]
-            elif g in path_codes:
+                continue
+            if g in path_codes:
                 block_stop = self._path_mode(path_codes[g], words, src) or block_stop
-            elif g in (0, 1, 2, 3):
+                continue
+            if motion_modes and g in motion_modes:
                 motion = g
-            elif g == 4:
+                continue
+            entry = table.get(g)
+            if entry is None:
+                unknown_g(self, g, src)
+            run = entry[0]
+            if run == SET:
+                entry[1](self, g, words, src)
+            elif run == MOTION:
+                motion = g
+            elif run == DWELL:
                 dwell_block = True
-            elif g in (17, 18, 19):
-                self.plane = g
-            elif g == 90:
-                self.absolute = True
-            elif g == 91:
-                self.absolute = False
-            elif g in (70, 20):
-                self.scale = INCH
-            elif g in (71, 21):
-                self.scale = 1.0
-            elif g in WORK_OFFSETS:
-                self.set_work_offset(WORK_OFFSETS[g])
-            elif g == 53:
-                machine_coords = True
-            elif g == 40 or g == 41 or g == 42:
-                cutter.select(self, g, words, src)
-            elif g == 94 or g == 64 or g == 60:
-                pass
-            elif g == 96:
-                self.css = self.spindle_bound = True
-            elif g == 97:
-                self._g97()
-            elif g == 43 or g == 44:
-                number = int(words.get("H", words.get("D", self.tool)))
-                length = self._tool(number, src).length if number else 0.0
-                self.set_tool_length(length if g == 43 else -length, src)
-            elif g == 49:
-                self.set_tool_length(0.0, src)
-            elif g == 92:
-                set_position = True
-            elif g == 92.1:
-                self.g92 = [0.0] * self.n_axes
-                self._set_offsets_keep_machine()
-            elif g == 10:
-                self._set_offset_table(words, src)
-                return
-            elif self.canned is not None and g in self.canned.codes:
-                if self.comp is not None and g < 98:
+            elif run == LATE:
+                extra = [g] if extra is None else extra + [g]
+            elif run == CYCLE:
+                if self.canned is None or g not in self.canned.codes:
+                    if g != 80:
+                        self.fault("NC004", f"G{g:g} is not supported", src)
+                elif self.comp is not None and g < 98:
                     self.fault("NC012", f"G{g}: no canned cycle while cutter radius compensation is on", src)
-                if g >= 98:
+                elif g >= 98:
                     self.canned.retract_to_r = g == 99
                 else:
                     motion, cycle_g = g, True
-            elif g == 80:
-                pass
-            elif g in self.motion_modes:
-                motion = g
-            else:
-                self.fault("NC004", f"G{g} is not supported", src)
+            elif run == POSITION:
+                set_position = True
+            elif run == MACHINE:
+                machine_coords = True
+            else:  # ALONE: the block is this function alone (G10 L2 writes a table)
+                entry[1](self, g, words, src)
+                return
         words_taken = False
         if extra is not None:
             for g in extra:
-                words_taken = handlers[g](self, g, words, src) or words_taken
-        if "F" in words and not dwell_block and not (self.motion_modes and motion in self.motion_modes):
+                handler = handlers[g] if g in handlers else table[g][1]
+                words_taken = handler(self, g, words, src) or words_taken
+        if self.word_handlers:
+            for letter, handler in self.word_handlers.items():
+                if letter in words:
+                    handler(self, words[letter], words, src)
+        if "F" in words and not dwell_block and not (motion_modes and motion in motion_modes):
             if self.per_rev:
                 self.feed_per_rev = words["F"] * self.scale if self.scale != 1.0 else words["F"]
             else:

@@ -2,7 +2,7 @@
 switchover with G20"), it does not switch to inch.
 
 Issue 14 opens with this silent error: the AXP example cuts a half circle 797.96 mm long instead of 31.42
-mm. It still does: `N20 G20 G1 X10` moves X to 254 mm (10 inch; bounds X[0,254], feed length 254) and the run "ended normally".
+mm. `N20 G20 G1 X10` moved X to 254 mm (10 inch); now G20 is the plane switchover (test_typ3osa_profile.py).
 """
 
 from __future__ import annotations
@@ -29,13 +29,15 @@ def test_g20_does_not_scale_the_cpl_program_to_inch_l2372(tmp_path: Path):
         assert result["error"]["line"] == 2, result["error"]
 
 
-def test_g20_is_refused_naming_the_plane_switchover_and_g21_is_no_typ3_function(tmp_path: Path):
+def test_g20_needs_two_axes_and_g21_is_no_typ3_function(tmp_path: Path):
+    """G20 names the main and the secondary axis with the pole (L2372); one axis is no plane (NC009). G21 is
+    not a Typ3 osa function: NC004 naming G70/G71."""
     (tmp_path / "machine.toml").write_text(MACHINE)
-    for g, words in ((20, "plane switchover"), (21, "G70/G71")):
+    for g, code, words in ((20, "NC009", "plane switchover"), (21, "NC004", "G70/G71")):
         prog = tmp_path / f"g{g}.cpl"
         prog.write_text(f"N10 G0 X0 Y0 Z0\nN20 G{g} G1 X10 F100\nN30 M30\n")
         result, _ = run(prog, dialect="cpl", machine=tmp_path / "machine.toml",
                         options=RunOptions(state_dir=tmp_path / ".s"))
-        assert result["error"]["code"] == "NC004" and result["error"]["line"] == 2, result["error"]
+        assert result["error"]["code"] == code and result["error"]["line"] == 2, result["error"]
         assert words in result["error"]["message"]
         assert result["motion"]["feed_length"] == 0.0

@@ -32,13 +32,22 @@ def test_c1_expressions_in_nc_words_of_a_sub_program_l359(run_text, reference):
     assert r["variables"] == {"#F%": 1200, "#SP%": 3} and r["position"]["X"] == 20.0
 
 
-def test_c1_g22_of_the_example_is_not_in_the_nc_kernel_l366(run_text, reference):
-    """N20 G22 K[COMPTAB] is a Bosch DIN function the shared NC kernel lacks (docs/decisions.md, CPL):
-    the run stops there with NC004 after N10 has moved."""
+def test_c1_g22_selects_the_compensation_table_of_p3_l366(run_text, reference):
+    """N20 G22 K[COMPTAB] selects tool compensation table K<COMPTAB> (the database tables K4 and K5 of TC,
+    L1854-1884; docs/decisions.md, issue 14): the example runs, and an H word after it reads that table."""
+    m = reference()
+    (m.program_path[0] / "C1SUB").write_text(C1SUB + "N20 G22 K[COMPTAB]\nN30 H2\n40 WAIT\n50 #L = TC(1)\nM30\n")
+    r = run_text("1 TC(1,2,5)=7.5 : TC(1,2,4)=3\n10 CALL C1SUB [20, 100, 5]\nM30\n", name="p.cpl", machine=m)
+    assert r["status"] == "ok", r["error"]
+    assert r["position"]["X"] == 20.0 and r["variables"]["#L"] == 7.5
+
+
+def test_c1_g22_of_a_table_that_is_no_database_table_stops_l366(run_text, reference):
     m = reference()
     (m.program_path[0] / "C1SUB").write_text(C1SUB + "N20 G22 K[COMPTAB]\nM30\n")
     r = run_text("10 CALL C1SUB [20, 100, 3]\nM30\n", name="p.cpl", machine=m)
-    assert r["error"]["code"] == "NC004" and r["error"]["line"] == 3 and r["position"]["X"] == 20.0
+    assert r["error"]["code"] == "NC009" and r["error"]["line"] == 3 and "K3" in r["error"]["message"]
+    assert r["position"]["X"] == 20.0
 
 
 GOLDEN = Path(__file__).parents[2] / "programs" / "cpl"

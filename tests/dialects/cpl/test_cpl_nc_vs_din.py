@@ -4,7 +4,8 @@ The CPL side reads its NC blocks itself, queues them and drains the queue at
 program end; the DIN side reads the text as columns. Random programs with
 lines, arcs in all planes, G90/G91, inch, zero offsets and G92 must give the
 same moves, final position and cycle time. The Typ3 osa writes inch and mm as G70/G71 (its G20 selects
-a plane, L2372), so the CPL side gets those.
+a plane, L2372), so the CPL side gets those; it has no G10 (its profile refuses LinuxCNC's G10 L2): the
+CPL side writes the zero offset G54 into its active ZS table with FXC (L1759-1776).
 """
 
 from __future__ import annotations
@@ -22,7 +23,9 @@ from ncvm.runtime.session import RunOptions
 def test_nc_blocks_in_cpl_move_as_in_din(tmp_path, random_din, seed):
     text = "\n".join(line for line in random_din(seed).splitlines() if line.strip() != "%") + "\n"
     (tmp_path / "p.ngc").write_text(text)
-    (tmp_path / "p.cpl").write_text(re.sub(r"\bG2([01])(?!\d)", r"G7\1", text))
+    cpl_text = re.sub(r"\bG2([01])(?!\d)", r"G7\1", text)
+    cpl_text = re.sub(r"G10 L2 P1 X(\S+) Y(\S+)", r'10 FXC("X",54)=\1 : FXC("Y",54)=\2', cpl_text)
+    (tmp_path / "p.cpl").write_text(cpl_text)
     din, s1 = run(tmp_path / "p.ngc", options=RunOptions(keep_toolpath=True, state_dir=tmp_path / ".a"))
     cpl, s2 = run(tmp_path / "p.cpl", options=RunOptions(keep_toolpath=True, state_dir=tmp_path / ".b"))
     assert din["status"] == cpl["status"] == "ok", cpl["error"]

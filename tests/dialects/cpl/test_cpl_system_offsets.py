@@ -296,7 +296,7 @@ def test_a_store_table_of_an_older_run_becomes_a_file(run_text, reference, tmp_p
 def test_tc_example_l1879(run):
     text = ("1 A=2.5\n2 B=0.5\n10 TC(1,10,5)=A\n20 TC(2,10,5)=B\n25 TC(1,10,5,0)=25.4\n26 TC(1,11,5,2)=1\n"
             "30 TC(-1,10,4)=A\n40 TC(-2,10,4)=B\n50 A8=TC(1,8,4)\n60 B8=TC(2,8,4)\n70 TC(1,17)=A\n"
-            "N75 T8 M6\nN76 G43 H8\n80 BR=TC(2)\n81 HL=TC(1)\nN85 G71\n90 TC(1,745,0)=A\nN90 G70\nN91 WAIT\n"
+            "N75 T8 M6\nN76 H8\n80 BR=TC(2)\n81 HL=TC(1)\nN85 G71\n90 TC(1,745,0)=A\nN90 G70\nN91 WAIT\n"
             "95 TC(3,347,0)=A\n100 B345=TC(2,345,0)\n101 L347=TC(3,347,0)\n110 G33=TC(2,39,\"/usr/user/GK33\")\n"
             "120 K5H10=TC(1,10,5)\n121 K5H11=TC(1,11,5)\n122 K4H10=TC(1,10,4)\n123 K4D10=TC(2,10,4)\n"
             "124 L17=TC(1,17)\n125 L745=TC(1,745,0)\nM30\n")
@@ -314,10 +314,10 @@ def test_tc_example_l1879(run):
 
 
 def test_tc_k4_is_the_kernels_tool_table(run_text, reference):
-    """A length written into K4 is the one G43 applies, also in the next run (store)."""
+    """A length written into K4 is the one the H word applies (L1573), also in the next run (store)."""
     m = reference(tool=[{"number": 3, "length": 10.0}])
     assert run_text("1 TC(1,3,4)=25\nM30\n", name="a.cpl", machine=m)["status"] == "ok"
-    r = run_text("N1 T3 M6\nN2 G43 H3 G0 Z0\n3 WAIT\n4 Z=MPOS(3)\nM30\n", name="b.cpl",
+    r = run_text("N1 T3 M6\nN2 H3 G0 Z0\n3 WAIT\n4 Z=MPOS(3)\nM30\n", name="b.cpl",
                  machine=reference(tool=[{"number": 3, "length": 10.0}]))
     assert r["variables"]["Z"] == 25.0
 

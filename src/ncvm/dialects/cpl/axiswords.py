@@ -10,9 +10,11 @@ from __future__ import annotations
 
 import re
 
-from ...diagnostics import Diagnostic, read_lines
-from ...nc.axiswords import is_dwell, is_missing_axis, names_axis
+from ...diagnostics import Diagnostic, Span, read_lines
+from ...nc.axiswords import AXIS_LETTERS, is_dwell, is_missing_axis, names_axis
 from ...nc.block import row_line
+from ...nc.profiles.check import g_column, refused_g_warnings
+from ...nc.profiles.typ3osa import TYP3OSA
 from . import ast as A
 from .errors import CplError, diag
 
@@ -20,13 +22,25 @@ CODE = "1938"
 _COMMENT = re.compile(r"\([^)]*\)")
 
 
-def missing_axis_blocks(prog: A.Program, axes) -> list[tuple[A.NcBlock, str]]:
-    """The NC blocks of ``prog`` with a word for an axis not in ``axes``, each with the first such address."""
+#: the one-letter addresses a function of the Typ3 osa profile reads besides the axes (P: dwell time and
+#: circle turns, as the kernel reads them; L: a sub-program call the linker takes)
+READ_LETTERS = frozenset(a.letter for a in TYP3OSA.addresses) | frozenset("GMNPL")
+
+
+def refused_letter(address: str, axes) -> bool:
+    """A one-letter address that is no axis letter and that no function of the profile reads (NC007)."""
+    return len(address) == 1 and address not in AXIS_LETTERS and address not in READ_LETTERS and address not in axes
+
+
+def missing_axis_blocks(prog: A.Program, axes, letters: bool = False) -> list[tuple[A.NcBlock, str]]:
+    """The NC blocks of ``prog`` with a word for an axis not in ``axes`` (with ``letters``, also with an address
+    no function reads), each with the first such address."""
     out = []
     for s in prog.stmts:
         if isinstance(s, A.NcBlock):
-            address = next((w.address for w in s.words if is_missing_axis(w.address, axes)
-                            and names_axis(w.address, is_dwell(g.value for g in s.words if g.address == "G"))), None)
+            address = next((w.address for w in s.words if (is_missing_axis(w.address, axes) and names_axis(
+                w.address, is_dwell(g.value for g in s.words if g.address == "G"))) or (
+                letters and refused_letter(w.address, axes))), None)
             if address is not None:
                 out.append((s, address))
     return out
@@ -35,13 +49,31 @@ def missing_axis_blocks(prog: A.Program, axes) -> list[tuple[A.NcBlock, str]]:
 def axis_diagnostics(prog: A.Program, axes, lines: list[str] | None) -> list[Diagnostic]:
     """``ncvm check``: error 1938 at each word for a missing axis, with the word's column when it is found."""
     return [diag(CODE, detail(address, axes), prog.path, s.line, _column(lines, s, address), s.cpl)
-            for s, address in missing_axis_blocks(prog, axes)]
+            for s, address in missing_axis_blocks(prog, axes) if not refused_letter(address, axes)]
+
+
+def refused_diagnostics(prog: A.Program, axes, lines: list[str] | None) -> list[Diagnostic]:
+    """``ncvm check``: warnings for the G functions the Typ3 osa profile refuses (nc/profiles/check.py) and the
+    addresses no function reads (NC007), where the run stops."""
+    out = []
+    for s, address in missing_axis_blocks(prog, axes, letters=True):
+        if refused_letter(address, axes):
+            d = Diagnostic(LETTER_CODE, f"{letter_detail(address)}: the run stops here",
+                           Span(prog.path, s.line, _column(lines, s, address)), severity="warning")
+            out.append(d)
+    uses = []
+    for s in prog.stmts:
+        if isinstance(s, A.NcBlock):
+            text = lines[s.line - 1] if lines and s.line <= len(lines) else ""
+            uses.extend((w.value, s.line, g_column(text, w.value) or s.col or 1) for w in s.words
+                        if w.address == "G" and w.value is not None)
+    return out + refused_g_warnings(TYP3OSA, prog.path, uses)
 
 
 def refused_blocks(prog: A.Program, axes) -> dict[int, tuple[str, int]]:
     """For a run: line -> (address, column of its word) of the blocks refused with 1938, where the check
     shows them."""
-    found = missing_axis_blocks(prog, axes)
+    found = missing_axis_blocks(prog, axes, letters=True)
     if not found:
         return {}
     lines = read_lines(prog.path)  # only for a unit that has such a block
@@ -75,13 +107,23 @@ def refusing(rt, enqueue, refused: dict):
 def check_words(rt, g, words) -> None:
     """Words made at run time (standalone ``[A$]``, AXP): refused as the block is prepared."""
     for address in words:
-        if is_missing_axis(address, rt.kernel.axis_of) and names_axis(address, is_dwell(g)):
+        if (is_missing_axis(address, rt.kernel.axis_of) and names_axis(address, is_dwell(g))) or refused_letter(
+                address, rt.kernel.axis_of):
             refuse(rt, address)
 
 
 def refuse(rt, address: str, column: int | None = None):
     rt.drain()
+    if refused_letter(address, rt.kernel.axis_of):
+        raise CplError(LETTER_CODE, letter_detail(address), column)
     raise CplError(CODE, detail(address, rt.kernel.axis_names), column)
+
+
+LETTER_CODE = "NC007"
+
+
+def letter_detail(address: str) -> str:
+    return f"address {address} is not supported by ncvm (no function of the typ3osa profile reads it)"
 
 
 def detail(address: str, axes) -> str:

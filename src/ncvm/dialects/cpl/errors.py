@@ -8,7 +8,7 @@ the message (digest §7.1). A reviewer can hold this table against the manual.
 
 from __future__ import annotations
 
-from ...diagnostics import Diagnostic, RuntimeFault, Span
+from ...diagnostics import NCVM_CODES, Diagnostic, RuntimeFault, Span
 
 #: code -> (manual text, manual place)
 CODES: dict[str, tuple[str, str]] = {
@@ -72,7 +72,7 @@ class CplError(Exception):
 
 
 def message(code: str, detail: str = "") -> str:
-    base = CODES[code][0] if code in CODES else code
+    base = CODES[code][0] if code in CODES else NCVM_CODES.get(code, code)
     return f"{base}: {detail}" if detail else base
 
 

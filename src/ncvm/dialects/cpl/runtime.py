@@ -28,6 +28,7 @@ from ...nc.block import Block, DinSyntaxError, as_block, parse_din_line, plain_r
 from ...nc.canon import CanonSink, Src
 from ...nc.midmove import MotionRecorder, position_at
 from ...nc.plainrun import execute_segments, plain_segments
+from ...nc.profiles.typ3osa import TYP3OSA
 from ...runtime.buffer import BlockBuffer
 from ...runtime.locate import generated_frames
 from ...runtime.memory import out_of_memory
@@ -94,6 +95,7 @@ class CplRuntime:
         self.session = session
         self.machine = session.machine
         self.kernel = session.kernel
+        self.kernel.use_profile(TYP3OSA)  # the Bosch Typ3 osa G table (nc/profiles/typ3osa.py)
         # G41/G42 take the radius from the D numbers / TC selection (manual's G41/G42): not read yet, refused
         self.kernel.cutter_radius = cutter.refusal("the tool radius of the CPL control's D number / TC selection")
         self.kernel.path_codes = CPL_PATH_CODES

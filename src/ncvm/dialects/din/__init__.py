@@ -11,6 +11,8 @@ from ...nc.block import PlainRun, read_din_segments
 from ...nc.canon import Src
 from ...nc.cycles import CannedCycles
 from ...nc.plainrun import execute_columns
+from ...nc.profiles.iso import ISO
+from ...nc.profiles.named import PROFILES
 from ...source import lines as program_lines
 from ..base import Dialect
 from .ngc import fold_extensions
@@ -21,10 +23,9 @@ _DIN_LINE = re.compile(r"^\s*(N\d+\s*)?([GMXYZFST]-?\d|\(|%|/|$)", re.I)
 
 
 def setup_kernel(kernel) -> None:
-    """The din profile's functions beyond the kernel's own: the canned cycles, G94/G95 (units per minute or
-    per revolution) and G33 (spindle-synchronised motion), as LinuxCNC has them."""
+    """The iso profile's functions that live outside the kernel: the canned cycles and G33 (spindle-synchronised
+    motion), as LinuxCNC has them (G94/G95 are rows of the profile)."""
     kernel.canned = CannedCycles()
-    kernel.g_handlers.update(threads.FEED_MODES)
     kernel.motion_modes.update(threads.ISO_THREADS)
 
 
@@ -42,7 +43,8 @@ class DinDialect(Dialect):
         segments, diags = read_din_segments(path, text)
         diags = fold_extensions(diags, program_lines(text)) if diags else diags
         diags += [d for _i, _row, d in din_missing_axes(path, text, segments, machine.axis_names)]
-        diags += unsupported(path, segments, program_lines(text), machine.axis_names)
+        diags += unsupported(path, segments, program_lines(text), machine.axis_names,
+                             PROFILES[options(machine).profile])
         return sorted(diags, key=lambda d: (d.span.line, d.span.column or 0))
 
     def run(self, path, text, session):
@@ -50,8 +52,12 @@ class DinDialect(Dialect):
         if diags:
             raise CompileFailed(fold_extensions(diags, program_lines(text)))
         kernel = session.kernel
-        kernel.arc_tolerance = arc_tolerance(options(session.machine))
-        setup_kernel(kernel)
+        opts = options(session.machine)
+        kernel.arc_tolerance = arc_tolerance(opts)
+        profile = PROFILES[opts.profile]  # [din] profile: the control whose G table the blocks are read with
+        kernel.use_profile(profile)
+        if profile is ISO:
+            setup_kernel(kernel)  # LinuxCNC's canned cycles and G33 belong to the iso rows
         skip_active = bool(session.machine.setting_data.get("block_skip", True))
         # a block with a word for an axis the machine lacks is refused when the run reaches it (found here,
         # once, so the blocks before it run as they are)

@@ -15,6 +15,7 @@ class Options:
     arc_radius_tolerance: float = RS274.absolute
     arc_radius_tolerance_inch: float = RS274.absolute_inch
     arc_radius_relative: float = RS274.relative
+    profile: str = "iso"
 
 
 def options(machine) -> Options:

@@ -15,11 +15,12 @@ import re
 from ...diagnostics import Diagnostic, Span
 from ...nc.axiswords import AXIS_LETTERS
 from ...nc.block import WORD, PlainRun
-from ...nc.cycles import CODES as CYCLE_CODES
+from ...nc.profiles import Profile
+from ...nc.profiles.check import g_column, refused_g_warnings
+from ...nc.profiles.iso import ISO
 
-#: the G functions the profile runs (nc/kernel.py NcKernel.execute, nc/cycles.py, nc/threads.py)
-G_FUNCTIONS = frozenset({0, 1, 2, 3, 4, 9, 10, 17, 18, 19, 20, 21, 33, 40, 41, 42, 43, 44, 49, 53, 54, 55, 56, 57, 58, 59,
-                         60, 61, 61.1, 64, 70, 71, 90, 91, 92, 92.1, 94, 95, 96, 97}) | CYCLE_CODES
+#: the G functions the profile runs (its rows, nc/profiles/iso.py)
+G_FUNCTIONS = frozenset(ISO.by_g)
 #: the addresses its functions read besides the axes (O: a program number, as ISO controls read it; it does
 #: nothing); every other letter is refused (NC007), an axis letter the machine lacks is NC011 (nc/axiswords.py)
 ADDRESSES = frozenset("DFGHIJKLMNOPQRST")
@@ -36,7 +37,7 @@ def _refused_letter(address: str, axes) -> bool:
 
 
 def _refused_g(g, words) -> bool:
-    """A G function the profile does not run, or G10 other than L2 P1..P6."""
+    """A G function the iso profile does not run, or G10 other than L2 P1..P6."""
     return g not in G_FUNCTIONS or (g == 10 and (words.get("L") != 2 or words.get("P") not in (1, 2, 3, 4, 5, 6)))
 
 
@@ -45,16 +46,21 @@ def address_refusal(path: str, blk, line_text: str, address: str) -> Diagnostic:
                                "reads it)", Span(path, blk.src.line, _column(line_text, address, None)))
 
 
-def unsupported(path: str, segments: list, lines: list[str], axes) -> list[Diagnostic]:
+def unsupported(path: str, segments: list, lines: list[str], axes, profile: Profile = ISO) -> list[Diagnostic]:
     """Warnings for the G functions and addresses of a program the run would refuse: the first block of
-    each, with the number of blocks that use it."""
+    each, with the number of blocks that use it. With another profile than iso ([din] profile) its G table
+    judges the G functions (nc/profiles/check.py); the rows its dialect runs are refused here."""
     found: dict = {}  # (kind, what) -> [first block, count]
+    uses = []
     for seg in segments:
         if isinstance(seg, PlainRun):
             continue  # G0-G3 and X Y Z I J K F only
         blk = seg[0]
+        text = lines[blk.src.line - 1] if blk.src.line <= len(lines) else ""
         for g in blk.g:
-            if _refused_g(g, blk.words):
+            if profile is not ISO:
+                uses.append((g, blk.src.line, g_column(text, g)))
+            elif _refused_g(g, blk.words):
                 found.setdefault(("G", g), [blk, 0])[1] += 1
         for a in blk.words:
             if _refused_letter(a, axes):
@@ -73,7 +79,7 @@ def unsupported(path: str, segments: list, lines: list[str], axes) -> list[Diagn
             d = address_refusal(path, blk, text, what)
             d.severity, d.message = "warning", d.message + f": the run stops here{more}"
         out.append(d)
-    return out
+    return out + refused_g_warnings(profile, path, uses, dialect_runs=False) if uses else out
 
 
 def _column(text: str, letter: str, value) -> int | None:

@@ -19,7 +19,7 @@ from ...nc.canon import Src
 from ...runtime.codegen import PySource
 from ...source import read_text
 from ..base import Dialect
-from .codegen import UnitCodegen, axis_diagnostics
+from .codegen import UnitCodegen, axis_diagnostics, refused_g_diagnostics
 from .lint import stop_dec_lint
 from .ncdata import NAMESPACE, NcData
 from .options import options
@@ -105,7 +105,8 @@ class Sin800Dialect(Dialect):
         if diags:
             return diags if all_errors else diags[:1]
         radius = options(machine).radius_address
-        return axis_diagnostics(prog, machine.axis_names, radius) + stop_dec_lint(prog)  # the lint: warnings (§10.5)
+        # the lint (§10.5) and what the run will refuse are warnings
+        return axis_diagnostics(prog, machine.axis_names, radius) + refused_g_diagnostics(prog) + stop_dec_lint(prog)
 
     def run(self, path, text, session):
         """Run a main program or @ code object text (``%SPF<n>`` / ``%MPF<n>``, digest §5.3)."""

@@ -16,9 +16,11 @@ from __future__ import annotations
 from typing import NamedTuple
 
 from ...diagnostics import Diagnostic, Span
-from ...nc.axiswords import is_dwell, is_missing_axis, missing_axis_message, names_axis
+from ...nc.axiswords import AXIS_LETTERS, is_dwell, is_missing_axis, missing_axis_message, names_axis
 from ...nc.block import Block
 from ...nc.canon import Src
+from ...nc.profiles.check import refused_g_warnings
+from ...nc.profiles.sinumerik8xx import SINUMERIK8XX
 from ...runtime.codegen import PySource
 from .atcodes import AT_CODES, AtCode
 from .finite import checked
@@ -35,9 +37,27 @@ def _num(v: float) -> str:
 
 
 def missing_axis(address: str, axes, dwell: bool = False, radius: str = "B") -> bool:
-    """A word for an axis the machine lacks (NC011); A and the radius address (B or U, machine data) without
-    such axes are the angle and the circle radius, X in a dwell block (``dwell``, :func:`dwells`) the time."""
-    return address not in ("A", radius) and is_missing_axis(address, axes) and names_axis(address, dwell)
+    """A word for an axis the machine lacks (NC011), or a letter no function of the sinumerik8xx profile reads
+    (NC007, :func:`refused_word`); A and the radius address (B or U, machine data) without such axes are the
+    angle and the circle radius, X in a dwell block (``dwell``, :func:`dwells`) the time."""
+    return address not in ("A", radius) and (is_missing_axis(address, axes) and names_axis(address, dwell)
+                                          or refused_letter(address, axes))
+
+
+#: the one-letter addresses a function of the SINUMERIK blocks reads besides the axes (nc/profiles/sinumerik8xx.py)
+READ_LETTERS = frozenset(a.letter for a in SINUMERIK8XX.addresses) | frozenset("GMN")
+
+
+def refused_letter(address: str, axes) -> bool:
+    return len(address) == 1 and address not in AXIS_LETTERS and address not in READ_LETTERS and address not in axes
+
+
+def refused_word(address: str, axes) -> tuple[str, str]:
+    """(code, message) of a word :func:`missing_axis` finds."""
+    if refused_letter(address, axes):
+        return "NC007", (f"address {address} is not supported by ncvm (no function of the sinumerik8xx profile "
+                         "reads it)")
+    return "NC011", missing_axis_message(address, axes)
 
 
 def dwells(items) -> bool:
@@ -45,9 +65,28 @@ def dwells(items) -> bool:
     return is_dwell(it.value for it in items if isinstance(it, Word) and it.address == "G")
 
 
+def _word_diagnostic(path: str, line: int, column, address: str, axes) -> Diagnostic:
+    """NC011 (an error: the machine lacks the axis), or NC007 (a warning: ncvm reads no such address)."""
+    code, message = refused_word(address, axes)
+    if code == "NC011":
+        return Diagnostic(code, message, Span(path, line, column))
+    return Diagnostic(code, message + ": the run stops here", Span(path, line, column), severity="warning")
+
+
+def refused_g_diagnostics(prog: PartProgram) -> list[Diagnostic]:
+    """``ncvm check``: warnings for the G functions the SINUMERIK 810-880 profile refuses (nc/profiles/check.py)."""
+    return refused_g_warnings(SINUMERIK8XX, prog.path, [(it.value, blk.line, it.col) for blk in prog.blocks
+                                                         for it in blk.items if g_word(it)])
+
+
+def g_word(it) -> bool:
+    """A G word with a constant value (G=R.. is refused by the block compiler itself, SIN001)."""
+    return isinstance(it, Word) and it.address == "G" and it.value is not None
+
+
 def axis_diagnostics(prog: PartProgram, axes, radius: str = "B") -> list[Diagnostic]:
     """``ncvm check``: the words for axes the machine lacks, where a run refuses them."""
-    return [Diagnostic("NC011", missing_axis_message(it.address, axes), Span(prog.path, blk.line, it.col))
+    return [_word_diagnostic(prog.path, blk.line, it.col, it.address, axes)
             for blk in prog.blocks for it in blk.items
             if isinstance(it, Word) and (it.value is not None or it.rref is not None)
             and missing_axis(it.address, axes, dwells(blk.items), radius)]
@@ -637,7 +676,7 @@ class _Record:
             self.words.append(("_rt.angle_key()", expr, False))
             return
         if missing_axis(a, cg.axes, dwells(self.blk.items), cg.radius):
-            out.emit(f"_rt.refuse_axis({missing_axis_message(a, cg.axes)!r}, {self.blk.line}, {w.col})", self.blk.line)
+            out.emit(f"_rt.refuse_axis({refused_word(a, cg.axes)!r}, {self.blk.line}, {w.col})", self.blk.line)
             return
         if not const and captured:
             # the value is the one R has where the word stands; later @ code in the block may change R

@@ -12,6 +12,7 @@ from typing import TYPE_CHECKING
 
 from ...nc import cutter
 from ...nc.kernel import PLANES
+from ...nc.profiles.sinumerik8xx import SINUMERIK8XX
 from .errors import Cl800Error
 from .feeds import active_group_11
 from .ncdata import in_range as _rng
@@ -20,10 +21,11 @@ from .spindle import MASTER_SPINDLE
 if TYPE_CHECKING:
     from .runtime import Channel
 
-#: G group -> its G functions, the first the power-on state (ACG, @36b)
-ACG_GROUPS = {0: (0, 1, 10, 11, 2, 3, 33, 34, 35, 6, 12, 13, 5, 7), 1: (9,), 2: (17, 18, 19, 16), 3: (40, 41, 42),
-              4: (53,), 5: (54, 55, 56, 57), 6: (4, 25, 26, 58, 59, 92, 74), 7: (60, 63, 64, 62), 8: (70, 71),
-              9: tuple(range(80, 90)), 10: (90, 91, 68), 11: (94, 95, 96, 97), 13: (50, 51)}
+#: G group -> its G functions in the order of the table (ACG, @36b; nc/profiles/sinumerik8xx.py)
+ACG_GROUPS: dict[int, tuple] = {}
+for _row in SINUMERIK8XX.rows:
+    if _row.group:
+        ACG_GROUPS[int(_row.group)] = ACG_GROUPS.get(int(_row.group), ()) + (_row.g,)
 
 
 def axis_index(kernel, v: float) -> int:
@@ -110,4 +112,5 @@ class Positions:
                  9: self.channel.drilling.executed, 11: active_group_11(k)}
         if group in state:
             return float(state[group])
-        return float(ACG_GROUPS.get(group, (0,))[0])
+        power_on = SINUMERIK8XX.defaults.get(str(group))  # the groups ncvm keeps no state of: their power-on G
+        return float(power_on if power_on is not None else ACG_GROUPS.get(group, (0,))[0])

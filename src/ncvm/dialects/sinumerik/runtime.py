@@ -28,8 +28,9 @@ from ...machine.scenario import (
 )
 from ...nc.block import Block
 from ...nc.canon import CanonSink, Src
-from ...nc.kernel import INCH, refused_g
+from ...nc.kernel import INCH
 from ...nc.planner import STOP_END
+from ...nc.profiles.sinumerik8xx import SINUMERIK8XX
 from ...nc.spindle import SINUMERIK_GEARS, Gearbox
 from ...runtime.buffer import BlockBuffer
 from ...runtime.locate import generated_frames
@@ -109,13 +110,9 @@ NAMESPACE_GLOBALS = {
 _RUN = {code: attrgetter(row.run) for code, row in AT_CODES.items() if row.run}
 
 
-#: G numbers outside the 810-880 G groups (CL 800 manual L7392-7410) whose ISO meaning the kernel would
-#: otherwise use: the units are G70/G71
 #: the path control's G codes (kernel.ISO_PATH_CODES): G60 exact stop (the power-on state), G64 continuous
 #: path, G09 exact stop at the end of its block (docs/decisions.md)
 SINUMERIK_PATH_CODES = {9: "block", 60: "exact", 64: "continuous"}
-SINUMERIK_REFUSED = {20: refused_g("not in the SINUMERIK G groups; units are G70/G71"),
-                     21: refused_g("not in the SINUMERIK G groups; units are G70/G71")}
 
 #: the scenario events the SINUMERIK channel reads
 SINUMERIK_EVENTS = (ExternalInput, PlcChange, PlcTimer, PlcCounter, Alarm, ProbeSwitch)
@@ -171,7 +168,7 @@ class Channel:
         self.positions = Positions(self)
         self.offsets = Offsets(self)
         self.kernel.cutter_radius = self.offsets.cutter_radius  # G41/G42: the radius of the TO area's offset D
-        self.kernel.g_handlers.update(SINUMERIK_REFUSED)
+        self.kernel.use_profile(SINUMERIK8XX)  # the 810-880 G groups (nc/profiles/sinumerik8xx.py)
         feeds.setup(self.kernel)  # G94-G97, the threads G33-G35
         self.drilling = Drilling(self)  # G80-G89: the drilling cycles L81-L89
         self.kernel.g_handlers.update(self.drilling.handlers())
@@ -455,11 +452,11 @@ class Channel:
     def fault(self, code: str, message: str, line: int):
         raise RuntimeFault(code, message)
 
-    def refuse_axis(self, message: str, line: int, column: int | None = None):
-        """A word for an axis the machine lacks (NC011): refused after the blocks decoded before it ran, at the
-        word, where ``ncvm check`` shows it."""
+    def refuse_axis(self, refusal: tuple[str, str], line: int, column: int | None = None):
+        """A word for an axis the machine lacks (NC011) or an address ncvm reads not (NC007), as (code, message):
+        refused after the blocks decoded before it ran, at the word, where ``ncvm check`` shows it."""
         self.run_buffer()
-        raise RuntimeFault("NC011", message, Span(self._current_path(), line, column))
+        raise RuntimeFault(*refusal, Span(self._current_path(), line, column))
 
     # -- main groups 0 and 2 ---------------------------------------------
     def ess(self) -> None:

@@ -22,6 +22,10 @@ the seeds; the forms below are recorded in docs/decisions.md:
   values, L1759-1773), ``G167`` deselects it (G group 30 of the SD(1) table, L2305): one is active at a
   time, as one external tool compensation G145..G845 is; at power-on G167. Only the selected shift moves
   the axes.
+* ``G154``..``G159`` (G group 16) and ``G254``..``G259`` (group 17) add the values of that row of the
+  active ZS table (FXC rows 154..159, 254..259, L1759) to the axis zero shift G54..G59 of group 15;
+  ``G153`` and ``G253`` switch their group off, as G53 does group 15 (MCODS 15, L2856: "the axis zero
+  shift values of the 3 groups G53..G59, G153..G159 and G253..G259"); at power-on G153 and G253.
 
 A block carrying one of them is split at preparation: the programmed state changes at once (SD index
 1, "last programmed"); the rest of the block is queued as a :class:`Typ3Block` that carries the state,
@@ -42,7 +46,10 @@ COMPENSATIONS = frozenset([146] + [g + 45 for g in range(100, 900, 100)] + [g + 
 #: G group 30: the external zero shifts G160/G260/G360 and G167, no external shift
 EXTERNAL_ZS = frozenset((160, 260, 360, 167))
 NO_EXTERNAL_ZS = 167
-TYP3_G = WORD_CODES | COMPENSATIONS | EXTERNAL_ZS
+#: G groups 16 and 17: the additive axis zero shifts (first number: the group's "off")
+ADDITIVE_ZS = {16: tuple(range(153, 160)), 17: tuple(range(253, 260))}
+ADDITIVE_G = frozenset(ADDITIVE_ZS[16] + ADDITIVE_ZS[17])
+TYP3_G = WORD_CODES | COMPENSATIONS | EXTERNAL_ZS | ADDITIVE_G
 GEARS = CPL_GEARS.codes  # M40 automatic gear range, M41-M44 gear 1-4, M48 neutral (nc/spindle.py)
 INCH = 25.4
 N_LOGICAL = 8  # the shifts are kept for logical axes 1..8 (SD index range 1..8)
@@ -64,6 +71,8 @@ class NcFuncs:
     general: int = 0  # selected general tool compensation G147..G847, 0 = none
     gear: int = 40  # spindle gear range (M40 automatic at power-on)
     external_zs: int = NO_EXTERNAL_ZS  # selected external zero shift G160/G260/G360, G167 = none
+    zs16: int = 153  # additive axis zero shift G154..G159, G153 = none
+    zs17: int = 253  # second additive axis zero shift G254..G259, G253 = none
 
 
 class Typ3Block(Block):
@@ -93,6 +102,12 @@ def prepare(rt: SystemContext, blk: Block) -> Block:
         raise CplError("CPL040", f"G{shifts[0]} and G{shifts[1]} cannot stand in one block (G group 30)")
     if shifts:
         st = replace(st, external_zs=shifts[0])
+    for group, numbers in ADDITIVE_ZS.items():
+        chosen = [g for g in blk.g if g in numbers]
+        if len(chosen) > 1:
+            raise CplError("CPL040", f"G{chosen[0]} and G{chosen[1]} cannot stand in one block (G group {group})")
+        if chosen:
+            st = replace(st, **{f"zs{group}": chosen[0]})
     for g in blk.g:
         if g in COMPENSATIONS:
             st = _compensation(st, g)
@@ -169,7 +184,8 @@ def activate(rt: SystemContext, kernel, blk: Typ3Block) -> None:
 
 
 def additive(rt: SystemContext, kernel, state: NcFuncs) -> list[float]:
-    """The kernel's additive offsets: the selected external shift (G160/G260/G360) plus G168 and G268."""
+    """The kernel's additive offsets: the rows G154..G159 and G254..G259 selected, the selected external
+    shift (G160/G260/G360), G168 and G268."""
     c = rt.ctl
     logical = [a.name for a in c.channel_axes(c.channel)]
     external = external_shift(c, state)
@@ -177,7 +193,20 @@ def additive(rt: SystemContext, kernel, state: NcFuncs) -> list[float]:
     for i, name in enumerate(kernel.axis_names):
         if name in logical and (n := logical.index(name)) < N_LOGICAL:
             add[i] = external[n] + state.g168[n] + state.g268[n]
+        add[i] += additive_zs(c, state.zs16, name) + additive_zs(c, state.zs17, name)
     return add
+
+
+def additive_zs(c, g: int, name: str) -> float:
+    """The value (mm) of axis ``name`` in row G<g> (54..59, 154..159, 254..259) of the active ZS table; 0 for
+    G153/G253 (off)."""
+    if g in (153, 253):
+        return 0.0
+    table = c.zs_tables[c.zs_active]
+    if name not in table["columns"]:
+        return 0.0
+    v = table["rows"][f"G{g}"][table["columns"].index(name)]
+    return v * INCH if table["unit"] == "inch" else v
 
 
 def external_shift(c, state: NcFuncs) -> list[float]:

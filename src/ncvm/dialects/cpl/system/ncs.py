@@ -15,7 +15,7 @@ from ..errors import CplError
 from ..io.strings import CharacterField
 from .axes import kernel_index, nul
 from .context import SystemContext
-from .gfuncs import GEARS, external_shift, program_shift
+from .gfuncs import GEARS, additive_zs, external_shift, program_shift
 from .offsets import push_to_kernel
 from .sysdata import g_of_group
 
@@ -79,18 +79,19 @@ def _data(rt: SystemContext, typ: int, ch: int, size: int, axisno, idno):
         return [f, f, f]
     if typ == 7:
         return [c.override["feed"] * 100.0]
-    if typ == 9:
-        return [k.tool if k.tool_length else -1]
+    if typ == 9:  # the compensation group of the H word (L2835), -1 for none
+        return [k.modal.get("H") or -1]
     if typ == 10:
         return [k.tool_length]
-    if typ == 13:
-        return c.tc_last
+    if typ == 13:  # the table G22 K selected (L2851); three blanks for none (G22 K0)
+        table = k.modal.get("G22", 4)
+        return f"K{table}" if table else "   "
     if typ == 14:
         return c.zs_active
-    if typ == 15:
-        table = c.zs_tables[c.zs_active]
-        return [table["rows"][f"G{b + i}"][table["columns"].index(a.name)] if a.name in table["columns"] else 0.0
-                for b in (54, 154, 254) for i in range(6) for a in own]
+    if typ == 15:  # the active row of each group G53..G59, G153..G159, G253..G259 (L2856), in mm
+        st = c.g_active
+        rows = (int(k.work_offset[1:]) if k.work_offset else None, st.zs16, st.zs17)
+        return [additive_zs(c, g, a.name) if g else 0.0 for g in rows for a in own]
     if typ == 18:
         return [0 if k.scale != 1.0 else 1]
     if typ == 24:

@@ -8,6 +8,8 @@ from __future__ import annotations
 
 import math
 
+from ....nc.cutter import active_g
+from ....nc.profiles.typ3osa import TYP3OSA
 from ..errors import CplError
 from ..values import sv
 from .axes import nul
@@ -17,12 +19,11 @@ from .gfuncs import N_LOGICAL
 from .positions import probe_switched
 from .transforms import active_group
 
-#: G group (table 6.9.3) -> the G numbers in it
-G_GROUPS = {2: (0, 1, 2, 3, 5, 11, 12, 13, 73), 3: (70, 71), 4: (90, 91, 189, 190, 191), 5: (63, 66), 6: (543,),
-            7: (93, 94, 95), 8: (40, 41, 42), 9: (6, 7), 10: (17, 18, 19, 20), 11: (8, 9), 13: (14, 15),
-            15: (53, 54, 55, 56, 57, 58, 59), 16: tuple(range(153, 160)), 17: tuple(range(253, 260)),
-            18: (60, 67), 19: (37, 38, 39), 20: (61, 62), 25: (64, 65), 26: (68, 69),
-            28: tuple(range(145, 846, 100)) + (146,), 29: (114, 115), 30: (160, 167)}
+#: G group (the SD(1) supplementary table, L2302-2306) -> the G numbers in it, from the typ3osa profile
+G_GROUPS = {}
+for _row in TYP3OSA.rows:
+    if _row.group:
+        G_GROUPS.setdefault(int(_row.group), []).append(_row.g)
 GROUP_OF = {g: grp for grp, gs in G_GROUPS.items() for g in gs}
 PLANE_AXES = {17: (1, 2), 18: (3, 1), 19: (2, 3)}
 
@@ -34,6 +35,10 @@ def g_of_group(k, group: int, typ3=None) -> int:
         return typ3.external or 146  # external tool compensation G145..G845, G146 = none
     if group == 30 and typ3 is not None:
         return typ3.external_zs  # external zero shift G160/G260/G360, G167 = none
+    if group == 16 and typ3 is not None:
+        return typ3.zs16  # G154..G159, G153 = none
+    if group == 17 and typ3 is not None:
+        return typ3.zs17  # G254..G259, G253 = none
     if group == 2:
         return k.motion
     if group == 3:
@@ -41,17 +46,19 @@ def g_of_group(k, group: int, typ3=None) -> int:
     if group == 4:
         return 90 if k.absolute else 91
     if group == 8:
-        return 40  # the kernel has no cutter radius compensation (G41/G42 are refused)
+        return active_g(k)
     if group == 10:
-        return k.plane
+        return k.modal.get("10", k.plane)  # G20, or the plane G17..G19
     if group == 15:
         return int(k.work_offset[1:]) if k.work_offset else 53
+    if group == 20:
+        return 61 if k.exact else 62  # the path mode (CPL_PATH_CODES): exact stop or continuous path
     if group == 7:
         return 95 if k.per_rev else 94  # feed per minute or per revolution (L2817); the kernel refuses G93
-    if group == 25:
-        return 64  # continuous-path mode: the kernel takes G64 and refuses G65
     if group in (18, 19):
         return active_group(k, group)
+    if str(group) in TYP3OSA.defaults:  # the groups whose active function is all ncvm keeps of them
+        return k.active_in(str(group))
     if 1 <= group <= 48:
         return -1
     raise CplError("CPL023", f"G group {group}: 1..48")

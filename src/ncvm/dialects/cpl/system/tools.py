@@ -19,9 +19,18 @@ GENERAL_FIELDS = 8  # L(2)3, R, L(2)1, L(2)2, TO, type (read only), Euler angles
 
 
 def setup(rt: SystemContext) -> None:
-    """K4 and the machine's tool table agree (persisted K4 values win)."""
+    """K4 and the machine's tool table agree (persisted K4 values win); the H word reads the tables."""
     for group, (h, d) in rt.ctl.tc_tables["K4"].items():
         _to_machine(rt, group, h, d)
+
+    def length(kernel, table: int, group: int, src) -> float:
+        """H<group>: the length compensation H of the table G22 K<table> selected (K4 at power-on, 0 none)."""
+        if not table:
+            return 0.0
+        h = rt.ctl.tc_tables[STANDARD_TABLES[table]].get(group, (0.0, 0.0))[0]
+        return h * INCH if rt.ctl.tc_unit == "inch" else h
+
+    rt.kernel.length_compensation = length
 
 
 def _to_machine(rt: SystemContext, group: int, h: float, d: float) -> None:

@@ -24,7 +24,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field, replace
 
-from ....nc.kernel import PLANES, refused_g
+from ....nc.kernel import PLANES
 from ....nc.transform import Affine, SingularTransform
 from ..errors import CplError
 from .axes import kernel_index, nul, resolve, to_unit
@@ -182,16 +182,10 @@ G_HANDLERS = {60: g60, 67: g67, 37: g37_38, 38: g37_38, 39: g39, 138: g138}
 PARAMETER_G = frozenset((60, 37, 38, 138))
 
 
-#: G numbers the Typ3 osa reads otherwise than ISO and ncvm does not run yet (issue 14, the control's G table)
-TYP3_REFUSED = {20: refused_g("plane switchover with a pole, L2372"),
-                21: refused_g("not a G function of the Typ3 osa; units are G70/G71")}
-
-
 def setup(rt: SystemContext) -> None:
-    """At program start: the NC kernel knows the Bosch transformation G functions, and refuses the G numbers
-    whose ISO meaning (G20 inch, G21 mm) is not the control's."""
+    """At program start: the NC kernel runs the Bosch transformation G functions with these handlers (their
+    rows in the typ3osa profile name this module)."""
     rt.kernel.g_handlers.update(G_HANDLERS)
-    rt.kernel.g_handlers.update(TYP3_REFUSED)
 
 
 def active_group(k, group: int) -> int | None:

@@ -1,4 +1,5 @@
-"""``ncvm check`` of CL 800: the DIN words of ``(: ... :)`` blocks for axes the machine lacks (NC011).
+"""``ncvm check`` of CL 800: the DIN words of ``(: ... :)`` blocks for axes the machine lacks (NC011), and the
+G functions the SINUMERIK 810-880 profile refuses (warnings, nc/profiles/check.py).
 
 The compiled object runs on the SINUMERIK 800 front end, which refuses such a word where it stands; the
 check reads the same words with the SINUMERIK block reader, so both judge them alike.
@@ -8,9 +9,11 @@ from __future__ import annotations
 
 from dataclasses import fields
 
-from ....diagnostics import Diagnostic, Span, read_lines
-from ....nc.axiswords import missing_axis_message
-from ..codegen import dwells, missing_axis
+from ....diagnostics import Diagnostic, read_lines
+from ....nc.profiles.check import refused_g_warnings
+from ....nc.profiles.sinumerik8xx import SINUMERIK8XX
+from ..codegen import _word_diagnostic as word_diagnostic
+from ..codegen import dwells, g_word, missing_axis
 from ..errors import ReadError
 from ..reader import Word, read_block
 from . import ast
@@ -21,6 +24,7 @@ def axis_diagnostics(path: str, prog, axes, radius: str = "B") -> list[Diagnosti
         return []
     lines = read_lines(path) or []
     out = []
+    uses = []
     for st in _din_blocks(prog.body):
         try:
             words = [it for it in read_block(st.text, st.line).items if isinstance(it, Word)]
@@ -29,11 +33,12 @@ def axis_diagnostics(path: str, prog, axes, radius: str = "B") -> list[Diagnosti
         source = lines[st.line - 1] if st.line <= len(lines) else ""
         base = source.find(st.text, max(st.col - 1, 0))
         dwell = dwells(words)
+        uses.extend((w.value, st.line, base + w.col if base >= 0 else st.col) for w in words if g_word(w))
         for w in words:
             if (w.value is not None or w.rref is not None) and missing_axis(w.address, axes, dwell, radius):
                 column = base + w.col if base >= 0 else st.col
-                out.append(Diagnostic("NC011", missing_axis_message(w.address, axes), Span(path, st.line, column)))
-    return out
+                out.append(word_diagnostic(path, st.line, column, w.address, axes))
+    return out + refused_g_warnings(SINUMERIK8XX, path, uses)
 
 
 def _din_blocks(node):
