@@ -94,7 +94,7 @@ class RunResult:
             cycle_time_s=session.machine.clock.now,
             # a runaway is caught just past the limit; straight code (no loop, no jump back) may pass it
             steps=session.steps.limit if error and error.code == "RUN001" else session.steps.steps,
-            limit_violations=[v.message() for v in session.checks.violations()],
+            limit_violations=[v.message() for v in session.checks.violations(session.source_place)],
             extra=dict(session.extra), session=session)
 
     def to_json(self) -> dict:

@@ -9,7 +9,10 @@ reports its first violations at the end, in ``limit_violations``; the run goes o
 
 from __future__ import annotations
 
+import dataclasses
 from typing import Any, Callable, NamedTuple, Protocol, Sequence
+
+from ..nc.canon import Src
 
 DEAD, WORK = "dead range", "work area"
 
@@ -26,8 +29,9 @@ class Area(NamedTuple):
 
 
 class Violation(Protocol):
-    """One reported violation: where it happened first and what it was."""
+    """One reported violation (a dataclass): where it happened first and what it was."""
 
+    file: str
     line: int
 
     def message(self) -> str: ...
@@ -67,6 +71,11 @@ class Checks:
             raise RuntimeError("this session records no moves: protection zones cannot be checked")
         self.add(self._area_check(areas, axis_names))
 
-    def violations(self) -> list[Violation]:
-        """Every check's first violations, check by check."""
-        return [v for check in self._checks for v in check.first()]
+    def violations(self, place: Callable[[Src], Src] | None = None) -> list[Violation]:
+        """Every check's first violations, check by check; ``place`` maps where each happened (a ``Src``)
+        to where it stands in the user's source (``Session.source_place``)."""
+        found = [v for check in self._checks for v in check.first()]
+        if place is None:
+            return found
+        return [dataclasses.replace(v, file=src.file, line=src.line)  # type: ignore[type-var]
+                for v, src in ((v, place(Src(v.file, v.line))) for v in found)]
