@@ -48,4 +48,5 @@ def test_deadlock_beside_a_clock_reading_monitor_is_run005(tmp_path: Path):
                     options=RunOptions(state_dir=tmp_path / ".s", max_steps=2_000_000))
     assert result["error"] is not None
     assert result["error"]["code"] == "RUN005", result["error"]
-    assert "line 6" in result["error"]["message"] and "line 15" in result["error"]["message"]
+    # task 1 sleeps in its WT(100) (line 16) whenever the others look: that is the line it stands at
+    assert "task 0 at line 6" in result["error"]["message"] and "task 1 at line 16" in result["error"]["message"]

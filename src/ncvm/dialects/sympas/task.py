@@ -49,6 +49,7 @@ class Task:
         self.main_locals = None
         self.held = None  # sched.steps when this task last found its W-wait held by TROVR = 0
         self.slept_at = 0.0  # when its last sleep (WT, a wait for events) began
+        self.clock_reads = 0  # CLOCK reads so far (a task waiting for a time is not deadlocked)
         self.waits_for: float | None = None  # while it sleeps: when it acts again if nothing else happens
         self.waits_mark = 0  # sched.acts when waits_for was worked out (valid while no task has acted since)
         self.polls = False  # whether it looks for events while it sleeps
@@ -83,7 +84,7 @@ class Task:
             self.budget -= n
 
     def clock(self, n: int) -> int:
-        self.sched.clock_reads += 1  # a task reading the clock may be waiting for a time (not a deadlock)
+        self.clock_reads += 1  # a task reading the clock may be waiting for a time (not a deadlock)
         return (int(self.time + n * self.iq) + self.sched.clock0) & 0xFFFFFFFF
 
     def set_budget(self) -> None:
