@@ -677,10 +677,12 @@ class _Record:
         if self.g16:
             out.emit(f"_rt.positions.g16({self.g16!r}, {line})", line)
         if any(x in (58, 59) for x in self.g):
+            # the axis words are the offset; F, S, T ... keep their meaning in the block (docs/decisions.md)
             group = 1 if 58 in self.g else 2
-            pairs = ", ".join(f"({k}, {v})" for k, v, _c in words)
+            axis_keys = {repr(a) for a in cg.axes}
+            pairs = ", ".join(f"({k}, {v})" for k, v, _c in words if k in axis_keys)
             out.emit(f"_rt.offsets.programmable_zo({group}, [{pairs}], {line})", line)
-            words = []
+            words = [w for w in words if w[0] not in axis_keys]
         if self.d is not None:
             out.emit(f"_rt.offsets.select_d({self.d}, {line})", line)
         if self.int_sec is not None:
