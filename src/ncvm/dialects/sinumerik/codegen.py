@@ -21,7 +21,8 @@ from ...nc.block import Block
 from ...nc.canon import Src
 from ...runtime.codegen import PySource
 from .atcodes import AT_CODES, AtCode
-from .finite import checked
+from .finite import stays_in_range
+from .ncdata import R_LIMIT
 from .reader import Arith, AtInstr, NcBlock, Note, Operand, PartProgram, Word
 
 #: M functions the kernel handles itself; any other goes to the PLC
@@ -264,18 +265,21 @@ class UnitCodegen:
             rec.word(out, it, writes_after[i])
         elif isinstance(it, Arith):
             rec.settle_int_sec(out)
-            out.emit(self._arith(it), line)
             if i in checks and not self.strict:
-                # x - x is 0.0 (false) unless x is infinite or NaN
-                target = self.r(it.target)
-                out.emit(f"if {target} - {target}: _finite({target})", line)
+                # the value is stored only in range; the test is false for NaN too (its comparisons are)
+                out.emit(f"_v = {self._arith_expr(it)}", line)
+                out.emit(f"if not -{R_LIMIT!r} <= _v <= {R_LIMIT!r}: _r_value(_v)", line)
+                out.emit(f"{self.r(it.target)} = _v", line)
+            else:
+                out.emit(f"{self.r(it.target)} = {self._arith_expr(it)}", line)
         elif isinstance(it, Note):
             rec.note(it)
         elif isinstance(it, AtInstr):
             rec.settle_int_sec(out)
             rec.jumped = not self._at(out, idx, blk, it, rec)
 
-    def _arith(self, it: Arith) -> str:
+    def _arith_expr(self, it: Arith) -> str:
+        """The value an R assignment stores (strict_nc: rounded and range-checked)."""
         expr = ""
         for k, (op, term) in enumerate(it.terms):
             v = self.val(term)
@@ -286,7 +290,7 @@ class UnitCodegen:
         self.written.add(it.target)
         if self.strict:
             expr = f"_nc8({expr})"
-        return f"{self.r(it.target)} = {expr}"
+        return expr
 
     def _jump(self, out: PySource, idx: int, blk: NcBlock, number: int, rec: "_Record") -> None:
         """Lines that leave the block for block ``number`` (±, digest §5.3 rule 4)."""
@@ -509,18 +513,9 @@ class _Site(NamedTuple):
 
 
 def _arith_checks(items: list) -> set[int]:
-    """Indexes of the R assignments of a block whose result must be checked for the double range
+    """Indexes of the R assignments of a block whose result must be checked for the R parameter range
     (only arithmetic can leave it; :mod:`.finite` says which)."""
-    out: set[int] = set()
-    run: list[int] = []
-    for i, it in enumerate([*items, None]):
-        if isinstance(it, Arith):
-            run.append(i)
-            continue
-        if run:
-            out.update(k for k, need in zip(run, checked([items[k] for k in run])) if need)
-            run = []
-    return out
+    return {i for i, it in enumerate(items) if isinstance(it, Arith) and not stays_in_range(it.terms)}
 
 
 def _jump_numbers(it: AtInstr):
