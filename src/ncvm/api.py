@@ -87,14 +87,18 @@ class RunResult:
     @classmethod
     def of(cls, session: Session, recorder: ToolpathRecorder, error: Diagnostic | None) -> RunResult:
         """The result of ``session``, whose moves ``recorder`` recorded, ended by ``error`` (or None)."""
+        labels = session.axis_labels  # the program's axis names (rw_SymPas A1 ...)
+        motion = recorder.summary()
+        if labels:
+            motion = dataclasses.replace(motion, bounds={labels.get(a, a): b for a, b in motion.bounds.items()})
         return cls(
             dialect=session.dialect, error=error, output=session.output.lines(),
             output_dropped=session.output.dropped, variables=dict(session.variables),
-            position=session.kernel.workpiece_position(), motion=recorder.summary(),
+            position={labels.get(a, a): v for a, v in session.kernel.workpiece_position().items()}, motion=motion,
             cycle_time_s=session.machine.clock.now,
             # a runaway is caught just past the limit; straight code (no loop, no jump back) may pass it
             steps=session.steps.limit if error and error.code == "RUN001" else session.steps.steps,
-            limit_violations=[v.message() for v in session.checks.violations(session.source_place)],
+            limit_violations=[v.message() for v in session.checks.violations(session.source_place, labels)],
             extra=dict(session.extra), session=session)
 
     def to_json(self) -> dict:

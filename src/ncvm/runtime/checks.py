@@ -71,11 +71,21 @@ class Checks:
             raise RuntimeError("this session records no moves: protection zones cannot be checked")
         self.add(self._area_check(areas, axis_names))
 
-    def violations(self, place: Callable[[Src], Src] | None = None) -> list[Violation]:
+    def violations(self, place: Callable[[Src], Src] | None = None,
+                   labels: dict[str, str] | None = None) -> list[Violation]:
         """Every check's first violations, check by check; ``place`` maps where each happened (a ``Src``)
-        to where it stands in the user's source (``Session.source_place``)."""
-        found = [v for check in self._checks for v in check.first()]
-        if place is None:
-            return found
-        return [dataclasses.replace(v, file=src.file, line=src.line)  # type: ignore[type-var]
-                for v, src in ((v, place(Src(v.file, v.line))) for v in found)]
+        to where it stands in the user's source (``Session.source_place``), ``labels`` the machine's axis
+        names to the program's (``Session.axis_labels``)."""
+        return [_as_reported(v, place, labels) for check in self._checks for v in check.first()]
+
+
+def _as_reported(v: Any, place: Callable[[Src], Src] | None, labels: dict[str, str] | None) -> Any:
+    """Violation ``v`` at its place in the source and under the program's axis name; one that names an
+    axis so says it is in machine coordinates, where limits are."""
+    changes: dict[str, Any] = {}
+    if place is not None:
+        src = place(Src(v.file, v.line))
+        changes.update(file=src.file, line=src.line)
+    if labels and "axis" in {f.name for f in dataclasses.fields(v)}:
+        changes.update(axis=labels.get(v.axis, v.axis), frame="machine")
+    return dataclasses.replace(v, **changes) if changes else v

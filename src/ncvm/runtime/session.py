@@ -107,6 +107,9 @@ class Session:
         #: where a place of the program the NC runs stands in the user's source: itself, except for a
         #: program compiled to another one first (a CL 800 run's object program, which is never on disk)
         self.source_place: Callable[[Src], Src] = _same_place
+        #: the program's names of machine axes it names otherwise (rw_SymPas A1 ...): the result reports
+        #: positions, bounds and limit violations under them (api.RunResult)
+        self.axis_labels: dict[str, str] = {}
         messages = OperatorMessages(self.say, lambda src: self.source_place(src))
         self.canon.add(messages)
         self.kernel = messages.kernel = NcKernel(machine, self.canon)

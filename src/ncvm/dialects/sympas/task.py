@@ -273,8 +273,7 @@ class Task:
         self.tskinfo |= 1
         if newline:
             self.tskinfo |= 2
-            self.card.session.say(self.line)
-            self.card.output_log.append({"task": self.number, "text": self.line})
+            self.card.say(self.line, self.number)
             if self.card.sys["MODEREG"] & (1 << 26):
                 self.state = STOPPED
                 return True
@@ -295,8 +294,8 @@ class Task:
     def rs(self):
         where = self.where()
         place = f"{where[0]}:{where[1]}: " if where else ""
-        self.card.session.say(f"{place}RS: system reset by task {self.number}: the axes stop, the running tasks "
-                              "are stopped")
+        self.card.say(f"{place}RS: system reset by task {self.number}: the axes stop, the running tasks "
+                      "are stopped", self.number)
         self.card.session.extra["ended"] = f"ended by RS (system reset) at {place.rstrip(': ') or 'task ' + str(self.number)}"
         self.card.reset_system(self.time)
         yield
