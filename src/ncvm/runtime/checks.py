@@ -29,9 +29,9 @@ class Area(NamedTuple):
 
 
 class Violation(Protocol):
-    """One reported violation (a dataclass): where it happened first and what it was."""
+    """One reported violation: where it happened first and what it was. A dataclass with a ``file`` is
+    reported at its place in the user's source and under the program's axis name (Checks.violations)."""
 
-    file: str
     line: int
 
     def message(self) -> str: ...
@@ -82,6 +82,8 @@ class Checks:
 def _as_reported(v: Any, place: Callable[[Src], Src] | None, labels: dict[str, str] | None) -> Any:
     """Violation ``v`` at its place in the source and under the program's axis name; one that names an
     axis so says it is in machine coordinates, where limits are."""
+    if not dataclasses.is_dataclass(v) or not hasattr(v, "file"):
+        return v  # a front end's own report that names no place
     changes: dict[str, Any] = {}
     if place is not None:
         src = place(Src(v.file, v.line))
