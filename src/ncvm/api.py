@@ -178,6 +178,9 @@ def run_program(path: str | Path, dialect: str | None = None, machine: Machine |
         with StateLock(options.state_dir):  # the controller's memory: one run at a time, refused at once
             sinks = run_sinks(m, options)
             session = Session(m, options, dialect=d, sinks=sinks)
+            for sink in sinks.canon:
+                if isinstance(sink, JsonlTrace):  # the trace names the user's source lines (a CL 800 .cl8)
+                    sink.place = lambda src: session.source_place(src)
             error: Diagnostic | None
             try:
                 error = run_guarded(session, lambda: front.run(str(path), text, session))

@@ -12,10 +12,14 @@ class JsonlTrace(CanonSink):
     def __init__(self, path):
         self._f = open(path, "w", encoding="utf-8")
         self.names: tuple[str, ...] = ()
+        #: where a place the NC ran stands in the user's source (the API gives it Session.source_place)
+        self.place = None
 
     def _write(self, call: str, src, **data) -> None:
         rec = {"call": call, **data}
         if src is not None:
+            if self.place is not None:
+                src = self.place(src)
             rec["file"], rec["line"] = src.file, src.line
         try:
             self._f.write(json.dumps(rec) + "\n")

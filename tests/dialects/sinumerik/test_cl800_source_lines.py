@@ -60,3 +60,21 @@ def test_soft_limit_warning_of_a_cl800_program_names_the_source_line(tmp_path: P
     result = _run(tmp_path, LIMIT_PROGRAM)
     text = " ".join(str(v) for v in result["limit_violations"])
     assert "p.cl8" in text and ".spf" not in text, result["limit_violations"]
+    # the block of `R60 = 900;` and `(:G1 F100:); PRAP (1)=R60; LF;` runs at its end, the PRAP line
+    assert text.endswith("p.cl8:7)"), result["limit_violations"]
+
+
+def test_trace_of_a_cl800_program_names_the_source_lines(tmp_path: Path):
+    """The same class as the M0 line (issue 15): each trace record names the .cl8 statement of its block."""
+    import json
+
+    (tmp_path / "machine.toml").write_text(MACHINE)
+    (tmp_path / "p.cl8").write_text(M0_PROGRAM)
+    trace = tmp_path / "t.jsonl"
+    result, _ = run(tmp_path / "p.cl8", dialect="cl800", machine=tmp_path / "machine.toml",
+                    options=RunOptions(state_dir=tmp_path / ".s", trace=trace))
+    assert result["status"] == "ok", result["error"]
+    records = [json.loads(line) for line in trace.read_text().splitlines()]
+    placed = [(r["call"], Path(r["file"]).name, r["line"]) for r in records if "file" in r]
+    assert ("rapid", "p.cl8", 6) in placed and ("stop", "p.cl8", 7) in placed and ("feed", "p.cl8", 9) in placed
+    assert not any(name.endswith(".spf") for _, name, _ in placed)

@@ -161,10 +161,11 @@ class _ObjectPlaces:
         return Span(self.path, self.obj.source_line(span.line, span.column))
 
     def source(self, src: Src) -> Src:
-        """``src`` (a place the NC ran) as a place in the source: where M0 lines and limit messages point."""
+        """``src`` (a block the NC ran) as a place in the source: where M0 lines, limit messages and the
+        trace point."""
         if src.file != self.obj_path:
             return src
-        return Src(self.path, self.obj.source_line(src.line))
+        return Src(self.path, self.obj.executed_line(src.line))
 
     def note(self, span: Span | None) -> list[str]:
         if span is None or span.file != self.obj_path or not 2 <= span.line <= len(self.obj.blocks) + 1:
