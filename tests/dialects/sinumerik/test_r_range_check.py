@@ -123,3 +123,18 @@ def test_cl800_arithmetic_beyond_the_range_stops_at_the_source_line_L7079(tmp_pa
     r, _ = run(tmp_path / "p.cl8", machine=tmp_path / "machine.toml", options=RunOptions(state_dir=tmp_path / ".s"))
     assert r["error"]["code"] == "CL800" and r["error"]["file"].endswith("p.cl8") and r["error"]["line"] == 6
     assert r["motion"]["feed_moves"] == 0
+
+
+@pytest.mark.parametrize("words, read, expected", [
+    ([32767, 65535], "@3b0 R2 K1 K10 K0 K2 K0", 99999999.0),     # PLCDF of 2 DW: 2147483647
+    ([32768, 0], "@3b0 R2 K1 K10 K0 K2 K0", -99999999.0),        # -2147483648
+    ([32639, 65535], "@3b2 R2 K1 K10 K0", 99999999.0),           # a PLC float of 3.4e38
+    ([0x1234, 0x5678, 0x9012], "@3b1 R2 K1 K10 K0 K3 K100", 99999999.0),  # 12 BCD digits
+])
+def test_a_plc_value_beyond_the_r_range_enters_the_maximum_and_goes_on_L727(tmp_path, words, read, expected):
+    """L727: "An overflow PLC ==> NC at reading causes the maximum value to be entered into the R parameter
+    and an NC alarm issued, which does not interrupt the program." Before, the value was stored as read."""
+    plc = f'[sin800.plc.1]\nDB = {{ "10" = {words} }}\n'
+    r = run_mpf(tmp_path, f"%MPF1\nN10 {read}\nN20 R3=1\nM30\n", plc, ok=True)
+    assert R(r, 2) == expected and R(r, 3) == 1.0
+    assert len(r["output"]) == 1 and r["output"][0].startswith(f"NC alarm: @{read[1:4]} read ")

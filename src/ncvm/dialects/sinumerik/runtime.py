@@ -165,7 +165,7 @@ class Channel:
         self.scenario = EventQueue(session.machine.scenario)  # the scenario events still to come
         self.probe = Probe(self.scenario, self.advance_scenario)
         self.plc_clock = PlcClock(f"{session.machine.source}: [sin800]", data.plc)
-        self.plc = Plc(data, self.plc_clock, session.machine.clock, self.advance_scenario)
+        self.plc = Plc(data, self.plc_clock, session.machine.clock, self.advance_scenario, session.say)
         for ev in of_type(session.machine.scenario, PlcTimer, PlcCounter):
             self.plc_clock.parse_event(ev)  # faults in the scenario before the run
         self.m_functions = {f"M{int(k)}": dict(v) for k, v in sec.m_functions.items()}
