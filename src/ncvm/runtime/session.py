@@ -175,7 +175,8 @@ class OperatorMessages(CanonSink):
 
     def stop(self, kind: str, src) -> None:
         if kind == "M0" and self.kernel is not None:
-            self.say(programmed_stop_line(self.kernel, self.place(src)))
+            placed = self.place(src)  # a CL 800 run: the .cl8 line, not the object block and its number
+            self.say(programmed_stop_line(self.kernel, placed, numbered=placed == src))
 
 
 class OperatorOutput:

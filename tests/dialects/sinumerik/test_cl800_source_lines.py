@@ -78,3 +78,13 @@ def test_trace_of_a_cl800_program_names_the_source_lines(tmp_path: Path):
     placed = [(r["call"], Path(r["file"]).name, r["line"]) for r in records if "file" in r]
     assert ("rapid", "p.cl8", 6) in placed and ("stop", "p.cl8", 7) in placed and ("feed", "p.cl8", 9) in placed
     assert not any(name.endswith(".spf") for _, name, _ in placed)
+
+
+def test_m0_in_a_compiled_loop_names_the_source_line_not_the_compiler_block_number(tmp_path: Path):
+    """The WHILE loop's block gets the number N3001 from the compiler (compiler block numbers have 4 digits, L6421): a number
+    the user never wrote, so the M0 line names the .cl8 line instead (issue 15, CL 800 5)."""
+    program = ("PROGRAM 205;\nCHANNEL NC 1;\nLOCAL REAL: R60;\nBEGIN\n  R60 = 0;\n  WHILE R60 < 2 DO\n    BEGIN\n"
+               "      (:M00:); LF;\n      R60 = R60 + 1;\n    END;\nEND.\n")
+    result = _run(tmp_path, program)
+    assert result["status"] == "ok", result["error"]
+    assert result["output"] == ["M0 at line 8: programmed stop (continued)"] * 2
