@@ -88,15 +88,19 @@ class RunResult:
     @classmethod
     def of(cls, session: Session, recorder: ToolpathRecorder, error: Diagnostic | None) -> RunResult:
         """The result of ``session``, whose moves ``recorder`` recorded, ended by ``error`` (or None)."""
+        labels = session.axis_labels  # the program's axis names (rw_SymPas A1 ...)
+        motion = recorder.summary()
+        if labels:
+            motion = dataclasses.replace(motion, bounds={labels.get(a, a): b for a, b in motion.bounds.items()})
         return cls(
             dialect=session.dialect, error=error, output=session.output.lines(),
             output_dropped=session.output.dropped, variables=dict(session.variables),
-            position=session.kernel.workpiece_position(), motion=recorder.summary(),
+            position={labels.get(a, a): v for a, v in session.kernel.workpiece_position().items()}, motion=motion,
             cycle_time_s=session.machine.clock.now,
             cycle_time_model=session.time_model or session.kernel.time_model(),
             # a runaway is caught just past the limit; straight code (no loop, no jump back) may pass it
             steps=session.steps.limit if error and error.code == "RUN001" else session.steps.steps,
-            limit_violations=[v.message() for v in session.checks.violations()],
+            limit_violations=[v.message() for v in session.checks.violations(session.source_place, labels)],
             extra=dict(session.extra), session=session)
 
     def to_json(self) -> dict:
@@ -177,6 +181,9 @@ def run_program(path: str | Path, dialect: str | None = None, machine: Machine |
         with StateLock(options.state_dir):  # the controller's memory: one run at a time, refused at once
             sinks = run_sinks(m, options)
             session = Session(m, options, dialect=d, sinks=sinks)
+            for sink in sinks.canon:
+                if isinstance(sink, JsonlTrace):  # the trace names the user's source lines (a CL 800 .cl8)
+                    sink.place = lambda src: session.source_place(src)
             error: Diagnostic | None
             try:
                 error = run_guarded(session, lambda: front.run(str(path), text, session))

@@ -268,7 +268,10 @@ def _stdin_is_terminal() -> bool:
 
 def _summary(result: dict) -> str:
     m = result["motion"]
-    bounds = " ".join(f"{a}[{lo:.3f},{hi:.3f}]" for a, (lo, hi) in m["bounds"].items())
+    bounds = _bounds(m["bounds"])
+    if "frames" in result:  # figures in two frames (rw_SymPas): say which is which
+        program = _bounds(result.get("bounds_program", {}))
+        bounds = f"(machine) {bounds}" + (f", program bounds {program}" if program and program != bounds else "")
     # a front end may say how a run without error ended ("ended": e.g. by a system reset)
     status = result.get("ended", "ended normally") if result["status"] == "ok" \
         else f"stopped with error {result['error']['code']}"
@@ -277,6 +280,10 @@ def _summary(result: dict) -> str:
             f"(feed {m['feed_length']:.3f}), cycle time {_hms(result['cycle_time_s'])}"
             + (f" ({result['cycle_time_model']})" if "cycle_time_model" in result else "")
             + (f", bounds {bounds}" if bounds else ""))
+
+
+def _bounds(bounds: dict) -> str:
+    return " ".join(f"{a}[{lo:.3f},{hi:.3f}]" for a, (lo, hi) in bounds.items())
 
 
 def _hms(seconds: float) -> str:

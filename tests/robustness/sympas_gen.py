@@ -11,7 +11,6 @@ import random
 from dataclasses import dataclass, field
 
 AXES = ["A1", "A2", "A3"]
-AXIS_NAMES = {"A1": "X", "A2": "Y", "A3": "Z"}
 NUM = ("integer", "single", "double")
 
 MACHINE = """
@@ -38,7 +37,7 @@ ref_positions = {A1 = -5.0, A2 = -5.0, A3 = 3.0}
 class Program:
     text: str
     machine: str
-    #: final positions (machine axis name -> value) the W moves of task 0 must leave
+    #: final positions (the program's axis name -> value, as the result reports them) the W moves of task 0 must leave
     expected: dict[str, float] = field(default_factory=dict)
     #: run-time error codes this program may legitimately end with
     allowed: set[str] = field(default_factory=set)
@@ -545,7 +544,7 @@ class Gen:
                     f'bit = {r.randint(1, 2)}\nvalue = {r.choice(["true", "false"])}\n'
         expected = {}
         if track and not others:
-            expected = {AXIS_NAMES[a]: v for a, v in positions.items() if v is not None}
+            expected = {a: v for a, v in positions.items() if v is not None}
         return Program("".join(texts), MACHINE + scen, expected, {"32768"}, self.fault)
 
 

@@ -71,7 +71,7 @@ end.
     errors, r = _run(tmp_path, text, trace=trace)
     assert errors == []
     assert r["status"] == "ok", r["error"]
-    assert r["position"] == {"X": 10.0, "Y": 0.0, "Z": 0.0}  # 10 mm, then a full circle back to X 10
+    assert r["position"] == {"A1": 10.0, "A2": 0.0, "A3": 0.0}  # 10 mm, then a full circle back to A1 10
     calls = [json.loads(line) for line in trace.read_text().splitlines()]
     assert [(c["call"], c["line"]) for c in calls if c["call"] in ("feed", "arc")] == [("feed", 16), ("arc", 17)]
 
@@ -114,4 +114,4 @@ def test_nan_as_a_move_parameter_is_error_32768(tmp_path, statement, line_text):
     assert r["error"]["code"] == "32768", r["error"]
     assert line_text in r["error"]["message"]
     assert r["error"]["line"] == 5
-    assert r["position"] == {"X": 0.0, "Y": 0.0, "Z": 0.0}
+    assert r["position"] == {"A1": 0.0, "A2": 0.0, "A3": 0.0}

@@ -705,8 +705,9 @@ def _transformed_linear(kernel: NcKernel, motion: int, words, src: Src) -> None:
     kernel._general_move(motion, words, False, src)
 
 
-def programmed_stop_line(kernel: NcKernel, src: Src) -> str:
+def programmed_stop_line(kernel: NcKernel, src: Src, numbered: bool = True) -> str:
     """The operator's line for an M0 (the same in every dialect): where it stood, and whether the run ends
-    there or goes on as after the operator's cycle start."""
-    where = f"N{kernel.stop_block}" if kernel.stop_block is not None else f"line {src.line}"
+    there or goes on as after the operator's cycle start. ``numbered``: the block's N number is the user's
+    (not one a compiler gave the block, as in a CL 800 object program)."""
+    where = f"N{kernel.stop_block}" if numbered and kernel.stop_block is not None else f"line {src.line}"
     return f"M0 at {where}: programmed stop ({'run ends' if kernel.m0_stops else 'continued'})"

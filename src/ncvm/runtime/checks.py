@@ -9,7 +9,10 @@ reports its first violations at the end, in ``limit_violations``; the run goes o
 
 from __future__ import annotations
 
+import dataclasses
 from typing import Any, Callable, NamedTuple, Protocol, Sequence
+
+from ..nc.canon import Src
 
 DEAD, WORK = "dead range", "work area"
 
@@ -26,7 +29,8 @@ class Area(NamedTuple):
 
 
 class Violation(Protocol):
-    """One reported violation: where it happened first and what it was."""
+    """One reported violation: where it happened first and what it was. A dataclass with a ``file`` is
+    reported at its place in the user's source and under the program's axis name (Checks.violations)."""
 
     line: int
 
@@ -67,6 +71,23 @@ class Checks:
             raise RuntimeError("this session records no moves: protection zones cannot be checked")
         self.add(self._area_check(areas, axis_names))
 
-    def violations(self) -> list[Violation]:
-        """Every check's first violations, check by check."""
-        return [v for check in self._checks for v in check.first()]
+    def violations(self, place: Callable[[Src], Src] | None = None,
+                   labels: dict[str, str] | None = None) -> list[Violation]:
+        """Every check's first violations, check by check; ``place`` maps where each happened (a ``Src``)
+        to where it stands in the user's source (``Session.source_place``), ``labels`` the machine's axis
+        names to the program's (``Session.axis_labels``)."""
+        return [_as_reported(v, place, labels) for check in self._checks for v in check.first()]
+
+
+def _as_reported(v: Any, place: Callable[[Src], Src] | None, labels: dict[str, str] | None) -> Any:
+    """Violation ``v`` at its place in the source and under the program's axis name; one that names an
+    axis so says it is in machine coordinates, where limits are."""
+    if not dataclasses.is_dataclass(v) or not hasattr(v, "file"):
+        return v  # a front end's own report that names no place
+    changes: dict[str, Any] = {}
+    if place is not None:
+        src = place(Src(v.file, v.line))
+        changes.update(file=src.file, line=src.line)
+    if labels and "axis" in {f.name for f in dataclasses.fields(v)}:
+        changes.update(axis=labels.get(v.axis, v.axis), frame="machine")
+    return dataclasses.replace(v, **changes) if changes else v

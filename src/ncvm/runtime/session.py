@@ -18,7 +18,7 @@ from typing import Any, Callable, Protocol
 from ..diagnostics import Diagnostic, RuntimeFault
 from ..machine.model import Machine
 from ..machine.store import Store
-from ..nc.canon import Canon, CanonSink
+from ..nc.canon import Canon, CanonSink, Src
 from ..nc.kernel import NcKernel, programmed_stop_line
 from .checks import Checks
 from .memory import default_max_memory, out_of_memory
@@ -106,7 +106,13 @@ class Session:
         sinks = chosen.canon
         self.sinks = sinks
         self.canon = Canon(sinks)
-        messages = OperatorMessages(self.say)
+        #: where a place of the program the NC runs stands in the user's source: itself, except for a
+        #: program compiled to another one first (a CL 800 run's object program, which is never on disk)
+        self.source_place: Callable[[Src], Src] = _same_place
+        #: the program's names of machine axes it names otherwise (rw_SymPas A1 ...): the result reports
+        #: positions, bounds and limit violations under them (api.RunResult)
+        self.axis_labels: dict[str, str] = {}
+        messages = OperatorMessages(self.say, lambda src: self.source_place(src))
         self.canon.add(messages)
         self.kernel = messages.kernel = NcKernel(machine, self.canon)
         if self.options.time_model:
@@ -143,6 +149,10 @@ class Session:
             self._store.close()
             self._store = None
 
+def _same_place(src: Src) -> Src:
+    return src
+
+
 def run_guarded(session: Session, runner) -> Diagnostic | None:
     """Call ``runner()``; a run-time fault becomes a Diagnostic. CompileFailed and bugs propagate."""
     try:
@@ -163,8 +173,8 @@ class OperatorMessages(CanonSink):
     """Shows the program's operator messages (canon ``message``) and its programmed stops (M0) to the
     operator."""
 
-    def __init__(self, say):
-        self.say = say
+    def __init__(self, say, place: Callable[[Src], Src]):
+        self.say, self.place = say, place
         self.kernel: NcKernel | None = None
 
     def message(self, text: str, src) -> None:
@@ -172,7 +182,8 @@ class OperatorMessages(CanonSink):
 
     def stop(self, kind: str, src) -> None:
         if kind == "M0" and self.kernel is not None:
-            self.say(programmed_stop_line(self.kernel, src))
+            placed = self.place(src)  # a CL 800 run: the .cl8 line, not the object block and its number
+            self.say(programmed_stop_line(self.kernel, placed, numbered=placed == src))
 
 
 class OperatorOutput:

@@ -20,10 +20,12 @@ class LimitViolation:
     limit: float
     file: str
     line: int
+    frame: str = ""  # said where the program's other figures are in another frame ("machine")
 
     def message(self) -> str:
         side = "above" if self.value > self.limit else "below"
-        return (f"axis {self.axis} reaches {self.value:.4f}, {side} its soft limit {self.limit:.4f} "
+        frame = f" in {self.frame} coordinates" if self.frame else ""
+        return (f"axis {self.axis} reaches {self.value:.4f}{frame}, {side} its soft limit {self.limit:.4f} "
                 f"(first at {self.file}:{self.line})")
 
 

@@ -25,10 +25,14 @@ class JsonlTrace(CanonSink):
         self._untimed: deque = deque()  # the move records among them still without a time, oldest first
         self._early: deque = deque()  # timings of moves whose call has not come yet
         self._planned = True  # the path planner times the moves (not a card of its own)
+        #: where a place the NC ran stands in the user's source (the API gives it Session.source_place)
+        self.place = None
 
     def _write(self, call: str, src, **data) -> None:
         rec = {"call": call, **data}
         if src is not None:
+            if self.place is not None:
+                src = self.place(src)
             rec["file"], rec["line"] = src.file, src.line
         self._held.append(rec)
         self._release()

@@ -144,7 +144,8 @@ def test_sample_values(tmp_path):
             "M30\n")
     r = _write(tmp_path, text)["variables"]
     assert r["R20"] == 1.0  # bit 1 of 00010010
-    assert r["R22"] == 4660 * 65536 + 22136  # DW2 high, DW3 low
+    # DW2 high, DW3 low: 0x12345678 = 305419896 lies beyond the R range, the maximum is entered (L727)
+    assert r["R22"] == 99999999.0
     assert r["R23"] == 12.0  # DW1 = 0x0012 read as BCD
     assert r["R24"] == 10010.0 and r["R25"] == 110100.0  # 0x1234: left 0x12, right 0x34
     assert r["R26"] == 1.5 and r["R27"] == 9.0 and r["R28"] == pytest.approx(3004.01) and r["R29"] == 11.0

@@ -39,7 +39,9 @@ def test_strict_division_keeps_eight_digits(tmp_path):
 def test_strict_overflow_is_the_cl800_error(tmp_path):
     r = _run(tmp_path, "%MPF1\nR1=50000000\nR2=R1*2\nM30\n", True)
     assert r["error"]["code"] == "CL800" and r["error"]["line"] == 3
-    assert _run(tmp_path, "%MPF1\nR1=50000000\nR2=R1*2\nM30\n", False)["variables"]["R2"] == 1e8
+    # without strict_nc too (issue 15): the range of L7079 is the control's, not an option's
+    loose = _run(tmp_path, "%MPF1\nR1=50000000\nR2=R1*2\nM30\n", False)
+    assert loose["error"]["code"] == "CL800" and loose["error"]["line"] == 3 and loose["variables"].get("R2", 0.0) == 0.0
 
 
 def test_strict_rounds_system_memory_reads(tmp_path):

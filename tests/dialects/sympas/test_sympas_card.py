@@ -22,7 +22,7 @@ def test_acceptance_program_of_the_digest(sap, acceptance_program):
     assert r["cycle_time_s"] == pytest.approx(1.0 + math.sqrt(500) / 100 + 0.1, abs=0.005)
     assert r["motion"]["feed_moves"] == 1
     assert r["motion"]["feed_length"] == pytest.approx(math.sqrt(500))
-    assert r["position"] == {"X": 10.0, "Y": 20.0, "Z": 0.0}
+    assert r["position"] == {"A1": 10.0, "A2": 20.0, "A3": 0.0}
 
 
 def test_waiting_move_takes_the_trapezoid_time(sap):
@@ -41,7 +41,7 @@ def test_move_without_wait_runs_while_the_program_goes_on(sap):
     assert r["variables"]["v"] == pytest.approx(100.0, abs=0.5)
     assert r["variables"]["pe"] is False            # provisional axst bit 0: profile end
     assert r["variables"]["refused"] is True        # a second move on a moving axis is refused
-    assert r["position"]["X"] == 100.0
+    assert r["position"]["A1"] == 100.0
 
 
 def test_relative_moves_and_units(sap):
@@ -59,9 +59,9 @@ def test_circle_two_full_turns_manual_example(sap):
     r = sap(prog("MCAW(A1 := 50.0, A2 := 0.0, PHI := 720.0); phi := PHI;", "var phi: double;"))
     assert r["motion"]["arc_moves"] == 1
     assert r["motion"]["feed_length"] == pytest.approx(2 * 2 * math.pi * 50)
-    assert r["position"] == {"X": 0.0, "Y": 0.0, "Z": 0.0}
+    assert r["position"] == {"A1": 0.0, "A2": 0.0, "A3": 0.0}
     assert r["variables"]["phi"] == 720.0  # inline system parameters persist
-    assert r["motion"]["bounds"]["X"] == pytest.approx([0.0, 100.0])
+    assert r["motion"]["bounds"]["A1"] == pytest.approx([0.0, 100.0])
 
 
 def test_relative_circle_quarter(sap):
@@ -73,7 +73,7 @@ def test_relative_circle_quarter(sap):
 def test_helix_angle_mode_manual_example(sap):
     # §6.6.39: MHA(A1 := 50.0, A2 := 0.0, PHI := 720.0, A3 := 10)
     r = sap(prog("MHAW(A1 := 50.0, A2 := 0.0, PHI := 720.0, A3 := 10);"))
-    assert r["position"] == pytest.approx({"X": 0.0, "Y": 0.0, "Z": 10.0})
+    assert r["position"] == pytest.approx({"A1": 0.0, "A2": 0.0, "A3": 10.0})
     assert r["motion"]["feed_length"] == pytest.approx(math.hypot(4 * math.pi * 50, 10))
 
 
@@ -85,10 +85,10 @@ def test_helix_target_mode_full_and_half_circle(sap):
                  "SSMSW(A1, A2, A3);",
                  "var x1, y1, z1: double;"))
     assert (r["variables"]["x1"], r["variables"]["y1"], r["variables"]["z1"]) == pytest.approx((0.0, 0.0, 10.0))
-    assert r["position"] == pytest.approx({"X": 20.0, "Y": 0.0, "Z": 20.0})
+    assert r["position"] == pytest.approx({"A1": 20.0, "A2": 0.0, "A3": 20.0})
     assert r["motion"]["arc_moves"] == 2
     # the clockwise half circle from (0,0) around (10,0) passes through (10, 10)
-    assert r["motion"]["bounds"]["Y"] == pytest.approx([-10.0, 10.0])
+    assert r["motion"]["bounds"]["A2"] == pytest.approx([-10.0, 10.0])
 
 
 def test_3d_circle_tilted_plane(sap):
@@ -119,7 +119,7 @@ def test_homing_left_to_the_reference_switch(sap):
     # REF (-5) becomes 0 where the search passes it; braking with hac stops it hvl^2 / (2 hac) further left,
     # rounded to whole counts at the profile end (L1399)
     assert v["homed"] is True and v["x"] == pytest.approx(-round(v["hv"] ** 2 / (2 * v["ha"]), 3))
-    assert r["position"]["X"] == pytest.approx(1.0)
+    assert r["position"]["A1"] == pytest.approx(1.0)
 
 
 def test_zero_offsets_szpa_szpr_shp(sap):
@@ -135,8 +135,8 @@ def test_azo_selects_a_zero_offset_table(sap):
             .replace("program T;\n", "program T;\nvar x: double;\n"),
             machine_toml="[sympas]\nzero_offsets = {1 = [5.0, 0.0, 0.0]}\n")
     assert r["variables"]["x"] == -5.0
-    assert r["position"]["X"] == 0.0  # in the program's coordinates
-    assert r["motion"]["bounds"]["X"] == [0.0, 5.0]  # the machine moved to the table's zero
+    assert r["position"]["A1"] == 0.0  # in the program's coordinates
+    assert r["motion"]["bounds"]["A1"] == [0.0, 5.0]  # the machine moved to the table's zero
 
 
 def test_digital_outputs_and_bits(sap):
@@ -154,7 +154,7 @@ def test_axis_variables_and_loop_over_an(sap):
                  "var VA: AXIS; n: integer; open0, closed: boolean;"))
     assert r["variables"]["open0"] is False and r["variables"]["closed"] is True
     assert r["variables"]["n"] == 2
-    assert r["position"]["Y"] == 7.0
+    assert r["position"]["A2"] == 7.0
 
 
 def test_axis_variable_out_of_range_is_error_256(sap):
@@ -211,4 +211,4 @@ def test_clock_wraps_around_and_timer_deadline_still_holds(sap):
 def test_limit_violation_is_reported(sap):
     # SMD brakes with sdec from the soft limit (softlimits.py): the axis overshoots it, which is reported
     r = sap(prog("MLAW(A1 := 1100.0);"), machine_toml='[sympas]\nsoft_limit_reaction = "SMD"\n')
-    assert r["limit_violations"] and "X" in r["limit_violations"][0]
+    assert r["limit_violations"] and "A1" in r["limit_violations"][0]

@@ -39,7 +39,7 @@ writeln(CLOCK - t0, ' ', x, ' ', v);""")
     assert int(out[0]) == pytest.approx(2.1 * SEC, abs=8)
     assert float(out[1]) == pytest.approx(10.0, abs=0.003)
     assert float(out[2]) == pytest.approx(10.0, abs=1e-6)
-    assert r["position"]["X"] == pytest.approx(20.0)
+    assert r["position"]["A1"] == pytest.approx(20.0)
     assert r["motion"]["feed_moves"] == 2
 
 
@@ -58,7 +58,7 @@ writeln(CLOCK - t0, ' ', x, ' ', v);""")
     # read a few ticks after 1.1 s: the new segment has just started from rest (100 mm/s^2 * 8 ticks = 0.05 mm/s)
     assert float(out[1]) == pytest.approx(10.0, abs=1e-4)
     assert 0.0 <= float(out[2]) <= 0.05
-    assert r["position"]["X"] == pytest.approx(20.0)
+    assert r["position"]["A1"] == pytest.approx(20.0)
 
 
 def test_waiting_segments_of_the_running_chain_are_planned_anew(sap):
@@ -87,7 +87,7 @@ SMLR(A1 := 10.0); SMLR(A1 := 10.0); SMLR(A1 := 10.0); SMLR(A1 := 10.0);
 SSMSW(A1);
 writeln(CLOCK - t0);""", "[sympas]\nspool_capacity = 2\n")
     assert int(out[0]) == pytest.approx(4.1 * SEC, abs=8)
-    assert r["position"]["X"] == pytest.approx(40.0)
+    assert r["position"]["A1"] == pytest.approx(40.0)
 
 
 def test_ssf_after_a_replanned_segment_acts_at_its_new_end(sap):
@@ -115,7 +115,7 @@ MS(A1);
 SMLR(A1 := 10.0); SSMSW(A1);
 writeln(CLOCK - t0);""")
     assert int(out[0]) == pytest.approx(1.7 * SEC, abs=8)
-    assert r["position"]["X"] == pytest.approx(15.0, abs=0.01)
+    assert r["position"]["A1"] == pytest.approx(15.0, abs=0.01)
 
 
 def test_s_profile_chain_joins_while_cruising(sap):
@@ -151,7 +151,7 @@ repeat until CLOCK - t0 >= 18750;
 MSW(A1);
 writeln(A1.dp);""")
     assert float(out[0]) == pytest.approx(12.0, abs=0.01)
-    assert r["position"]["X"] == pytest.approx(12.0, abs=0.01)
+    assert r["position"]["A1"] == pytest.approx(12.0, abs=0.01)
 
 
 def test_a_fault_while_joining_leaves_the_running_chain(sap):
@@ -163,7 +163,7 @@ repeat until CLOCK - t0 >= 7812;
 PU := 9; SMLR(A1 := 10.0); SSMS(A1);"""))
     assert r["status"] == "error"
     assert r["error"]["code"] == "256"
-    assert r["position"]["X"] == pytest.approx(10.0)
+    assert r["position"]["A1"] == pytest.approx(10.0)
     assert r["motion"]["feed_moves"] == 1  # the running segment is reported
 
 
@@ -185,7 +185,7 @@ writeln(CLOCK - t0, ' ', x, ' ', v);""")
     assert int(out[0]) == pytest.approx(3.925 * SEC, abs=8)
     assert float(out[1]) == pytest.approx(10.0, abs=0.003)  # at 1.9 s
     assert float(out[2]) == pytest.approx(5.0, abs=1e-6)
-    assert r["position"]["X"] == pytest.approx(20.0)
+    assert r["position"]["A1"] == pytest.approx(20.0)
 
 
 def test_chain_during_an_override_ramp_is_not_joined(sap):
@@ -201,7 +201,7 @@ repeat until CLOCK - t0 >= 7812;
 SMLR(A1 := 10.0); SSMSW(A1);
 writeln(CLOCK - t0);""")
     assert int(out[0]) == pytest.approx(3.55 * SEC, abs=8)
-    assert r["position"]["X"] == pytest.approx(20.0)
+    assert r["position"]["A1"] == pytest.approx(20.0)
 
 
 def test_override_ramp_across_segments_planned_under_different_overrides(sap):
@@ -251,7 +251,7 @@ writeln(CLOCK - t0, ' ', A1.lsm, ' ', A1.mcis);"""), "[sympas]\nspool_capacity =
     t, lsm, mcis = (int(x) for x in r["output"][1].split())
     assert t == pytest.approx(6.1 * SEC, abs=8)
     assert (lsm, mcis) == (4 * 64, 0)
-    assert r["position"]["X"] == pytest.approx(60.0)
+    assert r["position"]["A1"] == pytest.approx(60.0)
 
 
 def test_autospool_refills_run_as_one_chain(sap):
@@ -265,5 +265,5 @@ SSMSW(A1);
 writeln(CLOCK - t0);"""), "[sympas]\nspool_capacity = 4\n")
     assert r["status"] == "ok", r["error"]
     assert int(r["output"][0]) == pytest.approx(0.9 * SEC, abs=8)
-    assert r["position"]["X"] == pytest.approx(8.0)
+    assert r["position"]["A1"] == pytest.approx(8.0)
     assert r["motion"]["feed_moves"] == 8

@@ -72,7 +72,7 @@ def test_ja_both_axes_example_L1739(sap):
     assert r["status"] == "ok", r["error"]
     assert r["variables"]["x"] == pytest.approx(45.0, abs=0.2)
     assert r["variables"]["y"] == pytest.approx(45.0, abs=0.2)
-    assert r["position"]["X"] == 100.0 and r["position"]["Y"] == 100.0
+    assert r["position"]["A1"] == 100.0 and r["position"]["A2"] == 100.0
 
 
 def test_ja_examples_back_to_back_L1739(sap):
@@ -84,7 +84,7 @@ def test_ja_examples_back_to_back_L1739(sap):
     assert r["status"] == "ok", r["error"]
     assert r["variables"]["x"] == pytest.approx(45.0, abs=0.2)
     assert r["variables"]["y"] == pytest.approx(45.0, abs=0.2)
-    assert r["position"]["X"] == 100.0 and r["position"]["Y"] == 100.0
+    assert r["position"]["A1"] == 100.0 and r["position"]["A2"] == 100.0
 
 
 def test_ja_examples_back_to_back_with_busy_move_override_L1739(sap):
@@ -198,11 +198,11 @@ def test_3d_circle_examples_as_printed_L1880_L1894(sap, cmd):
     r = sap(prog(f"{cmd}(A1 := 50.0, A2 := 0.0, A3 := 0.0, PN1 = 1.0, PN2 = 0.0, PN3 = 1.0, PHI := 720.0);"))
     assert r["status"] == "ok", r["error"]
     radius = 25 * math.sqrt(2)
-    assert r["position"] == pytest.approx({"X": 0.0, "Y": 0.0, "Z": 0.0}, abs=1e-3)
+    assert r["position"] == pytest.approx({"A1": 0.0, "A2": 0.0, "A3": 0.0}, abs=1e-3)
     assert r["motion"]["feed_length"] == pytest.approx(2 * 2 * math.pi * radius, rel=2e-3)
-    assert r["motion"]["bounds"]["X"] == pytest.approx([0.0, 50.0], abs=0.05)
-    assert r["motion"]["bounds"]["Y"] == pytest.approx([-radius, radius], abs=0.05)
-    assert r["motion"]["bounds"]["Z"] == pytest.approx([-50.0, 0.0], abs=0.05)
+    assert r["motion"]["bounds"]["A1"] == pytest.approx([0.0, 50.0], abs=0.05)
+    assert r["motion"]["bounds"]["A2"] == pytest.approx([-radius, radius], abs=0.05)
+    assert r["motion"]["bounds"]["A3"] == pytest.approx([-50.0, 0.0], abs=0.05)
 
 
 def test_mcr_then_smcr_examples_L1908(sap):

@@ -34,7 +34,7 @@ writeln(x, ' ', v);""")
     x, v = (float(s) for s in out[0].split())
     assert x == pytest.approx(11.5, abs=0.01)
     assert v == pytest.approx(10.0, abs=1e-6)
-    assert r["position"]["X"] == pytest.approx(20.0)
+    assert r["position"]["A1"] == pytest.approx(20.0)
 
 
 def test_retargeted_jog_ends_when_planned(sap):
@@ -43,7 +43,7 @@ repeat until CLOCK - t0 >= 7812;
 JAW(A1 := 20.0);
 writeln(CLOCK - t0);""")
     assert int(out[0]) == pytest.approx(2.1 * SEC, abs=8)
-    assert r["position"]["X"] == pytest.approx(20.0)
+    assert r["position"]["A1"] == pytest.approx(20.0)
 
 
 def test_jr_on_a_jogging_axis_counts_from_its_target(sap):
@@ -53,7 +53,7 @@ repeat until CLOCK - t0 >= 7812;
 JRW(A1 := 5.0);
 writeln(CLOCK - t0);""")
     assert int(out[0]) == pytest.approx(1.6 * SEC, abs=8)
-    assert r["position"]["X"] == pytest.approx(15.0)
+    assert r["position"]["A1"] == pytest.approx(15.0)
 
 
 def test_target_behind_brakes_and_turns_back(sap):
@@ -72,7 +72,7 @@ writeln(x, ' ', v, ' ', CLOCK - t0);""")
     assert float(x) == pytest.approx(5.0, abs=0.005)
     assert float(v) == pytest.approx(5.0, abs=0.05)
     assert int(t) == pytest.approx(1.2 * SEC, abs=8)
-    assert r["position"]["X"] == pytest.approx(0.0)
+    assert r["position"]["A1"] == pytest.approx(0.0)
     assert r["motion"]["rapid_moves"] == 3  # 0 -> 4.5, 4.5 -> 5.0, 5.0 -> 0
 
 

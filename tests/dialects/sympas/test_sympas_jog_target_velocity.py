@@ -50,4 +50,4 @@ def test_forbid_target_vel_executes_rs_and_sets_errorreg_bit_1(sap):
     # the reset is reported (issue 15), the writeln is not reached
     assert len(r["output"]) == 1 and "RS: system reset by ForbidTargetVel (MODEREG bit 11)" in r["output"][0]
     assert r["ended"].startswith("ended by RS (system reset) at ")
-    assert r["position"]["X"] == pytest.approx(10.0, abs=0.001)
+    assert r["position"]["A1"] == pytest.approx(10.0, abs=0.001)

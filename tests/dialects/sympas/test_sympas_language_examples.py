@@ -211,7 +211,7 @@ def test_predefined_axis_gets_a_new_number_L726(sap):
                  "var y, x: double; n: integer;"))
     assert r["status"] == "ok", r["error"]
     assert r["variables"] == {"y": 5.0, "n": 1, "x": 0.0}
-    assert r["position"] == {"X": 0.0, "Y": 5.0, "Z": 0.0}
+    assert r["position"] == {"A1": 0.0, "A2": 5.0, "A3": 0.0}
 
 
 def test_clock_in_an_integer_turns_negative_timer_does_not_L732_L756(sap_on):

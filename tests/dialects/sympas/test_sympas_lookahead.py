@@ -42,7 +42,7 @@ def test_axes_do_not_stop_at_the_joint(sap):
     x, v = (float(s) for s in r["output"][0].split())
     assert x == pytest.approx(10.0, abs=0.003)
     assert v == pytest.approx(10.0, abs=1e-6)
-    assert r["position"]["X"] == pytest.approx(20.0)
+    assert r["position"]["A1"] == pytest.approx(20.0)
 
 
 def test_target_velocity_limited_by_what_the_next_segment_can_brake(sap):
@@ -107,7 +107,7 @@ def test_ms_stops_a_chain_in_its_running_segment(sap):
                  "SMLR(A1 := 10.0); SMLR(A1 := 10.0); SSMS(A1);\n"
                  "repeat until CLOCK - t0 >= 7812;\nMSW(A1);\nwriteln(A1.dp);"))
     assert float(r["output"][0]) == pytest.approx(5.0, abs=0.01)
-    assert r["position"]["X"] == pytest.approx(5.0, abs=0.01)
+    assert r["position"]["A1"] == pytest.approx(5.0, abs=0.01)
     assert r["motion"]["feed_moves"] == 1
 
 
@@ -128,5 +128,5 @@ writeln(t1, ' ', x, ' ', CLOCK - t0);""")
     assert int(t1) == pytest.approx(1.05 * SEC, abs=12)
     assert float(x) == pytest.approx(10.0, abs=0.005)
     assert int(t2) == pytest.approx((2.1 + 0.7854) * SEC, abs=8)
-    assert (r["position"]["X"], r["position"]["Y"]) == (pytest.approx(15.0), pytest.approx(15.0))
+    assert (r["position"]["A1"], r["position"]["A2"]) == (pytest.approx(15.0), pytest.approx(15.0))
     assert (r["motion"]["feed_moves"], r["motion"]["arc_moves"]) == (2, 1)

@@ -31,7 +31,7 @@ def test_refused_profiles_give_a_message_L1415(sap):
     assert out == ["4: profile refused: TRVL = 0 (A1)", "6: profile refused: TRAC = 0 (A1)",
                    "8: profile refused: no travel (A1)", "10: profile refused: axis A1 is still in a profile (A1)",
                    "12: profile refused: no travel (A2, A3)"]
-    assert r["position"]["X"] == 10.0  # bit 29 suppresses the message only: line 16 is still refused
+    assert r["position"]["A1"] == 10.0  # bit 29 suppresses the message only: line 16 is still refused
 
 
 def test_refused_profile_sets_the_refused_bit_L1415(sap):
@@ -49,7 +49,7 @@ end.
 def test_a_profile_that_would_never_end_is_refused_L1415(sap):
     """TRVL = 1e-310 is > 0 but the move would take for ever: refused with a message, not a hold."""
     r = sap("program R;\nbegin\n  TRVL := 1.0e-310;\n  MLAW(A1 := 100.0);\nend.\n")
-    assert r["error"] is None and r["position"]["X"] == 0.0
+    assert r["error"] is None and r["position"]["A1"] == 0.0
     assert r["output"][0].endswith("prog.sap:4: profile refused: TRVL = 1e-310: the profile would never end (A1)")
 
 

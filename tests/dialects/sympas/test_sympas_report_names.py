@@ -3,26 +3,28 @@ bounds under the program's axis names in both frames, CI/CD, and the task of eac
 
 from __future__ import annotations
 
-
-def test_axes_under_program_names_in_both_frames_L2146(sap):
-    r = sap("""{$TASK 0}
+SHIFTED = """{$TASK 0}
 program P;
 begin
   STARTCNCT(1);
   TRVL := 100.0; TRAC := 1000.0;
   MLAW(A1 := 50.0);
   SZPA(A1 := 20.0);
-  MLAW(A1 := 10.0);
-  CI7 := 3; CD2 := 1.5;
+  MLAW(A1 := 10.0, A2 := 5.0);
   writeln('main');
 end.
 
 {$TASK 1}
 program Q;
 begin
-  writeln('other');
+  while TRUE do WT(100);
 end.
-""")
+"""
+
+
+def test_axes_under_program_names_in_both_frames_L2146(sap):
+    r = sap(SHIFTED.replace("MLAW(A1 := 10.0, A2 := 5.0);", "MLAW(A1 := 10.0);\n  CI7 := 3; CD2 := 1.5;")
+            .replace("while TRUE do WT(100);", "writeln('other');"))
     assert r["error"] is None
     a1 = r["sympas"]["axes"]["A1"]
     assert a1["machine_axis"] == "X"
@@ -30,3 +32,57 @@ end.
     assert a1["bounds_machine"] == [0.0, 50.0] and a1["bounds_program"] == [-20.0, 30.0]
     assert r["sympas"]["ci"] == {"7": 3} and r["sympas"]["cd"] == {"2": 1.5}
     assert r["sympas"]["output"] == [{"task": 1, "text": "other"}, {"task": 0, "text": "main"}]
+
+
+def test_position_bounds_and_frames_under_the_program_axis_names_L2146(sap):
+    """Issue 15 (rw_SymPas 7): the top-level figures name A1, A2 ... as the program does and say their
+    frame: the position is where the program reads it (dp after SZPA), the toolpath bounds are the
+    machine's, and the bounds in the program's frame stand beside them."""
+    r = sap(SHIFTED)
+    assert r["error"] is None
+    assert r["position"] == {"A1": 10.0, "A2": 5.0, "A3": 0.0}
+    assert r["motion"]["bounds"] == {"A1": [0.0, 50.0], "A2": [0.0, 5.0], "A3": [0.0, 0.0]}
+    assert r["bounds_program"] == {"A1": [-20.0, 30.0], "A2": [0.0, 5.0], "A3": [0.0, 0.0]}
+    assert r["frames"] == {"position": "program", "bounds_program": "program", "motion.bounds": "machine",
+                           "limit_violations": "machine"}
+
+
+def test_every_output_line_has_its_task(sap):
+    """WRITELN lines, the line of a task still looping at the end, a refused profile (L1415) and a
+    soft-limit stop (L1490): each with the task whose statement it is about."""
+    r = sap(SHIFTED.replace("  writeln('main');", "  TRVL := 0.0;\n  MLA(A2 := 9.0);\n  TRVL := 100.0;\n"
+                                                   "  MLAW(A3 := 2000.0);\n  writeln('main');"))
+    assert r["error"] is None
+    out = r["sympas"]["output"]
+    assert [o["text"] for o in out] == r["output"]
+    tasks = [o["task"] for o in out]
+    assert "profile refused" in out[0]["text"] and "software limit" in out[1]["text"]
+    assert tasks == [0, 0, 0, 1] and out[3]["text"].startswith("task 1 still running")
+
+
+def test_limit_violation_under_the_program_axis_name_in_machine_coordinates_L1490(sap):
+    r = sap(SHIFTED.replace("MLAW(A1 := 10.0, A2 := 5.0);", "MLAW(A1 := 1100.0);"),
+            machine_toml='[sympas]\nsoft_limit_reaction = "SMD"\n')
+    assert r["limit_violations"] and r["limit_violations"][0].startswith("axis A1 reaches ")
+    assert " in machine coordinates, above its soft limit 1000.0000" in r["limit_violations"][0]
+
+
+def test_summary_line_names_the_program_axes_and_the_frames(tmp_path):
+    from click.testing import CliRunner
+
+    from ncvm import cli
+
+    prog = tmp_path / "p.sap"
+    prog.write_text(SHIFTED)
+    r = CliRunner().invoke(cli.cli, ["run", str(prog), "--state", str(tmp_path / "st")], catch_exceptions=False)
+    assert r.exit_code == 0
+    summary = r.stderr.strip().splitlines()[-1]
+    assert summary.endswith("bounds (machine) A1[0.000,50.000] A2[0.000,5.000] A3[0.000,0.000], "
+                            "program bounds A1[-20.000,30.000] A2[0.000,5.000] A3[0.000,0.000]"), summary
+
+
+def test_axes_the_machine_names_as_the_program_does_keep_the_plain_report(sap):
+    """With `axis_names` equal to the machine's axes nothing is renamed and no frames are mixed up."""
+    r = sap("program P;\nbegin\n  TRVL := 100.0;\n  MLAW(X := 10.0);\nend.\n",
+            machine_toml='[sympas]\naxis_names = ["X", "Y", "Z"]\n')
+    assert r["error"] is None and r["position"]["X"] == 10.0 and r["motion"]["bounds"]["X"] == [0.0, 10.0]

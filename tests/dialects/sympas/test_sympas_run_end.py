@@ -53,7 +53,7 @@ def test_a_task_that_moves_after_a_long_wait_is_not_cut_off_L1548(sap):
   MLAW(A2 := 10.0);
   while TRUE do WT(20);"""))
     assert r["error"] is None
-    assert r["position"]["Y"] == 10.0
+    assert r["position"]["A2"] == 10.0
     assert abs(r["cycle_time_s"] - (12.0 + 0.2)) < 0.01
 
 
@@ -133,7 +133,7 @@ end.
     assert r["output"][0].endswith("prog.sap:8: RS: system reset by task 0: the axes stop, the running tasks "
                                    "are stopped")
     assert [t["state"] for t in r["sympas"]["tasks"]] == ["STOPPED", "STOPPED"]
-    assert 0.0 < r["position"]["X"] < 100.0
+    assert 0.0 < r["position"]["A1"] < 100.0
 
 
 def test_the_summary_line_says_how_the_run_ended(tmp_path):

@@ -35,7 +35,7 @@ def test_ssmsw_waits_for_the_profiles_behind_a_spooler_halt_L2101(sap):
 def test_ssmsw_behind_a_halt_nothing_restarts_is_a_deadlock_L2101(sap):
     r = sap(HALT.replace("  SSMS(A1);", "  WT(1);"))
     assert r["error"]["code"] == "RUN005" and r["error"]["line"] == 9
-    assert r["position"]["X"] == 100.0
+    assert r["position"]["A1"] == 100.0
 
 
 def test_axst_bits_12_and_13_spooler_running_and_halted(sap):
@@ -61,7 +61,7 @@ end.
     assert (v["run1"], v["halt1"]) == (True, False)
     assert (v["run2"], v["halt2"]) == (False, True)
     assert (v["run3"], v["halt3"]) == (False, False)
-    assert r["position"]["X"] == 150.0
+    assert r["position"]["A1"] == 150.0
 
 
 FULL = """program F;
@@ -78,7 +78,7 @@ end.
 
 def test_a_full_spooler_starts_itself_only_with_autospool_L1396(sap):
     r = sap(FULL.replace("{MODE}", "MODEREG := MODEREG or $20;"), machine_toml="[sympas]\nspool_capacity = 4\n")
-    assert r["error"] is None and r["position"]["X"] == 60.0
+    assert r["error"] is None and r["position"]["A1"] == 60.0
 
 
 def test_without_autospool_a_full_spooler_waits_for_an_ssms_L1396(sap):
@@ -86,4 +86,4 @@ def test_without_autospool_a_full_spooler_waits_for_an_ssms_L1396(sap):
     once, with its line)."""
     r = sap(FULL.replace("{MODE}", ""), machine_toml="[sympas]\nspool_capacity = 4\n")
     assert r["error"]["code"] == "RUN005" and r["error"]["line"] == 7
-    assert r["position"]["X"] == 0.0
+    assert r["position"]["A1"] == 0.0

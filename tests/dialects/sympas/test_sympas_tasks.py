@@ -110,7 +110,7 @@ end.
     assert len(r["output"]) == 1
     # at 0.5 s: 5 mm + 0.4 s * 100 mm/s = 45 mm (the handler is polled each servo cycle of 1.28 ms)
     assert float(r["output"][0].split()[-1]) == pytest.approx(45.0, abs=0.3)
-    assert r["position"]["X"] == 100.0
+    assert r["position"]["A1"] == 100.0
 
 
 def test_event_priority_and_no_nesting(sap):
@@ -170,7 +170,7 @@ end.
 """
     r = sap(text)
     assert r["variables"]["where"] == pytest.approx(20.0, abs=0.2)
-    assert r["position"]["X"] < 30.0
+    assert r["position"]["A1"] < 30.0
 
 
 def test_stop_and_contcnct_from_another_task(sap):
@@ -292,7 +292,7 @@ end.
     r = sap(text.replace("program Main;", "program Main;\nvar after: integer;").replace("CI3 := 1;", "after := 1;"))
     assert r["status"] == "ok", r["error"]
     assert r["variables"] == {"after": 0}  # the main task itself was halted by RS
-    assert r["position"]["X"] < 10.0  # the move was cut off at once
+    assert r["position"]["A1"] < 10.0  # the move was cut off at once
 
 
 def test_check_reports_lenient_readings_as_warnings(tmp_path):
@@ -451,7 +451,7 @@ def test_two_tasks_waiting_on_long_moves_see_an_event_in_its_servo_cycle(sap):
     # the moves end 100.01 s and 50.01 s after they start (a few statement ticks in); the W-waits see it then
     assert int(out[0].split()[-1]) == pytest.approx(100.01 / 64e-6, abs=10)
     assert int(out[2].split()[-1]) == pytest.approx(50.01 / 64e-6, abs=10)
-    assert r["position"]["X"] == 1000.0 and r["position"]["Y"] == 500.0
+    assert r["position"]["A1"] == 1000.0 and r["position"]["A2"] == 500.0
 
 
 def test_a_sleeping_task_sees_the_stop_another_tasks_event_handler_makes(sap):
@@ -465,7 +465,7 @@ def test_a_sleeping_task_sees_the_stop_another_tasks_event_handler_makes(sap):
     assert ui == math.ceil(30.0 / 64e-6 / 20) * 20 + 1  # the first servo cycle at or after 30 s, a statement on
     # 10 mm/s braked at the stop deceleration: the axis stands within a few servo cycles, near 300 mm
     assert 0 < done - ui < 10 * 20
-    assert r["position"]["X"] == pytest.approx(300.0, abs=0.1)
+    assert r["position"]["A1"] == pytest.approx(300.0, abs=0.1)
     assert a2 == pytest.approx(50.01 / 64e-6, abs=10)
 
 

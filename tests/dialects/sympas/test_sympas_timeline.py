@@ -55,7 +55,7 @@ def test_rounded_rectangle_of_smlr_smcr_in_order_L1957_L2101(tmp_path):
     (PHI = 90) around the corners, bounds Y [0, 50]."""
     result, arr, rec, _ = _run(tmp_path, RECT)
     b = result["motion"]["bounds"]
-    assert b["X"] == [0.0, 100.0] and b["Y"] == [0.0, 50.0]
+    assert b["A1"] == [0.0, 100.0] and b["A2"] == [0.0, 50.0]
     ends = [tuple(round(v, 6) for v in e[:2]) for e in arr["end"].tolist()]
     assert ends == [(10, 0), (90, 0), (100, 10), (100, 40), (90, 50), (10, 50), (0, 40), (0, 10), (10, 0)]
     arcs = rec.arcs
@@ -88,7 +88,7 @@ def _combined_checks(result, arr, gcode):
     diagonal while both move, then X alone; X never goes back."""
     xs = arr["end"][:, 0]
     assert (xs[1:] >= xs[:-1] - 1e-9).all()
-    assert result["motion"]["bounds"]["X"] == [0.0, 200.0] and result["motion"]["bounds"]["Y"] == [0.0, 150.0]
+    assert result["motion"]["bounds"]["A1"] == [0.0, 200.0] and result["motion"]["bounds"]["A2"] == [0.0, 150.0]
     # the tool's path: about 150 * sqrt(2) while both run, then 50 mm of X alone
     assert abs(result["motion"]["feed_length"] - (150 * math.sqrt(2) + 50)) < 1.0
     assert result["sympas"]["profile_length"] == 350.0

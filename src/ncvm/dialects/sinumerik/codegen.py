@@ -23,7 +23,8 @@ from ...nc.profiles.check import refused_g_warnings
 from ...nc.profiles.sinumerik8xx import SINUMERIK8XX
 from ...runtime.codegen import PySource
 from .atcodes import AT_CODES, AtCode
-from .finite import checked
+from .finite import stays_in_range
+from .ncdata import R_LIMIT
 from .reader import Arith, AtInstr, NcBlock, Note, Operand, PartProgram, Word
 
 #: M functions the kernel handles itself; any other goes to the PLC
@@ -329,18 +330,21 @@ class UnitCodegen:
             rec.word(out, it, writes_after[i])
         elif isinstance(it, Arith):
             rec.settle_int_sec(out)
-            out.emit(self._arith(it), line)
             if i in checks and not self.strict:
-                # x - x is 0.0 (false) unless x is infinite or NaN
-                target = self.r(it.target)
-                out.emit(f"if {target} - {target}: _finite({target})", line)
+                # the value is stored only in range; the test is false for NaN too (its comparisons are)
+                out.emit(f"_v = {self._arith_expr(it)}", line)
+                out.emit(f"if not -{R_LIMIT!r} <= _v <= {R_LIMIT!r}: _r_value(_v)", line)
+                out.emit(f"{self.r(it.target)} = _v", line)
+            else:
+                out.emit(f"{self.r(it.target)} = {self._arith_expr(it)}", line)
         elif isinstance(it, Note):
             rec.note(it)
         elif isinstance(it, AtInstr):
             rec.settle_int_sec(out)
             rec.jumped = not self._at(out, idx, blk, it, rec)
 
-    def _arith(self, it: Arith) -> str:
+    def _arith_expr(self, it: Arith) -> str:
+        """The value an R assignment stores (strict_nc: rounded and range-checked)."""
         expr = ""
         for k, (op, term) in enumerate(it.terms):
             v = self.val(term)
@@ -351,7 +355,7 @@ class UnitCodegen:
         self.written.add(it.target)
         if self.strict:
             expr = f"_nc8({expr})"
-        return f"{self.r(it.target)} = {expr}"
+        return expr
 
     def _jump(self, out: PySource, idx: int, blk: NcBlock, number: int, rec: "_Record") -> None:
         """Lines that leave the block for block ``number`` (±, digest §5.3 rule 4)."""
@@ -574,18 +578,9 @@ class _Site(NamedTuple):
 
 
 def _arith_checks(items: list) -> set[int]:
-    """Indexes of the R assignments of a block whose result must be checked for the double range
+    """Indexes of the R assignments of a block whose result must be checked for the R parameter range
     (only arithmetic can leave it; :mod:`.finite` says which)."""
-    out: set[int] = set()
-    run: list[int] = []
-    for i, it in enumerate([*items, None]):
-        if isinstance(it, Arith):
-            run.append(i)
-            continue
-        if run:
-            out.update(k for k, need in zip(run, checked([items[k] for k in run])) if need)
-            run = []
-    return out
+    return {i for i, it in enumerate(items) if isinstance(it, Arith) and not stays_in_range(it.terms)}
 
 
 def _positions(axes, words: dict, g) -> bool:
@@ -756,10 +751,12 @@ class _Record:
         if self.g16:
             out.emit(f"_rt.positions.g16({self.g16!r}, {line})", line)
         if any(x in (58, 59) for x in self.g):
+            # the axis words are the offset; F, S, T ... keep their meaning in the block (docs/decisions.md)
             group = 1 if 58 in self.g else 2
-            pairs = ", ".join(f"({k}, {v})" for k, v, _c in words)
+            axis_keys = {repr(a) for a in cg.axes}
+            pairs = ", ".join(f"({k}, {v})" for k, v, _c in words if k in axis_keys)
             out.emit(f"_rt.offsets.programmable_zo({group}, [{pairs}], {line})", line)
-            words = []
+            words = [w for w in words if w[0] not in axis_keys]
         if self.d is not None:
             out.emit(f"_rt.offsets.select_d({self.d}, {line})", line)
         if self.int_sec is not None:

@@ -8,11 +8,12 @@ events up to now happen (``advance``).
 
 from __future__ import annotations
 
+import math
 import struct
 from collections.abc import Callable
 
 from .errors import Cl800Error
-from .ncdata import NcData, int_to_pattern, pattern_to_int
+from .ncdata import R_LIMIT, NcData, int_to_pattern, pattern_to_int
 from .ncdata import in_range as _rng
 from .ncdata import whole as _i
 from .plc import PlcClock
@@ -25,8 +26,10 @@ PLC_WORD_AREA = {"3a0": "I", "3a1": "Q", "3a2": "P", "3a3": "F", "4a3": "F"}
 class Plc:
     """The PLCs of the control as one channel sees them."""
 
-    def __init__(self, data: NcData, timers: PlcClock, clock, advance: Callable[[], None]):
+    def __init__(self, data: NcData, timers: PlcClock, clock, advance: Callable[[], None],
+                 say: Callable[[str], None]):
         self.data = data
+        self.say = say  # the operator's message line (the NC alarm of an overflowing read)
         self.timers = timers
         self.clock = clock  # the machine's simulated clock (``now``)
         self.advance = advance  # the scenario up to now
@@ -108,17 +111,29 @@ class Plc:
             n = 2 if code == "3b2" else _rng("number of data words", args[3], 1, 3 if code == "3b1" else 2)
             words = [self._dw(plc, args[1], args[2] + k) for k in range(n)]
             if code == "3b2":
-                return struct.unpack(">f", struct.pack(">HH", *words))[0]
+                return self._into_r(code, struct.unpack(">f", struct.pack(">HH", *words))[0])
             if code == "3b1":
                 digits = "".join(f"{w:04x}" for w in words)
                 if any(c not in "0123456789" for c in digits):
                     raise Cl800Error(f"DB data {digits} is not BCD")
-                return _scale(int(digits), _i(args[4]) % 100)
+                return self._into_r(code, _scale(int(digits), _i(args[4]) % 100))
             raw = 0
             for w in words:
                 raw = (raw << 16) | w
-            return _from_dim(raw, 16 * n, _i(args[4]) % 10)
+            return self._into_r(code, _from_dim(raw, 16 * n, _i(args[4]) % 10))
         raise Cl800Error(f"@{code} is not available")
+
+    def _into_r(self, code: str, value: float) -> float:
+        """A PLC value read into an R parameter: beyond +/-99999999 (L7079) "the maximum value [is] entered
+        into the R parameter and an NC alarm issued, which does not interrupt the program" (L727)."""
+        if -R_LIMIT <= value <= R_LIMIT:
+            return value
+        if value != value:  # a PLC float that is no number (NaN): no maximum to enter
+            raise Cl800Error(f"@{code}: the PLC value is not a number")
+        clamped = math.copysign(R_LIMIT, value)
+        self.say(f"NC alarm: @{code} read {value:g} from the PLC, beyond the R parameter range: {clamped:g} "
+                 "entered (the program goes on, L727)")
+        return clamped
 
     def write(self, code: str, where: tuple, value: float) -> None:
         no = self.number(where[0])

@@ -78,15 +78,6 @@ def _ptr(value: float) -> int:
     return n
 
 
-def _finite(value: float) -> float:
-    """A computed R value. A product or sum beyond the double range is infinity (and infinity less
-    infinity NaN), far outside the +/-99999999 of an R parameter (L7079): the CL 800 error, never a
-    position or a feed."""
-    if value - value == 0.0:
-        return value
-    raise Cl800Error(f"{value:g} is outside the R parameter range +/-99999999")
-
-
 def _bad_angle(function: str, x: float) -> float:
     """SIN and COS take angles of -360 to +360 degrees (L3779, L3800); the generated code checks the range
     in line and calls this beyond it."""
@@ -103,7 +94,7 @@ def _int(value: float) -> int:
 NAMESPACE_GLOBALS = {
     "_Block": Block, "_int": _int, "_ptr": _ptr, "_hypot": math.hypot, "_sin": math.sin,
     "_cos": math.cos, "_trunc": math.trunc, "_DEG": DEG, "_bad_angle": _bad_angle,
-    "_nc8": nc8, "_finite": _finite, "_r_value": r_value, "_meas_m": meas_m,
+    "_nc8": nc8, "_r_value": r_value, "_meas_m": meas_m,
 }
 
 #: @ code -> the run-time function its row names, on the channel or one of its parts (``plc.read``)
@@ -158,8 +149,7 @@ class Channel:
             self.R[int(str(name).upper().lstrip("R"))] = float(v)
         for k, v in data.central_r.items():
             self.R[int(k)] = float(v)
-        if self.strict:
-            self._strict_power_on(session.machine.source)
+        self._power_on_r(session.machine.source)
         self.push_stack: list[tuple[tuple[int, ...], list[float]]] = []
         self.frames: list[Frame] = []
         self._paths: list[str] = []  # the file of each running unit, as ``frames``
@@ -186,7 +176,7 @@ class Channel:
         self.scenario = EventQueue(session.machine.scenario)  # the scenario events still to come
         self.probe = Probe(self.scenario, self.advance_scenario)
         self.plc_clock = PlcClock(f"{session.machine.source}: [sin800]", data.plc)
-        self.plc = Plc(data, self.plc_clock, session.machine.clock, self.advance_scenario)
+        self.plc = Plc(data, self.plc_clock, session.machine.clock, self.advance_scenario, session.say)
         for ev in of_type(session.machine.scenario, PlcTimer, PlcCounter):
             self.plc_clock.parse_event(ev)  # faults in the scenario before the run
         self.m_functions = {f"M{int(k)}": dict(v) for k, v in sec.m_functions.items()}
@@ -209,13 +199,15 @@ class Channel:
         if code in self.m_functions:
             self.m_function(code)
 
-    def _strict_power_on(self, source: str) -> None:
-        """strict_nc: R parameters from the machine file and the store keep 8 significant digits too."""
+    def _power_on_r(self, source: str) -> None:
+        """R parameters from the machine file and the store lie within +/-99999999 (L7079), as every R
+        value; under strict_nc they keep 8 significant digits too."""
         R = self.R
+        keep = nc8 if self.strict else r_value
         for n, v in enumerate(R):
             if v != 0.0:
                 try:
-                    R[n] = nc8(v)
+                    R[n] = keep(v)
                 except Cl800Error as e:
                     raise UsageError(f"{source}: [sin800] R{n}: {e}") from None
 

@@ -102,6 +102,12 @@ def _span(node):
     return Span(node.file, node.line, node.col)
 
 
+#: the frame of each figure of the result: the position as the program reads it (dp, with the zero
+#: offsets in force at the end), the toolpath and the limits as the machine's axes move
+FRAMES = {"position": "program", "bounds_program": "program", "motion.bounds": "machine",
+          "limit_violations": "machine"}
+
+
 class SympasDialect(Dialect):
     id = "sympas"
 
@@ -134,6 +140,8 @@ class SympasDialect(Dialect):
             raise CompileFailed([e.diagnostic()]) from None
         card = Card(session, cfg)
         session.controller = card
+        # the program's axis names (A1 ...) in the result: positions, bounds, limit violations
+        session.axis_labels = {m: p for m, p in zip(session.machine.axis_names, cfg.axis_names) if m != p}
         tasks = card.scheduler.tasks
         main = units[0]
         for u in units:
@@ -155,19 +163,22 @@ class SympasDialect(Dialect):
                 session.extra["recordings"] = {card.names[ax]: rec.to_json(card.names[ax])
                                                for ax, rec in sorted(card.recordings.items())}
             session.machine.clock.now = end / TICKS_PER_S
-            session.extra["sympas"] = card.summary()
             if card.scheduler.left_running:
                 session.extra.setdefault("ended", "ended with task(s) " + ", ".join(
                     str(t.number) for t in card.scheduler.left_running) + " still looping")
             for tk in card.scheduler.left_running:
                 where = tk.where()
                 place = f" at {where[0]}:{where[1]}" if where else ""
-                session.say(f"task {tk.number} still running{place} when the run ended: task {main_task.number} "
-                            f"has ended and nothing moved for {QUIET_S:g} s (docs/sympas.md)")
+                card.say(f"task {tk.number} still running{place} when the run ended: task {main_task.number} "
+                         f"has ended and nothing moved for {QUIET_S:g} s (docs/sympas.md)", tk.number)
             for tk in tasks:
                 if tk.line and not tk.tskinfo & 2:
-                    session.say(tk.line)  # an unterminated WRITE string is still shown
+                    card.say(tk.line, tk.number)  # an unterminated WRITE string is still shown
                     tk.tskinfo |= 2
+            session.extra["sympas"] = summary = card.summary()  # after the last line is said
+            session.extra["frames"] = FRAMES
+            session.extra["bounds_program"] = {name: a["bounds_program"] for name, a in summary["axes"].items()
+                                               if a["bounds_program"] is not None}
             if main_task.ns is not None:
                 session.variables = main.variables(main_task)
             pos = [a.m for a in card.axes]

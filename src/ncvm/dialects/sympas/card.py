@@ -13,6 +13,7 @@ import math
 from ...diagnostics import UsageError
 from ...machine.scenario import AxisInput, CommonInteger, EventQueue, PositionError
 from ...nc.canon import Src
+from ...runtime.session import OperatorOutput
 from . import recording, softlimits
 from .axes import AxisState
 from .motion import TICKS_PER_S, Move
@@ -66,7 +67,8 @@ class Card:
         self.counts = float(cfg.counts_per_unit)
         self.refused_mask = 1 << cfg.axst_bits["refused"]
         self.recordings: dict = {}  # axis number -> LPR/LPRS Recording (recording.py)
-        self.output_log: list = []  # {"task", "text"} of each line a task wrote (WRITELN)
+        #: {"task", "text"} of each output line (see say), kept as the result keeps the lines themselves
+        self.output_log = OperatorOutput(session.options.max_output_lines)
         self.timeline = Timeline(self, [a.m for a in self.axes])  # reports the retired moves in time order
 
     # -- scenario events ------------------------------------------------------------------------------
@@ -281,6 +283,19 @@ class Card:
             softlimits.watch(self, mv)
         return True
 
+    def say(self, text: str, task: int | None) -> None:
+        """An output line and, for the JSON document's ``sympas.output``, the task it came from (None: the
+        card's own, e.g. a soft-limit stop of a move whose command no loaded task holds)."""
+        self.session.say(text)
+        self.output_log.append({"task": task, "text": text})
+
+    def task_of(self, src: Src) -> int | None:
+        """The task whose program holds the statement at ``src``."""
+        for tk in self.scheduler.tasks:
+            if tk.unit is not None and src in tk.unit.srcs:
+                return tk.number
+        return None
+
     def refuse(self, tk, axes, why: str, loc) -> None:
         """The card discards a path profile: the axes' refused bit, and a message (L1415) unless MODEREG
         bit 29 (InhibitProfileRefuse) suppresses it."""
@@ -291,7 +306,7 @@ class Card:
         src = loc if isinstance(loc, Src) else tk.unit.srcs[loc]
         names = ", ".join(self.names[ax] for ax in axes)
         task = f" (task {tk.number})" if tk.number else ""
-        self.session.say(f"{src.file}:{src.line}: profile refused: {why} ({names}){task}")
+        self.say(f"{src.file}:{src.line}: profile refused: {why} ({names}){task}", tk.number)
 
     def prepare(self, tk, axes, loc: int, moving=()):
         """Common start of a move command: axis checks, busy rule (not for the ``moving`` axes, which the
@@ -361,7 +376,7 @@ class Card:
                                         "the machine's",
                 "ci": {str(i): v for i, v in enumerate(self.ci) if v},
                 "cd": {str(i): v for i, v in enumerate(self.cd) if v},
-                "output": self.output_log}
+                "output": self.output_log.lines()}
 
     # -- system reset and the end of the run -----------------------------------------------------------------------------
     def reset_system(self, t: float) -> None:

@@ -45,7 +45,6 @@ class Scheduler:
         self.solo = None  # the only running task, when there is just one
         self.main: Task | None = None  # the task of the program run (its end ends the run, see _quiet_end)
         self.last_timed = 0.0  # tick of the last timed action applied
-        self.clock_reads = 0  # CLOCK reads so far (a task waiting for a time is not deadlocked)
         self.quiet_ticks = QUIET_S * TICKS_PER_S
         self._quiet = None  # (quiet since, snapshot, taken at): the deadlock watch
         self.idle_end: float | None = None  # the run's end when it ended with tasks still looping
@@ -236,23 +235,41 @@ class Scheduler:
         if q is not None and q[0] == since and tk.time < q[2] + self.quiet_ticks:
             return False  # compared once per window
         snap = self._snapshot()
-        if q is None or q[0] != since or q[1] != snap:
+        if q is None or q[0] != since or not self._stuck(q[1], snap, q[2]):
             self._quiet = (since, snap, tk.time)
             return False
         waiting = [t for t in self.tasks if t.state == RUNNING]
         places = ", ".join(f"task {t.number} at line {w[1]}" for t in waiting if (w := t.where()) is not None)
         at = (main.where() if main is not None and main.state == RUNNING else None) or waiting[0].where()
-        raise RuntimeFault("RUN005", f"waiting for ever: every running task waits for something no task, move or "
+        raise RuntimeFault("RUN005", f"waiting for ever: the program waits for something no task, move or "
                                      f"scenario event can bring ({places})",
                            Span(at[0], at[1], 1) if at else None)
 
     def _snapshot(self) -> tuple:
+        """The card's shared state (CI, CD, the system registers) and each running task's own (its
+        variables, its line, its CLOCK reads)."""
         card = self.card
-        tasks = []
+        tasks = {}
         for t in self.tasks:
             if t.state == RUNNING and t.unit is not None and t.ns is not None:
-                tasks.append((t.number, repr(t.unit.variables(t)), t.where()))
-        return (tuple(card.ci), tuple(card.cd), repr(card.sys), self.clock_reads, tuple(tasks))
+                tasks[t.number] = (repr(t.unit.variables(t)), t.where(), t.clock_reads)
+        return (tuple(card.ci), tuple(card.cd), repr(card.sys)), tasks
+
+    def _stuck(self, before: tuple, now: tuple, since: float) -> bool:
+        """Whether the window from ``since`` to now, with the card quiet, shows a deadlock: the shared
+        state did not change, no task slept through the window (it wakes at a time and may act then), and
+        the main task neither moved on nor read the clock. Another task that only changed its own
+        variables or read the clock (the manual's monitor loop, L1548) cannot free the main task: as
+        after the main task's end (:meth:`_quiet_end`), what it does not show on the card does not count."""
+        if before[0] != now[0] or before[1].keys() != now[1].keys():
+            return False
+        for t in self.tasks:
+            if t.state == RUNNING and t.waits_for is not None and t.slept_at < since:
+                return False
+        main = self.main
+        if main is None or main.number not in now[1]:
+            return before[1] == now[1]
+        return before[1][main.number] == now[1][main.number]
 
     def capture_locals(self, tk, tb) -> None:
         """Keep the main block's locals (its variables) when the task stops by an exception."""

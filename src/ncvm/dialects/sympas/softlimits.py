@@ -86,6 +86,6 @@ def _stop_action(card, owner, ax: int, seg, tick: float, reaction: str):
                 b.closed = False
         which = f"slr = {hi:g}" if p >= hi - eps else f"sll = {lo:g}"
         names = ", ".join(card.names[x] for x in owner.axes)
-        card.session.say(f"{seg.src.file}:{seg.src.line}: software limit {which} of {a.name} reached at "
-                         f"{tick / TICKS_PER_S:.6f} s: {reaction} stops {names}")
+        card.say(f"{seg.src.file}:{seg.src.line}: software limit {which} of {a.name} reached at "
+                 f"{tick / TICKS_PER_S:.6f} s: {reaction} stops {names}", card.task_of(seg.src))
     return act

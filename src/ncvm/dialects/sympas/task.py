@@ -49,6 +49,7 @@ class Task:
         self.main_locals = None
         self.held = None  # sched.steps when this task last found its W-wait held by TROVR = 0
         self.slept_at = 0.0  # when its last sleep (WT, a wait for events) began
+        self.clock_reads = 0  # CLOCK reads so far (a task waiting for a time is not deadlocked)
         self.waits_for: float | None = None  # while it sleeps: when it acts again if nothing else happens
         self.waits_mark = 0  # sched.acts when waits_for was worked out (valid while no task has acted since)
         self.polls = False  # whether it looks for events while it sleeps
@@ -83,7 +84,7 @@ class Task:
             self.budget -= n
 
     def clock(self, n: int) -> int:
-        self.sched.clock_reads += 1  # a task reading the clock may be waiting for a time (not a deadlock)
+        self.clock_reads += 1  # a task reading the clock may be waiting for a time (not a deadlock)
         return (int(self.time + n * self.iq) + self.sched.clock0) & 0xFFFFFFFF
 
     def set_budget(self) -> None:
@@ -272,8 +273,7 @@ class Task:
         self.tskinfo |= 1
         if newline:
             self.tskinfo |= 2
-            self.card.session.say(self.line)
-            self.card.output_log.append({"task": self.number, "text": self.line})
+            self.card.say(self.line, self.number)
             if self.card.sys["MODEREG"] & (1 << 26):
                 self.state = STOPPED
                 return True
@@ -294,8 +294,8 @@ class Task:
     def rs(self):
         where = self.where()
         place = f"{where[0]}:{where[1]}: " if where else ""
-        self.card.session.say(f"{place}RS: system reset by task {self.number}: the axes stop, the running tasks "
-                              "are stopped")
+        self.card.say(f"{place}RS: system reset by task {self.number}: the axes stop, the running tasks "
+                      "are stopped", self.number)
         self.card.session.extra["ended"] = f"ended by RS (system reset) at {place.rstrip(': ') or 'task ' + str(self.number)}"
         self.card.reset_system(self.time)
         yield

@@ -14,6 +14,7 @@ from pathlib import Path
 
 from ....diagnostics import CompileFailed, RuntimeFault, Span, UsageError
 from ....machine.config import dialect_options
+from ....nc.canon import Src
 from ....outpaths import refuse_overwrite, write_output
 from ... import get_dialect
 from ...base import Dialect
@@ -132,6 +133,7 @@ class Cl800Dialect(Dialect):
     def run(self, path, text, session):
         obj = self.build(path, text, session.machine)
         obj_path = str(Path(path).with_name(f"L{obj.number}.spf"))
+        session.source_place = _ObjectPlaces(path, obj_path, obj).source
         try:
             get_dialect("sin800").run(obj_path, obj.text(), session)
         except RuntimeFault as fault:
@@ -159,6 +161,13 @@ class _ObjectPlaces:
         if span is None or span.file != self.obj_path:
             return span
         return Span(self.path, self.obj.source_line(span.line, span.column))
+
+    def source(self, src: Src) -> Src:
+        """``src`` (a block the NC ran) as a place in the source: where M0 lines, limit messages and the
+        trace point."""
+        if src.file != self.obj_path:
+            return src
+        return Src(self.path, self.obj.executed_line(src.line))
 
     def note(self, span: Span | None) -> list[str]:
         if span is None or span.file != self.obj_path or not 2 <= span.line <= len(self.obj.blocks) + 1:

@@ -69,6 +69,14 @@ class ObjectProgram:
             lines += [f"{src:5d} {'  ' * (k > 0)}{' '.join(words)}" for k, (src, words) in enumerate(groups)]
         return "\n".join(lines) + "\n"
 
+    def executed_line(self, line: int) -> int:
+        """The source line of the last statement of the block at object ``line``: the block runs when it
+        is complete, so its motion, M0 and limits are reported there, not at an assignment before."""
+        if line <= 1 or line - 2 >= len(self.blocks):
+            return self.header_line
+        blk = self.blocks[line - 2]
+        return blk.items[-1][1] if blk.items else blk.line
+
     def source_line(self, line: int, column: int | None = None) -> int:
         """The source line of the statement that produced the object text at ``line`` (1: the ``%SPF``
         header), ``column``: the statement whose words stand there (None: the block's first)."""

@@ -111,8 +111,8 @@ def _drift_action(card, a, mv, v: float, sign: float, src):
         mode = card.sys["MODEREG"]
         if mode & (1 << 11):
             card.sys["ERRORREG"] |= 1 << 1
-            card.session.say(f"{src.file}:{src.line}: RS: system reset by ForbidTargetVel (MODEREG bit 11): "
-                             f"{a.name} reached its jog target with jtv")
+            card.say(f"{src.file}:{src.line}: RS: system reset by ForbidTargetVel (MODEREG bit 11): "
+                     f"{a.name} reached its jog target with jtv", card.task_of(src))
             card.session.extra["ended"] = f"ended by RS (system reset) at {src.file}:{src.line}"
             card.reset_system(t)
         elif mode & (1 << 28):
