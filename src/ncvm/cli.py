@@ -360,9 +360,10 @@ def check(programs, dialect, machine, as_json, all_errors):
 @click.option("--xref", type=click.Path(dir_okay=False), is_flag=False, flag_value="",
               help="Write the cross-reference listing (default name: the source's, .lst) and no object "
                    "program unless -o names one.")
+@click.option("--force", is_flag=True, help="Without -o: overwrite the object file even if ncvm did not write it.")
 @DIALECT_OPT
 @MACHINE_OPT
-def compile_cmd(source, out, xref, dialect, machine):
+def compile_cmd(source, out, xref, force, dialect, machine):
     """Compile SOURCE (CL 800 to @ code).
 
     Without --machine the machine.toml in the source's folder is used (named on stderr), as by check and run.
@@ -375,7 +376,7 @@ def compile_cmd(source, out, xref, dialect, machine):
                   state=DEFAULT_STATE)
     machine = machine or _folder_machine(source, say=True)
     try:
-        path = api.compile_program(source, out, xref, dialect, machine)
+        path = api.compile_program(source, out, xref, dialect, machine, force=force)
     except CompileFailed as e:
         for text in render_all(e.diagnostics):
             click.echo(text, err=True)
