@@ -62,7 +62,7 @@ def test_no_ignored_file_is_tracked(tracked):
 
 def test_the_pattern_finds_what_it_is_for():
     """The check itself: each kind of outside path is found, ordinary text is not."""
-    outside = ["see ../" + "shared/bench/peers", "`" + "shared/seeds/cpl.txt`", "mapped by spec/" + "cl800.md",
+    outside = ["see ../" + "shared" + "/bench/peers", "`" + "shared" + "/seeds/cpl.txt`", "mapped by spec/" + "cl800.md",
                "/" + "work/wt/x", "/" + "home/user/ncvm", "C:\\" + "Users\\me"]
     inside = ["bench/peers/loop_arith.ngc", "the shared NC kernel", "/usr/bin/rs274", "docs/cpl.md",
               "machine/work/areas", "a workpiece"]
