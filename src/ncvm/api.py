@@ -147,7 +147,10 @@ def run_sinks(machine: Machine, options: RunOptions) -> RunSinks:
     if options.gcode:
         canon.append(GcodeWriter(options.gcode))
     canon.extend(options.extra_sinks)
-    return RunSinks(canon, recorder, checks, PlotPoints(recorder) if options.plot else None)
+    plot = PlotPoints(recorder, frame=options.plot_frame) if options.plot else None
+    if plot is not None:
+        canon.append(plot)  # told of the work frame and of the channel (rw_SymPas task) of the moves
+    return RunSinks(canon, recorder, checks, plot)
 
 
 #: a Session built directly (tests, tools driving a front end) gets the same sinks as a run

@@ -23,7 +23,8 @@ from .machine.docgen import markdown as tables
 from .outpaths import PLOT_SUFFIXES, SCREEN_PICTURE, Output, OutputError, check_outputs
 from .runtime.memory import parse_size
 from .runtime.session import RunOptions
-from .sinks.plot import draw
+from .sinks.plotview import plot_run
+from .timefmt import hms as _hms
 
 EXIT_OK, EXIT_FAULT, EXIT_USAGE, EXIT_INTERNAL = 0, 1, 2, 70
 DEFAULT_STATE = ".ncvm"
@@ -221,7 +222,7 @@ def run(program, dialect, machine, state_dir, as_json, trace, gcode, plot, max_s
                    err=True)
     if plot:
         try:
-            draw(session.plot, plot, title=f"{Path(program).name} ({result['dialect']})")
+            plot_run(plot, program, result, session)
         except OSError as e:
             raise OutputError(plot, e) from None
     if as_json:
@@ -273,12 +274,6 @@ def _summary(result: dict) -> str:
             f"{m['arc_moves']} arc moves, path {m['rapid_length'] + m['feed_length']:.3f} mm "
             f"(feed {m['feed_length']:.3f}), cycle time {_hms(result['cycle_time_s'])}"
             + (f", bounds {bounds}" if bounds else ""))
-
-
-def _hms(seconds: float) -> str:
-    m, s = divmod(seconds, 60.0)
-    h, m = divmod(int(m), 60)
-    return f"{h}:{m:02d}:{s:06.3f}" if h else f"{m}:{s:06.3f}"
 
 
 def _check_program(program: str) -> None:

@@ -65,6 +65,8 @@ class Card:
         self.recordings: dict = {}  # axis number -> LPR/LPRS Recording (recording.py)
         self.output_log: list = []  # {"task", "text"} of each line a task wrote (WRITELN)
         self.timeline = Timeline(self, [a.m for a in self.axes])  # reports the retired moves in time order
+        #: (file, line) of a statement -> the task whose program holds it (the front end fills it in)
+        self.task_of: dict[tuple[str, int], int] = {}
 
     # -- scenario events ------------------------------------------------------------------------------
     def apply_event(self, ev) -> None:
