@@ -9,10 +9,12 @@ It is also a canon sink that listens to two calls: ``frame`` (the work frame
 changed: points are kept in the workpiece's coordinates, machine position minus
 the offsets in force for that move, unless the machine frame was asked for) and
 ``channel`` (which of a control's parallel programs, the rw_SymPas tasks, makes
-the moves that follow: lines are coloured by it instead of by tool). Rapids
-before the first cutting move are the approach from wherever the machine
-happened to stand when the run began (the simulator's start position, not a
-point of the program): they are counted, not drawn.
+the moves that follow: lines are coloured by it instead of by tool). The run
+begins wherever the simulator put the machine (its start position), not at a
+point of the program: rapids at the beginning that leave from a point where
+one of the drawn axes still stands there are the approach, counted but not
+drawn; the drawing begins with the first cutting move or the first rapid from
+a point the program placed.
 """
 
 from __future__ import annotations
@@ -44,7 +46,9 @@ class PlotPoints(CanonSink):
         #: (first move index, offsets) of each work frame, and (first move index, number) of each channel
         self._frames: list[tuple[int, np.ndarray]] = []
         self._channels: list[tuple[int, int]] = []
-        self.approach = 0  # rapids before the first cutting move: not drawn
+        self.approach = 0  # rapids of the approach from the start position: not drawn
+        self._unplaced: np.ndarray | None = None  # drawn axes the approach has not moved yet
+        self._start: np.ndarray | None = None  # where the run began (drawn axes, in the plot's frame)
         self._approach_lines: list[np.ndarray] = []  # drawn only when the program never cuts
         self.names: tuple[str, ...] = ()
         self.idx: tuple[int, int, int] = (0, 0, 0)
@@ -130,9 +134,8 @@ class PlotPoints(CanonSink):
         if self._channels:
             which = self._per_move(self._channels, rec.base + lo, hi - lo)
             tool = np.array([c[1] for c in self._channels], dtype=np.int64)[which]
-        if self.first is None:  # the approach from the start position: rapids before the first cutting move
-            cutting = np.flatnonzero(kind != RAPID)
-            skip = int(cutting[0]) if len(cutting) else hi - lo
+        if self.first is None:  # the approach from the start position (see the module's docstring)
+            skip = self._approach_rows(kind, start, end)
             if skip:
                 self._hold_approach(start[:skip], end[:skip])
             if skip == hi - lo:
@@ -178,6 +181,21 @@ class PlotPoints(CanonSink):
         self._plunges(kind, start, end)
         if self._count > self.max_points:
             self._thin()
+
+    def _approach_rows(self, kind: np.ndarray, start: np.ndarray, end: np.ndarray) -> int:
+        """How many of these moves are the approach: rapids that leave from a point where a drawn axis still
+        stands where the run began (the program has not placed it yet), before the first cutting move."""
+        idx = list(self.idx)
+        if self._unplaced is None:
+            self._unplaced = np.ones(len(idx), dtype=bool)
+            self._start = start[0, idx].copy()
+        placed = np.logical_or.accumulate(end[:, idx] != self._start, axis=0)
+        unplaced_before = np.vstack([self._unplaced, self._unplaced & ~placed[:-1]])
+        drawn = (kind != RAPID) | ~unplaced_before.any(axis=1)
+        skip = int(np.argmax(drawn)) if drawn.any() else len(kind)
+        if skip:
+            self._unplaced = unplaced_before[skip - 1] & ~placed[skip - 1]
+        return skip
 
     def _hold_approach(self, start: np.ndarray, end: np.ndarray) -> None:
         """Rapids of the approach: counted; their points kept (a few) in case the program never cuts."""

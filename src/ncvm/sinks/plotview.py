@@ -82,9 +82,8 @@ def figure(points: PlotPoints, title: str = "", violations: Sequence = ()):
              "XZ": fig.add_subplot(grid[1, 0]), "YZ": fig.add_subplot(grid[1, 1])}
     plane = {"XY": (0, 1), "XZ": (0, 2), "YZ": (1, 2)}
     handles = []
-    feed_z = np.concatenate([p[:, 2] for (rapid, _), p in lines.items() if not rapid] or [np.zeros(0)])
-    feed_z = feed_z[np.isfinite(feed_z)]
-    depth = len(feed_z) > 0 and np.ptp(feed_z) > 1e-9 * max(1.0, float(np.max(hi - lo)))
+    segs = _feed_segments(lines)
+    depth = len(segs) > 0 and np.ptp(segs[:, :, 2].min(axis=1)) > 1e-9 * max(1.0, float(np.max(hi - lo)))
     who = "task" if points.by_channel else "T"
     for (rapid, owner), pts in lines.items():
         colour = TOOL_COLOURS[owner % len(TOOL_COLOURS)]
@@ -98,7 +97,7 @@ def figure(points: PlotPoints, title: str = "", violations: Sequence = ()):
         handles.append(Line2D([], [], linestyle=style, color=colour, linewidth=width,
                               label=f"{name} {'rapid' if rapid else 'feed'}"))
     if depth:
-        _depth_lines(fig, views["XY"], lines, label["z"])
+        _depth_lines(fig, views["XY"], segs, label["z"])
     _marks(points, views, handles, violations)
     for name, (a, b) in plane.items():
         ax = views[name]
@@ -168,8 +167,9 @@ def _equal_3d(ax, lo, hi, label) -> None:
     ax.set_box_aspect(tuple(high - low), zoom=0.9)
     from matplotlib.ticker import MaxNLocator
 
-    for axis in (ax.xaxis, ax.yaxis, ax.zaxis):
-        axis.set_major_locator(MaxNLocator(5))
+    share = (high - low) / float(np.max(high - low))
+    for axis, s in zip((ax.xaxis, ax.yaxis, ax.zaxis), share):  # a short side of the box: fewer ticks
+        axis.set_major_locator(MaxNLocator(max(2, int(round(6 * s)))))
     if hi[2] - lo[2] <= 1e-9 * max(1.0, float(np.max(hi - lo))):
         ax.set_zticks([lo[2]])
     ax.set_xlabel(label["x"])
@@ -177,19 +177,22 @@ def _equal_3d(ax, lo, hi, label) -> None:
     ax.set_zlabel(label["z"])
 
 
-def _depth_lines(fig, ax, lines: dict, zlabel: str) -> None:
-    """Feed moves in the top view, each segment coloured by its depth (the deeper of its ends: a plunge shows
-    the depth it reaches), the deepest drawn on top."""
-    from matplotlib.collections import LineCollection
-
+def _feed_segments(lines: dict) -> np.ndarray:
+    """The feed moves' drawn segments, (segments, 2 ends, xyz)."""
     segs = []
     for (rapid, _), pts in lines.items():
         if rapid or len(pts) < 2:
             continue
         pair = np.stack([pts[:-1], pts[1:]], axis=1)
-        ok = np.isfinite(pair).all(axis=(1, 2))
-        segs.append(pair[ok])
-    segs = np.concatenate(segs) if segs else np.zeros((0, 2, 3))
+        segs.append(pair[np.isfinite(pair).all(axis=(1, 2))])
+    return np.concatenate(segs) if segs else np.zeros((0, 2, 3))
+
+
+def _depth_lines(fig, ax, segs: np.ndarray, zlabel: str) -> None:
+    """Feed moves in the top view, each segment coloured by its depth (the deeper of its ends: a plunge shows
+    the depth it reaches), the deepest drawn on top."""
+    from matplotlib.collections import LineCollection
+
     depth = segs[:, :, 2].min(axis=1)
     order = np.argsort(-depth, kind="stable")
     segs, depth = segs[order], depth[order]
@@ -234,5 +237,5 @@ def _notes(points: PlotPoints, frame: str) -> list[str]:
         notes.append("machine frame")
     if points.approach and points.lines:
         n = points.approach
-        notes.append(f"{n} rapid{'s' if n != 1 else ''} from the start\nposition before the first cut:\nnot drawn")
+        notes.append(f"{n} rapid{'s' if n != 1 else ''} from the start\nposition (where the run began):\nnot drawn")
     return notes
