@@ -168,6 +168,8 @@ class _Progress:
 @click.option("--trace", type=click.Path(dir_okay=False), help="Write every canon call as JSON lines.")
 @click.option("--gcode", type=click.Path(dir_okay=False), help="Write the motion as flat G-code.")
 @click.option("--plot", type=click.Path(dir_okay=False), help="Draw the toolpath (.png, .svg or .pdf).")
+@click.option("--plot-frame", type=click.Choice(["work", "machine"]), default="work", show_default=True,
+              help="Coordinates of the plot: the program's (zero offsets and tool length taken off) or the machine's.")
 @click.option("--max-steps", type=click.IntRange(min=1), default=100_000_000, show_default=True,
               help="Stop a runaway program after this many statements and blocks.")
 @click.option("--max-memory", metavar="SIZE",
@@ -184,8 +186,8 @@ class _Progress:
 @click.option("--screen", type=click.Path(dir_okay=False), help="Save the operator screen at the end (.png).")
 @click.option("--screen-dir", type=click.Path(file_okay=False),
               help="Save one screen picture per wait for the operator (softkeys, input).")
-def run(program, dialect, machine, state_dir, as_json, trace, gcode, plot, max_steps, max_memory, scenario, keys,
-        editor_block, screen, screen_dir):
+def run(program, dialect, machine, state_dir, as_json, trace, gcode, plot, plot_frame, max_steps, max_memory, scenario,
+        keys, editor_block, screen, screen_dir):
     """Run PROGRAM on the simulated controller.
 
     Without --machine the machine.toml in the program's folder is used (named on stderr), as by check
@@ -207,7 +209,7 @@ def run(program, dialect, machine, state_dir, as_json, trace, gcode, plot, max_s
     options = RunOptions(state_dir=Path(state_dir), max_steps=max_steps, trace=as_path(trace),
                          gcode=as_path(gcode), echo=not as_json, scenario=as_path(scenario), keys=key_script,
                          keyboard=keyboard, editor_block=editor_block, screen=as_path(screen),
-                         screen_dir=as_path(screen_dir), plot=bool(plot))
+                         screen_dir=as_path(screen_dir), plot=bool(plot), plot_frame=plot_frame)
     if max_memory is not None:
         options.max_memory = parse_size(max_memory)
     # the progress line would draw over the operator's prompts

@@ -231,3 +231,22 @@ def test_a_soft_limit_violation_is_marked_where_it_happens(tmp_path: Path):
         assert [(line.get_xdata()[0], line.get_ydata()[0]) for line in marks] == [(120.0, 20.0)]  # work frame
     finally:
         plt.close(fig)
+
+
+@pytest.mark.parametrize("frame", ["work", "machine"])
+def test_the_command_line_draws_in_the_frame_asked_for(tmp_path: Path, frame: str, monkeypatch):
+    from click.testing import CliRunner
+
+    from ncvm import cli
+    from ncvm.sinks import plotview
+
+    seen = []
+    real = plotview.figure
+    monkeypatch.setattr(plotview, "figure", lambda points, *a, **k: seen.append(points.in_work_frame) or real(
+        points, *a, **k))
+    program = tmp_path / "p.din"
+    program.write_text("G10 L2 P1 X100 Y0 Z0\nG54 G0 X0 Y0 Z2\nG1 Z-1 F300\nG1 X20\nM2\n")
+    r = CliRunner().invoke(cli.cli, ["run", str(program), "--state", str(tmp_path / "s"), "--plot",
+                                     str(tmp_path / "p.png"), "--plot-frame", frame])
+    assert r.exit_code == 0, r.output
+    assert (tmp_path / "p.png").read_bytes()[:4] == b"\x89PNG" and seen == [frame == "work"]
