@@ -83,7 +83,9 @@ def figure(points: PlotPoints, title: str = "", violations: Sequence = ()):
     plane = {"XY": (0, 1), "XZ": (0, 2), "YZ": (1, 2)}
     handles = []
     segs = _feed_segments(lines)
-    depth = len(segs) > 0 and np.ptp(segs[:, :, 2].min(axis=1)) > 1e-9 * max(1.0, float(np.max(hi - lo)))
+    # depth colours when the feed moves seen from above (not the plunges: points there) lie at several depths
+    seen = segs[np.hypot(*(segs[:, 1, :2] - segs[:, 0, :2]).T) > 1e-9] if len(segs) else segs
+    depth = len(seen) > 0 and np.ptp(seen[:, :, 2].min(axis=1)) > 1e-9 * max(1.0, float(np.max(hi - lo)))
     who = "task" if points.by_channel else "T"
     for (rapid, owner), pts in lines.items():
         colour = TOOL_COLOURS[owner % len(TOOL_COLOURS)]
@@ -132,10 +134,11 @@ def _extent(every: np.ndarray, points: PlotPoints) -> tuple[np.ndarray, np.ndarr
     return pts.min(axis=0), pts.max(axis=0)
 
 
-def _limits(lo: np.ndarray, hi: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Limits around the path: a margin, and no side shorter than MIN_SHARE of the longest (nor than 1)."""
+def _limits(lo: np.ndarray, hi: np.ndarray, longest: float) -> tuple[np.ndarray, np.ndarray]:
+    """Limits around the path: a margin, and no side shorter than MIN_SHARE of the path's longest extent
+    ``longest`` over all three axes (nor than 1)."""
     span = hi - lo
-    longest = max(float(span.max()), 1.0)
+    longest = max(longest, 1.0)
     side = np.maximum(span, MIN_SHARE * longest) + 2 * PAD * longest
     mid = (lo + hi) / 2
     return mid - side / 2, mid + side / 2
@@ -143,7 +146,7 @@ def _limits(lo: np.ndarray, hi: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 
 def _equal_2d(ax, lo, hi, a: int, b: int) -> None:
     """Equal scales: the limits cover the path, and the shorter range grows until it fills the view's box."""
-    low, high = _limits(lo[[a, b]], hi[[a, b]])
+    low, high = _limits(lo[[a, b]], hi[[a, b]], float(np.max(hi - lo)))
     fig = ax.get_figure()
     box = ax.get_position()
     ratio = (box.width * fig.get_figwidth()) / (box.height * fig.get_figheight())
@@ -160,7 +163,7 @@ def _equal_2d(ax, lo, hi, a: int, b: int) -> None:
 
 def _equal_3d(ax, lo, hi, label) -> None:
     """A box with the proportions of the path (a flat one: a thin slab whose Z axis shows its one depth)."""
-    low, high = _limits(lo, hi)
+    low, high = _limits(lo, hi, float(np.max(hi - lo)))
     ax.set_xlim(low[0], high[0])
     ax.set_ylim(low[1], high[1])
     ax.set_zlim(low[2], high[2])
@@ -168,10 +171,12 @@ def _equal_3d(ax, lo, hi, label) -> None:
     from matplotlib.ticker import MaxNLocator
 
     share = (high - low) / float(np.max(high - low))
-    for axis, s in zip((ax.xaxis, ax.yaxis, ax.zaxis), share):  # a short side of the box: fewer ticks
-        axis.set_major_locator(MaxNLocator(max(2, int(round(6 * s)))))
-    if hi[2] - lo[2] <= 1e-9 * max(1.0, float(np.max(hi - lo))):
-        ax.set_zticks([lo[2]])
+    flat = hi - lo <= 1e-9 * max(1.0, float(np.max(hi - lo)))
+    for axis, s, one, at in zip((ax.xaxis, ax.yaxis, ax.zaxis), share, flat, lo):
+        if one:  # the path does not move along this axis: its one value, no meaningless scale
+            axis.set_ticks([at])
+        else:  # a short side of the box: fewer ticks
+            axis.set_major_locator(MaxNLocator(max(2, int(round(6 * s)))))
     ax.set_xlabel(label["x"])
     ax.set_ylabel(label["y"])
     ax.set_zlabel(label["z"])
