@@ -16,7 +16,7 @@ from ncvm.api import run
 from ncvm.diagnostics import UsageError
 from ncvm.dialects import EXTENSIONS
 from ncvm.runtime.session import RunOptions
-from ncvm.sinks.plot import draw
+from ncvm.sinks.plotview import plot_run
 
 HERE = Path(__file__).parent
 
@@ -52,7 +52,7 @@ def main() -> int:
                 failures += 1
                 continue
             plot = out / f"{folder.name}_{program.stem}.png"
-            draw(session.plot, plot, title=f"{program.name} ({result['dialect']})")
+            plot_run(plot, program, result, session)
             m = result["motion"]
             status = result["status"] if not result["error"] else f"error {result['error']['code']}: " \
                                                                    f"{result['error']['message']}"

@@ -154,7 +154,10 @@ def run_sinks(machine: Machine, options: RunOptions) -> RunSinks:
     if options.gcode:
         canon.append(GcodeWriter(options.gcode))
     canon.extend(options.extra_sinks)
-    return RunSinks(canon, recorder, checks, PlotPoints(recorder) if options.plot else None)
+    plot = PlotPoints(recorder, frame=options.plot_frame) if options.plot else None
+    if plot is not None:
+        canon.append(plot)  # told of the work frame and of the channel (rw_SymPas task) of the moves
+    return RunSinks(canon, recorder, checks, plot)
 
 
 #: a Session built directly (tests, tools driving a front end) gets the same sinks as a run
@@ -203,7 +206,10 @@ def run(path: str | Path, dialect: str | None = None, machine: Machine | str | P
 
 
 def compile_program(path: str | Path, out: str | Path | None = None, xref: str | Path | None = None,
-                    dialect: str | None = None, machine: Machine | str | Path | None = None) -> Path:
+                    dialect: str | None = None, machine: Machine | str | Path | None = None,
+                    force: bool = False) -> Path:
+    """Compile a program; without ``out`` the dialect names the object and replaces only a file it wrote
+    itself there, or any with ``force``."""
     text, d = resolve(path, dialect)
     return get_dialect(d).compile(str(path), text, machine_for(path, machine),
-                                  Path(out) if out else None, Path(xref) if xref else None)
+                                  Path(out) if out else None, Path(xref) if xref else None, force)

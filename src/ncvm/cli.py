@@ -23,7 +23,8 @@ from .machine.docgen import markdown as tables
 from .outpaths import PLOT_SUFFIXES, SCREEN_PICTURE, Output, OutputError, check_outputs
 from .runtime.memory import parse_size
 from .runtime.session import RunOptions
-from .sinks.plot import draw
+from .sinks.plotview import plot_run
+from .timefmt import hms as _hms
 
 EXIT_OK, EXIT_FAULT, EXIT_USAGE, EXIT_INTERNAL = 0, 1, 2, 70
 DEFAULT_STATE = ".ncvm"
@@ -167,6 +168,8 @@ class _Progress:
 @click.option("--trace", type=click.Path(dir_okay=False), help="Write every canon call as JSON lines.")
 @click.option("--gcode", type=click.Path(dir_okay=False), help="Write the motion as flat G-code.")
 @click.option("--plot", type=click.Path(dir_okay=False), help="Draw the toolpath (.png, .svg or .pdf).")
+@click.option("--plot-frame", type=click.Choice(["work", "machine"]), default="work", show_default=True,
+              help="Coordinates of the plot: the program's (zero offsets and tool length taken off) or the machine's.")
 @click.option("--max-steps", type=click.IntRange(min=1), default=100_000_000, show_default=True,
               help="Stop a runaway program after this many statements and blocks.")
 @click.option("--max-memory", metavar="SIZE",
@@ -186,8 +189,8 @@ class _Progress:
 @click.option("--time-model", type=click.Choice(["lookahead", "rest-to-rest"]),
               help="How move times are planned (default: the machine file's [motion] model, lookahead): blocks "
                    "blended in continuous-path mode, or every block from rest to rest.")
-def run(program, dialect, machine, state_dir, as_json, trace, gcode, plot, max_steps, max_memory, scenario, keys,
-        editor_block, screen, screen_dir, time_model):
+def run(program, dialect, machine, state_dir, as_json, trace, gcode, plot, plot_frame, max_steps, max_memory, scenario,
+        keys, editor_block, screen, screen_dir, time_model):
     """Run PROGRAM on the simulated controller.
 
     Without --machine the machine.toml in the program's folder is used (named on stderr), as by check
@@ -209,7 +212,8 @@ def run(program, dialect, machine, state_dir, as_json, trace, gcode, plot, max_s
     options = RunOptions(state_dir=Path(state_dir), max_steps=max_steps, trace=as_path(trace),
                          gcode=as_path(gcode), echo=not as_json, scenario=as_path(scenario), keys=key_script,
                          keyboard=keyboard, editor_block=editor_block, screen=as_path(screen),
-                         screen_dir=as_path(screen_dir), plot=bool(plot), time_model=time_model)
+                         screen_dir=as_path(screen_dir), plot=bool(plot), plot_frame=plot_frame,
+                         time_model=time_model)
     if max_memory is not None:
         options.max_memory = parse_size(max_memory)
     # the progress line would draw over the operator's prompts
@@ -224,7 +228,7 @@ def run(program, dialect, machine, state_dir, as_json, trace, gcode, plot, max_s
                    err=True)
     if plot:
         try:
-            draw(session.plot, plot, title=f"{Path(program).name} ({result['dialect']})")
+            plot_run(plot, program, result, session)
         except OSError as e:
             raise OutputError(plot, e) from None
     if as_json:
@@ -284,12 +288,6 @@ def _summary(result: dict) -> str:
 
 def _bounds(bounds: dict) -> str:
     return " ".join(f"{a}[{lo:.3f},{hi:.3f}]" for a, (lo, hi) in bounds.items())
-
-
-def _hms(seconds: float) -> str:
-    m, s = divmod(seconds, 60.0)
-    h, m = divmod(int(m), 60)
-    return f"{h}:{m:02d}:{s:06.3f}" if h else f"{m}:{s:06.3f}"
 
 
 def _check_program(program: str) -> None:
@@ -371,9 +369,10 @@ def check(programs, dialect, machine, as_json, all_errors):
 @click.option("--xref", type=click.Path(dir_okay=False), is_flag=False, flag_value="",
               help="Write the cross-reference listing (default name: the source's, .lst) and no object "
                    "program unless -o names one.")
+@click.option("--force", is_flag=True, help="Without -o: overwrite the object file even if ncvm did not write it.")
 @DIALECT_OPT
 @MACHINE_OPT
-def compile_cmd(source, out, xref, dialect, machine):
+def compile_cmd(source, out, xref, force, dialect, machine):
     """Compile SOURCE (CL 800 to @ code).
 
     Without --machine the machine.toml in the source's folder is used (named on stderr), as by check and run.
@@ -386,7 +385,7 @@ def compile_cmd(source, out, xref, dialect, machine):
                   state=DEFAULT_STATE)
     machine = machine or _folder_machine(source, say=True)
     try:
-        path = api.compile_program(source, out, xref, dialect, machine)
+        path = api.compile_program(source, out, xref, dialect, machine, force=force)
     except CompileFailed as e:
         for text in render_all(e.diagnostics):
             click.echo(text, err=True)

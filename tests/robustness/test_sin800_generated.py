@@ -420,7 +420,7 @@ def test_push_set_too_long_for_one_block_is_split(tmp_path):
     src.write_text(MANY_TEMPORARIES, encoding="latin-1")
     obj = compile_program(src, tmp_path / "L5.spf").read_text(encoding="latin-1").split("\n")
     assert obj[1].startswith("@041 R50 R60 @041 R76 R99 ")
-    assert obj[-2].endswith(" @043 R76 R99 @043 R50 R60 M17")  # popped in the reverse order
+    assert obj[-3].endswith(" @043 R76 R99 @043 R50 R60 M17")  # popped in the reverse order (then the mark)
     by_source, _ = run(src, options=RunOptions(state_dir=tmp_path / "a"))
     by_object, _ = run(tmp_path / "L5.spf", dialect="sin800", options=RunOptions(state_dir=tmp_path / "b"))
     # R1 = 0: 11 times x -> (x + 1) * 2 gives 2**12 - 2 = 4094; (4094 + 1) * R50 + R60 = 4095 * 1 + 2

@@ -107,7 +107,9 @@ def test_plot_thinning_keeps_the_extents_and_bounds_the_points(small_window, tmp
         assert np.nanmax(drawn[:, col]) == np.nanmax(every[:, col])
         assert np.nanmin(drawn[:, col]) == pytest.approx(summary.bounds[name][0], abs=0.01)
         assert np.nanmax(drawn[:, col]) == pytest.approx(summary.bounds[name][1], abs=0.01)
-    assert plot.first == [0.0, 0.0, 0.0] and plot.last == list(ms[-1][1])
+    # the first move, a rapid from the start position, is the approach: the drawing starts where it ends
+    assert ms[0][0] == "rapid" and plot.approach == 1
+    assert plot.first == list(ms[0][1]) and plot.last == list(ms[-1][1])
     # the early moves were thinned no more than the late ones: Y grows with the move number
     feed = plot.drawn()[(False, 0)]
     early = np.count_nonzero(feed[:, 1] < 7.5)  # the first half of the rows of the zig-zag

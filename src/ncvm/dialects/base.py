@@ -29,5 +29,6 @@ class Dialect:
         """
         raise NotImplementedError
 
-    def compile(self, path: str, text: str, machine: Machine, out: Path | None, xref: Path | None) -> Path:
+    def compile(self, path: str, text: str, machine: Machine, out: Path | None, xref: Path | None,
+                force: bool = False) -> Path:
         raise UsageError(f"dialect '{self.id}' has no compiler: its programs run as they are")

@@ -125,6 +125,16 @@ class CanonSink:
     def dwell(self, seconds: float, src: Src) -> None:
         """Wait with axes standing still."""
 
+    def frame(self, offsets: tuple, src: Src | None, whole_run: bool = False) -> None:
+        """The work frame changed: from the next move on, machine position ``m`` is at ``m - offsets`` in the
+        workpiece's coordinates (zero offsets, G92 and tool length; a rotation or scaling the program asks
+        for stays in the drawing). ``whole_run``: these offsets hold for every move of the run, those already
+        made included (a control that knows its zero point only at the end: the rw_SymPas card)."""
+
+    def channel(self, number: int, src: Src | None) -> None:
+        """The moves that follow are made by channel ``number``: one of the programs a control runs at the
+        same time (the rw_SymPas card's CNC tasks)."""
+
     def tool_change(self, tool: int, src: Src) -> None:
         """Tool ``tool`` is now in the spindle."""
 
@@ -158,8 +168,8 @@ class CanonSink:
         """The run is over (normally or by a fault): flush files."""
 
 
-_METHODS = ("begin", "rapid", "feed", "arc", "move_batch", "timing", "dwell", "tool_change", "tool_offset", "spindle", "coolant",
-            "aux", "probe", "message", "stop", "program_end", "end")
+_METHODS = ("begin", "rapid", "feed", "arc", "move_batch", "timing", "dwell", "frame", "channel", "tool_change",
+            "tool_offset", "spindle", "coolant", "aux", "probe", "message", "stop", "program_end", "end")
 
 
 class Canon:

@@ -144,6 +144,8 @@ class NcKernel:
         #: the block number of the last programmed stop (None: the block has none)
         self.stop_block: int | None = None
         canon.begin(names, self.machine_pos)
+        self._framed = tuple(self.offset_vec)
+        canon.frame(self._framed, None)
 
     def use_profile(self, profile: Profile) -> None:
         """Read blocks as the control of ``profile`` does (a dialect selects its control's profile)."""
@@ -194,9 +196,13 @@ class NcKernel:
         self.offset_vec = vec
 
     def _set_offsets_keep_machine(self) -> None:
-        """After an offset change the tool stays put; the programmed position moves."""
+        """After an offset change the tool stays put; the programmed position moves (and the sinks are told
+        of the new work frame)."""
         self._recompute_offsets()
         self.prog = self.program_position(self.machine_pos)
+        if self.offset_vec != list(self._framed):
+            self._framed = tuple(self.offset_vec)
+            self.canon.frame(self._framed, None)
 
     def program_position(self, mcs) -> list[float]:
         """The programmed position (mm) that puts the machine at ``mcs`` with the active offsets and transform."""

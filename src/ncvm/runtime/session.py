@@ -35,6 +35,7 @@ class RunOptions:
     trace: Path | None = None
     gcode: Path | None = None
     plot: bool = False  # collect the (thinned) points of a toolpath plot while the program runs (session.plot)
+    plot_frame: str = "work"  # the plot's coordinates: "work" (the program's) or "machine"
     keep_toolpath: bool = False  # keep every move (session.recorder.arrays()); else only totals and checks
     max_output_lines: int = MAX_OUTPUT_LINES  # operator output lines kept for the result (first and last half)
     max_memory: int = field(default_factory=default_max_memory)  # bytes the run may grow the process by; 0: no limit

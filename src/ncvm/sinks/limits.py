@@ -21,6 +21,8 @@ class LimitViolation:
     file: str
     line: int
     frame: str = ""  # said where the program's other figures are in another frame ("machine")
+    point: tuple | None = None  # machine position where the axis is beyond its limit (the plot marks it)
+    move: int = 0  # the move's number in the run (the plot takes off the offsets in force for it)
 
     def message(self) -> str:
         side = "above" if self.value > self.limit else "below"
@@ -59,7 +61,10 @@ class LimitCheck:
             src = rec.src(lo + k)
             value = float(low[k, i]) if below[k] else float(high[k, i])
             limit = ax.min if below[k] else ax.max
-            self._found[i] = (rec.base + lo + k, i, LimitViolation(ax.name, value, limit, src.file, src.line))
+            point = rec.window()["end"][lo + k].copy()
+            point[i] = value
+            self._found[i] = (rec.base + lo + k, i, LimitViolation(ax.name, value, limit, src.file, src.line,
+                                                                  tuple(point.tolist()), rec.base + lo + k))
 
     @property
     def violations(self) -> dict[str, LimitViolation]:

@@ -1,10 +1,20 @@
-"""Plots of a recorded toolpath: an XY view and a 3-D view side by side.
+"""The points of a toolpath plot, collected while the program runs (the drawing: plotview.py).
 
-Rapids are dashed, feed moves solid, one colour per tool; start and end are marked.
 :class:`PlotPoints` watches the recorder while the program runs and keeps at
 most ``max_points`` points: a run of millions of moves is thinned by keeping,
 in each bucket of consecutive points, those where the drawn axes reach their
 lowest and highest values, so the drawing keeps its shape and its extents.
+
+It is also a canon sink that listens to two calls: ``frame`` (the work frame
+changed: points are kept in the workpiece's coordinates, machine position minus
+the offsets in force for that move, unless the machine frame was asked for) and
+``channel`` (which of a control's parallel programs, the rw_SymPas tasks, makes
+the moves that follow: lines are coloured by it instead of by tool). The run
+begins wherever the simulator put the machine (its start position), not at a
+point of the program: rapids at the beginning that leave from a point where
+one of the drawn axes still stands there are the approach, counted but not
+drawn; the drawing begins with the first cutting move or the first rapid from
+a point the program placed.
 """
 
 from __future__ import annotations
@@ -13,20 +23,33 @@ from pathlib import Path
 
 import numpy as np
 
+from ..nc.canon import CanonSink
 from .toolpath import ARC, FEED, RAPID, ToolpathRecorder
 
-TOOL_COLOURS = ["tab:blue", "tab:orange", "tab:green", "tab:red", "tab:purple", "tab:brown", "tab:pink", "tab:olive"]
 MAX_POINTS = 200_000  # points drawn, all lines together (and as many plunge marks)
 #: thinning keeps at most 8 of each BUCKET consecutive points of a line (first, last, the extremes of X, Y, Z): on
 #: a smooth curve only the two ends, so 16 (not more) keeps its chords close to it
 BUCKET = 16
 
 
-class PlotPoints:
-    """The drawn points of a toolpath, per (rapid?, tool): NaN rows separate the lines of one style."""
+class PlotPoints(CanonSink):
+    """The drawn points of a toolpath, per (rapid?, tool or channel): NaN rows separate the lines of one style.
 
-    def __init__(self, recorder: ToolpathRecorder, max_points: int = MAX_POINTS):
+    ``frame``: "work" (the workpiece's coordinates, as the canon ``frame`` calls give them; until one
+    comes, the machine's) or "machine".
+    """
+
+    def __init__(self, recorder: ToolpathRecorder, max_points: int = MAX_POINTS, frame: str = "work"):
         self.max_points = max_points
+        self.frame_asked = frame
+        self._rec = recorder
+        #: (first move index, offsets) of each work frame, and (first move index, number) of each channel
+        self._frames: list[tuple[int, np.ndarray]] = []
+        self._channels: list[tuple[int, int]] = []
+        self.approach = 0  # rapids of the approach from the start position: not drawn
+        self._unplaced: np.ndarray | None = None  # drawn axes the approach has not moved yet
+        self._start: np.ndarray | None = None  # where the run began (drawn axes, in the plot's frame)
+        self._approach_lines: list[np.ndarray] = []  # drawn only when the program never cuts
         self.names: tuple[str, ...] = ()
         self.idx: tuple[int, int, int] = (0, 0, 0)
         self.lines: dict[tuple[bool, int], list[np.ndarray]] = {}
@@ -39,6 +62,62 @@ class PlotPoints:
         self._last_key = None
         recorder.watch(self)
 
+    # -- canon calls --------------------------------------------------------
+    def frame(self, offsets, src, whole_run: bool = False) -> None:
+        if self.frame_asked != "work":
+            return
+        new = np.asarray(offsets, dtype=float)
+        if whole_run:  # the points held so far move from the frame they were drawn in to this one
+            if self._frames:
+                self._shift(new - self._frames[-1][1])
+            self._frames = [(0, new)]
+            return
+        at = len(self._rec)
+        if self._frames and self._frames[-1][0] == at:
+            self._frames[-1] = (at, new)
+        else:
+            self._frames.append((at, new))
+
+    def channel(self, number: int, src) -> None:
+        at = len(self._rec)
+        if self._channels and self._channels[-1][0] == at:
+            self._channels[-1] = (at, number)
+        else:
+            self._channels.append((at, number))
+
+    @property
+    def in_work_frame(self) -> bool:
+        return bool(self._frames)
+
+    @property
+    def by_channel(self) -> bool:
+        """Lines are told apart by channel (rw_SymPas task), not by tool."""
+        return bool(self._channels)
+
+    def offsets_at(self, move: int) -> np.ndarray:
+        """The offsets taken off machine positions for move ``move`` (counted from the run's first)."""
+        if not self._frames:
+            return np.zeros(len(self.names) or 3)
+        starts = [f[0] for f in self._frames]
+        return self._frames[max(0, int(np.searchsorted(starts, move, side="right")) - 1)][1]
+
+    def _shift(self, delta: np.ndarray) -> None:
+        """Move every point held by ``-delta`` (machine axes; only the drawn ones are held)."""
+        d = delta[list(self.idx)] if len(delta) > max(self.idx) else np.zeros(3)
+        self.lines = {k: [v - d for v in parts] for k, parts in self.lines.items()}
+        self.extremes = {k: v - d for k, v in self.extremes.items()}
+        self.plunges = [m - d[:2] for m in self.plunges]
+        self._approach_lines = [a - d for a in self._approach_lines]
+        if self.first is not None:
+            self.first = (np.asarray(self.first) - d).tolist()
+            self.last = (np.asarray(self.last) - d).tolist()
+
+    def _per_move(self, marks: list[tuple[int, object]], first: int, n: int) -> np.ndarray:
+        """Index into ``marks`` of the entry in force for moves first..first+n (before the first: the first)."""
+        starts = np.array([m[0] for m in marks])
+        return np.maximum(np.searchsorted(starts, np.arange(first, first + n), side="right") - 1, 0)
+
+    # -- moves ----------------------------------------------------------------
     def observe(self, rec: ToolpathRecorder, lo: int, hi: int) -> None:
         if not self.names:
             self.names = rec.axis_names
@@ -47,12 +126,29 @@ class PlotPoints:
         idx = list(self.idx)
         kind, tool = arr["kind"][lo:hi], arr["tool"][lo:hi]
         start, end = arr["start"][lo:hi], arr["end"][lo:hi]
+        shift = None
+        if self._frames:  # the workpiece's coordinates: each move less the offsets in force for it
+            which = self._per_move(self._frames, rec.base + lo, hi - lo)
+            shift = np.stack([f[1] for f in self._frames])[which]
+            start, end = start - shift, end - shift
+        if self._channels:
+            which = self._per_move(self._channels, rec.base + lo, hi - lo)
+            tool = np.array([c[1] for c in self._channels], dtype=np.int64)[which]
+        if self.first is None:  # the approach from the start position (see the module's docstring)
+            skip = self._approach_rows(kind, start, end)
+            if skip:
+                self._hold_approach(start[:skip], end[:skip])
+            if skip == hi - lo:
+                return
+            kind, tool, start, end = kind[skip:], tool[skip:], start[skip:], end[skip:]
+            shift = shift[skip:] if shift is not None else None
+            lo += skip
         key = tool.astype(np.int64) * 2 + (kind == RAPID)
         new = np.empty(len(key), dtype=bool)
         new[0] = self._last_key is None or key[0] != self._last_key
         new[1:] = key[1:] != key[:-1]
         # rows each move adds: a NaN row and its start when a line begins, then its end (an arc: its samples)
-        samples = {int(r): np.asarray(rec.polyline(lo + int(r), start[r], end[r]), dtype=float)[:, idx]
+        samples = {int(r): _arc_points(rec, lo + int(r), start[r], end[r], shift, r, idx)
                    for r in np.flatnonzero(kind == ARC)}
         count = np.ones(len(key), dtype=np.int64)
         for r, pts in samples.items():
@@ -86,6 +182,30 @@ class PlotPoints:
         if self._count > self.max_points:
             self._thin()
 
+    def _approach_rows(self, kind: np.ndarray, start: np.ndarray, end: np.ndarray) -> int:
+        """How many of these moves are the approach: rapids that leave from a point where a drawn axis still
+        stands where the run began (the program has not placed it yet), before the first cutting move."""
+        idx = list(self.idx)
+        if self._unplaced is None:
+            self._unplaced = np.ones(len(idx), dtype=bool)
+            self._start = start[0, idx].copy()
+        placed = np.logical_or.accumulate(end[:, idx] != self._start, axis=0)
+        unplaced_before = np.vstack([self._unplaced, self._unplaced & ~placed[:-1]])
+        drawn = (kind != RAPID) | ~unplaced_before.any(axis=1)
+        skip = int(np.argmax(drawn)) if drawn.any() else len(kind)
+        if skip:
+            self._unplaced = unplaced_before[skip - 1] & ~placed[skip - 1]
+        return skip
+
+    def _hold_approach(self, start: np.ndarray, end: np.ndarray) -> None:
+        """Rapids of the approach: counted; their points kept (a few) in case the program never cuts."""
+        self.approach += len(start)
+        if sum(len(a) for a in self._approach_lines) < self.max_points:
+            idx = list(self.idx)
+            line = np.full((3 * len(start), 3), np.nan)
+            line[1::3], line[2::3] = start[:, idx], end[:, idx]
+            self._approach_lines.append(line)
+
     def _plunges(self, kind, start, end) -> None:
         """Feed moves straight down the tool axis (drilling) are invisible from above: their ends get rings."""
         x, y, _ = self.idx
@@ -116,14 +236,25 @@ class PlotPoints:
         self._count = sum(len(v) for v in lines.values())
 
     def drawn(self) -> dict[tuple[bool, int], np.ndarray]:
-        """(rapid?, tool) -> the points of its lines, NaN rows between them; then, each on its own, the points
-        where the drawn axes reach their extremes (they draw nothing but keep the plot's extents)."""
+        """(rapid?, tool or channel) -> the points of its lines, NaN rows between them; then, each on its own, the
+        points where the drawn axes reach their extremes (they draw nothing but keep the plot's extents).
+        A program that never cuts: its rapids, the approach included."""
+        if not self.lines and self._approach_lines:
+            return {(True, 0): np.concatenate(self._approach_lines)}
         out = {}
         for style in sorted(self.lines, key=lambda k: (k[1], k[0])):
             alone = np.full((2 * len(self.extremes[style]), 3), np.nan)
             alone[1::2] = self.extremes[style]
             out[style] = np.concatenate((*self.lines[style], alone))
         return out
+
+
+def _arc_points(rec: ToolpathRecorder, index: int, start, end, shift, row: int, idx: list) -> np.ndarray:
+    """The sampled points of arc ``index`` in the plot's frame (the recorder samples in machine coordinates)."""
+    if shift is None:
+        return np.asarray(rec.polyline(index, start, end), dtype=float)[:, idx]
+    pts = np.asarray(rec.polyline(index, start + shift[row], end + shift[row]), dtype=float)
+    return (pts - shift[row])[:, idx]
 
 
 def _drawn_axes(names: tuple[str, ...]) -> tuple[int, int, int]:
@@ -194,46 +325,4 @@ def plot_toolpath(rec: ToolpathRecorder, path: str | Path, title: str = "") -> N
     draw(points, path, title)
 
 
-def draw(points: PlotPoints, path: str | Path, title: str = "") -> None:
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    names = points.names or ("X", "Y", "Z")
-    x, y, z = points.idx
-    fig = plt.figure(figsize=(13, 6))
-    ax2 = fig.add_subplot(1, 2, 1)
-    ax3 = fig.add_subplot(1, 2, 2, projection="3d")
-    lines = points.drawn()
-    for (rapid, tool), pts in lines.items():
-        colour = TOOL_COLOURS[tool % len(TOOL_COLOURS)]
-        style, width = ("--", 0.6) if rapid else ("-", 1.0)
-        label = f"T{tool} {'rapid' if rapid else 'feed'}"
-        ax2.plot(pts[:, 0], pts[:, 1], style, color=colour, linewidth=width, label=label)
-        ax3.plot(pts[:, 0], pts[:, 1], pts[:, 2], style, color=colour, linewidth=width)
-    if points.plunges:
-        marks = np.concatenate(points.plunges)
-        ax2.plot(marks[:, 0], marks[:, 1], "o", markerfacecolor="none", color="black", markersize=6, linewidth=0,
-                 label="feed along the tool axis")
-    if points.first is not None:
-        first, last = points.first, points.last
-        ax2.plot(first[0], first[1], "o", color="green", markersize=7, label="start")
-        ax2.plot(last[0], last[1], "s", color="red", markersize=7, label="end")
-        ax3.scatter([first[0]], [first[1]], [first[2]], color="green", marker="o")
-        ax3.scatter([last[0]], [last[1]], [last[2]], color="red", marker="s")
-    ax2.set_xlabel(names[x])
-    ax2.set_ylabel(names[y])
-    ax2.set_aspect("equal", adjustable="datalim")
-    ax2.grid(True, linewidth=0.3)
-    ax2.set_title(f"{names[x]}{names[y]} view")
-    if lines:
-        ax2.legend(loc="best", fontsize=7)
-    ax3.set_xlabel(names[x])
-    ax3.set_ylabel(names[y])
-    ax3.set_zlabel(names[z])
-    ax3.set_title("3-D view")
-    fig.suptitle(title)
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+from .plotview import draw  # noqa: E402  (the drawing, for callers that import it from here)

@@ -150,6 +150,8 @@ class SympasDialect(Dialect):
                 raise CompileFailed([Diagnostic("SP010", f"two programs are loaded into task {n}",
                                                 _span(u.prog))])
             tasks[n].load(u)
+            for loc in u.locs[1:]:  # an included file two tasks share counts for the first of them
+                card.task_of.setdefault(loc, n)
         main_task = tasks[main.task if main.task is not None else 0]
         main_task.start(0.0)
         card.scheduler.main = main_task
@@ -159,6 +161,8 @@ class SympasDialect(Dialect):
             session.steps.steps += card.scheduler.steps
             card.scheduler.steps = 0
             end = card.finish()
+            # the plot's work frame: the card's zero point at the end, as the figures of card.summary()
+            session.canon.frame(tuple(card.user_shift(a) for a in card.axes), None, True)  # whole_run
             if card.recordings:
                 session.extra["recordings"] = {card.names[ax]: rec.to_json(card.names[ax])
                                                for ax, rec in sorted(card.recordings.items())}

@@ -39,6 +39,7 @@ class Timeline:
         #: path units the card's profiles ran, each along its own path (moves at the same time add up)
         self.profile_length = 0.0
         self.last_end = 0.0  # the latest end of a retired move: the axes stand still after it
+        self.task: int | None = None  # the CNC task whose moves were reported last (canon ``channel``)
 
     def add(self, mv) -> None:
         """A move retired: it is final and is reported when the time it ran is reported."""
@@ -56,6 +57,7 @@ class Timeline:
         """A straight move of idle axes while no other move runs (the fast path of MLAW/MLRW)."""
         if self.pending:
             self.report(math.inf)
+        self._channel(src)
         self.canon.feed(start, end, feed, src)
         self.profile_length += length
         self.last_end = self.t = t1  # every axis was idle: nothing ends later
@@ -93,6 +95,13 @@ class Timeline:
         self.t = max(self.t, t)
         self.pending = [m for m in pending if m.t1 > self.t]
 
+    def _channel(self, src) -> None:
+        """Tell the sinks which task's moves follow, when another task's than before (the plot's colours)."""
+        task = self.card.task_of.get((src.file, src.line)) if src is not None else None
+        if task is not None and task != self.task:
+            self.task = task
+            self.canon.channel(task, src)
+
     def _place(self, m, t: float) -> None:
         p = m.pos(t)
         for k, ax in enumerate(m.axes):
@@ -107,6 +116,7 @@ class Timeline:
         self._place(m, tb)
         end = tuple(self.pos)
         canon = self.canon
+        self._channel(m.src)
         if m.jog:
             canon.rapid(start, end, m.src)
             return
@@ -156,8 +166,9 @@ class Timeline:
         _refine(at, ta, pa, tb, pb, 0, points)
         points = _thin(points)
         rapid = all(m.jog for m in active)
-        src = max(active, key=lambda m: m.t0).src
+        src = max(active, key=lambda m: m.t0).src  # the task that started last names the combined path
         canon = self.canon
+        self._channel(src)
         for (t0, p0), (t1, p1) in zip(points, points[1:]):
             d = math.dist(p0, p1)
             if d <= 0.0:

@@ -9,6 +9,7 @@ from click.testing import CliRunner
 from ncvm import dialects
 from ncvm.api import run
 from ncvm.cli import cli
+from ncvm.dialects.sinumerik.cl800.codegen import marked
 from ncvm.runtime.session import RunOptions
 
 GOLDEN = Path(__file__).parent / "golden"
@@ -20,7 +21,7 @@ def test_compile_command_writes_object_and_listing(tmp_path: Path):
     res = CliRunner().invoke(cli, ["compile", str(src), "-o", str(tmp_path / "L505.spf"),
                                    "--xref", str(tmp_path / "x.lst")])
     assert res.exit_code == 0, res.output
-    assert (tmp_path / "L505.spf").read_text() == (GOLDEN / "b_if_then_else.spf").read_text()
+    assert (tmp_path / "L505.spf").read_text() == marked((GOLDEN / "b_if_then_else.spf").read_text())
     assert (tmp_path / "x.lst").read_text() == (GOLDEN / "b_if_then_else.lst").read_text()
 
 

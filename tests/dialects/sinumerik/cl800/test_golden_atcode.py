@@ -12,6 +12,7 @@ from pathlib import Path
 import pytest
 
 from ncvm.api import compile_program
+from ncvm.dialects.sinumerik.cl800.codegen import marked
 
 GOLDEN = Path(__file__).parent / "golden"
 CASES = sorted(p.stem for p in GOLDEN.glob("*.cl8"))
@@ -20,7 +21,7 @@ CASES = sorted(p.stem for p in GOLDEN.glob("*.cl8"))
 @pytest.mark.parametrize("case", CASES)
 def test_object_program(case: str, tmp_path: Path):
     out = compile_program(GOLDEN / f"{case}.cl8", out=tmp_path / "obj.spf", xref=tmp_path / "x.lst")
-    assert out.read_text() == (GOLDEN / f"{case}.spf").read_text()
+    assert out.read_text() == marked((GOLDEN / f"{case}.spf").read_text())  # the file: with the mark note
     assert (tmp_path / "x.lst").read_text() == (GOLDEN / f"{case}.lst").read_text()
 
 

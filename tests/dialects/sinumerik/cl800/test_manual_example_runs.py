@@ -14,6 +14,7 @@ from pathlib import Path
 import pytest
 
 from ncvm.api import check, compile_program, run
+from ncvm.dialects.sinumerik.cl800.codegen import marked
 from ncvm.runtime.session import RunOptions
 
 HERE = Path(__file__).parent
@@ -277,8 +278,8 @@ def test_5_3_9_io_statements(tmp_path):
                    "  OUTP PARA (1, 100, 102);\n  OUTP ETX;\n  PORT (2); OUTP ZOA (0);\n"
                    "  OUTP DATA (2, 1, 10);\n  CHAN = 2;\n  PORT (1); INP (0);\nEND.\n")
     obj = compile_program(src, out=tmp_path / "L9.spf").read_text()
-    assert obj == ("%SPF9\n@a15 K1 K20 @a1b @a20 K1 @a27 K1 K100 K102 @a29 @a20 K2 @a25 K0 @a26 K2 K1 K10 @a40 K2 "
-                   "@a20 K1 @a28 K0 M17\n")
+    assert obj == marked("%SPF9\n@a15 K1 K20 @a1b @a20 K1 @a27 K1 K100 K102 @a29 @a20 K2 @a25 K0 @a26 K2 K1 K10 "
+                          "@a40 K2 @a20 K1 @a28 K0 M17\n")
     (tmp_path / "L5.spf").write_text("%SPF5\nM17\n")
     machine = ('[[axis]]\nname = "X"\n[[axis]]\nname = "Y"\n[offsets]\nG54 = [1.5, 0.0]\n[sin800]\n'
                'r = { R101 = 7 }\nv24_input = "R102=3\\n"\n')

@@ -9,6 +9,7 @@ from pathlib import Path
 import pytest
 
 from ncvm.api import compile_program
+from ncvm.dialects.sinumerik.cl800.codegen import MARK, marked
 
 HERE = Path(__file__).parent
 MANUAL = HERE / "manual"
@@ -19,13 +20,14 @@ ALL_SOURCES = sorted(MANUAL.glob("*.cl8")) + sorted((HERE / "golden").glob("*.cl
 @pytest.mark.parametrize("source", sorted(MANUAL.glob("*.cl8")), ids=lambda p: p.stem)
 def test_manual_example(source: Path, tmp_path: Path):
     out = compile_program(source, out=tmp_path / "obj.spf")
-    assert out.read_text() == source.with_suffix(".spf").read_text()
+    assert out.read_text() == marked(source.with_suffix(".spf").read_text())
 
 
 @pytest.mark.parametrize("source", ALL_SOURCES, ids=lambda p: f"{p.parent.name}/{p.stem}")
 def test_object_program_properties(source: Path, tmp_path: Path):
     """Blocks <= 120 characters; jumps find their block in their search direction; push list == pop list."""
-    blocks = compile_program(source, out=tmp_path / "obj.spf").read_text().splitlines()
+    *blocks, mark = compile_program(source, out=tmp_path / "obj.spf").read_text().splitlines()
+    assert mark == MARK
     assert re.fullmatch(r"%SPF\d+", blocks[0])
     body = blocks[1:]
     assert all(0 < len(b) <= 120 for b in body)

@@ -22,7 +22,7 @@ from ..options import options as sin800_options
 from . import ast
 from .axiswords import axis_diagnostics
 from .checker import check_program
-from .codegen import ObjectProgram, compile_program
+from .codegen import MARK, ObjectProgram, compile_program, written_by_ncvm
 from .errors import CompilerMessage
 from .stopdec import stop_dec_diagnostics
 
@@ -116,9 +116,11 @@ class Cl800Dialect(Dialect):
         except CompilerMessage as e:
             raise CompileFailed([e.diagnostic()]) from None
 
-    def compile(self, path, text, machine, out, xref):
+    def compile(self, path, text, machine, out, xref, force=False):
         """The object program; with ``xref`` the cross-reference listing instead, which a dedicated
-        compilation writes without object code (L361), unless ``out`` asks for the object as well."""
+        compilation writes without object code (L361), unless ``out`` asks for the object as well.
+        Without ``out`` the object is ``L<n>.spf`` beside the source, which replaces only a file ncvm wrote
+        (its :data:`MARK` note), or any with ``force``."""
         obj = self.build(path, text, machine)
         if xref:
             refuse_overwrite("compile", Path(xref), path)
@@ -127,7 +129,9 @@ class Cl800Dialect(Dialect):
                 return Path(xref)
         target = Path(out) if out else Path(path).with_name(f"L{obj.number}.spf")
         refuse_overwrite("compile", target, path)
-        write_output(target, obj.text())
+        if not out and not force:
+            _refuse_a_file_ncvm_did_not_write(target)
+        write_output(target, obj.file_text())
         return target
 
     def run(self, path, text, session):
@@ -148,6 +152,19 @@ class Cl800Dialect(Dialect):
                 d.notes = where.note(d.span) + d.notes
                 d.span = where.place(d.span)
             raise
+
+
+def _refuse_a_file_ncvm_did_not_write(target: Path) -> None:
+    """The object's own name may be a program someone wrote or edited by hand (``L101.spf``): keep it."""
+    try:
+        text = target.read_text(encoding="latin-1")
+    except FileNotFoundError:
+        return
+    except OSError as e:
+        raise UsageError(f"compile {target}: cannot read the file there: {e.strerror}") from None
+    if not written_by_ncvm(text):
+        raise UsageError(f"compile {target}: the file exists and ncvm did not write it (no {MARK} line at its end); "
+                         "give another name with -o, or --force to overwrite it")
 
 
 class _ObjectPlaces:

@@ -40,6 +40,23 @@ class Block:
         return self.items[0][1] if self.items else self.line
 
 
+#: the note (a "(Text)" block, L6401) in the last line of every object file ncvm writes, after M17 (so the
+#: header, ESS's @00f in the first block and every block's line stay where they are): a later ``compile``
+#: without -o overwrites such a file, never one without it (a hand-written or hand-edited program)
+MARK = "(COMPILED BY NCVM)"
+
+
+def marked(text: str) -> str:
+    """Object program text with the :data:`MARK` note as its last line."""
+    return f"{text}{MARK}\n"
+
+
+def written_by_ncvm(text: str) -> bool:
+    """Whether an object file ends with the :data:`MARK` note."""
+    lines = text.rstrip().splitlines()
+    return bool(lines) and lines[-1].strip() == MARK
+
+
 @dataclass
 class ObjectProgram:
     number: int
@@ -48,6 +65,10 @@ class ObjectProgram:
 
     def text(self) -> str:
         return "\n".join([f"%SPF{self.number}"] + [b.text() for b in self.blocks]) + "\n"
+
+    def file_text(self) -> str:
+        """The object program as ``compile`` writes it: with the :data:`MARK` note after the last block."""
+        return marked(self.text())
 
     def xref(self) -> str:
         """The cross-reference listing (L355-365): every statement's object code under the number of its
