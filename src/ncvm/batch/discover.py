@@ -105,7 +105,7 @@ def discover(args: list[str] | tuple[str, ...], dialect: str | None = None,
             found.programs.append(program)
             found.all_programs.append(program)
         else:
-            raise UsageError(f"no such program or folder: {arg}")
+            raise UsageError(f"no such program: {arg}")
     return found
 
 

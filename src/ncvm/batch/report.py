@@ -136,7 +136,7 @@ def summary_lines(doc: dict) -> list[str]:
         lines.append(f"{s['path']}: skipped: {s['reason']}")
     s = doc["summary"]
     for machine, n in s["machines"].items():
-        lines.append(f"ncvm: {n} program(s) on machine file {machine}")
+        lines.append(f"ncvm: {n} program(s) on " + ("the built-in machine" if machine == "built-in" else f"machine file {machine}"))
     if s["with_permanent_writes"]:
         lines.append(f"ncvm: {s['with_permanent_writes']} program(s) wrote permanent data ({s['state']}); "
                      f"the report lists each write")
