@@ -19,31 +19,9 @@ from ncvm.batch import report, run_batch
 from ncvm.batch.discover import discover, machine_of
 from ncvm.runtime.session import RunOptions
 
-from .archive import make_archive
+from .conftest import in_folder, stable
 
 NCVM = [sys.executable, "-m", "ncvm"]
-#: what differs between two runs of the same program by nature: where and how long it ran
-VOLATILE = ("worker", "wall_time_s")
-
-
-@pytest.fixture(scope="module")
-def archive(tmp_path_factory):
-    return make_archive(tmp_path_factory.mktemp("archive"))
-
-
-@pytest.fixture(scope="module")
-def in_process(archive):
-    """The whole archive in this process, paths relative to the archive as a shop would run it."""
-    cwd = os.getcwd()
-    os.chdir(archive.root)
-    try:
-        return run_batch(["."], jobs=1)
-    finally:
-        os.chdir(cwd)
-
-
-def stable(records):
-    return [{k: v for k, v in r.items() if k not in VOLATILE} for r in records]
 
 
 def by_path(doc):
@@ -102,12 +80,7 @@ def test_each_program_uses_the_nearest_machine_file_upwards(archive, in_process)
 
 
 def test_a_local_pool_gives_the_same_results(archive, in_process):
-    cwd = os.getcwd()
-    os.chdir(archive.root)
-    try:
-        pooled = run_batch(["."], jobs=2)
-    finally:
-        os.chdir(cwd)
+    pooled = in_folder(archive.root, run_batch, ["."], jobs=2)
     assert stable(pooled["programs"]) == stable(in_process["programs"])
     assert pooled["skipped"] == in_process["skipped"] and pooled["summary"]["jobs"] == 2
     assert len({r["worker"] for r in pooled["programs"]}) == 2  # two processes did the work

@@ -16,14 +16,14 @@ from .tasks import Task
 CONNECT_TIMEOUT_S = 20
 
 
-def run_on_cluster(tasks: list[Task], address: str) -> tuple[list[dict], dict]:
+def run_on_cluster(tasks: list[Task], address: str, timeout: float = CONNECT_TIMEOUT_S) -> tuple[list[dict], dict]:
     """The records of ``tasks`` in their order, and what the report says of the cluster."""
     try:
         from distributed import Client
     except ImportError:
         raise UsageError("--cluster needs dask.distributed: pip install 'ncvm[cluster]'") from None
     try:
-        client = Client(address, timeout=CONNECT_TIMEOUT_S, set_as_default=False)
+        client = Client(address, timeout=timeout, set_as_default=False)
     except (OSError, TimeoutError) as e:
         raise UsageError(f"--cluster {address}: cannot reach the dask scheduler ({e})") from None
     with client:
