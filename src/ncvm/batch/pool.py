@@ -29,5 +29,11 @@ def run_local(tasks: list[Task], jobs: int) -> list[dict]:
     # fork: a process starts with the loaded dialects at once (no interpreter start-up per process)
     context = multiprocessing.get_context("fork")
     chunk = max(1, min(8, len(tasks) // (jobs * 4)))
-    with ProcessPoolExecutor(max_workers=jobs, mp_context=context) as pool:
+    pool = ProcessPoolExecutor(max_workers=jobs, mp_context=context)
+    try:
         return list(pool.map(run_task, tasks, chunksize=chunk))
+    except BaseException:  # Ctrl-C: the programs not started are not started
+        pool.shutdown(wait=False, cancel_futures=True)
+        raise
+    finally:
+        pool.shutdown()
