@@ -7,8 +7,10 @@ import csv
 import json
 import os
 import shutil
+import signal
 import subprocess
 import sys
+import time
 import xml.etree.ElementTree as ET
 from pathlib import Path
 
@@ -280,3 +282,15 @@ def test_check_takes_extensionless_programs_and_the_machine_file_above(tmp_path)
     assert [(f["file"], f["machine"]) for f in doc["files"]] == [("cell/BOLTCIRC", "machine.toml"),
                                                                  ("cell/main.cpl", "machine.toml")]
     assert doc["skipped"][0]["file"] == "cell/NOTES"
+
+
+def test_ctrl_c_stops_a_pooled_batch_at_once(tmp_path):
+    for i in range(6):  # runaways: the batch would take minutes
+        (tmp_path / f"loop{i}.cpl").write_text("10 WHILE TRUE DO\n20 X% = 1\n30 END\n")
+    p = subprocess.Popen([*NCVM, "run", ".", "-j", "2"], cwd=tmp_path, stderr=subprocess.PIPE, text=True,
+                         start_new_session=True)
+    time.sleep(3)
+    os.killpg(p.pid, signal.SIGINT)  # as the terminal sends it: to the batch and its pool
+    err = p.communicate(timeout=60)[1]
+    assert p.returncode == 1 and "interrupted by the user" in err and "Traceback" not in err, err
+    assert "program(s) run" not in err  # no summary of a batch that did not end
