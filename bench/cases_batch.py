@@ -1,4 +1,4 @@
-"""Batch cases on a generated archive of all five dialects (tests/batch/archive.py, about 240 programs):
+"""Batch cases on a generated archive of all five dialects (tests/batch/generate.py, about 240 programs):
 one ``ncvm run`` process per program, as a shell loop would, against one ``ncvm run ARCHIVE`` in one
 process (-j 1), in a local pool (default: the cores) and on a dask LocalCluster of one worker per core.
 The rate is programs/s: the ratio of two rates is the speed-up."""
@@ -13,8 +13,8 @@ from pathlib import Path
 
 from benchlib import WORK, Case
 
-from ncvm.batch import default_jobs, run_batch
-from ncvm.batch.discover import discover
+from ncvm.archive import default_jobs, run_batch
+from ncvm.archive.discover import discover
 
 REPO = Path(__file__).resolve().parents[1]
 ARCHIVE = WORK / "archive"
@@ -24,7 +24,7 @@ _cluster = {}
 
 def _make_archive() -> Path:
     if not ARCHIVE.exists():
-        spec = importlib.util.spec_from_file_location("archive", REPO / "tests" / "batch" / "archive.py")
+        spec = importlib.util.spec_from_file_location("generate", REPO / "tests" / "batch" / "generate.py")
         module = importlib.util.module_from_spec(spec)
         sys.modules[spec.name] = module  # its dataclasses look their module up
         spec.loader.exec_module(module)

@@ -209,7 +209,7 @@ def run(programs, dialect, machine, state_dir, as_json, trace, gcode, plot, max_
     single = {"--trace": trace, "--gcode": gcode, "--plot": plot, "--scenario": scenario, "--keys": keys,
               "--editor-block": editor_block, "--screen": screen, "--screen-dir": screen_dir}
     if len(programs) > 1 or Path(programs[0]).is_dir() or jobs or cluster or report or shared_state:
-        from .batch.command import run_batch_command
+        from .archive.command import run_batch_command
 
         run_batch_command(programs, dialect, machine, state_dir, as_json, max_steps, max_memory, jobs, cluster,
                           report, shared_state, [k for k, v in single.items() if v is not None])
@@ -342,7 +342,7 @@ def check(programs, dialect, machine, as_json, all_errors):
     is a program), so a whole archive is checked at once, sub-programs too; each program uses the nearest
     machine.toml upwards (up to the folder named) unless --machine is given.
     """
-    from .batch.discover import discover, machine_of
+    from .archive.discover import discover, machine_of
 
     report, failed = [], False
     found = discover(programs, dialect, machine)

@@ -6,9 +6,9 @@ import os
 
 import pytest
 
-from ncvm.batch import run_batch
+from ncvm.archive import run_batch
 
-from .archive import make_archive
+from .generate import make_archive
 
 #: what differs between two runs of the same program by nature: where and how long it ran
 VOLATILE = ("worker", "wall_time_s")

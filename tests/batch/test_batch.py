@@ -1,4 +1,4 @@
-"""Batch runs of a generated archive (tests/batch/archive.py): which files run, on which machine, with the
+"""Batch runs of a generated archive (tests/batch/generate.py): which files run, on which machine, with the
 same results as one run per program, in this process and in a local pool; the reports read back."""
 
 from __future__ import annotations
@@ -17,8 +17,8 @@ from pathlib import Path
 import pytest
 
 from ncvm.api import run_program
-from ncvm.batch import report, run_batch
-from ncvm.batch.discover import discover, machine_of
+from ncvm.archive import report, run_batch
+from ncvm.archive.discover import discover, machine_of
 from ncvm.runtime.session import RunOptions
 
 from .conftest import in_folder, stable

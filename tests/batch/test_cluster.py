@@ -13,8 +13,8 @@ from pathlib import Path
 
 import pytest
 
-from ncvm.batch import run_batch
-from ncvm.batch.cluster import run_on_cluster
+from ncvm.archive import run_batch
+from ncvm.archive.cluster import run_on_cluster
 from ncvm.diagnostics import UsageError
 
 from .conftest import in_folder, stable

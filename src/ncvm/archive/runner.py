@@ -36,7 +36,7 @@ SETUP_ERROR = "RUN007"
 
 
 def run_task(task: Task) -> dict:
-    """The report record of ``task``'s program (see :mod:`ncvm.batch.report`)."""
+    """The report record of ``task``'s program (see :mod:`ncvm.archive.report`)."""
     with _ONE_RUN, tempfile.TemporaryDirectory(prefix="ncvm-batch-") as tmp:
         started = time.perf_counter()
         tree = Path(tmp) / "tree"

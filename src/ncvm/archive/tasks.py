@@ -96,6 +96,7 @@ class TaskBuilder:
         self.settings = settings
         self.base = (base or Path.cwd()).absolute()
         self._machines: dict[Path, tuple[list[Path], Path, dict[str, bytes]] | UsageError] = {}
+        self._folders: dict[Path, dict[str, list[Path]]] = {}  # folder -> its files by name, read once
 
     def task(self, index: int, program: Program) -> Task | UsageError:
         """The task of ``program``, or the usage error of its machine file (the batch reports it)."""
@@ -115,7 +116,7 @@ class TaskBuilder:
             files[str(path)] = path.read_bytes()
         except OSError as e:
             return UsageError(f"cannot read {program.path}: {e.strerror}")
-        _add_called(files, path, [path.parent, *search])
+        self._add_called(files, path, [path.parent, *search])
         extras = {}
         for suffix in (KEYS_SUFFIX, SCENARIO_SUFFIX):
             side = path.with_name(path.stem + suffix)
@@ -126,6 +127,39 @@ class TaskBuilder:
                     machine=str(program.machine) if program.machine else None, base=str(self.base), files=files,
                     file_root=file_root, own_folder_first=program.machine_above, keys=extras.get(KEYS_SUFFIX),
                     scenario=extras.get(SCENARIO_SUFFIX), settings=self.settings)
+
+    def _add_called(self, files: dict[str, bytes], program: Path, folders: list[Path]) -> None:
+        """Add every file of ``folders`` whose name (without extension) the program, or a file added for it,
+        mentions: what it may call. Generous on purpose: a file too many costs little, one too few fails."""
+        listings = [self._files_by_name(folder) for folder in dict.fromkeys(folders)]
+        todo, seen = [files[str(program)]], set()
+        while todo:
+            for word in set(_WORD.findall(todo.pop().decode("latin-1").upper())) - seen:
+                seen.add(word)
+                for p in (p for listing in listings for p in listing.get(word, ())):
+                    key = str(p.absolute())
+                    if key in files:
+                        continue
+                    try:
+                        if p.stat().st_size > MAX_CALLED_BYTES:
+                            continue
+                        files[key] = p.read_bytes()
+                    except OSError:
+                        continue
+                    todo.append(files[key])
+
+    def _files_by_name(self, folder: Path) -> dict[str, list[Path]]:
+        if folder not in self._folders:
+            names: dict[str, list[Path]] = {}
+            try:
+                entries = sorted(folder.iterdir())
+            except OSError:
+                entries = []
+            for p in entries:
+                if p.is_file():
+                    names.setdefault(p.name.split(".")[0].upper(), []).append(p)
+            self._folders[folder] = names
+        return self._folders[folder]
 
     def _machine(self, machine: Path):
         key = machine.absolute()
@@ -144,32 +178,3 @@ class TaskBuilder:
             except OSError as e:
                 self._machines[key] = UsageError(f"cannot read the machine file {machine}: {e.strerror}")
         return self._machines[key]
-
-
-def _add_called(files: dict[str, bytes], program: Path, folders: list[Path]) -> None:
-    """Add every file of ``folders`` whose name (without extension) the program, or a file added for it,
-    mentions: what it may call. Generous on purpose: a file too many costs nothing, one too few fails."""
-    by_name: dict[str, list[Path]] = {}
-    for folder in dict.fromkeys(folders):
-        try:
-            entries = list(folder.iterdir())
-        except OSError:
-            continue
-        for p in entries:
-            if p.is_file():
-                by_name.setdefault(p.name.split(".")[0].upper(), []).append(p)
-    todo = [files[str(program)]]
-    while todo:
-        text = todo.pop().decode("latin-1").upper()
-        for word in set(_WORD.findall(text)):
-            for p in by_name.pop(word, ()):
-                key = str(p.absolute())
-                if key in files:
-                    continue
-                try:
-                    if p.stat().st_size > MAX_CALLED_BYTES:
-                        continue
-                    files[key] = p.read_bytes()
-                except OSError:
-                    continue
-                todo.append(files[key])
