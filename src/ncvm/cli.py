@@ -11,6 +11,7 @@ import os
 import sys
 import threading
 import traceback
+from collections import Counter
 from pathlib import Path
 
 import click
@@ -343,6 +344,7 @@ def check(programs, dialect, machine, as_json, all_errors):
     machine.toml upwards (up to the folder named) unless --machine is given.
     """
     from .archive.discover import discover, machine_of
+    from .archive.report import machine_lines
 
     report, failed = [], False
     found = discover(programs, dialect, machine)
@@ -364,6 +366,9 @@ def check(programs, dialect, machine, as_json, all_errors):
     else:
         for s in skipped:
             click.echo(f"{s['file']}: skipped: {s['reason']}", err=True)
+        if len(report) > 1:  # which machine file each program used (a single one names it itself)
+            for line in machine_lines(Counter(r["machine"] for r in report)):
+                click.echo(line, err=True)
         n = sum(len(r["diagnostics"]) for r in report)
         bad = sum(1 for r in report if not r["ok"])
         with_errors = f", {bad} with errors" if bad else ""

@@ -282,6 +282,9 @@ def test_check_takes_extensionless_programs_and_the_machine_file_above(tmp_path)
     assert [(f["file"], f["machine"]) for f in doc["files"]] == [("cell/BOLTCIRC", "machine.toml"),
                                                                  ("cell/main.cpl", "machine.toml")]
     assert doc["skipped"][0]["file"] == "cell/NOTES"
+    text = ncvm("check", ".", cwd=tmp_path).stderr
+    assert "cell/NOTES: skipped: no extension" in text and "ncvm: 2 program(s) on machine file machine.toml" in text
+    assert "2 program(s) checked, 0 diagnostic(s), 1 file(s) skipped" in text
 
 
 def test_ctrl_c_stops_a_pooled_batch_at_once(tmp_path):

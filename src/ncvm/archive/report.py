@@ -135,8 +135,7 @@ def summary_lines(doc: dict) -> list[str]:
     for s in doc["skipped"]:
         lines.append(f"{s['path']}: skipped: {s['reason']}")
     s = doc["summary"]
-    for machine, n in s["machines"].items():
-        lines.append(f"ncvm: {n} program(s) on " + ("the built-in machine" if machine == "built-in" else f"machine file {machine}"))
+    lines += machine_lines(s["machines"])
     if s["with_permanent_writes"]:
         lines.append(f"ncvm: {s['with_permanent_writes']} program(s) wrote permanent data ({s['state']}); "
                      f"the report lists each write")
@@ -144,3 +143,9 @@ def summary_lines(doc: dict) -> list[str]:
     lines.append(f"ncvm: {s['programs']} program(s) run{failed_part}, {s['ok']} ok, {s['skipped']} skipped, "
                  f"{s['wall_time_s']:.1f} s")
     return lines
+
+
+def machine_lines(machines: dict[str, int]) -> list[str]:
+    """How many programs used each machine file."""
+    return [f"ncvm: {n} program(s) on " + ("the built-in machine" if m == "built-in" else f"machine file {m}")
+            for m, n in sorted(machines.items())]
