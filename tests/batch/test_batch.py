@@ -292,7 +292,11 @@ def test_ctrl_c_stops_a_pooled_batch_at_once(tmp_path):
         (tmp_path / f"loop{i}.cpl").write_text("10 WHILE TRUE DO\n20 X% = 1\n30 END\n")
     p = subprocess.Popen([*NCVM, "run", ".", "-j", "2"], cwd=tmp_path, stderr=subprocess.PIPE, text=True,
                          start_new_session=True)
-    time.sleep(3)
+    children = Path(f"/proc/{p.pid}/task/{p.pid}/children")
+    deadline = time.monotonic() + 120
+    while len(children.read_text().split()) < 2 and time.monotonic() < deadline:  # the pool is at work
+        time.sleep(0.05)
+    time.sleep(0.5)
     os.killpg(p.pid, signal.SIGINT)  # as the terminal sends it: to the batch and its pool
     err = p.communicate(timeout=60)[1]
     assert p.returncode == 1 and "interrupted by the user" in err and "Traceback" not in err, err
