@@ -122,7 +122,7 @@ DIALECT_OPT = click.option("--dialect", "-d", type=click.Choice(list(REGISTRY)),
 MACHINE_OPT = click.option("--machine", "-m", type=click.Path(dir_okay=False), help="Machine file (TOML).")
 
 
-def BATCH_OPTS(f):
+def _batch_options(f):
     """The options of a batch run (docs/batch.md)."""
     f = click.option("--shared-state", is_flag=True,
                      help="Batch: every program runs in turn on the --state directory itself and its permanent "
@@ -197,7 +197,7 @@ class _Progress:
 @click.option("--screen", type=click.Path(dir_okay=False), help="Save the operator screen at the end (.png).")
 @click.option("--screen-dir", type=click.Path(file_okay=False),
               help="Save one screen picture per wait for the operator (softkeys, input).")
-@BATCH_OPTS
+@_batch_options
 def run(programs, dialect, machine, state_dir, as_json, trace, gcode, plot, max_steps, max_memory, scenario, keys,
         editor_block, screen, screen_dir, jobs, cluster, report, shared_state):
     """Run PROGRAMS on the simulated controller: one program, or a batch of programs and folders.
@@ -366,7 +366,7 @@ def check(programs, dialect, machine, as_json, all_errors):
     else:
         for s in skipped:
             click.echo(f"{s['file']}: skipped: {s['reason']}", err=True)
-        if len(report) > 1:  # which machine file each program used (a single one names it itself)
+        if len(report) > 1:  # an archive: which machine file the programs used
             for line in machine_lines(Counter(r["machine"] for r in report)):
                 click.echo(line, err=True)
         n = sum(len(r["diagnostics"]) for r in report)
