@@ -56,6 +56,14 @@ def test_the_starting_state_travels_with_the_tasks(tmp_path, cluster):
     assert "a copy of" in remote["summary"]["state"]
 
 
+def test_workers_of_another_ncvm_version_are_refused(cluster, monkeypatch):
+    from ncvm.archive import cluster as module
+
+    monkeypatch.setattr(module, "__version__", "0.0.0")  # this side is another version than the workers
+    with pytest.raises(UsageError, match=r"the workers run ncvm \d+\.\d+\.\d+, this is ncvm 0\.0\.0"):
+        run_on_cluster([], cluster.scheduler_address)
+
+
 def test_an_unreachable_scheduler_is_a_usage_error():
     with pytest.raises(UsageError, match="cannot reach the dask scheduler"):
         run_on_cluster([], f"tcp://127.0.0.1:{_free_port()}", timeout=2)

@@ -27,7 +27,11 @@ def run_on_cluster(tasks: list[Task], address: str, timeout: float = CONNECT_TIM
     except (OSError, TimeoutError) as e:
         raise UsageError(f"--cluster {address}: cannot reach the dask scheduler ({e})") from None
     with client:
-        versions = set(client.run(_ncvm_version).values())
+        try:
+            versions = set(client.run(_ncvm_version).values())
+        except Exception as e:  # noqa: BLE001 - whatever a worker without ncvm raises, it says so
+            raise UsageError(f"--cluster {address}: the workers cannot run ncvm ({type(e).__name__}: {e}); "
+                             f"install ncvm {__version__} on every worker") from None
         if versions - {__version__}:
             raise UsageError(f"--cluster {address}: the workers run ncvm {', '.join(sorted(versions))}, "
                              f"this is ncvm {__version__}; install the same version on every worker")
