@@ -29,6 +29,7 @@ class Archive:
     injected: dict[str, str] = field(default_factory=dict)  # relative path -> the error code expected
     limit_violations: list[str] = field(default_factory=list)
     not_programs: list[str] = field(default_factory=list)  # files without extension that are no program
+    data_files: list[str] = field(default_factory=list)  # files in a machine's file root
     subprograms: list[str] = field(default_factory=list)  # sub-programs found by a call, not by main.txt
     plant_machine: str = ""
     plant_programs: list[str] = field(default_factory=list)  # programs below the plant's machine file
@@ -41,7 +42,8 @@ def _after_line(text: str, n: int, line: str) -> str:
 
 def make_archive(root: Path) -> Archive:
     a = Archive(root)
-    shutil.copytree(EXAMPLES, root / "examples", ignore=shutil.ignore_patterns("*.py", "machines"))
+    # not the files the examples write when they run (listed in the .gitignore of their file root)
+    shutil.copytree(EXAMPLES, root / "examples", ignore=shutil.ignore_patterns("*.py", "machines", "PMEASLOG"))
     shutil.copytree(REGRESSION, root / "regression", ignore=shutil.ignore_patterns("*.expected.json"))
     _plant(a)
     _injected(a)
@@ -98,6 +100,8 @@ def _injected(a: Archive) -> None:
             (folder / name).write_bytes((text if k == 0 else text.replace("\n", "\r\n")).encode("latin-1"))
             a.injected[f"injected/{dialect}/{name}"] = code
     folder = a.root / "injected"
+    (a.root / "examples" / "cpl" / "files" / "PMEAS2").write_text("N10 G1 X10 F100\nN20 M30\n")  # data
+    a.data_files.append("examples/cpl/files/PMEAS2")
     (folder / "travel.din").write_text("G0 X9000\nG0 X0\nM30\n")
     a.limit_violations.append("injected/travel.din")
     (folder / "README").write_text("Programs of the old milling cell, as saved from the control.\n")

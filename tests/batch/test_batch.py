@@ -60,6 +60,8 @@ def test_files_that_are_no_programs_and_sub_programs_are_skipped_with_the_reason
         assert skipped[path] == f"sub-program: called by FLANGE{path.split('line')[1][0]}"
     assert skipped["examples/cpl/BOLTCIRC"] == "sub-program: not listed in examples/cpl/main.txt"
     assert skipped["injected/sin800/L81.spf"].startswith("sub-program: a SINUMERIK sub-program file")
+    for path in archive.data_files:
+        assert skipped[path] == "in the file root of examples/cpl/machine.toml: the controller's data, not a program"
     ran = by_path(in_process)
     assert not set(skipped) & set(ran)
     # CPL programs named as the control names them (no extension) run as CPL
@@ -97,8 +99,10 @@ def _one_run(program, state: Path) -> dict:
 
 
 def test_results_are_those_of_one_run_per_program(archive, in_process, tmp_path):
+    copy = tmp_path / "archive"  # single runs write into the archive's file roots: not into the shared one
+    shutil.copytree(archive.root, copy)
     cwd = os.getcwd()
-    os.chdir(archive.root)
+    os.chdir(copy)
     try:
         found = discover(["."])
         records = by_path(in_process)
@@ -118,7 +122,9 @@ def test_results_are_those_of_one_run_per_program(archive, in_process, tmp_path)
 @pytest.mark.parametrize("path", ["examples/sin800/flange.mpf", "injected/cpl/pocket_bad1.cpl",
                                   "examples/cpl/partcount.cpl"])
 def test_results_are_those_of_ncvm_run_in_its_own_process(archive, in_process, tmp_path, path):
-    r = subprocess.run([*NCVM, "run", path, "--json", "--state", str(tmp_path / "s")], cwd=archive.root,
+    copy = tmp_path / "archive"  # a single run writes into its machine's file root: not into the shared archive
+    shutil.copytree(archive.root / Path(path).parts[0], copy / Path(path).parts[0])
+    r = subprocess.run([*NCVM, "run", path, "--json", "--state", str(tmp_path / "s")], cwd=copy,
                        capture_output=True, text=True, timeout=120)
     alone = json.loads(r.stdout)
     b = by_path(in_process)[path]
@@ -141,7 +147,8 @@ def test_permanent_writes_are_reported_and_not_kept(archive, in_process):
 def _partcount_folder(tmp_path: Path) -> Path:
     folder = tmp_path / "parts"
     cpl = Path(__file__).parents[2] / "examples/cpl"
-    shutil.copytree(cpl / "files", folder / "files")  # the declarations of the permanent variables
+    (folder / "files").mkdir(parents=True)
+    shutil.copy(cpl / "files" / "anwperm.dat", folder / "files")  # the declarations of the permanent variables
     shutil.copy(cpl / "machine.toml", folder)
     text = (cpl / "partcount.cpl").read_text()
     for name in ("a.cpl", "b.cpl", "c.cpl"):

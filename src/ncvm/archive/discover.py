@@ -8,7 +8,8 @@ dialect detector); any other file (machine files, key scripts, listings, data) i
 Sub-programs are not main programs: a folder's ``main.txt`` (one file name a line, as in examples/) lists
 its main programs and makes every other program of that folder a sub-program; without it, a SINUMERIK
 sub-program file (``.spf``) and a program that another program of the folder calls (CPL ``CALL NAME``,
-DIN ``o<name> call``) are sub-programs.
+DIN ``o<name> call``) are sub-programs. The files in a machine's file root are the controller's data
+(what programs read and write with OPENW/PRN#), not programs.
 """
 
 from __future__ import annotations
@@ -129,6 +130,7 @@ def machine_of(program: Program) -> Machine | None:
 
 def _folder(root: Path, dialect: str | None, machine: str | Path | None, found: Found, seen: set[Path]) -> None:
     folders: dict[Path, list[tuple[Path, str]]] = {}
+    file_roots: dict[Path, Path | None] = {}
     for path in sorted(root.rglob("*")):
         rel = path.relative_to(root)
         if any(part.startswith(".") for part in rel.parts) or not path.is_file():
@@ -138,6 +140,11 @@ def _folder(root: Path, dialect: str | None, machine: str | Path | None, found: 
         if path.suffix and path.suffix.lower() not in EXTENSIONS:
             continue
         seen.add(path.resolve())
+        owner = Path(machine) if machine else nearest_machine(path, root)
+        data = _file_root(owner, file_roots)
+        if data is not None and path.resolve().is_relative_to(data):
+            found.skipped.append(Skipped(path, f"in the file root of {owner}: the controller's data, not a program"))
+            continue
         kind = _classify(path, dialect)
         if isinstance(kind, Skipped):
             found.skipped.append(kind)
@@ -152,6 +159,19 @@ def _folder(root: Path, dialect: str | None, machine: str | Path | None, found: 
                 found.skipped.append(Skipped(path, subs[path]))
             else:
                 found.programs.append(program)
+
+
+def _file_root(machine: Path | None, cache: dict[Path, Path | None]) -> Path | None:
+    """The file root of a machine file (None: the built-in machine's is in the state directory, or the
+    file does not load, which its programs' runs report)."""
+    if machine is None:
+        return None
+    if machine not in cache:
+        try:
+            cache[machine] = load_machine(machine).file_root.resolve()
+        except (UsageError, OSError):
+            cache[machine] = None
+    return cache[machine]
 
 
 def _read(path: Path) -> str:
