@@ -93,7 +93,8 @@ def test_check_clean_program_exits_0(invoke, prog):
 
 
 def test_check_a_whole_archive_folder(invoke, tmp_path):
-    """A folder stands for every program below it (by extension); other files are left alone."""
+    """A folder stands for every program below it (by extension); other files are left alone. The archive's
+    machine.toml (X only) is the nearest one upwards of every program: part.din's Y axis is an error."""
     archive = tmp_path / "archive"
     (archive / "mill" / "old").mkdir(parents=True)
     (archive / "mill" / "part.din").write_text(PROGRAM)
@@ -103,10 +104,14 @@ def test_check_a_whole_archive_folder(invoke, tmp_path):
     (archive / "machine.toml").write_text("[[axis]]\nname = 'X'\n")
     r = invoke("check", str(archive))
     assert r.exit_code == 1
-    assert "3 program(s) checked, 2 with errors, 2 diagnostic(s)" in r.stderr
+    assert "3 program(s) checked, 3 with errors, 4 diagnostic(s)" in r.stderr
+    assert "machine (its axes: X)" in r.stderr
     doc = json.loads(invoke("check", str(archive), "--json").stdout)
     assert [(Path(f["file"]).name, f["ok"]) for f in doc["files"]] == [  # in path order
-        ("bad.din", False), ("cycle.cpl", False), ("part.din", True)]
+        ("bad.din", False), ("cycle.cpl", False), ("part.din", False)]
+    assert {f["machine"] for f in doc["files"]} == {str(archive / "machine.toml")}
+    (archive / "machine.toml").unlink()
+    assert "3 program(s) checked, 2 with errors, 2 diagnostic(s)" in invoke("check", str(archive)).stderr
     r = invoke("check", str(archive / "mill" / "part.din"), str(archive / "nothing"))
     assert r.exit_code == 2 and "no such program" in r.stderr
 

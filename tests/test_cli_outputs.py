@@ -180,7 +180,7 @@ def test_compile_never_overwrites_its_source_nor_writes_two_outputs_into_one_fil
     (["run", "part.din", "--json", "--keys", "absent.txt"], "'absent.txt' does not exist"),
     (["run", "part.din", "--json", "--max-steps", "0"], "--max-steps"),
     (["run", "part.din", "--json", "--gcode", "missing/g.ngc"], "--gcode missing/g.ngc: folder missing does not exist"),
-    (["run", "--json"], "Missing argument 'PROGRAM'"),
+    (["run", "--json"], "Missing argument 'PROGRAMS...'"),
     (["check", "--json", "part.din", "absent.din"], "no such program: absent.din"),
     (["check", "part.din", "--json", "--dialect", "pascal"], "--dialect"),
 ])

@@ -11,13 +11,14 @@ import os
 import sys
 import threading
 import traceback
+from collections import Counter
 from pathlib import Path
 
 import click
 
 from . import __version__, api
 from .diagnostics import CompileFailed, Diagnostic, Span, UsageError, render_all
-from .dialects import EXTENSIONS, REGISTRY
+from .dialects import REGISTRY
 from .machine.docgen import json_text
 from .machine.docgen import markdown as tables
 from .outpaths import PLOT_SUFFIXES, SCREEN_PICTURE, Output, OutputError, check_outputs
@@ -122,6 +123,19 @@ DIALECT_OPT = click.option("--dialect", "-d", type=click.Choice(list(REGISTRY)),
 MACHINE_OPT = click.option("--machine", "-m", type=click.Path(dir_okay=False), help="Machine file (TOML).")
 
 
+def _batch_options(f):
+    """The options of a batch run (docs/batch.md)."""
+    f = click.option("--shared-state", is_flag=True,
+                     help="Batch: every program runs in turn on the --state directory itself and its permanent "
+                          "writes stay (default: each program on its own copy, writes reported).")(f)
+    f = click.option("--report", type=click.Path(dir_okay=False),
+                     help="Batch: write the report (.json, .csv or JUnit .xml).")(f)
+    f = click.option("--cluster", metavar="tcp://HOST:PORT",
+                     help="Batch: run on this dask scheduler (pip install 'ncvm[cluster]').")(f)
+    return click.option("--jobs", "-j", type=click.IntRange(min=1),
+                        help="Batch: programs run at once in local processes (default: the number of cores).")(f)
+
+
 class _Progress:
     """A progress line on stderr for runs longer than about a second, when stderr is a terminal."""
 
@@ -159,7 +173,7 @@ class _Progress:
 
 
 @cli.command()
-@click.argument("program", type=click.Path(dir_okay=False))
+@click.argument("programs", nargs=-1, required=True, type=click.Path())
 @DIALECT_OPT
 @MACHINE_OPT
 @click.option("--state", "state_dir", type=click.Path(file_okay=False), default=DEFAULT_STATE, show_default=True,
@@ -189,13 +203,24 @@ class _Progress:
 @click.option("--time-model", type=click.Choice(["lookahead", "rest-to-rest"]),
               help="How move times are planned (default: the machine file's [motion] model, lookahead): blocks "
                    "blended in continuous-path mode, or every block from rest to rest.")
-def run(program, dialect, machine, state_dir, as_json, trace, gcode, plot, plot_frame, max_steps, max_memory, scenario,
-        keys, editor_block, screen, screen_dir, time_model):
-    """Run PROGRAM on the simulated controller.
+@_batch_options
+def run(programs, dialect, machine, state_dir, as_json, trace, gcode, plot, plot_frame, max_steps, max_memory, scenario,
+        keys, editor_block, screen, screen_dir, time_model, jobs, cluster, report, shared_state):
+    """Run PROGRAMS on the simulated controller: one program, or a batch of programs and folders.
 
     Without --machine the machine.toml in the program's folder is used (named on stderr), as by check
-    and compile, else the built-in 3-axis mill.
+    and compile, else the built-in 3-axis mill. In a batch each program uses the nearest machine.toml
+    upwards (up to the folder named), sub-programs are not run, and each program starts from a copy of
+    the state directory (docs/batch.md). Exit 1 when any program failed (error or limit violation).
     """
+    single = {"--trace": trace, "--gcode": gcode, "--plot": plot, "--scenario": scenario, "--keys": keys,
+              "--editor-block": editor_block, "--screen": screen, "--screen-dir": screen_dir, "--time-model": time_model}
+    if len(programs) > 1 or Path(programs[0]).is_dir() or jobs or cluster or report or shared_state:
+        from .archive.command import run_batch_command
+
+        run_batch_command(programs, dialect, machine, state_dir, as_json, max_steps, max_memory, jobs, cluster,
+                          report, shared_state, [k for k, v in single.items() if v is not None])
+    program = programs[0]
     _check_program(program)
     if not state_dir.strip():  # an unset variable: the store would land in the current directory
         raise UsageError("--state is empty; give the state directory (default .ncvm)")
@@ -314,20 +339,6 @@ def _folder_machine(program: str, say: bool = False) -> str | None:
     return str(path)
 
 
-def _programs_in(args) -> list[str]:
-    """The programs named, with every program file below a named folder (an archive), by extension."""
-    out = []
-    for arg in args:
-        path = Path(arg)
-        if path.is_dir():
-            out += sorted(str(p) for p in path.rglob("*") if p.is_file() and p.suffix.lower() in EXTENSIONS)
-        elif path.is_file():
-            out.append(arg)
-        else:
-            raise UsageError(f"no such program: {arg}")
-    return out
-
-
 @cli.command()
 @click.argument("programs", nargs=-1, required=True, type=click.Path())
 @DIALECT_OPT
@@ -337,29 +348,42 @@ def _programs_in(args) -> list[str]:
 def check(programs, dialect, machine, as_json, all_errors):
     """Check programs for every error the control would report; exit 1 when any was found.
 
-    A folder stands for every program file below it (known extensions), so a whole archive is checked
-    at once; each program uses the machine file of its own folder unless --machine is given.
+    A folder stands for every program file below it (known extensions; a file without one when its content
+    is a program), so a whole archive is checked at once, sub-programs too; each program uses the nearest
+    machine.toml upwards (up to the folder named) unless --machine is given.
     """
+    from .archive.discover import discover, machine_of
+    from .archive.report import machine_lines
+
     report, failed = [], False
-    programs = _programs_in(programs)
-    for program in programs:
+    found = discover(programs, dialect, machine)
+    for program in found.all_programs:
         try:
-            diags = api.check(program, dialect, machine or _folder_machine(program), all_errors)
+            diags = api.check(program.path, program.dialect, machine_of(program), all_errors)
         except CompileFailed as e:
             diags = e.diagnostics
         errors = [d for d in diags if d.severity == "error"]
         failed |= bool(errors)
-        report.append({"file": program, "ok": not errors, "diagnostics": [d.to_json() for d in diags]})
+        report.append({"file": str(program.path), "ok": not errors, "machine": str(program.machine or "built-in"),
+                       "diagnostics": [d.to_json() for d in diags]})
         if not as_json:
             for text in render_all(diags):
                 click.echo(text, err=True)
+    skipped = [{"file": str(s.path), "reason": s.reason} for s in found.skipped if s.path not in found.checked]
     if as_json:
-        click.echo(json.dumps({"files": report}, indent=2))
+        click.echo(json.dumps({"files": report, "skipped": skipped}, indent=2))
     else:
+        for s in skipped:
+            click.echo(f"{s['file']}: skipped: {s['reason']}", err=True)
+        if len(report) > 1:  # an archive: which machine file the programs used
+            for line in machine_lines(Counter(r["machine"] for r in report)):
+                click.echo(line, err=True)
         n = sum(len(r["diagnostics"]) for r in report)
         bad = sum(1 for r in report if not r["ok"])
         with_errors = f", {bad} with errors" if bad else ""
-        click.echo(f"ncvm: {len(programs)} program(s) checked{with_errors}, {n} diagnostic(s)", err=True)
+        not_programs = f", {len(skipped)} file(s) skipped" if skipped else ""
+        click.echo(f"ncvm: {len(report)} program(s) checked{with_errors}, {n} diagnostic(s){not_programs}",
+                   err=True)
     sys.exit(EXIT_FAULT if failed else EXIT_OK)
 
 

@@ -157,6 +157,7 @@ NCVM_CODES = {
     "RUN004": "run interrupted by the user",
     "RUN005": "waiting for ever (motion held, or every task waiting, with no way to go on)",
     "RUN006": "memory limit reached (--max-memory)",
+    "RUN007": "a program of a batch could not be set up (its machine file, the state directory; docs/batch.md)",
     "IO001": "file access outside the controller's file root",
     "NEST001": "statements or expressions nested deeper than ncvm reads where the manual sets no limit "
                "(64 levels, 16 loops; docs/decisions.md)",

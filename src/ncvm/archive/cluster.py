@@ -1,0 +1,49 @@
+"""Run a batch's tasks on a dask.distributed cluster (``--cluster tcp://HOST:PORT``, the extra ``ncvm[cluster]``).
+
+Each task carries its program's text, the files it may call, its machine file and the batch's options, so
+a worker needs nothing but ncvm (the same version) installed. The workers run :func:`run_task`, as the local
+pool does: the results are the same.
+"""
+
+from __future__ import annotations
+
+from .. import __version__
+from ..diagnostics import UsageError
+from .runner import run_task
+from .tasks import Task
+
+#: how long to wait for the scheduler to answer before the batch is refused
+CONNECT_TIMEOUT_S = 20
+
+
+def run_on_cluster(tasks: list[Task], address: str, timeout: float = CONNECT_TIMEOUT_S) -> tuple[list[dict], dict]:
+    """The records of ``tasks`` in their order, and what the report says of the cluster."""
+    try:
+        from distributed import Client
+    except ImportError:
+        raise UsageError("--cluster needs dask.distributed: pip install 'ncvm[cluster]'") from None
+    try:
+        client = Client(address, timeout=timeout, set_as_default=False)
+    except (OSError, TimeoutError) as e:
+        raise UsageError(f"--cluster {address}: cannot reach the dask scheduler ({e})") from None
+    with client:
+        try:
+            versions = set(client.run(_ncvm_version).values())
+        except Exception as e:  # noqa: BLE001 - whatever a worker without ncvm raises, it says so
+            raise UsageError(f"--cluster {address}: the workers cannot run ncvm ({type(e).__name__}: {e}); "
+                             f"install ncvm {__version__} on every worker") from None
+        if versions - {__version__}:
+            raise UsageError(f"--cluster {address}: the workers run ncvm {', '.join(sorted(versions))}, "
+                             f"this is ncvm {__version__}; install the same version on every worker")
+        workers = len(client.scheduler_info().get("workers", {}))
+        if not workers:
+            raise UsageError(f"--cluster {address}: the scheduler has no workers")
+        futures = client.map(run_task, tasks, pure=False, key=[f"ncvm-{t.index}-{id(t):x}" for t in tasks])
+        records = client.gather(futures)
+    return records, {"address": address, "workers": workers}
+
+
+def _ncvm_version() -> str:
+    from ncvm import __version__ as version
+
+    return version

@@ -1,0 +1,180 @@
+"""A batch's tasks: each program with everything its run reads, so that any process on any host runs it.
+
+A task carries the text of the program, of every file of its search path the program may call (a file
+whose name the program or a file it brings along mentions), the machine file and the machine's file root,
+the program's key script and scenario, and the batch's settings. The state every run starts from (the
+``--state`` directory's permanent store and files) travels once in the settings.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+import sqlite3
+import tempfile
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from ..diagnostics import UsageError
+from ..machine.config import load_machine
+from ..machine.state import STORE_NAME
+from .discover import Program
+
+#: the files of a program's own folder that a batch run reads beside it: the operator's key presses and
+#: what happens over simulated time (the convention of examples/)
+KEYS_SUFFIX = ".keys"
+SCENARIO_SUFFIX = ".scenario.toml"
+#: a program may mention another by any word of its text: names are taken generously, the files are small
+_WORD = re.compile(r"[A-Za-z0-9_]+")
+#: files larger than this in a search folder are no program a run calls (never shipped)
+MAX_CALLED_BYTES = 4 * 1024 * 1024
+
+
+@dataclass
+class Settings:
+    """The options every run of the batch shares."""
+
+    max_steps: int
+    max_memory: int | None = None  # None: the default of a run
+    #: a state directory every run uses in turn (writes stay there); None: each program its own temporary one
+    shared_state: str | None = None
+    #: the state each program starts from when not shared: path inside the state directory -> content
+    seed: dict[str, bytes] = field(default_factory=dict)
+    seed_from: str | None = None  # where the seed was read (for the report)
+
+
+@dataclass
+class Task:
+    """One program of the batch, self-contained."""
+
+    index: int
+    path: str  # the program as found (the report's name for it)
+    dialect: str
+    machine: str | None  # the machine file as found; None: the built-in machine
+    base: str  # the directory of the batch's command line: paths are reported relative to it, as a run does
+    files: dict[str, bytes]  # absolute path -> content
+    file_root: str | None  # absolute path of the machine file's file root: its writes are reported
+    own_folder_first: bool  # the machine file is from a folder above the program's: search the program's first
+    keys: str | None  # absolute path of the key script (in files)
+    scenario: str | None  # absolute path of the scenario file (in files)
+    settings: Settings
+
+
+def read_seed(state_dir: str | Path) -> dict[str, bytes]:
+    """The permanent store (a consistent copy, as SQLite backs it up) and the files of ``state_dir``."""
+    state = Path(state_dir)
+    seed: dict[str, bytes] = {}
+    store = state / STORE_NAME
+    if store.is_file():
+        with tempfile.TemporaryDirectory(prefix="ncvm-seed-") as tmp:
+            copy = Path(tmp) / STORE_NAME
+            try:
+                src = sqlite3.connect(f"file:{store}?mode=ro", uri=True)
+                dst = sqlite3.connect(copy)
+                with src, dst:
+                    src.backup(dst)
+                src.close()
+                dst.close()
+            except sqlite3.Error as e:
+                raise UsageError(f"--state {state}: cannot read the permanent store {store} ({e})") from None
+            seed[STORE_NAME] = copy.read_bytes()
+    for path in _files_below(state / "files"):
+        seed[str(path.relative_to(state))] = path.read_bytes()
+    return seed
+
+
+def _files_below(folder: Path) -> list[Path]:
+    if not folder.is_dir():
+        return []
+    return sorted(p for p in folder.rglob("*") if p.is_file() and not p.is_symlink())
+
+
+class TaskBuilder:
+    """Builds the tasks of a batch; reads each machine file once."""
+
+    def __init__(self, settings: Settings, base: Path | None = None):
+        self.settings = settings
+        self.base = (base or Path.cwd()).absolute()
+        self._machines: dict[Path, tuple[list[Path], Path, dict[str, bytes]] | UsageError] = {}
+        self._folders: dict[Path, dict[str, list[Path]]] = {}  # folder -> its files by name, read once
+
+    def task(self, index: int, program: Program) -> Task | UsageError:
+        """The task of ``program``, or the usage error of its machine file (the batch reports it)."""
+        path = program.path.absolute()
+        files: dict[str, bytes] = {}
+        file_root = None
+        if program.machine is not None:
+            loaded = self._machine(program.machine)
+            if isinstance(loaded, UsageError):
+                return loaded
+            search, root, shipped = loaded
+            files.update(shipped)
+            file_root = str(root)
+        else:
+            search = []
+        try:
+            files[str(path)] = path.read_bytes()
+        except OSError as e:
+            return UsageError(f"cannot read {program.path}: {e.strerror}")
+        self._add_called(files, path, [path.parent, *search])
+        extras = {}
+        for suffix in (KEYS_SUFFIX, SCENARIO_SUFFIX):
+            side = path.with_name(path.stem + suffix)
+            if side.is_file():
+                files[str(side)] = side.read_bytes()
+                extras[suffix] = str(side)
+        return Task(index=index, path=str(program.path), dialect=program.dialect,
+                    machine=str(program.machine) if program.machine else None, base=str(self.base), files=files,
+                    file_root=file_root, own_folder_first=program.machine_above, keys=extras.get(KEYS_SUFFIX),
+                    scenario=extras.get(SCENARIO_SUFFIX), settings=self.settings)
+
+    def _add_called(self, files: dict[str, bytes], program: Path, folders: list[Path]) -> None:
+        """Add every file of ``folders`` whose name (without extension) the program, or a file added for it,
+        mentions: what it may call. Generous on purpose: a file too many costs little, one too few fails."""
+        listings = [self._files_by_name(folder) for folder in dict.fromkeys(folders)]
+        todo, seen = [files[str(program)]], set()
+        while todo:
+            for word in set(_WORD.findall(todo.pop().decode("latin-1").upper())) - seen:
+                seen.add(word)
+                for p in (p for listing in listings for p in listing.get(word, ())):
+                    key = str(p.absolute())
+                    if key in files:
+                        continue
+                    try:
+                        if p.stat().st_size > MAX_CALLED_BYTES:
+                            continue
+                        files[key] = p.read_bytes()
+                    except OSError:
+                        continue
+                    todo.append(files[key])
+
+    def _files_by_name(self, folder: Path) -> dict[str, list[Path]]:
+        if folder not in self._folders:
+            names: dict[str, list[Path]] = {}
+            try:
+                entries = sorted(folder.iterdir())
+            except OSError:
+                entries = []
+            for p in entries:
+                if p.is_file():
+                    names.setdefault(p.name.split(".")[0].upper(), []).append(p)
+            self._folders[folder] = names
+        return self._folders[folder]
+
+    def _machine(self, machine: Path):
+        key = machine.absolute()
+        if key not in self._machines:
+            try:
+                m = load_machine(key)
+                shipped = {str(key): key.read_bytes()}
+                root = Path(os.path.abspath(m.file_root))
+                for p in _files_below(root):
+                    if p.absolute() != key:
+                        shipped[str(p.absolute())] = p.read_bytes()
+                search = [Path(os.path.abspath(p)) for p in m.program_path]
+                self._machines[key] = (search, root, shipped)
+            except UsageError as e:
+                self._machines[key] = e
+            except OSError as e:
+                self._machines[key] = UsageError(f"cannot read the machine file {machine}: {e.strerror}")
+        return self._machines[key]
