@@ -2,8 +2,10 @@
 
 from __future__ import annotations
 
+import json
 import shutil
 import subprocess
+import sys
 from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
@@ -11,11 +13,12 @@ from pathlib import Path
 HERE = Path(__file__).parent
 PEERS = HERE / "peers"  # the LinuxCNC peer programs and the flat-program generator
 WORK = HERE / ".work"
+NCVM = [sys.executable, "-m", "ncvm"]  # the CLI as a user starts it (the console script adds nothing but a stub)
 
 
 @dataclass
 class Case:
-    run: Callable[[], None]  # one measured run
+    run: Callable[[], dict | None]  # one measured run; may return figures of its own (cpu_s, peak_rss_mb, ...)
     count: int  # units of work per run (lines, iterations, moves, calls)
     unit: str  # e.g. "lines/s"
     setup: Callable[[], None] | None = None
@@ -38,3 +41,43 @@ def rs274_case(ngc: Path, count: int, unit: str, setup=None) -> Case:
 
     return Case(run, count, unit, setup=setup, available=lambda: rs274() is not None,
                 why_unavailable="rs274 not installed (Debian package linuxcnc-uspace)")
+
+
+@dataclass
+class Usage:
+    """What one child process cost: CPU (user + system) and wall seconds, peak resident memory."""
+
+    cpu_s: float
+    wall_s: float
+    peak_rss_mb: float
+
+
+# Started by a small launcher: a child forked from this (large) process would count this process's memory in
+# its peak, since Linux keeps the peak across exec; one forked from a small process starts from its size.
+LAUNCHER = """\
+import json, os, sys, time
+out = os.open(sys.argv[1], os.O_WRONLY | os.O_CREAT | os.O_TRUNC) if sys.argv[1] else os.open(os.devnull, os.O_WRONLY)
+t0 = time.perf_counter()
+pid = os.posix_spawn(sys.argv[2], sys.argv[2:], os.environ, file_actions=[(os.POSIX_SPAWN_DUP2, out, 1)])
+_, status, ru = os.wait4(pid, 0)
+print(json.dumps([os.waitstatus_to_exitcode(status), ru.ru_utime + ru.ru_stime, time.perf_counter() - t0,
+                  ru.ru_maxrss]))
+"""
+
+
+def child(argv: list[str], stdout: Path | None = None) -> Usage:
+    """Run ``argv`` to its end (stdout to the file ``stdout`` or discarded) and measure that one child with
+    ``os.wait4``, its own rusage (RUSAGE_CHILDREN would mix in every earlier child's peak)."""
+    argv = [shutil.which(argv[0]) or argv[0], *map(str, argv[1:])]
+    got = subprocess.run([sys.executable, "-S", "-I", "-c", LAUNCHER, str(stdout or ""), *argv],
+                         stdin=subprocess.DEVNULL, capture_output=True, text=True)
+    if got.returncode != 0 or not got.stdout:
+        raise RuntimeError(f"launcher for {' '.join(argv)} failed: {got.stderr[-2000:]}")
+    code, cpu, wall, maxrss = json.loads(got.stdout.splitlines()[-1])
+    if code != 0:
+        raise RuntimeError(f"{' '.join(argv)} exited {code}: {got.stderr[-2000:]}")
+    return Usage(cpu, wall, maxrss / 1024)
+
+
+def rs274_argv(ngc: Path) -> list[str]:
+    return [rs274(), "-g", str(ngc), str(WORK / (ngc.stem + ".rs274.txt"))]
