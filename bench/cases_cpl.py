@@ -13,7 +13,7 @@ from ncvm.runtime.session import RunOptions
 
 LOOP_ARITH = """\
 (loop_arith - 100,000 WHILE iterations of parameter arithmetic, as peers/loop_arith.ngc)
-N1 G21 G90 G17
+N1 G71 G90 G17
 10 I% = 0 : S! = 0.0 : M% = 0 : ACC! = 1.0 : X! = 0.0
 20 WHILE I% < 100000 DO
 30 X! = I% * 0.001
@@ -28,7 +28,7 @@ M30
 
 LOOP_MOTION = """\
 (loop_motion - 100 rows x 1000 computed G1 moves, semicircle turnarounds, two full circles)
-N1 G21 G90 G17 G94 G40 G49 G80
+N1 G71 G90 G17 G94 G40 G49 G80
 N2 F1200
 N3 G0 Z5
 N4 G0 X0 Y0
@@ -69,7 +69,7 @@ N60 G0 Z[CLEAR]
 
 SUBCALLS = """\
 (subcalls - 20,000 calls of the DRILL cycle on a 200 x 100 grid, 5 mm pitch)
-N1 G21 G90 G17 G94 G40 G49 G80
+N1 G71 G90 G17 G94 G40 G49 G80
 N2 F300
 N3 G0 Z10
 10 ROW% = 0

@@ -17,7 +17,7 @@ from benchlib import WORK, Case
 
 MOVES = 1_000_000
 CPL = f"""\
-N1 G21 G90 G17 F6000
+N1 G71 G90 G17 F6000
 10 I% = 0
 20 WHILE I% < {MOVES} DO
 G1 X[(I% - INT(I% / 100) * 100) * 0.5] Y[INT(I% / 100) * 0.01]

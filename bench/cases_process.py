@@ -31,7 +31,7 @@ STATE = WORK / ".ncvm-proc"
 
 CPL_LOOP = """\
 (loop_arith - {n:,} WHILE iterations of parameter arithmetic, as peers/loop_arith.ngc, {kind} variables)
-N1 G21 G90 G17
+N1 G71 G90 G17
 10 I% = 0 : S{s} = 0.0 : M% = 0 : ACC{s} = 1.0 : X{s} = 0.0
 20 WHILE I% < {n} DO
 30 X{s} = I% * 0.001
@@ -46,7 +46,7 @@ M30
 
 CPL_MOVES = """\
 (2,000,000 computed G1 moves: a raster of 100 moves a row)
-N1 G21 G90 G17 F6000
+N1 G71 G90 G17 F6000
 10 I% = 0
 20 WHILE I% < {n} DO
 G1 X[(I% - INT(I% / 100) * 100) * 0.5] Y[INT(I% / 100) * 0.01]
