@@ -15,15 +15,13 @@ from pathlib import Path
 
 import click
 
-from . import __version__, api
+from . import __version__
 from .diagnostics import CompileFailed, Diagnostic, Span, UsageError, render_all
 from .dialects import EXTENSIONS, REGISTRY
-from .machine.docgen import json_text
-from .machine.docgen import markdown as tables
 from .outpaths import PLOT_SUFFIXES, SCREEN_PICTURE, Output, OutputError, check_outputs
-from .runtime.memory import parse_size
-from .runtime.session import RunOptions
-from .sinks.plot import draw
+
+# The API, the machine and the sinks are imported by the commands that use them (issue 18, start-up):
+# ``ncvm --version`` loads click and this module only, ``ncvm check`` no numpy.
 
 EXIT_OK, EXIT_FAULT, EXIT_USAGE, EXIT_INTERNAL = 0, 1, 2, 70
 DEFAULT_STATE = ".ncvm"
@@ -190,6 +188,10 @@ def run(program, dialect, machine, state_dir, as_json, trace, gcode, plot, max_s
     Without --machine the machine.toml in the program's folder is used (named on stderr), as by check
     and compile, else the built-in 3-axis mill.
     """
+    from . import api
+    from .runtime.memory import parse_size
+    from .runtime.session import RunOptions
+
     _check_program(program)
     if not state_dir.strip():  # an unset variable: the store would land in the current directory
         raise UsageError("--state is empty; give the state directory (default .ncvm)")
@@ -220,6 +222,8 @@ def run(program, dialect, machine, state_dir, as_json, trace, gcode, plot, max_s
         click.echo(f"ncvm: warning: dialect '{result['dialect']}' has no editor dialog; --editor-block ignored",
                    err=True)
     if plot:
+        from .sinks.plot import draw
+
         try:
             draw(session.plot, plot, title=f"{Path(program).name} ({result['dialect']})")
         except OSError as e:
@@ -331,6 +335,8 @@ def check(programs, dialect, machine, as_json, all_errors):
     A folder stands for every program file below it (known extensions), so a whole archive is checked
     at once; each program uses the machine file of its own folder unless --machine is given.
     """
+    from . import api
+
     report, failed = [], False
     programs = _programs_in(programs)
     for program in programs:
@@ -367,6 +373,8 @@ def compile_cmd(source, out, xref, dialect, machine):
 
     Without --machine the machine.toml in the source's folder is used (named on stderr), as by check and run.
     """
+    from . import api
+
     _check_program(source)
     if xref == "":
         xref = str(Path(source).with_suffix(".lst"))  # the listing has the source's file name (CL 800 L361)
@@ -387,6 +395,9 @@ def compile_cmd(source, out, xref, dialect, machine):
 @click.option("--markdown", is_flag=True, help="The reference tables of docs/machine-file.md instead.")
 def machine_schema(markdown):
     """Print the JSON Schema of machine files (for editors)."""
+    from .machine.docgen import json_text
+    from .machine.docgen import markdown as tables
+
     click.echo(tables() if markdown else json_text(), nl=False)
 
 

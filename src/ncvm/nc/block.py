@@ -15,12 +15,13 @@ from dataclasses import dataclass
 from operator import itemgetter
 from typing import NamedTuple
 
-import numpy as np
-
 from ..diagnostics import Diagnostic, Span
+from ..lazy import lazy
 from ..source import lines as program_lines
 from ..source import too_many_decades, word_number
 from .canon import Src
+
+np = lazy("numpy")
 
 
 class Block:
@@ -261,21 +262,24 @@ _PLAIN_LINE = re.compile(r"^[ \t]*+(?:N\d+[ \t]*+)?(?=[GXYZIJKF])(?:G0?([0-3])(?
 #: motion G code as the reader finds it -> its number (-1: the block has none)
 _MOTION = {"": -1, "0": 0, "1": 1, "2": 2, "3": 3}
 _NAN = math.nan
+#: a check reads programs of fewer lines line by line: columns would cost more than they save (numpy's
+#: import alone is ~0.1 s, issue 18)
+COLUMNS_FROM = 200
 
 
-def read_din_segments(path: str, text: str) -> tuple[list, list[Diagnostic]]:
+def read_din_segments(path: str, text: str, as_columns: bool = True) -> tuple[list, list[Diagnostic]]:
     """The program as segments in line order: :class:`PlainRun` stretches and (block, skip) pairs, plus diagnostics.
 
     Per-line work dominates reading a large program, so one regex pass over the
     whole text sorts the lines: plain lines become columns of a
     :class:`PlainRun`; the others (comments, block skip, ``%``, other words,
-    errors) go through :func:`parse_din_line` one by one.
+    errors) go through :func:`parse_din_line` one by one. Without ``as_columns`` every line goes that way.
     """
     lines = program_lines(text)
     flat = text.replace("\r\n", "\n")
     segments: list = []
     diags: list[Diagnostic] = []
-    if flat.count("\n") + (not flat.endswith("\n")) != len(lines):
+    if not as_columns or flat.count("\n") + (not flat.endswith("\n")) != len(lines):
         # lone CR line ends: read line by line
         general = range(1, len(lines) + 1)
         columns = None

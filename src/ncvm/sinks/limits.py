@@ -10,7 +10,9 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-import numpy as np
+from ..lazy import lazy
+
+np = lazy("numpy")
 
 
 @dataclass
@@ -33,8 +35,8 @@ class LimitCheck:
     def __init__(self, axes, recorder):
         self.axes = axes
         self.recorder = recorder
-        self._mins = np.array([ax.min - 1e-9 for ax in axes])
-        self._maxs = np.array([ax.max + 1e-9 for ax in axes])
+        self._mins = [ax.min - 1e-9 for ax in axes]
+        self._maxs = [ax.max + 1e-9 for ax in axes]
         #: axis index -> (move number, axis index, its first violation)
         self._found: dict[int, tuple] = {}
         recorder.watch(self)

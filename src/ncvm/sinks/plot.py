@@ -11,9 +11,11 @@ from __future__ import annotations
 
 from pathlib import Path
 
-import numpy as np
-
+from ..lazy import lazy
 from .toolpath import ARC, FEED, RAPID, ToolpathRecorder
+
+np = lazy("numpy")
+
 
 TOOL_COLOURS = ["tab:blue", "tab:orange", "tab:green", "tab:red", "tab:purple", "tab:brown", "tab:pink", "tab:olive"]
 MAX_POINTS = 200_000  # points drawn, all lines together (and as many plunge marks)

@@ -6,7 +6,7 @@ import re
 
 from ...diagnostics import CompileFailed, RuntimeFault
 from ...nc.axiswords import din_missing_axes
-from ...nc.block import PlainRun, read_din_segments
+from ...nc.block import COLUMNS_FROM, PlainRun, read_din_segments
 from ...nc.canon import Src
 from ...nc.cycles import CannedCycles
 from ...nc.plainrun import execute_columns
@@ -30,7 +30,7 @@ class DinDialect(Dialect):
         return int(100 * hits / len(lines))
 
     def check(self, path, text, machine, all_errors=False):
-        segments, diags = read_din_segments(path, text)
+        segments, diags = read_din_segments(path, text, as_columns=text.count("\n") >= COLUMNS_FROM)
         diags = fold_extensions(diags, program_lines(text)) if diags else diags
         diags += [d for _i, _row, d in din_missing_axes(path, text, segments, machine.axis_names)]
         diags += unsupported(path, segments, program_lines(text), machine.axis_names)
