@@ -76,7 +76,7 @@ begin
   begin
     dir := 1.0 - 2.0 * (row mod 2);
     for k := 1 to 1000 do
-      MLRW(A1 := dir * 0.1, A2 := 0.001);
+      MLRW(A1 := dir * 0.1, A2 := 0.0001);
   end;
 end.
 """
