@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import os
 import shutil
 import subprocess
 import sys
@@ -25,6 +26,7 @@ class Case:
     available: Callable[[], bool] | None = None
     why_unavailable: str = ""
     repeat: int = 0  # 0: the command line's --repeat
+    in_process: bool = True  # the work runs in this process (its CPU time means something)
 
 
 def rs274() -> str | None:
@@ -40,7 +42,7 @@ def rs274_case(ngc: Path, count: int, unit: str, setup=None) -> Case:
                        stderr=subprocess.DEVNULL, stdin=subprocess.DEVNULL)
 
     return Case(run, count, unit, setup=setup, available=lambda: rs274() is not None,
-                why_unavailable="rs274 not installed (Debian package linuxcnc-uspace)")
+                why_unavailable="rs274 not installed (Debian package linuxcnc-uspace)", in_process=False)
 
 
 @dataclass
@@ -65,12 +67,31 @@ print(json.dumps([os.waitstatus_to_exitcode(status), ru.ru_utime + ru.ru_stime, 
 """
 
 
+PYCACHE = WORK / "pycache"
+
+
+def child_env() -> dict[str, str]:
+    """The environment of a measured child: Python's bytecode cache on, as in an installed ncvm (kept under
+    bench/.work, so the source tree gets no __pycache__), whatever the calling shell says."""
+    env = {k: v for k, v in os.environ.items() if k != "PYTHONDONTWRITEBYTECODE"}
+    env["PYTHONPYCACHEPREFIX"] = str(PYCACHE.resolve())
+    return env
+
+
+def warm_bytecode() -> None:
+    """Compile ncvm into the bench's bytecode cache once, so no measured run pays for compiling."""
+    import ncvm
+
+    subprocess.run([sys.executable, "-m", "compileall", "-q", str(Path(ncvm.__file__).parent)], check=True,
+                   env=child_env(), stdout=subprocess.DEVNULL)
+
+
 def child(argv: list[str], stdout: Path | None = None) -> Usage:
     """Run ``argv`` to its end (stdout to the file ``stdout`` or discarded) and measure that one child with
     ``os.wait4``, its own rusage (RUSAGE_CHILDREN would mix in every earlier child's peak)."""
     argv = [shutil.which(argv[0]) or argv[0], *map(str, argv[1:])]
     got = subprocess.run([sys.executable, "-S", "-I", "-c", LAUNCHER, str(stdout or ""), *argv],
-                         stdin=subprocess.DEVNULL, capture_output=True, text=True)
+                         stdin=subprocess.DEVNULL, capture_output=True, text=True, env=child_env())
     if got.returncode != 0 or not got.stdout:
         raise RuntimeError(f"launcher for {' '.join(argv)} failed: {got.stderr[-2000:]}")
     code, cpu, wall, maxrss = json.loads(got.stdout.splitlines()[-1])

@@ -70,6 +70,8 @@ def runner(dialect: str):
 
 
 def cases() -> dict[str, Case]:
-    out = {f"{d}_1m_moves_memory": Case(runner(d), MOVES, "G1/s", setup=write_programs, repeat=1) for d in ("cpl", "din")}
-    out["cpl_1m_output_lines_memory"] = Case(runner("cpl_output"), MOVES, "lines/s", setup=write_programs, repeat=1)
+    out = {f"{d}_1m_moves_memory": Case(runner(d), MOVES, "G1/s", setup=write_programs, repeat=1, in_process=False)
+           for d in ("cpl", "din")}
+    out["cpl_1m_output_lines_memory"] = Case(runner("cpl_output"), MOVES, "lines/s", setup=write_programs, repeat=1,
+                                             in_process=False)
     return out

@@ -22,7 +22,7 @@ import subprocess
 import sys
 from pathlib import Path
 
-from benchlib import NCVM, PEERS, WORK, Case, child, rs274, rs274_argv
+from benchlib import NCVM, PEERS, WORK, Case, child, rs274, rs274_argv, warm_bytecode
 
 LOOP = 300_000
 MOVES = 2_000_000
@@ -90,6 +90,7 @@ def _write(name: str, text: str) -> None:
 
 def write_programs() -> None:
     WORK.mkdir(exist_ok=True)
+    warm_bytecode()
     _write("real_loop_300k.cpl", CPL_LOOP.format(n=LOOP, kind="REAL", s=""))
     _write("double_loop_300k.cpl", CPL_LOOP.format(n=LOOP, kind="DOUBLE", s="!"))
     _write("loop_arith_300k.ngc", (PEERS / "loop_arith.ngc").read_text().replace("100000", str(LOOP))
