@@ -39,12 +39,22 @@ class PlotPoints:
         #: per style, the points where each drawn axis reaches its lowest and highest value so far
         self.extremes: dict[tuple[bool, int], np.ndarray] = {}
         self._last_key = None
+        self.moves = 0  # moves seen, drawn or thinned away
         recorder.watch(self)
+
+    @property
+    def thinned(self) -> bool:
+        return bool(self._passes)
+
+    def note(self) -> str:
+        """What the legend says of a thinned drawing: not every point of the toolpath is drawn."""
+        return f"{self.moves:,} moves, thinned to {self._count:,} points (extents exact)"
 
     def observe(self, rec: ToolpathRecorder, lo: int, hi: int) -> None:
         if not self.names:
             self.names = rec.axis_names
             self.idx = _drawn_axes(self.names)
+        self.moves += hi - lo
         arr = rec.window()
         idx = list(self.idx)
         kind, tool = arr["kind"][lo:hi], arr["tool"][lo:hi]
@@ -229,6 +239,8 @@ def draw(points: PlotPoints, path: str | Path, title: str = "") -> None:
     ax2.set_aspect("equal", adjustable="datalim")
     ax2.grid(True, linewidth=0.3)
     ax2.set_title(f"{names[x]}{names[y]} view")
+    if points.thinned:  # a legend entry without a line: the drawing is decimated
+        ax2.plot([], [], " ", label=points.note())
     if lines:
         ax2.legend(loc="best", fontsize=7)
     ax3.set_xlabel(names[x])
