@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import re
 import tomllib
-from importlib import resources
 from pathlib import Path
 from typing import Any, Mapping, Sequence, TypeVar
 
@@ -22,7 +21,8 @@ from .spec import MACHINE_FILE, SCENARIO_FILE
 
 
 def default_machine_text() -> str:
-    return resources.files("ncvm.machine").joinpath("default_machine.toml").read_text()
+    # read beside this module: importlib.resources would import zipfile and more on every run (issue 18)
+    return (Path(__file__).parent / "default_machine.toml").read_text(encoding="utf-8")
 
 
 def load_machine(path: str | Path | None = None, base_dir: Path | None = None) -> Machine:
