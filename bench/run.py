@@ -12,6 +12,7 @@ memory and the ratio to rs274 on a second line.
 from __future__ import annotations
 
 import argparse
+import contextlib
 import importlib.util
 import json
 import statistics
@@ -82,8 +83,21 @@ def main() -> int:
     ap.add_argument("--repeat", type=int, default=5)
     ap.add_argument("--only", default="")
     ap.add_argument("--json", dest="json_file", nargs="?", const="-",
-                    help="write the figures as JSON to FILE (without FILE: to stdout, after the table)")
+                    help="write the figures as JSON to FILE (without FILE: to stdout, the table to stderr)")
     args = ap.parse_args()
+    if args.json_file == "-":  # stdout is the JSON document alone: the table goes to stderr
+        with contextlib.redirect_stdout(sys.stderr):
+            results = table(args)
+        print(json.dumps({"cases": results}, indent=2))
+        return 0
+    results = table(args)
+    if args.json_file:
+        Path(args.json_file).write_text(json.dumps({"cases": results}, indent=2))
+    return 0
+
+
+def table(args) -> dict:
+    """Measure the chosen cases, printing a row (and a line of figures) each; returns the figures."""
     results = {}
     print(f"{'case':28} {'min s':>10} {'median s':>10} {'rate':>14}  unit")
     for name, case in discover().items():
@@ -99,11 +113,7 @@ def main() -> int:
             print(details(r), flush=True)
         elif r.get("cpu_rate"):
             print(f"  cpu {r['cpu_median_s']:.4f} s median, {r['cpu_rate']:,.0f} {r['unit']} by CPU time", flush=True)
-    if args.json_file == "-":
-        print(json.dumps({"cases": results}, indent=2))
-    elif args.json_file:
-        Path(args.json_file).write_text(json.dumps({"cases": results}, indent=2))
-    return 0
+    return results
 
 
 if __name__ == "__main__":
