@@ -1112,7 +1112,7 @@ def magnitude(e) -> float:
     (their stores keep them in range), sums, products, quotients by a constant and a few built-ins. A finite
     bound below the DOUBLE range proves the computed value is neither infinite nor NaN."""
     if isinstance(e, A.Num):
-        return abs(float(e.value))
+        return math.inf if abs(e.value) > 1e300 else abs(float(e.value))  # an integer beyond any float: unbounded
     if isinstance(e, A.Var):
         return _HOLDS.get(e.var.type, math.inf) if e.var.cls in ("L", "G") else math.inf
     if isinstance(e, A.Unary) and e.op in ("-", "+"):
