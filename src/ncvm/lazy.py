@@ -18,7 +18,10 @@ class LazyModule:
         self.__dict__["_lazy_name"] = name
 
     def __getattr__(self, attr: str):
-        module = importlib.import_module(self.__dict__["_lazy_name"])
+        from .runtime.memory import outside_limit  # the import is the library's memory, not the program's
+
+        with outside_limit():
+            module = importlib.import_module(self.__dict__["_lazy_name"])
         self.__dict__.update(vars(module))
         return getattr(module, attr)
 
