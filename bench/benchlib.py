@@ -90,11 +90,14 @@ def child(argv: list[str], stdout: Path | None = None) -> Usage:
     """Run ``argv`` to its end (stdout to the file ``stdout`` or discarded) and measure that one child with
     ``os.wait4``, its own rusage (RUSAGE_CHILDREN would mix in every earlier child's peak)."""
     argv = [shutil.which(argv[0]) or argv[0], *map(str, argv[1:])]
-    got = subprocess.run([sys.executable, "-S", "-I", "-c", LAUNCHER, str(stdout or ""), *argv],
-                         stdin=subprocess.DEVNULL, capture_output=True, text=True, env=child_env())
-    if got.returncode != 0 or not got.stdout:
-        raise RuntimeError(f"launcher for {' '.join(argv)} failed: {got.stderr[-2000:]}")
-    code, cpu, wall, maxrss = json.loads(got.stdout.splitlines()[-1])
+    for _attempt in range(3):  # rs274 dies of SIGBUS now and then while another rs274 runs on the machine
+        got = subprocess.run([sys.executable, "-S", "-I", "-c", LAUNCHER, str(stdout or ""), *argv],
+                             stdin=subprocess.DEVNULL, capture_output=True, text=True, env=child_env())
+        if got.returncode != 0 or not got.stdout:
+            raise RuntimeError(f"launcher for {' '.join(argv)} failed: {got.stderr[-2000:]}")
+        code, cpu, wall, maxrss = json.loads(got.stdout.splitlines()[-1])
+        if code >= 0:
+            break
     if code != 0:
         raise RuntimeError(f"{' '.join(argv)} exited {code}: {got.stderr[-2000:]}")
     return Usage(cpu, wall, maxrss / 1024)
