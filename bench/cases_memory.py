@@ -16,15 +16,17 @@ import sys
 from benchlib import WORK, Case
 
 MOVES = 1_000_000
-CPL = f"""\
+#: n computed G1 moves in a CPL loop, a raster of 100 moves a row (cases_process uses it too)
+CPL_MOVES = """\
 N1 G71 G90 G17 F6000
 10 I% = 0
-20 WHILE I% < {MOVES} DO
+20 WHILE I% < {n} DO
 G1 X[(I% - INT(I% / 100) * 100) * 0.5] Y[INT(I% / 100) * 0.01]
 30 I% = I% + 1
 40 END
 M30
 """
+CPL = CPL_MOVES.format(n=MOVES)
 OUTPUT = f"""\
 10 I% = 0
 20 WHILE I% < {MOVES} DO

@@ -23,6 +23,7 @@ import sys
 from pathlib import Path
 
 from benchlib import NCVM, PEERS, WORK, Case, child, rs274, rs274_argv, warm_bytecode
+from cases_memory import CPL_MOVES
 
 LOOP = 300_000
 MOVES = 2_000_000
@@ -41,17 +42,6 @@ N1 G71 G90 G17
 70 F{s} = INT(X{s} * 10) / 3
 80 I% = I% + 1
 90 END
-M30
-"""
-
-CPL_MOVES = """\
-(2,000,000 computed G1 moves: a raster of 100 moves a row)
-N1 G71 G90 G17 F6000
-10 I% = 0
-20 WHILE I% < {n} DO
-G1 X[(I% - INT(I% / 100) * 100) * 0.5] Y[INT(I% / 100) * 0.01]
-30 I% = I% + 1
-40 END
 M30
 """
 
