@@ -2,6 +2,8 @@
 
 Each CPL program does the work of its LinuxCNC peer in bench/peers: the same loop counts,
 the same arithmetic (MOD written as I% - INT(I%/7)*7, CPL has no MOD), the same moves and calls.
+The ``_real`` twins use plain REAL (binary32) variables where the originals use DOUBLE (``!``): most CPL
+programs are written that way, and every REAL store rounds to binary32.
 """
 
 from __future__ import annotations
@@ -87,10 +89,16 @@ M30
 FOLDER = WORK / "cpl"
 
 
+def real_twin(text: str) -> str:
+    """The program with REAL variables for its DOUBLE ones (X! -> X)."""
+    return text.replace("!", "").replace(")\n", ", REAL variables)\n", 1)
+
+
 def write_programs() -> None:
     FOLDER.mkdir(parents=True, exist_ok=True)
     for name, text in (("loop_arith.cpl", LOOP_ARITH), ("loop_motion.cpl", LOOP_MOTION), ("DRILL", DRILL),
-                       ("subcalls.cpl", SUBCALLS)):
+                       ("subcalls.cpl", SUBCALLS), ("loop_arith_real.cpl", real_twin(LOOP_ARITH)),
+                       ("loop_motion_real.cpl", real_twin(LOOP_MOTION))):
         p = FOLDER / name
         if not p.exists() or p.read_text() != text:
             p.write_text(text)
@@ -108,6 +116,8 @@ def cases() -> dict[str, Case]:
     return {
         "cpl_loop_arith": Case(runner("loop_arith.cpl"), 100_000, "iterations/s", setup=write_programs),
         "cpl_loop_motion": Case(runner("loop_motion.cpl"), 100_000, "G1/s", setup=write_programs),
+        "cpl_loop_arith_real": Case(runner("loop_arith_real.cpl"), 100_000, "iterations/s", setup=write_programs),
+        "cpl_loop_motion_real": Case(runner("loop_motion_real.cpl"), 100_000, "G1/s", setup=write_programs),
         "cpl_subcalls": Case(runner("subcalls.cpl"), 20_000, "calls/s", setup=write_programs),
         "rs274_loop_arith": rs274_case(PEERS / "loop_arith.ngc", 100_000, "iterations/s"),
         "rs274_loop_motion": rs274_case(PEERS / "loop_motion.ngc", 100_000, "G1/s"),

@@ -16,16 +16,14 @@ from pathlib import Path
 
 import click
 
-from . import __version__, api
+from . import __version__
 from .diagnostics import CompileFailed, Diagnostic, Span, UsageError, render_all
 from .dialects import REGISTRY
-from .machine.docgen import json_text
-from .machine.docgen import markdown as tables
 from .outpaths import PLOT_SUFFIXES, SCREEN_PICTURE, Output, OutputError, check_outputs
-from .runtime.memory import parse_size
-from .runtime.session import RunOptions
-from .sinks.plotview import plot_run
 from .timefmt import hms as _hms
+
+# The API, the machine and the sinks are imported by the commands that use them (issue 18, start-up):
+# ``ncvm --version`` loads click and this module only, ``ncvm check`` no numpy.
 
 EXIT_OK, EXIT_FAULT, EXIT_USAGE, EXIT_INTERNAL = 0, 1, 2, 70
 DEFAULT_STATE = ".ncvm"
@@ -220,6 +218,10 @@ def run(programs, dialect, machine, state_dir, as_json, trace, gcode, plot, plot
 
         run_batch_command(programs, dialect, machine, state_dir, as_json, max_steps, max_memory, jobs, cluster,
                           report, shared_state, [k for k, v in single.items() if v is not None])
+    from . import api
+    from .runtime.memory import parse_size
+    from .runtime.session import RunOptions
+
     program = programs[0]
     _check_program(program)
     if not state_dir.strip():  # an unset variable: the store would land in the current directory
@@ -252,6 +254,8 @@ def run(programs, dialect, machine, state_dir, as_json, trace, gcode, plot, plot
         click.echo(f"ncvm: warning: dialect '{result['dialect']}' has no editor dialog; --editor-block ignored",
                    err=True)
     if plot:
+        from .sinks.plotview import plot_run
+
         try:
             plot_run(plot, program, result, session)
         except OSError as e:
@@ -352,6 +356,7 @@ def check(programs, dialect, machine, as_json, all_errors):
     is a program), so a whole archive is checked at once, sub-programs too; each program uses the nearest
     machine.toml upwards (up to the folder named) unless --machine is given.
     """
+    from . import api
     from .archive.discover import discover, machine_of
     from .archive.report import machine_lines
 
@@ -401,6 +406,8 @@ def compile_cmd(source, out, xref, force, dialect, machine):
 
     Without --machine the machine.toml in the source's folder is used (named on stderr), as by check and run.
     """
+    from . import api
+
     _check_program(source)
     if xref == "":
         xref = str(Path(source).with_suffix(".lst"))  # the listing has the source's file name (CL 800 L361)
@@ -421,6 +428,9 @@ def compile_cmd(source, out, xref, force, dialect, machine):
 @click.option("--markdown", is_flag=True, help="The reference tables of docs/machine-file.md instead.")
 def machine_schema(markdown):
     """Print the JSON Schema of machine files (for editors)."""
+    from .machine.docgen import json_text
+    from .machine.docgen import markdown as tables
+
     click.echo(tables() if markdown else json_text(), nl=False)
 
 

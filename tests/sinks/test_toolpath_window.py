@@ -172,3 +172,20 @@ def test_a_thinned_curve_stays_close_to_the_path():
     turn = np.round(((radius - 10) / pitch - angle) / (2 * math.pi))
     off = np.abs(radius - (10 + pitch * (angle + 2 * math.pi * turn)))
     assert np.percentile(off, 99) < 0.1, np.percentile(off, 99)
+
+
+def test_a_thinned_plot_says_so_in_its_legend(small_window, tmp_path):
+    import matplotlib
+
+    rec = ToolpathRecorder(keep=False)
+    thinned, whole = PlotPoints(rec, max_points=2000), PlotPoints(rec, max_points=10**9)
+    record(rec, moves(30_000))
+    rec.summary()
+    assert thinned.thinned and not whole.thinned
+    assert thinned.moves == whole.moves == 30_000
+    assert thinned.note().startswith("30,000 moves, thinned to ")
+    with matplotlib.rc_context({"svg.fonttype": "none"}):  # text as text, not as outlines
+        draw(thinned, tmp_path / "thin.svg")
+        draw(whole, tmp_path / "whole.svg")
+    assert "30,000 moves, thinned to" in (tmp_path / "thin.svg").read_text()
+    assert "thinned" not in (tmp_path / "whole.svg").read_text()

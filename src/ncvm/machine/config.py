@@ -9,20 +9,19 @@ from __future__ import annotations
 
 import re
 import tomllib
-from importlib import resources
 from pathlib import Path
 from typing import Any, Mapping, Sequence, TypeVar
 
 from ..diagnostics import UsageError
 from .model import Axis, Machine, MotionData, PlcImage, SimClock, Tool
-from .scenario import Event, from_tables
 from .schema import MISSING, NO_AXES, Ctx, SchemaError, validate
 from .sections import DIALECT_SECTIONS, SECTIONS
 from .spec import MACHINE_FILE, SCENARIO_FILE
 
 
 def default_machine_text() -> str:
-    return resources.files("ncvm.machine").joinpath("default_machine.toml").read_text()
+    # read beside this module: importlib.resources would import zipfile and more on every run (issue 18)
+    return (Path(__file__).parent / "default_machine.toml").read_text(encoding="utf-8")
 
 
 def load_machine(path: str | Path | None = None, base_dir: Path | None = None) -> Machine:
@@ -117,7 +116,10 @@ def machine_from_dict(data: dict, where: str = "<dict>", folder: Path = Path("."
     paths = data.get("paths", {})
     m.program_path = [(folder / p) for p in paths.get("program_path", ["."])]
     m.file_root = folder / paths.get("file_root", "files")
-    m.scenario = from_tables(data.get("scenario", []))
+    if data.get("scenario"):  # the event classes are imported only for a machine that has events
+        from .scenario import from_tables
+
+        m.scenario = from_tables(data["scenario"])
     m.sections = {sec.name: data[sec.name] for sec in DIALECT_SECTIONS if sec.name in data}
     return m
 
@@ -142,10 +144,12 @@ def dialect_options(cls: type[Options], sections: Mapping[str, Any], dialect: st
     return cls(**section)
 
 
-def load_scenario(path: str | Path, axis_names: tuple[str, ...] = ()) -> list[Event]:
+def load_scenario(path: str | Path, axis_names: tuple[str, ...] = ()) -> list:
     """A scenario file (``--scenario``): ``[[scenario]]`` tables as in a machine file, nothing else.
     Events that name axes (probe, fixed_stop) are checked against ``axis_names``."""
     p = Path(path)
     data = _parse(p, "scenario file")
     _checked(SCENARIO_FILE, data, str(p), Ctx(tuple(axis_names)), "scenario file")
+    from .scenario import from_tables
+
     return from_tables(data.get("scenario", []))

@@ -11,10 +11,12 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from .files import find_in
-from .scenario import Event
+
+if TYPE_CHECKING:  # the events are read only when a machine file or --scenario has some (start-up, issue 18)
+    from .scenario import Event
 
 
 @dataclass(slots=True)

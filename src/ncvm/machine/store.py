@@ -15,12 +15,14 @@ full disk) becomes a :class:`StateError` naming the file and what to do.
 from __future__ import annotations
 
 import json
-import sqlite3
 from contextlib import contextmanager
 from pathlib import Path
 from typing import Any, Iterator
 
+from ..lazy import lazy
 from .state import STORE_NAME, StateError, disk_full, not_a_file, store_files
+
+sqlite3 = lazy("sqlite3")  # a check opens no store
 
 SCHEMA = """
 CREATE TABLE IF NOT EXISTS permanent (

@@ -10,7 +10,10 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-import numpy as np
+from ..lazy import lazy
+
+np = lazy("numpy")
+
 
 TWO_PI = 2.0 * math.pi
 #: a full circle is programmed by an end point equal to the start point (within this, mm)

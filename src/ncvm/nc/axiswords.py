@@ -8,11 +8,13 @@ block once, where the block is read or compiled, never per move.
 
 from __future__ import annotations
 
-import numpy as np
-
 from ..diagnostics import Diagnostic, Span
+from ..lazy import lazy
 from ..source import lines as program_lines
 from .block import PLAIN_WORDS, PlainRun, word_column
+
+np = lazy("numpy")
+
 
 #: DIN 66025 axis addresses: X Y Z, the parallel axes U V W, the rotary axes A B C
 AXIS_LETTERS = frozenset("XYZUVWABC")

@@ -15,12 +15,13 @@ from dataclasses import dataclass
 from operator import itemgetter
 from typing import NamedTuple
 
-import numpy as np
-
 from ..diagnostics import Diagnostic, Span
+from ..lazy import lazy
 from ..source import lines as program_lines
 from ..source import too_many_decades, word_number
 from .canon import Src
+
+np = lazy("numpy")
 
 
 class Block:
@@ -226,8 +227,9 @@ class PlainRun:
     lines: np.ndarray  # int, physical line of each block
     g: np.ndarray  # int, motion G code 0..3 or -1
     words: dict  # address -> float column
-    source: list | None = None  # the program's lines, when the run was read from text
+    source: list | None = None  # the lines of the stretch it was read from, when it was read from text
     origin: list | None = None  # the plain rows (or Blocks) the run was made of, when it was made of them
+    source_first: int = 0  # the program lines before source[0]
 
     def __len__(self) -> int:
         return len(self.lines)
@@ -237,7 +239,7 @@ class PlainRun:
         if self.origin is not None:
             return as_block(self.origin[i])
         line = int(self.lines[i])
-        return parse_din_line(self.source[line - 1], Src(self.file, line))
+        return parse_din_line(self.source[line - 1 - self.source_first], Src(self.file, line))
 
     def blocks(self):
         return (self.block(i) for i in range(len(self)))
@@ -245,7 +247,7 @@ class PlainRun:
     def head(self, n: int) -> "PlainRun":
         """The first ``n`` blocks as a run of their own."""
         return PlainRun(self.file, self.lines[:n], self.g[:n], {a: col[:n] for a, col in self.words.items()},
-                        self.source, self.origin[:n] if self.origin is not None else None)
+                        self.source, self.origin[:n] if self.origin is not None else None, self.source_first)
 
 
 #: the addresses of a plain block besides N and its motion G code, in the order CAM output writes them
@@ -261,39 +263,63 @@ _PLAIN_LINE = re.compile(r"^[ \t]*+(?:N\d+[ \t]*+)?(?=[GXYZIJKF])(?:G0?([0-3])(?
 #: motion G code as the reader finds it -> its number (-1: the block has none)
 _MOTION = {"": -1, "0": 0, "1": 1, "2": 2, "3": 3}
 _NAN = math.nan
+#: characters of a program read in one regex pass (about 8,000 lines of CAM output)
+CHUNK_CHARS = 1 << 18
+#: a check reads programs of fewer lines line by line: columns would cost more than they save (numpy's
+#: import alone is ~0.1 s, issue 18)
+COLUMNS_FROM = 200
 
 
-def read_din_segments(path: str, text: str) -> tuple[list, list[Diagnostic]]:
-    """The program as segments in line order: :class:`PlainRun` stretches and (block, skip) pairs, plus diagnostics.
-
-    Per-line work dominates reading a large program, so one regex pass over the
-    whole text sorts the lines: plain lines become columns of a
-    :class:`PlainRun`; the others (comments, block skip, ``%``, other words,
-    errors) go through :func:`parse_din_line` one by one.
-    """
-    lines = program_lines(text)
-    flat = text.replace("\r\n", "\n")
+def read_din_segments(path: str, text: str, as_columns: bool = True) -> tuple[list, list[Diagnostic]]:
+    """The program as segments in line order: :class:`PlainRun` stretches and (block, skip) pairs, plus diagnostics
+    (all the stretches of :func:`read_din_chunks` at once)."""
     segments: list = []
     diags: list[Diagnostic] = []
-    if flat.count("\n") + (not flat.endswith("\n")) != len(lines):
-        # lone CR line ends: read line by line
-        general = range(1, len(lines) + 1)
-        columns = None
-    else:
-        matches = _PLAIN_LINE.findall(flat if flat.isupper() else flat.upper())[:len(lines)]
-        if not matches:
-            return segments, diags
-        columns = list(zip(*matches))
-        general = [lineno for lineno, rest in enumerate(columns[-1], 1) if rest]
-    start = 0
-    for lineno in general:
-        if lineno - 1 > start:
-            _add_run(segments, path, lines, columns, start, lineno - 1)
-        start = lineno
-        _read_general(segments, diags, path, lineno, lines[lineno - 1])
-    if len(lines) > start:
-        _add_run(segments, path, lines, columns, start, len(lines))
+    for more, found in read_din_chunks(path, text, as_columns):
+        segments += more
+        diags += found
     return segments, diags
+
+
+def read_din_chunks(path: str, text: str, as_columns: bool = True):
+    """The program a stretch of about :data:`CHUNK_CHARS` characters at a time: (segments, diagnostics) per
+    stretch, in line order, line numbers counted from the program's start.
+
+    Per-line work dominates reading a large program, so one regex pass over a
+    stretch sorts its lines: plain lines become columns of a
+    :class:`PlainRun`; the others (comments, block skip, ``%``, other words,
+    errors) go through :func:`parse_din_line` one by one. Without ``as_columns`` every line goes that way.
+    A stretch at a time, the strings the pass finds never take more memory than one stretch's worth, and a
+    run can execute a program of millions of lines without holding all of it (issue 18: a 500,000-line
+    file took 282 MB read in one pass).
+    """
+    flat = text.replace("\r\n", "\n")
+    if not as_columns or "\r" in flat:  # lone CR line ends: read line by line
+        segments: list = []
+        diags: list[Diagnostic] = []
+        for lineno, line in enumerate(program_lines(text), 1):
+            _read_general(segments, diags, path, lineno, line)
+        yield segments, diags
+        return
+    first = pos = 0  # lines before the stretch, and where it starts
+    while pos < len(flat):
+        end = flat.find("\n", pos + CHUNK_CHARS) + 1 or len(flat)
+        chunk = flat[pos:end]
+        lines = chunk.split("\n")
+        if chunk.endswith("\n"):
+            lines.pop()
+        columns = list(zip(*_PLAIN_LINE.findall(chunk if chunk.isupper() else chunk.upper())[:len(lines)]))
+        segments, diags = [], []
+        start = 0
+        for k in [k for k, rest in enumerate(columns[-1], 1) if rest]:
+            if k - 1 > start:
+                _add_run(segments, path, lines, columns, start, k - 1, first)
+            start = k
+            _read_general(segments, diags, path, first + k, lines[k - 1])
+        if len(lines) > start:
+            _add_run(segments, path, lines, columns, start, len(lines), first)
+        yield segments, diags
+        first, pos = first + len(lines), end
 
 
 def _read_general(segments, diags, path: str, lineno: int, line: str) -> None:
@@ -309,11 +335,13 @@ def _read_general(segments, diags, path: str, lineno: int, line: str) -> None:
         segments.append((blk, skip))
 
 
-def _add_run(segments, path: str, lines: list, columns, lo: int, hi: int) -> None:
-    """Lines lo+1..hi, all plain, as a PlainRun."""
+def _add_run(segments, path: str, lines: list, columns, lo: int, hi: int, first: int) -> None:
+    """Rows lo..hi-1 of a stretch's ``columns`` and ``lines`` (program lines first+lo+1..first+hi), all plain,
+    as a PlainRun."""
     words = {a: _floats(col[lo:hi]) for a, col in zip(PLAIN_WORDS, columns[1:])}
     g = np.array(list(map(_MOTION.__getitem__, columns[0][lo:hi])), dtype=np.int64)
-    segments.append(PlainRun(path, np.arange(lo + 1, hi + 1), g, words, source=lines))
+    segments.append(PlainRun(path, np.arange(first + lo + 1, first + hi + 1), g, words, source=lines,
+                             source_first=first))
 
 
 def _floats(cells: tuple) -> np.ndarray:

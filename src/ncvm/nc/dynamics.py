@@ -18,7 +18,9 @@ from __future__ import annotations
 import math
 from operator import sub
 
-import numpy as np
+from ..lazy import lazy
+
+np = lazy("numpy")
 
 
 class AxisDynamics:

@@ -24,14 +24,16 @@ import math
 from itertools import compress, groupby, repeat
 from operator import attrgetter, is_not
 
-import numpy as np
-
+from ..lazy import lazy
 from . import arcs
 from .block import PLAIN_WORDS, ROW_WORD, Block, PlainRun, block_row, row_g, row_line, row_src
 from .canon import BatchArcs, MoveBatch
 from .dynamics import arc_limits_columns, lengths_columns, straight_limits_columns
 from .kernel import PLANES
 from .planner import LOOKAHEAD, POSITIONING, arc_tangents_columns
+
+np = lazy("numpy")
+
 
 RAPID, FEED, ARC = 0, 1, 2
 

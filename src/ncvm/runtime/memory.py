@@ -56,9 +56,14 @@ def _address_space() -> int:
         return int(f.read().split()[0]) * os.sysconf("SC_PAGE_SIZE")
 
 
+#: the limits a run's guard replaced, while one is set (outside_limit puts them back for a moment)
+_outer: tuple[int, int] | None = None
+
+
 @contextmanager
 def memory_limit(allowance: int):
     """Let the code inside grow the process by at most ``allowance`` bytes (0: no limit)."""
+    global _outer
     if not allowance or resource is None or not os.path.exists("/proc/self/statm"):
         yield
         return
@@ -68,10 +73,34 @@ def memory_limit(allowance: int):
         if bound != resource.RLIM_INFINITY:
             limit = min(limit, bound)
     resource.setrlimit(resource.RLIMIT_AS, (limit, hard))
+    _outer = (soft, hard)
     try:
         yield
     finally:
+        _outer = None
         resource.setrlimit(resource.RLIMIT_AS, (soft, hard))
+
+
+@contextmanager
+def outside_limit():
+    """Code that is not the program's: a library a run imports at its first use (ncvm.lazy) maps its shared
+    objects and starts its threads without the run's limit, and the limit moves up by what that took, so
+    the program keeps its whole allowance."""
+    if _outer is None:
+        yield
+        return
+    limit, hard = resource.getrlimit(resource.RLIMIT_AS)
+    before = _address_space()
+    resource.setrlimit(resource.RLIMIT_AS, _outer)
+    try:
+        yield
+    finally:
+        grown = max(0, _address_space() - before)
+        if limit != resource.RLIM_INFINITY:
+            limit += grown
+            if _outer[0] != resource.RLIM_INFINITY:
+                limit = min(limit, _outer[0])
+        resource.setrlimit(resource.RLIMIT_AS, (limit, hard))
 
 
 def out_of_memory(allowance: int) -> Diagnostic:

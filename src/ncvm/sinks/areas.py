@@ -18,10 +18,12 @@ import math
 from dataclasses import dataclass
 from typing import Sequence
 
-import numpy as np
-
+from ..lazy import lazy
 from ..nc import arcs
 from ..runtime.checks import DEAD, WORK, Area
+
+np = lazy("numpy")
+
 
 TOL = 1e-6  # mm: touching an edge is neither entering a dead range nor leaving a work area
 

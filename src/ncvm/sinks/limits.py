@@ -10,7 +10,9 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-import numpy as np
+from ..lazy import lazy
+
+np = lazy("numpy")
 
 
 @dataclass
@@ -37,8 +39,8 @@ class LimitCheck:
     def __init__(self, axes, recorder):
         self.axes = axes
         self.recorder = recorder
-        self._mins = np.array([ax.min - 1e-9 for ax in axes])
-        self._maxs = np.array([ax.max + 1e-9 for ax in axes])
+        self._mins = [ax.min - 1e-9 for ax in axes]
+        self._maxs = [ax.max + 1e-9 for ax in axes]
         #: axis index -> (move number, axis index, its first violation)
         self._found: dict[int, tuple] = {}
         recorder.watch(self)
@@ -64,7 +66,7 @@ class LimitCheck:
             point = rec.window()["end"][lo + k].copy()
             point[i] = value
             self._found[i] = (rec.base + lo + k, i, LimitViolation(ax.name, value, limit, src.file, src.line,
-                                                                  tuple(point.tolist()), rec.base + lo + k))
+                                                                  point=tuple(point.tolist()), move=rec.base + lo + k))
 
     @property
     def violations(self) -> dict[str, LimitViolation]:

@@ -21,10 +21,11 @@ from __future__ import annotations
 
 from pathlib import Path
 
-import numpy as np
-
+from ..lazy import lazy
 from ..nc.canon import CanonSink
 from .toolpath import ARC, FEED, RAPID, ToolpathRecorder
+
+np = lazy("numpy")
 
 MAX_POINTS = 200_000  # points drawn, all lines together (and as many plunge marks)
 #: thinning keeps at most 8 of each BUCKET consecutive points of a line (first, last, the extremes of X, Y, Z): on
@@ -60,6 +61,7 @@ class PlotPoints(CanonSink):
         #: per style, the points where each drawn axis reaches its lowest and highest value so far
         self.extremes: dict[tuple[bool, int], np.ndarray] = {}
         self._last_key = None
+        self.moves = 0  # moves seen, drawn or thinned away
         recorder.watch(self)
 
     # -- canon calls --------------------------------------------------------
@@ -117,11 +119,21 @@ class PlotPoints(CanonSink):
         starts = np.array([m[0] for m in marks])
         return np.maximum(np.searchsorted(starts, np.arange(first, first + n), side="right") - 1, 0)
 
+    @property
+    def thinned(self) -> bool:
+        return bool(self._passes)
+
+    def note(self) -> str:
+        """What the legend says of a thinned drawing: not every point of the toolpath is drawn."""
+        return f"{self.moves:,} moves, thinned to {self._count:,} points (extents exact)"
+
+
     # -- moves ----------------------------------------------------------------
     def observe(self, rec: ToolpathRecorder, lo: int, hi: int) -> None:
         if not self.names:
             self.names = rec.axis_names
             self.idx = _drawn_axes(self.names)
+        self.moves += hi - lo
         arr = rec.window()
         idx = list(self.idx)
         kind, tool = arr["kind"][lo:hi], arr["tool"][lo:hi]

@@ -243,4 +243,6 @@ def _notes(points: PlotPoints, frame: str) -> list[str]:
     if points.approach and points.lines:
         n = points.approach
         notes.append(f"{n} rapid{'s' if n != 1 else ''} from the start\nposition (where the run began):\nnot drawn")
+    if points.thinned:  # the drawing is decimated: not every point of the toolpath is drawn
+        notes.append(points.note())
     return notes

@@ -15,10 +15,12 @@ from bisect import bisect_right
 from dataclasses import dataclass
 from itertools import chain
 
-import numpy as np
-
+from ..lazy import lazy
 from ..nc import arcs
 from ..nc.canon import ArcSpec, CanonSink, MoveBatch, Src
+
+np = lazy("numpy")
+
 
 RAPID, FEED, ARC = 0, 1, 2
 #: moves held before the window is settled and forgotten (without keep)

@@ -357,6 +357,8 @@ class Gen:
                 # INTEGER arithmetic: check the 32-bit range inline (cheaper than a call)
                 self.emit(f"{name} = {code}", line)
                 self.emit(f"if not -2147483648 <= {name} <= 2147483647: {name} = _toi({name})", line)
+            elif v.type == "R" and ty in NUMERIC and not isinstance(e, (A.Var, A.Num)):
+                self.real_store(name, e, _int32(e, code, ty), line)
             elif v.type == "D" and ty in ("R", "D") and not isinstance(e, (A.Var, A.Num)):
                 # computed DOUBLE: x - x is 0.0 unless x is infinity or NaN (the result left the range)
                 self.emit(f"{name} = {code}", line)
@@ -370,6 +372,18 @@ class Gen:
             self.emit(f"_setf({row}, {self.convert('S', e, code, ty)})", line)
             return
         self.emit(f"{name}{''.join(f'[{i}]' for i in idx)} = {self.convert(v.type, e, code, ty)}", line)
+
+    def real_store(self, name: str, e, code: str, line: int) -> None:
+        """A computed value stored into a REAL local, rounded to binary32 inline (digest §4.2): one struct
+        pack/unpack, no call. What packing refuses (a finite value beyond +/-3.4e38, NUL) goes to ``_f32``,
+        which raises the error it always raised; infinity or NaN packs without complaint, so it is tested first
+        unless :func:`magnitude` proves the expression finite. The variable keeps its old value when the store
+        fails."""
+        self.emit(f"_r32 = {code}", line)
+        if not magnitude(e) < 1e300:
+            self.emit("if _r32 - _r32: _f32(_r32)", line)
+        self.emit(f"try: {name} = _up32(_pk32(_r32))[0]", line)
+        self.emit(f"except Exception: {name} = _f32(_r32)", line)
 
     def assign_global(self, s: A.Assign, code: str, ty: str) -> None:
         tv, e, line = s.target, s.expr, s.line
@@ -1088,6 +1102,35 @@ def _maybe_nul(e) -> bool:
     return isinstance(e, (A.Var, A.Func))
 
 
+#: the bound of |value| a variable of each type holds: INTEGER 32 bits, REAL binary32 (FLT_MAX), BOOLEAN
+_HOLDS = {"I": 2147483648.0, "R": 3.4028234663852886e38, "B": 1.0}
+#: bounds of the built-ins written inline, from the bound of their argument
+_FUNC_BOUND = {"ABS": lambda b: b, "SIN": lambda b: 1.0, "COS": lambda b: 1.0, "SQRT": math.sqrt,
+               "INT": lambda b: 2147483648.0}
+
+
+def magnitude(e) -> float:
+    """An upper bound of |value of e| (infinity when none is known): constants, INTEGER and REAL variables
+    (their stores keep them in range), sums, products, quotients by a constant and a few built-ins. A finite
+    bound below the DOUBLE range proves the computed value is neither infinite nor NaN."""
+    if isinstance(e, A.Num):
+        return math.inf if abs(e.value) > 1e300 else abs(float(e.value))  # an integer beyond any float: unbounded
+    if isinstance(e, A.Var):
+        return _HOLDS.get(e.var.type, math.inf) if e.var.cls in ("L", "G") else math.inf
+    if isinstance(e, A.Unary) and e.op in ("-", "+"):
+        return magnitude(e.operand)
+    if isinstance(e, A.Bin):
+        if e.op in ("+", "-"):
+            return magnitude(e.left) + magnitude(e.right)
+        if e.op == "*":
+            return magnitude(e.left) * magnitude(e.right)
+        if e.op == "/" and isinstance(e.right, A.Num) and e.right.value:
+            return magnitude(e.left) / abs(float(e.right.value))
+    if isinstance(e, A.Func) and e.name in _FUNC_BOUND and len(e.args) == 1 and e.args[0] is not None:
+        return _FUNC_BOUND[e.name](magnitude(e.args[0]))
+    return math.inf
+
+
 #: output statements whose arguments from this position on are printed (NUL prints nothing)
 TEXT_FROM = {"DSP": 2, "PRN": 2}
 
@@ -1109,7 +1152,7 @@ HELPER_NAMES = (
     "_logic", "_lnot", "_ix", "_sv", "_view", "_setf", "_midw", "_dim", "_pdim", "_pstr", "_gfield", "_gset_s", "_pint",
     "_call", "_q", "_q3", "_drain", "_wait", "_Block", "_loose", "_word", "_mval", "_modal", "_modal_call",
     "_runaway", "_hook", "_caseval", "_nocall", "_msin", "_mcos", "_matan", "_msqrt",
-    "_io", "_Dbl", "_SView", "_nn",
+    "_io", "_Dbl", "_SView", "_nn", "_pk32", "_up32",
 ) + tuple(f"_F_{name.replace('$', '_S')}" for name in FUNCTIONS)
 
 

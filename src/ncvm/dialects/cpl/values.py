@@ -15,8 +15,13 @@ from .io.strings import CharacterField, CharacterTable
 from .io.values import CplText
 
 _F32 = struct.Struct("f")
-_pack = _F32.pack
+_pack = _F32.pack  # native: a value beyond the range packs as infinity, without OverflowError
 _unpack = _F32.unpack
+# Generated code rounds REAL stores inline with these (cpl.codegen.real_store). The standard size refuses a
+# finite value beyond the REAL range (OverflowError) where the native one gives infinity; both round alike.
+_STD32 = struct.Struct("<f")
+pack32 = _STD32.pack
+unpack32 = _STD32.unpack
 INT_MIN = -2147483648
 INT_MAX = 2147483647
 

@@ -7,7 +7,7 @@ import re
 from ...diagnostics import CompileFailed, RuntimeFault
 from ...nc import threads
 from ...nc.axiswords import din_missing_axes
-from ...nc.block import PlainRun, read_din_segments
+from ...nc.block import COLUMNS_FROM, PlainRun, read_din_chunks, read_din_segments
 from ...nc.canon import Src
 from ...nc.cycles import CannedCycles
 from ...nc.plainrun import execute_columns
@@ -19,6 +19,9 @@ from .ngc import fold_extensions
 from .options import arc_tolerance, options
 from .support import address_refusal, refused_address, unsupported
 
+#: a run holds a program of up to this many characters (about 250,000 lines of CAM output) as it reads it; a
+#: longer one is read a second time as it runs
+KEEP_CHARS = 8 << 20
 _DIN_LINE = re.compile(r"^\s*(N\d+\s*)?([GMXYZFST]-?\d|\(|%|/|$)", re.I)
 
 
@@ -40,7 +43,7 @@ class DinDialect(Dialect):
         return int(100 * hits / len(lines))
 
     def check(self, path, text, machine, all_errors=False):
-        segments, diags = read_din_segments(path, text)
+        segments, diags = read_din_segments(path, text, as_columns=text.count("\n") >= COLUMNS_FROM)
         diags = fold_extensions(diags, program_lines(text)) if diags else diags
         diags += [d for _i, _row, d in din_missing_axes(path, text, segments, machine.axis_names)]
         diags += unsupported(path, segments, program_lines(text), machine.axis_names,
@@ -48,9 +51,6 @@ class DinDialect(Dialect):
         return sorted(diags, key=lambda d: (d.span.line, d.span.column or 0))
 
     def run(self, path, text, session):
-        segments, diags = read_din_segments(path, text)
-        if diags:
-            raise CompileFailed(fold_extensions(diags, program_lines(text)))
         kernel = session.kernel
         opts = options(session.machine)
         kernel.arc_tolerance = arc_tolerance(opts)
@@ -59,53 +59,25 @@ class DinDialect(Dialect):
         if profile is ISO:
             setup_kernel(kernel)  # LinuxCNC's canned cycles and G33 belong to the iso rows
         skip_active = bool(session.machine.setting_data.get("block_skip", True))
-        # a block with a word for an axis the machine lacks is refused when the run reaches it (found here,
-        # once, so the blocks before it run as they are)
-        refused = (din_missing_axes(path, text, segments, kernel.axis_of, skip_active)
-                   + _refused_addresses(path, text, segments, kernel.axis_of, skip_active))
-        refused = sorted(refused, key=lambda r: (r[0], r[1] or 0))[:1]
-        if refused:
-            at, row, refusal = refused[0]
-            segments = segments[:at] + ([segments[at].head(row)] if row else [])
+        stretches, refused = self._read(path, text, kernel.axis_of, skip_active)
         counter = session.steps
         limit = counter.limit - counter.steps
         hook = counter.hook  # single-block stepping and breakpoints; None unless a debugger is attached
         done = 0
         last_src = None
+        index = 0  # segments of the stretches before this one
         try:
-            for seg in segments:
-                if isinstance(seg, PlainRun):
-                    last_src = Src(path, int(seg.lines[-1]))
-                    if hook is None:
-                        # a run of plain motion blocks, executed column-wise up to the step limit
-                        count = min(len(seg), limit - done)
-                        lo = 0
-                        while (bad := execute_columns(kernel, seg, lo, count)) is not None:
-                            done += bad - lo + 1
-                            kernel.execute(seg.block(bad))  # left to the kernel: it may fault
-                            lo = bad + 1
-                        done += count - lo
-                        if count < len(seg):
-                            counter.runaway(path, int(seg.lines[count]))
-                        continue
-                    blocks = ((blk, False) for blk in seg.blocks())
-                else:
-                    blocks = (seg,)
-                    last_src = seg[0].src
-                for blk, skip in blocks:
-                    if skip and skip_active:
-                        continue
-                    if done >= limit:
-                        counter.runaway(blk.src.file, blk.src.line)
-                    done += 1
-                    if hook is not None:
-                        hook(blk.src.file, blk.src.line, kernel.workpiece_position())
-                    kernel.execute(blk)
-                    if kernel.ended:
-                        break
-                if kernel.ended:
+            for segments in stretches:
+                first, index = index, index + len(segments)
+                if refused and refused[0] < index:  # the refused block is in this stretch: run up to it
+                    at, row = refused[0] - first, refused[1]
+                    segments = segments[:at] + ([segments[at].head(row)] if row else [])
+                done, last_src = self._execute(path, segments, kernel, counter, limit, hook, skip_active, done,
+                                               last_src)
+                if kernel.ended or (refused and refused[0] < index):
                     break
             if refused and not kernel.ended:
+                refusal = refused[2]
                 if done >= limit:
                     counter.runaway(path, refusal.span.line)
                 done += 1
@@ -114,6 +86,65 @@ class DinDialect(Dialect):
             counter.steps += done
         if not kernel.ended and last_src is not None:
             kernel.end_program(last_src)
+
+    @staticmethod
+    def _read(path, text, axes, skip_active):
+        """(the program's stretches of segments, the first refused block as (segment index, row, Diagnostic) or
+        None); a program with errors fails to compile. A program of at most :data:`KEEP_CHARS` characters is
+        read once and held; a longer one is read twice, the first time for its errors and refusals only, so a
+        run holds one stretch of it at a time (issue 18: bounded memory)."""
+        keep = len(text) <= KEEP_CHARS
+        held, diags, refused, index = [], [], None, 0
+        for segments, found in read_din_chunks(path, text):
+            diags += found
+            if refused is None and not diags:
+                # a block with a word for an axis the machine lacks is refused when the run reaches it (found
+                # here, once, so the blocks before it run as they are)
+                first = sorted(din_missing_axes(path, text, segments, axes, skip_active)
+                               + _refused_addresses(path, text, segments, axes, skip_active),
+                               key=lambda r: (r[0], r[1] or 0))[:1]
+                refused = (index + first[0][0], first[0][1], first[0][2]) if first else None
+            index += len(segments)
+            if keep:
+                held.append(segments)
+        if diags:
+            raise CompileFailed(fold_extensions(diags, program_lines(text)))
+        return (held if keep else (segments for segments, _ in read_din_chunks(path, text))), refused
+
+    @staticmethod
+    def _execute(path, segments, kernel, counter, limit, hook, skip_active, done, last_src):
+        """Run ``segments`` (until the program ends); returns the blocks done so far and the last block's place."""
+        for seg in segments:
+            if isinstance(seg, PlainRun):
+                last_src = Src(path, int(seg.lines[-1]))
+                if hook is None:
+                    # a run of plain motion blocks, executed column-wise up to the step limit
+                    count = min(len(seg), limit - done)
+                    lo = 0
+                    while (bad := execute_columns(kernel, seg, lo, count)) is not None:
+                        done += bad - lo + 1
+                        kernel.execute(seg.block(bad))  # left to the kernel: it may fault
+                        lo = bad + 1
+                    done += count - lo
+                    if count < len(seg):
+                        counter.runaway(path, int(seg.lines[count]))
+                    continue
+                blocks = ((blk, False) for blk in seg.blocks())
+            else:
+                blocks = (seg,)
+                last_src = seg[0].src
+            for blk, skip in blocks:
+                if skip and skip_active:
+                    continue
+                if done >= limit:
+                    counter.runaway(blk.src.file, blk.src.line)
+                done += 1
+                if hook is not None:
+                    hook(blk.src.file, blk.src.line, kernel.workpiece_position())
+                kernel.execute(blk)
+                if kernel.ended:
+                    return done, last_src
+        return done, last_src
 
 
 def _refused_addresses(path: str, text: str, segments: list, axes, skip_active: bool) -> list:

@@ -151,7 +151,7 @@ class SympasDialect(Dialect):
                                                 _span(u.prog))])
             tasks[n].load(u)
             for loc in u.locs[1:]:  # an included file two tasks share counts for the first of them
-                card.task_of.setdefault(loc, n)
+                card.task_at.setdefault(loc, n)
         main_task = tasks[main.task if main.task is not None else 0]
         main_task.start(0.0)
         card.scheduler.main = main_task

@@ -71,7 +71,7 @@ class Card:
         self.output_log = OperatorOutput(session.options.max_output_lines)
         self.timeline = Timeline(self, [a.m for a in self.axes])  # reports the retired moves in time order
         #: (file, line) of a statement -> the task whose program holds it (the front end fills it in)
-        self.task_of: dict[tuple[str, int], int] = {}
+        self.task_at: dict[tuple[str, int], int] = {}
 
     # -- scenario events ------------------------------------------------------------------------------
     def apply_event(self, ev) -> None:

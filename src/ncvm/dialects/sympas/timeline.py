@@ -97,7 +97,7 @@ class Timeline:
 
     def _channel(self, src) -> None:
         """Tell the sinks which task's moves follow, when another task's than before (the plot's colours)."""
-        task = self.card.task_of.get((src.file, src.line)) if src is not None else None
+        task = self.card.task_at.get((src.file, src.line)) if src is not None else None
         if task is not None and task != self.task:
             self.task = task
             self.canon.channel(task, src)

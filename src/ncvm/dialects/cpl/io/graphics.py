@@ -17,11 +17,13 @@ from collections import deque
 from dataclasses import dataclass
 from pathlib import Path
 
-import numpy as np
-
+from ....lazy import lazy
 from ....machine.files import FileRoot, FileRootError
 from .errors import CplWarning, WarnFn, fail, warning
 from .values import text_of
+
+np = lazy("numpy")
+
 
 WIDTH, HEIGHT = 633, 415  # whole CPL window (A.3.C)
 GRAPH_TOP = 374  # highest graphics y (L4988)

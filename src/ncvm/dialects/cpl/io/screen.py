@@ -18,14 +18,16 @@ from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
 
-import numpy as np
-
+from ....lazy import lazy
 from ....machine.files import FileRoot
 from .errors import CplRuntimeError, WarnFn, fail
 from .format import TEMPLATE, OutputMode, format_items, format_number, template_shape
 from .graphics import BAND, HEIGHT, WIDTH, Graphics, _int
 from .strings import scan_number
 from .values import is_text, kind_of, text_of
+
+np = lazy("numpy")
+
 
 LINES, COLUMNS = 46, 79
 CELL_W, CELL_H = 8, 9

@@ -1,0 +1,158 @@
+"""Whole-process cases: the ``ncvm`` command run as a user runs it, side by side with rs274 on the same work.
+
+Each run starts ``python -m ncvm run ...`` (and ``rs274 -g`` on the peer program when it is installed) as a
+child process, alternating the two, and takes the child's own CPU time and peak resident memory from
+``os.wait4`` (wall-clock time is noisy on a shared machine; CPU time much less). Figures per case:
+``ncvm_cpu_s`` / ``rs274_cpu_s`` medians, ``speedup_vs_rs274`` (rs274 CPU over ncvm CPU, > 1: ncvm is faster),
+``ncvm_peak_rss_mb`` / ``rs274_peak_rss_mb``.
+
+- ``proc_cpl_real_loop_300k``: the peer loop_arith at 300,000 iterations, CPL with plain REAL variables;
+  ``proc_cpl_double_loop_300k`` the same with DOUBLE (``!``) variables;
+- ``proc_sin800_loop_300k``, ``proc_sympas_loop_300k``: the same loop in @ code and rw_SymPas;
+- ``proc_startup``: one block (``M2``, bench/peers/startup_m2.ngc) through ``ncvm run`` and rs274;
+  ``proc_startup_version`` / ``proc_startup_check``: ``ncvm --version`` and ``ncvm check`` of a small CPL program;
+- ``proc_<dialect>_2m_moves_memory``: 2,000,000 computed G1 moves in a loop of each dialect, no plot;
+- ``proc_din_flat_500k_memory``: a 500,000-line flat DIN file (bench/peers/gen_flat.py) and rs274 on it.
+"""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+from benchlib import NCVM, PEERS, WORK, Case, child, rs274, rs274_argv, warm_bytecode
+from cases_memory import CPL_MOVES
+
+LOOP = 300_000
+MOVES = 2_000_000
+FLAT_LINES = 500_000
+STATE = WORK / ".ncvm-proc"
+
+CPL_LOOP = """\
+(loop_arith - {n:,} WHILE iterations of parameter arithmetic, as peers/loop_arith.ngc, {kind} variables)
+N1 G71 G90 G17
+10 I% = 0 : S{s} = 0.0 : M% = 0 : ACC{s} = 1.0 : X{s} = 0.0
+20 WHILE I% < {n} DO
+30 X{s} = I% * 0.001
+40 S{s} = S{s} + X{s} * 2.5 - 1.25
+50 ACC{s} = ACC{s} * 0.999 + SIN(X{s}) * COS(X{s}) + SQRT(ABS(S{s}) + 1)
+60 M% = M% + (I% - INT(I% / 7) * 7)
+70 F{s} = INT(X{s} * 10) / 3
+80 I% = I% + 1
+90 END
+M30
+"""
+
+SIN800_MOVES = """\
+%MPF9003
+(2,000,000 computed G1 moves: a raster of 100 moves a row; R1 counter, R2 row, R3 x, R4 y)
+N10 G71 G90 G17 G94 F6000 R1=0
+N20 @135 R1 K{n} K30
+R2=R1/100 @622 R2 R3=R2*100 R3=R1-R3 R3=R3*0.5 R4=R2*0.01
+G1 X=R3 Y=R4
+@620 R1 @100 K-20
+N30 M30
+"""
+
+SYMPAS_MOVES = """\
+{{ 2,000,000 linear moves (MLRW): a zig-zag raster of {rows} rows x 1000 moves }}
+program Moves;
+var row, k: integer; dir: double;
+begin
+  TRVL := 100.0; TRAC := 10000.0;
+  for row := 0 to {last} do
+  begin
+    dir := 1.0 - 2.0 * (row mod 2);
+    for k := 1 to 1000 do
+      MLRW(A1 := dir * 0.1, A2 := 0.0001);
+  end;
+end.
+"""
+
+
+def _write(name: str, text: str) -> None:
+    path = WORK / name
+    if not path.exists() or path.read_text() != text:
+        path.write_text(text)
+
+
+def write_programs() -> None:
+    WORK.mkdir(exist_ok=True)
+    warm_bytecode()
+    _write("real_loop_300k.cpl", CPL_LOOP.format(n=LOOP, kind="REAL", s=""))
+    _write("double_loop_300k.cpl", CPL_LOOP.format(n=LOOP, kind="DOUBLE", s="!"))
+    _write("loop_arith_300k.ngc", (PEERS / "loop_arith.ngc").read_text().replace("100000", str(LOOP))
+           .replace("100,000", f"{LOOP:,}"))
+    _write("loop_arith_300k.mpf", (PEERS.parent / "sin800" / "loop_arith.mpf").read_text()
+           .replace("K100000", f"K{LOOP}").replace("100,000", f"{LOOP:,}"))
+    _write("loop_arith_300k.sap", (PEERS.parent / "sympas" / "loop_arith.sap").read_text()
+           .replace("100000", str(LOOP)).replace("100,000", f"{LOOP:,}"))
+    _write("moves_2m.cpl", CPL_MOVES.format(n=MOVES))
+    _write("moves_2m.mpf", SIN800_MOVES.format(n=MOVES))
+    _write("moves_2m.sap", SYMPAS_MOVES.format(rows=MOVES // 1000, last=MOVES // 1000 - 1))
+    _write("small.cpl", CPL_LOOP.format(n=10, kind="REAL", s=""))
+    flat = WORK / "flat_500k.ngc"
+    if not flat.exists():
+        subprocess.run([sys.executable, str(PEERS / "gen_flat.py"), "-n", str(FLAT_LINES), "-o", str(flat)],
+                       check=True)
+
+
+def ncvm_run(program: str, *extra: str) -> list[str]:
+    return NCVM + ["run", "--state", str(STATE), *extra, str(WORK / program)]
+
+
+def paired(ncvm_argv: list[str], peer: Path | None, *, expect_moves: int | None = None):
+    """One run: ncvm and (when installed) rs274 on ``peer``, in alternating order from run to run."""
+    turn = [0]
+
+    def run_case() -> dict:
+        figures = {}
+        order = ["ncvm", "rs274"] if turn[0] % 2 == 0 else ["rs274", "ncvm"]
+        turn[0] += 1
+        for who in order:
+            if who == "rs274":
+                if peer is None or rs274() is None:
+                    continue
+                used = child(rs274_argv(peer))
+            elif expect_moves is None:
+                used = child(ncvm_argv)
+            else:  # the JSON result says how many moves ran
+                at = ncvm_argv.index("run") + 1
+                out = WORK / "proc_result.json"
+                used = child(ncvm_argv[:at] + ["--json"] + ncvm_argv[at:], stdout=out)
+                moves = json.loads(out.read_text())["motion"]["feed_moves"]
+                assert moves == expect_moves, f"{moves} feed moves, expected {expect_moves}"
+            figures[f"{who}_cpu_s"] = used.cpu_s
+            figures[f"{who}_wall_s"] = used.wall_s
+            figures[f"{who}_peak_rss_mb"] = used.peak_rss_mb
+        return figures
+
+    return run_case
+
+
+def cases() -> dict[str, Case]:
+    def case(run, count, unit, repeat=0):
+        return Case(run, count, unit, setup=write_programs, repeat=repeat)
+
+    return {
+        "proc_cpl_real_loop_300k": case(paired(ncvm_run("real_loop_300k.cpl"), WORK / "loop_arith_300k.ngc"),
+                                        LOOP, "iterations/s"),
+        "proc_cpl_double_loop_300k": case(paired(ncvm_run("double_loop_300k.cpl"), WORK / "loop_arith_300k.ngc"),
+                                          LOOP, "iterations/s"),
+        "proc_sin800_loop_300k": case(paired(ncvm_run("loop_arith_300k.mpf", "-d", "sin800"),
+                                             WORK / "loop_arith_300k.ngc"), LOOP, "iterations/s"),
+        "proc_sympas_loop_300k": case(paired(ncvm_run("loop_arith_300k.sap", "-d", "sympas"),
+                                             WORK / "loop_arith_300k.ngc"), LOOP, "iterations/s"),
+        "proc_startup": case(paired(NCVM + ["run", "--state", str(STATE), str(PEERS / "startup_m2.ngc")],
+                                    PEERS / "startup_m2.ngc"), 1, "runs/s", repeat=11),
+        "proc_startup_version": case(paired(NCVM + ["--version"], None), 1, "runs/s", repeat=11),
+        "proc_startup_check": case(paired(NCVM + ["check", str(WORK / "small.cpl")], None), 1, "runs/s",
+                                   repeat=11),
+        **{f"proc_{d}_2m_moves_memory": case(paired(ncvm_run(f"moves_2m.{ext}", "-d", d), None,
+                                                    expect_moves=MOVES), MOVES, "G1/s", repeat=1)
+           for d, ext in (("cpl", "cpl"), ("sin800", "mpf"), ("sympas", "sap"))},
+        "proc_din_flat_500k_memory": case(paired(ncvm_run("flat_500k.ngc", "-d", "din"), WORK / "flat_500k.ngc"),
+                                          FLAT_LINES, "lines/s", repeat=1),
+    }

@@ -1,0 +1,78 @@
+"""Start-up (issue 18): the commands import the heavy libraries and the dialects only when they use them.
+
+Each command runs in a fresh interpreter, as a user starts it; the test reads which modules it loaded.
+"""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+
+import pytest
+
+HEAVY = ("numpy", "matplotlib", "PIL", "sqlite3", "rich")
+DIALECTS = ("ncvm.dialects.din", "ncvm.dialects.cpl", "ncvm.dialects.sinumerik", "ncvm.dialects.sympas")
+
+PROBE = """\
+import json, runpy, sys
+sys.argv = ["ncvm"] + json.loads(sys.argv[1])
+try:
+    runpy.run_module("ncvm", run_name="__main__")
+except SystemExit as e:
+    code = e.code
+else:
+    code = 0
+sys.stdout.flush()
+sys.stderr.write("\\nMODULES " + json.dumps([code, sorted(sys.modules)]) + "\\n")
+"""
+
+
+def loaded(args: list[str], cwd) -> tuple[int, set[str]]:
+    """(exit code, modules loaded) of ``ncvm <args>`` in a new interpreter."""
+    out = subprocess.run([sys.executable, "-c", PROBE, json.dumps(args)], capture_output=True, text=True,
+                         cwd=cwd, timeout=120)
+    line = [ln for ln in out.stderr.splitlines() if ln.startswith("MODULES ")][-1]
+    code, modules = json.loads(line[len("MODULES "):])
+    return code, set(modules)
+
+
+def top(modules: set[str], names) -> set[str]:
+    return {n for n in names if n in modules}
+
+
+def test_version_imports_no_heavy_library_and_no_dialect(tmp_path):
+    code, modules = loaded(["--version"], tmp_path)
+    assert code == 0
+    assert top(modules, HEAVY) == set()
+    assert top(modules, DIALECTS) == set()
+    assert "ncvm.api" not in modules
+
+
+@pytest.mark.parametrize(("name", "text", "dialect"), [
+    ("p.cpl", "10 A% = 1\n20 WHILE A% < 3 DO\n30 A% = A% + 1\n40 END\nM30\n", "ncvm.dialects.cpl"),
+    ("p.ngc", "G1 X10 Y5 F1000\nM2\n", "ncvm.dialects.din"),
+    ("p.sap", "program P;\nvar i: integer;\nbegin\n  i := 1;\nend.\n", "ncvm.dialects.sympas"),
+])
+def test_check_of_a_small_program_imports_no_numpy_and_only_its_dialect(tmp_path, name, text, dialect):
+    (tmp_path / name).write_text(text)
+    code, modules = loaded(["check", name], tmp_path)
+    assert code == 0
+    assert top(modules, HEAVY) == set()
+    assert top(modules, DIALECTS) == {dialect}
+
+
+def test_a_one_block_run_imports_neither_plot_nor_screen_libraries_nor_numpy(tmp_path):
+    (tmp_path / "p.ngc").write_text("M2\n")
+    code, modules = loaded(["run", "--state", str(tmp_path / ".ncvm"), "p.ngc"], tmp_path)
+    assert code == 0
+    assert top(modules, HEAVY) - {"sqlite3"} == set()  # the permanent store is opened when a program uses it
+    assert top(modules, DIALECTS) == {"ncvm.dialects.din"}
+
+
+def test_a_run_with_moves_and_a_plot_loads_what_it_uses(tmp_path):
+    (tmp_path / "p.ngc").write_text("G1 X10 Y5 F1000\nM2\n")
+    code, modules = loaded(["run", "--state", str(tmp_path / ".ncvm"), "--plot", "p.png", "p.ngc"], tmp_path)
+    assert code == 0
+    assert {"numpy", "matplotlib"} <= modules
+    assert (tmp_path / "p.png").stat().st_size > 0
