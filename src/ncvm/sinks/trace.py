@@ -1,4 +1,9 @@
-"""JSONL trace: one canon call per line, with the source file and line that caused it."""
+"""JSONL trace: one canon call per line, with the source file and line that caused it.
+
+Every motion carries its end point twice: ``end`` in machine coordinates (every offset applied) and
+``work`` in the program's coordinates (the selected zero offset and the tool length removed, as the
+kernel's canon call ``frame`` gives them); docs/trace.md describes the records.
+"""
 
 from __future__ import annotations
 
@@ -12,6 +17,7 @@ class JsonlTrace(CanonSink):
     def __init__(self, path):
         self._f = open(path, "w", encoding="utf-8")
         self.names: tuple[str, ...] = ()
+        self.removed: tuple[float, ...] = ()  # what work coordinates take off the machine's (zero offset, tool)
 
     def _write(self, call: str, src, **data) -> None:
         rec = {"call": call, **data}
@@ -25,18 +31,25 @@ class JsonlTrace(CanonSink):
     def _pos(self, p) -> dict:
         return {n: round(v, 6) for n, v in zip(self.names, p)}
 
+    def _work(self, p) -> dict:
+        return {n: round(v - r, 6) for n, v, r in zip(self.names, p, self.removed)}
+
     def begin(self, axis_names, start):
         self.names = tuple(axis_names)
+        self.removed = (0.0,) * len(self.names)
         self._write("begin", None, position=self._pos(start))
 
+    def frame(self, frame, src):
+        self.removed = frame.removed()
+
     def rapid(self, start, end, src):
-        self._write("rapid", src, end=self._pos(end))
+        self._write("rapid", src, end=self._pos(end), work=self._work(end))
 
     def feed(self, start, end, feed, src):
-        self._write("feed", src, end=self._pos(end), feed=feed)
+        self._write("feed", src, end=self._pos(end), work=self._work(end), feed=feed)
 
     def arc(self, start, end, spec, feed, src):
-        self._write("arc", src, end=self._pos(end), center=[spec.center[0], spec.center[1]],
+        self._write("arc", src, end=self._pos(end), work=self._work(end), center=[spec.center[0], spec.center[1]],
                     plane=[self.names[spec.a], self.names[spec.b]], cw=spec.cw, turns=spec.turns, feed=feed)
 
     def dwell(self, seconds, src):
