@@ -70,6 +70,14 @@ class JsonlTrace(CanonSink):
     def aux(self, code, src):
         self._write("aux", src, code=code)
 
+    def probe(self, trip, target, src):
+        removed = dict(zip(self.names, self.removed))
+        self._write("probe", src, trip=trip, target=None if target is None else
+                    {n: round(v - removed[n], 6) for n, v in target.items()})
+
+    def frozen(self, what, src):
+        self._write("frozen", src, what=what)
+
     def message(self, text, src):
         self._write("message", src, text=text)
 

@@ -43,6 +43,7 @@ class Translated:
     moves: int
     frozen: int
     probes: int
+    tools: dict[int, float]  # tool offset number -> the (last) length the simulation used
 
 
 def translate(program: str | Path, out: str | Path, target: str = "linuxcnc", frame: str = "work",
@@ -72,7 +73,9 @@ def translate(program: str | Path, out: str | Path, target: str = "linuxcnc", fr
         _assemble(out, writer.header(Path(program).name, m.name or "the machine file"), body, tgt)
     finally:
         body.unlink(missing_ok=True)
-    return Translated(out, tgt, writer.lines, writer.moves, writer.setup.frozen, writer.setup.probes)
+    s = writer.setup
+    return Translated(out, tgt, writer.lines, writer.moves, s.frozen, s.probes,
+                      {n: lengths[-1] for n, lengths in s.tools.items()})
 
 
 def _run_failed(error: Diagnostic) -> Diagnostic:
