@@ -35,7 +35,8 @@ def _translate(program: Path, target: str, tmp_path: Path):
     try:
         done = translate(program, out, target, machine=i["machine"], options=options)
     except TranslationRefused as e:
-        assert program.name in REFUSED and REFUSED[program.name] in e.diagnostic.message, e.diagnostic.message
+        why = REFUSED.get(program.name, "no standard probe move" if target == "iso" else "(not refused)")
+        assert why in e.diagnostic.message, e.diagnostic.message
         assert e.diagnostic.code == "TRN001" and not out.exists()
         return None
     return done, out.read_text(), trace_moves(trace)
@@ -82,8 +83,6 @@ def test_rs274_reads_every_translation_with_the_same_motions(tmp_path):
 def test_our_reader_reads_every_translation_with_the_same_motions(tmp_path, target):
     compared = translated = 0
     for program in PROGRAMS:
-        if target == "iso" and program.name == "measlog.cpl":
-            continue  # no probe move on ISO: test_measuring_example_on_each_target
         got = _translate(program, target, tmp_path)
         if got is None:
             continue
@@ -97,7 +96,7 @@ def test_our_reader_reads_every_translation_with_the_same_motions(tmp_path, targ
         compared += len(ours)
         translated += 1
     print(f"{target}: read back {translated} translations of {len(PROGRAMS)} programs: {compared} moves compared")
-    assert compared > 400
+    assert compared > 400 and translated >= len(PROGRAMS) - (3 if target == "iso" else 1)
 
 
 def test_measuring_example_on_each_target(tmp_path):
