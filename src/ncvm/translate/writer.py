@@ -77,6 +77,7 @@ class Translation(CanonSink):
         self._after: list[tuple[str, Src]] = []  # M5 / M9 of a block, written after its move
         self._probe: tuple[dict | None, dict | None, Src] | None = None
         self._frozen: list[tuple[str, Src | None]] = []
+        self._frozen_pending: set = set()
         self._frozen_seen: set = set()
         self._tool = 0
         self._hidden: list[int] = []
@@ -93,7 +94,12 @@ class Translation(CanonSink):
             return
         if self._frozen:
             notes, self._frozen = self._frozen, []
+            self._frozen_pending.clear()
             for what, where in notes:
+                where = where or src  # an input read between blocks: the block it leads to
+                if (what, where) in self._frozen_seen:
+                    continue
+                self._frozen_seen.add((what, where))
                 at = f" at {Path(where.file).name}:{where.line}" if where else ""
                 self.out.write(self.t.note(f"FROZEN: {what}{at}; the path below follows the simulated value")
                                + "\n")
@@ -187,9 +193,9 @@ class Translation(CanonSink):
 
     def frozen(self, what, src):
         key = (what, src)
-        if key not in self._frozen_seen:
-            self._frozen_seen.add(key)
-            self._frozen.append((what, src))
+        if key not in self._frozen_pending:  # a polling loop reads the same input again and again
+            self._frozen_pending.add(key)
+            self._frozen.append(key)
 
     def probe(self, trip, target, src):
         self._probe = (trip, target, src)

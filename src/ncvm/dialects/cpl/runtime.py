@@ -102,6 +102,7 @@ class CplRuntime:
         self._pictures = 0
         if session.options.screen_dir is not None:
             self.io.screen.on_wait = self.save_wait_picture
+        self.io.screen.on_input = lambda what: self.kernel.canon.frozen(what, None)
         self.globals: dict = {}
         self.perm = Permanents(session)
         #: the motion queue: ``lookahead`` blocks, else the block buffer, whose older half executes when
@@ -541,6 +542,7 @@ class CplRuntime:
     def _apply_events(self, t: float) -> None:
         for ev in self._events.due(t):
             self.machine.plc.inputs[ev.address] = ev.value
+            self.kernel.canon.frozen(f"scenario event at {ev.time:g} s: input {ev.address} = {ev.value}", None)
 
     def wait(self, ic, neg: bool, state, duration):
         """0: condition met at the call; 1: the duration ran out; 2: the condition became true while waiting."""

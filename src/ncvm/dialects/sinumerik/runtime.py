@@ -543,6 +543,7 @@ class Channel:
         for ev in self.scenario.due(now):
             expire(ev.time)
             self._apply_event(ev)
+            self.kernel.canon.frozen(f"scenario event at {ev.time:g} s: {ev}", None)
         expire(now)
 
     def _apply_event(self, ev) -> None:
