@@ -1,0 +1,80 @@
+"""``ncvm translate`` as a user runs it (real processes, real files): complete files only, a failed run
+writes nothing, the header, the machine frame, source comments, rw_SymPas' program end, the trace's
+``work`` field."""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+ROOT = Path(__file__).parents[2]
+EX = ROOT / "examples"
+
+
+def ncvm(*args, cwd) -> subprocess.CompletedProcess:
+    return subprocess.run([sys.executable, "-m", "ncvm", *map(str, args)], cwd=cwd, capture_output=True, text=True,
+                          timeout=120)
+
+
+def test_a_failed_run_writes_nothing_and_keeps_the_old_file(tmp_path):
+    """flangedlg.cpl waits for the operator: without --keys the run stops, the translation is refused with
+    the run's error and the cure, and the file already there stays as it was; no temporary file is left."""
+    out = tmp_path / "dlg.ngc"
+    out.write_text("old\n")
+    r = ncvm("translate", EX / "cpl" / "flangedlg.cpl", "-o", out, "--state", tmp_path / "st", cwd=tmp_path)
+    assert r.returncode == 1
+    assert "error TRN002: translation refused: the run did not end normally: CPL705" in r.stderr
+    assert "give the operator's key presses with --keys" in r.stderr and "flangedlg.cpl:11:4" in r.stderr
+    assert out.read_text() == "old\n" and sorted(p.name for p in tmp_path.iterdir()) == ["dlg.ngc", "st"]
+    r = ncvm("translate", EX / "cpl" / "flangedlg.cpl", "-o", out, "--keys", EX / "cpl" / "flangedlg.keys",
+             "--state", tmp_path / "st", cwd=tmp_path)
+    assert r.returncode == 0, r.stderr
+    text = out.read_text()
+    assert "(FROZEN: operator input INP[DA] = 140.0 at flangedlg.cpl:" in text and text.endswith("M2\n")
+
+
+def test_sympas_translation_ends_with_a_program_end(tmp_path):
+    """An rw_SymPas program has no M2/M30: the translation ends with the target's program end anyway."""
+    for target, end in (("linuxcnc", "M2\n"), ("sinumerik840d", "M30\n"), ("iso", "M30\n%\n")):
+        out = tmp_path / f"contour.{target}"
+        r = ncvm("translate", EX / "sympas" / "contour.sap", "-o", out, "--target", target, "--state",
+                 tmp_path / "st", cwd=tmp_path)
+        assert r.returncode == 0, r.stderr
+        assert out.read_text().endswith(end) and "G10" not in out.read_text()
+
+
+def test_machine_frame_and_source_comments(tmp_path):
+    """--frame machine: the simulated machine's coordinates (X150.02 ... for the SINUMERIK flange's X0 Y0
+    Z50) under a loud header, no G43 and no G10; --source-comments ends each block with (file:line)."""
+    out = tmp_path / "m.ngc"
+    r = ncvm("translate", EX / "sin800" / "flange.mpf", "-o", out, "--frame", "machine", "--source-comments",
+             "--state", tmp_path / "st", cwd=tmp_path)
+    assert r.returncode == 0, r.stderr
+    text = out.read_text()
+    assert "(!!! MACHINE COORDINATES OF THE SIMULATED MACHINE" in text
+    assert "G0 X150.02 Y99.99 Z135.1 (flange.mpf:" in text
+    assert "G43" not in text and "G10" not in text
+
+
+def test_840d_words(tmp_path):
+    """The 840D target: D for the tool length, G4 F for a dwell, ; comments, M30."""
+    out = tmp_path / "f.mpf"
+    r = ncvm("translate", EX / "sin800" / "flange.mpf", "-o", out, "--target", "sinumerik840d", "--state",
+             tmp_path / "st", cwd=tmp_path)
+    assert r.returncode == 0, r.stderr
+    lines = out.read_text().splitlines()
+    assert lines[0].startswith("; translated by ncvm from flange.mpf for SINUMERIK 840D")
+    assert "D1" in lines and "G4 F0.5" in lines and lines[-1] == "M30" and "G54" in lines
+
+
+def test_trace_gives_work_coordinates_beside_machine_ones(tmp_path):
+    """The SINUMERIK flange's first move: program X0 Y0 Z50 is machine X150.02 Y99.99 Z135.1 (G54 and the
+    85.1 mm tool length of D1)."""
+    trace = tmp_path / "t.jsonl"
+    r = ncvm("run", EX / "sin800" / "flange.mpf", "--trace", trace, "--state", tmp_path / "st", cwd=tmp_path)
+    assert r.returncode == 0, r.stderr
+    first = next(rec for rec in map(json.loads, trace.read_text().splitlines()) if rec["call"] == "rapid")
+    assert first["end"] == {"X": 150.02, "Y": 99.99, "Z": 135.1}
+    assert first["work"] == {"X": 0.0, "Y": 0.0, "Z": 50.0}
