@@ -65,7 +65,7 @@ def test_840d_words(tmp_path):
              tmp_path / "st", cwd=tmp_path)
     assert r.returncode == 0, r.stderr
     lines = out.read_text().splitlines()
-    assert lines[0].startswith("; translated by ncvm from flange.mpf for SINUMERIK 840D")
+    assert lines[0].startswith("; written by ncvm from flange.mpf for SINUMERIK 840D")
     assert "D1" in lines and "G4 F0.5" in lines and lines[-1] == "M30" and "G54" in lines
 
 

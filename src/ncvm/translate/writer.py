@@ -337,19 +337,21 @@ class Translation(CanonSink):
     def program_end(self, src):
         self.ended = src
 
-    def finish(self) -> None:
-        """The run ended normally: the last M5/M9 and the program end (always, even where the program has
-        none, as an rw_SymPas program)."""
+    def finish_moves(self) -> None:
+        """The run ended normally: the last M5/M9 out (a probe move with no move after it is refused)."""
         self._flush_after()
         if self._probe is not None:
             self.refuse(self._probe[2], "a probe move with no move after it")
+
+    def write_end(self) -> None:
+        """The program end: always, even where the program has none (an rw_SymPas program)."""
         self._line(self.t.program_end, self.ended)
 
     def header(self, program: str, machine: str) -> list[str]:
-        """The comment lines at the top: what was translated, how, and what the new control must hold."""
+        """The comment lines at the top: how the positions are meant, and what the new control must hold."""
         t, s = self.t, self.setup
         note = t.note
-        out = [note(f"translated by ncvm from {program} for {t.title}")]
+        out = []
         if self.work:
             out.append(note("positions in WORK coordinates: set these zero offsets and tool lengths on the "
                             "new control before running it"))
