@@ -68,6 +68,7 @@ class TranslationFile:
         except OSError as e:
             raise OutputError(self.path, e) from None
         self.writer = Translation(self._f, target, frame, source_comments, scenario_given)
+        self.writer.out_path = self.path
         if self.stream:
             self._write_lines(self._intro() + [target.note("the setup the simulation used is listed at the end")])
 
@@ -100,12 +101,14 @@ class TranslationFile:
             if refusal is not None:
                 if self.stream:
                     self._write_lines([self.target.note(f"!!! INCOMPLETE: {refusal.code}: {refusal.message} !!!")])
+                    self._f.close()
                 return refusal
             if self.stream:
                 self._write_lines(w.header(self.program, self.machine))
                 w.write_end()
                 if self.target.wrapper:
                     self._write_lines([self.target.wrapper])
+                self._f.close()
             else:
                 w.write_end()
                 self._f.close()

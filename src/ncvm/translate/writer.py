@@ -14,6 +14,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from ..nc.canon import CanonSink, Frame, Src, plain_frame
+from ..outpaths import OutputError
 from .targets import Target
 
 PLANE_OF = {("X", "Y"): "G17", ("Z", "X"): "G18", ("Y", "Z"): "G19"}
@@ -57,6 +58,7 @@ class Translation(CanonSink):
     def __init__(self, out, target: Target, frame: str = "work", source_comments: bool = False,
                  scenario_given: bool = False):
         self.out = out
+        self.out_path = getattr(out, "name", "the output")  # named in a write error
         self.t = target
         self.work = frame == "work"
         self.source_comments = source_comments
@@ -101,13 +103,18 @@ class Translation(CanonSink):
                     continue
                 self._frozen_seen.add((what, where))
                 at = f" at {Path(where.file).name}:{where.line}" if where else ""
-                self.out.write(self.t.note(f"FROZEN: {what}{at}; the path below follows the simulated value")
-                               + "\n")
+                self._write(self.t.note(f"FROZEN: {what}{at}; the path below follows the simulated value"))
                 self.setup.frozen += 1
         if self.source_comments and src is not None:
             text += " " + self.t.note(f"{Path(src.file).name}:{src.line}")
-        self.out.write(text + "\n")
+        self._write(text)
         self.lines += 1
+
+    def _write(self, text: str) -> None:
+        try:
+            self.out.write(text + "\n")
+        except OSError as e:  # a full disk: the run stops with a usage error naming the file
+            raise OutputError(self.out_path, e) from None
 
     def _flush_after(self, src: Src | None = None) -> None:
         """Write the block's M5 / M9 once its move is out (DIN 66025: they act at the end of the block)."""
@@ -312,7 +319,7 @@ class Translation(CanonSink):
         self._flush_after()
         word = "M3" if direction > 0 else "M4"
         self._speed = speed
-        self._line(f"S{number(speed)} {word}", src)
+        self._line(f"{word} S{number(speed)}", src)
 
     def coolant(self, mode, src):
         if mode == "off":
