@@ -191,7 +191,8 @@ def run_program(path: str | Path, dialect: str | None = None, machine: Machine |
             finally:
                 session.close()
             if sinks.gcode is not None:  # in place, or nothing (a stream: marked incomplete)
-                error = error or sinks.gcode.complete(error)
+                refused = sinks.gcode.complete(error)
+                error = error or refused
     return RunResult.of(session, sinks.recorder, error)
 
 

@@ -415,9 +415,10 @@ def translate_cmd(program, out, target, frame, source_comments, dialect, machine
     from .translate import TranslationRefused, translate
 
     _check_program(program)
-    check_outputs([Output("-o", out)], {"program": program, **_machine_input(program, machine),
-                                        "--scenario": scenario, "--keys": keys}, state=state_dir)
+    inputs = {"program": program, **_machine_input(program, machine), "--scenario": scenario, "--keys": keys}
     machine = api.machine_for(program, machine or _folder_machine(program, say=True), Path(state_dir))
+    check_outputs([Output("-o", out)], inputs, state=state_dir, program_path=machine.program_path,
+                  file_root=str(machine.file_root))
     options = RunOptions(state_dir=Path(state_dir), max_steps=max_steps, scenario=Path(scenario) if scenario else None,
                          keys=_read_key_script(keys) if keys else None)
     try:

@@ -78,3 +78,36 @@ def test_trace_gives_work_coordinates_beside_machine_ones(tmp_path):
     first = next(rec for rec in map(json.loads, trace.read_text().splitlines()) if rec["call"] == "rapid")
     assert first["end"] == {"X": 150.02, "Y": 99.99, "Z": 135.1}
     assert first["work"] == {"X": 0.0, "Y": 0.0, "Z": 50.0}
+
+
+def test_translate_refuses_to_overwrite_a_sub_program_but_writes_its_own_file_again(tmp_path):
+    """-o onto a program the run may call is a usage error before the run; a translation ncvm wrote (its
+    first comment says so) is written again."""
+    for name in ("flange.cpl", "BOLTCIRC", "machine.toml"):
+        (tmp_path / name).write_bytes((EX / "cpl" / name).read_bytes())
+    r = ncvm("translate", "flange.cpl", "-o", "BOLTCIRC", "--state", "st", cwd=tmp_path)
+    assert r.returncode == 2 and "-o BOLTCIRC: would overwrite a program the run may call" in r.stderr
+    for target in ("linuxcnc", "iso", "sinumerik840d"):
+        for _ in range(2):
+            r = ncvm("translate", "flange.cpl", "-o", "FLANGE.ngc", "--target", target, "--state", "st", cwd=tmp_path)
+            assert r.returncode == 0, r.stderr
+
+
+def test_run_gcode_is_the_linuxcnc_translation(tmp_path):
+    """``run --gcode``: the same file as ``translate`` (LinuxCNC, work coordinates, no G10); a failed run
+    writes no file, and on a stream it ends with a marker that the output is incomplete."""
+    a, b = tmp_path / "a.ngc", tmp_path / "b.ngc"
+    r = ncvm("run", EX / "sin800" / "flange.mpf", "--gcode", a, "--state", tmp_path / "st", cwd=tmp_path)
+    assert r.returncode == 0, r.stderr
+    r = ncvm("translate", EX / "sin800" / "flange.mpf", "-o", b, "--state", tmp_path / "st", cwd=tmp_path)
+    assert r.returncode == 0, r.stderr
+    assert a.read_text() == b.read_text() and "G10" not in a.read_text()
+    r = ncvm("run", EX / "cpl" / "flangedlg.cpl", "--json", "--gcode", tmp_path / "dlg.ngc", "--state",
+             tmp_path / "st", cwd=tmp_path)
+    assert r.returncode == 1 and not (tmp_path / "dlg.ngc").exists() and not list(tmp_path.glob(".dlg.ngc*"))
+    assert json.loads(r.stdout)["error"]["code"] == "CPL705"
+    r = ncvm("run", EX / "cpl" / "flangedlg.cpl", "--gcode", "/dev/stdout", "--state", tmp_path / "st",
+             cwd=tmp_path)
+    assert r.returncode == 1
+    assert "(!!! INCOMPLETE: TRN002: translation refused: the run did not end normally: CPL705" in r.stdout
+    assert "\nM2\n" not in r.stdout
