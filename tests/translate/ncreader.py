@@ -105,9 +105,9 @@ def read_back(text: str, target: str, tools: dict[int, float]) -> tuple[list[tup
         words = WORD.findall(line.replace(" ", ""))
         gs = [w for w in words if w[0] == "G"]
         machine = "G53" in gs or "SUPA" in words
-        probe = "G38.2" in gs or "MEAS=1" in words
+        probe = "G38.2" in gs or "G38.3" in gs or "MEAS=1" in words
         for g in gs:
-            if g in ("G0", "G1", "G2", "G3", "G38.2"):
+            if g in ("G0", "G1", "G2", "G3"):
                 motion = g
             elif g == "G43":
                 h = next(int(w[1:]) for w in words if w[0] == "H")

@@ -222,12 +222,16 @@ class Translation(CanonSink):
                 return True
         return False
 
-    def _straight(self, code: str, start, end, feed: float | None, src: Src) -> None:
+    def _move_starts(self, start, end, src) -> bool:
+        """What every move does first (the block's M5/M9 wait, the setup is recorded); False: refused."""
         self._flush_after(src)
         self.moves += 1
         if self._frame_unrecorded:
             self._record_setup()
-        if self._hidden and self._moved_unwritten(start, end, src):
+        return not (self._hidden and self._moved_unwritten(start, end, src))
+
+    def _straight(self, code: str, start, end, feed: float | None, src: Src) -> None:
+        if not self._move_starts(start, end, src):
             return
         if self._probe is not None:
             self._probe_move(end, feed, src)
@@ -261,10 +265,14 @@ class Translation(CanonSink):
                 self.refuse(psrc, "a probe move at rapid traverse with no feed rate to probe at")
                 return
             feed = self._feed
-        seen = ("no contact" if trip is None else
-                ", ".join(f"{n}{number(v - self.removed[self.names.index(n)])}" for n, v in trip.items()))
-        self.frozen(f"measured value: the simulated probe switched at {seen}", psrc)
-        self._line(self.t.probe.format(axes=self._axes(goal), feed=self._feed_word(feed)), src)
+        if trip is None:  # the program went on without contact: a probe move that ends without an error
+            self.frozen("measured value: the simulated probe made no contact", psrc)
+            word = self.t.probe_no_contact
+        else:
+            seen = ", ".join(f"{n}{number(v - self.removed[self.names.index(n)])}" for n, v in trip.items())
+            self.frozen(f"measured value: the simulated probe switched at {seen}", psrc)
+            word = self.t.probe
+        self._line(word.format(axes=self._axes(goal), feed=self._feed_word(feed)), src)
 
     def rapid(self, start, end, src):
         self._straight("G0", start, end, None, src)
@@ -273,11 +281,10 @@ class Translation(CanonSink):
         self._straight("G1", start, end, feed, src)
 
     def arc(self, start, end, spec, feed, src):
-        self._flush_after(src)
-        self.moves += 1
-        if self._frame_unrecorded:
-            self._record_setup()
-        if self._hidden and self._moved_unwritten(start, end, src):
+        if not self._move_starts(start, end, src):
+            return
+        if self._probe is not None:
+            self.refuse(self._probe[2], "a probe move along an arc")
             return
         an, bn = self.names[spec.a], self.names[spec.b]
         plane = PLANE_OF.get((an, bn))
