@@ -42,6 +42,21 @@ def _translate(program: Path, target: str, tmp_path: Path):
     return done, out.read_text(), trace_moves(trace)
 
 
+def _rs274_settled(ngc: Path, table: Path, canon: Path) -> tuple[int, str, str]:
+    """rs274's exit code, canon calls and messages once two runs in a row agree: rs274 processes running at
+    the same time here now and then disturb each other's tool table, or die of a signal (as in
+    tests/nc/test_cutter_rs274.py)."""
+    last = None
+    for _ in range(8):
+        proc = subprocess.run([RS274, "-t", str(table), "-g", str(ngc), str(canon)], stdin=subprocess.DEVNULL,
+                              capture_output=True, text=True, timeout=60)
+        now = (proc.returncode, canon.read_text() if canon.exists() else "", proc.stdout + proc.stderr)
+        if now == last and now[0] >= 0:
+            return now
+        last = now
+    pytest.skip("rs274 gives a different answer at every run here; the peer is not usable")
+
+
 def _same(ours, theirs, where: str) -> None:
     assert len(ours) == len(theirs), f"{where}: {len(theirs)} moves read back, {len(ours)} in the run"
     for n, ((k1, e1), (k2, e2)) in enumerate(zip(ours, theirs)):
@@ -64,15 +79,8 @@ def test_rs274_reads_every_translation_with_the_same_motions(tmp_path):
         # simulation's tool offsets
         lengths = {n: 0.0 for n in range(1, 100)} | done.tools
         table.write_text("".join(f"T{n} P{n} Z{length / 25.4:.9f} ;\n" for n, length in lengths.items()))
-        for _ in range(5):  # the peer now and then dies of a signal here (see tests/nc/rs274peer.py)
-            proc = subprocess.run([RS274, "-t", str(table), "-g", str(ngc), str(canon)], stdin=subprocess.DEVNULL,
-                                  capture_output=True, text=True, timeout=60)
-            if proc.returncode >= 0:
-                break
-        if proc.returncode < 0:
-            pytest.skip(f"rs274 keeps crashing (signal {-proc.returncode}); the peer is not usable here")
-        assert proc.returncode == 0, f"{program}: rs274: {proc.stdout[-300:]} {proc.stderr[-300:]}"
-        calls = canon.read_text()
+        rc, calls, said = _rs274_settled(ngc, table, canon)
+        assert rc == 0, f"{program}: rs274: {said[-300:]}"
         assert "PROGRAM_END()" in calls, f"{program}: rs274 did not reach the program end"
         _same(ours, rs274_moves(calls), str(program))
         compared += len(ours)
