@@ -32,7 +32,8 @@ def test_a_failed_run_writes_nothing_and_keeps_the_old_file(tmp_path):
              "--state", tmp_path / "st", cwd=tmp_path)
     assert r.returncode == 0, r.stderr
     text = out.read_text()
-    assert "(FROZEN: operator input INP[DA] = 140.0 at flangedlg.cpl:" in text and text.endswith("M2\n")
+    # marked with the line that asked the operator (90 INP(DA) ... is line 11 of the file)
+    assert "(FROZEN: operator input INP[DA] = 140.0 at flangedlg.cpl:11;" in text and text.endswith("M2\n")
 
 
 def test_sympas_translation_ends_with_a_program_end(tmp_path):

@@ -18,7 +18,7 @@ def test_a_plc_input_read_marks_the_block_it_decides(tmp_path):
     program.write_text("10 IF IC(5,1,2) THEN\nN20 G1 X10 F100\n30 ELSE\nN40 G1 X-10 F100\n50 ENDIF\nN60 M30\n")
     translate(program, tmp_path / "b.ngc", options=RunOptions(state_dir=tmp_path / "st"))
     text = (tmp_path / "b.ngc").read_text()
-    assert "(FROZEN: PLC input IC" in text and "read as 0 at branch.cpl:4;" in text
+    assert "(FROZEN: PLC input IC" in text and "read as 0 at branch.cpl:1;" in text  # the IF that read it
     assert "G1 X-10 Y0 Z0 F100" in text and "X10 " not in text
     assert "(1 decisions of the run are frozen" in text
 
