@@ -49,11 +49,15 @@ class Target:
     #: characters a comment may not hold, with their replacement
     comment_escapes: dict[str, str] = field(default_factory=dict)
 
-    def note(self, text: str) -> str:
-        """``text`` as a comment line of this control."""
+    def escape(self, text: str) -> str:
+        """``text`` without the characters that would end this control's comment or message."""
         for bad, good in self.comment_escapes.items():
             text = text.replace(bad, good)
-        return self.comment.format(text)
+        return text
+
+    def note(self, text: str) -> str:
+        """``text`` as a comment line of this control."""
+        return self.comment.format(self.escape(text))
 
 
 _PARENS = {"(": "[", ")": "]"}

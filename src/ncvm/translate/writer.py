@@ -75,7 +75,6 @@ class Translation(CanonSink):
         self._tool_written: tuple[int, float] = (0, 0.0)
         self._plane = "G17"
         self._feed: float | None = None
-        self._speed: float | None = None
         self._after: list[tuple[str, Src]] = []  # M5 / M9 of a block, written after its move
         self._probe: tuple[dict | None, dict | None, Src] | None = None
         self._frozen: list[tuple[str, Src | None]] = []
@@ -325,7 +324,6 @@ class Translation(CanonSink):
             return
         self._flush_after()
         word = "M3" if direction > 0 else "M4"
-        self._speed = speed
         self._line(f"{word} S{number(speed)}", src)
 
     def coolant(self, mode, src):
@@ -342,7 +340,7 @@ class Translation(CanonSink):
 
     def message(self, text, src):
         self._flush_after()
-        self._line(self.t.message.format(_plain(text, self.t)), src)
+        self._line(self.t.message.format(self.t.escape(text)), src)
 
     def stop(self, kind, src):
         self._flush_after()
@@ -403,8 +401,3 @@ class Translation(CanonSink):
             out.append(note(f"axes {' '.join(extra)} have no address on {t.title} and are left out"))
         return out
 
-
-def _plain(text: str, target: Target) -> str:
-    for bad, good in target.comment_escapes.items():
-        text = text.replace(bad, good)
-    return text
