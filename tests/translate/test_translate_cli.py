@@ -5,6 +5,7 @@ writes nothing, the header, the machine frame, source comments, rw_SymPas' progr
 from __future__ import annotations
 
 import json
+import os
 import subprocess
 import sys
 from pathlib import Path
@@ -112,3 +113,28 @@ def test_run_gcode_is_the_linuxcnc_translation(tmp_path):
     assert r.returncode == 1
     assert "(!!! INCOMPLETE: TRN002: translation refused: the run did not end normally: CPL705" in r.stdout
     assert "\nM2\n" not in r.stdout
+
+
+def test_outputs_through_links_and_stdout_are_never_replaced(tmp_path):
+    """A symbolic link to the output stays a link (its file is replaced), with the permissions a new file
+    gets; a name that reaches this process's own stdout (here a link to /proc/self/fd/1 with stdout in a
+    file) is written as a stream into that file, never replaced by another file."""
+    real = tmp_path / "real.ngc"
+    real.write_text("old\n")
+    real.chmod(0o644)
+    (tmp_path / "link.ngc").symlink_to("real.ngc")
+    r = ncvm("translate", EX / "din" / "face_and_circle.din", "-o", "link.ngc", "--state", "st", cwd=tmp_path)
+    assert r.returncode == 0, r.stderr
+    assert (tmp_path / "link.ngc").is_symlink() and real.read_text().endswith("M2\n")
+    assert real.stat().st_mode & 0o777 == 0o644
+    (tmp_path / "out").symlink_to("/proc/self/fd/1")
+    with open(tmp_path / "stdout.txt", "w") as f:
+        inode = os.fstat(f.fileno()).st_ino
+        p = subprocess.run([sys.executable, "-m", "ncvm", "run", str(EX / "din" / "face_and_circle.din"), "--gcode",
+                            "out", "--state", "st"], cwd=tmp_path, stdout=f, stderr=subprocess.PIPE, text=True,
+                           timeout=120)
+    assert p.returncode == 0, p.stderr
+    text = (tmp_path / "stdout.txt").read_text()
+    assert "(written by ncvm from face_and_circle.din" in text and text.endswith("M2\n")
+    assert (tmp_path / "out").is_symlink() and not list(tmp_path.glob(".*"))
+    assert (tmp_path / "stdout.txt").stat().st_ino == inode  # the file stdout goes to, not a new one

@@ -42,10 +42,24 @@ def written_by_ncvm(head: str) -> bool:
 
 
 def _is_stream(path: Path) -> bool:
+    """Whether ``path`` must be written as it comes: not a regular file (a pipe, a device), a name under
+    /dev or /proc (``/dev/stdout`` redirected into a file is still stdout: never replaced), or a file
+    this process already writes through its stdout or stderr."""
+    if any(str(p).startswith(("/dev/", "/proc/")) for p in (path.absolute(), Path(os.path.realpath(path)))):
+        return True
     try:
-        return not stat.S_ISREG(os.stat(path).st_mode)
+        st = os.stat(path)
     except FileNotFoundError:
         return False
+    if not stat.S_ISREG(st.st_mode):
+        return True
+    for fd in (1, 2):
+        try:
+            if os.path.samestat(st, os.fstat(fd)):
+                return True
+        except OSError:
+            pass
+    return False
 
 
 class TranslationFile:
@@ -54,6 +68,8 @@ class TranslationFile:
     def __init__(self, path: str | Path, target: Target, program: str, machine: str, frame: str = "work",
                  source_comments: bool = False, scenario_given: bool = False):
         self.path = Path(path)
+        #: the file replaced at the end: through symbolic links (a link stays a link)
+        self.real = Path(os.path.realpath(self.path))
         self.target = target
         self.program, self.machine = program, machine
         self.stream = _is_stream(self.path)
@@ -62,7 +78,7 @@ class TranslationFile:
                 self._body = None
                 self._f = open(self.path, "w", encoding="ascii", errors="replace")
             else:
-                fd, name = tempfile.mkstemp(dir=self.path.parent, prefix=f".{self.path.name}.", suffix=".body")
+                fd, name = tempfile.mkstemp(dir=self.real.parent, prefix=f".{self.real.name}.", suffix=".body")
                 self._body = Path(name)
                 self._f = os.fdopen(fd, "w", encoding="ascii", errors="replace")
         except OSError as e:
@@ -131,7 +147,7 @@ class TranslationFile:
     def _assemble(self) -> None:
         """Intro + header + body (+ the tape wrapper) into a temporary file beside the output, moved into place."""
         header = self._intro() + self.writer.header(self.program, self.machine)
-        fd, name = tempfile.mkstemp(dir=self.path.parent, prefix=f".{self.path.name}.", suffix=".part")
+        fd, name = tempfile.mkstemp(dir=self.real.parent, prefix=f".{self.real.name}.", suffix=".part")
         try:
             with os.fdopen(fd, "w", encoding="ascii", errors="replace") as f, open(self._body, encoding="ascii") as b:
                 f.write("".join(line + "\n" for line in header))
@@ -139,7 +155,18 @@ class TranslationFile:
                     f.write(line)
                 if self.target.wrapper:
                     f.write(self.target.wrapper + "\n")
-            os.replace(name, self.path)
+            os.chmod(name, _mode(self.real))
+            os.replace(name, self.real)
         except BaseException:
             Path(name).unlink(missing_ok=True)
             raise
+
+
+def _mode(path: Path) -> int:
+    """The permissions of the file replaced, or those a new file gets (not the temporary file's 0600)."""
+    try:
+        return stat.S_IMODE(os.stat(path).st_mode)
+    except FileNotFoundError:
+        umask = os.umask(0)
+        os.umask(umask)
+        return 0o666 & ~umask
