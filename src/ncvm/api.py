@@ -23,12 +23,13 @@ from .runtime.checks import Checks
 from .runtime.memory import memory_limit
 from .runtime.session import RunOptions, RunSinks, Session, run_guarded, set_default_sinks
 from .sinks.areas import zone_check
-from .sinks.gcode import GcodeWriter
 from .sinks.limits import LimitCheck
 from .sinks.plot import PlotPoints
 from .sinks.toolpath import MotionSummary, ToolpathRecorder
 from .sinks.trace import JsonlTrace
 from .source import read_text
+from .translate.output import TranslationFile
+from .translate.targets import LINUXCNC
 
 
 def read_source(path: str | Path) -> str:
@@ -142,22 +143,26 @@ def _jsonable(v: Any) -> Any:
     return str(v)
 
 
-def run_sinks(machine: Machine, options: RunOptions) -> RunSinks:
+def run_sinks(machine: Machine, options: RunOptions, program: str = "the program") -> RunSinks:
     """The sinks of a run: the toolpath recorder and the soft-limit check always; the trace, the G-code
-    and the plot points when the options ask for them; then the caller's ``extra_sinks``."""
+    and the plot points when the options ask for them; then the caller's ``extra_sinks``. The G-code is
+    the LinuxCNC translation of ``program`` (docs/translate.md), put in place by :func:`run_program`."""
     recorder = ToolpathRecorder(keep=options.keep_toolpath)
     checks = Checks(area_check=partial(zone_check, recorder=recorder))
     checks.add(LimitCheck(machine.axes, recorder))  # reported first, before the front end's checks
     canon: list[CanonSink] = [recorder]
     if options.trace:
         canon.append(JsonlTrace(options.trace))
+    gcode = None
     if options.gcode:
-        canon.append(GcodeWriter(options.gcode))
+        gcode = TranslationFile(options.gcode, LINUXCNC, program, machine.name,
+                                scenario_given=bool(options.scenario or machine.scenario))
+        canon.append(gcode.writer)
     canon.extend(options.extra_sinks)
     plot = PlotPoints(recorder, frame=options.plot_frame) if options.plot else None
     if plot is not None:
         canon.append(plot)  # told of the work frame and of the channel (rw_SymPas task) of the moves
-    return RunSinks(canon, recorder, checks, plot)
+    return RunSinks(canon, recorder, checks, plot, gcode)
 
 
 #: a Session built directly (tests, tools driving a front end) gets the same sinks as a run
@@ -182,7 +187,7 @@ def run_program(path: str | Path, dialect: str | None = None, machine: Machine |
             m = dataclasses.replace(m, scenario=sorted([*m.scenario, *load_scenario(options.scenario, m.axis_names)],
                                                        key=lambda e: e.time))
         with StateLock(options.state_dir):  # the controller's memory: one run at a time, refused at once
-            sinks = run_sinks(m, options)
+            sinks = run_sinks(m, options, Path(path).name)
             session = Session(m, options, dialect=d, sinks=sinks)
             for sink in sinks.canon:
                 if isinstance(sink, JsonlTrace):  # the trace names the user's source lines (a CL 800 .cl8)
@@ -192,8 +197,15 @@ def run_program(path: str | Path, dialect: str | None = None, machine: Machine |
                 error = run_guarded(session, lambda: front.run(str(path), text, session))
             except CompileFailed as e:
                 error = e.diagnostics[0]
+            except BaseException:
+                if sinks.gcode is not None:
+                    sinks.gcode.close()
+                raise
             finally:
                 session.close()
+            if sinks.gcode is not None:  # in place, or nothing (a stream: marked incomplete)
+                refused = sinks.gcode.complete(error)
+                error = error or refused
     return RunResult.of(session, sinks.recorder, error)
 
 

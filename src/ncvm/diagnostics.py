@@ -158,6 +158,10 @@ NCVM_CODES = {
     "RUN005": "waiting for ever (motion held, or every task waiting, with no way to go on)",
     "RUN006": "memory limit reached (--max-memory)",
     "RUN007": "a program of a batch could not be set up (its machine file, the state directory; docs/batch.md)",
+    "TRN001": "translation refused: the target control has no way to say what the run did (a probe move, a "
+              "plane, an axis, a zero offset); no output written",
+    "TRN002": "translation refused: the run did not end normally, or needs input it was not given; no output "
+              "written",
     "IO001": "file access outside the controller's file root",
     "NEST001": "statements or expressions nested deeper than ncvm reads where the manual sets no limit "
                "(64 levels, 16 loops; docs/decisions.md)",

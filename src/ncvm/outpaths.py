@@ -167,7 +167,7 @@ def _is_program(path: str, program_path) -> bool:
     """An existing file in a folder of the program path with no extension (a CPL sub-program) or a program
     extension, unless ncvm wrote it (its flat G-code, written again by the next run)."""
     from .dialects import EXTENSIONS
-    from .sinks.gcode import HEADER
+    from .translate.output import MARK, written_by_ncvm
 
     real = Path(os.path.realpath(path))
     if not real.is_file() or (real.suffix and real.suffix.lower() not in EXTENSIONS):
@@ -176,7 +176,7 @@ def _is_program(path: str, program_path) -> bool:
         return False
     try:
         with open(real, "rb") as f:
-            return not f.read(len(HEADER)).decode("latin-1") == HEADER
+            return not written_by_ncvm(f.read(len(MARK) + 8).decode("latin-1"))
     except OSError:
         return False
 

@@ -24,7 +24,7 @@ class Calls(CanonSink):
     def __init__(self):
         self.calls = []
 
-    def probe(self, trip, src):
+    def probe(self, trip, target, src):
         self.calls.append(("probe", trip, src.line))
 
     def feed(self, start, end, feed, src):

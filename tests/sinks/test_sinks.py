@@ -44,11 +44,15 @@ def test_trace_has_one_line_per_call_with_source_line(run_text, tmp_path):
 
 
 def test_gcode_export_reproduces_the_toolpath(run_text, tmp_path):
-    """The flat G-code, run again, gives the same moves, lengths and extents in machine coordinates."""
+    """The G-code (the LinuxCNC translation, in work coordinates), run again on the same machine, gives the
+    same moves, lengths and extents in machine coordinates; it writes no offset table (issue 16: the G10
+    that zeroed G54 overwrote the receiving control's offsets)."""
     ngc = tmp_path / "flat.ngc"
     first = run_text(PART, machine=shop_machine(), gcode=ngc)
     text = ngc.read_text()
-    assert "G10 L2 P1 X0 Y0 Z0\nG54\n" in text  # offsets cleared: the numbers are machine coordinates
+    moves = [line for line in text.splitlines() if line.startswith(("G0", "G1", "G2", "G3"))]
+    assert "G10" not in text and "\nG54\n" in text  # the program's zero offset selected, never written
+    assert not any("X100" in line for line in moves)  # the program's numbers, without G54's X100
     assert "G91" not in text and "G18" in text and "G19" in text
     assert "G4 P1.5" in text and "T1 M6" in text and "M3 S1200" in text
     again = run_text(text, name="flat.din", machine=shop_machine())

@@ -10,7 +10,8 @@ import click
 
 from ..diagnostics import UsageError
 from ..runtime.memory import parse_size
-from . import report, run_batch
+from . import report
+from .batch import run_batch
 
 
 def run_batch_command(programs, dialect, machine, state_dir, as_json, max_steps, max_memory, jobs, cluster,

@@ -42,6 +42,41 @@ class ArcSpec:
     turns: int = 0
 
 
+@dataclass(frozen=True, slots=True)
+class Frame:
+    """What lies between the program's coordinates and the machine's, for the moves that follow (canon call
+    :meth:`CanonSink.frame`, made when it changes, never per move).
+
+    ``work_offset`` is the selected zero offset ("G54".."G59"; "G53" for a move programmed in machine
+    coordinates; None when none is selected) and ``zero`` its values per axis; ``shift`` is what the control
+    adds on top of it (G92, SINUMERIK programmable / external / DRF / PRESET offsets, CPL shifts);
+    ``tool_length`` acts on axis ``tool_axis`` and came from tool offset number ``tool_offset`` (H or D
+    word; 0: none); ``transformed`` tells that a coordinate transformation (rotation, scaling, mirroring)
+    sits between the programmed position and the offsets.
+    """
+
+    work_offset: str | None
+    zero: tuple[float, ...]
+    shift: tuple[float, ...]
+    tool_length: float = 0.0
+    tool_axis: int | None = None
+    tool_offset: int = 0
+    transformed: bool = False
+
+    def removed(self) -> tuple[float, ...]:
+        """Per axis, what the work coordinates take off the machine's: the zero offset and the tool length
+        (the shift and any transformation stay in them, as programmed moves of the program)."""
+        out = list(self.zero)
+        if self.tool_axis is not None:
+            out[self.tool_axis] += self.tool_length
+        return tuple(out)
+
+
+def plain_frame(n_axes: int) -> Frame:
+    """The frame of a run before any offset: work coordinates are the machine's."""
+    return Frame(None, (0.0,) * n_axes, (0.0,) * n_axes)
+
+
 @dataclass(slots=True)
 class BatchArcs:
     """The arcs among a :class:`MoveBatch`'s moves, as columns (all in one plane, the ``a``-``b`` plane)."""
@@ -122,14 +157,17 @@ class CanonSink:
         move may be timed before or after its call, as its look-ahead window completes. All three None:
         the moves from now on are timed by the front end's own model (the rw_SymPas card), not reported."""
 
+    def frame(self, frame: Frame, src: Src | None, whole_run: bool = False) -> None:
+        """The coordinate frame changed (zero offset selected or rewritten, tool length, shift, G53 move):
+        the moves that follow are in ``frame``; their positions stay machine coordinates. ``whole_run``: the
+        frame holds for every move of the run, those before it too (a rw_SymPas card tells it at the end)."""
+
+    def frozen(self, what: str, src: Src | None) -> None:
+        """The run read an input from outside the program (``what`` names it: a key, a PLC input, a scenario
+        event, a measured value, a random number): the path from here on may depend on it."""
+
     def dwell(self, seconds: float, src: Src) -> None:
         """Wait with axes standing still."""
-
-    def frame(self, offsets: tuple, src: Src | None, whole_run: bool = False) -> None:
-        """The work frame changed: from the next move on, machine position ``m`` is at ``m - offsets`` in the
-        workpiece's coordinates (zero offsets, G92 and tool length; a rotation or scaling the program asks
-        for stays in the drawing). ``whole_run``: these offsets hold for every move of the run, those already
-        made included (a control that knows its zero point only at the end: the rw_SymPas card)."""
 
     def channel(self, number: int, src: Src | None) -> None:
         """The moves that follow are made by channel ``number``: one of the programs a control runs at the
@@ -150,10 +188,12 @@ class CanonSink:
     def aux(self, code: str, src: Src) -> None:
         """An auxiliary function handed to the PLC (e.g. a machine-specific M function)."""
 
-    def probe(self, trip: dict[str, float] | None, src: Src) -> None:
+    def probe(self, trip: dict[str, float] | None, target: dict[str, float] | None, src: Src) -> None:
         """A probe move (LinuxCNC's STRAIGHT_PROBE: CPL G75/G275/G375, SINUMERIK MEAS M) follows, cut where
         the probe switches: ``trip`` is the latched machine position of each measured axis, None when the
-        probe does not switch (the move reaches its target)."""
+        probe does not switch (the move reaches its target); ``target`` the machine end point the block
+        programmed for its moving axes (where a probe search ends without contact), None for a measurement
+        that does not stop at the probe's contact (on-the-fly measurement, a fixed stop)."""
 
     def message(self, text: str, src: Src) -> None:
         """An operator message (MSG, comment directed at the operator)."""
@@ -168,8 +208,8 @@ class CanonSink:
         """The run is over (normally or by a fault): flush files."""
 
 
-_METHODS = ("begin", "rapid", "feed", "arc", "move_batch", "timing", "dwell", "frame", "channel", "tool_change",
-            "tool_offset", "spindle", "coolant", "aux", "probe", "message", "stop", "program_end", "end")
+_METHODS = ("begin", "rapid", "feed", "arc", "move_batch", "timing", "frame", "frozen", "channel", "dwell",
+            "tool_change", "tool_offset", "spindle", "coolant", "aux", "probe", "message", "stop", "program_end", "end")
 
 
 class Canon:
@@ -219,9 +259,11 @@ def _overrides(sink: CanonSink, name: str) -> bool:
 def _two_maker(name: str):
     """``make(f, g)`` -> a function calling f then g with canon call ``name``'s parameters spelled out:
     no ``*args`` packing on the hot path (every move calls it). Compiled once per call name."""
-    params = ", ".join(p for p in inspect.signature(getattr(CanonSink, name)).parameters if p != "self")
+    sig = [p for p in inspect.signature(getattr(CanonSink, name)).parameters.values() if p.name != "self"]
+    params = ", ".join(p.name for p in sig)
+    heads = ", ".join(p.name if p.default is p.empty else f"{p.name}={p.default!r}" for p in sig)
     namespace: dict = {}
-    exec(f"def make(f, g):\n    def two({params}):\n        f({params})\n        g({params})\n    return two\n",
+    exec(f"def make(f, g):\n    def two({heads}):\n        f({params})\n        g({params})\n    return two\n",
          namespace)
     return namespace["make"]
 

@@ -32,7 +32,7 @@ from operator import add, sub
 from ..diagnostics import RuntimeFault, Span
 from ..machine.model import Machine, PlcImage, SimClock
 from . import arcs, cutter, threads
-from .canon import ArcSpec, Canon, Src
+from .canon import ArcSpec, Canon, Frame, Src
 from .dynamics import AxisDynamics, arc_limits, path_limits
 from .fastmove import make_linear
 from .planner import LOOKAHEAD, POSITIONING, STOP_END, Planner, arc_tangents
@@ -126,6 +126,7 @@ class NcKernel:
         self.next_tool = 0
         self.work_offset = "G54"
         self.tool_length = 0.0
+        self.tool_offset = 0  # the H (D) number the tool length came from
         self.tool_axis = self.axis_of.get("Z")
         self.g92 = [0.0] * self.n_axes
         #: offsets a control adds on top of the selected work offset (SINUMERIK programmable, external,
@@ -144,8 +145,9 @@ class NcKernel:
         #: the block number of the last programmed stop (None: the block has none)
         self.stop_block: int | None = None
         canon.begin(names, self.machine_pos)
-        self._framed = tuple(self.offset_vec)
-        canon.frame(self._framed, None)
+        self._frame: Frame | None = None
+        self._announce_frame(None)
+
 
     def use_profile(self, profile: Profile) -> None:
         """Read blocks as the control of ``profile`` does (a dialect selects its control's profile)."""
@@ -195,14 +197,31 @@ class NcKernel:
             vec[self.tool_axis] += self.tool_length
         self.offset_vec = vec
 
-    def _set_offsets_keep_machine(self) -> None:
-        """After an offset change the tool stays put; the programmed position moves (and the sinks are told
-        of the new work frame)."""
+    def _set_offsets_keep_machine(self, src: Src | None = None) -> None:
+        """After an offset change the tool stays put; the programmed position moves."""
         self._recompute_offsets()
         self.prog = self.program_position(self.machine_pos)
-        if self.offset_vec != list(self._framed):
-            self._framed = tuple(self.offset_vec)
-            self.canon.frame(self._framed, None)
+        self._announce_frame(src)
+
+    def frame(self, work_offset: str | None = "") -> Frame:
+        """The coordinate frame now (``work_offset`` given: with that name and no zero offset, a G53 move)."""
+        if work_offset == "":
+            work_offset = self.work_offset
+            zero = tuple(self.machine.offset(work_offset)) if work_offset else (0.0,) * self.n_axes
+        else:
+            zero = (0.0,) * self.n_axes
+        tool = self.tool_length if self.tool_axis is not None else 0.0
+        shift = tuple(o - z - (tool if i == self.tool_axis else 0.0)
+                      for i, (o, z) in enumerate(zip(self.offset_vec, zero)))
+        return Frame(work_offset, zero, shift, self.tool_length, self.tool_axis, self.tool_offset,
+                     self.transform is not None)
+
+    def _announce_frame(self, src: Src | None) -> None:
+        """Tell the canon the frame when it changed (offset changes only: nothing per move)."""
+        frame = self.frame()
+        if frame != self._frame:
+            self._frame = frame
+            self.canon.frame(frame, src)
 
     def program_position(self, mcs) -> list[float]:
         """The programmed position (mm) that puts the machine at ``mcs`` with the active offsets and transform."""
@@ -225,9 +244,9 @@ class NcKernel:
             self.linear = self._fast_linear if transform is None else _transformed_linear
         self._set_offsets_keep_machine()
 
-    def set_work_offset(self, name: str | None) -> None:
+    def set_work_offset(self, name: str | None, src: Src | None = None) -> None:
         self.work_offset = name
-        self._set_offsets_keep_machine()
+        self._set_offsets_keep_machine(src)
 
     def set_additive_offset(self, vec) -> None:
         """Offsets added to the selected work offset (per axis); the tool stays where it is."""
@@ -238,9 +257,11 @@ class NcKernel:
         """Re-read the work offset tables after a program changed them; the tool stays where it is."""
         self._set_offsets_keep_machine()
 
-    def set_tool_length(self, length: float, src: Src) -> None:
+    def set_tool_length(self, length: float, src: Src, number: int = 0) -> None:
+        """Tool length compensation ``length`` on the tool axis, from tool offset ``number`` (H or D; 0: none)."""
         self.tool_length = length
-        self._set_offsets_keep_machine()
+        self.tool_offset = number if length else 0
+        self._set_offsets_keep_machine(src)
         self.canon.tool_offset(length, src)
 
     def shown_position(self) -> list[float]:
@@ -621,6 +642,9 @@ class NcKernel:
             prog = self.program_position(end)
         else:
             end = tuple(map(add, self.transform.forward(prog), self.offset_vec))
+        if machine_coords:  # the move's frame is the machine's (G53), for this move only
+            self.canon.frame(self.frame("G53"), src)
+            self._frame = None
         if motion < 2:
             if motion and self.feed <= 0.0:
                 self.fault("NC006", self.no_feed_message(1), src)
@@ -629,6 +653,8 @@ class NcKernel:
             self._arc(motion == 2, start, end, words, src, prog)
         self.prog = prog
         self.machine_pos = end
+        if machine_coords:
+            self._announce_frame(src)
 
     def _arc(self, cw: bool, start, end, words, src: Src, prog) -> None:
         if self.feed <= 0.0:

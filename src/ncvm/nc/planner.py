@@ -36,9 +36,10 @@ from __future__ import annotations
 import math
 from struct import pack as _pack
 
-import numpy as np
-
+from ..lazy import lazy
 from .dynamics import lengths_columns, straight_limits_columns, trapezoid_time_columns
+
+np = lazy("numpy")
 
 LOOKAHEAD = "lookahead"
 REST = "rest-to-rest"
@@ -72,7 +73,7 @@ class Planner:
         self.clock = clock
         self.canon = canon  # told each timed move's time and speeds (canon ``timing``)
         self.dyn = dyn  # the axes' limits (nc.dynamics.AxisDynamics)
-        self.accel = np.asarray(dyn.accel, dtype=float)
+        self.accel = tuple(map(float, dyn.accel))  # an array when a chunk is planned: no numpy for a run without moves
         self.n = len(dyn.accel)
         self.width = 4 + self.n  # the numbers of one row
         self.model = model
@@ -189,7 +190,7 @@ class Planner:
             stop = ((flags[:-1] & STOP_END) | (flags[1:] & STOP_START)) != 0
             if not stop.all():
                 j[1:p] = junction_speeds2(m[4 + n:4 + 2 * n, :-1], m[4:4 + n, 1:], v[:-1], v[1:], stop,
-                                          self.accel, self.tolerance)
+                                          np.asarray(self.accel), self.tolerance)
         j[0] = self.entry2
         if not j.any():  # every move from rest to rest (exact stop, the rest-to-rest model)
             return j

@@ -58,6 +58,15 @@ def stop_words(kernel, words: dict, stop: dict[str, float]) -> None:
             words[name] = (target[i] if kernel.absolute else target[i] - kernel.prog[i]) / kernel.scale
 
 
-def announce(canon, latch: ProbeLatch, src) -> None:
-    """The canon call of a probe move, made just before its (cut) move goes out."""
-    canon.probe(None if latch.position is None else dict(latch.position), src)
+def announce(canon, latch: ProbeLatch, src, target: dict[str, float] | None = None) -> None:
+    """The canon call of a probe move, made just before its (cut) move goes out; ``target`` as in
+    :meth:`ncvm.nc.canon.CanonSink.probe`."""
+    canon.probe(None if latch.position is None else dict(latch.position), target, src)
+
+
+def programmed_end(kernel, words: dict) -> dict[str, float]:
+    """The machine end point of a block's straight move as programmed (before :func:`stop_words` cuts it),
+    for the axes the block names."""
+    prog, _ = kernel._target(words, False)
+    base = prog if kernel.transform is None else kernel.transform.forward(prog)
+    return {name: base[i] + kernel.offset_vec[i] for name, i in kernel.axis_of.items() if name in words}

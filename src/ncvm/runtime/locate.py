@@ -11,6 +11,7 @@ files, SINUMERIK after its call frames, rw_SymPas after its routines.
 
 from __future__ import annotations
 
+import sys
 from collections.abc import Mapping
 from types import FrameType, TracebackType
 from typing import TYPE_CHECKING, NamedTuple
@@ -46,3 +47,16 @@ def fault_line(tb: TracebackType | None, source: PySource) -> int | None:
     """The program line where the innermost frame of ``source``'s code stopped; None when it is not in ``tb``."""
     frames = generated_frames(tb, {source.filename: source})
     return frames[-1].line if frames else None
+
+
+def running_line(sources: Mapping[str, PySource]) -> tuple[str, int] | None:
+    """The file name and program line of the innermost frame of generated code running now (None: none):
+    where a run reads an input, for the mark of a frozen decision (ncvm translate). A walk up the stack,
+    made only when such an input is read."""
+    frame = sys._getframe(1)
+    while frame is not None:
+        src = sources.get(frame.f_code.co_filename)
+        if src is not None:
+            return frame.f_code.co_filename, src.source_line(frame.f_lineno)
+        frame = frame.f_back
+    return None

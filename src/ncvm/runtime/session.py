@@ -73,6 +73,7 @@ class RunSinks:
     recorder: MoveLog | None = None
     checks: Checks = field(default_factory=Checks)
     plot: Any = None
+    gcode: Any = None  # the --gcode translation file (translate.output.TranslationFile), completed by the API
 
 
 #: the sinks of a session built without them: api.py installs its choice when it is imported (the ncvm

@@ -65,10 +65,10 @@ class PlotPoints(CanonSink):
         recorder.watch(self)
 
     # -- canon calls --------------------------------------------------------
-    def frame(self, offsets, src, whole_run: bool = False) -> None:
+    def frame(self, frame, src, whole_run: bool = False) -> None:
         if self.frame_asked != "work":
             return
-        new = np.asarray(offsets, dtype=float)
+        new = np.asarray(frame.removed(), dtype=float)  # the zero offset and the tool length, as the trace's work
         if whole_run:  # the points held so far move from the frame they were drawn in to this one
             if self._frames:
                 self._shift(new - self._frames[-1][1])

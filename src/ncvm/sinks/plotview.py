@@ -14,7 +14,9 @@ from __future__ import annotations
 from pathlib import Path
 from typing import TYPE_CHECKING, Sequence
 
-import numpy as np
+from ..lazy import lazy
+
+np = lazy("numpy")
 
 if TYPE_CHECKING:
     from .plot import PlotPoints

@@ -4,6 +4,10 @@ A move's line also holds what the path planner made of it (:mod:`ncvm.nc.planner
 ``v_entry`` and ``v_exit`` (path speed at its start and end, mm/min). The planner times a move when its
 look-ahead window is complete, so lines wait here until the moves before and including them are timed:
 at most the planner's window and chunk of moves, and every line is out when the run ends.
+
+Every motion carries its end point twice: ``end`` in machine coordinates (every offset applied) and
+``work`` in the program's coordinates (the selected zero offset and the tool length removed, as the
+kernel's canon call ``frame`` gives them); docs/trace.md describes the records.
 """
 
 from __future__ import annotations
@@ -27,6 +31,7 @@ class JsonlTrace(CanonSink):
         self._planned = True  # the path planner times the moves (not a card of its own)
         #: where a place the NC ran stands in the user's source (the API gives it Session.source_place)
         self.place = None
+        self.removed: tuple[float, ...] = ()  # what work coordinates take off the machine's (zero offset, tool)
 
     def _write(self, call: str, src, **data) -> None:
         rec = {"call": call, **data}
@@ -72,18 +77,27 @@ class JsonlTrace(CanonSink):
     def _pos(self, p) -> dict:
         return {n: round(v, 6) for n, v in zip(self.names, p)}
 
+    def _work(self, p) -> dict:
+        return {n: round(v - r, 6) for n, v, r in zip(self.names, p, self.removed)}
+
     def begin(self, axis_names, start):
         self.names = tuple(axis_names)
+        self.removed = (0.0,) * len(self.names)
         self._write("begin", None, position=self._pos(start))
 
+    def frame(self, frame, src, whole_run=False):
+        if whole_run:  # the plot's frame for a whole rw_SymPas run: the moves are written already
+            return
+        self.removed = frame.removed()
+
     def rapid(self, start, end, src):
-        self._move("rapid", src, start, end, end=self._pos(end))
+        self._move("rapid", src, start, end, end=self._pos(end), work=self._work(end))
 
     def feed(self, start, end, feed, src):
-        self._move("feed", src, start, end, end=self._pos(end), feed=feed)
+        self._move("feed", src, start, end, end=self._pos(end), work=self._work(end), feed=feed)
 
     def arc(self, start, end, spec, feed, src):
-        self._move("arc", src, start, end, end=self._pos(end), center=[spec.center[0], spec.center[1]],
+        self._move("arc", src, start, end, end=self._pos(end), work=self._work(end), center=[spec.center[0], spec.center[1]],
                    plane=[self.names[spec.a], self.names[spec.b]], cw=spec.cw, turns=spec.turns, feed=feed)
 
     def dwell(self, seconds, src):
@@ -103,6 +117,14 @@ class JsonlTrace(CanonSink):
 
     def aux(self, code, src):
         self._write("aux", src, code=code)
+
+    def probe(self, trip, target, src):
+        removed = dict(zip(self.names, self.removed))
+        self._write("probe", src, trip=trip, target=None if target is None else
+                    {n: round(v - removed[n], 6) for n, v in target.items()})
+
+    def frozen(self, what, src):
+        self._write("frozen", src, what=what)
 
     def message(self, text, src):
         self._write("message", src, text=text)

@@ -30,7 +30,7 @@ from ...nc.midmove import MotionRecorder, position_at
 from ...nc.plainrun import execute_segments, plain_segments
 from ...nc.profiles.typ3osa import TYP3OSA
 from ...runtime.buffer import BlockBuffer
-from ...runtime.locate import generated_frames
+from ...runtime.locate import generated_frames, running_line
 from ...runtime.memory import out_of_memory
 from . import values as V
 from .axiswords import check_words, refused_blocks, refusing
@@ -108,6 +108,7 @@ class CplRuntime:
         self._pictures = 0
         if session.options.screen_dir is not None:
             self.io.screen.on_wait = self.save_wait_picture
+        self.io.screen.on_input = self.frozen
         self.globals: dict = {}
         self.perm = Permanents(session)
         #: the motion queue: ``lookahead`` blocks, else the block buffer, whose older half executes when
@@ -322,6 +323,12 @@ class CplRuntime:
         f = fault(code, detail, file, line, cpl, text=text, column=col or self.first_column(file, line))
         f.stack = [Frame(Path(p).name, Span(p, ln, c or self.first_column(p, ln))) for p, ln, _, c in frames]
         return f
+
+    def frozen(self, what: str) -> None:
+        """The run read ``what`` from outside the program (a key, an input): canon ``frozen`` at the CPL line
+        running now."""
+        where = running_line({path: uc.src for path, uc in self._codes.items()})
+        self.kernel.canon.frozen(what, Src(*where) if where else None)
 
     def first_column(self, path: str, line: int) -> int:
         """Where the first statement of a physical line starts (a fault in lines generated for no one statement)."""
@@ -563,6 +570,7 @@ class CplRuntime:
     def _apply_events(self, t: float) -> None:
         for ev in self._events.due(t):
             self.machine.plc.inputs[ev.address] = ev.value
+            self.frozen(f"scenario event at {ev.time:g} s: input {ev.address} = {ev.value}")
 
     def wait(self, ic, neg: bool, state, duration):
         """0: condition met at the call; 1: the duration ran out; 2: the condition became true while waiting."""

@@ -45,7 +45,7 @@ def meas_m(channel: Channel, target: int, probe: float, g: tuple, words: dict, l
         value = turned[name] * scale
         end[name] = value if machine else k.offset_vec[i] + (value if absolute else shown[i] + value)
     hit = channel.probe.trigger_point(channel.probe.hit(probe), start, end)
-    announce(k.canon, ProbeLatch(probe, dict(hit)), channel.src(line))
+    announce(k.canon, ProbeLatch(probe, dict(hit)), channel.src(line), dict(end))
     angle = angle_address(channel) if channel.angle_used else None  # resolved into the axis words
     out = {n: v for n, v in words.items() if n not in k.axis_of and n != angle}
     cut = {}

@@ -71,7 +71,7 @@ class Offsets:
                 raise RuntimeFault("NC008", f"D{n}: no tool offset D{n} in TO area {self.data.to_area}")
             tool_type = int(p[1])
             length = p[3] + p[6] + p[9] if 1 <= tool_type <= 9 else p[2] + p[5] + p[8]
-        self.kernel.set_tool_length(length, self.channel.src(line))
+        self.kernel.set_tool_length(length, self.channel.src(line), n)
 
     def cutter_radius(self, kernel, g: int, words, src) -> float:
         """G41/G42: the radius of the selected tool offset D, P4 + P7 (geometry + wear) of a shank or angle

@@ -557,6 +557,7 @@ class Channel:
         for ev in self.scenario.due(now):
             expire(ev.time)
             self._apply_event(ev)
+            self.kernel.canon.frozen(f"scenario event at {ev.time:g} s: {ev}", None)
         expire(now)
 
     def _apply_event(self, ev) -> None:
@@ -580,7 +581,9 @@ class Channel:
         if b not in (1, 2) or not 0 <= k <= 7:
             raise Cl800Error(f"external input {b}.{k} does not exist (byte 1/2, bit 0-7)")
         self.advance_scenario()
-        return bool((self.data.inputs[b] >> k) & 1)
+        value = bool((self.data.inputs[b] >> k) & 1)
+        self.kernel.canon.frozen(f"external input {b}.{k} read as {int(value)}", None)
+        return value
 
     def wait_input(self, byte: int, bit: int, level: bool, what: str) -> None:
         """Simulated time runs on until the scripted input reaches ``level``."""

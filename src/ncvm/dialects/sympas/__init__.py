@@ -12,7 +12,7 @@ import re
 from pathlib import Path
 
 from ...diagnostics import CompileFailed, Diagnostic, Span, UsageError
-from ...nc.canon import Src
+from ...nc.canon import Frame, Src
 from ...source import read_text
 from ..base import Dialect
 from . import qualifiers
@@ -162,7 +162,8 @@ class SympasDialect(Dialect):
             card.scheduler.steps = 0
             end = card.finish()
             # the plot's work frame: the card's zero point at the end, as the figures of card.summary()
-            session.canon.frame(tuple(card.user_shift(a) for a in card.axes), None, True)  # whole_run
+            shift = tuple(card.user_shift(a) for a in card.axes)  # for every move of the run
+            session.canon.frame(Frame(None, shift, (0.0,) * len(shift)), None, True)
             if card.recordings:
                 session.extra["recordings"] = {card.names[ax]: rec.to_json(card.names[ax])
                                                for ax, rec in sorted(card.recordings.items())}

@@ -77,6 +77,7 @@ class Card:
     def apply_event(self, ev) -> None:
         """A scenario event whose time has come."""
         self._scenario_action(ev)()
+        self.canon.frozen(f"scenario event at {ev.time:g} s: {ev}", None)
 
     def _scenario_action(self, ev):
         """The card's action for a scenario event (machine/scenario.py): an axis' digital input, its

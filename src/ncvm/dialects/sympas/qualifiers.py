@@ -66,6 +66,8 @@ def get_qual(card, tk, ax: int, name: str):
         return a.zerooffset
     if name == "axst":
         return axst(card, a, t)
+    if name in ("digi", "ifs"):  # the axis' digital inputs: a run-time input (ncvm translate marks it)
+        card.canon.frozen(f"digital inputs {a.name}.{name} read as {getattr(a, name):#x}", None)
     if name in ("digi", "digo", "ifs"):
         return getattr(a, name)
     if name in ("kp", "ki", "kd", "kpl", "kfca", "kfcv"):

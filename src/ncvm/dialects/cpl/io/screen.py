@@ -249,6 +249,7 @@ class Screen(Graphics):
         self.log: list[str] = []  # the lines shown, kept only while no on_output listener takes them
         self.on_output = None  # called with every line shown, instead of the log (CplIO sends it to session.say)
         self.on_wait = None  # called when SFK or INP starts waiting for the operator (--screen-dir pictures)
+        self.on_input = None  # called with what the operator gave (a run-time input: ncvm translate marks it)
         self.editing: str | None = None  # the variable whose INP field waits for the operator
         self.labels: list[tuple[int, int, str, tuple[int, int, int, int], int]] = []  # GPR texts
 
@@ -388,7 +389,12 @@ class Screen(Graphics):
         finally:
             self.editing = None
         self._write(field.line, field.column, format_items([field.text, value], ljust=self.mode.ljust).text)
+        self._gave(f"operator input INP({name}) = {value}")
         return value
+
+    def _gave(self, what: str) -> None:
+        if self.on_input is not None:
+            self.on_input(what)
 
     @staticmethod
     def _typed(text: str, kind: str, int_digits: int, decimals: int, name: str):
@@ -406,7 +412,10 @@ class Screen(Graphics):
     def INKEY(self) -> int:  # noqa: N802
         """``INKEY``: the code of a key pressed and not yet processed, 0 if none (never waits); keys
         reach the program only while the dialog window is in the foreground."""
-        return self.keys.inkey() if self.foreground else 0
+        code = self.keys.inkey() if self.foreground else 0
+        if code:
+            self._gave(f"key {code} (INKEY)")
+        return code
 
     @property
     def softkey_count(self) -> int:
@@ -428,9 +437,11 @@ class Screen(Graphics):
             if event.kind != "key":
                 continue
             if event.value == KEY_LEVEL_RETURN:
+                self._gave("LEVEL RETURN key (SFK)")
                 return current
             n = event.value - SOFTKEY_BASE
             if 1 <= n <= self.softkey_count:
+                self._gave(f"softkey {n} (SFK)")
                 return (self.softkeys[n - 1] or "") if want_text else n
 
     def CSF(self) -> None:  # noqa: N802

@@ -50,7 +50,9 @@ def f_ic(rt: SystemContext, bit, group=None, index=None) -> bool:
     plc = rt.machine.plc
     if (0 if group is None else group) in OUTPUT_GROUPS:
         return bool(plc.outputs.get(key, plc.inputs.get(key, False)))
-    return bool(plc.inputs.get(key, False))
+    value = bool(plc.inputs.get(key, False))
+    rt.frozen(f"PLC input IC {key} read as {int(value)}")
+    return value
 
 
 def p_ic_set(rt: SystemContext, bit, group=None, index=None, value=None):

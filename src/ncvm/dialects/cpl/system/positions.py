@@ -19,7 +19,7 @@ import copy
 
 from ....diagnostics import UsageError
 from ....machine.scenario import FixedStop, ProbeSwitch, of_type
-from ....nc.probe import ProbeLatch, announce, stop_words
+from ....nc.probe import ProbeLatch, announce, programmed_end, stop_words
 from ..errors import CplError
 from .axes import kernel_index, resolve, to_unit
 from .context import SystemContext
@@ -127,6 +127,7 @@ def probe_block(rt, blk):
     code = int(codes[0])
     c, k = rt.ctl, rt.prepared_kernel()
     words = dict(blk.words)
+    target = programmed_end(k, words) if code == PROBE_INPUT else None
     latch = c.probe = ProbeLatch(code)
     if code == PROBE_INPUT:
         trigger = _next_event(c, ProbeSwitch)
@@ -140,7 +141,7 @@ def probe_block(rt, blk):
             latch.position = {name: event[name]}
             if code == FIXED_STOP:
                 stop_words(k, words, latch.position)
-    announce(rt.kernel.canon, latch, blk.src)
+    announce(rt.kernel.canon, latch, blk.src, target)
     out = copy.copy(blk)
     out.g, out.words = tuple(1 if x in MEASURING_G else x for x in blk.g), words
     return out

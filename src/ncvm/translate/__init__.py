@@ -1,0 +1,57 @@
+"""``ncvm translate``: a program for a modern control (LinuxCNC, SINUMERIK 840D, ISO / Fanuc style) from
+the run of a legacy one, safe by construction (docs/translate.md).
+
+The program runs on the simulated controller with a :class:`~ncvm.translate.writer.Translation` among its
+canon sinks; :class:`~ncvm.translate.output.TranslationFile` puts the output in place only when the run
+ended normally and the writer could say all of it, else :class:`TranslationRefused` says why.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from dataclasses import dataclass
+from pathlib import Path
+
+from ..machine.model import Machine
+from ..runtime.session import RunOptions
+from .output import TranslationFile, TranslationRefused
+from .targets import TARGETS, Target
+
+__all__ = ["TARGETS", "Translated", "TranslationFile", "TranslationRefused", "translate"]
+
+
+@dataclass
+class Translated:
+    """A translation written: where, for which target, and what it holds."""
+
+    path: Path
+    target: Target
+    lines: int
+    moves: int
+    frozen: int
+    probes: int
+    tools: dict[int, float]  # tool offset number -> the (last) length the simulation used
+
+
+def translate(program: str | Path, out: str | Path, target: str = "linuxcnc", frame: str = "work",
+              source_comments: bool = False, dialect: str | None = None, machine: Machine | str | Path | None = None,
+              options: RunOptions | None = None) -> Translated:
+    """Run ``program`` and write it as ``target``'s program to ``out`` (replaced only when all went well)."""
+    from .. import api  # the API puts runs together and writes ``run --gcode`` through this package
+
+    options = dataclasses.replace(options or RunOptions(), keyboard=False, echo=False, gcode=None)
+    m = api.machine_for(program, machine, options.state_dir)
+    file = TranslationFile(out, TARGETS[target], Path(program).name, m.name, frame, source_comments,
+                           scenario_given=bool(options.scenario or m.scenario))
+    try:
+        options.extra_sinks = [*options.extra_sinks, file.writer]
+        result = api.run_program(program, dialect, m, options)
+    except BaseException:
+        file.close()
+        raise
+    refusal = file.complete(result.error)
+    if refusal is not None:
+        raise TranslationRefused(refusal)
+    w = file.writer
+    return Translated(Path(out), file.target, w.lines, w.moves, w.setup.frozen, w.setup.probes,
+                      {n: lengths[-1] for n, lengths in w.setup.tools.items()})

@@ -1,0 +1,94 @@
+"""The controls a translation is written for: one table row each, the words that differ between them.
+
+The writer (:mod:`ncvm.translate.writer`) is the same for every target; a :class:`Target` says how each
+thing is spelled on that control: comments, zero offset selection, tool length, dwell, probing, full
+turns of a helix, program end and wrapper. None in a field means the control has no such word: the
+translation stops with a clear error naming the block that needs it.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+
+@dataclass(frozen=True)
+class Target:
+    """How one control spells the words the translation writes."""
+
+    name: str
+    title: str
+    #: a comment line
+    comment: str
+    #: the modal words set before the first move (units mm, absolute, plane, feed per minute, no compensation)
+    preamble: str
+    #: the name of each zero offset selection of the program ("G54".."G59") on this control
+    work_offsets: dict[str, str]
+    #: tool length compensation from offset number {n}, and its cancellation
+    tool_length_on: str
+    tool_length_off: str
+    #: a move in machine coordinates (G53), one block; and whether the control keeps the tool length in it
+    machine_move: str
+    machine_move_keeps_tool: bool
+    #: a dwell of {s} seconds
+    dwell: str
+    #: a probe move ({axes} the target, {feed} the feed words), None: the control has no probe move
+    probe: str | None
+    #: the probe move where the simulated probe made no contact and the program went on
+    probe_no_contact: str | None
+    #: the word of extra full turns {n} of a helix, None: written as separate arcs
+    turns: str | None
+    #: an operator message
+    message: str
+    program_end: str
+    #: selected for ``--frame machine`` (the header says that it must be all zero)
+    machine_frame: str = "G54"
+    #: the first and last line of the file (the tape wrapper), empty: none
+    wrapper: str = ""
+    #: the address letters of axes this control has
+    axes: str = "XYZABCUVW"
+    #: characters a comment may not hold, with their replacement
+    comment_escapes: dict[str, str] = field(default_factory=dict)
+
+    def escape(self, text: str) -> str:
+        """``text`` without the characters that would end this control's comment or message."""
+        for bad, good in self.comment_escapes.items():
+            text = text.replace(bad, good)
+        return text
+
+    def note(self, text: str) -> str:
+        """``text`` as a comment line of this control."""
+        return self.comment.format(self.escape(text))
+
+
+_PARENS = {"(": "[", ")": "]"}
+_ISO_OFFSETS = {f"G{n}": f"G{n}" for n in range(54, 60)}
+
+LINUXCNC = Target(
+    name="linuxcnc", title="LinuxCNC (rs274ngc)", comment="({})",
+    preamble="G21 G90 G17 G94 G40 G49 G80", work_offsets=_ISO_OFFSETS,
+    tool_length_on="G43 H{n}", tool_length_off="G49",
+    machine_move="G53", machine_move_keeps_tool=False,
+    dwell="G4 P{s}", probe="G38.2 {axes}{feed}", probe_no_contact="G38.3 {axes}{feed}", turns=" P{n}", message="(MSG, {})",
+    program_end="M2", comment_escapes=_PARENS)
+
+#: SINUMERIK 840D: G54-G57 are settable zero offsets, G58/G59 programmable ones: the program's G58/G59
+#: selections go to the next settable ones, G505/G506; the tool length comes with the D number
+SINUMERIK_840D = Target(
+    name="sinumerik840d", title="SINUMERIK 840D", comment="; {}",
+    preamble="G71 G90 G17 G94 G40", work_offsets={"G54": "G54", "G55": "G55", "G56": "G56", "G57": "G57",
+                                                 "G58": "G505", "G59": "G506"},
+    tool_length_on="D{n}", tool_length_off="D0",
+    machine_move="SUPA", machine_move_keeps_tool=True,
+    dwell="G4 F{s}", probe="MEAS=1 G1 {axes}{feed}", probe_no_contact="MEAS=1 G1 {axes}{feed}", turns=" TURN={n}", message='MSG("{}")',
+    program_end="M30", machine_frame="G500", comment_escapes={'"': "'", "\n": " "})
+
+#: plain ISO / Fanuc style: the tape wrapper %, G43 H, dwell in seconds as X; no standard probe move
+ISO = Target(
+    name="iso", title="ISO / Fanuc style", comment="({})",
+    preamble="G21 G90 G17 G94 G40 G49 G80", work_offsets=_ISO_OFFSETS,
+    tool_length_on="G43 H{n}", tool_length_off="G49",
+    machine_move="G53", machine_move_keeps_tool=False,
+    dwell="G4 X{s}", probe=None, probe_no_contact=None, turns=None, message="({})",
+    program_end="M30", wrapper="%", comment_escapes=_PARENS)
+
+TARGETS = {t.name: t for t in (LINUXCNC, SINUMERIK_840D, ISO)}

@@ -1,0 +1,405 @@
+"""The translation writer: the run's canon calls as a program for a modern control, one :class:`Target`.
+
+Positions are written in the program's work coordinates by default: the canon gives machine positions,
+the kernel's ``frame`` calls say which zero offset and tool length lie between, and the writer takes
+them off again and writes the zero offset selection (G54...) and the tool length call (G43 H, D) where
+the program made them. It never writes an offset table. What the run decided from outside input (canon
+``frozen``), probe moves, and the setup the simulation used are written as comments; anything a target
+cannot say stops the translation (:attr:`Translation.refusal`) instead of being written differently.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from ..nc.canon import CanonSink, Frame, Src, plain_frame
+from ..outpaths import OutputError
+from .targets import Target
+
+PLANE_OF = {("X", "Y"): "G17", ("Z", "X"): "G18", ("Y", "Z"): "G19"}
+CENTRE_WORDS = {"X": "I", "Y": "J", "Z": "K"}
+
+
+def number(v: float) -> str:
+    text = f"{v:.4f}".rstrip("0").rstrip(".")
+    return "0" if text in ("-0", "") else text
+
+
+@dataclass
+class Refusal:
+    """Why the translation stopped: the block (None: the whole program) and the reason."""
+
+    src: Src | None
+    message: str
+
+
+@dataclass
+class Setup:
+    """What the simulation used that the new control must be set up with (the header lists it)."""
+
+    offsets: dict[str, list[tuple[float, ...]]] = field(default_factory=dict)  # zero offset -> values moved under
+    tools: dict[int, list[float]] = field(default_factory=dict)  # tool offset number -> lengths moved under
+    shifts: set[tuple[float, ...]] = field(default_factory=set)  # G92 / additive offsets baked into positions
+    transformed: bool = False
+    machine_moves: int = 0
+    frozen: int = 0
+    probes: int = 0
+    left_out: list[str] = field(default_factory=list)  # machine functions written as comments
+
+
+class Translation(CanonSink):
+    """Writes the canon calls as ``target``'s program lines into ``out`` (an open text file).
+
+    ``frame`` "work" (the default) writes work coordinates, "machine" the simulated machine's.
+    The header (what the simulation used) is known only at the end: :meth:`header` gives it.
+    """
+
+    def __init__(self, out, target: Target, frame: str = "work", source_comments: bool = False,
+                 scenario_given: bool = False):
+        self.out = out
+        self.out_path = getattr(out, "name", "the output")  # named in a write error
+        self.t = target
+        self.work = frame == "work"
+        self.source_comments = source_comments
+        self.scenario_given = scenario_given
+        self.names: tuple[str, ...] = ()
+        self.frame_now: Frame | None = None
+        self.removed: tuple[float, ...] = ()
+        self.setup = Setup()
+        self.refusal: Refusal | None = None
+        self.ended: Src | None = None
+        self.lines = 0
+        self.moves = 0
+        self._offset_written: str | None = None
+        self._tool_written: tuple[int, float] = (0, 0.0)
+        self._plane = "G17"
+        self._feed: float | None = None
+        self._after: list[tuple[str, Src]] = []  # M5 / M9 of a block, written after its move
+        self._probe: tuple[dict | None, dict | None, Src] | None = None
+        self._frozen: list[tuple[str, Src | None]] = []
+        self._frozen_pending: set = set()
+        self._frozen_seen: set = set()
+        self._tool = 0
+        self._hidden: list[int] = []
+        self._tool_number = 0
+        self._frame_unrecorded = True
+
+    # -- output ----------------------------------------------------------
+    def refuse(self, src: Src | None, message: str) -> None:
+        if self.refusal is None:
+            self.refusal = Refusal(src, message)
+
+    def _line(self, text: str, src: Src | None = None) -> None:
+        if self.refusal is not None:
+            return
+        if self._frozen:
+            notes, self._frozen = self._frozen, []
+            self._frozen_pending.clear()
+            for what, where in notes:
+                where = where or src  # an input read between blocks: the block it leads to
+                if (what, where) in self._frozen_seen:
+                    continue
+                self._frozen_seen.add((what, where))
+                at = f" at {Path(where.file).name}:{where.line}" if where else ""
+                self._write(self.t.note(f"FROZEN: {what}{at}; the path below follows the simulated value"))
+                self.setup.frozen += 1
+        if self.source_comments and src is not None:
+            text += " " + self.t.note(f"{Path(src.file).name}:{src.line}")
+        self._write(text)
+        self.lines += 1
+
+    def _write(self, text: str) -> None:
+        try:
+            self.out.write(text + "\n")
+        except OSError as e:  # a full disk: the run stops with a usage error naming the file
+            raise OutputError(self.out_path, e) from None
+
+    def _flush_after(self, src: Src | None = None) -> None:
+        """Write the block's M5 / M9 once its move is out (DIN 66025: they act at the end of the block)."""
+        if self._after and (src is None or all(s != src for _, s in self._after)):
+            after, self._after = self._after, []
+            for text, s in after:
+                self._line(text, s)
+
+    def _axes(self, p, machine_frame: bool = False) -> str:
+        removed = self._machine_removed() if machine_frame else self.removed
+        return " ".join(f"{n}{number(v - r)}" for n, v, r in zip(self.names, p, removed) if n in self.t.axes)
+
+    def _machine_removed(self) -> tuple[float, ...]:
+        """A G53 move: machine coordinates, less the tool length where the control keeps it."""
+        f = self.frame_now
+        out = [0.0] * len(self.names)
+        if self.t.machine_move_keeps_tool and f is not None and f.tool_axis is not None:
+            out[f.tool_axis] = f.tool_length
+        return tuple(out)
+
+    def _feed_word(self, feed: float) -> str:
+        if feed != self._feed:
+            self._feed = feed
+            return f" F{number(feed)}"
+        return ""
+
+    # -- the canon calls -------------------------------------------------
+    def begin(self, axis_names, start):
+        self.names = tuple(axis_names)
+        self._hidden = [i for i, n in enumerate(self.names) if n not in self.t.axes]
+        self.frame_now = plain_frame(len(self.names))
+        self.removed = self.frame_now.removed()
+        self._line(self.t.preamble)
+        if not self.work:
+            self._line(self.t.machine_frame)
+
+    def frame(self, frame, src, whole_run=False):
+        if whole_run:  # the plot's frame for a whole rw_SymPas run: the moves are written already
+            return
+        self.frame_now = frame
+        if not self.work:
+            return
+        if frame.work_offset == "G53":
+            return  # one move in machine coordinates: written with its prefix
+        self.removed = frame.removed()
+        if any(frame.shift):
+            self.setup.shifts.add(tuple(round(v, 6) for v in frame.shift))
+        self.setup.transformed |= frame.transformed
+        if frame.work_offset != self._offset_written:
+            name = self.t.work_offsets.get(frame.work_offset) if frame.work_offset else None
+            if name is None:
+                self.refuse(src, f"the program selects {frame.work_offset or 'no zero offset'}, which "
+                                 f"{self.t.title} cannot select (translate with --frame machine)")
+                return
+            self._offset_written = frame.work_offset
+            self._line(name, src)
+        tool = (frame.tool_offset, frame.tool_length)
+        if tool != self._tool_written:
+            self._tool_written = tool
+            if frame.tool_length == 0.0:
+                self._line(self.t.tool_length_off, src)
+            else:
+                n = frame.tool_offset or self._tool
+                if not n:
+                    self.refuse(src, f"a tool length of {number(frame.tool_length)} mm without a tool offset "
+                                     "number or a tool in the spindle")
+                    return
+                self._tool_number = n
+                self._line(self.t.tool_length_on.format(n=n), src)
+        self._frame_unrecorded = True
+
+    def _record_setup(self) -> None:
+        """The zero offset and tool length a move is made under, for the header (once per frame change)."""
+        self._frame_unrecorded = False
+        f = self.frame_now
+        if not self.work or f.work_offset in (None, "G53"):
+            return
+        seen = self.setup.offsets.setdefault(f.work_offset, [])
+        if f.zero not in seen:
+            seen.append(f.zero)
+        if f.tool_length:
+            lengths = self.setup.tools.setdefault(self._tool_number, [])
+            if f.tool_length not in lengths:
+                lengths.append(f.tool_length)
+
+    def frozen(self, what, src):
+        key = (what, src)
+        if key not in self._frozen_pending:  # a polling loop reads the same input again and again
+            self._frozen_pending.add(key)
+            self._frozen.append(key)
+
+    def probe(self, trip, target, src):
+        self._probe = (trip, target, src)
+
+    def _machine_prefix(self, src) -> str:
+        f = self.frame_now
+        if self.work and f is not None and f.work_offset == "G53":
+            self.setup.machine_moves += 1
+            return self.t.machine_move + " "
+        return ""
+
+    def _moved_unwritten(self, start, end, src) -> bool:
+        """Refuse a move of an axis the target has no address for (never left out of a move silently)."""
+        for i in self._hidden:
+            if abs(end[i] - start[i]) > 1e-9:
+                self.refuse(src, f"axis {self.names[i]} moves, and {self.t.title} has no address for it")
+                return True
+        return False
+
+    def _move_starts(self, start, end, src) -> bool:
+        """What every move does first (the block's M5/M9 wait, the setup is recorded); False: refused."""
+        self._flush_after(src)
+        self.moves += 1
+        if self._frame_unrecorded:
+            self._record_setup()
+        return not (self._hidden and self._moved_unwritten(start, end, src))
+
+    def _straight(self, code: str, start, end, feed: float | None, src: Src) -> None:
+        if not self._move_starts(start, end, src):
+            return
+        if self._probe is not None:
+            self._probe_move(end, feed, src)
+            return
+        prefix = self._machine_prefix(src)
+        feed_word = self._feed_word(feed) if feed is not None else ""
+        self._line(f"{prefix}{code} {self._axes(end, bool(prefix))}{feed_word}", src)
+
+    def _probe_move(self, end, feed, src) -> None:
+        """The move after a canon ``probe`` call: the target's probe move to the programmed end point."""
+        trip, target, psrc = self._probe
+        self._probe = None
+        self.setup.probes += 1
+        if self.t.probe is None:
+            self.refuse(psrc, f"a probe move: {self.t.title} has no standard probe move")
+            return
+        if target is None:
+            self.refuse(psrc, "a measurement that does not stop at the probe contact (on-the-fly measurement "
+                              f"or a fixed stop) has no equivalent in {self.t.title}")
+            return
+        if trip is None and not self.scenario_given:
+            self.refuse(psrc, "the probe move did not switch because the run has no scenario saying where the "
+                              "probe switches (give it with --scenario)")
+            return
+        if self._machine_prefix(src):
+            self.refuse(psrc, "a probe move in machine coordinates (G53)")
+            return
+        goal = tuple(target.get(n, v) for n, v in zip(self.names, end))
+        if feed is None:  # a probe move programmed at rapid: the control probes at the modal feed
+            if not self._feed:
+                self.refuse(psrc, "a probe move at rapid traverse with no feed rate to probe at")
+                return
+            feed = self._feed
+        if trip is None:  # the program went on without contact: a probe move that ends without an error
+            self.frozen("measured value: the simulated probe made no contact", psrc)
+            word = self.t.probe_no_contact
+        else:
+            seen = ", ".join(f"{n}{number(v - self.removed[self.names.index(n)])}" for n, v in trip.items())
+            self.frozen(f"measured value: the simulated probe switched at {seen}", psrc)
+            word = self.t.probe
+        self._line(word.format(axes=self._axes(goal), feed=self._feed_word(feed)), src)
+
+    def rapid(self, start, end, src):
+        self._straight("G0", start, end, None, src)
+
+    def feed(self, start, end, feed, src):
+        self._straight("G1", start, end, feed, src)
+
+    def arc(self, start, end, spec, feed, src):
+        if not self._move_starts(start, end, src):
+            return
+        if self._probe is not None:
+            self.refuse(self._probe[2], "a probe move along an arc")
+            return
+        an, bn = self.names[spec.a], self.names[spec.b]
+        plane = PLANE_OF.get((an, bn))
+        if plane is None or an not in CENTRE_WORDS or bn not in CENTRE_WORDS:
+            self.refuse(src, f"an arc in the plane of {an} and {bn}, which has no G17/G18/G19")
+            return
+        if self._machine_prefix(src):
+            self.refuse(src, "an arc in machine coordinates (G53)")
+            return
+        if spec.turns and self.t.turns is None:
+            self.refuse(src, f"a helix of {spec.turns + 1} turns: {self.t.title} has no word for full turns")
+            return
+        if plane != self._plane:
+            self._plane = plane
+            self._line(plane, src)
+        ci = number(spec.center[0] - start[spec.a])
+        cj = number(spec.center[1] - start[spec.b])
+        turns = self.t.turns.format(n=self._turns(spec.turns)) if spec.turns else ""
+        self._line(f"{'G2' if spec.cw else 'G3'} {self._axes(end)} {CENTRE_WORDS[an]}{ci} {CENTRE_WORDS[bn]}{cj}"
+                   f"{turns}{self._feed_word(feed)}", src)
+
+    def _turns(self, extra: int) -> int:
+        """LinuxCNC's P counts the turns begun (1 + the full ones), SINUMERIK's TURN the full ones."""
+        return extra + 1 if self.t.turns.strip().startswith("P") else extra
+
+    def dwell(self, seconds, src):
+        self._flush_after()
+        self._line(self.t.dwell.format(s=number(seconds)), src)
+
+    def tool_change(self, tool, src):
+        self._flush_after()
+        self._tool = tool
+        self._line(f"T{tool} M6", src)
+
+    def spindle(self, speed, direction, src):
+        if direction == 0:
+            self._after.append(("M5", src))
+            return
+        self._flush_after()
+        word = "M3" if direction > 0 else "M4"
+        self._line(f"{word} S{number(speed)}", src)
+
+    def coolant(self, mode, src):
+        if mode == "off":
+            self._after.append(("M9", src))
+            return
+        self._flush_after()
+        self._line({"mist": "M7", "flood": "M8"}[mode], src)
+
+    def aux(self, code, src):
+        self._flush_after()
+        self.setup.left_out.append(code)
+        self._line(self.t.note(f"{code}: a machine function of the simulated control, not written"), src)
+
+    def message(self, text, src):
+        self._flush_after()
+        self._line(self.t.message.format(self.t.escape(text)), src)
+
+    def stop(self, kind, src):
+        self._flush_after()
+        self._line(kind, src)
+
+    def program_end(self, src):
+        self.ended = src
+
+    def finish_moves(self) -> None:
+        """The run ended normally: the last M5/M9 out (a probe move with no move after it is refused)."""
+        self._flush_after()
+        if self._probe is not None:
+            self.refuse(self._probe[2], "a probe move with no move after it")
+
+    def write_end(self) -> None:
+        """The program end: always, even where the program has none (an rw_SymPas program)."""
+        self._line(self.t.program_end, self.ended)
+
+    def header(self, program: str, machine: str) -> list[str]:
+        """The comment lines at the top: how the positions are meant, and what the new control must hold."""
+        t, s = self.t, self.setup
+        note = t.note
+        out = []
+        if self.work:
+            out.append(note("positions in WORK coordinates: set these zero offsets and tool lengths on the "
+                            "new control before running it"))
+            for name, zeros in sorted(s.offsets.items()):
+                values = " then ".join(" ".join(f"{n}{number(v)}" for n, v in zip(self.names, zero) if n in t.axes)
+                                       for zero in zeros)
+                out.append(note(f"zero offset {name} -> {t.work_offsets[name]}: simulated as {values} ({machine})"))
+            for n, lengths in sorted(s.tools.items()):
+                out.append(note(f"tool offset {t.tool_length_on.format(n=n)}: length "
+                                f"{' then '.join(number(v) for v in lengths)} mm in the simulation"))
+            if not s.tools:
+                out.append(note("no tool length compensation was used"))
+            for shift in sorted(s.shifts):
+                values = " ".join(f"{n}{number(v)}" for n, v in zip(self.names, shift) if n in t.axes and v)
+                out.append(note(f"an added offset ({values}: G92 or the control's extra zero offsets) "
+                                "is included in the positions"))
+            if s.transformed:
+                out.append(note("a coordinate transformation of the program is included in the positions"))
+            if s.machine_moves:
+                out.append(note(f"{s.machine_moves} moves in machine coordinates ({t.machine_move})"))
+        else:
+            out += [note("!!! MACHINE COORDINATES OF THE SIMULATED MACHINE: every offset and tool length is "
+                         "included in the positions !!!"),
+                    note("!!! run only on a control whose active zero offset and tool length are all zero "
+                         "!!!")]
+        if s.probes:
+            out.append(note(f"{s.probes} probe moves"))
+        if s.frozen:
+            out.append(note(f"{s.frozen} decisions of the run are frozen (marked FROZEN below): the path "
+                            "follows the simulated inputs"))
+        if s.left_out:
+            out.append(note(f"machine functions not written: {', '.join(sorted(set(s.left_out)))}"))
+        extra = [n for n in self.names if n not in t.axes]
+        if extra:
+            out.append(note(f"axes {' '.join(extra)} have no address on {t.title} and are left out"))
+        return out
+
