@@ -745,7 +745,8 @@ class _Record:
             self.passes = f"_int({passes[-1][1]})" if passes else "1"
         if self.cycle_g is not None:
             out.emit(f"_rt.drilling.select({self.cycle_g}); _cyc = _rt.drilling.armed", line)
-        travels = (self.call is None and self.meas is None and self.inta is None and self.int_sec is None
+        # a block with an axis word and an L call: the cycle at the block's position, then the sub-program
+        travels = (self.meas is None and self.inta is None and self.int_sec is None
                    and any(k in axis_keys or k.startswith("_rt.positions.axis_name(") for k, _v, _c in words)
                    and not dwells(self.blk.items) and not any(x in (58, 59) for x in self.g))
         if self.g16:

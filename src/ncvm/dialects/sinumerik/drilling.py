@@ -6,7 +6,8 @@ before (the transfer parameters, manual L483-486; the manual's deep-hole drillin
 L5404-5542, reads R22 start point, R24 degression, R25 first depth, R26 final depth, R27/R28 dwell times).
 The selection is modal until G80: the block that selects the cycle and every later block with an axis
 word first travels to its position (with the motion of group 0, G0 or G1) and then runs the cycle there,
-as ``L8x`` written after the block would. A block that selects a cycle without an axis word only selects
+as ``L8x`` written after the block would; a block that also calls a sub-program (``X20 L100``) runs the
+cycle at its position before the sub-program. A block that selects a cycle without an axis word only selects
 it. The cycle's own blocks do not call it again. A selected cycle whose program is missing stops the run
 at the selecting block (RUN002).
 
