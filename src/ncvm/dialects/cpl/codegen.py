@@ -33,7 +33,7 @@ from .errors import diag
 from .lexer import VarName
 from .system import SYSTEM_PROCS
 from .system.gfuncs import GEARS, TYP3_G
-from .system.transforms import PARAMETER_G
+from .system.transforms import NO_TRAVEL_G
 from .values import f32
 
 #: the addresses of a plain NC block (a plain row, nc.block)
@@ -599,7 +599,8 @@ class Gen:
             self.nc_queue(s, words, src)
             if 80 in words.g_const:
                 self.emit("_modal[0] = None", line)
-            elif words.has_motion and self.ln.modal_calls:
+            elif words.has_motion and self.ln.modal_calls and not (s.call is not None and s.call[2]):
+                # a block that selects a drilling cycle runs the new one only (its call follows)
                 self.emit(f"if _modal[0] is not None: _modal_call({line})", line)
         if s.wait:
             self.emit("_drain()", line)
@@ -1049,7 +1050,7 @@ class NcWords:
         #: the M functions of the block in a sub-program (M2/M30 end the sub-program, not the run)
         self.m_sub = [m for m in self.m_const if m not in (2, 30)]
         moves = any(k[0] in AXIS_LETTERS for k in self.words_const) or any(a[0] in AXIS_LETTERS for a, _ in self.words_dyn)
-        self.has_motion = moves and not PARAMETER_G.intersection(self.g_const)  # G60 X5: a shift, no travel
+        self.has_motion = moves and not NO_TRAVEL_G.intersection(self.g_const)  # G60 X5, G92 X0, G4 X1: no travel
         self.queued = bool(self.g_const or self.m_const or self.words_const or self.g_dyn or self.m_dyn
                            or self.words_dyn or s.loose or s.msg is not None)
         self.dynamic = bool(self.g_dyn or self.m_dyn or self.words_dyn or s.loose)

@@ -19,7 +19,7 @@ from .axiswords import detail, refused_blocks
 from .errors import CplError, diag, fault
 from .linker import call_table, find_din_program, link, link_one
 from .system.gfuncs import prepare
-from .system.transforms import PARAMETER_G
+from .system.transforms import NO_TRAVEL_G
 
 AXIS_LETTERS = frozenset("XYZABCUVW")
 
@@ -46,7 +46,8 @@ def run_unlinked(rt, target: str, name: str) -> None:
             rt.enqueue(prepare(rt, Block(g, m, words, s.n, s.msg, Src(target, s.line))))
         if 80 in g:
             rt.modal[0] = None
-        elif rt.modal[0] is not None and any(a[0] in AXIS_LETTERS for a in words) and not PARAMETER_G.intersection(g):
+        elif (rt.modal[0] is not None and any(a[0] in AXIS_LETTERS for a in words) and not NO_TRAVEL_G.intersection(g)
+              and not (s.call is not None and s.call[2])):  # a new selection runs the new cycle only
             rt.modal_call(target, s.line)
         if s.call is not None:
             prog, args, modal = s.call

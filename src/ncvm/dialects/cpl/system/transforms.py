@@ -180,6 +180,9 @@ def g138(k, g, words, src) -> bool:
 G_HANDLERS = {60: g60, 67: g67, 37: g37_38, 38: g37_38, 39: g39, 138: g138}
 #: the G functions whose axis words are parameters, not a target: such a block does not travel
 PARAMETER_G = frozenset((60, 37, 38, 138))
+#: G functions whose axis words are data, not a traversing movement: a dwell's time (G4), set actual value
+#: (G92) and the parameter G functions; the modal drilling cycle does not run after them (§3.2 L1083)
+NO_TRAVEL_G = PARAMETER_G | {4, 92}
 
 
 def setup(rt: SystemContext) -> None:
