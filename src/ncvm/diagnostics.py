@@ -149,7 +149,8 @@ NCVM_CODES = {
     "NC012": "cutter radius compensation cannot place the tool (gouging, entry too short, tool too large for an "
              "arc, or a change not allowed while it is on)",
     "NC013": "a LinuxCNC program: # parameters, O-words or [expressions] are not DIN 66025 (one per program)",
-    "NC014": "a thread (G33-G35) without a turning spindle: the axes follow the spindle",
+    "NC014": "a thread (G33-G35) the axes cannot follow: the spindle stands, or an axis would have to run "
+             "faster than its limit",
     "LIM001": "travel limit exceeded",
     "RUN001": "step limit reached (runaway program?)",
     "RUN002": "sub-program not found",

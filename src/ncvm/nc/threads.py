@@ -78,6 +78,19 @@ def _travels(k, words) -> bool:
     return any(n in words for n in k.axis_of)
 
 
+def _followable(k, g: int, start, end, length: float, feed: float, src: Src) -> None:
+    """NC014 when an axis would have to run faster than its limit: the axes follow the spindle, so the
+    control cannot slow the thread down (a slower axis would cut another lead)."""
+    if length <= 0.0:
+        return
+    for name, i in k.axis_of.items():
+        need = feed / 60.0 * abs(end[i] - start[i]) / length  # mm/s
+        limit = k.dyn.max_feed[i]
+        if need > limit * (1.0 + 1e-9):
+            k.fault("NC014", f"G{g}: the thread needs axis {name} at {need * 60.0:g} mm/min, its limit is "
+                    f"{limit * 60.0:g} mm/min (the axes follow the spindle: lower S or the lead)", src)
+
+
 def _thread_move(k, g: int, words, src: Src, lead_of):
     """The common part of a thread block: target, checks, then ``lead_of(start, end)`` -> revolutions."""
     if k.comp is not None:
@@ -97,6 +110,7 @@ def _thread_move(k, g: int, words, src: Src, lead_of):
                 "takes its lead as I, along Y as J, along Z as K)", src)
     minutes = revolutions / rpm
     feed = length / minutes if minutes > 0.0 else 0.0  # the mean path feed (mm/min) of the thread
+    _followable(k, g, start, end, length, feed, src)
     k.straight_out(1, start, end, feed, src, k.canon)
     k.prog = prog
     k.machine_pos = end
@@ -125,7 +139,9 @@ class SinumerikThreads:
 
     def __init__(self):
         self.lead_axis: str | None = None
+        self.programmed = 0.0  # the modal lead as the program wrote it (I, J or K)
         self.lead = 0.0  # mm per revolution at the start of the next thread block
+        self.chain_end = None  # the position where the last thread block ended (the tuple itself)
         self.change = 0.0  # mm/rev per revolution (G34 +, G35 -)
 
     def entries(self) -> dict:
@@ -142,7 +158,12 @@ class SinumerikThreads:
             axis, w = given[0]
             if axis not in k.axis_of:
                 k.fault("NC009", f"G{g}: lead {w} belongs to axis {axis}, which the machine lacks", src)
-            self.lead_axis, self.lead = axis, abs(words[w]) * k.scale
+            self.lead_axis, self.programmed = axis, abs(words[w]) * k.scale
+            self.lead = self.programmed
+        elif self.chain_end is not k.machine_pos:
+            # a new pass after other moves starts at the programmed lead; only a thread block that follows
+            # a thread block goes on with the lead its G34/G35 reached (every move sets a new position)
+            self.lead = self.programmed
         if g == 33:
             if "F" in words:
                 k.fault("NC009", "G33: F has no meaning in a thread of constant lead (the lead is I, J or K)", src)
@@ -153,6 +174,7 @@ class SinumerikThreads:
             k.fault("NC009", f"G{g}: the lead (I, J or K, mm per revolution) is missing", src)
         i = k.axis_of[self.lead_axis]
         _thread_move(k, g, words, src, lambda start, end, length: self._revolutions(k, g, abs(end[i] - start[i]), src))
+        self.chain_end = k.machine_pos
 
     def _revolutions(self, k, g: int, travel: float, src: Src) -> float:
         """Revolutions to travel ``travel`` along the lead axis with the lead growing by ``change`` per
