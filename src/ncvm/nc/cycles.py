@@ -24,6 +24,10 @@ CODES = CYCLES | {80, 98, 99}
 #: rs274's G83_RAPID_DELTA, 0.010 inch in either unit (LinuxCNC 2.9)
 PECK_CLEARANCE = 0.254
 _DWELL_G = (82, 86, 88, 89)
+#: the cycles that use P, Q, I, J, K; in another cycle's block such a word is an error, as in rs274
+#: ("Q word with no G5, G10, G64, G73, G76, G83"), never dropped silently (P of G74/G84: the tap's dwell)
+_WORD_USERS = (("P", frozenset((*_DWELL_G, 74, 84))), ("Q", frozenset((73, 83))), ("I", frozenset((87,))),
+               ("J", frozenset((87,))), ("K", frozenset((87,))))
 
 
 class CannedCycles:
@@ -111,6 +115,10 @@ class CannedCycles:
 
     def _body(self, k, motion: int, same: bool, words: dict, src: Src):
         """The cycle's own moves, as ``body(k, axes, aa, bb, r, clear, bottom)``, after its words are checked."""
+        for letter, users in _WORD_USERS:
+            if letter in words and motion not in users:
+                k.fault("NC009", f"G{motion}: {letter} word with no cycle that uses it "
+                        f"({', '.join(f'G{u}' for u in sorted(users))} do)", src)
         if motion in _DWELL_G or motion in (74, 84):
             if "P" in words:
                 self.p = words["P"]

@@ -116,8 +116,18 @@ def _thread_move(k, g: int, words, src: Src, lead_of):
     k.machine_pos = end
 
 
+def _unused(k, g: int, words, letters: str, src: Src) -> None:
+    """NC009 for a word the thread block has no use for: never dropped silently (rs274 stops there too,
+    "R word with no g code that uses it"; the SINUMERIK radius address B or U arrives as R)."""
+    for letter in letters:
+        if letter in words:
+            what = "a rounding radius (R; SINUMERIK B or U)" if letter == "R" else f"the {letter} word"
+            k.fault("NC009", f"G{g}: {what} has no use in a thread block", src)
+
+
 def iso_g33(k, g: int, words, src: Src) -> None:
     """LinuxCNC's G33: K is the distance along the path per revolution, in every block; no F."""
+    _unused(k, g, words, "RIJPQ", src)
     if not _travels(k, words):
         return
     if "F" in words:
@@ -149,6 +159,7 @@ class SinumerikThreads:
         return {33: self.move, 34: self.move, 35: self.move}
 
     def move(self, k, g: int, words, src: Src) -> None:
+        _unused(k, g, words, "R", src)
         if not _travels(k, words):
             return
         given = [(axis, w) for axis, w in LEAD_WORDS.items() if w in words]
