@@ -85,6 +85,9 @@ class CornerRounding:
         if self._motion(nxt, self._motion(held)) != 1:
             self._refuse(held, f"the next block {self._name(nxt)} is not a straight move at feed (G1)")
         self._check_quiet(held, nxt)
+        if not any(w in k.axis_of for w in nxt.words):  # M8, F500 ...: not the second line of the corner
+            self._refuse(held, f"block {self._name(nxt)} between the two lines does not move (a rounding joins "
+                               "two consecutive straight moves; a block with M or F alone is not supported here by ncvm)")
         an, bn, _cn, iw, jw = PLANES[k.plane]
         a, b = k.axis_of.get(an), k.axis_of.get(bn)
         if a is None or b is None:
