@@ -120,6 +120,8 @@ class NcKernel:
         #: spindle speed of each move's start (nc/threads.py)
         self.per_rev = False
         self.feed_per_rev = 0.0
+        #: the G94/G95 switch that last set F to 0 and the F it cleared (None: none yet), for NC006's words
+        self.feed_switch: tuple[int, float] | None = None
         #: G96 or G95 is on: every move first re-reads the spindle (spindle_update)
         self.spindle_bound = False
         self.tool = 0  # tool in spindle
@@ -421,6 +423,9 @@ class NcKernel:
                 return standing
         if self.feed < 0.0:
             return f"G{g} with a negative feed rate F{self.feed / self.scale:g} (program a positive F word)"
+        cleared = threads.cleared_feed_message(self, g)
+        if cleared is not None:
+            return cleared
         return f"G{g} with feed rate 0 (program an F word)"
 
     def columns_ok(self) -> bool:

@@ -43,9 +43,23 @@ def no_feed_message(k, g: int) -> str | None:
     return None
 
 
+def cleared_feed_message(k, g: int) -> str | None:
+    """NC006 after a G94/G95 switch cleared the feed and no F followed: the switch is named (the user sees
+    the old F a few blocks up); None when the feed is 0 for another reason."""
+    if k.feed_switch is None or (k.feed_per_rev if k.per_rev else k.feed) != 0.0:
+        return None
+    switch, old = k.feed_switch
+    if old == 0.0:
+        return None  # nothing was cleared: the plain "program an F word" says it
+    unit = "mm/rev" if switch == 94 else "mm/min"
+    return (f"G{g} with feed rate 0: G{switch} changed the meaning of F and cleared F{old / k.scale:g} "
+            f"({unit}); program F again after G{switch}")
+
+
 def g94(k, g, words, src: Src) -> bool:
     """G94: F is a feed per minute again. As rs274, the feed must be programmed anew (F0 until then)."""
     if k.per_rev:
+        k.feed_switch = (94, k.feed_per_rev)
         k.per_rev = False
         k.spindle_bound = k.css
         k.feed = 0.0
@@ -55,6 +69,7 @@ def g94(k, g, words, src: Src) -> bool:
 def g95(k, g, words, src: Src) -> bool:
     """G95: F is a feed per revolution. As rs274, the feed must be programmed anew (F0 until then)."""
     if not k.per_rev:
+        k.feed_switch = (95, k.feed)
         k.per_rev = k.spindle_bound = True
         k.feed_per_rev = k.feed = 0.0
     return False
