@@ -136,6 +136,12 @@ class CanonSink:
     def arc(self, start: tuple, end: tuple, spec: ArcSpec, feed: float, src: Src) -> None:
         """Circular or helical move at ``feed`` (mm/min)."""
 
+    def thread(self, start: tuple, end: tuple, lead: float, varying: bool, feed: float, src: Src) -> None:
+        """Straight move in step with the spindle (G33-G35): ``lead`` the path distance per revolution (its
+        mean where ``varying``, a G34/G35 lead that grows or shrinks), ``feed`` the mean path feed (mm/min).
+        By default the straight move at that feed (:meth:`feed`): a path, a time, a limit check."""
+        self.feed(start, end, feed, src)
+
     def move_batch(self, batch: MoveBatch) -> None:
         """Many moves at once; by default each is replayed as its :meth:`rapid`, :meth:`feed` or :meth:`arc` call."""
         starts, ends = batch.start.tolist(), batch.end.tolist()
@@ -208,7 +214,7 @@ class CanonSink:
         """The run is over (normally or by a fault): flush files."""
 
 
-_METHODS = ("begin", "rapid", "feed", "arc", "move_batch", "timing", "frame", "frozen", "channel", "dwell",
+_METHODS = ("begin", "rapid", "feed", "arc", "thread", "move_batch", "timing", "frame", "frozen", "channel", "dwell",
             "tool_change", "tool_offset", "spindle", "coolant", "aux", "probe", "message", "stop", "program_end", "end")
 
 
@@ -252,7 +258,8 @@ def _names(sink: CanonSink) -> list[str]:
 
 def _overrides(sink: CanonSink, name: str) -> bool:
     """Whether ``sink`` cares about canon call ``name`` (a batch of moves matters to any sink that takes moves)."""
-    names = ("move_batch", "rapid", "feed", "arc") if name == "move_batch" else (name,)
+    names = (("move_batch", "rapid", "feed", "arc") if name == "move_batch" else
+             ("thread", "feed") if name == "thread" else (name,))  # a thread is a feed move to a feed sink
     return any(getattr(type(sink), n) is not getattr(CanonSink, n) for n in names)
 
 

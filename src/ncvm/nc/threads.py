@@ -106,7 +106,19 @@ def _followable(k, g: int, start, end, length: float, feed: float, src: Src) -> 
                     f"{limit * 60.0:g} mm/min (the axes follow the spindle: lower S or the lead)", src)
 
 
-def _thread_move(k, g: int, words, src: Src, lead_of):
+class _ThreadOut:
+    """The kernel's straight move hands its canon ``feed`` call on as the canon ``thread`` call."""
+
+    __slots__ = ("canon", "lead", "varying")
+
+    def __init__(self, canon, lead: float, varying: bool):
+        self.canon, self.lead, self.varying = canon, lead, varying
+
+    def feed(self, start, end, feed, src) -> None:
+        self.canon.thread(start, end, self.lead, self.varying, feed, src)
+
+
+def _thread_move(k, g: int, words, src: Src, lead_of, varying: bool = False):
     """The common part of a thread block: target, checks, then ``lead_of(start, end)`` -> revolutions."""
     if k.comp is not None:
         k.fault("NC012", f"G{g}: no thread while cutter radius compensation is on", src)
@@ -126,7 +138,8 @@ def _thread_move(k, g: int, words, src: Src, lead_of):
     minutes = revolutions / rpm
     feed = length / minutes if minutes > 0.0 else 0.0  # the mean path feed (mm/min) of the thread
     _followable(k, g, start, end, length, feed, src)
-    k.straight_out(1, start, end, feed, src, k.canon)
+    k.straight_out(1, start, end, feed, src, _ThreadOut(k.canon, length / revolutions if revolutions > 0.0 else 0.0,
+                                                       varying))
     k.prog = prog
     k.machine_pos = end
 
@@ -199,7 +212,8 @@ class SinumerikThreads:
         if self.lead_axis is None or self.lead <= 0.0:
             k.fault("NC009", f"G{g}: the lead (I, J or K, mm per revolution) is missing", src)
         i = k.axis_of[self.lead_axis]
-        _thread_move(k, g, words, src, lambda start, end, length: self._revolutions(k, g, abs(end[i] - start[i]), src))
+        _thread_move(k, g, words, src, lambda start, end, length: self._revolutions(k, g, abs(end[i] - start[i]), src),
+                     self.change != 0.0)
         self.chain_end = k.machine_pos
 
     def _revolutions(self, k, g: int, travel: float, src: Src) -> float:

@@ -37,6 +37,9 @@ class Target:
     probe_no_contact: str | None
     #: the word of extra full turns {n} of a helix, None: written as separate arcs
     turns: str | None
+    #: a thread of constant lead ({axes} the end point, {lead} the path distance per revolution), None: the
+    #: control has no such word (a thread written as G1 would not follow the spindle)
+    thread: str | None
     #: an operator message
     message: str
     program_end: str
@@ -69,6 +72,7 @@ LINUXCNC = Target(
     tool_length_on="G43 H{n}", tool_length_off="G49",
     machine_move="G53", machine_move_keeps_tool=False,
     dwell="G4 P{s}", probe="G38.2 {axes}{feed}", probe_no_contact="G38.3 {axes}{feed}", turns=" P{n}", message="(MSG, {})",
+    thread="G33 {axes} K{lead}",
     program_end="M2", comment_escapes=_PARENS)
 
 #: SINUMERIK 840D: G54-G57 are settable zero offsets, G58/G59 programmable ones: the program's G58/G59
@@ -80,6 +84,7 @@ SINUMERIK_840D = Target(
     tool_length_on="D{n}", tool_length_off="D0",
     machine_move="SUPA", machine_move_keeps_tool=True,
     dwell="G4 F{s}", probe="MEAS=1 G1 {axes}{feed}", probe_no_contact="MEAS=1 G1 {axes}{feed}", turns=" TURN={n}", message='MSG("{}")',
+    thread=None,
     program_end="M30", machine_frame="G500", comment_escapes={'"': "'", "\n": " "})
 
 #: plain ISO / Fanuc style: the tape wrapper %, G43 H, dwell in seconds as X; no standard probe move
@@ -88,7 +93,7 @@ ISO = Target(
     preamble="G21 G90 G17 G94 G40 G49 G80", work_offsets=_ISO_OFFSETS,
     tool_length_on="G43 H{n}", tool_length_off="G49",
     machine_move="G53", machine_move_keeps_tool=False,
-    dwell="G4 X{s}", probe=None, probe_no_contact=None, turns=None, message="({})",
+    dwell="G4 X{s}", probe=None, probe_no_contact=None, turns=None, message="({})", thread=None,
     program_end="M30", wrapper="%", comment_escapes=_PARENS)
 
 TARGETS = {t.name: t for t in (LINUXCNC, SINUMERIK_840D, ISO)}

@@ -281,6 +281,18 @@ class Translation(CanonSink):
     def feed(self, start, end, feed, src):
         self._straight("G1", start, end, feed, src)
 
+    def thread(self, start, end, lead, varying, feed, src):
+        if not self._move_starts(start, end, src):
+            return
+        if self.t.thread is None:
+            self.refuse(src, f"a thread (G33): {self.t.title} is not written with threads by ncvm")
+        elif varying:
+            self.refuse(src, f"a thread of growing or shrinking lead (G34/G35): {self.t.title} has no such thread")
+        elif self._machine_prefix(src):
+            self.refuse(src, "a thread in machine coordinates (G53)")
+        else:
+            self._line(self.t.thread.format(axes=self._axes(end), lead=f"{lead:.6f}".rstrip("0").rstrip(".")), src)  # a lead error adds up turn by turn
+
     def arc(self, start, end, spec, feed, src):
         if not self._move_starts(start, end, src):
             return
