@@ -100,6 +100,18 @@ def test_din_header_program_runs_a_drilling_cycle(run, reference):
     assert r["variables"]["#HOLES%"] == 2 and r["position"]["X"] == 20.0
 
 
+def test_din_header_program_drills_only_after_traversing_blocks_l1083(run, reference):
+    """§3.2 L1083: the modal cycle runs "after each traversing movement": not after G4 X1 (a dwell) nor
+    G92 X0 (set actual value, L2813); a new G81 with other parameters runs once, with its own."""
+    m = reference()
+    (m.program_path[0] / "99999081").write_text("10 #HOLES% = #HOLES% + 1\n20 #LAST = P1\n")
+    (m.program_path[0] / "DRILL").write_text("N10 (DIN)\nN20 G81 [-5] X10\nN30 G4 X1\nN35 G92 X0\n"
+                                             "N40 G81 [-8] X10\nN50 G80\n")
+    r = run("10 #HOLES% = 0\n20 CALL DRILL\nM30\n")
+    assert r["status"] == "ok", r["error"]
+    assert r["variables"]["#HOLES%"] == 2 and r["variables"]["#LAST"] == -8.0
+
+
 def test_link_error_of_a_program_reached_through_an_excluded_one(run, reference):
     calls = {"calls": {"M67": "BADSUB"}}
     m = reference(cpl=calls)
