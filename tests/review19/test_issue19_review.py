@@ -100,3 +100,37 @@ def test_item4_compile_keeps_a_hand_written_object_program_without_force(tmp_pat
     forced = ncvm("compile", "hole_pattern.cl8", "--force", cwd=tmp_path)
     assert forced.returncode == 0, forced.stderr
     assert target.read_text().rstrip().endswith("(COMPILED BY NCVM)")
+
+
+# --- item 3: README -------------------------------------------------------------------------------------------
+
+
+def test_item3_readme_usage_output_is_what_ncvm_prints(tmp_path):
+    """Issue 19 item 3 (README for a newcomer): the README's first example shows the summary line a user
+    will compare with their own; it says `cycle time 0:50.024, bounds` but ncvm prints
+    `cycle time 0:49.896 (look-ahead), bounds` (the README was not updated with the look-ahead planner)."""
+    readme = (ROOT / "README.md").read_text()
+    quoted = re.search(r"\$ \.venv/bin/ncvm run examples/din/face_and_circle\.din.*?\n(.*?)\n(ncvm: ended[^\n]*)", readme)
+    assert quoted, "README no longer shows the face_and_circle run"
+    shutil.copytree(EXAMPLES, tmp_path / "examples")
+    result = ncvm("run", "examples/din/face_and_circle.din", "--state", str(tmp_path / "state"), cwd=tmp_path)
+    assert result.returncode == 0, result.stderr
+    assert quoted.group(1) in result.stdout
+    assert quoted.group(2) in result.stderr.splitlines(), (quoted.group(2), result.stderr)
+
+
+def test_item4_compile_keeps_an_object_program_edited_by_hand_after_ncvm_wrote_it(tmp_path):
+    """Issue 19 item 4: "`ncvm compile L101.cl8` without `-o` silently overwrites a hand-edited `L101.spf`".
+    The common case is an object program ncvm wrote and the user then edited at the machine (a feed, a
+    dwell): its `(COMPILED BY NCVM)` line is still there, so the next compile replaces the edit silently.
+    The mark must show that the file is as ncvm wrote it (e.g. a checksum of the text in the mark)."""
+    shutil.copy(EXAMPLES / "cl800" / "hole_pattern.cl8", tmp_path)
+    first = ncvm("compile", "hole_pattern.cl8", cwd=tmp_path)
+    assert first.returncode == 0, first.stderr
+    target = tmp_path / "L101.spf"
+    lines = target.read_text().splitlines()
+    lines.insert(1, "N1 G4 X2 (dwell added by hand at the machine)")
+    target.write_text("\n".join(lines) + "\n")
+    again = ncvm("compile", "hole_pattern.cl8", cwd=tmp_path)
+    assert "added by hand" in target.read_text(), "the hand edit was overwritten silently"
+    assert again.returncode == 2, (again.returncode, again.stderr)
