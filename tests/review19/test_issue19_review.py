@@ -57,7 +57,9 @@ def test_item1_user_messages_do_not_speak_of_seeds(tmp_path, name, dialect, text
     (tmp_path / name).write_text(text)
     result = ncvm("check", "--dialect", dialect, name, cwd=tmp_path)
     assert "NC004" in result.stdout + result.stderr
-    assert not re.search(r"\bthe seeds\b|\bseed manual", result.stdout + result.stderr, re.IGNORECASE), result.stdout + result.stderr
+    assert not re.search(r"\bthe seeds\b|\bseed manual", result.stdout + result.stderr, re.IGNORECASE), (
+        result.stdout + result.stderr
+    )
 
 
 # --- item 2: plots / summary line ---------------------------------------------------------------------------
@@ -110,7 +112,9 @@ def test_item3_readme_usage_output_is_what_ncvm_prints(tmp_path):
     will compare with their own; it says `cycle time 0:50.024, bounds` but ncvm prints
     `cycle time 0:49.896 (look-ahead), bounds` (the README was not updated with the look-ahead planner)."""
     readme = (ROOT / "README.md").read_text()
-    quoted = re.search(r"\$ \.venv/bin/ncvm run examples/din/face_and_circle\.din.*?\n(.*?)\n(ncvm: ended[^\n]*)", readme)
+    quoted = re.search(
+        r"\$ \.venv/bin/ncvm run examples/din/face_and_circle\.din.*?\n(.*?)\n(ncvm: ended[^\n]*)", readme
+    )
     assert quoted, "README no longer shows the face_and_circle run"
     shutil.copytree(EXAMPLES, tmp_path / "examples")
     result = ncvm("run", "examples/din/face_and_circle.din", "--state", str(tmp_path / "state"), cwd=tmp_path)
