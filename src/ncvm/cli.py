@@ -398,7 +398,8 @@ def check(programs, dialect, machine, as_json, all_errors):
 @click.option("--xref", type=click.Path(dir_okay=False), is_flag=False, flag_value="",
               help="Write the cross-reference listing (default name: the source's, .lst) and no object "
                    "program unless -o names one.")
-@click.option("--force", is_flag=True, help="Without -o: overwrite the object file even if ncvm did not write it.")
+@click.option("--force", is_flag=True, help="Overwrite the object file (without -o) or listing (--xref alone) ncvm names even if ncvm did "
+                   "not write it or it was edited since.")
 @DIALECT_OPT
 @MACHINE_OPT
 def compile_cmd(source, out, xref, force, dialect, machine):
@@ -409,6 +410,7 @@ def compile_cmd(source, out, xref, force, dialect, machine):
     from . import api
 
     _check_program(source)
+    xref_named = xref != ""
     if xref == "":
         xref = str(Path(source).with_suffix(".lst"))  # the listing has the source's file name (CL 800 L361)
     # compile has no state directory of its own, but a run's default one is no place for its files either
@@ -416,7 +418,7 @@ def compile_cmd(source, out, xref, force, dialect, machine):
                   state=DEFAULT_STATE)
     machine = machine or _folder_machine(source, say=True)
     try:
-        path = api.compile_program(source, out, xref, dialect, machine, force=force)
+        path = api.compile_program(source, out, xref, dialect, machine, force=force, xref_named=xref_named)
     except CompileFailed as e:
         for text in render_all(e.diagnostics):
             click.echo(text, err=True)
