@@ -311,7 +311,7 @@ def _summary(result: dict) -> str:
         else f"stopped with error {result['error']['code']}"
     moves = m["rapid_moves"] + m["feed_moves"] + m["arc_moves"]
     cycle = _hms(round(result["cycle_time_s"], 1))[:-2]  # m:ss.s
-    return (f"ncvm: {status}: {result['steps']:,} steps, {moves} moves, "
+    return (f"ncvm: {status}: {result['steps']:,} steps, {moves} move{'' if moves == 1 else 's'}, "
             f"path {m['rapid_length'] + m['feed_length']:.1f} mm, cycle {cycle}"
             + (f" ({result['cycle_time_model']})" if "cycle_time_model" in result else "")
             + (f", {bounds}" if bounds else ""))
