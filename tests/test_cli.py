@@ -55,7 +55,7 @@ def test_run_without_json_prints_output_and_summary(invoke, prog, tmp_path):
     r = invoke("run", str(prog), "--state", str(tmp_path / "st"))
     assert r.exit_code == 0
     assert r.stdout == "roughing\n"
-    assert "ended normally: 5 steps, 1 rapid / 1 feed / 1 arc moves" in r.stderr
+    assert "ended normally: 5 steps, 3 moves, path " in r.stderr  # rapid/feed/arc counts in --json
 
 
 def test_run_fault_reports_everything_up_to_it(invoke, tmp_path):

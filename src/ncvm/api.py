@@ -219,9 +219,10 @@ def run(path: str | Path, dialect: str | None = None, machine: Machine | str | P
 
 def compile_program(path: str | Path, out: str | Path | None = None, xref: str | Path | None = None,
                     dialect: str | None = None, machine: Machine | str | Path | None = None,
-                    force: bool = False) -> Path:
-    """Compile a program; without ``out`` the dialect names the object and replaces only a file it wrote
-    itself there, or any with ``force``."""
+                    force: bool = False, xref_named: bool = True) -> Path:
+    """Compile a program; without ``out`` the dialect names the object (and the listing, ``xref_named``
+    false) and replaces only a file it wrote itself there, or any with ``force``."""
     text, d = resolve(path, dialect)
     return get_dialect(d).compile(str(path), text, machine_for(path, machine),
-                                  Path(out) if out else None, Path(xref) if xref else None, force)
+                                  Path(out) if out else None, Path(xref) if xref else None, force,
+                                  xref_named)

@@ -300,23 +300,31 @@ def _stdin_is_terminal() -> bool:
 
 
 def _summary(result: dict) -> str:
+    """One compact line (at most about 160 characters); every figure in full stands in ``--json``."""
     m = result["motion"]
     bounds = _bounds(m["bounds"])
-    if "frames" in result:  # figures in two frames (rw_SymPas): say which is which
+    if "frames" in result:  # two frames (rw_SymPas): the program's, as the user wrote it; the machine's in --json
         program = _bounds(result.get("bounds_program", {}))
-        bounds = f"(machine) {bounds}" + (f", program bounds {program}" if program and program != bounds else "")
+        bounds = f"program {program}" if program and program != bounds else bounds
     # a front end may say how a run without error ended ("ended": e.g. by a system reset)
     status = result.get("ended", "ended normally") if result["status"] == "ok" \
         else f"stopped with error {result['error']['code']}"
-    return (f"ncvm: {status}: {result['steps']:,} steps, {m['rapid_moves']} rapid / {m['feed_moves']} feed / "
-            f"{m['arc_moves']} arc moves, path {m['rapid_length'] + m['feed_length']:.3f} mm "
-            f"(feed {m['feed_length']:.3f}), cycle time {_hms(result['cycle_time_s'])}"
+    moves = m["rapid_moves"] + m["feed_moves"] + m["arc_moves"]
+    cycle = _hms(round(result["cycle_time_s"], 1))[:-2]  # m:ss.s
+    return (f"ncvm: {status}: {result['steps']:,} steps, {moves} move{'' if moves == 1 else 's'}, "
+            f"path {m['rapid_length'] + m['feed_length']:.1f} mm, cycle {cycle}"
             + (f" ({result['cycle_time_model']})" if "cycle_time_model" in result else "")
-            + (f", bounds {bounds}" if bounds else ""))
+            + (f", {bounds}" if bounds else ""))
 
 
 def _bounds(bounds: dict) -> str:
-    return " ".join(f"{a}[{lo:.3f},{hi:.3f}]" for a, (lo, hi) in bounds.items())
+    return " ".join(f"{a}[{_short(lo)},{_short(hi)}]" for a, (lo, hi) in bounds.items())
+
+
+def _short(value: float) -> str:
+    """A bound to 0.01 mm without trailing zeros: 50, -0.03, 12.5."""
+    text = f"{value:.2f}".rstrip("0").rstrip(".")
+    return "0" if text == "-0" else text
 
 
 def _check_program(program: str) -> None:
@@ -398,7 +406,8 @@ def check(programs, dialect, machine, as_json, all_errors):
 @click.option("--xref", type=click.Path(dir_okay=False), is_flag=False, flag_value="",
               help="Write the cross-reference listing (default name: the source's, .lst) and no object "
                    "program unless -o names one.")
-@click.option("--force", is_flag=True, help="Without -o: overwrite the object file even if ncvm did not write it.")
+@click.option("--force", is_flag=True, help="Overwrite the object file (without -o) or listing (--xref alone) ncvm names even if ncvm did "
+                   "not write it or it was edited since.")
 @DIALECT_OPT
 @MACHINE_OPT
 def compile_cmd(source, out, xref, force, dialect, machine):
@@ -409,6 +418,7 @@ def compile_cmd(source, out, xref, force, dialect, machine):
     from . import api
 
     _check_program(source)
+    xref_named = xref != ""
     if xref == "":
         xref = str(Path(source).with_suffix(".lst"))  # the listing has the source's file name (CL 800 L361)
     # compile has no state directory of its own, but a run's default one is no place for its files either
@@ -416,7 +426,7 @@ def compile_cmd(source, out, xref, force, dialect, machine):
                   state=DEFAULT_STATE)
     machine = machine or _folder_machine(source, say=True)
     try:
-        path = api.compile_program(source, out, xref, dialect, machine, force=force)
+        path = api.compile_program(source, out, xref, dialect, machine, force=force, xref_named=xref_named)
     except CompileFailed as e:
         for text in render_all(e.diagnostics):
             click.echo(text, err=True)

@@ -30,5 +30,5 @@ class Dialect:
         raise NotImplementedError
 
     def compile(self, path: str, text: str, machine: Machine, out: Path | None, xref: Path | None,
-                force: bool = False) -> Path:
+                force: bool = False, xref_named: bool = True) -> Path:
         raise UsageError(f"dialect '{self.id}' has no compiler: its programs run as they are")

@@ -4,7 +4,7 @@
 The groups are the internal G groups of ACG / @36b (CL 800 planning guide §11.5, L7392-7410); ACG reports
 the active function of each from this table (dialects/sinumerik/positions.py). The planning guide names
 most functions only in that table: a number whose meaning the SINUMERIK 810-880 programming guides give
-(which are not among the seeds) carries that meaning, marked "see decisions" where ncvm runs it; a number
+(which are not among the manuals this project follows) carries that meaning, marked "see decisions" where ncvm runs it; a number
 it does not run stops the block naming that meaning, so LinuxCNC's meaning of the number (G10 L2, G92
 set position) is never used in its place. docs/decisions.md, "Issue 14: the control profiles".
 """
@@ -73,11 +73,11 @@ ROWS = (
          status=DIALECT),
     _row(35, "0", "thread cutting, decreasing lead (nc/threads.py SinumerikThreads, the channel's motion mode)", MOTION,
          status=DIALECT),
-    _no(6, "0", "an interpolation of G group 0 the seed manual does not describe"),
+    _no(6, "0", "an interpolation of G group 0 the manual does not describe"),
     _no(12, "0", "circular interpolation in polar coordinates clockwise"),
     _no(13, "0", "circular interpolation in polar coordinates counter-clockwise"),
-    _no(5, "0", "an interpolation of G group 0 the seed manual does not describe"),
-    _no(7, "0", "an interpolation of G group 0 the seed manual does not describe"),
+    _no(5, "0", "an interpolation of G group 0 the manual does not describe"),
+    _no(7, "0", "an interpolation of G group 0 the manual does not describe"),
     _row(9, "1", "exact stop for this block (ncvm's moves always end at rest)", SET, nothing, FAMILY),
     _row(17, "2", "plane X Y", SET, plane),
     _row(18, "2", "plane Z X", SET, plane),
@@ -98,7 +98,7 @@ ROWS = (
     _row(60, "7", "exact stop, modal (ncvm's moves always end at rest)", SET, nothing, FAMILY),
     _no(63, "7", "tapping, override fixed at 100 %"),
     _row(64, "7", "continuous-path mode (timed as moves that end at rest)", SET, nothing, FAMILY, "L5444"),
-    _no(62, "7", "a path-control function of G group 7 the seed manual does not describe"),
+    _no(62, "7", "a path-control function of G group 7 the manual does not describe"),
     _row(70, "8", "dimensions in inch (PREP CYC, L4262)", SET, inch, line="L4262"),
     _row(71, "8", "dimensions in mm (PREP CYC, L4261)", SET, metric, line="L4261"),
     _row(80, "9", "drilling cycle off", CYCLE),
@@ -106,7 +106,7 @@ ROWS = (
           TABLE, DIALECT, CYCLE) for g in range(81, 90)),
     _row(90, "10", "absolute dimensions (L1053)", SET, absolute, line="L1053"),
     _row(91, "10", "incremental dimensions (L1804)", SET, incremental, line="L1804"),
-    _no(68, "10", "a dimension function of G group 10 the seed manual does not describe"),
+    _no(68, "10", "a dimension function of G group 10 the manual does not describe"),
     _row(94, "11", "feed in mm/min", SET, nothing),
     _row(95, "11", "feed in mm/rev (dialects/sinumerik/feeds.py, the channel's handler)", SET, threads.g95,
          status=DIALECT),
@@ -115,12 +115,12 @@ ROWS = (
     *(_no(g, "12", "soft approach to the contour") for g in (147, 247, 347)),
     *(_no(g, "12", "soft retract from the contour") for g in (148, 248, 348)),
     _no(48, "12", "retract as approached"),
-    _no(110, "12", "a function of G group 12 the seed manual does not describe"),
-    _no(111, "12", "a function of G group 12 the seed manual does not describe"),
+    _no(110, "12", "a function of G group 12 the manual does not describe"),
+    _no(111, "12", "a function of G group 12 the manual does not describe"),
     _no(50, "13", "scale modification off"),
     _no(51, "13", "scale modification on"),
-    *(_no(g, "14", "a function of 850/880 G group 14 the seed manual does not describe") for g in range(150, 160)),
-    *(_no(g, str(group), f"a function of 850/880 G group {group} the seed manual does not describe")
+    *(_no(g, "14", "a function of 850/880 G group 14 the manual does not describe") for g in range(150, 160)),
+    *(_no(g, str(group), f"a function of 850/880 G group {group} the manual does not describe")
       for group, numbers in ((15, (130, 131)), (16, (230, 231)), (17, (330, 331)), (18, range(930, 935)))
       for g in numbers),
     _no(20, "", "not in the SINUMERIK G groups; units are G70/G71"),

@@ -3,7 +3,7 @@
 The groups are the indices of SD(1) (the supplementary table of the CPL manual, L2302-2306); SD(1,n,1),
 NCF and MCODS report the active function of each from this table (dialects/cpl/system/sysdata.py).
 The block syntax and the exact behaviour of most functions are in Bosch's DIN programming manual, which
-is not among the seeds: a function the CPL manual names only by number is refused naming its group,
+is not among the manuals this project follows: a function the CPL manual names only by number is refused naming its group,
 or, where DIN 66025 gives the number a meaning the Typ3 group table agrees with, that meaning (marked
 "see decisions" when ncvm runs it). docs/decisions.md, "Issue 14: the control profiles", records each
 reading.
@@ -37,7 +37,7 @@ TABLE = "L2302"  # the supplementary table of SD(1) groups (L2302-2306)
 COMP_TABLES = (0, 4, 5)
 #: the plane G17/G18/G19 whose main and secondary axes two axis names are (in that order)
 PLANE_OF_AXES = {("X", "Y"): 17, ("Z", "X"): 18, ("Y", "Z"): 19}
-UNKNOWN = "its meaning is in Bosch's DIN programming manual, not among the seeds"
+UNKNOWN = "its meaning is in Bosch's DIN programming manual; the CPL manual does not describe it"
 
 
 def plane(k, g, words, src):

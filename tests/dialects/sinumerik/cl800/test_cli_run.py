@@ -22,7 +22,7 @@ def test_compile_command_writes_object_and_listing(tmp_path: Path):
                                    "--xref", str(tmp_path / "x.lst")])
     assert res.exit_code == 0, res.output
     assert (tmp_path / "L505.spf").read_text() == marked((GOLDEN / "b_if_then_else.spf").read_text())
-    assert (tmp_path / "x.lst").read_text() == (GOLDEN / "b_if_then_else.lst").read_text()
+    assert (tmp_path / "x.lst").read_text() == marked((GOLDEN / "b_if_then_else.lst").read_text())
 
 
 def test_l361_the_cross_reference_run_writes_the_listing_under_the_source_name_and_no_object(tmp_path: Path):

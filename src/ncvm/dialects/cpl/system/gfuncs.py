@@ -2,8 +2,8 @@
 SD/SDR groups 68, 168, 268, 131, 328 and 581 (manual §4.9 L2259-2297, L2328-2347), SD(1,28), NCF and
 MCODS 51, 54, 64-67 read them.
 
-The CPL manual names these functions but their block syntax is in the DIN manual, which is not part of
-the seeds; the forms below are recorded in docs/decisions.md:
+The CPL manual names these functions but their block syntax is in the DIN manual, which is not among
+the manuals this project follows; the forms below are recorded in docs/decisions.md:
 
 * ``G168 <axis words>``: program coordinate shift of the named axes (the others keep theirs); ``G168``
   alone clears it. ``G268 <axis words>``: the additive coordinate shift, the same way. The axis words of

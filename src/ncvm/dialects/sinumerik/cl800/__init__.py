@@ -22,7 +22,7 @@ from ..options import options as sin800_options
 from . import ast
 from .axiswords import axis_diagnostics
 from .checker import check_program
-from .codegen import MARK, ObjectProgram, compile_program, written_by_ncvm
+from .codegen import MARK, ObjectProgram, compile_program, marked, written_by_ncvm
 from .errors import CompilerMessage
 from .stopdec import stop_dec_diagnostics
 
@@ -116,15 +116,18 @@ class Cl800Dialect(Dialect):
         except CompilerMessage as e:
             raise CompileFailed([e.diagnostic()]) from None
 
-    def compile(self, path, text, machine, out, xref, force=False):
+    def compile(self, path, text, machine, out, xref, force=False, xref_named=True):
         """The object program; with ``xref`` the cross-reference listing instead, which a dedicated
         compilation writes without object code (L361), unless ``out`` asks for the object as well.
-        Without ``out`` the object is ``L<n>.spf`` beside the source, which replaces only a file ncvm wrote
-        (its :data:`MARK` note), or any with ``force``."""
+        Without ``out`` the object is ``L<n>.spf`` beside the source, and a listing whose name the user did
+        not give (``xref_named`` false) is the source's, ``.lst``: such a file is replaced only as ncvm
+        wrote it (its mark line), or any with ``force``."""
         obj = self.build(path, text, machine)
         if xref:
             refuse_overwrite("compile", Path(xref), path)
-            write_output(Path(xref), obj.xref())
+            if not xref_named and not force:
+                _refuse_a_file_ncvm_did_not_write(Path(xref))
+            write_output(Path(xref), marked(obj.xref()))
             if not out:
                 return Path(xref)
         target = Path(out) if out else Path(path).with_name(f"L{obj.number}.spf")
@@ -155,7 +158,7 @@ class Cl800Dialect(Dialect):
 
 
 def _refuse_a_file_ncvm_did_not_write(target: Path) -> None:
-    """The object's own name may be a program someone wrote or edited by hand (``L101.spf``): keep it."""
+    """The name ncvm chose may be a file someone wrote or edited by hand (``L101.spf``, ``prog.lst``): keep it."""
     try:
         text = target.read_text(encoding="latin-1")
     except FileNotFoundError:
@@ -163,7 +166,8 @@ def _refuse_a_file_ncvm_did_not_write(target: Path) -> None:
     except OSError as e:
         raise UsageError(f"compile {target}: cannot read the file there: {e.strerror}") from None
     if not written_by_ncvm(text):
-        raise UsageError(f"compile {target}: the file exists and ncvm did not write it (no {MARK} line at its end); "
+        raise UsageError(f"compile {target}: the file exists and ncvm did not write it (no {MARK} line at its end, "
+                         "or the file was changed since ncvm wrote it); "
                          "give another name with -o, or --force to overwrite it")
 
 

@@ -10,6 +10,8 @@ are pushed in the first block and popped in the last, before ``M17``.
 
 from __future__ import annotations
 
+import re
+import zlib
 from dataclasses import dataclass, field
 
 from . import ast
@@ -40,21 +42,28 @@ class Block:
         return self.items[0][1] if self.items else self.line
 
 
-#: the note (a "(Text)" block, L6401) in the last line of every object file ncvm writes, after M17 (so the
-#: header, ESS's @00f in the first block and every block's line stay where they are): a later ``compile``
-#: without -o overwrites such a file, never one without it (a hand-written or hand-edited program)
+#: the note (a "(Text)" block, L6401) that ends the last line of every file ncvm writes (object program and
+#: listing), after M17 (so the header, ESS's @00f in the first block and every block's line stay where they
+#: are). The line is ``(CRC32 <8 hex digits>) (COMPILED BY NCVM)``: the CRC-32 of the text above it, so that a
+#: later ``compile`` replaces a file only as ncvm wrote it, never one written or edited by hand since
 MARK = "(COMPILED BY NCVM)"
+_MARK_LINE = re.compile(r"\(CRC32 ([0-9A-F]{8})\) " + re.escape(MARK))
+
+
+def _crc(text: str) -> str:
+    return f"{zlib.crc32(text.replace(chr(13) + chr(10), chr(10)).encode('latin-1', 'replace')):08X}"
 
 
 def marked(text: str) -> str:
-    """Object program text with the :data:`MARK` note as its last line."""
-    return f"{text}{MARK}\n"
+    """File text with the mark line (the checksum of ``text`` and the :data:`MARK` note) as its last line."""
+    return f"{text}(CRC32 {_crc(text)}) {MARK}\n"
 
 
 def written_by_ncvm(text: str) -> bool:
-    """Whether an object file ends with the :data:`MARK` note."""
-    lines = text.rstrip().splitlines()
-    return bool(lines) and lines[-1].strip() == MARK
+    """Whether a file ends with the mark line and is, above it, what ncvm wrote (its checksum holds)."""
+    body, _, last = text.rstrip().rpartition("\n")
+    found = _MARK_LINE.fullmatch(last.strip())
+    return bool(found) and found.group(1) == _crc(body + "\n")
 
 
 @dataclass
