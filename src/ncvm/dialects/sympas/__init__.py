@@ -150,8 +150,9 @@ class SympasDialect(Dialect):
                 raise CompileFailed([Diagnostic("SP010", f"two programs are loaded into task {n}",
                                                 _span(u.prog))])
             tasks[n].load(u)
-            for loc in u.locs[1:]:  # an included file two tasks share counts for the first of them
-                card.task_at.setdefault(loc, n)
+            for loc in u.locs[1:]:  # an included file two tasks share counts for the lower-numbered one
+                if card.task_at.get(loc, n) >= n:
+                    card.task_at[loc] = n
         main_task = tasks[main.task if main.task is not None else 0]
         main_task.start(0.0)
         card.scheduler.main = main_task

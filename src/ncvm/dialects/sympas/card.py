@@ -70,7 +70,7 @@ class Card:
         #: {"task", "text"} of each output line (see say), kept as the result keeps the lines themselves
         self.output_log = OperatorOutput(session.options.max_output_lines)
         self.timeline = Timeline(self, [a.m for a in self.axes])  # reports the retired moves in time order
-        #: (file, line) of a statement -> the task whose program holds it (the front end fills it in)
+        #: (file, line) of a statement -> the lowest-numbered task whose program holds it (filled by the front end)
         self.task_at: dict[tuple[str, int], int] = {}
 
     # -- scenario events ------------------------------------------------------------------------------
@@ -293,11 +293,9 @@ class Card:
         self.output_log.append({"task": task, "text": text})
 
     def task_of(self, src: Src) -> int | None:
-        """The task whose program holds the statement at ``src``."""
-        for tk in self.scheduler.tasks:
-            if tk.unit is not None and src in tk.unit.srcs:
-                return tk.number
-        return None
+        """The task whose program holds the statement at ``src`` (the lowest-numbered one for a file two
+        tasks include)."""
+        return self.task_at.get(src)
 
     def refuse(self, tk, axes, why: str, loc) -> None:
         """The card discards a path profile: the axes' refused bit, and a message (L1415) unless MODEREG
