@@ -75,3 +75,53 @@ def test_m5_alone_in_its_block_stays_before_the_retract_issue16_rule4(tmp_path):
     code = body(text)
     retract = next(i for i, c in enumerate(code) if c.startswith("G0") and "Z50" in c)
     assert code.index("M5") < retract, f"the program stopped the spindle before the retract: {code}"
+
+
+# Issue 16, rule 1 "Work coordinates by default ... with offsets and tool lengths [not] baked in"
+# ("a different fixture on the new machine crashes the tool"). The SINUMERIK block N50 retracts Z
+# alone in machine coordinates (G53). ncvm wrote `G53 G0 X160.02 Y119.99 Z0`: X and Y, which the
+# block did not program, as the SIMULATED machine positions (the simulation's G54 X150.02 Y99.99
+# baked in). On the new control that is a rapid to wherever its own G54 puts those machine values.
+# Then N60 programs X30 Y40 and leaves Z at the machine retract height; ncvm wrote `Z-85.1`, the
+# retract height re-expressed through the simulation's G54 Z and tool length 85.1: on a control with
+# another G54 Z or tool length that Z is no longer the retract height (down into the part/table).
+G53_RETRACT = """%MPF101
+N10 G17 G71 G90 G54 G94
+N20 T1 M6 D1
+N30 S2000 M3
+N40 G0 X10 Y20 Z50
+N50 G53 G0 Z0
+N60 G0 X30 Y40
+N70 M30
+"""
+
+SIN800_MACHINE = Path(__file__).resolve().parents[2] / "examples" / "sin800" / "machine.toml"
+
+
+def _g53_case(tmp_path, target):
+    (tmp_path / "machine.toml").write_text(SIN800_MACHINE.read_text())
+    return translate(tmp_path, G53_RETRACT, "g53.mpf", "--target", target)
+
+
+@pytest.mark.parametrize("target", ["linuxcnc", "sinumerik840d", "iso"])
+def test_g53_retract_writes_no_simulated_machine_xy_issue16_rule1(tmp_path, target):
+    rc, text, err = _g53_case(tmp_path, target)
+    if rc != 0:  # a clear refusal is acceptable, a silently wrong move is not
+        assert "TRN001" in err and text == ""
+        return
+    line = next(c for c in body(text) if c.startswith(("G53", "SUPA")))
+    assert "X160.02" not in line and "Y119.99" not in line, (
+        f"the block moved Z only; X/Y are the simulation's machine positions: {line}")
+
+
+@pytest.mark.parametrize("target", ["linuxcnc", "sinumerik840d", "iso"])
+def test_move_after_g53_retract_keeps_no_simulated_z_issue16_rule1(tmp_path, target):
+    rc, text, err = _g53_case(tmp_path, target)
+    if rc != 0:
+        assert "TRN001" in err and text == ""
+        return
+    code = body(text)
+    after = code[next(i for i, c in enumerate(code) if c.startswith(("G53", "SUPA"))) + 1]
+    assert "Z-85.1" not in after, (
+        f"N60 left Z at the machine retract height; Z-85.1 is that height through the simulated "
+        f"G54 Z and tool length 85.1: {after}")
