@@ -125,3 +125,30 @@ def test_move_after_g53_retract_keeps_no_simulated_z_issue16_rule1(tmp_path, tar
     assert "Z-85.1" not in after, (
         f"N60 left Z at the machine retract height; Z-85.1 is that height through the simulated "
         f"G54 Z and tool length 85.1: {after}")
+
+
+# Issue 16, rule 1 again, and the most dangerous case found: the program's first move programs X
+# alone; Y and Z stay where the machine stands (its home). ncvm wrote `G0 X10 Y-99.99 Z-85.1`: the
+# machine home re-expressed through the SIMULATED G54 (Y99.99) and tool length (85.1). On the new
+# control, with work Z0 on the part surface, that is a rapid 85.1 mm below the surface into the part.
+# Axes the program did not move before they were ever programmed have no work position to write.
+FIRST_MOVE_X_ONLY = """%MPF102
+N10 G17 G71 G90 G54 G94
+N20 T1 M6 D1
+N30 S2000 M3
+N40 G0 X10
+N50 G0 Y20 Z50
+N70 M30
+"""
+
+
+@pytest.mark.parametrize("target", ["linuxcnc", "sinumerik840d", "iso"])
+def test_first_move_does_not_rapid_unprogrammed_z_to_simulated_home_issue16_rule1(tmp_path, target):
+    (tmp_path / "machine.toml").write_text(SIN800_MACHINE.read_text())
+    rc, text, err = translate(tmp_path, FIRST_MOVE_X_ONLY, "first.mpf", "--target", target)
+    if rc != 0:
+        assert "TRN001" in err and text == ""
+        return
+    first = next(c for c in body(text) if c.startswith("G0"))
+    assert "Z-85.1" not in first and "Y-99.99" not in first, (
+        f"N40 moved X only; Y/Z are the simulated home through simulated offsets: {first}")
