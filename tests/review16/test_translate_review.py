@@ -152,3 +152,34 @@ def test_first_move_does_not_rapid_unprogrammed_z_to_simulated_home_issue16_rule
     first = next(c for c in body(text) if c.startswith("G0"))
     assert "Z-85.1" not in first and "Y-99.99" not in first, (
         f"N40 moved X only; Y/Z are the simulated home through simulated offsets: {first}")
+
+
+# Issue 16, rule 1 ("the output keeps the program's frame") and "Done means" ("the same end points
+# (program coordinates)"; the trace's "work" is the end point "in program coordinates"). In
+# rw_SymPas the REF point becomes the axis zero on homing (docs/decisions.md, Homing); the example
+# machine has its REF switches at A1 -5, A2 -5, A3 +5. The program moves to A1 50, A2 40, A3 -60 and
+# `ncvm run` itself reports "program bounds A1[..,50.000] A2[..,40.000] A3[-60.000,..]", but the
+# translation writes X45 Y35 Z-55 (machine positions) under a header that says G54 is X0 Y0 Z0:
+# every position is silently 5 mm off the program's on the new control.
+SYMPAS_HOME = """program HomeThenMove;
+begin
+  JHRW(A3);
+  JHLW(A1); JHLW(A2);
+  TRVL := 200.0; TRAC := 1500.0;
+  MLAW(A3 := 0.0);
+  MLAW(A1 := 50.0, A2 := 40.0);
+  MLAW(A3 := -60.0);
+end.
+"""
+
+SYMPAS_MACHINE = Path(__file__).resolve().parents[2] / "examples" / "sympas" / "machine.toml"
+
+
+@pytest.mark.parametrize("target", ["linuxcnc", "sinumerik840d", "iso"])
+def test_sympas_positions_are_the_programs_after_homing_issue16_rule1(tmp_path, target):
+    (tmp_path / "machine.toml").write_text(SYMPAS_MACHINE.read_text())
+    rc, text, err = translate(tmp_path, SYMPAS_HOME, "home.sap", "--target", target)
+    assert rc == 0, err
+    code = body(text)
+    assert any("X50 " in c + " " and "Y40" in c for c in code), f"MLAW(A1 := 50, A2 := 40) not at X50 Y40: {code}"
+    assert any("Z-60" in c for c in code), f"MLAW(A3 := -60) not at Z-60: {code}"
