@@ -183,3 +183,20 @@ def test_sympas_positions_are_the_programs_after_homing_issue16_rule1(tmp_path, 
     code = body(text)
     assert any("X50 " in c + " " and "Y40" in c for c in code), f"MLAW(A1 := 50, A2 := 40) not at X50 Y40: {code}"
     assert any("Z-60" in c for c in code), f"MLAW(A3 := -60) not at Z-60: {code}"
+
+
+# Issue 16, rule 4 ("Program order kept") with rule 1 (tool length as `G43 H<n>` / the target's
+# equivalent). The SINUMERIK example block `N20 T1 M6 D1` selects the cutting edge of the NEW tool
+# after the change; ncvm writes `G43 H1` / `D1` BEFORE `T1 M6`: on the 840D the D1 then refers to the
+# tool still in the spindle (T0: no such edge), and on LinuxCNC/ISO the length of tool 1 is applied
+# to the old tool through the tool change. Expected: the tool change first, then its length.
+FLANGE_MPF = Path(__file__).resolve().parents[2] / "examples" / "sin800" / "flange.mpf"
+
+
+@pytest.mark.parametrize(("target", "length"), [("linuxcnc", "G43 H1"), ("sinumerik840d", "D1"), ("iso", "G43 H1")])
+def test_tool_length_follows_its_tool_change_issue16_rule4(tmp_path, target, length):
+    (tmp_path / "machine.toml").write_text(SIN800_MACHINE.read_text())
+    rc, text, err = translate(tmp_path, FLANGE_MPF.read_text(), "flange.mpf", "--target", target)
+    assert rc == 0, err
+    code = body(text)
+    assert code.index("T1 M6") < code.index(length), f"{length} written before the tool change T1 M6: {code[:8]}"
