@@ -200,3 +200,32 @@ def test_tool_length_follows_its_tool_change_issue16_rule4(tmp_path, target, len
     assert rc == 0, err
     code = body(text)
     assert code.index("T1 M6") < code.index(length), f"{length} written before the tool change T1 M6: {code[:8]}"
+
+
+# Issue 16, rule 3 ("the output marks the block with a comment naming the decision and its source
+# line"; docs/translate.md: "before the block it leads to"). The CPL program reads IC(1,1,1) at line 3
+# AFTER its N10 rapid; ncvm put the FROZEN mark before that N10 rapid (ic.cpl:2), which does not
+# depend on the input, instead of before the N50 feed (ic.cpl:6) that the branch led to.
+CPL_IC_BRANCH = """(IC branch)
+N10 G90 G0 X0 Y0 Z5
+20 IF IC(1,1,1) THEN
+N30 G1 Z-10 F100
+40 ELSE
+N50 G1 Z-1 F100
+60 ENDIF
+N70 G0 Z5
+M30
+"""
+
+CPL_MACHINE = Path(__file__).resolve().parents[2] / "examples" / "cpl" / "machine.toml"
+
+
+def test_frozen_mark_stands_before_the_block_the_input_led_to_issue16_rule3(tmp_path):
+    (tmp_path / "machine.toml").write_text(CPL_MACHINE.read_text())
+    rc, text, err = translate(tmp_path, CPL_IC_BRANCH, "ic.cpl")
+    assert rc == 0, err
+    lines = text.splitlines()
+    mark = next(i for i, line in enumerate(lines) if "FROZEN" in line and "ic.cpl:3" in line)
+    first_rapid = next(i for i, line in enumerate(lines) if line.startswith("G0") and "(ic.cpl:2)" in line)
+    branch_move = next(i for i, line in enumerate(lines) if "(ic.cpl:6)" in line)
+    assert first_rapid < mark < branch_move, "\n".join(lines)
