@@ -229,3 +229,38 @@ def test_frozen_mark_stands_before_the_block_the_input_led_to_issue16_rule3(tmp_
     first_rapid = next(i for i, line in enumerate(lines) if line.startswith("G0") and "(ic.cpl:2)" in line)
     branch_move = next(i for i, line in enumerate(lines) if "(ic.cpl:6)" in line)
     assert first_rapid < mark < branch_move, "\n".join(lines)
+
+
+# Issue 16, rules 1 and 3 (no simulated tool data baked in silently; "say what was frozen"). The
+# SINUMERIK program mills a 50 x 30 contour with G41 and the simulated D1 radius 4.25. ncvm wrote the
+# simulated tool-centre path (Y4.25, X45.75, ...) with no G41/G42 and no word in the header or the
+# docs: on the new control a cutter of another radius (or wear) cuts the part silently off size.
+# Expected: the contour with G41/G42 (the target's compensation), or a header naming the radius
+# compensation included in the positions and the radius used.
+CRC = """%MPF103
+N10 G17 G71 G90 G54 G94
+N20 T1 M6 D1
+N30 S2000 M3
+N40 G0 X-20 Y-20 Z50
+N45 G0 Z-5
+N50 G41 G1 X0 Y0 F200
+N60 X50
+N70 Y30
+N80 X0
+N90 Y0
+N100 G40 G1 X-20 Y-20
+N110 G0 Z50
+N120 M30
+"""
+
+
+@pytest.mark.parametrize("target", ["linuxcnc", "sinumerik840d", "iso"])
+def test_cutter_radius_compensation_is_kept_or_named_issue16_rule1(tmp_path, target):
+    (tmp_path / "machine.toml").write_text(SIN800_MACHINE.read_text())
+    rc, text, err = translate(tmp_path, CRC, "crc.mpf", "--target", target)
+    if rc != 0:
+        assert "TRN001" in err and text == ""
+        return
+    kept = any(c.startswith(("G41", "G42")) or " G41" in c or " G42" in c for c in body(text))
+    named = "radius" in text.lower() and "4.25" in text
+    assert kept or named, f"G41 path with the simulated radius 4.25 baked in, unsaid:\n{text}"
