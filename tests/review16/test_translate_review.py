@@ -13,7 +13,7 @@ def translate(tmp_path: Path, source: str, name: str = "prog.din", *args: str) -
     out = tmp_path / "out.ngc"
     r = subprocess.run(
         [sys.executable, "-m", "ncvm", "translate", str(prog), "-o", str(out), "--source-comments", *args],
-        capture_output=True, text=True, timeout=120,
+        capture_output=True, text=True, timeout=120, cwd=tmp_path,  # the state (.ncvm) stays in tmp_path
     )
     return r.returncode, out.read_text() if out.exists() else "", r.stderr
 
