@@ -264,3 +264,30 @@ def test_cutter_radius_compensation_is_kept_or_named_issue16_rule1(tmp_path, tar
     kept = any(c.startswith(("G41", "G42")) or " G41" in c or " G42" in c for c in body(text))
     named = "radius" in text.lower() and "4.25" in text
     assert kept or named, f"G41 path with the simulated radius 4.25 baked in, unsaid:\n{text}"
+
+
+# Issue 16, rule 4 ("feed and spindle words as programmed"). N50 feeds 0.1 mm per revolution (G95)
+# at S1000; ncvm wrote `G1 ... F100` under the header's G94 (mm/min), with no word in the output or in
+# docs/translate.md (which names only G96 among the frozen feeds/speeds). On the new control a spindle
+# override or another S no longer scales the feed: at 50 % spindle override the chip load doubles.
+# Expected: `G95` with `F0.1` (all three targets have G95), or the conversion named in the header.
+G95_FEED = """%
+N10 G90 G17 G71 G54
+N20 T1 M6
+N30 S1000 M3
+N40 G0 X0 Y0 Z5
+N50 G95 G1 Z-10 F0.1
+N60 G94 G1 X10 F100
+N70 M30
+"""
+
+
+@pytest.mark.parametrize("target", ["linuxcnc", "sinumerik840d", "iso"])
+def test_feed_per_revolution_is_kept_or_named_issue16_rule4(tmp_path, target):
+    rc, text, err = translate(tmp_path, G95_FEED, "g95.din", "--target", target)
+    assert rc == 0, err
+    code = body(text)
+    plunge = next(c for c in code if c.startswith("G1") and "Z-10" in c and "X0" in c)
+    kept = any("G95" in c for c in code) and "F0.1" in plunge
+    named = "per revolution" in text.lower() or "g95" in text.lower()
+    assert kept or named, f"G95 F0.1 became {plunge!r} in mm/min, unsaid:\n{text}"
