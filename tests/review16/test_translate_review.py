@@ -284,7 +284,7 @@ N70 M30
 
 @pytest.mark.parametrize("target", ["linuxcnc", "sinumerik840d", "iso"])
 def test_feed_per_revolution_is_kept_or_named_issue16_rule4(tmp_path, target):
-    rc, text, err = translate(tmp_path, G95_FEED, "g95.din", "--target", target)
+    rc, text, err = translate(tmp_path, G95_FEED, "feed.din", "--target", target)
     assert rc == 0, err
     code = body(text)
     plunge = next(c for c in code if c.startswith("G1") and "Z-10" in c and "X0" in c)
