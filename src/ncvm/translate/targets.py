@@ -43,7 +43,8 @@ class Target:
     #: an operator message
     message: str
     program_end: str
-    #: selected for ``--frame machine`` (the header says that it must be all zero)
+    #: selected for ``--frame machine`` (the header says that it must be all zero), with no tool length where
+    #: the preamble does not cancel it (840D: D0)
     machine_frame: str = "G54"
     #: the first and last line of the file (the tape wrapper), empty: none
     wrapper: str = ""
@@ -85,7 +86,7 @@ SINUMERIK_840D = Target(
     machine_move="SUPA", machine_move_keeps_tool=True,
     dwell="G4 F{s}", probe="MEAS=1 G1 {axes}{feed}", probe_no_contact="MEAS=1 G1 {axes}{feed}", turns=" TURN={n}", message='MSG("{}")',
     thread=None,
-    program_end="M30", machine_frame="G500", comment_escapes={'"': "'", "\n": " "})
+    program_end="M30", machine_frame="G500 D0", comment_escapes={'"': "'", "\n": " "})
 
 #: plain ISO / Fanuc style: the tape wrapper %, G43 H, dwell in seconds as X; no standard probe move
 ISO = Target(

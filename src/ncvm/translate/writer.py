@@ -84,6 +84,9 @@ class Translation(CanonSink):
         self._hidden: list[int] = []
         self._tool_number = 0
         self._frame_unrecorded = True
+        #: the tool length call of a frame change, written before the next line (after a tool change of its block)
+        self._tool_pending: tuple[Frame, Src | None] | None = None
+        self._written: set[str] = set()  # the axes written in a move so far
 
     # -- output ----------------------------------------------------------
     def refuse(self, src: Src | None, message: str) -> None:
@@ -93,6 +96,8 @@ class Translation(CanonSink):
     def _line(self, text: str, src: Src | None = None) -> None:
         if self.refusal is not None:
             return
+        if self._tool_pending is not None:
+            self._tool_length()
         if self._frozen:
             notes, self._frozen = self._frozen, []
             self._frozen_pending.clear()
@@ -116,15 +121,50 @@ class Translation(CanonSink):
             raise OutputError(self.out_path, e) from None
 
     def _flush_after(self, src: Src | None = None) -> None:
-        """Write the block's M5 / M9 once its move is out (DIN 66025: they act at the end of the block)."""
-        if self._after and (src is None or all(s != src for _, s in self._after)):
-            after, self._after = self._after, []
-            for text, s in after:
-                self._line(text, s)
+        """Write the M5 / M9 held back, in program order: before a move, those of earlier blocks (``src``:
+        the moving block's, which wait for its move: DIN 66025, they act at the end of the block);
+        else all of them."""
+        if not self._after:
+            return
+        if src is None:
+            now, self._after = self._after, []
+        else:
+            now = [a for a in self._after if a[1] != src]
+            self._after = [a for a in self._after if a[1] == src]
+        for text, s in now:
+            self._line(text, s)
 
-    def _axes(self, p, machine_frame: bool = False) -> str:
+    def _tool_length(self) -> None:
+        """The tool length call of the last frame change: written before anything else, but after the tool
+        change of its own block (the 840D's D and the length of H belong to the tool the M6 loads)."""
+        frame, src = self._tool_pending
+        self._tool_pending = None
+        if frame.tool_length == 0.0:
+            self._line(self.t.tool_length_off, src)
+            return
+        n = frame.tool_offset or self._tool
+        if not n:
+            self.refuse(src, f"a tool length of {number(frame.tool_length)} mm without a tool offset "
+                             "number or a tool in the spindle")
+            return
+        self._tool_number = n
+        self._line(self.t.tool_length_on.format(n=n), src)
+
+    def _axes(self, p, start=None, machine_frame: bool = False, always=()) -> str:
+        """The axis words of end point ``p``: only the axes that move from ``start`` (and ``always``), as the
+        program programmed them; an axis standing still is left out, so that no position the program did
+        not program (the simulated home, a G53 retract height) is re-expressed through the simulated offsets.
+        A move in which nothing moves gets the axes written before (none: the move is left out)."""
         removed = self._machine_removed() if machine_frame else self.removed
-        return " ".join(f"{n}{number(v - r)}" for n, v, r in zip(self.names, p, removed) if n in self.t.axes)
+        if start is None:
+            use = set(range(len(self.names)))
+        else:
+            use = {i for i, (a, b) in enumerate(zip(start, p)) if abs(a - b) > 1e-9} | set(always)
+            if not use:
+                use = {i for i in range(len(self.names)) if self.names[i] in self._written}
+        self._written.update(self.names[i] for i in use)
+        return " ".join(f"{n}{number(p[i] - removed[i])}" for i, n in enumerate(self.names)
+                        if i in use and n in self.t.axes)
 
     def _machine_removed(self) -> tuple[float, ...]:
         """A G53 move: machine coordinates, less the tool length where the control keeps it."""
@@ -156,6 +196,7 @@ class Translation(CanonSink):
         self.frame_now = frame
         if not self.work:
             return
+        self._flush_after(src)  # the M5 / M9 of earlier blocks come before this block's words
         if frame.work_offset == "G53":
             return  # one move in machine coordinates: written with its prefix
         self.removed = frame.removed()
@@ -173,16 +214,7 @@ class Translation(CanonSink):
         tool = (frame.tool_offset, frame.tool_length)
         if tool != self._tool_written:
             self._tool_written = tool
-            if frame.tool_length == 0.0:
-                self._line(self.t.tool_length_off, src)
-            else:
-                n = frame.tool_offset or self._tool
-                if not n:
-                    self.refuse(src, f"a tool length of {number(frame.tool_length)} mm without a tool offset "
-                                     "number or a tool in the spindle")
-                    return
-                self._tool_number = n
-                self._line(self.t.tool_length_on.format(n=n), src)
+            self._tool_pending = (frame, src)
         self._frame_unrecorded = True
 
     def _record_setup(self) -> None:
@@ -226,6 +258,8 @@ class Translation(CanonSink):
     def _move_starts(self, start, end, src) -> bool:
         """What every move does first (the block's M5/M9 wait, the setup is recorded); False: refused."""
         self._flush_after(src)
+        if self._tool_pending is not None:
+            self._tool_length()
         self.moves += 1
         if self._frame_unrecorded:
             self._record_setup()
@@ -235,13 +269,13 @@ class Translation(CanonSink):
         if not self._move_starts(start, end, src):
             return
         if self._probe is not None:
-            self._probe_move(end, feed, src)
+            self._probe_move(start, end, feed, src)
             return
         prefix = self._machine_prefix(src)
         feed_word = self._feed_word(feed) if feed is not None else ""
-        self._line(f"{prefix}{code} {self._axes(end, bool(prefix))}{feed_word}", src)
+        self._line(f"{prefix}{code} {self._axes(end, start, bool(prefix))}{feed_word}", src)
 
-    def _probe_move(self, end, feed, src) -> None:
+    def _probe_move(self, start, end, feed, src) -> None:
         """The move after a canon ``probe`` call: the target's probe move to the programmed end point."""
         trip, target, psrc = self._probe
         self._probe = None
@@ -273,7 +307,7 @@ class Translation(CanonSink):
             seen = ", ".join(f"{n}{number(v - self.removed[self.names.index(n)])}" for n, v in trip.items())
             self.frozen(f"measured value: the simulated probe switched at {seen}", psrc)
             word = self.t.probe
-        self._line(word.format(axes=self._axes(goal), feed=self._feed_word(feed)), src)
+        self._line(word.format(axes=self._axes(goal, start), feed=self._feed_word(feed)), src)
 
     def rapid(self, start, end, src):
         self._straight("G0", start, end, None, src)
@@ -291,7 +325,7 @@ class Translation(CanonSink):
         elif self._machine_prefix(src):
             self.refuse(src, "a thread in machine coordinates (G53)")
         else:
-            self._line(self.t.thread.format(axes=self._axes(end), lead=f"{lead:.6f}".rstrip("0").rstrip(".")), src)  # a lead error adds up turn by turn
+            self._line(self.t.thread.format(axes=self._axes(end, start), lead=f"{lead:.6f}".rstrip("0").rstrip(".")), src)  # a lead error adds up turn by turn
 
     def arc(self, start, end, spec, feed, src):
         if not self._move_starts(start, end, src):
@@ -316,7 +350,7 @@ class Translation(CanonSink):
         ci = number(spec.center[0] - start[spec.a])
         cj = number(spec.center[1] - start[spec.b])
         turns = self.t.turns.format(n=self._turns(spec.turns)) if spec.turns else ""
-        self._line(f"{'G2' if spec.cw else 'G3'} {self._axes(end)} {CENTRE_WORDS[an]}{ci} {CENTRE_WORDS[bn]}{cj}"
+        self._line(f"{'G2' if spec.cw else 'G3'} {self._axes(end, start, always=(spec.a, spec.b))} {CENTRE_WORDS[an]}{ci} {CENTRE_WORDS[bn]}{cj}"
                    f"{turns}{self._feed_word(feed)}", src)
 
     def _turns(self, extra: int) -> int:
@@ -329,8 +363,13 @@ class Translation(CanonSink):
 
     def tool_change(self, tool, src):
         self._flush_after()
+        held = self._tool_pending if self._tool_pending is not None and self._tool_pending[1] == src else None
+        self._tool_pending = None if held else self._tool_pending
         self._tool = tool
         self._line(f"T{tool} M6", src)
+        if held is not None:  # the block's own tool length: for the tool just loaded
+            self._tool_pending = held
+            self._tool_length()
 
     def spindle(self, speed, direction, src):
         if direction == 0:

@@ -139,6 +139,10 @@ class Card:
         zo = self.zo.get(self.active_zo)
         return a.ref + a.zerooffset + (zo[a.number] if zo and a.number < len(zo) else 0.0)
 
+    def work_shift(self) -> tuple[float, ...]:
+        """Per axis, machine position less user position now: the REF point of homing and the zero offsets."""
+        return tuple(self.user_shift(a) for a in self.axes)
+
     def busy(self, a: AxisState, t: float) -> bool:
         return a.move is not None and a.move.t1 > t
 

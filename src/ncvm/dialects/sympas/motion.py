@@ -148,7 +148,7 @@ class Move:
     __slots__ = ("axes", "p0", "p1", "kind", "t0", "t1", "prof", "center", "radius", "a0", "phi", "plane",
                  "normal", "lin", "src", "start_all", "feed", "stop_s", "stop_t", "stop_dec", "retired", "jog",
                  "homing", "vmax", "ovr0", "warp", "stop_v0", "stop_s0", "drift",
-                 "weights", "plane_w", "braked", "dirs")
+                 "weights", "plane_w", "braked", "dirs", "shift")
 
     def __init__(self, axes, p0, p1, kind, src: Src, start_all):
         self.axes = axes

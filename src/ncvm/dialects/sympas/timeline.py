@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import math
 
-from ...nc.canon import ArcSpec
+from ...nc.canon import ArcSpec, Frame
 from .motion import TICKS_PER_S, TWO_PI
 
 #: largest distance (axis units) of a sampled combined path from the real one
@@ -40,10 +40,12 @@ class Timeline:
         self.profile_length = 0.0
         self.last_end = 0.0  # the latest end of a retired move: the axes stand still after it
         self.task: int | None = None  # the CNC task whose moves were reported last (canon ``channel``)
+        self.shift: tuple[float, ...] = (0.0,) * len(start)  # the frame told to the canon last (canon ``frame``)
 
     def add(self, mv) -> None:
         """A move retired: it is final and is reported when the time it ran is reported."""
         if mv.t1 > mv.t0:
+            mv.shift = self.card.work_shift()  # the user coordinates the move ends in
             self.profile_length += mv.stop_s if mv.stop_s is not None else mv.prof.length
             if mv.t1 > self.last_end:
                 self.last_end = mv.t1
@@ -58,6 +60,7 @@ class Timeline:
         if self.pending:
             self.report(math.inf)
         self._channel(src)
+        self._frame(self.card.work_shift(), src)
         self.canon.feed(start, end, feed, src)
         self.profile_length += length
         self.last_end = self.t = t1  # every axis was idle: nothing ends later
@@ -102,6 +105,14 @@ class Timeline:
             self.task = task
             self.canon.channel(task, src)
 
+    def _frame(self, shift: tuple[float, ...], src) -> None:
+        """Tell the sinks the user coordinates of the moves that follow, when they changed (homing makes the REF
+        point the axis zero; zero offsets add to it): the trace's ``work`` and the translation are the
+        program's positions (docs/translate.md). ``G54`` names the card's zero point for the translation."""
+        if shift != self.shift:
+            self.shift = shift
+            self.canon.frame(Frame("G54", shift, (0.0,) * len(shift)), src)
+
     def _place(self, m, t: float) -> None:
         p = m.pos(t)
         for k, ax in enumerate(m.axes):
@@ -117,6 +128,7 @@ class Timeline:
         end = tuple(self.pos)
         canon = self.canon
         self._channel(m.src)
+        self._frame(m.shift, m.src)
         if m.jog:
             canon.rapid(start, end, m.src)
             return
@@ -169,6 +181,7 @@ class Timeline:
         src = max(active, key=lambda m: m.t0).src  # the task that started last names the combined path
         canon = self.canon
         self._channel(src)
+        self._frame(max(active, key=lambda m: m.t0).shift, src)
         for (t0, p0), (t1, p1) in zip(points, points[1:]):
             d = math.dist(p0, p1)
             if d <= 0.0:
