@@ -175,6 +175,14 @@ class CanonSink:
     def dwell(self, seconds: float, src: Src) -> None:
         """Wait with axes standing still."""
 
+    def feed_per_rev(self, feed: float | None, src: Src | None) -> None:
+        """Feed per revolution (G95): the F of the moves that follow is ``feed`` mm per spindle revolution (their
+        ``feed`` is the path feed it gives, mm/min); None: feed per minute again (G94)."""
+
+    def radius_compensation(self, g: int, radius: float, src: Src) -> None:
+        """Cutter radius compensation ``g`` (41 left, 42 right of the contour) with ``radius`` starts: the moves
+        that follow are the tool centre's path, the programmed contour offset by the radius."""
+
     def channel(self, number: int, src: Src | None) -> None:
         """The moves that follow are made by channel ``number``: one of the programs a control runs at the
         same time (the rw_SymPas card's CNC tasks)."""
@@ -215,6 +223,7 @@ class CanonSink:
 
 
 _METHODS = ("begin", "rapid", "feed", "arc", "thread", "move_batch", "timing", "frame", "frozen", "channel", "dwell",
+            "feed_per_rev", "radius_compensation",
             "tool_change", "tool_offset", "spindle", "coolant", "aux", "probe", "message", "stop", "program_end", "end")
 
 

@@ -40,7 +40,7 @@ _REFUSED_G = {53: "G53 (machine coordinates)", 54: "a zero offset change", 55: "
               56: "a zero offset change", 57: "a zero offset change", 58: "a zero offset change",
               59: "a zero offset change", 92: "G92 (set position)", 92.1: "G92.1 (cancel G92)",
               10: "G10 (offset tables)", 43: "G43 (tool length)", 44: "G44 (tool length)", 49: "G49 (tool length)"}
-_DEFERRED = ("message", "dwell", "spindle", "coolant", "aux", "probe", "tool_offset", "frame")
+_DEFERRED = ("message", "dwell", "spindle", "coolant", "aux", "probe", "tool_offset", "frame", "feed_per_rev")
 
 
 def iso_radius(kernel, g: int, words, src: Src) -> float:
@@ -83,6 +83,8 @@ def select(kernel, g: int, words, src: Src) -> None:
         radius, side = -radius, -side
     if comp is not None:
         comp.detach()
+    if radius:
+        kernel.canon.radius_compensation(g, radius, src)
     CutterComp(kernel, side, radius).g = g
 
 

@@ -352,6 +352,7 @@ class NcKernel:
         if "F" in words and not dwell_block and not (motion_modes and motion in motion_modes):
             if self.per_rev:
                 self.feed_per_rev = words["F"] * self.scale if self.scale != 1.0 else words["F"]
+                canon.feed_per_rev(self.feed_per_rev, src)
             else:
                 self.feed = words["F"] * self.scale if self.scale != 1.0 else words["F"]
         if "S" in words:

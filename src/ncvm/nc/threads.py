@@ -63,6 +63,7 @@ def g94(k, g, words, src: Src) -> bool:
         k.per_rev = False
         k.spindle_bound = k.css
         k.feed = 0.0
+        k.canon.feed_per_rev(None, src)
     return False
 
 
@@ -72,6 +73,7 @@ def g95(k, g, words, src: Src) -> bool:
         k.feed_switch = (95, k.feed)
         k.per_rev = k.spindle_bound = True
         k.feed_per_rev = k.feed = 0.0
+        k.canon.feed_per_rev(0.0, src)
     return False
 
 

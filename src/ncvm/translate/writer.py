@@ -87,6 +87,7 @@ class Translation(CanonSink):
         #: the tool length call of a frame change, written before the next line (after a tool change of its block)
         self._tool_pending: tuple[Frame, Src | None] | None = None
         self._written: set[str] = set()  # the axes written in a move so far
+        self._per_rev: float | None = None  # G95: the F in mm per revolution
 
     # -- output ----------------------------------------------------------
     def refuse(self, src: Src | None, message: str) -> None:
@@ -175,6 +176,9 @@ class Translation(CanonSink):
         return tuple(out)
 
     def _feed_word(self, feed: float) -> str:
+        """The F word where the feed changes: under G95 the program's feed per revolution, not the path feed."""
+        if self._per_rev is not None:
+            feed = self._per_rev
         if feed != self._feed:
             self._feed = feed
             return f" F{number(feed)}"
@@ -356,6 +360,18 @@ class Translation(CanonSink):
     def _turns(self, extra: int) -> int:
         """LinuxCNC's P counts the turns begun (1 + the full ones), SINUMERIK's TURN the full ones."""
         return extra + 1 if self.t.turns.strip().startswith("P") else extra
+
+    def feed_per_rev(self, feed, src):
+        self._flush_after(src)
+        if (feed is None) != (self._per_rev is None):
+            self._line("G94" if feed is None else "G95", src)
+            self._feed = None  # F means something else now: written again with the next move
+        self._per_rev = feed
+
+    def radius_compensation(self, g, radius, src):
+        self.refuse(src, f"cutter radius compensation G{g}: the run gives the tool centre's path for the simulated "
+                         f"radius {number(radius)} mm, and ncvm does not write the programmed contour with "
+                         f"G{g}; a cutter of another radius would cut the part off size")
 
     def dwell(self, seconds, src):
         self._flush_after()

@@ -122,6 +122,9 @@ class CplRuntime:
             self.enqueue = self.queue.put
         self.row_words: set[str] = set()  # the addresses the plain rows of the units made so far have
         self._shadow = None  # the NC state after every prepared block (see prepared_kernel)
+        #: inputs read while blocks wait in the queue: (blocks executed before it, what, where), told to the
+        #: canon when execution reaches the block prepared after the read (canon calls keep program order)
+        self._frozen_due: list[tuple[int, str, Src | None]] = []
         self._shadow_at = 0
         self.modal = [None]
         self.calls = call_table(self.machine)
@@ -328,7 +331,18 @@ class CplRuntime:
         """The run read ``what`` from outside the program (a key, an input): canon ``frozen`` at the CPL line
         running now."""
         where = running_line({path: uc.src for path, uc in self._codes.items()})
-        self.kernel.canon.frozen(what, Src(*where) if where else None)
+        src = Src(*where) if where else None
+        if self.queue:  # the blocks prepared before the read execute first
+            self._frozen_due.append((self.queue.executed + len(self.queue), what, src))
+        else:
+            self.kernel.canon.frozen(what, src)
+
+    def _tell_frozen(self, executed: int) -> None:
+        """Tell the canon the inputs read before block number ``executed`` (counted from 0) was prepared."""
+        due = self._frozen_due
+        while due and due[0][0] <= executed:
+            _, what, src = due.pop(0)
+            self.kernel.canon.frozen(what, src)
 
     def first_column(self, path: str, line: int) -> int:
         """Where the first statement of a physical line starts (a fault in lines generated for no one statement)."""
@@ -447,6 +461,8 @@ class CplRuntime:
 
     def execute_queued(self, blk) -> None:
         """The queue's "execute one" step: nothing executes after the program end."""
+        if self._frozen_due:
+            self._tell_frozen(self.queue.executed - 1)
         if not self.kernel.ended:
             self.execute_block(blk)
 
@@ -461,11 +477,20 @@ class CplRuntime:
         """WAIT without parameters: stop preparation until every block before it has been executed (the axes
         stop: an exact stop)."""
         self.queue.drain()
+        if self._frozen_due:
+            self._tell_frozen(self.queue.executed)
         self.kernel.planner.stop()
 
     def execute_run(self, blocks: list) -> None:
         """Execute the oldest queued blocks, taken out together (runs of plain blocks column-wise);
         preparation waits for them."""
+        first = self.queue.executed - len(blocks)  # the number of the first of them
+        while self._frozen_due and self._frozen_due[0][0] < first + len(blocks):
+            k = max(0, self._frozen_due[0][0] - first)  # an input read before block ``k`` of these was prepared
+            if k:
+                execute_segments(self.kernel, plain_segments(blocks[:k], self.row_words), self.execute_block)
+            blocks, first = blocks[k:], first + k
+            self._tell_frozen(first)
         execute_segments(self.kernel, plain_segments(blocks, self.row_words), self.execute_block)
         self._t_follows = True  # preparation waited for these blocks (t_prep)
 
