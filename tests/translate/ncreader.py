@@ -4,6 +4,7 @@ trace's motions, and rs274's canon output (for the tests of tests/translate)."""
 from __future__ import annotations
 
 import json
+import math
 import re
 from pathlib import Path
 
@@ -41,12 +42,17 @@ def inputs(program: Path) -> dict:
 
 
 def trace_moves(path: Path) -> list[tuple[str, tuple]]:
-    """(kind, work end point X Y Z) of every motion of a JSONL trace; a probe move ends at its target."""
-    out, probe = [], None
+    """(kind, work end point X Y Z) of every motion of a JSONL trace; a probe move ends at its target; a home
+    search is no move of the program (a translation says to home the axes instead)."""
+    out, probe, homing = [], None, False
     for line in path.read_text().splitlines():
         rec = json.loads(line)
         if rec["call"] == "probe":
             probe = rec["target"]
+        elif rec["call"] == "homing":
+            homing = True
+        elif homing and rec["call"] in ("rapid", "feed"):
+            homing = False
         elif rec["call"] in ("rapid", "feed", "arc"):
             work = dict(rec["work"])
             kind = rec["call"]
@@ -93,7 +99,7 @@ def read_back(text: str, target: str, tools: dict[int, float]) -> tuple[list[tup
     Comments are dropped ("( )" on LinuxCNC and ISO, "; " on the 840D); a G53 / SUPA move's machine
     coordinates become work coordinates by taking off the tool length the control keeps out of them.
     """
-    pos = [0.0, 0.0, 0.0]
+    pos = [math.nan] * 3  # an axis no move has written yet: unknown (translations write the moving axes only)
     motion, tool_length, moves, ends = None, 0.0, [], []
     for raw in text.splitlines():
         line = raw.split(";")[0] if target == "sinumerik840d" else re.sub(r"\([^)]*\)", "", raw)
@@ -125,7 +131,8 @@ def read_back(text: str, target: str, tools: dict[int, float]) -> tuple[list[tup
         if "G4" in gs:
             continue  # a dwell: ISO gives its seconds as X
         axes = {w[0]: float(w[1:]) for w in words if w[0] in AXES}
-        if not axes or motion is None and not probe:
+        alone = not axes and any(g in ("G0", "G1") for g in gs)  # a move in which nothing moves
+        if not axes and not alone or motion is None and not probe:
             continue
         for a, v in axes.items():
             pos[AXES.index(a)] = v - (tool_length if machine and a == "Z" and target != "sinumerik840d" else 0.0)

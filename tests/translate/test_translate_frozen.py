@@ -19,17 +19,42 @@ def test_a_plc_input_read_marks_the_block_it_decides(tmp_path):
     translate(program, tmp_path / "b.ngc", options=RunOptions(state_dir=tmp_path / "st"))
     text = (tmp_path / "b.ngc").read_text()
     assert "(FROZEN: PLC input IC" in text and "read as 0 at branch.cpl:1;" in text  # the IF that read it
-    assert "G1 X-10 Y0 Z0 F100" in text and "X10 " not in text
+    assert "G1 X-10 F100" in text and "X10 " not in text  # the programmed axis alone
     assert "(1 decisions of the run are frozen" in text
 
 
-def test_a_scenario_event_is_marked(tmp_path):
-    """rw_SymPas: the scenario's axis input that the program waits for is named at the block after it."""
+def test_a_scenario_event_the_program_never_reads_marks_nothing(tmp_path):
+    """rw_SymPas: the example scenario sets input A3.1 at 3 s, which contour.sap never reads (no digi,
+    ifs or input event): its path does not depend on it, so nothing is marked frozen."""
     out = tmp_path / "c.ngc"
     translate(EX / "sympas" / "contour.sap", out, machine=EX / "sympas" / "machine.toml",
               options=RunOptions(state_dir=tmp_path / "st"))
-    assert "(FROZEN: scenario event at 3 s: AxisInput[time=3.0, axis='A3', bit=1, value=True] at contour.sap:" \
-        in out.read_text()
+    assert "FROZEN" not in out.read_text()
+
+
+SCENARIO_CI = """
+[[scenario]]
+time = 0.5
+kind = "ci"
+index = 3
+value = 7
+"""
+
+
+def test_a_read_of_what_a_scenario_event_set_is_marked(tmp_path):
+    """rw_SymPas: a common integer a scenario event set decides the branch: marked at the block after the
+    read, naming the value and the event; the digital inputs the program reads are marked as well."""
+    program = tmp_path / "ci.sap"
+    program.write_text("program P;\nbegin\n  WT(15625);\n  if CI3 = 7 then\n    MLAW(A1 := 10.0)\n"
+                       "  else\n    MLAW(A1 := -10.0);\n  if A3.digi = 0 then MLAW(A2 := 5.0);\nend.\n")
+    machine = tmp_path / "machine.toml"
+    machine.write_text((EX / "sympas" / "machine.toml").read_text().split("[[scenario]]")[0] + SCENARIO_CI)
+    out = tmp_path / "ci.ngc"
+    translate(program, out, machine=machine, options=RunOptions(state_dir=tmp_path / "st"))
+    text = out.read_text()
+    assert "(FROZEN: CI3 read as 7 [set by the scenario event at 0.5 s]" in text
+    assert "(FROZEN: digital inputs A3.digi read as 0x0" in text
+    assert "X10" in text and "X-10" not in text
 
 
 def test_a_probe_move_without_a_scenario_is_refused(tmp_path):

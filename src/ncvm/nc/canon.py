@@ -179,6 +179,10 @@ class CanonSink:
         """Feed per revolution (G95): the F of the moves that follow is ``feed`` mm per spindle revolution (their
         ``feed`` is the path feed it gives, mm/min); None: feed per minute again (G94)."""
 
+    def homing(self, axes: tuple[int, ...], src: Src) -> None:
+        """The next move is a home search of ``axes`` (indices): the control's reference run, which makes the
+        reference point the axis zero (the rw_SymPas card's JHL/JHR/JHI)."""
+
     def radius_compensation(self, g: int, radius: float, src: Src) -> None:
         """Cutter radius compensation ``g`` (41 left, 42 right of the contour) with ``radius`` starts: the moves
         that follow are the tool centre's path, the programmed contour offset by the radius."""
@@ -223,7 +227,7 @@ class CanonSink:
 
 
 _METHODS = ("begin", "rapid", "feed", "arc", "thread", "move_batch", "timing", "frame", "frozen", "channel", "dwell",
-            "feed_per_rev", "radius_compensation",
+            "feed_per_rev", "radius_compensation", "homing",
             "tool_change", "tool_offset", "spindle", "coolant", "aux", "probe", "message", "stop", "program_end", "end")
 
 

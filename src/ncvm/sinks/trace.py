@@ -123,6 +123,9 @@ class JsonlTrace(CanonSink):
         self._write("probe", src, trip=trip, target=None if target is None else
                     {n: round(v - removed[n], 6) for n, v in target.items()})
 
+    def homing(self, axes, src):
+        self._write("homing", src, axes=[self.names[i] for i in axes])
+
     def frozen(self, what, src):
         self._write("frozen", src, what=what)
 

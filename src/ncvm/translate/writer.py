@@ -46,6 +46,7 @@ class Setup:
     frozen: int = 0
     probes: int = 0
     left_out: list[str] = field(default_factory=list)  # machine functions written as comments
+    homed: list = field(default_factory=list)  # (axis names, block) of each home search, written as comments
 
 
 class Translation(CanonSink):
@@ -88,6 +89,7 @@ class Translation(CanonSink):
         self._tool_pending: tuple[Frame, Src | None] | None = None
         self._written: set[str] = set()  # the axes written in a move so far
         self._per_rev: float | None = None  # G95: the F in mm per revolution
+        self._homing: tuple[int, ...] | None = None  # the axes the next move homes
 
     # -- output ----------------------------------------------------------
     def refuse(self, src: Src | None, message: str) -> None:
@@ -270,6 +272,8 @@ class Translation(CanonSink):
         return not (self._hidden and self._moved_unwritten(start, end, src))
 
     def _straight(self, code: str, start, end, feed: float | None, src: Src) -> None:
+        if self._homing is not None and self._home(start, end, src):
+            return
         if not self._move_starts(start, end, src):
             return
         if self._probe is not None:
@@ -277,7 +281,7 @@ class Translation(CanonSink):
             return
         prefix = self._machine_prefix(src)
         feed_word = self._feed_word(feed) if feed is not None else ""
-        self._line(f"{prefix}{code} {self._axes(end, start, bool(prefix))}{feed_word}", src)
+        self._line(f"{prefix}{code} {self._axes(end, start, bool(prefix))}".rstrip() + feed_word, src)
 
     def _probe_move(self, start, end, feed, src) -> None:
         """The move after a canon ``probe`` call: the target's probe move to the programmed end point."""
@@ -360,6 +364,27 @@ class Translation(CanonSink):
     def _turns(self, extra: int) -> int:
         """LinuxCNC's P counts the turns begun (1 + the full ones), SINUMERIK's TURN the full ones."""
         return extra + 1 if self.t.turns.strip().startswith("P") else extra
+
+    def homing(self, axes, src):
+        self._homing = tuple(axes)
+
+    def _home(self, start, end, src) -> bool:
+        """A home search: not a move of the program. Written as a comment that says to home the axes on the
+        new control (a control homes at its own reference switches, which no G-code move can reproduce);
+        the axes it moved are then unknown to the translation until the program moves them. False: the
+        move also moves other axes (refused)."""
+        axes, self._homing = self._homing, None
+        moved = {i for i, (a, b) in enumerate(zip(start, end)) if abs(a - b) > 1e-9}
+        if not moved <= set(axes):
+            self.refuse(src, "a home search at the same time as a move of another axis")
+            return True
+        names = " ".join(self.names[i] for i in sorted(set(axes)))
+        if (names, src) not in self.setup.homed:
+            self.setup.homed.append((names, src))
+            self._line(self.t.note(f"HOMING {names}: the program's reference run, not written as a move: home "
+                                   f"{names} on the new control before running this program"), src)
+        self._written.difference_update(self.names[i] for i in axes)
+        return True
 
     def feed_per_rev(self, feed, src):
         self._flush_after(src)
@@ -458,6 +483,10 @@ class Translation(CanonSink):
                          "included in the positions !!!"),
                     note("!!! run only on a control whose active zero offset and tool length are all zero "
                          "!!!")]
+        if s.homed:
+            names = sorted({n for axes, _ in s.homed for n in axes.split()})
+            out.append(note(f"the program homes {' '.join(names)} (marked HOMING below): home them on the new "
+                            "control; the zero offset above is the simulated reference point"))
         if s.probes:
             out.append(note(f"{s.probes} probe moves"))
         if s.frozen:

@@ -72,12 +72,22 @@ class Card:
         self.timeline = Timeline(self, [a.m for a in self.axes])  # reports the retired moves in time order
         #: (file, line) of a statement -> the lowest-numbered task whose program holds it (filled by the front end)
         self.task_at: dict[tuple[str, int], int] = {}
+        #: the values a scenario event set ("CI3", "A1.poserr") -> the event: a read of one is a run-time input
+        #: (canon ``frozen``; the axes' digital inputs are marked by every read of them)
+        self.outside: dict[str, str] = {}
 
     # -- scenario events ------------------------------------------------------------------------------
     def apply_event(self, ev) -> None:
         """A scenario event whose time has come."""
         self._scenario_action(ev)()
-        self.canon.frozen(f"scenario event at {ev.time:g} s: {ev}", None)
+        if ev.__class__ is CommonInteger:
+            self.outside[f"CI{ev.index}"] = f"scenario event at {ev.time:g} s"
+        elif ev.__class__ is PositionError:
+            self.outside[f"{self._axis_by_name(ev.axis, 'scenario poserr').name}.poserr"] = f"scenario event at {ev.time:g} s"
+
+    def read_outside(self, key: str, value) -> None:
+        """The program read ``key``, which a scenario event set: the path from here may depend on it."""
+        self.canon.frozen(f"{key} read as {value} (set by the {self.outside[key]})", None)
 
     def _scenario_action(self, ev):
         """The card's action for a scenario event (machine/scenario.py): an axis' digital input, its
@@ -149,7 +159,10 @@ class Card:
     # -- system registers ----------------------------------------------------------------------------------------
     def get_sys(self, name: str):
         if name.startswith("CI"):
-            return self.ci[int(name[2:])]
+            value = self.ci[int(name[2:])]
+            if self.outside and name in self.outside:
+                self.read_outside(name, value)
+            return value
         if name.startswith("CD"):
             return self.cd[int(name[2:])]
         if name == "CFLAG":

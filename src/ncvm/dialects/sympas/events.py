@@ -27,7 +27,9 @@ def event_active(card, name: str, t: float) -> bool:
                 active = input_active(ax, inp)
                 if name == "EVDNR":
                     active = not active  # drive not ready: the DR input became inactive
-                if active:
+                if active:  # a handler runs on an outside input (ncvm translate marks it)
+                    card.canon.frozen(f"event {name}: digital input {inp['axis']}.{inp['bit']} "
+                                      f"({inp['function']}) active", None)
                     return True
         return False
     if name == "EVLSS":

@@ -61,6 +61,8 @@ def get_qual(card, tk, ax: int, name: str):
     if name in ("dv", "rv"):
         return card.axis_velocity(a, t)
     if name == "poserr":
+        if card.outside and f"{a.name}.poserr" in card.outside:
+            card.read_outside(f"{a.name}.poserr", a.poserr)
         return a.poserr
     if name == "zerooffset":
         return a.zerooffset

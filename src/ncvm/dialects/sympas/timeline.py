@@ -130,6 +130,8 @@ class Timeline:
         self._channel(m.src)
         self._frame(m.shift, m.src)
         if m.jog:
+            if m.homing:
+                canon.homing(m.axes, m.src)
             canon.rapid(start, end, m.src)
             return
         if m.kind == "line":
@@ -182,10 +184,13 @@ class Timeline:
         canon = self.canon
         self._channel(src)
         self._frame(max(active, key=lambda m: m.t0).shift, src)
+        homing = tuple(ax for m in active if m.homing for ax in m.axes)
         for (t0, p0), (t1, p1) in zip(points, points[1:]):
             d = math.dist(p0, p1)
             if d <= 0.0:
                 continue
+            if homing:
+                canon.homing(homing, src)
             if rapid:
                 canon.rapid(p0, p1, src)
             else:
