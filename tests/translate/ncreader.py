@@ -97,10 +97,13 @@ def read_back(text: str, target: str, tools: dict[int, float]) -> tuple[list[tup
     """Our reader of a translation: (kind, work end point X Y Z) per motion, and the words that end it.
 
     Comments are dropped ("( )" on LinuxCNC and ISO, "; " on the 840D); a G53 / SUPA move's machine
-    coordinates become work coordinates by taking off the tool length the control keeps out of them.
+    coordinates become work coordinates by taking off the tool length in force (on the 840D, which keeps
+    the tool length in SUPA, the translation writes D0 right before a SUPA move and the D again after it:
+    the length before that D0 counts).
     """
     pos = [math.nan] * 3  # an axis no move has written yet: unknown (translations write the moving axes only)
     motion, tool_length, moves, ends = None, 0.0, [], []
+    before_off, prev = 0.0, ""  # the 840D's tool length before the last D0, and the line before this one
     for raw in text.splitlines():
         line = raw.split(";")[0] if target == "sinumerik840d" else re.sub(r"\([^)]*\)", "", raw)
         if target != "sinumerik840d" and "MSG(" in raw:
@@ -125,9 +128,11 @@ def read_back(text: str, target: str, tools: dict[int, float]) -> tuple[list[tup
         for w in words:
             if w[0] == "D" and target == "sinumerik840d":
                 n = int(w[1:])
+                before_off = tool_length if not n else before_off
                 tool_length = tools[n] if n else 0.0
             if w in ("M2", "M30"):
                 ends.append(w)
+        prev, held = line, before_off if prev == "D0" and "SUPA" in words else tool_length
         if "G4" in gs:
             continue  # a dwell: ISO gives its seconds as X
         axes = {w[0]: float(w[1:]) for w in words if w[0] in AXES}
@@ -135,7 +140,7 @@ def read_back(text: str, target: str, tools: dict[int, float]) -> tuple[list[tup
         if not axes and not alone or motion is None and not probe:
             continue
         for a, v in axes.items():
-            pos[AXES.index(a)] = v - (tool_length if machine and a == "Z" and target != "sinumerik840d" else 0.0)
+            pos[AXES.index(a)] = v - (held if machine and a == "Z" else 0.0)
         kind = "probe" if probe else {"G0": "rapid", "G1": "feed", "G2": "arc", "G3": "arc"}[motion]
         moves.append((kind, tuple(pos)))
     return moves, ends

@@ -156,3 +156,17 @@ def test_840d_machine_frame_cancels_the_tool_length(tmp_path):
               machine=EX / "sin800" / "machine.toml", options=RunOptions(state_dir=tmp_path / "st"))
     code = _code(out.read_text())
     assert code[1] == "G500 D0" and not any(c.startswith("D1") for c in code), code[:4]
+
+
+G53_RETRACT = "%MPF101\nN10 G17 G71 G90 G54 G94\nN20 T1 M6 D1\nN40 G0 X10 Y20 Z50\nN50 G53 G0 Z0\nN60 G0 X30 Y40\nN70 M30\n"
+
+
+@pytest.mark.parametrize(("target", "retract"), [("linuxcnc", ["G53 G0 Z0"]), ("iso", ["G53 G0 Z0"]),
+                                                 ("sinumerik840d", ["D0", "SUPA G0 Z0", "D1"])])
+def test_g53_retract_is_the_machine_position_alone(tmp_path, target, retract):
+    """``G53 G0 Z0`` (SINUMERIK flange machine: G54 Z0, tool length 85.1): Z alone, to machine Z0 itself;
+    the 840D keeps the tool length in SUPA, so the translation switches it off for that move (D0) and on
+    again after it; the next move's X/Y alone, no Z re-expressed through the simulated tool length."""
+    code = _code(_run(tmp_path, "g53.mpf", G53_RETRACT, target, machine=EX / "sin800" / "machine.toml"))
+    i = code.index("G0 X10 Y20 Z50")
+    assert code[i + 1:i + 2 + len(retract)] == retract + ["G0 X30 Y40"], code

@@ -88,6 +88,7 @@ class Translation(CanonSink):
         #: the tool length call of a frame change, written before the next line (after a tool change of its block)
         self._tool_pending: tuple[Frame, Src | None] | None = None
         self._written: set[str] = set()  # the axes written in a move so far
+        self._tool_frame: Frame | None = None  # the frame of the tool length written last
         self._per_rev: float | None = None  # G95: the F in mm per revolution
         self._homing: tuple[int, ...] | None = None  # the axes the next move homes
 
@@ -157,8 +158,9 @@ class Translation(CanonSink):
         """The axis words of end point ``p``: only the axes that move from ``start`` (and ``always``), as the
         program programmed them; an axis standing still is left out, so that no position the program did
         not program (the simulated home, a G53 retract height) is re-expressed through the simulated offsets.
-        A move in which nothing moves gets the axes written before (none: the move is left out)."""
-        removed = self._machine_removed() if machine_frame else self.removed
+        A move in which nothing moves gets the axes written before (none: its motion word alone).
+        ``machine_frame``: a G53 / SUPA move, in machine coordinates (no tool length: see _straight)."""
+        removed = (0.0,) * len(self.names) if machine_frame else self.removed
         if start is None:
             use = set(range(len(self.names)))
         else:
@@ -168,14 +170,6 @@ class Translation(CanonSink):
         self._written.update(self.names[i] for i in use)
         return " ".join(f"{n}{number(p[i] - removed[i])}" for i, n in enumerate(self.names)
                         if i in use and n in self.t.axes)
-
-    def _machine_removed(self) -> tuple[float, ...]:
-        """A G53 move: machine coordinates, less the tool length where the control keeps it."""
-        f = self.frame_now
-        out = [0.0] * len(self.names)
-        if self.t.machine_move_keeps_tool and f is not None and f.tool_axis is not None:
-            out[f.tool_axis] = f.tool_length
-        return tuple(out)
 
     def _feed_word(self, feed: float) -> str:
         """The F word where the feed changes: under G95 the program's feed per revolution, not the path feed."""
@@ -221,6 +215,7 @@ class Translation(CanonSink):
         if tool != self._tool_written:
             self._tool_written = tool
             self._tool_pending = (frame, src)
+            self._tool_frame = frame
         self._frame_unrecorded = True
 
     def _record_setup(self) -> None:
@@ -280,8 +275,16 @@ class Translation(CanonSink):
             self._probe_move(start, end, feed, src)
             return
         prefix = self._machine_prefix(src)
+        restore = None
+        if prefix and self.t.machine_move_keeps_tool and self._tool_written[1]:
+            # the control keeps the tool length in its machine move (840D SUPA): off for the move, else
+            # the simulated length would be baked into the machine position; on again for what follows
+            restore = self._tool_frame
+            self._line(self.t.tool_length_off, src)
         feed_word = self._feed_word(feed) if feed is not None else ""
         self._line(f"{prefix}{code} {self._axes(end, start, bool(prefix))}".rstrip() + feed_word, src)
+        if restore is not None:
+            self._tool_pending = (restore, src)
 
     def _probe_move(self, start, end, feed, src) -> None:
         """The move after a canon ``probe`` call: the target's probe move to the programmed end point."""
