@@ -295,6 +295,11 @@ def _nothing(*args) -> None:
     return None
 
 
+#: what a canon call that no sink or listener takes is bound to: ``canon.frame is NOBODY`` tells a front end
+#: that it need not work out what it would tell
+NOBODY = _nothing
+
+
 def _fan_out(bound, name: str):
     if not bound:
         return _nothing

@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import math
 
-from ...nc.canon import ArcSpec, Frame
+from ...nc.canon import NOBODY, ArcSpec, Frame
 from .motion import TICKS_PER_S, TWO_PI
 
 #: largest distance (axis units) of a sampled combined path from the real one
@@ -45,7 +45,8 @@ class Timeline:
     def add(self, mv) -> None:
         """A move retired: it is final and is reported when the time it ran is reported."""
         if mv.t1 > mv.t0:
-            mv.shift = self.card.work_shift()  # the user coordinates the move ends in
+            # the user coordinates the move ends in, when a sink takes frames (not per move otherwise)
+            mv.shift = None if self.canon.frame is NOBODY else self.card.work_shift()
             self.profile_length += mv.stop_s if mv.stop_s is not None else mv.prof.length
             if mv.t1 > self.last_end:
                 self.last_end = mv.t1
@@ -60,7 +61,8 @@ class Timeline:
         if self.pending:
             self.report(math.inf)
         self._channel(src)
-        self._frame(self.card.work_shift(), src)
+        if self.canon.frame is not NOBODY:
+            self._frame(self.card.work_shift(), src)
         self.canon.feed(start, end, feed, src)
         self.profile_length += length
         self.last_end = self.t = t1  # every axis was idle: nothing ends later
@@ -109,7 +111,7 @@ class Timeline:
         """Tell the sinks the user coordinates of the moves that follow, when they changed (homing makes the REF
         point the axis zero; zero offsets add to it): the trace's ``work`` and the translation are the
         program's positions (docs/translate.md). ``G54`` names the card's zero point for the translation."""
-        if shift != self.shift:
+        if shift is not None and shift != self.shift:  # (checked before the call on the hot path)
             self.shift = shift
             self.canon.frame(Frame("G54", shift, (0.0,) * len(shift)), src)
 
@@ -128,7 +130,8 @@ class Timeline:
         end = tuple(self.pos)
         canon = self.canon
         self._channel(m.src)
-        self._frame(m.shift, m.src)
+        if m.shift is not None and m.shift != self.shift:
+            self._frame(m.shift, m.src)
         if m.jog:
             if m.homing:
                 canon.homing(m.axes, m.src)
