@@ -374,8 +374,8 @@ class Translation(CanonSink):
     def _home(self, start, end, src) -> bool:
         """A home search: not a move of the program. Written as a comment that says to home the axes on the
         new control (a control homes at its own reference switches, which no G-code move can reproduce);
-        the axes it moved are then unknown to the translation until the program moves them. False: the
-        move also moves other axes (refused)."""
+        the axes it moved are then unknown to the translation until the program moves them. Always True
+        (the move is dealt with): a move of another axis at the same time is refused."""
         axes, self._homing = self._homing, None
         moved = {i for i, (a, b) in enumerate(zip(start, end)) if abs(a - b) > 1e-9}
         if not moved <= set(axes):
@@ -406,9 +406,9 @@ class Translation(CanonSink):
         self._line(self.t.dwell.format(s=number(seconds)), src)
 
     def tool_change(self, tool, src):
-        self._flush_after()
         held = self._tool_pending if self._tool_pending is not None and self._tool_pending[1] == src else None
         self._tool_pending = None if held else self._tool_pending
+        self._flush_after()
         self._tool = tool
         self._line(f"T{tool} M6", src)
         if held is not None:  # the block's own tool length: for the tool just loaded
