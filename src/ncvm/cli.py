@@ -20,6 +20,7 @@ from . import __version__
 from .diagnostics import CompileFailed, Diagnostic, Span, UsageError, render_all
 from .dialects import REGISTRY
 from .outpaths import PLOT_SUFFIXES, SCREEN_PICTURE, Output, OutputError, check_outputs
+from .statecmd import state
 from .timefmt import hms as _hms
 
 # The API, the machine and the sinks are imported by the commands that use them (issue 18, start-up):
@@ -484,6 +485,9 @@ def translate_cmd(program, out, target, frame, source_comments, dialect, machine
         sys.exit(EXIT_FAULT)
     click.echo(f"ncvm: wrote {done.path} for {done.target.title}: {done.lines} lines, {done.moves} moves, "
                f"{done.probes} probe moves, {done.frozen} frozen decisions", err=True)
+
+
+cli.add_command(state)
 
 
 def main() -> None:
