@@ -69,17 +69,26 @@ def show(state_dir, as_json):
     for namespace, entries in content.items():
         click.echo(f"{namespace}: {NAMESPACES.get(namespace, 'kept by another ncvm')}")
         for key, value in entries.items():
-            click.echo(f"  {_entry(key, value)}")
+            if isinstance(value, dict) and not _declared(value):  # a table: one line per entry
+                click.echo(f"  {key}:")
+                for sub, item in value.items():
+                    click.echo(f"    {sub} = {json.dumps(item)}")
+            else:
+                click.echo(f"  {_entry(key, value)}")
     n = sum(len(entries) for entries in content.values())
     click.echo(f"ncvm: {n} entr{'y' if n == 1 else 'ies'} in {_store_path(state_dir)}", err=True)
 
 
 def _entry(key: str, value) -> str:
     """One line: a declared CPL variable with its type and size, every other value as JSON."""
-    if isinstance(value, dict) and set(value) == {"type", "dims", "value"}:
+    if _declared(value):
         dims = f"({','.join(map(str, value['dims']))})" if value["dims"] else ""
         return f"{key} {value['type']}{dims} = {json.dumps(value['value'])}"
     return f"{key} = {json.dumps(value)}"
+
+
+def _declared(value) -> bool:
+    return isinstance(value, dict) and set(value) == {"type", "dims", "value"}
 
 
 @state.command(epilog=EXIT_CODES)
