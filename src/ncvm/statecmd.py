@@ -22,7 +22,7 @@ from .diagnostics import UsageError
 STATE_OPT = click.option("--state", "state_dir", type=click.Path(file_okay=False), default=".ncvm", show_default=True,
                          help="State directory whose permanent store is meant.")
 EXIT_CODES = ("Exit codes: 0 done, 1 a reset not confirmed, 2 usage error (a bad file, a state directory in use, "
-              "a store that cannot be read or written).")
+              "a store that cannot be read or written), 70 internal error (a bug in ncvm).")
 
 
 def _store_path(state_dir: str) -> Path:

@@ -7,6 +7,8 @@ pool does: the results are the same.
 
 from __future__ import annotations
 
+from typing import Callable
+
 from .. import __version__
 from ..diagnostics import UsageError
 from .runner import run_task
@@ -16,10 +18,12 @@ from .tasks import Task
 CONNECT_TIMEOUT_S = 20
 
 
-def run_on_cluster(tasks: list[Task], address: str, timeout: float = CONNECT_TIMEOUT_S) -> tuple[list[dict], dict]:
-    """The records of ``tasks`` in their order, and what the report says of the cluster."""
+def run_on_cluster(tasks: list[Task], address: str, timeout: float = CONNECT_TIMEOUT_S,
+                   on_record: Callable[[dict], None] | None = None) -> tuple[list[dict], dict]:
+    """The records of ``tasks`` in their order, and what the report says of the cluster; ``on_record`` is
+    told of each record as its worker finishes it."""
     try:
-        from distributed import Client
+        from distributed import Client, as_completed
     except ImportError:
         raise UsageError("--cluster needs dask.distributed: pip install 'ncvm[cluster]'") from None
     try:
@@ -39,6 +43,9 @@ def run_on_cluster(tasks: list[Task], address: str, timeout: float = CONNECT_TIM
         if not workers:
             raise UsageError(f"--cluster {address}: the scheduler has no workers")
         futures = client.map(run_task, tasks, pure=False, key=[f"ncvm-{t.index}-{id(t):x}" for t in tasks])
+        if on_record is not None:
+            for future in as_completed(futures):
+                on_record(future.result())
         records = client.gather(futures)
     return records, {"address": address, "workers": workers}
 
