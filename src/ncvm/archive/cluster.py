@@ -23,7 +23,7 @@ def run_on_cluster(tasks: list[Task], address: str, timeout: float = CONNECT_TIM
     """The records of ``tasks`` in their order, and what the report says of the cluster; ``on_record`` is
     told of each record as its worker finishes it."""
     try:
-        from distributed import Client, as_completed
+        from distributed import Client
     except ImportError:
         raise UsageError("--cluster needs dask.distributed: pip install 'ncvm[cluster]'") from None
     try:
@@ -43,10 +43,13 @@ def run_on_cluster(tasks: list[Task], address: str, timeout: float = CONNECT_TIM
         if not workers:
             raise UsageError(f"--cluster {address}: the scheduler has no workers")
         futures = client.map(run_task, tasks, pure=False, key=[f"ncvm-{t.index}-{id(t):x}" for t in tasks])
-        if on_record is not None:
-            for future in as_completed(futures):
-                on_record(future.result())
-        records = client.gather(futures)
+        if on_record is None:
+            records = client.gather(futures)
+        else:  # each as it comes in, in order, as the local pool tells them
+            records = []
+            for future in futures:
+                records.append(future.result())
+                on_record(records[-1])
     return records, {"address": address, "workers": workers}
 
 
