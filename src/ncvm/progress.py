@@ -9,6 +9,7 @@ rich is loaded by the thread when it first draws: a run that ends within a secon
 
 from __future__ import annotations
 
+import sys
 import threading
 
 from .timefmt import hms
@@ -92,9 +93,10 @@ class Progress:
         if self.total is not None:
             columns += [BarColumn(), MofNCompleteColumn(), TextColumn("programs{task.fields[failed]}")]
         columns.append(TextColumn("{task.fields[moves]} {task.fields[cycle]}"))
-        # stdout stays the program's: operator output is not caught and redrawn by the display
-        shown = Progress(*columns, console=console, transient=True, auto_refresh=False, redirect_stdout=False,
-                         redirect_stderr=False)
+        # operator output on the same terminal is printed above the display, never into its line; stdout
+        # that goes elsewhere (a file, a pipe) is left alone
+        shown = Progress(*columns, console=console, transient=True, auto_refresh=False,
+                         redirect_stdout=_is_terminal(sys.stdout), redirect_stderr=False)
         shown.start()
         task = shown.add_task("batch" if self.total is not None else "running", total=self.total, **self._fields())
         return shown, task
@@ -118,3 +120,10 @@ class Progress:
         if self._shown is not None:
             self._shown.stop()
             self._shown = None
+
+
+def _is_terminal(stream) -> bool:
+    try:
+        return stream is not None and stream.isatty()
+    except (ValueError, OSError):
+        return False

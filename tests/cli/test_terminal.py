@@ -30,11 +30,11 @@ def terminal_env(**extra) -> dict:
     return {**env, "TERM": "xterm", "COLUMNS": "160", **extra}
 
 
-def at_terminal(args, cwd, env=None, answers=()) -> tuple[int, str]:
+def at_terminal(args, cwd, env=None, answers=(), stdout=None) -> tuple[int, str]:
     """Run ``ncvm args`` with stdin, stdout and stderr on one pseudo-terminal; ``answers``: (prompt, line)
     pairs typed when the prompt shows. The exit code and everything the terminal showed."""
     leader, follower = pty.openpty()
-    proc = subprocess.Popen([*NCVM, *args], cwd=cwd, stdin=follower, stdout=follower, stderr=follower,
+    proc = subprocess.Popen([*NCVM, *args], cwd=cwd, stdin=follower, stdout=stdout or follower, stderr=follower,
                             env=env or terminal_env(), close_fds=True)
     os.close(follower)
     seen, pending, deadline = b"", list(answers), time.monotonic() + 120
@@ -138,3 +138,20 @@ def test_styled_colours_the_parts_of_a_diagnostic_and_a_summary():
     assert f"{ESC}32m{ESC}1m^{ESC}0m" in text
     assert f"{ESC}31m" in termstyle.styled("ncvm: stopped with error RUN001: 3 steps")
     assert termstyle.styled("ncvm: 2 program(s) checked, 0 diagnostic(s)") == "ncvm: 2 program(s) checked, 0 diagnostic(s)"
+
+
+MESSAGES = "".join(f"G1 X{i % 100} Y{i % 7} F3000\n" + ("(MSG, hello)\n" if i % 50_000 == 49_999 else "")
+                   for i in range(250_000)) + "M2\n"
+
+
+def test_operator_output_keeps_its_own_lines_and_its_own_stream(work):
+    (work / "msg.din").write_text(MESSAGES)
+    code, seen = at_terminal(["run", "msg.din"], work)
+    assert code == 0 and "running" in seen
+    lines = [line for line in re.split(r"[\r\n]", seen) if "hello" in line]
+    assert len(lines) == 5 and all("moves" not in line for line in lines)
+    # stdout into a file, stderr on the terminal: the file gets the output, plain, the terminal the display
+    with (work / "out.txt").open("w") as out:
+        code, seen = at_terminal(["run", "msg.din"], work, stdout=out)
+    assert code == 0 and "running" in seen and "hello" not in seen
+    assert (work / "out.txt").read_text().splitlines().count("hello") == 5
