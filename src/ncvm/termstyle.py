@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import os
 import re
+import sys
 
 import click
 
@@ -32,10 +33,10 @@ def enabled(err: bool = True) -> bool:
         return forced
     if os.environ.get("NO_COLOR") or os.environ.get("TERM") == "dumb":
         return False
-    stream = click.get_text_stream("stderr" if err else "stdout")
+    stream = sys.stderr if err else sys.stdout
     try:
-        return stream.isatty()
-    except (ValueError, OSError):
+        return stream is not None and stream.isatty()
+    except (ValueError, OSError, AttributeError):
         return False
 
 
