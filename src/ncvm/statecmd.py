@@ -126,11 +126,13 @@ def reset(state_dir, yes):
 def export_cmd(file, state_dir):
     """Write the permanent store to FILE (JSON; - for stdout), exactly as it holds it."""
     from .machine.state_io import document
+    from .outpaths import Output, check_outputs
 
     text = document(_content(state_dir))
     if file == "-":
         click.echo(text, nl=False)
         return
+    check_outputs([Output("FILE", file)], {}, state=state_dir)  # never over the store or into its directory
     try:
         Path(file).write_text(text, encoding="utf-8")
     except OSError as e:

@@ -153,3 +153,10 @@ def test_reset_at_a_terminal_asks_first(work, answer, code, left):
 def test_the_namespaces_are_those_the_dialects_keep():
     assert {perm.NS, "cpl.zs", "cpl.tc", "cpl.tdb", ncdata.NAMESPACE} == set(state_io.NAMESPACES)
     assert {*state_io.SIN800_AREAS, "mib"} == set(ncdata.PERSISTED)
+
+
+def test_export_never_writes_into_the_state_directory(work):
+    out = ncvm("state", "export", ".ncvm/store.sqlite", cwd=work)
+    assert out.returncode == 2 and "is inside the state directory .ncvm" in out.stderr
+    assert ncvm("state", "show", cwd=work).returncode == 0  # the store is intact
+    assert exported(work)["store"]["cpl.perm"]["@1"] == 42
