@@ -9,23 +9,39 @@ from __future__ import annotations
 import json
 import os
 import sys
-import threading
 import traceback
 from collections import Counter
 from pathlib import Path
 
 import click
 
-from . import __version__
+from . import __version__, termstyle
 from .diagnostics import CompileFailed, Diagnostic, Span, UsageError, render_all
 from .dialects import REGISTRY
 from .outpaths import PLOT_SUFFIXES, SCREEN_PICTURE, Output, OutputError, check_outputs
+from .progress import Progress
+from .statecmd import state
+from .termstyle import say
 from .timefmt import hms as _hms
 
 # The API, the machine and the sinks are imported by the commands that use them (issue 18, start-up):
 # ``ncvm --version`` loads click and this module only, ``ncvm check`` no numpy.
 
 EXIT_OK, EXIT_FAULT, EXIT_USAGE, EXIT_INTERNAL = 0, 1, 2, 70
+#: the end of each command's --help: what its exit codes mean
+_BUG = "2 usage error, 70 internal error (a bug in ncvm)"
+EXITS = {
+    "run": "0 the program ended normally (a batch: every program did), 1 a compile error, a run-time fault or "
+           "stdout closed (a batch: a program failed: error or limit violation), " + _BUG,
+    "check": "0 no errors, 1 a program has errors, " + _BUG,
+    "compile": "0 written, 1 compile errors, " + _BUG,
+    "translate": "0 written, 1 the run failed or the translation was refused, " + _BUG,
+    "machine-schema": "0 printed, " + _BUG,
+}
+
+
+def _exits(name: str) -> str:
+    return f"Exit codes: {EXITS[name]}."
 DEFAULT_STATE = ".ncvm"
 
 
@@ -111,9 +127,12 @@ class _Guarded(click.Group):
 
 @click.group(cls=_Guarded, context_settings={"help_option_names": ["-h", "--help"]})
 @click.version_option(__version__, prog_name="ncvm")
-def cli():
+@click.option("--color/--no-color", default=None,
+              help="Colours in diagnostics and summaries (default: on a terminal, unless NO_COLOR is set).")
+def cli(color):
     """Check, run and compile programs of Bosch Rexroth CPL, Siemens CL 800 / SINUMERIK 800,
     ADDI-DATA rw_SymPas and plain DIN 66025 on a simulated controller."""
+    termstyle.forced = color
 
 
 DIALECT_OPT = click.option("--dialect", "-d", type=click.Choice(list(REGISTRY)),
@@ -134,43 +153,7 @@ def _batch_options(f):
                         help="Batch: programs run at once in local processes (default: the number of cores).")(f)
 
 
-class _Progress:
-    """A progress line on stderr for runs longer than about a second, when stderr is a terminal."""
-
-    def __init__(self, enabled: bool):
-        self.enabled = enabled
-        self.session = None
-        self._stop = threading.Event()
-        self._thread = None
-
-    def __enter__(self):
-        if self.enabled:
-            self._thread = threading.Thread(target=self._loop, daemon=True)
-            self._thread.start()
-        return self
-
-    def _loop(self):
-        if self._stop.wait(1.0):
-            return
-        from rich.console import Console  # only a run on a terminal that lasts a second draws it: not at start-up
-
-        console = Console(stderr=True)
-        with console.status("running") as status:
-            while not self._stop.wait(0.2):
-                s = self.session
-                if s is not None:
-                    # front ends that count steps in batches (din) report them only at the end
-                    steps = f"{s.steps.steps:,} steps, " if s.steps.steps else ""
-                    status.update(f"running: {steps}{len(s.recorder):,} moves, "
-                                  f"{s.machine.clock.settled:.1f} s machine time")  # no flush: another thread
-
-    def __exit__(self, *exc):
-        self._stop.set()
-        if self._thread:
-            self._thread.join()
-
-
-@cli.command()
+@cli.command(epilog=_exits("run"))
 @click.argument("programs", nargs=-1, required=True, type=click.Path())
 @DIALECT_OPT
 @MACHINE_OPT
@@ -243,9 +226,10 @@ def run(programs, dialect, machine, state_dir, as_json, trace, gcode, plot, plot
                          time_model=time_model)
     if max_memory is not None:
         options.max_memory = parse_size(max_memory)
-    # the progress line would draw over the operator's prompts
-    progress = _Progress(enabled=sys.stderr.isatty() and not as_json and not keyboard)
+    # moves, steps and simulated time of a run longer than a second; it steps aside at the operator's prompts
+    progress = Progress(enabled=sys.stderr.isatty() and not as_json)
     options.on_session = lambda s: setattr(progress, "session", s)
+    options.on_operator_wait = progress.operator_waits
     with progress:
         result, session = api.run(program, dialect, machine, options)
     if (screen or screen_dir) and session.screen is None:
@@ -266,12 +250,12 @@ def run(programs, dialect, machine, state_dir, as_json, trace, gcode, plot, plot
         if result["error"]:
             e = result["error"]
             span = Span(e["file"], e["line"], e["column"]) if e["file"] and e["line"] else None
-            click.echo(Diagnostic(e["code"], e["message"], span, notes=e.get("stack", [])).render(), err=True)
+            say(Diagnostic(e["code"], e["message"], span, notes=e.get("stack", [])).render())
         for v in result["limit_violations"]:
-            click.echo(f"warning: {v}", err=True)
+            say(f"warning: {v}")
         if "editor_block" in result:
             click.echo(f"ncvm: editor block: {result['editor_block']}", err=True)
-        click.echo(_summary(result), err=True)
+        say(_summary(result))
     sys.exit(EXIT_FAULT if result["error"] else EXIT_OK)
 
 
@@ -351,13 +335,15 @@ def _folder_machine(program: str, say: bool = False) -> str | None:
     return str(path)
 
 
-@cli.command()
+@cli.command(epilog=_exits("check"))
 @click.argument("programs", nargs=-1, required=True, type=click.Path())
 @DIALECT_OPT
 @MACHINE_OPT
 @click.option("--json", "as_json", is_flag=True, help="Diagnostics as one JSON document.")
 @click.option("--all", "all_errors", is_flag=True, help="Go on after the first error and list every one.")
-def check(programs, dialect, machine, as_json, all_errors):
+@click.option("--report", "report_file", type=click.Path(dir_okay=False),
+              help="Write the report as run --report does (.json, .csv or JUnit .xml), a program per entry.")
+def check(programs, dialect, machine, as_json, all_errors, report_file):
     """Check programs for every error the control would report; exit 1 when any was found.
 
     A folder stands for every program file below it (known extensions; a file without one when its content
@@ -365,10 +351,12 @@ def check(programs, dialect, machine, as_json, all_errors):
     machine.toml upwards (up to the folder named) unless --machine is given.
     """
     from . import api
+    from .archive import report as reports
     from .archive.discover import discover, machine_of
-    from .archive.report import machine_lines
 
-    report, failed = [], False
+    if report_file and Path(report_file).suffix.lower() not in reports.FORMATS:
+        raise UsageError(f"--report {report_file}: give a .json, .csv or .xml file")
+    report, records, failed = [], [], False
     found = discover(programs, dialect, machine)
     for program in found.all_programs:
         try:
@@ -379,28 +367,36 @@ def check(programs, dialect, machine, as_json, all_errors):
         failed |= bool(errors)
         report.append({"file": str(program.path), "ok": not errors, "machine": str(program.machine or "built-in"),
                        "diagnostics": [d.to_json() for d in diags]})
+        records.append(reports.check_record(str(program.path), program.dialect, report[-1]["machine"],
+                                            report[-1]["diagnostics"]))
         if not as_json:
             for text in render_all(diags):
-                click.echo(text, err=True)
-    skipped = [{"file": str(s.path), "reason": s.reason} for s in found.skipped if s.path not in found.checked]
+                say(text)
+    not_checked = [s for s in found.skipped if s.path not in found.checked]
+    skipped = [{"file": str(s.path), "reason": s.reason} for s in not_checked]
+    if report_file:
+        doc = reports.document(records, not_checked, {"command": "check"})
+        doc["summary"].update(cycle_time_s=None, steps=None)  # nothing ran
+        reports.write(doc, report_file)
     if as_json:
         click.echo(json.dumps({"files": report, "skipped": skipped}, indent=2))
     else:
         for s in skipped:
             click.echo(f"{s['file']}: skipped: {s['reason']}", err=True)
         if len(report) > 1:  # an archive: which machine file the programs used
-            for line in machine_lines(Counter(r["machine"] for r in report)):
+            for line in reports.machine_lines(Counter(r["machine"] for r in report)):
                 click.echo(line, err=True)
         n = sum(len(r["diagnostics"]) for r in report)
         bad = sum(1 for r in report if not r["ok"])
         with_errors = f", {bad} with errors" if bad else ""
         not_programs = f", {len(skipped)} file(s) skipped" if skipped else ""
-        click.echo(f"ncvm: {len(report)} program(s) checked{with_errors}, {n} diagnostic(s){not_programs}",
-                   err=True)
+        say(f"ncvm: {len(report)} program(s) checked{with_errors}, {n} diagnostic(s){not_programs}")
+        if report_file:
+            say(f"ncvm: report written to {report_file}")
     sys.exit(EXIT_FAULT if failed else EXIT_OK)
 
 
-@cli.command(name="compile")
+@cli.command(name="compile", epilog=_exits("compile"))
 @click.argument("source", type=click.Path(dir_okay=False))
 @click.option("-o", "out", type=click.Path(dir_okay=False), help="Object program to write.")
 @click.option("--xref", type=click.Path(dir_okay=False), is_flag=False, flag_value="",
@@ -429,12 +425,12 @@ def compile_cmd(source, out, xref, force, dialect, machine):
         path = api.compile_program(source, out, xref, dialect, machine, force=force, xref_named=xref_named)
     except CompileFailed as e:
         for text in render_all(e.diagnostics):
-            click.echo(text, err=True)
+            say(text)
         sys.exit(EXIT_FAULT)
     click.echo(f"ncvm: wrote {path}", err=True)
 
 
-@cli.command(name="machine-schema")
+@cli.command(name="machine-schema", epilog=_exits("machine-schema"))
 @click.option("--markdown", is_flag=True, help="The reference tables of docs/machine-file.md instead.")
 def machine_schema(markdown):
     """Print the JSON Schema of machine files (for editors)."""
@@ -444,7 +440,7 @@ def machine_schema(markdown):
     click.echo(tables() if markdown else json_text(), nl=False)
 
 
-@cli.command(name="translate")
+@cli.command(name="translate", epilog=_exits("translate"))
 @click.argument("program", type=click.Path(dir_okay=False))
 @click.option("-o", "out", type=click.Path(dir_okay=False), required=True, help="The program to write.")
 @click.option("--target", type=click.Choice(["linuxcnc", "sinumerik840d", "iso"]), default="linuxcnc",
@@ -480,10 +476,13 @@ def translate_cmd(program, out, target, frame, source_comments, dialect, machine
     try:
         done = translate(program, out, target, frame, source_comments, dialect, machine, options)
     except TranslationRefused as e:
-        click.echo(e.diagnostic.render(), err=True)
+        say(e.diagnostic.render())
         sys.exit(EXIT_FAULT)
     click.echo(f"ncvm: wrote {done.path} for {done.target.title}: {done.lines} lines, {done.moves} moves, "
                f"{done.probes} probe moves, {done.frozen} frozen decisions", err=True)
+
+
+cli.add_command(state)
 
 
 def main() -> None:

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import time
 from pathlib import Path
+from typing import Callable
 
 from ..diagnostics import UsageError
 from .discover import Found, discover
@@ -16,11 +17,13 @@ from .tasks import Settings, TaskBuilder, read_seed
 
 def run_batch(paths, dialect: str | None = None, machine: str | Path | None = None, jobs: int | None = None,
               cluster: str | None = None, state: str | Path | None = None, shared_state: bool = False,
-              max_steps: int = 100_000_000, max_memory: int | None = None, found: Found | None = None) -> dict:
+              max_steps: int = 100_000_000, max_memory: int | None = None, found: Found | None = None,
+              on_record: Callable[[dict], None] | None = None) -> dict:
     """Run every main program of ``paths`` (files and folders); the report document (:mod:`.report`).
 
     Each program starts from the permanent state of ``state`` (a copy; none: empty) and its writes are
     reported, unless ``shared_state``: then the runs use ``state`` itself one at a time and their writes stay.
+    ``on_record`` is told of each program's record as it comes in (a progress display).
     """
     started = time.perf_counter()
     found = found or discover(paths, dialect, machine)
@@ -40,21 +43,21 @@ def run_batch(paths, dialect: str | None = None, machine: str | Path | None = No
             tasks.append(task)
     how: dict = {"state": _state_words(settings)}
     if cluster:
-        done, how["cluster"] = _on_cluster(tasks, cluster)
+        done, how["cluster"] = _on_cluster(tasks, cluster, on_record)
         how["jobs"] = None
     else:
         how["jobs"] = jobs or default_jobs()
-        done = run_local(tasks, how["jobs"])
+        done = run_local(tasks, how["jobs"], on_record)
     records.update((t.index, r) for t, r in zip(tasks, done))
     doc = document([records[i] for i in range(len(found.programs))], found.skipped, how)
     doc["summary"]["wall_time_s"] = round(time.perf_counter() - started, 3)
     return doc
 
 
-def _on_cluster(tasks, address):
+def _on_cluster(tasks, address, on_record):
     from .cluster import run_on_cluster  # dask is an optional extra, loaded only for --cluster
 
-    return run_on_cluster(tasks, address)
+    return run_on_cluster(tasks, address, on_record=on_record)
 
 
 def _state_words(settings: Settings) -> str:

@@ -9,9 +9,12 @@ from pathlib import Path
 import click
 
 from ..diagnostics import UsageError
+from ..progress import Progress
 from ..runtime.memory import parse_size
+from ..termstyle import say
 from . import report
 from .batch import run_batch
+from .discover import discover
 
 
 def run_batch_command(programs, dialect, machine, state_dir, as_json, max_steps, max_memory, jobs, cluster,
@@ -29,16 +32,20 @@ def run_batch_command(programs, dialect, machine, state_dir, as_json, max_steps,
         raise UsageError(f"no such machine file: {machine}")
     if not state_dir.strip():
         raise UsageError("--state is empty; give the state directory (default .ncvm)")
-    doc = run_batch(programs, dialect, machine, jobs=jobs, cluster=cluster, state=state_dir,
-                    shared_state=shared_state, max_steps=max_steps,
-                    max_memory=parse_size(max_memory) if max_memory is not None else None)
+    found = discover(programs, dialect, machine)
+    # the programs done, their moves and simulated time, on a terminal (after half a second)
+    with Progress(sys.stderr.isatty() and not as_json, total=len(found.programs), delay=0.5) as progress:
+        doc = run_batch(programs, dialect, machine, jobs=jobs, cluster=cluster, state=state_dir,
+                        shared_state=shared_state, max_steps=max_steps,
+                        max_memory=parse_size(max_memory) if max_memory is not None else None, found=found,
+                        on_record=progress.done)
     if report_file:
         report.write(doc, report_file)
     if as_json:
         click.echo(json.dumps(doc, indent=2))
     else:
         for line in report.summary_lines(doc):
-            click.echo(line, err=True)
+            say(line)
         if report_file:
-            click.echo(f"ncvm: report written to {report_file}", err=True)
+            say(f"ncvm: report written to {report_file}")
     sys.exit(1 if report.failed(doc) else 0)

@@ -36,8 +36,8 @@ def document(records: list[dict], skipped: list[Skipped], how: dict) -> dict:
         "limit_violations": status["limit_violation"],
         "skipped": len(skipped),
         "with_permanent_writes": sum(1 for r in records if _writes(r)),
-        "cycle_time_s": round(sum(r["cycle_time_s"] for r in records), 6),
-        "steps": sum(r["steps"] for r in records),
+        "cycle_time_s": round(sum(r["cycle_time_s"] or 0.0 for r in records), 6),
+        "steps": sum(r["steps"] or 0 for r in records),
         "machines": dict(sorted(machines.items())),
         **how,
     }
@@ -110,6 +110,8 @@ def to_junit(doc: dict) -> str:
 
 
 def _case_out(r: dict) -> str:
+    if "diagnostics" in r:  # a check: what it found, not a run's figures
+        return "\n".join([f"machine: {r['machine']}"] + [_diagnostic_line(d) for d in r["diagnostics"]])
     lines = [f"machine: {r['machine']}", f"cycle time: {r['cycle_time_s']:.3f} s, {r['steps']} steps"]
     writes = _writes(r)
     if writes:
@@ -149,3 +151,18 @@ def machine_lines(machines: dict[str, int]) -> list[str]:
     """How many programs used each machine file."""
     return [f"ncvm: {n} program(s) on " + ("the built-in machine" if m == "built-in" else f"machine file {m}")
             for m, n in sorted(machines.items())]
+
+
+def check_record(path: str, dialect: str, machine: str, diagnostics: list[dict]) -> dict:
+    """The report record of a program ``ncvm check`` checked: status ``error`` with its first error, or
+    ``ok``; the fields of a run (cycle time, steps, motion) are null, every diagnostic under ``diagnostics``."""
+    error = next(({k: d[k] for k in ("code", "message", "file", "line", "column")}
+                  for d in diagnostics if d["severity"] == "error"), None)
+    return {"path": path, "dialect": dialect, "machine": machine, "status": "error" if error else "ok",
+            "error": error, "cycle_time_s": None, "steps": None, "motion": None, "limit_violations": [],
+            "output_lines": [], "diagnostics": diagnostics}
+
+
+def _diagnostic_line(d: dict) -> str:
+    where = f"{d['file']}:{d['line']}:{d['column']}: " if d["file"] and d["line"] else ""
+    return f"{where}{d['severity']} {d['code']}: {d['message']}"

@@ -101,6 +101,25 @@ class Store:
             raise self._error(e) from None
         return {k: json.loads(v) for k, v in rows}
 
+    def dump(self) -> dict[str, dict[str, Any]]:
+        """Everything the store holds, namespace -> key -> value, read in one statement (one snapshot)."""
+        try:
+            rows = self._db.execute("SELECT namespace, key, value FROM permanent ORDER BY namespace, key").fetchall()
+        except sqlite3.Error as e:
+            raise self._error(e) from None
+        out: dict[str, dict[str, Any]] = {}
+        for namespace, key, value in rows:
+            out.setdefault(namespace, {})[key] = json.loads(value)
+        return out
+
+    def replace(self, content: dict[str, dict[str, Any]]) -> None:
+        """Make the store hold exactly ``content`` (nothing for ``{}``), all or nothing."""
+        with self.batch():
+            self._write("DELETE FROM permanent", ())
+            for namespace, entries in content.items():
+                for key, value in entries.items():
+                    self.put(namespace, key, value)
+
     def put(self, namespace: str, key: str, value: Any) -> None:
         self._write("INSERT OR REPLACE INTO permanent(namespace, key, value) VALUES (?,?,?)",
                     (namespace, key, json.dumps(value)))

@@ -52,6 +52,8 @@ class RunOptions:
     screen: Path | None = None  # save the operator screen as it stands at the end (PNG)
     screen_dir: Path | None = None  # save one screen picture per wait for the operator (softkey, input)
     on_session: Callable[["Session"], None] | None = None  # told of the session as soon as it exists
+    #: told when the run starts (True) and stops (False) waiting for the operator at the terminal (keyboard)
+    on_operator_wait: Callable[[bool], None] | None = None
     #: CPL MMC (manual ch. 9): the client, ``client(names, values) -> (rc, {name: new value})``; None = no client
     mmc_client: Callable[[list, list], tuple] | None = None
 

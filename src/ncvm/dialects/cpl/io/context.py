@@ -50,7 +50,7 @@ class CplIO:
         elif options.keys:
             keys = KeyScript.from_file(options.keys)
         elif options.keyboard:
-            keys = TerminalKeys(sys.stdin.fileno(), sys.stderr)
+            keys = TerminalKeys(sys.stdin.fileno(), sys.stderr, waits=options.on_operator_wait)
         io = cls(session.machine.file_root, clock=session.machine.clock, keys=keys, say=session.say, typ2=typ2,
                  private=(options.state_dir, *session.machine.own_files()))
         cpl = cpl_options(session.machine)

@@ -26,14 +26,17 @@ _SYNTAX = ERRORS["KEY_SCRIPT_SYNTAX"][1] + ": "
 class TerminalKeys(KeyScript):
     """Key events from lines typed on the file descriptor ``fd``; prompts and screens go to ``out``.
 
-    ``view`` gives the screen as text lines (``Screen.text_view``); CplIO connects it.
+    ``view`` gives the screen as text lines (``Screen.text_view``); CplIO connects it. ``waits`` is told
+    when a wait for the operator starts (True) and ends (False): a progress display steps aside.
     """
 
-    def __init__(self, fd: int, out: TextIO, view: Callable[[], list[str]] | None = None):
+    def __init__(self, fd: int, out: TextIO, view: Callable[[], list[str]] | None = None,
+                 waits: Callable[[bool], None] | None = None):
         super().__init__("")
         self.fd = fd
         self.out = out
         self.view = view
+        self.waits = waits or (lambda waiting: None)
         self.ended = False  # end of input seen
         self._pending = b""  # bytes read but not yet a whole line
         self._lines = 0  # lines typed so far
@@ -90,8 +93,12 @@ class TerminalKeys(KeyScript):
                 self._asked = False  # a refusal before applies to this entry only
                 return super().wait(what)
             self.events.clear()  # idle time passes while the operator is asked
-            self._ask(what)
-            line = self._read_line()
+            self.waits(True)
+            try:
+                self._ask(what)
+                line = self._read_line()
+            finally:
+                self.waits(False)
             if line is None:
                 self._say("")
                 raise fail("KEY_SCRIPT_EMPTY", f"{what}: end of input from the terminal")
