@@ -8,6 +8,8 @@ digit-coded patterns (``00010010`` is the number 10010, digest §2.1).
 
 from __future__ import annotations
 
+import math
+from decimal import Decimal
 from typing import Any
 
 from ...diagnostics import UsageError
@@ -37,13 +39,35 @@ CHANNEL_ARG = {"cycle_md", "cycle_sd"}
 
 #: the largest magnitude of an R value (L7077-7080)
 R_LIMIT = 99999999.0
+#: the smallest magnitude of an R value other than 0 (L7079): the NC holds 8 decimal places
+R_SMALLEST = 0.00000001
 
 
 def r_value(value: float) -> float:
-    """A function result as an R value: beyond +/-99999999 (L7079), or inf/NaN, it is the "CL 800 error"."""
+    """A function result as an R value: beyond +/-99999999 (L7079), or inf/NaN, it is the "CL 800 error";
+    below the smallest magnitude +/-0.00000001 it is what the NC holds, rounded to 8 decimal places
+    (0 or +/-0.00000001)."""
     if -R_LIMIT <= value <= R_LIMIT:
+        if -R_SMALLEST < value < R_SMALLEST:
+            return round(value, 8) + 0.0  # (no -0.0)
         return value
-    raise Cl800Error(f"{value:g} is outside the R parameter range +/-99999999")
+    raise Cl800Error(f"{fixed(value)} is outside the R parameter range +/-99999999")
+
+
+def held(value: float) -> float:
+    """A value read or measured into an R parameter as the NC holds it: below the smallest magnitude
+    +/-0.00000001 (L7079) rounded to 8 decimal places (an actual position of 3e-15 reads 0)."""
+    if -R_SMALLEST < value < R_SMALLEST:
+        return round(value, 8) + 0.0
+    return float(value)
+
+
+def fixed(value: float) -> str:
+    """A number as the control shows it: fixed notation, no exponent, no trailing zeros (99999999.4)."""
+    if not math.isfinite(value):
+        return str(value)
+    text = format(Decimal(repr(value)), "f")
+    return text[:-2] if text.endswith(".0") else text
 
 
 def nc8(value: float) -> float:
