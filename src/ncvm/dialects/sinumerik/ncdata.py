@@ -209,6 +209,8 @@ class NcData:
 
     def overlay(self, stored: dict[str, Any]) -> None:
         """What earlier runs left in the store wins over the machine file."""
+        self._machine_zo = {k: list(v) for k, v in self.zo.items()}
+        self._machine_rot = dict(self.rot)
         for area in AREAS:
             self.areas[area].update(stored.get(area, {}))
         self.to.update(stored.get("to", {}))
@@ -217,6 +219,23 @@ class NcData:
         self.central_r.update(stored.get("central_r", {}))
         if "mib" in stored:
             self.mib = [float(x) for x in stored["mib"]]
+
+    def carried_offsets(self, stored: dict[str, Any], axes: list[str]) -> list[str]:
+        """The zero offsets and rotation angles earlier runs left in the store that differ from the machine
+        file: the NC keeps them (docs/sin800.md "The NC state"), and they move this program's toolpath."""
+        out = []
+        for name, values in sorted(stored.get("zo", {}).items()):
+            if name == "PRESET" or name not in self.zo:
+                continue
+            start = self._machine_zo.get(name, [0.0] * self.n_axes)
+            words = " ".join(f"{a}{v:g}" for a, v, w in zip(axes, values, start) if v != w)
+            if words:
+                out.append(f"{name.replace('.', ' ')} {words}")
+        for key, angle in sorted(stored.get("rot", {}).items()):
+            if angle != self._machine_rot.get(key, 0.0):
+                kind, group = key.split(":")
+                out.append(f"{kind} rotation {group} {angle:g} deg")
+        return out
 
     def persisted(self) -> dict[str, Any]:
         out: dict[str, Any] = {}
