@@ -118,7 +118,11 @@ class Sin800Dialect(Dialect):
         unit = compile_unit(path, text, machine.axis_names, "main", debug, ahead, strict, sec.radius_address)
         data = NcData.from_machine(machine)
         store = session.store
-        data.overlay(store.items(NAMESPACE))
+        stored = store.items(NAMESPACE)
+        data.overlay(stored)
+        for offset in data.carried_offsets(stored, machine.axis_names):  # never a silent shift
+            session.say(f"NC state: {offset} kept from an earlier run (the NC keeps its offsets; "
+                        f"delete {session.options.state_dir} to start from the machine file)")
         library = SubProgramLibrary(machine, debug, ahead, strict, sec.radius_address)
         channel = Channel(session, data, library)
         name = f"%{unit.program.kind}{unit.program.number}" if unit.program.kind else Path(path).name

@@ -23,8 +23,8 @@ from ...nc.profiles.check import refused_g_warnings
 from ...nc.profiles.sinumerik8xx import SINUMERIK8XX
 from ...runtime.codegen import PySource
 from .atcodes import AT_CODES, AtCode
-from .finite import stays_in_range
-from .ncdata import R_LIMIT
+from .finite import may_underflow, stays_in_range
+from .ncdata import R_LIMIT, R_SMALLEST
 from .reader import Arith, AtInstr, NcBlock, Note, Operand, PartProgram, Word
 
 #: M functions the kernel handles itself; any other goes to the PLC
@@ -331,10 +331,16 @@ class UnitCodegen:
         elif isinstance(it, Arith):
             rec.settle_int_sec(out)
             if i in checks and not self.strict:
-                # the value is stored only in range; the test is false for NaN too (its comparisons are)
+                # the value is stored only in range; the test is false for NaN too (its comparisons are);
+                # a value below the smallest magnitude is stored as the NC holds it (r_value)
                 out.emit(f"_v = {self._arith_expr(it)}", line)
-                out.emit(f"if not -{R_LIMIT!r} <= _v <= {R_LIMIT!r}: _r_value(_v)", line)
+                out.emit(f"if not ({R_SMALLEST!r} <= _v <= {R_LIMIT!r} or -{R_LIMIT!r} <= _v <= -{R_SMALLEST!r}) "
+                         f"and _v != 0.0: _v = _r_value(_v)", line)
                 out.emit(f"{self.r(it.target)} = _v", line)
+            elif not self.strict and may_underflow(it.terms):  # (R*0.5: in range, but it may get too small)
+                target = self.r(it.target)
+                out.emit(f"{target} = {self._arith_expr(it)}", line)
+                out.emit(f"if -{R_SMALLEST!r} < {target} < {R_SMALLEST!r}: {target} = _r_value({target})", line)
             else:
                 out.emit(f"{self.r(it.target)} = {self._arith_expr(it)}", line)
         elif isinstance(it, Note):
@@ -503,6 +509,8 @@ class UnitCodegen:
                                k=int(ops[1].value) if len(ops) > 1 else None)
         if row.overflows and not self.strict:
             expr = f"_r_value({expr})"  # (strict stores check the range themselves)
+        elif row.underflows and not self.strict:  # SIN 180: 1.2e-16 (checked inline: a hot path)
+            expr = f"(_v if not -{R_SMALLEST!r} < (_v := {expr}) < {R_SMALLEST!r} else _r_value(_v))"
         return self._lines(at, self.store(target, expr))
 
     # -- main group 7: NC-specific functions --------------------------------

@@ -9,7 +9,7 @@ so each assignment that may leave the range checks its own result.
 
 from __future__ import annotations
 
-from .ncdata import R_LIMIT
+from .ncdata import R_LIMIT, R_SMALLEST
 from .reader import Operand
 
 
@@ -33,3 +33,12 @@ def stays_in_range(terms: list[tuple[str, Operand]]) -> bool:
         return b.kind == "K" and c >= 1.0
     return c == 0.0  # + and -: any other constant can carry a value over the limit
 
+
+
+def may_underflow(terms: list[tuple[str, Operand]]) -> bool:
+    """Whether the result may come out nonzero below the smallest magnitude +/-0.00000001 (L7079), which
+    the NC does not hold: any arithmetic of two or more terms, or a constant that small."""
+    if len(terms) > 1:
+        return True
+    t = terms[0][1]
+    return t.kind == "K" and 0.0 < abs(t.value) < R_SMALLEST

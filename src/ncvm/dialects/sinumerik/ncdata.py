@@ -8,6 +8,8 @@ digit-coded patterns (``00010010`` is the number 10010, digest §2.1).
 
 from __future__ import annotations
 
+import math
+from decimal import Decimal
 from typing import Any
 
 from ...diagnostics import UsageError
@@ -37,13 +39,35 @@ CHANNEL_ARG = {"cycle_md", "cycle_sd"}
 
 #: the largest magnitude of an R value (L7077-7080)
 R_LIMIT = 99999999.0
+#: the smallest magnitude of an R value other than 0 (L7079): the NC holds 8 decimal places
+R_SMALLEST = 0.00000001
 
 
 def r_value(value: float) -> float:
-    """A function result as an R value: beyond +/-99999999 (L7079), or inf/NaN, it is the "CL 800 error"."""
+    """A function result as an R value: beyond +/-99999999 (L7079), or inf/NaN, it is the "CL 800 error";
+    below the smallest magnitude +/-0.00000001 it is what the NC holds, rounded to 8 decimal places
+    (0 or +/-0.00000001)."""
     if -R_LIMIT <= value <= R_LIMIT:
+        if -R_SMALLEST < value < R_SMALLEST:
+            return round(value, 8) + 0.0  # (no -0.0)
         return value
-    raise Cl800Error(f"{value:g} is outside the R parameter range +/-99999999")
+    raise Cl800Error(f"{fixed(value)} is outside the R parameter range +/-99999999")
+
+
+def held(value: float) -> float:
+    """A value read or measured into an R parameter as the NC holds it: below the smallest magnitude
+    +/-0.00000001 (L7079) rounded to 8 decimal places (an actual position of 3e-15 reads 0)."""
+    if -R_SMALLEST < value < R_SMALLEST:
+        return round(value, 8) + 0.0
+    return float(value)
+
+
+def fixed(value: float) -> str:
+    """A number as the control shows it: fixed notation, no exponent, no trailing zeros (99999999.4)."""
+    if not math.isfinite(value):
+        return str(value)
+    text = format(Decimal(repr(value)), "f")
+    return text[:-2] if text.endswith(".0") else text
 
 
 def nc8(value: float) -> float:
@@ -185,6 +209,8 @@ class NcData:
 
     def overlay(self, stored: dict[str, Any]) -> None:
         """What earlier runs left in the store wins over the machine file."""
+        self._machine_zo = {k: list(v) for k, v in self.zo.items()}
+        self._machine_rot = dict(self.rot)
         for area in AREAS:
             self.areas[area].update(stored.get(area, {}))
         self.to.update(stored.get("to", {}))
@@ -193,6 +219,23 @@ class NcData:
         self.central_r.update(stored.get("central_r", {}))
         if "mib" in stored:
             self.mib = [float(x) for x in stored["mib"]]
+
+    def carried_offsets(self, stored: dict[str, Any], axes: list[str]) -> list[str]:
+        """The zero offsets and rotation angles earlier runs left in the store that differ from the machine
+        file: the NC keeps them (docs/sin800.md "The NC state"), and they move this program's toolpath."""
+        out = []
+        for name, values in sorted(stored.get("zo", {}).items()):
+            if name == "PRESET" or name not in self.zo:
+                continue
+            start = self._machine_zo.get(name, [0.0] * self.n_axes)
+            words = " ".join(f"{a}{v:g}" for a, v, w in zip(axes, values, start) if v != w)
+            if words:
+                out.append(f"{name.replace('.', ' ')} {words}")
+        for key, angle in sorted(stored.get("rot", {}).items()):
+            if angle != self._machine_rot.get(key, 0.0):
+                kind, group = key.split(":")
+                out.append(f"{kind} rotation {group} {angle:g} deg")
+        return out
 
     def persisted(self) -> dict[str, Any]:
         out: dict[str, Any] = {}

@@ -41,7 +41,7 @@ from .drilling import Drilling
 from .errors import Cl800Error
 from .meas import meas_m
 from .memory import SystemMemory
-from .ncdata import MIB_TOP, R_LIMIT, NcData, int_to_pattern, nc8, pattern_to_int, r_value
+from .ncdata import MIB_TOP, R_LIMIT, NcData, held, int_to_pattern, nc8, pattern_to_int, r_value
 from .offsets import Offsets
 from .options import options
 from .panel import Panel
@@ -293,8 +293,7 @@ class Channel:
 
     def load_r(self, n: int, value: float) -> None:
         """An R parameter written by execution (PLC answer, measured value), not by decoding."""
-        if self.strict:
-            value = nc8(value)
+        value = nc8(value) if self.strict else held(value)
         if self.decode_ahead > 0:
             self.pending_r[n] = value
         else:
@@ -305,7 +304,7 @@ class Channel:
         """A read: the value goes to R<target> (and on, for multi-register results)."""
         value = _RUN[code](self)(code, args)
         R = self.R
-        fix = nc8 if self.strict else float
+        fix = nc8 if self.strict else held
         if isinstance(value, list):
             if target + len(value) > 1000:
                 raise Cl800Error(f"result registers R{target}..R{target + len(value) - 1} do not exist")
@@ -316,7 +315,7 @@ class Channel:
 
     def store(self, first: int, values: list[float]) -> None:
         """Results of an NC function into R<first>... (8 significant digits under strict_nc)."""
-        fix = nc8 if self.strict else float
+        fix = nc8 if self.strict else held
         self.R[first:first + len(values)] = [fix(v) for v in values]
 
     def write(self, code: str, args: tuple) -> None:

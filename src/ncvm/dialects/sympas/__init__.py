@@ -48,6 +48,7 @@ class Unit:
         self.task = prog.task
         self.stepping = False  # compiled with a check point after every statement (STEPCNCT)
         self.srcs = [Src(f, line) for f, line in locs]
+        self.shared_writes: frozenset[str] = frozenset()  # the card's registers its statements assign
 
     def namespace(self, card) -> dict:
         ns = namespace(card)
@@ -93,6 +94,7 @@ def compile_units(path: str, text: str, machine, warnings: list | None = None, s
         gen = CodeGen(pyname, chk, prog, stepping)
         src = gen.generate()
         unit = Unit(prog, chk, src, pyname, gen.locs)
+        unit.shared_writes = frozenset(gen.shared_writes)
         unit.stepping = stepping
         units.append(unit)
     return units
@@ -126,6 +128,8 @@ class SympasDialect(Dialect):
     def run(self, path, text, session):
         try:
             cfg = sympas_config(session.machine)
+            # the program's axis names (A1 ...) in the result, a compile error's too: positions, bounds, limits
+            session.axis_labels = {m: p for m, p in zip(session.machine.axis_names, cfg.axis_names) if m != p}
             texts = [(path, text)]
             for extra in cfg.load:
                 p = session.machine.find_program(extra) or Path(path).parent / extra
@@ -140,8 +144,6 @@ class SympasDialect(Dialect):
             raise CompileFailed([e.diagnostic()]) from None
         card = Card(session, cfg)
         session.controller = card
-        # the program's axis names (A1 ...) in the result: positions, bounds, limit violations
-        session.axis_labels = {m: p for m, p in zip(session.machine.axis_names, cfg.axis_names) if m != p}
         tasks = card.scheduler.tasks
         main = units[0]
         for u in units:

@@ -16,7 +16,7 @@ from ...nc.canon import Src
 from ...runtime.session import OperatorOutput
 from . import recording, softlimits
 from .axes import AxisState
-from .motion import TICKS_PER_S, Move
+from .motion import TICKS_PER_S, Chain, Move
 from .options import Options
 from .scheduler import Scheduler
 from .spooler import Spooler
@@ -198,9 +198,15 @@ class Card:
 
     def retire(self, mv: Move) -> None:
         self.live.discard(mv)
-        fin = mv.final()
         exact = self.sys["MODEREG"] & 0x100  # ExactTargetPos (L1399): no rounding to whole counts
         c = self.counts
+        last = mv.segs[-1] if isinstance(mv, Chain) else mv
+        if not exact and last.stop_s is not None:  # stopped on the way: it stands on whole counts, and the
+            # reported path ends there too (the bounds enclose the position)
+            last.stop_p = tuple(round(x * c) / c if math.isfinite(x) else x for x in last.final())
+            if last is not mv:
+                mv.refresh()
+        fin = mv.final()
         for k, ax in enumerate(mv.axes):
             a = self.axes[ax]
             if a.move is mv:
@@ -396,6 +402,17 @@ class Card:
                 "cd": {str(i): v for i, v in enumerate(self.cd) if v},
                 "output": self.output_log.lines()}
 
+    def _motion_end(self) -> float:
+        """The tick at which the axes' moves (not a jog running on at jtv) have come to a stand."""
+        end = 0.0
+        for a in self.axes:
+            if a.move is not None and not a.move.drift:
+                mv = a.move
+                stand = mv.t1 if mv.t1 < math.inf else mv.standstill()
+                if stand < math.inf:
+                    end = max(end, stand)
+        return end
+
     # -- system reset and the end of the run -----------------------------------------------------------------------------
     def reset_system(self, t: float) -> None:
         for a in self.axes:
@@ -407,15 +424,17 @@ class Card:
                 tk.state = STOPPED
 
     def finish(self) -> float:
-        """Let running moves end; report them; the run's end time in ticks."""
+        """Let running moves end, with the card still watching them (soft limits, SSF entries, homing
+        latches and scenario events act up to their end as while a task ran); report them; the run's
+        end time in ticks."""
         idle = self.scheduler.idle_end
         end = idle if idle is not None else max([t.time for t in self.scheduler.tasks] + [0.0])
-        for a in self.axes:
-            if a.move is not None and not a.move.drift:
-                mv = a.move
-                stand = mv.t1 if mv.t1 < math.inf else mv.standstill()
-                if stand < math.inf:
-                    end = max(end, stand)
+        while True:
+            end = max(end, self._motion_end())
+            due = self.scheduler.next_timed()
+            if due > end or self.scheduler.fault is not None:
+                break
+            self.scheduler.apply_timed(due)  # may stop a move (a soft limit) or start one (a drift)
         for a in self.axes:
             if a.move is not None and a.move.drift:
                 a.move.stop(max(end, a.move.t0), math.inf)  # still running on at jtv: reported up to the end

@@ -40,6 +40,7 @@ class CodeGen:
         self._loc_ids: dict[tuple[str, int], int] = {}
         self.tmp = 0
         self.const_axes = not checker.axis_an_written
+        self.shared_writes: set[str] = set()  # the card's registers (CI, CD, ...) the program assigns
         self.unchecked = False  # SIN and COS unchecked: the statement catches their ValueError (assign_value)
 
     # -- helpers ---------------------------------------------------------------------
@@ -262,6 +263,7 @@ class CodeGen:
         if isinstance(target, A.Name):
             sym = target.sym
             if isinstance(sym, SysParam):
+                self.shared_writes.add(sym.name)
                 self.emit(f"tk.set_sys({sym.name!r}, {convert(code, src_ty, sym.ty)})", node)
                 return
             self.emit(f"{sym.py} = {convert(code, src_ty, sym.ty)}", node)
@@ -320,6 +322,7 @@ class CodeGen:
             self.emit("if _g is not None: yield from _g", node)
         else:
             for p in c.params:
+                self.shared_writes.add(p.name)
                 self.emit(f"tk.set_sys({p.name!r}, {convert(self.expr(p.value), p.value.ty, 'double')})", node)
             items = ", ".join(f"({self.axis_ref(a)}, {convert(self.expr(a.value), a.value.ty, 'double')})"
                               for a in c.axes)

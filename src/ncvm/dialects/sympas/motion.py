@@ -148,7 +148,7 @@ class Move:
     __slots__ = ("axes", "p0", "p1", "kind", "t0", "t1", "prof", "center", "radius", "a0", "phi", "plane",
                  "normal", "lin", "src", "start_all", "feed", "stop_s", "stop_t", "stop_dec", "retired", "jog",
                  "homing", "vmax", "ovr0", "warp", "stop_v0", "stop_s0", "drift",
-                 "weights", "plane_w", "braked", "dirs", "shift")
+                 "weights", "plane_w", "braked", "dirs", "shift", "stop_p")
 
     def __init__(self, axes, p0, p1, kind, src: Src, start_all):
         self.axes = axes
@@ -158,6 +158,7 @@ class Move:
         self.src = src
         self.start_all = start_all
         self.stop_s = None
+        self.stop_p = None  # where a stop left the axes exactly (a soft limit, whole counts), when known
         self.retired = False
         self.jog = False
         self.weights = None  # path units per axis unit (effradius, NFRAX = 0); None: 1 for every axis
@@ -286,7 +287,7 @@ class Move:
 
     def pos(self, t_ticks: float) -> tuple:
         if t_ticks >= self.t1:
-            return self.point(self.stop_s if self.stop_s is not None else self.prof.length)
+            return self.final()
         return self.point(self.s_at(t_ticks))
 
     def speed_at(self, t_ticks: float) -> float:
@@ -334,6 +335,8 @@ class Move:
         self.t1 = t_ticks + T * TICKS_PER_S
 
     def final(self) -> tuple:
+        if self.stop_p is not None:
+            return self.stop_p
         return self.point(self.stop_s if self.stop_s is not None else self.prof.length)
 
     # -- reporting ----------------------------------------------------------------------------

@@ -14,6 +14,9 @@ from .events import input_active
 from .motion import Chain
 from .values import fault
 
+#: the software limits: read and written in the user's coordinates, kept in the machine's (digest §10.6, A-62)
+LIMITS = ("sll", "slr")
+
 
 def axst(card, a: AxisState, t: float) -> int:
     """The status word of axis ``a`` at ``t``: its sticky flags, motion, loop, homing, inputs and limits."""
@@ -68,6 +71,8 @@ def get_qual(card, tk, ax: int, name: str):
         return a.zerooffset
     if name == "axst":
         return axst(card, a, t)
+    if name in LIMITS:
+        return a.q[name] - card.user_shift(a)
     if name in ("digi", "ifs"):  # the axis' digital inputs: a run-time input (ncvm translate marks it)
         card.canon.frozen(f"digital inputs {a.name}.{name} read as {getattr(a, name):#x}", None)
     if name in ("digi", "digo", "ifs"):
@@ -99,6 +104,9 @@ def set_qual(card, tk, ax: int, name: str, value) -> None:
         return
     if name in ("kp", "ki", "kd", "kpl", "kfca", "kfcv"):
         a.staged[name] = value
+        return
+    if name in LIMITS:
+        a.q[name] = value + card.user_shift(a)  # kept in machine coordinates: it stays put when the zero moves
         return
     a.q[name] = value
     if name == "jovr":

@@ -237,6 +237,8 @@ class Scheduler:
         snap = self._snapshot()
         if q is None or q[0] != since or not self._stuck(q[1], snap, q[2]):
             self._quiet = (since, snap, tk.time)
+            for t in self.tasks:
+                t.shared_reads.clear()  # what each reads in the window from now on
             return False
         waiting = [t for t in self.tasks if t.state == RUNNING]
         places = ", ".join(f"task {t.number} at line {w[1]}" for t in waiting if (w := t.where()) is not None)
@@ -256,20 +258,41 @@ class Scheduler:
         return (tuple(card.ci), tuple(card.cd), repr(card.sys)), tasks
 
     def _stuck(self, before: tuple, now: tuple, since: float) -> bool:
-        """Whether the window from ``since`` to now, with the card quiet, shows a deadlock: the shared
-        state did not change, no task slept through the window (it wakes at a time and may act then), and
-        the main task neither moved on nor read the clock. Another task that only changed its own
-        variables or read the clock (the manual's monitor loop, L1548) cannot free the main task: as
-        after the main task's end (:meth:`_quiet_end`), what it does not show on the card does not count."""
-        if before[0] != now[0] or before[1].keys() != now[1].keys():
+        """Whether the window from ``since`` to now, with the card quiet, shows a deadlock: no task slept
+        through the window (it wakes at a time and may act then), the main task neither moved on nor read
+        the clock, and what it reads of the card cannot change: the shared state did not change, or no
+        other running task assigns any register the main task read in the window (a heartbeat CI := CLOCK
+        of a monitor beside it, L1548, releases nothing). Another task that only changed its own
+        variables or read the clock cannot free the main task: as after the main task's end
+        (:meth:`_quiet_end`), what it does not show on the card does not count."""
+        if before[1].keys() != now[1].keys():
             return False
         for t in self.tasks:
             if t.state == RUNNING and t.waits_for is not None and t.slept_at < since:
                 return False
         main = self.main
         if main is None or main.number not in now[1]:
-            return before[1] == now[1]
-        return before[1][main.number] == now[1][main.number]
+            return before == now
+        if before[1][main.number] != now[1][main.number]:
+            return False
+        return before[0] == now[0] or self._reads_settled(main, before[0], now[0])
+
+    def _reads_settled(self, main, before: tuple, now: tuple) -> bool:
+        """Whether the registers ``main`` read in the window kept their values and no other running task
+        has a statement that assigns one of them (only its own statements could, and it stands still)."""
+        reads = main.shared_reads
+        for t in self.tasks:
+            if t is not main and t.state == RUNNING and t.unit is not None and reads & t.unit.shared_writes:
+                return False
+        for name in reads:
+            kind, index = name[:2], name[2:]
+            if kind in ("CI", "CD") and index.isdigit():
+                k = 0 if kind == "CI" else 1
+                if before[k][int(index)] != now[k][int(index)]:
+                    return False
+            elif before[2] != now[2]:  # a system register: any change of them counts
+                return False
+        return True
 
     def capture_locals(self, tk, tb) -> None:
         """Keep the main block's locals (its variables) when the task stops by an exception."""

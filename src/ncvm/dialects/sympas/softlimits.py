@@ -72,10 +72,12 @@ def _stop_action(card, owner, ax: int, seg, tick: float, reaction: str):
         eps = 1e-6 * max(1.0, abs(p))
         if lo + eps < p < hi - eps:
             return  # re-planned since (a chain extended): armed anew by its new plan
+        at_hi = p >= hi - eps
         if reaction == "SMD":
             owner.stop(tick, min(card.axes[x].q["sdec"] for x in owner.axes))
         else:
             owner.stop(tick, math.inf)
+            _on_the_limit(owner, ax, hi if at_hi else lo)
         a.limit_stop = True
         fin = owner.final()
         for x in owner.axes:
@@ -84,8 +86,24 @@ def _stop_action(card, owner, ax: int, seg, tick: float, reaction: str):
             b.spool.clear()
             if reaction == "TOM":
                 b.closed = False
-        which = f"slr = {hi:g}" if p >= hi - eps else f"sll = {lo:g}"
+        shift = card.user_shift(a)
+        limit = hi if at_hi else lo
+        which = f"{'slr' if at_hi else 'sll'} = {limit - shift:g}"  # as the program reads it (A1.slr)
+        if shift:
+            which += f" (machine {limit:g})"
         names = ", ".join(card.names[x] for x in owner.axes)
         card.say(f"{seg.src.file}:{seg.src.line}: software limit {which} of {a.name} reached at "
                  f"{tick / TICKS_PER_S:.6f} s: {reaction} stops {names}", card.task_of(seg.src))
     return act
+
+
+def _on_the_limit(owner, ax: int, limit: float) -> None:
+    """An immediate stop (TOM, SMA) leaves the axis on the limit itself: the stop tick is found to within
+    a rounding error of the crossing, the reported end point is the crossing."""
+    seg = owner.segs[-1] if isinstance(owner, Chain) else owner
+    if ax in seg.axes:
+        end = list(seg.final())
+        end[seg.axes.index(ax)] = limit
+        seg.stop_p = tuple(end)
+        if isinstance(owner, Chain):
+            owner.refresh()

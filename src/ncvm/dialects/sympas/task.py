@@ -50,6 +50,7 @@ class Task:
         self.held = None  # sched.steps when this task last found its W-wait held by TROVR = 0
         self.slept_at = 0.0  # when its last sleep (WT, a wait for events) began
         self.clock_reads = 0  # CLOCK reads so far (a task waiting for a time is not deadlocked)
+        self.shared_reads: set[str] = set()  # the card's registers (CI, CD, ...) read since the watch last looked
         self.waits_for: float | None = None  # while it sleeps: when it acts again if nothing else happens
         self.waits_mark = 0  # sched.acts when waits_for was worked out (valid while no task has acted since)
         self.polls = False  # whether it looks for events while it sleeps
@@ -222,6 +223,7 @@ class Task:
     def get_sys(self, name: str):
         if name in self.sysp:
             return self.sysp[name]
+        self.shared_reads.add(name)  # what it waits on, for the deadlock watch (scheduler.py)
         return self.card.get_sys(name)
 
     def set_sys(self, name: str, value) -> None:

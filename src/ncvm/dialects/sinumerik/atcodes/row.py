@@ -19,7 +19,8 @@ class AtCode:
     ``run``: the run-time function that executes it (groups 3, 4, 7, a), a method of the
     channel or of one of its parts (``offsets.zo_read``); ``expr``: the Python
     template of a jump condition (group 1) or a result (group 6); ``overflows``: the result may leave the
-    double range for finite operands. ``cl800``: how a CL 800 program writes the code (``function``,
+    double range for finite operands; ``underflows``: it may come out below the smallest R magnitude
+    0.00000001 (L7079) for operands in range (SIN 180 is 1.2e-16 in doubles, 0 on the NC). ``cl800``: how a CL 800 program writes the code (``function``,
     ``read``, ``write``, ``nc_function``, ``procedure``, ``logic``) under ``name`` (default the
     statement), ``regs`` the R parameters a read or NC function writes, ``args`` the procedure's
     argument kinds where they are not the operand kinds (``b`` a bit access)."""
@@ -32,6 +33,7 @@ class AtCode:
     run: str | None = None
     expr: str | None = None
     overflows: bool = False
+    underflows: bool = False
     cl800: str | None = None
     name: str | None = None
     regs: int = 1

@@ -1,0 +1,117 @@
+"""Independent review of issue 15, rw_SymPas items 6/7: soft limits in the program's terms.
+
+docs/sympas.md "Software limits": "A move that would carry an axis from inside its software limits
+`sll`/`slr` across one is stopped where it gets there"; EVLSS (L1584-1586) fires when the axis position
+passes a limit configured with TOM or SMA. Digest sympas.md §10.6 (A-62): "dp, rp, tp, lp and sll/slr are
+all exposed in u" (the user coordinate, u = m - zerooffset - ZO), sll/slr stored in machine coordinates.
+"""
+
+import json
+import subprocess
+import sys
+import textwrap
+
+MACHINE = textwrap.dedent(
+    """\
+    [machine]
+    name = "APCI-8001 gantry"
+
+    [[axis]]
+    name = "X"
+    min = -10.0
+    max = 400.0
+    rapid = 12000.0
+    max_feed = 6000.0
+    accel = 1500.0
+
+    [[axis]]
+    name = "Y"
+    min = -10.0
+    max = 300.0
+    rapid = 12000.0
+    max_feed = 6000.0
+    accel = 1500.0
+    """
+)
+
+
+def _run_json(tmp_path, source):
+    (tmp_path / "machine.toml").write_text(MACHINE)
+    program = tmp_path / "p.sap"
+    program.write_text(textwrap.dedent(source))
+    done = subprocess.run(
+        [sys.executable, "-m", "ncvm", "run", "--json", str(program)],
+        capture_output=True, text=True, cwd=tmp_path, timeout=120,
+    )
+    return json.loads(done.stdout)
+
+
+def test_a_move_still_running_when_the_program_ends_is_stopped_at_slr(tmp_path):
+    """MLAW(A1 := 450) with slr = 400 stops at 400 (TOM). The same move started with MLA by a program
+    that then ends (or waits less than the move takes) is not watched any more once the tasks have
+    ended: A1 ends at 450 in the JSON `position`, past the limit the card would have stopped it at,
+    with only a warning. The axis must stop at slr whether or not a task still runs."""
+    doc = _run_json(
+        tmp_path,
+        """\
+        {$TASK 0}
+        program Main;
+        begin
+          TRVL := 200.0; TRAC := 2000.0;
+          MLA(A1 := 450.0);
+        end.
+        """,
+    )
+    assert doc["status"] == "ok"
+    assert doc["position"]["A1"] == 400.0
+    assert any("software limit slr = 400 of A1" in line for line in doc["output"])
+
+
+def test_a_move_started_by_a_task_that_ends_is_stopped_at_slr(tmp_path):
+    """Task 1 starts MLA(A2 := 350) (slr of A2 = 300) and ends; task 0 waits 1 s and ends: A2 runs to
+    350 unchecked (position A2 350.0), although a MLAW of the same move stops at 300."""
+    doc = _run_json(
+        tmp_path,
+        """\
+        {$TASK 0}
+        program Main;
+        begin
+          STARTCNCT(1);
+          WT(15625);
+          writeln('main end ', CI1);
+        end.
+
+        {$TASK 1}
+        program Mover;
+        begin
+          TRVL := 200.0; TRAC := 2000.0;
+          MLA(A2 := 350.0);
+          CI1 := 1;
+        end.
+        """,
+    )
+    assert doc["status"] == "ok"
+    assert doc["position"]["A2"] == 300.0
+
+
+def test_slr_reads_in_the_users_coordinates_after_szpa(tmp_path):
+    """§10.6: sll/slr are exposed in u = m - zerooffset. After SZPA(A1 := 100) the right limit at
+    machine 400 reads 300, the position where TOM stops A1 reads dp = 300. ncvm reads slr = 400 (the
+    machine figure) and its message "software limit slr = 400 of A1 reached" names a limit the
+    program's A1 (dp 300) never shows."""
+    doc = _run_json(
+        tmp_path,
+        """\
+        {$TASK 0}
+        program Main;
+        begin
+          TRVL := 100.0; TRAC := 1000.0;
+          SZPA(A1 := 100.0);
+          MLAW(A1 := 350.0);
+          writeln('dp ', A1.dp, ' slr ', A1.slr);
+        end.
+        """,
+    )
+    assert doc["status"] == "ok"
+    assert doc["position"]["A1"] == 300.0
+    assert "dp 300 slr 300" in doc["output"]
