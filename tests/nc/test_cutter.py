@@ -146,7 +146,7 @@ def _sin_contour() -> str:
 
 
 def test_sinumerik_takes_the_radius_from_the_to_area_and_cuts_the_same_contour(run_text, tmp_path):
-    """CL 800 TO table (digest: type 20-29 shank cutter, P4 radius + P7 radius wear): the shared geometry."""
+    """CL 800 TO table (CL 800 manual §2.3.3, L574-629: type 20-29 shank cutter, P4 radius + P7 radius wear): the shared geometry."""
     trace = tmp_path / "trace.jsonl"
     r = run_text(_sin_contour(), name="p.mpf", machine=machine_from_dict(SIN_MACHINE), trace=trace)
     assert r["status"] == "ok", r["error"]

@@ -28,6 +28,28 @@ def tracked_files() -> list[Path]:
 
 # --- item 1: self-contained ---------------------------------------------------------------------------------
 
+# "digest §5.3" cites the project's private digests of the manuals (not in the repository); "the seeds" /
+# "the seed manual" is the project's private name for its copy of the manuals. A newcomer has neither.
+PRIVATE_CITATION = re.compile(r"\bdigests?\s*§|\bdigest \d|\bthe seeds\b|\bseed manual", re.IGNORECASE)
+TEXT_SUFFIXES = {".py", ".md", ".toml", ".txt", ".cpl", ".cl8", ".sap", ".dat"}
+
+
+def test_item1_docs_and_code_cite_no_private_digest_or_seeds():
+    """Issue 19 item 1: "cite the manuals by title, edition and section/line ... let no file name a path
+    outside the repository". About 200 places cited "digest §N" and some "the seeds", which are documents
+    outside the repository. Comments in tests and test programs count too; only this file names them."""
+    out = subprocess.run(["git", "ls-files"], cwd=ROOT, capture_output=True, text=True, check=True).stdout
+    hits = []
+    for rel in out.splitlines():
+        path = ROOT / rel
+        if path.suffix not in TEXT_SUFFIXES or path == Path(__file__).resolve() or not path.is_file():
+            continue
+        for number, line in enumerate(path.read_text(encoding="utf-8", errors="replace").splitlines(), 1):
+            if PRIVATE_CITATION.search(line):
+                hits.append(f"{rel}:{number}: {line.strip()[:90]}")
+    assert not hits, f"{len(hits)} citations of documents outside the repository, e.g.:\n" + "\n".join(hits[:15])
+
+
 @pytest.mark.parametrize(
     ("name", "dialect", "text"),
     [("g5.cpl", "cpl", "N10 G5 X10\nN20 M30\n"), ("g5.din", "sin800", "N10 G5 X10 Y5\nN20 M30\n")],

@@ -380,7 +380,7 @@ class Gen:
         self.emit(" : ".join(r.sample(stmts, r.randint(1, 3))))
 
     def view(self) -> None:
-        """MID$ into a string variable is a live view of its character field (digest 4.7)."""
+        """MID$ into a string variable is a live view of its character field (CPL manual §2.4.3, L711-728; §5, L3344-3834)."""
         r = self.r
         source = r.choice(FIELDS + [f"H$({r.randint(1, 3)})"])
         self.emit(f"Q$ = MID$({source},{r.randint(1, 6)},{r.randint(1, 6)})")

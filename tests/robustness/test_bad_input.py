@@ -182,7 +182,7 @@ def test_an_r_value_beyond_the_double_range_is_the_cl800_error(run_text, name, t
 
 @pytest.mark.parametrize("fn", ["SIN", "COS", "sin", "cos"])
 def test_sin_and_cos_of_infinity_give_no_valid_value_in_sympas(run_text, fn):
-    """A math function's invalid argument gives NaN, no error (digest §6.3.1); SIN(inf) was an internal error."""
+    """A math function's invalid argument gives NaN, no error (rw_SymPas manual §6.6, L1643-2172); SIN(inf) was an internal error."""
     r = run_text(f"program p;\nvar x: double;\nbegin\n  x := 1e300;\n  x := {fn}(x * x);\n  writeln(x);\nend.\n",
                  name="p.sap")
     assert r["status"] == "ok", r["error"]

@@ -106,7 +106,7 @@ end.
     ("A1.jvl := n; JRW(A1 := 1.0)", "A1.jvl"),            # ran for ever without counting steps
 ])
 def test_nan_as_a_move_parameter_is_error_32768(tmp_path, statement, line_text):
-    # SQRT(-1) has "no valid return value" (NaN, digest §6.3.1); used as a position, angle, velocity or
+    # SQRT(-1) has "no valid return value" (NaN, rw_SymPas manual §6.6, L1643-2172); used as a position, angle, velocity or
     # qualifier it is an invalid parameter in an arithmetic operation (Table 40, $8000), not a traceback
     text = f"program P;\nvar n: double;\nbegin\n  n := SQRT(-1.0);\n  {statement};\nend.\n"
     errors, r = _run(tmp_path, text, max_steps=20_000)

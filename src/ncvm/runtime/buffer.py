@@ -2,7 +2,7 @@
 
 A control prepares (decodes) blocks ahead of the one its axes execute. CPL calls it the motion
 queue, with a look-ahead depth or the block buffer (manual §4.2); the SINUMERIK 800 decodes up to
-N blocks ahead (digest §10.5). Either way preparation puts blocks in, and when more wait than the
+N blocks ahead (CL 800 manual L4287-4334, STOP DEC). Either way preparation puts blocks in, and when more wait than the
 buffer holds the oldest execute; a WAIT, STOP DEC or the program end drains it, since what comes
 next needs the executed state.
 

@@ -1,4 +1,4 @@
-"""Machines for the chapter 4 tests: the manual's example configuration of page 4-5 (digest §8.2)."""
+"""Machines for the chapter 4 tests: the manual's example configuration of page 4-5 (CPL manual §4.2, L1256-1337)."""
 
 from __future__ import annotations
 

@@ -278,7 +278,7 @@ def test_colour_tables_rgb_bitmaps_and_clearing(tmp_path):
     ("A%=FILEACCESS(Q$)", "CPL020"),
     ("COL(,2)", None), ("LIN(,1)", None), ("DSP(1,1,Q)", None), ("PRN(1,1,Q$)", None)])
 def test_an_unassigned_variable_is_not_an_omitted_argument(tmp_path, stmt, code):
-    """NUL in an argument is VARIABLE NOT ASSIGNED (digest §4.4); only an empty position is omitted
+    """NUL in an argument is VARIABLE NOT ASSIGNED (CPL manual §2.5, L758-769); only an empty position is omitted
     (LIN(,1) L5015-5030, COL(,2) L4923-4949), and a NUL value to print prints nothing."""
     r, _ = run_cpl(tmp_path, f"10 {stmt}\nM30\n")
     assert (r["error"]["code"] if r["error"] else None) == code

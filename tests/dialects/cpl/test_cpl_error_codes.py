@@ -1,4 +1,4 @@
-"""One error, one code: the manual names its errors by text (digest §7.1), and each text gets one code
+"""One error, one code: the manual names its errors by text, and each text gets one code
 whichever statement raises it (INVALID INTEGER VALUE, L4130, was CPL027 in arithmetic and CPL027 in INP#;
 INVALID PARAMETER, L3390, was CPL023 in the string and file functions and CPL023 in graphics)."""
 
@@ -31,7 +31,7 @@ def run(run_text, tmp_path):
 
 
 @pytest.mark.parametrize("text", [
-    "10 A%=2147483647\n20 A%=A%+1\nM30\n",  # arithmetic (digest §4.2)
+    "10 A%=2147483647\n20 A%=A%+1\nM30\n",  # arithmetic (CPL manual §2.4.3, L650-737)
     '10 OPENW(1,"P1") : PRN#(1,"3000000000") : CLOSE(1)\n20 OPENR(1,"P1") : INP#(1,A%)\nM30\n',  # INP#, L4130
 ])
 def test_invalid_integer_value_is_cpl027_everywhere_l4130(run, text):

@@ -329,7 +329,7 @@ def test_running_programs_are_active_for_erase_and_fileaccess_l4396(tmp_path):
 
 
 def test_names_without_a_path_are_in_the_main_programs_directory(tmp_path):
-    """L4414, L4441, digest §11 D13: a name without a path means the current directory, the one of the main
+    """L4414, L4441, CPL manual L4381: a name without a path means the current directory, the one of the main
     program when it lies in the file root; a name with a path starts at the root."""
     from ncvm.api import run
     from ncvm.runtime.session import RunOptions

@@ -28,7 +28,7 @@ def test_for_exit_value_beyond_the_integer_range(run, goto):
 ])
 def test_integer_results_outside_32_bits_are_invalid_integer_value(run, text, col):
     """L655: "An INTEGER variable occupies 32 bits ... -2.147.483.648 through +2.147.483.647"; + - * of two
-    INTEGERs is INTEGER (digest §4.2), so a result past that range is INVALID INTEGER VALUE wherever it is used,
+    INTEGERs is INTEGER (CPL manual §2.4.3, L650-737), so a result past that range is INVALID INTEGER VALUE wherever it is used,
     not only when stored into an INTEGER variable (it used to reach REAL variables and comparisons as 2^32)."""
     r = run(text + "M30\n")
     assert r["error"]["code"] == "CPL027" and r["error"]["column"] == col

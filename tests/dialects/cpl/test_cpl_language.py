@@ -20,7 +20,7 @@ def mill(tmp_path: Path, **extra) -> object:
     return machine_from_dict(data, "<test>", tmp_path)
 
 
-# -- lines and tokens (digest §1.2, §2.3) -------------------------------------------------------
+# -- lines and tokens (CPL manual §2.1.1-2.1.2, L345-406; §2.4.1, L435-455) -------------------------------------------------------
 def test_line_classification_and_continuation():
     lines = classify('30 IF X%=3 THEN GOTO 150 ENDIF:\nREM JUMP: DESTINATION1\n40 X = 1 : REM A: B\n'
                      'N100 G90\nG1 X[XPOS]\n')
@@ -62,7 +62,7 @@ def test_real_is_binary32_and_double_is_binary64(run_text):
     assert v["R"] == pytest.approx(0.10000000149011612, abs=0)
     assert v["D!"] == 0.1
     assert v["SAME?"] is False  # a DOUBLE on one side compares in binary64
-    assert v["RR?"] is True  # REAL against a constant compares in binary32 (digest §4.2)
+    assert v["RR?"] is True  # REAL against a constant compares in binary32 (CPL manual §2.4.3, L650-737)
 
 
 def test_nc_words_with_expressions_at_preparation(run_text):

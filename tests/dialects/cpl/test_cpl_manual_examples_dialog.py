@@ -1,6 +1,6 @@
-"""CPL manual examples, dialog (digest §9.5: COL, softkeys, keys).
+"""CPL manual examples, dialog (CPL manual §7-9, L4458-5217: COL, softkeys, keys).
 
-Each test runs the manual's program, repaired only where the digest (§9, §11) or the
+Each test runs the manual's program, repaired only where an OCR slip or the
 comment says why, and asserts the result the manual states.
 """
 

@@ -1,6 +1,6 @@
-"""CPL manual examples, language core (digest §9.1: expressions in NC words, permanents, loops, CALL, PDIM).
+"""CPL manual examples, language core (CPL manual §2-3, L302-1179: expressions in NC words, permanents, loops, CALL, PDIM).
 
-Each test runs the manual's program, repaired only where the digest (§9, §11) or the
+Each test runs the manual's program, repaired only where an OCR slip or the
 comment says why, and asserts the result the manual states.
 """
 
@@ -73,7 +73,7 @@ def test_c5_permanent_values_survive_a_new_run_l517(tmp_path):
 
 def test_c13_for_with_a_variable_step_into_file_p222_l940(run_text, reference):
     """§2.5.5 L940-958 with its file: the printed records need STEP%=2 at the start (the text shows 1, which
-    would give 1/1, 2/1, ...; digest §11 B13) and ``SORT`` is SQRT (OCR). NJUST: numbers in 9 places."""
+    would give 1/1, 2/1, ...; CPL manual L944-958) and ``SORT`` is SQRT (OCR). NJUST: numbers in 9 places."""
     m = reference()
     r = run_text('10 OPENW(1,"P222",130)\n20 STEP%=2 : START%=1 : END%=3500 : NJUST\n'
                  "30 FOR COUNTER%=START% STEP STEP% TO END%\n40 STEP%=ROUND(STEP%*SQRT(STEP%))\n"
@@ -90,7 +90,7 @@ WHILE_SD9 = "5 I=0\nN10 G75 X100 F1000\n30 WHILE SD(9)=0\n40 I=I+1\n50 END\nM30\
 
 def test_c14_while_polls_sd9_l984(run_text, reference):
     """§2.5.5 L984: ``WHILE SD(9)=0`` (no DO; I set to 0 first, the fragment leaves it NUL) loops while the
-    condition holds (digest §11 A8, the annotation says the opposite). Probe not switched: SD(9)=1, no pass.
+    condition holds (CPL manual L982-986, the annotation says the opposite). Probe not switched: SD(9)=1, no pass.
     Switched: SD(9) stays 0 in the simulation, so the loop runs until the step limit."""
     r = run_text(WHILE_SD9, name="p.cpl", machine=reference())
     assert r["status"] == "ok" and r["variables"] == {"I": 0.0}

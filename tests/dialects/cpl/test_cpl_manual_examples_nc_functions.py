@@ -1,6 +1,6 @@
-"""CPL manual examples, NC-integrated functions (digest §9.2: WAIT, PPOS, PROBE, FXCR, axis channels, MCODS).
+"""CPL manual examples, NC-integrated functions (CPL manual §4, L1184-3343: WAIT, PPOS, PROBE, FXCR, axis channels, MCODS).
 
-Each test runs the manual's program, repaired only where the digest (§9, §11) or the
+Each test runs the manual's program, repaired only where an OCR slip or the
 comment says why, and asserts the result the manual states.
 """
 
@@ -166,7 +166,7 @@ N290 M30
 @pytest.mark.parametrize(("channel", "axes"), [(1, ("X", "Y", "Z")), (2, ("X2", "Y2", "Z2")), (3, ("A",))])
 def test_n27_axis_channel_assignment_l3340(run, channel, axes):
     """§4.14.3 example 5 (L3342), its run-together OCR text split into lines; ``BUF(1%)`` is BUF(I%), ``MO``
-    is M0, ``N24`` is N240 and ``N250 WAIT`` the CPL line 250 (digest §9.2 N27). The type, channel and size
+    is M0, ``N24`` is N240 and ``N250 WAIT`` the CPL line 250 (block N27 of the example). The type, channel and size
     are REAL variables: MCODS takes their whole values. The channel's axes end at the channel number."""
     r = run(AXIS_CHANNEL, channel=channel)
     assert r["status"] == "ok", r["error"]

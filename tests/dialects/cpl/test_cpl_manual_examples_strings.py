@@ -1,6 +1,6 @@
-"""CPL manual examples, strings (digest §9.3: MID$, STR$, VAL, string variables and character areas).
+"""CPL manual examples, strings (CPL manual §5, L3595-3834: MID$, STR$, VAL, string variables and character areas).
 
-Each test runs the manual's program, repaired only where the digest (§9, §11) or the
+Each test runs the manual's program, repaired only where an OCR slip or the
 comment says why, and asserts the result the manual states.
 """
 

@@ -1,4 +1,4 @@
-"""NUL (manual §2.5 L758-769, digest §4.4): ``<variable> = NUL`` is a condition, NUL anywhere else in a
+"""NUL (manual §2.5 L758-769): ``<variable> = NUL`` is a condition, NUL anywhere else in a
 comparison is RUNTIME ERROR VARIABLE NOT ASSIGNED (CPL020)."""
 
 from __future__ import annotations

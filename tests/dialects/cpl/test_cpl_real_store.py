@@ -1,4 +1,4 @@
-"""REAL (binary32) stores rounded inline by the generated code (digest §4.2): the same values and the same
+"""REAL (binary32) stores rounded inline by the generated code (CPL manual §2.4.3, L650-737): the same values and the same
 INVALID FLOAT VALUE (CPL042) at the same boundaries as the ``values.f32`` call they replace."""
 
 from __future__ import annotations

@@ -56,7 +56,7 @@ def test_ncf_example_l2108(run):
 
 
 def test_axp_example_l2367(run_text, reference):
-    """The manual's plane-independent circle (the extra ']' in R[RA]] is a typo, digest §9.2 N19)."""
+    """The manual's plane-independent circle (the extra ']' in R[RA]] is a typo in block N19 of the example)."""
     sub = ("10 A%=P1% : B%=P2%\n20 C=P3:D=P4:RA=P5\n30 E=0\nN40 G17 [AXP(A%,E)] [AXP(B%,E)]\n"
            "N50 G2 [AXP(A%,C)] [AXP(B%,D)] R[RA] F1000\nM30\n")
     m = reference()
@@ -118,7 +118,7 @@ ERRORS = [{"number": 1856, "channel": 1, "category": 2}, {"number": 1938, "chann
 
 
 def test_geterr_examples_l2594(run):
-    """The second example prints CATEGORY%=0 but reports only part-program errors: the digest (§11 C13)
+    """The second example prints CATEGORY%=0 but reports only part-program errors: ncvm reads the damaged text so and
     repairs it to CATEGORY%=6, which gives the stated result ERG% = 2."""
     text = ("10 DIM ERRNO%(5,3)\n30 CHAN%=2:CATEGORY%=6\n40 ERG%=GETERR(CHAN%,CATEGORY%,ERRNO%,1)\n"
             "41 FIRST%=ERRNO%(1,1)\n50 ERG%=GETERR(CHAN%,CATEGORY%,ERRNO%,5)\n60 FOR I%=1 TO ERG%\n"
@@ -143,7 +143,7 @@ def test_mcods_sav_state_example_l3234(run):
     r = run(text)
     v = r["variables"]
     assert v["ERR_VAR%"] == 0 and v["VERSION"] != 0.0
-    assert v["S1%"] == 1  # not active (digest §8.6: INACTIVE = 1)
+    assert v["S1%"] == 1  # not active (CPL manual §4.14, L2687-3127: INACTIVE = 1)
     assert v["R%"] == 6 and v["S2%"] == 1  # SUB2 does not exist: nothing selected
     assert v["E2%"] == 1  # channel 9 does not exist
 

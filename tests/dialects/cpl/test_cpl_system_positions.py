@@ -1,4 +1,4 @@
-"""Manual §4.2 positions on the reference configuration (digest §6.4, §8.2); examples with their results."""
+"""Manual §4.2 positions on the reference configuration (CPL manual §4.2, L1240-1714; §4.2, L1256-1337); examples with their results."""
 
 from __future__ import annotations
 
@@ -137,7 +137,7 @@ def test_ppos_considers_the_program_coordinate_shift_l1571(run_text, reference):
     m = reference(1, offsets={"G54": [10.0, 0.0, 0.0]}, scenario=[{"time": 0.0, "kind": "probe", "X": 40.0}])
     v = run_text(text, name="p.cpl", machine=m)["variables"]
     # MCS 40 - axis ZS 10 - G168 10 - G268 2 = 18; the probe stopped the move, so WPOS (WCS, which holds the
-    # program coordinate shift, digest §8.2) is 40 - 10 = 30, and the PCS 18
+    # program coordinate shift, CPL manual §4.2, L1256-1337) is 40 - 10 = 30, and the PCS 18
     assert (v["PR"], v["PP"], v["CP"], v["WP"]) == (40.0, 18.0, 18.0, 30.0)
 
 

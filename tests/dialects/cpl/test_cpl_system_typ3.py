@@ -23,7 +23,7 @@ def test_coordinate_shifts_68_168_268(run):
     assert v["E"] == 4.0 and v["F%"] == -3 and v["G"] == -2.5 and v["H%"] == 4
     # PCS = WCS - G168 - G268: X5 lands at 5 + 10 + 1.5, Y5 at 5 - 2.5, Z0 at 0 + 4
     assert (v["MX"], v["MY"], v["MZ"]) == (16.5, 2.5, 4.0)
-    assert v["WX"] == 16.5  # the WCS includes the program coordinate shifts (digest §8.2)
+    assert v["WX"] == 16.5  # the WCS includes the program coordinate shifts (CPL manual §4.2, L1256-1337)
 
 
 def test_coordinate_shift_in_inch_and_cleared(run):

@@ -34,7 +34,7 @@ def run(run_text, reference):
 @pytest.mark.parametrize(("axes", "end", "plane", "main"), [((1, 2), "X20 Y0", 17, 1), ((3, 1), "X0 Z20", 18, 3),
                                                              ((2, 3), "Y20 Z0", 19, 2)])
 def test_axp_example_cuts_a_half_circle_in_the_plane_of_g20_l2372(run, axes, end, plane, main):
-    """§4.10 L2367-2375 (the extra ``]`` of ``R[RA]]`` is a typo, digest §9.2 N19): G20 switches to the plane of
+    """§4.10 L2367-2375 (the extra ``]`` of ``R[RA]]`` is a typo in block N19 of the example): G20 switches to the plane of
     axes P1/P2 with the pole at 0,0; G2 to 20 mm along the main axis with R10 is a half circle of 10 pi mm,
     in mm (the ISO G20 made it 797.96 mm, inch)."""
     r = run(f"N1 G0 X0 Y0 Z0\n10 CALL AXPSUB [{axes[0]}, {axes[1]}, 20, 0, 10]\nM30\n", AXP_SUB)

@@ -1,4 +1,4 @@
-"""Effects of the @ codes that no other test asserted (audit of digest §5.4 against the test suite).
+"""Effects of the @ codes that no other test asserted (audit of CL 800 manual §10, L6332-6824 against the test suite).
 
 Each test runs a hand-written main program on a SINUMERIK 880 (channel 1, axes X Y Z) and asserts what
 the manual says the code does: R parameters, positions, data read back, or the V24 / panel output.

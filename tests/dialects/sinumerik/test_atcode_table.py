@@ -1,4 +1,4 @@
-"""Every @ code of the table (digest §5.4) runs on a SINUMERIK 880 with data for it."""
+"""Every @ code of the table (CL 800 manual §10, L6332-6824) runs on a SINUMERIK 880 with data for it."""
 
 from __future__ import annotations
 

@@ -1,4 +1,4 @@
-"""Decode-ahead (digest §10.5, manual L4287-4334): a buffer of N decoded blocks, STOP DEC, and its lint."""
+"""Decode-ahead (CL 800 manual L4287-4334): a buffer of N decoded blocks, STOP DEC, and its lint."""
 
 from __future__ import annotations
 

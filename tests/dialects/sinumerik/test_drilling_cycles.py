@@ -50,7 +50,7 @@ def _hole(x: float, y: float) -> list[tuple]:
     """The manual's PROGRAM 81 by hand for the PARAMS: first depth 2-5 = -3; the cut distribution ends at
     -14+2 = -12 (value 5, 3, 1, -1 against the degression 2); then (remain = (e_depth - 1) - (-14)) / 2 = 2
     above the final depth twice, counter = 2. PREP CYC's second register R78 (1 without diameter
-    programming, digest A28) is the rapid-traverse distance."""
+    programming, CL 800 manual L5443) is the rapid-traverse distance."""
     hole = [("rapid", x, y, 2.0, "L81.spf")]  # (:G0 G64 G90:); PRAP (3)=start_Z
     for depth, back_to in ((-3.0, -2.0), (-6.0, None), (-8.0, None), (-10.0, None)):
         hole += [("feed", x, y, depth, "L81.spf"), ("dwell", 0.5), ("rapid", x, y, 2.0, "L81.spf"), ("dwell", 0.25)]

@@ -55,12 +55,12 @@ def test_manual_pattern_examples(tmp_path):
     r = _run(tmp_path, "%MPF1\nR1=101100 @650 R2 R1 K10110011 @651 R3 R1 K10110011 @652 R4 R1 K10110011\n"
                        "@653 R5 R1 K10110011 @654 R6 R1 R20=1 @656 R7 R20 K0 R8=1100111 @660 R8 K6 @661 R9 K2\nM30\n")
     assert [R(r, n) for n in range(2, 7)] == [10111111.0, 10011111.0, 100000.0, 11011111.0, 11010011.0]
-    assert R(r, 7) == 1.0  # 1 XORB 0 = 1 (digest A18)
+    assert R(r, 7) == 1.0  # 1 XORB 0 = 1 (CL 800 manual L3992)
     assert R(r, 8) == 100111.0 and R(r, 9) == 100.0
 
 
 def test_canonical_object_examples_run(tmp_path):
-    """Digest §5.9 (c) FOR TO: 10 passes of three motion blocks, then Z0; the object text as cl800 writes it."""
+    """Worked example (c) FOR TO: 10 passes of three motion blocks, then Z0; the object text as cl800 writes it."""
     spf = ("%SPF502\n@041 R50 R52 @201 R50 K1\nN5001 @151 R50 K10 K5002 @440 K3 R51 G91 G01 F500\n"
            "@440 K1 R52 F80\n@440 K1 K100 G00\n@620 R50 @100 K-5001\nN5002 @440 K3 K0 G90\n@043 R50 R52 M17\n")
     r = _run(tmp_path, spf, name="L502.spf")
@@ -72,7 +72,7 @@ def test_canonical_object_examples_run(tmp_path):
 
 
 def test_case_and_pointer_examples(tmp_path):
-    """Digest §5.9 (a) pointers and (d) CASE, called from a main program."""
+    """Worked example (a) pointers and (d) CASE, called from a main program."""
     spf3 = ("%SPF3\n@040 K5 R50 R51 R70 R71 R80 @201 R50 K70 @201 P50 K20 @201 R51 K80 @201 R71 P51 "
             "R700=R70 R701=R71\n@042 K5 R50 R51 R70 R71 R80 M17\n")
     spf500 = ("%SPF500\n@040 K2 R50 R53 @111 R0 K2 K1001 K0 K1002 K1 K1003 @100 K1004\n"

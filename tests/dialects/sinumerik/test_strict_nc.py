@@ -1,4 +1,4 @@
-"""[sin800] strict_nc (digest §10.4, manual L7079): R stores keep 8 significant digits, range +/-99999999."""
+"""[sin800] strict_nc (CL 800 manual L7079): R stores keep 8 significant digits, range +/-99999999."""
 
 from __future__ import annotations
 

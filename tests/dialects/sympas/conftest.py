@@ -70,7 +70,7 @@ max = 1000.0
 """
 
 
-#: the acceptance program the digest proposes (§9), shared by the tests that run it
+#: the project's acceptance program (the manual's examples combined), shared by the tests that run it
 ACCEPTANCE_PROGRAM = """program Accept;
 {$TASK 0}
 const sec = 15625; n = 5;

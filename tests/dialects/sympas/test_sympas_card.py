@@ -14,7 +14,7 @@ def prog(body: str, decls: str = "") -> str:
 
 
 def test_acceptance_program_of_the_digest(sap, acceptance_program):
-    # digest §9: the proposed acceptance program (its motion part included)
+    # the project's acceptance program (its motion part included)
     r = sap(acceptance_program)
     assert r["status"] == "ok", r["error"]
     assert r["output"] == ["acc=15 d=5 ok=TRUE", "moved"]

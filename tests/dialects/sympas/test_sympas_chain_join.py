@@ -1,5 +1,5 @@
 """A spooled chain started (SSMS, AutoSpool) while an earlier chain of the same axes still runs joins it:
-the spooler goes on without stopping, with the look-ahead's joint velocities (digest §10.5, L1391-1398).
+the spooler goes on without stopping, with the look-ahead's joint velocities (rw_SymPas manual L1391-1398).
 
 By hand: TRVL = 10 mm/s, TRAC = 100 mm/s^2, TRTVL = 10 mm/s; 15625 ticks = 1 s. A 10 mm segment from rest
 to 10 mm/s takes 0.1 s (0.5 mm) + 9.5 mm / 10 = 1.05 s; at 10 mm/s throughout 1.0 s; from 10 mm/s to rest

@@ -1,5 +1,5 @@
 """The manual's command reference examples (§6.6: loops, jog and home, path moves, spooler, stops, zero
-points, common buffer, task control, WRITE, WT) and homing searches in progress (digest §10.5).
+points, common buffer, task control, WRITE, WT) and homing searches in progress (ncvm's reading; the rw_SymPas manual is silent).
 Each test runs the manual's own lines (cited by line of the German manual). Where a fragment is
 not a whole program, it is completed into one: the completion is named in the test. Expected
 values are the manual's, or computed by hand in the test (CLOCK ticks of 64 us, 15625 per second).
@@ -76,7 +76,7 @@ def test_ja_both_axes_example_L1739(sap):
 
 
 def test_ja_examples_back_to_back_L1739(sap):
-    """Digest §10.5 Jog [R]: a new JA on a jogging axis re-targets it on the fly, and A2 starts too."""
+    """Jog (ncvm's reading; the manual is silent): a new JA on a jogging axis re-targets it on the fly, and A2 starts too."""
     # L1739 lists JA(A1:=100.0); then JA(A1:=100.0, A2:=100.0); run one after the other, the second
     # re-targets the jogging A1 (to the same 100) and starts A2 two ticks later
     r = sap(prog(JOG + "\nJA(A1:=100.0);\nJA(A1:=100.0, A2:=100.0);\nWT(7812);\nx := A1.dp; y := A2.dp;",
@@ -144,7 +144,7 @@ def test_homing_examples_jhl_jhlw_jhr_jhrw_L1776_L1804(sap):
     assert r["status"] == "ok", r["error"]
     v = r["variables"]
     assert (v["h1"], v["h2"], v["h3"]) == (False, True, True)
-    # latched at REF = 0, then braked with hac: the axes stop hvl^2 / (2 hac) behind it (digest §10.5)
+    # latched at REF = 0, then braked with hac: the axes stop hvl^2 / (2 hac) behind it (ncvm's reading; the rw_SymPas manual is silent)
     overrun = round(v["hv"] ** 2 / (2 * v["ha"]), 3)  # the stop rounded to whole counts (L1399)
     assert v["y"] == pytest.approx(-overrun) and v["x"] == pytest.approx(overrun)
 
@@ -425,7 +425,7 @@ def test_lprs_example_three_axes_L1859(sap):
     assert x > 0 and (y / x, z / x) == pytest.approx((4 / 3, 4.0))
 
 
-# --- homing searches in progress (digest §10.5 Homing) ----------------------------------------------
+# --- homing searches in progress (ncvm's reading; the manual is silent) ----------------------------------------------
 
 REF_RIGHT = "\n[sympas]\nref_positions = {A1 = 30.0}\n"
 # hvl 10 mm/s, hac 100 mm/s^2: after 1 s of search the axis has run 0.5 mm + 0.9 s * 10 mm/s = 9.5 mm

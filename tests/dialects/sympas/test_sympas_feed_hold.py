@@ -1,4 +1,4 @@
-"""TROVR = 0 as a feed hold (UTROVR L2183-2189, TROVR/TROVRST L1314-1315; digest §10.5 Override).
+"""TROVR = 0 as a feed hold (UTROVR L2183-2189, TROVR/TROVRST L1314-1315).
 
 The override scales ds/dt and reaches its new value linearly over TROVRST seconds; a factor of 0
 brings the path to a stand (decelerating over TROVRST) and keeps it there, not at profile end, with

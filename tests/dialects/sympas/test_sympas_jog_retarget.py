@@ -1,4 +1,4 @@
-"""A new JA/JR on a jogging axis re-targets it on the fly (digest §10.5 Jog): it goes on from where it is
+"""A new JA/JR on a jogging axis re-targets it on the fly (ncvm's reading; the rw_SymPas manual gives JA's parameters only): it goes on from where it is
 with the velocity it has, brakes with jac and turns back for a target behind its braking distance, and
 slows down with jac to a lowered jvl.
 

@@ -1,4 +1,4 @@
-"""Jog target velocity jtv != 0 (digest §10.5 Jog, A-60; MODEREG bits 11 and 28, L1395-1405).
+"""Jog target velocity jtv != 0 (rw_SymPas manual, MODEREG bits 11 and 28, L1395-1405).
 
 JR of 10 mm with jvl 10, jac 100, jtv 5: 0 -> 10 mm/s in 0.1 s (0.5 mm), 10 -> 5 in 0.05 s (0.375 mm),
 cruise 9.125 mm in 0.9125 s: the target is reached after 1.0625 s at 5 mm/s, and the axis runs on.

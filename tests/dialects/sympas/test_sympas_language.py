@@ -141,7 +141,7 @@ begin a := FuncA; b := FuncA() + 1; end.
 
 
 def test_write_formats(sap):
-    # digest A-57: integers decimal, booleans TRUE/FALSE, reals %g with 10 digits, no separators
+    # rw_SymPas manual L2216; L2224: integers decimal, booleans TRUE/FALSE, reals %g with 10 digits, no separators
     r = sap(prog("write('a', 1); write(' b', TRUE); writeln(' c', 100.0, ' ', 1.0/3.0); writeln('next');"))
     assert r["output"] == ["a1 bTRUE c100 0.3333333333", "next"]
 

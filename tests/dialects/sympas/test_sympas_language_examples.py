@@ -1,5 +1,5 @@
 """The manual's language examples (§5: constants, variables, axis variables, timers, casts, routines,
-identifiers) and the notes that go with them, run as the manual writes them (digest §9).
+identifiers) and the notes that go with them, run as the manual writes them (ncvm's reading; the rw_SymPas manual is silent).
 Each test runs the manual's own lines (cited by line of the German manual). Where a fragment is
 not a whole program, it is completed into one: the completion is named in the test. Expected
 values are the manual's, or computed by hand in the test (CLOCK ticks of 64 us, 15625 per second).
@@ -150,7 +150,7 @@ def test_function_with_parameters_forward_L1182_1194(sap):
 
 
 def test_function_definition_with_forward_repeated_as_printed_L1191(tmp_path):
-    # L1191 repeats `; forward;` on the defining header; the digest (A-20) reads it as a slip and
+    # L1191 repeats `; forward;` on the defining header; ncvm reads it as a slip and
     # does not accept it; the error is at the stray `forward` of the definition (line 8), not at the
     # `end;` (line 11) where the block, read as the main program, would want its `.` (issue 15)
     errors = errors_of(tmp_path, FUNC_B.replace("{DEF}", " forward;"))

@@ -1,4 +1,4 @@
-"""Velocity chaining of spooled segments: TRTVL at the joints, LookAhead, ChkMaxVel (digest §10.5, L1391-1398).
+"""Velocity chaining of spooled segments: TRTVL at the joints, LookAhead, ChkMaxVel (rw_SymPas manual L1391-1398).
 
 All figures by hand: TRVL = 10 mm/s, TRAC = 100 mm/s^2 unless stated; 15625 ticks = 1 s. The
 program's own statements add a few ticks around each measured motion (tolerance 8 ticks).

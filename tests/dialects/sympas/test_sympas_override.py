@@ -1,4 +1,4 @@
-"""UTROVR with the TROVRST ramp (digest §10.5 Override, L2183-2189): the override scales ds/dt of the running
+"""UTROVR with the TROVRST ramp (rw_SymPas manual L2183-2189): the override scales ds/dt of the running
 path moves and reaches the new TROVR linearly over TROVRST seconds. Figures by hand; 15625 ticks = 1 s.
 
 Reference move: 20 mm at TRVL 10, TRAC 100 lasts 0.1 + 1.9 + 0.1 = 2.1 s of profile time.

@@ -1,4 +1,4 @@
-"""The manual's qualifier and event examples (§6.3, §6.4), the digest's acceptance program (§9) and the
+"""The manual's qualifier and event examples (§6.3, §6.4), the project's acceptance program and the
 rules of events and task control around them, run as the manual writes them.
 Each test runs the manual's own lines (cited by line of the German manual). Where a fragment is
 not a whole program, it is completed into one: the completion is named in the test. Expected
@@ -105,7 +105,7 @@ end.
     assert r["output"][1] == "still 999"  # task 0 ended by abort; `CI0 := 1` never ran
 
 
-# --- the digest's acceptance program (§9), the parts its first test leaves out -----------------------
+# --- the project's acceptance program, the parts its first test leaves out -----------------------
 
 
 UI_HELD = """
@@ -123,7 +123,7 @@ value = true
 
 @pytest.mark.parametrize("ui_held", [False, True])
 def test_acceptance_program_end_state(tmp_path, acceptance_program, ui_held):
-    # digest §9 expected result: task ENDED, tskinfo bit 1 set by WRITELN; CI1 stays 0 without a UI
+    # expected result: task ENDED, tskinfo bit 1 set by WRITELN; CI1 stays 0 without a UI
     # input, and with the UI input held EVUI counts at every event check (level semantics, A-28)
     path = tmp_path / "accept.sap"
     path.write_text(acceptance_program, encoding="latin-1")

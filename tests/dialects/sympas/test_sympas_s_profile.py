@@ -1,6 +1,6 @@
 """S-profiles (MODEREG bit 1, L1392; qualifier jerkrel L1462) and NoTriangle (bit 6, L1397).
 
-S-profile (digest §10.5 [R]): jerkrel r in 0..1 is the fraction of each acceleration / braking ramp
+S-profile (ncvm's reading; the rw_SymPas manual gives no scale): jerkrel r in 0..1 is the fraction of each acceleration / braking ramp
 that is jerk-limited; the peak acceleration stays TRAC (jac, sdec), so a ramp from va to vb lasts
 (vb - va) / (a (1 - r/2)) and, its acceleration curve being symmetric, covers (va + vb) / 2 of it.
 

@@ -1,5 +1,5 @@
 """The CPL checker: between linker and codegen, it resolves the type of every expression of a linked
-program and reports the errors only types reveal (digest §4.2-4.4, manual §2.4-2.5, chapters 4-5).
+program and reports the errors only types reveal (CPL manual §2.4.3, L650-737; §2.5, L738-770; chapters 4-5).
 
 Types are I R D B S (INTEGER, REAL, DOUBLE, BOOLEAN, CHARACTER), N (NUL) or ? (known only at run time);
 they are known from the suffixes. Every statement is checked on its own, in the order of the program (an

@@ -4,7 +4,7 @@ Programs without GOTO become structured Python (if/while); programs with GOTO be
 dispatch loop (``while True: if _pc == k: ...``) so a jump may leave any structure. Local variables
 are Python locals; NUL is ``None``. The checker (checker.py) has resolved the type of every expression
 and refused what the control refuses; from those types most conversions and the REAL (binary32)
-comparison rule of digest §4.2 are decided here, not at run time. Codegen only emits.
+comparison rule of CPL manual §2.4.3, L650-737 are decided here, not at run time. Codegen only emits.
 """
 
 from __future__ import annotations
@@ -38,7 +38,7 @@ from .values import f32
 
 #: the addresses of a plain NC block (a plain row, nc.block)
 _PLAIN = frozenset(PLAIN_WORDS)
-#: parameter Pn seen through its suffix (digest §4.8): the conversion applied to the passed value
+#: parameter Pn seen through its suffix (CPL manual §3.4, L1122-1179): the conversion applied to the passed value
 PARAM_VIEW = {"%": "_pint", "": "_tor", "!": "_tod", "?": "_tob", "$": "_pstr"}
 SUFFIX_TAG = {"%": "i", "": "r", "!": "d", "?": "b", "$": "s"}
 AXIS_LETTERS = set("XYZABCUVW")
@@ -177,7 +177,7 @@ class Gen:
         return f"({lc} {pyop} {rc})"
 
     def _single(self, e, code: str, ty: str) -> str:
-        """An operand of a REAL comparison rounded to binary32 (digest §4.2), unless it already is."""
+        """An operand of a REAL comparison rounded to binary32 (CPL manual §2.4.3, L650-737), unless it already is."""
         if isinstance(e, A.Num):
             return repr(f32(e.value))
         if ty == "I":
@@ -374,7 +374,7 @@ class Gen:
         self.emit(f"{name}{''.join(f'[{i}]' for i in idx)} = {self.convert(v.type, e, code, ty)}", line)
 
     def real_store(self, name: str, e, code: str, line: int) -> None:
-        """A computed value stored into a REAL local, rounded to binary32 inline (digest §4.2): one struct
+        """A computed value stored into a REAL local, rounded to binary32 inline (CPL manual §2.4.3, L650-737): one struct
         pack/unpack, no call. What packing refuses (a finite value beyond +/-3.4e38, NUL) goes to ``_f32``,
         which raises the error it always raised; infinity or NaN packs without complaint, so it is tested first
         unless :func:`magnitude` proves the expression finite. The variable keeps its old value when the store
@@ -1073,7 +1073,7 @@ RELATION = {"=": "==", "<>": "!=", "<": "<", ">": ">", "<=": "<=", ">=": ">="}
 
 def _not_nul(e, code: str, ty: str) -> str:
     """An operand of = or <> that may be NUL (a variable, a function result) must not be: VARIABLE NOT
-    ASSIGNED (digest §4.4). ``+ 0`` raises the TypeError for a NUL number without a call."""
+    ASSIGNED (CPL manual §2.5, L758-769). ``+ 0`` raises the TypeError for a NUL number without a call."""
     if not _maybe_nul(e):
         return code
     return f"({code} + 0)" if ty in NUMERIC else f"_nn({code})"
@@ -1081,7 +1081,7 @@ def _not_nul(e, code: str, ty: str) -> str:
 
 def _int32(e, code: str, ty: str) -> str:
     """An INTEGER sum, difference, product or negation used outside INTEGER arithmetic (compared, stored into
-    a REAL, mixed with one) must fit 32 bits (manual L655, digest §4.2): INVALID INTEGER VALUE otherwise.
+    a REAL, mixed with one) must fit 32 bits (manual L655): INVALID INTEGER VALUE otherwise.
     INTEGER stores check on their own, so ``I% = I% + 1`` pays nothing. Constants alone are exempt: they take
     the precision of their context (``D2! = -123456789012345``, manual L484-490)."""
     if ty == "I" and (isinstance(e, A.Bin) or isinstance(e, A.Unary) and e.op == "-") and _reads(e):

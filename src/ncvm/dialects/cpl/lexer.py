@@ -1,5 +1,5 @@
-"""CPL lines and tokens: which physical line is a CPL block, an NC block or a continuation (digest §1.2),
-and the tokens of a CPL block (digest §2).
+"""CPL lines and tokens: which physical line is a CPL block, an NC block or a continuation (CPL manual §2.1.1-2.1.2, L345-406),
+and the tokens of a CPL block (CPL manual §2.4, L429-737).
 
 A line whose first non-blank character is a digit is a CPL block (the digits are its line number); a line
 after a CPL block that ended in ``:`` outside a REM continues that block; every other line is an NC block.
@@ -12,7 +12,7 @@ from dataclasses import dataclass, field
 
 from ...source import DIGITS, LETTERS, NAME_CHARS, int_literal, lines, upper
 
-#: reserved words (manual §2.4.1, cleaned up in digest §2.3), plus TO, SCSL and the unused ones
+#: reserved words (manual §2.4.1, L435-455, its OCR-damaged table cleaned up), plus TO, SCSL and the unused ones
 KEYWORDS = frozenset("""
 ABS ACOS AND APOS ASC ASIN ATAN AXO AXP BCD BIN BMP CALL CASE CHR$ CIR CLG CLOCK CLOSE CLR CLS COF COL COM COS
 CPOS CPROBE CSF DATE DIM DLF DLG DO DPC DSP ELSE END ENDCASE ENDDLG ENDIF EOF ERASE FALSE FIL FILEACCESS FILEDATE
@@ -30,7 +30,7 @@ OPS1 = "+-*/=<>(),[];:"
 
 #: the largest DOUBLE (64 bit, manual §2.4.3): a number constant beyond it cannot be held
 DOUBLE_MAX = 1.7976931348623157e308
-#: a CPL line number is an INTEGER: 1 to 2147483647 (digest §2.2)
+#: a CPL line number is an INTEGER: 1 to 2147483647 (CPL manual §2.1.2, L373-406)
 LINE_MAX = 2147483647
 #: the highest sub-program parameter ncvm reads (the manual sets none; docs/decisions.md)
 MAX_PARAM = 999

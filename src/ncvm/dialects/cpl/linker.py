@@ -1,4 +1,4 @@
-"""Linking, as the control does it before a program may start (manual §2.3, digest §1.3).
+"""Linking, as the control does it before a program may start (manual §2.3).
 
 For the program and every sub-program it reaches: syntax, structure pairing (IF/ELSE/ENDIF,
 CASE/LABEL/OTHERWISE/ENDCASE, FOR/NEXT, WHILE/END, REPEAT/UNTIL), jump targets, sub-program existence,

@@ -1,5 +1,5 @@
 """Link tables kept from one run to the next, as the control keeps ``<program>.I`` files (manual §2.3
-L411-428, §6.1.1 L3851: the link table's name is the program's plus two characters; digest §1.3).
+L411-428, §6.1.1 L3851: the link table's name is the program's plus two characters; CPL manual §2.2-2.3, L407-428; §3.3, L1083-1121).
 
 A link table holds the linked program (statements, structure pairs, jump targets, called programs) and its
 generated code. It is reused while the program's text, the machine's call table and ncvm's own CPL code

@@ -1,6 +1,6 @@
-"""Recursive-descent parser for CPL blocks and NC blocks (digest §3), producing a flat statement list.
+"""Recursive-descent parser for CPL blocks and NC blocks (CPL manual §2, L302-1060), producing a flat statement list.
 
-Expressions follow the Pascal levels of digest §3.1: unary NOT/-/+, then * / AND, then + - OR XOR, then
+Expressions follow Pascal-like precedence levels (ncvm's reading; the manual gives no precedence table): unary NOT/-/+, then * / AND, then + - OR XOR, then
 one relational operator. Parentheses nest at most 7 deep (RUNTIME ERROR 2153).
 """
 

@@ -1,6 +1,6 @@
 """Running linked CPL programs: call frames, globals, permanents, the motion queue, WAIT, faults.
 
-Block preparation runs ahead of block execution (manual §4.1, digest §1.5): CPL statements run at once,
+Block preparation runs ahead of block execution (manual §4.1): CPL statements run at once,
 NC blocks go into a motion queue that the NC kernel executes in simulated time only when a WAIT, the
 program end or the look-ahead depth drains it. Functions such as MPOS therefore see the executed
 position, stale without a WAIT, exactly as the manual's WAIT example says. The depth is ``[cpl]
@@ -650,7 +650,7 @@ def _midw(field, start, count, value) -> None:
 
 
 def _dim(current, sizes: tuple, kind: str):
-    """DIM: a second DIM with the same sizes keeps the field; other sizes are an error (digest §4.6)."""
+    """DIM: a second DIM with the same sizes keeps the field; other sizes are an error (CPL manual §2.4.3, L680-707; §5.1, L3350-3370)."""
     if current is not None and (isinstance(current, (list, S.CharacterField, S.CharacterTable))):
         have = _sizes(current)
         if have == list(sizes):
@@ -692,7 +692,7 @@ def _pstr(v):
 
 
 def _pint(v):
-    """Parameter Pn% (digest §4.8): a whole-numbered REAL passes as INTEGER, other REAL values do not."""
+    """Parameter Pn% (CPL manual §3.4, L1122-1179): a whole-numbered REAL passes as INTEGER, other REAL values do not."""
     if v.__class__ is float and v.is_integer():
         return int(v)
     return V.to_int(v)

@@ -3,7 +3,7 @@
 Character fields and MID$ views are the chapter-5 holders of :mod:`.io.strings`.
 
 NUL is Python ``None``: arithmetic on it raises TypeError, which the runtime reports as VARIABLE NOT
-ASSIGNED. REAL values are Python floats rounded to binary32 when stored (digest §4.2).
+ASSIGNED. REAL values are Python floats rounded to binary32 when stored (CPL manual §2.4.3, L650-737).
 """
 
 from __future__ import annotations
@@ -54,7 +54,7 @@ def type_name(v) -> str:
 
 
 def to_int(v):
-    """A value stored into an INTEGER variable: no implicit REAL -> INTEGER (digest §4.3)."""
+    """A value stored into an INTEGER variable: no implicit REAL -> INTEGER (CPL manual §2.4.3, L650-737; §2.5, L738-770)."""
     if v.__class__ is int:
         if INT_MIN <= v <= INT_MAX:
             return v
@@ -104,7 +104,7 @@ def to_str(v):
 
 
 def cond(v):
-    """A condition must be BOOLEAN (digest §5.2)."""
+    """A condition must be BOOLEAN (CPL manual §2.5.7, L1006-1028)."""
     if v is True or v is False:
         return v
     if v is None:
@@ -113,7 +113,7 @@ def cond(v):
 
 
 def not_nul(v):
-    """An operand of = or <> other than the NUL keyword: NUL is VARIABLE NOT ASSIGNED (digest §4.4)."""
+    """An operand of = or <> other than the NUL keyword: NUL is VARIABLE NOT ASSIGNED (CPL manual §2.5, L758-769)."""
     if v is None:
         raise TypeError("NUL")
     return v
@@ -139,7 +139,7 @@ def word_real(v):
 
 
 def logic(op: str, a, b):
-    """AND/OR/XOR: logical on BOOLEAN, bitwise on INTEGER, an error when mixed (digest §4.2)."""
+    """AND/OR/XOR: logical on BOOLEAN, bitwise on INTEGER, an error when mixed (CPL manual §2.4.3, L650-737)."""
     if a is None or b is None:
         raise TypeError("NUL")
     ta, tb = a.__class__, b.__class__
@@ -163,7 +163,7 @@ def lnot(a):
 
 
 def index(i):
-    """A field index: an INTEGER >= 0 (numeric fields accept 0..n, digest §4.6)."""
+    """A field index: an INTEGER >= 0 (numeric fields accept 0..n, CPL manual §2.4.3, L680-707; §5.1, L3350-3370)."""
     if i.__class__ is int and i >= 0:
         return i
     if i is None:

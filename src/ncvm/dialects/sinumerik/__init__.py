@@ -109,7 +109,7 @@ class Sin800Dialect(Dialect):
         return axis_diagnostics(prog, machine.axis_names, radius) + refused_g_diagnostics(prog) + stop_dec_lint(prog)
 
     def run(self, path, text, session):
-        """Run a main program or @ code object text (``%SPF<n>`` / ``%MPF<n>``, digest §5.3)."""
+        """Run a main program or @ code object text (``%SPF<n>`` / ``%MPF<n>``)."""
         machine = session.machine
         debug = session.steps.hook is not None
         sec = options(machine)

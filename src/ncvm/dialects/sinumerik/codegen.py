@@ -4,7 +4,7 @@ Every NC block becomes straight-line Python: @ code and R arithmetic run at
 decode time, in block order; DIN words are collected into the block record
 and handed to the NC kernel at the end of the block (or when a jump is taken
 part-way through it: the words read so far stay in the block, the rest is
-ignored; digest §10.3). Jump targets become entry labels of a
+ignored). Jump targets become entry labels of a
 ``while True: if _blk <= k: ...`` chain, so ``@100 K-N`` loops are a
 ``continue``. R parameters the program names are Python locals, written back
 to the channel's R array (``_R``) around anything that reaches R parameters
@@ -364,7 +364,7 @@ class UnitCodegen:
         return expr
 
     def _jump(self, out: PySource, idx: int, blk: NcBlock, number: int, rec: "_Record") -> None:
-        """Lines that leave the block for block ``number`` (±, digest §5.3 rule 4)."""
+        """Lines that leave the block for block ``number`` (±, as ncvm writes object text)."""
         rec.finish(out, jumping=True)
         target = self.find_target(idx, number)
         if target is None:
@@ -434,7 +434,7 @@ class UnitCodegen:
         return True
 
     def lower_branch(self, at: "_Site") -> bool:
-        """Jump when the row's condition holds (digest §11 A48)."""
+        """Jump when the row's condition holds (ncvm's reading; the CL 800 manual is silent)."""
         ops, out = at.it.operands, at.out
         out.emit(f"if {at.row.expr.format(a=self.val(ops[0]), b=self.val(ops[1]))}:", at.blk.line)
         out._indent += 1

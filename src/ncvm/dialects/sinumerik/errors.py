@@ -7,7 +7,7 @@ from __future__ import annotations
 
 
 class Cl800Error(Exception):
-    """The NC alarm "CL 800 error" (manual L725-728, digest §8): the channel stops."""
+    """The NC alarm "CL 800 error" (manual L725-728): the channel stops."""
 
 
 class ReadError(Exception):

@@ -1,4 +1,4 @@
-"""The STOP DEC lint (digest §10.5; manual L4287-4328, L2668): reads of the executed state after a change.
+"""The STOP DEC lint (CL 800 manual L4287-4328, L2668): reads of the executed state after a change.
 
 The NC decodes blocks ahead of execution, so a read of actual values, of the
 external inputs, or of the R parameters a measurement fills sees stale data

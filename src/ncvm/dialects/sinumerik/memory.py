@@ -1,4 +1,4 @@
-"""The channel's system memory (planning guide ch.10; digest §4.3-4.4): machine and setting data, tool
+"""The channel's system memory (planning guide ch.10; CL 800 manual §10.5, L6484-6604; §10.6, L6605-6705): machine and setting data, tool
 offsets, the drives' status and control bits, status bits and alarms, as @ codes of main groups 3 and 4
 read and write them.
 

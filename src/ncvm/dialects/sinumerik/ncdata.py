@@ -3,7 +3,7 @@
 Loaded from the machine file's ``[sin800]`` section (docs/sin800.md), then
 overlaid with what earlier runs stored (the NC keeps these in battery-backed
 memory: here the SQLite store, namespace ``sin800``). Bytes are held as
-digit-coded patterns (``00010010`` is the number 10010, digest §2.1).
+digit-coded patterns (``00010010`` is the number 10010, CL 800 manual §2.1-2.2, L395-495; §4.2, L830-848; §5.2.1, L1164-1303).
 """
 
 from __future__ import annotations
@@ -71,7 +71,7 @@ def fixed(value: float) -> str:
 
 
 def nc8(value: float) -> float:
-    """Strict NC numerics (digest §10.4): 8 significant decimal digits in the range +/-0.00000001 to
+    """Strict NC numerics (ncvm's reading; the CL 800 manual is silent): 8 significant decimal digits in the range +/-0.00000001 to
     +/-99999999 (L7079); a larger value is the "CL 800 error"."""
     return r_value(round(float(f"{value:.8g}"), 8)) + 0.0  # no -0.0
 

@@ -1,6 +1,6 @@
 """Zero offsets and the tool offset of the channel: G54-G59, external ZO, DRF, preset, the D word, and the
 @ codes that read and write them (ZOA ... ZOPRDW @330-@338 / @430-@43a, TOS/TOAD @420/@423, ACD @36a;
-planning guide ch.10, L6530-6537, L6650-6663; digest §4.3-4.4).
+planning guide ch.10, L6530-6537, L6650-6663; CL 800 manual §10.5, L6484-6604; §10.6, L6605-6705).
 
 Offsets written by decoding serve the blocks decoded after the change, so each change first executes the
 blocks still waiting in the decode buffer.

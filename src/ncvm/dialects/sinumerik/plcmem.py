@@ -1,5 +1,5 @@
 """The channel's PLC (SINUMERIK 850/880): its I/Q/P/F bytes, data words, timers and counters as the NC
-program reads (@38x-@3bx) and writes (@48x-@4bx) them (manual L2729-2924, L3366-3561; digest §4.3-4.4).
+program reads (@38x-@3bx) and writes (@48x-@4bx) them (manual L2729-2924, L3366-3561).
 
 The bytes and data blocks are the NC data's ``plc`` tables (the machine file's ``[sin800.plc.<n>]``);
 the timers and counters run in simulated time (:mod:`.plc`). Before the NC looks at a PLC, the scripted

@@ -1,5 +1,5 @@
 """The channel's axes and plane as @ code sees them: axis numbers, G16, and the actual-value reads ACPW,
-ACPM/ACP, ACAS and ACG (planning guide ch.10, L6549-6556; digest §4.3).
+ACPM/ACP, ACAS and ACG (planning guide ch.10, L6549-6556).
 
 Positions and the G state are the kernel's *executed* state (the manual asks for STOP DEC before
 reading them in the own channel, L2618-2734).

@@ -1,6 +1,6 @@
 """Reading SINUMERIK 800 part programs: blocks of DIN words, R parameter words and @ code.
 
-The canonical object text (digest §5.3, §10.1) is one NC block per line:
+The canonical object text (ncvm's reading; the CL 800 manual is silent) is one NC block per line:
 ``[/][N<nnnn>] item {item}``, where an item is an @ instruction with its
 operands (``@201 R13 P37``), an R arithmetic word (``R10=R50+R51``), a DIN
 word (``G01``, ``X-1.5``, ``X=R91``, ``F=-R25``, ``Q1=25``, ``L=R20``) or a
@@ -46,7 +46,7 @@ class AtInstr:
 
 @dataclass(slots=True)
 class Arith:
-    """``R<target>=t0 op1 t1 op2 t2 ...`` evaluated left to right (digest §11 A51)."""
+    """``R<target>=t0 op1 t1 op2 t2 ...`` evaluated left to right (ncvm's reading; the CL 800 manual is silent)."""
 
     target: int
     terms: list[tuple[str, Operand]]  # first op is "" or "-"

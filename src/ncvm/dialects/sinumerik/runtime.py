@@ -138,9 +138,9 @@ class Channel:
         self.max_depth = sec.max_call_depth
         self.radius_address = sec.radius_address  # B or U: the circle radius (machine data)
         self.memory = SystemMemory(data, session.say, sec.cycle_alarm_stop)
-        # decode-ahead (digest §10.5): 0 = lockstep; N = up to N decoded blocks wait for execution
+        # decode-ahead (ncvm's reading; the CL 800 manual is silent): 0 = lockstep; N = up to N decoded blocks wait for execution
         self.decode_ahead = sec.decode_ahead
-        self.strict = sec.strict_nc  # R stores rounded to 8 digits (digest §10.4)
+        self.strict = sec.strict_nc  # R stores rounded to 8 digits (ncvm's reading; the CL 800 manual is silent)
         self.buffer = BlockBuffer(self.decode_ahead, self.execute)  # route() keeps its step on the current path
         self.pending_r: dict[int, float] = {}  # PLC answers and measured values not yet seen by decoding
         self.R = [0.0] * 1000
@@ -259,7 +259,7 @@ class Channel:
     def angle_key(self) -> str:
         return angle_address(self)
 
-    # -- decode-ahead (manual L4287-4334, digest §10.5) --------------------
+    # -- decode-ahead (manual L4287-4334) --------------------
     def decode_into_buffer(self, block: Block) -> None:
         """A decoded block waits in the NC buffer; the oldest executes once more than N are waiting.
         Blocks that stop or end the program (M0/M1/M2/M30) empty the buffer at once."""
@@ -299,7 +299,7 @@ class Channel:
         else:
             self.R[n] = value
 
-    # -- the @ codes of main groups 3, 4, 7 and a (digest §4.3-4.7) ----------
+    # -- the @ codes of main groups 3, 4, 7 and a (CL 800 manual §10.5, L6484-6604; §5.3.9, L4438-4590; §10.10, L6801-6824) ----------
     def read(self, code: str, target: int, args: tuple) -> None:
         """A read: the value goes to R<target> (and on, for multi-register results)."""
         value = _RUN[code](self)(code, args)
@@ -368,7 +368,7 @@ class Channel:
             f.stack[-1] = Frame(self.frames[-1].unit, f.span)
 
     def call(self, number: int, passes: int, line: int) -> None:
-        """``L<n> P<k>``: run sub-program n k times (digest §10.3)."""
+        """``L<n> P<k>``: run sub-program n k times (ncvm's reading; the CL 800 manual is silent)."""
         span = Span(self._current_path(), line)
         if len(self.frames) > self.max_depth:
             raise RuntimeFault("RUN003", f"L{number}: sub-program nesting deeper than {self.max_depth} levels",

@@ -1,4 +1,4 @@
-"""The rw_SymPas syntax tree (digest §3.1). The checker fills in ``ty`` and ``sym``."""
+"""The rw_SymPas syntax tree (rw_SymPas manual §5.3, L468-1259). The checker fills in ``ty`` and ``sym``."""
 
 from __future__ import annotations
 

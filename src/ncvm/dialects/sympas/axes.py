@@ -1,4 +1,4 @@
-"""One axis channel of the card (digest §10.3): position, motion, flags, I/O words, qualifiers, spooler."""
+"""One axis channel of the card (ncvm's reading; the rw_SymPas manual is silent): position, motion, flags, I/O words, qualifiers, spooler."""
 
 from __future__ import annotations
 
@@ -7,7 +7,7 @@ from .options import Options
 
 
 class AxisState:
-    """One axis channel (digest §10.3). Positions are machine coordinates in axis units."""
+    """One axis channel (ncvm's reading; the rw_SymPas manual is silent). Positions are machine coordinates in axis units."""
 
     def __init__(self, number: int, name: str, cfg_axis, cfg: Options):
         self.number = number

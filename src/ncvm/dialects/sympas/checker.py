@@ -32,7 +32,7 @@ from .symbols import (
 
 
 def assignable(dst: str, src: str) -> bool:
-    """Assignment compatibility (L533-539) widened by digest A-10."""
+    """Assignment compatibility (L533-539) widened by rw_SymPas manual L533-539; L781; L783."""
     if dst == src:
         return True
     if dst == "double":
@@ -47,7 +47,7 @@ def assignable(dst: str, src: str) -> bool:
 
 
 def literal_fits(dst: str, node) -> bool:
-    """A literal constant may be narrowed where its value fits: 0.1 -> single, 5 -> timer (digest A-10)."""
+    """A literal constant may be narrowed where its value fits: 0.1 -> single, 5 -> timer (rw_SymPas manual L533-539; L781; L783)."""
     if isinstance(node, A.Unary) and node.op in ("+", "-"):
         node = node.operand
     if isinstance(node, A.Name) and isinstance(node.sym, Const):

@@ -468,7 +468,7 @@ class CodeGen:
             if op == "shr":
                 return f"({a} >> ({b} & 31))"
             return INT_WRAP.format(f"{a} {op} {b}")
-        # real arithmetic runs in binary64 (digest A-11)
+        # real arithmetic runs in binary64 (rw_SymPas manual L556)
         if op == "/":
             if isinstance(e.right, A.Num) and e.right.value != 0:
                 return f"({a} / {b})"
@@ -504,7 +504,7 @@ def convert(code: str, src: str, dst: str) -> str:
 
 
 def cast(code: str, src: str, dst: str) -> str:
-    """Explicit conversion BOOLEAN(x), INTEGER(x), SINGLE(x), DOUBLE(x) (§5.3.3.2, digest A-26)."""
+    """Explicit conversion BOOLEAN(x), INTEGER(x), SINGLE(x), DOUBLE(x) (§5.3.3.2)."""
     if dst == "boolean":
         return f"({code} != 0)" if src != "boolean" else code
     if dst == "integer":

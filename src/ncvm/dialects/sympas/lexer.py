@@ -1,7 +1,7 @@
 """rw_SymPas tokens (manual §5.2): comments, directives, includes, literals, operators.
 
 Keywords and type names are case-insensitive, user identifiers are case-sensitive
-and significant to 32 characters (digest A-1, §2.4). ``{! file}`` includes are
+and significant to 32 characters (rw_SymPas manual L298; L1281; L1420; §5.2.3.2, L264-302). ``{! file}`` includes are
 expanded here, nested up to 15 levels (§6.7.1); ``{$TASK n}`` and
 ``{$FULLSYSTEM}`` become directive tokens for the parser.
 """

@@ -1,4 +1,4 @@
-"""The spooler's look-ahead: junction velocities of spooled path segments (digest §10.5, MODEREG, L1391-1398).
+"""The spooler's look-ahead: junction velocities of spooled path segments (rw_SymPas manual MODEREG, L1391-1398).
 
 A segment ends with its target velocity TRTVL (L1316) and the next one starts with it, so the
 axes do not stop in between. The last segment of the spooler contents ends at rest. With

@@ -3,7 +3,7 @@
 
 A :class:`Move` is a straight line, a circle/helix in a plane, or a 3-D circle
 over a group of axes, in machine coordinates and axis units (mm, deg), with a
-rest-to-rest velocity profile (digest §10.5). Positions at any
+rest-to-rest velocity profile (ncvm's reading; the rw_SymPas manual is silent). Positions at any
 simulated time are computed from the profile, so waits, CLOCK and events see
 the axes where they really are. A move is handed to the timeline (timeline.py) when
 it retires (ends, is stopped, or the run ends), which reports it with what the other axes do meanwhile.
@@ -49,7 +49,7 @@ class Profile:
     cruise, down to end velocity ``v1`` with acceleration ``a``; rest to rest unless chained.
 
     A spooled segment's ``v0 -> v1`` has been made reachable within ``length`` by the look-ahead
-    (digest §10.5). ``jerk`` is the S-profile's jerk-limited fraction of each ramp (0: trapezoid);
+    (ncvm's reading; the rw_SymPas manual is silent). ``jerk`` is the S-profile's jerk-limited fraction of each ramp (0: trapezoid);
     it stretches each ramp so that the peak acceleration stays ``a``: the ramps plan with
     a * (1 - jerk / 2)."""
 
@@ -349,7 +349,7 @@ class Move:
 
 
 class Chain:
-    """Spooled segments that run back to back without stopping (the spooler's look-ahead, digest §10.5).
+    """Spooled segments that run back to back without stopping (the spooler's look-ahead).
 
     It stands for all its segments on every axis they use, so positions, velocities and stops
     (JS, MS) see the segment that runs at the asked time."""

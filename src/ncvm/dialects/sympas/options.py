@@ -33,8 +33,8 @@ class Options:
     pu: int = 0
     tu: int = 0
     counts_per_unit: float = 1000.0  # dp is rounded to whole counts at profile end (unless MODEREG bit 8)
-    axst_bits: dict[str, int] = field(default_factory=lambda: dict(AXST_BITS))  # provisional (digest §10.4)
-    ssf_codes: dict[str, int] = field(default_factory=lambda: dict(SSF_CODES))  # provisional (digest A-42b)
+    axst_bits: dict[str, int] = field(default_factory=lambda: dict(AXST_BITS))  # provisional (ncvm's reading; the rw_SymPas manual is silent)
+    ssf_codes: dict[str, int] = field(default_factory=lambda: dict(SSF_CODES))  # provisional (rw_SymPas manual L2091)
     ssf_ci_index: int = 1  # SSF write_ci writes CI<n>
     zero_offsets: dict[str, list[float]] = field(default_factory=dict)  # AZO tables: {"1" = [per axis], ...}
     dtca_always_relative: bool = False  # MHA target mode: DTCA relative to the start (like MHR)

@@ -1,8 +1,8 @@
-"""Recursive-descent parser for rw_SymPas (digest §3.1, manual §5.3).
+"""Recursive-descent parser for rw_SymPas (rw_SymPas manual §5.3, L468-1259).
 
 A file holds one program, or several, each after its own ``{$TASK n}``
 (ncvm's way to load more than one CNC task from one file). Statements and
-declarations follow Pascal; the lenient points of the digest (``;`` before
+declarations follow Pascal; the lenient points ncvm accepts for the manual's examples (``;`` before
 ``else``, stray ``;`` between declarations, ``:=`` in constant declarations)
 are accepted with a warning.
 """

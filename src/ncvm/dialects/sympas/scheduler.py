@@ -1,4 +1,4 @@
-"""The scheduler of the card's 4 CNC tasks on one deterministic 64 us clock (digest §10.1).
+"""The scheduler of the card's 4 CNC tasks on one deterministic 64 us clock (ncvm's reading; the rw_SymPas manual is silent).
 
 The task with the smallest local time runs until it waits or passes the others by a slice; the scenario
 events (machine/scenario.py's ``EventQueue``, times in s) and the card's timed actions (SSF entries, homing

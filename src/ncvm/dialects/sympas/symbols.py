@@ -69,7 +69,7 @@ class SysParam:
 
 @dataclass(eq=False)
 class Builtin:
-    """A predefined function or command; ``form`` is the argument form of digest §6.2."""
+    """A predefined function or command; ``form`` is the argument form of rw_SymPas manual §6.6, L1620-2233"""
 
     name: str
     form: str  # "F" function, "X" procedure with expressions, "N","K","E","V","S","SP","SP+"

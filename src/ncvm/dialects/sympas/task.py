@@ -2,7 +2,7 @@
 
 Generated code calls these methods; waits and task switches are generators the
 code runs with ``yield from``. Time is in 64 us ticks (float); each executed
-statement costs 1/Q tick (digest §10.1).
+statement costs 1/Q tick (ncvm's reading; the rw_SymPas manual is silent).
 """
 
 from __future__ import annotations

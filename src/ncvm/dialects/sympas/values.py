@@ -1,5 +1,5 @@
 """Run-time helpers the generated code calls: 32-bit integer and timer arithmetic, conversions,
-math functions (§6.6, radians, double results) and WRITE number formatting (digest A-57)."""
+math functions (§6.6, radians, double results) and WRITE number formatting (rw_SymPas manual L2216; L2224)."""
 
 from __future__ import annotations
 
@@ -35,7 +35,7 @@ def wrap32(x: int) -> int:
 
 
 def idiv(a: int, b: int) -> int:
-    """Integer '/' truncates toward zero (L852-856, digest A-12); /0 is error 32768."""
+    """Integer '/' truncates toward zero (L852-856); /0 is error 32768."""
     if b == 0:
         fault(32768, "integer division by 0")
     q = abs(a) // abs(b)
@@ -58,7 +58,7 @@ def rdiv(a, b) -> float:
 
 
 def f32(x) -> float:
-    """Round to IEEE binary32 when stored into a ``single`` (digest A-11)."""
+    """Round to IEEE binary32 when stored into a ``single`` (rw_SymPas manual L556)."""
     try:
         return _F32.unpack(_F32.pack(x))[0]
     except OverflowError:
@@ -71,7 +71,7 @@ def t2i(t: int) -> int:
 
 
 def toint(x: float) -> int:
-    """INTEGER(real): truncate toward zero, saturate to the 32-bit range (digest A-26)."""
+    """INTEGER(real): truncate toward zero, saturate to the 32-bit range (rw_SymPas manual L762-769)."""
     if x != x:
         return 0
     if x >= 2147483647:
@@ -82,7 +82,7 @@ def toint(x: float) -> int:
 
 
 def fmt(x: float, digits: int = 10) -> str:
-    """Single and Double in WRITE: C's %g with 10 significant digits (digest A-57)."""
+    """Single and Double in WRITE: C's %g with 10 significant digits (rw_SymPas manual L2216; L2224)."""
     return "%.*g" % (digits, x)
 
 
@@ -144,7 +144,7 @@ def namespace(card) -> dict:
     """The globals every generated unit runs in."""
 
     def ovf(x: int) -> int:
-        card.sys["ERRORREG"] |= 1 << 30  # simulator flag: integer overflow (digest A-15)
+        card.sys["ERRORREG"] |= 1 << 30  # simulator flag: integer overflow (rw_SymPas manual L734)
         return wrap32(x)
 
     ns = {"_ovf": ovf, "_idiv": idiv, "_imod": imod, "_rdiv": rdiv, "_f32": f32, "_t2i": t2i, "_toint": toint,

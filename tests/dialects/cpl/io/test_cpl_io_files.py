@@ -70,7 +70,7 @@ def test_open_errors(fs):
 
 
 def test_f2_random_file_records_padded(fs):
-    # L3937-3951 (one name, digest D3)
+    # L3937-3951 (one name, CPL manual L3937-3963)
     fs.OPENW(2, "P200", 1024, 10)
     for _ in range(3):
         fs.PRN(2, "TEST")
@@ -102,7 +102,7 @@ def test_f4_copy_nc_program_into_random_file(fs):
 
 
 def test_f5_overwrite_with_semicolon_keeps_the_tail(fs):
-    # L4043-4049: reclen 35, so the records are cut to 35 characters (digest D14)
+    # L4043-4049: reclen 35, so the records are cut to 35 characters (CPL manual L4043-4049; L3873-3875)
     fs.OPENW(2, "PProg123.PRG", 200, 35)
     for i in (1, 2, 3):
         fs.PRN(2, f"TEST{i} FOR PRN COMMAND WITH SEMICOLON")
@@ -144,7 +144,7 @@ def test_f7_semicolon_chaining_and_close_ends_the_record(fs):
 
 
 def test_f8_templates_over_several_arguments(fs):
-    # L4080-4097 (A$ = 5000 read as a numeric variable, digest F8)
+    # L4080-4097 (A$ = 5000 read as a numeric variable)
     fs.OPENW(1, "P2", 300, "TEST2")
     e = dim(50, "CDEFGHI")
     fs.PRN(1, "10", semicolon=True)
@@ -238,7 +238,7 @@ def test_ljust_for_nc_programs(fs):
 
 
 def test_f9_inp_nul_without_moving_and_string_takes_its_dim(fs):
-    # L4132-4140, file content without the OCR blanks (digest D8)
+    # L4132-4140, file content without the OCR blanks (CPL manual L4132-4140)
     (fs.root / "P2").write_text("ABC123456789ABC\n\x03\n", encoding="latin-1")
     fs.OPENR(2, "P2")
     c, d = dim(3), dim(3)
@@ -323,7 +323,7 @@ def test_f13_filepos_sequential(fs):
 
 
 def test_f14_filepos_random(fs):
-    # L4260-4262 with reclen 127 (digest D5: the offsets imply a 128-byte stride)
+    # L4260-4262 with reclen 127 (CPL manual L4262: the offsets imply a 128-byte stride)
     fs.OPENW(1, "P2", 200, "TEST", 127)
     for _ in range(10):
         fs.PRN(1, "TEST FOR FILEPOS")
@@ -404,7 +404,7 @@ def test_f16_seek_on_a_random_file_with_numeric_name(fs):
 
 
 def test_f17_filesize_sequential(fs):
-    # L4340-4355 (14-character record text, digest D4)
+    # L4340-4355 (14-character record text, CPL manual L4340-4355; L4017)
     fs.OPENW(1, 2, 1000)
     for _ in range(20):
         fs.PRN(1, "TEST FILE SIZE")
@@ -420,7 +420,7 @@ def test_f18_filesize_random(fs):
     fs.OPENW(1, "P2", 1000, 10)
     for _ in range(20):
         fs.PRN(1, "TEST FILESIZE")
-    assert error_of(fs.FILESIZE, 1).code == "CPL613"  # only on files opened with OPENR (digest D11)
+    assert error_of(fs.FILESIZE, 1).code == "CPL613"  # only on files opened with OPENR (CPL manual L4309)
     fs.CLOSE(1)
     fs.OPENR(2, 2, 10)
     assert [fs.FILESIZE(2), fs.FILESIZE(2, 1), fs.FILESIZE(2, 2), fs.FILESIZE(2, 3), fs.FILESIZE(2, 4)] == \

@@ -1,4 +1,4 @@
-"""Formatted output (digest §6.15.1): templates, the template queue, standard formats, LJUST, overflow."""
+"""Formatted output (CPL manual §6, L4015-4040; §7, L4539-4612; §5, L3514-3539): templates, the template queue, standard formats, LJUST, overflow."""
 
 from __future__ import annotations
 
@@ -25,7 +25,7 @@ def test_sqrt_table_template_in_loop():
 
 
 def test_standard_formats_real():
-    # L4579-4585: A=25 : B=SQRT(A): DSP(Z,S,"A=",A," B=",B," C= ",A+B); REAL is ####.### (digest D7)
+    # L4579-4585: A=25 : B=SQRT(A): DSP(Z,S,"A=",A," B=",B," C= ",A+B); REAL is ####.### (CPL manual L3524-3528; L4554-4556)
     assert out("A=", 25.0, " B=", 5.0, " C= ", 30.0) == "A=  25.000 B=   5.000 C=   30.000"
 
 
@@ -35,13 +35,13 @@ def test_template_queue_over_several_strings():
 
 
 def test_boolean_and_strings_print_in_place_templates_take_later_numbers():
-    # L4603-4612 repaired (digest E1): DSP(5,1,"XPOS ###.### YPOS ###.###",T1$,B?,X,Y,T2$,I%)
+    # L4603-4612 repaired (CPL manual L4603-4612): DSP(5,1,"XPOS ###.### YPOS ###.###",T1$,B?,X,Y,T2$,I%)
     text = out("XPOS ###.### YPOS ###.###", " MEAS.PROBE=", True, 1.5, 2.5, " NO.=", 200)
     assert text == "XPOS   1.500 YPOS   2.500 MEAS.PROBE=TRUE NO.=      200"
 
 
 def test_prn_templates_over_several_arguments():
-    # L4080-4097 (digest F8, A$ = 5000 read as a numeric variable): one record
+    # L4080-4097 (A$ = 5000 read as a numeric variable): one record
     text = out("######", "###.####", "#.######", 5000, 1.231, Double(4 / 3), "ABCDE", "CDEFGHI")
     assert text == "  5000  1.23101.333333ABCDECDEFGHI"
 

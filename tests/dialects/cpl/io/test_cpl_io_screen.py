@@ -41,7 +41,7 @@ def test_d2_default_formats_and_template_queue():
 
 
 def test_d3_booleans_and_strings_in_a_template_line():
-    # L4603-4612 repaired (digest E1)
+    # L4603-4612 repaired (CPL manual L4603-4612)
     s = Screen()
     s.DSP(5, 1, "XPOS ###.### YPOS ###.###", " MEAS.PROBE=", True, 1.5, 2.5, " NO.=", 200)
     assert s.grid_lines()[4] == "XPOS   1.500 YPOS   2.500 MEAS.PROBE=TRUE NO.=      200"

@@ -1,4 +1,4 @@
-"""Chapter 5 string functions, each manual example with its stated (or digest-repaired) result."""
+"""Chapter 5 string functions, each manual example with its stated (or OCR-repaired) result."""
 
 from __future__ import annotations
 
@@ -174,7 +174,7 @@ def test_s12_comparisons_by_ascii():
 
 
 def test_s14_chaining_into_fields():
-    # L3781-3795 (A$ has length 5, digest B21)
+    # L3781-3795 (A$ has length 5, CPL manual L3783)
     a, b = field(100, "THIS "), field(100, "IS A TEST")
     c, d, e = field(10), field(20), field(30)
     S.mid_write(c, 1, 6, S.concat(a, b))
@@ -199,7 +199,7 @@ def test_s14_chaining_into_fields():
 
 
 def test_s15_val_on_mid_slices():
-    # L3803-3807 with the digest's repaired text (D18)
+    # L3803-3807 with the OCR damage repaired
     folge = field(20, "XVALUE -0001.234 MM")
     assert S.val(S.mid(folge, 7)) == pytest.approx(-1.234)
     assert S.val_integer(S.mid(folge, 7, 6)) == -1
@@ -208,7 +208,7 @@ def test_s15_val_on_mid_slices():
 
 
 def test_s16_len_of_literal_field_variable_and_chain():
-    # L3809-3819 (line 7 repaired to LEN(S$+Z$+S$), digest B22)
+    # L3809-3819 (line 7 repaired to LEN(S$+Z$+S$), CPL manual L3817)
     z = field(10, "TEST")
     s = "TEST"
     assert (S.length("TEST"), S.length(z), S.length(s)) == (4, 4, 4)

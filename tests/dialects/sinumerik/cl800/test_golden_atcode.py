@@ -1,8 +1,8 @@
-"""The worked examples of digest §5.9 (manual templates L6415-6470) compile to exactly the golden @ code.
+"""ncvm's worked examples (a)-(g) (on the manual's templates L6415-6470) compile to exactly the golden @ code.
 
 Each ``golden/<case>.cl8`` has ``<case>.spf`` (object program) and ``<case>.lst``
-(cross-reference listing, digest §6). (a)-(f) are the digest's texts verbatim;
-(g) shows the ``…`` of the digest as the empty continuation block ``N2001``.
+(cross-reference listing, CL 800 manual §1.2.2.3, L355-369). (a)-(f) are written as ncvm's first golden files;
+(g) shows the ``…`` of the example as the empty continuation block ``N2001``.
 """
 
 from __future__ import annotations

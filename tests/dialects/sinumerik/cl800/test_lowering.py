@@ -1,4 +1,4 @@
-"""Expression, condition and block lowering conventions of digest §5.5-5.8, one small program each."""
+"""Expression, condition and block lowering conventions of CL 800 manual L6427-6469; L6386-6413; L461-463; L1222-1226, one small program each."""
 
 from __future__ import annotations
 
@@ -16,7 +16,7 @@ def compile_body(body: str) -> list[str]:
 
 
 @pytest.mark.parametrize("body,first", [
-    # parentheses and precedence through temporaries, single-level chains only (digest §5.6)
+    # parentheses and precedence through temporaries, single-level chains only (ncvm's reading; the CL 800 manual is silent)
     ("R5 = R6 - (R7 - R8);", "@040 K2 R50 R99 R99=R7-R8 R5=R6-R99"),
     ("R5 = R6 + R7 * R8;", "@040 K2 R50 R99 R99=R7*R8 R5=R6+R99"),
     ("R5 = -(R6 + R7);", "@040 K2 R50 R99 R99=R6+R7 R5=-R99"),

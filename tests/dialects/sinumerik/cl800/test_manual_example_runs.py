@@ -1,4 +1,4 @@
-"""The manual's example programs of chapters 4, 5, 7 and 8 (digest §9, §5.9) run, and their results are
+"""The manual's example programs of chapters 4, 5, 7 and 8 (ncvm's reading; the CL 800 manual is silent) run, and their results are
 the ones the manual states (or are computed by hand here).
 
 The object programs are subroutines: their LOCAL parameters are popped back at ``M17``. The debug hook
@@ -111,7 +111,7 @@ def test_5_3_7_6_pattern_operations_program_59(tmp_path):
 
 
 def test_5_3_7_6_boolean_operations_program_60(tmp_path):
-    """L3976-3995 with 1 XORB 0 = 1 (the manual prints 0: digest A18)."""
+    """L3976-3995 with 1 XORB 0 = 1 (the manual prints 0: CL 800 manual L3992)."""
     _r, states = _states(MANUAL / "m5_3_7_6_logic_boolean.cl8", tmp_path)
     _ever(states, R52=1, R53=1, R54=0, R55=1, R56=0)
 
@@ -166,7 +166,7 @@ def test_5_3_8_3_meas_m_difference(tmp_path):
 
 
 def test_5_3_2_1_if_then_else_writes_md_2240(tmp_path):
-    """Digest §5.9 (b), PROGRAM 505: MD 2240 = 1500 when the D number is >= 20, else 1000."""
+    """Worked example (b), PROGRAM 505: MD 2240 = 1500 when the D number is >= 20, else 1000."""
     machine = ('[[axis]]\nname = "X"\n[[axis]]\nname = "Y"\n[[axis]]\nname = "Z"\n[sin800]\n'
                'tool_offsets = [ { d = 25, p = [1, 20, 10.0] }, { d = 3, p = [2, 20, 10.0] } ]\n')
     for d, expected in ((25, 1500.0), (3, 1000.0)):
@@ -179,19 +179,19 @@ def test_5_3_2_1_if_then_else_writes_md_2240(tmp_path):
 
 
 def test_golden_a_pointers_state_before_m17(tmp_path):
-    """Digest §5.9 (a): R70 = 20 and R71 = R80 = 0 just before the final block."""
+    """Worked example (a): R70 = 20 and R71 = R80 = 0 just before the final block."""
     _r, states = _states(GOLDEN / "a_pointers.cl8", tmp_path)
     assert states[-1]["R70"] == 20.0 and states[-1].get("R71", 0.0) == 0.0 and states[-1]["R50"] == 70.0
 
 
 def test_golden_e_repeat_sets_bit_2(tmp_path):
-    """Digest §5.9 (e): B00011001 with bit 2 set is B00011101; one pass."""
+    """Worked example (e): B00011001 with bit 2 set is B00011101; one pass."""
     result, states = _states(GOLDEN / "e_repeat_bit.cl8", tmp_path)
     assert states[-1]["R70"] == 11101.0 and result["steps"] <= 4
 
 
 def test_5_3_3_1_goto_skips_to_the_label(tmp_path):
-    """L2192-2207 (label spelled the same at declaration and use, digest §9): the statements between GOTO
+    """L2192-2207 (label spelled the same at declaration and use): the statements between GOTO
     and the label are skipped; with R1 >= 0 the IF does not jump and they run."""
     src = tmp_path / "goto.cl8"
     src.write_text("PROGRAM 2;\nCHANNEL NC 0;\nPAR INTEGER: R1, R2, R3;\nLABEL: Dest;\nBEGIN\n"

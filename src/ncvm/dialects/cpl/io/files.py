@@ -1,4 +1,4 @@
-"""Chapter 6: CPL files on real files under the machine's file root (manual L3835-4457, digest §6.15, §8.8).
+"""Chapter 6: CPL files on real files under the machine's file root (manual L3835-4457).
 
 On disk a CPL file is what the control kept: records of latin-1 text, each ended by LF (not part of
 its length), then the EOF marker ``ETX LF``. A random file's records all have the record length,
@@ -122,7 +122,7 @@ class CplFiles:
 
     # -- names ---------------------------------------------------------------------------
     def place_of(self, name) -> Place:
-        """The control's file name (a string, or an INTEGER n meaning "P<n>", digest D2) placed in the
+        """The control's file name (a string, or an INTEGER n meaning "P<n>", CPL manual L4342; L4365; L4303) placed in the
         file root, relative to the current directory unless it begins with a path from the root."""
         if isinstance(name, int) and not isinstance(name, bool):
             name = f"P{name}"
@@ -156,8 +156,8 @@ class CplFiles:
             raise fail("INVALID_FILE_NAME", f"{place.shown}: {e.strerror}") from None
 
     def enter_directory_of(self, program: Path | str) -> None:
-        """The current directory of a run is the main program's, when it lies in the file root (digest
-        §11 D13): names without a path are looked up there; elsewhere it stays the root."""
+        """The current directory of a run is the main program's, when it lies in the file root (CPL manual
+        L4381): names without a path are looked up there; elsewhere it stays the root."""
         try:
             folder = Path(program).resolve().parent.relative_to(self.root.resolve())
         except ValueError:
@@ -485,7 +485,7 @@ class CplFiles:
             text = record[off: off + count]
             target.source.write(target.start, count, text)
             return text, off + len(text)
-        if target == "S":  # a non-dimensioned string takes the rest of the record (digest D9)
+        if target == "S":  # a non-dimensioned string takes the rest of the record (ncvm's reading; the CPL manual is silent)
             return record[off:], len(record)
         if target == "B":
             rest = record[off:].lstrip(" ")

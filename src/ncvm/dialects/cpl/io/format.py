@@ -6,7 +6,7 @@ each numeric argument takes the first waiting template and is printed *there*; a
 argument with no template waiting prints in its standard format where it stands. BOOLEAN and
 STRING arguments are never formatted. Templates left over print as the ``#`` text itself.
 
-Standard formats (digest D7): INTEGER 9 positions, REAL ``####.###`` (8), DOUBLE
+Standard formats (CPL manual L3524-3528; L4554-4556): INTEGER 9 positions, REAL ``####.###`` (8), DOUBLE
 ``#########.######`` (16), right-justified with leading blanks; BOOLEAN prints TRUE/FALSE;
 NUL prints nothing. A value too large for its standard format is printed whole (never cut).
 Rounding is half away from zero on the decimal digits the value really has (a REAL is read

@@ -1,4 +1,4 @@
-"""Chapter 8 graphics on a 633 x 415 pixel canvas (manual L4887-5176, digest §6.17, §8.11).
+"""Chapter 8 graphics on a 633 x 415 pixel canvas (manual L4887-5176).
 
 Coordinates: graphics y grows upwards. The graphics area is x 0..632, y 0..374; below it lies the
 40-pixel softkey band, which GPR (y counted from the band's bottom, so "+40" lines it up with the
@@ -41,7 +41,7 @@ COLOR_TABLES: tuple[tuple[RGB, ...], ...] = (
     ((255, 255, 255), (0, 0, 192), (0, 100, 0), (160, 0, 0),
      (192, 192, 192), (255, 215, 0), (192, 0, 192), (0, 0, 0)),
 )
-#: COL's <tab> argument: the text names 1, 2, 3; the examples use 7 for table 2 and 10 for table 3 (digest C15)
+#: COL's <tab> argument: the text names 1, 2, 3; the examples use 7 for table 2 and 10 for table 3 (CPL manual L4933-4949)
 TABLE_CODES = {1: 0, 2: 1, 3: 2, 7: 1, 10: 2}
 
 #: GMD line styles -> on/off run lengths along the line (None = solid)

@@ -1,4 +1,4 @@
-"""Chapter 9: MMC, a part program talking to an external client (manual L5177-5217, digest §6.18).
+"""Chapter 9: MMC, a part program talking to an external client (manual L5177-5217).
 
 ``r% = MMC(v1[,v2,...,v20])`` hands the names and values of up to 20 CPL variables to a client
 (an HMI or PC application) and waits for its answer; the client may give the variables new values.

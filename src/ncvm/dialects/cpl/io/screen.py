@@ -1,4 +1,4 @@
-"""Chapter 7 dialog on the virtual operator screen (manual L4458-4886, digest §6.16, §8.11).
+"""Chapter 7 dialog on the virtual operator screen (manual L4458-4886).
 
 The screen is the 633 x 415 pixel CPL window of :mod:`.graphics` with a 46-line x 79-column text
 grid over it (a cell is 8 x 9 pixels, TFO font 0 size 0), the softkey bar in the 40-pixel band at
@@ -33,7 +33,7 @@ LINES, COLUMNS = 46, 79
 CELL_W, CELL_H = 8, 9
 MAX_DSP_STRING = 77
 
-# Key codes (manual A.5/A.6; the A.6 table is lost, digest C19): 13 Enter and 139 LEVEL RETURN and
+# Key codes (manual A.5/A.6; the A.6 table is lost, CPL manual L5632-5645): 13 Enter and 139 LEVEL RETURN and
 # 141..148 softkeys 1..8 are attested by the INKEY example; the cursor codes are the project's choice.
 KEY_ENTER, KEY_LEVEL_RETURN, KEY_DEL = 13, 139, 127
 KEY_UP, KEY_DOWN, KEY_RIGHT, KEY_LEFT = 135, 136, 137, 138

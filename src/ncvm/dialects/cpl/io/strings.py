@@ -1,6 +1,6 @@
 """Chapter 5: character fields, MID$ (read, write, views), LEN, INSTR, ASC, CHR$, STR$, VAL, TRIM$, +.
 
-Two kinds of string holders (digest §4.7):
+Two kinds of string holders (CPL manual §2.4.3, L711-728; §5, L3344-3834):
 
 * a **character field** ``DIM A$(n)`` (:class:`CharacterField`): up to n characters and a current
   length (the assigned prefix); only it may receive a concatenation, STR$ or a MID$ write;
@@ -72,7 +72,7 @@ class CharacterTable:
     def __init__(self, rows: int, size: int):
         if not isinstance(rows, int) or not 1 <= rows <= 65536:
             raise fail("INVALID_FIELD_LIMIT", f"DIM rows {rows!r}")
-        # rows 0..n are accepted, as for numeric fields (digest B6)
+        # rows 0..n are accepted, as for numeric fields (CPL manual L932; L572; L702)
         self.rows = [CharacterField(size) for _ in range(rows + 1)]
 
     def row(self, index: int) -> CharacterField:

@@ -1,4 +1,4 @@
-"""CPL system functions of manual chapter 4 on the simulated controller (digest §6.4-6.14, §8).
+"""CPL system functions of manual chapter 4 on the simulated controller (CPL manual §4.2-4.14, L1240-3343).
 
 SYSTEM_FUNCTIONS has the row format of builtins.FUNCTIONS (table.Builtin; merged there); ``refs`` names argument
 positions passed by name (a field the function fills), ``out`` the one variable it writes back (MCODS's

@@ -22,7 +22,7 @@ if TYPE_CHECKING:
 class SystemContext(Protocol):
     """A CPL run as the system functions use it."""
 
-    ctl: Controller  # the simulated controller (digest §8): axes, tables, PLC image, error log, NCS state
+    ctl: Controller  # the simulated controller (CPL manual §4, L1184-3343): axes, tables, PLC image, error log, NCS state
     kernel: NcKernel  # the NC state as executed (MPOS, active G functions)
     machine: Machine
     session: Session

@@ -1,4 +1,4 @@
-"""The simulated Typ3 osa controller behind chapter 4 (digest §8): channels, physical and logical axes,
+"""The simulated Typ3 osa controller behind chapter 4 (CPL manual §4, L1184-3343): channels, physical and logical axes,
 zero-shift tables, tool compensation and the tool database, MACODA, the PLC image, the error log.
 
 Everything is loaded from the machine file's [cpl] section with defaults that match the machine's axes;
@@ -79,7 +79,7 @@ class Controller:
 
     # -- axes ----------------------------------------------------------------------------------
     def channel_axes(self, ch: int) -> list[PhysAxis]:
-        """The logical axes of channel ch, numbered 1..k in ascending physical index (digest §8.2)."""
+        """The logical axes of channel ch, numbered 1..k in ascending physical index (CPL manual §4.2, L1256-1337)."""
         return [a for i, a in sorted(self.axes.items()) if a.channel == ch]
 
     def by_name(self, name: str) -> PhysAxis | None:

@@ -7,7 +7,7 @@ the manuals this project follows; the forms below are recorded in docs/decisions
 
 * ``G168 <axis words>``: program coordinate shift of the named axes (the others keep theirs); ``G168``
   alone clears it. ``G268 <axis words>``: the additive coordinate shift, the same way. The axis words of
-  these blocks are shift values, not a motion. PCS = WCS - G168 - G268 (digest §8.2): the shifts act
+  these blocks are shift values, not a motion. PCS = WCS - G168 - G268 (CPL manual §4.2, L1256-1337): the shifts act
   on the kernel like the external shifts G160-G360, as additive offsets.
 * ``G131 <axis><offset angle> [I<adaptation angle>]``: tangential tool guidance with that axis as axis of
   rotation symmetry; ``G130`` deselects it.
@@ -16,7 +16,7 @@ the manuals this project follows; the forms below are recorded in docs/decisions
   a logical axis number of the channel); ``G580 [<slave axes>]`` removes the couplings of the named
   slaves, or all.
 * ``G145``..``G845`` select an external, ``G147``..``G847`` a general tool compensation (values: TC with
-  table 0); ``G146`` deselects both. Stored only (digest §12 tier 2); MCODS 51/54 read them.
+  table 0); ``G146`` deselects both. Stored only (ncvm does not move by them); MCODS 51/54 read them.
 * ``M40``..``M44``, ``M48``: the spindle gear range (MCODS 64-67); the M function also goes to the PLC.
 * ``G160``, ``G260``, ``G360`` select the external zero shift of that number (FXC with table 0 writes its
   values, L1759-1773), ``G167`` deselects it (G group 30 of the SD(1) table, L2305): one is active at a

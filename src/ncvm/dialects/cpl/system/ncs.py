@@ -1,7 +1,7 @@
 """NCS coupling of manual §4.14: MCODS (data services) and MCOPS (process services); AXP (§4.10).
 
 MCODS fills a buffer (a field given by name; element 1 first, as the manual's BUF%(1)) and returns an NCS
-status code (digest §7.2). The version variable is written back: a version of 0 delivers at once; the
+status code (CPL manual §4.14, L2623-2684). The version variable is written back: a version of 0 delivers at once; the
 same non-zero version blocks until the data changes, letting queued blocks execute; if nothing can change
 the data it is the simulator deadlock error. Types not modelled here return 102 (not available).
 """
@@ -32,7 +32,7 @@ class ControlReset(Exception):
                          "the main program is exited (MCOPS 2)")
 #: M functions the NC kernel carries out itself; any other one is an auxiliary function the PLC acknowledges
 KERNEL_M = frozenset((0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 30))
-#: channel operating modes MCODS 31/48 and MCOPS 7 (digest §11 C6)
+#: channel operating modes MCODS 31/48 and MCOPS 7 (CPL manual L2904-2911)
 MODES = (1, 2, 4, 5, 6, 7, 10, 11, 12, 13, 14)
 
 
@@ -41,7 +41,7 @@ def _channels(c) -> list[int]:
 
 
 def _sav_ipo(rt: SystemContext, ch: int) -> list[int]:
-    """SAV and IPO state (digest §8.6): the own channel is active while blocks are prepared or queued."""
+    """SAV and IPO state (CPL manual §4.14, L2687-3127): the own channel is active while blocks are prepared or queued."""
     if ch == rt.ctl.channel:
         return [3, 1 if rt.queue or rt.moving() else 3]
     return [2 if rt.ctl.ncs["selected"].get(ch) else 1, 3]

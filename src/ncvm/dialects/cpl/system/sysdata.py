@@ -1,7 +1,7 @@
-"""Active system data of manual §4.9: SD, SDR, MCA, NCF (digest §6.9).
+"""Active system data of manual §4.9: SD, SDR, MCA, NCF (CPL manual §4.9, L2052-2351).
 
 Index 1 of the "last programmed / active" pairs reads the prepared NC state (the runtime's prepared
-kernel), index 2 the executed one (the NC kernel), as digest §6.9.1 maps them.
+kernel), index 2 the executed one (the NC kernel), as CPL manual §4.9, L2214-2300 maps them.
 """
 
 from __future__ import annotations

@@ -1,4 +1,4 @@
-"""Axis ZS tables named by a path are files under the controller's file root (manual §4.3, digest §8.3).
+"""Axis ZS tables named by a path are files under the controller's file root (manual §4.3).
 
 The manual calls them "ASCII tables" but gives no layout. ncvm writes this one (docs/decisions.md,
 "Axis ZS table files"), in the control's file form like every CPL file (records ended by LF, then

@@ -1,4 +1,4 @@
-"""The @ code table of the SINUMERIK 800 (planning guide ch.10, L6332-6824; digest §5.4), one module per
+"""The @ code table of the SINUMERIK 800 (planning guide ch.10, L6332-6824), one module per
 main group. Each row (:class:`.row.AtCode`) carries the code, the CL 800 statement it comes from, the
 operand kinds, the manual line, the code generator's lowering and the channel's run-time function; the
 CL 800 compiler (``cl800.tables``) reads its statement names from the same rows.

@@ -1,6 +1,6 @@
 """Main group 1: branching (planning guide ch.10, L6415-6470).
 
-``expr``: the condition under which the code *jumps* to its block number (digest §11 A48), over the
+``expr``: the condition under which the code *jumps* to its block number (ncvm's reading; the CL 800 manual is silent), over the
 compared values ``{a}`` and ``{b}``.
 """
 

@@ -1,4 +1,4 @@
-"""Resolve every name of a CL 800 program before code generation (digest §2, §3.5, §8).
+"""Resolve every name of a CL 800 program before code generation (CL 800 manual §2, L395-734; §9, L6116-6310).
 
 Named R parameters and R numbers are bound to their declarations (program,
 GLOBAL and CENTRAL lists), CONST names are replaced by their values, labels and
@@ -209,7 +209,7 @@ class Checker:
                     new.append(self.value(a))
             st.args = new
         elif isinstance(st, ast.Compound):
-            self.block(st.body)  # a BEGIN ... END block is not the first nesting level (digest §3.2)
+            self.block(st.body)  # a BEGIN ... END block is not the first nesting level (CL 800 manual §5, L972-4590)
         elif isinstance(st, ast.If):
             st.cond = self.condition(st.cond)
             self.block(st.then)
@@ -349,7 +349,7 @@ class Checker:
 
 
 def check_list(path: str, lst: ast.ExtList) -> list[CompilerMessage]:
-    """A list on its own: R ranges per class and channel, no R number or name twice (digest §1.5)."""
+    """A list on its own: R ranges per class and channel, no R number or name twice (CL 800 manual §5.2.2, L1305-1395; §6.2, L4660-4695)."""
     errors, by_r, by_name = [], set(), set()
     for d in lst.decls:
         if d.cls == "GLOBAL" and lst.channel is None:

@@ -1,4 +1,4 @@
-"""CL 800 -> @ code (manual §10; digest §5.3-5.8).
+"""CL 800 -> @ code (manual §10).
 
 The object program is text: ``%SPF<n>``, then one NC block per line. Control
 structures become @1gx jumps to 4-digit block numbers ``N = 1000*T + 100*L + s``
@@ -126,7 +126,7 @@ class ObjectProgram:
 
 
 def fmt_number(v) -> str:
-    """A constant as the NC reads it: no '+', no trailing zeros or '.' (digest §5.3)."""
+    """A constant as the NC reads it: no '+', no trailing zeros or '.' (ncvm's reading; the CL 800 manual is silent)."""
     if isinstance(v, int) or float(v).is_integer():
         return str(int(v))
     s = f"{v:.8f}".rstrip("0").rstrip(".")
@@ -274,7 +274,7 @@ class Compiler:
         raise self.err("E061", getattr(e, "line", self.line), "expression cannot be compiled")
 
     def chain(self, e) -> str:
-        """One R arithmetic word's right-hand side: a chain of one precedence level (digest §5.6)."""
+        """One R arithmetic word's right-hand side: a chain of one precedence level (ncvm's reading; the CL 800 manual is silent)."""
         level = ("*", "/") if isinstance(e, ast.Binary) and e.op in ("*", "/") else ("+", "-")
         elems: list = []
         node = e
@@ -507,7 +507,7 @@ class Compiler:
 
 
 def push_code(push: bool, regs: list[int]) -> str:
-    """@041/@043 Ra Rb for one contiguous range of 2 or more, else @040/@042 Kn R... (digest §5.8)."""
+    """@041/@043 Ra Rb for one contiguous range of 2 or more, else @040/@042 Kn R... (CL 800 manual L6386-6413; L461-463; L1222-1226)."""
     regs = sorted(regs)
     if len(regs) > 1 and regs[-1] - regs[0] == len(regs) - 1:
         return f"@{'041' if push else '043'} R{regs[0]} R{regs[-1]}"

@@ -1,10 +1,10 @@
-"""The WS 800 A's message numbers and texts (manual §9.2, L6116-6310; digest §8)."""
+"""The WS 800 A's message numbers and texts (manual §9.2, L6116-6310)."""
 
 from __future__ import annotations
 
 from ....diagnostics import Diagnostic, Span
 
-#: number -> text as the manual prints it (OCR slips corrected per digest §11, A20)
+#: number -> text as the manual prints it (OCR slips of the plain-text edition corrected)
 MESSAGES = {
     "W001": "Warning: Comment text open!",
     "W002": "Warning: DIN code open!",

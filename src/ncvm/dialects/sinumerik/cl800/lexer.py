@@ -1,4 +1,4 @@
-"""CL 800 scanner (manual §3, §11.2; digest §3.1).
+"""CL 800 scanner (manual §3, §11.2).
 
 Comments ``(* *)`` and DIN code ``(: :)`` are taken out first, so their text is
 never tokenised. Keywords are upper case only; names compare case-insensitively
@@ -13,7 +13,7 @@ from dataclasses import dataclass
 from ....source import DIGITS, LETTERS, int_literal
 from .errors import CompilerMessage
 
-#: every CL 800 word (digest §3.1) plus the system memory and function names of §4
+#: every CL 800 word (CL 800 manual §3, L742-776; §11.2, L7022-7122) plus the system memory and function names of §4
 KEYWORDS = frozenset("""
 PROGRAM CHANNEL NC COM ESS ID PW EXTERNAL ENDEXTERN GLOBAL CENTRAL PAR LOCAL POINTER CONST LABEL
 INTEGER REAL PATTERN BOOLEAN BEGIN END LF REPEAT UNTIL WHILE DO INT NOT FOR TO DOWNTO IF THEN ELSE
@@ -200,7 +200,7 @@ class Lexer:
         text = self.text
         m = _NAME.match(text, i)
         j = m.end()
-        # legacy (manual examples, digest §11 A23): '.' inside a name when no digit follows it
+        # legacy (manual examples): '.' inside a name when no digit follows it
         while self.legacy and j < len(text) and text[j] == "." and text[i:j] not in KEYWORDS:
             nxt = text[j + 1] if j + 1 < len(text) else "\n"
             if nxt in LETTERS or nxt == "_":

@@ -1,8 +1,8 @@
-"""Recursive-descent parser for CL 800 programs and external lists (digest §3.2).
+"""Recursive-descent parser for CL 800 programs and external lists (CL 800 manual §5, L972-4590).
 
 Errors are collected (the parser resynchronises at the next ``;``); the caller
 reports the first one, like the WS 800 A, or all of them for ``check --all``.
-Leniencies for the manual's own examples (digest §3.2, §11): ``;`` before
+Leniencies for the manual's own examples (CL 800 manual §5, L972-4590): ``;`` before
 ELSE/ENDIF/END optional, ``:=`` for ``=``, ``,`` or ``.`` in IF INT pairs,
 ``CHAN = n`` or ``CHAN(n)``, optional ``OF`` in CASE and ``:`` after CONST/POINTER.
 """
@@ -22,7 +22,7 @@ TYPES = ("INTEGER", "REAL", "PATTERN", "BOOLEAN")
 #: words that close a statement list; a missing ";" directly before them is accepted
 CLOSERS = ("END", "ELSE", "ENDIF", "UNTIL", "OTHERWISE", "ENDCASE")
 MAX_INT = 99_999_999
-MAX_DEPTH = 9  # control constructs inside each other: one decimal digit of the block number (digest §5.5), E058
+MAX_DEPTH = 9  # control constructs inside each other: one decimal digit of the block number (CL 800 manual L6427-6469), E058
 
 
 class Parser:
@@ -489,7 +489,7 @@ class Parser:
         raise self.fail("E054" if w in SYS_READS or w in FUNCTIONS else "E061", t)
 
     def split_dotted(self) -> None:
-        """``deg_ref.THEN`` (legacy dotted names, digest §11 A23): split a keyword or bit constant off."""
+        """``deg_ref.THEN`` (legacy dotted names): split a keyword or bit constant off."""
         t = self.tok
         if "." not in t.text.rstrip("."):
             return
@@ -604,7 +604,7 @@ class Parser:
         return then, orelse
 
     def int_pair(self):
-        """``<Value1>.<Value2>`` or ``<Value1>,<Value2>`` of IF INT / WHILE INT (digest §11 A8)."""
+        """``<Value1>.<Value2>`` or ``<Value1>,<Value2>`` of IF INT / WHILE INT (CL 800 manual L1717; L2060)."""
         t = self.tok
         if t.kind == "REAL":
             self.advance()

@@ -1,4 +1,4 @@
-"""CL 800 statements and functions as tables: name -> @ code, argument count (digest §4, manual ch.5/ch.10).
+"""CL 800 statements and functions as tables: name -> @ code, argument count (CL 800 manual §5.3, L1397-4590; §10, L6332-6824).
 
 Argument kinds: ``v`` = a <Var> (R parameter or pointer, written), ``x`` = a <Value>
 (constant, R parameter or pointer; any expression, evaluated into a temporary first),

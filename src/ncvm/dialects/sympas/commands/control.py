@@ -19,7 +19,7 @@ def cl(card, tk, axes, loc):
 
 
 def clv(card, tk, axes, loc):
-    """CLV closes the loop like CL but keeps the axes' velocity (digest 6.6.9, A-51; the manual's example
+    """CLV closes the loop like CL but keeps the axes' velocity (rw_SymPas manual §6.5-6.6, L1614-2233; L1686; the manual's example
     follows it with JS "then stop the axes immediately"): a running profile gives way to a run at the
     velocity the axis has, until a stop. A path cannot go on for part of its axes: all axes of a path
     move or chain run on at their share of the path velocity."""
@@ -112,7 +112,7 @@ def uf(card, tk, axes, loc):
 
 def utrovr(card, tk, axes, loc):
     """TROVR becomes the path override of these axes ("reduzierte Bahngeschwindigkeit für Achsen A1
-    und A2", L2189): their running path moves reach it linearly over TROVRST seconds (digest §10.5),
+    und A2", L2189): their running path moves reach it linearly over TROVRST seconds (ncvm's reading; the rw_SymPas manual is silent),
     and their later path moves, from any task, are planned with it. A group runs with the smallest
     override of its axes; 0 holds it (feed hold)."""
     ovr = max(0.0, float(tk.sysp["TROVR"]))

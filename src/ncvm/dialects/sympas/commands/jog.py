@@ -17,7 +17,7 @@ def _jogging(card, a, t: float) -> bool:
 
 def _jog(card, tk, items, loc, relative: bool, wait: bool):
     """JA/JR: each axis jogs to its target with jac, jvl * jovr and the end velocity jtv. A new JA/JR
-    on a jogging axis re-targets it on the fly (digest §10.5): it goes on from where it is with the
+    on a jogging axis re-targets it on the fly (ncvm's reading; the rw_SymPas manual is silent): it goes on from where it is with the
     velocity it has, brakes with jac and turns back when the new target lies behind its braking
     distance, and slows down with jac to a lowered jvl."""
     t = tk.time
@@ -60,7 +60,7 @@ def _jog(card, tk, items, loc, relative: bool, wait: bool):
         if len(segs) > 1:
             owner = Chain(segs, start, [0.0] * len(segs), [0] * len(segs))
             owner.jog = True
-        if v1 > 0.0:  # arrive with the jog target velocity and keep moving (digest §10.5, A-60)
+        if v1 > 0.0:  # arrive with the jog target velocity and keep moving (rw_SymPas manual L1733; L1404; L1414)
             sign = 1.0 if p1 >= segs[-1].p0[0] else -1.0
             card.scheduler.add_timed(owner.t1, _drift_action(card, a, owner, v1, sign, src))
         a.move = owner
@@ -142,7 +142,7 @@ def jrw(card, tk, items, loc):
 
 def _home(card, tk, axes, loc, direction: int, wait: bool, limits=None):
     """JHL/JHR/JHI: search toward the REF switch (or the next index mark) at hvl; the axis is homed, and
-    REF becomes its zero, when it reaches it (digest §10.5). A REF search latches lp there and brakes
+    REF becomes its zero, when it reaches it (ncvm's reading; the rw_SymPas manual is silent). A REF search latches lp there and brakes
     with hac, so the axis stops hvl^2 / (2 hac) behind REF; an index search stops on the mark.
     JHL/JHR/JHI only start the search (a JS before REF leaves the axis unhomed); the W forms wait."""
     t = tk.time

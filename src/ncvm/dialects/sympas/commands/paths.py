@@ -127,7 +127,7 @@ def _circle(card, tk, items, loc, relative: bool, wait: bool, target: bool = Fal
     vals = (items[0][1] * sc[0], items[1][1] * sc[1])
     phi_deg = tk.sysp["PHI"]
     if target:
-        # target-point mode: the circle items give the end point, DTCA1/2 the centre (digest)
+        # target-point mode: the circle items give the end point, DTCA1/2 the centre (rw_SymPas manual L1918; L1931; L1921)
         rel_center = relative or bool(card.cfg.dtca_always_relative)
         d1, d2 = tk.sysp["DTCA1"] * sc[0], tk.sysp["DTCA2"] * sc[1]
         c = (q0[0] + d1, q0[1] + d2) if rel_center else (d1 + qs[0], d2 + qs[1])
@@ -206,7 +206,7 @@ def _circle3d(card, tk, items, loc, relative: bool, wait: bool, target: bool = F
         return then_wait(card, tk, axes, wait)
     n = tuple(x / nl for x in n)
     c = tuple(p0[k] + vals[k] if relative else vals[k] + sh[k] for k in range(3))
-    # the centre is projected into the plane through p0 (digest §10.5: parallel plane through p0)
+    # the centre is projected into the plane through p0 (ncvm's reading, a parallel plane through p0; the manual is silent)
     off = sum((p0[k] - c[k]) * n[k] for k in range(3))
     c = tuple(c[k] + off * n[k] for k in range(3))
     phi = math.radians(tk.sysp["PHI"])

@@ -271,7 +271,7 @@ def _running_chain(card, axes, t: float):
 def _join(card, tk, chain, segs: list, targets: list, mode: int, ssf_after: list) -> None:
     """Segments spooled and started while ``chain`` runs continue it: its segments not begun yet, and
     the running one if it has not begun its final ramp (Profile.replannable), are planned anew with
-    the new ones by the look-ahead, so the axes do not stop at the old end (digest §10.5, L1391)."""
+    the new ones by the look-ahead, so the axes do not stop at the old end (rw_SymPas manual L1391)."""
     now = tk.time
     sched = card.scheduler  # other tasks lag by a slice at most
     chain.prune(now - sched.slice - sched.servo, card.timeline)
