@@ -1,8 +1,8 @@
 """Independent review of issue 15, rw_SymPas item 7 (figures in the program's terms).
 
 Found by running programs as a user of the APCI-8001 would (docs/sympas.md, "The `sympas` part of the
-JSON document"): the card's axes are A1, A2 ... (digest sympas.md §10, "The user-visible position equals
-machine position - zero offsets", L1399 dp in user units).
+JSON document"): the card's axes are A1, A2 ... (rw_SymPas manual L1399: dp in user units, the user-visible
+position being the machine position less the zero offsets).
 """
 
 import json

@@ -2,8 +2,8 @@
 
 docs/sympas.md "Software limits": "A move that would carry an axis from inside its software limits
 `sll`/`slr` across one is stopped where it gets there"; EVLSS (L1584-1586) fires when the axis position
-passes a limit configured with TOM or SMA. Digest sympas.md §10.6 (A-62): "dp, rp, tp, lp and sll/slr are
-all exposed in u" (the user coordinate, u = m - zerooffset - ZO), sll/slr stored in machine coordinates.
+passes a limit configured with TOM or SMA. rw_SymPas manual L1668-1672, L2144-2158, L1413: dp, rp, tp, lp and
+sll/slr are read in the user coordinate (u = m - zerooffset - ZO), sll/slr stored in machine coordinates.
 """
 
 import json

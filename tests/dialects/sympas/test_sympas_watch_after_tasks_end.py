@@ -1,6 +1,6 @@
 """The card watches its moves whether or not a task still runs (issue 15; soft limits L1490, EVLSS
 L1584-1586; SSF entries §6.6.62-64; home search §6.6 JHL/JHR), and reads sll/slr in the program's
-coordinates (digest §10.6, A-62: dp, sll/slr exposed in u = m - zerooffset, stored in machine coordinates).
+coordinates (rw_SymPas manual L1668-1672; L2144-2158; L1413: dp, sll/slr exposed in u = m - zerooffset, stored in machine coordinates).
 
 A move started without W by a program that then ends goes on on the card: what the card does to it on
 the way (stop it at a soft limit, act on an SSF entry between spooled profiles, latch the home position)

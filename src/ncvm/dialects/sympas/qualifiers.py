@@ -14,7 +14,7 @@ from .events import input_active
 from .motion import Chain
 from .values import fault
 
-#: the software limits: read and written in the user's coordinates, kept in the machine's (digest §10.6, A-62)
+#: the software limits: read and written in the user's coordinates, kept in the machine's (rw_SymPas manual L1668-1672; L2144-2158; L1413)
 LIMITS = ("sll", "slr")
 
 
