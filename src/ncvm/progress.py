@@ -9,6 +9,7 @@ rich is loaded by the thread when it first draws: a run that ends within a secon
 
 from __future__ import annotations
 
+import os
 import sys
 import threading
 
@@ -18,13 +19,22 @@ from .timefmt import hms
 INTERVAL_S = 0.2
 
 
+def start_delay(default: float) -> float:
+    """How long a run goes on before the display shows: ``NCVM_PROGRESS_DELAY`` (seconds, 0: at once) when
+    set to a number, else the caller's default (a short run never draws)."""
+    try:
+        return max(0.0, float(os.environ["NCVM_PROGRESS_DELAY"]))
+    except (KeyError, ValueError):
+        return default
+
+
 class Progress:
     """``with Progress(enabled, total=N) as p:``; a single run sets ``p.session``, a batch calls :meth:`done`."""
 
     def __init__(self, enabled: bool, total: int | None = None, delay: float = 1.0):
         self.enabled = enabled
         self.total = total  # programs of a batch; None: a single run
-        self.delay = delay
+        self.delay = start_delay(delay)
         self.session = None
         self.programs = self.failed = self.moves = 0
         self.cycle_s = 0.0

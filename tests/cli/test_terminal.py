@@ -146,12 +146,13 @@ MESSAGES = "".join(f"G1 X{i % 100} Y{i % 7} F3000\n" + ("(MSG, hello)\n" if i % 
 
 def test_operator_output_keeps_its_own_lines_and_its_own_stream(work):
     (work / "msg.din").write_text(MESSAGES)
-    code, seen = at_terminal(["run", "msg.din"], work)
+    env = terminal_env(NCVM_PROGRESS_DELAY="0")  # drawn from the start: a loaded machine may end the run early
+    code, seen = at_terminal(["run", "msg.din"], work, env=env)
     assert code == 0 and "running" in seen
     lines = [line for line in re.split(r"[\r\n]", seen) if "hello" in line]
     assert len(lines) == 5 and all("moves" not in line for line in lines)
     # stdout into a file, stderr on the terminal: the file gets the output, plain, the terminal the display
     with (work / "out.txt").open("w") as out:
-        code, seen = at_terminal(["run", "msg.din"], work, stdout=out)
+        code, seen = at_terminal(["run", "msg.din"], work, env=env, stdout=out)
     assert code == 0 and "running" in seen and "hello" not in seen
     assert (work / "out.txt").read_text().splitlines().count("hello") == 5
