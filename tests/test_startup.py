@@ -76,3 +76,21 @@ def test_a_run_with_moves_and_a_plot_loads_what_it_uses(tmp_path):
     assert code == 0
     assert {"numpy", "matplotlib"} <= modules
     assert (tmp_path / "p.png").stat().st_size > 0
+
+
+def test_a_cpl_run_that_draws_and_shows_nothing_imports_no_numpy(tmp_path):
+    """The CPL screen's pixels and text cells are made when the program first draws or shows something."""
+    (tmp_path / "p.cpl").write_text("10 A = 0.5 : I% = 0\n20 WHILE I% < 3 DO\n30 A = A * 2 : I% = I% + 1\n"
+                                    "40 END\nM30\n")
+    code, modules = loaded(["run", "--state", str(tmp_path / ".ncvm"), "p.cpl"], tmp_path)
+    assert code == 0
+    assert top(modules, HEAVY) - {"sqlite3"} == set()
+    assert top(modules, DIALECTS) == {"ncvm.dialects.cpl"}
+
+
+def test_a_cpl_run_that_draws_makes_its_canvas(tmp_path):
+    (tmp_path / "p.cpl").write_text("10 GWD(0, 100, 0, 100)\n20 LIN(10, 10, 50, 50)\nM30\n")
+    code, modules = loaded(["run", "--state", str(tmp_path / ".ncvm"), "--screen", "s.png", "p.cpl"], tmp_path)
+    assert code == 0
+    assert "numpy" in modules
+    assert (tmp_path / "s.png").stat().st_size > 0
