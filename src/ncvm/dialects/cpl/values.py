@@ -17,11 +17,9 @@ from .io.values import CplText
 _F32 = struct.Struct("f")
 _pack = _F32.pack  # native: a value beyond the range packs as infinity, without OverflowError
 _unpack = _F32.unpack
-# Generated code rounds REAL stores inline with these (cpl.codegen.real_store). The standard size refuses a
-# finite value beyond the REAL range (OverflowError) where the native one gives infinity; both round alike.
-_STD32 = struct.Struct("<f")
-pack32 = _STD32.pack
-unpack32 = _STD32.unpack
+# Generated code rounds REAL stores inline through a C float (cpl.codegen.real_store), one per unit of a run:
+# setting it rounds a number to nearest-even binary32 as packing does, a finite value beyond the range to
+# infinity instead of OverflowError.
 INT_MIN = -2147483648
 INT_MAX = 2147483647
 
