@@ -94,3 +94,22 @@ def test_a_cpl_run_that_draws_makes_its_canvas(tmp_path):
     assert code == 0
     assert "numpy" in modules
     assert (tmp_path / "s.png").stat().st_size > 0
+
+
+def test_a_one_block_run_imports_no_sink_it_was_not_asked_for_and_no_scenario_events(tmp_path):
+    (tmp_path / "p.ngc").write_text("M2\n")
+    code, modules = loaded(["run", "--state", str(tmp_path / ".ncvm"), "p.ngc"], tmp_path)
+    assert code == 0
+    unused = {"ncvm.sinks.trace", "ncvm.sinks.plot", "ncvm.sinks.plotview", "ncvm.translate",
+              "ncvm.machine.scenario", "tempfile", "secrets"}
+    assert unused & modules == set()
+
+
+def test_a_run_with_a_trace_and_gcode_loads_and_writes_them(tmp_path):
+    (tmp_path / "p.ngc").write_text("G1 X10 Y5 F1000\nM2\n")
+    code, modules = loaded(["run", "--state", str(tmp_path / ".ncvm"), "--trace", "t.jsonl", "--gcode", "g.ngc",
+                            "p.ngc"], tmp_path)
+    assert code == 0
+    assert {"ncvm.sinks.trace", "ncvm.translate"} <= modules
+    assert '"feed"' in (tmp_path / "t.jsonl").read_text()
+    assert "G1" in (tmp_path / "g.ngc").read_text()
