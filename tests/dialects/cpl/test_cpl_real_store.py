@@ -15,7 +15,6 @@ from hypothesis import strategies as st
 from ncvm.dialects.cpl import ast as A
 from ncvm.dialects.cpl import codegen
 from ncvm.dialects.cpl import values as V
-from ncvm.dialects.cpl.checker import check
 from ncvm.dialects.cpl.linker import link
 
 FLT_MAX = 3.4028234663852886e38
@@ -119,17 +118,8 @@ def test_inline_rounding_agrees_with_f32(x):
         assert expected is None and (got is None or not math.isfinite(got))
 
 
-def generated(tmp_path, machine, text: str) -> str:
-    path = tmp_path / "p.cpl"
-    path.write_text(text)
-    ln = link(str(path), text, machine).units[str(path)]
-    types, diags = check(ln)
-    assert not diags
-    return codegen.generate(ln, types)[0].text
-
-
-def test_a_real_store_rounds_inline_and_tests_for_infinity_only_when_unbounded(tmp_path, reference):
-    text = generated(tmp_path, reference(), "10 I% = 3 : D! = 2.0 : S = 1.5\n20 X = I% * 0.001\n"
+def test_a_real_store_rounds_inline_and_tests_for_infinity_only_when_unbounded(generated):
+    text = generated("10 I% = 3 : D! = 2.0 : S = 1.5\n20 X = I% * 0.001\n"
                      "30 S = S * 0.999 + SIN(X) * COS(X) + SQRT(ABS(S) + 1)\n40 Y = D! * 2\nM30\n")
     stores = [line.strip() for line in text.splitlines() if "_r32" in line]
     assert stores == [

@@ -17,15 +17,14 @@ from .io.values import CplText
 _F32 = struct.Struct("f")
 _pack = _F32.pack  # native: a value beyond the range packs as infinity, without OverflowError
 _unpack = _F32.unpack
-# Generated code rounds REAL stores inline through a C float (cpl.codegen.real_store), one per unit of a run:
-# setting it rounds a number to nearest-even binary32 as packing does, a finite value beyond the range to
-# infinity instead of OverflowError.
 INT_MIN = -2147483648
 INT_MAX = 2147483647
 
 
 def f32(v):
-    """Round to binary32, as a REAL variable stores it."""
+    """Round to binary32, as a REAL variable stores it. Generated code rounds a store into a REAL local
+    through a C float instead (cpl.codegen.real_store) and calls this for what that refuses or makes
+    infinite, so that this names the error."""
     try:
         r = _unpack(_pack(v))[0]
     except OverflowError:
