@@ -76,3 +76,40 @@ def test_a_run_with_moves_and_a_plot_loads_what_it_uses(tmp_path):
     assert code == 0
     assert {"numpy", "matplotlib"} <= modules
     assert (tmp_path / "p.png").stat().st_size > 0
+
+
+def test_a_cpl_run_that_draws_and_shows_nothing_imports_no_numpy(tmp_path):
+    """The CPL screen's pixels and text cells are made when the program first draws or shows something."""
+    (tmp_path / "p.cpl").write_text("10 A = 0.5 : I% = 0\n20 WHILE I% < 3 DO\n30 A = A * 2 : I% = I% + 1\n"
+                                    "40 END\nM30\n")
+    code, modules = loaded(["run", "--state", str(tmp_path / ".ncvm"), "p.cpl"], tmp_path)
+    assert code == 0
+    assert top(modules, HEAVY) - {"sqlite3"} == set()
+    assert top(modules, DIALECTS) == {"ncvm.dialects.cpl"}
+
+
+def test_a_cpl_run_that_draws_makes_its_canvas(tmp_path):
+    (tmp_path / "p.cpl").write_text("10 GWD(0, 100, 0, 100)\n20 LIN(10, 10, 50, 50)\nM30\n")
+    code, modules = loaded(["run", "--state", str(tmp_path / ".ncvm"), "--screen", "s.png", "p.cpl"], tmp_path)
+    assert code == 0
+    assert "numpy" in modules
+    assert (tmp_path / "s.png").stat().st_size > 0
+
+
+def test_a_one_block_run_imports_no_sink_it_was_not_asked_for_and_no_scenario_events(tmp_path):
+    (tmp_path / "p.ngc").write_text("M2\n")
+    code, modules = loaded(["run", "--state", str(tmp_path / ".ncvm"), "p.ngc"], tmp_path)
+    assert code == 0
+    unused = {"ncvm.sinks.trace", "ncvm.sinks.plot", "ncvm.sinks.plotview", "ncvm.translate",
+              "ncvm.machine.scenario", "tempfile", "secrets"}
+    assert unused & modules == set()
+
+
+def test_a_run_with_a_trace_and_gcode_loads_and_writes_them(tmp_path):
+    (tmp_path / "p.ngc").write_text("G1 X10 Y5 F1000\nM2\n")
+    code, modules = loaded(["run", "--state", str(tmp_path / ".ncvm"), "--trace", "t.jsonl", "--gcode", "g.ngc",
+                            "p.ngc"], tmp_path)
+    assert code == 0
+    assert {"ncvm.sinks.trace", "ncvm.translate"} <= modules
+    assert '"feed"' in (tmp_path / "t.jsonl").read_text()
+    assert "G1" in (tmp_path / "g.ngc").read_text()

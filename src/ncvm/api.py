@@ -24,12 +24,10 @@ from .runtime.memory import memory_limit
 from .runtime.session import RunOptions, RunSinks, Session, run_guarded, set_default_sinks
 from .sinks.areas import zone_check
 from .sinks.limits import LimitCheck
-from .sinks.plot import PlotPoints
 from .sinks.toolpath import MotionSummary, ToolpathRecorder
-from .sinks.trace import JsonlTrace
 from .source import read_text
-from .translate.output import TranslationFile
-from .translate.targets import LINUXCNC
+
+# The trace, the G-code translation and the plot points are imported by the runs that ask for them (start-up).
 
 
 def read_source(path: str | Path) -> str:
@@ -152,15 +150,23 @@ def run_sinks(machine: Machine, options: RunOptions, program: str = "the program
     checks.add(LimitCheck(machine.axes, recorder))  # reported first, before the front end's checks
     canon: list[CanonSink] = [recorder]
     if options.trace:
+        from .sinks.trace import JsonlTrace
+
         canon.append(JsonlTrace(options.trace))
     gcode = None
     if options.gcode:
+        from .translate.output import TranslationFile
+        from .translate.targets import LINUXCNC
+
         gcode = TranslationFile(options.gcode, LINUXCNC, program, machine.name,
                                 scenario_given=bool(options.scenario or machine.scenario))
         canon.append(gcode.writer)
     canon.extend(options.extra_sinks)
-    plot = PlotPoints(recorder, frame=options.plot_frame) if options.plot else None
-    if plot is not None:
+    plot = None
+    if options.plot:
+        from .sinks.plot import PlotPoints
+
+        plot = PlotPoints(recorder, frame=options.plot_frame)
         canon.append(plot)  # told of the work frame and of the channel (rw_SymPas task) of the moves
     return RunSinks(canon, recorder, checks, plot, gcode)
 
@@ -189,9 +195,12 @@ def run_program(path: str | Path, dialect: str | None = None, machine: Machine |
         with StateLock(options.state_dir):  # the controller's memory: one run at a time, refused at once
             sinks = run_sinks(m, options, Path(path).name)
             session = Session(m, options, dialect=d, sinks=sinks)
-            for sink in sinks.canon:
-                if isinstance(sink, JsonlTrace):  # the trace names the user's source lines (a CL 800 .cl8)
-                    sink.place = lambda src: session.source_place(src)
+            if options.trace or options.extra_sinks:  # the trace names the user's source lines (a CL 800 .cl8)
+                from .sinks.trace import JsonlTrace
+
+                for sink in sinks.canon:
+                    if isinstance(sink, JsonlTrace):
+                        sink.place = lambda src: session.source_place(src)
             error: Diagnostic | None
             try:
                 error = run_guarded(session, lambda: front.run(str(path), text, session))

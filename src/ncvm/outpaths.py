@@ -10,7 +10,6 @@ from __future__ import annotations
 import errno
 import os
 import re
-import tempfile
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -138,6 +137,8 @@ def _check_folder(out: Output) -> None:
     elif not real.exists():  # made when it is first written, in a folder that exists
         folder, shown = real.parent, shown.parent
         _check_parent(out, folder, shown)
+    import tempfile  # only a command with an output folder to try pays for it (start-up)
+
     try:
         tempfile.TemporaryFile(dir=folder).close()
     except OSError as e:

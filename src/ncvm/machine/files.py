@@ -29,7 +29,6 @@ from __future__ import annotations
 
 import errno
 import os
-import secrets
 import stat
 from collections.abc import Callable, Iterable, Iterator
 from contextlib import contextmanager
@@ -301,7 +300,7 @@ class FileRoot:
             if st is not None:
                 self.require_file(st, place.shown)
             mode = stat.S_IMODE(st.st_mode) if st is not None else 0o644
-            tmp = f".{name}.{secrets.token_hex(4)}.tmp"
+            tmp = f".{name}.{os.urandom(4).hex()}.tmp"
             fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL | os.O_NOFOLLOW | os.O_CLOEXEC, 0o600, dir_fd=dfd)
             try:
                 with os.fdopen(fd, "wb") as f:

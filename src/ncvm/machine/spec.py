@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from .scenario import CHECKS as EVENT_CHECKS
+from .eventforms import CHECKS as EVENT_CHECKS
 from .schema import (
     Check,
     Ctx,

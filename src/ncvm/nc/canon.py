@@ -288,7 +288,7 @@ def _two_maker(name: str):
     return namespace["make"]
 
 
-_TWO = {name: _two_maker(name) for name in _METHODS}
+_TWO: dict = {}  # the makers, compiled when a call name first has two sinks (start-up)
 
 
 def _nothing(*args) -> None:
@@ -306,7 +306,8 @@ def _fan_out(bound, name: str):
     if len(bound) == 1:
         return bound[0]
     if len(bound) == 2:
-        return _TWO[name](*bound)
+        make = _TWO.get(name) or _TWO.setdefault(name, _two_maker(name))
+        return make(*bound)
 
     def many(*args):
         for f in bound:

@@ -38,3 +38,22 @@ def reference(tmp_path: Path, channel: int = 1, cpl: dict | None = None, **extra
 def reference_fixture(tmp_path: Path):
     """reference(channel=1, cpl=None, **machine_tables) -> the reference machine in tmp_path."""
     return lambda channel=1, cpl=None, **extra: reference(tmp_path, channel, cpl, **extra)
+
+
+@pytest.fixture
+def generated(tmp_path: Path):
+    """generated(text) -> the Python the code generator writes for the CPL program ``text`` (checked without
+    errors) on the reference machine."""
+    from ncvm.dialects.cpl import codegen
+    from ncvm.dialects.cpl.checker import check
+    from ncvm.dialects.cpl.linker import link
+
+    def make(text: str) -> str:
+        path = tmp_path / "p.cpl"
+        path.write_text(text)
+        ln = link(str(path), text, reference(tmp_path)).units[str(path)]
+        types, diags = check(ln)
+        assert not diags
+        return codegen.generate(ln, types)[0].text
+
+    return make

@@ -206,6 +206,8 @@ class Gen:
             codes.append(c)
             types.append(ty)
         if len(codes) == 1 and types[0] in NUMERIC and e.name in INLINE:
+            if e.name == "INT" and magnitude(e.args[0]) < 2147483648.0:
+                return f"int({codes[0]})"  # finite and within the INTEGER range: nothing to test
             return INLINE[e.name].format(codes[0])
         fn = f"_F_{e.name.replace('$', '_S')}"
         if e.name == "STR$" and types[-1] == "D":
@@ -374,16 +376,21 @@ class Gen:
         self.emit(f"{name}{''.join(f'[{i}]' for i in idx)} = {self.convert(v.type, e, code, ty)}", line)
 
     def real_store(self, name: str, e, code: str, line: int) -> None:
-        """A computed value stored into a REAL local, rounded to binary32 inline (CPL manual §2.4.3, L650-737): one struct
-        pack/unpack, no call. What packing refuses (a finite value beyond +/-3.4e38, NUL) goes to ``_f32``,
-        which raises the error it always raised; infinity or NaN packs without complaint, so it is tested first
-        unless :func:`magnitude` proves the expression finite. The variable keeps its old value when the store
-        fails."""
+        """A computed value stored into a REAL local, rounded to binary32 inline (CPL manual §2.4.3, L650-737), no call: set
+        and read back a C float (``_c32``, ctypes), which rounds as ``values.f32`` does. What it refuses (NUL,
+        a string) goes to ``_f32``, which raises the error it always raised. A value beyond +/-3.4e38 comes
+        back infinite (so does infinity, NaN as NaN): unless :func:`magnitude` proves the expression within
+        the REAL range, the result is tested and ``_f32`` names the error. The variable keeps its old value
+        when the store fails."""
         self.emit(f"_r32 = {code}", line)
-        if not magnitude(e) < 1e300:
-            self.emit("if _r32 - _r32: _f32(_r32)", line)
-        self.emit(f"try: {name} = _up32(_pk32(_r32))[0]", line)
-        self.emit(f"except Exception: {name} = _f32(_r32)", line)
+        self.emit("try: _c32.value = _r32", line)
+        self.emit("except Exception: _c32.value = _f32(_r32)", line)
+        if magnitude(e) < REAL_PROVEN:
+            self.emit(f"{name} = _c32.value", line)
+            return
+        self.emit("_t32 = _c32.value", line)
+        self.emit("if _t32 - _t32: _t32 = _f32(_r32)", line)
+        self.emit(f"{name} = _t32", line)
 
     def assign_global(self, s: A.Assign, code: str, ty: str) -> None:
         tv, e, line = s.target, s.expr, s.line
@@ -1105,6 +1112,9 @@ def _maybe_nul(e) -> bool:
 
 #: the bound of |value| a variable of each type holds: INTEGER 32 bits, REAL binary32 (FLT_MAX), BOOLEAN
 _HOLDS = {"I": 2147483648.0, "R": 3.4028234663852886e38, "B": 1.0}
+#: a bound below which a computed value is a finite REAL: under FLT_MAX (3.4028e38) by far more than the
+#: rounding of the bound's own arithmetic and of the expression's
+REAL_PROVEN = 3.4e38
 #: bounds of the built-ins written inline, from the bound of their argument
 _FUNC_BOUND = {"ABS": lambda b: b, "SIN": lambda b: 1.0, "COS": lambda b: 1.0, "SQRT": math.sqrt,
                "INT": lambda b: 2147483648.0}
@@ -1153,7 +1163,7 @@ HELPER_NAMES = (
     "_logic", "_lnot", "_ix", "_sv", "_view", "_setf", "_midw", "_dim", "_pdim", "_pstr", "_gfield", "_gset_s", "_pint",
     "_call", "_q", "_q3", "_drain", "_wait", "_Block", "_loose", "_word", "_mval", "_modal", "_modal_call",
     "_runaway", "_hook", "_caseval", "_nocall", "_msin", "_mcos", "_matan", "_msqrt",
-    "_io", "_Dbl", "_SView", "_nn", "_pk32", "_up32",
+    "_io", "_Dbl", "_SView", "_nn", "_c32",
 ) + tuple(f"_F_{name.replace('$', '_S')}" for name in FUNCTIONS)
 
 

@@ -17,17 +17,14 @@ from .io.values import CplText
 _F32 = struct.Struct("f")
 _pack = _F32.pack  # native: a value beyond the range packs as infinity, without OverflowError
 _unpack = _F32.unpack
-# Generated code rounds REAL stores inline with these (cpl.codegen.real_store). The standard size refuses a
-# finite value beyond the REAL range (OverflowError) where the native one gives infinity; both round alike.
-_STD32 = struct.Struct("<f")
-pack32 = _STD32.pack
-unpack32 = _STD32.unpack
 INT_MIN = -2147483648
 INT_MAX = 2147483647
 
 
 def f32(v):
-    """Round to binary32, as a REAL variable stores it."""
+    """Round to binary32, as a REAL variable stores it. Generated code rounds a store into a REAL local
+    through a C float instead (cpl.codegen.real_store) and calls this for what that refuses or makes
+    infinite, so that this names the error."""
     try:
         r = _unpack(_pack(v))[0]
     except OverflowError:

@@ -99,9 +99,7 @@ class Graphics:
         # colour codes: lines/circles, text, text background, softkey text, softkey background, graphics bg
         self.line_color, self.text_color, self.text_bg = 1, 2, 0
         self.softkey_color, self.softkey_bg, self.graphics_bg = 3, 4, 0
-        self.canvas = np.zeros((HEIGHT, WIDTH, 3), dtype=np.uint8)
-        #: canvas pixels that hold GPR text (the PNG draws that text again, sharply, over them)
-        self.text_pixels = np.zeros((HEIGHT, WIDTH), dtype=bool)
+        self._blank = self.rgb(self.graphics_bg)  # the colour the canvas starts in (made at first use)
         self.line_style = 0
         self.window = Window(0, 632, 0, GRAPH_TOP)
         self.user: Window | None = None  # MWD
@@ -112,7 +110,17 @@ class Graphics:
         self.warn = warn
         self.warnings: list[CplWarning] = []  # kept only while no warn listener takes them
         self.foreground = True
-        self._clear_rect(0, 0, WIDTH, HEIGHT)
+
+    def __getattr__(self, name: str):
+        """``canvas`` (the RGB pixels, rows from the top) and ``text_pixels`` (those that hold GPR text, which
+        the PNG draws again, sharply, over them) are made at their first use: a program that draws nothing
+        imports no numpy (start-up). Made, they are plain attributes."""
+        if name not in ("canvas", "text_pixels"):
+            raise AttributeError(name)
+        self.canvas = np.empty((HEIGHT, WIDTH, 3), dtype=np.uint8)
+        self.canvas[:, :] = self._blank
+        self.text_pixels = np.zeros((HEIGHT, WIDTH), dtype=bool)
+        return self.__dict__[name]
 
     # -- colours ---------------------------------------------------------------------------
     def rgb(self, code: int) -> RGB:

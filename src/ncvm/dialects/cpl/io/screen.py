@@ -236,7 +236,6 @@ class Screen(Graphics):
     def __init__(self, keys: KeyScript | str | None = None, mode: OutputMode | None = None,
                  bitmap_dir: FileRoot | Path | str | None = None, warn: WarnFn | None = None, typ2: bool = False):
         self.chars = [[" "] * COLUMNS for _ in range(LINES)]
-        self.cells = np.full((LINES, COLUMNS, 4), -1, dtype=np.int16)  # fg, bg, style; -1 = empty cell
         super().__init__(bitmap_dir=bitmap_dir, warn=warn)
         self.keys = keys if isinstance(keys, KeyScript) else KeyScript(keys or "")
         self.mode = mode or OutputMode()
@@ -252,6 +251,14 @@ class Screen(Graphics):
         self.on_input = None  # called with what the operator gave (a run-time input: ncvm translate marks it)
         self.editing: str | None = None  # the variable whose INP field waits for the operator
         self.labels: list[tuple[int, int, str, tuple[int, int, int, int], int]] = []  # GPR texts
+
+    def __getattr__(self, name: str):
+        """``cells`` (per text cell: foreground, background, style, used; -1: empty) is made at its first use,
+        as the canvas is (Graphics.__getattr__): a program that shows nothing imports no numpy."""
+        if name != "cells":
+            return super().__getattr__(name)
+        self.cells = np.full((LINES, COLUMNS, 4), -1, dtype=np.int16)
+        return self.cells
 
     # -- text ------------------------------------------------------------------------------
     @staticmethod
@@ -311,7 +318,8 @@ class Screen(Graphics):
 
     def _clear_text(self) -> None:
         self.chars = [[" "] * COLUMNS for _ in range(LINES)]
-        self.cells[...] = -1
+        if "cells" in self.__dict__:
+            self.cells[...] = -1
 
     def CLS(self) -> None:  # noqa: N802
         super().CLS()
