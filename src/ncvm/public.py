@@ -122,7 +122,10 @@ def _program_file(program: str | Path, dialect: str | None):
     """The program as a file, and the dialect of program text (None for a file): program text is written
     to a temporary folder, removed after."""
     if isinstance(program, str) and ("\n" in program or "\r" in program):
-        d = dialect or detect_dialect(TEXT_NAME, program)
+        try:
+            d = dialect or detect_dialect(TEXT_NAME, program)
+        except UsageError as e:  # the command line's words for the API's
+            raise UsageError(str(e).replace("pass --dialect", "pass dialect=")) from None
         ext = next(e for e, name in EXTENSIONS.items() if name == d)
         with tempfile.TemporaryDirectory(prefix="ncvm-text-") as tmp:
             path = Path(tmp) / f"program{ext}"
