@@ -1,4 +1,5 @@
-"""The public Python API: load a machine, check, run and compile programs.
+"""The engine of runs, checks and compiles under the command line and the documented Python API
+(:mod:`ncvm.public`, docs/api.md).
 
 A run is put together here: the API chooses the canon sinks from the run options (toolpath recorder,
 soft-limit check, trace, G-code, plot points), hands them to the :class:`Session` with the run's checks
@@ -255,7 +256,7 @@ def run_program(path: str | Path, dialect: str | None = None, machine: Machine |
 def run(path: str | Path, dialect: str | None = None, machine: Machine | str | Path | None = None,
         options: RunOptions | None = None) -> tuple[dict, Session]:
     """Run a program (as :func:`run_program`); returns the result document of ``ncvm run --json`` and the
-    session."""
+    session: the command line's form. The documented Python API is ``ncvm.run`` (:mod:`ncvm.public`)."""
     result = run_program(path, dialect, machine, options)
     return result.to_json(), result.session
 
