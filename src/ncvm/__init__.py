@@ -15,6 +15,7 @@ __version__ = "0.1.0"
 _API = {
     "run": "public", "check": "public", "batch": "public", "Batch": "public",
     "RunResult": "api", "compile_program": "api", "RunOptions": "runtime.session", "Diagnostic": "diagnostics",
+    "UsageError": "diagnostics",
     "Machine": "machine.model", "load_machine": "machine.config", "MotionSummary": "sinks.toolpath",
 }
 

@@ -88,12 +88,13 @@ class Batch(list):
 
 
 def batch(paths, dialect: str | None = None, machine: str | Path | None = None, jobs: int | None = None,
-          cluster: str | None = None, state: str | Path | None = None, shared_state: bool = False,
+          cluster: str | None = None, state: str | Path = ".ncvm", shared_state: bool = False,
           max_steps: int = RunOptions.max_steps, max_memory: int | None = None) -> Batch:
     """Run every main program of ``paths`` (files and folders) as ``ncvm run PATHS...`` does (docs/batch.md):
     the same programs, machine files, results. ``jobs``: local processes (default: the cores; 1: this
     process); ``cluster``: the address of a dask scheduler (``ncvm[cluster]``). ``state``: the permanent
-    state every program starts from (a copy each; ``shared_state``: that directory itself, in turn)."""
+    state every program starts from, as ``--state`` (a copy each, an absent one empty; ``shared_state``:
+    that directory itself, in turn, its writes kept)."""
     if jobs and cluster:
         raise UsageError("jobs and cluster exclude each other: the cluster's workers run the programs")
     if isinstance(paths, (str, Path)):

@@ -130,3 +130,15 @@ def test_a_dask_local_cluster_gives_the_same(archive, in_process):
         remote = ncvm.batch(["examples", "bad"], cluster=cluster.scheduler_address, state=archive / "c-state")
     assert [r.to_json() for r in remote] == [r.to_json() for r in in_process]
     assert remote.summary["cluster"]["workers"] == 2
+
+
+def test_a_batch_starts_from_a_copy_of_ncvm_as_the_command_line(tmp_path, monkeypatch):
+    """The default ``state`` is ``--state``'s: .ncvm of the current directory, copied for each program."""
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "count.cpl").write_text("10 IF @1 = NUL THEN @1 = 0 ENDIF\n20 @1 = @1 + 1\nM30\n")
+    assert ncvm.batch("count.cpl", jobs=1)[0].variables["@1"] == 1  # no .ncvm: an empty memory
+    assert ncvm.run("count.cpl").variables["@1"] == 1  # kept in .ncvm
+    counted = ncvm.batch("count.cpl", jobs=1)
+    assert counted[0].variables["@1"] == 2 and "a copy of .ncvm" in counted.summary["state"]
+    assert counted[0].to_json()["variables"] == {"@1": 2}
+    assert ncvm.run("count.cpl").variables["@1"] == 2  # the batch wrote nothing back
