@@ -9,7 +9,7 @@ $(BIN)/ncvm: pyproject.toml
 	@command -v $(PY) >/dev/null 2>&1 || { echo "python3.11 not found; set PY=python3"; exit 2; }
 	$(PY) -m venv $(VENV)
 	$(BIN)/pip install -q --upgrade pip
-	$(BIN)/pip install -q -e '.[test,cluster]'
+	$(BIN)/pip install -q -e '.[test,cluster,frames]'
 	@touch $@
 
 # Run every program in examples/ on the built-in default machine, one plot each into out/.

@@ -1,4 +1,5 @@
-"""The public Python API: load a machine, check, run and compile programs.
+"""The engine of runs, checks and compiles under the command line and the documented Python API
+(:mod:`ncvm.public`, docs/api.md).
 
 A run is put together here: the API chooses the canon sinks from the run options (toolpath recorder,
 soft-limit check, trace, G-code, plot points), hands them to the :class:`Session` with the run's checks
@@ -13,7 +14,7 @@ from functools import partial
 from pathlib import Path
 from typing import Any
 
-from .diagnostics import CompileFailed, Diagnostic, UsageError
+from .diagnostics import CompileFailed, Diagnostic, Span, UsageError
 from .dialects import detect_dialect, get_dialect
 from .machine.config import load_machine, load_scenario
 from .machine.model import Machine
@@ -24,6 +25,7 @@ from .runtime.memory import memory_limit
 from .runtime.session import RunOptions, RunSinks, Session, run_guarded, set_default_sinks
 from .sinks.areas import zone_check
 from .sinks.limits import LimitCheck
+from .sinks.moves import MoveTable
 from .sinks.toolpath import MotionSummary, ToolpathRecorder
 from .source import read_text
 
@@ -78,11 +80,53 @@ class RunResult:
     steps: int
     limit_violations: list[str]  # soft limits first, then the front end's checks (work areas ...)
     extra: dict[str, Any]  # dialect-specific parts of the document (Session.extra)
-    session: Session = field(repr=False, compare=False)  # its recorder, plot points, screen ... for the caller
+    #: its recorder, plot points, screen ... for the caller; None for a program run by a batch elsewhere
+    session: Session | None = field(default=None, repr=False, compare=False)
+    path: str | None = None  # the program file; None for program text
+    machine: str | None = None  # the machine file (a batch names it; "built-in": the default machine)
+    move_table: MoveTable | None = field(default=None, repr=False, compare=False)  # recorded on request only
 
     @property
     def status(self) -> str:
         return "error" if self.error else "ok"
+
+    @property
+    def failed(self) -> bool:
+        """Stopped with an error or violated a limit (a soft limit, a CPL work area): a batch fails it."""
+        return bool(self.error or self.limit_violations)
+
+    @property
+    def moves(self):
+        """Every move of the run as a numpy structured array (:meth:`MoveTable.array`); only a run asked
+        for them records them (``ncvm.run(..., moves=True)``)."""
+        if self.move_table is None:
+            raise ValueError("the moves were not recorded: run the program with ncvm.run(..., moves=True)")
+        return self.move_table.array(self.session.axis_labels if self.session else None)
+
+    def moves_frame(self):
+        """:attr:`moves` as a pandas DataFrame (the optional extra ``ncvm[frames]``)."""
+        try:
+            import pandas
+        except ImportError:
+            raise ImportError("RunResult.moves_frame() needs pandas: pip install 'ncvm[frames]'") from None
+        return pandas.DataFrame(self.moves)
+
+    @classmethod
+    def from_record(cls, record: dict) -> RunResult:
+        """The result of a program as a batch reported it (:mod:`ncvm.archive.report`)."""
+        e = record["error"]
+        error = None
+        if e:
+            span = Span(e["file"], e["line"], e["column"]) if e["file"] and e["line"] else None
+            error = Diagnostic(e["code"], e["message"], span, notes=list(e.get("stack", ())))
+        m = record["motion"]
+        motion = MotionSummary(**m) if m else MotionSummary(0, 0, 0, 0.0, 0.0, {})
+        return cls(dialect=record["dialect"], error=error, output=record["output_lines"],
+                   output_dropped=record.get("output_dropped", 0), variables=record.get("variables", {}),
+                   position=record["position"], motion=motion, cycle_time_s=record["cycle_time_s"],
+                   cycle_time_model=record.get("cycle_time_model", ""), steps=record["steps"],
+                   limit_violations=record["limit_violations"], extra={}, path=record["path"],
+                   machine=record["machine"])
 
     @classmethod
     def of(cls, session: Session, recorder: ToolpathRecorder, error: Diagnostic | None) -> RunResult:
@@ -195,12 +239,9 @@ def run_program(path: str | Path, dialect: str | None = None, machine: Machine |
         with StateLock(options.state_dir):  # the controller's memory: one run at a time, refused at once
             sinks = run_sinks(m, options, Path(path).name)
             session = Session(m, options, dialect=d, sinks=sinks)
-            if options.trace or options.extra_sinks:  # the trace names the user's source lines (a CL 800 .cl8)
-                from .sinks.trace import JsonlTrace
-
-                for sink in sinks.canon:
-                    if isinstance(sink, JsonlTrace):
-                        sink.place = lambda src: session.source_place(src)
+            for sink in sinks.canon:  # the trace and the moves table name the user's source lines (a CL 800 .cl8)
+                if hasattr(sink, "place"):
+                    sink.place = lambda src: session.source_place(src)
             error: Diagnostic | None
             try:
                 error = run_guarded(session, lambda: front.run(str(path), text, session))
@@ -221,7 +262,7 @@ def run_program(path: str | Path, dialect: str | None = None, machine: Machine |
 def run(path: str | Path, dialect: str | None = None, machine: Machine | str | Path | None = None,
         options: RunOptions | None = None) -> tuple[dict, Session]:
     """Run a program (as :func:`run_program`); returns the result document of ``ncvm run --json`` and the
-    session."""
+    session: the command line's form. The documented Python API is ``ncvm.run`` (:mod:`ncvm.public`)."""
     result = run_program(path, dialect, machine, options)
     return result.to_json(), result.session
 

@@ -18,12 +18,13 @@ from .tasks import Settings, TaskBuilder, read_seed
 def run_batch(paths, dialect: str | None = None, machine: str | Path | None = None, jobs: int | None = None,
               cluster: str | None = None, state: str | Path | None = None, shared_state: bool = False,
               max_steps: int = 100_000_000, max_memory: int | None = None, found: Found | None = None,
-              on_record: Callable[[dict], None] | None = None) -> dict:
+              on_record: Callable[[dict], None] | None = None, details: bool = False) -> dict:
     """Run every main program of ``paths`` (files and folders); the report document (:mod:`.report`).
 
     Each program starts from the permanent state of ``state`` (a copy; none: empty) and its writes are
     reported, unless ``shared_state``: then the runs use ``state`` itself one at a time and their writes stay.
-    ``on_record`` is told of each program's record as it comes in (a progress display).
+    ``on_record`` is told of each program's record as it comes in (a progress display); ``details``: each
+    record also holds the run's variables (the Python API's results, ``ncvm.batch``).
     """
     started = time.perf_counter()
     found = found or discover(paths, dialect, machine)
@@ -32,7 +33,7 @@ def run_batch(paths, dialect: str | None = None, machine: str | Path | None = No
     seed_from = None if shared_state or state is None or not Path(state).is_dir() else str(state)
     settings = Settings(max_steps=max_steps, max_memory=max_memory,
                         shared_state=str(Path(state).absolute()) if shared_state else None,
-                        seed=read_seed(seed_from) if seed_from else {}, seed_from=seed_from)
+                        seed=read_seed(seed_from) if seed_from else {}, seed_from=seed_from, details=details)
     builder = TaskBuilder(settings)
     tasks, records = [], {}
     for i, program in enumerate(found.programs):

@@ -33,6 +33,8 @@ _ONE_RUN = threading.Lock()
 SHARED_LOCK = "batch.lock"
 #: the project's code of a program that could not be set up (docs/batch.md)
 SETUP_ERROR = "RUN007"
+#: what a record of the Python API's batch holds beyond the report's (ncvm.batch)
+DETAILS = ("variables", "output_dropped", "cycle_time_model")
 
 
 def run_task(task: Task) -> dict:
@@ -102,6 +104,7 @@ def _run(task: Task, inside, state: Path) -> dict:
         message = getattr(e, "message", None) or str(e)
         error = {"code": SETUP_ERROR, "message": message, "file": None, "line": None, "column": None}
         return {"status": "error", "dialect": task.dialect, "error": error, "output": [], "position": {},
+                "variables": {}, "output_dropped": 0, "cycle_time_model": "",
                 "motion": None, "cycle_time_s": 0.0, "steps": 0, "limit_violations": []}
 
 
@@ -164,4 +167,5 @@ def _record(task: Task, doc: dict, writes: dict) -> dict:
     return {"path": task.path, "dialect": doc["dialect"], "machine": task.machine or "built-in", "status": status,
             "error": doc["error"], "cycle_time_s": doc["cycle_time_s"], "steps": doc["steps"],
             "motion": doc["motion"], "limit_violations": doc["limit_violations"], "output_lines": doc["output"],
-            "position": doc["position"], "permanent_writes": writes}
+            "position": doc["position"], "permanent_writes": writes,
+            **({k: doc.get(k) for k in DETAILS} if task.settings.details else {})}

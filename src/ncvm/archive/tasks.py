@@ -41,6 +41,7 @@ class Settings:
     #: the state each program starts from when not shared: path inside the state directory -> content
     seed: dict[str, bytes] = field(default_factory=dict)
     seed_from: str | None = None  # where the seed was read (for the report)
+    details: bool = False  # records carry the run's variables and output count too (the Python API)
 
 
 @dataclass
