@@ -1,0 +1,106 @@
+"""Review of issue 17 items 1-4 (batch runs, the local pool, dask clusters, reports), tried as a shop's
+maintenance engineer would try them on an archive: the defects found, one failing test each.
+
+Every test runs ``ncvm`` as a process of its own on real files, folders, symlinks and FIFOs; each names
+the words of the issue (or of docs/batch.md) it holds the project to, and fails on main as reviewed.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+BIN = Path(sys.executable).parent
+
+MILL = """[machine]
+name = "shop mill"
+[[axis]]
+name = "X"
+[[axis]]
+name = "Y"
+[[axis]]
+name = "Z"
+"""
+#: a drilling cycle as the machine file maps G81 to it: P1 the depth; it counts the holes
+CYC81 = "N1 G1 Z[P1]\nN2 G0 Z10\n10 #HOLES% = #HOLES% + 1\n"
+GOOD_DIN = "N10 G90 G0 X0 Y0 Z10\nN20 G1 X20 F300\nM30\n"
+
+
+def ncvm(*args: str, cwd: Path, timeout: float = 300) -> subprocess.CompletedProcess:
+    return subprocess.run(
+        [sys.executable, "-m", "ncvm", *args],
+        cwd=cwd,
+        capture_output=True,
+        text=True,
+        timeout=timeout,
+        stdin=subprocess.DEVNULL,
+    )
+
+
+def write(path: Path, text: str) -> Path:
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(text)
+    return path
+
+
+def batch(folder: Path, *args: str) -> tuple[subprocess.CompletedProcess, dict]:
+    """``ncvm run FOLDER --jobs 1 --report r.json`` from the folder above it: the process and the report."""
+    report = folder.parent / f"{folder.name}-report.json"
+    r = ncvm(
+        "run",
+        folder.name,
+        "--jobs",
+        "1",
+        "--state",
+        str(folder.parent / "state"),
+        "--report",
+        str(report),
+        *args,
+        cwd=folder.parent,
+    )
+    assert report.is_file(), r.stderr
+    return r, json.loads(report.read_text())
+
+
+def record(doc: dict, path: str) -> dict:
+    return next(p for p in doc["programs"] if p["path"] == path)
+
+
+def named(doc: dict) -> set[str]:
+    return {p["path"] for p in doc["programs"]} | {s["path"] for s in doc["skipped"]}
+
+
+# --- silently incomplete: a batch that never looked at programs of the archive and says nothing ------------
+
+
+def test_item1_programs_in_a_symlinked_folder_are_run_or_named(tmp_path):
+    """Issue 17 item 1: "`ncvm run` ... accept[s] any number of programs and folders" and files that are not
+    run are "reported as skipped with the reason". A shop's archive links a machine's folder from the file
+    server (`archive/lathe2 -> /nas/lathe2`): the batch never enters it, names none of its programs, and
+    reports the archive healthy (exit 0) although a program there stops with an error."""
+    write(tmp_path / "nas" / "lathe2" / "broken.din", "N10 G1 X1 ?\nM30\n")
+    write(tmp_path / "archive" / "ok.din", GOOD_DIN)
+    (tmp_path / "archive" / "lathe2").symlink_to(tmp_path / "nas" / "lathe2", target_is_directory=True)
+    r, doc = batch(tmp_path / "archive")
+    assert "archive/lathe2/broken.din" in named(doc), (r.stderr, doc["summary"])
+    assert r.returncode == 1, r.stderr
+
+
+@pytest.mark.parametrize("kind", ["fifo", "dangling symlink"])
+def test_item1_a_file_with_a_program_extension_that_cannot_be_read_is_named(tmp_path, kind):
+    """Issue 17 item 1: files that are not programs are "reported as skipped with the reason"; docs/batch.md:
+    "every file with a program extension" below a folder is a program. A FIFO or a dangling link named
+    `part7.din` (a program moved away) is neither run nor listed: the report does not know it exists."""
+    write(tmp_path / "archive" / "ok.din", GOOD_DIN)
+    odd = tmp_path / "archive" / "part7.din"
+    if kind == "fifo":
+        os.mkfifo(odd)
+    else:
+        odd.symlink_to(tmp_path / "moved" / "part7.din")
+    r, doc = batch(tmp_path / "archive")
+    assert "archive/part7.din" in named(doc), r.stderr
