@@ -104,3 +104,59 @@ def test_item1_a_file_with_a_program_extension_that_cannot_be_read_is_named(tmp_
         odd.symlink_to(tmp_path / "moved" / "part7.din")
     r, doc = batch(tmp_path / "archive")
     assert "archive/part7.din" in named(doc), r.stderr
+
+
+# --- false errors: the batch fails programs that run alone ("results identical to one run per program") ----
+
+
+def test_item2_a_cpl_program_using_the_machines_g81_cycle_runs_in_a_batch_as_alone(tmp_path):
+    """Issue 17 item 2: "results identical to one run per program"; item 3: "the programs' text, the machine
+    file and the options travel with each task". A CPL program drills with G81, which the machine file maps
+    to the cycle program CYC81 ([cpl] calls, the manual's G81-G86 cycles). Alone it runs; in a batch it
+    stops with CPL005 "sub-program not found: CYC81": the cycle is not shipped, because the program's text
+    never names it."""
+    folder = tmp_path / "cell"
+    write(folder / "machine.toml", MILL + '[cpl]\ncalls = { G81 = { program = "CYC81", modal = true } }\n')
+    write(folder / "main.txt", "drill.cpl\n")
+    write(folder / "CYC81", CYC81)
+    write(folder / "drill.cpl", "5 #HOLES% = 0\nN1 G0 X0 Y0 Z10 F500\nN2 G81 [-5]\nN3 X10\nN4 G80\nM30\n")
+    alone = ncvm("run", "cell/drill.cpl", "--state", str(tmp_path / "alone"), cwd=tmp_path)
+    assert alone.returncode == 0, alone.stderr
+    r, doc = batch(folder)
+    assert record(doc, "cell/drill.cpl")["error"] is None, r.stderr
+    assert r.returncode == 0
+
+
+@pytest.mark.parametrize("call", ["number", "indirect"])
+def test_item2_a_sinumerik_sub_program_found_alone_is_found_in_a_batch(tmp_path, call):
+    """Issue 17 item 2: "results identical to one run per program". SINUMERIK sub-programs are called by
+    number: `L20` finds the file whose header is %SPF20 whatever its name, and `L=R5` calls the number in
+    R5. Alone both run; in a batch both stop with RUN002 "sub-program L20 not found", because only files
+    whose name the program's text mentions travel with the task."""
+    folder = tmp_path / "cell"
+    write(folder / "machine.toml", MILL)
+    name = "slot_pass.spf" if call == "number" else "L20.spf"
+    write(folder / name, "%SPF20\n(one slot pass)\nG91 G1 X10 F300\nG90\nM17\n")
+    body = "N40 L20\n" if call == "number" else "N30 R5=20\nN40 L=R5\n"
+    write(folder / "slot.mpf", "%MPF12\nN10 G90 G0 X0 Y0 Z0\n" + body + "N50 M30\n")
+    alone = ncvm("run", "cell/slot.mpf", "--state", str(tmp_path / "alone"), cwd=tmp_path)
+    assert alone.returncode == 0, alone.stderr
+    r, doc = batch(folder)
+    assert record(doc, "cell/slot.mpf")["error"] is None, r.stderr
+
+
+def test_item2_a_sympas_include_from_a_sub_folder_travels_with_the_task(tmp_path):
+    """Issue 17 item 2: "results identical to one run per program"; item 3: what a run reads travels with
+    the task. rw_SymPas `{! lib/speeds.inc}` includes a file of a sub-folder: alone the program runs, in a
+    batch it stops with SP007 "include file 'lib/speeds.inc' not found"."""
+    folder = tmp_path / "robot"
+    write(folder / "lib" / "speeds.inc", "const feed = 80.0;\n")
+    write(
+        folder / "move.sap",
+        "program Move;\n{! lib/speeds.inc}\nbegin\n  TRVL := feed; TRAC := 800.0;\n"
+        "  MLAW(A1 := 20.0, A2 := 10.0);\nend.\n",
+    )
+    alone = ncvm("run", "robot/move.sap", "--state", str(tmp_path / "alone"), cwd=tmp_path)
+    assert alone.returncode == 0, alone.stderr
+    r, doc = batch(folder)
+    assert record(doc, "robot/move.sap")["error"] is None, r.stderr
