@@ -160,3 +160,79 @@ def test_item2_a_sympas_include_from_a_sub_folder_travels_with_the_task(tmp_path
     assert alone.returncode == 0, alone.stderr
     r, doc = batch(folder)
     assert record(doc, "robot/move.sap")["error"] is None, r.stderr
+
+
+# --- sub-programs and data run as main programs: false failures in the report and exit 1 --------------------
+
+
+def _cycles_folder(tmp_path: Path) -> tuple[Path, str]:
+    shop = tmp_path / "shop"
+    write(shop / "machine.toml", MILL + '[paths]\nprogram_path = [".", "cycles"]\n')
+    write(
+        shop / "cycles" / "BOLTCIRC",
+        (Path(__file__).resolve().parents[2] / "examples" / "cpl" / "BOLTCIRC").read_text(),
+    )
+    write(
+        shop / "parts" / "FLANGE",
+        "10 #HOLES% = 0\nN20 G90 G0 X0 Y0 Z10\n30 CALL BOLTCIRC [0, 0, 40, 6, 0, 12, 2, 150]\nM30\n",
+    )
+    return shop, "shop/cycles/BOLTCIRC"
+
+
+def _p_address(tmp_path: Path) -> tuple[Path, str]:
+    cell = tmp_path / "cell"
+    write(cell / "machine.toml", MILL)
+    write(cell / "SLOTCYC", "(SLOTCYC - one slot, P1 its length)\nN10 G91 G1 X[P1] F300\nN20 G90 G0 Z10\nM30\n")
+    write(cell / "slot.cpl", "N10 G90 G0 X0 Y0 Z10\nN20 G1 Z-2 F200\nN30 P SLOTCYC[25]\nM30\n")
+    return cell, "cell/SLOTCYC"
+
+
+def _machine_cycle(tmp_path: Path) -> tuple[Path, str]:
+    cell = tmp_path / "cell"
+    write(cell / "machine.toml", MILL + '[cpl]\ncalls = { G81 = { program = "CYC81", modal = true } }\n')
+    write(cell / "CYC81", CYC81)
+    write(cell / "drill.cpl", "5 #HOLES% = 0\nN1 G0 X0 Y0 Z10 F500\nN2 G81 [-5]\nN3 X10\nN4 G80\nM30\n")
+    return cell, "cell/CYC81"
+
+
+def _sympas_include(tmp_path: Path) -> tuple[Path, str]:
+    robot = tmp_path / "robot"
+    write(robot / "common.sap", "const slow = 40.0;\n")
+    write(
+        robot / "move.sap",
+        "program Move;\n{! common.sap}\nbegin\n  TRVL := slow; TRAC := 800.0;\n  MLAW(A1 := 20.0, A2 := 10.0);\nend.\n",
+    )
+    return robot, "robot/common.sap"
+
+
+@pytest.mark.parametrize(
+    "case",
+    [_cycles_folder, _p_address, _machine_cycle, _sympas_include],
+    ids=["cycles folder of the program path", "CPL P address call", "machine's G81 cycle", "SymPas include"],
+)
+def test_item1_a_called_sub_program_is_not_run_as_a_main_program(tmp_path, case):
+    """Issue 17 item 1: "Sub-programs listed in a folder's main.txt convention (or recognised as called by
+    another program) are not run as main programs". Called in ways the batch does not recognise -- from
+    the shop's cycles folder of the machine's program path, by a CPL `P NAME[...]` address, as the cycle
+    the machine file maps G81 to, as a rw_SymPas include -- the sub-program is run as a main program and
+    fails (CPL020 NUL parameters, NC013, SP001): the archive report shows failures that are none."""
+    folder, sub = case(tmp_path)
+    r, doc = batch(folder)
+    assert sub in {s["path"] for s in doc["skipped"]}, r.stderr
+    assert sub not in {p["path"] for p in doc["programs"]}
+
+
+def test_item1_a_cl800_external_list_is_skipped_not_failed(tmp_path):
+    """Issue 17 item 1: files without an extension "are classified by content ... and reported as skipped
+    with the reason when they are not programs". A CL 800 external list (EXTERNAL ... ENDEXTERN, the data a
+    program's header names) is not a program -- `ncvm run LIST` says so as a usage error -- but a batch runs
+    it as a main program and counts a failure (RUN007 "external lists are not compiled"), exit 1."""
+    folder = tmp_path / "cl800"
+    write(
+        folder / "CENLST",
+        "EXTERNAL 40;\nCHANNEL NC 0;\nID (0-CENLST-23.11.26-NCV);\nCENTRAL REAL: R900:=load_1;\nENDEXTERN\n",
+    )
+    write(folder / "ok.din", GOOD_DIN)
+    r, doc = batch(folder)
+    assert "cl800/CENLST" in {s["path"] for s in doc["skipped"]}, r.stderr
+    assert r.returncode == 0, r.stderr
