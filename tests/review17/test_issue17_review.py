@@ -11,6 +11,7 @@ import json
 import os
 import subprocess
 import sys
+import xml.etree.ElementTree as ET
 from pathlib import Path
 
 import pytest
@@ -236,3 +237,38 @@ def test_item1_a_cl800_external_list_is_skipped_not_failed(tmp_path):
     r, doc = batch(folder)
     assert "cl800/CENLST" in {s["path"] for s in doc["skipped"]}, r.stderr
     assert r.returncode == 0, r.stderr
+
+
+# --- reports ------------------------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    "program",
+    ['10 PRN#(0,"PART READY",CHR$(7))\nM30\n', "10 A% = 1\nN20 \x01\x02QQ\nM30\n"],
+    ids=["a bell in the output", "a damaged line"],
+)
+def test_item4_the_junit_report_is_well_formed_xml(tmp_path, program):
+    """Issue 17 item 4: ".xml (JUnit: one testcase per program ...) so CI systems show archive health". A
+    program that rings the operator's bell (PRN# with CHR$(7)) or a program file with a damaged line puts
+    control characters into the report: the whole file is not well-formed XML, and CI tools read none of
+    it."""
+    write(tmp_path / "archive" / "part.cpl", program)
+    write(tmp_path / "archive" / "ok.din", GOOD_DIN)
+    r = ncvm("run", "archive", "--state", str(tmp_path / "state"), "--report", "r.xml", cwd=tmp_path)
+    assert r.returncode in (0, 1), r.stderr
+    suite = ET.parse(tmp_path / "r.xml").getroot()
+    assert len(suite.findall("testcase")) == 2
+
+
+def test_item4_an_error_without_a_column_is_not_located_at_column_none(tmp_path):
+    """Issue 17 item 4: errors carry "file, line, column"; the project's format is `file:line:col: error CODE:
+    message`. An error the control reports for a line only (NC002 radius mismatch, CL 800 E300, RUN002)
+    is printed by a batch, and written into the JUnit failure, as `part.din:3:None: error NC002`: editors and
+    CI problem matchers read no location from it (a run alone prints `part.din:3: error NC002`)."""
+    write(tmp_path / "archive" / "part.din", "G1 X10 F100\nG2 X0 Y12 I-10 J0\nM30\n")
+    write(tmp_path / "archive" / "ok.din", GOOD_DIN)
+    r = ncvm("run", "archive", "--state", str(tmp_path / "state"), "--report", "r.xml", cwd=tmp_path)
+    assert "error NC002" in r.stderr, r.stderr
+    assert ":None:" not in r.stderr, r.stderr
+    failure = ET.parse(tmp_path / "r.xml").getroot().find("testcase/failure")
+    assert ":None:" not in failure.text, failure.text
