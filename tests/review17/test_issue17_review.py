@@ -9,8 +9,11 @@ from __future__ import annotations
 
 import json
 import os
+import signal
+import socket
 import subprocess
 import sys
+import time
 import xml.etree.ElementTree as ET
 from pathlib import Path
 
@@ -272,3 +275,95 @@ def test_item4_an_error_without_a_column_is_not_located_at_column_none(tmp_path)
     assert ":None:" not in r.stderr, r.stderr
     failure = ET.parse(tmp_path / "r.xml").getroot().find("testcase/failure")
     assert ":None:" not in failure.text, failure.text
+
+
+# --- the cluster ----------------------------------------------------------------------------------------------
+
+
+def _free_port() -> int:
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+@pytest.fixture
+def scheduler_and_worker(tmp_path):
+    """``dask scheduler`` and two ``dask worker`` processes on 127.0.0.1, stopped after the test."""
+    distributed = pytest.importorskip("distributed")
+    port = _free_port()
+    address = f"tcp://127.0.0.1:{port}"
+    quiet = {"stdout": subprocess.DEVNULL, "stderr": subprocess.DEVNULL, "start_new_session": True}
+    procs = [
+        subprocess.Popen(
+            [BIN / "dask", "scheduler", "--host", "127.0.0.1", "--port", str(port), "--no-dashboard"], **quiet
+        )
+    ]
+    try:
+        procs.append(
+            subprocess.Popen(
+                [
+                    BIN / "dask",
+                    "worker",
+                    address,
+                    "--host",
+                    "127.0.0.1",
+                    "--nthreads",
+                    "1",
+                    "--nworkers",
+                    "2",
+                    "--no-dashboard",
+                    "--local-directory",
+                    str(tmp_path),
+                ],
+                **quiet,
+            )
+        )
+        with distributed.Client(address, timeout=60) as client:
+            client.wait_for_workers(2, timeout=60)
+        yield address
+    finally:
+        for p in reversed(procs):
+            os.killpg(p.pid, signal.SIGTERM)
+            try:
+                p.wait(timeout=30)
+            except subprocess.TimeoutExpired:
+                os.killpg(p.pid, signal.SIGKILL)
+                p.wait()
+
+
+def test_item3_ctrl_c_stops_a_cluster_batch_without_a_traceback(tmp_path, scheduler_and_worker):
+    """Issue 17 item 3 with the project's quality bar ("never a Python traceback"); docs/batch.md: "Ctrl-C
+    stops the batch (RUN004, exit 1)". Interrupted while its tasks run on the cluster, `ncvm run --cluster`
+    prints distributed's "Task exception was never retrieved ... Traceback ... AllExit" several times."""
+    import distributed
+
+    for i in range(6):  # each stops at --max-steps after a few seconds
+        write(tmp_path / "archive" / f"loop{i}.cpl", "10 WHILE TRUE DO\n20 X% = 1\n30 END\n")
+    p = subprocess.Popen(
+        [
+            sys.executable,
+            "-m",
+            "ncvm",
+            "run",
+            "archive",
+            "--cluster",
+            scheduler_and_worker,
+            "--max-steps",
+            "3000000",
+            "--state",
+            str(tmp_path / "state"),
+        ],
+        cwd=tmp_path,
+        stderr=subprocess.PIPE,
+        text=True,
+        start_new_session=True,
+    )
+    with distributed.Client(scheduler_and_worker, timeout=60) as client:
+        deadline = time.monotonic() + 120
+        while not any(client.processing().values()) and time.monotonic() < deadline:  # the tasks run
+            time.sleep(0.1)
+    time.sleep(0.5)
+    os.killpg(p.pid, signal.SIGINT)  # as the terminal sends it
+    err = p.communicate(timeout=120)[1]
+    assert p.returncode == 1 and "interrupted by the user" in err, err
+    assert "Traceback" not in err, err
