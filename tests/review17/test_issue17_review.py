@@ -242,6 +242,41 @@ def test_item1_a_cl800_external_list_is_skipped_not_failed(tmp_path):
     assert r.returncode == 0, r.stderr
 
 
+def test_item2_the_error_of_a_sub_program_search_reads_as_in_a_run_alone(tmp_path):
+    """Issue 17 item 2: "results identical to one run per program". A program below its machine file's folder
+    calls a missing sub-program: alone (`--machine shop/machine.toml`) the error names the program path
+    "shop, shop/bad"; in the batch it names "shop/bad, shop, shop/bad", a folder twice."""
+    shop = tmp_path / "shop"
+    write(shop / "machine.toml", MILL + '[paths]\nprogram_path = [".", "bad"]\n')
+    write(shop / "bad" / "call_missing.cpl", "10 CALL NOSUCH\nM30\n")
+    alone = ncvm(
+        "run",
+        "shop/bad/call_missing.cpl",
+        "--machine",
+        "shop/machine.toml",
+        "--json",
+        "--state",
+        str(tmp_path / "alone"),
+        cwd=tmp_path,
+    )
+    message = json.loads(alone.stdout)["error"]["message"]
+    assert "(program path: shop, shop/bad)" in message
+    r, doc = batch(shop)
+    assert record(doc, "shop/bad/call_missing.cpl")["error"]["message"] == message, r.stderr
+
+
+def test_item1_a_main_program_listed_in_main_txt_but_missing_is_named(tmp_path):
+    """Issue 17 item 1: "Sub-programs listed in a folder's main.txt convention ... are not run as main
+    programs"; docs/batch.md: main.txt "lists its main programs". A main program listed there whose file
+    is missing from the archive (deleted, renamed, a typo) is passed over in silence: the batch and its
+    report say nothing of a main program the shop expects to run."""
+    cell = tmp_path / "cell"
+    write(cell / "main.txt", "flange.din\npocket.din\n")
+    write(cell / "flange.din", GOOD_DIN)
+    r, doc = batch(cell)
+    assert "pocket.din" in r.stderr + json.dumps(doc), r.stderr
+
+
 # --- reports ------------------------------------------------------------------------------------------------
 
 
