@@ -110,6 +110,22 @@ def test_item1_a_file_with_a_program_extension_that_cannot_be_read_is_named(tmp_
     assert "archive/part7.din" in named(doc), r.stderr
 
 
+def test_item1_the_machine_of_a_program_does_not_depend_on_the_order_of_the_folders_named(tmp_path):
+    """Issue 17 item 1: "Every program uses the machine.toml of its own folder (nearest one upwards, up to
+    the folder named on the command line)". Named both, `ncvm run shop/cell shop` runs cell's programs on
+    the built-in machine -- the shop's machine file with its soft limits above them is ignored, the travel
+    beyond them is not reported and the batch exits 0 -- while `ncvm run shop shop/cell` uses it."""
+    write(tmp_path / "shop" / "machine.toml", MILL.replace('name = "X"', 'name = "X"\nmin = -10.0\nmax = 10.0'))
+    write(tmp_path / "shop" / "cell" / "long.din", GOOD_DIN)  # X20: beyond the shop's soft limit
+    runs = {}
+    for order in (("shop", "shop/cell"), ("shop/cell", "shop")):
+        report = tmp_path / f"{order[0].replace('/', '-')}.json"
+        r = ncvm("run", *order, "--state", str(tmp_path / "state"), "--report", str(report), cwd=tmp_path)
+        runs[order] = (r.returncode, record(json.loads(report.read_text()), "shop/cell/long.din")["machine"])
+    assert runs[("shop", "shop/cell")] == (1, "shop/machine.toml")
+    assert runs[("shop/cell", "shop")] == runs[("shop", "shop/cell")], runs
+
+
 # --- false errors: the batch fails programs that run alone ("results identical to one run per program") ----
 
 
