@@ -418,3 +418,83 @@ def test_item3_ctrl_c_stops_a_cluster_batch_without_a_traceback(tmp_path, schedu
     err = p.communicate(timeout=120)[1]
     assert p.returncode == 1 and "interrupted by the user" in err, err
     assert "Traceback" not in err, err
+
+
+def _can_hide_folders() -> bool:
+    """Root in a container that allows mount namespaces: a worker can be given a disk of its own."""
+    try:
+        return subprocess.run(["unshare", "-m", "true"], capture_output=True, timeout=30).returncode == 0
+    except (OSError, subprocess.TimeoutExpired):
+        return False
+
+
+@pytest.fixture
+def worker_with_its_own_disk(tmp_path):
+    """A scheduler and a worker on 127.0.0.1 whose view of ``tmp_path / "shop"`` is a disk of its own (an
+    empty tmpfs in a mount namespace): a worker host that has the same path, but not the same files."""
+    distributed = pytest.importorskip("distributed")
+    if not _can_hide_folders():
+        pytest.skip("needs mount namespaces (unshare -m)")
+    (tmp_path / "shop").mkdir()
+    port = _free_port()
+    address = f"tcp://127.0.0.1:{port}"
+    quiet = {"stdout": subprocess.DEVNULL, "stderr": subprocess.DEVNULL, "start_new_session": True}
+    procs = [
+        subprocess.Popen(
+            [BIN / "dask", "scheduler", "--host", "127.0.0.1", "--port", str(port), "--no-dashboard"], **quiet
+        )
+    ]
+    try:
+        worker = (
+            f"mount -t tmpfs none {tmp_path / 'shop'} && cd / && exec {BIN / 'dask'} worker {address} "
+            f"--host 127.0.0.1 --nthreads 1 --nworkers 1 --no-dashboard --local-directory {tmp_path}"
+        )
+        procs.append(subprocess.Popen(["unshare", "-m", "sh", "-c", worker], **quiet))
+        with distributed.Client(address, timeout=60) as client:
+            client.wait_for_workers(1, timeout=60)
+        yield address
+    finally:
+        for p in reversed(procs):
+            os.killpg(p.pid, signal.SIGTERM)
+            try:
+                p.wait(timeout=30)
+            except subprocess.TimeoutExpired:
+                os.killpg(p.pid, signal.SIGKILL)
+                p.wait()
+
+
+def test_item3_shared_state_on_a_cluster_that_does_not_share_it_is_not_reported_kept(
+    tmp_path, worker_with_its_own_disk
+):
+    """Issue 17 item 3: "each worker uses its own temporary state directory unless told to share one, and says
+    so in the report ... document what happens to permanent data in a distributed batch (each program's
+    writes are reported; they are not merged silently)". With `--shared-state --state /shop/.ncvm` on a
+    worker whose /shop is its own disk, every program writes the worker's directory: the report says
+    "shared: every program in turn on /shop/.ncvm, writes kept", yet the directory the batch was given
+    holds nothing afterwards -- the part counter the shop relies on is silently lost."""
+    state = tmp_path / "shop" / ".ncvm"
+    write(
+        tmp_path / "parts" / "partcount.cpl",
+        '10 IF @1 = NUL THEN @1 = 0 ENDIF\n20 @1 = @1 + 1\n30 PRN#(0,"PART ",@1)\nM30\n',
+    )
+    r = ncvm(
+        "run",
+        "parts",
+        "--cluster",
+        worker_with_its_own_disk,
+        "--shared-state",
+        "--state",
+        str(state),
+        "--report",
+        "r.json",
+        cwd=tmp_path,
+    )
+    doc = json.loads((tmp_path / "r.json").read_text()) if (tmp_path / "r.json").is_file() else None
+    if r.returncode == 0 and doc and "writes kept" in doc["summary"]["state"]:
+        again = ncvm("run", "parts/partcount.cpl", "--state", str(state), cwd=tmp_path)
+        assert again.stdout.split() == ["PART", "2"], (
+            doc["summary"]["state"],
+            again.stdout,
+        )  # the batch's PART 1 was kept
+    else:  # or the batch refuses a state directory its workers do not share
+        assert r.returncode == 2 and "--state" in r.stderr, r.stderr
