@@ -126,6 +126,21 @@ def test_item1_the_machine_of_a_program_does_not_depend_on_the_order_of_the_fold
     assert runs[("shop/cell", "shop")] == runs[("shop", "shop/cell")], runs
 
 
+def test_item1_a_long_cam_program_without_an_extension_is_run(tmp_path):
+    """Issue 17 item 1: "Files without an extension are classified by content (the dialect detector already
+    exists) and reported as skipped with the reason when they are not programs". A CAM program of 5 MB
+    named O1234 (as such archives name them) runs alone, but a batch skips it as "larger than 4 MB: not a
+    program" without looking at its content, and exits 0 with nothing run."""
+    blocks = [f"N{n} G1 X{n % 400 / 10:.3f} Y{n % 313 / 10:.3f}" for n in range(3, 230_000)]
+    text = "\n".join(["N1 G90 G0 X0 Y0 Z5", "N2 G1 Z-1 F500", *blocks, "N230000 M30", ""])
+    assert len(text) > 4 * 2**20
+    write(tmp_path / "cam" / "O1234", text)
+    alone = ncvm("run", "cam/O1234", "--state", str(tmp_path / "alone"), cwd=tmp_path)
+    assert alone.returncode == 0, alone.stderr
+    r, doc = batch(tmp_path / "cam")
+    assert [p["path"] for p in doc["programs"]] == ["cam/O1234"], doc["skipped"]
+
+
 # --- false errors: the batch fails programs that run alone ("results identical to one run per program") ----
 
 
