@@ -136,8 +136,17 @@ def machine_of(program: Program) -> Machine | None:
         return None
     m = load_machine(program.machine)
     if program.machine_above:
-        m.program_path.insert(0, program.path.parent)
+        own_folder_first(m, program.path)
     return m
+
+
+def own_folder_first(machine: Machine, program: Path) -> None:
+    """Search ``program``'s own folder for its sub-programs before the program path of a machine file from a
+    folder above, unless the program path holds it already (then the search, and its error's list of
+    folders, are those of ``ncvm run PROGRAM --machine FILE``)."""
+    folder = program.parent
+    if all(Path(p).resolve() != folder.resolve() for p in machine.program_path):
+        machine.program_path.insert(0, folder)
 
 
 def outermost(path: Path, named: list[Path]) -> Path | None:

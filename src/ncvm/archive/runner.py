@@ -24,6 +24,7 @@ from .. import api
 from ..diagnostics import NcvmError
 from ..machine.state import STORE_NAME
 from ..runtime.session import RunOptions
+from .discover import own_folder_first
 from .tasks import Task
 
 #: a run owns its process's memory limit and the interpreter's signal handling: one run at a time per
@@ -96,7 +97,7 @@ def _run(task: Task, inside, state: Path) -> dict:
     try:
         machine = api.machine_for(program, inside(str(Path(task.base) / task.machine)) if task.machine else None, state)
         if task.own_folder_first:  # a machine file of a folder above: the program's own folder is searched first
-            machine.program_path.insert(0, program.parent)
+            own_folder_first(machine, program)
         return api.run_program(program, task.dialect, machine, options).to_json()
     except NcvmError as e:  # the machine file, the state directory ...: as ncvm run says it, for this program
         message = getattr(e, "message", None) or str(e)
