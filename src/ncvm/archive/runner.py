@@ -49,7 +49,8 @@ def run_task(task: Task) -> dict:
         if task.settings.shared_state:
             state = Path(task.settings.shared_state)
             with _shared(state):
-                doc, writes = _run_and_compare(task, inside, state)
+                doc, writes = (_run_and_compare(task, inside, state) if shares(state, task.settings.share_token)
+                               else _not_shared(task, state))
         else:
             state = Path(tmp) / "state"
             for name, data in task.settings.seed.items():
@@ -73,6 +74,24 @@ def _shared(state: Path):
         yield
     finally:
         os.close(fd)
+
+
+def shares(state: Path, token: str | None) -> bool:
+    """This host sees the batch's shared state directory: the token file the batch wrote there is there."""
+    return token is None or (state / token).is_file()
+
+
+def _not_shared(task: Task, state: Path) -> tuple[dict, dict]:
+    message = (f"--shared-state: {state} on {socket.gethostname()} is not the batch's state directory (the file "
+               f"{task.settings.share_token} the batch wrote there is missing); the program is not run, as its "
+               f"writes would be lost: give a directory every worker shares")
+    return _setup_error(task, message), {"store": [], "files": []}
+
+
+def _setup_error(task: Task, message: str) -> dict:
+    error = {"code": SETUP_ERROR, "message": message, "file": None, "line": None, "column": None}
+    return {"status": "error", "dialect": task.dialect, "error": error, "output": [], "position": {},
+            "motion": None, "cycle_time_s": 0.0, "steps": 0, "limit_violations": []}
 
 
 def _run_and_compare(task: Task, inside, state: Path) -> tuple[dict, dict]:
@@ -100,10 +119,7 @@ def _run(task: Task, inside, state: Path) -> dict:
             own_folder_first(machine, program)
         return api.run_program(program, task.dialect, machine, options).to_json()
     except NcvmError as e:  # the machine file, the state directory ...: as ncvm run says it, for this program
-        message = getattr(e, "message", None) or str(e)
-        error = {"code": SETUP_ERROR, "message": message, "file": None, "line": None, "column": None}
-        return {"status": "error", "dialect": task.dialect, "error": error, "output": [], "position": {},
-                "motion": None, "cycle_time_s": 0.0, "steps": 0, "limit_violations": []}
+        return _setup_error(task, getattr(e, "message", None) or str(e))
 
 
 def _snapshot(state: Path, watched: dict[str, Path | None]) -> dict:

@@ -47,6 +47,9 @@ class Settings:
     max_memory: int | None = None  # None: the default of a run
     #: a state directory every run uses in turn (writes stay there); None: each program its own temporary one
     shared_state: str | None = None
+    #: the name of the file the batch wrote into the shared state directory: a run that does not find it
+    #: there is on a host that does not share the directory, and refuses to run (its writes would be lost)
+    share_token: str | None = None
     #: the state each program starts from when not shared: path inside the state directory -> content
     seed: dict[str, bytes] = field(default_factory=dict)
     seed_from: str | None = None  # where the seed was read (for the report)
