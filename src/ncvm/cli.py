@@ -365,7 +365,7 @@ def check(programs, dialect, machine, as_json, all_errors):
     machine.toml upwards (up to the folder named) unless --machine is given.
     """
     from . import api
-    from .archive.discover import discover, machine_of
+    from .archive.discover import discover, machine_of, nothing_found
     from .archive.report import machine_lines
 
     report, failed = [], False
@@ -397,6 +397,8 @@ def check(programs, dialect, machine, as_json, all_errors):
         not_programs = f", {len(skipped)} file(s) skipped" if skipped else ""
         click.echo(f"ncvm: {len(report)} program(s) checked{with_errors}, {n} diagnostic(s){not_programs}",
                    err=True)
+        if nothing_found(found, programs):
+            click.echo(nothing_found(found, programs), err=True)
     sys.exit(EXIT_FAULT if failed else EXIT_OK)
 
 

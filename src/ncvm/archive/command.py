@@ -12,6 +12,7 @@ from ..diagnostics import UsageError
 from ..runtime.memory import parse_size
 from . import report
 from .batch import run_batch
+from .discover import discover, nothing_found
 
 
 def run_batch_command(programs, dialect, machine, state_dir, as_json, max_steps, max_memory, jobs, cluster,
@@ -29,9 +30,10 @@ def run_batch_command(programs, dialect, machine, state_dir, as_json, max_steps,
         raise UsageError(f"no such machine file: {machine}")
     if not state_dir.strip():
         raise UsageError("--state is empty; give the state directory (default .ncvm)")
+    found = discover(programs, dialect, machine)
     doc = run_batch(programs, dialect, machine, jobs=jobs, cluster=cluster, state=state_dir,
                     shared_state=shared_state, max_steps=max_steps,
-                    max_memory=parse_size(max_memory) if max_memory is not None else None)
+                    max_memory=parse_size(max_memory) if max_memory is not None else None, found=found)
     if report_file:
         report.write(doc, report_file)
     if as_json:
@@ -39,6 +41,8 @@ def run_batch_command(programs, dialect, machine, state_dir, as_json, max_steps,
     else:
         for line in report.summary_lines(doc):
             click.echo(line, err=True)
+        if nothing_found(found, programs):
+            click.echo(nothing_found(found, programs), err=True)
         if report_file:
             click.echo(f"ncvm: report written to {report_file}", err=True)
     sys.exit(1 if report.failed(doc) else 0)

@@ -122,6 +122,14 @@ def discover(args: list[str] | tuple[str, ...], dialect: str | None = None,
     return found
 
 
+def nothing_found(found: Found, args) -> str | None:
+    """The warning of a batch that found no program at all (an empty folder, one of data only), else None."""
+    if found.all_programs:
+        return None
+    return (f"ncvm: warning: no programs found in {', '.join(map(str, args))} (a program has a program extension, "
+            f"or no extension and the content of one)")
+
+
 def _program(path: Path, dialect: str, root: Path, machine: str | Path | None) -> Program:
     if machine:
         return Program(path, dialect, Path(machine), root)
