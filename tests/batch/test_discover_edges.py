@@ -52,3 +52,20 @@ def test_a_missing_main_program_of_main_txt_is_listed_with_the_reason(tmp_path):
     r = ncvm("run", "cell", "--jobs", "1", "--state", "st", "--json", cwd=tmp_path)
     skipped = {s["path"]: s["reason"] for s in json.loads(r.stdout)["skipped"]}
     assert "there is no such file" in skipped["cell/pocket.din"]
+
+
+def test_a_task_carries_relative_paths_inside_its_folders_only(tmp_path):
+    """A relative path a program names travels with its task (an include of a sub-folder), never a file
+    outside the program's search folders (`../`): a cluster task carries the archive's files alone."""
+    from ncvm.archive.discover import discover
+    from ncvm.archive.tasks import Settings, TaskBuilder
+
+    (tmp_path / "secret.txt").write_text("not for the workers\n")
+    robot = tmp_path / "robot"
+    (robot / "lib").mkdir(parents=True)
+    (robot / "lib" / "speeds.inc").write_text("const feed = 80.0;\n")
+    (robot / "move.sap").write_text("program Move;\n{! lib/speeds.inc}\n{ see ../secret.txt }\nbegin\nend.\n")
+    program = discover([str(robot / "move.sap")]).programs[0]
+    task = TaskBuilder(Settings(max_steps=1000), base=tmp_path).task(0, program)
+    assert str(robot / "lib" / "speeds.inc") in task.files
+    assert not [name for name, data in task.files.items() if b"not for the workers" in data]

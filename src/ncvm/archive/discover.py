@@ -191,8 +191,7 @@ def _folder(root: Path, dialect: str | None, machine: str | Path | None, found: 
             continue
         unreadable = _not_a_file(path)
         if unreadable:
-            if path.suffix or os.path.lexists(path) and not path.is_dir():
-                found.skipped.append(Skipped(path, unreadable))
+            found.skipped.append(Skipped(path, unreadable))
             continue
         if path.resolve() in seen:
             continue

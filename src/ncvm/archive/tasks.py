@@ -155,7 +155,8 @@ class TaskBuilder:
             candidates = [p for word in set(_WORD.findall(text.upper())) - seen
                           for listing in listings for p in listing.get(word, ())]
             seen.update(_WORD.findall(text.upper()))
-            candidates += [folder / rel for rel in set(_RELATIVE.findall(text)) for folder in folders]
+            candidates += [folder / rel for rel in set(_RELATIVE.findall(text)) for folder in folders
+                           if (folder / rel).resolve().is_relative_to(folder.resolve())]  # never ../ out of it
             for p in candidates:
                 data = _small_file(p, files)
                 if data is not None:
