@@ -69,3 +69,17 @@ def test_a_task_carries_relative_paths_inside_its_folders_only(tmp_path):
     task = TaskBuilder(Settings(max_steps=1000), base=tmp_path).task(0, program)
     assert str(robot / "lib" / "speeds.inc") in task.files
     assert not [name for name, data in task.files.items() if b"not for the workers" in data]
+
+
+def test_a_cl800_external_list_with_an_extension_is_checked_not_run(tmp_path):
+    """An external list named `.cl8` (after a comment) is data: `check` checks it, `run` lists it as skipped."""
+    (tmp_path / "cl800").mkdir()
+    (tmp_path / "cl800" / "cenlst.cl8").write_text(
+        "(* central data *)\nEXTERNAL 40;\nCHANNEL NC 0;\nID (0-CENLST-23.11.26-NCV);\n"
+        "CENTRAL REAL: R900:=load_1;\nENDEXTERN\n")
+    (tmp_path / "cl800" / "ok.din").write_text(GOOD_DIN)
+    r = ncvm("run", "cl800", "--jobs", "1", "--state", "st", "--json", cwd=tmp_path)
+    assert r.returncode == 0, r.stderr
+    assert "external list" in {s["path"]: s["reason"] for s in json.loads(r.stdout)["skipped"]}["cl800/cenlst.cl8"]
+    checked = ncvm("check", "cl800", "--json", cwd=tmp_path)
+    assert "cl800/cenlst.cl8" in {f["file"] for f in json.loads(checked.stdout)["files"]}, checked.stderr

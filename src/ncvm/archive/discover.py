@@ -45,7 +45,7 @@ INCLUDES = {"sympas": re.compile(r"\{\s*!\s*([^}\s]+)\s*\}")}
 #: how much of an extensionless file is read to classify it: the dialect detector looks at the head only
 SNIFF_BYTES = 64 * 1024
 #: a CL 800 external list (EXTERNAL ... ENDEXTERN): the data a program's header names, not a program
-_EXTERNAL_LIST = re.compile(r"\A\s*EXTERNAL\b", re.IGNORECASE)
+_EXTERNAL_LIST = re.compile(r"\A(?:\s|\(\*.*?\*\))*EXTERNAL\b", re.IGNORECASE | re.DOTALL)
 
 
 @dataclass(frozen=True)
@@ -280,21 +280,22 @@ def _classify(path: Path, dialect: str | None) -> str | Skipped:
     if path.suffix.lower() in EXTENSIONS:
         return EXTENSIONS[path.suffix.lower()]
     try:
-        with open(path, "rb") as f:
-            head = f.read(SNIFF_BYTES)
-        text = without_bom(head.decode("latin-1"))
+        text = _head(path)
     except OSError as e:
         return Skipped(path, f"no extension and not readable ({e.strerror})")
     if "\0" in text:
         return Skipped(path, "no extension and binary content: not a program")
-    if _EXTERNAL_LIST.match(text):
-        return Skipped(path, "a CL 800 external list (EXTERNAL ... ENDEXTERN): the data a program's header names, "
-                             "not a program")
     try:
         return detect_dialect(path, text)
     except UsageError as e:
         detail = str(e).split(": ", 1)[-1].split(";")[0]
         return Skipped(path, f"no extension and the content is no program of a known dialect ({detail})")
+
+
+def _head(path: Path) -> str:
+    """The first bytes of a file as a program's text: enough to classify it, however large the file."""
+    with open(path, "rb") as f:
+        return without_bom(f.read(SNIFF_BYTES).decode("latin-1"))
 
 
 def _subprograms(programs: list[Program]) -> dict[Path, str]:
@@ -312,6 +313,9 @@ def _subprograms(programs: list[Program]) -> dict[Path, str]:
                 subs[p.path] = f"sub-program: not listed in {listing}"
         elif p.path.suffix.lower() in SUBPROGRAM_EXTENSIONS:
             subs[p.path] = "sub-program: a SINUMERIK sub-program file (.spf) is called, never started alone"
+    for p in programs:  # checked as the CL 800 data they are, never run
+        if p.dialect == "cl800" and _EXTERNAL_LIST.match(_text_head(p.path)):
+            subs[p.path] = "a CL 800 external list (EXTERNAL ... ENDEXTERN): the data a program's header names"
     by_place = {(p.path.parent.resolve(), p.path.stem.lower()): p for p in programs}
     by_file = {p.path.resolve(): p for p in programs}
     machines: dict[Path | None, tuple[list[Path], set[str]]] = {}
@@ -335,6 +339,13 @@ def _decided(callee: Program | None, caller: Program, subs: dict, listed: dict) 
     """``callee`` becomes a sub-program by this call: a folder's main.txt has the last word."""
     return (callee is not None and callee is not caller and callee.path not in subs
             and callee.path.parent not in listed)
+
+
+def _text_head(path: Path) -> str:
+    try:
+        return _head(path)
+    except OSError:
+        return ""
 
 
 def _called(program: Program) -> list[str]:
