@@ -352,7 +352,7 @@ def check(programs, dialect, machine, as_json, all_errors, report_file):
     """
     from . import api
     from .archive import report as reports
-    from .archive.discover import discover, machine_of
+    from .archive.discover import discover, machine_of, nothing_found
 
     if report_file and Path(report_file).suffix.lower() not in reports.FORMATS:
         raise UsageError(f"--report {report_file}: give a .json, .csv or .xml file")
@@ -391,6 +391,8 @@ def check(programs, dialect, machine, as_json, all_errors, report_file):
         with_errors = f", {bad} with errors" if bad else ""
         not_programs = f", {len(skipped)} file(s) skipped" if skipped else ""
         say(f"ncvm: {len(report)} program(s) checked{with_errors}, {n} diagnostic(s){not_programs}")
+        if nothing_found(found, programs):
+            say(nothing_found(found, programs))
         if report_file:
             say(f"ncvm: report written to {report_file}")
     sys.exit(EXIT_FAULT if failed else EXIT_OK)

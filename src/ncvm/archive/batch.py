@@ -4,6 +4,8 @@ cluster, and gather their report (docs/batch.md)."""
 from __future__ import annotations
 
 import time
+import uuid
+from contextlib import contextmanager
 from pathlib import Path
 from typing import Callable
 
@@ -13,6 +15,9 @@ from .pool import default_jobs, run_local
 from .report import document
 from .runner import SETUP_ERROR
 from .tasks import Settings, TaskBuilder, read_seed
+
+#: the name (a random suffix follows) of the file a batch writes into a shared state directory
+SHARE_TOKEN = "batch-token-"
 
 
 def run_batch(paths, dialect: str | None = None, machine: str | Path | None = None, jobs: int | None = None,
@@ -34,6 +39,12 @@ def run_batch(paths, dialect: str | None = None, machine: str | Path | None = No
     settings = Settings(max_steps=max_steps, max_memory=max_memory,
                         shared_state=str(Path(state).absolute()) if shared_state else None,
                         seed=read_seed(seed_from) if seed_from else {}, seed_from=seed_from, details=details)
+    with _share_token(settings):
+        return _run(found, settings, jobs, cluster, started, on_record)
+
+
+def _run(found: Found, settings: Settings, jobs: int | None, cluster: str | None, started: float,
+         on_record: Callable[[dict], None] | None) -> dict:
     builder = TaskBuilder(settings)
     tasks, records = [], {}
     for i, program in enumerate(found.programs):
@@ -53,6 +64,26 @@ def run_batch(paths, dialect: str | None = None, machine: str | Path | None = No
     doc = document([records[i] for i in range(len(found.programs))], found.skipped, how)
     doc["summary"]["wall_time_s"] = round(time.perf_counter() - started, 3)
     return doc
+
+
+@contextmanager
+def _share_token(settings: Settings):
+    """With a shared state directory: a file of the batch's own in it while the batch runs, which each run
+    looks for before it runs (a worker that does not see it does not share the directory)."""
+    if not settings.shared_state:
+        yield
+        return
+    state = Path(settings.shared_state)
+    settings.share_token = f"{SHARE_TOKEN}{uuid.uuid4().hex}"
+    try:
+        state.mkdir(parents=True, exist_ok=True)
+        (state / settings.share_token).write_text("ncvm batch\n")
+    except OSError as e:
+        raise UsageError(f"--state {state}: cannot write the shared state directory ({e.strerror})") from None
+    try:
+        yield
+    finally:
+        (state / settings.share_token).unlink(missing_ok=True)
 
 
 def _on_cluster(tasks, address, on_record):

@@ -14,7 +14,7 @@ from ..runtime.memory import parse_size
 from ..termstyle import say
 from . import report
 from .batch import run_batch
-from .discover import discover
+from .discover import discover, nothing_found
 
 
 def run_batch_command(programs, dialect, machine, state_dir, as_json, max_steps, max_memory, jobs, cluster,
@@ -46,6 +46,8 @@ def run_batch_command(programs, dialect, machine, state_dir, as_json, max_steps,
     else:
         for line in report.summary_lines(doc):
             say(line)
+        if nothing_found(found, programs):
+            say(nothing_found(found, programs))
         if report_file:
             say(f"ncvm: report written to {report_file}")
     sys.exit(1 if report.failed(doc) else 0)

@@ -7,14 +7,21 @@ dialect detector); any other file (machine files, key scripts, listings, data) i
 
 Sub-programs are not main programs: a folder's ``main.txt`` (one file name a line, as in examples/) lists
 its main programs and makes every other program of that folder a sub-program; without it, a SINUMERIK
-sub-program file (``.spf``) and a program that another program of the folder calls (CPL ``CALL NAME``,
-DIN ``o<name> call``) are sub-programs. The files in a machine's file root are the controller's data
-(what programs read and write with OPENW/PRN#), not programs.
+sub-program file (``.spf``), a program that another program calls from its folder or its machine's
+program path (CPL ``CALL NAME`` and ``P NAME[...]``, DIN ``o<name> call``, a rw_SymPas include), and the
+cycles a machine file maps an address to (``[cpl] calls``) are sub-programs. The files in a machine's file
+root are the controller's data (what programs read and write with OPENW/PRN#), not programs.
+
+Folders are entered through symbolic links too (a machine's folder linked from the file server), each real
+folder once. A file with a program extension that cannot be read as one (a FIFO, a link to nothing) is
+listed as skipped with the reason.
 """
 
 from __future__ import annotations
 
+import os
 import re
+import stat
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -22,7 +29,7 @@ from ..diagnostics import UsageError
 from ..dialects import EXTENSIONS, detect_dialect
 from ..machine.config import load_machine
 from ..machine.model import Machine
-from ..source import read_text
+from ..source import read_text, without_bom
 
 MACHINE_FILE = "machine.toml"
 MAIN_LIST = "main.txt"
@@ -30,11 +37,15 @@ MAIN_LIST = "main.txt"
 SUBPROGRAM_EXTENSIONS = (".spf",)
 #: how a program calls another by name, per dialect (the name is the called file's stem, any case)
 CALLS = {
-    "cpl": re.compile(r"\bCALL\s+([A-Za-z_]\w*)", re.IGNORECASE),
+    "cpl": re.compile(r"\b(?:CALL|P)\s+([A-Za-z_]\w*)", re.IGNORECASE),
     "din": re.compile(r"\bo<([^>]+)>\s*call\b", re.IGNORECASE),
 }
-#: the largest extensionless file read to classify it: programs are text of a few MB at most
-MAX_SNIFF_BYTES = 4 * 1024 * 1024
+#: how a program includes a file by its path relative to its own folder (the name with its extension)
+INCLUDES = {"sympas": re.compile(r"\{\s*!\s*([^}\s]+)\s*\}")}
+#: how much of an extensionless file is read to classify it: the dialect detector looks at the head only
+SNIFF_BYTES = 64 * 1024
+#: a CL 800 external list (EXTERNAL ... ENDEXTERN): the data a program's header names, not a program
+_EXTERNAL_LIST = re.compile(r"\A(?:\s|\(\*.*?\*\))*EXTERNAL\b", re.IGNORECASE | re.DOTALL)
 
 
 @dataclass(frozen=True)
@@ -92,10 +103,11 @@ def discover(args: list[str] | tuple[str, ...], dialect: str | None = None,
     """
     found = Found([], [], [])
     seen: set[Path] = set()
+    named = [Path(os.path.abspath(arg)) for arg in args if Path(arg).is_dir()]
     for arg in args:
         path = Path(arg)
         if path.is_dir():
-            _folder(path, dialect, machine, found, seen)
+            _folder(path, dialect, machine, found, seen, named)
         elif path.is_file():
             if path.resolve() in seen:
                 continue
@@ -108,6 +120,14 @@ def discover(args: list[str] | tuple[str, ...], dialect: str | None = None,
         else:
             raise UsageError(f"no such program: {arg}")
     return found
+
+
+def nothing_found(found: Found, args) -> str | None:
+    """The warning of a batch that found no program at all (an empty folder, one of data only), else None."""
+    if found.all_programs:
+        return None
+    return (f"ncvm: warning: no programs found in {', '.join(map(str, args))} (a program has a program extension, "
+            f"or no extension and the content of one)")
 
 
 def _program(path: Path, dialect: str, root: Path, machine: str | Path | None) -> Program:
@@ -124,23 +144,60 @@ def machine_of(program: Program) -> Machine | None:
         return None
     m = load_machine(program.machine)
     if program.machine_above:
-        m.program_path.insert(0, program.path.parent)
+        own_folder_first(m, program.path)
     return m
 
 
-def _folder(root: Path, dialect: str | None, machine: str | Path | None, found: Found, seen: set[Path]) -> None:
-    folders: dict[Path, list[tuple[Path, str]]] = {}
+def own_folder_first(machine: Machine, program: Path) -> None:
+    """Search ``program``'s own folder for its sub-programs before the program path of a machine file from a
+    folder above, unless the program path holds it already (then the search, and its error's list of
+    folders, are those of ``ncvm run PROGRAM --machine FILE``)."""
+    folder = program.parent
+    if all(Path(p).resolve() != folder.resolve() for p in machine.program_path):
+        machine.program_path.insert(0, folder)
+
+
+def outermost(path: Path, named: list[Path]) -> Path | None:
+    """The uppermost folder of ``named`` (absolute) that holds ``path``: the bound of its machine file search,
+    whatever the order the folders were named in."""
+    here = Path(os.path.abspath(path))
+    holders = [folder for folder in named if here.is_relative_to(folder)]
+    return min(holders, key=lambda f: len(f.parts)) if holders else None
+
+
+def walk(root: Path) -> list[Path]:
+    """The entries below ``root`` in path order, entering linked folders, each real folder once; folders
+    whose name starts with a dot (a state directory .ncvm, version control) are never part of the archive."""
+    out: list[Path] = []
+    visited = {root.resolve()}
+    for top, dirs, files in os.walk(root, followlinks=True):
+        keep = []
+        for d in sorted(dirs):
+            real = (Path(top) / d).resolve()
+            if not d.startswith(".") and real not in visited:
+                visited.add(real)
+                keep.append(d)
+        dirs[:] = keep
+        out += [Path(top) / f for f in files if not f.startswith(".")]
+    return sorted(out)
+
+
+def _folder(root: Path, dialect: str | None, machine: str | Path | None, found: Found, seen: set[Path],
+            named: list[Path]) -> None:
+    files: list[tuple[Path, str]] = []
     file_roots: dict[Path, Path | None] = {}
-    for path in sorted(root.rglob("*")):
-        rel = path.relative_to(root)
-        if any(part.startswith(".") for part in rel.parts) or not path.is_file():
-            continue  # a state directory (.ncvm), version control: never part of the archive
-        if path.resolve() in seen:
-            continue
+    for path in walk(root):
         if path.suffix and path.suffix.lower() not in EXTENSIONS:
             continue
+        unreadable = _not_a_file(path)
+        if unreadable:
+            found.skipped.append(Skipped(path, unreadable))
+            continue
+        if path.resolve() in seen:
+            continue
         seen.add(path.resolve())
-        owner = Path(machine) if machine else nearest_machine(path, root)
+        bound = outermost(path, named) or root
+        owner = Path(machine) if machine else nearest_machine(path, bound)
         data = _file_root(owner, file_roots)
         if data is not None and path.resolve().is_relative_to(data):
             found.skipped.append(Skipped(path, f"in the file root of {owner}: the controller's data, not a program"))
@@ -149,16 +206,51 @@ def _folder(root: Path, dialect: str | None, machine: str | Path | None, found: 
         if isinstance(kind, Skipped):
             found.skipped.append(kind)
         else:
-            folders.setdefault(path.parent, []).append((path, kind))
-    for folder, files in folders.items():
-        subs = _subprograms(folder, files)
-        for path, kind in files:
-            program = _program(path, kind, root, machine)
-            found.all_programs.append(program)
-            if path in subs:
-                found.skipped.append(Skipped(path, subs[path]))
-            else:
-                found.programs.append(program)
+            files.append((path, kind))
+    programs = [_program(path, kind, outermost(path, named) or root, machine) for path, kind in files]
+    subs = _subprograms(programs)
+    found.skipped += _missing_mains({p.path.parent for p in programs} | {root})
+    for program in programs:
+        found.all_programs.append(program)
+        if program.path in subs:
+            found.skipped.append(Skipped(program.path, subs[program.path]))
+        else:
+            found.programs.append(program)
+
+
+def _not_a_file(path: Path) -> str | None:
+    """Why ``path`` cannot be read as a program (None: a regular file, or a link to one)."""
+    try:
+        mode = path.stat().st_mode
+    except FileNotFoundError:
+        return f"a link to {os.readlink(path)}, which does not exist" if path.is_symlink() else "vanished"
+    except OSError as e:
+        return f"cannot be read ({e.strerror})"
+    if stat.S_ISREG(mode):
+        return None
+    if stat.S_ISDIR(mode):
+        return "a folder"
+    kind = "a FIFO" if stat.S_ISFIFO(mode) else "a device" if stat.S_ISCHR(mode) or stat.S_ISBLK(mode) else \
+        "a socket" if stat.S_ISSOCK(mode) else "not a regular file"
+    return f"{kind}, not a program file"
+
+
+def _missing_mains(folders: set[Path]) -> list[Skipped]:
+    """The main programs a folder's main.txt lists whose file is not there: named, so none is missed silently."""
+    out = []
+    for folder in sorted(folders):
+        listing = folder / MAIN_LIST
+        if not listing.is_file():
+            continue
+        present = {p.name.lower() for p in folder.iterdir()}
+        for name in _main_names(listing):
+            if name not in present:
+                out.append(Skipped(folder / name, f"listed as a main program in {listing}, but there is no such file"))
+    return out
+
+
+def _main_names(listing: Path) -> list[str]:
+    return [name.strip().lower() for name in read_text(listing).splitlines() if name.strip()]
 
 
 def _file_root(machine: Path | None, cache: dict[Path, Path | None]) -> Path | None:
@@ -188,11 +280,9 @@ def _classify(path: Path, dialect: str | None) -> str | Skipped:
     if path.suffix.lower() in EXTENSIONS:
         return EXTENSIONS[path.suffix.lower()]
     try:
-        if path.stat().st_size > MAX_SNIFF_BYTES:
-            return Skipped(path, f"no extension and larger than {MAX_SNIFF_BYTES // 2**20} MB: not a program")
-        text = read_text(path)
-    except (OSError, UnicodeDecodeError, ValueError) as e:
-        return Skipped(path, f"no extension and not readable as text ({getattr(e, 'strerror', None) or e})")
+        text = _head(path)
+    except OSError as e:
+        return Skipped(path, f"no extension and not readable ({e.strerror})")
     if "\0" in text:
         return Skipped(path, "no extension and binary content: not a program")
     try:
@@ -202,25 +292,86 @@ def _classify(path: Path, dialect: str | None) -> str | Skipped:
         return Skipped(path, f"no extension and the content is no program of a known dialect ({detail})")
 
 
-def _subprograms(folder: Path, files: list[tuple[Path, str]]) -> dict[Path, str]:
-    """The sub-programs among the programs of one folder, each with the reason."""
-    listing = folder / MAIN_LIST
-    if listing.is_file():
-        main = {name.strip().lower() for name in read_text(listing).splitlines() if name.strip()}
-        return {p: f"sub-program: not listed in {listing}" for p, _ in files if p.name.lower() not in main}
-    subs = {p: "sub-program: a SINUMERIK sub-program file (.spf) is called, never started alone"
-            for p, _ in files if p.suffix.lower() in SUBPROGRAM_EXTENSIONS}
-    by_stem = {p.stem.lower(): p for p, _ in files}
-    for caller, kind in files:
-        pattern = CALLS.get(kind)
-        if pattern is None:
-            continue
-        try:
-            text = read_text(caller)
-        except (OSError, UnicodeDecodeError, ValueError):
-            continue
-        for name in pattern.findall(text):
-            callee = by_stem.get(name.strip().lower())
-            if callee is not None and callee != caller and callee not in subs:
-                subs[callee] = f"sub-program: called by {caller.name}"
+def _head(path: Path) -> str:
+    """The first bytes of a file as a program's text: enough to classify it, however large the file."""
+    with open(path, "rb") as f:
+        return without_bom(f.read(SNIFF_BYTES).decode("latin-1"))
+
+
+def _subprograms(programs: list[Program]) -> dict[Path, str]:
+    """The sub-programs among the programs found below one folder named, each with the reason."""
+    subs: dict[Path, str] = {}
+    listed = {}
+    for folder in {p.path.parent for p in programs}:
+        listing = folder / MAIN_LIST
+        if listing.is_file():
+            listed[folder] = (listing, set(_main_names(listing)))
+    for p in programs:
+        if p.path.parent in listed:
+            listing, main = listed[p.path.parent]
+            if p.path.name.lower() not in main:
+                subs[p.path] = f"sub-program: not listed in {listing}"
+        elif p.path.suffix.lower() in SUBPROGRAM_EXTENSIONS:
+            subs[p.path] = "sub-program: a SINUMERIK sub-program file (.spf) is called, never started alone"
+    for p in programs:  # checked as the CL 800 data they are, never run
+        if p.dialect == "cl800" and _EXTERNAL_LIST.match(_text_head(p.path)):
+            subs[p.path] = "a CL 800 external list (EXTERNAL ... ENDEXTERN): the data a program's header names"
+    by_place = {(p.path.parent.resolve(), p.path.stem.lower()): p for p in programs}
+    by_file = {p.path.resolve(): p for p in programs}
+    machines: dict[Path | None, tuple[list[Path], set[str]]] = {}
+    for caller in programs:
+        folders, cycles = _search(caller, machines)
+        called = [(name, f"called by {caller.path.name}") for name in _called(caller)]
+        called += [(name, f"the cycle {caller.machine} maps an address to") for name in cycles]
+        for name, why in called:
+            callee = next((by_place[(f, name.lower())] for f in folders if (f, name.lower()) in by_place), None)
+            if _decided(callee, caller, subs, listed):
+                subs[callee.path] = f"sub-program: {why}"
+        pattern = INCLUDES.get(caller.dialect)
+        for name in pattern.findall(_text(caller.path)) if pattern else ():
+            callee = by_file.get((caller.path.parent / name).resolve())
+            if _decided(callee, caller, subs, listed):
+                subs[callee.path] = f"sub-program: included by {caller.path.name}"
     return subs
+
+
+def _decided(callee: Program | None, caller: Program, subs: dict, listed: dict) -> bool:
+    """``callee`` becomes a sub-program by this call: a folder's main.txt has the last word."""
+    return (callee is not None and callee is not caller and callee.path not in subs
+            and callee.path.parent not in listed)
+
+
+def _text_head(path: Path) -> str:
+    try:
+        return _head(path)
+    except OSError:
+        return ""
+
+
+def _called(program: Program) -> list[str]:
+    pattern = CALLS.get(program.dialect)
+    return [name.strip() for name in pattern.findall(_text(program.path))] if pattern else []
+
+
+def _text(path: Path) -> str:
+    try:
+        return read_text(path)
+    except OSError:
+        return ""
+
+
+def _search(program: Program, cache: dict) -> tuple[list[Path], set[str]]:
+    """The folders (resolved) ``program`` finds sub-programs in, and the cycles of its machine file."""
+    if program.machine not in cache:
+        folders, cycles = [], set()
+        if program.machine is not None:
+            try:
+                m = load_machine(program.machine)
+                folders = [Path(f).resolve() for f in m.program_path]
+                calls = (m.sections.get("cpl") or {}).get("calls") or {}
+                cycles = {str(v["program"] if isinstance(v, dict) else v) for v in calls.values()}
+            except (UsageError, OSError):
+                pass
+        cache[program.machine] = (folders, cycles)
+    folders, cycles = cache[program.machine]
+    return [program.path.parent.resolve(), *folders], cycles

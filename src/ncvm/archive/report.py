@@ -9,6 +9,7 @@ from __future__ import annotations
 import csv
 import io
 import json
+import re
 import xml.etree.ElementTree as ET
 from collections import Counter
 from pathlib import Path
@@ -95,9 +96,8 @@ def to_junit(doc: dict) -> str:
                              time=f"{r.get('wall_time_s', 0.0):.3f}")
         if r["error"]:
             e = r["error"]
-            where = f"{e['file']}:{e['line']}:{e['column']}: " if e["file"] and e["line"] else ""
             failure = ET.SubElement(case, "failure", type=e["code"] or "error", message=e["message"])
-            failure.text = f"{where}error {e['code']}: {e['message']}"
+            failure.text = f"{location(e, '')}error {e['code']}: {e['message']}"
         elif r["limit_violations"]:
             failure = ET.SubElement(case, "failure", type="limit_violation", message=r["limit_violations"][0])
             failure.text = "\n".join(r["limit_violations"])
@@ -105,8 +105,31 @@ def to_junit(doc: dict) -> str:
     for skipped in doc["skipped"]:
         case = ET.SubElement(suite, "testcase", classname="skipped", name=skipped["path"], time="0")
         ET.SubElement(case, "skipped", message=skipped["reason"])
+    _xml_safe(suite)
     ET.indent(suite)
     return ET.tostring(suite, encoding="unicode", xml_declaration=True) + "\n"
+
+
+#: the characters XML 1.0 forbids (C0 controls but tab, line feed and carriage return; the surrogates; FFFE,
+#: FFFF): a program's output or a damaged line may hold them, the report writes them as ``\\xHH``
+_NOT_XML = re.compile("[\x00-\x08\x0b\x0c\x0e-\x1f\ud800-\udfff\ufffe\uffff]")
+
+
+def _xml_safe(element: ET.Element) -> None:
+    """Write every forbidden character of ``element``'s texts and attributes as ``\\xHH`` (well-formed XML)."""
+    escape = lambda text: _NOT_XML.sub(lambda m: f"\\x{ord(m.group()):02x}", text) if text else text  # noqa: E731
+    for e in element.iter():
+        e.text, e.tail = escape(e.text), escape(e.tail)
+        for key, value in e.attrib.items():
+            e.attrib[key] = escape(value)
+
+
+def location(error: dict, otherwise: str) -> str:
+    """``file:line:col: `` of an error, ``file:line: `` when the control names a line only, else ``otherwise``."""
+    if not (error["file"] and error["line"]):
+        return otherwise
+    column = f"{error['column']}:" if error["column"] is not None else ""
+    return f"{error['file']}:{error['line']}:{column} "
 
 
 def _case_out(r: dict) -> str:
@@ -130,8 +153,7 @@ def summary_lines(doc: dict) -> list[str]:
     for r in doc["programs"]:
         if r["status"] == "error":
             e = r["error"]
-            where = f"{e['file']}:{e['line']}:{e['column']}: " if e["file"] and e["line"] else f"{r['path']}: "
-            lines.append(f"{where}error {e['code']}: {e['message']}")
+            lines.append(f"{location(e, r['path'] + ': ')}error {e['code']}: {e['message']}")
         elif r["status"] == "limit_violation":
             lines.append(f"{r['path']}: warning: {r['limit_violations'][0]}")
     for s in doc["skipped"]:

@@ -24,6 +24,7 @@ from .. import api
 from ..diagnostics import NcvmError
 from ..machine.state import STORE_NAME
 from ..runtime.session import RunOptions
+from .discover import own_folder_first
 from .tasks import Task
 
 #: a run owns its process's memory limit and the interpreter's signal handling: one run at a time per
@@ -50,7 +51,8 @@ def run_task(task: Task) -> dict:
         if task.settings.shared_state:
             state = Path(task.settings.shared_state)
             with _shared(state):
-                doc, writes = _run_and_compare(task, inside, state)
+                doc, writes = (_run_and_compare(task, inside, state) if shares(state, task.settings.share_token)
+                               else _not_shared(task, state))
         else:
             state = Path(tmp) / "state"
             for name, data in task.settings.seed.items():
@@ -76,6 +78,25 @@ def _shared(state: Path):
         os.close(fd)
 
 
+def shares(state: Path, token: str | None) -> bool:
+    """This host sees the batch's shared state directory: the token file the batch wrote there is there."""
+    return token is None or (state / token).is_file()
+
+
+def _not_shared(task: Task, state: Path) -> tuple[dict, dict]:
+    message = (f"--shared-state: {state} on {socket.gethostname()} is not the batch's state directory (the file "
+               f"{task.settings.share_token} the batch wrote there is missing); the program is not run, as its "
+               f"writes would be lost: give a directory every worker shares")
+    return _setup_error(task, message), {"store": [], "files": []}
+
+
+def _setup_error(task: Task, message: str) -> dict:
+    error = {"code": SETUP_ERROR, "message": message, "file": None, "line": None, "column": None}
+    return {"status": "error", "dialect": task.dialect, "error": error, "output": [], "position": {},
+            "variables": {}, "output_dropped": 0, "cycle_time_model": "",
+            "motion": None, "cycle_time_s": 0.0, "steps": 0, "limit_violations": []}
+
+
 def _run_and_compare(task: Task, inside, state: Path) -> tuple[dict, dict]:
     file_root = inside(task.file_root)
     watched = {"state": state, "file root": file_root}
@@ -98,14 +119,10 @@ def _run(task: Task, inside, state: Path) -> dict:
     try:
         machine = api.machine_for(program, inside(str(Path(task.base) / task.machine)) if task.machine else None, state)
         if task.own_folder_first:  # a machine file of a folder above: the program's own folder is searched first
-            machine.program_path.insert(0, program.parent)
+            own_folder_first(machine, program)
         return api.run_program(program, task.dialect, machine, options).to_json()
     except NcvmError as e:  # the machine file, the state directory ...: as ncvm run says it, for this program
-        message = getattr(e, "message", None) or str(e)
-        error = {"code": SETUP_ERROR, "message": message, "file": None, "line": None, "column": None}
-        return {"status": "error", "dialect": task.dialect, "error": error, "output": [], "position": {},
-                "variables": {}, "output_dropped": 0, "cycle_time_model": "",
-                "motion": None, "cycle_time_s": 0.0, "steps": 0, "limit_violations": []}
+        return _setup_error(task, getattr(e, "message", None) or str(e))
 
 
 def _snapshot(state: Path, watched: dict[str, Path | None]) -> dict:

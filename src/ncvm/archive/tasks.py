@@ -1,7 +1,10 @@
 """A batch's tasks: each program with everything its run reads, so that any process on any host runs it.
 
 A task carries the text of the program, of every file of its search path the program may call (a file
-whose name the program or a file it brings along mentions), the machine file and the machine's file root,
+whose name the program, its machine file -- the cycles of ``[cpl] calls`` -- or a file it brings along
+mentions; a relative path it names, as a rw_SymPas include of a sub-folder; for SINUMERIK, every
+sub-program of the search path, as they are called by the number of their ``%SPF`` header, indirectly
+too), the machine file and the machine's file root,
 the program's key script and scenario, and the batch's settings. The state every run starts from (the
 ``--state`` directory's permanent store and files) travels once in the settings.
 """
@@ -26,6 +29,12 @@ KEYS_SUFFIX = ".keys"
 SCENARIO_SUFFIX = ".scenario.toml"
 #: a program may mention another by any word of its text: names are taken generously, the files are small
 _WORD = re.compile(r"[A-Za-z0-9_]+")
+#: a relative path a program names (an include of a sub-folder): shipped when it is a file
+_RELATIVE = re.compile(r"[A-Za-z0-9_.-]+(?:/[A-Za-z0-9_.-]+)+")
+#: dialects whose sub-programs are called by the number in their header (``L20`` finds ``%SPF20``, ``L=R5``
+#: the number R5 holds): every sub-program file of the search path travels with the task
+_BY_NUMBER = ("sin800", "cl800")
+_SPF_HEAD = re.compile(rb"\A\s*%\s*SPF", re.IGNORECASE)
 #: files larger than this in a search folder are no program a run calls (never shipped)
 MAX_CALLED_BYTES = 4 * 1024 * 1024
 
@@ -38,6 +47,9 @@ class Settings:
     max_memory: int | None = None  # None: the default of a run
     #: a state directory every run uses in turn (writes stay there); None: each program its own temporary one
     shared_state: str | None = None
+    #: the name of the file the batch wrote into the shared state directory: a run that does not find it
+    #: there is on a host that does not share the directory, and refuses to run (its writes would be lost)
+    share_token: str | None = None
     #: the state each program starts from when not shared: path inside the state directory -> content
     seed: dict[str, bytes] = field(default_factory=dict)
     seed_from: str | None = None  # where the seed was read (for the report)
@@ -117,7 +129,10 @@ class TaskBuilder:
             files[str(path)] = path.read_bytes()
         except OSError as e:
             return UsageError(f"cannot read {program.path}: {e.strerror}")
-        self._add_called(files, path, [path.parent, *search])
+        mentions = [files[str(path)]] + ([files[str(program.machine.absolute())]] if program.machine else [])
+        self._add_called(files, path, [path.parent, *search], mentions)
+        if program.dialect in _BY_NUMBER:
+            self._add_numbered(files, [path.parent, *search])
         extras = {}
         for suffix in (KEYS_SUFFIX, SCENARIO_SUFFIX):
             side = path.with_name(path.stem + suffix)
@@ -129,25 +144,33 @@ class TaskBuilder:
                     file_root=file_root, own_folder_first=program.machine_above, keys=extras.get(KEYS_SUFFIX),
                     scenario=extras.get(SCENARIO_SUFFIX), settings=self.settings)
 
-    def _add_called(self, files: dict[str, bytes], program: Path, folders: list[Path]) -> None:
-        """Add every file of ``folders`` whose name (without extension) the program, or a file added for it,
-        mentions: what it may call. Generous on purpose: a file too many costs little, one too few fails."""
-        listings = [self._files_by_name(folder) for folder in dict.fromkeys(folders)]
-        todo, seen = [files[str(program)]], set()
+    def _add_called(self, files: dict[str, bytes], program: Path, folders: list[Path], mentions: list[bytes]) -> None:
+        """Add every file of ``folders`` whose name (without extension) the program, its machine file, or a
+        file added for it mentions, and every relative path they name: what it may call or include.
+        Generous on purpose: a file too many costs little, one too few fails."""
+        folders = list(dict.fromkeys(folders))
+        listings = [self._files_by_name(folder) for folder in folders]
+        todo, seen = list(mentions), set()
         while todo:
-            for word in set(_WORD.findall(todo.pop().decode("latin-1").upper())) - seen:
-                seen.add(word)
-                for p in (p for listing in listings for p in listing.get(word, ())):
-                    key = str(p.absolute())
-                    if key in files:
-                        continue
-                    try:
-                        if p.stat().st_size > MAX_CALLED_BYTES:
-                            continue
-                        files[key] = p.read_bytes()
-                    except OSError:
-                        continue
-                    todo.append(files[key])
+            text = todo.pop().decode("latin-1")
+            candidates = [p for word in set(_WORD.findall(text.upper())) - seen
+                          for listing in listings for p in listing.get(word, ())]
+            seen.update(_WORD.findall(text.upper()))
+            candidates += [folder / rel for rel in set(_RELATIVE.findall(text)) for folder in folders
+                           if (folder / rel).resolve().is_relative_to(folder.resolve())]  # never ../ out of it
+            for p in candidates:
+                data = _small_file(p, files)
+                if data is not None:
+                    todo.append(data)
+
+    def _add_numbered(self, files: dict[str, bytes], folders: list[Path]) -> None:
+        """Add every SINUMERIK sub-program of ``folders`` (a ``.spf`` file or one with a ``%SPF`` header)."""
+        for folder in dict.fromkeys(folders):
+            for p in (p for named in self._files_by_name(folder).values() for p in named):
+                if str(p.absolute()) in files:
+                    continue
+                if p.suffix.lower() == ".spf" or _SPF_HEAD.match(_head(p)):
+                    _small_file(p, files)
 
     def _files_by_name(self, folder: Path) -> dict[str, list[Path]]:
         if folder not in self._folders:
@@ -179,3 +202,25 @@ class TaskBuilder:
             except OSError as e:
                 self._machines[key] = UsageError(f"cannot read the machine file {machine}: {e.strerror}")
         return self._machines[key]
+
+
+def _small_file(p: Path, files: dict[str, bytes]) -> bytes | None:
+    """Add ``p`` to ``files`` when it is a regular file a run may call; its content, None when not added."""
+    key = str(p.absolute())
+    if key in files:
+        return None
+    try:
+        if not p.is_file() or p.stat().st_size > MAX_CALLED_BYTES:
+            return None
+        files[key] = p.read_bytes()
+    except OSError:
+        return None
+    return files[key]
+
+
+def _head(p: Path) -> bytes:
+    try:
+        with open(p, "rb") as f:
+            return f.read(64)
+    except OSError:
+        return b""
