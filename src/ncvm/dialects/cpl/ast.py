@@ -11,203 +11,341 @@ from dataclasses import dataclass, field
 from .lexer import VarName
 
 
+class Node:
+    """A node of the tree: fields compare and print as a dataclass's would.
+
+    The nodes are plain classes with ``__slots__`` and a written-out ``__init__`` rather than dataclasses:
+    creating 33 slotted dataclasses took about 13 ms of every CPL start-up (issue 18).
+    """
+
+    __slots__ = ()
+    __hash__ = None  # mutable, as a dataclass with eq and without frozen
+
+    def _fields(self) -> tuple[str, ...]:
+        return tuple(f for c in reversed(type(self).__mro__) for f in c.__dict__.get("__slots__", ()))
+
+    def __eq__(self, other):
+        if other.__class__ is not self.__class__:
+            return NotImplemented
+        return all(getattr(self, f) == getattr(other, f) for f in self._fields())
+
+    def __repr__(self) -> str:
+        return f"{type(self).__qualname__}({', '.join(f'{f}={getattr(self, f)!r}' for f in self._fields())})"
+
+
 # -- expressions ---------------------------------------------------------
-@dataclass(slots=True)
-class Num:
-    value: int | float
-    type: str  # "I" or "R"
+class Num(Node):
+    __slots__ = ("value", "type")
+
+    def __init__(self, value: int | float, type: str):
+        self.value = value
+        self.type = type  # "I" or "R"
 
 
-@dataclass(slots=True)
-class Str:
-    value: str
+class Str(Node):
+    __slots__ = ("value",)
+
+    def __init__(self, value: str):
+        self.value = value
 
 
-@dataclass(slots=True)
-class BoolLit:
-    value: bool
+class BoolLit(Node):
+    __slots__ = ("value",)
+
+    def __init__(self, value: bool):
+        self.value = value
 
 
-@dataclass(slots=True)
-class Nul:
-    pass
+class Nul(Node):
+    __slots__ = ()
 
 
-@dataclass(slots=True)
-class Var:
-    var: VarName
-    index: list | None = None  # index expressions, or None
-    col: int = 0
+class Var(Node):
+    __slots__ = ("var", "index", "col")
+
+    def __init__(self, var: VarName, index: list | None = None, col: int = 0):
+        self.var = var
+        self.index = index  # index expressions, or None
+        self.col = col
 
 
-@dataclass(slots=True)
-class Func:
-    name: str
-    args: list  # expressions or None for an empty position
-    col: int = 0
+class Func(Node):
+    __slots__ = ("name", "args", "col")
+
+    def __init__(self, name: str, args: list, col: int = 0):
+        self.name = name
+        self.args = args  # expressions or None for an empty position
+        self.col = col
 
 
-@dataclass(slots=True)
-class Unary:
-    op: str  # "-", "+", "NOT"
-    operand: object
+class Unary(Node):
+    __slots__ = ("op", "operand")
+
+    def __init__(self, op: str, operand: object):
+        self.op = op  # "-", "+", "NOT"
+        self.operand = operand
 
 
-@dataclass(slots=True)
-class Bin:
-    op: str
-    left: object
-    right: object
+class Bin(Node):
+    __slots__ = ("op", "left", "right")
+
+    def __init__(self, op: str, left: object, right: object):
+        self.op = op
+        self.left = left
+        self.right = right
 
 
 # -- statements ----------------------------------------------------------
-@dataclass(slots=True)
-class Stmt:
-    line: int = 0  # physical line
-    col: int = 0
-    cpl: int | None = None  # CPL line number of the block
+class Stmt(Node):
+    __slots__ = ("line", "col", "cpl")
+
+    def __init__(self, line: int = 0, col: int = 0, cpl: int | None = None):
+        self.line = line  # physical line
+        self.col = col
+        self.cpl = cpl  # CPL line number of the block
 
 
-@dataclass(slots=True)
 class Assign(Stmt):
-    target: Var | None = None
-    expr: object = None
-    mid: tuple | None = None  # (start, count) for MID$(target, start, count) = expr
+    __slots__ = ("target", "expr", "mid")
+
+    def __init__(
+        self,
+        line: int = 0,
+        col: int = 0,
+        cpl: int | None = None,
+        target: Var | None = None,
+        expr: object = None,
+        mid: tuple | None = None,
+    ):
+        Stmt.__init__(self, line, col, cpl)
+        self.target = target
+        self.expr = expr
+        self.mid = mid  # (start, count) for MID$(target, start, count) = expr
 
 
-@dataclass(slots=True)
 class Goto(Stmt):
-    kind: str = ""  # "line", "n", "label"
-    target: object = None
+    __slots__ = ("kind", "target")
+
+    def __init__(self, line: int = 0, col: int = 0, cpl: int | None = None, kind: str = "", target: object = None):
+        Stmt.__init__(self, line, col, cpl)
+        self.kind = kind  # "line", "n", "label"
+        self.target = target
 
 
-@dataclass(slots=True)
 class CallStmt(Stmt):
-    name: str = ""
-    args: list = field(default_factory=list)
-    din: bool = False
+    __slots__ = ("name", "args", "din")
+
+    def __init__(
+        self,
+        line: int = 0,
+        col: int = 0,
+        cpl: int | None = None,
+        name: str = "",
+        args: list | None = None,
+        din: bool = False,
+    ):
+        Stmt.__init__(self, line, col, cpl)
+        self.name = name
+        self.args = [] if args is None else args
+        self.din = din
 
 
-@dataclass(slots=True)
 class Dim(Stmt):
-    items: list = field(default_factory=list)  # (VarName, [sizes])
+    __slots__ = ("items",)
+
+    def __init__(self, line: int = 0, col: int = 0, cpl: int | None = None, items: list | None = None):
+        Stmt.__init__(self, line, col, cpl)
+        self.items = [] if items is None else items  # (VarName, [sizes])
 
 
-@dataclass(slots=True)
 class Pdim(Stmt):
-    var: VarName | None = None
-    size: int = 0
+    __slots__ = ("var", "size")
+
+    def __init__(self, line: int = 0, col: int = 0, cpl: int | None = None, var: VarName | None = None, size: int = 0):
+        Stmt.__init__(self, line, col, cpl)
+        self.var = var
+        self.size = size
 
 
-@dataclass(slots=True)
 class Wait(Stmt):
-    neg: bool = False
-    ic: list | None = None  # IC(...) argument expressions
-    state: object = None
-    duration: object = None
-    result: Var | None = None
-    plain: bool = True
+    __slots__ = ("neg", "ic", "state", "duration", "result", "plain")
+
+    def __init__(
+        self,
+        line: int = 0,
+        col: int = 0,
+        cpl: int | None = None,
+        neg: bool = False,
+        ic: list | None = None,
+        state: object = None,
+        duration: object = None,
+        result: Var | None = None,
+        plain: bool = True,
+    ):
+        Stmt.__init__(self, line, col, cpl)
+        self.neg = neg
+        self.ic = ic  # IC(...) argument expressions
+        self.state = state
+        self.duration = duration
+        self.result = result
+        self.plain = plain
 
 
-@dataclass(slots=True)
 class Proc(Stmt):
-    name: str = ""
-    args: list = field(default_factory=list)
-    no_end: bool = False  # ';' before ')'
+    __slots__ = ("name", "args", "no_end")
+
+    def __init__(
+        self,
+        line: int = 0,
+        col: int = 0,
+        cpl: int | None = None,
+        name: str = "",
+        args: list | None = None,
+        no_end: bool = False,
+    ):
+        Stmt.__init__(self, line, col, cpl)
+        self.name = name
+        self.args = [] if args is None else args
+        self.no_end = no_end  # ';' before ')'
 
 
-@dataclass(slots=True)
 class LabelDef(Stmt):
-    name: str = ""
+    __slots__ = ("name",)
+
+    def __init__(self, line: int = 0, col: int = 0, cpl: int | None = None, name: str = ""):
+        Stmt.__init__(self, line, col, cpl)
+        self.name = name
 
 
-@dataclass(slots=True)
 class If(Stmt):
-    cond: object = None
+    __slots__ = ("cond",)
+
+    def __init__(self, line: int = 0, col: int = 0, cpl: int | None = None, cond: object = None):
+        Stmt.__init__(self, line, col, cpl)
+        self.cond = cond
 
 
-@dataclass(slots=True)
 class Else(Stmt):
-    pass
+    __slots__ = ()
 
 
-@dataclass(slots=True)
 class EndIf(Stmt):
-    pass
+    __slots__ = ()
 
 
-@dataclass(slots=True)
 class Case(Stmt):
-    expr: object = None
+    __slots__ = ("expr",)
+
+    def __init__(self, line: int = 0, col: int = 0, cpl: int | None = None, expr: object = None):
+        Stmt.__init__(self, line, col, cpl)
+        self.expr = expr
 
 
-@dataclass(slots=True)
 class CaseLabel(Stmt):
-    values: list = field(default_factory=list)
+    __slots__ = ("values",)
+
+    def __init__(self, line: int = 0, col: int = 0, cpl: int | None = None, values: list | None = None):
+        Stmt.__init__(self, line, col, cpl)
+        self.values = [] if values is None else values
 
 
-@dataclass(slots=True)
 class Otherwise(Stmt):
-    pass
+    __slots__ = ()
 
 
-@dataclass(slots=True)
 class EndCase(Stmt):
-    pass
+    __slots__ = ()
 
 
-@dataclass(slots=True)
 class For(Stmt):
-    var: Var | None = None
-    start: object = None
-    step: object = None
-    end: object = None
+    __slots__ = ("var", "start", "step", "end")
+
+    def __init__(
+        self,
+        line: int = 0,
+        col: int = 0,
+        cpl: int | None = None,
+        var: Var | None = None,
+        start: object = None,
+        step: object = None,
+        end: object = None,
+    ):
+        Stmt.__init__(self, line, col, cpl)
+        self.var = var
+        self.start = start
+        self.step = step
+        self.end = end
 
 
-@dataclass(slots=True)
 class Next(Stmt):
-    var: Var | None = None
+    __slots__ = ("var",)
+
+    def __init__(self, line: int = 0, col: int = 0, cpl: int | None = None, var: Var | None = None):
+        Stmt.__init__(self, line, col, cpl)
+        self.var = var
 
 
-@dataclass(slots=True)
 class While(Stmt):
-    cond: object = None
+    __slots__ = ("cond",)
+
+    def __init__(self, line: int = 0, col: int = 0, cpl: int | None = None, cond: object = None):
+        Stmt.__init__(self, line, col, cpl)
+        self.cond = cond
 
 
-@dataclass(slots=True)
 class WEnd(Stmt):
-    pass
+    __slots__ = ()
 
 
-@dataclass(slots=True)
 class Repeat(Stmt):
-    pass
+    __slots__ = ()
 
 
-@dataclass(slots=True)
 class Until(Stmt):
-    cond: object = None
+    __slots__ = ("cond",)
+
+    def __init__(self, line: int = 0, col: int = 0, cpl: int | None = None, cond: object = None):
+        Stmt.__init__(self, line, col, cpl)
+        self.cond = cond
 
 
-@dataclass(slots=True)
-class NcWord:
-    address: str
-    value: float | None = None
-    expr: object = None
+class NcWord(Node):
+    __slots__ = ("address", "value", "expr")
+
+    def __init__(self, address: str, value: float | None = None, expr: object = None):
+        self.address = address
+        self.value = value
+        self.expr = expr
 
 
-@dataclass(slots=True)
 class NcBlock(Stmt):
     """An NC block: constant words, [expr] words, standalone [expr] words, a message, a sub-program call."""
 
-    n: int | None = None
-    skip: bool = False
-    words: list = field(default_factory=list)  # NcWord
-    loose: list = field(default_factory=list)  # standalone [expr]
-    msg: str | None = None
-    wait: bool = False
-    call: tuple | None = None  # (program name, [args], modal flag) for G/M/P calls
-    ends: bool = False  # M2 / M30
+    __slots__ = ("n", "skip", "words", "loose", "msg", "wait", "call", "ends")
+
+    def __init__(
+        self,
+        line: int = 0,
+        col: int = 0,
+        cpl: int | None = None,
+        n: int | None = None,
+        skip: bool = False,
+        words: list | None = None,
+        loose: list | None = None,
+        msg: str | None = None,
+        wait: bool = False,
+        call: tuple | None = None,
+        ends: bool = False,
+    ):
+        Stmt.__init__(self, line, col, cpl)
+        self.n = n
+        self.skip = skip
+        self.words = [] if words is None else words  # NcWord
+        self.loose = [] if loose is None else loose  # standalone [expr]
+        self.msg = msg
+        self.wait = wait
+        self.call = call  # (program name, [args], modal flag) for G/M/P calls
+        self.ends = ends  # M2 / M30
 
 
 @dataclass
