@@ -47,6 +47,16 @@ def spindle_speed_limit(k, g, words, src):
         k._css_update(src)
 
 
+def tool_length_kept(k) -> list[float]:
+    """G53 / POS MSYS keep the tool offset: the manual suppresses "all zero point-, PRESET-, and the DRF
+    offsets" and leaves the tool offsets to the programmer ("the tool offsets must be cancelled for
+    approaching a fixed machine point", L4083). The length stays on the tool axis."""
+    kept = [0.0] * k.n_axes
+    if k.tool_axis is not None:
+        kept[k.tool_axis] = k.tool_length
+    return kept
+
+
 def _row(g, group, meaning, run=SET, handler=None, status=IMPLEMENTED, line=TABLE):
     return Row(g, group, meaning, line, status, run, handler)
 
@@ -86,7 +96,8 @@ ROWS = (
     _row(40, "3", "cutter radius compensation off", SET, cutter_comp),
     _row(41, "3", "cutter radius compensation left (radius of the TO area's D)", SET, cutter_comp),
     _row(42, "3", "cutter radius compensation right (radius of the TO area's D)", SET, cutter_comp),
-    _row(53, "4", "zero offsets suppressed for this block: its target in machine coordinates", MACHINE, None, FAMILY),
+    _row(53, "4", "zero offsets suppressed for this block: its target in machine coordinates, the tool length "
+         "kept (as POS MSYS, L4083)", MACHINE, tool_length_kept, FAMILY),
     *(_row(g, "5", f"settable zero offset G{g} (ZOA group {g - 53}, L2456)", SET, work_offset) for g in (54, 55, 56, 57)),
     _row(4, "6", "dwell, F or X seconds (G4 F=R27, L5465)", DWELL, line="L5465"),
     _no(25, "6", "lower working area / spindle speed limitation"),
