@@ -57,6 +57,16 @@ def tool_length_kept(k) -> list[float]:
     return kept
 
 
+def auxiliary_h(k, value, words, src) -> None:
+    """H<n>: an auxiliary function output to the PLC, as a machine-specific M function is (machine data bit
+    5400.0 decides whether auxiliary functions go to the PLC, L3072): no motion of its own; the axes stand
+    while the PLC takes it, and the trace records it (docs/decisions.md, "Issue 14: the H word")."""
+    code = f"H{value:g}"
+    k.planner.stop()
+    k.machine.plc.outputs[code] = True
+    k.canon.aux(code, src)
+
+
 def _row(g, group, meaning, run=SET, handler=None, status=IMPLEMENTED, line=TABLE):
     return Row(g, group, meaning, line, status, run, handler)
 
@@ -151,6 +161,8 @@ ADDRESSES = (
     Address("R", "circle radius (PRAD)", "", IMPLEMENTED),
     Address("B", "circle radius where B is no axis ([sin800] radius_address: B or U; on a straight block the "
             "rounding to the next, N5 X400 Y50 B100, L4237)", "L4237", IMPLEMENTED),
+    Address("H", "auxiliary function output to the PLC (L3072), recorded like an M function to the PLC", "L3072",
+            IMPLEMENTED, auxiliary_h),
     Address("A", "the angle address where A is no axis (PANG)", "", IMPLEMENTED),
 )
 
