@@ -166,9 +166,9 @@ class CutterComp:
                 self._line(motion, target, end, src)
         else:
             if self.first:
-                k.fault("NC005", "the entry move of cutter radius compensation as an arc is not supported by ncvm "
-                        "(program a straight entry move)", src)
-            self._arc(motion == 2, target, end, words, src)
+                self._entry_arc(motion == 2, target, end, words, src)
+            else:
+                self._arc(motion == 2, target, end, words, src)
         self.first = False
         self.prog_pt = target
         end[self.a], end[self.b] = self.cur  # the move just held ends here (its end is this list) until the next
@@ -210,6 +210,35 @@ class CutterComp:
         # the direction kept for the backwards check is the side normal (its end lies a radius that way)
         self._hold(_Held(motion, end, self.kernel.feed, src, (math.cos(alpha), math.sin(alpha))))
         self.cur = (px + r * math.cos(alpha), py + r * math.sin(alpha))
+
+    def _entry_arc(self, cw: bool, target, end, words, src: Src) -> None:
+        """The first move an arc (LinuxCNC's rule): from where the tool stands to the point a radius beside the
+        programmed end, square to the arc there; the centre slides along the line from that point to the
+        programmed centre until both ends lie on one circle."""
+        k = self.kernel
+        cx, cy = self.cur
+        px, py = target
+        r = self.radius
+        if math.hypot(px - cx, py - cy) <= r:
+            k.fault("NC012", f"the entry arc of cutter radius compensation must be longer than the tool radius "
+                    f"{r:g} mm", src)
+        ccx, ccy, _ = k.arc_centre(cw, cx, cy, px, py, words, src)
+        inside = self._inside(not cw)
+        if inside and math.hypot(ccx - cx, ccy - cy) < r:
+            k.fault("NC012", f"the tool radius {r:g} mm is not less than the radius of the entry arc", src)
+        gamma = math.atan2(ccy - py, ccx - px) if inside else math.atan2(py - ccy, px - ccx)
+        ex, ey = px + r * math.cos(gamma), py + r * math.sin(gamma)
+        towards = math.atan2(ccy - ey, ccx - ex)
+        cos_a = math.cos(math.atan2(cy - ey, cx - ex) - towards)
+        if abs(cos_a) < 1e-12:
+            k.fault("NC012", f"the tool radius {r:g} mm does not fit the entry arc", src)
+        reach = math.hypot(cx - ex, cy - ey) / 2.0 / cos_a
+        centre = (ex + reach * math.cos(towards), ey + reach * math.sin(towards))
+        turns = max(0, int(words.get("P", 1)) - 1)
+        self.start, self.start_valid = self.cur, True
+        sweep = _sweep(cx, cy, *centre, not cw, turns, ex, ey)
+        self._hold(_Held(2, end, k.feed, src, None, center=centre, ccw=not cw, turns=turns, sweep=sweep))
+        self.cur = (ex, ey)
 
     def _line(self, motion: int, target, end, src: Src) -> None:
         cx, cy = self.cur
