@@ -191,3 +191,20 @@ def test_entry_arc_not_longer_than_the_radius_stops(run_text, tmp_path):
     text = "G21 G17 G90 G40\nT1 M6\nG0 X0 Y0\nG42 D1 G3 X3 Y3 I1.5 J1.5 F500\nG1 X0 Y40\nM2\n"
     r, _ = _run(run_text, tmp_path, text)
     assert r["error"]["code"] == "NC012" and r["error"]["line"] == 4
+
+
+def test_g41_1_takes_the_diameter_from_d_as_rs274(run_text, tmp_path):
+    """LinuxCNC's dynamic compensation: G41.1 D10.16 cuts with radius 5.08 and no tool table, as G41 with
+    tool 1 does (the same rs274 path); G42.1 D6 the other side with radius 3 (rs274: X49.5132 Y53)."""
+    text = CONTOUR.replace("T1 M6\n", "").replace("G41 D1", "G41.1 D10.16")
+    r, calls = _run(run_text, tmp_path, text)
+    assert r["status"] == "ok", r["error"]
+    assert _moves(calls) == RS274_PATH
+    r, calls = _run(run_text, tmp_path, "G0 X80 Y60\nG42.1 D6 G1 X50 Y50 F500\nG1 X0 Y50\nG40 G1 X-20 Y30\n")
+    assert _moves(calls)[1:] == [("feed", 49.5132, 53.0, None), ("feed", 0.0, 53.0, None),
+                                 ("feed", -20.0, 30.0, None)]
+
+
+def test_g41_1_without_d_stops(run_text, tmp_path):
+    r, _ = _run(run_text, tmp_path, "G0 X-20 Y-20\nG41.1 G1 X0 Y0 F500\nG40 G1 X-20 Y-20\n")
+    assert r["error"]["code"] == "NC012" and "D word" in r["error"]["message"]

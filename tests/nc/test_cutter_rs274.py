@@ -172,3 +172,27 @@ def test_arc_entry_moves_agree_with_rs274(tmp_path):
     print(f"{counts['cut']} arc-entry contours cut alike ({compared} moves), {counts['refused']} refused alike, "
           f"of {N_CONTOURS}")
     assert counts["cut"] >= 30
+
+
+def dynamic_contour(seed: int) -> str:
+    """The contour of ``seed`` with LinuxCNC's dynamic compensation: G41.1/G42.1 D<tool diameter>, no tool
+    change and no tool table read."""
+    radius = RADII[seed % len(RADII)]
+    text = contour(seed)[0].replace("T1 M6\n", "")
+    return text.replace(" D1 ", f".1 D{2 * radius:g} ", 1)
+
+
+def test_dynamic_compensation_agrees_with_rs274(tmp_path):
+    """G41.1/G42.1 with the diameter in D: the same contours as the tool-table runs, end points and centres
+    as rs274's; a contour rs274 refuses refused at the same line."""
+    counts = {"cut": 0, "refused": 0}
+    compared = 0
+    for seed in range(N_CONTOURS):
+        text = dynamic_contour(seed)
+        assert "G41.1 D" in text or "G42.1 D" in text
+        how, moves = _compare(tmp_path, seed, text, "d")
+        counts[how] += 1
+        compared += moves
+    print(f"{counts['cut']} G41.1/G42.1 contours cut alike ({compared} moves), {counts['refused']} refused alike, "
+          f"of {N_CONTOURS}")
+    assert counts["cut"] >= 30

@@ -55,6 +55,17 @@ def iso_radius(kernel, g: int, words, src: Src) -> float:
     return kernel._tool(number, src).radius if number else 0.0
 
 
+def dynamic_radius(kernel, g: float, words, src: Src) -> float:
+    """LinuxCNC's G41.1/G42.1 D<diameter>: the radius is half the D word (in the program's units), no tool
+    table; the L word (a lathe tool's orientation) is not modelled."""
+    if "D" not in words:
+        kernel.fault("NC012", f"G{g:g} needs the tool diameter as a D word (G{g:g} D10)", src)
+    if words.get("L", 0.0):
+        kernel.fault("NC005", f"G{g:g} L{words['L']:g}: the orientation of a lathe tool is not supported by ncvm",
+                     src)
+    return words["D"] * kernel.scale / 2.0
+
+
 def refusal(what: str):
     """A radius source for a control whose tool data ncvm does not read for compensation yet: NC005 naming it."""
     def refuse(kernel, g: int, words, src: Src) -> float:
@@ -77,8 +88,8 @@ def select(kernel, g: int, words, src: Src) -> None:
     if kernel.transform is not None:
         kernel.fault("NC005", f"G{g}: cutter radius compensation under a coordinate transformation is not "
                      "supported by ncvm", src)
-    radius = kernel.cutter_radius(kernel, g, words, src)
-    side = LEFT if g == 41 else RIGHT
+    radius = (dynamic_radius if g in (41.1, 42.1) else kernel.cutter_radius)(kernel, g, words, src)
+    side = LEFT if g in (41, 41.1) else RIGHT
     if radius < 0.0:  # a negative radius puts the tool on the other side
         radius, side = -radius, -side
     if comp is not None:
@@ -87,7 +98,7 @@ def select(kernel, g: int, words, src: Src) -> None:
 
 
 def active_g(kernel) -> int:
-    """The G function of the compensation group in force: 40, 41 or 42 (as programmed)."""
+    """The G function of the compensation group in force: 40, 41, 42, 41.1 or 42.1 (as programmed)."""
     comp = kernel.comp
     return 40 if comp is None or comp.leaving else comp.g
 
