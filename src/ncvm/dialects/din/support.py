@@ -38,7 +38,7 @@ def _refused_letter(address: str, axes) -> bool:
 
 def _refused_g(g, words) -> bool:
     """A G function the iso profile does not run, or G10 other than L2 P1..P6."""
-    return g not in G_FUNCTIONS or (g == 10 and (words.get("L") != 2 or words.get("P") not in (1, 2, 3, 4, 5, 6)))
+    return g not in G_FUNCTIONS or ISO.refused(g) is not None or (g == 10 and (words.get("L") != 2 or words.get("P") not in (1, 2, 3, 4, 5, 6)))
 
 
 def address_refusal(path: str, blk, line_text: str, address: str) -> Diagnostic:
@@ -70,7 +70,8 @@ def unsupported(path: str, segments: list, lines: list[str], axes, profile: Prof
         text = lines[blk.src.line - 1] if blk.src.line <= len(lines) else ""
         more = f"; {count} blocks use it" if count > 1 else ""
         if kind == "G":
-            name = f"G{what:g}"
+            row = ISO.refused(what)
+            name = f"G{what:g} ({row.meaning})" if row else f"G{what:g}"
             d = Diagnostic("NC004", f"{name} is not supported by ncvm: the run stops here{more}",
                            Span(path, blk.src.line, _column(text, "G", what)), severity="warning")
             if what == 10:
