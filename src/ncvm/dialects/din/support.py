@@ -20,7 +20,7 @@ from ...nc.profiles.check import g_column, refused_g_warnings
 from ...nc.profiles.iso import ISO
 
 #: the G functions the profile runs (its rows, nc/profiles/iso.py)
-G_FUNCTIONS = frozenset(ISO.by_g)
+G_FUNCTIONS = frozenset(g for g, row in ISO.by_g.items() if not row.code)
 #: the addresses its functions read besides the axes (O: a program number, as ISO controls read it; it does
 #: nothing); every other letter is refused (NC007), an axis letter the machine lacks is NC011 (nc/axiswords.py)
 ADDRESSES = frozenset("DFGHIJKLMNOPQRST")
@@ -38,7 +38,7 @@ def _refused_letter(address: str, axes) -> bool:
 
 def _refused_g(g, words) -> bool:
     """A G function the iso profile does not run, or G10 other than L2 P1..P6."""
-    return g not in G_FUNCTIONS or ISO.refused(g) is not None or (g == 10 and (words.get("L") != 2 or words.get("P") not in (1, 2, 3, 4, 5, 6)))
+    return g not in G_FUNCTIONS or (g == 10 and (words.get("L") != 2 or words.get("P") not in (1, 2, 3, 4, 5, 6)))
 
 
 def address_refusal(path: str, blk, line_text: str, address: str) -> Diagnostic:
