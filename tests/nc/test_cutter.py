@@ -173,3 +173,38 @@ def test_sinumerik_acg_reports_the_compensation_group(run_text, tmp_path):
     r = run_text(text, name="p.mpf", machine=machine_from_dict(SIN_MACHINE))
     assert r["status"] == "ok", r["error"]
     assert [r["variables"].get(f"R{n}") for n in (1, 2, 3)] == [40.0, 42.0, 40.0]
+
+
+def test_entry_move_as_an_arc_as_rs274(run_text, tmp_path):
+    """The first move after G41 an arc (rs274 allows it): it runs from where the tool stands to the point a
+    radius beside the programmed end, on a circle through both. rs274 -t (T1 P1 D0.4) -g gives
+    ARC_FEED(16.4079, 16.4079, 8.2039, 8.2039, 1) and STRAIGHT_FEED(-3.5921, 36.4079)."""
+    text = "G21 G17 G90 G40\nT1 M6\nG0 X0 Y0\nG41 D1 G3 X20 Y20 I10 J10 F500\nG1 X0 Y40\nG40 G1 X0 Y60\nM2\n"
+    r, calls = _run(run_text, tmp_path, text)
+    assert r["status"] == "ok", r["error"]
+    assert _moves(calls)[1:] == [("arc", 16.4079, 16.4079, (8.2039, 8.2039)), ("feed", -3.5921, 36.4079, None),
+                                 ("feed", 0.0, 60.0, None)]
+
+
+def test_entry_arc_not_longer_than_the_radius_stops(run_text, tmp_path):
+    """As the straight entry: an entry arc whose chord is not longer than the tool radius stops (NC012)."""
+    text = "G21 G17 G90 G40\nT1 M6\nG0 X0 Y0\nG42 D1 G3 X3 Y3 I1.5 J1.5 F500\nG1 X0 Y40\nM2\n"
+    r, _ = _run(run_text, tmp_path, text)
+    assert r["error"]["code"] == "NC012" and r["error"]["line"] == 4
+
+
+def test_g41_1_takes_the_diameter_from_d_as_rs274(run_text, tmp_path):
+    """LinuxCNC's dynamic compensation: G41.1 D10.16 cuts with radius 5.08 and no tool table, as G41 with
+    tool 1 does (the same rs274 path); G42.1 D6 the other side with radius 3 (rs274: X49.5132 Y53)."""
+    text = CONTOUR.replace("T1 M6\n", "").replace("G41 D1", "G41.1 D10.16")
+    r, calls = _run(run_text, tmp_path, text)
+    assert r["status"] == "ok", r["error"]
+    assert _moves(calls) == RS274_PATH
+    r, calls = _run(run_text, tmp_path, "G0 X80 Y60\nG42.1 D6 G1 X50 Y50 F500\nG1 X0 Y50\nG40 G1 X-20 Y30\n")
+    assert _moves(calls)[1:] == [("feed", 49.5132, 53.0, None), ("feed", 0.0, 53.0, None),
+                                 ("feed", -20.0, 30.0, None)]
+
+
+def test_g41_1_without_d_stops(run_text, tmp_path):
+    r, _ = _run(run_text, tmp_path, "G0 X-20 Y-20\nG41.1 G1 X0 Y0 F500\nG40 G1 X-20 Y-20\n")
+    assert r["error"]["code"] == "NC012" and "D word" in r["error"]["message"]

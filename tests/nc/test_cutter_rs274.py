@@ -102,37 +102,97 @@ def rs274_error_line(program: str, canon_text: str, output: str) -> int | None:
     return lines.index(block) + 1 if block in lines else -1
 
 
+def arc_entry_contour(seed: int) -> str:
+    """The contour of ``seed`` entered on an arc (G2 or G3 from the start point to the first corner, its
+    centre to either side of the chord), as rs274 allows the first move after G41/G42 to be."""
+    rnd = random.Random(1000 + seed)
+    lines = contour(seed)[0].splitlines()
+    plane = 18 if seed % 5 == 4 else 17
+    ua, ub, wa, wb = PLANE_AXES[plane]
+    entry = lines[3].split()
+    qa, qb = float(entry[3][1:]), float(entry[4][1:])
+    chord = math.hypot(qa, qb)
+    h = rnd.choice((-1, 1)) * rnd.uniform(0.1, 1.2) * chord
+    ca, cb = qa / 2 - h * qb / chord, qb / 2 + h * qa / chord
+    g = 3 if h > 0 else 2
+    lines[3] = f"{entry[0]} D1 G{g} {ua}{qa} {ub}{qb} {wa}{_r(ca)} {wb}{_r(cb)} F600"
+    return "\n".join(lines) + "\n"
+
+
+def _compare(tmp_path, seed: int, text: str, name: str) -> tuple[str, int]:
+    """("cut" or "refused", moves compared) of one program through rs274 and ncvm, asserting they agree."""
+    radius = RADII[seed % len(RADII)]
+    ngc = tmp_path / f"{name}{seed}.ngc"
+    ngc.write_text(text)
+    table = tmp_path / f"tool{name}{seed}.tbl"
+    table.write_text(f"T1 P1 D{2 * radius / 25.4:.6f} Z0\n")
+    canon_text, output = rs274_settled(ngc, table, tmp_path / f"{name}{seed}.canon")
+    stopped = rs274_error_line(text, canon_text, output)
+    machine = machine_from_dict({"axis": [{"name": a} for a in "XYZ"],
+                                 "tool": [{"number": 1, "radius": radius}]})
+    trace = tmp_path / f"{name}{seed}.jsonl"
+    result, _ = run(ngc, machine=machine, options=RunOptions(state_dir=tmp_path / "st", trace=trace))
+    where = f"seed {seed} (G{41 if seed % 2 == 0 else 42}, r {radius}):\n{text}"
+    if stopped is not None:
+        assert result["status"] != "ok", f"rs274 stopped at line {stopped}, ncvm ran: {where}"
+        assert result["error"]["code"] == "NC012", where
+        assert result["error"]["line"] == stopped, where
+        return "refused", 0
+    assert result["status"] == "ok", (where, result["error"])
+    theirs, ours = rs274_moves(canon_text), ncvm_moves(trace)
+    assert len(ours) == len(theirs), f"{where}: {len(ours)} moves against rs274's {len(theirs)}"
+    for i, ((k1, e1, c1), (k2, e2, c2)) in enumerate(zip(ours, theirs)):
+        assert k1 == k2, f"{where} move {i + 1}"
+        assert e1 == pytest.approx(e2, abs=1e-4), f"{where} move {i + 1}"
+        if c2 is not None:
+            assert c1 == pytest.approx(c2, abs=1e-4), f"{where} move {i + 1}"
+    return "cut", len(ours)
+
+
 def test_compensated_contours_agree_with_rs274(tmp_path):
-    compared = cut = refused = 0
+    counts = {"cut": 0, "refused": 0}
+    compared = 0
     for seed in range(N_CONTOURS):
-        radius = RADII[seed % len(RADII)]
-        text, _ = contour(seed)
-        ngc = tmp_path / f"c{seed}.ngc"
-        ngc.write_text(text)
-        table = tmp_path / f"tool{seed}.tbl"
-        table.write_text(f"T1 P1 D{2 * radius / 25.4:.6f} Z0\n")
-        canon_text, output = rs274_settled(ngc, table, tmp_path / f"c{seed}.canon")
-        stopped = rs274_error_line(text, canon_text, output)
-        machine = machine_from_dict({"axis": [{"name": a} for a in "XYZ"],
-                                     "tool": [{"number": 1, "radius": radius}]})
-        trace = tmp_path / f"c{seed}.jsonl"
-        result, _ = run(ngc, machine=machine, options=RunOptions(state_dir=tmp_path / "st", trace=trace))
-        where = f"seed {seed} (G{41 if seed % 2 == 0 else 42}, r {radius}):\n{text}"
-        if stopped is not None:
-            assert result["status"] != "ok", f"rs274 stopped at line {stopped}, ncvm ran: {where}"
-            assert result["error"]["code"] == "NC012", where
-            assert result["error"]["line"] == stopped, where
-            refused += 1
-            continue
-        assert result["status"] == "ok", (where, result["error"])
-        theirs, ours = rs274_moves(canon_text), ncvm_moves(trace)
-        assert len(ours) == len(theirs), f"{where}: {len(ours)} moves against rs274's {len(theirs)}"
-        for i, ((k1, e1, c1), (k2, e2, c2)) in enumerate(zip(ours, theirs)):
-            assert k1 == k2, f"{where} move {i + 1}"
-            assert e1 == pytest.approx(e2, abs=1e-4), f"{where} move {i + 1}"
-            if c2 is not None:
-                assert c1 == pytest.approx(c2, abs=1e-4), f"{where} move {i + 1}"
-            compared += 1
-        cut += 1
-    print(f"{cut} contours cut alike ({compared} moves), {refused} refused alike, of {N_CONTOURS}")
-    assert cut >= 30
+        how, moves = _compare(tmp_path, seed, contour(seed)[0], "c")
+        counts[how] += 1
+        compared += moves
+    print(f"{counts['cut']} contours cut alike ({compared} moves), {counts['refused']} refused alike, of {N_CONTOURS}")
+    assert counts["cut"] >= 30
+
+
+def test_arc_entry_moves_agree_with_rs274(tmp_path):
+    """The first move after G41/G42 an arc (G2/G3 with I J or K I): every end point and centre as rs274's,
+    and an entry arc rs274 refuses refused by ncvm at the same line."""
+    counts = {"cut": 0, "refused": 0}
+    compared = 0
+    for seed in range(N_CONTOURS):
+        how, moves = _compare(tmp_path, seed, arc_entry_contour(seed), "a")
+        counts[how] += 1
+        compared += moves
+    print(f"{counts['cut']} arc-entry contours cut alike ({compared} moves), {counts['refused']} refused alike, "
+          f"of {N_CONTOURS}")
+    assert counts["cut"] >= 30
+
+
+def dynamic_contour(seed: int) -> str:
+    """The contour of ``seed`` with LinuxCNC's dynamic compensation: G41.1/G42.1 D<tool diameter>, no tool
+    change and no tool table read."""
+    radius = RADII[seed % len(RADII)]
+    text = contour(seed)[0].replace("T1 M6\n", "")
+    return text.replace(" D1 ", f".1 D{2 * radius:g} ", 1)
+
+
+def test_dynamic_compensation_agrees_with_rs274(tmp_path):
+    """G41.1/G42.1 with the diameter in D: the same contours as the tool-table runs, end points and centres
+    as rs274's; a contour rs274 refuses refused at the same line."""
+    counts = {"cut": 0, "refused": 0}
+    compared = 0
+    for seed in range(N_CONTOURS):
+        text = dynamic_contour(seed)
+        assert "G41.1 D" in text or "G42.1 D" in text
+        how, moves = _compare(tmp_path, seed, text, "d")
+        counts[how] += 1
+        compared += moves
+    print(f"{counts['cut']} G41.1/G42.1 contours cut alike ({compared} moves), {counts['refused']} refused alike, "
+          f"of {N_CONTOURS}")
+    assert counts["cut"] >= 30

@@ -55,6 +55,17 @@ def iso_radius(kernel, g: int, words, src: Src) -> float:
     return kernel._tool(number, src).radius if number else 0.0
 
 
+def dynamic_radius(kernel, g: float, words, src: Src) -> float:
+    """LinuxCNC's G41.1/G42.1 D<diameter>: the radius is half the D word (in the program's units), no tool
+    table; the L word (a lathe tool's orientation) is not modelled."""
+    if "D" not in words:
+        kernel.fault("NC012", f"G{g:g} needs the tool diameter as a D word (G{g:g} D10)", src)
+    if words.get("L", 0.0):
+        kernel.fault("NC005", f"G{g:g} L{words['L']:g}: the orientation of a lathe tool is not supported by ncvm",
+                     src)
+    return words["D"] * kernel.scale / 2.0
+
+
 def refusal(what: str):
     """A radius source for a control whose tool data ncvm does not read for compensation yet: NC005 naming it."""
     def refuse(kernel, g: int, words, src: Src) -> float:
@@ -77,8 +88,8 @@ def select(kernel, g: int, words, src: Src) -> None:
     if kernel.transform is not None:
         kernel.fault("NC005", f"G{g}: cutter radius compensation under a coordinate transformation is not "
                      "supported by ncvm", src)
-    radius = kernel.cutter_radius(kernel, g, words, src)
-    side = LEFT if g == 41 else RIGHT
+    radius = (dynamic_radius if g in (41.1, 42.1) else kernel.cutter_radius)(kernel, g, words, src)
+    side = LEFT if g in (41, 41.1) else RIGHT
     if radius < 0.0:  # a negative radius puts the tool on the other side
         radius, side = -radius, -side
     if comp is not None:
@@ -89,7 +100,7 @@ def select(kernel, g: int, words, src: Src) -> None:
 
 
 def active_g(kernel) -> int:
-    """The G function of the compensation group in force: 40, 41 or 42 (as programmed)."""
+    """The G function of the compensation group in force: 40, 41, 42, 41.1 or 42.1 (as programmed)."""
     comp = kernel.comp
     return 40 if comp is None or comp.leaving else comp.g
 
@@ -168,9 +179,9 @@ class CutterComp:
                 self._line(motion, target, end, src)
         else:
             if self.first:
-                k.fault("NC005", "the entry move of cutter radius compensation as an arc is not supported by ncvm "
-                        "(program a straight entry move)", src)
-            self._arc(motion == 2, target, end, words, src)
+                self._entry_arc(motion == 2, target, end, words, src)
+            else:
+                self._arc(motion == 2, target, end, words, src)
         self.first = False
         self.prog_pt = target
         end[self.a], end[self.b] = self.cur  # the move just held ends here (its end is this list) until the next
@@ -212,6 +223,35 @@ class CutterComp:
         # the direction kept for the backwards check is the side normal (its end lies a radius that way)
         self._hold(_Held(motion, end, self.kernel.feed, src, (math.cos(alpha), math.sin(alpha))))
         self.cur = (px + r * math.cos(alpha), py + r * math.sin(alpha))
+
+    def _entry_arc(self, cw: bool, target, end, words, src: Src) -> None:
+        """The first move an arc (LinuxCNC's rule): from where the tool stands to the point a radius beside the
+        programmed end, square to the arc there; the centre slides along the line from that point to the
+        programmed centre until both ends lie on one circle."""
+        k = self.kernel
+        cx, cy = self.cur
+        px, py = target
+        r = self.radius
+        if math.hypot(px - cx, py - cy) <= r:
+            k.fault("NC012", f"the entry arc of cutter radius compensation must be longer than the tool radius "
+                    f"{r:g} mm", src)
+        ccx, ccy, _ = k.arc_centre(cw, cx, cy, px, py, words, src)
+        inside = self._inside(not cw)
+        if inside and math.hypot(ccx - cx, ccy - cy) < r:
+            k.fault("NC012", f"the tool radius {r:g} mm is not less than the radius of the entry arc", src)
+        gamma = math.atan2(ccy - py, ccx - px) if inside else math.atan2(py - ccy, px - ccx)
+        ex, ey = px + r * math.cos(gamma), py + r * math.sin(gamma)
+        towards = math.atan2(ccy - ey, ccx - ex)
+        cos_a = math.cos(math.atan2(cy - ey, cx - ex) - towards)
+        if abs(cos_a) < 1e-12:
+            k.fault("NC012", f"the tool radius {r:g} mm does not fit the entry arc", src)
+        reach = math.hypot(cx - ex, cy - ey) / 2.0 / cos_a
+        centre = (ex + reach * math.cos(towards), ey + reach * math.sin(towards))
+        turns = max(0, int(words.get("P", 1)) - 1)
+        self.start, self.start_valid = self.cur, True
+        sweep = _sweep(cx, cy, *centre, not cw, turns, ex, ey)
+        self._hold(_Held(2, end, k.feed, src, None, center=centre, ccw=not cw, turns=turns, sweep=sweep))
+        self.cur = (ex, ey)
 
     def _line(self, motion: int, target, end, src: Src) -> None:
         cx, cy = self.cur

@@ -335,8 +335,8 @@ class NcKernel:
                     motion, cycle_g = g, True
             elif run == POSITION:
                 set_position = True
-            elif run == MACHINE:
-                machine_coords = True
+            elif run == MACHINE:  # the handler: the offsets the control keeps in the block (None: none)
+                machine_coords = entry[1] or True
             else:  # ALONE: the block is this function alone (G10 L2 writes a table)
                 entry[1](self, g, words, src)
                 return
@@ -590,11 +590,17 @@ class NcKernel:
         self._set_offsets_keep_machine()
 
     # -- motion ----------------------------------------------------------
-    def _target(self, words, machine_coords: bool) -> tuple[list[float], bool]:
+    def machine_kept(self, machine_coords) -> list[float] | None:
+        """The offsets a block in machine coordinates keeps, per axis (None: none, LinuxCNC's G53): the
+        profile's MACHINE row names them (SINUMERIK: the tool length, docs/decisions.md)."""
+        return machine_coords(self) if callable(machine_coords) else None
+
+    def _target(self, words, machine_coords) -> tuple[list[float], bool]:
         prog = list(self.prog)
         moved = False
         scale = self.scale
         axis_of = self.axis_of
+        kept = self.machine_kept(machine_coords) if machine_coords else None
         for name, v in words.items():
             i = axis_of.get(name)
             if i is None:
@@ -602,7 +608,7 @@ class NcKernel:
             if scale != 1.0:
                 v *= scale
             if machine_coords:
-                prog[i] = v - self.offset_vec[i]
+                prog[i] = v - self.offset_vec[i] + (kept[i] if kept else 0.0)
             elif self.absolute:
                 prog[i] = v
             else:
@@ -610,7 +616,7 @@ class NcKernel:
             moved = True
         return prog, moved
 
-    def _move(self, motion: int, words, machine_coords: bool, src: Src) -> None:
+    def _move(self, motion: int, words, machine_coords, src: Src) -> None:
         if motion < 2 and not machine_coords:
             self.linear(self, motion, words, src)
             return
@@ -627,7 +633,7 @@ class NcKernel:
         self.prog = list(prog)
         self.machine_pos = end
 
-    def _general_move(self, motion: int, words, machine_coords: bool, src: Src) -> None:
+    def _general_move(self, motion: int, words, machine_coords, src: Src) -> None:
         if self.spindle_bound:
             self.spindle_update(src)
         if motion > 3 and motion in self.motion_modes:
@@ -644,7 +650,9 @@ class NcKernel:
             end = tuple(map(add, prog, self.offset_vec))
         elif machine_coords:
             # G53: the named axes go to machine positions, past the transformation; the others stay
-            end = tuple(words[n] * self.scale if n in words else p for n, p in zip(self.axis_names, start))
+            kept = self.machine_kept(machine_coords) or (0.0,) * self.n_axes
+            end = tuple(words[n] * self.scale + o if n in words else p
+                        for n, p, o in zip(self.axis_names, start, kept))
             prog = self.program_position(end)
         else:
             end = tuple(map(add, self.transform.forward(prog), self.offset_vec))

@@ -160,3 +160,22 @@ def test_g90_g91_dimensions_and_g92_set_actual_value_l2302_l2817(run):
     assert r["status"] == "ok", r["error"]
     v = r["variables"]
     assert (v["A%"], v["B"], v["C%"]) == (91, 15.0, 90)
+
+
+#: G functions the CPL manual names in the group table (L2302-2306) without their behaviour
+NAMED_WITHOUT_BEHAVIOUR = (5, 6, 7, 14, 15, 68, 69, 73, 114, 115, 189, 190, 191)
+
+
+@pytest.mark.parametrize("g", NAMED_WITHOUT_BEHAVIOUR)
+def test_functions_the_manual_names_without_behaviour_are_refused_by_name(run, g):
+    """No guessing: the run stops at the block with NC004 saying "not supported by ncvm", naming the group of
+    the SD table and that the CPL manual does not describe it; the block before it ran."""
+    row = TYP3OSA.refused(g)
+    assert row is not None and row.code == "NC004"
+    r = run(f"N1 G1 X5 F1000\nN2 G{g}\nN3 X9\nM30\n")
+    assert r["error"]["code"] == "NC004" and r["error"]["line"] == 2
+    message = r["error"]["message"]
+    assert message.startswith(f"G{g} (") and "not supported by ncvm" in message
+    assert f"G group {row.group}" in message or row.meaning.split(";")[0] in message
+    assert "the CPL manual does not describe it" in message
+    assert r["position"]["X"] == 5.0

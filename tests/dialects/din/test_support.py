@@ -55,7 +55,7 @@ def ncvm(tmp_path, command: str, text: str, name: str = "p.din") -> tuple[int, d
 
 
 def test_check_warns_of_each_refused_function_and_address(tmp_path):
-    text = "G21 G90 F100\nG0 X0 Y0 Z5\nG1 X1 E5\nG41.1 D1 X2\nG5 X3\nG41.1 X4\nG10 L1 P1 R2\nG62 (corner slowdown)\nM2\n"
+    text = "G21 G90 F100\nG0 X0 Y0 Z5\nG1 X1 E5\nG5.1 X2\nG5 X3\nG5.1 X4\nG10 L1 P1 R2\nG62 (corner slowdown)\nM2\n"
     code, doc = ncvm(tmp_path, "check", text)
     diags = doc["files"][0]["diagnostics"]
     assert code == 0 and doc["files"][0]["ok"]
@@ -78,7 +78,7 @@ def random_program(rnd: random.Random) -> str:
     for _ in range(rnd.randint(2, 8)):
         pick = rnd.random()
         if pick < 0.15:
-            out.append(f"G{rnd.choice((5, 7, 33.1, 41.1, 62, 93, 76))} X{rnd.randint(0, 9)}")
+            out.append(f"G{rnd.choice((5, 7, 33.1, 5.1, 62, 93, 76))} X{rnd.randint(0, 9)}")
         elif pick < 0.25:
             out.append(f"G1 X{rnd.randint(0, 9)} E{rnd.randint(1, 9)}")
         elif pick < 0.4:

@@ -133,3 +133,23 @@ def test_acg_reads_the_executed_drilling_function_of_group_9_l7406(tmp_path):
     r = run_mpf(tmp_path, "%MPF1\nG0 X0 Y0 Z10 F200\nR2=2 R3=-5\nG82\n@714 @36b R10 K0 K9\nG80\n"
                           "@714 @36b R11 K0 K9\nM30\n", files={"L82.spf": CYCLE}, ok=True)
     assert (R(r, 10), R(r, 11)) == (82.0, 80.0)
+
+
+def test_check_warns_of_a_missing_cycle_program_as_the_run_stops(tmp_path):
+    """G81-G89 call L81-L89 on the program path (L7406): ``ncvm check`` warns RUN002 at the first block that
+    selects a cycle whose program is missing, where the run stops with RUN002; with L81.spf beside the
+    program the check is clean."""
+    from ncvm.api import check
+
+    (tmp_path / "machine.toml").write_text(machine())
+    prog = tmp_path / "p.mpf"
+    prog.write_text(f"%MPF1\n{PARAMS}\nG81 X10 Y10\nX20\nG82 X30\nG81 X40\nG80\nM30\n")
+    diags = check(prog, dialect="sin800", machine=tmp_path / "machine.toml")
+    assert [(d.code, d.severity, d.span.line) for d in diags] == [("RUN002", "warning", 3),
+                                                                   ("RUN002", "warning", 5)]
+    assert "L81" in diags[0].message and "the run stops here" in diags[0].message
+    result = run_mpf(tmp_path, prog.read_text())
+    assert result["status"] == "error" and result["error"]["code"] == "RUN002" and result["error"]["line"] == 3
+    _l81(tmp_path)
+    (tmp_path / "L82.spf").write_text("%SPF82\nG4 F0.5\nM17\n")
+    assert check(prog, dialect="sin800", machine=tmp_path / "machine.toml") == []

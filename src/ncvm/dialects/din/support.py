@@ -20,7 +20,7 @@ from ...nc.profiles.check import g_column, refused_g_warnings
 from ...nc.profiles.iso import ISO
 
 #: the G functions the profile runs (its rows, nc/profiles/iso.py)
-G_FUNCTIONS = frozenset(ISO.by_g)
+G_FUNCTIONS = frozenset(g for g, row in ISO.by_g.items() if not row.code)
 #: the addresses its functions read besides the axes (O: a program number, as ISO controls read it; it does
 #: nothing); every other letter is refused (NC007), an axis letter the machine lacks is NC011 (nc/axiswords.py)
 ADDRESSES = frozenset("DFGHIJKLMNOPQRST")
@@ -70,7 +70,8 @@ def unsupported(path: str, segments: list, lines: list[str], axes, profile: Prof
         text = lines[blk.src.line - 1] if blk.src.line <= len(lines) else ""
         more = f"; {count} blocks use it" if count > 1 else ""
         if kind == "G":
-            name = f"G{what:g}"
+            row = ISO.refused(what)
+            name = f"G{what:g} ({row.meaning})" if row else f"G{what:g}"
             d = Diagnostic("NC004", f"{name} is not supported by ncvm: the run stops here{more}",
                            Span(path, blk.src.line, _column(text, "G", what)), severity="warning")
             if what == 10:

@@ -20,7 +20,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from ...diagnostics import RuntimeFault
+from ...diagnostics import Diagnostic, RuntimeFault, Span
 from ...nc.axiswords import is_dwell
 
 if TYPE_CHECKING:
@@ -28,6 +28,25 @@ if TYPE_CHECKING:
 
 #: the G functions of group 9
 GROUP_9 = tuple(range(80, 90))
+
+
+def missing_cycle(g: int) -> str:
+    """The message of a selection whose cycle program L<g> is not on the program path (RUN002)."""
+    return (f"G{g} calls the drilling cycle L{g}, which is not on the program path "
+            f"(looked for L{g}.spf and %SPF{g} files)")
+
+
+def missing_cycle_warnings(path: str, uses, find) -> list[Diagnostic]:
+    """``ncvm check``: a warning RUN002 at the first block that selects G81-G89 whose cycle program ``find``
+    (number -> path or None) does not find: the run stops there. ``uses``: (G number, line, column)."""
+    out, seen = [], set()
+    for g, line, column in uses:
+        if g in GROUP_9 and g != 80 and g not in seen:
+            seen.add(g)
+            if find(int(g)) is None:
+                out.append(Diagnostic("RUN002", missing_cycle(int(g)) + ": the run stops here",
+                                      Span(path, line, column), severity="warning"))
+    return out
 
 
 class Drilling:
@@ -50,8 +69,7 @@ class Drilling:
             self.selected = None
             return
         if self.channel.loader(g) is None:
-            raise RuntimeFault("RUN002", f"G{g} calls the drilling cycle L{g}, which is not on the program path "
-                                         f"(looked for L{g}.spf and %SPF{g} files)")
+            raise RuntimeFault("RUN002", missing_cycle(g))
         self.selected = g
 
     def call(self, line: int) -> None:

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from .. import cutter, threads
 from ..cycles import CODES as CYCLE_CODES
-from . import ALONE, CYCLE, DWELL, IMPLEMENTED, INCH, MACHINE, MOTION, POSITION, SET, Profile, Row
+from . import ALONE, CYCLE, DWELL, IMPLEMENTED, INCH, MACHINE, MOTION, POSITION, SET, Profile, Row, refused
 
 WORK_OFFSETS = {54: "G54", 55: "G55", 56: "G56", 57: "G57", 58: "G58", 59: "G59"}
 
@@ -101,6 +101,10 @@ ROWS = (
     _row(40, "7 cutter radius compensation", "cutter radius compensation off", "rs274 group 7", SET, cutter_comp),
     _row(41, "7 cutter radius compensation", "cutter radius compensation left", "rs274 group 7", SET, cutter_comp),
     _row(42, "7 cutter radius compensation", "cutter radius compensation right", "rs274 group 7", SET, cutter_comp),
+    _row(41.1, "7 cutter radius compensation", "dynamic cutter radius compensation left, D = tool diameter",
+         "rs274 group 7", SET, cutter_comp),
+    _row(42.1, "7 cutter radius compensation", "dynamic cutter radius compensation right, D = tool diameter",
+         "rs274 group 7", SET, cutter_comp),
     _row(43, "8 tool length offset", "tool length offset (H)", "rs274 group 8", SET, tool_length),
     _row(44, "8 tool length offset", "tool length offset, negative (H)", "rs274 group 8", SET, tool_length),
     _row(49, "8 tool length offset", "tool length offset off", "rs274 group 8", SET, tool_length_off),
@@ -111,6 +115,9 @@ ROWS = (
          "rs274 group 0", SET, nothing),
     _row(33, "1 motion", "spindle-synchronised motion, K the distance per revolution (nc/threads.py, the din "
          "dialect's motion mode)", "rs274 group 1", MOTION),
+    refused(33.1, "1 motion", "rigid tapping: K the pitch, the spindle reversed at the depth and the tap back at "
+            "its start", "rs274 group 1"),
+    refused(76, "1 motion", "multi-pass threading cycle: P pitch, I J K R Q H E L", "rs274 group 1"),
     _row(60, "13 path control", "exact stop, modal (the planner's path mode)", "rs274 group 13", SET, nothing),
     _row(61, "13 path control", "exact path mode (the planner's path mode)", "rs274 group 13", SET, nothing),
     _row(61.1, "13 path control", "exact stop mode (the planner's path mode)", "rs274 group 13", SET, nothing),

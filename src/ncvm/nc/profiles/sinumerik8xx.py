@@ -47,6 +47,26 @@ def spindle_speed_limit(k, g, words, src):
         k._css_update(src)
 
 
+def tool_length_kept(k) -> list[float]:
+    """G53 / POS MSYS keep the tool offset: the manual suppresses "all zero point-, PRESET-, and the DRF
+    offsets" and leaves the tool offsets to the programmer ("the tool offsets must be cancelled for
+    approaching a fixed machine point", L4083). The length stays on the tool axis."""
+    kept = [0.0] * k.n_axes
+    if k.tool_axis is not None:
+        kept[k.tool_axis] = k.tool_length
+    return kept
+
+
+def auxiliary_h(k, value, words, src) -> None:
+    """H<n>: an auxiliary function output to the PLC, as a machine-specific M function is (machine data bit
+    5400.0 decides whether auxiliary functions go to the PLC, L3072): no motion of its own; the axes stand
+    while the PLC takes it, and the trace records it (docs/decisions.md, "Issue 14: the H word")."""
+    code = f"H{value:g}"
+    k.planner.stop()
+    k.machine.plc.outputs[code] = True
+    k.canon.aux(code, src)
+
+
 def _row(g, group, meaning, run=SET, handler=None, status=IMPLEMENTED, line=TABLE):
     return Row(g, group, meaning, line, status, run, handler)
 
@@ -86,7 +106,8 @@ ROWS = (
     _row(40, "3", "cutter radius compensation off", SET, cutter_comp),
     _row(41, "3", "cutter radius compensation left (radius of the TO area's D)", SET, cutter_comp),
     _row(42, "3", "cutter radius compensation right (radius of the TO area's D)", SET, cutter_comp),
-    _row(53, "4", "zero offsets suppressed for this block: its target in machine coordinates", MACHINE, None, FAMILY),
+    _row(53, "4", "zero offsets suppressed for this block: its target in machine coordinates, the tool length "
+         "kept (as POS MSYS, L4083)", MACHINE, tool_length_kept, FAMILY),
     *(_row(g, "5", f"settable zero offset G{g} (ZOA group {g - 53}, L2456)", SET, work_offset) for g in (54, 55, 56, 57)),
     _row(4, "6", "dwell, F or X seconds (G4 F=R27, L5465)", DWELL, line="L5465"),
     _no(25, "6", "lower working area / spindle speed limitation"),
@@ -140,6 +161,8 @@ ADDRESSES = (
     Address("R", "circle radius (PRAD)", "", IMPLEMENTED),
     Address("B", "circle radius where B is no axis ([sin800] radius_address: B or U; on a straight block the "
             "rounding to the next, N5 X400 Y50 B100, L4237)", "L4237", IMPLEMENTED),
+    Address("H", "auxiliary function output to the PLC (L3072), recorded like an M function to the PLC", "L3072",
+            IMPLEMENTED, auxiliary_h),
     Address("A", "the angle address where A is no axis (PANG)", "", IMPLEMENTED),
 )
 
