@@ -161,12 +161,34 @@ def test_840d_machine_frame_cancels_the_tool_length(tmp_path):
 G53_RETRACT = "%MPF101\nN10 G17 G71 G90 G54 G94\nN20 T1 M6 D1\nN40 G0 X10 Y20 Z50\nN50 G53 G0 Z0\nN60 G0 X30 Y40\nN70 M30\n"
 
 
+def test_g53_retract_keeps_the_tool_length_on_the_840d(tmp_path):
+    """SINUMERIK ``G53 G0 Z0`` keeps the tool length in force (CL 800 manual L4083; flange machine: tool
+    length 85.1): the 840D's SUPA keeps it too, so ``SUPA G0 Z0`` with D1 left on; the next move's X/Y
+    alone, no Z re-expressed through the simulated tool length."""
+    code = _code(_run(tmp_path, "g53.mpf", G53_RETRACT, "sinumerik840d", machine=EX / "sin800" / "machine.toml"))
+    i = code.index("G0 X10 Y20 Z50")
+    assert code[i + 1:i + 3] == ["SUPA G0 Z0", "G0 X30 Y40"], code
+
+
+@pytest.mark.parametrize("target", ["linuxcnc", "iso"])
+def test_g53_retract_with_the_tool_length_kept_is_refused_where_g53_drops_it(tmp_path, target):
+    """LinuxCNC's and ISO's G53 drop the tool length that the SINUMERIK G53 keeps: writing the slide's
+    position would carry the simulated tool length into the program, so the block is refused (TRN001)."""
+    with pytest.raises(TranslationRefused) as e:
+        _run(tmp_path, "g53.mpf", G53_RETRACT, target, machine=EX / "sin800" / "machine.toml")
+    d = e.value.diagnostic
+    assert d.code == "TRN001" and d.span.line == 5 and "tool length kept" in d.message
+    assert not (tmp_path / f"g53.mpf.{target}").exists()
+
+
+G53_DIN = "G21 G90 G17 G54\nT1 M6 G43 H1\nG0 X10 Y20 Z50\nG53 G0 Z0\nG0 X30 Y40\nM2\n"
+
+
 @pytest.mark.parametrize(("target", "retract"), [("linuxcnc", ["G53 G0 Z0"]), ("iso", ["G53 G0 Z0"]),
                                                  ("sinumerik840d", ["D0", "SUPA G0 Z0", "D1"])])
-def test_g53_retract_is_the_machine_position_alone(tmp_path, target, retract):
-    """``G53 G0 Z0`` (SINUMERIK flange machine: G54 Z0, tool length 85.1): Z alone, to machine Z0 itself;
-    the 840D keeps the tool length in SUPA, so the translation switches it off for that move (D0) and on
-    again after it; the next move's X/Y alone, no Z re-expressed through the simulated tool length."""
-    code = _code(_run(tmp_path, "g53.mpf", G53_RETRACT, target, machine=EX / "sin800" / "machine.toml"))
+def test_din_g53_retract_is_the_machine_position_alone(tmp_path, target, retract):
+    """A din ``G53 G0 Z0`` drops the tool length, as LinuxCNC's: Z alone to machine Z0; the 840D keeps the
+    tool length in SUPA, so the translation switches it off for that move (D0) and on again after it."""
+    code = _code(_run(tmp_path, "g53.ngc", G53_DIN, target))
     i = code.index("G0 X10 Y20 Z50")
     assert code[i + 1:i + 2 + len(retract)] == retract + ["G0 X30 Y40"], code

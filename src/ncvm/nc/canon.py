@@ -52,7 +52,8 @@ class Frame:
     adds on top of it (G92, SINUMERIK programmable / external / DRF / PRESET offsets, CPL shifts);
     ``tool_length`` acts on axis ``tool_axis`` and came from tool offset number ``tool_offset`` (H or D
     word; 0: none); ``transformed`` tells that a coordinate transformation (rotation, scaling, mirroring)
-    sits between the programmed position and the offsets.
+    sits between the programmed position and the offsets. ``tool_kept``: a move in machine coordinates
+    that keeps the tool length in force (SINUMERIK G53 / POS MSYS, CL 800 manual L4083; LinuxCNC's drops it).
     """
 
     work_offset: str | None
@@ -62,6 +63,7 @@ class Frame:
     tool_axis: int | None = None
     tool_offset: int = 0
     transformed: bool = False
+    tool_kept: bool = False
 
     def removed(self) -> tuple[float, ...]:
         """Per axis, what the work coordinates take off the machine's: the zero offset and the tool length

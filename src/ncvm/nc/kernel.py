@@ -27,6 +27,7 @@ from __future__ import annotations
 
 import copy
 import math
+from dataclasses import replace
 from operator import add, sub
 
 from ..diagnostics import RuntimeFault, Span
@@ -657,7 +658,10 @@ class NcKernel:
         else:
             end = tuple(map(add, self.transform.forward(prog), self.offset_vec))
         if machine_coords:  # the move's frame is the machine's (G53), for this move only
-            self.canon.frame(self.frame("G53"), src)
+            frame = self.frame("G53")
+            if self.machine_kept(machine_coords) and frame.tool_length:
+                frame = replace(frame, tool_kept=True)
+            self.canon.frame(frame, src)
             self._frame = None
         if motion < 2:
             if motion and self.feed <= 0.0:

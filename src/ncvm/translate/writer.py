@@ -276,6 +276,9 @@ class Translation(CanonSink):
             return
         prefix = self._machine_prefix(src)
         restore = None
+        if prefix and self.frame_now.tool_kept:
+            self._tool_kept_move(code, start, end, feed, src)
+            return
         if prefix and self.t.machine_move_keeps_tool and self._tool_written[1]:
             # the control keeps the tool length in its machine move (840D SUPA): off for the move, else
             # the simulated length would be baked into the machine position; on again for what follows
@@ -285,6 +288,25 @@ class Translation(CanonSink):
         self._line(f"{prefix}{code} {self._axes(end, start, bool(prefix))}".rstrip() + feed_word, src)
         if restore is not None:
             self._tool_pending = (restore, src)
+
+    def _tool_kept_move(self, code: str, start, end, feed: float | None, src: Src) -> None:
+        """A move in machine coordinates with the tool length in force (SINUMERIK G53 / POS MSYS): the 840D's
+        SUPA keeps it too, so the programmed machine position is written with the tool offset left on; a
+        target whose machine move drops it (G53) is refused: the slide position would carry the simulated
+        tool length into the program."""
+        f = self.frame_now
+        if not self.t.machine_move_keeps_tool:
+            self.refuse(src, f"a move in machine coordinates with the tool length kept ({number(f.tool_length)} "
+                             f"mm, SINUMERIK G53 / POS MSYS): {self.t.title}'s {self.t.machine_move} drops the "
+                             "tool length, so the position would carry the simulated one (translate with "
+                             "--frame machine, or cancel the tool offset before the move)")
+            return
+        p = list(end)
+        p[f.tool_axis] -= f.tool_length
+        q = list(start)
+        q[f.tool_axis] -= f.tool_length
+        feed_word = self._feed_word(feed) if feed is not None else ""
+        self._line(f"{self.t.machine_move} {code} {self._axes(p, q, True)}".rstrip() + feed_word, src)
 
     def _probe_move(self, start, end, feed, src) -> None:
         """The move after a canon ``probe`` call: the target's probe move to the programmed end point."""
