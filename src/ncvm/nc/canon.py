@@ -172,6 +172,10 @@ class CanonSink:
         """The run read an input from outside the program (``what`` names it: a key, a PLC input, a scenario
         event, a measured value, a random number): the path from here on may depend on it."""
 
+    def programmed(self, axes: tuple[str, ...], src: Src) -> None:
+        """The block at ``src`` programs the axis words ``axes`` for the move it makes next (also an axis whose
+        programmed position equals where it stands): a writer of programs writes them, whatever moves."""
+
     def dwell(self, seconds: float, src: Src) -> None:
         """Wait with axes standing still."""
 
@@ -226,7 +230,7 @@ class CanonSink:
         """The run is over (normally or by a fault): flush files."""
 
 
-_METHODS = ("begin", "rapid", "feed", "arc", "thread", "move_batch", "timing", "frame", "frozen", "channel", "dwell",
+_METHODS = ("begin", "rapid", "feed", "arc", "thread", "move_batch", "timing", "frame", "frozen", "channel", "programmed", "dwell",
             "feed_per_rev", "radius_compensation", "homing",
             "tool_change", "tool_offset", "spindle", "coolant", "aux", "probe", "message", "stop", "program_end", "end")
 

@@ -91,6 +91,7 @@ class Translation(CanonSink):
         self._tool_frame: Frame | None = None  # the frame of the tool length written last
         self._per_rev: float | None = None  # G95: the F in mm per revolution
         self._homing: tuple[int, ...] | None = None  # the axes the next move homes
+        self._programmed: tuple[set[int], Src] | None = None  # the axis words of the next move's block
 
     # -- output ----------------------------------------------------------
     def refuse(self, src: Src | None, message: str) -> None:
@@ -165,6 +166,9 @@ class Translation(CanonSink):
             use = set(range(len(self.names)))
         else:
             use = {i for i, (a, b) in enumerate(zip(start, p)) if abs(a - b) > 1e-9} | set(always)
+            if self._programmed is not None:  # the block's own axis words, also those standing where they are
+                use |= self._programmed[0]
+                self._programmed = None
             if not use:
                 use = {i for i in range(len(self.names)) if self.names[i] in self._written}
         self._written.update(self.names[i] for i in use)
@@ -238,6 +242,10 @@ class Translation(CanonSink):
             self._frozen_pending.add(key)
             self._frozen.append(key)
 
+    def programmed(self, axes, src):
+        use = {self.names.index(n) for n in axes if n in self.names}
+        self._programmed = (use, src) if use else None
+
     def probe(self, trip, target, src):
         self._probe = (trip, target, src)
 
@@ -259,6 +267,8 @@ class Translation(CanonSink):
     def _move_starts(self, start, end, src) -> bool:
         """What every move does first (the block's M5/M9 wait, the setup is recorded); False: refused."""
         self._flush_after(src)
+        if self._programmed is not None and self._programmed[1] != src:
+            self._programmed = None  # the block that programmed them made no move
         if self._tool_pending is not None:
             self._tool_length()
         self.moves += 1
