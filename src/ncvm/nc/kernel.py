@@ -568,7 +568,7 @@ class NcKernel:
         for name, i in self.axis_of.items():
             if name in words:
                 table[i] = words[name] * self.scale
-        self._set_offsets_keep_machine()
+        self._set_offsets_keep_machine(src)
 
     def _set_position(self, words) -> None:
         if self.transform is not None:

@@ -85,6 +85,7 @@ class Translation(CanonSink):
         self._hidden: list[int] = []
         self._tool_number = 0
         self._frame_unrecorded = True
+        self._frame_src: Src | None = None  # the block of the last frame change
         #: the tool length call of a frame change, written before the next line (after a tool change of its block)
         self._tool_pending: tuple[Frame, Src | None] | None = None
         self._written: set[str] = set()  # the axes written in a move so far
@@ -198,6 +199,7 @@ class Translation(CanonSink):
         if whole_run:  # the plot's frame for a whole rw_SymPas run: the moves are written already
             return
         self.frame_now = frame
+        self._frame_src = src
         if not self.work:
             return
         self._flush_after(src)  # the M5 / M9 of earlier blocks come before this block's words
@@ -229,12 +231,21 @@ class Translation(CanonSink):
         if not self.work or f.work_offset in (None, "G53"):
             return
         seen = self.setup.offsets.setdefault(f.work_offset, [])
+        if any(zero != f.zero for zero in seen):  # one G5x holds one value on the new control
+            self.refuse(self._frame_src, f"the program rewrites zero offset {f.work_offset} after moves in it "
+                                         f"({self._zero_text(seen[-1])} before, {self._zero_text(f.zero)} now): "
+                                         f"a {self.t.work_offsets[f.work_offset]} of the new control holds one value "
+                                         "(translate with --frame machine)")
+            return
         if f.zero not in seen:
             seen.append(f.zero)
         if f.tool_length:
             lengths = self.setup.tools.setdefault(self._tool_number, [])
             if f.tool_length not in lengths:
                 lengths.append(f.tool_length)
+
+    def _zero_text(self, zero) -> str:
+        return " ".join(f"{n}{number(v)}" for n, v in zip(self.names, zero) if n in self.t.axes)
 
     def frozen(self, what, src):
         key = (what, src)
