@@ -168,9 +168,10 @@ class CanonSink:
         the moves that follow are in ``frame``; their positions stay machine coordinates. ``whole_run``: the
         frame holds for every move of the run, those before it too (a rw_SymPas card tells it at the end)."""
 
-    def frozen(self, what: str, src: Src | None) -> None:
+    def frozen(self, what: str, src: Src | None, scenario: bool = False) -> None:
         """The run read an input from outside the program (``what`` names it: a key, a PLC input, a scenario
-        event, a measured value, a random number): the path from here on may depend on it."""
+        event, a measured value, a random number): the path from here on may depend on it. ``scenario``: a
+        machine input that only a scenario (``--scenario``) says; without one the run took its rest value."""
 
     def programmed(self, axes: tuple[str, ...], src: Src) -> None:
         """The block at ``src`` programs the axis words ``axes`` for the move it makes next (also an axis whose

@@ -81,6 +81,7 @@ class Translation(CanonSink):
         self._frozen: list[tuple[str, Src | None]] = []
         self._frozen_pending: set = set()
         self._frozen_seen: set = set()
+        self._unsaid: tuple[str, Src | None] | None = None  # a machine input read with no scenario to say it
         self._tool = 0
         self._hidden: list[int] = []
         self._tool_number = 0
@@ -101,6 +102,11 @@ class Translation(CanonSink):
 
     def _line(self, text: str, src: Src | None = None) -> None:
         if self.refusal is not None:
+            return
+        if self._unsaid is not None:
+            what, where = self._unsaid
+            self.refuse(where or src, f"the path depends on a machine input that no scenario gave ({what}: its "
+                                      "rest value, never read): give the inputs with --scenario")
             return
         if self._tool_pending is not None:
             self._tool_length()
@@ -247,7 +253,10 @@ class Translation(CanonSink):
     def _zero_text(self, zero) -> str:
         return " ".join(f"{n}{number(v)}" for n, v in zip(self.names, zero) if n in self.t.axes)
 
-    def frozen(self, what, src):
+    def frozen(self, what, src, scenario=False):
+        if scenario and not self.scenario_given:  # nothing said what the input is: the run took its rest value
+            self._unsaid = self._unsaid or (what, src)
+            return
         key = (what, src)
         if key not in self._frozen_pending:  # a polling loop reads the same input again and again
             self._frozen_pending.add(key)
@@ -470,6 +479,8 @@ class Translation(CanonSink):
     def finish_moves(self) -> None:
         """The run ended normally: the last M5/M9 out (a probe move with no move after it is refused)."""
         self._flush_after()
+        if self._unsaid is not None:
+            self._line("")  # the refusal of an input no scenario gave, at the end of the program too
         if self._probe is not None:
             self.refuse(self._probe[2], "a probe move with no move after it")
 
