@@ -431,6 +431,10 @@ class Translation(CanonSink):
                          f"radius {number(radius)} mm, and ncvm does not write the programmed contour with "
                          f"G{g}; a cutter of another radius would cut the part off size")
 
+    def tapping(self, g, src):
+        self.refuse(src, f"a tapping cycle G{g}: ncvm writes a canned cycle as its moves, and a tap fed by plain "
+                         "G1 moves is not tied to the spindle (program the target's tapping cycle by hand)")
+
     def dwell(self, seconds, src):
         self._flush_after()
         self._line(self.t.dwell.format(s=number(seconds)), src)
