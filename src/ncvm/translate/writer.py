@@ -39,7 +39,8 @@ class Setup:
     """What the simulation used that the new control must be set up with (the header lists it)."""
 
     offsets: dict[str, list[tuple[float, ...]]] = field(default_factory=dict)  # zero offset -> values moved under
-    tools: dict[int, list[float]] = field(default_factory=dict)  # tool offset number -> lengths moved under
+    #: (tool in the spindle, tool offset number) -> lengths moved under: an 840D D is an edge of the active tool
+    tools: dict[tuple[int, int], list[float]] = field(default_factory=dict)
     shifts: set[tuple[float, ...]] = field(default_factory=set)  # G92 / additive offsets baked into positions
     transformed: bool = False
     machine_moves: int = 0
@@ -246,7 +247,8 @@ class Translation(CanonSink):
         if f.zero not in seen:
             seen.append(f.zero)
         if f.tool_length:
-            lengths = self.setup.tools.setdefault(self._tool_number, [])
+            tool = self._tool if self.t.edge_of_tool else 0
+            lengths = self.setup.tools.setdefault((tool, self._tool_number), [])
             if f.tool_length not in lengths:
                 lengths.append(f.tool_length)
 
@@ -444,6 +446,7 @@ class Translation(CanonSink):
         self._tool_pending = None if held else self._tool_pending
         self._flush_after()
         self._tool = tool
+        self._frame_unrecorded = True  # the header names the length for the new tool too (an 840D D is its edge)
         self._line(f"T{tool} M6", src)
         if held is not None:  # the block's own tool length: for the tool just loaded
             self._tool_pending = held
@@ -504,8 +507,8 @@ class Translation(CanonSink):
                 values = " then ".join(" ".join(f"{n}{number(v)}" for n, v in zip(self.names, zero) if n in t.axes)
                                        for zero in zeros)
                 out.append(note(f"zero offset {name} -> {t.work_offsets[name]}: simulated as {values} ({machine})"))
-            for n, lengths in sorted(s.tools.items()):
-                out.append(note(f"tool offset {t.tool_length_on.format(n=n)}: length "
+            for (tool, n), lengths in sorted(s.tools.items()):
+                out.append(note(f"{f'tool T{tool} edge ' if tool else 'tool offset '}{t.tool_length_on.format(n=n)}: length "
                                 f"{' then '.join(number(v) for v in lengths)} mm in the simulation"))
             if not s.tools:
                 out.append(note("no tool length compensation was used"))
