@@ -1,6 +1,6 @@
 """Issue 16 rule 4 "Program order kept" and the brief's list of what a translation must keep: "dwell".
 
-rw_SymPas `WT(n)` makes the task sleep n x 64 us (digest §6.6.81, manual L2228-2233); after a `MLAW` (which
+rw_SymPas `WT(n)` makes the task sleep n x 64 us (manual L2228-2233); after a `MLAW` (which
 waits for the motion's end) the axes stand still that long: here 2 s at the bottom of a plunge (the run's
 cycle time includes it). The translation writes the plunge and the retract back to back: the new control
 does not wait at Z-5 and nothing in the output says a wait was left out.
