@@ -480,6 +480,8 @@ def translate_cmd(program, out, target, frame, source_comments, dialect, machine
     except TranslationRefused as e:
         say(e.diagnostic.render())
         sys.exit(EXIT_FAULT)
+    for v in done.warnings:  # the run's soft limits: the translation makes the same moves
+        say(f"warning: {v}")
     click.echo(f"ncvm: wrote {done.path} for {done.target.title}: {done.lines} lines, {done.moves} moves, "
                f"{done.probes} probe moves, {done.frozen} frozen decisions", err=True)
 

@@ -224,7 +224,9 @@ CPL_MACHINE = Path(__file__).resolve().parents[2] / "examples" / "cpl" / "machin
 
 def test_frozen_mark_stands_before_the_block_the_input_led_to_issue16_rule3(tmp_path):
     (tmp_path / "machine.toml").write_text(CPL_MACHINE.read_text())
-    rc, text, err = translate(tmp_path, CPL_IC_BRANCH, "ic.cpl")
+    # the input as a scenario says it (issue 16 rule 3: without one the translation refuses)
+    (tmp_path / "ic.toml").write_text('[[scenario]]\ntime = 0\nkind = "input"\naddress = "IC(1,1,1)"\nvalue = false\n')
+    rc, text, err = translate(tmp_path, CPL_IC_BRANCH, "ic.cpl", "--scenario", "ic.toml")
     assert rc == 0, err
     lines = text.splitlines()
     mark = next(i for i, line in enumerate(lines) if "FROZEN" in line and "ic.cpl:3" in line)

@@ -12,11 +12,22 @@ from ncvm.translate import TranslationRefused, translate
 EX = Path(__file__).parents[2] / "examples"
 
 
+#: a scenario whose one event comes after the run: the inputs stand at their rest values, as the user said
+LATE_SCENARIO = '[[scenario]]\ntime = 1000\nkind = "input"\naddress = "IC(1,1,1)"\nvalue = true\n'
+
+
+def late_scenario(tmp_path: Path) -> Path:
+    path = tmp_path / "late.scenario.toml"
+    path.write_text(LATE_SCENARIO)
+    return path
+
+
 def test_a_plc_input_read_marks_the_block_it_decides(tmp_path):
     """CPL: IF IC(5,1,2) decides which way the tool goes; the translation says so at the move it leads to."""
     program = tmp_path / "branch.cpl"
     program.write_text("10 IF IC(5,1,2) THEN\nN20 G1 X10 F100\n30 ELSE\nN40 G1 X-10 F100\n50 ENDIF\nN60 M30\n")
-    translate(program, tmp_path / "b.ngc", options=RunOptions(state_dir=tmp_path / "st"))
+    translate(program, tmp_path / "b.ngc", options=RunOptions(state_dir=tmp_path / "st",
+                                                              scenario=late_scenario(tmp_path)))
     text = (tmp_path / "b.ngc").read_text()
     assert "(FROZEN: PLC input IC" in text and "read as 0 at branch.cpl:1;" in text  # the IF that read it
     assert "G1 X-10 F100" in text and "X10 " not in text  # the programmed axis alone
@@ -55,6 +66,18 @@ def test_a_read_of_what_a_scenario_event_set_is_marked(tmp_path):
     assert "(FROZEN: CI3 read as 7 [set by the scenario event at 0.5 s]" in text
     assert "(FROZEN: digital inputs A3.digi read as 0x0" in text
     assert "X10" in text and "X-10" not in text
+
+
+def test_a_plc_input_read_without_a_scenario_is_refused(tmp_path):
+    """CPL: IF IC(5,1,2) with no scenario: nothing said what the input is, the run took its rest value;
+    refused at the IF that read it, nothing written (issue 16 rule 3)."""
+    program = tmp_path / "branch.cpl"
+    program.write_text("10 IF IC(5,1,2) THEN\nN20 G1 X10 F100\n30 ELSE\nN40 G1 X-10 F100\n50 ENDIF\nN60 M30\n")
+    with pytest.raises(TranslationRefused) as e:
+        translate(program, tmp_path / "b.ngc", options=RunOptions(state_dir=tmp_path / "st"))
+    d = e.value.diagnostic
+    assert d.code == "TRN001" and d.span.line == 1 and "--scenario" in d.message
+    assert not (tmp_path / "b.ngc").exists()
 
 
 def test_a_probe_move_without_a_scenario_is_refused(tmp_path):

@@ -113,8 +113,10 @@ def test_frozen_mark_after_every_block_prepared_before_the_read(tmp_path):
     program = tmp_path / "ic.cpl"
     program.write_text(CPL_LONG)
     out = tmp_path / "ic.ngc"
+    scenario = tmp_path / "late.scenario.toml"  # an event after the run: the input stands at its rest value
+    scenario.write_text('[[scenario]]\ntime = 1000\nkind = "input"\naddress = "IC(1,1,1)"\nvalue = true\n')
     translate(program, out, machine=EX / "cpl" / "machine.toml", source_comments=True,
-              options=RunOptions(state_dir=tmp_path / "st"))
+              options=RunOptions(state_dir=tmp_path / "st", scenario=scenario))
     lines = out.read_text().splitlines()
     mark = next(i for i, line in enumerate(lines) if line.startswith("(FROZEN"))
     assert "ic.cpl:5" in lines[mark]

@@ -170,9 +170,18 @@ class CanonSink:
         the moves that follow are in ``frame``; their positions stay machine coordinates. ``whole_run``: the
         frame holds for every move of the run, those before it too (a rw_SymPas card tells it at the end)."""
 
-    def frozen(self, what: str, src: Src | None) -> None:
+    def frozen(self, what: str, src: Src | None, scenario: bool = False) -> None:
         """The run read an input from outside the program (``what`` names it: a key, a PLC input, a scenario
-        event, a measured value, a random number): the path from here on may depend on it."""
+        event, a measured value, a random number): the path from here on may depend on it. ``scenario``: a
+        machine input that only a scenario (``--scenario``) says; without one the run took its rest value."""
+
+    def tapping(self, g: int, src: Src) -> None:
+        """The moves that follow, in and out of one hole, are tapping cycle ``g`` (G74/G84): the tap is fed in
+        step with the spindle, which reverses at the bottom; they come as plain feed moves and spindle calls."""
+
+    def programmed(self, axes: tuple[str, ...], src: Src) -> None:
+        """The block at ``src`` programs the axis words ``axes`` for the move it makes next (also an axis whose
+        programmed position equals where it stands): a writer of programs writes them, whatever moves."""
 
     def dwell(self, seconds: float, src: Src) -> None:
         """Wait with axes standing still."""
@@ -228,7 +237,7 @@ class CanonSink:
         """The run is over (normally or by a fault): flush files."""
 
 
-_METHODS = ("begin", "rapid", "feed", "arc", "thread", "move_batch", "timing", "frame", "frozen", "channel", "dwell",
+_METHODS = ("begin", "rapid", "feed", "arc", "thread", "move_batch", "timing", "frame", "frozen", "channel", "programmed", "tapping", "dwell",
             "feed_per_rev", "radius_compensation", "homing",
             "tool_change", "tool_offset", "spindle", "coolant", "aux", "probe", "message", "stop", "program_end", "end")
 

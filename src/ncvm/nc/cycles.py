@@ -160,6 +160,7 @@ class CannedCycles:
             go(k, *ax, aa, bb, clear, True, src)
 
         def g84(k, ax, aa, bb, r, clear, bottom):
+            k.canon.tapping(motion, src)
             turning = k.spindle_dir
             go(k, *ax, aa, bb, bottom, False, src)
             k.turn_spindle(0, src)

@@ -33,7 +33,7 @@ from operator import add, sub
 from ..diagnostics import RuntimeFault, Span
 from ..machine.model import Machine, PlcImage, SimClock
 from . import arcs, cutter, threads
-from .canon import ArcSpec, Canon, Frame, Src
+from .canon import NOBODY, ArcSpec, Canon, Frame, Src
 from .dynamics import AxisDynamics, arc_limits, path_limits
 from .fastmove import make_linear
 from .planner import LOOKAHEAD, POSITIONING, STOP_END, Planner, arc_tangents
@@ -390,6 +390,8 @@ class NcKernel:
                 self.fault("NC009", "a circle radius (R; SINUMERIK B or U) on a straight move (G0/G1): no function of the block uses "
                            "it (a corner rounding between straight blocks is not supported by ncvm)", src)
             self.motion = motion
+            if canon.programmed is not NOBODY:  # a translation writes the block's axis words, not only those that move
+                canon.programmed(tuple(a for a in words if a in self.axis_of), src)
             if motion < 2 and not machine_coords:
                 self.linear(self, motion, words, src)  # the common case, without the _move call
             else:
@@ -433,8 +435,8 @@ class NcKernel:
     def columns_ok(self) -> bool:
         """Whether plain motion blocks may run column-wise (:mod:`ncvm.nc.plainrun`) now: not while a coordinate
         transformation maps every target, nor under G96 or G95, where each move re-reads the spindle, nor
-        when a dialect handles a motion G code itself."""
-        return self.transform is None and not self.spindle_bound and self.comp is None and self.motion < 4 and not (
+        when a dialect handles a motion G code itself, nor for a sink that takes each block's axis words."""
+        return self.canon.programmed is NOBODY and self.transform is None and not self.spindle_bound and self.comp is None and self.motion < 4 and not (
             self.g_handlers and _MOTION_G & self.g_handlers.keys())
 
     # -- spindle -----------------------------------------------------------
@@ -567,7 +569,7 @@ class NcKernel:
         for name, i in self.axis_of.items():
             if name in words:
                 table[i] = words[name] * self.scale
-        self._set_offsets_keep_machine()
+        self._set_offsets_keep_machine(src)
 
     def _set_position(self, words) -> None:
         if self.transform is not None:

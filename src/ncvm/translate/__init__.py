@@ -31,6 +31,7 @@ class Translated:
     frozen: int
     probes: int
     tools: dict[int, float]  # tool offset number -> the (last) length the simulation used
+    warnings: list[str] = dataclasses.field(default_factory=list)  # the run's limit violations, as run says them
 
 
 def translate(program: str | Path, out: str | Path, target: str = "linuxcnc", frame: str = "work",
@@ -54,4 +55,4 @@ def translate(program: str | Path, out: str | Path, target: str = "linuxcnc", fr
         raise TranslationRefused(refusal)
     w = file.writer
     return Translated(Path(out), file.target, w.lines, w.moves, w.setup.frozen, w.setup.probes,
-                      {n: lengths[-1] for n, lengths in w.setup.tools.items()})
+                      {n: lengths[-1] for (_, n), lengths in w.setup.tools.items()}, list(result.limit_violations))

@@ -52,6 +52,8 @@ class Target:
     axes: str = "XYZABCUVW"
     #: characters a comment may not hold, with their replacement
     comment_escapes: dict[str, str] = field(default_factory=dict)
+    #: the tool offset number is an edge of the active tool (840D: D1 of T2 is not D1 of T1): the header names the tool
+    edge_of_tool: bool = False
 
     def escape(self, text: str) -> str:
         """``text`` without the characters that would end this control's comment or message."""
@@ -82,7 +84,7 @@ SINUMERIK_840D = Target(
     name="sinumerik840d", title="SINUMERIK 840D", comment="; {}",
     preamble="G71 G90 G17 G94 G40", work_offsets={"G54": "G54", "G55": "G55", "G56": "G56", "G57": "G57",
                                                  "G58": "G505", "G59": "G506"},
-    tool_length_on="D{n}", tool_length_off="D0",
+    tool_length_on="D{n}", tool_length_off="D0", edge_of_tool=True,
     machine_move="SUPA", machine_move_keeps_tool=True,
     dwell="G4 F{s}", probe="MEAS=1 G1 {axes}{feed}", probe_no_contact="MEAS=1 G1 {axes}{feed}", turns=" TURN={n}", message='MSG("{}")',
     thread=None,

@@ -39,7 +39,8 @@ class Setup:
     """What the simulation used that the new control must be set up with (the header lists it)."""
 
     offsets: dict[str, list[tuple[float, ...]]] = field(default_factory=dict)  # zero offset -> values moved under
-    tools: dict[int, list[float]] = field(default_factory=dict)  # tool offset number -> lengths moved under
+    #: (tool in the spindle, tool offset number) -> lengths moved under: an 840D D is an edge of the active tool
+    tools: dict[tuple[int, int], list[float]] = field(default_factory=dict)
     shifts: set[tuple[float, ...]] = field(default_factory=set)  # G92 / additive offsets baked into positions
     transformed: bool = False
     machine_moves: int = 0
@@ -81,16 +82,19 @@ class Translation(CanonSink):
         self._frozen: list[tuple[str, Src | None]] = []
         self._frozen_pending: set = set()
         self._frozen_seen: set = set()
+        self._unsaid: tuple[str, Src | None] | None = None  # a machine input read with no scenario to say it
         self._tool = 0
         self._hidden: list[int] = []
         self._tool_number = 0
         self._frame_unrecorded = True
+        self._frame_src: Src | None = None  # the block of the last frame change
         #: the tool length call of a frame change, written before the next line (after a tool change of its block)
         self._tool_pending: tuple[Frame, Src | None] | None = None
         self._written: set[str] = set()  # the axes written in a move so far
         self._tool_frame: Frame | None = None  # the frame of the tool length written last
         self._per_rev: float | None = None  # G95: the F in mm per revolution
         self._homing: tuple[int, ...] | None = None  # the axes the next move homes
+        self._programmed: tuple[set[int], Src] | None = None  # the axis words of the next move's block
 
     # -- output ----------------------------------------------------------
     def refuse(self, src: Src | None, message: str) -> None:
@@ -99,6 +103,11 @@ class Translation(CanonSink):
 
     def _line(self, text: str, src: Src | None = None) -> None:
         if self.refusal is not None:
+            return
+        if self._unsaid is not None:
+            what, where = self._unsaid
+            self.refuse(where or src, f"the path depends on a machine input that no scenario gave ({what}: its "
+                                      "rest value, never read): give the inputs with --scenario")
             return
         if self._tool_pending is not None:
             self._tool_length()
@@ -165,6 +174,9 @@ class Translation(CanonSink):
             use = set(range(len(self.names)))
         else:
             use = {i for i, (a, b) in enumerate(zip(start, p)) if abs(a - b) > 1e-9} | set(always)
+            if self._programmed is not None:  # the block's own axis words, also those standing where they are
+                use |= self._programmed[0]
+                self._programmed = None
             if not use:
                 use = {i for i in range(len(self.names)) if self.names[i] in self._written}
         self._written.update(self.names[i] for i in use)
@@ -194,6 +206,7 @@ class Translation(CanonSink):
         if whole_run:  # the plot's frame for a whole rw_SymPas run: the moves are written already
             return
         self.frame_now = frame
+        self._frame_src = src
         if not self.work:
             return
         self._flush_after(src)  # the M5 / M9 of earlier blocks come before this block's words
@@ -225,18 +238,35 @@ class Translation(CanonSink):
         if not self.work or f.work_offset in (None, "G53"):
             return
         seen = self.setup.offsets.setdefault(f.work_offset, [])
+        if any(zero != f.zero for zero in seen):  # one G5x holds one value on the new control
+            self.refuse(self._frame_src, f"the program rewrites zero offset {f.work_offset} after moves in it "
+                                         f"({self._zero_text(seen[-1])} before, {self._zero_text(f.zero)} now): "
+                                         f"a {self.t.work_offsets[f.work_offset]} of the new control holds one value "
+                                         "(translate with --frame machine)")
+            return
         if f.zero not in seen:
             seen.append(f.zero)
         if f.tool_length:
-            lengths = self.setup.tools.setdefault(self._tool_number, [])
+            tool = self._tool if self.t.edge_of_tool else 0
+            lengths = self.setup.tools.setdefault((tool, self._tool_number), [])
             if f.tool_length not in lengths:
                 lengths.append(f.tool_length)
 
-    def frozen(self, what, src):
+    def _zero_text(self, zero) -> str:
+        return " ".join(f"{n}{number(v)}" for n, v in zip(self.names, zero) if n in self.t.axes)
+
+    def frozen(self, what, src, scenario=False):
+        if scenario and not self.scenario_given:  # nothing said what the input is: the run took its rest value
+            self._unsaid = self._unsaid or (what, src)
+            return
         key = (what, src)
         if key not in self._frozen_pending:  # a polling loop reads the same input again and again
             self._frozen_pending.add(key)
             self._frozen.append(key)
+
+    def programmed(self, axes, src):
+        use = {self.names.index(n) for n in axes if n in self.names}
+        self._programmed = (use, src) if use else None
 
     def probe(self, trip, target, src):
         self._probe = (trip, target, src)
@@ -259,6 +289,8 @@ class Translation(CanonSink):
     def _move_starts(self, start, end, src) -> bool:
         """What every move does first (the block's M5/M9 wait, the setup is recorded); False: refused."""
         self._flush_after(src)
+        if self._programmed is not None and self._programmed[1] != src:
+            self._programmed = None  # the block that programmed them made no move
         if self._tool_pending is not None:
             self._tool_length()
         self.moves += 1
@@ -423,6 +455,10 @@ class Translation(CanonSink):
                          f"radius {number(radius)} mm, and ncvm does not write the programmed contour with "
                          f"G{g}; a cutter of another radius would cut the part off size")
 
+    def tapping(self, g, src):
+        self.refuse(src, f"a tapping cycle G{g}: ncvm writes a canned cycle as its moves, and a tap fed by plain "
+                         "G1 moves is not tied to the spindle (program the target's tapping cycle by hand)")
+
     def dwell(self, seconds, src):
         self._flush_after()
         self._line(self.t.dwell.format(s=number(seconds)), src)
@@ -432,6 +468,7 @@ class Translation(CanonSink):
         self._tool_pending = None if held else self._tool_pending
         self._flush_after()
         self._tool = tool
+        self._frame_unrecorded = True  # the header names the length for the new tool too (an 840D D is its edge)
         self._line(f"T{tool} M6", src)
         if held is not None:  # the block's own tool length: for the tool just loaded
             self._tool_pending = held
@@ -471,6 +508,8 @@ class Translation(CanonSink):
     def finish_moves(self) -> None:
         """The run ended normally: the last M5/M9 out (a probe move with no move after it is refused)."""
         self._flush_after()
+        if self._unsaid is not None:
+            self._line("")  # the refusal of an input no scenario gave, at the end of the program too
         if self._probe is not None:
             self.refuse(self._probe[2], "a probe move with no move after it")
 
@@ -490,8 +529,8 @@ class Translation(CanonSink):
                 values = " then ".join(" ".join(f"{n}{number(v)}" for n, v in zip(self.names, zero) if n in t.axes)
                                        for zero in zeros)
                 out.append(note(f"zero offset {name} -> {t.work_offsets[name]}: simulated as {values} ({machine})"))
-            for n, lengths in sorted(s.tools.items()):
-                out.append(note(f"tool offset {t.tool_length_on.format(n=n)}: length "
+            for (tool, n), lengths in sorted(s.tools.items()):
+                out.append(note(f"{f'tool T{tool} edge ' if tool else 'tool offset '}{t.tool_length_on.format(n=n)}: length "
                                 f"{' then '.join(number(v) for v in lengths)} mm in the simulation"))
             if not s.tools:
                 out.append(note("no tool length compensation was used"))

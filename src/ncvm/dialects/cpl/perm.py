@@ -111,6 +111,23 @@ class Permanents:
         self.decls: dict[str, tuple[str, list[int]]] = {}
         self.values: dict[str, object] = {}
         self.touched: dict[str, str] = {}  # key -> name shown in the report
+        #: told of the first read of each permanent variable this run has not written: run-time input left by
+        #: earlier runs (``ncvm translate`` marks the path that follows it FROZEN); None: nobody asks
+        self.on_outside = None
+        self._this_run: set[str] = set()  # the permanent variables read or written so far
+
+    def _read(self, key: str, value, name: str):
+        """``value`` of permanent variable ``key``, read by the program (``name`` as it spells it)."""
+        self.touched[key] = name
+        if self.on_outside is not None and key not in self._this_run:
+            self._this_run.add(key)
+            self.on_outside(f"permanent variable {name} read as {'NUL' if value is None else value!r}, "
+                            "left by earlier runs")
+        return value
+
+    def _wrote(self, key: str, name: str) -> None:
+        self.touched[key] = name
+        self._this_run.add(key)
 
     @property
     def store(self):
@@ -145,8 +162,7 @@ class Permanents:
     def get_n(self, n: int):
         self._ensure()
         key = f"@{n}"
-        self.touched[key] = key
-        return self.values.get(key)
+        return self._read(key, self.values.get(key), key)
 
     def set_n(self, n: int, v) -> None:
         if v is None:
@@ -155,7 +171,7 @@ class Permanents:
         key = f"@{n}"
         self.store.put(NS, key, v)
         self.values[key] = v
-        self.touched[key] = key
+        self._wrote(key, key)
 
     # -- @_R(1..100) ----------------------------------------------------------------------
     def _r_key(self, i) -> str:
@@ -166,8 +182,7 @@ class Permanents:
     def get_r(self, i):
         self._ensure()
         key = self._r_key(i)
-        self.touched[key] = key
-        return self.values.get(key)
+        return self._read(key, self.values.get(key), key)
 
     def set_r(self, i, v) -> None:
         key = self._r_key(i)
@@ -176,7 +191,7 @@ class Permanents:
         v = to_double(v)
         self.store.put(NS, key, v)
         self.values[key] = v
-        self.touched[key] = key
+        self._wrote(key, key)
 
     # -- definable ----------------------------------------------------------------------------
     def _decl(self, name: str, suffix: str):
@@ -203,11 +218,10 @@ class Permanents:
         typ, dims = self._decl(name, suffix)
         idx = self._slot(name, typ, dims, idx)
         key = "@" + name
-        self.touched[key] = key + suffix
         v = self.values[key]["value"]
         for i in idx:
             v = v[i]
-        return v
+        return self._read(key, v, key + suffix)
 
     def set_d(self, name: str, suffix: str, idx: tuple, v) -> None:
         typ, dims = self._decl(name, suffix)
@@ -227,7 +241,7 @@ class Permanents:
                 box = box[i]
             box[idx[-1]] = v
         self.store.put(NS, key, rec)
-        self.touched[key] = key + suffix
+        self._wrote(key, key + suffix)
 
     def char_field(self, name: str, idx: tuple) -> PermanentField:
         """A permanent character field (``DEF CHAR @NAME(n)``, or a row of ``@NAME(rows,n)``) as a field

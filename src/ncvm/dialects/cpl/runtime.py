@@ -26,7 +26,7 @@ from ...diagnostics import CompileFailed, Frame, RuntimeFault, Span
 from ...machine.scenario import EventQueue, InterfaceBit, of_type, refuse
 from ...nc import cutter
 from ...nc.block import Block, DinSyntaxError, as_block, parse_din_line, plain_row
-from ...nc.canon import CanonSink, Src
+from ...nc.canon import NOBODY, CanonSink, Src
 from ...nc.midmove import MotionRecorder, position_at
 from ...nc.plainrun import execute_segments, plain_segments
 from ...nc.profiles.typ3osa import TYP3OSA
@@ -112,6 +112,8 @@ class CplRuntime:
         self.io.screen.on_input = self.frozen
         self.globals: dict = {}
         self.perm = Permanents(session)
+        if self.kernel.canon.frozen is not NOBODY:  # a translation marks what earlier runs left behind
+            self.perm.on_outside = self.frozen
         #: the motion queue: ``lookahead`` blocks, else the block buffer, whose older half executes when
         #: it is full; ``enqueue`` queues an NC block (or a plain row)
         if self.lookahead > 0:
@@ -328,22 +330,22 @@ class CplRuntime:
         f.stack = [Frame(Path(p).name, Span(p, ln, c or self.first_column(p, ln))) for p, ln, _, c in frames]
         return f
 
-    def frozen(self, what: str) -> None:
-        """The run read ``what`` from outside the program (a key, an input): canon ``frozen`` at the CPL line
-        running now."""
+    def frozen(self, what: str, scenario: bool = False) -> None:
+        """The run read ``what`` from outside the program (a key, an input; ``scenario``: a machine input that
+        only a scenario says): canon ``frozen`` at the CPL line running now."""
         where = running_line({path: uc.src for path, uc in self._codes.items()})
         src = Src(*where) if where else None
         if self.queue:  # the blocks prepared before the read execute first
-            self._frozen_due.append((self.queue.executed + len(self.queue), what, src))
+            self._frozen_due.append((self.queue.executed + len(self.queue), what, src, scenario))
         else:
-            self.kernel.canon.frozen(what, src)
+            self.kernel.canon.frozen(what, src, scenario)
 
     def _tell_frozen(self, executed: int) -> None:
         """Tell the canon the inputs read before block number ``executed`` (counted from 0) was prepared."""
         due = self._frozen_due
         while due and due[0][0] <= executed:
-            _, what, src = due.pop(0)
-            self.kernel.canon.frozen(what, src)
+            _, what, src, scenario = due.pop(0)
+            self.kernel.canon.frozen(what, src, scenario)
 
     def first_column(self, path: str, line: int) -> int:
         """Where the first statement of a physical line starts (a fault in lines generated for no one statement)."""

@@ -581,7 +581,7 @@ class Channel:
             raise Cl800Error(f"external input {b}.{k} does not exist (byte 1/2, bit 0-7)")
         self.advance_scenario()
         value = bool((self.data.inputs[b] >> k) & 1)
-        self.kernel.canon.frozen(f"external input {b}.{k} read as {int(value)}", None)
+        self.kernel.canon.frozen(f"external input {b}.{k} read as {int(value)}", None, True)  # True: a scenario says it
         return value
 
     def wait_input(self, byte: int, bit: int, level: bool, what: str) -> None:

@@ -300,7 +300,7 @@ class CodeGen:
         if b.form == "X":
             args = ", ".join(self.arg(a, p) for a, p in zip(c.args, b.params))
             if name == "WT":
-                self.emit(f"_g = tk.wt({args})", node)
+                self.emit(f"_g = tk.wt({args}, {loc})", node)
                 self.emit("if _g is not None: yield from _g", node)
             else:
                 self.emit(f"tk.{name.lower()}({args})", node)

@@ -74,7 +74,7 @@ def get_qual(card, tk, ax: int, name: str):
     if name in LIMITS:
         return a.q[name] - card.user_shift(a)
     if name in ("digi", "ifs"):  # the axis' digital inputs: a run-time input (ncvm translate marks it)
-        card.canon.frozen(f"digital inputs {a.name}.{name} read as {getattr(a, name):#x}", None)
+        card.canon.frozen(f"digital inputs {a.name}.{name} read as {getattr(a, name):#x}", None, True)
     if name in ("digi", "digo", "ifs"):
         return getattr(a, name)
     if name in ("kp", "ki", "kd", "kpl", "kfca", "kfcv"):

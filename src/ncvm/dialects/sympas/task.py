@@ -10,7 +10,9 @@ from __future__ import annotations
 import math
 import struct
 
+from ...nc.canon import NOBODY
 from .events import event_active, events_follow_motion
+from .motion import TICKS_PER_S
 from .symbols import EVENTS
 from .values import fault
 
@@ -212,9 +214,15 @@ class Task:
             self.time = tick
         return True
 
-    def wt(self, ticks: int):
-        """WT(n): sleep n x 64 us; events are not processed meanwhile (L2232)."""
+    def wt(self, ticks: int, loc: int | None = None):
+        """WT(n): sleep n x 64 us; events are not processed meanwhile (L2232). With every axis standing, the
+        axes wait that long: a dwell (``loc``: the statement's place), told to a sink that writes programs."""
         target = self.time + (ticks if ticks > 0 else 1)
+        card = self.card
+        if (loc is not None and card.canon.dwell is not NOBODY and not self.others_running()
+                and not any(card.busy(a, self.time) for a in card.axes)):
+            card.timeline.report(math.inf)  # the moves before the wait come first
+            card.canon.dwell((target - self.time) / TICKS_PER_S, self.unit.srcs[loc])
         if self.fast_wait(target, poll=False):
             return None
         return self.wait_until(target, poll=False)

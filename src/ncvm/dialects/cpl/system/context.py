@@ -53,5 +53,5 @@ class SystemContext(Protocol):
     def _apply_events(self, t: float) -> None:
         """The scenario's input events up to time ``t`` (IC reads)."""
 
-    def frozen(self, what: str) -> None:
+    def frozen(self, what: str, scenario: bool = False) -> None:
         """The run read ``what`` from outside the program: marked at the running CPL line (ncvm translate)."""

@@ -51,7 +51,7 @@ def f_ic(rt: SystemContext, bit, group=None, index=None) -> bool:
     if (0 if group is None else group) in OUTPUT_GROUPS:
         return bool(plc.outputs.get(key, plc.inputs.get(key, False)))
     value = bool(plc.inputs.get(key, False))
-    rt.frozen(f"PLC input IC {key} read as {int(value)}")
+    rt.frozen(f"PLC input IC {key} read as {int(value)}", scenario=True)
     return value
 
 
