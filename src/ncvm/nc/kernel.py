@@ -389,6 +389,9 @@ class NcKernel:
             if motion < 2 and "R" in words:  # rs274: "R word with no G code that uses it"; never dropped silently
                 self.fault("NC009", "a circle radius (R; SINUMERIK B or U) on a straight move (G0/G1): no function of the block uses "
                            "it (a corner rounding between straight blocks is not supported by ncvm)", src)
+            if machine_coords and not self.absolute:  # rs274: "Cannot use G53 incremental"; CL 800 gives none
+                self.fault("NC009", "G53 (machine coordinates) under G91: a machine position is absolute, "
+                           "an incremental one is not supported (G90 first)", src)
             self.motion = motion
             if canon.programmed is not NOBODY:  # a translation writes the block's axis words, not only those that move
                 canon.programmed(tuple(a for a in words if a in self.axis_of), src)
