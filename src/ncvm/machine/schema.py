@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import math
 import re
-from dataclasses import dataclass, field
 from typing import Any, Callable
 
 
@@ -67,16 +66,42 @@ def join(path: str, key: str | int) -> str:
     return f"{path}.{_key(key)}" if path else _key(key)
 
 
-@dataclass(frozen=True)
-class Ctx:
+class Value:
+    """A value object whose fields are its ``__slots__``: compared, hashed and shown by them.
+
+    The schema's classes are written out rather than made by ``dataclasses``: they are built when the
+    machine file is first read, on every run's start-up path, where 10 frozen dataclasses cost about 9 ms
+    (the generated methods are compiled at import) and these classes next to nothing."""
+
+    __slots__ = ()
+
+    def _fields(self) -> tuple:
+        return tuple(getattr(self, name) for name in self.__slots__)
+
+    def __eq__(self, other: object) -> bool:
+        return type(other) is type(self) and self._fields() == other._fields()
+
+    def __hash__(self) -> int:
+        return hash(self._fields())
+
+    def __repr__(self) -> str:
+        return f"{type(self).__name__}({', '.join(f'{n}={getattr(self, n)!r}' for n in self.__slots__)})"
+
+
+class Ctx(Value):
     """What checks may refer to besides the value itself: the machine's axes."""
 
-    axis_names: tuple[str, ...] = ()
-    axis_limits: tuple[tuple[float, float], ...] = ()
+    __slots__ = ("axis_names", "axis_limits")
+
+    def __init__(self, axis_names: tuple[str, ...] = (), axis_limits: tuple[tuple[float, float], ...] = ()):
+        self.axis_names = axis_names
+        self.axis_limits = axis_limits
 
 
-class Node:
+class Node(Value):
     """One type of value. Subclasses say what they accept, how docs name it, and its JSON Schema."""
+
+    __slots__ = ()
 
     def check(self, value: Any, path: str, ctx: Ctx) -> None:
         raise NotImplementedError
@@ -104,16 +129,20 @@ LIMIT = 1e15
 TINY = 1e-9
 
 
-@dataclass(frozen=True)
 class Number(Node):
     """A finite number within +-LIMIT; ``integer`` refuses 2.5 and 2.0 alike (TOML keeps the difference).
     ``gt=0`` ("positive") means at least TINY."""
 
-    integer: bool = False
-    min: float | None = None  # inclusive bounds
-    max: float | None = None
-    gt: float | None = None  # exclusive lower bound ("positive": gt=0)
-    choices: tuple[float, ...] = ()
+    __slots__ = ("integer", "min", "max", "gt", "choices")
+
+    def __init__(self, integer: bool = False,
+                 min: float | None = None, max: float | None = None, gt: float | None = None,
+                 choices: tuple[float, ...] = ()):
+        self.integer = integer
+        self.min = min  # inclusive bounds
+        self.max = max
+        self.gt = gt  # exclusive lower bound ("positive": gt=0)
+        self.choices = choices
 
     def check(self, value, path, ctx):
         ok = isinstance(value, int) if self.integer else isinstance(value, (int, float))
@@ -162,16 +191,20 @@ def _num(x: float) -> str:
     return f"{x:g}" if isinstance(x, float) else str(x)
 
 
-@dataclass(frozen=True)
 class Text(Node):
     """A string, optionally one of ``choices`` or matching ``pattern`` (described by ``shape``)."""
 
-    choices: tuple[str, ...] = ()
-    pattern: str | None = None
-    shape: str = ""  # what the pattern means, for messages and docs
-    nonempty: bool = False
-    max_len: int | None = None
-    ignore_case: bool = False
+    __slots__ = ("choices", "pattern", "shape", "nonempty", "max_len", "ignore_case")
+
+    def __init__(self, choices: tuple[str, ...] = (),
+                 pattern: str | None = None, shape: str = "", nonempty: bool = False,
+                 max_len: int | None = None, ignore_case: bool = False):
+        self.choices = choices
+        self.pattern = pattern
+        self.shape = shape  # what the pattern means, for messages and docs
+        self.nonempty = nonempty
+        self.max_len = max_len
+        self.ignore_case = ignore_case
 
     def check(self, value, path, ctx):
         if not isinstance(value, str):
@@ -227,9 +260,10 @@ def _either_case(pattern: str) -> str:
     return "".join(out)
 
 
-@dataclass(frozen=True)
 class Flag(Node):
     """``true`` or ``false`` (not 1, not "yes")."""
+
+    __slots__ = ()
 
     def check(self, value, path, ctx):
         if not isinstance(value, bool):
@@ -242,12 +276,14 @@ class Flag(Node):
         return {"type": "boolean"}
 
 
-@dataclass(frozen=True)
-class Check:
+class Check(Value):
     """A rule across the keys of a table (min <= max, no repeated numbers ...); ``doc`` goes into the docs."""
 
-    doc: str
-    fn: Callable[[Any, str, Ctx], None]
+    __slots__ = ("doc", "fn")
+
+    def __init__(self, doc: str, fn: Callable[[Any, str, Ctx], None]):
+        self.doc = doc
+        self.fn = fn
 
 
 def unique(key: str, what: str, key_of: Callable[[Any, int], Any] | None = None) -> Check:
@@ -268,15 +304,19 @@ def unique(key: str, what: str, key_of: Callable[[Any, int], Any] | None = None)
     return Check(f"no two with the same {what}", fn)
 
 
-@dataclass(frozen=True)
 class ListOf(Node):
     """An array of ``item`` s; ``per_axis``: exactly one per machine axis."""
 
-    item: Node
-    min_len: int = 0
-    max_len: int | None = None
-    per_axis: bool = False
-    checks: tuple[Check, ...] = ()
+    __slots__ = ("item", "min_len", "max_len", "per_axis", "checks")
+
+    def __init__(self, item: Node,
+                 min_len: int = 0, max_len: int | None = None, per_axis: bool = False,
+                 checks: tuple[Check, ...] = ()):
+        self.item = item
+        self.min_len = min_len
+        self.max_len = max_len
+        self.per_axis = per_axis
+        self.checks = checks
 
     def check(self, value, path, ctx):
         if not isinstance(value, list):
@@ -328,29 +368,36 @@ def _plural(text: str) -> str:
     return text
 
 
-@dataclass(frozen=True)
-class Field:
+class Field(Value):
     """One key of a table: its type, unit, default and meaning."""
 
-    name: str
-    type: Node
-    doc: str
-    default: Any = NO_DEFAULT  # shown in the docs (what the control does when the key is left out)
-    unit: str = ""
-    required: bool = False
+    __slots__ = ("name", "type", "doc", "default", "unit", "required")
+
+    def __init__(self, name: str,
+                 type: Node, doc: str, default: Any = NO_DEFAULT, unit: str = "", required: bool = False):
+        self.name = name
+        self.type = type
+        self.doc = doc
+        self.default = default  # shown in the docs (what the control does when the key is left out)
+        self.unit = unit
+        self.required = required
 
 
-@dataclass(frozen=True)
 class Table(Node):
     """A TOML table with the keys ``fields``; other keys only if ``other`` types them (their names must
     match ``keys``). Any other key is an error naming it."""
 
-    fields: tuple[Field, ...] = ()
-    other: Node | None = None
-    keys: Text | None = None  # the names ``other`` keys may have
-    keys_doc: str = ""  # what an ``other`` key stands for, in the docs
-    checks: tuple[Check, ...] = ()
-    closed_why: str = ""  # why an empty table takes no keys at all (for the message)
+    __slots__ = ("fields", "other", "keys", "keys_doc", "checks", "closed_why")
+
+    def __init__(self, fields: tuple[Field, ...] = (),
+                 other: Node | None = None, keys: Text | None = None, keys_doc: str = "",
+                 checks: tuple[Check, ...] = (), closed_why: str = ""):
+        self.fields = fields
+        self.other = other
+        self.keys = keys  # the names ``other`` keys may have
+        self.keys_doc = keys_doc  # what an ``other`` key stands for, in the docs
+        self.checks = checks
+        self.closed_why = closed_why  # why an empty table takes no keys at all (for the message)
 
     def check(self, value, path, ctx):
         if not isinstance(value, dict):
@@ -424,12 +471,14 @@ def _with_doc(f: Field) -> dict:
     return out
 
 
-@dataclass(frozen=True)
 class Either(Node):
     """One of several shapes (a program name or a table with program and modal ...), tried in order."""
 
-    options: tuple[Node, ...]
-    what: str  # the shapes in words, for messages
+    __slots__ = ("options", "what")
+
+    def __init__(self, options: tuple[Node, ...], what: str):
+        self.options = options
+        self.what = what  # the shapes in words, for messages
 
     def check(self, value, path, ctx):
         fitting = [o for o in self.options if _fits(o, value)]
@@ -467,13 +516,15 @@ def _fits(node: Node, value: Any) -> bool:
     return isinstance(value, want) and (want is bool or not isinstance(value, bool))
 
 
-@dataclass(frozen=True)
 class Tagged(Node):
     """A table whose ``tag`` key (e.g. a scenario event's ``kind``) chooses which other keys it has."""
 
-    tag: str
-    common: tuple[Field, ...]
-    cases: dict[str, Table] = field(default_factory=dict)
+    __slots__ = ("tag", "common", "cases")
+
+    def __init__(self, tag: str, common: tuple[Field, ...], cases: dict[str, Table] | None = None):
+        self.tag = tag
+        self.common = common
+        self.cases = {} if cases is None else cases
 
     def check(self, value, path, ctx):
         if not isinstance(value, dict):
