@@ -13,6 +13,8 @@ import math
 import re
 from typing import Any, Callable
 
+from ..records import FrozenRecord
+
 
 class SchemaError(Exception):
     """A value that breaks the schema: ``path = value: why``."""
@@ -66,29 +68,7 @@ def join(path: str, key: str | int) -> str:
     return f"{path}.{_key(key)}" if path else _key(key)
 
 
-class Value:
-    """A value object whose fields are its ``__slots__``: compared, hashed and shown by them.
-
-    The schema's classes are written out rather than made by ``dataclasses``: they are built when the
-    machine file is first read, on every run's start-up path, where 10 frozen dataclasses cost about 9 ms
-    (the generated methods are compiled at import) and these classes next to nothing."""
-
-    __slots__ = ()
-
-    def _fields(self) -> tuple:
-        return tuple(getattr(self, name) for name in self.__slots__)
-
-    def __eq__(self, other: object) -> bool:
-        return type(other) is type(self) and self._fields() == other._fields()
-
-    def __hash__(self) -> int:
-        return hash(self._fields())
-
-    def __repr__(self) -> str:
-        return f"{type(self).__name__}({', '.join(f'{n}={getattr(self, n)!r}' for n in self.__slots__)})"
-
-
-class Ctx(Value):
+class Ctx(FrozenRecord):
     """What checks may refer to besides the value itself: the machine's axes."""
 
     __slots__ = ("axis_names", "axis_limits")
@@ -98,7 +78,7 @@ class Ctx(Value):
         self.axis_limits = axis_limits
 
 
-class Node(Value):
+class Node(FrozenRecord):
     """One type of value. Subclasses say what they accept, how docs name it, and its JSON Schema."""
 
     __slots__ = ()
@@ -276,7 +256,7 @@ class Flag(Node):
         return {"type": "boolean"}
 
 
-class Check(Value):
+class Check(FrozenRecord):
     """A rule across the keys of a table (min <= max, no repeated numbers ...); ``doc`` goes into the docs."""
 
     __slots__ = ("doc", "fn")
@@ -368,7 +348,7 @@ def _plural(text: str) -> str:
     return text
 
 
-class Field(Value):
+class Field(FrozenRecord):
     """One key of a table: its type, unit, default and meaning."""
 
     __slots__ = ("name", "type", "doc", "default", "unit", "required")

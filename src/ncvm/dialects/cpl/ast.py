@@ -8,10 +8,11 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+from ...records import Record
 from .lexer import VarName
 
 
-class Node:
+class Node(Record):
     """A node of the tree: fields compare and print as a dataclass's would.
 
     The nodes are plain classes with ``__slots__`` and a written-out ``__init__`` rather than dataclasses:
@@ -19,18 +20,6 @@ class Node:
     """
 
     __slots__ = ()
-    __hash__ = None  # mutable, as a dataclass with eq and without frozen
-
-    def _fields(self) -> tuple[str, ...]:
-        return tuple(f for c in reversed(type(self).__mro__) for f in c.__dict__.get("__slots__", ()))
-
-    def __eq__(self, other):
-        if other.__class__ is not self.__class__:
-            return NotImplemented
-        return all(getattr(self, f) == getattr(other, f) for f in self._fields())
-
-    def __repr__(self) -> str:
-        return f"{type(self).__qualname__}({', '.join(f'{f}={getattr(self, f)!r}' for f in self._fields())})"
 
 
 # -- expressions ---------------------------------------------------------
