@@ -88,6 +88,14 @@ def test_a_cpl_run_that_draws_and_shows_nothing_imports_no_numpy(tmp_path):
     assert top(modules, DIALECTS) == {"ncvm.dialects.cpl"}
 
 
+def test_a_cpl_run_on_a_machine_without_scenario_events_imports_no_event_type(tmp_path):
+    """The CPL controller, measuring blocks and SERCOS functions take the event types only from a scenario."""
+    (tmp_path / "p.cpl").write_text("10 I% = 0\n20 WHILE I% < 3 DO\n30 I% = I% + 1\n40 END\nM30\n")
+    code, modules = loaded(["run", "--state", str(tmp_path / ".ncvm"), "p.cpl"], tmp_path)
+    assert code == 0
+    assert "ncvm.machine.scenario" not in modules
+
+
 def test_a_cpl_run_that_draws_makes_its_canvas(tmp_path):
     (tmp_path / "p.cpl").write_text("10 GWD(0, 100, 0, 100)\n20 LIN(10, 10, 50, 50)\nM30\n")
     code, modules = loaded(["run", "--state", str(tmp_path / ".ncvm"), "--screen", "s.png", "p.cpl"], tmp_path)

@@ -4,17 +4,16 @@ Each kind of event is one dataclass whose fields name its addressing: an input c
 bit's address (CPL), by byte and bit (SINUMERIK external input) or by axis and digital input (rw_SymPas),
 and each is its own type, so a controller takes the forms it can use and refuses the others by name
 (:func:`refuse`). spec.py declares the TOML form and checks it when the file is read (eventforms.py);
-:func:`from_table` builds the events from the checked tables. :class:`EventQueue` hands them out in
-time order as simulated time reaches them.
+:func:`from_table` builds the events from the checked tables. :class:`EventQueue` (eventqueue.py) hands
+them out in time order as simulated time reaches them.
 """
 
 from __future__ import annotations
 
-import bisect
 from dataclasses import dataclass, field
-from typing import Any, ClassVar, Iterator
+from typing import Any, ClassVar
 
-from ..diagnostics import UsageError
+from .eventqueue import EventQueue, of_type, refuse  # noqa: F401 (what a controller takes, with the types)
 
 
 @dataclass(frozen=True)
@@ -197,68 +196,3 @@ def from_table(entry: dict) -> Event:
 def from_tables(entries: list[dict]) -> list[Event]:
     """The events of a machine or scenario file, in time order (events at the same time as written)."""
     return sorted((from_table(e) for e in entries), key=lambda e: e.time)
-
-
-# -- what a controller takes --------------------------------------------------------------------
-def refuse(events: list[Event], takes: tuple[type, ...], control: str) -> None:
-    """Raise a usage error naming the first event of a type ``control`` cannot use: no event of the
-    machine file is silently ignored."""
-    for ev in events:
-        if not isinstance(ev, takes):
-            forms = ", ".join(dict.fromkeys(t.form for t in takes)) or "none"
-            raise UsageError(f"scenario event at {ev.time:g} s: {ev.form}, which the {control} cannot use "
-                             f"(scenario events it takes: {forms})")
-
-
-def of_type(events: list[Event], *types: type) -> list[Event]:
-    return [e for e in events if isinstance(e, types)]
-
-
-class EventQueue:
-    """Events in time order, handed out when simulated time reaches them (:meth:`due`); an event may also
-    be taken out ahead of its time (:meth:`take`: the next probe event a measuring block uses)."""
-
-    __slots__ = ("_events", "_times")
-
-    def __init__(self, events: list[Event] = ()):
-        self._events = sorted(events, key=lambda e: e.time)
-        self._times = [e.time for e in self._events]
-
-    def __bool__(self) -> bool:
-        return bool(self._events)
-
-    def __len__(self) -> int:
-        return len(self._events)
-
-    def __iter__(self) -> Iterator[Event]:
-        """The events still to come, in time order (they stay queued)."""
-        return iter(list(self._events))
-
-    def next_time(self) -> float | None:
-        """When the next event happens; None when none is left."""
-        return self._times[0] if self._times else None
-
-    def due(self, now: float) -> Iterator[Event]:
-        """Pop the events whose time has come (time <= ``now``), in order; one at a time, so an event's
-        effect may look at the queue."""
-        while self._times and self._times[0] <= now:
-            self._times.pop(0)
-            yield self._events.pop(0)
-
-    def pop(self) -> Event:
-        """Remove and return the next event (the queue must not be empty)."""
-        self._times.pop(0)
-        return self._events.pop(0)
-
-    def take(self, match) -> Event | None:
-        """Remove and return the first queued event ``match(event)`` accepts, whatever its time."""
-        for i, ev in enumerate(self._events):
-            if match(ev):
-                del self._events[i], self._times[i]
-                return ev
-        return None
-
-    def push(self, ev: Event) -> None:
-        i = bisect.bisect_right(self._times, ev.time)
-        self._times.insert(i, ev.time)
-        self._events.insert(i, ev)

@@ -23,7 +23,7 @@ from ctypes import c_float  # the REAL store of generated code (values.py)
 from pathlib import Path
 
 from ...diagnostics import CompileFailed, Frame, RuntimeFault, Span
-from ...machine.scenario import EventQueue, InterfaceBit, of_type, refuse
+from ...machine.eventqueue import EventQueue, of_type, refuse
 from ...nc import cutter
 from ...nc.block import Block, DinSyntaxError, as_block, parse_din_line, plain_row
 from ...nc.canon import NOBODY, CanonSink, Src
@@ -52,8 +52,7 @@ from .system.controller import load_controller
 from .system.gfuncs import Typ3Block, activate, prepare
 from .system.ncs import ControlReset
 from .system.plc import f_ic
-from .system.positions import MEASURING_G, PROBE_EVENTS, check_probe_events, probe_block
-from .system.sercos import SERCOS_EVENTS
+from .system.positions import MEASURING_G, check_probe_events, probe_block
 from .unlinked import link_late, run_unlinked
 
 _EXTENDED = re.compile(r"\s*([A-Za-z][A-Za-z0-9_]*[0-9_][A-Za-z0-9_]*)\s*=\s*([-+]?(?:\d+\.?\d*|\.\d+))\s*$")
@@ -146,10 +145,8 @@ class CplRuntime:
         #: the block still moving at the program's time: (block, position before it, its recorded motion,
         #: the executed count after it); see executed_position
         self.running = None
-        refuse(self.machine.scenario, (InterfaceBit, *PROBE_EVENTS, *SERCOS_EVENTS), "CPL control")
-        check_probe_events(self.machine.scenario)
         #: the interface-bit changes still to come; IC reads apply those up to the program's time
-        self._events = EventQueue(of_type(self.machine.scenario, InterfaceBit))
+        self._events = EventQueue(_interface_events(self.machine.scenario))
         self.ctl = load_controller(self.machine, lambda: session.store)  # chapter 4 controller state
         #: the main program's local variables at a fault (generated code fills it in)
         self.fault_locals: dict = {}
@@ -715,3 +712,15 @@ def _caseval(v):
     if v is None:
         raise TypeError("NUL")
     raise CplError("CPL032", f"CASE selector {v!r} is not INTEGER")
+
+
+def _interface_events(events: list) -> list:
+    """The scenario's interface-bit changes, after refusing (by name) every event the CPL control cannot use.
+    The event types are imported only for a scenario that has events (start-up, issue 18)."""
+    if not events:
+        return []
+    from ...machine.scenario import FixedStop, InterfaceBit, ProbeSwitch, SercosLock
+
+    refuse(events, (InterfaceBit, ProbeSwitch, FixedStop, SercosLock), "CPL control")
+    check_probe_events(events)
+    return of_type(events, InterfaceBit)

@@ -12,7 +12,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from ....diagnostics import UsageError
-from ....machine.scenario import EventQueue, FixedStop, ProbeSwitch, of_type
+from ....machine.eventqueue import EventQueue
 from ....nc.probe import ProbeLatch
 from ..options import Options, options
 from .gfuncs import NcFuncs
@@ -110,8 +110,13 @@ def load_controller(machine, store=None) -> Controller:
         raise UsageError(f"[cpl]: bad value ({type(e).__name__}: {e})") from None
 
 
+#: the kinds of scenario event the measuring blocks read (ProbeSwitch, FixedStop; by kind, so that a machine
+#: without events imports no event type: start-up, issue 18)
+PROBE_KINDS = ("probe", "fixed_stop")
+
+
 def _build(machine, cfg: Options, store) -> Controller:
-    c = Controller(store=store, probe_events=EventQueue(of_type(machine.scenario, ProbeSwitch, FixedStop)))
+    c = Controller(store=store, probe_events=EventQueue([e for e in machine.scenario if e.kind in PROBE_KINDS]))
     c.channel = cfg.channel
     axes = cfg.axes
     if axes is None:

@@ -18,7 +18,6 @@ from __future__ import annotations
 import copy
 
 from ....diagnostics import UsageError
-from ....machine.scenario import FixedStop, ProbeSwitch, of_type
 from ....nc.probe import ProbeLatch, announce, programmed_end, stop_words
 from ..errors import CplError
 from .axes import kernel_index, resolve, to_unit
@@ -130,13 +129,13 @@ def probe_block(rt, blk):
     target = programmed_end(k, words) if code == PROBE_INPUT else None
     latch = c.probe = ProbeLatch(code)
     if code == PROBE_INPUT:
-        trigger = _next_event(c, ProbeSwitch)
+        trigger = _next_event(c, "probe")
         if trigger is not None:
             latch.position = {name: v for name, v in trigger.items() if name in k.axis_of}
             stop_words(k, words, latch.position)
     else:
         name = _measured_axis(k, words, code)
-        event = _next_event(c, ProbeSwitch if code == ON_THE_FLY else FixedStop)
+        event = _next_event(c, "probe" if code == ON_THE_FLY else "fixed_stop")
         if event is not None and name in event:
             latch.position = {name: event[name]}
             if code == FIXED_STOP:
@@ -147,21 +146,18 @@ def probe_block(rt, blk):
     return out
 
 
-#: the scenario events the measuring blocks read (CPL has one probe input)
-PROBE_EVENTS = (ProbeSwitch, FixedStop)
-
-
 def check_probe_events(events) -> None:
     """CPL has one probe input: a probe event for another one would never switch (refused before the run)."""
-    for ev in of_type(events, ProbeSwitch):
-        if ev.input != 1:
+    for ev in events:
+        if ev.kind == "probe" and ev.input != 1:
             raise UsageError(f"scenario probe event at {ev.time:g} s: input = {ev.input}: the CPL control has "
                              f"one probe input (1)")
 
 
-def _next_event(c, kind: type) -> dict | None:
-    """The next unused scenario event of ``kind`` as axis name -> MCS position; one per measuring block."""
-    ev = c.probe_events.take(lambda e: e.__class__ is kind)
+def _next_event(c, kind: str) -> dict | None:
+    """The next unused scenario event of ``kind`` ("probe", "fixed_stop") as axis name -> MCS position; one
+    per measuring block."""
+    ev = c.probe_events.take(lambda e: e.kind == kind)
     return None if ev is None else ev.position
 
 

@@ -9,21 +9,17 @@ the run-time error SERCOS SERVICE CHANNEL IS LOCKED.
 
 from __future__ import annotations
 
-from ....machine.scenario import SercosLock
 from ..errors import CplError
 from ..io.errors import CplRuntimeError, fail
 from .axes import nul
 from .context import SystemContext
 from .positions import f_apos
 
-#: the scenario events the SERCOS functions read
-SERCOS_EVENTS = (SercosLock,)
-
 
 def _locked(rt: SystemContext) -> bool:
     locked = False
     for ev in rt.machine.scenario:
-        if ev.__class__ is SercosLock and ev.time <= rt.t_prep:
+        if ev.kind == "sercos" and ev.time <= rt.t_prep:  # a SercosLock (no other event has this kind)
             locked = ev.locked
     return locked
 
