@@ -9,7 +9,6 @@ from __future__ import annotations
 import json
 import os
 import sys
-import traceback
 from collections import Counter
 from pathlib import Path
 
@@ -47,6 +46,8 @@ DEFAULT_STATE = ".ncvm"
 
 def _internal_error(exc: BaseException) -> None:
     if os.environ.get("NCVM_DEBUG") == "1":
+        import traceback  # only here: start-up (issue 18)
+
         traceback.print_exception(exc)
     click.echo(f"ncvm: internal error: {type(exc).__name__}: {exc}", err=True)
     click.echo("This is a bug in ncvm, not in your program. Please report it with the program and the "

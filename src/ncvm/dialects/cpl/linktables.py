@@ -14,7 +14,6 @@ import hashlib
 import os
 import pickle
 import sys
-import tempfile
 from pathlib import Path
 
 from ...runtime import codegen as _codegen
@@ -59,6 +58,8 @@ class LinkTables:
 
     def save(self, program: str, key: str, linked) -> None:
         """Write the table whole or not at all (a crash never leaves half a table)."""
+        import tempfile  # here, not at the top: the runs that reuse a table never import it (start-up, issue 18)
+
         if not self.usable:
             return
         try:
