@@ -13,35 +13,44 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from ..records import Record
 from .files import find_in
 
 if TYPE_CHECKING:  # the events are read only when a machine file or --scenario has some (start-up, issue 18)
     from .scenario import Event
 
 
-@dataclass(slots=True)
-class Axis:
-    """One machine axis. Feeds and rapids in mm/min (deg/min rotary), acceleration in mm/s^2."""
+class Axis(Record):
+    """One machine axis. Feeds and rapids in mm/min (deg/min rotary), acceleration in mm/s^2.
 
-    name: str
-    kind: str = "linear"  # "linear" or "rotary"
-    min: float = -1.0e9
-    max: float = 1.0e9
-    rapid: float = 10000.0
-    max_feed: float = 5000.0
-    accel: float = 1000.0
+    Axis, Tool, MotionData and PlcImage are records rather than dataclasses: every run's start-up imports
+    them (ncvm/records.py)."""
+
+    __slots__ = ("name", "kind", "min", "max", "rapid", "max_feed", "accel")
+
+    def __init__(self, name: str, kind: str = "linear", min: float = -1.0e9, max: float = 1.0e9,
+                 rapid: float = 10000.0, max_feed: float = 5000.0, accel: float = 1000.0):
+        self.name = name
+        self.kind = kind  # "linear" or "rotary"
+        self.min = min
+        self.max = max
+        self.rapid = rapid
+        self.max_feed = max_feed
+        self.accel = accel
 
     @property
     def rotary(self) -> bool:
         return self.kind == "rotary"
 
 
-@dataclass(slots=True)
-class Tool:
-    number: int
-    length: float = 0.0
-    radius: float = 0.0
-    name: str = ""
+class Tool(Record):
+    __slots__ = ("number", "length", "radius", "name")
+
+    def __init__(self, number: int, length: float = 0.0, radius: float = 0.0, name: str = ""):
+        self.number = number
+        self.length = length
+        self.radius = radius
+        self.name = name
 
 
 class SimClock:
@@ -84,24 +93,30 @@ class SimClock:
         return f"SimClock(now={self.settled!r}, start_epoch={self.start_epoch!r})"
 
 
-@dataclass(slots=True)
-class MotionData:
+class MotionData(Record):
     """The path control's machine data (machine file ``[motion]``): how move times are planned."""
 
-    model: str = "lookahead"  # "lookahead" (blocks blended in continuous-path mode) or "rest-to-rest"
-    lookahead: int = 100  # blocks the control looks ahead (its block buffer)
-    corner_tolerance: float = 0.02  # mm a blended corner may deviate from the programmed corner
-    tool_change_time: float = 0.0  # s an M6 tool change takes
+    __slots__ = ("model", "lookahead", "corner_tolerance", "tool_change_time")
+
+    def __init__(self, model: str = "lookahead", lookahead: int = 100, corner_tolerance: float = 0.02,
+                 tool_change_time: float = 0.0):
+        self.model = model  # "lookahead" (blocks blended in continuous-path mode) or "rest-to-rest"
+        self.lookahead = lookahead  # blocks the control looks ahead (its block buffer)
+        self.corner_tolerance = corner_tolerance  # mm a blended corner may deviate from the programmed corner
+        self.tool_change_time = tool_change_time  # s an M6 tool change takes
 
 
-@dataclass(slots=True)
-class PlcImage:
+class PlcImage(Record):
     """PLC interface image: inputs, outputs, flags (markers) and data words, by address."""
 
-    inputs: dict[str, Any] = field(default_factory=dict)
-    outputs: dict[str, Any] = field(default_factory=dict)
-    flags: dict[str, Any] = field(default_factory=dict)
-    words: dict[str, Any] = field(default_factory=dict)
+    __slots__ = ("inputs", "outputs", "flags", "words")
+
+    def __init__(self, inputs: dict[str, Any] | None = None, outputs: dict[str, Any] | None = None,
+                 flags: dict[str, Any] | None = None, words: dict[str, Any] | None = None):
+        self.inputs = {} if inputs is None else inputs
+        self.outputs = {} if outputs is None else outputs
+        self.flags = {} if flags is None else flags
+        self.words = {} if words is None else words
 
 
 @dataclass

@@ -11,8 +11,9 @@ generated from these tables (:mod:`ncvm.nc.profiles.doc`).
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
 from typing import Callable
+
+from ...records import FrozenRecord
 
 INCH = 25.4
 
@@ -35,54 +36,59 @@ CYCLE = 6  # a canned cycle code (kernel.canned), or NC004 while the profile has
 LATE = 7  # handler runs after the block's other G codes, returns True when the axis words were its parameters
 
 
-@dataclass(frozen=True, slots=True)
-class Row:
+class Row(FrozenRecord):
     """One G function of a control."""
 
-    g: float
-    group: str  # the control's modal group ("" for a function of one block)
-    meaning: str  # the control's meaning, in the manual's words where it has them
-    line: str  # where the manual names it ("L2302", "§11.5 L7392"; "" where it does not)
-    status: str
-    run: int = SET
-    handler: Callable | None = None
-    code: str = ""  # the code a refused row stops the run with ("" for a row ncvm runs)
+    __slots__ = ("g", "group", "meaning", "line", "status", "run", "handler", "code")
+
+    def __init__(self, g: float, group: str, meaning: str, line: str, status: str, run: int = SET,
+                 handler: Callable | None = None, code: str = ""):
+        self.g = g
+        self.group = group  # the control's modal group ("" for a function of one block)
+        self.meaning = meaning  # the control's meaning, in the manual's words where it has them
+        self.line = line  # where the manual names it ("L2302", "§11.5 L7392"; "" where it does not)
+        self.status = status
+        self.run = run
+        self.handler = handler
+        self.code = code  # the code a refused row stops the run with ("" for a row ncvm runs)
 
 
-@dataclass(frozen=True, slots=True)
-class Address:
+class Address(FrozenRecord):
     """An address letter (other than the axes and G/M/N) and what the profile does with it."""
 
-    letter: str
-    meaning: str
-    line: str
-    status: str
-    handler: Callable | None = None  # handler(kernel, value, words, src), after the block's G functions
+    __slots__ = ("letter", "meaning", "line", "status", "handler")
+
+    def __init__(self, letter: str, meaning: str, line: str, status: str, handler: Callable | None = None):
+        self.letter = letter
+        self.meaning = meaning
+        self.line = line
+        self.status = status
+        self.handler = handler  # handler(kernel, value, words, src), after the block's G functions
 
 
-@dataclass(frozen=True)
-class Profile:
-    """A control's G table: the rows by G number, its addresses, and the power-on state per group."""
+class Profile(FrozenRecord):
+    """A control's G table: the rows by G number, its addresses, and the power-on state per group.
 
-    name: str
-    manual: str
-    rows: tuple
-    addresses: tuple = ()
-    defaults: dict = field(default_factory=dict)  # group -> G number at power-on and reset
-    groups: dict = field(default_factory=dict)  # group -> its name
-    #: G number -> (run, handler): what the kernel looks up per G word
-    dispatch: dict = field(init=False, repr=False, compare=False)
-    by_g: dict = field(init=False, repr=False, compare=False)
-    #: letter -> handler, for the addresses a handler reads (checked once per block when not empty)
-    word_handlers: dict = field(init=False, repr=False, compare=False)
+    Row, Address and Profile are records rather than dataclasses: every run's start-up imports them
+    (ncvm/records.py)."""
 
-    def __post_init__(self):
-        by_g = {r.g: r for r in self.rows}
-        if len(by_g) != len(self.rows):
-            raise ValueError(f"profile {self.name}: a G number has two rows")
-        object.__setattr__(self, "by_g", by_g)
-        object.__setattr__(self, "dispatch", {r.g: (r.run, r.handler) for r in self.rows})
-        object.__setattr__(self, "word_handlers", {a.letter: a.handler for a in self.addresses if a.handler})
+    __slots__ = ("name", "manual", "rows", "addresses", "defaults", "groups", "dispatch", "by_g", "word_handlers")
+
+    def __init__(self, name: str, manual: str, rows: tuple, addresses: tuple = (), defaults: dict | None = None,
+                 groups: dict | None = None):
+        self.name = name
+        self.manual = manual
+        self.rows = rows
+        self.addresses = addresses
+        self.defaults = {} if defaults is None else defaults  # group -> G number at power-on and reset
+        self.groups = {} if groups is None else groups  # group -> its name
+        self.by_g = {r.g: r for r in rows}
+        if len(self.by_g) != len(rows):
+            raise ValueError(f"profile {name}: a G number has two rows")
+        #: G number -> (run, handler): what the kernel looks up per G word
+        self.dispatch = {r.g: (r.run, r.handler) for r in rows}
+        #: letter -> handler, for the addresses a handler reads (checked once per block when not empty)
+        self.word_handlers = {a.letter: a.handler for a in addresses if a.handler}
 
     def refused(self, g) -> Row | None:
         """The row of a G function the profile refuses (None: it runs it, or the kernel does not know it)."""
