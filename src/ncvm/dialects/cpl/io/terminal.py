@@ -12,7 +12,6 @@ stdin with ``select`` (timeout 0) and takes a line already typed as key events. 
 from __future__ import annotations
 
 import os
-import select
 from typing import Callable, TextIO
 
 from .errors import ERRORS, CplRuntimeError, fail
@@ -44,6 +43,8 @@ class TerminalKeys(KeyScript):
 
     # -- reading lines ---------------------------------------------------------------------------
     def _ready(self) -> bool:
+        import select  # here: only a run that reads the keyboard needs it (start-up, issue 18)
+
         return bool(select.select([self.fd], [], [], 0)[0])
 
     def _read_line(self) -> str | None:
