@@ -10,10 +10,10 @@ from __future__ import annotations
 import errno
 import os
 import re
-from dataclasses import dataclass
 from pathlib import Path
 
 from .diagnostics import UsageError
+from .records import FrozenRecord
 
 #: what ``--plot`` draws into (matplotlib picks the format from the extension)
 PLOT_SUFFIXES = (".png", ".svg", ".pdf")
@@ -21,16 +21,19 @@ PLOT_SUFFIXES = (".png", ".svg", ".pdf")
 SCREEN_PICTURE = re.compile(r"screen_\d{3,}\.png", re.IGNORECASE)
 
 
-@dataclass(frozen=True)
-class Output:
+class Output(FrozenRecord):
     """One output option: a file, or (``folder``) a folder the run writes files into."""
 
-    option: str
-    path: str | None  # None: the option is not given
-    suffixes: tuple[str, ...] = ()  # the extensions the option accepts; empty = any
-    folder: bool = False
-    names: re.Pattern | None = None  # a folder: the names of the files the run writes into it
-    parents: bool = False  # a folder: made with its missing parents (else its parent must exist)
+    __slots__ = ("option", "path", "suffixes", "folder", "names", "parents")
+
+    def __init__(self, option: str, path: str | None, suffixes: tuple[str, ...] = (), folder: bool = False,
+                 names: re.Pattern | None = None, parents: bool = False):
+        self.option = option
+        self.path = path  # None: the option is not given
+        self.suffixes = suffixes  # the extensions the option accepts; empty = any
+        self.folder = folder
+        self.names = names  # a folder: the names of the files the run writes into it
+        self.parents = parents  # a folder: made with its missing parents (else its parent must exist)
 
 
 class OutputError(UsageError):

@@ -32,9 +32,9 @@ import os
 import stat
 from collections.abc import Callable, Iterable, Iterator
 from contextlib import contextmanager
-from dataclasses import dataclass
 from pathlib import Path
 
+from ..records import FrozenRecord
 from ..source import without_bom
 
 _DIRECTORY = os.O_RDONLY | os.O_DIRECTORY | os.O_NOFOLLOW | os.O_CLOEXEC
@@ -47,13 +47,15 @@ class FileRootError(ValueError):
     the file root")."""
 
 
-@dataclass(frozen=True, slots=True)
-class Place:
+class Place(FrozenRecord):
     """A name placed below a file root: its components (no ``..``, no ``.``) and the name as the
     program wrote it."""
 
-    parts: tuple[str, ...]
-    shown: str
+    __slots__ = ("parts", "shown")
+
+    def __init__(self, parts: tuple[str, ...], shown: str):
+        self.parts = parts
+        self.shown = shown
 
 
 def file_kind(mode: int) -> str:

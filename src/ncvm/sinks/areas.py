@@ -20,6 +20,7 @@ from typing import Sequence
 
 from ..lazy import lazy
 from ..nc import arcs
+from ..records import FrozenRecord
 from ..runtime.checks import DEAD, WORK, Area
 
 np = lazy("numpy")
@@ -28,16 +29,18 @@ np = lazy("numpy")
 TOL = 1e-6  # mm: touching an edge is neither entering a dead range nor leaving a work area
 
 
-@dataclass(frozen=True)
-class Zone:
+class Zone(FrozenRecord):
     """Zone ``number`` (1..) of ``kind`` DEAD or WORK on the machine axes ``a`` and ``b`` (indices)."""
 
-    number: int
-    kind: str
-    a: int
-    b: int
-    lo: tuple[float, float]  # lowest corner (a, b)
-    hi: tuple[float, float]  # highest corner (a, b)
+    __slots__ = ("number", "kind", "a", "b", "lo", "hi")
+
+    def __init__(self, number: int, kind: str, a: int, b: int, lo: tuple[float, float], hi: tuple[float, float]):
+        self.number = number
+        self.kind = kind
+        self.a = a
+        self.b = b
+        self.lo = lo  # lowest corner (a, b)
+        self.hi = hi  # highest corner (a, b)
 
 
 @dataclass
