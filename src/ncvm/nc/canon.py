@@ -16,6 +16,8 @@ import inspect
 from dataclasses import dataclass
 from typing import NamedTuple
 
+from ..records import Record
+
 
 class Src(NamedTuple):
     """Where a canon call came from."""
@@ -79,19 +81,24 @@ def plain_frame(n_axes: int) -> Frame:
     return Frame(None, (0.0,) * n_axes, (0.0,) * n_axes)
 
 
-@dataclass(slots=True)
-class BatchArcs:
-    """The arcs among a :class:`MoveBatch`'s moves, as columns (all in one plane, the ``a``-``b`` plane)."""
+class BatchArcs(Record):
+    """The arcs among a :class:`MoveBatch`'s moves, as columns (all in one plane, the ``a``-``b`` plane).
 
-    rows: object  # numpy int column: the batch row of each arc
-    a: int
-    b: int
-    center: object  # numpy (arcs, 2), machine coordinates of the plane axes
-    cw: object  # numpy bool column
-    radius: object
-    angle: object  # sweep, radians (negative for G2)
-    length: object
-    extent: object  # numpy (arcs, 4): lo_a, hi_a, lo_b, hi_b reached in the plane
+    BatchArcs and MoveBatch are records, not dataclasses: every run's start-up imports them
+    (ncvm/records.py)."""
+
+    __slots__ = ("rows", "a", "b", "center", "cw", "radius", "angle", "length", "extent")
+
+    def __init__(self, rows, a: int, b: int, center, cw, radius, angle, length, extent):
+        self.rows = rows  # numpy int column: the batch row of each arc
+        self.a = a
+        self.b = b
+        self.center = center  # numpy (arcs, 2), machine coordinates of the plane axes
+        self.cw = cw  # numpy bool column
+        self.radius = radius
+        self.angle = angle  # sweep, radians (negative for G2)
+        self.length = length
+        self.extent = extent  # numpy (arcs, 4): lo_a, hi_a, lo_b, hi_b reached in the plane
 
     def spec(self, k: int) -> ArcSpec:
         """The :class:`ArcSpec` of arc ``k`` (built when a sink or a plot wants one)."""
@@ -103,21 +110,23 @@ class BatchArcs:
         return {row: self.spec(k) for k, row in enumerate(self.rows.tolist())}
 
 
-@dataclass(slots=True)
-class MoveBatch:
+class MoveBatch(Record):
     """Many consecutive moves in one call (a run of plain blocks executed column-wise).
 
     Row ``i`` is the move ``kind[i]`` (0 rapid, 1 straight feed, 2 arc) from
     ``start[i]`` to ``end[i]`` at ``feed[i]``; ``arcs`` describes the arcs among them.
     """
 
-    kind: object  # numpy int8 column
-    start: object  # numpy (moves, axes)
-    end: object
-    feed: object
-    file: str
-    lines: object  # numpy int column: the physical line of each move's block
-    arcs: BatchArcs | None = None
+    __slots__ = ("kind", "start", "end", "feed", "file", "lines", "arcs")
+
+    def __init__(self, kind, start, end, feed, file: str, lines, arcs: BatchArcs | None = None):
+        self.kind = kind  # numpy int8 column
+        self.start = start  # numpy (moves, axes)
+        self.end = end
+        self.feed = feed
+        self.file = file
+        self.lines = lines  # numpy int column: the physical line of each move's block
+        self.arcs = arcs
 
     def __len__(self) -> int:
         return len(self.kind)
