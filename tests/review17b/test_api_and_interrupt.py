@@ -149,3 +149,15 @@ def test_one_program_gives_the_same_result_by_run_and_by_batch(tmp_path):
     assert out.returncode == 0, out.stderr
     by_run, by_batch = json.loads(out.stdout)
     assert by_run == by_batch, f"ncvm.run: {by_run}; ncvm.batch: {by_batch}"
+
+
+def test_the_summary_line_writes_its_counts_alike(tmp_path):
+    """The issue (item 5): "a compact summary line". Its counts are written two ways in one line: steps
+    with a thousands separator, moves without (seen: "600,002 steps, 300000 moves"); the progress line
+    above it writes "300,000 moves"."""
+    (tmp_path / "many.din").write_text("G90 G0 X0 Y0 Z5\nG1 F1000\n" + "X1\nX0\n" * 6000 + "M30\n")
+    out = subprocess.run([NCVM, "run", "many.din", "--state", "st"], cwd=tmp_path, capture_output=True, text=True,
+                         timeout=120)
+    assert out.returncode == 0, out.stderr
+    summary = out.stderr.strip().splitlines()[-1]
+    assert "12,001 moves" in summary, summary
