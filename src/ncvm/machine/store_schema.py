@@ -23,7 +23,6 @@ from .sections import DATA_AREA, UNIT, ZO_NAMES, ZS_ROWS
 
 #: the largest magnitude of an R value (CL 800 manual L7077-7080)
 R_LIMIT = 99999999.0
-R_VALUE = Number(min=-R_LIMIT, max=R_LIMIT)
 #: the MIB addresses of the largest control (850/880: 0-499); the store keeps all of them
 MIB_SIZE = 500
 #: TDA fields a program reaches (1 and 2 are sector and place, the record's key) and the string ones
@@ -61,6 +60,15 @@ class Real32(Double):
         v = float(_finite(value, path))
         if abs(v) > 3.4028234663852886e38 or _F32.unpack(_F32.pack(v))[0] != v:
             raise SchemaError(path, value, "is not a REAL (binary32) value")
+
+
+@dataclass(frozen=True)
+class RValue(Double):
+    """A SINUMERIK R parameter: within +/-99999999 (L7079), as every value the NC assigns."""
+
+    def check(self, value, path, ctx):
+        if abs(_finite(value, path)) > R_LIMIT:
+            raise SchemaError(path, value, "is beyond the R parameter range +/-99999999")
 
 
 @dataclass(frozen=True)
@@ -145,7 +153,7 @@ class ByKey(Node):
 
 
 NO_AXES = Ctx()
-DOUBLE, REAL, INT32 = Double(), Real32(), Int32()
+DOUBLE, REAL, INT32, R_VALUE = Double(), Real32(), Int32(), RValue()
 
 
 # -- cpl.perm: @1..@100 INTEGER, @_R(1..100) DOUBLE, declared @NAME (CPL manual §2.4.3) -------------------
