@@ -3,9 +3,10 @@
 The file is JSON: ``{"format": "ncvm-state", "version": 1, "store": {namespace: {key: value}}}``, the
 store's own values unchanged, so a round trip is exact (a REAL is the binary32 value as the double
 that holds it; ``json`` writes every double so that it reads back to the same bits). An import is
-checked whole before anything is written: a file a control could not have written (an unknown
-namespace, a wrong key, a value of another type or shape) is refused with the place and the reason,
-never half imported. The namespaces are those the dialects keep (docs/batch.md, "Permanent memory").
+checked whole before anything is written, against what the control can hold (:mod:`.store_schema`): a
+file a control could not have written (an unknown namespace, a wrong key, a value of another type or
+shape, a non-finite number) is refused with the place and the reason, never half imported. The
+namespaces are those the dialects keep (docs/batch.md, "Permanent memory", "What an import accepts").
 """
 
 from __future__ import annotations
