@@ -129,6 +129,7 @@ CPL_BREAKS = {
     # permanent variables: finite values of their type
     "@1 NaN": (lambda s: s["cpl.perm"].__setitem__("@1", float("nan")), "is not an INTEGER"),
     "@_R(2) minus infinity": (lambda s: s["cpl.perm"].__setitem__("@_R(2)", float("-inf")), "finite"),
+    "@_R(2) a whole number beyond binary64": (lambda s: s["cpl.perm"].__setitem__("@_R(2)", 10**400), "finite"),
     "a DOUBLE field element 1e400": (lambda s: s["cpl.perm"]["@D"]["value"].__setitem__(1, float("inf")), "@D"),
     "a BOOL holding 1": (lambda s: s["cpl.perm"]["@B"].__setitem__("value", 1), "must be true or false"),
     "a CHAR field of a longer string": (lambda s: s["cpl.perm"]["@CF"]["value"].__setitem__(2, "ABCDE"), "at most 4"),

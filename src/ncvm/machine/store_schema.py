@@ -33,7 +33,11 @@ _F32 = struct.Struct("f")
 def _finite(value, path: str) -> float:
     if value.__class__ not in (int, float):
         raise SchemaError(path, value, "must be a number")
-    if not math.isfinite(value):
+    try:
+        finite = math.isfinite(value)
+    except OverflowError:  # a whole number beyond every double
+        finite = False
+    if not finite:
         raise SchemaError(path, value, "must be a finite number (no control holds NaN or infinity)")
     return value
 
