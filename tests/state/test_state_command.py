@@ -15,7 +15,7 @@ import pytest
 
 from ncvm.dialects.cpl import perm
 from ncvm.dialects.sinumerik import ncdata
-from ncvm.machine import state_io
+from ncvm.machine import state_io, store_schema
 from ncvm.machine.state import StateLock
 
 NCVM = [sys.executable, "-c", "from ncvm.cli import main; main()"]
@@ -91,16 +91,16 @@ def test_show_and_export_of_a_state_directory_without_a_store_create_nothing(tmp
     ('{"format": "ncvm-state", "version": 1, "store": {"cpl.perm": {"@101": 1}}}', "@1..@100"),
     ('{"format": "ncvm-state", "version": 1, "store": {"cpl.perm": {"@1": 2147483648}}}', "not an INTEGER"),
     ('{"format": "ncvm-state", "version": 1, "store": {"cpl.perm": {"@1": "7"}}}', "not an INTEGER"),
-    ('{"format": "ncvm-state", "version": 1, "store": {"cpl.perm": {"@_R(1)": true}}}', "not a number"),
+    ('{"format": "ncvm-state", "version": 1, "store": {"cpl.perm": {"@_R(1)": true}}}', "must be a number"),
     ('{"format": "ncvm-state", "version": 1, "store": {"cpl.perm": {"@X": {"type": "REAL", "dims": [], '
-     '"value": 0.1}}}}', "cpl.perm @X: 0.1 is not a REAL (binary32) value"),
+     '"value": 0.1}}}}', 'cpl.perm: "@X".value = 0.1: is not a REAL (binary32) value'),
     ('{"format": "ncvm-state", "version": 1, "store": {"cpl.perm": {"@X": {"type": "CHAR", "dims": [3], '
      '"value": "ABCD"}}}}', "at most 3 characters"),
     ('{"format": "ncvm-state", "version": 1, "store": {"cpl.perm": {"@X": {"type": "INT", "dims": [2], '
-     '"value": [1, 2]}}}}', "must be a list of 3"),
+     '"value": [1, 2]}}}}', "must have 3 entries"),
     ('{"format": "ncvm-state", "version": 1, "store": {"cpl.tdb": {"1-2": {}}}}', '"sector,place"'),
-    ('{"format": "ncvm-state", "version": 1, "store": {"sin800": {"r": {}}}}', "not a data area"),
-    ('{"format": "ncvm-state", "version": 1, "store": {"sin800": {"central_r": {"950": "x"}}}}', "not a number"),
+    ('{"format": "ncvm-state", "version": 1, "store": {"sin800": {"r": {}}}}', "r = {}: unknown key (known: nc_md"),
+    ('{"format": "ncvm-state", "version": 1, "store": {"sin800": {"central_r": {"950": "x"}}}}', "must be a number"),
 ])
 def test_import_refuses_a_bad_file_and_leaves_the_store_as_it_was(work, text, words):
     before = ncvm("state", "export", "-", cwd=work).stdout
@@ -152,7 +152,8 @@ def test_reset_at_a_terminal_asks_first(work, answer, code, left):
 
 def test_the_namespaces_are_those_the_dialects_keep():
     assert {perm.NS, "cpl.zs", "cpl.tc", "cpl.tdb", ncdata.NAMESPACE} == set(state_io.NAMESPACES)
-    assert {*state_io.SIN800_AREAS, "mib"} == set(ncdata.PERSISTED)
+    assert set(store_schema.STORE) == set(state_io.NAMESPACES)
+    assert {f.name for f in store_schema.SIN800.fields} == set(ncdata.PERSISTED)
 
 
 def test_export_never_writes_into_the_state_directory(work):

@@ -123,7 +123,7 @@ class Sin800Dialect(Dialect):
         data = NcData.from_machine(machine)
         store = session.store
         stored = store.items(NAMESPACE)
-        data.overlay(stored)
+        data.overlay(stored, session.options.state_dir)
         for offset in data.carried_offsets(stored, machine.axis_names):  # never a silent shift
             session.say(f"NC state: {offset} kept from an earlier run (the NC keeps its offsets; "
                         f"delete {session.options.state_dir} to start from the machine file)")

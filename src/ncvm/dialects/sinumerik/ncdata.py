@@ -207,8 +207,14 @@ class NcData:
             raise UsageError(f"{where}: key 'sin800.{key}' must be a list of {self.n_axes} numbers")
         return [float(x) for x in v]
 
-    def overlay(self, stored: dict[str, Any]) -> None:
-        """What earlier runs left in the store wins over the machine file."""
+    def overlay(self, stored: dict[str, Any], state_dir: str) -> None:
+        """What earlier runs left in the store wins over the machine file; a zero offset kept for a machine
+        of another number of axes (an imported store) is refused rather than applied to the wrong axes."""
+        for name, values in stored.get("zo", {}).items():
+            if len(values) != self.n_axes:
+                raise UsageError(f"the permanent store of {state_dir} holds zero offset {name} with {len(values)} "
+                                 f"values, this machine has {self.n_axes} axes: it was kept for another machine "
+                                 f"(ncvm state reset, or import a file exported on this machine)")
         self._machine_zo = {k: list(v) for k, v in self.zo.items()}
         self._machine_rot = dict(self.rot)
         for area in AREAS:
