@@ -38,6 +38,11 @@ EXITS = {
     "translate": "0 written, 1 the run failed or the translation was refused, " + _BUG,
     "machine-schema": "0 printed, " + _BUG,
 }
+#: the README's table of exit codes, the end of ``ncvm --help``
+EXIT_TABLE = ("Exit codes: 0 the run ended normally, check found no error, compile wrote its files; 1 an error "
+              "in the program (compile error, run-time fault, check found one) or Ctrl-C (RUN004); 2 usage error "
+              "(a bad option, a missing or unreadable file, an output that may not be written, a state directory "
+              "in use); 70 internal error (a bug in ncvm). Each command's --help names its own.")
 
 
 def _exits(name: str) -> str:
@@ -125,7 +130,7 @@ class _Guarded(click.Group):
             ctx.exit(EXIT_INTERNAL)
 
 
-@click.group(cls=_Guarded, context_settings={"help_option_names": ["-h", "--help"]})
+@click.group(cls=_Guarded, context_settings={"help_option_names": ["-h", "--help"]}, epilog=EXIT_TABLE)
 @click.version_option(__version__, prog_name="ncvm")
 @click.option("--color/--no-color", default=None,
               help="Colours in diagnostics and summaries (default: on a terminal, unless NO_COLOR is set).")

@@ -21,7 +21,7 @@ from . import api
 from .archive.batch import run_batch
 from .archive.report import write as write_report
 from .diagnostics import Diagnostic, UsageError
-from .dialects import EXTENSIONS, detect_dialect
+from .dialects import REGISTRY, detect_dialect, get_dialect
 from .machine.config import load_machine
 from .machine.model import Machine
 from .runtime.session import RunOptions
@@ -127,7 +127,8 @@ def _program_file(program: str | Path, dialect: str | None):
             d = dialect or detect_dialect(TEXT_NAME, program)
         except UsageError as e:  # the command line's words for the API's
             raise UsageError(str(e).replace("pass --dialect", "pass dialect=")) from None
-        ext = next(e for e, name in EXTENSIONS.items() if name == d)
+        get_dialect(d)  # an unknown dialect is a usage error that lists the known ones
+        ext = REGISTRY[d].extensions[0]
         with tempfile.TemporaryDirectory(prefix="ncvm-text-") as tmp:
             path = Path(tmp) / f"program{ext}"
             path.write_text(program, encoding="latin-1")
