@@ -50,6 +50,10 @@ def run(program: str | Path, dialect: str | None = None, machine: MachineLike = 
     with _program_file(program, dialect) as (path, text_dialect):
         m = _machine(path, machine, options.state_dir, is_text=text_dialect is not None)
         result = api.run_program(path, text_dialect or dialect, m, options)
+        if result.error is not None and result.error.code == "RUN004":
+            # Ctrl-C is the operator's, not an error of the program: the run has closed its files, and the
+            # script that called it stops as Python scripts do
+            raise KeyboardInterrupt
         result.move_table = table
         result.path = None if text_dialect else str(program)
         result.machine = _machine_name(machine, path)
