@@ -19,6 +19,7 @@ from ..diagnostics import Diagnostic, RuntimeFault
 from ..machine.model import Machine
 from ..machine.store import Store
 from ..nc.canon import Canon, CanonSink, Src
+from . import interrupt
 from ..nc.kernel import NcKernel, programmed_stop_line
 from .checks import Checks
 from .memory import default_max_memory, out_of_memory
@@ -160,7 +161,8 @@ def _same_place(src: Src) -> Src:
 def run_guarded(session: Session, runner) -> Diagnostic | None:
     """Call ``runner()``; a run-time fault becomes a Diagnostic. CompileFailed and bugs propagate."""
     try:
-        runner()
+        with interrupt.deferring():
+            runner()
     except RuntimeFault as f:
         return f.diagnostic()
     except RecursionError:
