@@ -198,6 +198,8 @@ def run(programs, dialect, machine, state_dir, as_json, trace, gcode, plot, plot
     and compile, else the built-in 3-axis mill. In a batch each program uses the nearest machine.toml
     upwards (up to the folder named), sub-programs are not run, and each program starts from a copy of
     the state directory (docs/batch.md). Exit 1 when any program failed (error or limit violation).
+    One program or many, a <name>.scenario.toml and <name>.keys beside a program are its scenario and key
+    presses unless --scenario / --keys name others (named on stderr).
     """
     single = {"--trace": trace, "--gcode": gcode, "--plot": plot, "--scenario": scenario, "--keys": keys,
               "--editor-block": editor_block, "--screen": screen, "--screen-dir": screen_dir, "--time-model": time_model}
@@ -214,6 +216,7 @@ def run(programs, dialect, machine, state_dir, as_json, trace, gcode, plot, plot
     _check_program(program)
     if not state_dir.strip():  # an unset variable: the store would land in the current directory
         raise UsageError("--state is empty; give the state directory (default .ncvm)")
+    scenario, keys = _own_inputs(program, scenario, keys)
     inputs = {"program": program, **_machine_input(program, machine), "--scenario": scenario, "--keys": keys}
     machine = api.machine_for(program, machine or _folder_machine(program, say=True), Path(state_dir))
     check_outputs([Output("--trace", trace), Output("--gcode", gcode), Output("--plot", plot, PLOT_SUFFIXES),
@@ -338,6 +341,21 @@ def _folder_machine(program: str, say: bool = False) -> str | None:
     if say:
         click.echo(f"ncvm: machine file {path} (the program's folder)", err=True)
     return str(path)
+
+
+def _own_inputs(program: str, scenario: str | None, keys: str | None) -> tuple[str | None, str | None]:
+    """--scenario and --keys, else the program's own <name>.scenario.toml and <name>.keys (named on stderr),
+    as a batch takes them (:mod:`ncvm.runtime.companions`)."""
+    from .runtime.companions import KEYS_SUFFIX, SCENARIO_SUFFIX, beside
+
+    own = beside(program)
+    if scenario is None and SCENARIO_SUFFIX in own:
+        scenario = str(own[SCENARIO_SUFFIX])
+        click.echo(f"ncvm: scenario {scenario} (beside the program)", err=True)
+    if keys is None and KEYS_SUFFIX in own:
+        keys = str(own[KEYS_SUFFIX])
+        click.echo(f"ncvm: key presses {keys} (beside the program)", err=True)
+    return scenario, keys
 
 
 @cli.command(epilog=_exits("check"))
@@ -474,6 +492,7 @@ def translate_cmd(program, out, target, frame, source_comments, dialect, machine
     from .translate import TranslationRefused, translate
 
     _check_program(program)
+    scenario, keys = _own_inputs(program, scenario, keys)
     inputs = {"program": program, **_machine_input(program, machine), "--scenario": scenario, "--keys": keys}
     machine = api.machine_for(program, machine or _folder_machine(program, say=True), Path(state_dir))
     check_outputs([Output("-o", out)], inputs, state=state_dir, program_path=machine.program_path,

@@ -24,6 +24,7 @@ from .diagnostics import Diagnostic, UsageError
 from .dialects import REGISTRY, detect_dialect, get_dialect
 from .machine.config import load_machine
 from .machine.model import Machine
+from .runtime.companions import KEYS_SUFFIX, SCENARIO_SUFFIX, beside
 from .runtime.session import RunOptions
 from .sinks.moves import MoveTable
 
@@ -49,6 +50,10 @@ def run(program: str | Path, dialect: str | None = None, machine: MachineLike = 
         options.extra_sinks = [*options.extra_sinks, table]
     with _program_file(program, dialect) as (path, text_dialect):
         m = _machine(path, machine, options.state_dir, is_text=text_dialect is not None)
+        if text_dialect is None:  # the program's own key presses and scenario, as ncvm run and batch take them
+            own = beside(path)
+            options.keys = options.keys or own.get(KEYS_SUFFIX)
+            options.scenario = options.scenario or own.get(SCENARIO_SUFFIX)
         result = api.run_program(path, text_dialect or dialect, m, options)
         if result.error is not None and result.error.code == "RUN004":
             # Ctrl-C is the operator's, not an error of the program: the run has closed its files, and the

@@ -19,8 +19,8 @@ from ..diagnostics import Diagnostic, RuntimeFault
 from ..machine.model import Machine
 from ..machine.store import Store
 from ..nc.canon import Canon, CanonSink, Src
-from . import interrupt
 from ..nc.kernel import NcKernel, programmed_stop_line
+from . import interrupt
 from .checks import Checks
 from .memory import default_max_memory, out_of_memory
 from .steps import DEFAULT_MAX_STEPS, StepCounter, StepHook
