@@ -168,6 +168,8 @@ def run_guarded(session: Session, runner) -> Diagnostic | None:
     except RecursionError:
         return Diagnostic("RUN003", "call nesting too deep (recursion without end?)", None)
     except KeyboardInterrupt:
+        if session.options.on_operator_wait is not None:  # the progress line leaves the screen first
+            session.options.on_operator_wait(True)
         print("interrupted", file=sys.stderr)
         return Diagnostic("RUN004", "run interrupted by the user", None)
     except MemoryError:
