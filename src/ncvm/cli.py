@@ -492,7 +492,6 @@ def translate_cmd(program, out, target, frame, source_comments, dialect, machine
     from .translate import TranslationRefused, translate
 
     _check_program(program)
-    scenario, keys = _own_inputs(program, scenario, keys)
     inputs = {"program": program, **_machine_input(program, machine), "--scenario": scenario, "--keys": keys}
     machine = api.machine_for(program, machine or _folder_machine(program, say=True), Path(state_dir))
     check_outputs([Output("-o", out)], inputs, state=state_dir, program_path=machine.program_path,
