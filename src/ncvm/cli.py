@@ -37,6 +37,11 @@ EXITS = {
     "translate": "0 written, 1 the run failed or the translation was refused, " + _BUG,
     "machine-schema": "0 printed, " + _BUG,
 }
+#: the README's table of exit codes, the end of ``ncvm --help``
+EXIT_TABLE = ("Exit codes: 0 the run ended normally, check found no error, compile wrote its files; 1 an error "
+              "in the program (compile error, run-time fault, check found one) or Ctrl-C (RUN004); 2 usage error "
+              "(a bad option, a missing or unreadable file, an output that may not be written, a state directory "
+              "in use); 70 internal error (a bug in ncvm). Each command's --help names its own.")
 
 
 def _exits(name: str) -> str:
@@ -126,7 +131,7 @@ class _Guarded(click.Group):
             ctx.exit(EXIT_INTERNAL)
 
 
-@click.group(cls=_Guarded, context_settings={"help_option_names": ["-h", "--help"]})
+@click.group(cls=_Guarded, context_settings={"help_option_names": ["-h", "--help"]}, epilog=EXIT_TABLE)
 @click.version_option(__version__, prog_name="ncvm")
 @click.option("--color/--no-color", default=None,
               help="Colours in diagnostics and summaries (default: on a terminal, unless NO_COLOR is set).")
@@ -194,6 +199,8 @@ def run(programs, dialect, machine, state_dir, as_json, trace, gcode, plot, plot
     and compile, else the built-in 3-axis mill. In a batch each program uses the nearest machine.toml
     upwards (up to the folder named), sub-programs are not run, and each program starts from a copy of
     the state directory (docs/batch.md). Exit 1 when any program failed (error or limit violation).
+    One program or many, a <name>.scenario.toml and <name>.keys beside a program are its scenario and key
+    presses unless --scenario / --keys name others (named on stderr).
     """
     single = {"--trace": trace, "--gcode": gcode, "--plot": plot, "--scenario": scenario, "--keys": keys,
               "--editor-block": editor_block, "--screen": screen, "--screen-dir": screen_dir, "--time-model": time_model}
@@ -210,6 +217,7 @@ def run(programs, dialect, machine, state_dir, as_json, trace, gcode, plot, plot
     _check_program(program)
     if not state_dir.strip():  # an unset variable: the store would land in the current directory
         raise UsageError("--state is empty; give the state directory (default .ncvm)")
+    scenario, keys = _own_inputs(program, scenario, keys)
     inputs = {"program": program, **_machine_input(program, machine), "--scenario": scenario, "--keys": keys}
     machine = api.machine_for(program, machine or _folder_machine(program, say=True), Path(state_dir))
     check_outputs([Output("--trace", trace), Output("--gcode", gcode), Output("--plot", plot, PLOT_SUFFIXES),
@@ -334,6 +342,21 @@ def _folder_machine(program: str, say: bool = False) -> str | None:
     if say:
         click.echo(f"ncvm: machine file {path} (the program's folder)", err=True)
     return str(path)
+
+
+def _own_inputs(program: str, scenario: str | None, keys: str | None) -> tuple[str | None, str | None]:
+    """--scenario and --keys, else the program's own <name>.scenario.toml and <name>.keys (named on stderr),
+    as a batch takes them (:mod:`ncvm.runtime.companions`)."""
+    from .runtime.companions import KEYS_SUFFIX, SCENARIO_SUFFIX, beside
+
+    own = beside(program)
+    if scenario is None and SCENARIO_SUFFIX in own:
+        scenario = str(own[SCENARIO_SUFFIX])
+        click.echo(f"ncvm: scenario {scenario} (beside the program)", err=True)
+    if keys is None and KEYS_SUFFIX in own:
+        keys = str(own[KEYS_SUFFIX])
+        click.echo(f"ncvm: key presses {keys} (beside the program)", err=True)
+    return scenario, keys
 
 
 @cli.command(epilog=_exits("check"))

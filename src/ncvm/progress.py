@@ -13,6 +13,7 @@ import os
 import sys
 import threading
 
+from . import termstyle
 from .timefmt import hms
 
 #: how often the display is redrawn (the counters are read then, never written by the display)
@@ -98,7 +99,8 @@ class Progress:
         from rich.console import Console
         from rich.progress import BarColumn, MofNCompleteColumn, Progress, SpinnerColumn, TextColumn
 
-        console = Console(stderr=True)
+        # NO_COLOR (https://no-color.org): no ANSI styling at all, bold included (rich keeps it with no_color)
+        console = Console(stderr=True, color_system="auto" if termstyle.enabled() else None)
         columns = [SpinnerColumn(), TextColumn("[bold]{task.description}")]
         if self.total is not None:
             columns += [BarColumn(), MofNCompleteColumn(), TextColumn("programs{task.fields[failed]}")]

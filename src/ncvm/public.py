@@ -21,9 +21,10 @@ from . import api
 from .archive.batch import run_batch
 from .archive.report import write as write_report
 from .diagnostics import Diagnostic, UsageError
-from .dialects import EXTENSIONS, detect_dialect
+from .dialects import REGISTRY, detect_dialect, get_dialect
 from .machine.config import load_machine
 from .machine.model import Machine
+from .runtime.companions import KEYS_SUFFIX, SCENARIO_SUFFIX, beside
 from .runtime.session import RunOptions
 from .sinks.moves import MoveTable
 
@@ -49,7 +50,15 @@ def run(program: str | Path, dialect: str | None = None, machine: MachineLike = 
         options.extra_sinks = [*options.extra_sinks, table]
     with _program_file(program, dialect) as (path, text_dialect):
         m = _machine(path, machine, options.state_dir, is_text=text_dialect is not None)
+        if text_dialect is None:  # the program's own key presses and scenario, as ncvm run and batch take them
+            own = beside(path)
+            options.keys = options.keys or own.get(KEYS_SUFFIX)
+            options.scenario = options.scenario or own.get(SCENARIO_SUFFIX)
         result = api.run_program(path, text_dialect or dialect, m, options)
+        if result.error is not None and result.error.code == "RUN004":
+            # Ctrl-C is the operator's, not an error of the program: the run has closed its files, and the
+            # script that called it stops as Python scripts do
+            raise KeyboardInterrupt
         result.move_table = table
         result.path = None if text_dialect else str(program)
         result.machine = _machine_name(machine, path)
@@ -127,7 +136,8 @@ def _program_file(program: str | Path, dialect: str | None):
             d = dialect or detect_dialect(TEXT_NAME, program)
         except UsageError as e:  # the command line's words for the API's
             raise UsageError(str(e).replace("pass --dialect", "pass dialect=")) from None
-        ext = next(e for e, name in EXTENSIONS.items() if name == d)
+        get_dialect(d)  # an unknown dialect is a usage error that lists the known ones
+        ext = REGISTRY[d].extensions[0]
         with tempfile.TemporaryDirectory(prefix="ncvm-text-") as tmp:
             path = Path(tmp) / f"program{ext}"
             path.write_text(program, encoding="latin-1")

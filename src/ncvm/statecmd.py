@@ -46,7 +46,7 @@ def _content(state_dir: str) -> dict:
         store.close()
 
 
-@click.group(name="state")
+@click.group(name="state", epilog=EXIT_CODES)
 def state():
     """The permanent memory of the simulated control (the store in the state directory): permanent
     variables, R parameters, tool and zero offset tables as the runs left them."""

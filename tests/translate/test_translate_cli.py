@@ -104,11 +104,16 @@ def test_run_gcode_is_the_linuxcnc_translation(tmp_path):
     r = ncvm("translate", EX / "sin800" / "flange.mpf", "-o", b, "--state", tmp_path / "st", cwd=tmp_path)
     assert r.returncode == 0, r.stderr
     assert a.read_text() == b.read_text() and "G10" not in a.read_text()
-    r = ncvm("run", EX / "cpl" / "flangedlg.cpl", "--json", "--gcode", tmp_path / "dlg.ngc", "--state",
+    # the dialog program without its flangedlg.keys beside it (which a run takes): the run waits for keys
+    alone = tmp_path / "alone"
+    alone.mkdir()
+    for name in ("flangedlg.cpl", "machine.toml"):
+        (alone / name).write_bytes((EX / "cpl" / name).read_bytes())
+    r = ncvm("run", alone / "flangedlg.cpl", "--json", "--gcode", tmp_path / "dlg.ngc", "--state",
              tmp_path / "st", cwd=tmp_path)
     assert r.returncode == 1 and not (tmp_path / "dlg.ngc").exists() and not list(tmp_path.glob(".dlg.ngc*"))
     assert json.loads(r.stdout)["error"]["code"] == "CPL705"
-    r = ncvm("run", EX / "cpl" / "flangedlg.cpl", "--gcode", "/dev/stdout", "--state", tmp_path / "st",
+    r = ncvm("run", alone / "flangedlg.cpl", "--gcode", "/dev/stdout", "--state", tmp_path / "st",
              cwd=tmp_path)
     assert r.returncode == 1
     assert "(!!! INCOMPLETE: TRN002: translation refused: the run did not end normally: CPL705" in r.stdout

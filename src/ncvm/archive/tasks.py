@@ -21,12 +21,9 @@ from pathlib import Path
 from ..diagnostics import UsageError
 from ..machine.config import load_machine
 from ..machine.state import STORE_NAME
+from ..runtime.companions import KEYS_SUFFIX, SCENARIO_SUFFIX, beside
 from .discover import Program
 
-#: the files of a program's own folder that a batch run reads beside it: the operator's key presses and
-#: what happens over simulated time (the convention of examples/)
-KEYS_SUFFIX = ".keys"
-SCENARIO_SUFFIX = ".scenario.toml"
 #: a program may mention another by any word of its text: names are taken generously, the files are small
 _WORD = re.compile(r"[A-Za-z0-9_]+")
 #: a relative path a program names (an include of a sub-folder): shipped when it is a file
@@ -134,11 +131,9 @@ class TaskBuilder:
         if program.dialect in _BY_NUMBER:
             self._add_numbered(files, [path.parent, *search])
         extras = {}
-        for suffix in (KEYS_SUFFIX, SCENARIO_SUFFIX):
-            side = path.with_name(path.stem + suffix)
-            if side.is_file():
-                files[str(side)] = side.read_bytes()
-                extras[suffix] = str(side)
+        for suffix, side in beside(path).items():  # the one rule of every entry point
+            files[str(side)] = side.read_bytes()
+            extras[suffix] = str(side)
         return Task(index=index, path=str(program.path), dialect=program.dialect,
                     machine=str(program.machine) if program.machine else None, base=str(self.base), files=files,
                     file_root=file_root, own_folder_first=program.machine_above, keys=extras.get(KEYS_SUFFIX),

@@ -16,6 +16,8 @@ from __future__ import annotations
 from collections import deque
 from collections.abc import Callable
 
+from . import interrupt
+
 
 class BlockBuffer(deque):
     """Prepared blocks waiting for execution, the oldest first.
@@ -71,7 +73,8 @@ class BlockBuffer(deque):
         else:
             blocks = [self.popleft() for _ in range(n)]
         self.executed += len(blocks)
-        run(blocks)
+        with interrupt.block():  # Ctrl-C ends the run after these blocks, not amid their passes
+            run(blocks)
 
     def drain(self) -> None:
         """Execute every waiting block (WAIT, STOP DEC, the program end)."""

@@ -20,6 +20,7 @@ from ..machine.model import Machine
 from ..machine.store import Store
 from ..nc.canon import Canon, CanonSink, Src
 from ..nc.kernel import NcKernel, programmed_stop_line
+from . import interrupt
 from .checks import Checks
 from .memory import default_max_memory, out_of_memory
 from .steps import DEFAULT_MAX_STEPS, StepCounter, StepHook
@@ -160,12 +161,15 @@ def _same_place(src: Src) -> Src:
 def run_guarded(session: Session, runner) -> Diagnostic | None:
     """Call ``runner()``; a run-time fault becomes a Diagnostic. CompileFailed and bugs propagate."""
     try:
-        runner()
+        with interrupt.deferring():
+            runner()
     except RuntimeFault as f:
         return f.diagnostic()
     except RecursionError:
         return Diagnostic("RUN003", "call nesting too deep (recursion without end?)", None)
     except KeyboardInterrupt:
+        if session.options.on_operator_wait is not None:  # the progress line leaves the screen first
+            session.options.on_operator_wait(True)
         print("interrupted", file=sys.stderr)
         return Diagnostic("RUN004", "run interrupted by the user", None)
     except MemoryError:
