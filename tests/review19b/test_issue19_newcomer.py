@@ -162,3 +162,19 @@ def test_refusal_to_overwrite_a_listing_names_the_option_that_names_a_listing(tm
     assert done.returncode == 2, done.stderr
     assert listing.read_text().startswith("my notes")
     assert "--xref" in done.stderr, done.stderr
+
+
+# --- item 1: self-contained --------------------------------------------------------------------------------
+
+
+def test_user_docs_do_not_send_the_reader_to_issues_the_clone_does_not_hold():
+    """Issue 19 item 1: "A clone must hold everything it refers to". The user documentation still explains
+    itself by the project's issue numbers, which a newcomer with a clone cannot look up: docs/sin800.md "the NC
+    side of CL 800 (issue 5)", docs/profiles.md "(issue 14)", docs/planner.md "Until issue 18",
+    docs/performance.md's title. (A quoted heading of docs/decisions.md, which the clone holds, is fine.)"""
+    pages = [ROOT / "README.md", *sorted((ROOT / "docs").glob("*.md"))]
+    found = [f"{page.relative_to(ROOT)}:{number}: {line.strip()[:90]}"
+             for page in pages if page.name != "decisions.md"
+             for number, line in enumerate(page.read_text(encoding="utf-8").splitlines(), 1)
+             if re.search(r'(?<!")\b[Ii]ssues? \d+', line)]
+    assert not found, "\n".join(found)
