@@ -221,18 +221,24 @@ def _marks(points: PlotPoints, views: dict, handles: list, violations: Sequence)
                          linewidth=0)
         handles.append(Line2D([], [], marker="o", markerfacecolor="none", color="black", linestyle="none",
                               label="feed along the tool axis (top view)"))
+    # (point, marker, colour, size, filled, legend): the end is a large open square around a small start dot,
+    # so a program that ends where it began shows both
     spots = []
     if points.first is not None:
-        spots += [(points.first, "o", "green", "start"), (points.last, "s", "red", "end")]
+        spots += [(points.first, "o", "green", 6, True, "start"), (points.last, "s", "red", 11, False, "end")]
     for v in violations:
         where = np.asarray(v.point, dtype=float) - points.offsets_at(v.move)
-        spots.append((where[list(points.idx)].tolist(), "X", "crimson",
+        spots.append((where[list(points.idx)].tolist(), "X", "crimson", 9, True,
                       f"soft limit {v.axis} {v.limit:g} passed:\n{v.value:.3f} (machine), line {v.line}"))
-    for p, marker, colour, text in spots:
+    for p, marker, colour, size, filled, text in spots:
+        face = colour if filled else "none"
         for name, (a, b) in plane.items():
-            views[name].plot(p[a], p[b], marker, color=colour, markersize=9 if marker == "X" else 7, zorder=5)
-        views["3-D"].scatter([p[0]], [p[1]], [p[2]], color=colour, marker=marker, s=40, depthshade=False)
-        handles.append(Line2D([], [], marker=marker, color=colour, linestyle="none", markersize=7, label=text))
+            views[name].plot(p[a], p[b], marker, color=colour, markerfacecolor=face, markersize=size,
+                             markeredgewidth=1.5, zorder=6 if filled else 5)
+        views["3-D"].scatter([p[0]], [p[1]], [p[2]], edgecolors=colour, facecolors=face, marker=marker,
+                             s=size * size, linewidths=1.5, depthshade=False)
+        handles.append(Line2D([], [], marker=marker, color=colour, markerfacecolor=face, linestyle="none",
+                              markersize=7, label=text))
 
 
 def _notes(points: PlotPoints, frame: str) -> list[str]:
@@ -244,7 +250,7 @@ def _notes(points: PlotPoints, frame: str) -> list[str]:
         notes.append("machine frame")
     if points.approach and points.lines:
         n = points.approach
-        notes.append(f"{n} rapid{'s' if n != 1 else ''} from the start\nposition (where the run began):\nnot drawn")
+        notes.append(f"{n} rapid{'s' if n != 1 else ''} from the start\nposition (the simulator's, not\nthe program's): not drawn")
     if points.thinned:  # the drawing is decimated: not every point of the toolpath is drawn
         notes.append(points.note())
     return notes
