@@ -271,3 +271,18 @@ def test_start_and_end_are_both_visible_where_they_coincide(tmp_path: Path):
     assert marks["green"].get_markersize() < marks["red"].get_markersize()
     assert marks["red"].get_markerfacecolor() == "none" and marks["green"].get_zorder() > marks["red"].get_zorder()
     plt.close(fig)
+
+
+def test_3d_titles_of_a_needle_shaped_path_are_clear_of_other_text(tmp_path: Path):
+    """A drilled hole 100 mm deep at one XY point: the 3-D box is a needle; its axis titles cover neither
+    each other nor a visible tick number."""
+    result, session = run_text(tmp_path, "needle.din", "G90 G0 X40 Y30 Z50\nG1 Z-60 F100\nG0 Z50\nM2\n")
+    fig = figure(session.plot, plot_title(tmp_path / "needle.din", result, "test"), [])
+    fig.canvas.draw()
+    renderer = fig.canvas.get_renderer()
+    axes = [fig.views["3-D"].xaxis, fig.views["3-D"].yaxis, fig.views["3-D"].zaxis]
+    titles = [a.label.get_window_extent(renderer) for a in axes]
+    ticks = [t.get_window_extent(renderer) for a in axes for t in a.get_ticklabels() if t.get_visible() and t.get_text()]
+    assert not any(a.overlaps(b) for i, a in enumerate(titles) for b in titles[i + 1:])
+    assert not any(a.overlaps(t) for a in titles for t in ticks)
+    plt.close(fig)

@@ -112,6 +112,7 @@ def figure(points: PlotPoints, title: str = "", violations: Sequence = ()):
         _equal_2d(ax, lo, hi, a, b)
     _equal_3d(views["3-D"], lo, hi, label)
     views["3-D"].set_title("3-D view")
+    _unclash_3d_titles(fig, views["3-D"])
     notes = _notes(points, frame)
     if notes:
         handles += [Line2D([], [], linestyle="none", label=n) for n in notes]
@@ -182,6 +183,29 @@ def _equal_3d(ax, lo, hi, label) -> None:
     ax.set_xlabel(label["x"])
     ax.set_ylabel(label["y"])
     ax.set_zlabel(label["z"])
+
+
+def _unclash_3d_titles(fig, ax, tries: int = 6) -> None:
+    """With equal scales a long, thin path makes a needle of the 3-D box, and its axis titles land on each
+    other or on tick numbers: move such a title away from its axis until it is clear (one draw per try);
+    a tick number a title still covers is left out (the flat views carry every number)."""
+    axes = (ax.xaxis, ax.yaxis, ax.zaxis)
+    for last in [False] * tries + [True]:
+        fig.canvas.draw()
+        renderer = fig.canvas.get_renderer()
+        ticks = [t for axis in axes for t in axis.get_ticklabels() if t.get_visible() and t.get_text()]
+        boxes = [axis.label.get_window_extent(renderer) for axis in axes]
+        covered = [t for t in ticks if any(b.overlaps(t.get_window_extent(renderer)) for b in boxes)]
+        clashing = [axis for i, axis in enumerate(axes)
+                    if any(boxes[i].overlaps(b) for j, b in enumerate(boxes) if j != i)]
+        if last:
+            for tick in covered:
+                tick.set_visible(False)
+        elif clashing or covered:  # one at a time: two titles pushed alike would move together
+            (clashing or [a for a, b in zip(axes, boxes)
+                          if any(b.overlaps(t.get_window_extent(renderer)) for t in covered)])[0].labelpad += 10
+        else:
+            return
 
 
 def _feed_segments(lines: dict) -> np.ndarray:
