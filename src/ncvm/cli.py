@@ -292,31 +292,51 @@ def _stdin_is_terminal() -> bool:
         return False
 
 
+SUMMARY_WIDTH = 160  # characters of the run's summary line (docs/decisions.md)
+
+
 def _summary(result: dict) -> str:
-    """One compact line (at most about 160 characters); every figure in full stands in ``--json``."""
+    """One compact line (at most SUMMARY_WIDTH characters); every figure in full stands in ``--json``.
+    Bounds say their frame: the program's (rw_SymPas) or the machine's; on a machine with many axes they are
+    rounded to whole millimetres/degrees, and axes that do not fit are named as left to ``--json``."""
     m = result["motion"]
-    bounds = _bounds(m["bounds"])
-    if "frames" in result:  # two frames (rw_SymPas): the program's, as the user wrote it; the machine's in --json
-        program = _bounds(result.get("bounds_program", {}))
-        bounds = f"program {program}" if program and program != bounds else bounds
+    bounds, frame = m["bounds"], "machine"
+    if "frames" in result and result.get("bounds_program"):  # rw_SymPas: the program's, as the user wrote them
+        bounds, frame = result["bounds_program"], "program"
     # a front end may say how a run without error ended ("ended": e.g. by a system reset)
     status = result.get("ended", "ended normally") if result["status"] == "ok" \
         else f"stopped with error {result['error']['code']}"
     moves = m["rapid_moves"] + m["feed_moves"] + m["arc_moves"]
     cycle = _hms(round(result["cycle_time_s"], 1))[:-2]  # m:ss.s
-    return (f"ncvm: {status}: {result['steps']:,} steps, {moves} move{'' if moves == 1 else 's'}, "
-            f"path {m['rapid_length'] + m['feed_length']:.1f} mm, cycle {cycle}"
-            + (f" ({result['cycle_time_model']})" if "cycle_time_model" in result else "")
-            + (f", {bounds}" if bounds else ""))
+    head = (f"ncvm: {status}: {result['steps']:,} steps, {moves:,} move{'' if moves == 1 else 's'}, "
+            f"path {m['rapid_length'] + m['feed_length']:,.1f} mm, cycle {cycle}"
+            + (f" ({result['cycle_time_model']})" if "cycle_time_model" in result else ""))
+    return head + _fitted_bounds(bounds, frame, SUMMARY_WIDTH - len(head))
 
 
-def _bounds(bounds: dict) -> str:
-    return " ".join(f"{a}[{_short(lo)},{_short(hi)}]" for a, (lo, hi) in bounds.items())
+def _fitted_bounds(bounds: dict, frame: str, room: int) -> str:
+    """``, <frame> X[lo,hi] ...`` in at most ``room`` characters: to 0.01, else rounded to whole units, else
+    the axes that fit and how many more ``--json`` holds."""
+    if not bounds:
+        return ""
+    for digits in (2, 0):
+        text = f", {frame} " + " ".join(f"{a}[{_short(lo, digits)},{_short(hi, digits)}]"
+                                       for a, (lo, hi) in bounds.items())
+        if len(text) <= room:
+            return text
+    items = list(bounds.items())
+    for n in range(len(items) - 1, 0, -1):
+        rest = f" +{len(items) - n} axes in --json"
+        text = f", {frame} " + " ".join(f"{a}[{_short(lo, 0)},{_short(hi, 0)}]" for a, (lo, hi) in items[:n])
+        if len(text + rest) <= room:
+            return text + rest
+    return f", {frame} bounds in --json"
 
 
-def _short(value: float) -> str:
-    """A bound to 0.01 mm without trailing zeros: 50, -0.03, 12.5."""
-    text = f"{value:.2f}".rstrip("0").rstrip(".")
+def _short(value: float, digits: int = 2) -> str:
+    """A bound to 0.01 (or whole units) without trailing zeros: 50, -0.03, 12.5."""
+    text = f"{value:.{digits}f}"
+    text = text.rstrip("0").rstrip(".") if digits else text
     return "0" if text == "-0" else text
 
 

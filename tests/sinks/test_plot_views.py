@@ -253,3 +253,36 @@ def test_the_command_line_draws_in_the_frame_asked_for(tmp_path: Path, frame: st
                                      str(tmp_path / "p.png"), "--plot-frame", frame])
     assert r.exit_code == 0, r.output
     assert (tmp_path / "p.png").read_bytes()[:4] == b"\x89PNG" and seen == [frame == "work"]
+
+
+def test_only_the_rapid_from_the_power_on_position_is_left_out(tmp_path: Path):
+    """The second rapid leaves from X5 Y0 Z30, a point the program reached (Y0 is also where the run began):
+    it is drawn; only the first, from the simulator's start position, is the approach."""
+    _, session = run_text(tmp_path, "a.din", "G90 G0 X5 Y0 Z30\nG0 Y0 Z1\nG1 Z-2 F100\nG0 Z30\nM2\n")
+    assert session.plot.approach == 1
+    assert session.plot.first == pytest.approx([5.0, 0.0, 30.0])
+
+
+def test_start_and_end_are_both_visible_where_they_coincide(tmp_path: Path):
+    """A program that ends where it began: the end is an open square larger than the start's filled dot."""
+    result, session = run_text(tmp_path, "loop.din", "G90 G0 X0 Y0 Z10\nG1 X10 F500\nG1 X0\nM2\n")
+    fig = figure(session.plot, plot_title(tmp_path / "loop.din", result, "test"), [])
+    marks = {line.get_color(): line for line in fig.views["XY"].lines if line.get_color() in ("green", "red")}
+    assert marks["green"].get_markersize() < marks["red"].get_markersize()
+    assert marks["red"].get_markerfacecolor() == "none" and marks["green"].get_zorder() > marks["red"].get_zorder()
+    plt.close(fig)
+
+
+def test_3d_titles_of_a_needle_shaped_path_are_clear_of_other_text(tmp_path: Path):
+    """A drilled hole 100 mm deep at one XY point: the 3-D box is a needle; its axis titles cover neither
+    each other nor a visible tick number."""
+    result, session = run_text(tmp_path, "needle.din", "G90 G0 X40 Y30 Z50\nG1 Z-60 F100\nG0 Z50\nM2\n")
+    fig = figure(session.plot, plot_title(tmp_path / "needle.din", result, "test"), [])
+    fig.canvas.draw()
+    renderer = fig.canvas.get_renderer()
+    axes = [fig.views["3-D"].xaxis, fig.views["3-D"].yaxis, fig.views["3-D"].zaxis]
+    titles = [a.label.get_window_extent(renderer) for a in axes]
+    ticks = [t.get_window_extent(renderer) for a in axes for t in a.get_ticklabels() if t.get_visible() and t.get_text()]
+    assert not any(a.overlaps(b) for i, a in enumerate(titles) for b in titles[i + 1:])
+    assert not any(a.overlaps(t) for a in titles for t in ticks)
+    plt.close(fig)

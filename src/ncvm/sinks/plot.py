@@ -11,10 +11,9 @@ the offsets in force for that move, unless the machine frame was asked for) and
 ``channel`` (which of a control's parallel programs, the rw_SymPas tasks, makes
 the moves that follow: lines are coloured by it instead of by tool). The run
 begins wherever the simulator put the machine (its start position), not at a
-point of the program: rapids at the beginning that leave from a point where
-one of the drawn axes still stands there are the approach, counted but not
-drawn; the drawing begins with the first cutting move or the first rapid from
-a point the program placed.
+point of the program: the rapid that leaves from there is the approach,
+counted but not drawn; every later rapid leaves from a point a move of the
+program reached and is drawn.
 """
 
 from __future__ import annotations
@@ -48,7 +47,6 @@ class PlotPoints(CanonSink):
         self._frames: list[tuple[int, np.ndarray]] = []
         self._channels: list[tuple[int, int]] = []
         self.approach = 0  # rapids of the approach from the start position: not drawn
-        self._unplaced: np.ndarray | None = None  # drawn axes the approach has not moved yet
         self._start: np.ndarray | None = None  # where the run began (drawn axes, in the plot's frame)
         self._approach_lines: list[np.ndarray] = []  # drawn only when the program never cuts
         self.names: tuple[str, ...] = ()
@@ -195,19 +193,14 @@ class PlotPoints(CanonSink):
             self._thin()
 
     def _approach_rows(self, kind: np.ndarray, start: np.ndarray, end: np.ndarray) -> int:
-        """How many of these moves are the approach: rapids that leave from a point where a drawn axis still
-        stands where the run began (the program has not placed it yet), before the first cutting move."""
+        """How many of these moves are the approach: rapids that leave from the point where the run began (the
+        simulator's power-on position, which the program never named), before the first move away from it.
+        Every rapid from a point a move of the program reached is drawn."""
         idx = list(self.idx)
-        if self._unplaced is None:
-            self._unplaced = np.ones(len(idx), dtype=bool)
+        if self._start is None:
             self._start = start[0, idx].copy()
-        placed = np.logical_or.accumulate(end[:, idx] != self._start, axis=0)
-        unplaced_before = np.vstack([self._unplaced, self._unplaced & ~placed[:-1]])
-        drawn = (kind != RAPID) | ~unplaced_before.any(axis=1)
-        skip = int(np.argmax(drawn)) if drawn.any() else len(kind)
-        if skip:
-            self._unplaced = unplaced_before[skip - 1] & ~placed[skip - 1]
-        return skip
+        drawn = (kind != RAPID) | (start[:, idx] != self._start).any(axis=1)
+        return int(np.argmax(drawn)) if drawn.any() else len(kind)
 
     def _hold_approach(self, start: np.ndarray, end: np.ndarray) -> None:
         """Rapids of the approach: counted; their points kept (a few) in case the program never cuts."""

@@ -112,6 +112,7 @@ def figure(points: PlotPoints, title: str = "", violations: Sequence = ()):
         _equal_2d(ax, lo, hi, a, b)
     _equal_3d(views["3-D"], lo, hi, label)
     views["3-D"].set_title("3-D view")
+    _unclash_3d_titles(fig, views["3-D"])
     notes = _notes(points, frame)
     if notes:
         handles += [Line2D([], [], linestyle="none", label=n) for n in notes]
@@ -184,6 +185,29 @@ def _equal_3d(ax, lo, hi, label) -> None:
     ax.set_zlabel(label["z"])
 
 
+def _unclash_3d_titles(fig, ax, tries: int = 6) -> None:
+    """With equal scales a long, thin path makes a needle of the 3-D box, and its axis titles land on each
+    other or on tick numbers: move such a title away from its axis until it is clear (one draw per try);
+    a tick number a title still covers is left out (the flat views carry every number)."""
+    axes = (ax.xaxis, ax.yaxis, ax.zaxis)
+    for last in [False] * tries + [True]:
+        fig.canvas.draw()
+        renderer = fig.canvas.get_renderer()
+        ticks = [t for axis in axes for t in axis.get_ticklabels() if t.get_visible() and t.get_text()]
+        boxes = [axis.label.get_window_extent(renderer) for axis in axes]
+        covered = [t for t in ticks if any(b.overlaps(t.get_window_extent(renderer)) for b in boxes)]
+        clashing = [axis for i, axis in enumerate(axes)
+                    if any(boxes[i].overlaps(b) for j, b in enumerate(boxes) if j != i)]
+        if last:
+            for tick in covered:
+                tick.set_visible(False)
+        elif clashing or covered:  # one at a time: two titles pushed alike would move together
+            (clashing or [a for a, b in zip(axes, boxes)
+                          if any(b.overlaps(t.get_window_extent(renderer)) for t in covered)])[0].labelpad += 10
+        else:
+            return
+
+
 def _feed_segments(lines: dict) -> np.ndarray:
     """The feed moves' drawn segments, (segments, 2 ends, xyz)."""
     segs = []
@@ -221,18 +245,24 @@ def _marks(points: PlotPoints, views: dict, handles: list, violations: Sequence)
                          linewidth=0)
         handles.append(Line2D([], [], marker="o", markerfacecolor="none", color="black", linestyle="none",
                               label="feed along the tool axis (top view)"))
+    # (point, marker, colour, size, filled, legend): the end is a large open square around a small start dot,
+    # so a program that ends where it began shows both
     spots = []
     if points.first is not None:
-        spots += [(points.first, "o", "green", "start"), (points.last, "s", "red", "end")]
+        spots += [(points.first, "o", "green", 6, True, "start"), (points.last, "s", "red", 11, False, "end")]
     for v in violations:
         where = np.asarray(v.point, dtype=float) - points.offsets_at(v.move)
-        spots.append((where[list(points.idx)].tolist(), "X", "crimson",
+        spots.append((where[list(points.idx)].tolist(), "X", "crimson", 9, True,
                       f"soft limit {v.axis} {v.limit:g} passed:\n{v.value:.3f} (machine), line {v.line}"))
-    for p, marker, colour, text in spots:
+    for p, marker, colour, size, filled, text in spots:
+        face = colour if filled else "none"
         for name, (a, b) in plane.items():
-            views[name].plot(p[a], p[b], marker, color=colour, markersize=9 if marker == "X" else 7, zorder=5)
-        views["3-D"].scatter([p[0]], [p[1]], [p[2]], color=colour, marker=marker, s=40, depthshade=False)
-        handles.append(Line2D([], [], marker=marker, color=colour, linestyle="none", markersize=7, label=text))
+            views[name].plot(p[a], p[b], marker, color=colour, markerfacecolor=face, markersize=size,
+                             markeredgewidth=1.5, zorder=6 if filled else 5)
+        views["3-D"].scatter([p[0]], [p[1]], [p[2]], edgecolors=colour, facecolors=face, marker=marker,
+                             s=size * size, linewidths=1.5, depthshade=False)
+        handles.append(Line2D([], [], marker=marker, color=colour, markerfacecolor=face, linestyle="none",
+                              markersize=7, label=text))
 
 
 def _notes(points: PlotPoints, frame: str) -> list[str]:
@@ -244,7 +274,7 @@ def _notes(points: PlotPoints, frame: str) -> list[str]:
         notes.append("machine frame")
     if points.approach and points.lines:
         n = points.approach
-        notes.append(f"{n} rapid{'s' if n != 1 else ''} from the start\nposition (where the run began):\nnot drawn")
+        notes.append(f"{n} rapid{'s' if n != 1 else ''} from the start\nposition (the simulator's, not\nthe program's): not drawn")
     if points.thinned:  # the drawing is decimated: not every point of the toolpath is drawn
         notes.append(points.note())
     return notes

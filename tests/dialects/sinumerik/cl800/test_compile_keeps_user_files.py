@@ -92,3 +92,13 @@ def test_a_listing_ncvm_wrote_is_replaced_and_a_hand_written_one_only_with_force
     assert kept.returncode == 2 and "hole_pattern.lst" in kept.stderr and "(NOTE)" in listing.read_text()
     assert ncvm(folder, "compile", "hole_pattern.cl8", "--xref", "--force").returncode == 0
     assert "(NOTE)" not in listing.read_text()
+
+
+def test_a_hand_written_listing_is_kept_and_the_refusal_names_the_listing_option(folder: Path):
+    """The listing's name comes from ``--xref LISTING``, not from -o: the refusal says which option names it."""
+    (folder / "hole_pattern.lst").write_text("MY NOTES\n", encoding="latin-1")
+    r = ncvm(folder, "compile", "hole_pattern.cl8", "--xref")
+    assert r.returncode == 2, r.stderr
+    assert "compile hole_pattern.lst: the file exists and ncvm did not write it" in r.stderr
+    assert "give another name with --xref LISTING, or --force" in r.stderr
+    assert (folder / "hole_pattern.lst").read_text(encoding="latin-1") == "MY NOTES\n"

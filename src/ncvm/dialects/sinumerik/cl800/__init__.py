@@ -126,7 +126,7 @@ class Cl800Dialect(Dialect):
         if xref:
             refuse_overwrite("compile", Path(xref), path)
             if not xref_named and not force:
-                _refuse_a_file_ncvm_did_not_write(Path(xref))
+                _refuse_a_file_ncvm_did_not_write(Path(xref), "--xref LISTING")
             write_output(Path(xref), marked(obj.xref()))
             if not out:
                 return Path(xref)
@@ -157,7 +157,7 @@ class Cl800Dialect(Dialect):
             raise
 
 
-def _refuse_a_file_ncvm_did_not_write(target: Path) -> None:
+def _refuse_a_file_ncvm_did_not_write(target: Path, option: str = "-o") -> None:
     """The name ncvm chose may be a file someone wrote or edited by hand (``L101.spf``, ``prog.lst``): keep it."""
     try:
         text = target.read_text(encoding="latin-1")
@@ -168,7 +168,7 @@ def _refuse_a_file_ncvm_did_not_write(target: Path) -> None:
     if not written_by_ncvm(text):
         raise UsageError(f"compile {target}: the file exists and ncvm did not write it (no {MARK} line at its end, "
                          "or the file was changed since ncvm wrote it); "
-                         "give another name with -o, or --force to overwrite it")
+                         f"give another name with {option}, or --force to overwrite it")
 
 
 class _ObjectPlaces:
