@@ -10,6 +10,7 @@ import signal
 import socket
 import subprocess
 import sys
+import time
 from pathlib import Path
 
 import pytest
@@ -89,6 +90,26 @@ def dask_processes(tmp_path: Path):
                 os.killpg(p.pid, signal.SIGKILL)
                 p.wait()
 
+
+
+@pytest.fixture
+def killed_writer(tmp_path: Path):
+    """killed_writer(code, delay) -> the numbers it printed: `python -c code tmp_path` (a writer that prints a
+    number per record written), killed without warning (SIGKILL) `delay` s after its first number."""
+    env = dict(os.environ, PYTHONPATH=os.pathsep.join(sys.path))
+
+    def kill(code: str, delay: float) -> list[int]:
+        proc = subprocess.Popen([sys.executable, "-c", code, str(tmp_path)], stdout=subprocess.PIPE, text=True,
+                                env=env)
+        first = proc.stdout.readline()  # the writer runs
+        assert first.strip().isdigit()
+        time.sleep(delay)
+        proc.send_signal(signal.SIGKILL)
+        printed = [int(x) for x in [first, *proc.stdout.read().split()] if str(x).strip()]
+        proc.wait()
+        return printed
+
+    return kill
 
 PLANE_AXES = {17: (0, 1, "IJ"), 18: (2, 0, "KI"), 19: (1, 2, "JK")}
 
