@@ -5,6 +5,12 @@ from __future__ import annotations
 import math
 import os
 import random
+import shlex
+import signal
+import socket
+import subprocess
+import sys
+import time
 from pathlib import Path
 
 import pytest
@@ -33,6 +39,77 @@ def run_text(tmp_path: Path):
 
     return _run
 
+
+
+def _free_port() -> int:
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+@pytest.fixture
+def free_port() -> int:
+    """A TCP port on 127.0.0.1 that nothing listens on (free when asked)."""
+    return _free_port()
+
+
+@pytest.fixture
+def dask_processes(tmp_path: Path):
+    """start(nworkers=1, tmpfs_on=None) -> address: ``dask scheduler`` and ``dask worker`` as processes of
+    their own, on 127.0.0.1 only, ready when it returns; stopped after the test (SIGTERM to each process
+    group, SIGKILL after 30 s). With `tmpfs_on` the worker runs in a mount namespace of its own with an empty
+    tmpfs on that folder: a worker host that has the same path, but not the same files."""
+    distributed = pytest.importorskip("distributed")
+    dask = str(Path(sys.executable).parent / "dask")
+    quiet = {"stdout": subprocess.DEVNULL, "stderr": subprocess.DEVNULL, "start_new_session": True}
+    procs: list[subprocess.Popen] = []
+
+    def start(nworkers: int = 1, tmpfs_on: Path | None = None) -> str:
+        port = _free_port()
+        address = f"tcp://127.0.0.1:{port}"
+        procs.append(subprocess.Popen([dask, "scheduler", "--host", "127.0.0.1", "--port", str(port),
+                                       "--no-dashboard"], **quiet))
+        worker = [dask, "worker", address, "--host", "127.0.0.1", "--nthreads", "1", "--nworkers", str(nworkers),
+                  "--no-dashboard", "--local-directory", str(tmp_path)]
+        if tmpfs_on is not None:
+            worker = ["unshare", "-m", "sh", "-c",
+                      f"mount -t tmpfs none {shlex.quote(str(tmpfs_on))} && cd / && exec {shlex.join(worker)}"]
+        procs.append(subprocess.Popen(worker, **quiet))
+        with distributed.Client(address, timeout=60) as client:
+            client.wait_for_workers(nworkers, timeout=60)
+        return address
+
+    try:
+        yield start
+    finally:
+        for p in reversed(procs):
+            os.killpg(p.pid, signal.SIGTERM)
+            try:
+                p.wait(timeout=30)
+            except subprocess.TimeoutExpired:
+                os.killpg(p.pid, signal.SIGKILL)
+                p.wait()
+
+
+
+@pytest.fixture
+def killed_writer(tmp_path: Path):
+    """killed_writer(code, delay) -> the numbers it printed: `python -c code tmp_path` (a writer that prints a
+    number per record written), killed without warning (SIGKILL) `delay` s after its first number."""
+    env = dict(os.environ, PYTHONPATH=os.pathsep.join(sys.path))
+
+    def kill(code: str, delay: float) -> list[int]:
+        proc = subprocess.Popen([sys.executable, "-c", code, str(tmp_path)], stdout=subprocess.PIPE, text=True,
+                                env=env)
+        first = proc.stdout.readline()  # the writer runs
+        assert first.strip().isdigit()
+        time.sleep(delay)
+        proc.send_signal(signal.SIGKILL)
+        printed = [int(x) for x in [first, *proc.stdout.read().split()] if str(x).strip()]
+        proc.wait()
+        return printed
+
+    return kill
 
 PLANE_AXES = {17: (0, 1, "IJ"), 18: (2, 0, "KI"), 19: (1, 2, "JK")}
 

@@ -4,9 +4,6 @@ processes of their own on 127.0.0.1; the results are those of the run in this pr
 from __future__ import annotations
 
 import json
-import os
-import signal
-import socket
 import subprocess
 import sys
 from pathlib import Path
@@ -64,40 +61,15 @@ def test_workers_of_another_ncvm_version_are_refused(cluster, monkeypatch):
         run_on_cluster([], cluster.scheduler_address)
 
 
-def test_an_unreachable_scheduler_is_a_usage_error():
+def test_an_unreachable_scheduler_is_a_usage_error(free_port):
     with pytest.raises(UsageError, match="cannot reach the dask scheduler"):
-        run_on_cluster([], f"tcp://127.0.0.1:{_free_port()}", timeout=2)
-
-
-def _free_port() -> int:
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return s.getsockname()[1]
+        run_on_cluster([], f"tcp://127.0.0.1:{free_port}", timeout=2)
 
 
 @pytest.fixture
-def scheduler_and_worker(tmp_path):
+def scheduler_and_worker(dask_processes):
     """``dask scheduler`` and ``dask worker`` as processes of their own, on 127.0.0.1 only; stopped after."""
-    port = _free_port()
-    address = f"tcp://127.0.0.1:{port}"
-    procs = [subprocess.Popen([BIN / "dask", "scheduler", "--host", "127.0.0.1", "--port", str(port),
-                               "--no-dashboard"], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
-                              start_new_session=True)]
-    try:
-        procs.append(subprocess.Popen([BIN / "dask", "worker", address, "--host", "127.0.0.1", "--nthreads", "1",
-                                       "--nworkers", "1", "--no-dashboard", "--local-directory", str(tmp_path)],
-                                      stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, start_new_session=True))
-        with distributed.Client(address, timeout=60) as client:
-            client.wait_for_workers(1, timeout=60)
-        yield address
-    finally:
-        for p in reversed(procs):
-            os.killpg(p.pid, signal.SIGTERM)
-            try:
-                p.wait(timeout=30)
-            except subprocess.TimeoutExpired:
-                os.killpg(p.pid, signal.SIGKILL)
-                p.wait()
+    return dask_processes(nworkers=1)
 
 
 def test_ncvm_run_on_a_scheduler_and_a_worker_of_their_own(archive, in_process, scheduler_and_worker, tmp_path):

@@ -3,10 +3,7 @@
 from __future__ import annotations
 
 import os
-import signal
 import sqlite3
-import subprocess
-import sys
 import time
 
 import pytest
@@ -58,19 +55,10 @@ def test_failed_batch_rolls_back(tmp_path):
     assert s.get("t", "a") == 1
 
 
-def test_writer_killed_at_any_moment_leaves_store_consistent(tmp_path):
-    env = dict(os.environ, PYTHONPATH=os.pathsep.join(sys.path))
+def test_writer_killed_at_any_moment_leaves_store_consistent(tmp_path, killed_writer):
     last_seen = 0
     for delay in (0.02, 0.05, 0.09, 0.13, 0.19, 0.25):
-        proc = subprocess.Popen([sys.executable, "-c", WRITER, str(tmp_path)], stdout=subprocess.PIPE, text=True,
-                                env=env)
-        # wait for the writer to be running, then kill it without warning after `delay`
-        first = proc.stdout.readline()
-        assert first.strip().isdigit()
-        time.sleep(delay)
-        proc.send_signal(signal.SIGKILL)
-        printed = [int(x) for x in [first, *proc.stdout.read().split()] if str(x).strip()]
-        proc.wait()
+        printed = killed_writer(WRITER, delay)
         db = sqlite3.connect(tmp_path / "store.sqlite")
         assert db.execute("PRAGMA integrity_check").fetchone()[0] == "ok"
         db.close()

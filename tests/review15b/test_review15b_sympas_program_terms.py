@@ -5,44 +5,7 @@ JSON document"): the card's axes are A1, A2 ... (rw_SymPas manual L1399: dp in u
 position being the machine position less the zero offsets).
 """
 
-import json
-import subprocess
-import sys
-import textwrap
-
-MACHINE = textwrap.dedent(
-    """\
-    [machine]
-    name = "APCI-8001 gantry"
-
-    [[axis]]
-    name = "X"
-    min = -10.0
-    max = 400.0
-    rapid = 12000.0
-    max_feed = 6000.0
-    accel = 1500.0
-
-    [[axis]]
-    name = "Y"
-    min = -10.0
-    max = 300.0
-    rapid = 12000.0
-    max_feed = 6000.0
-    accel = 1500.0
-    """
-)
-
-
-def _run_json(tmp_path, source):
-    (tmp_path / "machine.toml").write_text(MACHINE)
-    program = tmp_path / "p.sap"
-    program.write_text(textwrap.dedent(source))
-    done = subprocess.run(
-        [sys.executable, "-m", "ncvm", "run", "--json", str(program)],
-        capture_output=True, text=True, cwd=tmp_path, timeout=120,
-    )
-    return json.loads(done.stdout)
+from .helpers import run_json
 
 
 def test_bounds_contain_the_position_where_the_soft_limit_stopped_the_axis(tmp_path):
@@ -50,7 +13,7 @@ def test_bounds_contain_the_position_where_the_soft_limit_stopped_the_axis(tmp_p
     position dp 300.0), yet `bounds_machine` / `motion.bounds` say the axis never went beyond
     399.99999999900007 and `bounds_program` 299.999...: the toolpath bounds do not contain the point
     the run reports the axis standing at. Bounds must enclose the axis's end position."""
-    doc = _run_json(
+    doc = run_json(
         tmp_path,
         """\
         {$TASK 0}
@@ -77,7 +40,7 @@ def test_position_of_a_program_that_does_not_compile_is_named_in_the_programs_ax
     does (A1 ...)". A run that finishes or stops at run time does so ({'A1': 20.0, ...}); a program
     that stops at a compile error reports `position` {'X': 0.0, 'Y': 0.0, ...} in the machine's
     names, which the program never uses."""
-    doc = _run_json(
+    doc = run_json(
         tmp_path,
         """\
         {$TASK 0}

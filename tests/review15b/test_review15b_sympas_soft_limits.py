@@ -6,44 +6,7 @@ passes a limit configured with TOM or SMA. rw_SymPas manual L1668-1672, L2144-21
 sll/slr are read in the user coordinate (u = m - zerooffset - ZO), sll/slr stored in machine coordinates.
 """
 
-import json
-import subprocess
-import sys
-import textwrap
-
-MACHINE = textwrap.dedent(
-    """\
-    [machine]
-    name = "APCI-8001 gantry"
-
-    [[axis]]
-    name = "X"
-    min = -10.0
-    max = 400.0
-    rapid = 12000.0
-    max_feed = 6000.0
-    accel = 1500.0
-
-    [[axis]]
-    name = "Y"
-    min = -10.0
-    max = 300.0
-    rapid = 12000.0
-    max_feed = 6000.0
-    accel = 1500.0
-    """
-)
-
-
-def _run_json(tmp_path, source):
-    (tmp_path / "machine.toml").write_text(MACHINE)
-    program = tmp_path / "p.sap"
-    program.write_text(textwrap.dedent(source))
-    done = subprocess.run(
-        [sys.executable, "-m", "ncvm", "run", "--json", str(program)],
-        capture_output=True, text=True, cwd=tmp_path, timeout=120,
-    )
-    return json.loads(done.stdout)
+from .helpers import run_json
 
 
 def test_a_move_still_running_when_the_program_ends_is_stopped_at_slr(tmp_path):
@@ -51,7 +14,7 @@ def test_a_move_still_running_when_the_program_ends_is_stopped_at_slr(tmp_path):
     that then ends (or waits less than the move takes) is not watched any more once the tasks have
     ended: A1 ends at 450 in the JSON `position`, past the limit the card would have stopped it at,
     with only a warning. The axis must stop at slr whether or not a task still runs."""
-    doc = _run_json(
+    doc = run_json(
         tmp_path,
         """\
         {$TASK 0}
@@ -70,7 +33,7 @@ def test_a_move_still_running_when_the_program_ends_is_stopped_at_slr(tmp_path):
 def test_a_move_started_by_a_task_that_ends_is_stopped_at_slr(tmp_path):
     """Task 1 starts MLA(A2 := 350) (slr of A2 = 300) and ends; task 0 waits 1 s and ends: A2 runs to
     350 unchecked (position A2 350.0), although a MLAW of the same move stops at 300."""
-    doc = _run_json(
+    doc = run_json(
         tmp_path,
         """\
         {$TASK 0}
@@ -99,7 +62,7 @@ def test_slr_reads_in_the_users_coordinates_after_szpa(tmp_path):
     machine 400 reads 300, the position where TOM stops A1 reads dp = 300. ncvm reads slr = 400 (the
     machine figure) and its message "software limit slr = 400 of A1 reached" names a limit the
     program's A1 (dp 300) never shows."""
-    doc = _run_json(
+    doc = run_json(
         tmp_path,
         """\
         {$TASK 0}

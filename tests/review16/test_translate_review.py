@@ -98,16 +98,21 @@ N70 M30
 SIN800_MACHINE = Path(__file__).resolve().parents[2] / "examples" / "sin800" / "machine.toml"
 
 
-def _g53_case(tmp_path, target):
+def translated_on_sin800(tmp_path: Path, source: str, name: str, target: str) -> str | None:
+    """`source` translated for `target` on the example SINUMERIK 880 machine; None where ncvm refused it
+    clearly (TRN001, no output): a clear refusal is acceptable, a silently wrong move is not."""
     (tmp_path / "machine.toml").write_text(SIN800_MACHINE.read_text())
-    return translate(tmp_path, G53_RETRACT, "g53.mpf", "--target", target)
+    rc, text, err = translate(tmp_path, source, name, "--target", target)
+    if rc != 0:
+        assert "TRN001" in err and text == ""
+        return None
+    return text
 
 
 @pytest.mark.parametrize("target", ["linuxcnc", "sinumerik840d", "iso"])
 def test_g53_retract_writes_no_simulated_machine_xy_issue16_rule1(tmp_path, target):
-    rc, text, err = _g53_case(tmp_path, target)
-    if rc != 0:  # a clear refusal is acceptable, a silently wrong move is not
-        assert "TRN001" in err and text == ""
+    text = translated_on_sin800(tmp_path, G53_RETRACT, "g53.mpf", target)
+    if text is None:
         return
     line = next(c for c in body(text) if c.startswith(("G53", "SUPA")))
     assert "X160.02" not in line and "Y119.99" not in line, (
@@ -116,9 +121,8 @@ def test_g53_retract_writes_no_simulated_machine_xy_issue16_rule1(tmp_path, targ
 
 @pytest.mark.parametrize("target", ["linuxcnc", "sinumerik840d", "iso"])
 def test_move_after_g53_retract_keeps_no_simulated_z_issue16_rule1(tmp_path, target):
-    rc, text, err = _g53_case(tmp_path, target)
-    if rc != 0:
-        assert "TRN001" in err and text == ""
+    text = translated_on_sin800(tmp_path, G53_RETRACT, "g53.mpf", target)
+    if text is None:
         return
     code = body(text)
     after = code[next(i for i, c in enumerate(code) if c.startswith(("G53", "SUPA"))) + 1]
@@ -144,10 +148,8 @@ N70 M30
 
 @pytest.mark.parametrize("target", ["linuxcnc", "sinumerik840d", "iso"])
 def test_first_move_does_not_rapid_unprogrammed_z_to_simulated_home_issue16_rule1(tmp_path, target):
-    (tmp_path / "machine.toml").write_text(SIN800_MACHINE.read_text())
-    rc, text, err = translate(tmp_path, FIRST_MOVE_X_ONLY, "first.mpf", "--target", target)
-    if rc != 0:
-        assert "TRN001" in err and text == ""
+    text = translated_on_sin800(tmp_path, FIRST_MOVE_X_ONLY, "first.mpf", target)
+    if text is None:
         return
     first = next(c for c in body(text) if c.startswith("G0"))
     assert "Z-85.1" not in first and "Y-99.99" not in first, (
@@ -260,10 +262,8 @@ N120 M30
 
 @pytest.mark.parametrize("target", ["linuxcnc", "sinumerik840d", "iso"])
 def test_cutter_radius_compensation_is_kept_or_named_issue16_rule1(tmp_path, target):
-    (tmp_path / "machine.toml").write_text(SIN800_MACHINE.read_text())
-    rc, text, err = translate(tmp_path, CRC, "crc.mpf", "--target", target)
-    if rc != 0:
-        assert "TRN001" in err and text == ""
+    text = translated_on_sin800(tmp_path, CRC, "crc.mpf", target)
+    if text is None:
         return
     kept = any(c.startswith(("G41", "G42")) or " G41" in c or " G42" in c for c in body(text))
     named = "radius" in text.lower() and "4.25" in text

@@ -10,7 +10,6 @@ from __future__ import annotations
 import json
 import os
 import signal
-import socket
 import subprocess
 import sys
 import time
@@ -346,55 +345,10 @@ def test_item4_an_error_without_a_column_is_not_located_at_column_none(tmp_path)
 # --- the cluster ----------------------------------------------------------------------------------------------
 
 
-def _free_port() -> int:
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return s.getsockname()[1]
-
-
 @pytest.fixture
-def scheduler_and_worker(tmp_path):
+def scheduler_and_worker(dask_processes):
     """``dask scheduler`` and two ``dask worker`` processes on 127.0.0.1, stopped after the test."""
-    distributed = pytest.importorskip("distributed")
-    port = _free_port()
-    address = f"tcp://127.0.0.1:{port}"
-    quiet = {"stdout": subprocess.DEVNULL, "stderr": subprocess.DEVNULL, "start_new_session": True}
-    procs = [
-        subprocess.Popen(
-            [BIN / "dask", "scheduler", "--host", "127.0.0.1", "--port", str(port), "--no-dashboard"], **quiet
-        )
-    ]
-    try:
-        procs.append(
-            subprocess.Popen(
-                [
-                    BIN / "dask",
-                    "worker",
-                    address,
-                    "--host",
-                    "127.0.0.1",
-                    "--nthreads",
-                    "1",
-                    "--nworkers",
-                    "2",
-                    "--no-dashboard",
-                    "--local-directory",
-                    str(tmp_path),
-                ],
-                **quiet,
-            )
-        )
-        with distributed.Client(address, timeout=60) as client:
-            client.wait_for_workers(2, timeout=60)
-        yield address
-    finally:
-        for p in reversed(procs):
-            os.killpg(p.pid, signal.SIGTERM)
-            try:
-                p.wait(timeout=30)
-            except subprocess.TimeoutExpired:
-                os.killpg(p.pid, signal.SIGKILL)
-                p.wait()
+    return dask_processes(nworkers=2)
 
 
 def test_item3_ctrl_c_stops_a_cluster_batch_without_a_traceback(tmp_path, scheduler_and_worker):
@@ -444,38 +398,13 @@ def _can_hide_folders() -> bool:
 
 
 @pytest.fixture
-def worker_with_its_own_disk(tmp_path):
+def worker_with_its_own_disk(tmp_path, dask_processes):
     """A scheduler and a worker on 127.0.0.1 whose view of ``tmp_path / "shop"`` is a disk of its own (an
     empty tmpfs in a mount namespace): a worker host that has the same path, but not the same files."""
-    distributed = pytest.importorskip("distributed")
     if not _can_hide_folders():
         pytest.skip("needs mount namespaces (unshare -m)")
     (tmp_path / "shop").mkdir()
-    port = _free_port()
-    address = f"tcp://127.0.0.1:{port}"
-    quiet = {"stdout": subprocess.DEVNULL, "stderr": subprocess.DEVNULL, "start_new_session": True}
-    procs = [
-        subprocess.Popen(
-            [BIN / "dask", "scheduler", "--host", "127.0.0.1", "--port", str(port), "--no-dashboard"], **quiet
-        )
-    ]
-    try:
-        worker = (
-            f"mount -t tmpfs none {tmp_path / 'shop'} && cd / && exec {BIN / 'dask'} worker {address} "
-            f"--host 127.0.0.1 --nthreads 1 --nworkers 1 --no-dashboard --local-directory {tmp_path}"
-        )
-        procs.append(subprocess.Popen(["unshare", "-m", "sh", "-c", worker], **quiet))
-        with distributed.Client(address, timeout=60) as client:
-            client.wait_for_workers(1, timeout=60)
-        yield address
-    finally:
-        for p in reversed(procs):
-            os.killpg(p.pid, signal.SIGTERM)
-            try:
-                p.wait(timeout=30)
-            except subprocess.TimeoutExpired:
-                os.killpg(p.pid, signal.SIGKILL)
-                p.wait()
+    return dask_processes(nworkers=1, tmpfs_on=tmp_path / "shop")
 
 
 def test_item3_shared_state_on_a_cluster_that_does_not_share_it_is_not_reported_kept(

@@ -5,21 +5,7 @@ that assigns what the waiting main task reads can release it.
 
 from __future__ import annotations
 
-from pathlib import Path
-
-from ncvm.api import run
-from ncvm.runtime.session import RunOptions
-
 MACHINE = '[[axis]]\nname = "X"\n[[axis]]\nname = "Y"\n'
-
-
-def _run(tmp_path: Path, text: str, max_steps: int = 3_000_000):
-    (tmp_path / "machine.toml").write_text(MACHINE)
-    prog = tmp_path / "p.sap"
-    prog.write_text(text)
-    result, _ = run(prog, dialect="sympas", machine=tmp_path / "machine.toml",
-                    options=RunOptions(state_dir=tmp_path / ".s", max_steps=max_steps))
-    return result
 
 
 MONITOR = """{$TASK 0}
@@ -41,16 +27,16 @@ end.
 """
 
 
-def test_a_heartbeat_in_cd_does_not_hide_the_deadlock(tmp_path):
-    result = _run(tmp_path, MONITOR % "CD7 := CLOCK * 0.5;")
+def test_a_heartbeat_in_cd_does_not_hide_the_deadlock(sap_on):
+    result = sap_on(MONITOR % "CD7 := CLOCK * 0.5;", MACHINE, max_steps=3_000_000)
     assert result["error"]["code"] == "RUN005", result["error"]
     assert result["error"]["line"] == 5
     assert "task 0 at line 5" in result["error"]["message"]
 
 
-def test_a_counter_that_releases_the_wait_later_is_no_deadlock(tmp_path):
+def test_a_counter_that_releases_the_wait_later_is_no_deadlock(sap_on):
     # task 1 counts in CI3 and sets CI0 after 4000 rounds (~26 s of card time, past two quiet windows):
     # it assigns CI0, which task 0 reads, so task 0 may still be released, and it is
-    result = _run(tmp_path, MONITOR % "CI3 := CI3 + 1; if CI3 = 4000 then CI0 := 1;")
+    result = sap_on(MONITOR % "CI3 := CI3 + 1; if CI3 = 4000 then CI0 := 1;", MACHINE, max_steps=3_000_000)
     assert result["error"] is None, result["error"]
     assert "released" in result["output"]

@@ -12,11 +12,6 @@ both tasks' lines, not RUN001.
 
 from __future__ import annotations
 
-from pathlib import Path
-
-from ncvm.api import run
-from ncvm.runtime.session import RunOptions
-
 PROGRAM = """{$TASK 0}
 program T0;
 begin
@@ -40,12 +35,8 @@ end.
 MACHINE = '[[axis]]\nname = "X"\n[[axis]]\nname = "Y"\n[[axis]]\nname = "Z"\n'
 
 
-def test_deadlock_beside_a_clock_reading_monitor_is_run005(tmp_path: Path):
-    (tmp_path / "machine.toml").write_text(MACHINE)
-    prog = tmp_path / "dl.sap"
-    prog.write_text(PROGRAM)
-    result, _ = run(prog, dialect="sympas", machine=tmp_path / "machine.toml",
-                    options=RunOptions(state_dir=tmp_path / ".s", max_steps=2_000_000))
+def test_deadlock_beside_a_clock_reading_monitor_is_run005(sap_on):
+    result = sap_on(PROGRAM, MACHINE, max_steps=2_000_000)
     assert result["error"] is not None
     assert result["error"]["code"] == "RUN005", result["error"]
     # task 1 sleeps in its WT(100) (line 16) whenever the others look: that is the line it stands at

@@ -107,6 +107,10 @@ def _err(ln: Linked, code: str, detail: str, s: A.Stmt) -> None:
     ln.diagnostics.append(diag(code, detail, ln.prog.path, s.line, s.col or None, s.cpl))
 
 
+#: the statement that ends a WHILE or REPEAT loop: (its opener, the error without one, its key in ln.pair)
+_LOOP_ENDS = {A.WEnd: (A.While, "END without WHILE", "while"), A.Until: (A.Repeat, "UNTIL without REPEAT", "repeat")}
+
+
 def _pair(ln: Linked) -> None:
     stmts = ln.prog.stmts
     stack: list[int] = []
@@ -186,26 +190,17 @@ def _pair(ln: Linked) -> None:
             fors.pop()
             ln.pair[j]["end"] = i
             ln.pair[i] = {"for": j}
-        elif t is A.While:
+        elif t is A.While or t is A.Repeat:
             stack.append(i)
             ln.pair[i] = {"end": None}
-        elif t is A.WEnd:
-            if not isinstance(top, A.While):
-                _err(ln, "CPL004", "END without WHILE", s)
+        elif t in _LOOP_ENDS:
+            opener, without, key = _LOOP_ENDS[t]
+            if not isinstance(top, opener):
+                _err(ln, "CPL004", without, s)
                 continue
             j = stack.pop()
             ln.pair[j]["end"] = i
-            ln.pair[i] = {"while": j}
-        elif t is A.Repeat:
-            stack.append(i)
-            ln.pair[i] = {"end": None}
-        elif t is A.Until:
-            if not isinstance(top, A.Repeat):
-                _err(ln, "CPL004", "UNTIL without REPEAT", s)
-                continue
-            j = stack.pop()
-            ln.pair[j]["end"] = i
-            ln.pair[i] = {"repeat": j}
+            ln.pair[i] = {key: j}
     ln.prog_fors[len(stmts)] = tuple(fors)
     closers = {A.If: "ENDIF", A.Case: "ENDCASE", A.For: "NEXT", A.While: "END", A.Repeat: "UNTIL"}
     for j in stack:

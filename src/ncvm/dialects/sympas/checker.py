@@ -92,6 +92,17 @@ class Checker:
     def err(self, code: str, msg: str, node):
         raise SympasError(code, msg, node.file, node.line, node.col)
 
+    def undeclared(self, node):
+        """Error 3: `node` names nothing declared before it."""
+        self.err("3", f"'{node.name}' is not declared (or used before its declaration)", node)
+
+    def declared(self, node, scope=None):
+        """The symbol `node` names in `scope` (the current one by default); error 3 where there is none."""
+        sym = (self.scope if scope is None else scope).lookup(node.name)
+        if sym is None:
+            self.undeclared(node)
+        return sym
+
     # -- program -----------------------------------------------------------------
     def program(self, prog: A.Program) -> None:
         g = Scope(self.predef)
@@ -134,9 +145,7 @@ class Checker:
                 if v.name.upper() in ("TRUE", "FALSE"):
                     val, ty = v.name.upper() == "TRUE", "boolean"
                 else:
-                    c = scope.lookup(v.name)
-                    if c is None:
-                        self.err("3", f"'{v.name}' is not declared (or used before its declaration)", v)
+                    c = self.declared(v, scope)
                     if not isinstance(c, Const):
                         self.err("SP001", f"'{v.name}' is not a constant (constant expressions are not possible)", v)
                     val, ty = c.value, c.ty
@@ -258,9 +267,7 @@ class Checker:
         elif isinstance(s, A.For):
             v = s.var
             if isinstance(v, A.Name):
-                sym = self.scope.lookup(v.name)
-                if sym is None:
-                    self.err("3", f"'{v.name}' is not declared (or used before its declaration)", v)
+                sym = self.declared(v)
                 if not isinstance(sym, Var) or sym.ty != "integer":
                     self.err("SP003", f"the control variable '{v.name}' must be an integer variable", v)
                 v.sym, v.ty = sym, "integer"
@@ -300,7 +307,7 @@ class Checker:
                 if sp is not None:
                     sym = sp
             if sym is None:
-                self.err("3", f"'{t.name}' is not declared (or used before its declaration)", t)
+                self.undeclared(t)
             if isinstance(sym, Routine) and sym.result:
                 r = self.scope.routine
                 if r is None or r is not sym:
@@ -321,9 +328,7 @@ class Checker:
 
     def qual(self, q: A.Qual, write: bool = False) -> str:
         ax = q.axis
-        sym = self.scope.lookup(ax.name)
-        if sym is None:
-            self.err("3", f"'{ax.name}' is not declared (or used before its declaration)", ax)
+        sym = self.declared(ax)
         if not (isinstance(sym, AxisSpec) or isinstance(sym, Var) and sym.ty == "axis"):
             self.err("SP003", f"'{ax.name}' is not an axis specifier or AXIS variable", ax)
         ax.sym = sym
@@ -339,9 +344,7 @@ class Checker:
                 self.err("SP006", f"'{name}' bits are read only; only digob bits can be written", q)
             b = q.bit
             if isinstance(b, A.Name):
-                c = self.scope.lookup(b.name)
-                if c is None:
-                    self.err("3", f"'{b.name}' is not declared (or used before its declaration)", b)
+                c = self.declared(b)
                 if not isinstance(c, Const) or c.ty != "integer":
                     self.err("SP003", f"bit number '{b.name}' must be an integer constant", b)
                 b = c.value
@@ -399,9 +402,7 @@ class Checker:
             return c.ty
         b = BUILTINS.get(up)
         if b is None:
-            if sym is None and c.args == [] and not c.parens:
-                self.err("3", f"'{c.name}' is not declared (or used before its declaration)", c)
-            self.err("3", f"'{c.name}' is not declared (or used before its declaration)", c)
+            self.undeclared(c)
         c.sym = b
         c.name = up
         if b.form == "F":
@@ -477,9 +478,7 @@ class Checker:
 
     def axis_item(self, a, c) -> None:
         node = a if isinstance(a, A.Name) else a
-        sym = self.scope.lookup(node.name)
-        if sym is None:
-            self.err("3", f"'{node.name}' is not declared (or used before its declaration)", node)
+        sym = self.declared(node)
         if not (isinstance(sym, AxisSpec) or isinstance(sym, Var) and sym.ty == "axis"):
             self.err("SP005", f"{c.name}: '{node.name}' is not an axis specifier or AXIS variable", node)
         return sym
@@ -590,7 +589,7 @@ class Checker:
             b = BUILTINS.get(up)
             if b is not None and b.form == "F":
                 self.err("SP005", f"{up} needs its argument list", e)
-            self.err("3", f"'{e.name}' is not declared (or used before its declaration)", e)
+            self.undeclared(e)
         e.sym = sym
         if isinstance(sym, (Var, Const)):
             self.touch(sym)

@@ -2,12 +2,6 @@
 
 from __future__ import annotations
 
-import os
-import signal
-import subprocess
-import sys
-import time
-
 from ncvm.dialects.cpl.io.files import CplFiles
 
 WRITER = """
@@ -37,18 +31,10 @@ def records(path):
     return data[:-2].split("\n")[:-1]
 
 
-def test_writer_killed_at_any_moment_keeps_every_completed_record(tmp_path):
-    env = dict(os.environ, PYTHONPATH=os.pathsep.join(sys.path))
+def test_writer_killed_at_any_moment_keeps_every_completed_record(tmp_path, killed_writer):
     last = 0
     for delay in (0.05, 0.13, 0.21, 0.29):
-        proc = subprocess.Popen([sys.executable, "-c", WRITER, str(tmp_path)], stdout=subprocess.PIPE, text=True,
-                                env=env)
-        first = proc.stdout.readline()
-        assert first.strip().isdigit()
-        time.sleep(delay)
-        proc.send_signal(signal.SIGKILL)
-        printed = [int(x) for x in [first, *proc.stdout.read().split()] if str(x).strip()]
-        proc.wait()
+        printed = killed_writer(WRITER, delay)
         seq = records(tmp_path / "LOG")
         rnd = records(tmp_path / "RND")
         assert len(seq) >= max(printed), "a record reported as written was lost"
