@@ -153,3 +153,11 @@ def test_repeated_address_reports_the_second_word(run_text):
 def test_feed_rate_faults_name_the_feed(run_text, text, message):
     r = run_text(text, name="p.din")
     assert r["error"]["code"] == "NC006" and message in r["error"]["message"]
+
+
+def test_tool_change_comes_before_tool_length_offset_in_one_block(run_text):
+    """LinuxCNC's order of execution (the iso profile's reference): "change tool" (M6) runs before "tool
+    length offset" (G43), so ``T2 M6 G43`` takes tool 2's length, not the length of the tool it replaces."""
+    m = machine(tool=[{"number": 1, "length": 10.0}, {"number": 2, "length": 30.0}])
+    r = run_text("T1 M6\nG43\nG0 Z0\nT2 M6 G43\nG0 Z0\n", machine=m)
+    assert r["motion"]["bounds"]["Z"] == pytest.approx([0, 30])

@@ -37,7 +37,7 @@ from .canon import NOBODY, ArcSpec, Canon, Frame, Src
 from .dynamics import AxisDynamics, arc_limits, path_limits
 from .fastmove import make_linear
 from .planner import LOOKAHEAD, POSITIONING, STOP_END, Planner, arc_tangents
-from .profiles import CYCLE, DWELL, LATE, MACHINE, MOTION, POSITION, SET, Profile, unknown_g
+from .profiles import AFTER_TOOL_CHANGE, CYCLE, DWELL, LATE, MACHINE, MOTION, POSITION, SET, Profile, unknown_g
 from .profiles import INCH as INCH  # the unit of G70, read by the dialects
 
 #: plane G number -> (first axis, second axis, normal axis, first centre word, second centre word)
@@ -297,6 +297,7 @@ class NcKernel:
         motion = self.motion
         handlers = self.g_handlers
         extra = None
+        after_change = None
         cycle_g = False
         block_stop = False
         path_codes = self.path_codes
@@ -324,6 +325,8 @@ class NcKernel:
                 dwell_block = True
             elif run == LATE:
                 extra = [g] if extra is None else extra + [g]
+            elif run == AFTER_TOOL_CHANGE:
+                after_change = [g] if after_change is None else after_change + [g]
             elif run == CYCLE:
                 if self.canned is None or g not in self.canned.codes:
                     if g != 80:
@@ -373,6 +376,9 @@ class NcKernel:
             block_stop = True
             for mc in block.m:
                 self._m_before(mc, src)
+        if after_change is not None:  # the profile's order of execution: the tool change first
+            for g in after_change:
+                table[g][1](self, g, words, src)
         if dwell_block:
             # LinuxCNC writes the time as P, SINUMERIK and DIN controls as X or F (seconds)
             seconds = words.get("P", words.get("X", words.get("F", 0.0)))

@@ -96,6 +96,15 @@ def test_h_word_is_the_tool_length_compensation_l1573(run):
     assert (v["A"], v["C"], v["H%"], v["I%"]) == (25.0, 0.0, 3, -1)
 
 
+def test_h_word_with_a_tool_change_in_its_block_takes_its_compensation_group_l1573(run):
+    """``T1 M6 H3``: H names compensation group 3 of the selected table (TC selection 1, L1854), not the tool
+    in the spindle, so the tool change in the same block does not change the length (25, not tool 1's 7)."""
+    r = run("N1 T1 M6 H3 G0 Z0\n2 WAIT\n3 A=MPOS(3)\nM30\n",
+            tool=[{"number": 1, "length": 7.0}, {"number": 3, "length": 25.0}])
+    assert r["status"] == "ok", r["error"]
+    assert r["variables"]["A"] == 25.0
+
+
 def test_h_word_beyond_the_compensation_groups_stops_l1854(run):
     r = run("N1 H49 G0 Z0\nM30\n")
     assert r["error"]["code"] == "NC009" and "1..48" in r["error"]["message"]

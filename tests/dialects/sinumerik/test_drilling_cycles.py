@@ -153,3 +153,34 @@ def test_check_warns_of_a_missing_cycle_program_as_the_run_stops(tmp_path):
     _l81(tmp_path)
     (tmp_path / "L82.spf").write_text("%SPF82\nG4 F0.5\nM17\n")
     assert check(prog, dialect="sin800", machine=tmp_path / "machine.toml") == []
+
+
+def test_check_does_not_warn_at_a_block_that_deselects_in_the_same_block_l7406(tmp_path):
+    """``G81 X10 G80``: group 9 (L7406) keeps one function per block, the last one written, so the block
+    deselects and the run passes it without L81; check agrees (no RUN002). A later block that selects G81
+    alone is where the run stops, and there check warns."""
+    from ncvm.api import check
+
+    (tmp_path / "machine.toml").write_text(machine())
+    prog = tmp_path / "p.mpf"
+    prog.write_text("%MPF1\nG0 X0 Y0 Z10\nG81 X10 G80\nX20\nG81 X30\nM30\n")
+    diags = check(prog, dialect="sin800", machine=tmp_path / "machine.toml")
+    assert [(d.code, d.span.line) for d in diags] == [("RUN002", 5)]
+    result = run_mpf(tmp_path, prog.read_text())
+    assert result["status"] == "error" and result["error"]["code"] == "RUN002" and result["error"]["line"] == 5
+
+
+def test_check_of_a_cl800_source_warns_of_the_missing_cycle_at_its_statement_l7406(tmp_path):
+    """A CL 800 program whose DIN block selects G81 (L7406) without L81 on the program path: check warns RUN002
+    at the source line of that block, by the rule sin800 check uses on the object program; with L81.spf
+    there the check is clean."""
+    from ncvm.api import check
+
+    (tmp_path / "machine.toml").write_text(machine())
+    prog = tmp_path / "drill.cl8"
+    prog.write_text("PROGRAM 82;\nCHANNEL NC 0;\nBEGIN\n  LF; (: G90 G00 X0 Y0 Z10 :); LF;\n"
+                    "  (: R2=2 R3=-5 G81 X10 :); LF;\n  (: G80 :); LF;\nEND.\n")
+    diags = check(prog, machine=tmp_path / "machine.toml")
+    assert [(d.code, d.severity, d.span.line) for d in diags] == [("RUN002", "warning", 5)]
+    _l81(tmp_path)
+    assert [d.code for d in check(prog, machine=tmp_path / "machine.toml")] == []

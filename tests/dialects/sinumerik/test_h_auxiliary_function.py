@@ -43,3 +43,14 @@ def test_h_word_is_no_refused_address_in_check(tmp_path):
     path.write_text("%MPF1\nG0 X1 H7\nM30\n")
     assert [d.code for d in check(path, dialect="sin800", machine=tmp_path / "m.toml")] == []
     assert run_mpf(tmp_path, "%MPF1\nG0 X1 H7\nM30\n")["status"] == "ok"
+
+
+def test_l3072_every_h_word_of_a_block_goes_to_the_plc_in_the_blocks_order(tmp_path):
+    """Several H words in one block: each is an auxiliary function output to the PLC (L3072), as each M word
+    of a block is, in the order the block writes them; constant values (a plain block) and values read from R
+    parameters (``H=R1``) alike, and on a block that moves."""
+    proc, rows = _trace_run(tmp_path, "%MPF1\nH12 H13 H2\nR1=5 R2=6\nG1 F100 X10 H=R1 H7 H=R2\nM30\n")
+    assert proc.returncode == 0, proc.stderr
+    aux = [(r["code"], r["line"]) for r in rows if r["call"] == "aux"]
+    assert aux == [("H12", 2), ("H13", 2), ("H2", 2), ("H5", 4), ("H7", 4), ("H6", 4)]
+    assert json.loads(proc.stdout)["position"]["X"] == 10.0

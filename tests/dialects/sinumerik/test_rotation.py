@@ -228,3 +228,16 @@ def test_a_plane_axis_missing_in_a_block_that_changes_the_zero_offset_stays_put(
 
 MACHINE_OFFSETS = ('[[axis]]\nname = "X"\n[[axis]]\nname = "Y"\n[[axis]]\nname = "Z"\n'
                    '[offsets]\nG54 = [0.0, 0.0, 0.0]\nG55 = [5.0, 7.0, 0.0]\n[sin800]\ncontrol = "880"\n')
+
+
+def test_l2594_acpw_under_a_settable_rotation_is_the_dimension_from_the_workpiece_zero(tmp_path):
+    """ACPW (@360) reads "the dimension between the workpiece zero W and tool starting position P" per axis
+    (L2594). The settable rotation (ZOADW, L3247) turns the program about W and leaves W where G54 puts it,
+    so after ``G54 X10 Y0`` under 30 degrees the tool stands at (10 cos30, 10 sin30) from W along axes 1
+    and 2: ACPW = (8.660254, 5), ACPM (@361, L2605) that plus G54's shift (100, 0)."""
+    r = _run(tmp_path, "%MPF1\n@437 K0 K1 K1 K30\nG54 G90 G0 X10 Y0\n"
+                       "@714 @360 R1 K1 @360 R2 K2 @361 R3 K1 @361 R4 K2\nM30\n",
+             "[offsets]\nG54 = [100.0, 0.0, 0.0]\n")
+    v = r["variables"]
+    assert (v["R1"], v["R2"]) == pytest.approx((8.660254, 5.0))
+    assert (v["R3"], v["R4"]) == pytest.approx((108.660254, 5.0))

@@ -19,7 +19,7 @@ from ...nc.canon import Src
 from ...runtime.codegen import PySource
 from ...source import read_text
 from ..base import Dialect
-from .codegen import UnitCodegen, axis_diagnostics, g_word, refused_g_diagnostics
+from .codegen import UnitCodegen, axis_diagnostics, refused_g_diagnostics
 from .drilling import missing_cycle_warnings
 from .lint import stop_dec_lint
 from .ncdata import NAMESPACE, NcData
@@ -107,8 +107,7 @@ class Sin800Dialect(Dialect):
             return diags if all_errors else diags[:1]
         radius = options(machine).radius_address
         # the lint (§10.5) and what the run will refuse are warnings
-        uses = [(it.value, blk.line, it.col) for blk in prog.blocks for it in blk.items if g_word(it)]
-        cycles = missing_cycle_warnings(path, uses, SubProgramLibrary(machine).find)
+        cycles = missing_cycle_warnings(prog, SubProgramLibrary(machine).find)
         return (axis_diagnostics(prog, machine.axis_names, radius) + refused_g_diagnostics(prog) + cycles
                 + stop_dec_lint(prog))
 

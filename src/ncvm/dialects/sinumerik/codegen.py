@@ -255,6 +255,8 @@ class UnitCodegen:
                 if int(it.value) in (0, 1, 2, 17, 30) or int(it.value) not in _STANDARD_M:
                     return None  # stops and ends need checks; PLC M functions may load R parameters
                 m.append(int(it.value))
+            elif it.address == "H" and "H" in words and "H" not in self.axes:
+                words["H"] = more_h(words["H"], it.value)  # every H goes to the PLC (auxiliary_h)
             else:
                 words["R" if it.address == self.radius and self.radius not in self.axes else it.address] = it.value
         if not g and not m and not words and msg is None:
@@ -607,6 +609,12 @@ def _jump_numbers(it: AtInstr):
         yield int(ops[2].value)
 
 
+def more_h(values, value: float) -> tuple:
+    """The H values of a block with one more: every auxiliary function goes to the PLC, as every M word
+    does, in the block's order (L3072); the block carries their tuple (profile ``auxiliary_h``)."""
+    return (*values, value) if values.__class__ is tuple else (values, value)
+
+
 class _Record:
     """The block record under construction: DIN words, setpoints from @44x, the L call."""
 
@@ -687,7 +695,17 @@ class _Record:
             self._captured += 1
             out.emit(f"{tmp} = {expr}", self.blk.line)
             expr = tmp
+        if a == "H" and "H" not in cg.axes and any(k == "'H'" for k, _v, _c in self.words):
+            self.more_h(expr)
+            return
         self.words.append((repr(a), expr, const))
+
+    def more_h(self, expr: str) -> None:
+        """A further H word of the block, as the module's :func:`more_h`, for values known at run time."""
+        i = next(i for i, w in enumerate(self.words) if w[0] == "'H'")
+        before = self.words[i][1]
+        values = f"{before[:-1]}, {expr})" if before.startswith("(") else f"({before}, {expr})"
+        self.words[i] = ("'H'", values, False)
 
     def capture(self, out: PySource, op: Operand) -> str:
         """A temporary holding the operand's value where the @ code stands in the block."""

@@ -36,16 +36,33 @@ def missing_cycle(g: int) -> str:
             f"(looked for L{g}.spf and %SPF{g} files)")
 
 
-def missing_cycle_warnings(path: str, uses, find) -> list[Diagnostic]:
+def selections(prog) -> list[tuple[int, int, int]]:
+    """(G number, line, column) of each block's selection in group 9: its last G80-G89 word, as the run
+    takes it (``N2 G81 X10 G80`` deselects, and the run passes it)."""
+    out = []
+    for blk in prog.blocks:
+        last = None
+        for it in blk.items:
+            if getattr(it, "address", None) == "G" and it.value in GROUP_9:
+                last = (int(it.value), blk.line, it.col)
+        if last is not None:
+            out.append(last)
+    return out
+
+
+def missing_cycle_warnings(prog, find, where=None) -> list[Diagnostic]:
     """``ncvm check``: a warning RUN002 at the first block that selects G81-G89 whose cycle program ``find``
-    (number -> path or None) does not find: the run stops there. ``uses``: (G number, line, column)."""
+    (number -> path or None) does not find: the run stops there. ``prog``: the NC program (a sin800 program,
+    or the object program of a CL 800 source); ``where`` maps its (line, column) to the (line, column) to
+    report (the CL 800 source's), None: as they are."""
     out, seen = [], set()
-    for g, line, column in uses:
-        if g in GROUP_9 and g != 80 and g not in seen:
+    for g, line, column in selections(prog):
+        if g != 80 and g not in seen:
             seen.add(g)
-            if find(int(g)) is None:
-                out.append(Diagnostic("RUN002", missing_cycle(int(g)) + ": the run stops here",
-                                      Span(path, line, column), severity="warning"))
+            if find(g) is None:
+                at = (line, column) if where is None else where(line, column)
+                out.append(Diagnostic("RUN002", missing_cycle(g) + ": the run stops here",
+                                      Span(prog.path, *at), severity="warning"))
     return out
 
 

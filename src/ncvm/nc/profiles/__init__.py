@@ -34,6 +34,9 @@ MACHINE = 4  # the block's target is in machine coordinates (LinuxCNC G53)
 ALONE = 5  # handler runs and the block ends there (G10 L2: a table write, no motion)
 CYCLE = 6  # a canned cycle code (kernel.canned), or NC004 while the profile has none
 LATE = 7  # handler runs after the block's other G codes, returns True when the axis words were its parameters
+#: handler runs after the block's tool change (M6): LinuxCNC's order of execution changes the tool (step 6)
+#: before it applies the tool length offset (step 14), so ``T1 M6 G43`` takes tool 1's length
+AFTER_TOOL_CHANGE = 8
 
 
 class Row(FrozenRecord):

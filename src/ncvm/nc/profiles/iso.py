@@ -9,7 +9,21 @@ from __future__ import annotations
 
 from .. import cutter, threads
 from ..cycles import CODES as CYCLE_CODES
-from . import ALONE, CYCLE, DWELL, IMPLEMENTED, INCH, MACHINE, MOTION, POSITION, SET, Profile, Row, refused
+from . import (
+    AFTER_TOOL_CHANGE,
+    ALONE,
+    CYCLE,
+    DWELL,
+    IMPLEMENTED,
+    INCH,
+    MACHINE,
+    MOTION,
+    POSITION,
+    SET,
+    Profile,
+    Row,
+    refused,
+)
 
 WORK_OFFSETS = {54: "G54", 55: "G55", 56: "G56", 57: "G57", 58: "G58", 59: "G59"}
 
@@ -105,9 +119,9 @@ ROWS = (
          "rs274 group 7", SET, cutter_comp),
     _row(42.1, "7 cutter radius compensation", "dynamic cutter radius compensation right, D = tool diameter",
          "rs274 group 7", SET, cutter_comp),
-    _row(43, "8 tool length offset", "tool length offset (H)", "rs274 group 8", SET, tool_length),
-    _row(44, "8 tool length offset", "tool length offset, negative (H)", "rs274 group 8", SET, tool_length),
-    _row(49, "8 tool length offset", "tool length offset off", "rs274 group 8", SET, tool_length_off),
+    _row(43, "8 tool length offset", "tool length offset (H)", "rs274 group 8", AFTER_TOOL_CHANGE, tool_length),
+    _row(44, "8 tool length offset", "tool length offset, negative (H)", "rs274 group 8", AFTER_TOOL_CHANGE, tool_length),
+    _row(49, "8 tool length offset", "tool length offset off", "rs274 group 8", AFTER_TOOL_CHANGE, tool_length_off),
     _row(53, "0 non-modal", "move in machine coordinates (this block)", "rs274 group 0", MACHINE),
     *(_row(g, "12 coordinate system", f"select work offset {name}", "rs274 group 12", SET, work_offset)
       for g, name in WORK_OFFSETS.items()),

@@ -60,11 +60,13 @@ def tool_length_kept(k) -> list[float]:
 def auxiliary_h(k, value, words, src) -> None:
     """H<n>: an auxiliary function output to the PLC, as a machine-specific M function is (machine data bit
     5400.0 decides whether auxiliary functions go to the PLC, L3072): no motion of its own; the axes stand
-    while the PLC takes it, and the trace records it (docs/decisions.md, "Issue 14: the H word")."""
-    code = f"H{value:g}"
+    while the PLC takes it, and the trace records it (docs/decisions.md, "Issue 14: the H word"). A block
+    with several H words carries the tuple of their values: each goes to the PLC, in the block's order."""
     k.planner.stop()
-    k.machine.plc.outputs[code] = True
-    k.canon.aux(code, src)
+    for v in value if value.__class__ is tuple else (value,):
+        code = f"H{v:g}"
+        k.machine.plc.outputs[code] = True
+        k.canon.aux(code, src)
 
 
 def _row(g, group, meaning, run=SET, handler=None, status=IMPLEMENTED, line=TABLE):

@@ -18,13 +18,14 @@ from ....nc.canon import Src
 from ....outpaths import refuse_overwrite, write_output
 from ... import get_dialect
 from ...base import Dialect
+from .. import SubProgramLibrary
 from ..options import options as sin800_options
 from . import ast
 from .axiswords import axis_diagnostics
 from .checker import check_program
 from .codegen import MARK, ObjectProgram, compile_program, marked, written_by_ncvm
 from .errors import CompilerMessage
-from .stopdec import stop_dec_diagnostics
+from .stopdec import nc_diagnostics
 
 _SNIFF = re.compile(r"^\s*(PROGRAM\s+\d+\s*;|EXTERNAL\s+\d+\s*;|CHANNEL\s+NC\s+\d+|BEGIN\b|END\.|ENDEXTERN)", re.M)
 
@@ -95,7 +96,7 @@ class Cl800Dialect(Dialect):
             except CompilerMessage as e:
                 diags.append(e.diagnostic())
             else:
-                diags += stop_dec_diagnostics(path, obj)
+                diags += nc_diagnostics(path, obj, SubProgramLibrary(machine).find)
         radius = sin800_options(machine).radius_address  # the NC's machine data, [sin800]
         return diags + axis_diagnostics(path, prog, machine.axis_names, radius)
 
