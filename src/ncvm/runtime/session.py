@@ -76,6 +76,7 @@ class RunSinks:
     checks: Checks = field(default_factory=Checks)
     plot: Any = None
     gcode: Any = None  # the --gcode translation file (translate.output.TranslationFile), completed by the API
+    work_bounds: Any = None  # the bounds in the program's work frame (sinks.workbounds.WorkBounds)
 
 
 #: the sinks of a session built without them: api.py installs its choice when it is imported (the ncvm
@@ -105,6 +106,7 @@ class Session:
         chosen = sinks or (_default_sinks(machine, self.options) if _default_sinks else RunSinks())
         self.recorder = chosen.recorder
         self.plot = chosen.plot
+        self.work_bounds = chosen.work_bounds
         #: the checks of the recorded moves; a front end adds its own (e.g. CPL's work areas and dead ranges)
         self.checks = chosen.checks
         sinks = chosen.canon
