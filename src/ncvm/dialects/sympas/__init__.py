@@ -107,7 +107,7 @@ def _span(node):
 #: the frame of each figure of the result: the position as the program reads it (dp, with the zero
 #: offsets in force at the end), the toolpath and the limits as the machine's axes move
 FRAMES = {"position": "program", "bounds_program": "program", "motion.bounds": "machine",
-          "limit_violations": "machine"}
+          "motion.bounds_program": "program", "limit_violations": "machine"}
 
 
 class SympasDialect(Dialect):
