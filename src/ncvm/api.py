@@ -196,8 +196,8 @@ def run_sinks(machine: Machine, options: RunOptions, program: str = "the program
     recorder = ToolpathRecorder(keep=options.keep_toolpath)
     checks = Checks(area_check=partial(zone_check, recorder=recorder))
     checks.add(LimitCheck(machine.axes, recorder))  # reported first, before the front end's checks
-    work_bounds = WorkBounds(recorder)
-    canon: list[CanonSink] = [recorder, work_bounds]  # told of the work frame of the moves
+    work_bounds = WorkBounds(recorder)  # told of the work frame of the moves (a listener of the session's canon)
+    canon: list[CanonSink] = [recorder]
     if options.trace:
         from .sinks.trace import JsonlTrace
 

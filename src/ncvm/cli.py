@@ -293,7 +293,9 @@ def _summary(result: dict, frame: str = "work") -> str:
     on a machine with many axes they are rounded to whole millimetres/degrees, and axes that do not fit are
     named as left to ``--json``."""
     m = result["motion"]
-    bounds, frame = (m["bounds"], "machine") if frame == "machine" else (m["bounds_program"], "program")
+    # a document without the program's bounds (written by an older ncvm) says the machine's, and so
+    bounds, frame = (m["bounds_program"], "program") if frame == "work" and "bounds_program" in m \
+        else (m["bounds"], "machine")
     # a front end may say how a run without error ended ("ended": e.g. by a system reset)
     status = result.get("ended", "ended normally") if result["status"] == "ok" \
         else f"stopped with error {result['error']['code']}"

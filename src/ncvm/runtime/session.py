@@ -112,6 +112,8 @@ class Session:
         sinks = chosen.canon
         self.sinks = sinks
         self.canon = Canon(sinks)
+        if self.work_bounds is not None:  # a listener: a front end that tells one frame for the run removes it
+            self.canon.add(self.work_bounds)
         #: where a place of the program the NC runs stands in the user's source: itself, except for a
         #: program compiled to another one first (a CL 800 run's object program, which is never on disk)
         self.source_place: Callable[[Src], Src] = _same_place
