@@ -29,20 +29,21 @@ class WorkBounds(CanonSink):
 
     def __init__(self, recorder: ToolpathRecorder):
         self._rec = recorder
-        self._frames: list[tuple[int, np.ndarray]] = []  # (first move, offsets removed), from the one in force
-        self._whole: np.ndarray | None = None  # a frame for the whole run (rw_SymPas: told at the end)
+        #: (first move, offsets removed), from the one in force on (tuples: a run without moves needs no numpy)
+        self._frames: list[tuple[int, tuple[float, ...]]] = []
+        self._whole: tuple[float, ...] | None = None  # a frame for the whole run (rw_SymPas: told at the end)
         self._lo: np.ndarray | None = None
         self._hi: np.ndarray | None = None
         recorder.watch(self)
 
     def frame(self, frame, src, whole_run: bool = False) -> None:
-        new = np.asarray(frame.removed(), dtype=float)
+        new = tuple(map(float, frame.removed()))
         if whole_run:
             self._whole = new
             return
         at = len(self._rec)
         if not self._frames and at:  # the moves before the first frame: in the machine's
-            self._frames.append((0, np.zeros(len(new))))
+            self._frames.append((0, (0.0,) * len(new)))
         if self._frames and self._frames[-1][0] == at:
             self._frames[-1] = (at, new)
         else:
@@ -50,13 +51,13 @@ class WorkBounds(CanonSink):
 
     def observe(self, rec: ToolpathRecorder, lo: int, hi: int) -> None:
         if not self._frames:  # no offset yet: the work frame is the machine's
-            self._frames.append((0, np.zeros(len(rec.axis_names))))
+            self._frames.append((0, (0.0,) * len(rec.axis_names)))
         arr = rec.window()
         # the points the program reached: the ends of its moves, and where arcs reach between their ends (not
         # the start of the run, the machine's power-on position, nor a start told in a frame changed since)
         low, high = arr["end"][lo:hi].copy(), arr["end"][lo:hi].copy()
         rec.arc_reach(low, high, lo)
-        shift = np.stack([f[1] for f in self._frames])[in_force(self._frames, rec.base + lo, hi - lo)]
+        shift = np.array([f[1] for f in self._frames], dtype=float)[in_force(self._frames, rec.base + lo, hi - lo)]
         low, high = (low - shift).min(axis=0), (high - shift).max(axis=0)
         self._lo = low if self._lo is None else np.minimum(self._lo, low)
         self._hi = high if self._hi is None else np.maximum(self._hi, high)
@@ -68,7 +69,7 @@ class WorkBounds(CanonSink):
         """Per axis [lowest, highest] work coordinate, given the run's ``machine`` bounds (the recorder's,
         settled); a run in no offset has the machine's."""
         if self._whole is not None:
-            return {a: [lo - s, hi - s] for (a, (lo, hi)), s in zip(machine.items(), self._whole.tolist())}
+            return {a: [lo - s, hi - s] for (a, (lo, hi)), s in zip(machine.items(), self._whole)}
         if self._lo is None:  # no move
             return {}
         names = self._rec.axis_names
