@@ -27,6 +27,7 @@ from .sinks.areas import zone_check
 from .sinks.limits import LimitCheck
 from .sinks.moves import MoveTable
 from .sinks.toolpath import MotionSummary, ToolpathRecorder
+from .sinks.workbounds import WorkBounds
 from .source import read_text
 
 # The trace, the G-code translation and the plot points are imported by the runs that ask for them (start-up).
@@ -133,8 +134,11 @@ class RunResult:
         """The result of ``session``, whose moves ``recorder`` recorded, ended by ``error`` (or None)."""
         labels = session.axis_labels  # the program's axis names (rw_SymPas A1 ...)
         motion = recorder.summary()
+        if session.work_bounds is not None:
+            motion.bounds_program = session.work_bounds.bounds(motion.bounds)
         if labels:
-            motion = dataclasses.replace(motion, bounds={labels.get(a, a): b for a, b in motion.bounds.items()})
+            motion = dataclasses.replace(motion, **{key: {labels.get(a, a): b for a, b in getattr(motion, key).items()}
+                                                    for key in ("bounds", "bounds_program") if getattr(motion, key)})
         return cls(
             dialect=session.dialect, error=error, output=session.output.lines(),
             output_dropped=session.output.dropped, variables=dict(session.variables),
@@ -192,6 +196,7 @@ def run_sinks(machine: Machine, options: RunOptions, program: str = "the program
     recorder = ToolpathRecorder(keep=options.keep_toolpath)
     checks = Checks(area_check=partial(zone_check, recorder=recorder))
     checks.add(LimitCheck(machine.axes, recorder))  # reported first, before the front end's checks
+    work_bounds = WorkBounds(recorder)  # told of the work frame of the moves (a listener of the session's canon)
     canon: list[CanonSink] = [recorder]
     if options.trace:
         from .sinks.trace import JsonlTrace
@@ -212,7 +217,7 @@ def run_sinks(machine: Machine, options: RunOptions, program: str = "the program
 
         plot = PlotPoints(recorder, frame=options.plot_frame)
         canon.append(plot)  # told of the work frame and of the channel (rw_SymPas task) of the moves
-    return RunSinks(canon, recorder, checks, plot, gcode)
+    return RunSinks(canon, recorder, checks, plot, gcode, work_bounds)
 
 
 #: a Session built directly (tests, tools driving a front end) gets the same sinks as a run

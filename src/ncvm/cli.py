@@ -170,7 +170,8 @@ def _batch_options(f):
 @click.option("--gcode", type=click.Path(dir_okay=False), help="Write the motion as flat G-code.")
 @click.option("--plot", type=click.Path(dir_okay=False), help="Draw the toolpath (.png, .svg or .pdf).")
 @click.option("--plot-frame", type=click.Choice(["work", "machine"]), default="work", show_default=True,
-              help="Coordinates of the plot: the program's (zero offsets and tool length taken off) or the machine's.")
+              help="Coordinates of the plot and of the summary line's bounds: the program's (zero offsets and "
+                   "tool length taken off) or the machine's.")
 @click.option("--max-steps", type=click.IntRange(min=1), default=100_000_000, show_default=True,
               help="Stop a runaway program after this many statements and blocks.")
 @click.option("--max-memory", metavar="SIZE",
@@ -264,7 +265,7 @@ def run(programs, dialect, machine, state_dir, as_json, trace, gcode, plot, plot
             say(f"warning: {v}")
         if "editor_block" in result:
             click.echo(f"ncvm: editor block: {result['editor_block']}", err=True)
-        say(_summary(result))
+        say(_summary(result, plot_frame))
     sys.exit(EXIT_FAULT if result["error"] else EXIT_OK)
 
 
@@ -295,14 +296,15 @@ def _stdin_is_terminal() -> bool:
 SUMMARY_WIDTH = 160  # characters of the run's summary line (docs/decisions.md)
 
 
-def _summary(result: dict) -> str:
+def _summary(result: dict, frame: str = "work") -> str:
     """One compact line (at most SUMMARY_WIDTH characters); every figure in full stands in ``--json``.
-    Bounds say their frame: the program's (rw_SymPas) or the machine's; on a machine with many axes they are
-    rounded to whole millimetres/degrees, and axes that do not fit are named as left to ``--json``."""
+    Bounds say their frame: the program's work frame (``frame`` "work", as the plot draws) or the machine's;
+    on a machine with many axes they are rounded to whole millimetres/degrees, and axes that do not fit are
+    named as left to ``--json``."""
     m = result["motion"]
-    bounds, frame = m["bounds"], "machine"
-    if "frames" in result and result.get("bounds_program"):  # rw_SymPas: the program's, as the user wrote them
-        bounds, frame = result["bounds_program"], "program"
+    # a document without the program's bounds (written by an older ncvm) says the machine's, and so
+    bounds, frame = (m["bounds_program"], "program") if frame == "work" and "bounds_program" in m \
+        else (m["bounds"], "machine")
     # a front end may say how a run without error ended ("ended": e.g. by a system reset)
     status = result.get("ended", "ended normally") if result["status"] == "ok" \
         else f"stopped with error {result['error']['code']}"

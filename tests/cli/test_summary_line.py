@@ -26,13 +26,18 @@ def test_counts_and_path_write_thousands_alike(tmp_path):
     assert "1,002 moves" in line and "path 1,001.0 mm" in line, line
 
 
-def test_bounds_name_the_machine_frame_and_json_keeps_them_in_full(tmp_path):
+def test_bounds_name_their_frame_and_json_keeps_them_in_full(tmp_path):
+    """The program's bounds by default (the points it reached; not the machine's zero where the run began),
+    the machine's with --plot-frame machine; both in full in --json."""
     program = "N1 G90 G0 X-12.3456 Y7 Z3\nN2 G1 X20 F1000\nN3 M30\n"
     done = run(tmp_path, program)
     assert done.returncode == 0, done.stderr
+    assert "program X[-12.35,20] Y[7,7] Z[3,3]" in done.stderr.splitlines()[-1]
+    done = run(tmp_path, program, "--plot-frame", "machine")
     assert "machine X[-12.35,20] Y[0,7] Z[0,3]" in done.stderr.splitlines()[-1]
     done = run(tmp_path, program, "--json")
     assert json.loads(done.stdout)["motion"]["bounds"]["X"] == [-12.3456, 20.0]
+    assert json.loads(done.stdout)["motion"]["bounds_program"]["Y"] == [7.0, 7.0]
 
 
 def test_many_axes_are_rounded_and_then_named_as_left_to_json():

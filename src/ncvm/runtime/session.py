@@ -77,6 +77,7 @@ class RunSinks:
     checks: Checks = field(default_factory=Checks)
     plot: Any = None
     gcode: Any = None  # the --gcode translation file (translate.output.TranslationFile), completed by the API
+    work_bounds: Any = None  # the bounds in the program's work frame (sinks.workbounds.WorkBounds)
 
 
 #: the sinks of a session built without them: api.py installs its choice when it is imported (the ncvm
@@ -106,11 +107,14 @@ class Session:
         chosen = sinks or (_default_sinks(machine, self.options) if _default_sinks else RunSinks())
         self.recorder = chosen.recorder
         self.plot = chosen.plot
+        self.work_bounds = chosen.work_bounds
         #: the checks of the recorded moves; a front end adds its own (e.g. CPL's work areas and dead ranges)
         self.checks = chosen.checks
         sinks = chosen.canon
         self.sinks = sinks
         self.canon = Canon(sinks)
+        if self.work_bounds is not None:  # a listener: a front end that tells one frame for the run removes it
+            self.canon.add(self.work_bounds)
         #: where a place of the program the NC runs stands in the user's source: itself, except for a
         #: program compiled to another one first (a CL 800 run's object program, which is never on disk)
         self.source_place: Callable[[Src], Src] = _same_place

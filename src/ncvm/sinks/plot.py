@@ -23,6 +23,7 @@ from pathlib import Path
 from ..lazy import lazy
 from ..nc.canon import CanonSink
 from .toolpath import ARC, FEED, RAPID, ToolpathRecorder
+from .workbounds import in_force
 
 np = lazy("numpy")
 
@@ -112,11 +113,6 @@ class PlotPoints(CanonSink):
             self.first = (np.asarray(self.first) - d).tolist()
             self.last = (np.asarray(self.last) - d).tolist()
 
-    def _per_move(self, marks: list[tuple[int, object]], first: int, n: int) -> np.ndarray:
-        """Index into ``marks`` of the entry in force for moves first..first+n (before the first: the first)."""
-        starts = np.array([m[0] for m in marks])
-        return np.maximum(np.searchsorted(starts, np.arange(first, first + n), side="right") - 1, 0)
-
     @property
     def thinned(self) -> bool:
         return bool(self._passes)
@@ -138,11 +134,11 @@ class PlotPoints(CanonSink):
         start, end = arr["start"][lo:hi], arr["end"][lo:hi]
         shift = None
         if self._frames:  # the workpiece's coordinates: each move less the offsets in force for it
-            which = self._per_move(self._frames, rec.base + lo, hi - lo)
+            which = in_force(self._frames, rec.base + lo, hi - lo)
             shift = np.stack([f[1] for f in self._frames])[which]
             start, end = start - shift, end - shift
         if self._channels:
-            which = self._per_move(self._channels, rec.base + lo, hi - lo)
+            which = in_force(self._channels, rec.base + lo, hi - lo)
             tool = np.array([c[1] for c in self._channels], dtype=np.int64)[which]
         if self.first is None:  # the approach from the start position (see the module's docstring)
             skip = self._approach_rows(kind, start, end)

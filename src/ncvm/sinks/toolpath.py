@@ -36,11 +36,13 @@ class MotionSummary:
     arc_moves: int
     rapid_length: float
     feed_length: float
-    bounds: dict[str, list[float]]
+    bounds: dict[str, list[float]]  # the machine's
+    bounds_program: dict[str, list[float]] | None = None  # the program's work frame (sinks.workbounds)
 
     def to_json(self) -> dict:
         return {"rapid_moves": self.rapid_moves, "feed_moves": self.feed_moves, "arc_moves": self.arc_moves,
-                "rapid_length": self.rapid_length, "feed_length": self.feed_length, "bounds": self.bounds}
+                "rapid_length": self.rapid_length, "feed_length": self.feed_length, "bounds": self.bounds,
+                "bounds_program": self.bounds if self.bounds_program is None else self.bounds_program}
 
 
 class ToolpathRecorder(CanonSink):

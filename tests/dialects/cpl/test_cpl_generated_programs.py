@@ -57,7 +57,7 @@ def test_cli_runs_the_written_file_by_its_marker(machine, tmp_path, run_text):
     p = subprocess.run([sys.executable, "-m", "ncvm", "run", "--state", str(tmp_path / "st"), "files/PGEN"],
                        cwd=tmp_path, capture_output=True, text=True, timeout=120)
     assert p.returncode == 0, p.stderr
-    assert "ended normally" in p.stderr and "X[0,12.5]" in p.stderr
+    assert "ended normally" in p.stderr and "program X[12.5,12.5]" in p.stderr
 
 
 def test_call_din_of_a_program_written_in_the_same_run_l1097(run_text, machine):

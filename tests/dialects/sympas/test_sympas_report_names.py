@@ -43,8 +43,9 @@ def test_position_bounds_and_frames_under_the_program_axis_names_L2146(sap):
     assert r["position"] == {"A1": 10.0, "A2": 5.0, "A3": 0.0}
     assert r["motion"]["bounds"] == {"A1": [0.0, 50.0], "A2": [0.0, 5.0], "A3": [0.0, 0.0]}
     assert r["bounds_program"] == {"A1": [-20.0, 30.0], "A2": [0.0, 5.0], "A3": [0.0, 0.0]}
+    assert r["motion"]["bounds_program"] == r["bounds_program"]
     assert r["frames"] == {"position": "program", "bounds_program": "program", "motion.bounds": "machine",
-                           "limit_violations": "machine"}
+                           "motion.bounds_program": "program", "limit_violations": "machine"}
 
 
 def test_every_output_line_has_its_task(sap):

@@ -107,7 +107,7 @@ def _span(node):
 #: the frame of each figure of the result: the position as the program reads it (dp, with the zero
 #: offsets in force at the end), the toolpath and the limits as the machine's axes move
 FRAMES = {"position": "program", "bounds_program": "program", "motion.bounds": "machine",
-          "limit_violations": "machine"}
+          "motion.bounds_program": "program", "limit_violations": "machine"}
 
 
 class SympasDialect(Dialect):
@@ -142,6 +142,8 @@ class SympasDialect(Dialect):
                 units = [u for f, t in texts for u in compile_units(f, t, session.machine, stepping=True)]
         except SympasError as e:
             raise CompileFailed([e.diagnostic()]) from None
+        if session.work_bounds is not None:  # the card's frame is told once, for the whole run, at the end: the
+            session.canon.remove(session.work_bounds)  # bounds need no frame per move (the timeline's hot path)
         card = Card(session, cfg)
         session.controller = card
         tasks = card.scheduler.tasks
@@ -166,6 +168,8 @@ class SympasDialect(Dialect):
             end = card.finish()
             # the plot's work frame: the card's zero point at the end, as the figures of card.summary()
             shift = tuple(card.user_shift(a) for a in card.axes)  # for every move of the run
+            if session.work_bounds is not None:
+                session.canon.add(session.work_bounds)
             session.canon.frame(Frame(None, shift, (0.0,) * len(shift)), None, True)
             if card.recordings:
                 session.extra["recordings"] = {card.names[ax]: rec.to_json(card.names[ax])
