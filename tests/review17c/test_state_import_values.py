@@ -1,0 +1,85 @@
+"""Review of ``ncvm state import`` after its schema fix (issue 17, item 7).
+
+Issue 17 asks for "``ncvm state export/import FILE.json``" of "permanent variables, R parameters, tool and
+offset tables as the store holds them". An import must refuse what no control could hold; these tests show
+values the import still takes and the next run then reads. Each runs the real ``ncvm`` in a process.
+"""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+NCVM = [sys.executable, "-m", "ncvm"]
+ZS_ROWS = [f"G{b}{n}" for b in ("", "1", "2") for n in range(54, 60)]
+
+
+def _ncvm(*args, cwd):
+    return subprocess.run([*NCVM, *args], cwd=cwd, capture_output=True, text=True, timeout=120)
+
+
+def _import(tmp_path: Path, store: dict):
+    path = tmp_path / "edited.json"
+    path.write_text(json.dumps({"format": "ncvm-state", "version": 1, "store": store}, ensure_ascii=False),
+                    encoding="utf-8")
+    return _ncvm("state", "import", "--state", "st", "edited.json", cwd=tmp_path)
+
+
+def _refused(proc, entry: str):
+    assert proc.returncode == 2, f"imported what the control cannot hold: {proc.stderr}"
+    assert "edited.json:" in proc.stderr and entry in proc.stderr, proc.stderr
+
+
+@pytest.mark.parametrize("text", ["é😀€", "a\x00\n"], ids=["non-ascii", "nul-newline"])
+def test_cpl_char_variable_outside_the_controls_character_set_is_refused(tmp_path, text):
+    """A CPL CHARACTER element is one byte of the ASCII set (strings compare "by ASCII code", CPL manual
+    L3749-3770; [REC] 1 byte per character). An edited ``@S`` of emoji or a NUL is imported, and the next run
+    prints it: a value the control could not hold, read by a later run (issue 17: the store "as the store
+    holds them")."""
+    files = tmp_path / "files"
+    files.mkdir()
+    (files / "anwperm.dat").write_text("DEF CHAR @S(3) ;label\n")
+    (tmp_path / "show.cpl").write_text('10 PRN#(0,"L=",@S$)\nM30\n')
+    proc = _import(tmp_path, {"cpl.perm": {"@S": {"type": "CHAR", "dims": [3], "value": text}}})
+    if proc.returncode == 0:  # show what the next run makes of it
+        run = _ncvm("run", "show.cpl", "--state", "st", cwd=tmp_path)
+        pytest.fail(f"imported; the next run printed {run.stdout!r}")
+    _refused(proc, "@S")
+
+
+def test_cpl_tool_database_string_field_outside_ascii_is_refused(tmp_path):
+    """TDA string fields 8 and 49 hold at most 31 characters of the control (manual §4.5, L1895-1966); 31
+    umlauts are 62 bytes in UTF-8 and no TDA field the control writes holds them, yet the import takes them."""
+    _refused(_import(tmp_path, {"cpl.tdb": {"1,1": {"8": "ü" * 31}}}), "1,1")
+
+
+@pytest.mark.parametrize("store, entry", [
+    ({"mib": [1e308] * 500}, "mib"),
+    ({"to": {"0:1": [1e308] * 16}}, "0:1"),
+    ({"zo": {"G54": [1e308, 0.0, 0.0]}}, "G54"),
+    ({"rot": {"settable:1": 1e308}}, "settable:1"),
+    ({"nc_md": {"5": 1e308}}, "nc_md"),
+], ids=["mib", "tool-offset", "zero-offset", "rotation", "machine-data"])
+def test_sinumerik_values_beyond_the_r_range_are_refused(tmp_path, store, entry):
+    """Every value the SINUMERIK 800 NC assigns is an R value within +/-99999999 (CL 800 manual L7077-7080):
+    MIB(a) = x (@212), tool and zero offsets and rotations written from R parameters. The import checks that
+    range for central R900-R999 only; MIB, offsets, rotations and machine data take 1e308."""
+    _refused(_import(tmp_path, {"sin800": store}), entry)
+
+
+def test_mib_beyond_the_r_range_is_not_read_by_the_next_run(tmp_path):
+    """The silent case: an imported MIB value of 1e308 is read by ``@211 R1 K7`` (v := MIB[a], CL 800 manual
+    L2287-2293) into R1, a value outside the R range +/-99999999 no control holds; the run reports no error
+    at the read (only a later overflow stops it)."""
+    machine = Path(__file__).resolve().parents[2] / "examples" / "sin800" / "machine.toml"
+    (tmp_path / "machine.toml").write_text(machine.read_text())
+    (tmp_path / "mib.mpf").write_text("%MPF1\nN10 @211 R1 K7\nN20 M30\n")
+    _import(tmp_path, {"sin800": {"mib": [1e308] * 500}})
+    run = _ncvm("run", "mib.mpf", "--state", "st", "--json", cwd=tmp_path)
+    result = json.loads(run.stdout)
+    r1 = result["variables"].get("R1")
+    assert r1 is None or abs(r1) <= 99999999, f"the next run read R1 = {r1} from the imported MIB"
