@@ -15,7 +15,7 @@ from pathlib import Path
 import pytest
 
 NCVM = [sys.executable, "-m", "ncvm"]
-ZS_ROWS = [f"G{b}{n}" for b in ("", "1", "2") for n in range(54, 60)]
+EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
 
 def _ncvm(*args, cwd):
@@ -40,6 +40,7 @@ def test_cpl_char_variable_outside_the_controls_character_set_is_refused(tmp_pat
     L3749-3770; [REC] 1 byte per character). An edited ``@S`` of emoji or a NUL is imported, and the next run
     prints it: a value the control could not hold, read by a later run (issue 17: the store "as the store
     holds them")."""
+    (tmp_path / "machine.toml").write_text((EXAMPLES / "cpl" / "machine.toml").read_text())  # file_root = "files"
     files = tmp_path / "files"
     files.mkdir()
     (files / "anwperm.dat").write_text("DEF CHAR @S(3) ;label\n")
@@ -47,7 +48,7 @@ def test_cpl_char_variable_outside_the_controls_character_set_is_refused(tmp_pat
     proc = _import(tmp_path, {"cpl.perm": {"@S": {"type": "CHAR", "dims": [3], "value": text}}})
     if proc.returncode == 0:  # show what the next run makes of it
         run = _ncvm("run", "show.cpl", "--state", "st", cwd=tmp_path)
-        pytest.fail(f"imported; the next run printed {run.stdout!r}")
+        pytest.fail(f"imported; the next run printed {run.stdout!r} {run.stderr!r}")
     _refused(proc, "@S")
 
 
@@ -75,7 +76,7 @@ def test_mib_beyond_the_r_range_is_not_read_by_the_next_run(tmp_path):
     """The silent case: an imported MIB value of 1e308 is read by ``@211 R1 K7`` (v := MIB[a], CL 800 manual
     L2287-2293) into R1, a value outside the R range +/-99999999 no control holds; the run reports no error
     at the read (only a later overflow stops it)."""
-    machine = Path(__file__).resolve().parents[2] / "examples" / "sin800" / "machine.toml"
+    machine = EXAMPLES / "sin800" / "machine.toml"
     (tmp_path / "machine.toml").write_text(machine.read_text())
     (tmp_path / "mib.mpf").write_text("%MPF1\nN10 @211 R1 K7\nN20 M30\n")
     _import(tmp_path, {"sin800": {"mib": [1e308] * 500}})
