@@ -77,3 +77,13 @@ def test_mib_beyond_the_r_range_is_not_read_by_the_next_run(tmp_path):
     result = json.loads(run.stdout)
     r1 = result["variables"].get("R1")
     assert r1 is None or abs(r1) <= 99999999, f"the next run read R1 = {r1} from the imported MIB"
+
+
+def test_a_key_given_twice_in_an_edited_file_is_refused_not_dropped(tmp_path):
+    """Editing the export by hand, a maintenance engineer copies a line and forgets to renumber it: ``@1``
+    given twice. The import keeps the last and drops the first without a word (JSON readers do), so a value
+    the file holds is lost silently; an import is a restore of "permanent variables, R parameters, tool and
+    offset tables" (issue 17, item 7) and must say ``file: entry: reason`` (exit 2) instead."""
+    path = tmp_path / "edited.json"
+    path.write_text('{"format": "ncvm-state", "version": 1, "store": {"cpl.perm": {"@1": 12, "@1": 34}}}')
+    _refused(_ncvm("state", "import", "--state", "st", "edited.json", cwd=tmp_path), "@1")
