@@ -50,3 +50,19 @@ def test_a_machine_file_mib_seed_beyond_the_r_range_is_refused(tmp_path):
     run = _ncvm("run", "mib.mpf", cwd=tmp_path)
     assert run.returncode == 2, run.stdout + run.stderr
     assert "sin800.mib.7" in run.stderr and "-99999999 to 99999999" in run.stderr, run.stderr
+
+
+def _perm_char(tmp_path: Path, text: str):
+    return _import(tmp_path, {"cpl.perm": {"@S": {"type": "CHAR", "dims": [8], "value": text}}})
+
+
+def test_a_char_variable_of_ascii_controls_and_del_is_imported_and_one_beyond_is_refused(tmp_path):
+    """Codes 1..127 are the control's ASCII set (CPL manual A.5): tab, CR, LF (CHR$(13) breaks PRN# lines)
+    and DEL import; U+0080, the first code beyond it, is refused naming the entry and the character."""
+    ok = _perm_char(tmp_path, "\x01\t\r\n\x1b~\x7f")
+    assert ok.returncode == 0, ok.stderr
+    shown = _ncvm("state", "show", "--state", "st", "--json", cwd=tmp_path)
+    assert json.loads(shown.stdout)["store"]["cpl.perm"]["@S"]["value"] == "\x01\t\r\n\x1b~\x7f"
+    proc = _perm_char(tmp_path, "AB\x80")
+    assert proc.returncode == 2 and "edited.json: cpl.perm: \"@S\".value" in proc.stderr, proc.stderr
+    assert "character 3 (U+0080)" in proc.stderr, proc.stderr

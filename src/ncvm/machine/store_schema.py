@@ -90,19 +90,26 @@ class Int32(Node):
 
 @dataclass(frozen=True)
 class Chars(Node):
-    """A string of at most ``most`` characters (a CPL CHARACTER variable, a TDA string field)."""
+    """A string of at most ``most`` characters (a CPL CHARACTER variable, a TDA string field), each one
+    byte of the control's ASCII set (CPL manual A.5, L5594; strings compare by ASCII code, L3749-3770):
+    codes 1..127. NUL is no value (a variable never assigned, L758-762), never a character inside a string
+    (docs/decisions.md, "Characters a state file may hold")."""
 
     most: int
 
     def check(self, value, path, ctx):
         if value.__class__ is not str or len(value) > self.most:
             raise SchemaError(path, value, f"must be a string of at most {self.most} characters")
+        bad = next((i for i, c in enumerate(value) if not "\x01" <= c <= "\x7f"), None)
+        if bad is not None:
+            raise SchemaError(path, value, f"character {bad + 1} (U+{ord(value[bad]):04X}) is not one the "
+                                           "control holds: ASCII codes 1..127 only")
 
     def type_text(self):
-        return f"a string of at most {self.most} characters"
+        return f"a string of at most {self.most} ASCII characters (codes 1..127)"
 
     def json(self):
-        return {"type": "string", "maxLength": self.most}
+        return {"type": "string", "maxLength": self.most, "pattern": "^[\\u0001-\\u007f]*$"}
 
 
 @dataclass(frozen=True)
