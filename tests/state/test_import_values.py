@@ -66,3 +66,18 @@ def test_a_char_variable_of_ascii_controls_and_del_is_imported_and_one_beyond_is
     proc = _perm_char(tmp_path, "AB\x80")
     assert proc.returncode == 2 and "edited.json: cpl.perm: \"@S\".value" in proc.stderr, proc.stderr
     assert "character 3 (U+0080)" in proc.stderr, proc.stderr
+
+
+def test_a_key_given_twice_deep_in_a_record_or_at_the_top_is_refused(tmp_path):
+    """Twice inside a TDA record (field 9) and twice at the top (two "store" objects, the first lost): each
+    is refused with exit 2 naming the key, and the store stays empty (nothing half imported)."""
+    record = ('{"format": "ncvm-state", "version": 1, "store": {"cpl.tdb": {"1,1": {"9": 5, "10": 1, '
+              '"9": 6}}}}')
+    proc = _import_text(tmp_path, record)
+    assert proc.returncode == 2 and 'edited.json: "9": key given twice' in proc.stderr, proc.stderr
+    top = ('{"format": "ncvm-state", "version": 1, "store": {"cpl.perm": {"@1": 1}}, '
+           '"store": {"cpl.perm": {"@2": 2}}}')
+    proc = _import_text(tmp_path, top)
+    assert proc.returncode == 2 and 'edited.json: "store": key given twice' in proc.stderr, proc.stderr
+    shown = _ncvm("state", "show", "--state", "st", "--json", cwd=tmp_path)
+    assert json.loads(shown.stdout)["store"] == {}, shown.stdout
