@@ -12,6 +12,10 @@ from __future__ import annotations
 from .schema import Check, Ctx, Either, Field, Flag, ListOf, Number, Said, SchemaError, Table, Text, join, unique
 
 NUMBER = Number()
+#: the largest magnitude of a SINUMERIK R value (CL 800 manual L7077-7080): every value the NC assigns,
+#: and so every MIB value (@212 stores an R value, @211 reads one back); the store's import checks it too
+R_LIMIT = 99999999.0
+R_NUMBER = Number(min=-int(R_LIMIT), max=int(R_LIMIT))  # whole bounds: "-99999999 to 99999999"
 POSITIVE = Number(gt=0)
 NONNEG = Number(min=0)
 INT = Number(integer=True)
@@ -199,7 +203,7 @@ SIN800 = Table((
         ("nc_md", "NC machine data (words and bytes by address; bytes as bit strings)"),
         ("cycle_md", "cycle machine data"), ("plc_md", "PLC machine data"), ("drive_md", "drive machine data"),
         ("nc_sd", "NC setting data"), ("cycle_sd", "cycle setting data"))),
-    Field("mib", Table(other=NUMBER, keys=Text(pattern=r"[0-9]|[1-9][0-9]|[1-4][0-9][0-9]", shape="0 .. 499"),
+    Field("mib", Table(other=R_NUMBER, keys=Text(pattern=r"[0-9]|[1-9][0-9]|[1-4][0-9][0-9]", shape="0 .. 499"),
                        keys_doc="MIB address"), "MIB values", {}),
     Field("inputs", Table(other=BYTE_OR_WORD, keys=Text(choices=("1", "2")), keys_doc="input byte"),
           "external input bytes 1 and 2", {}),

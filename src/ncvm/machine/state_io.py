@@ -42,7 +42,10 @@ def document(content: dict[str, dict[str, Any]]) -> str:
 def parse(text: str, shown: str) -> dict[str, dict[str, Any]]:
     """The store content of an export file, checked whole; :class:`StateFileError` names what is wrong."""
     try:
-        doc = json.loads(text)
+        doc = json.loads(text, object_pairs_hook=_once)
+    except _GivenTwice as e:
+        raise StateFileError(f"{shown}: {json.dumps(e.key)}: key given twice in one object (a value of the "
+                             f"file would be lost; keep one)") from None
     except json.JSONDecodeError as e:
         raise StateFileError(f"{shown}:{e.lineno}:{e.colno}: not JSON: {e.msg}") from None
     except RecursionError:
@@ -65,6 +68,22 @@ def parse(text: str, shown: str) -> dict[str, dict[str, Any]]:
             raise StateFileError(f"{shown}: {namespace}: must be an object of keys and values")
         content[namespace] = _checked(namespace, entries, shown)
     return content
+
+
+class _GivenTwice(Exception):
+    def __init__(self, key: str):
+        self.key = key
+
+
+def _once(pairs: list[tuple[str, Any]]) -> dict[str, Any]:
+    """An object of the file, refusing a key given twice: a JSON reader keeps the last and drops the
+    first without a word, and a hand-edited file (a copied line) would lose a value silently."""
+    obj: dict[str, Any] = {}
+    for key, value in pairs:
+        if key in obj:
+            raise _GivenTwice(key)
+        obj[key] = value
+    return obj
 
 
 def _checked(namespace: str, entries: Any, shown: str) -> dict[str, Any]:

@@ -6,8 +6,8 @@ INTEGER in 32 bits, a REAL exactly binary32, a DOUBLE finite; a ZS table with it
 flag and all 18 rows of one value per column (CPL manual §4.3); compensation groups of [H, D]; tool
 database fields 3..49 typed as TDA reads them (8 and 49 strings of at most 31 characters, the others
 INTEGER, manual §4.5); the SINUMERIK 800's data areas, tool offsets P0..P15, zero offsets of one value per
-axis, rotations of the settable (1-4) and programmable (1-2) groups, the MIB of 500 values (the 850/880's
-0-499, CL 800 manual @211/@212) and central R parameters R900..R999 within +/-99999999 (L7079).
+axis, rotations of the settable (1-4) and programmable (1-2) groups, the MIB of 500 R values (the 850/880's
+0-499, CL 800 manual @211/@212) and central R parameters R900..R999, both within +/-99999999 (L7079).
 Every number must be finite: no control holds NaN or infinity.
 """
 
@@ -19,10 +19,8 @@ from dataclasses import dataclass
 from typing import Any
 
 from .schema import Check, Ctx, Field, Flag, ListOf, Node, Number, SchemaError, Table, Text, join, unique
-from .sections import DATA_AREA, UNIT, ZO_NAMES, ZS_ROWS
+from .sections import DATA_AREA, R_LIMIT, UNIT, ZO_NAMES, ZS_ROWS
 
-#: the largest magnitude of an R value (CL 800 manual L7077-7080)
-R_LIMIT = 99999999.0
 #: the MIB addresses of the largest control (850/880: 0-499); the store keeps all of them
 MIB_SIZE = 500
 #: TDA fields a program reaches (1 and 2 are sector and place, the record's key) and the string ones
@@ -92,19 +90,26 @@ class Int32(Node):
 
 @dataclass(frozen=True)
 class Chars(Node):
-    """A string of at most ``most`` characters (a CPL CHARACTER variable, a TDA string field)."""
+    """A string of at most ``most`` characters (a CPL CHARACTER variable, a TDA string field), each one
+    byte of the control's ASCII set (CPL manual A.5, L5594; strings compare by ASCII code, L3749-3770):
+    codes 1..127. NUL is no value (a variable never assigned, L758-762), never a character inside a string
+    (docs/decisions.md, "Characters a state file may hold")."""
 
     most: int
 
     def check(self, value, path, ctx):
         if value.__class__ is not str or len(value) > self.most:
             raise SchemaError(path, value, f"must be a string of at most {self.most} characters")
+        bad = next((i for i, c in enumerate(value) if not "\x01" <= c <= "\x7f"), None)
+        if bad is not None:
+            raise SchemaError(path, value, f"character {bad + 1} (U+{ord(value[bad]):04X}) is not one the "
+                                           "control holds: ASCII codes 1..127 only")
 
     def type_text(self):
-        return f"a string of at most {self.most} characters"
+        return f"a string of at most {self.most} ASCII characters (codes 1..127)"
 
     def json(self):
-        return {"type": "string", "maxLength": self.most}
+        return {"type": "string", "maxLength": self.most, "pattern": "^[\\u0001-\\u007f]*$"}
 
 
 @dataclass(frozen=True)
@@ -267,7 +272,7 @@ SIN800 = Table((
     Field("rot", Table(other=DOUBLE, keys=Text(pattern=r"settable:[1-4]|programmable:[12]",
                                                shape='"settable:1".."settable:4", "programmable:1" or "2"'),
                        keys_doc="rotation"), "rotation angles"),
-    Field("mib", ListOf(DOUBLE, MIB_SIZE, MIB_SIZE), "MIB 0-499"),
+    Field("mib", ListOf(R_VALUE, MIB_SIZE, MIB_SIZE), "MIB 0-499, R values"),
     Field("central_r", Table(other=R_VALUE, keys=Text(pattern=r"9[0-9][0-9]", shape="900 .. 999"),
                              keys_doc="central R parameter"), "central R parameters R900..R999"),
 ))

@@ -13,6 +13,7 @@ from decimal import Decimal
 from typing import Any
 
 from ...diagnostics import UsageError
+from ...machine.sections import R_LIMIT
 from .errors import Cl800Error
 from .options import Options, options
 
@@ -37,8 +38,6 @@ SD = {
 CHANNEL_ARG = {"cycle_md", "cycle_sd"}
 
 
-#: the largest magnitude of an R value (L7077-7080)
-R_LIMIT = 99999999.0
 #: the smallest magnitude of an R value other than 0 (L7079): the NC holds 8 decimal places
 R_SMALLEST = 0.00000001
 
