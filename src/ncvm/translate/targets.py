@@ -54,6 +54,8 @@ class Target:
     comment_escapes: dict[str, str] = field(default_factory=dict)
     #: the tool offset number is an edge of the active tool (840D: D1 of T2 is not D1 of T1): the header names the tool
     edge_of_tool: bool = False
+    #: Fanuc-style input: every length, angle and dwell word with a decimal point (``X10.``), S an integer
+    decimal_point: bool = False
 
     def escape(self, text: str) -> str:
         """``text`` without the characters that would end this control's comment or message."""
@@ -97,6 +99,6 @@ ISO = Target(
     tool_length_on="G43 H{n}", tool_length_off="G49",
     machine_move="G53", machine_move_keeps_tool=False,
     dwell="G4 X{s}", probe=None, probe_no_contact=None, turns=None, message="({})", thread=None,
-    program_end="M30", wrapper="%", comment_escapes=_PARENS)
+    program_end="M30", wrapper="%", comment_escapes=_PARENS, decimal_point=True)
 
 TARGETS = {t.name: t for t in (LINUXCNC, SINUMERIK_840D, ISO)}
