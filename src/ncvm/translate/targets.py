@@ -8,6 +8,7 @@ translation stops with a clear error naming the block that needs it.
 
 from __future__ import annotations
 
+import textwrap
 from dataclasses import dataclass, field
 
 
@@ -56,6 +57,9 @@ class Target:
     edge_of_tool: bool = False
     #: Fanuc-style input: every length, angle and dwell word with a decimal point (``X10.``), S an integer
     decimal_point: bool = False
+    #: the longest line the control reads (rs274ngc: 252 characters, tried with rs274; "Command too long"
+    #: from 253 on); the others are given the same bound
+    max_line: int = 252
 
     def escape(self, text: str) -> str:
         """``text`` without the characters that would end this control's comment or message."""
@@ -64,8 +68,15 @@ class Target:
         return text
 
     def note(self, text: str) -> str:
-        """``text`` as a comment line of this control."""
-        return self.comment.format(self.escape(text))
+        """``text`` as a comment of this control: several lines where one would be too long to read."""
+        return "\n".join(self.fit(self.comment, self.escape(text)))
+
+    def fit(self, form: str, text: str) -> list[str]:
+        """``form`` filled with ``text`` in lines of at most :attr:`max_line` characters (split between words)."""
+        room = self.max_line - len(form.format(""))
+        if len(text) <= room:
+            return [form.format(text)]
+        return [form.format(part) for part in textwrap.wrap(text, room, break_long_words=True)]
 
 
 _PARENS = {"(": "[", ")": "]"}

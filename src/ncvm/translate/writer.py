@@ -85,6 +85,7 @@ class Translation(CanonSink):
         self._plane = "G17"
         self._feed: float | None = None
         self._after: list[tuple[str, Src]] = []  # M5 / M9 of a block, written after its move
+        self._placed = False  # the refusal names no block yet: the next move's block
         self._moved_in: Src | None = None  # the block of the last move (a cycle moves again after its M5)
         self._turning: str | None = None  # the spindle word in force ("M3 S500"), None: stopped
         self._probe: tuple[dict | None, dict | None, Src] | None = None
@@ -132,7 +133,11 @@ class Translation(CanonSink):
                 self._write(self.t.note(f"FROZEN: {what}{at}; the path below follows the simulated value"))
                 self.setup.frozen += 1
         if self.source_comments and src is not None:
-            text += " " + self.t.note(f"{Path(src.file).name}:{src.line}")
+            ref = self.t.note(f"{Path(src.file).name}:{src.line}")
+            if text.startswith(self.t.comment[0]) or text.startswith(self.t.message[:4]):
+                self._write(ref)  # its own line: a second comment would hide LinuxCNC's (MSG, ...)
+            else:
+                text += " " + ref
         self._write(text)
         self.lines += 1
 
@@ -228,6 +233,7 @@ class Translation(CanonSink):
         if frame.work_offset != self._offset_written:
             name = self.t.work_offsets.get(frame.work_offset) if frame.work_offset else None
             if name is None:
+                self._placed = src is None  # a frame change between blocks: named by the next block that moves
                 self.refuse(src, f"the program selects {frame.work_offset or 'no zero offset'}, which "
                                  f"{self.t.title} cannot select (translate with --frame machine)")
                 return
@@ -297,6 +303,9 @@ class Translation(CanonSink):
 
     def _move_starts(self, start, end, src) -> bool:
         """What every move does first (the block's M5/M9 wait, the setup is recorded); False: refused."""
+        if self._placed and self.refusal is not None:
+            self._placed = False
+            self.refusal.src = src
         self._flush_after(src)
         if self._programmed is not None and self._programmed[1] != src:
             self._programmed = None  # the block that programmed them made no move
@@ -520,7 +529,8 @@ class Translation(CanonSink):
 
     def message(self, text, src):
         self._flush_after()
-        self._line(self.t.message.format(self.t.escape(text)), src)
+        for part in self.t.fit(self.t.message, self.t.escape(text)):  # a long one as several
+            self._line(part, src)
 
     def stop(self, kind, src):
         """A program stop; DIN G88's stop (the operator retracts by hand) is the target's M0."""
