@@ -43,3 +43,4 @@ def test_modal_g53_refusal_names_the_block_that_moves(tmp_path):
     r, _ = _translate(tmp_path, "a.cpl", source, "--machine", str(EX / "cpl" / "machine.toml"))
     assert r.returncode == 1 and "TRN001" in r.stderr, r.stderr
     assert "a.cpl:4:" in r.stderr, r.stderr
+

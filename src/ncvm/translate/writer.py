@@ -228,6 +228,10 @@ class Translation(CanonSink):
             return  # one move in machine coordinates: written with its prefix
         self.removed = frame.removed()
         if any(frame.shift):
+            if not self.moves and not self.setup.shifts:  # perhaps not this program's: say it at the first move
+                values = " ".join(f"{n}{number(v)}" for n, v in zip(self.names, frame.shift) if v)
+                self.frozen(f"an added zero offset ({values}) is in force before the first move: set by the "
+                            "program's first blocks or left by an earlier run (the stored NC data)", src)
             self.setup.shifts.add(tuple(round(v, 6) for v in frame.shift))
         self.setup.transformed |= frame.transformed
         if frame.work_offset != self._offset_written:
