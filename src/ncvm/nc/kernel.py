@@ -337,8 +337,10 @@ class NcKernel:
                     self.canned.retract_to_r = g == 99
                 else:
                     motion, cycle_g = g, True
-            elif run == POSITION:
+            elif run == POSITION:  # the handler, if any, checks the block before its words act
                 set_position = True
+                if entry[1] is not None:
+                    entry[1](self, g, words, src)
             elif run == MACHINE:  # the handler: the offsets the control keeps in the block (None: none)
                 machine_coords = entry[1] or True
             else:  # ALONE: the block is this function alone (G10 L2 writes a table)

@@ -76,11 +76,11 @@ class TranslationFile:
         try:
             if self.stream:
                 self._body = None
-                self._f = open(self.path, "w", encoding="ascii", errors="replace")
+                self._f = open(self.path, "w", encoding=target.charset, errors="backslashreplace")
             else:
                 fd, name = tempfile.mkstemp(dir=self.real.parent, prefix=f".{self.real.name}.", suffix=".body")
                 self._body = Path(name)
-                self._f = os.fdopen(fd, "w", encoding="ascii", errors="replace")
+                self._f = os.fdopen(fd, "w", encoding=target.charset, errors="backslashreplace")
         except OSError as e:
             raise OutputError(self.path, e) from None
         self.writer = Translation(self._f, target, frame, source_comments, scenario_given)
@@ -149,7 +149,8 @@ class TranslationFile:
         header = self._intro() + self.writer.header(self.program, self.machine)
         fd, name = tempfile.mkstemp(dir=self.real.parent, prefix=f".{self.real.name}.", suffix=".part")
         try:
-            with os.fdopen(fd, "w", encoding="ascii", errors="replace") as f, open(self._body, encoding="ascii") as b:
+            with os.fdopen(fd, "w", encoding=self.target.charset, errors="backslashreplace") as f, \
+                    open(self._body, encoding=self.target.charset) as b:
                 f.write("".join(line + "\n" for line in header))
                 for line in b:
                     f.write(line)

@@ -8,6 +8,8 @@ translation stops with a clear error naming the block that needs it.
 
 from __future__ import annotations
 
+import textwrap
+import unicodedata
 from dataclasses import dataclass, field
 
 
@@ -54,16 +56,44 @@ class Target:
     comment_escapes: dict[str, str] = field(default_factory=dict)
     #: the tool offset number is an edge of the active tool (840D: D1 of T2 is not D1 of T1): the header names the tool
     edge_of_tool: bool = False
+    #: Fanuc-style input: every length, angle and dwell word with a decimal point (``X10.``), S an integer
+    decimal_point: bool = False
+    #: the longest line the control reads (rs274ngc: 252 characters, tried with rs274; "Command too long"
+    #: from 253 on); the others are given the same bound
+    max_line: int = 252
+
+    #: the character set of the file: rs274 reads UTF-8 comments and messages (tried); the 840D and ISO
+    #: targets get ASCII (:func:`ascii_text`)
+    charset: str = "ascii"
 
     def escape(self, text: str) -> str:
-        """``text`` without the characters that would end this control's comment or message."""
+        """``text`` without the characters that would end this control's comment or message, in the
+        control's character set."""
         for bad, good in self.comment_escapes.items():
             text = text.replace(bad, good)
-        return text
+        return text if self.charset != "ascii" or text.isascii() else ascii_text(text)
 
     def note(self, text: str) -> str:
-        """``text`` as a comment line of this control."""
-        return self.comment.format(self.escape(text))
+        """``text`` as a comment of this control: several lines where one would be too long to read."""
+        return "\n".join(self.fit(self.comment, self.escape(text)))
+
+    def fit(self, form: str, text: str) -> list[str]:
+        """``form`` filled with ``text`` in lines of at most :attr:`max_line` characters (split between words)."""
+        room = self.max_line - len(form.format(""))
+        if len(text) <= room:
+            return [form.format(text)]
+        return [form.format(part) for part in textwrap.wrap(text, room, break_long_words=True)]
+
+
+#: German letters as written without umlauts; other accented letters lose the accent (NFKD)
+_TRANSLITERATION = str.maketrans({"ä": "ae", "ö": "oe", "ü": "ue", "Ä": "Ae", "Ö": "Oe", "Ü": "Ue", "ß": "ss"})
+
+
+def ascii_text(text: str) -> str:
+    """``text`` in ASCII: umlauts transliterated (Wärme -> Waerme), accents dropped (é -> e), any other
+    character written as ``<U+65E5>``, never a silent ``?`` (docs/translate.md)."""
+    text = unicodedata.normalize("NFKD", text.translate(_TRANSLITERATION))
+    return "".join(c if c.isascii() else "" if unicodedata.combining(c) else f"<U+{ord(c):04X}>" for c in text)
 
 
 _PARENS = {"(": "[", ")": "]"}
@@ -76,7 +106,7 @@ LINUXCNC = Target(
     machine_move="G53", machine_move_keeps_tool=False,
     dwell="G4 P{s}", probe="G38.2 {axes}{feed}", probe_no_contact="G38.3 {axes}{feed}", turns=" P{n}", message="(MSG, {})",
     thread="G33 {axes} K{lead}",
-    program_end="M2", comment_escapes=_PARENS)
+    program_end="M2", comment_escapes=_PARENS, charset="utf-8")
 
 #: SINUMERIK 840D: G54-G57 are settable zero offsets, G58/G59 programmable ones: the program's G58/G59
 #: selections go to the next settable ones, G505/G506; the tool length comes with the D number
@@ -97,6 +127,6 @@ ISO = Target(
     tool_length_on="G43 H{n}", tool_length_off="G49",
     machine_move="G53", machine_move_keeps_tool=False,
     dwell="G4 X{s}", probe=None, probe_no_contact=None, turns=None, message="({})", thread=None,
-    program_end="M30", wrapper="%", comment_escapes=_PARENS)
+    program_end="M30", wrapper="%", comment_escapes=_PARENS, decimal_point=True)
 
 TARGETS = {t.name: t for t in (LINUXCNC, SINUMERIK_840D, ISO)}

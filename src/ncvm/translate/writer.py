@@ -26,6 +26,12 @@ def number(v: float) -> str:
     return "0" if text in ("-0", "") else text
 
 
+def number_with_point(v: float) -> str:
+    """A length, angle or dwell for a Fanuc-style control: ``X10.`` (without the point it is 0.010 mm)."""
+    text = number(v)
+    return text if "." in text else text + "."
+
+
 @dataclass
 class Refusal:
     """Why the translation stopped: the block (None: the whole program) and the reason."""
@@ -62,6 +68,7 @@ class Translation(CanonSink):
         self.out = out
         self.out_path = getattr(out, "name", "the output")  # named in a write error
         self.t = target
+        self.num = number_with_point if target.decimal_point else number  # length, angle and dwell words
         self.work = frame == "work"
         self.source_comments = source_comments
         self.scenario_given = scenario_given
@@ -78,6 +85,9 @@ class Translation(CanonSink):
         self._plane = "G17"
         self._feed: float | None = None
         self._after: list[tuple[str, Src]] = []  # M5 / M9 of a block, written after its move
+        self._placed = False  # the refusal names no block yet: the next move's block
+        self._moved_in: Src | None = None  # the block of the last move (a cycle moves again after its M5)
+        self._turning: str | None = None  # the spindle word in force ("M3 S500"), None: stopped
         self._probe: tuple[dict | None, dict | None, Src] | None = None
         self._frozen: list[tuple[str, Src | None]] = []
         self._frozen_pending: set = set()
@@ -123,7 +133,11 @@ class Translation(CanonSink):
                 self._write(self.t.note(f"FROZEN: {what}{at}; the path below follows the simulated value"))
                 self.setup.frozen += 1
         if self.source_comments and src is not None:
-            text += " " + self.t.note(f"{Path(src.file).name}:{src.line}")
+            ref = self.t.note(f"{Path(src.file).name}:{src.line}")
+            if text.startswith(self.t.comment[0]) or text.startswith(self.t.message[:4]):
+                self._write(ref)  # its own line: a second comment would hide LinuxCNC's (MSG, ...)
+            else:
+                text += " " + ref
         self._write(text)
         self.lines += 1
 
@@ -180,7 +194,7 @@ class Translation(CanonSink):
             if not use:
                 use = {i for i in range(len(self.names)) if self.names[i] in self._written}
         self._written.update(self.names[i] for i in use)
-        return " ".join(f"{n}{number(p[i] - removed[i])}" for i, n in enumerate(self.names)
+        return " ".join(f"{n}{self.num(p[i] - removed[i])}" for i, n in enumerate(self.names)
                         if i in use and n in self.t.axes)
 
     def _feed_word(self, feed: float) -> str:
@@ -214,11 +228,16 @@ class Translation(CanonSink):
             return  # one move in machine coordinates: written with its prefix
         self.removed = frame.removed()
         if any(frame.shift):
+            if not self.moves and not self.setup.shifts:  # perhaps not this program's: say it at the first move
+                values = " ".join(f"{n}{number(v)}" for n, v in zip(self.names, frame.shift) if v)
+                self.frozen(f"an added zero offset ({values}) is in force before the first move: set by the "
+                            "program's first blocks or left by an earlier run (the stored NC data)", src)
             self.setup.shifts.add(tuple(round(v, 6) for v in frame.shift))
         self.setup.transformed |= frame.transformed
         if frame.work_offset != self._offset_written:
             name = self.t.work_offsets.get(frame.work_offset) if frame.work_offset else None
             if name is None:
+                self._placed = src is None  # a frame change between blocks: named by the next block that moves
                 self.refuse(src, f"the program selects {frame.work_offset or 'no zero offset'}, which "
                                  f"{self.t.title} cannot select (translate with --frame machine)")
                 return
@@ -288,12 +307,16 @@ class Translation(CanonSink):
 
     def _move_starts(self, start, end, src) -> bool:
         """What every move does first (the block's M5/M9 wait, the setup is recorded); False: refused."""
+        if self._placed and self.refusal is not None:
+            self._placed = False
+            self.refusal.src = src
         self._flush_after(src)
         if self._programmed is not None and self._programmed[1] != src:
             self._programmed = None  # the block that programmed them made no move
         if self._tool_pending is not None:
             self._tool_length()
         self.moves += 1
+        self._moved_in = src
         if self._frame_unrecorded:
             self._record_setup()
         return not (self._hidden and self._moved_unwritten(start, end, src))
@@ -412,8 +435,8 @@ class Translation(CanonSink):
         if plane != self._plane:
             self._plane = plane
             self._line(plane, src)
-        ci = number(spec.center[0] - start[spec.a])
-        cj = number(spec.center[1] - start[spec.b])
+        ci = self.num(spec.center[0] - start[spec.a])
+        cj = self.num(spec.center[1] - start[spec.b])
         turns = self.t.turns.format(n=self._turns(spec.turns)) if spec.turns else ""
         self._line(f"{'G2' if spec.cw else 'G3'} {self._axes(end, start, always=(spec.a, spec.b))} {CENTRE_WORDS[an]}{ci} {CENTRE_WORDS[bn]}{cj}"
                    f"{turns}{self._feed_word(feed)}", src)
@@ -461,7 +484,7 @@ class Translation(CanonSink):
 
     def dwell(self, seconds, src):
         self._flush_after()
-        self._line(self.t.dwell.format(s=number(seconds)), src)
+        self._line(self.t.dwell.format(s=self.num(seconds)), src)
 
     def tool_change(self, tool, src):
         held = self._tool_pending if self._tool_pending is not None and self._tool_pending[1] == src else None
@@ -473,14 +496,28 @@ class Translation(CanonSink):
         if held is not None:  # the block's own tool length: for the tool just loaded
             self._tool_pending = held
             self._tool_length()
+        if self._turning is not None:  # M6 stops the spindle on the new control; it turned on in the run
+            self._line(self._turning, src)
+
+    def _speed(self, speed: float, src: Src) -> str:
+        """The S word's value: a target of integer S (ISO) gets it rounded, with a comment where it changed."""
+        if not self.t.decimal_point or speed == round(speed):
+            return self.num(speed) if not self.t.decimal_point else str(round(speed))
+        self._line(self.t.note(f"S{number(speed)} rounded to S{round(speed)}: this control's S is an integer"), src)
+        return str(round(speed))
 
     def spindle(self, speed, direction, src):
         if direction == 0:
-            self._after.append(("M5", src))
+            self._turning = None
+            if src == self._moved_in:  # a stop between the moves of one block (a boring cycle): here
+                self._flush_after()
+                self._line("M5", src)
+            else:
+                self._after.append(("M5", src))
             return
         self._flush_after()
-        word = "M3" if direction > 0 else "M4"
-        self._line(f"{word} S{number(speed)}", src)
+        self._turning = f"{'M3' if direction > 0 else 'M4'} S{self._speed(speed, src)}"
+        self._line(self._turning, src)
 
     def coolant(self, mode, src):
         if mode == "off":
@@ -496,11 +533,13 @@ class Translation(CanonSink):
 
     def message(self, text, src):
         self._flush_after()
-        self._line(self.t.message.format(self.t.escape(text)), src)
+        for part in self.t.fit(self.t.message, self.t.escape(text)):  # a long one as several
+            self._line(part, src)
 
     def stop(self, kind, src):
+        """A program stop; DIN G88's stop (the operator retracts by hand) is the target's M0."""
         self._flush_after()
-        self._line(kind, src)
+        self._line("M0" if kind == "G88" else kind, src)
 
     def program_end(self, src):
         self.ended = src

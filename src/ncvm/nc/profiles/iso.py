@@ -7,6 +7,8 @@ where the control means the same.
 
 from __future__ import annotations
 
+import math
+
 from .. import cutter, threads
 from ..cycles import CODES as CYCLE_CODES
 from . import (
@@ -62,6 +64,23 @@ def nothing(k, g, words, src):
 
 def css_on(k, g, words, src):
     k.css = k.spindle_bound = True
+
+
+def css_on_limited(k, g, words, src):
+    """rs274's G96 D<max> S<speed>: D is the maximum spindle speed while G96 is on; a G96 without D has no
+    limit, as in rs274 (no DIN machine file gives a maximum spindle speed; radius 0 stays NC010)."""
+    limit = words.get("D", math.inf)
+    if limit <= 0:
+        k.fault("NC009", f"G96: the spindle speed limit D{limit:g} is not positive", src)
+    k.max_speed = limit
+    css_on(k, g, words, src)
+
+
+def set_position_axes(k, g, words, src):
+    """rs274 stops a G92 without axis words ("All axes missing with G92"): G92 S is not a speed limit here."""
+    if not any(name in words for name in k.axis_of):
+        k.fault("NC009", "G92: all axes missing (G92 sets the position of the axes it names; it is no spindle "
+                "speed limit in DIN 66025 / rs274)", src)
 
 
 def css_off(k, g, words, src):
@@ -141,11 +160,12 @@ ROWS = (
     _row(71, "6 units", "millimetre (DIN 66025)", "DIN 66025", SET, metric),
     _row(90, "3 distance mode", "absolute distances", "rs274 group 3", SET, absolute),
     _row(91, "3 distance mode", "incremental distances", "rs274 group 3", SET, incremental),
-    _row(92, "0 non-modal", "coordinate system offset (set position)", "rs274 group 0", POSITION),
+    _row(92, "0 non-modal", "coordinate system offset (set position)", "rs274 group 0", POSITION,
+         set_position_axes),
     _row(92.1, "0 non-modal", "cancel the G92 offsets", "rs274 group 0", SET, g92_clear),
     _row(94, "5 feed rate mode", "units per minute feed", "rs274 group 5", SET, threads.g94),
     _row(95, "5 feed rate mode", "units per revolution feed (nc/threads.py)", "rs274 group 5", SET, threads.g95),
-    _row(96, "14 spindle speed mode", "constant surface speed", "rs274 group 14", SET, css_on),
+    _row(96, "14 spindle speed mode", "constant surface speed", "rs274 group 14", SET, css_on_limited),
     _row(97, "14 spindle speed mode", "spindle speed in rev/min", "rs274 group 14", SET, css_off),
     *(_row(g, "10 return mode" if g >= 98 else "1 motion", _CYCLE_MEANING[g], "rs274 group 1" if g < 98 else
            "rs274 group 10", CYCLE) for g in sorted(CYCLE_CODES)),
