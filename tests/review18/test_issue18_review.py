@@ -69,3 +69,42 @@ def test_item3_the_g_code_tables_no_longer_say_that_every_move_ends_at_rest():
                                                      ROOT / "src" / "ncvm" / "nc" / "profiles" / "sinumerik8xx.py")
              for n, line in enumerate(p.read_text().splitlines(), 1) if "always end at rest" in line]
     assert not stale, stale
+
+
+def test_item2_the_thinned_plot_note_fits_in_the_picture(monkeypatch):
+    """Issue 18 item 2: "a plot of millions of moves decimates (and says so in the legend)". It says so, but
+    the note "1,000,000 moves, thinned to 143,026 points (extents exact)" is one line in the legend column
+    and runs off the right edge of the 1,500 px picture: ``ncvm run --plot p.png`` of 1 M CPL moves shows
+    "1,000,000 moves, thinned to 143,026 p" (the other notes are wrapped onto several lines)."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from ncvm.nc.canon import Src
+    from ncvm.sinks import toolpath
+    from ncvm.sinks.plot import PlotPoints
+    from ncvm.sinks.plotview import figure
+    from ncvm.sinks.toolpath import ToolpathRecorder
+
+    monkeypatch.setattr(toolpath, "WINDOW", 1000)
+    rec = ToolpathRecorder(keep=False)
+    points = PlotPoints(rec, max_points=2000)
+    rec.begin(("X", "Y", "Z"), (0.0, 0.0, 0.0))
+    here = (0.0, 0.0, 0.0)
+    for i in range(1, 1_000_001, 100):  # 10,000 moves of a raster
+        end = ((i % 100) * 0.5 + (i // 100 % 2) * 0.25, (i // 100) * 0.01, 0.0)
+        rec.feed(here, end, 1000.0, Src("p", i))
+        here = end
+    rec.summary()
+    assert points.thinned
+    fig = figure(points, "a thinned plot")
+    try:
+        fig.canvas.draw()
+        renderer = fig.canvas.get_renderer()
+        legend = fig.legend_box.get_legend()
+        note = next(t for t in legend.get_texts() if "thinned to" in t.get_text())
+        box = note.get_window_extent(renderer)
+        assert box.x1 <= fig.bbox.x1, (note.get_text(), box.x1, fig.bbox.x1)
+    finally:
+        plt.close(fig)
