@@ -27,6 +27,7 @@ class Case:
     why_unavailable: str = ""
     repeat: int = 0  # 0: the command line's --repeat
     in_process: bool = True  # the work runs in this process (its CPU time means something)
+    figures: Callable[[], dict] | None = None  # figures of the work itself (a cycle time), computed once, untimed
 
 
 def rs274() -> str | None:

@@ -39,6 +39,7 @@ def discover() -> dict[str, Case]:
 def measure(case: Case, repeat: int) -> dict:
     if case.setup:
         case.setup()
+    extra = case.figures() if case.figures else {}
     times, cpus, figures = [], [], []
     for _ in range(repeat):
         t0, c0 = time.perf_counter(), time.process_time()
@@ -51,13 +52,13 @@ def measure(case: Case, repeat: int) -> dict:
         summary = summarise(figures)
         cpu = sorted(f["ncvm_cpu_s"] for f in figures)
         return {"median_s": summary["ncvm_cpu_s"], "min_s": cpu[0], "rate": case.count / summary["ncvm_cpu_s"],
-                "unit": case.unit, "clock": "cpu", **summary}
+                "unit": case.unit, "clock": "cpu", **summary, **extra}
     med, lo, cpu = statistics.median(times), min(times), statistics.median(cpus)
     # CPU time of this process too: on a shared machine the wall clock also counts the other users' work
     out = {"median_s": med, "min_s": lo, "rate": case.count / med, "unit": case.unit}
     if case.in_process and cpu:
         out.update(cpu_median_s=cpu, cpu_rate=case.count / cpu)
-    return out
+    return {**out, **extra}
 
 
 def summarise(figures: list[dict]) -> dict:

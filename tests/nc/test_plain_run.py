@@ -157,8 +157,8 @@ def test_hand_computed_run(tmp_path):
     def trapezoid(length, a):
         return length / v + v / a if length * a >= v * v else 2 * math.sqrt(length / a)
 
-    # the lines move one axis each; the arc is timed as a move of its length shared by both plane axes
-    expected = trapezoid(10, acc) + trapezoid(arc, acc * math.sqrt(2)) + trapezoid(10, acc)
+    # the lines move one axis each; the arc ramps at the plane axes' smallest acceleration (nc.dynamics.arc_limits)
+    expected = trapezoid(10, acc) + trapezoid(arc, acc) + trapezoid(10, acc)
     assert result["cycle_time_s"] == pytest.approx(expected)
 
 

@@ -80,17 +80,27 @@ def test_g64_p_sets_the_tolerance_in_a_din_program(run_text):
 
 
 def test_circle_above_its_centripetal_limit(run_text, tmp_path):
-    # R5 full circle at F6000 (100 mm/s): centripetal v = sqrt(a R) = 70.71 mm/s; tangential acceleration of
-    # an arc is a*sqrt(2) (nc.dynamics.arc_limits): 2 pi 5 / 70.71 + 70.71 / 1414.2 s from rest to rest
+    # R5 full circle at F6000 (100 mm/s): centripetal v = sqrt(a R) = 70.71 mm/s; the tangential acceleration
+    # of an arc is the plane axes' smallest, a (nc.dynamics.arc_limits: at the quadrant points one axis takes
+    # the whole ramp): 2 pi 5 / 70.71 + 70.71 / 1000 = 0.4443 + 0.0707 = 0.5150 s from rest to rest
     text = "G90 G0 X5 Y0\nG64 G2 X5 Y0 I-5 J0 F6000\nM2\n"
     trace = tmp_path / "t.jsonl"
     run_text(text, machine=machine(), trace=trace)
     arc = [json.loads(x) for x in trace.read_text().splitlines() if '"arc"' in x][0]
     v = math.sqrt(A * 5.0)
-    assert arc["time"] == pytest.approx(2 * math.pi * 5 / v + v / (A * math.sqrt(2)), rel=1e-9)
+    assert arc["time"] == pytest.approx(2 * math.pi * 5 / v + v / A, rel=1e-9)
     run_text(text, machine=machine(), trace=trace, time_model="rest-to-rest")
     arc = [json.loads(x) for x in trace.read_text().splitlines() if '"arc"' in x][0]
-    assert arc["time"] == pytest.approx(2 * math.pi * 5 / 100.0 + 100.0 / (A * math.sqrt(2)), rel=1e-9)
+    assert arc["time"] == pytest.approx(2 * math.pi * 5 / 100.0 + 100.0 / A, rel=1e-9)
+
+
+def test_a_small_circle_ramps_no_faster_than_an_axis_can(run_text):
+    """A full circle R1 at F3000 on the default mill (X and Y 1,000 mm/s^2): the centripetal cap holds
+    sqrt(1000 * 1) = 31.62 mm/s, the ramps run at 1,000 mm/s^2 (at the start point the path runs along Y
+    alone): 2 pi / 31.62 + 31.62 / 1000 = 0.1987 + 0.0316 = 0.2303 s (the 45 degree chord's 1,414 mm/s^2
+    gave 0.2211 s)."""
+    r = run_text("G21 G90 G94 G64 F3000\nG2 X0 Y0 I1 J0\nM2\n")
+    assert r["cycle_time_s"] == pytest.approx(0.2303, abs=5e-5)
 
 
 def test_tangent_line_into_arc_runs_at_the_arc_speed(run_text):
@@ -98,7 +108,8 @@ def test_tangent_line_into_arc_runs_at_the_arc_speed(run_text):
     # sqrt(1000 * 10) = 100 mm/s, which the F3000 line is slower than: no slowdown at the junction at all
     r = run_text("G90 G64 F3000\nG1 X10\nG3 X10 Y20 I0 J10\nM2\n", machine=machine())
     length = 10 + math.pi * 10
-    assert r["cycle_time_s"] == pytest.approx(length / 50.0 + 50.0 / A / 2 + 50.0 / (A * math.sqrt(2)) / 2, rel=1e-9)
+    # ramps: up on the line at A, down on the arc at A as well (the arc's tangential acceleration)
+    assert r["cycle_time_s"] == pytest.approx(length / 50.0 + 50.0 / A / 2 + 50.0 / A / 2, rel=1e-9)
 
 
 def test_trace_has_time_and_entry_exit_speeds(run_text, tmp_path):

@@ -121,11 +121,15 @@ def straight_limits_columns(dyn: AxisDynamics, d, length, rapid, feed) -> tuple:
 
 def arc_limits(n_axes: int, a: int, b: int, length: float, speed: float, limits: tuple,
                accel: tuple) -> tuple[float, float]:
-    """Path speed and acceleration of an arc of ``length`` in the plane of axes ``a`` and ``b``: an arc moves
-    both plane axes at once, so it is timed as a straight move of the same length shared equally by them."""
+    """Path speed and acceleration of an arc of ``length`` in the plane of axes ``a`` and ``b``. The speed is
+    that of a straight move of the same length shared equally by both axes. The tangential acceleration is
+    the smaller of the two axes' own: somewhere on an arc the path runs along one axis alone (at the
+    quadrant points), and that axis then takes the whole ramp; the 45 degree chord's combined figure
+    (sqrt 2 times an axis's) would drive it beyond its limit there."""
     chord = [0.0] * n_axes
     chord[a] = chord[b] = length / math.sqrt(2.0)
-    return path_limits(chord, length, speed, limits, accel)
+    v, acc = path_limits(chord, length, speed, limits, accel)
+    return v, (min(accel[a], accel[b]) if length else acc)
 
 
 def arc_limits_columns(a: int, b: int, length, speed, limits: tuple, accel: tuple) -> tuple:
@@ -138,7 +142,7 @@ def arc_limits_columns(a: int, b: int, length, speed, limits: tuple, accel: tupl
         nz = chord != 0.0
         for i in sorted((a, b)):
             v = np.where(nz & (limits[i] < v * share), limits[i] / share, v)
-            acc = np.where(nz & (accel[i] < acc * share), accel[i] / share, acc)
+        acc = np.where(nz, min(accel[a], accel[b]), acc)  # the tangential ramp of arc_limits
     return v, acc
 
 

@@ -118,8 +118,9 @@ class PlotPoints(CanonSink):
         return bool(self._passes)
 
     def note(self) -> str:
-        """What the legend says of a thinned drawing: not every point of the toolpath is drawn."""
-        return f"{self.moves:,} moves, thinned to {self._count:,} points (extents exact)"
+        """What the legend says of a thinned drawing: not every point of the toolpath is drawn (on three short
+        lines, as the legend's other notes: the legend column is narrow)."""
+        return f"{self.moves:,} moves,\nthinned to {self._count:,} points\n(extents exact)"
 
 
     # -- moves ----------------------------------------------------------------

@@ -82,14 +82,14 @@ def test_wait_inside_an_arc_reads_the_point_on_the_arc(tmp_path, run_text):
     v = r["variables"]
     # a clockwise half circle from (0,0) about (10,0), radius 10, through (10,10): length 10*pi = 31.416 mm.
     # Timed as a straight move of that length shared by X and Y (1/sqrt2 each): F3000 = 50 mm/s stays under
-    # 83.33/(1/sqrt2); the acceleration is 1000/(1/sqrt2) = 1414.2 mm/s^2.
-    v_path, a_path = 50.0, 1000.0 * math.sqrt(2.0)
-    ramp_t, ramp_s = v_path / a_path, v_path ** 2 / (2.0 * a_path)  # 0.03536 s, 0.8839 mm
-    s = ramp_s + v_path * (0.4 - ramp_t)  # 19.116 mm along the arc after 0.4 s
+    # 83.33/(1/sqrt2); the acceleration is the axes' own 1000 mm/s^2 (nc.dynamics.arc_limits).
+    v_path, a_path = 50.0, 1000.0
+    ramp_t, ramp_s = v_path / a_path, v_path ** 2 / (2.0 * a_path)  # 0.05 s, 1.25 mm
+    s = ramp_s + v_path * (0.4 - ramp_t)  # 18.75 mm along the arc after 0.4 s
     angle = math.pi - s / 10.0  # clockwise from the start angle pi
     assert v["T%"] == 400
-    assert v["PX"] == pytest.approx(10.0 + 10.0 * math.cos(angle), abs=1e-4)  # 13.346
-    assert v["PY"] == pytest.approx(10.0 * math.sin(angle), abs=1e-4)  # 9.424
+    assert v["PX"] == pytest.approx(10.0 + 10.0 * math.cos(angle), abs=1e-4)
+    assert v["PY"] == pytest.approx(10.0 * math.sin(angle), abs=1e-4)
     assert r["position"]["X"] == 20.0 and r["position"]["Y"] == pytest.approx(0.0, abs=1e-12)
     assert r["cycle_time_s"] == pytest.approx(10.0 * math.pi / v_path + v_path / a_path)  # 0.66367 s
 

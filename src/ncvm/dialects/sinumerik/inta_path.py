@@ -14,10 +14,8 @@ from dataclasses import dataclass
 from typing import Callable
 
 from ...nc import arcs
-from ...nc.dynamics import path_limits
+from ...nc.dynamics import arc_limits, path_limits
 from ...nc.kernel import PLANES
-
-_SQRT2 = math.sqrt(2.0)
 
 
 @dataclass(frozen=True)
@@ -90,9 +88,7 @@ def arc_path(k, cw: bool, plane: int, turned: dict, start: list[float], scale: f
     sweep = arcs.sweep(sa, sb, ea, eb, ca, cb, cw, turns)
     helix = math.sqrt(sum((e - s) ** 2 for i, (s, e) in enumerate(zip(start, end)) if i not in (a, b)))
     length = arcs.arc_length(radius, sweep, helix) * scale
-    chord = [0.0] * k.n_axes
-    chord[a] = chord[b] = length / _SQRT2
-    v, acc = path_limits(chord, length, feed / 60.0, k.dyn.max_feed, k.dyn.accel)
+    v, acc = arc_limits(k.n_axes, a, b, length, feed / 60.0, k.dyn.max_feed, k.dyn.accel)
     axes = tuple(dict.fromkeys((an, bn, *(n for n in turned if n in k.axis_of))))
     a0 = math.atan2(sb - cb, sa - ca)
 
