@@ -131,6 +131,7 @@ def read_block(line: str, lineno: int) -> NcBlock:
         blk = NcBlock(lineno, int(m.group(1)) if m.group(1) else None, False)
         blk.items = [Word(w.group(1).upper(), float(w.group(2)), None, w.start() + 1)
                      for w in _PLAIN_WORD.finditer(line, m.start(2))]
+        _refuse_repeated(blk.items)
         return blk
     s = line
     n = len(s)
@@ -187,7 +188,24 @@ def read_block(line: str, lineno: int) -> NcBlock:
     bare = [w for w in items if isinstance(w, Word) and w.value is None and w.rref is None]
     if bare and not any(isinstance(w, Word) and w.address == "G" and w.value == 16 for w in items):
         raise ReadError(bare[0].col, f"address {bare[0].address.rstrip('-')} without a value")
+    _refuse_repeated(items)
     return blk
+
+
+#: the addresses a block may hold more than once: G words (each of its own group), M words, and H words
+#: (each goes to the PLC, in the block's order)
+REPEATABLE = frozenset("GMH")
+
+
+def _refuse_repeated(items: list) -> None:
+    """SIN001 at the second word of an address the block holds twice (``G1 X10 X20``): the control keeps
+    one value per address, so the second would silently replace the first (docs/decisions.md)."""
+    seen = set()
+    for it in items:
+        if it.__class__ is Word and it.address not in REPEATABLE:
+            if it.address in seen:
+                raise ReadError(it.col, f"address {it.address.rstrip('-')} twice in one block")
+            seen.add(it.address)
 
 
 def _number(s: str, i: int, address: str) -> tuple[float, int]:

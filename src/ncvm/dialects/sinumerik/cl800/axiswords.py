@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from dataclasses import fields
 
-from ....diagnostics import Diagnostic, read_lines
+from ....diagnostics import Diagnostic, Span, read_lines
 from ....nc.profiles.check import refused_g_warnings
 from ....nc.profiles.sinumerik8xx import SINUMERIK8XX
 from ..codegen import _word_diagnostic as word_diagnostic
@@ -26,12 +26,13 @@ def axis_diagnostics(path: str, prog, axes, radius: str = "B") -> list[Diagnosti
     out = []
     uses = []
     for st in _din_blocks(prog.body):
-        try:
-            words = [it for it in read_block(st.text, st.line).items if isinstance(it, Word)]
-        except ReadError:
-            continue  # the object program's reader reports it when it runs
         source = lines[st.line - 1] if st.line <= len(lines) else ""
         base = source.find(st.text, max(st.col - 1, 0))
+        try:
+            words = [it for it in read_block(st.text, st.line).items if isinstance(it, Word)]
+        except ReadError as e:  # the object program's reader refuses the block when it runs: so does check
+            out.append(Diagnostic(e.code, e.message, Span(path, st.line, base + e.col if base >= 0 else st.col)))
+            continue
         dwell = dwells(words)
         uses.extend((w.value, st.line, base + w.col if base >= 0 else st.col) for w in words if g_word(w))
         for w in words:
