@@ -4,13 +4,14 @@ back with rs274 where it is installed."""
 from __future__ import annotations
 
 import json
-import re
 import shutil
 import subprocess
 import sys
 from pathlib import Path
 
 import pytest
+
+from tests.review16b.helpers import code_lines  # noqa: F401  (the tests import it from here)
 
 RS274 = shutil.which("rs274")
 needs_rs274 = pytest.mark.skipif(RS274 is None, reason="rs274 not installed (Debian package linuxcnc-uspace)")
@@ -51,13 +52,3 @@ def trace_work(tmp_path: Path, name: str, *args: str) -> list[tuple[str, dict]]:
         if rec["call"] in ("rapid", "feed", "arc"):
             out.append((rec["call"], rec.get("work", rec["end"])))
     return out
-
-
-def code_lines(text: str) -> list[str]:
-    """The output's code lines with comments ( ) and ; stripped."""
-    lines = []
-    for line in text.splitlines():
-        code = re.sub(r"\([^)]*\)", "", line).split(";")[0].strip()
-        if code and code != "%":
-            lines.append(code)
-    return lines
