@@ -2,10 +2,9 @@
 
 from __future__ import annotations
 
-import json
-import subprocess
-import sys
 from pathlib import Path
+
+from tests.review14.review14_helpers import make_runner
 
 AXES = "".join(f'[[axis]]\nname = "{a}"\nmin = -1000.0\nmax = 1000.0\nrapid = 60000.0\nmax_feed = 60000.0\n'
                f'accel = 100000000.0\n' for a in "XYZ")
@@ -18,15 +17,7 @@ SIN800_MACHINE = AXES + ('[sin800]\ncontrol = "880"\n'
 
 def run(tmp_path: Path, name: str, text: str, machine: str = AXES):
     """(JSON result, trace rows, stderr) of ``ncvm run --json --trace`` on a program written to tmp_path."""
-    (tmp_path / "machine.toml").write_text(machine)
-    (tmp_path / name).write_text(text)
-    trace = tmp_path / "trace.jsonl"
-    proc = subprocess.run([sys.executable, "-m", "ncvm", "run", "--json", "--trace", str(trace),
-                           "--machine", str(tmp_path / "machine.toml"), "--state", str(tmp_path / ".state"),
-                           str(tmp_path / name)], capture_output=True, text=True, timeout=120)
-    assert "Traceback" not in proc.stderr, proc.stderr
-    rows = [json.loads(line) for line in trace.read_text().splitlines()] if trace.exists() else []
-    return json.loads(proc.stdout), rows, proc.stderr
+    return make_runner(tmp_path)(name, text, machine=machine)
 
 
 def moves(rows: list[dict]) -> list[tuple]:
