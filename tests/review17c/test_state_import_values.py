@@ -52,10 +52,11 @@ def test_cpl_char_variable_outside_the_controls_character_set_is_refused(tmp_pat
     _refused(proc, "@S")
 
 
-def test_cpl_tool_database_string_field_outside_ascii_is_refused(tmp_path):
-    """TDA string fields 8 and 49 hold at most 31 characters of the control (manual §4.5, L1895-1966); 31
-    umlauts are 62 bytes in UTF-8 and no TDA field the control writes holds them, yet the import takes them."""
-    _refused(_import(tmp_path, {"cpl.tdb": {"1,1": {"8": "ü" * 31}}}), "1,1")
+def test_cpl_tool_database_string_field_beyond_one_byte_is_refused(tmp_path):
+    """TDA string fields 8 and 49 hold at most 31 one-byte characters of the control (manual §4.5,
+    L1895-1966; docs/decisions.md, "Characters a permanent string holds"): 31 euro signs are no byte each
+    and no TDA field the control writes holds them."""
+    _refused(_import(tmp_path, {"cpl.tdb": {"1,1": {"8": "€" * 31}}}), "1,1")
 
 
 def test_sinumerik_mib_beyond_the_r_range_is_refused(tmp_path):

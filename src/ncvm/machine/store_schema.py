@@ -88,28 +88,37 @@ class Int32(Node):
         return {"type": "integer", "minimum": -2**31, "maximum": 2**31 - 1}
 
 
+def foreign_character(text: str) -> int | None:
+    """Index of the first character of ``text`` no CPL character variable holds, or None.
+
+    The control keeps one byte a character: the ASCII set of CPL manual A.5 (L5594) and the codes 128..255
+    that INKEY gives for panel keys (L4631) and CHR$ makes, as program files are read (Latin-1). Code 0 is
+    NUL, no value (L758-762), never a character inside a string (docs/decisions.md, "Characters a
+    permanent string holds").
+    """
+    return next((i for i, c in enumerate(text) if not "\x01" <= c <= "\xff"), None)
+
+
 @dataclass(frozen=True)
 class Chars(Node):
     """A string of at most ``most`` characters (a CPL CHARACTER variable, a TDA string field), each one
-    byte of the control's ASCII set (CPL manual A.5, L5594; strings compare by ASCII code, L3749-3770):
-    codes 1..127. NUL is no value (a variable never assigned, L758-762), never a character inside a string
-    (docs/decisions.md, "Characters a state file may hold")."""
+    byte of the control, codes 1..255 (:func:`foreign_character`)."""
 
     most: int
 
     def check(self, value, path, ctx):
         if value.__class__ is not str or len(value) > self.most:
             raise SchemaError(path, value, f"must be a string of at most {self.most} characters")
-        bad = next((i for i, c in enumerate(value) if not "\x01" <= c <= "\x7f"), None)
+        bad = foreign_character(value)
         if bad is not None:
             raise SchemaError(path, value, f"character {bad + 1} (U+{ord(value[bad]):04X}) is not one the "
-                                           "control holds: ASCII codes 1..127 only")
+                                           "control holds: one byte, codes 1..255 only")
 
     def type_text(self):
-        return f"a string of at most {self.most} ASCII characters (codes 1..127)"
+        return f"a string of at most {self.most} one-byte characters (codes 1..255)"
 
     def json(self):
-        return {"type": "string", "maxLength": self.most, "pattern": "^[\\u0001-\\u007f]*$"}
+        return {"type": "string", "maxLength": self.most, "pattern": "^[\\u0001-\\u00ff]*$"}
 
 
 @dataclass(frozen=True)

@@ -231,6 +231,9 @@ class Permanents:
         v = CONVERT[typ](v)
         if typ == "CHAR":
             v = v[: dims[-1]] if dims else v[:1]
+            if "\x00" in v:  # the store keeps codes 1..255, the same rule as `ncvm state import`
+                raise CplError("CPL033", f"@{name}$ would hold CHR$(0) as character {v.index(chr(0)) + 1}: "
+                                         "NUL is no value (L758-762)")
         key = "@" + name
         rec = self.values[key]
         if not idx:

@@ -192,6 +192,8 @@ def p_tda_set(rt: SystemContext, sector, place, fld, tooltab=1, value=None):
             raise CplError("CPL021", f"field {fld} is a STRING field")
         if len(value) > 31:
             raise CplError("CPL023", f"field {fld}: at most 31 characters")
+        if "\x00" in value:  # the store keeps codes 1..255, the same rule as `ncvm state import`
+            raise CplError("CPL023", f"field {fld}: CHR$(0) is NUL, no value (L758-762)")
     elif value.__class__ is not int:
         raise CplError("CPL021", f"field {fld} is an INTEGER field")
     c.tdb[key][fld] = value
