@@ -111,7 +111,8 @@ class Translation(CanonSink):
         if self.refusal is None:
             self.refusal = Refusal(src, message)
 
-    def _line(self, text: str, src: Src | None = None) -> None:
+    def _line(self, text: str, src: Src | None = None, *, remark: bool = False) -> None:
+        """Write one program line of ``src``; ``remark``: the line is a comment or an operator message."""
         if self.refusal is not None:
             return
         if self._unsaid is not None:
@@ -134,12 +135,16 @@ class Translation(CanonSink):
                 self.setup.frozen += 1
         if self.source_comments and src is not None:
             ref = self.t.note(f"{Path(src.file).name}:{src.line}")
-            if text.startswith(self.t.comment[0]) or text.startswith(self.t.message[:4]):
+            if remark:
                 self._write(ref)  # its own line: a second comment would hide LinuxCNC's (MSG, ...)
             else:
                 text += " " + ref
         self._write(text)
         self.lines += 1
+
+    def _note(self, text: str, src: Src | None) -> None:
+        """``text`` as a comment line of the target."""
+        self._line(self.t.note(text), src, remark=True)
 
     def _write(self, text: str) -> None:
         try:
@@ -461,8 +466,8 @@ class Translation(CanonSink):
         names = " ".join(self.names[i] for i in sorted(set(axes)))
         if (names, src) not in self.setup.homed:
             self.setup.homed.append((names, src))
-            self._line(self.t.note(f"HOMING {names}: the program's reference run, not written as a move: home "
-                                   f"{names} on the new control before running this program"), src)
+            self._note(f"HOMING {names}: the program's reference run, not written as a move: home "
+                       f"{names} on the new control before running this program", src)
         self._written.difference_update(self.names[i] for i in axes)
         return True
 
@@ -503,7 +508,7 @@ class Translation(CanonSink):
         """The S word's value: a target of integer S (ISO) gets it rounded, with a comment where it changed."""
         if not self.t.decimal_point or speed == round(speed):
             return self.num(speed) if not self.t.decimal_point else str(round(speed))
-        self._line(self.t.note(f"S{number(speed)} rounded to S{round(speed)}: this control's S is an integer"), src)
+        self._note(f"S{number(speed)} rounded to S{round(speed)}: this control's S is an integer", src)
         return str(round(speed))
 
     def spindle(self, speed, direction, src):
@@ -529,12 +534,12 @@ class Translation(CanonSink):
     def aux(self, code, src):
         self._flush_after()
         self.setup.left_out.append(code)
-        self._line(self.t.note(f"{code}: a machine function of the simulated control, not written"), src)
+        self._note(f"{code}: a machine function of the simulated control, not written", src)
 
     def message(self, text, src):
         self._flush_after()
         for part in self.t.fit(self.t.message, self.t.escape(text)):  # a long one as several
-            self._line(part, src)
+            self._line(part, src, remark=True)
 
     def stop(self, kind, src):
         """A program stop; DIN G88's stop (the operator retracts by hand) is the target's M0."""
