@@ -6,16 +6,15 @@ from __future__ import annotations
 
 import json
 import os
-import signal
 import subprocess
 import sys
-import time
 from pathlib import Path
 
 import pytest
 from click.testing import CliRunner
 
 from ncvm import cli
+from tests.runtime.ctrl_c import ctrl_c
 
 PROGRAM = "(MSG, roughing)\nG17 G90 G0 X10 Y0\nG1 X20 F600\nM2\n"
 NCVM = [sys.executable, "-c", "from ncvm.cli import main; main()"]
@@ -133,9 +132,7 @@ def test_ctrl_c_during_a_long_run_gives_the_result_document(work):
     (work / "spin.cpl").write_text("10 A = 0\n20 WHILE A < 2000000000 DO\n30 A = A + 1\n40 END\n")
     p = subprocess.Popen([*NCVM, "run", "spin.cpl", "--json"], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                          text=True)
-    time.sleep(3)
-    p.send_signal(signal.SIGINT)
-    out, err = p.communicate(timeout=60)
+    out, err = ctrl_c(p, settle=3, timeout=60)
     assert p.returncode == 1, err
     assert json.loads(out)["error"]["code"] == "RUN004"
 

@@ -31,11 +31,11 @@ def test_ctrl_c_in_ncvm_run_raises_after_closing_the_trace(tmp_path):
     """A real SIGINT to a script that runs a long program: KeyboardInterrupt reaches the script, and the
     trace the run wrote is closed (every line is JSON)."""
     import json
-    import signal
     import subprocess
     import sys
     import textwrap
-    import time
+
+    from tests.runtime.ctrl_c import ctrl_c, grown_past
 
     (tmp_path / "long.cpl").write_text("(LONG)\n10 FOR I% = 1 TO 3000000\nN20 G1 X[I% * 0.0001] F5000\n"
                                        "30 NEXT I%\nM30\n")
@@ -51,15 +51,7 @@ def test_ctrl_c_in_ncvm_run_raises_after_closing_the_trace(tmp_path):
     proc = subprocess.Popen([sys.executable, "-c", script], cwd=tmp_path, stdout=subprocess.PIPE,
                             stderr=subprocess.PIPE, text=True)
     trace = tmp_path / "t.jsonl"
-    try:
-        end = time.monotonic() + 60
-        while not (trace.exists() and trace.stat().st_size > 50_000) and time.monotonic() < end:
-            time.sleep(0.05)
-        proc.send_signal(signal.SIGINT)
-        out, err = proc.communicate(timeout=60)
-    finally:
-        if proc.poll() is None:
-            proc.kill()
+    out, err = ctrl_c(proc, grown_past(trace, 50_000), "the trace to grow", timeout=60)
     assert out.strip() == "interrupted", (out, err)
     for line in trace.read_text().splitlines():
         json.loads(line)

@@ -7,10 +7,8 @@ import csv
 import json
 import os
 import shutil
-import signal
 import subprocess
 import sys
-import time
 import xml.etree.ElementTree as ET
 from pathlib import Path
 
@@ -20,6 +18,7 @@ from ncvm.api import run_program
 from ncvm.archive import report, run_batch
 from ncvm.archive.discover import discover, machine_of
 from ncvm.runtime.session import RunOptions
+from tests.runtime.ctrl_c import ctrl_c
 
 from .conftest import in_folder, stable
 
@@ -300,11 +299,8 @@ def test_ctrl_c_stops_a_pooled_batch_at_once(tmp_path):
     p = subprocess.Popen([*NCVM, "run", ".", "-j", "2"], cwd=tmp_path, stderr=subprocess.PIPE, text=True,
                          start_new_session=True)
     children = Path(f"/proc/{p.pid}/task/{p.pid}/children")
-    deadline = time.monotonic() + 120
-    while len(children.read_text().split()) < 2 and time.monotonic() < deadline:  # the pool is at work
-        time.sleep(0.05)
-    time.sleep(0.5)
-    os.killpg(p.pid, signal.SIGINT)  # as the terminal sends it: to the batch and its pool
-    err = p.communicate(timeout=60)[1]
+    # as the terminal sends it: to the batch and its pool
+    err = ctrl_c(p, lambda: len(children.read_text().split()) >= 2, "the pool to be at work", settle=0.5,
+                 group=True, timeout=60)[1]
     assert p.returncode == 1 and "interrupted by the user" in err and "Traceback" not in err, err
     assert "program(s) run" not in err  # no summary of a batch that did not end

@@ -9,14 +9,14 @@ from __future__ import annotations
 
 import json
 import os
-import signal
 import subprocess
 import sys
-import time
 import xml.etree.ElementTree as ET
 from pathlib import Path
 
 import pytest
+
+from tests.runtime.ctrl_c import ctrl_c, wait_until
 
 BIN = Path(sys.executable).parent
 
@@ -379,12 +379,8 @@ def test_item3_ctrl_c_stops_a_cluster_batch_without_a_traceback(tmp_path, schedu
         start_new_session=True,
     )
     with distributed.Client(scheduler_and_worker, timeout=60) as client:
-        deadline = time.monotonic() + 120
-        while not any(client.processing().values()) and time.monotonic() < deadline:  # the tasks run
-            time.sleep(0.1)
-    time.sleep(0.5)
-    os.killpg(p.pid, signal.SIGINT)  # as the terminal sends it
-    err = p.communicate(timeout=120)[1]
+        wait_until(lambda: any(client.processing().values()), "the tasks to run", timeout=120)
+    err = ctrl_c(p, settle=0.5, group=True)[1]  # as the terminal sends it
     assert p.returncode == 1 and "interrupted by the user" in err, err
     assert "Traceback" not in err, err
 

@@ -14,19 +14,12 @@ import textwrap
 import time
 from pathlib import Path
 
+from tests.runtime.ctrl_c import ctrl_c, grown_past, wait_until
+
 NCVM = str(Path(sys.executable).parent / "ncvm")
 
 #: a CPL program of three million moves: long enough to be interrupted mid-run on any machine
 LONG_CPL = "(LONG)\n10 FOR I% = 1 TO 3000000\nN20 G1 X[I% * 0.0001] Y[I% * 0.0002] F5000\n30 NEXT I%\nM30\n"
-
-
-def _wait_for(path: Path, timeout: float = 60.0) -> None:
-    end = time.monotonic() + timeout
-    while time.monotonic() < end:
-        if path.exists() and path.stat().st_size > 100_000:
-            return
-        time.sleep(0.05)
-    raise AssertionError(f"{path} was not written")
 
 
 def test_program_text_with_an_unknown_dialect_is_a_usage_error(tmp_path):
@@ -66,7 +59,7 @@ def test_ctrl_c_stops_a_script_that_runs_programs(tmp_path):
     proc = subprocess.Popen([sys.executable, "-c", script], cwd=tmp_path, stdout=subprocess.PIPE,
                             stderr=subprocess.PIPE, text=True)
     try:
-        _wait_for(tmp_path / "t0.jsonl")  # the first program is running
+        wait_until(grown_past(tmp_path / "t0.jsonl", 100_000), "the first program to run")
         proc.send_signal(signal.SIGINT)
         time.sleep(3.0)  # time enough for the script to go on to the next program, if it does
         went_on = (tmp_path / "t1.jsonl").exists()
@@ -86,15 +79,7 @@ def test_an_interrupted_run_leaves_a_whole_trace_and_a_summary_that_agrees_with_
     trace = tmp_path / "t.jsonl"
     proc = subprocess.Popen([NCVM, "run", "long.cpl", "--state", "st", "--json", "--trace", str(trace)],
                             cwd=tmp_path, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    try:
-        _wait_for(trace)
-        time.sleep(0.5)
-        proc.send_signal(signal.SIGINT)
-        out, err = proc.communicate(timeout=120)
-    finally:
-        if proc.poll() is None:
-            proc.kill()
-            proc.communicate()
+    out, err = ctrl_c(proc, grown_past(trace, 100_000), "the trace to grow", settle=0.5)
     assert proc.returncode == 1, err
     doc = json.loads(out)
     assert doc["error"]["code"] == "RUN004"

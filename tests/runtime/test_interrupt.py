@@ -6,12 +6,12 @@ import json
 import signal
 import subprocess
 import sys
-import time
 from pathlib import Path
 
 import pytest
 
 from ncvm.runtime import interrupt
+from tests.runtime.ctrl_c import ctrl_c, grown_past
 
 NCVM = str(Path(sys.executable).parent / "ncvm")
 
@@ -33,15 +33,7 @@ def test_an_interrupted_cpl_run_with_rapids_and_feeds_agrees_with_its_trace(tmp_
     trace = tmp_path / "t.jsonl"
     proc = subprocess.Popen([NCVM, "run", "zig.cpl", "--state", "st", "--json", "--trace", str(trace)],
                             cwd=tmp_path, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    try:
-        end = time.monotonic() + 60
-        while not (trace.exists() and trace.stat().st_size > 200_000) and time.monotonic() < end:
-            time.sleep(0.05)
-        proc.send_signal(signal.SIGINT)
-        out, err = proc.communicate(timeout=120)
-    finally:
-        if proc.poll() is None:
-            proc.kill()
+    out, err = ctrl_c(proc, grown_past(trace, 200_000), "the trace to grow")
     assert proc.returncode == 1 and "interrupted" in err
     doc = json.loads(out)
     assert doc["error"]["code"] == "RUN004"
