@@ -41,6 +41,12 @@ def reference_fixture(tmp_path: Path):
 
 
 @pytest.fixture
+def run(run_text, reference):
+    """run(text, channel=1, **machine) -> the result of the CPL program ``text`` on the reference machine."""
+    return lambda text, channel=1, **kw: run_text(text, name="p.cpl", machine=reference(channel, **kw))
+
+
+@pytest.fixture
 def generated(tmp_path: Path):
     """generated(text) -> the Python the code generator writes for the CPL program ``text`` (checked without
     errors) on the reference machine."""

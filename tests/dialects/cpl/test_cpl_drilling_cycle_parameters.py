@@ -12,14 +12,6 @@
 
 from __future__ import annotations
 
-import pytest
-
-
-@pytest.fixture
-def run(run_text, reference):
-    return lambda text, **kw: run_text(text, name="p.cpl", machine=reference(**kw))
-
-
 CYCLE = ("10 #N% = #N% + 1 : #A = P1 : #B% = P2% : #C% = P3XYZ% : #SUM = #SUM + P1TEST\n"
          "N1 G1 Z[P1] F100\nN2 G0 Z10\n")
 

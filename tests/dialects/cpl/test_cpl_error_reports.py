@@ -7,11 +7,6 @@ from __future__ import annotations
 import pytest
 
 
-@pytest.fixture
-def run(run_text, reference):
-    return lambda text, **kw: run_text(text, name="p.cpl", machine=reference(**kw))
-
-
 @pytest.mark.parametrize("text, line, col", [
     ("10 X=3: X=NUL : Y = X + 1\n", 1, 17),  # the third statement of the block
     ("10 X=1\n20 REPEAT\n30 X=X+1\n40 UNTIL Y=3\n", 4, 4),  # the UNTIL condition

@@ -5,11 +5,6 @@ from __future__ import annotations
 import pytest
 
 
-@pytest.fixture
-def run(run_text, reference):
-    return lambda text, **kw: run_text(text, name="p.cpl", machine=reference(**kw))
-
-
 @pytest.mark.parametrize("goto", ["", "5 GOTO 10\n"])
 def test_for_counts_with_any_numerical_variable_l924(run, goto):
     """§2.5.5 L924: "FOR <numerical variable>=<start value> ...": a permanent @n, a field element (its index

@@ -5,11 +5,6 @@ from __future__ import annotations
 import pytest
 
 
-@pytest.fixture
-def run(run_text, reference):
-    return lambda text, **kw: run_text(text, name="p.cpl", machine=reference(**kw))
-
-
 @pytest.mark.parametrize("goto", ["", "5 GOTO 10\n"])
 def test_for_exit_value_beyond_the_integer_range(run, goto):
     """§2.5.5 L934: after the loop the counter is past the end value; past +2147483647 (L655) an INTEGER cannot

@@ -13,12 +13,6 @@ import pytest
 from ncvm.api import run as run_program
 from ncvm.runtime.session import RunOptions
 
-
-@pytest.fixture
-def run(run_text, reference):
-    return lambda text, channel=1, **kw: run_text(text, name="p.cpl", machine=reference(channel, **kw))
-
-
 C1SUB = "5 XVALUE=P1 : FEED=P2 : COMPTAB=P3 : M3=3\nN10 G1 X[XVALUE]F[ FEED*2+1000]M[M3]\n"
 
 

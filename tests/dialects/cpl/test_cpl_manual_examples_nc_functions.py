@@ -9,11 +9,6 @@ from __future__ import annotations
 import pytest
 
 
-@pytest.fixture
-def run(run_text, reference):
-    return lambda text, channel=1, **kw: run_text(text, name="p.cpl", machine=reference(channel, **kw))
-
-
 def input_at(time: float, address: str, value: bool) -> dict:
     return {"time": time, "kind": "input", "address": address, "value": value}
 

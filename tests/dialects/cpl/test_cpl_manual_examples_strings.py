@@ -9,11 +9,6 @@ from __future__ import annotations
 import pytest
 
 
-@pytest.fixture
-def run(run_text, reference):
-    return lambda text, channel=1, **kw: run_text(text, name="p.cpl", machine=reference(channel, **kw))
-
-
 def test_s2_mid_write_right_after_the_last_character_l3419(run):
     """§5.3 L3419-3421: writing components 4-6 of "ABC" is allowed (the gap case is bad/mid_gap.cpl)."""
     assert run('1 DIM A$ (10)\n2 A$= "ABC"\n3 MID$ (A$,4,3) ="DEF"\nM30\n')["variables"] == {"A$": "ABCDEF"}

@@ -6,11 +6,6 @@ from __future__ import annotations
 import pytest
 
 
-@pytest.fixture
-def run(run_text, reference):
-    return lambda text: run_text(text, name="p.cpl", machine=reference())
-
-
 @pytest.mark.parametrize("cond", ["X% = 3", "X% <> 3", "3 = X%", "X = 1.5", "A$ = \"ABC\"", "A$ <> \"\"",
                                   "B? = TRUE", "X% = Y%", "MID$(\"ABCD\",5,1) = \"\"", "VAL(\"A1\") = 0"])
 def test_equality_with_a_nul_operand_is_variable_not_assigned(run, cond):

@@ -5,11 +5,6 @@ from __future__ import annotations
 import pytest
 
 
-@pytest.fixture
-def run(run_text, reference):
-    return lambda text, **kw: run_text(text, name="p.cpl", machine=reference(**kw))
-
-
 @pytest.mark.parametrize("anw, expected", [
     ("DEF REAL @EFGH ;the same declaration in both files\n", "ok"),
     ("DEF INT @EFGH\n", "CPL038"),  # one name, two types: which variable would @EFGH be?

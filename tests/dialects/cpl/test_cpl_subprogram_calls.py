@@ -10,12 +10,6 @@ import pytest
 
 from ncvm.api import check
 
-
-@pytest.fixture
-def run(run_text, reference):
-    return lambda text, **kw: run_text(text, name="p.cpl", machine=reference(**kw))
-
-
 CYCLE = '10 #HOLES% = #HOLES% + 1 : #DEPTH = P1\nN1 G1 Z[P1] F100\nN2 G0 Z10\n'
 
 

@@ -7,11 +7,6 @@ import pytest
 from ncvm.diagnostics import UsageError
 
 
-@pytest.fixture
-def run(run_text, reference):
-    return lambda text, channel=1, **kw: run_text(text, name="p.cpl", machine=reference(channel, **kw))
-
-
 def test_sd_examples_l2296(run):
     text = ("N1 G1 G91 X10 F500 S1000 M3\n2 WAIT\n10 A%=SD(1,2,1)\n20 B%=SD(1,4,1)\n30 C%=SD(2,1)\n"
             "40 D%=SD(5,1,1)\nN50 G0 G90 G18\n60 E%=SD(1,2,1)\n61 F%=SD(1,2,2)\n62 PL1%=SD(11,1,1)\n"

@@ -3,13 +3,6 @@ speeds, messages, potentiometers, waiting states and program re-selection; MCOPS
 
 from __future__ import annotations
 
-import pytest
-
-
-@pytest.fixture
-def run(run_text, reference):
-    return lambda text, channel=1, **kw: run_text(text, name="p.cpl", machine=reference(channel, **kw))
-
 
 def test_radius_compensation_11_12_none_active(run):
     v = run("1 N%=5:V=0\n2 E%=MCODS(11,1,V,N%,1)\n3 V=0\n4 R=1.5\n5 F%=MCODS(12,1,V,R,1)\nM30\n")["variables"]

@@ -14,11 +14,6 @@ from ncvm.machine.store import Store
 TAB = "/usr/user/NPV1.npv"
 
 
-@pytest.fixture
-def run(run_text, reference):
-    return lambda text, channel=1, **kw: run_text(text, name="p.cpl", machine=reference(channel, **kw))
-
-
 def table_file(*rows, unit="MM", strict=0, columns=("X", "Y", "Z")) -> list[str]:
     """The records of a ZS table file (docs/decisions.md "Axis ZS table files"): rows given as
     (G address, values...) are set, all others are zero."""

@@ -5,11 +5,6 @@ from __future__ import annotations
 import pytest
 
 
-@pytest.fixture
-def run(run_text, reference):
-    return lambda text, channel=1, **kw: run_text(text, name="p.cpl", machine=reference(channel, **kw))
-
-
 def test_axo_example_l1398(run):
     r = run('N10 G1 G90 X100 Y200 F1000\nN20 G92 X75 Y125\n30 XD = AXO("X")\n'
                                 '40 YD = AXO(2,0)\nM30\n')

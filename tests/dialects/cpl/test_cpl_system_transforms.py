@@ -14,11 +14,6 @@ from ncvm.api import run as api_run
 from ncvm.runtime.session import RunOptions
 
 
-@pytest.fixture
-def run(run_text, reference):
-    return lambda text, channel=1, **kw: run_text(text, name="p.cpl", machine=reference(channel, **kw))
-
-
 def ok(r) -> dict:
     assert r["status"] == "ok", r["error"]
     return r["variables"]

@@ -6,11 +6,6 @@ from __future__ import annotations
 import pytest
 
 
-@pytest.fixture
-def run(run_text, reference):
-    return lambda text, channel=1, **kw: run_text(text, name="p.cpl", machine=reference(channel, **kw))
-
-
 def test_coordinate_shifts_68_168_268(run):
     text = ("N10 G168 X10 Y-2.5\nN20 G268 X1.5 Z4\n30 A%=SD(168,1,1)\n31 B%=SD(168,2,1)\n32 C%=SD(68,1,1)\n"
             "33 D=SDR(68,1,1)\n34 E=SDR(268,1,3)\n35 WAIT\n36 F%=SD(168,2,2)\n37 G=SDR(68,2,2)\n"

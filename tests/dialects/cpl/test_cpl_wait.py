@@ -5,11 +5,6 @@ from __future__ import annotations
 import pytest
 
 
-@pytest.fixture
-def run(run_text, reference):
-    return lambda text, **kw: run_text(text, name="p.cpl", machine=reference(**kw))
-
-
 @pytest.mark.parametrize("text", [
     "10 WAIT(IC(1,1,1)=1)\n",  # L1213: <state> is a BOOLEan expression
     "10 WAIT(,1000,E)\n",  # L1217: <result var> is an Integer variable
