@@ -4,6 +4,7 @@ back with rs274 where it is installed."""
 from __future__ import annotations
 
 import json
+import re
 import shutil
 import subprocess
 import sys
@@ -39,6 +40,19 @@ def rs274_canon(tmp_path: Path, ngc_text: str) -> tuple[int, str]:
     p = subprocess.run([RS274, "-g", str(ngc), str(canon)], stdin=subprocess.DEVNULL, capture_output=True,
                        text=True, timeout=60)
     return p.returncode, (canon.read_text() if canon.exists() else "") + p.stdout + p.stderr
+
+
+def rs274_moves_with_spindle(canon: str) -> list[tuple[str, bool]]:
+    """(canon line, spindle turning) of every move in rs274's canon text."""
+    turning, moves = False, []
+    for line in canon.splitlines():
+        if re.search(r"START_SPINDLE_(COUNTER)?CLOCKWISE", line):
+            turning = True
+        elif "STOP_SPINDLE_TURNING" in line:
+            turning = False
+        elif re.search(r"STRAIGHT_TRAVERSE|STRAIGHT_FEED|ARC_FEED", line):
+            moves.append((line.strip(), turning))
+    return moves
 
 
 def trace_work(tmp_path: Path, name: str, *args: str) -> list[tuple[str, dict]]:

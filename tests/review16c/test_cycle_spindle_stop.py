@@ -11,9 +11,8 @@ the bottom. Read back with rs274, every move must have the spindle as it was in 
 """
 
 import json
-import re
 
-from .helpers import ncvm, needs_rs274, rs274_canon, translate
+from .helpers import ncvm, needs_rs274, rs274_canon, rs274_moves_with_spindle, translate
 
 PROGRAM = """%
 N10 G90 G17 G71 G54
@@ -43,18 +42,6 @@ def run_spindle_per_move(tmp_path):
     return states
 
 
-def rs274_spindle_per_move(canon):
-    turning, states = False, []
-    for line in canon.splitlines():
-        if re.search(r"START_SPINDLE_(COUNTER)?CLOCKWISE", line):
-            turning = True
-        elif "STOP_SPINDLE_TURNING" in line:
-            turning = False
-        elif re.search(r"STRAIGHT_TRAVERSE|STRAIGHT_FEED|ARC_FEED", line):
-            states.append(turning)
-    return states
-
-
 @needs_rs274
 def test_boring_cycles_move_with_the_spindle_as_in_the_run(tmp_path):
     rc, text, err = translate(tmp_path, PROGRAM, "bore.din")
@@ -63,7 +50,7 @@ def test_boring_cycles_move_with_the_spindle_as_in_the_run(tmp_path):
     assert False in expected  # the cycles move with the spindle stopped in the run
     rc, canon = rs274_canon(tmp_path, text)
     assert rc == 0, canon
-    got = rs274_spindle_per_move(canon)
+    got = [turning for _, turning in rs274_moves_with_spindle(canon)]
     assert len(got) == len(expected), (got, expected)
     wrong = [i for i, (a, b) in enumerate(zip(expected, got)) if a != b]
     assert not wrong, (f"moves {wrong} have the spindle {'turning' if got[wrong[0]] else 'stopped'} on LinuxCNC, "

@@ -9,9 +9,7 @@ translation that keeps the run's motion must have the spindle turning on the new
 turned in the run (M3 S again after M6), or refuse.
 """
 
-import re
-
-from .helpers import needs_rs274, rs274_canon, trace_work, translate
+from .helpers import needs_rs274, rs274_canon, rs274_moves_with_spindle, trace_work, translate
 
 PROGRAM = """%
 N10 G90 G17 G71 G54
@@ -36,13 +34,7 @@ def test_spindle_turns_on_linuxcnc_for_every_cut_it_turned_in_the_run(tmp_path):
     assert [call for call, _ in moves].count("feed") == 2  # both plunges cut in the run, spindle on
     rc, canon = rs274_canon(tmp_path, text)
     assert rc == 0, canon
-    turning, cuts_standing = False, []
-    for line in canon.splitlines():
-        if re.search(r"START_SPINDLE_(COUNTER)?CLOCKWISE", line):
-            turning = True
-        elif "STOP_SPINDLE_TURNING" in line:
-            turning = False
-        elif ("STRAIGHT_FEED" in line or "ARC_FEED" in line) and not turning:
-            cuts_standing.append(line.strip())
+    cuts_standing = [line for line, turning in rs274_moves_with_spindle(canon)
+                     if not turning and "STRAIGHT_TRAVERSE" not in line]
     assert not cuts_standing, ("LinuxCNC feeds with the spindle stopped (M6 stopped it, no M3 after):\n"
                                + "\n".join(cuts_standing) + "\n\n" + text)
