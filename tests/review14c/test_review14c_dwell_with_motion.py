@@ -11,7 +11,7 @@ import pytest
 from review14c_run import RS274, ncvm, reference
 
 
-@pytest.mark.parametrize("block", ["G4 P1 G0 X5", "G4 P1 X5", "G4 P0.5 G1 X5 F100"])
+@pytest.mark.parametrize("block", ["G4 P1 G0 X5", "G4 P1 X5", "G4 X5 P1", "G4 P0.5 G1 X5 F100"])
 def test_a_dwell_block_also_makes_its_move(tmp_path: Path, block: str) -> None:
     text = f"G21 G90\nG0 X1\n{block}\nM2\n"
     if RS274:   # the reference: the dwell, then the move to X5
