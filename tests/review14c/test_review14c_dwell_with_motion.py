@@ -1,7 +1,9 @@
 """din follows LinuxCNC (issue 14: "`iso` (din; LinuxCNC rs274 is the reference)"). In LinuxCNC's order of
 execution a block does its dwell (G4) and then its motion, so ``G4 P1 G0 X5`` dwells one second and then
 moves to X5, and ``G4 P1 X5`` does the same under the modal G0. ncvm dwells and drops the move without a
-word: the run ends "normally" with the tool standing at X1 while the program and rs274 put it at X5."""
+word: the run ends "normally" with the tool standing at X1 while the program and rs274 put it at X5.
+docs/profiles.md lets din read X as the dwell time ("P seconds; X or F as DIN controls write it"); with P
+in the block the X word is then neither a dwell nor a move, and with G0/G1 in the block it is plainly a move."""
 
 from __future__ import annotations
 
