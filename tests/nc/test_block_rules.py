@@ -98,3 +98,11 @@ def test_one_function_of_each_group_runs(tmp_path, dialect, name, text):
         proc = subprocess.run([sys.executable, "-m", "ncvm", command, "--dialect", dialect, str(tmp_path / name)],
                               capture_output=True, text=True, timeout=120, cwd=tmp_path)
         assert proc.returncode == 0, proc.stdout + proc.stderr
+
+
+def test_g53_under_a_modal_arc_is_refused_when_the_run_reaches_it(tmp_path):
+    """rs274 judges G53 by the block's motion, the modal one included ("Must use g0 or g1 with g53"); check
+    cannot see the modal motion from the text, the run stops at the block (NC009)."""
+    proc = _ncvm(tmp_path, "run", "G21 G90\nG0 X3\nG2 X0 I-1.5 F100\nG53 X0\nM2\n")
+    assert proc.returncode == 1
+    assert "p.ngc:4: error NC009: G53 (machine coordinates) under G2" in proc.stderr, proc.stderr

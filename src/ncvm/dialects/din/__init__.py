@@ -11,6 +11,7 @@ from ...nc.block import COLUMNS_FROM, PlainRun, read_din_chunks, read_din_segmen
 from ...nc.canon import Src
 from ...nc.cycles import CannedCycles
 from ...nc.plainrun import execute_columns
+from ...nc.profiles.blockrules import block_refusal
 from ...nc.profiles.iso import ISO
 from ...nc.profiles.named import PROFILES
 from ...source import lines as program_lines
@@ -159,9 +160,9 @@ def _refused_blocks(path: str, text: str, segments: list, axes, skip_active: boo
         address = refused_address(blk, axes)
         if address is not None:
             return [(i, None, address_refusal(path, blk, program_lines(text)[blk.src.line - 1], address))]
-        error = block_error(path, blk, program_lines(text)[blk.src.line - 1], axes, profile)
-        if error is not None:
-            return [(i, None, error)]
+        found = block_refusal(profile, blk.g, blk.m, blk.words, axes)
+        if found is not None:
+            return [(i, None, block_error(path, blk, program_lines(text)[blk.src.line - 1], found))]
     return []
 
 
