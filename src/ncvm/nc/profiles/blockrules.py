@@ -4,7 +4,8 @@
 A block that breaks one has no one meaning (``G90 G91 X5``: absolute or incremental?); the control refuses it,
 and so does ncvm, instead of keeping the last of two words silently. A front end applies :func:`block_refusal`
 once per block where it decodes the block (din's reading pass, the CPL block compiler, the SINUMERIK reader),
-and ``ncvm check`` the same function, so run and check agree; the kernel's per-block path never sees it.
+and ``ncvm check`` the same function, so run and check agree. In the kernel only the dwell rows apply their
+rule (to the dwell blocks they run), and LinuxCNC's G53 is held against the modal motion, which no text shows.
 """
 
 from __future__ import annotations
