@@ -151,6 +151,8 @@ NCVM_CODES = {
     "NC013": "a LinuxCNC program: # parameters, O-words or [expressions] are not DIN 66025 (one per program)",
     "NC014": "a thread (G33-G35) the axes cannot follow: the spindle stands, or an axis would have to run "
              "faster than its limit",
+    "NC015": "a block with no one meaning: two functions of one modal group, or two that both take the axis "
+             "words (rs274's \"Two G codes used from same modal group\"; nc/profiles/blockrules.py)",
     "LIM001": "travel limit exceeded",
     "RUN001": "step limit reached (runaway program?)",
     "RUN002": "sub-program not found",

@@ -322,7 +322,7 @@ class NcKernel:
             elif run == MOTION:
                 motion = g
             elif run == DWELL:
-                dwell_block = True
+                dwell_block = (g, entry[1])
             elif run == LATE:
                 extra = [g] if extra is None else extra + [g]
             elif run == AFTER_TOOL_CHANGE:
@@ -335,6 +335,8 @@ class NcKernel:
                     self.fault("NC012", f"G{g}: no canned cycle while cutter radius compensation is on", src)
                 elif g >= 98:
                     self.canned.retract_to_r = g == 99
+                elif g == 80 and any(table.get(x, (None,))[0] == MOTION for x in block.g):
+                    pass  # rs274: G80 gives way to the block's motion code (G0 G80 X1 moves)
                 else:
                     motion, cycle_g = g, True
             elif run == POSITION:  # the handler, if any, checks the block before its words act
@@ -346,6 +348,10 @@ class NcKernel:
             else:  # ALONE: the block is this function alone (G10 L2 writes a table)
                 entry[1](self, g, words, src)
                 return
+        if machine_coords is True and motion > 1:  # LinuxCNC's G53 (no offset kept): "Must use g0 or g1 with g53"
+            self.fault("NC009", f"G53 (machine coordinates) under G{motion:g}: a move in machine coordinates is G0 or "
+                       "G1", src)
+        dwell = None if dwell_block is False else dwell_block[1](self, dwell_block[0], words, block.g, src)  # (s, alone)
         words_taken = False
         if extra is not None:
             for g in extra:
@@ -355,7 +361,7 @@ class NcKernel:
             for letter, handler in self.word_handlers.items():
                 if letter in words:
                     handler(self, words[letter], words, src)
-        if "F" in words and not dwell_block and not (motion_modes and motion in motion_modes):
+        if "F" in words and not (dwell is not None and dwell[1]) and not (motion_modes and motion in motion_modes):
             if self.per_rev:
                 self.feed_per_rev = words["F"] * self.scale if self.scale != 1.0 else words["F"]
                 canon.feed_per_rev(self.feed_per_rev, src)
@@ -381,12 +387,12 @@ class NcKernel:
         if after_change is not None:  # the profile's order of execution: the tool change first
             for g in after_change:
                 table[g][1](self, g, words, src)
-        if dwell_block:
-            # LinuxCNC writes the time as P, SINUMERIK and DIN controls as X or F (seconds)
-            seconds = words.get("P", words.get("X", words.get("F", 0.0)))
+        if dwell is not None:  # the dwell, then the block's move where the profile's row makes one (rs274 G4 P)
             self.planner.stop()
-            self.machine.clock.advance(seconds)
-            canon.dwell(seconds, src)
+            self.machine.clock.advance(dwell[0])
+            canon.dwell(dwell[0], src)
+        if dwell is not None and dwell[1]:
+            pass
         elif set_position:
             self._set_position(words)
         elif words_taken:

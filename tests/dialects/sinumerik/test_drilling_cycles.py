@@ -155,19 +155,18 @@ def test_check_warns_of_a_missing_cycle_program_as_the_run_stops(tmp_path):
     assert check(prog, dialect="sin800", machine=tmp_path / "machine.toml") == []
 
 
-def test_check_does_not_warn_at_a_block_that_deselects_in_the_same_block_l7406(tmp_path):
-    """``G81 X10 G80``: group 9 (L7406) keeps one function per block, the last one written, so the block
-    deselects and the run passes it without L81; check agrees (no RUN002). A later block that selects G81
-    alone is where the run stops, and there check warns."""
+def test_a_block_that_selects_and_deselects_is_refused_by_check_and_run_l7406(tmp_path):
+    """``G81 X10 G80``: group 9 (L7406) holds one active function; a block with two has no one meaning and is
+    refused (SIN001) by check and run alike (review 14c: before, the last one written won silently)."""
     from ncvm.api import check
 
     (tmp_path / "machine.toml").write_text(machine())
     prog = tmp_path / "p.mpf"
     prog.write_text("%MPF1\nG0 X0 Y0 Z10\nG81 X10 G80\nX20\nG81 X30\nM30\n")
     diags = check(prog, dialect="sin800", machine=tmp_path / "machine.toml")
-    assert [(d.code, d.span.line) for d in diags] == [("RUN002", 5)]
+    assert [(d.code, d.span.line) for d in diags if d.severity == "error"] == [("SIN001", 3)]
     result = run_mpf(tmp_path, prog.read_text())
-    assert result["status"] == "error" and result["error"]["code"] == "RUN002" and result["error"]["line"] == 5
+    assert result["status"] == "error" and result["error"]["code"] == "SIN001" and result["error"]["line"] == 3
 
 
 def test_check_of_a_cl800_source_warns_of_the_missing_cycle_at_its_statement_l7406(tmp_path):

@@ -12,7 +12,7 @@ import re
 from ...diagnostics import CompileFailed, read_lines
 from ...source import lines as program_lines
 from ..base import Dialect
-from .axiswords import axis_diagnostics, refused_diagnostics
+from .axiswords import axis_diagnostics, block_rule_diagnostics, refused_diagnostics
 from .checker import check
 from .codegen import generate
 from .lexer import ETX
@@ -62,6 +62,7 @@ class CplDialect(Dialect):
             lines = program_lines(text) if ln.prog.path == path else read_lines(ln.prog.path)
             diags += axis_diagnostics(ln.prog, machine.axis_names, lines)
             diags += refused_diagnostics(ln.prog, machine.axis_names, lines)
+            diags += block_rule_diagnostics(ln.prog, machine.axis_names, lines)
         return diags + din_call_warnings(res, machine)
 
     def run(self, path, text, session):

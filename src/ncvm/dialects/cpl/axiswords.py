@@ -13,6 +13,7 @@ import re
 from ...diagnostics import Diagnostic, Span, read_lines
 from ...nc.axiswords import AXIS_LETTERS, is_dwell, is_missing_axis, names_axis
 from ...nc.block import row_line
+from ...nc.profiles.blockrules import dwell_time, g_conflict
 from ...nc.profiles.check import g_column, refused_g_warnings
 from ...nc.profiles.typ3osa import TYP3OSA
 from . import ast as A
@@ -68,6 +69,26 @@ def refused_diagnostics(prog: A.Program, axes, lines: list[str] | None) -> list[
             uses.extend((w.value, s.line, g_column(text, w.value) or s.col or 1) for w in s.words
                         if w.address == "G" and w.value is not None)
     return out + refused_g_warnings(TYP3OSA, prog.path, uses)
+
+
+def block_rule_diagnostics(prog: A.Program, axes, lines: list[str] | None) -> list[Diagnostic]:
+    """``ncvm check``: the blocks whose words the run refuses together (nc/profiles/blockrules.py): two functions
+    of one G group (CPL040, as their preparation refuses them: system/gfuncs.py) and a dwell block with a move
+    (NC009, the kernel's dwell row). Computed words count with the value 0."""
+    out = []
+    for s in prog.stmts:
+        if not isinstance(s, A.NcBlock):
+            continue
+        g = [w.value for w in s.words if w.address == "G" and w.value is not None]
+        if not g:
+            continue
+        text = lines[s.line - 1] if lines and s.line <= len(lines) else ""
+        both = g_conflict(TYP3OSA, g)
+        words = {w.address: (w.value if w.value is not None else 0.0) for w in s.words if w.address not in "GM"}
+        found = ("CPL040", both[0], "G", both[1]) if both else dwell_time(TYP3OSA, g, words, axes)
+        if found is not None:
+            out.append(diag(found[0], found[1], prog.path, s.line, g_column(text, found[3]) or s.col or 1, s.cpl))
+    return out
 
 
 def refused_blocks(prog: A.Program, axes) -> dict[int, tuple[str, int]]:

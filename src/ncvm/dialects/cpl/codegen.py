@@ -13,6 +13,8 @@ import marshal
 import math
 
 from ...nc.block import PLAIN_WORDS
+from ...nc.profiles.blockrules import g_conflict
+from ...nc.profiles.typ3osa import TYP3OSA
 from ...runtime.codegen import PySource
 from . import ast as A
 from .builtins import FUNCTIONS
@@ -631,7 +633,8 @@ class Gen:
     def nc_queue(self, s: A.NcBlock, w: NcWords, src: str) -> None:
         """Queue the block: a plain row, a constant block, or one built at run time."""
         line = s.line
-        typ3 = w.g_dyn or w.m_dyn or s.loose or TYP3_G.intersection(w.g_const) or GEARS.intersection(w.m_const)
+        typ3 = (w.g_dyn or w.m_dyn or s.loose or TYP3_G.intersection(w.g_const) or GEARS.intersection(w.m_const)
+                or g_conflict(TYP3OSA, w.g_const))  # its preparation refuses it (system/gfuncs.py)
         enqueue = "_q3" if typ3 else "_q"
         if w.plain:
             self.plain_row(s, src, w.g_const, dict(w.words_const), dict(w.words_dyn), w.dynamic)

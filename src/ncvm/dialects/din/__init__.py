@@ -11,13 +11,14 @@ from ...nc.block import COLUMNS_FROM, PlainRun, read_din_chunks, read_din_segmen
 from ...nc.canon import Src
 from ...nc.cycles import CannedCycles
 from ...nc.plainrun import execute_columns
+from ...nc.profiles.blockrules import block_refusal
 from ...nc.profiles.iso import ISO
 from ...nc.profiles.named import PROFILES
 from ...source import lines as program_lines
 from ..base import Dialect
 from .ngc import fold_extensions
 from .options import arc_tolerance, options
-from .support import address_refusal, refused_address, unsupported
+from .support import address_refusal, block_error, block_errors, refused_address, unsupported
 
 #: a run holds a program of up to this many characters (about 250,000 lines of CAM output) as it reads it; a
 #: longer one is read a second time as it runs
@@ -46,8 +47,9 @@ class DinDialect(Dialect):
         segments, diags = read_din_segments(path, text, as_columns=text.count("\n") >= COLUMNS_FROM)
         diags = fold_extensions(diags, program_lines(text)) if diags else diags
         diags += [d for _i, _row, d in din_missing_axes(path, text, segments, machine.axis_names)]
-        diags += unsupported(path, segments, program_lines(text), machine.axis_names,
-                             PROFILES[options(machine).profile])
+        profile = PROFILES[options(machine).profile]
+        diags += unsupported(path, segments, program_lines(text), machine.axis_names, profile)
+        diags += block_errors(path, segments, program_lines(text), machine.axis_names, profile)
         return sorted(diags, key=lambda d: (d.span.line, d.span.column or 0))
 
     def run(self, path, text, session):
@@ -59,7 +61,7 @@ class DinDialect(Dialect):
         if profile is ISO:
             setup_kernel(kernel)  # LinuxCNC's canned cycles and G33 belong to the iso rows
         skip_active = bool(session.machine.setting_data.get("block_skip", True))
-        stretches, refused = self._read(path, text, kernel.axis_of, skip_active)
+        stretches, refused = self._read(path, text, kernel.axis_of, skip_active, profile)
         counter = session.steps
         limit = counter.limit - counter.steps
         hook = counter.hook  # single-block stepping and breakpoints; None unless a debugger is attached
@@ -88,7 +90,7 @@ class DinDialect(Dialect):
             kernel.end_program(last_src)
 
     @staticmethod
-    def _read(path, text, axes, skip_active):
+    def _read(path, text, axes, skip_active, profile):
         """(the program's stretches of segments, the first refused block as (segment index, row, Diagnostic) or
         None); a program with errors fails to compile. A program of at most :data:`KEEP_CHARS` characters is
         read once and held; a longer one is read twice, the first time for its errors and refusals only, so a
@@ -101,7 +103,7 @@ class DinDialect(Dialect):
                 # a block with a word for an axis the machine lacks is refused when the run reaches it (found
                 # here, once, so the blocks before it run as they are)
                 first = sorted(din_missing_axes(path, text, segments, axes, skip_active)
-                               + _refused_addresses(path, text, segments, axes, skip_active),
+                               + _refused_blocks(path, text, segments, axes, skip_active, profile),
                                key=lambda r: (r[0], r[1] or 0))[:1]
                 refused = (index + first[0][0], first[0][1], first[0][2]) if first else None
             index += len(segments)
@@ -147,15 +149,20 @@ class DinDialect(Dialect):
         return done, last_src
 
 
-def _refused_addresses(path: str, text: str, segments: list, axes, skip_active: bool) -> list:
-    """The first block with an address the profile refuses (NC007), as (segment index, None, Diagnostic); plain
-    runs have none."""
+def _refused_blocks(path: str, text: str, segments: list, axes, skip_active: bool, profile) -> list:
+    """The first block with an address the profile refuses (NC007) or that breaks one of the control's block
+    rules (two functions of one modal group ...: nc/profiles/blockrules.py), as (segment index, None,
+    Diagnostic); plain runs have none."""
     for i, seg in enumerate(segments):
         if isinstance(seg, PlainRun) or (seg[1] and skip_active):
             continue
-        address = refused_address(seg[0], axes)
+        blk = seg[0]
+        address = refused_address(blk, axes)
         if address is not None:
-            return [(i, None, address_refusal(path, seg[0], program_lines(text)[seg[0].src.line - 1], address))]
+            return [(i, None, address_refusal(path, blk, program_lines(text)[blk.src.line - 1], address))]
+        found = block_refusal(profile, blk.g, blk.m, blk.words, axes)
+        if found is not None:
+            return [(i, None, block_error(path, blk, program_lines(text)[blk.src.line - 1], found))]
     return []
 
 

@@ -16,6 +16,7 @@ from ...diagnostics import Diagnostic, Span
 from ...nc.axiswords import AXIS_LETTERS
 from ...nc.block import WORD, PlainRun
 from ...nc.profiles import Profile
+from ...nc.profiles.blockrules import block_refusal
 from ...nc.profiles.check import g_column, refused_g_warnings
 from ...nc.profiles.iso import ISO
 
@@ -39,6 +40,27 @@ def _refused_letter(address: str, axes) -> bool:
 def _refused_g(g, words) -> bool:
     """A G function the iso profile does not run, or G10 other than L2 P1..P6."""
     return g not in G_FUNCTIONS or (g == 10 and (words.get("L") != 2 or words.get("P") not in (1, 2, 3, 4, 5, 6)))
+
+
+def block_error(path: str, blk, line_text: str, found: tuple) -> Diagnostic:
+    """The control's refusal of ``blk`` (``found``: what :func:`~ncvm.nc.profiles.blockrules.block_refusal`
+    returned) as an error at the word it names."""
+    code, message, letter, value = found
+    return Diagnostic(code, message, Span(path, blk.src.line, _column(line_text, letter, value)))
+
+
+def block_errors(path: str, segments: list, lines: list[str], axes, profile: Profile) -> list[Diagnostic]:
+    """``ncvm check``: the blocks that break a block rule of the control (two functions of one modal group,
+    rs274's rules: nc/profiles/blockrules.py); plain runs keep every rule (one motion code, no M, no D)."""
+    out = []
+    for seg in segments:
+        if not isinstance(seg, PlainRun):
+            blk = seg[0]
+            found = block_refusal(profile, blk.g, blk.m, blk.words, axes)
+            if found is not None:
+                out.append(block_error(path, blk, lines[blk.src.line - 1] if blk.src.line <= len(lines) else "",
+                                       found))
+    return out
 
 
 def address_refusal(path: str, blk, line_text: str, address: str) -> Diagnostic:

@@ -19,6 +19,7 @@ from ...diagnostics import Diagnostic, Span
 from ...nc.axiswords import AXIS_LETTERS, is_dwell, is_missing_axis, missing_axis_message, names_axis
 from ...nc.block import Block
 from ...nc.canon import Src
+from ...nc.profiles.blockrules import dwell_time
 from ...nc.profiles.check import refused_g_warnings
 from ...nc.profiles.sinumerik8xx import SINUMERIK8XX
 from ...runtime.codegen import PySource
@@ -86,11 +87,31 @@ def g_word(it) -> bool:
 
 
 def axis_diagnostics(prog: PartProgram, axes, radius: str = "B") -> list[Diagnostic]:
-    """``ncvm check``: the words for axes the machine lacks, where a run refuses them."""
+    """``ncvm check``: the words for axes the machine lacks, where a run refuses them, and the dwell blocks
+    with a move."""
     return [_word_diagnostic(prog.path, blk.line, it.col, it.address, axes)
             for blk in prog.blocks for it in blk.items
             if isinstance(it, Word) and (it.value is not None or it.rref is not None)
-            and missing_axis(it.address, axes, dwells(blk.items), radius)]
+            and missing_axis(it.address, axes, dwells(blk.items), radius)] + dwell_diagnostics(
+        prog.path, ((blk.line, 0, blk.items) for blk in prog.blocks), axes)
+
+
+def dwell_diagnostics(path: str, blocks, axes) -> list[Diagnostic]:
+    """``ncvm check``: a dwell block with an axis word beside its time, which the run refuses (NC009: the dwell
+    is a block of its own, CL 800 L5465; nc/profiles/blockrules.py). ``blocks``: (line, what to add to a
+    word's column in the block for its column in the line, the block's Words)."""
+    out = []
+    for line, offset, items in blocks:
+        words = [it for it in items if isinstance(it, Word) and (it.value is not None or it.rref is not None)]
+        if not dwells(words):
+            continue
+        g = [w.value for w in words if w.address == "G" and w.value is not None]
+        values = {w.address: (w.value if w.value is not None else 0.0) for w in words if w.address not in "GMH"}
+        found = dwell_time(SINUMERIK8XX, g, values, axes)
+        if found is not None:
+            at = next(w.col for w in words if w.address == "G" and w.value == found[3])
+            out.append(Diagnostic(found[0], found[1], Span(path, line, offset + at)))
+    return out
 
 
 class UnitCodegen:

@@ -14,6 +14,8 @@ import re
 from dataclasses import dataclass, field
 
 from ...diagnostics import Diagnostic, Span
+from ...nc.profiles.blockrules import g_conflict
+from ...nc.profiles.sinumerik8xx import SINUMERIK8XX
 from ...source import (
     ALNUM,
     LETTERS,
@@ -199,13 +201,18 @@ REPEATABLE = frozenset("GMH")
 
 def _refuse_repeated(items: list) -> None:
     """SIN001 at the second word of an address the block holds twice (``G1 X10 X20``): the control keeps
-    one value per address, so the second would silently replace the first (docs/decisions.md)."""
+    one value per address, so the second would silently replace the first (docs/decisions.md); and at the
+    second of two G functions of one G group (``G90 G91``: nc/profiles/blockrules.py)."""
     seen = set()
     for it in items:
         if it.__class__ is Word and it.address not in REPEATABLE:
             if it.address in seen:
                 raise ReadError(it.col, f"address {it.address.rstrip('-')} twice in one block")
             seen.add(it.address)
+    g_words = [it for it in items if it.__class__ is Word and it.address == "G" and it.value is not None]
+    both = g_conflict(SINUMERIK8XX, [w.value for w in g_words]) if len(g_words) > 1 else None
+    if both is not None:  # CL 800 §11.5 L7392-7410: one function of each internal G group is active
+        raise ReadError(next(w.col for w in reversed(g_words) if w.value == both[1]), both[0])
 
 
 def _number(s: str, i: int, address: str) -> tuple[float, int]:

@@ -28,7 +28,9 @@ DIALECT = "implemented by the dialect"
 # -- how the kernel runs a row (NcKernel.execute) ------------------------------------------------------
 SET = 0  # handler(kernel, g, words, src) runs at once, in the block's order (modal settings)
 MOTION = 1  # the block's motion mode
-DWELL = 2  # the block is a dwell
+#: the block dwells: handler(kernel, g, words, block_g, src) -> (seconds, alone), ``alone`` when the block is
+#: the dwell and nothing else (its time word is no feed and no move), see :func:`dwell_alone`
+DWELL = 2
 POSITION = 3  # the block sets the position (G92)
 MACHINE = 4  # the block's target is in machine coordinates (LinuxCNC G53)
 ALONE = 5  # handler runs and the block ends there (G10 L2: a table write, no motion)
@@ -75,10 +77,12 @@ class Profile(FrozenRecord):
     Row, Address and Profile are records rather than dataclasses: every run's start-up imports them
     (ncvm/records.py)."""
 
-    __slots__ = ("name", "manual", "rows", "addresses", "defaults", "groups", "dispatch", "by_g", "word_handlers")
+    __slots__ = ("name", "manual", "rows", "addresses", "defaults", "groups", "dispatch", "by_g", "word_handlers",
+                 "g_groups", "m_groups", "block_rules")
 
     def __init__(self, name: str, manual: str, rows: tuple, addresses: tuple = (), defaults: dict | None = None,
-                 groups: dict | None = None):
+                 groups: dict | None = None, m_groups: dict | None = None, yielding: frozenset = frozenset(),
+                 block_rules: tuple = ()):
         self.name = name
         self.manual = manual
         self.rows = rows
@@ -92,6 +96,14 @@ class Profile(FrozenRecord):
         self.dispatch = {r.g: (r.run, r.handler) for r in rows}
         #: letter -> handler, for the addresses a handler reads (checked once per block when not empty)
         self.word_handlers = {a.letter: a.handler for a in addresses if a.handler}
+        #: G number -> its modal group, for the rule "one function of a group in a block" (nc/profiles/blockrules.py);
+        #: a ``yielding`` function gives way to another of its group in the block (rs274's G80) and is left out
+        self.g_groups = {r.g: r.group for r in rows if r.group and r.g not in yielding}
+        #: M number -> its group, for the same rule (the profiles that name M groups)
+        self.m_groups = {} if m_groups is None else m_groups
+        #: more rules of the control a block must keep: rule(profile, g, m, words) -> (code, message, address,
+        #: value) or None (blockrules.py)
+        self.block_rules = block_rules
 
     def refused(self, g) -> Row | None:
         """The row of a G function the profile refuses (None: it runs it, or the kernel does not know it)."""
@@ -127,3 +139,39 @@ def modal_only(group: str):
     def remember(kernel, g, words, src):
         kernel.modal[group] = g
     return remember
+
+
+#: what a din dwell block without P that also moves should say instead
+ISO_DWELL_HINT = "write the time as P to dwell and then move, as rs274 reads it"
+#: the words a control writes the dwell time with, in the order the kernel reads them
+DWELL_TIME_WORDS = ("P", "X", "F")
+
+
+def dwell_alone(kernel, g, words, block_g, src, explicit_motion: bool = False, hint: str = ""):
+    """G4 with its time as X or F (P read too): the block is the dwell alone, as the controls' manuals write it
+    (CL 800 ``G4 F=R27``, L5465); what :func:`lone_dwell_fault` finds in it stops the block (NC009)."""
+    fault = lone_dwell_fault(kernel.profile, g, words, block_g, kernel.axis_of, explicit_motion, hint)
+    if fault is not None:
+        kernel.fault("NC009", fault, src)
+    times = [a for a in DWELL_TIME_WORDS if a in words]
+    return (words[times[0]] if times else 0.0), True
+
+
+def lone_dwell_fault(profile: Profile, g, words, block_g, axes, explicit_motion: bool = False,
+                     hint: str = "") -> str | None:
+    """Why a dwell block whose time is X or F cannot run (None: it can). A second time word, or an axis word
+    beside the time, would be silently lost; ``explicit_motion``: a motion G code in the block is refused too
+    (LinuxCNC reads the block's X as a move, a DIN control as the time: the block has no one meaning)."""
+    times = [a for a in DWELL_TIME_WORDS if a in words]
+    if len(times) > 1:
+        return f"G{g:g} (dwell) with {' and '.join(times)}: one of them is the time, the block has no one meaning"
+    others = [a for a in words if a in axes and a not in times]
+    if explicit_motion and not others:
+        others = [f"G{x:g}" for x in block_g if profile.dispatch.get(x, (None,))[0] == MOTION]
+    if others:
+        what = f"{times[0]}{words[times[0]]:g}" if times else "without a time"
+        return (f"G{g:g} {what} is a dwell block of its own: {' '.join(others)} in it would not move "
+                f"({hint or 'a dwell with a move in one block is not supported by ncvm here'})")
+    if times and words[times[0]] < 0.0:
+        return f"G{g:g}: the dwell time {words[times[0]]:g} is negative"
+    return None

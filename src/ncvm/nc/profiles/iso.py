@@ -18,14 +18,17 @@ from . import (
     DWELL,
     IMPLEMENTED,
     INCH,
+    ISO_DWELL_HINT,
     MACHINE,
     MOTION,
     POSITION,
     SET,
     Profile,
     Row,
+    dwell_alone,
     refused,
 )
+from .blockrules import axis_users, d_word
 
 WORK_OFFSETS = {54: "G54", 55: "G55", 56: "G56", 57: "G57", 58: "G58", 59: "G59"}
 
@@ -88,8 +91,9 @@ def css_off(k, g, words, src):
 
 
 def tool_length(k, g, words, src):
-    """G43/G44 H<n>: the tool length of tool n (H, else D, else the tool in the spindle), plus or minus."""
-    number = int(words.get("H", words.get("D", k.tool)))
+    """G43/G44 H<n>: the tool length of tool n (H, else the tool in the spindle), plus or minus (a D word in
+    the block is refused before, as rs274 refuses it: nc/profiles/blockrules.py)."""
+    number = int(words.get("H", k.tool))
     length = k._tool(number, src).length if number else 0.0
     k.set_tool_length(length if g == 43 else -length, src)
 
@@ -105,6 +109,17 @@ def g92_clear(k, g, words, src):
 
 def offset_table(k, g, words, src):
     k._set_offset_table(words, src)
+
+
+def dwell(k, g, words, block_g, src):
+    """G4 P<seconds>: rs274 dwells, then makes the block's move (LinuxCNC's order of execution: the dwell is
+    step 10, the motion step 21), its F a feed. Without P the time is X or F as DIN controls write it, and the
+    block is the dwell alone (:func:`~ncvm.nc.profiles.dwell_alone`)."""
+    if "P" in words:
+        if words["P"] < 0.0:
+            k.fault("NC009", f"G4: the dwell time P{words['P']:g} is negative", src)
+        return words["P"], False
+    return dwell_alone(k, g, words, block_g, src, True, ISO_DWELL_HINT)
 
 
 def _row(g, group, meaning, line, run=SET, handler=None, status=IMPLEMENTED):
@@ -123,7 +138,8 @@ ROWS = (
     _row(1, "1 motion", "linear interpolation", "rs274 group 1", MOTION),
     _row(2, "1 motion", "circular interpolation clockwise", "rs274 group 1", MOTION),
     _row(3, "1 motion", "circular interpolation counter-clockwise", "rs274 group 1", MOTION),
-    _row(4, "0 non-modal", "dwell (P seconds; X or F as DIN controls write it)", "rs274 group 0", DWELL),
+    _row(4, "0 non-modal", "dwell P seconds, then the block's move; without P the time is X or F as DIN controls "
+         "write it, in a block of its own", "rs274 group 0", DWELL, dwell),
     _row(10, "0 non-modal", "G10 L2 P1..P6: set zero offset G54..G59 (other forms refused)", "rs274 group 0",
          ALONE, offset_table),
     _row(17, "2 plane", "plane XY", "rs274 group 2", SET, plane),
@@ -171,7 +187,14 @@ ROWS = (
            "rs274 group 10", CYCLE) for g in sorted(CYCLE_CODES)),
 )
 
+#: rs274's M groups (LinuxCNC interp_array.cc): two M functions of one group in a block are refused
+M_GROUPS = {**dict.fromkeys((0, 1, 2, 30, 60), "4 stopping"), **dict.fromkeys((3, 4, 5, 19), "7 spindle"),
+            **dict.fromkeys((6, 61), "6 tool change"), **dict.fromkeys((7, 8, 9), "8 coolant"),
+            **dict.fromkeys(range(48, 54), "9 override switches"), **dict.fromkeys(range(62, 69), "5 digital I/O")}
+
 ISO = Profile("iso", "LinuxCNC 2.9 rs274 (DIN 66025 / ISO 6983)", ROWS,
               defaults={"1 motion": 0, "2 plane": 17, "3 distance mode": 90, "6 units": 21,
-                        "7 cutter radius compensation": 40, "12 coordinate system": 54})
+                        "7 cutter radius compensation": 40, "12 coordinate system": 54},
+              m_groups=M_GROUPS, yielding=frozenset((80,)),  # rs274: G80 gives way to another motion code
+              block_rules=(axis_users, d_word))
 

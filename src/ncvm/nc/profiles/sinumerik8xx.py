@@ -25,6 +25,7 @@ from . import (
     Address,
     Profile,
     Row,
+    dwell_alone,
     refusal,
     refused,
 )
@@ -112,7 +113,7 @@ ROWS = (
     _row(53, "4", "zero offsets suppressed for this block: its target in machine coordinates, the tool length "
          "kept (as POS MSYS, L4083)", MACHINE, tool_length_kept, FAMILY),
     *(_row(g, "5", f"settable zero offset G{g} (ZOA group {g - 53}, L2456)", SET, work_offset) for g in (54, 55, 56, 57)),
-    _row(4, "6", "dwell, F or X seconds (G4 F=R27, L5465)", DWELL, line="L5465"),
+    _row(4, "6", "dwell, F or X seconds, a block of its own (G4 F=R27, L5465)", DWELL, dwell_alone, line="L5465"),
     _no(25, "6", "lower working area / spindle speed limitation"),
     _no(26, "6", "upper working area / spindle speed limitation"),
     _dialect(58, "6", "programmable zero offset 1, the block's axis values (ZOPR group 1, L2472)"),

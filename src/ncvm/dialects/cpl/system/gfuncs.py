@@ -37,6 +37,8 @@ from __future__ import annotations
 from dataclasses import dataclass, replace
 
 from ....nc.block import Block
+from ....nc.profiles.blockrules import g_conflict
+from ....nc.profiles.typ3osa import TYP3OSA
 from ....nc.spindle import CPL_GEARS
 from ..errors import CplError
 from .context import SystemContext
@@ -89,7 +91,11 @@ class Typ3Block(Block):
 
 
 def prepare(rt: SystemContext, blk: Block) -> Block:
-    """Take the Typ3 G functions (and the gear M functions) out of a block at preparation."""
+    """Take the Typ3 G functions (and the gear M functions) out of a block at preparation; two functions of one
+    G group are CPL040 (the block compiler sends every block that has them here)."""
+    both = g_conflict(TYP3OSA, blk.g)
+    if both is not None:  # the SD(1) group table, L2302-2306: one function of each group is active
+        raise CplError("CPL040", both[0])
     if not (TYP3_G.intersection(blk.g) or GEARS.intersection(blk.m)):
         return blk
     c = rt.ctl
@@ -98,14 +104,10 @@ def prepare(rt: SystemContext, blk: Block) -> Block:
         if mc in GEARS:
             st = replace(st, gear=mc)
     shifts = [g for g in blk.g if g in EXTERNAL_ZS]
-    if len(shifts) > 1:
-        raise CplError("CPL040", f"G{shifts[0]} and G{shifts[1]} cannot stand in one block (G group 30)")
     if shifts:
         st = replace(st, external_zs=shifts[0])
     for group, numbers in ADDITIVE_ZS.items():
         chosen = [g for g in blk.g if g in numbers]
-        if len(chosen) > 1:
-            raise CplError("CPL040", f"G{chosen[0]} and G{chosen[1]} cannot stand in one block (G group {group})")
         if chosen:
             st = replace(st, **{f"zs{group}": chosen[0]})
     for g in blk.g:

@@ -13,7 +13,7 @@ from ....diagnostics import Diagnostic, Span, read_lines
 from ....nc.profiles.check import refused_g_warnings
 from ....nc.profiles.sinumerik8xx import SINUMERIK8XX
 from ..codegen import _word_diagnostic as word_diagnostic
-from ..codegen import dwells, g_word, missing_axis
+from ..codegen import dwell_diagnostics, dwells, g_word, missing_axis
 from ..errors import ReadError
 from ..reader import Word, read_block
 from . import ast
@@ -25,6 +25,7 @@ def axis_diagnostics(path: str, prog, axes, radius: str = "B") -> list[Diagnosti
     lines = read_lines(path) or []
     out = []
     uses = []
+    blocks = []  # (line, column offset, words) for the dwell rule
     for st in _din_blocks(prog.body):
         source = lines[st.line - 1] if st.line <= len(lines) else ""
         base = source.find(st.text, max(st.col - 1, 0))
@@ -34,12 +35,13 @@ def axis_diagnostics(path: str, prog, axes, radius: str = "B") -> list[Diagnosti
             out.append(Diagnostic(e.code, e.message, Span(path, st.line, base + e.col if base >= 0 else st.col)))
             continue
         dwell = dwells(words)
+        blocks.append((st.line, base if base >= 0 else st.col - 1, words))
         uses.extend((w.value, st.line, base + w.col if base >= 0 else st.col) for w in words if g_word(w))
         for w in words:
             if (w.value is not None or w.rref is not None) and missing_axis(w.address, axes, dwell, radius):
                 column = base + w.col if base >= 0 else st.col
                 out.append(word_diagnostic(path, st.line, column, w.address, axes))
-    return out + refused_g_warnings(SINUMERIK8XX, path, uses)
+    return out + dwell_diagnostics(path, blocks, axes) + refused_g_warnings(SINUMERIK8XX, path, uses)
 
 
 def _din_blocks(node):
