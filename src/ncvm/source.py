@@ -48,6 +48,23 @@ def read_text(path: str | Path) -> str:
     return without_bom(Path(path).read_text(encoding="latin-1"))
 
 
+def open_program(path: str | Path):
+    """A program file opened for reading a stretch at a time (:func:`stretches`): Latin-1, every line end
+    (LF, CR LF, a lone CR) read as LF, as :func:`lines` splits them. Raises OSError as opening a file does."""
+    return open(path, encoding="latin-1", newline=None)
+
+
+def stretches(file, chars: int):
+    """The text of an open program file (:func:`open_program`) from its start, in stretches of about ``chars``
+    characters that end at a line end (or at the end of the file), a leading byte-order mark dropped: a
+    program of any size, never held whole."""
+    file.seek(0)
+    piece = without_bom(file.read(chars))
+    while piece:
+        yield piece + file.readline()
+        piece = file.read(chars)
+
+
 def lines(text: str) -> list[str]:
     """The lines of a program text, ended by LF, CR LF or a lone CR, as the controls end their blocks.
 
