@@ -59,10 +59,30 @@ def stretches(file, chars: int):
     characters that end at a line end (or at the end of the file), a leading byte-order mark dropped: a
     program of any size, never held whole."""
     file.seek(0)
-    piece = without_bom(file.read(chars))
-    while piece:
-        yield piece + file.readline()
-        piece = file.read(chars)
+    read = file.read(max(chars, len(BOM)))
+    piece = without_bom(read)
+    while read:
+        piece += file.readline()
+        if piece:
+            yield piece
+        read = piece = file.read(chars)
+
+
+def lines_at(path: str | Path, wanted) -> dict[int, str]:
+    """The lines numbered ``wanted`` (1-based) of a program file, read up to the last of them and no further
+    (a diagnostic shows its source line without reading a file of millions of lines whole). Raises OSError."""
+    last = max(wanted, default=0)
+    found: dict[int, str] = {}
+    if last < 1:
+        return found
+    with open_program(path) as file:
+        for n, line in enumerate(file, 1):
+            if n in wanted:
+                found[n] = without_bom(line) if n == 1 else line
+                found[n] = found[n][:-1] if found[n].endswith("\n") else found[n]
+            if n >= last:
+                break
+    return found
 
 
 def lines(text: str) -> list[str]:
