@@ -9,6 +9,8 @@ soft-limit check, trace, G-code, plot points), hands them to the :class:`Session
 from __future__ import annotations
 
 import dataclasses
+import os
+import stat
 from dataclasses import dataclass, field
 from functools import partial
 from pathlib import Path
@@ -52,8 +54,9 @@ def resolve_run(path: str | Path, dialect: str | None) -> tuple[str | None, str]
     named = dialect or dialect_of_name(path)
     if named is not None and _streams(named):
         try:
-            with open(path, "rb"):
-                pass
+            if not stat.S_ISFIFO(os.stat(path).st_mode):  # opening a pipe would take its writer's data
+                with open(path, "rb"):
+                    pass
         except OSError as e:
             raise UsageError(f"cannot read {path}: {e.strerror}") from None
         return None, named

@@ -58,7 +58,8 @@ def stretches(file, chars: int):
     """The text of an open program file (:func:`open_program`) from its start, in stretches of about ``chars``
     characters that end at a line end (or at the end of the file), a leading byte-order mark dropped: a
     program of any size, never held whole."""
-    file.seek(0)
+    if file.seekable():  # a pipe is read once, from where it stands
+        file.seek(0)
     read = file.read(max(chars, len(BOM)))
     piece = without_bom(read)
     while read:

@@ -166,3 +166,30 @@ def test_a_missing_or_unreadable_program_is_a_usage_error(tmp_path):
         with pytest.raises(UsageError, match=f"cannot read {path}: "):
             run(path, dialect=dialect, options=RunOptions(state_dir=tmp_path / "s"))
     assert not (tmp_path / "s").exists()  # stopped before the state was touched
+
+
+def test_a_program_from_a_named_pipe_is_read_once(tmp_path):
+    """The API runs a program it is given as a FIFO (the command line takes files only): its readability check
+    must not open the pipe (that would take the writer's data), and the pipe is read once, from where it
+    stands."""
+    import os
+    import subprocess
+    import sys
+    import threading
+
+    fifo = tmp_path / "p.ngc"
+    os.mkfifo(fifo)
+
+    def write():
+        with open(fifo, "w") as pipe:
+            pipe.write("G1 X1 F100\nG1 X2 Y3\nM2\n")
+
+    threading.Thread(target=write, daemon=True).start()
+    code = ("import json, sys\nfrom pathlib import Path\nfrom ncvm.api import run\n"
+            "from ncvm.runtime.session import RunOptions\n"
+            "r, _ = run(sys.argv[1], options=RunOptions(state_dir=Path(sys.argv[2])))\n"
+            "print(json.dumps([r['status'], r['motion']['feed_moves'], r['position']]))\n")
+    done = subprocess.run([sys.executable, "-c", code, str(fifo), str(tmp_path / "s")], capture_output=True,
+                          text=True, timeout=120)
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.strip() == '["ok", 2, {"X": 2.0, "Y": 3.0, "Z": 0.0}]'
