@@ -15,6 +15,12 @@ HERE = Path(__file__).parent
 PEERS = HERE / "peers"  # the LinuxCNC peer programs and the flat-program generator
 WORK = HERE / ".work"
 NCVM = [sys.executable, "-m", "ncvm"]  # the CLI as a user starts it (the console script adds nothing but a stub)
+#: run the opt-in cases of 10,000,000 moves too (``run.py --large``: minutes each, a 340 MB DIN file)
+LARGE = {"on": False}
+
+
+def large() -> bool:
+    return LARGE["on"]
 
 
 @dataclass

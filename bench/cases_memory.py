@@ -1,5 +1,6 @@
 """Memory per million moves: a CPL loop of 1,000,000 G1 blocks without a WAIT and a flat DIN file of
-1,000,000 G1 lines, each run in its own process; the case prints the process's peak resident memory.
+1,000,000 G1 lines, each run in its own process; the case prints the process's peak resident memory and
+gives it (``ncvm_peak_rss_mb``, with the child's ``ncvm_cpu_s`` and ``ncvm_wall_s``) to ``run.py --json``.
 Memory per million output lines: a CPL loop of 1,000,000 PRN#(0) lines (no moves).
 
 Without bounds the CPL run held every queued block and every recorded move (~620 MB at 1 M moves,
@@ -62,12 +63,14 @@ def write_programs() -> None:
 def runner(dialect: str):
     moves = 0 if dialect == "cpl_output" else MOVES
 
-    def run_case() -> None:
+    def run_case() -> dict:
         # started by the bench's launcher (benchlib.child): a child forked from this process, grown by the cases
         # before, would count this process's memory in its peak
         used = child([sys.executable, "-c", MEASURE, str(PROGRAMS[dialect]), str(WORK / ".ncvm"), str(moves)])
         what = "output lines" if dialect == "cpl_output" else "moves"
         print(f"  {dialect}: peak RSS {used.peak_rss_mb:,.0f} MB for {MOVES:,} {what}", flush=True)
+        # the child's figures, as a whole-process case gives them: run.measure puts them in the JSON document
+        return {"ncvm_cpu_s": used.cpu_s, "ncvm_wall_s": used.wall_s, "ncvm_peak_rss_mb": used.peak_rss_mb}
 
     return run_case
 

@@ -12,7 +12,10 @@ child process, alternating the two, and takes the child's own CPU time and peak 
 - ``proc_startup``: one block (``M2``, bench/peers/startup_m2.ngc) through ``ncvm run`` and rs274;
   ``proc_startup_version`` / ``proc_startup_check``: ``ncvm --version`` and ``ncvm check`` of a small CPL program;
 - ``proc_<dialect>_2m_moves_memory``: 2,000,000 computed G1 moves in a loop of each dialect, no plot;
-- ``proc_din_flat_500k_memory``: a 500,000-line flat DIN file (bench/peers/gen_flat.py) and rs274 on it.
+- ``proc_din_flat_500k_memory``: a 500,000-line flat DIN file (bench/peers/gen_flat.py) and rs274 on it;
+- with ``run.py --large`` only: ``proc_<dialect>_10m_moves_memory`` (10,000,000 computed G1 moves) and
+  ``proc_din_flat_10m_memory`` (a 10,000,000-line flat DIN file, 340 MB, and rs274 on it): memory bounded
+  for a program of any length.
 """
 
 from __future__ import annotations
@@ -22,12 +25,13 @@ import subprocess
 import sys
 from pathlib import Path
 
-from benchlib import NCVM, PEERS, WORK, Case, child, rs274, rs274_argv, warm_bytecode
+from benchlib import NCVM, PEERS, WORK, Case, child, large, rs274, rs274_argv, warm_bytecode
 from cases_memory import CPL_MOVES
 
 LOOP = 300_000
 MOVES = 2_000_000
 FLAT_LINES = 500_000
+LARGE = 10_000_000  # moves and lines of the opt-in cases (run.py --large)
 STATE = WORK / ".ncvm-proc"
 
 CPL_LOOP = """\
@@ -95,10 +99,20 @@ def write_programs() -> None:
     _write("moves_2m.mpf", SIN800_MOVES.format(n=MOVES))
     _write("moves_2m.sap", SYMPAS_MOVES.format(rows=MOVES // 1000, last=MOVES // 1000 - 1))
     _write("small.cpl", CPL_LOOP.format(n=10, kind="REAL", s=""))
-    flat = WORK / "flat_500k.ngc"
-    if not flat.exists():
-        subprocess.run([sys.executable, str(PEERS / "gen_flat.py"), "-n", str(FLAT_LINES), "-o", str(flat)],
-                       check=True)
+    _flat(WORK / "flat_500k.ngc", FLAT_LINES)
+
+
+def _flat(path: Path, lines: int) -> None:
+    if not path.exists():
+        subprocess.run([sys.executable, str(PEERS / "gen_flat.py"), "-n", str(lines), "-o", str(path)], check=True)
+
+
+def write_large_programs() -> None:
+    write_programs()
+    _write("moves_10m.cpl", CPL_MOVES.format(n=LARGE))
+    _write("moves_10m.mpf", SIN800_MOVES.format(n=LARGE))
+    _write("moves_10m.sap", SYMPAS_MOVES.format(rows=LARGE // 1000, last=LARGE // 1000 - 1))
+    _flat(WORK / "flat_10m.ngc", LARGE)
 
 
 def ncvm_run(program: str, *extra: str) -> list[str]:
@@ -138,6 +152,10 @@ def cases() -> dict[str, Case]:
     def case(run, count, unit, repeat=0):
         return Case(run, count, unit, setup=write_programs, repeat=repeat)
 
+    def large_case(run, unit):
+        return Case(run, LARGE, unit, setup=write_large_programs, repeat=1, available=large,
+                    why_unavailable="10,000,000 moves: bench/run.py --large")
+
     return {
         "proc_cpl_real_loop_300k": case(paired(ncvm_run("real_loop_300k.cpl"), WORK / "loop_arith_300k.ngc"),
                                         LOOP, "iterations/s"),
@@ -157,4 +175,9 @@ def cases() -> dict[str, Case]:
            for d, ext in (("cpl", "cpl"), ("sin800", "mpf"), ("sympas", "sap"))},
         "proc_din_flat_500k_memory": case(paired(ncvm_run("flat_500k.ngc", "-d", "din"), WORK / "flat_500k.ngc"),
                                           FLAT_LINES, "lines/s", repeat=1),
+        **{f"proc_{d}_10m_moves_memory": large_case(paired(ncvm_run(f"moves_10m.{ext}", "-d", d), None,
+                                                           expect_moves=LARGE), "G1/s")
+           for d, ext in (("cpl", "cpl"), ("sin800", "mpf"), ("sympas", "sap"))},
+        "proc_din_flat_10m_memory": large_case(paired(ncvm_run("flat_10m.ngc", "-d", "din"), WORK / "flat_10m.ngc"),
+                                               "lines/s"),
     }

@@ -1,12 +1,13 @@
 """ncvm benchmarks (not tests): each case several times, min and median, and the rate.
 
-    python bench/run.py [--repeat N] [--only SUBSTR] [--json [FILE]]
+    python bench/run.py [--repeat N] [--only SUBSTR] [--large] [--json [FILE]]
 
 Cases come from the modules ``bench/cases_*.py``; each defines ``cases()``
 returning ``{name: Case}``. Peer cases (``rs274_<case>``) run LinuxCNC's
 ``rs274`` on the same work when it is installed. Whole-process cases (``proc_*``, bench/cases_process.py)
 run the ``ncvm`` command in a child process and report its CPU time (min and median columns), peak
-memory and the ratio to rs274 on a second line.
+memory and the ratio to rs274 on a second line. ``--large`` adds the cases of 10,000,000 moves (``proc_*_10m_*``:
+a few minutes, a 340 MB DIN file written once under bench/.work).
 """
 
 from __future__ import annotations
@@ -23,6 +24,7 @@ from pathlib import Path
 HERE = Path(__file__).parent
 sys.path.insert(0, str(HERE))
 
+import benchlib  # noqa: E402
 from benchlib import Case  # noqa: E402
 
 
@@ -83,9 +85,11 @@ def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--repeat", type=int, default=5)
     ap.add_argument("--only", default="")
+    ap.add_argument("--large", action="store_true", help="also the cases of 10,000,000 moves (minutes)")
     ap.add_argument("--json", dest="json_file", nargs="?", const="-",
                     help="write the figures as JSON to FILE (without FILE: to stdout, the table to stderr)")
     args = ap.parse_args()
+    benchlib.LARGE["on"] = args.large
     if args.json_file == "-":  # stdout is the JSON document alone: the table goes to stderr
         with contextlib.redirect_stdout(sys.stderr):
             results = table(args)

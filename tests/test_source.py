@@ -22,6 +22,28 @@ def test_a_diagnostic_shows_the_first_line_without_the_mark(tmp_path):
     assert text.splitlines()[1:] == ["    G0 Xé", "        ^"]
 
 
+@pytest.mark.parametrize("data", [
+    b"\xef\xbb\xbfG0 X1\r\nG1 Y2\rG1 \x0cZ3\n\n(\xe9)\r\n\rlast",  # LF, CR LF, lone CR, a form feed kept
+    b"one\ntwo\n",
+    b"",
+])
+def test_lines_at_and_stretches_read_the_lines_a_text_splits_into(tmp_path, data):
+    """A diagnostic's source line (lines_at) and a streamed DIN run (stretches) read a file as lines() splits
+    its text."""
+    from ncvm.source import lines, lines_at, open_program, stretches
+
+    path = tmp_path / "p.din"
+    path.write_bytes(data)
+    expected = lines(read_text(path))
+    assert lines_at(path, set(range(0, len(expected) + 3))) == dict(enumerate(expected, 1))
+    assert lines_at(path, set()) == {}
+    with open_program(path) as file:
+        for chars in (1, 3, 1 << 18):
+            pieces = list(stretches(file, chars))
+            assert lines("".join(pieces)) == expected
+            assert all(p.endswith("\n") for p in pieces[:-1])
+
+
 def test_only_ascii_letters_and_digits_count():
     latin1 = {chr(c) for c in range(0x80, 0x100)}
     assert not latin1 & (DIGITS | LETTERS | NAME_CHARS)

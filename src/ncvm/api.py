@@ -9,13 +9,15 @@ soft-limit check, trace, G-code, plot points), hands them to the :class:`Session
 from __future__ import annotations
 
 import dataclasses
+import os
+import stat
 from dataclasses import dataclass, field
 from functools import partial
 from pathlib import Path
 from typing import Any
 
 from .diagnostics import CompileFailed, Diagnostic, Span, UsageError
-from .dialects import detect_dialect, get_dialect
+from .dialects import detect_dialect, dialect_of_name, get_dialect
 from .machine.config import load_machine, load_scenario
 from .machine.model import Machine
 from .machine.state import StateLock
@@ -43,6 +45,30 @@ def read_source(path: str | Path) -> str:
 def resolve(path: str | Path, dialect: str | None) -> tuple[str, str]:
     text = read_source(path)
     return text, dialect or detect_dialect(path, text)
+
+
+def resolve_run(path: str | Path, dialect: str | None) -> tuple[str | None, str]:
+    """:func:`resolve` for a run: the text is None for a dialect that reads its program from the file a
+    stretch at a time (``Dialect.streams``), and is not read whole at all when the file's name or the caller
+    names that dialect (issue 18: bounded memory for a file of any size)."""
+    named = dialect or dialect_of_name(path)
+    if named is not None and _streams(named):
+        try:
+            if not stat.S_ISFIFO(os.stat(path).st_mode):  # opening a pipe would take its writer's data
+                with open(path, "rb"):
+                    pass
+        except OSError as e:
+            raise UsageError(f"cannot read {path}: {e.strerror}") from None
+        return None, named
+    text, d = resolve(path, named)
+    return (None if _streams(d) else text), d
+
+
+def _streams(dialect: str) -> bool:
+    try:
+        return get_dialect(dialect).streams
+    except UsageError:  # no such dialect: said where it is used
+        return False
 
 
 def machine_for(path: str | Path, machine: Machine | str | Path | None, state_dir: Path = Path(".ncvm")) -> Machine:
@@ -233,7 +259,7 @@ def run_program(path: str | Path, dialect: str | None = None, machine: Machine |
     """
     options = options or RunOptions()
     with memory_limit(options.max_memory):
-        text, d = resolve(path, dialect)
+        text, d = resolve_run(path, dialect)
         front = get_dialect(d)
         m = machine_for(path, machine, options.state_dir)
         if options.scenario:

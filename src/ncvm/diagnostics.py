@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from .source import lines, read_text
+from .source import lines, lines_at, read_text
 
 
 @dataclass(frozen=True, slots=True)
@@ -39,13 +39,17 @@ class Diagnostic:
     severity: str = "error"
     notes: list[str] = field(default_factory=list)
 
-    def render(self, source_lines: list[str] | None = None) -> str:
+    def render(self, source_lines: list[str] | dict[int, str] | None = None) -> str:
+        """The diagnostic as ``ncvm`` prints it, with its source line: from ``source_lines`` (the file's lines,
+        or some of them by number), else read from the file (that line alone)."""
         where = f"{self.span}: " if self.span else ""
         text = f"{where}{self.severity} {self.code}: {self.message}"
         if self.span and source_lines is None:
-            source_lines = read_lines(self.span.file)
-        if self.span and source_lines and 1 <= self.span.line <= len(source_lines):
-            src = source_lines[self.span.line - 1].rstrip("\r\n")
+            source_lines = read_lines_at(self.span.file, {self.span.line})
+        if isinstance(source_lines, list):
+            source_lines = dict(enumerate(source_lines, 1)) if self.span else None
+        if self.span and source_lines and self.span.line in source_lines:
+            src = source_lines[self.span.line].rstrip("\r\n")
             text += f"\n    {src}"
             if self.span.column:
                 width = max(1, (self.span.end_column or self.span.column + 1) - self.span.column)
@@ -68,14 +72,14 @@ class Diagnostic:
 
 
 def render_all(diagnostics: list[Diagnostic]) -> list[str]:
-    """Each diagnostic rendered, every file read once (a file with 100,000 errors was read 100,000 times)."""
-    files: dict[str, list[str] | None] = {}
-    out = []
+    """Each diagnostic rendered, every file read once (a file with 100,000 errors was read 100,000 times), and
+    only up to the last line a diagnostic shows."""
+    wanted: dict[str, set[int]] = {}
     for d in diagnostics:
-        if d.span and d.span.file not in files:
-            files[d.span.file] = read_lines(d.span.file)
-        out.append(d.render((files[d.span.file] or []) if d.span else None))
-    return out
+        if d.span:
+            wanted.setdefault(d.span.file, set()).add(d.span.line)
+    files = {path: read_lines_at(path, numbers) for path, numbers in wanted.items()}
+    return [d.render(files[d.span.file] if d.span else None) for d in diagnostics]
 
 
 def read_lines(path: str) -> list[str] | None:
@@ -83,6 +87,14 @@ def read_lines(path: str) -> list[str] | None:
         return lines(read_text(path))
     except OSError:
         return None
+
+
+def read_lines_at(path: str, numbers) -> dict[int, str]:
+    """Lines ``numbers`` of a file (:func:`ncvm.source.lines_at`); none when it cannot be read."""
+    try:
+        return lines_at(path, numbers)
+    except (OSError, ValueError):  # ValueError: a path with a NUL byte, as read_text raises it too
+        return {}
 
 
 class NcvmError(Exception):

@@ -48,6 +48,44 @@ def read_text(path: str | Path) -> str:
     return without_bom(Path(path).read_text(encoding="latin-1"))
 
 
+def open_program(path: str | Path):
+    """A program file opened for reading a stretch at a time (:func:`stretches`): Latin-1, every line end
+    (LF, CR LF, a lone CR) read as LF, as :func:`lines` splits them. Raises OSError as opening a file does."""
+    return open(path, encoding="latin-1", newline=None)
+
+
+def stretches(file, chars: int):
+    """The text of an open program file (:func:`open_program`) from its start, in stretches of about ``chars``
+    characters that end at a line end (or at the end of the file), a leading byte-order mark dropped: a
+    program of any size, never held whole."""
+    if file.seekable():  # a pipe is read once, from where it stands
+        file.seek(0)
+    read = file.read(max(chars, len(BOM)))
+    piece = without_bom(read)
+    while read:
+        piece += file.readline()
+        if piece:
+            yield piece
+        read = piece = file.read(chars)
+
+
+def lines_at(path: str | Path, wanted) -> dict[int, str]:
+    """The lines numbered ``wanted`` (1-based) of a program file, read up to the last of them and no further
+    (a diagnostic shows its source line without reading a file of millions of lines whole). Raises OSError."""
+    last = max(wanted, default=0)
+    found: dict[int, str] = {}
+    if last < 1:
+        return found
+    with open_program(path) as file:
+        for n, line in enumerate(file, 1):
+            if n in wanted:
+                found[n] = without_bom(line) if n == 1 else line
+                found[n] = found[n][:-1] if found[n].endswith("\n") else found[n]
+            if n >= last:
+                break
+    return found
+
+
 def lines(text: str) -> list[str]:
     """The lines of a program text, ended by LF, CR LF or a lone CR, as the controls end their blocks.
 

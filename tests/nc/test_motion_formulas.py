@@ -88,6 +88,31 @@ def arc_cases(draw):
     return start, end, (ca, cb), draw(st.booleans()), draw(st.sampled_from([0.0, 0.5, 40.0]))
 
 
+@settings(max_examples=200, deadline=None)
+@given(arc_cases(), st.floats(1.0, 40000.0))
+def test_no_axis_exceeds_its_limits_anywhere_on_an_arc(case, feed):
+    """At the quadrant points one plane axis carries the plane's whole share of the path speed and of the
+    tangential ramp (the plane's share is planar / length, 1 on a flat arc); a helix's linear axis carries
+    rise / length all along. Neither may exceed the axis's own maximum feed or acceleration (AXES: X, Y and Z
+    all differ, so a cap by the wrong axis or the 45 degree chord's 1/sqrt 2 share shows)."""
+    s, e, c, clockwise, rise = case
+    dyn = AxisDynamics(machine_from_dict({"axis": AXES}).axes)
+    sweep = arcs.sweep(*s, *e, *c, clockwise)
+    planar = abs(sweep) * math.hypot(s[0] - c[0], s[1] - c[1])
+    length = arcs.arc_length(math.hypot(s[0] - c[0], s[1] - c[1]), sweep, rise)
+    v, acc = arc_limits((e[0] - s[0], e[1] - s[1], rise), 0, 1, length, feed / 60.0, dyn.max_feed, dyn.accel)
+    assert v <= feed / 60.0
+    # arc_limits takes the plane's share as sqrt(1 - rise share squared), the test as planar / length: on a
+    # steep helix the subtraction loses digits (about 1e-16 / (1 - share**2) relative), so allow 1e-9
+    tight = 1.0 + 1e-9
+    assert v * planar / length <= min(dyn.max_feed[:2]) * tight
+    assert acc * planar / length <= min(dyn.accel[:2]) * tight
+    assert v * rise / length <= dyn.max_feed[2] * tight and acc * rise / length <= dyn.accel[2] * tight
+    # and the cap is no stricter than it has to be: one of the limits binds, or the feed does
+    assert v == feed / 60.0 or math.isclose(v, min(min(dyn.max_feed[:2]) * length / planar,
+                                                   dyn.max_feed[2] * length / rise if rise else math.inf))
+
+
 @settings(max_examples=300, deadline=None)
 @given(st.lists(arc_cases(), min_size=1, max_size=16), st.floats(1.0, 20000.0))
 def test_arc_sweep_length_extent_and_time_scalar_and_columns_agree(cases, feed):
@@ -101,7 +126,7 @@ def test_arc_sweep_length_extent_and_time_scalar_and_columns_agree(cases, feed):
     end3 = np.column_stack((ea, eb, np.array([h for *_x, h in cases])))
     lengths = arcs.arc_length_columns(r0, sweeps, arcs.helix_travel_columns(start3, end3, 0, 1))
     extents = arcs.arc_plane_extent_columns(sa, sb, ca, cb, r0, a0, sweeps)
-    v, acc = arc_limits_columns(0, 1, lengths, feed / 60.0, dyn.max_feed, dyn.accel)
+    v, acc = arc_limits_columns(end3 - start3, 0, 1, lengths, feed / 60.0, dyn.max_feed, dyn.accel)
     times = trapezoid_time_columns(lengths, v, acc)
     for k, ((s, e, c, clockwise, _rise), s3, e3) in enumerate(zip(cases, start3.tolist(), end3.tolist())):
         radius_k = math.hypot(s[0] - c[0], s[1] - c[1])
@@ -112,7 +137,7 @@ def test_arc_sweep_length_extent_and_time_scalar_and_columns_agree(cases, feed):
         length = arcs.arc_length(radius_k, sweep, arcs.helix_travel(s3, e3, 0, 1))
         assert lengths[k] == pytest.approx(length, rel=1e-12)
         assert extents[k].tolist() == pytest.approx(arcs.arc_plane_extent(*s, *c, radius_k, sweep), abs=1e-9)
-        t = trapezoid_time(length, *arc_limits(3, 0, 1, length, feed / 60.0, dyn.max_feed, dyn.accel))
+        t = trapezoid_time(length, *arc_limits([b - a for a, b in zip(s3, e3)], 0, 1, length, feed / 60.0, dyn.max_feed, dyn.accel))
         # rel 1e-7, not tighter: the scalar and the column formulas evaluate in different orders, and on a
         # near-full arc of a large radius the sweep (2 pi less a small angle) comes out of a cancellation, so
         # the two times were seen to part in the 8th digit now and then (hypothesis); a wrong formula (a

@@ -82,7 +82,9 @@ def test_g64_p_sets_the_tolerance_in_a_din_program(run_text):
 def test_circle_above_its_centripetal_limit(run_text, tmp_path):
     # R5 full circle at F6000 (100 mm/s): centripetal v = sqrt(a R) = 70.71 mm/s; the tangential acceleration
     # of an arc is the plane axes' smallest, a (nc.dynamics.arc_limits: at the quadrant points one axis takes
-    # the whole ramp): 2 pi 5 / 70.71 + 70.71 / 1000 = 0.4443 + 0.0707 = 0.5150 s from rest to rest
+    # the whole ramp): 2 pi 5 / 70.71 + 70.71 / 1000 = 0.4443 + 0.0707 = 0.5150 s from rest to rest. Rest to
+    # rest without the centripetal cap the arc runs at the axes' maximum feed, 5000 mm/min = 83.33 mm/s (at the
+    # quadrant points one axis alone carries the path speed): 0.3770 + 0.0833 = 0.4603 s
     text = "G90 G0 X5 Y0\nG64 G2 X5 Y0 I-5 J0 F6000\nM2\n"
     trace = tmp_path / "t.jsonl"
     run_text(text, machine=machine(), trace=trace)
@@ -91,7 +93,58 @@ def test_circle_above_its_centripetal_limit(run_text, tmp_path):
     assert arc["time"] == pytest.approx(2 * math.pi * 5 / v + v / A, rel=1e-9)
     run_text(text, machine=machine(), trace=trace, time_model="rest-to-rest")
     arc = [json.loads(x) for x in trace.read_text().splitlines() if '"arc"' in x][0]
-    assert arc["time"] == pytest.approx(2 * math.pi * 5 / 100.0 + 100.0 / A, rel=1e-9)
+    vmax = 5000.0 / 60.0
+    assert arc["time"] == pytest.approx(2 * math.pi * 5 / vmax + vmax / A, rel=1e-9)
+
+
+def slow_axis_machine(**limits):
+    """The schema's axes with some limits changed, e.g. ``X={"max_feed": 3000.0}``."""
+    axes = [{**axis, **limits.get(axis["name"], {})} for axis in AXES]
+    return machine_from_dict({"axis": axes, "tool": [{"number": 1}]})
+
+
+@pytest.mark.parametrize("model", ["lookahead", "rest-to-rest"])
+@pytest.mark.parametrize("hook", [None, lambda *a: None])  # plain run (column-wise) and block by block (kernel)
+def test_circle_above_one_axis_max_feed_runs_at_that_axis_feed(run_text, model, hook):
+    """A full circle R10 at F4000 (66.67 mm/s) with X's maximum feed 3000 mm/min (50 mm/s): at the quadrant
+    points (here the start point) X alone carries the path speed, so the circle runs at 50 mm/s all along:
+    2 pi 10 / 50 + 50 / 1000 = 1.2566 + 0.05 = 1.3066 s (the centripetal cap sqrt(1000 * 10) = 100 mm/s does
+    not bind). The 45 degree chord's share gave min(66.67, 50 sqrt 2) = 66.67 mm/s: X at 66.67 mm/s at the
+    quadrant points, 0.9425 + 0.0667 = 1.0091 s a circle."""
+    m = slow_axis_machine(X={"max_feed": 3000.0})
+    r = run_text("G90 G64 F4000\nG2 X0 Y0 I0 J10\nG2 X0 Y0 I0 J10\nM2\n", machine=m, time_model=model, hook=hook)
+    v = 50.0
+    one = 2 * math.pi * 10 / v + v / A
+    if model == "rest-to-rest":
+        assert r["cycle_time_s"] == pytest.approx(2 * one, rel=1e-9)
+    else:  # the two circles join tangentially at the full speed: one ramp up, one down
+        assert r["cycle_time_s"] == pytest.approx(2 * one - v / A, rel=1e-9)
+
+
+@pytest.mark.parametrize("hook", [None, lambda *a: None])
+def test_helix_linear_axis_caps_the_path_speed_by_its_own_share(run_text, tmp_path, hook):
+    """A helix: full circle R10 in XY (62.832 mm) rising 20 mm in Z, length L = hypot(62.832, 20) = 65.938 mm,
+    at F6000 (100 mm/s) with Z's maximum feed 600 mm/min (10 mm/s). Z's share of the path is 20 / L, so the
+    path runs at 10 L / 20 = 32.97 mm/s and the helix takes 20 / 10 = 2 s at speed. The ramp: X and Y share
+    p = 62.832 / L of the path (1000 / p = 1049.4 mm/s^2), Z 20 / L (1000 L / 20 = 3297 mm/s^2): v / (1000 / p)
+    = 10 * 62.832 / 20 / 1000 = 0.0314 s. Without Z's share the helix ran at 100 mm/s, Z at 30.3 mm/s."""
+    m = slow_axis_machine(Z={"max_feed": 600.0})
+    trace = tmp_path / "t.jsonl"
+    r = run_text("G90 G64 F6000\nG2 X0 Y0 Z20 I0 J10\nM2\n", machine=m, trace=trace, hook=hook)
+    planar = 2 * math.pi * 10
+    assert r["cycle_time_s"] == pytest.approx(20.0 / 10.0 + 10.0 * planar / 20.0 / A, rel=1e-9)
+    arc = [json.loads(x) for x in trace.read_text().splitlines() if '"arc"' in x][0]
+    assert arc["v_exit"] == 0.0 and arc["time"] == pytest.approx(r["cycle_time_s"], rel=1e-9)
+
+
+def test_helix_plane_axis_caps_the_path_speed_by_the_plane_share(run_text):
+    """The same helix with X's maximum feed 3000 mm/min (50 mm/s) and Z free: X carries p = 62.832 / L of the
+    path speed at the quadrant points, so the path runs at 50 / p = 52.47 mm/s (above X's own 50, as the
+    path is longer than its plane part) and ramps at 1000 / p: L / (50 / p) + (50 / p) / (1000 / p)
+    = 62.832 / 50 + 0.05 = 1.3066 s, the flat circle's time."""
+    m = slow_axis_machine(X={"max_feed": 3000.0})
+    r = run_text("G90 G64 F6000\nG2 X0 Y0 Z20 I0 J10\nM2\n", machine=m, time_model="rest-to-rest")
+    assert r["cycle_time_s"] == pytest.approx(2 * math.pi * 10 / 50.0 + 50.0 / A, rel=1e-9)
 
 
 def test_a_small_circle_ramps_no_faster_than_an_axis_can(run_text):

@@ -262,8 +262,8 @@ def test_a_file_is_read_once_for_all_its_diagnostics(tmp_path, monkeypatch):
     path.write_text("G1 X@\n" * 50, encoding="latin-1")
     diags = check(path)
     reads = []
-    real = diagnostics.read_lines
-    monkeypatch.setattr(diagnostics, "read_lines", lambda p: reads.append(p) or real(p))
+    real = diagnostics.read_lines_at
+    monkeypatch.setattr(diagnostics, "read_lines_at", lambda p, numbers: reads.append(p) or real(p, numbers))
     rendered = diagnostics.render_all(diags)
     assert len(diags) == 50 and len(reads) == 1
     assert rendered[49].split("\n")[1] == "    G1 X@"

@@ -136,13 +136,17 @@ def test_memory_of_a_cpl_run_does_not_grow_with_its_moves(tmp_path):
     assert large - small < 40_000, (small, large)
 
 
-def test_cli_program_too_large_to_read_within_the_limit_is_run006(tmp_path):
-    prog = tmp_path / "big.ngc"
+@pytest.mark.parametrize("name, said", [
+    ("big.mpf", "error RUN006: out of memory"),  # read whole before the run: too large to read within 5 MB
+    ("big.ngc", "error RUN006: memory limit reached"),  # din reads a stretch at a time: the run reaches it
+])
+def test_cli_program_too_large_to_read_within_the_limit_is_run006(tmp_path, name, said):
+    prog = tmp_path / name
     prog.write_text("G21 G90 F1000\n" + "G1 X1.123 Y2.456 (a comment that makes the line long)\n" * 200_000 + "M30\n")
     run = subprocess.run([*NCVM, "run", str(prog), "--state", str(tmp_path / "s"), "--max-memory", "5M"],
                          capture_output=True, text=True)
     assert run.returncode == 1
-    assert "error RUN006: out of memory" in run.stderr and "internal error" not in run.stderr
+    assert said in run.stderr and "internal error" not in run.stderr
 
 
 WRITES = """\

@@ -66,11 +66,16 @@ def available() -> list[str]:
     return out
 
 
+def dialect_of_name(path: str | Path) -> str | None:
+    """The dialect a program's file name (its extension) says, or None."""
+    return EXTENSIONS.get(Path(path).suffix.lower())
+
+
 def detect_dialect(path: str | Path, text: str) -> str:
     """The dialect of a program: by extension, else by content when that is certain."""
-    ext = Path(path).suffix.lower()
-    if ext in EXTENSIONS:
-        return EXTENSIONS[ext]
+    named = dialect_of_name(path)
+    if named:
+        return named
     scores = sorted(((get_dialect(d).sniff(text), d) for d in available()), reverse=True)
     if scores and scores[0][0] >= 60 and (len(scores) == 1 or scores[0][0] - scores[1][0] >= 30):
         return scores[0][1]

@@ -13,6 +13,9 @@ class Dialect:
     """A language front end: check, run, and (where the control had one) compile."""
 
     id = ""
+    #: reads its program from the file a stretch at a time: :meth:`run` gets ``text`` None (the API does not
+    #: read the file whole for it when the file's name or the caller names the dialect)
+    streams = False
 
     def sniff(self, text: str) -> int:
         """How sure (0-100) that ``text`` is a program of this dialect."""
@@ -25,7 +28,8 @@ class Dialect:
     def run(self, path: str, text: str, session: Session) -> None:
         """Run the program; raises CompileFailed before the start or RuntimeFault during the run.
 
-        Sets ``session.variables`` to the main program's variables as they stand when it ends.
+        Sets ``session.variables`` to the main program's variables as they stand when it ends. ``text`` is
+        None for a dialect that :attr:`streams`: it reads ``path`` itself.
         """
         raise NotImplementedError
 

@@ -10,7 +10,6 @@ from __future__ import annotations
 
 from ..diagnostics import Diagnostic, Span
 from ..lazy import lazy
-from ..source import lines as program_lines
 from .block import PLAIN_WORDS, PlainRun, word_column
 
 np = lazy("numpy")
@@ -42,10 +41,11 @@ def missing_axis_message(address: str, axes) -> str:
     return f"axis {address} is not configured on this machine (its axes: {' '.join(axes) or 'none'})"
 
 
-def din_missing_axes(path: str, text: str, segments: list, axes, skip_active: bool = False) -> list:
+def din_missing_axes(path: str, line_at, segments: list, axes, skip_active: bool = False) -> list:
     """The blocks of a plain DIN program (:func:`~ncvm.nc.block.read_din_segments`) with a word for an axis
     the machine lacks, in program order: (segment index, row within a PlainRun or None, Diagnostic NC011).
-    With ``skip_active`` the skipped blocks (``/``) are left out, as a run leaves them out."""
+    With ``skip_active`` the skipped blocks (``/``) are left out, as a run leaves them out. ``line_at(n)``:
+    the source line ``n`` of such a block (asked only when there is one), for the word's column."""
     found = []  # (segment index, row, line, address)
     plain_missing = [a for a in _PLAIN_AXES if a not in axes]
     for i, seg in enumerate(segments):
@@ -63,7 +63,9 @@ def din_missing_axes(path: str, text: str, segments: list, axes, skip_active: bo
             found.append((i, None, blk.src.line, address))
     if not found:
         return []
-    lines = program_lines(text)  # for the columns (not split when nothing is found: a large program costs)
-    return [(i, row, Diagnostic("NC011", missing_axis_message(a, axes),
-                                Span(path, line, word_column(lines[line - 1], a) if line <= len(lines) else None)))
-            for i, row, line, a in found]
+    out = []
+    for i, row, line, a in found:
+        text = line_at(line)
+        out.append((i, row, Diagnostic("NC011", missing_axis_message(a, axes),
+                                       Span(path, line, word_column(text, a) if text is not None else None))))
+    return out

@@ -18,7 +18,7 @@ from typing import NamedTuple
 from ..diagnostics import Diagnostic, Span
 from ..lazy import lazy
 from ..source import lines as program_lines
-from ..source import too_many_decades, word_number
+from ..source import stretches, too_many_decades, word_number
 from .canon import Src
 
 np = lazy("numpy")
@@ -283,15 +283,8 @@ def read_din_segments(path: str, text: str, as_columns: bool = True) -> tuple[li
 
 def read_din_chunks(path: str, text: str, as_columns: bool = True):
     """The program a stretch of about :data:`CHUNK_CHARS` characters at a time: (segments, diagnostics) per
-    stretch, in line order, line numbers counted from the program's start.
-
-    Per-line work dominates reading a large program, so one regex pass over a
-    stretch sorts its lines: plain lines become columns of a
-    :class:`PlainRun`; the others (comments, block skip, ``%``, other words,
-    errors) go through :func:`parse_din_line` one by one. Without ``as_columns`` every line goes that way.
-    A stretch at a time, the strings the pass finds never take more memory than one stretch's worth, and a
-    run can execute a program of millions of lines without holding all of it (issue 18: a 500,000-line
-    file took 282 MB read in one pass).
+    stretch, in line order, line numbers counted from the program's start (:func:`din_stretches`). Without
+    ``as_columns`` (and in a text with lone CR line ends) every line goes the general way, in one stretch.
     """
     flat = text.replace("\r\n", "\n")
     if not as_columns or "\r" in flat:  # lone CR line ends: read line by line
@@ -301,10 +294,56 @@ def read_din_chunks(path: str, text: str, as_columns: bool = True):
             _read_general(segments, diags, path, lineno, line)
         yield segments, diags
         return
-    first = pos = 0  # lines before the stretch, and where it starts
+    for stretch in din_stretches(path, text_stretches(flat)):
+        yield stretch.segments, stretch.diags
+
+
+def text_stretches(flat: str):
+    """A program text with LF line ends in stretches of about :data:`CHUNK_CHARS` characters, each ending at a
+    line end (as :func:`ncvm.source.stretches` reads a file)."""
+    pos = 0
     while pos < len(flat):
         end = flat.find("\n", pos + CHUNK_CHARS) + 1 or len(flat)
-        chunk = flat[pos:end]
+        yield flat[pos:end]
+        pos = end
+
+
+def file_stretches(file):
+    """An open program file (:func:`ncvm.source.open_program`) in stretches of about :data:`CHUNK_CHARS`
+    characters, each ending at a line end."""
+    return stretches(file, CHUNK_CHARS)
+
+
+class DinStretch(NamedTuple):
+    """A stretch of a program as read: its segments and diagnostics, its ``lines`` (the source lines of its
+    blocks, for the columns of later diagnostics), the program lines before it (``first``) and its size in
+    characters."""
+
+    segments: list
+    diags: list
+    lines: list
+    first: int
+    chars: int
+
+    def line(self, lineno: int) -> str:
+        """Program line ``lineno`` (1-based, counted from the program's start), which lies in this stretch."""
+        return self.lines[lineno - 1 - self.first]
+
+
+def din_stretches(path: str, pieces):
+    """:class:`DinStretch` after stretch of a program given as ``pieces`` of text with LF line ends, each
+    ending at a line end (:func:`text_stretches`, or :func:`ncvm.source.stretches` over a file).
+
+    Per-line work dominates reading a large program, so one regex pass over a
+    stretch sorts its lines: plain lines become columns of a
+    :class:`PlainRun`; the others (comments, block skip, ``%``, other words,
+    errors) go through :func:`parse_din_line` one by one.
+    A stretch at a time, the strings the pass finds never take more memory than one stretch's worth, and a
+    run can execute a program of millions of lines without holding all of it (issue 18: a 500,000-line
+    file took 282 MB read in one pass).
+    """
+    first = 0  # lines before the stretch
+    for chunk in pieces:
         lines = chunk.split("\n")
         if chunk.endswith("\n"):
             lines.pop()
@@ -318,8 +357,8 @@ def read_din_chunks(path: str, text: str, as_columns: bool = True):
             _read_general(segments, diags, path, first + k, lines[k - 1])
         if len(lines) > start:
             _add_run(segments, path, lines, columns, start, len(lines), first)
-        yield segments, diags
-        first, pos = first + len(lines), end
+        yield DinStretch(segments, diags, lines, first, len(chunk))
+        first += len(lines)
 
 
 def _read_general(segments, diags, path: str, lineno: int, line: str) -> None:

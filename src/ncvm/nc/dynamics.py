@@ -119,30 +119,57 @@ def straight_limits_columns(dyn: AxisDynamics, d, length, rapid, feed) -> tuple:
         return v, a
 
 
-def arc_limits(n_axes: int, a: int, b: int, length: float, speed: float, limits: tuple,
+def arc_limits(deltas, a: int, b: int, length: float, speed: float, limits: tuple,
                accel: tuple) -> tuple[float, float]:
-    """Path speed and acceleration of an arc of ``length`` in the plane of axes ``a`` and ``b``. The speed is
-    that of a straight move of the same length shared equally by both axes. The tangential acceleration is
-    the smaller of the two axes' own: somewhere on an arc the path runs along one axis alone (at the
-    quadrant points), and that axis then takes the whole ramp; the 45 degree chord's combined figure
-    (sqrt 2 times an axis's) would drive it beyond its limit there."""
-    chord = [0.0] * n_axes
-    chord[a] = chord[b] = length / math.sqrt(2.0)
-    v, acc = path_limits(chord, length, speed, limits, accel)
-    return v, (min(accel[a], accel[b]) if length else acc)
+    """Path speed and acceleration of an arc (or helix) of ``length`` in the plane of axes ``a`` and ``b``;
+    ``deltas`` are each axis's travel from start to end (the plane axes' are not read).
+
+    Somewhere on an arc the path may run along one plane axis alone (at the quadrant points), and that
+    axis then takes the plane's whole share of the speed and of the tangential ramp: both are capped by
+    the smaller of the plane axes' limits, as if the plane were one axis. Its share of the path is 1 on a
+    flat arc; on a helix the plane and each linear axis share the path by their travel (a helix has a
+    constant pitch, so the shares hold all along it)."""
+    if not length:
+        return speed, math.inf
+    v, acc, rest = speed, math.inf, 1.0
+    for i, d in enumerate(deltas):
+        if d and i != a and i != b:  # a helix's linear axis: its own share
+            share = abs(d) / length
+            rest -= share * share
+            if limits[i] < v * share:
+                v = limits[i] / share
+            if accel[i] < acc * share:
+                acc = accel[i] / share
+    plane = math.sqrt(rest) if rest > 0.0 else 0.0
+    vmax, amax = min(limits[a], limits[b]), min(accel[a], accel[b])
+    if vmax < v * plane:
+        v = vmax / plane
+    if amax < acc * plane:
+        acc = amax / plane
+    return v, acc
 
 
-def arc_limits_columns(a: int, b: int, length, speed, limits: tuple, accel: tuple) -> tuple:
-    """:func:`arc_limits`, column-wise: ``length`` and ``speed`` (mm/s) are columns."""
+def arc_limits_columns(d, a: int, b: int, length, speed, limits: tuple, accel: tuple) -> tuple:
+    """:func:`arc_limits`, column-wise: ``d`` the per-axis travel (moves, axes); ``length`` and ``speed``
+    (mm/s) columns."""
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-        chord = length / math.sqrt(2.0)
-        share = np.abs(chord) / length
+        inv = 1.0 / length
         v = speed
         acc = np.full(len(length), math.inf)
-        nz = chord != 0.0
-        for i in sorted((a, b)):
-            v = np.where(nz & (limits[i] < v * share), limits[i] / share, v)
-        acc = np.where(nz, min(accel[a], accel[b]), acc)  # the tangential ramp of arc_limits
+        rest = np.ones(len(length))
+        for i in range(d.shape[1]):
+            if i != a and i != b:
+                di = d[:, i]
+                nz = di != 0.0
+                share = np.abs(di) * inv
+                rest = np.where(nz, rest - share * share, rest)
+                v = np.where(nz & (limits[i] < v * share), limits[i] / share, v)
+                acc = np.where(nz & (accel[i] < acc * share), accel[i] / share, acc)
+        plane = np.sqrt(np.maximum(rest, 0.0))
+        vmax, amax = min(limits[a], limits[b]), min(accel[a], accel[b])
+        moves = length != 0.0
+        v = np.where(moves & (vmax < v * plane), vmax / plane, v)
+        acc = np.where(moves & (amax < acc * plane), amax / plane, acc)
     return v, acc
 
 

@@ -760,7 +760,8 @@ class NcKernel:
         sa, sb, ea, eb = start[spec.a], start[spec.b], end[spec.a], end[spec.b]
         angle = arcs.sweep(sa, sb, ea, eb, *spec.center, spec.cw, spec.turns)
         length = arcs.arc_length(spec.radius, angle, arcs.helix_travel(start, end, spec.a, spec.b))
-        v, a = arc_limits(self.n_axes, spec.a, spec.b, length, feed / 60.0, self.dyn.max_feed, self.dyn.accel)
+        v, a = arc_limits(tuple(map(sub, end, start)), spec.a, spec.b, length, feed / 60.0, self.dyn.max_feed,
+                          self.dyn.accel)
         planner = self.planner
         if planner.model == LOOKAHEAD:  # the centripetal acceleration the plane axes can give: v^2 <= a r
             v = min(v, math.sqrt(min(self.dyn.accel[spec.a], self.dyn.accel[spec.b]) * spec.radius))

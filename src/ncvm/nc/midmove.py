@@ -67,7 +67,7 @@ def _profile(kind: int, start, end, spec, feed: float, dyn) -> tuple[float, floa
     """Path length, speed and acceleration of a move, as the kernel times it."""
     if kind == ARC:
         length = arcs.arc_length(spec.radius, _sweep(start, end, spec), arcs.helix_travel(start, end, spec.a, spec.b))
-        return (length, *arc_limits(len(start), spec.a, spec.b, length, feed / 60.0, dyn.max_feed, dyn.accel))
+        return (length, *arc_limits(tuple(map(sub, end, start)), spec.a, spec.b, length, feed / 60.0, dyn.max_feed, dyn.accel))
     deltas = tuple(map(sub, end, start))
     length = math.sqrt(sum(d * d for d in deltas))
     limits = dyn.rapid if kind == RAPID else dyn.max_feed

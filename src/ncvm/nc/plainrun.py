@@ -153,8 +153,9 @@ def _arcs(k, arc_pos, start, end, centre_words, feed, cw, a: int, b: int) -> tup
         return int(bad[0])
     angle, a0 = arcs.sweep_columns(sa, sb, ea, eb, ca, cb, cw)
     length = arcs.arc_length_columns(r0, angle, arcs.helix_travel_columns(start[arc_pos], end[arc_pos], a, b))
-    # an arc moves both plane axes at once: timed as a straight move of the same length (NcKernel._arc)
-    v, acc = arc_limits_columns(a, b, length, feed / 60.0, k.dyn.max_feed, k.dyn.accel)
+    # no plane axis above its own limits anywhere on the arc (NcKernel.arc_out)
+    v, acc = arc_limits_columns(end[arc_pos] - start[arc_pos], a, b, length, feed / 60.0, k.dyn.max_feed,
+                                k.dyn.accel)
     if k.planner.model == LOOKAHEAD:  # the centripetal acceleration the plane axes can give (NcKernel.arc_out)
         v = np.minimum(v, np.sqrt(min(k.dyn.accel[a], k.dyn.accel[b]) * r0))
     centre = np.column_stack((ca, cb))

@@ -81,8 +81,8 @@ def test_wait_inside_an_arc_reads_the_point_on_the_arc(tmp_path, run_text):
     r = run_text(text, name="p.cpl", machine=mill(tmp_path))
     v = r["variables"]
     # a clockwise half circle from (0,0) about (10,0), radius 10, through (10,10): length 10*pi = 31.416 mm.
-    # Timed as a straight move of that length shared by X and Y (1/sqrt2 each): F3000 = 50 mm/s stays under
-    # 83.33/(1/sqrt2); the acceleration is the axes' own 1000 mm/s^2 (nc.dynamics.arc_limits).
+    # Timed by its length: F3000 = 50 mm/s stays under the plane axes' 83.33 mm/s; the acceleration is the
+    # axes' own 1000 mm/s^2 (nc.dynamics.arc_limits).
     v_path, a_path = 50.0, 1000.0
     ramp_t, ramp_s = v_path / a_path, v_path ** 2 / (2.0 * a_path)  # 0.05 s, 1.25 mm
     s = ramp_s + v_path * (0.4 - ramp_t)  # 18.75 mm along the arc after 0.4 s

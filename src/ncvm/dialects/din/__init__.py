@@ -1,13 +1,17 @@
-"""Plain DIN 66025 / ISO 6983 programs: read every block, then run them through the kernel."""
+"""Plain DIN 66025 / ISO 6983 programs: read every block, then run them through the kernel.
+
+A run reads the program from its file a stretch at a time (issue 18: bounded memory for a file of any
+size): once for its errors and refusals, then again as it runs, unless it is small enough to hold."""
 
 from __future__ import annotations
 
+import os
 import re
 
-from ...diagnostics import CompileFailed, RuntimeFault
+from ...diagnostics import CompileFailed, RuntimeFault, UsageError
 from ...nc import threads
 from ...nc.axiswords import din_missing_axes
-from ...nc.block import COLUMNS_FROM, PlainRun, read_din_chunks, read_din_segments
+from ...nc.block import COLUMNS_FROM, PlainRun, din_stretches, file_stretches, read_din_segments, text_stretches
 from ...nc.canon import Src
 from ...nc.cycles import CannedCycles
 from ...nc.plainrun import execute_columns
@@ -15,13 +19,14 @@ from ...nc.profiles.blockrules import block_refusal
 from ...nc.profiles.iso import ISO
 from ...nc.profiles.named import PROFILES
 from ...source import lines as program_lines
+from ...source import open_program
 from ..base import Dialect
 from .ngc import fold_extensions
 from .options import arc_tolerance, options
 from .support import address_refusal, block_error, block_errors, refused_address, unsupported
 
 #: a run holds a program of up to this many characters (about 250,000 lines of CAM output) as it reads it; a
-#: longer one is read a second time as it runs
+#: longer one is read a second time, from its file, as it runs
 KEEP_CHARS = 8 << 20
 _DIN_LINE = re.compile(r"^\s*(N\d+\s*)?([GMXYZFST]-?\d|\(|%|/|$)", re.I)
 
@@ -35,6 +40,7 @@ def setup_kernel(kernel) -> None:
 
 class DinDialect(Dialect):
     id = "din"
+    streams = True
 
     def sniff(self, text: str) -> int:
         lines = [ln for ln in program_lines(text)[:200] if ln.strip()]
@@ -45,11 +51,16 @@ class DinDialect(Dialect):
 
     def check(self, path, text, machine, all_errors=False):
         segments, diags = read_din_segments(path, text, as_columns=text.count("\n") >= COLUMNS_FROM)
-        diags = fold_extensions(diags, program_lines(text)) if diags else diags
-        diags += [d for _i, _row, d in din_missing_axes(path, text, segments, machine.axis_names)]
+        lines = program_lines(text)
+
+        def line_at(n: int) -> str | None:
+            return lines[n - 1] if n <= len(lines) else None
+
+        diags = fold_extensions(diags, line_at) if diags else diags
+        diags += [d for _i, _row, d in din_missing_axes(path, line_at, segments, machine.axis_names)]
         profile = PROFILES[options(machine).profile]
-        diags += unsupported(path, segments, program_lines(text), machine.axis_names, profile)
-        diags += block_errors(path, segments, program_lines(text), machine.axis_names, profile)
+        diags += unsupported(path, segments, lines, machine.axis_names, profile)
+        diags += block_errors(path, segments, lines, machine.axis_names, profile)
         return sorted(diags, key=lambda d: (d.span.line, d.span.column or 0))
 
     def run(self, path, text, session):
@@ -61,7 +72,12 @@ class DinDialect(Dialect):
         if profile is ISO:
             setup_kernel(kernel)  # LinuxCNC's canned cycles and G33 belong to the iso rows
         skip_active = bool(session.machine.setting_data.get("block_skip", True))
-        stretches, refused = self._read(path, text, kernel.axis_of, skip_active, profile)
+        with ProgramStretches(path, text) as program:
+            self._run(path, program, session, skip_active, profile)
+
+    def _run(self, path, program, session, skip_active, profile):
+        kernel = session.kernel
+        stretches, refused = self._read(path, program, kernel.axis_of, skip_active, profile)
         counter = session.steps
         limit = counter.limit - counter.steps
         hook = counter.hook  # single-block stepping and breakpoints; None unless a debugger is attached
@@ -90,28 +106,31 @@ class DinDialect(Dialect):
             kernel.end_program(last_src)
 
     @staticmethod
-    def _read(path, text, axes, skip_active, profile):
+    def _read(path, program, axes, skip_active, profile):
         """(the program's stretches of segments, the first refused block as (segment index, row, Diagnostic) or
         None); a program with errors fails to compile. A program of at most :data:`KEEP_CHARS` characters is
         read once and held; a longer one is read twice, the first time for its errors and refusals only, so a
         run holds one stretch of it at a time (issue 18: bounded memory)."""
-        keep = len(text) <= KEEP_CHARS
-        held, diags, refused, index = [], [], None, 0
-        for segments, found in read_din_chunks(path, text):
-            diags += found
+        held = [] if program.chars <= KEEP_CHARS else None
+        diags, refused, index = [], None, 0
+        error_lines = {}  # the source lines of the syntax errors (NC001), for fold_extensions
+        for stretch in program():
+            segments = stretch.segments
+            diags += stretch.diags
+            error_lines.update((d.span.line, stretch.line(d.span.line)) for d in stretch.diags if d.code == "NC001")
             if refused is None and not diags:
                 # a block with a word for an axis the machine lacks is refused when the run reaches it (found
                 # here, once, so the blocks before it run as they are)
-                first = sorted(din_missing_axes(path, text, segments, axes, skip_active)
-                               + _refused_blocks(path, text, segments, axes, skip_active, profile),
+                first = sorted(din_missing_axes(path, stretch.line, segments, axes, skip_active)
+                               + _refused_blocks(path, stretch, axes, skip_active, profile),
                                key=lambda r: (r[0], r[1] or 0))[:1]
                 refused = (index + first[0][0], first[0][1], first[0][2]) if first else None
             index += len(segments)
-            if keep:
+            if held is not None:
                 held.append(segments)
         if diags:
-            raise CompileFailed(fold_extensions(diags, program_lines(text)))
-        return (held if keep else (segments for segments, _ in read_din_chunks(path, text))), refused
+            raise CompileFailed(fold_extensions(diags, error_lines.get))
+        return (held if held is not None else (stretch.segments for stretch in program())), refused
 
     @staticmethod
     def _execute(path, segments, kernel, counter, limit, hook, skip_active, done, last_src):
@@ -149,21 +168,46 @@ class DinDialect(Dialect):
         return done, last_src
 
 
-def _refused_blocks(path: str, text: str, segments: list, axes, skip_active: bool, profile) -> list:
-    """The first block with an address the profile refuses (NC007) or that breaks one of the control's block
-    rules (two functions of one modal group ...: nc/profiles/blockrules.py), as (segment index, None,
-    Diagnostic); plain runs have none."""
-    for i, seg in enumerate(segments):
+def _refused_blocks(path: str, stretch, axes, skip_active: bool, profile) -> list:
+    """The first block of a stretch with an address the profile refuses (NC007) or that breaks one of the
+    control's block rules (two functions of one modal group ...: nc/profiles/blockrules.py), as (segment index,
+    None, Diagnostic); plain runs have none."""
+    for i, seg in enumerate(stretch.segments):
         if isinstance(seg, PlainRun) or (seg[1] and skip_active):
             continue
         blk = seg[0]
         address = refused_address(blk, axes)
         if address is not None:
-            return [(i, None, address_refusal(path, blk, program_lines(text)[blk.src.line - 1], address))]
+            return [(i, None, address_refusal(path, blk, stretch.line(blk.src.line), address))]
         found = block_refusal(profile, blk.g, blk.m, blk.words, axes)
         if found is not None:
-            return [(i, None, block_error(path, blk, program_lines(text)[blk.src.line - 1], found))]
+            return [(i, None, block_error(path, blk, stretch.line(blk.src.line), found))]
     return []
+
+
+class ProgramStretches:
+    """A program's :class:`~ncvm.nc.block.DinStretch` es from its start, as often as called: read from its file
+    (``text`` None; one open file for every pass, so each pass reads the same file) or from a text."""
+
+    def __init__(self, path: str, text: str | None):
+        self.path = path
+        self.flat = None if text is None else text.replace("\r\n", "\n").replace("\r", "\n")
+        try:
+            self.file = open_program(path) if text is None else None
+            #: its size (in bytes, for a file: a character each but for a CR of a CR LF)
+            self.chars = len(text) if text is not None else os.fstat(self.file.fileno()).st_size
+        except OSError as e:
+            raise UsageError(f"cannot read {path}: {e.strerror}") from None
+
+    def __call__(self):
+        return din_stretches(self.path, text_stretches(self.flat) if self.file is None else file_stretches(self.file))
+
+    def __enter__(self) -> "ProgramStretches":
+        return self
+
+    def __exit__(self, *exc) -> None:
+        if self.file is not None:
+            self.file.close()
 
 
 DIALECT = DinDialect()

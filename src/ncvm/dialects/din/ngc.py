@@ -23,15 +23,16 @@ FEATURES = (
 )
 
 
-def fold_extensions(diags: list[Diagnostic], lines: list[str]) -> list[Diagnostic]:
+def fold_extensions(diags: list[Diagnostic], line_at) -> list[Diagnostic]:
     """``diags`` with the NC001 of every line that uses a LinuxCNC extension replaced by one NC013 (at the
-    first such line); the other diagnostics as they are."""
+    first such line); the other diagnostics as they are. ``line_at(n)``: source line ``n`` of an NC001 (or
+    None)."""
     used: dict[str, None] = {}
     first = None
     count = 0
     kept = []
     for d in diags:
-        line = lines[d.span.line - 1] if d.code == "NC001" and d.span and d.span.line <= len(lines) else None
+        line = line_at(d.span.line) if d.code == "NC001" and d.span else None
         found = [what for what, pattern in FEATURES if line is not None and pattern.search(_COMMENTS.sub("", line))]
         if not found:
             kept.append(d)

@@ -1,8 +1,8 @@
 """The path of an INTA block (@736, L4417-4436) and the block cut where its input stops it.
 
 A path is timed exactly as the NC kernel times the block: G00/G01 as a straight move by its axis
-deltas, G02/G03 as a straight move of the arc's (or helix's) length over the two plane axes
-(``NcKernel._arc``). Cutting it after a fraction of its length gives the words that end the block
+deltas, G02/G03 by the arc's (or helix's) length at the speed and ramp no plane axis exceeds
+anywhere on it (``nc.dynamics.arc_limits``, ``NcKernel.arc_out``). Cutting it after a fraction of its length gives the words that end the block
 there; all coordinates are in program units and in the frame of the machine axes (under a
 coordinate rotation the caller turns the words back into the program's frame).
 """
@@ -88,7 +88,7 @@ def arc_path(k, cw: bool, plane: int, turned: dict, start: list[float], scale: f
     sweep = arcs.sweep(sa, sb, ea, eb, ca, cb, cw, turns)
     helix = math.sqrt(sum((e - s) ** 2 for i, (s, e) in enumerate(zip(start, end)) if i not in (a, b)))
     length = arcs.arc_length(radius, sweep, helix) * scale
-    v, acc = arc_limits(k.n_axes, a, b, length, feed / 60.0, k.dyn.max_feed, k.dyn.accel)
+    v, acc = arc_limits([(e - s) * scale for s, e in zip(start, end)], a, b, length, feed / 60.0, k.dyn.max_feed, k.dyn.accel)
     axes = tuple(dict.fromkeys((an, bn, *(n for n in turned if n in k.axis_of))))
     a0 = math.atan2(sb - cb, sa - ca)
 
