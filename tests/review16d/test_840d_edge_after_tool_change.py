@@ -99,3 +99,16 @@ def test_length_kept_through_the_tool_change_is_an_edge_of_the_new_tool(tmp_path
     d = _d_before_first_move_after(lines, "T3 M6")
     assert d is not None and d != "0", f"T3 M6 and no D: the 840D moves T3 with its own default edge:\n{out}"
     assert re.search(rf"tool T3 edge D{d}: length 40 mm", out), f"the header lists no length for T3:\n{out}"
+
+
+def test_frame_machine_keeps_d0_after_each_tool_change(tmp_path):
+    """`--frame machine` includes every tool length in the positions and selects `G500 D0`; the `T1 M6` and
+    `T3 M6` after it activate each tool's default edge on the 840D, adding the length a second time. A `D0`
+    must follow each tool change before the next move."""
+    (tmp_path / "machine.toml").write_text(MILL)
+    rc, out, err = translate(tmp_path, H1_KEPT, "kept.din", "--target", "sinumerik840d", "--frame", "machine",
+                             "-m", "machine.toml", out_name="out.mpf")
+    assert rc == 0, err
+    lines = code_lines(out)
+    for change in ("T1 M6", "T3 M6"):
+        assert _d_before_first_move_after(lines, change) == "0", f"no D0 after {change}:\n{out}"
