@@ -10,6 +10,7 @@ length's must be too, or written so that the new control follows it.
 
 from __future__ import annotations
 
+import json
 import re
 
 from tests.review16c.helpers import ncvm, translate
@@ -58,8 +59,10 @@ def test_the_simulation_ran_two_lengths(tmp_path):
     """The run itself: the second plunge stands 10 mm higher in the machine (D1 is 95.1 mm then)."""
     (tmp_path / "machine.toml").write_text(MACHINE)
     (tmp_path / "tos.mpf").write_text(PROGRAM)
-    r = ncvm(tmp_path, "run", "tos.mpf", "--json", "-m", "machine.toml")
+    r = ncvm(tmp_path, "run", "tos.mpf", "--trace", "t.jsonl", "-m", "machine.toml")
     assert r.returncode == 0, r.stderr
+    calls = [json.loads(line) for line in (tmp_path / "t.jsonl").read_text().splitlines()]
+    assert [c["length"] for c in calls if c["call"] == "tool_offset"] == [85.1, 95.1]
 
 
 def test_linuxcnc_h1_cannot_hold_both_lengths(tmp_path):
