@@ -11,12 +11,10 @@ began), so only the sweep shows it.
 
 from __future__ import annotations
 
-import math
-import re
-
 import pytest
 
-from tests.review16c.helpers import code_lines, needs_rs274, rs274_canon, translate
+from tests.review16c.helpers import needs_rs274, rs274_canon, translate
+from tests.review16d.helpers import full_circles, rs274_sweep
 
 MACHINE = """
 [machine]
@@ -65,15 +63,7 @@ def _out(tmp_path, target):
 @pytest.mark.parametrize("target", ["linuxcnc", "sinumerik840d", "iso"])
 def test_no_arc_ends_where_it_starts(tmp_path, target):
     """No `G2`/`G3` of the output returns to its start point: the program made no full circle."""
-    x = y = None
-    full = []
-    for line in code_lines(_out(tmp_path, target)):
-        words = dict(re.findall(r"\b([XY])(-?[\d.]+)", line))
-        nx, ny = float(words.get("X", x or 0)), float(words.get("Y", y or 0))
-        if re.match(r"G[23]\b", line) and (nx, ny) == (x, y):
-            full.append(line)
-        if re.match(r"G[0-3]\b", line):
-            x, y = nx, ny
+    full = full_circles(_out(tmp_path, target))
     assert not full, f"{target}: full circles the run never made: {full}"
 
 
@@ -82,20 +72,5 @@ def test_rs274_sweeps_no_more_than_the_quarter_circle(tmp_path):
     """rs274's reading of the LinuxCNC output: the arcs it makes sweep at most the programmed 90 degrees."""
     rc, canon = rs274_canon(tmp_path, _out(tmp_path, "linuxcnc"))
     assert rc == 0, canon
-    position = None
-    sweep = 0.0
-    for line in canon.splitlines():
-        m = re.search(r"(STRAIGHT_FEED|STRAIGHT_TRAVERSE|ARC_FEED)\(([^)]*)\)", line)
-        if not m:
-            continue
-        v = [float(a) for a in m.group(2).split(",")]
-        if m.group(1) == "ARC_FEED":
-            ex, ey, cx, cy, rotation = v[:5]
-            a0 = math.atan2(position[1] - cy, position[0] - cx)
-            a1 = math.atan2(ey - cy, ex - cx)
-            turn = (a1 - a0) % (2 * math.pi) if rotation > 0 else (a0 - a1) % (2 * math.pi)
-            sweep += math.degrees(turn or 2 * math.pi) + 360 * (abs(rotation) - 1)
-            position = (ex, ey)
-        else:
-            position = (v[0], v[1])
+    sweep = rs274_sweep(canon)
     assert sweep <= 90.001, f"rs274 sweeps {sweep:.1f} degrees of arc; the program turned 90"
