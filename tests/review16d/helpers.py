@@ -41,3 +41,9 @@ def rs274_sweep(canon: str) -> float:
         else:
             position = (v[0], v[1])
     return sweep
+
+
+def machine(name: str, extra: str = "") -> str:
+    """A machine file: three linear axes X Y Z from -500 to 500 mm, then ``extra`` (tools, offsets, sections)."""
+    axes = "".join(f'[[axis]]\nname = "{a}"\nmin = -500.0\nmax = 500.0\n' for a in "XYZ")
+    return f'[machine]\nname = "{name}"\n{axes}{extra}'

@@ -13,23 +13,9 @@ the simulated NC's memory.
 from __future__ import annotations
 
 from tests.review16c.helpers import code_lines, ncvm
+from tests.review16d.helpers import machine
 
-MACHINE = """
-[machine]
-name = "mill"
-[[axis]]
-name = "X"
-min = -500.0
-max = 500.0
-[[axis]]
-name = "Y"
-min = -500.0
-max = 500.0
-[[axis]]
-name = "Z"
-min = -500.0
-max = 500.0
-"""
+MACHINE = machine("mill")
 
 PROGRAM = """%MPF5
 N10 G17 G71 G90 G54 G94

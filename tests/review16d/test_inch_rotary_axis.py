@@ -16,28 +16,15 @@ import re
 import pytest
 
 from tests.review16c.helpers import code_lines, ncvm, translate
+from tests.review16d.helpers import machine
 
-MACHINE = """
-[machine]
-name = "4-axis mill"
-[[axis]]
-name = "X"
-min = -500.0
-max = 500.0
-[[axis]]
-name = "Y"
-min = -500.0
-max = 500.0
-[[axis]]
-name = "Z"
-min = -500.0
-max = 500.0
+MACHINE = machine("4-axis mill", """
 [[axis]]
 name = "A"
 kind = "rotary"
 min = -720.0
 max = 720.0
-"""
+""")
 
 PROGRAMS = {
     "inch.din": "G20 G90 G94 G54\nG0 X1 Y1 Z1 A90\nG1 X2 A180 F10\nM30\n",

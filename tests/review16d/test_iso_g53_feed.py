@@ -13,25 +13,12 @@ from __future__ import annotations
 import re
 
 from tests.review16c.helpers import code_lines, translate
+from tests.review16d.helpers import machine
 
-MACHINE = """
-[machine]
-name = "mill"
-[[axis]]
-name = "X"
-min = -500.0
-max = 500.0
-[[axis]]
-name = "Y"
-min = -500.0
-max = 500.0
-[[axis]]
-name = "Z"
-min = -500.0
-max = 500.0
+MACHINE = machine("mill", """
 [offsets]
 G54 = [200.0, 150.0, -200.0]
-"""
+""")
 
 PROGRAM = """G21 G90 G94 G54
 G0 X0 Y0 Z10

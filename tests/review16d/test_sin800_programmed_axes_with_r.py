@@ -14,23 +14,9 @@ from __future__ import annotations
 import pytest
 
 from tests.review16c.helpers import code_lines, translate
+from tests.review16d.helpers import machine
 
-MACHINE = """
-[machine]
-name = "mill"
-[[axis]]
-name = "X"
-min = -500.0
-max = 500.0
-[[axis]]
-name = "Y"
-min = -500.0
-max = 500.0
-[[axis]]
-name = "Z"
-min = -500.0
-max = 500.0
-"""
+MACHINE = machine("mill")
 
 BLOCKS = {
     "plain": "N30 G0 X20 Y0 Z50",

@@ -15,27 +15,14 @@ import re
 import pytest
 
 from tests.review16c.helpers import translate
+from tests.review16d.helpers import machine
 
-MACHINE = """
-[machine]
-name = "mill"
-[[axis]]
-name = "X"
-min = -500.0
-max = 500.0
-[[axis]]
-name = "Y"
-min = -500.0
-max = 500.0
-[[axis]]
-name = "Z"
-min = -500.0
-max = 500.0
+MACHINE = machine("mill", """
 [[tool]]
 number = 1
 [sin800]
 tool_offsets = [ { area = 0, d = 1, p = [1, 20, 85.0, 0.0, 4.25, 0.1] } ]
-"""
+""")
 
 PROGRAM = """%MPF7
 N10 G17 G71 G90 G54 G94

@@ -12,25 +12,12 @@ pressed, the M0 written) or refuse; never write the part before the stop as the 
 from __future__ import annotations
 
 from tests.review16c.helpers import code_lines, translate
+from tests.review16d.helpers import machine
 
-MACHINE = """
-[machine]
-name = "mill"
-[[axis]]
-name = "X"
-min = -500.0
-max = 500.0
-[[axis]]
-name = "Y"
-min = -500.0
-max = 500.0
-[[axis]]
-name = "Z"
-min = -500.0
-max = 500.0
+MACHINE = machine("mill", """
 [sin800]
 m0 = "stop"
-"""
+""")
 
 PROGRAM = """%MPF4
 N10 G17 G71 G90 G54 G94

@@ -12,23 +12,9 @@ from __future__ import annotations
 import re
 
 from tests.review16c.helpers import code_lines, needs_rs274, rs274_canon, trace_work, translate
+from tests.review16d.helpers import machine
 
-MACHINE = """
-[machine]
-name = "gantry"
-[[axis]]
-name = "X"
-min = -500.0
-max = 500.0
-[[axis]]
-name = "Y"
-min = -500.0
-max = 500.0
-[[axis]]
-name = "Z"
-min = -500.0
-max = 500.0
-"""
+MACHINE = machine("gantry")
 
 PROGRAM = """program P;
 begin

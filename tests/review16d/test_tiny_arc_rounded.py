@@ -15,24 +15,9 @@ from __future__ import annotations
 import pytest
 
 from tests.review16c.helpers import needs_rs274, rs274_canon, translate
-from tests.review16d.helpers import full_circles, rs274_sweep
+from tests.review16d.helpers import full_circles, machine, rs274_sweep
 
-MACHINE = """
-[machine]
-name = "mill"
-[[axis]]
-name = "X"
-min = -500.0
-max = 500.0
-[[axis]]
-name = "Y"
-min = -500.0
-max = 500.0
-[[axis]]
-name = "Z"
-min = -500.0
-max = 500.0
-"""
+MACHINE = machine("mill")
 
 PROGRAM = """10 A = 0.0001
 N20 G90 G17 G54

@@ -16,22 +16,9 @@ import re
 import pytest
 
 from tests.review16c.helpers import code_lines, translate
+from tests.review16d.helpers import machine
 
-MILL = """
-[machine]
-name = "mill"
-[[axis]]
-name = "X"
-min = -500.0
-max = 500.0
-[[axis]]
-name = "Y"
-min = -500.0
-max = 500.0
-[[axis]]
-name = "Z"
-min = -500.0
-max = 500.0
+MILL = machine("mill", """
 [[tool]]
 number = 1
 length = 40.0
@@ -41,7 +28,7 @@ length = 75.0
 [[tool]]
 number = 3
 length = 65.5
-"""
+""")
 
 DIN_H3 = """G21 G90 G94 G54
 T1 M6
