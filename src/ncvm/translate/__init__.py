@@ -40,7 +40,7 @@ def translate(program: str | Path, out: str | Path, target: str = "linuxcnc", fr
     """Run ``program`` and write it as ``target``'s program to ``out`` (replaced only when all went well)."""
     from .. import api  # the API puts runs together and writes ``run --gcode`` through this package
 
-    options = dataclasses.replace(options or RunOptions(), keyboard=False, echo=False, gcode=None)
+    options = dataclasses.replace(options or RunOptions(), keyboard=False, echo=False, gcode=None, scratch_state=True)
     m = api.machine_for(program, machine, options.state_dir)
     file = TranslationFile(out, TARGETS[target], Path(program).name, m.name, frame, source_comments,
                            scenario_given=bool(options.scenario or m.scenario))
