@@ -39,17 +39,24 @@ BUSY_TIMEOUT_S = 2.0
 
 
 class Store:
-    """A namespaced key/value store in ``<state_dir>/store.sqlite``."""
+    """A namespaced key/value store in ``<state_dir>/store.sqlite``.
 
-    def __init__(self, state_dir: str | Path):
+    ``scratch``: the run reads what the state directory holds and writes to a copy in memory that ends with
+    it (``ncvm translate``: a translation leaves the permanent data as it found it).
+    """
+
+    def __init__(self, state_dir: str | Path, scratch: bool = False):
         self.path = Path(state_dir) / STORE_NAME
+        self._db: sqlite3.Connection | None = None
+        self._in_batch = False
+        if scratch:
+            self._open_copy()
+            return
         try:
             self.path.parent.mkdir(parents=True, exist_ok=True)
         except OSError as e:
             raise StateError(f"cannot create the state directory {self.path.parent} ({e.strerror}); "
                              f"give another --state") from None
-        self._db: sqlite3.Connection | None = None
-        self._in_batch = False
         # SQLite would call a FIFO, a directory or a symlinked side file an open or disk error; through a
         # symlink, two state directories (two locks) could share one store and lose each other's writes
         for path in store_files(self.path.parent):
@@ -67,6 +74,24 @@ class Store:
         except StateError:
             self.close()
             raise
+
+    def _open_copy(self) -> None:
+        """The scratch store: the state directory's store (if any) copied into memory, the file untouched."""
+        try:
+            copy = sqlite3.connect(":memory:", isolation_level=None)
+            if self.path.is_file():
+                with Store(self.path.parent) as source:
+                    source._db.backup(copy)
+            copy.executescript(SCHEMA)
+        except sqlite3.Error as e:
+            raise self._error(e) from None
+        self._db = copy
+
+    def __enter__(self) -> "Store":
+        return self
+
+    def __exit__(self, *exc) -> None:
+        self.close()
 
     def _adopt(self) -> None:
         """Refuse a file that is not an ncvm store or is damaged; stamp a new (or an older ncvm's) store."""

@@ -12,8 +12,9 @@ from __future__ import annotations
 import math
 
 
-def make_linear(axis_names: tuple[str, ...]):
-    """``linear(kernel, motion, words, src)`` for these axes; same result as the general path."""
+def make_linear(axis_names: tuple[str, ...], rotary: frozenset[str] = frozenset()):
+    """``linear(kernel, motion, words, src)`` for these axes; same result as the general path. The words of
+    the ``rotary`` axes are degrees in every unit: inch (``k.scale``) does not scale them."""
     n = len(axis_names)
     if n == 0:
         return lambda k, motion, words, src: None  # a controller without axes has nothing to move
@@ -30,8 +31,7 @@ def make_linear(axis_names: tuple[str, ...]):
         lines += [f"    v = get({name!r})",
                   "    if v is not None:",
                   "        moved = True",
-                  "        if sc != 1.0:",
-                  "            v *= sc",
+                  *(() if name in rotary else ("        if sc != 1.0:", "            v *= sc")),
                   f"        p{i} = v if ab else p{i} + v"]
     lines += ["    if not moved:",
               "        return",

@@ -60,6 +60,9 @@ class NcKernel:
         self.axis_names = names
         self.axis_of = {n: i for i, n in enumerate(names)}
         self.n_axes = len(names)
+        #: the rotary axes: their words are degrees in inch programs too (CPL manual L1329-1337, L1975), so
+        #: the unit ``scale`` of G20/G70 never multiplies them (:meth:`unit_of`)
+        self.rotary = frozenset(a.name for a in machine.axes if a.rotary)
         self.dyn = AxisDynamics(machine.axes)
         motion = machine.motion
         #: the path planner: moves wait in it untimed until their look-ahead window is complete (nc.planner)
@@ -70,7 +73,7 @@ class NcKernel:
         #: the row flags of a move at feed: STOP_END under modal exact stop, 0 in continuous-path mode
         self.exact = 0
         self.tool_change_time = float(motion.tool_change_time)
-        self._fast_linear = make_linear(names)
+        self._fast_linear = make_linear(names, self.rotary)
         #: the straight move (G0/G1 without G53): ``linear(kernel, motion, words, src)``, a plain function of
         #: the kernel (generated code calls it without a bound method). The generated fast path, or the
         #: general one while a transform is set (see set_transform); a front end calls it, never replaces it
@@ -275,7 +278,11 @@ class NcKernel:
 
     def workpiece_position(self) -> dict[str, float]:
         """Programmed position per axis in the current unit, as a program sees it (:meth:`shown_position`)."""
-        return {n: p / self.scale for n, p in zip(self.axis_names, self.shown_position())}
+        return {n: p / self.unit_of(n) for n, p in zip(self.axis_names, self.shown_position())}
+
+    def unit_of(self, name: str) -> float:
+        """mm per programmed unit of axis ``name``: ``scale`` (1.0 or 25.4), 1.0 for a rotary axis (degrees)."""
+        return 1.0 if name in self.rotary else self.scale
 
     # -- faults ----------------------------------------------------------
     def fault(self, code: str, message: str, src: Src | None):
@@ -585,7 +592,7 @@ class NcKernel:
         table = self.machine.offset(f"G{53 + number}")
         for name, i in self.axis_of.items():
             if name in words:
-                table[i] = words[name] * self.scale
+                table[i] = words[name] * self.unit_of(name)
         self._set_offsets_keep_machine(src)
 
     def _set_position(self, words) -> None:
@@ -594,7 +601,7 @@ class NcKernel:
             return
         for name, i in self.axis_of.items():
             if name in words:
-                value = words[name] * self.scale
+                value = words[name] * self.unit_of(name)
                 self.g92[i] = self.machine_pos[i] - (self.offset_vec[i] - self.g92[i]) - value
         self._set_offsets_keep_machine()
 
@@ -604,7 +611,7 @@ class NcKernel:
         prog = list(self.prog)
         for name, i in self.axis_of.items():
             if name in words:
-                prog[i] = words[name] * self.scale
+                prog[i] = words[name] * self.unit_of(name)
         base = self.transform.forward(prog)
         self.g92 = [m - (o - g) - b for m, o, g, b in zip(self.machine_pos, self.offset_vec, self.g92, base)]
         self._set_offsets_keep_machine()
@@ -625,7 +632,7 @@ class NcKernel:
             i = axis_of.get(name)
             if i is None:
                 continue
-            if scale != 1.0:
+            if scale != 1.0 and name not in self.rotary:
                 v *= scale
             if machine_coords:
                 prog[i] = v - self.offset_vec[i] + (kept[i] if kept else 0.0)
@@ -671,7 +678,7 @@ class NcKernel:
         elif machine_coords:
             # G53: the named axes go to machine positions, past the transformation; the others stay
             kept = self.machine_kept(machine_coords) or (0.0,) * self.n_axes
-            end = tuple(words[n] * self.scale + o if n in words else p
+            end = tuple(words[n] * self.unit_of(n) + o if n in words else p
                         for n, p, o in zip(self.axis_names, start, kept))
             prog = self.program_position(end)
         else:

@@ -119,7 +119,7 @@ def _targets(k, words, present, rows: int) -> tuple[list, np.ndarray]:
             prog.append(np.full(rows, k.prog[i]))
             continue
         moved |= has
-        v = words[name] * k.scale if k.scale != 1.0 else words[name]
+        v = words[name] * k.scale if k.scale != 1.0 and name not in k.rotary else words[name]
         if k.absolute:
             prog.append(_carry(has, v, k.prog[i]))
         else:  # summed from the start value, in row order: the same float operations as one by one

@@ -55,7 +55,7 @@ def stop_words(kernel, words: dict, stop: dict[str, float]) -> None:
     for name in stop:
         if name in words:
             i = kernel.axis_of[name]
-            words[name] = (target[i] if kernel.absolute else target[i] - kernel.prog[i]) / kernel.scale
+            words[name] = (target[i] if kernel.absolute else target[i] - kernel.prog[i]) / kernel.unit_of(name)
 
 
 def announce(canon, latch: ProbeLatch, src, target: dict[str, float] | None = None) -> None:

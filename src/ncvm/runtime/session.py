@@ -32,6 +32,8 @@ MAX_OUTPUT_LINES = 20_000
 @dataclass
 class RunOptions:
     state_dir: Path = Path(".ncvm")
+    #: read the permanent data of ``state_dir`` and keep this run's changes in memory only (``ncvm translate``)
+    scratch_state: bool = False
     max_steps: int = DEFAULT_MAX_STEPS
     trace: Path | None = None
     gcode: Path | None = None
@@ -139,7 +141,7 @@ class Session:
     def store(self) -> Store:
         """The permanent store, opened on first use (a run that keeps nothing creates no store file)."""
         if self._store is None:
-            self._store = Store(self.options.state_dir)
+            self._store = Store(self.options.state_dir, self.options.scratch_state)
         return self._store
 
     def say(self, text: str) -> None:

@@ -40,8 +40,8 @@ def translate(program: str | Path, out: str | Path, target: str = "linuxcnc", fr
     """Run ``program`` and write it as ``target``'s program to ``out`` (replaced only when all went well)."""
     from .. import api  # the API puts runs together and writes ``run --gcode`` through this package
 
-    options = dataclasses.replace(options or RunOptions(), keyboard=False, echo=False, gcode=None)
-    m = api.machine_for(program, machine, options.state_dir)
+    options = dataclasses.replace(options or RunOptions(), keyboard=False, echo=False, gcode=None, scratch_state=True)
+    m = _past_programmed_stops(api.machine_for(program, machine, options.state_dir))
     file = TranslationFile(out, TARGETS[target], Path(program).name, m.name, frame, source_comments,
                            scenario_given=bool(options.scenario or m.scenario))
     try:
@@ -56,3 +56,13 @@ def translate(program: str | Path, out: str | Path, target: str = "linuxcnc", fr
     w = file.writer
     return Translated(Path(out), file.target, w.lines, w.moves, w.setup.frozen, w.setup.probes,
                       {n: lengths[-1] for (_, n), lengths in w.setup.tools.items()}, list(result.limit_violations))
+
+
+def _past_programmed_stops(m: Machine) -> Machine:
+    """The machine with SINUMERIK ``m0 = "stop"`` read as ``"continue"``: that setting ends a simulated run at
+    M0, but the new control stops at the written M0 and the operator's cycle start runs the rest, so the
+    translation is the whole program, M0 included (docs/decisions.md)."""
+    sec = m.sections.get("sin800")
+    if not isinstance(sec, dict) or sec.get("m0") != "stop":
+        return m
+    return dataclasses.replace(m, sections={**m.sections, "sin800": {**sec, "m0": "continue"}})

@@ -426,7 +426,10 @@ class Translation(CanonSink):
         if self._probe is not None:
             self.refuse(self._probe[2], "a probe move along an arc")
             return
-        an, bn = self.names[spec.a], self.names[spec.b]
+        a, b, cw = spec.a, spec.b, spec.cw
+        an, bn = self.names[a], self.names[b]
+        if (an, bn) not in PLANE_OF and (bn, an) in PLANE_OF:  # X-Z is G18's Z-X: seen from there it turns back
+            a, b, an, bn, cw = b, a, bn, an, not cw
         plane = PLANE_OF.get((an, bn))
         if plane is None or an not in CENTRE_WORDS or bn not in CENTRE_WORDS:
             self.refuse(src, f"an arc in the plane of {an} and {bn}, which has no G17/G18/G19")
@@ -440,10 +443,11 @@ class Translation(CanonSink):
         if plane != self._plane:
             self._plane = plane
             self._line(plane, src)
-        ci = self.num(spec.center[0] - start[spec.a])
-        cj = self.num(spec.center[1] - start[spec.b])
+        centre = spec.center if a == spec.a else spec.center[::-1]
+        ci = self.num(centre[0] - start[a])
+        cj = self.num(centre[1] - start[b])
         turns = self.t.turns.format(n=self._turns(spec.turns)) if spec.turns else ""
-        self._line(f"{'G2' if spec.cw else 'G3'} {self._axes(end, start, always=(spec.a, spec.b))} {CENTRE_WORDS[an]}{ci} {CENTRE_WORDS[bn]}{cj}"
+        self._line(f"{'G2' if cw else 'G3'} {self._axes(end, start, always=(a, b))} {CENTRE_WORDS[an]}{ci} {CENTRE_WORDS[bn]}{cj}"
                    f"{turns}{self._feed_word(feed)}", src)
 
     def _turns(self, extra: int) -> int:

@@ -123,6 +123,10 @@ class Sin800Dialect(Dialect):
         store = session.store
         stored = store.items(NAMESPACE)
         data.overlay(stored, session.options.state_dir)
+        left = {n: v for n, v in stored.get("central_r", {}).items() if v != 0.0}
+        if left:  # input from outside the program: a translation marks the path that follows FROZEN
+            values = ", ".join(f"R{n}={v:g}" for n, v in sorted(left.items(), key=lambda item: int(item[0])))
+            session.kernel.canon.frozen(f"central R parameters {values} left by earlier runs", None)
         for offset in data.carried_offsets(stored, machine.axis_names):  # never a silent shift
             session.say(f"NC state: {offset} kept from an earlier run (the NC keeps its offsets; "
                         f"delete {session.options.state_dir} to start from the machine file)")

@@ -51,7 +51,7 @@ class Offsets:
         for name, value in words:
             if name not in self.kernel.axis_of:
                 raise Cl800Error(f"G{57 + group}: {name} is not an axis")
-            vec[self.kernel.axis_of[name]] = value * self.kernel.scale
+            vec[self.kernel.axis_of[name]] = value * self.kernel.unit_of(name)
         self._changed()
 
     def select_d(self, d: float, line: int) -> None:

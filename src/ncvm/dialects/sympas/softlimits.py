@@ -92,8 +92,9 @@ def _stop_action(card, owner, ax: int, seg, tick: float, reaction: str):
         if shift:
             which += f" (machine {limit:g})"
         names = ", ".join(card.names[x] for x in owner.axes)
-        card.say(f"{seg.src.file}:{seg.src.line}: software limit {which} of {a.name} reached at "
-                 f"{tick / TICKS_PER_S:.6f} s: {reaction} stops {names}", card.task_of(seg.src))
+        said = f"software limit {which} of {a.name} reached at {tick / TICKS_PER_S:.6f} s: {reaction} stops {names}"
+        card.say(f"{seg.src.file}:{seg.src.line}: {said}", card.task_of(seg.src))
+        card.canon.frozen(f"{said}: the move ends where the card stopped it, not where it was programmed", seg.src)
     return act
 
 
