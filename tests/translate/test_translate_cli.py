@@ -101,7 +101,7 @@ def test_run_gcode_is_the_linuxcnc_translation(tmp_path):
     a, b = tmp_path / "a.ngc", tmp_path / "b.ngc"
     r = ncvm("run", EX / "sin800" / "flange.mpf", "--gcode", a, "--state", tmp_path / "st", cwd=tmp_path)
     assert r.returncode == 0, r.stderr
-    r = ncvm("translate", EX / "sin800" / "flange.mpf", "-o", b, "--state", tmp_path / "st", cwd=tmp_path)
+    r = ncvm("translate", EX / "sin800" / "flange.mpf", "-o", b, "--state", tmp_path / "fresh", cwd=tmp_path)
     assert r.returncode == 0, r.stderr
     assert a.read_text() == b.read_text() and "G10" not in a.read_text()
     # the dialog program without its flangedlg.keys beside it (which a run takes): the run waits for keys
