@@ -66,6 +66,7 @@ class Frame:
     tool_offset: int = 0
     transformed: bool = False
     tool_kept: bool = False
+    tool_subtracted: bool = False  # G44: the length of offset ``tool_offset`` taken off (tool_length its negative)
 
     def removed(self) -> tuple[float, ...]:
         """Per axis, what the work coordinates take off the machine's: the zero offset and the tool length

@@ -10,9 +10,11 @@ cannot say stops the translation (:attr:`Translation.refusal`) instead of being 
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from ..nc import arcs
 from ..nc.canon import CanonSink, Frame, Src, plain_frame
 from ..outpaths import OutputError
 from .targets import Target
@@ -21,8 +23,12 @@ PLANE_OF = {("X", "Y"): "G17", ("Z", "X"): "G18", ("Y", "Z"): "G19"}
 CENTRE_WORDS = {"X": "I", "Y": "J", "Z": "K"}
 
 
+#: the decimals of every written position (0.1 um)
+DECIMALS = 4
+
+
 def number(v: float) -> str:
-    text = f"{v:.4f}".rstrip("0").rstrip(".")
+    text = f"{v:.{DECIMALS}f}".rstrip("0").rstrip(".")
     return "0" if text in ("-0", "") else text
 
 
@@ -45,8 +51,9 @@ class Setup:
     """What the simulation used that the new control must be set up with (the header lists it)."""
 
     offsets: dict[str, list[tuple[float, ...]]] = field(default_factory=dict)  # zero offset -> values moved under
-    #: (tool in the spindle, tool offset number) -> lengths moved under: an 840D D is an edge of the active tool
-    tools: dict[tuple[int, int], list[float]] = field(default_factory=dict)
+    #: (tool in the spindle, tool offset number, its call) -> lengths moved under: an 840D D is an edge of the
+    #: active tool; the length of a G44 as measured (it is taken off)
+    tools: dict[tuple[int, int, str], list[float]] = field(default_factory=dict)
     shifts: set[tuple[float, ...]] = field(default_factory=set)  # G92 / additive offsets baked into positions
     transformed: bool = False
     machine_moves: int = 0
@@ -180,7 +187,12 @@ class Translation(CanonSink):
                              "number or a tool in the spindle")
             return
         self._tool_number = n
-        self._line(self.t.tool_length_on.format(n=n), src)
+        form = self.t.tool_length_minus if frame.tool_subtracted else self.t.tool_length_on
+        if form is None:
+            self.refuse(src, f"G44 H{n} (the tool length taken off): {self.t.title} has no G44, and G43 "
+                             "with a negative length would ask the user for a wrong tool length")
+            return
+        self._line(form.format(n=n), src)
 
     def _axes(self, p, start=None, machine_frame: bool = False, always=()) -> str:
         """The axis words of end point ``p``: only the axes that move from ``start`` (and ``always``), as the
@@ -272,9 +284,11 @@ class Translation(CanonSink):
             seen.append(f.zero)
         if f.tool_length:
             tool = self._tool if self.t.edge_of_tool else 0
-            lengths = self.setup.tools.setdefault((tool, self._tool_number), [])
-            if f.tool_length not in lengths:
-                lengths.append(f.tool_length)
+            form = self.t.tool_length_minus if f.tool_subtracted else self.t.tool_length_on
+            lengths = self.setup.tools.setdefault((tool, self._tool_number, form), [])
+            length = -f.tool_length if f.tool_subtracted else f.tool_length  # G44: the length as measured
+            if length not in lengths:
+                lengths.append(length)
 
     def _zero_text(self, zero) -> str:
         return " ".join(f"{n}{number(v)}" for n, v in zip(self.names, zero) if n in self.t.axes)
@@ -437,6 +451,9 @@ class Translation(CanonSink):
         if spec.turns and self.t.turns is None:
             self.refuse(src, f"a helix of {spec.turns + 1} turns: {self.t.title} has no word for full turns")
             return
+        if self._below_resolution(start, end, spec):
+            self._below_resolution_move(start, end, feed, src)
+            return
         if plane != self._plane:
             self._plane = plane
             self._line(plane, src)
@@ -445,6 +462,28 @@ class Translation(CanonSink):
         turns = self.t.turns.format(n=self._turns(spec.turns)) if spec.turns else ""
         self._line(f"{'G2' if spec.cw else 'G3'} {self._axes(end, start, always=(spec.a, spec.b))} {CENTRE_WORDS[an]}{ci} {CENTRE_WORDS[bn]}{cj}"
                    f"{turns}{self._feed_word(feed)}", src)
+
+    def _below_resolution(self, start, end, spec) -> bool:
+        """The arc as written (end point and centre rounded to the written decimals) would sweep another
+        angle than the run's: an arc shorter than the resolution, whose rounded end is its rounded start
+        (a full circle on every G-code control) or lies behind it (almost a full turn)."""
+        a, b = spec.a, spec.b
+        ra, rb = self.removed[a], self.removed[b]
+        sa, sb = round(start[a] - ra, DECIMALS), round(start[b] - rb, DECIMALS)
+        ca = sa + round(spec.center[0] - start[a], DECIMALS)
+        cb = sb + round(spec.center[1] - start[b], DECIMALS)
+        written = arcs.sweep(sa, sb, round(end[a] - ra, DECIMALS), round(end[b] - rb, DECIMALS), ca, cb,
+                             spec.cw, spec.turns)
+        run = arcs.sweep(start[a], start[b], end[a], end[b], *spec.center, spec.cw, spec.turns)
+        return abs(written - run) > math.pi
+
+    def _below_resolution_move(self, start, end, feed, src) -> None:
+        """An arc below the output's resolution: the straight move to its rounded end point, or nothing
+        where no written position changes (docs/translate.md)."""
+        if all(round(e - r, DECIMALS) == round(s - r, DECIMALS) for s, e, r in zip(start, end, self.removed)):
+            self._programmed = None
+            return
+        self._line(f"G1 {self._axes(end, start)}{self._feed_word(feed)}", src)
 
     def _turns(self, extra: int) -> int:
         """LinuxCNC's P counts the turns begun (1 + the full ones), SINUMERIK's TURN the full ones."""
@@ -573,8 +612,8 @@ class Translation(CanonSink):
                 values = " then ".join(" ".join(f"{n}{number(v)}" for n, v in zip(self.names, zero) if n in t.axes)
                                        for zero in zeros)
                 out.append(note(f"zero offset {name} -> {t.work_offsets[name]}: simulated as {values} ({machine})"))
-            for (tool, n), lengths in sorted(s.tools.items()):
-                out.append(note(f"{f'tool T{tool} edge ' if tool else 'tool offset '}{t.tool_length_on.format(n=n)}: length "
+            for (tool, n, form), lengths in sorted(s.tools.items()):
+                out.append(note(f"{f'tool T{tool} edge ' if tool else 'tool offset '}{form.format(n=n)}: length "
                                 f"{' then '.join(number(v) for v in lengths)} mm in the simulation"))
             if not s.tools:
                 out.append(note("no tool length compensation was used"))

@@ -91,7 +91,7 @@ def tool_length(k, g, words, src):
     """G43/G44 H<n>: the tool length of tool n (H, else D, else the tool in the spindle), plus or minus."""
     number = int(words.get("H", words.get("D", k.tool)))
     length = k._tool(number, src).length if number else 0.0
-    k.set_tool_length(length if g == 43 else -length, src)
+    k.set_tool_length(length if g == 43 else -length, src, number, subtracted=g == 44)
 
 
 def tool_length_off(k, g, words, src):
