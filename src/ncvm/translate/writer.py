@@ -95,12 +95,14 @@ class Translation(CanonSink):
         self._placed = False  # the refusal names no block yet: the next move's block
         self._moved_in: Src | None = None  # the block of the last move (a cycle moves again after its M5)
         self._turning: str | None = None  # the spindle word in force ("M3 S500"), None: stopped
+        self._turning_line = -1  # the line count when it was written
         self._probe: tuple[dict | None, dict | None, Src] | None = None
         self._frozen: list[tuple[str, Src | None]] = []
         self._frozen_pending: set = set()
         self._frozen_seen: set = set()
         self._unsaid: tuple[str, Src | None] | None = None  # a machine input read with no scenario to say it
         self._tool = 0
+        self._restart: tuple[str, Src] | None = None  # the spindle word after M6, until the program gives one
         self._hidden: list[int] = []
         self._tool_number = 0
         self._frame_unrecorded = True
@@ -129,6 +131,9 @@ class Translation(CanonSink):
             return
         if self._tool_pending is not None:
             self._tool_length()
+        if self._restart is not None:
+            restart, self._restart = self._restart, None
+            self._line(*restart)
         if self._frozen:
             notes, self._frozen = self._frozen, []
             self._frozen_pending.clear()
@@ -274,21 +279,31 @@ class Translation(CanonSink):
         if not self.work or f.work_offset in (None, "G53"):
             return
         seen = self.setup.offsets.setdefault(f.work_offset, [])
-        if any(zero != f.zero for zero in seen):  # one G5x holds one value on the new control
-            self.refuse(self._frame_src, f"the program rewrites zero offset {f.work_offset} after moves in it "
-                                         f"({self._zero_text(seen[-1])} before, {self._zero_text(f.zero)} now): "
-                                         f"a {self.t.work_offsets[f.work_offset]} of the new control holds one value "
-                                         "(translate with --frame machine)")
+        if any(zero != f.zero for zero in seen):
+            self._rewritten(f"zero offset {f.work_offset}", self._zero_text(seen[-1]), self._zero_text(f.zero),
+                            self.t.work_offsets[f.work_offset])
             return
         if f.zero not in seen:
             seen.append(f.zero)
         if f.tool_length:
             tool = self._tool if self.t.edge_of_tool else 0
             form = self.t.tool_length_minus if f.tool_subtracted else self.t.tool_length_on
+            call = form.format(n=self._tool_number)
             lengths = self.setup.tools.setdefault((tool, self._tool_number, form), [])
             length = -f.tool_length if f.tool_subtracted else f.tool_length  # G44: the length as measured
+            if lengths and length not in lengths:
+                self._rewritten(f"the tool length of {call}", f"{number(lengths[-1])} mm", f"{number(length)} mm",
+                                f"{call} of {f'tool T{tool}' if tool else 'the tool table'}")
+                return
             if length not in lengths:
                 lengths.append(length)
+
+    def _rewritten(self, what: str, before: str, now: str, entry: str) -> None:
+        """One rule for zero offsets and tool lengths: an entry of the new control holds one value, so a
+        program that rewrites one after moves under it is refused."""
+        self.refuse(self._frame_src, f"the program rewrites {what} after moves with it ({before} before, {now} "
+                                     f"now): {entry} of the new control holds one value (translate with "
+                                     "--frame machine)")
 
     def _zero_text(self, zero) -> str:
         return " ".join(f"{n}{number(v)}" for n, v in zip(self.names, zero) if n in self.t.axes)
@@ -540,8 +555,19 @@ class Translation(CanonSink):
         if held is not None:  # the block's own tool length: for the tool just loaded
             self._tool_pending = held
             self._tool_length()
+        elif self.t.edge_of_tool:  # the 840D activates the new tool's default edge: the D the run used
+            self._edge_after_change(src)
         if self._turning is not None:  # M6 stops the spindle on the new control; it turned on in the run
-            self._line(self._turning, src)
+            self._restart = (self._turning, src)  # written before what follows, unless the program restarts it
+
+    def _edge_after_change(self, src: Src) -> None:
+        """After an 840D tool change: the tool length in force as an edge of the new tool, D0 where none is
+        (or under --frame machine, whose positions hold every length already)."""
+        if self.work and self._tool_written[1] and self._tool_frame is not None:
+            self._tool_pending = (self._tool_frame, src)
+            self._tool_length()
+        else:
+            self._line(self.t.tool_length_off, src)
 
     def _speed(self, speed: float, src: Src) -> str:
         """The S word's value: a target of integer S (ISO) gets it rounded, with a comment where it changed."""
@@ -551,6 +577,7 @@ class Translation(CanonSink):
         return str(round(speed))
 
     def spindle(self, speed, direction, src):
+        self._restart = None  # the program's own spindle word after a tool change: written once
         if direction == 0:
             self._turning = None
             if src == self._moved_in:  # a stop between the moves of one block (a boring cycle): here
@@ -560,8 +587,12 @@ class Translation(CanonSink):
                 self._after.append(("M5", src))
             return
         self._flush_after()
-        self._turning = f"{'M3' if direction > 0 else 'M4'} S{self._speed(speed, src)}"
-        self._line(self._turning, src)
+        turning = f"{'M3' if direction > 0 else 'M4'} S{self._speed(speed, src)}"
+        if turning == self._turning and self.lines == self._turning_line:
+            return  # the run says it again (its S word, then its M3): written once
+        self._turning = turning
+        self._line(turning, src)
+        self._turning_line = self.lines
 
     def coolant(self, mode, src):
         if mode == "off":
@@ -590,6 +621,7 @@ class Translation(CanonSink):
 
     def finish_moves(self) -> None:
         """The run ended normally: the last M5/M9 out (a probe move with no move after it is refused)."""
+        self._restart = None  # no spindle restart after the last tool change: nothing moves any more
         self._flush_after()
         if self._unsaid is not None:
             self._line("")  # the refusal of an input no scenario gave, at the end of the program too

@@ -141,6 +141,7 @@ class Channel:
         # decode-ahead (ncvm's reading; the CL 800 manual is silent): 0 = lockstep; N = up to N decoded blocks wait for execution
         self.decode_ahead = sec.decode_ahead
         self.strict = sec.strict_nc  # R stores rounded to 8 digits (ncvm's reading; the CL 800 manual is silent)
+        self.write_line = 0  # the block of the @ write running now (write)
         self.buffer = BlockBuffer(self.decode_ahead, self.execute)  # route() keeps its step on the current path
         self.pending_r: dict[int, float] = {}  # PLC answers and measured values not yet seen by decoding
         self.R = [0.0] * 1000
@@ -318,8 +319,10 @@ class Channel:
         fix = nc8 if self.strict else held
         self.R[first:first + len(values)] = [fix(v) for v in values]
 
-    def write(self, code: str, args: tuple) -> None:
-        """A write, the value last."""
+    def write(self, code: str, args: tuple, line: int = 0) -> None:
+        """A write, the value last; ``line``: the block that writes (:attr:`write_line`, the source of what
+        the write changes, e.g. the active tool length)."""
+        self.write_line = line
         if AT_CODES[code].lower != "write_rotation":
             # data written by decoding serves the blocks decoded after it; rotation angles act at once,
             # even on blocks already decoded (L4325-4334)
