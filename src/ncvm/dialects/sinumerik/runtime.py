@@ -12,6 +12,7 @@ from __future__ import annotations
 import math
 import re
 import sys
+from functools import partial
 from operator import attrgetter
 
 from ...diagnostics import Frame, RuntimeFault, Span, UsageError
@@ -27,7 +28,7 @@ from ...machine.scenario import (
     refuse,
 )
 from ...nc.block import Block
-from ...nc.canon import CanonSink, Src
+from ...nc.canon import NOBODY, CanonSink, Src
 from ...nc.kernel import INCH
 from ...nc.planner import STOP_END
 from ...nc.profiles.sinumerik8xx import SINUMERIK8XX
@@ -108,6 +109,13 @@ SINUMERIK_PATH_CODES = {9: "block", 60: "exact", 64: "continuous"}
 #: the scenario events the SINUMERIK channel reads
 SINUMERIK_EVENTS = (ExternalInput, PlcChange, PlcTimer, PlcCounter, Alarm, ProbeSwitch)
 
+
+
+def _told_linear(linear, k, motion: int, words: dict, src) -> None:
+    """The generated G0/G1 fast path under a translation: the canon first hears the block's axis words
+    (``programmed``, as the kernel's block path says them), so that an axis standing where it is is written."""
+    k.canon.programmed(tuple(a for a in words if a in k.axis_of), src)
+    linear(k, motion, words, src)
 
 class PlcAnswers(CanonSink):
     """The PLC's answer to an M function it is handed (canon ``aux``), after the sinks have recorded it."""
@@ -227,6 +235,8 @@ class Channel:
         if self.rounding.used:  # the corner rounding sees every block first
             self.rounding.inner, self.rounding.inner_linear = self.execute_now, self.linear
             self.execute_now, self.linear = self.rounding.execute, self.rounding.linear
+        if k.canon.programmed is not NOBODY:  # a translation writes the block's axis words, not only those that move
+            self.linear = partial(_told_linear, self.linear)
         self.execute = self.decode_into_buffer if self.decode_ahead > 0 else self.execute_now
         self.buffer.execute = self.execute_now
 
