@@ -60,6 +60,9 @@ class Target:
     edge_of_tool: bool = False
     #: Fanuc-style input: every length, angle and dwell word with a decimal point (``X10.``), S an integer
     decimal_point: bool = False
+    #: the machine move is a positioning at rapid traverse whatever the motion mode (Fanuc-style G53): a fed
+    #: one is refused
+    machine_move_rapid: bool = False
     #: the longest line the control reads (rs274ngc: 252 characters, tried with rs274; "Command too long"
     #: from 253 on); the others are given the same bound
     max_line: int = 252
@@ -99,6 +102,8 @@ def ascii_text(text: str) -> str:
 
 
 _PARENS = {"(": "[", ")": "]"}
+#: ISO: ``%`` is the tape's end-of-record mark, read as such also inside a comment
+_ISO_ESCAPES = {**_PARENS, "%": "pct"}
 _ISO_OFFSETS = {f"G{n}": f"G{n}" for n in range(54, 60)}
 
 LINUXCNC = Target(
@@ -129,6 +134,6 @@ ISO = Target(
     tool_length_on="G43 H{n}", tool_length_off="G49", tool_length_minus="G44 H{n}",
     machine_move="G53", machine_move_keeps_tool=False,
     dwell="G4 X{s}", probe=None, probe_no_contact=None, turns=None, message="({})", thread=None,
-    program_end="M30", wrapper="%", comment_escapes=_PARENS, decimal_point=True)
+    program_end="M30", wrapper="%", comment_escapes=_ISO_ESCAPES, decimal_point=True, machine_move_rapid=True)
 
 TARGETS = {t.name: t for t in (LINUXCNC, SINUMERIK_840D, ISO)}

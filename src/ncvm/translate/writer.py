@@ -365,6 +365,11 @@ class Translation(CanonSink):
             return
         prefix = self._machine_prefix(src)
         restore = None
+        if prefix and code == "G1" and self.t.machine_move_rapid:
+            self.refuse(src, f"a feed move in machine coordinates: {self.t.title}'s {self.t.machine_move} "
+                             "positions at rapid traverse whatever the motion mode (translate with --frame "
+                             "machine, or for another target)")
+            return
         if prefix and self.frame_now.tool_kept:
             self._tool_kept_move(code, start, end, feed, src)
             return
