@@ -376,6 +376,8 @@ class NcKernel:
             self._css_update(src)
         if "T" in words:
             self.next_tool = int(words["T"])
+            if canon.tool_select is not NOBODY and 6 not in block.m:  # a translation keeps the T word
+                canon.tool_select(self.next_tool, src)
         if block.m:
             self.planner.stop()  # M functions are exact stops: the axes stand while the PLC acts
             block_stop = True

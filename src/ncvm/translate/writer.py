@@ -288,6 +288,8 @@ class Translation(CanonSink):
         if f.tool_length:
             tool = self._tool if self.t.edge_of_tool else 0
             form = self.t.tool_length_minus if f.tool_subtracted else self.t.tool_length_on
+            if form is None:  # refused where it was selected (no G44 on the target)
+                return
             call = form.format(n=self._tool_number)
             lengths = self.setup.tools.setdefault((tool, self._tool_number, form), [])
             length = -f.tool_length if f.tool_subtracted else f.tool_length  # G44: the length as measured
@@ -550,13 +552,30 @@ class Translation(CanonSink):
         self._flush_after()
         self._line(self.t.dwell.format(s=self.num(seconds)), src)
 
-    def tool_change(self, tool, src):
+    def _tool_word(self, text: str, src: Src) -> tuple | None:
+        """Write the T word ``text`` of block ``src`` before the tool length of its own block (the 840D's D
+        and the length of H belong to the tool the T names); that length, held back, is returned."""
         held = self._tool_pending if self._tool_pending is not None and self._tool_pending[1] == src else None
         self._tool_pending = None if held else self._tool_pending
         self._flush_after()
+        self._line(text, src)
+        return held
+
+    def tool_select(self, tool, src):
+        """A T word without M6, written as programmed; on the 840D, whose T selects the tool its D is an
+        edge of, it names the tool the header lists the edge under until an M6 loads one."""
+        if self.t.edge_of_tool and not self._tool:
+            self._tool = tool
+            self._frame_unrecorded = True
+        held = self._tool_word(f"T{tool}", src)
+        if held is not None:
+            self._tool_pending = held
+            self._tool_length()
+
+    def tool_change(self, tool, src):
+        held = self._tool_word(f"T{tool} M6", src)
         self._tool = tool
         self._frame_unrecorded = True  # the header names the length for the new tool too (an 840D D is its edge)
-        self._line(f"T{tool} M6", src)
         if held is not None:  # the block's own tool length: for the tool just loaded
             self._tool_pending = held
             self._tool_length()
