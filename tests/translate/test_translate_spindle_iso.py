@@ -27,7 +27,7 @@ def test_g86_spindle_stops_at_the_bottom_before_the_rapid_out(tmp_path):
 def test_spindle_restarted_after_a_tool_change_840d_m4(tmp_path):
     code = _lines(tmp_path, "G90 G54\nT1 M6\nS700 M4\nG0 X10 Z5\nT2 M6\nG1 Z-1 F100\nM2\n", "sinumerik840d")
     change = code.index("T2 M6")
-    assert code[change + 1] == "M4 S700", code
+    assert code[change + 1:change + 3] == ["D0", "M4 S700"], code  # the 840D's D after each tool change
     assert code.index("M4 S700", change) < code.index("G1 Z-1 F100"), code
 
 

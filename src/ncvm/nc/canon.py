@@ -66,6 +66,7 @@ class Frame:
     tool_offset: int = 0
     transformed: bool = False
     tool_kept: bool = False
+    tool_subtracted: bool = False  # G44: the length of offset ``tool_offset`` taken off (tool_length its negative)
 
     def removed(self) -> tuple[float, ...]:
         """Per axis, what the work coordinates take off the machine's: the zero offset and the tool length
@@ -214,6 +215,9 @@ class CanonSink:
     def tool_change(self, tool: int, src: Src) -> None:
         """Tool ``tool`` is now in the spindle."""
 
+    def tool_select(self, tool: int, src: Src) -> None:
+        """A T word without M6: tool ``tool`` selected (prepared; on some controls' PLC changed), as programmed."""
+
     def tool_offset(self, length: float, src: Src) -> None:
         """Active tool length compensation changed."""
 
@@ -248,7 +252,7 @@ class CanonSink:
 
 _METHODS = ("begin", "rapid", "feed", "arc", "thread", "move_batch", "timing", "frame", "frozen", "channel", "programmed", "tapping", "dwell",
             "feed_per_rev", "radius_compensation", "homing",
-            "tool_change", "tool_offset", "spindle", "coolant", "aux", "probe", "message", "stop", "program_end", "end")
+            "tool_change", "tool_select", "tool_offset", "spindle", "coolant", "aux", "probe", "message", "stop", "program_end", "end")
 
 
 class Canon:

@@ -133,6 +133,7 @@ class NcKernel:
         self.work_offset = "G54"
         self.tool_length = 0.0
         self.tool_offset = 0  # the H (D) number the tool length came from
+        self.tool_subtracted = False  # G44: the length of the offset taken off
         self.tool_axis = self.axis_of.get("Z")
         self.g92 = [0.0] * self.n_axes
         #: offsets a control adds on top of the selected work offset (SINUMERIK programmable, external,
@@ -220,7 +221,7 @@ class NcKernel:
         shift = tuple(o - z - (tool if i == self.tool_axis else 0.0)
                       for i, (o, z) in enumerate(zip(self.offset_vec, zero)))
         return Frame(work_offset, zero, shift, self.tool_length, self.tool_axis, self.tool_offset,
-                     self.transform is not None)
+                     self.transform is not None, tool_subtracted=self.tool_subtracted)
 
     def _announce_frame(self, src: Src | None) -> None:
         """Tell the canon the frame when it changed (offset changes only: nothing per move)."""
@@ -263,10 +264,12 @@ class NcKernel:
         """Re-read the work offset tables after a program changed them; the tool stays where it is."""
         self._set_offsets_keep_machine()
 
-    def set_tool_length(self, length: float, src: Src, number: int = 0) -> None:
-        """Tool length compensation ``length`` on the tool axis, from tool offset ``number`` (H or D; 0: none)."""
+    def set_tool_length(self, length: float, src: Src, number: int = 0, subtracted: bool = False) -> None:
+        """Tool length compensation ``length`` on the tool axis, from tool offset ``number`` (H or D; 0: none);
+        ``subtracted``: G44, the offset's length taken off (``length`` is then its negative)."""
         self.tool_length = length
         self.tool_offset = number if length else 0
+        self.tool_subtracted = subtracted and bool(length)
         self._set_offsets_keep_machine(src)
         self.canon.tool_offset(length, src)
 
@@ -386,6 +389,8 @@ class NcKernel:
             self._css_update(src)
         if "T" in words:
             self.next_tool = int(words["T"])
+            if canon.tool_select is not NOBODY and 6 not in block.m:  # a translation keeps the T word
+                canon.tool_select(self.next_tool, src)
         if block.m:
             self.planner.stop()  # M functions are exact stops: the axes stand while the PLC acts
             block_stop = True

@@ -55,7 +55,7 @@ def translate(program: str | Path, out: str | Path, target: str = "linuxcnc", fr
         raise TranslationRefused(refusal)
     w = file.writer
     return Translated(Path(out), file.target, w.lines, w.moves, w.setup.frozen, w.setup.probes,
-                      {n: lengths[-1] for (_, n), lengths in w.setup.tools.items()}, list(result.limit_violations))
+                      {n: lengths[-1] for (_, n, _), lengths in w.setup.tools.items()}, list(result.limit_violations))
 
 
 def _past_programmed_stops(m: Machine) -> Machine:

@@ -28,6 +28,8 @@ class Target:
     #: tool length compensation from offset number {n}, and its cancellation
     tool_length_on: str
     tool_length_off: str
+    #: tool length compensation subtracted (G44) from offset number {n}, None: the control has none
+    tool_length_minus: str | None
     #: a move in machine coordinates (G53), one block; and whether the control keeps the tool length in it
     machine_move: str
     machine_move_keeps_tool: bool
@@ -58,6 +60,9 @@ class Target:
     edge_of_tool: bool = False
     #: Fanuc-style input: every length, angle and dwell word with a decimal point (``X10.``), S an integer
     decimal_point: bool = False
+    #: the machine move is a positioning at rapid traverse whatever the motion mode (Fanuc-style G53): a fed
+    #: one is refused
+    machine_move_rapid: bool = False
     #: the longest line the control reads (rs274ngc: 252 characters, tried with rs274; "Command too long"
     #: from 253 on); the others are given the same bound
     max_line: int = 252
@@ -97,12 +102,14 @@ def ascii_text(text: str) -> str:
 
 
 _PARENS = {"(": "[", ")": "]"}
+#: ISO: ``%`` is the tape's end-of-record mark, read as such also inside a comment
+_ISO_ESCAPES = {**_PARENS, "%": "pct"}
 _ISO_OFFSETS = {f"G{n}": f"G{n}" for n in range(54, 60)}
 
 LINUXCNC = Target(
     name="linuxcnc", title="LinuxCNC (rs274ngc)", comment="({})",
     preamble="G21 G90 G17 G94 G40 G49 G80", work_offsets=_ISO_OFFSETS,
-    tool_length_on="G43 H{n}", tool_length_off="G49",
+    tool_length_on="G43 H{n}", tool_length_off="G49", tool_length_minus=None,
     machine_move="G53", machine_move_keeps_tool=False,
     dwell="G4 P{s}", probe="G38.2 {axes}{feed}", probe_no_contact="G38.3 {axes}{feed}", turns=" P{n}", message="(MSG, {})",
     thread="G33 {axes} K{lead}",
@@ -114,7 +121,7 @@ SINUMERIK_840D = Target(
     name="sinumerik840d", title="SINUMERIK 840D", comment="; {}",
     preamble="G71 G90 G17 G94 G40", work_offsets={"G54": "G54", "G55": "G55", "G56": "G56", "G57": "G57",
                                                  "G58": "G505", "G59": "G506"},
-    tool_length_on="D{n}", tool_length_off="D0", edge_of_tool=True,
+    tool_length_on="D{n}", tool_length_off="D0", tool_length_minus=None, edge_of_tool=True,
     machine_move="SUPA", machine_move_keeps_tool=True,
     dwell="G4 F{s}", probe="MEAS=1 G1 {axes}{feed}", probe_no_contact="MEAS=1 G1 {axes}{feed}", turns=" TURN={n}", message='MSG("{}")',
     thread=None,
@@ -124,9 +131,9 @@ SINUMERIK_840D = Target(
 ISO = Target(
     name="iso", title="ISO / Fanuc style", comment="({})",
     preamble="G21 G90 G17 G94 G40 G49 G80", work_offsets=_ISO_OFFSETS,
-    tool_length_on="G43 H{n}", tool_length_off="G49",
+    tool_length_on="G43 H{n}", tool_length_off="G49", tool_length_minus="G44 H{n}",
     machine_move="G53", machine_move_keeps_tool=False,
     dwell="G4 X{s}", probe=None, probe_no_contact=None, turns=None, message="({})", thread=None,
-    program_end="M30", wrapper="%", comment_escapes=_PARENS, decimal_point=True)
+    program_end="M30", wrapper="%", comment_escapes=_ISO_ESCAPES, decimal_point=True, machine_move_rapid=True)
 
 TARGETS = {t.name: t for t in (LINUXCNC, SINUMERIK_840D, ISO)}

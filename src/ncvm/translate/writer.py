@@ -10,9 +10,11 @@ cannot say stops the translation (:attr:`Translation.refusal`) instead of being 
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from ..nc import arcs
 from ..nc.canon import CanonSink, Frame, Src, plain_frame
 from ..outpaths import OutputError
 from .targets import Target
@@ -21,8 +23,12 @@ PLANE_OF = {("X", "Y"): "G17", ("Z", "X"): "G18", ("Y", "Z"): "G19"}
 CENTRE_WORDS = {"X": "I", "Y": "J", "Z": "K"}
 
 
+#: the decimals of every written position (0.1 um)
+DECIMALS = 4
+
+
 def number(v: float) -> str:
-    text = f"{v:.4f}".rstrip("0").rstrip(".")
+    text = f"{v:.{DECIMALS}f}".rstrip("0").rstrip(".")
     return "0" if text in ("-0", "") else text
 
 
@@ -45,8 +51,9 @@ class Setup:
     """What the simulation used that the new control must be set up with (the header lists it)."""
 
     offsets: dict[str, list[tuple[float, ...]]] = field(default_factory=dict)  # zero offset -> values moved under
-    #: (tool in the spindle, tool offset number) -> lengths moved under: an 840D D is an edge of the active tool
-    tools: dict[tuple[int, int], list[float]] = field(default_factory=dict)
+    #: (tool in the spindle, tool offset number, its call) -> lengths moved under: an 840D D is an edge of the
+    #: active tool; the length of a G44 as measured (it is taken off)
+    tools: dict[tuple[int, int, str], list[float]] = field(default_factory=dict)
     shifts: set[tuple[float, ...]] = field(default_factory=set)  # G92 / additive offsets baked into positions
     transformed: bool = False
     machine_moves: int = 0
@@ -88,12 +95,14 @@ class Translation(CanonSink):
         self._placed = False  # the refusal names no block yet: the next move's block
         self._moved_in: Src | None = None  # the block of the last move (a cycle moves again after its M5)
         self._turning: str | None = None  # the spindle word in force ("M3 S500"), None: stopped
+        self._turning_line = -1  # the line count when it was written
         self._probe: tuple[dict | None, dict | None, Src] | None = None
         self._frozen: list[tuple[str, Src | None]] = []
         self._frozen_pending: set = set()
         self._frozen_seen: set = set()
         self._unsaid: tuple[str, Src | None] | None = None  # a machine input read with no scenario to say it
         self._tool = 0
+        self._restart: tuple[str, Src] | None = None  # the spindle word after M6, until the program gives one
         self._hidden: list[int] = []
         self._tool_number = 0
         self._frame_unrecorded = True
@@ -122,6 +131,9 @@ class Translation(CanonSink):
             return
         if self._tool_pending is not None:
             self._tool_length()
+        if self._restart is not None:
+            restart, self._restart = self._restart, None
+            self._line(*restart)
         if self._frozen:
             notes, self._frozen = self._frozen, []
             self._frozen_pending.clear()
@@ -180,7 +192,12 @@ class Translation(CanonSink):
                              "number or a tool in the spindle")
             return
         self._tool_number = n
-        self._line(self.t.tool_length_on.format(n=n), src)
+        form = self.t.tool_length_minus if frame.tool_subtracted else self.t.tool_length_on
+        if form is None:
+            self.refuse(src, f"G44 H{n} (the tool length taken off): {self.t.title} has no G44, and G43 "
+                             "with a negative length would ask the user for a wrong tool length")
+            return
+        self._line(form.format(n=n), src)
 
     def _axes(self, p, start=None, machine_frame: bool = False, always=()) -> str:
         """The axis words of end point ``p``: only the axes that move from ``start`` (and ``always``), as the
@@ -262,19 +279,33 @@ class Translation(CanonSink):
         if not self.work or f.work_offset in (None, "G53"):
             return
         seen = self.setup.offsets.setdefault(f.work_offset, [])
-        if any(zero != f.zero for zero in seen):  # one G5x holds one value on the new control
-            self.refuse(self._frame_src, f"the program rewrites zero offset {f.work_offset} after moves in it "
-                                         f"({self._zero_text(seen[-1])} before, {self._zero_text(f.zero)} now): "
-                                         f"a {self.t.work_offsets[f.work_offset]} of the new control holds one value "
-                                         "(translate with --frame machine)")
+        if any(zero != f.zero for zero in seen):
+            self._rewritten(f"zero offset {f.work_offset}", self._zero_text(seen[-1]), self._zero_text(f.zero),
+                            self.t.work_offsets[f.work_offset])
             return
         if f.zero not in seen:
             seen.append(f.zero)
         if f.tool_length:
             tool = self._tool if self.t.edge_of_tool else 0
-            lengths = self.setup.tools.setdefault((tool, self._tool_number), [])
-            if f.tool_length not in lengths:
-                lengths.append(f.tool_length)
+            form = self.t.tool_length_minus if f.tool_subtracted else self.t.tool_length_on
+            if form is None:  # refused where it was selected (no G44 on the target)
+                return
+            call = form.format(n=self._tool_number)
+            lengths = self.setup.tools.setdefault((tool, self._tool_number, form), [])
+            length = -f.tool_length if f.tool_subtracted else f.tool_length  # G44: the length as measured
+            if lengths and length not in lengths:
+                self._rewritten(f"the tool length of {call}", f"{number(lengths[-1])} mm", f"{number(length)} mm",
+                                f"{call} of {f'tool T{tool}' if tool else 'the tool table'}")
+                return
+            if length not in lengths:
+                lengths.append(length)
+
+    def _rewritten(self, what: str, before: str, now: str, entry: str) -> None:
+        """One rule for zero offsets and tool lengths: an entry of the new control holds one value, so a
+        program that rewrites one after moves under it is refused."""
+        self.refuse(self._frame_src, f"the program rewrites {what} after moves with it ({before} before, {now} "
+                                     f"now): {entry} of the new control holds one value (translate with "
+                                     "--frame machine)")
 
     def _zero_text(self, zero) -> str:
         return " ".join(f"{n}{number(v)}" for n, v in zip(self.names, zero) if n in self.t.axes)
@@ -336,6 +367,11 @@ class Translation(CanonSink):
             return
         prefix = self._machine_prefix(src)
         restore = None
+        if prefix and code == "G1" and self.t.machine_move_rapid:
+            self.refuse(src, f"a feed move in machine coordinates: {self.t.title}'s {self.t.machine_move} "
+                             "positions at rapid traverse whatever the motion mode (translate with --frame "
+                             "machine, or for another target)")
+            return
         if prefix and self.frame_now.tool_kept:
             self._tool_kept_move(code, start, end, feed, src)
             return
@@ -440,6 +476,9 @@ class Translation(CanonSink):
         if spec.turns and self.t.turns is None:
             self.refuse(src, f"a helix of {spec.turns + 1} turns: {self.t.title} has no word for full turns")
             return
+        if self._below_resolution(start, end, spec):
+            self._below_resolution_move(start, end, feed, src)
+            return
         if plane != self._plane:
             self._plane = plane
             self._line(plane, src)
@@ -449,6 +488,28 @@ class Translation(CanonSink):
         turns = self.t.turns.format(n=self._turns(spec.turns)) if spec.turns else ""
         self._line(f"{'G2' if cw else 'G3'} {self._axes(end, start, always=(a, b))} {CENTRE_WORDS[an]}{ci} {CENTRE_WORDS[bn]}{cj}"
                    f"{turns}{self._feed_word(feed)}", src)
+
+    def _below_resolution(self, start, end, spec) -> bool:
+        """The arc as written (end point and centre rounded to the written decimals) would sweep another
+        angle than the run's: an arc shorter than the resolution, whose rounded end is its rounded start
+        (a full circle on every G-code control) or lies behind it (almost a full turn)."""
+        a, b = spec.a, spec.b
+        ra, rb = self.removed[a], self.removed[b]
+        sa, sb = round(start[a] - ra, DECIMALS), round(start[b] - rb, DECIMALS)
+        ca = sa + round(spec.center[0] - start[a], DECIMALS)
+        cb = sb + round(spec.center[1] - start[b], DECIMALS)
+        written = arcs.sweep(sa, sb, round(end[a] - ra, DECIMALS), round(end[b] - rb, DECIMALS), ca, cb,
+                             spec.cw, spec.turns)
+        run = arcs.sweep(start[a], start[b], end[a], end[b], *spec.center, spec.cw, spec.turns)
+        return abs(written - run) > math.pi
+
+    def _below_resolution_move(self, start, end, feed, src) -> None:
+        """An arc below the output's resolution: the straight move to its rounded end point, or nothing
+        where no written position changes (docs/translate.md)."""
+        if all(round(e - r, DECIMALS) == round(s - r, DECIMALS) for s, e, r in zip(start, end, self.removed)):
+            self._programmed = None
+            return
+        self._line(f"G1 {self._axes(end, start)}{self._feed_word(feed)}", src)
 
     def _turns(self, extra: int) -> int:
         """LinuxCNC's P counts the turns begun (1 + the full ones), SINUMERIK's TURN the full ones."""
@@ -495,18 +556,46 @@ class Translation(CanonSink):
         self._flush_after()
         self._line(self.t.dwell.format(s=self.num(seconds)), src)
 
-    def tool_change(self, tool, src):
+    def _tool_word(self, text: str, src: Src) -> tuple | None:
+        """Write the T word ``text`` of block ``src`` before the tool length of its own block (the 840D's D
+        and the length of H belong to the tool the T names); that length, held back, is returned."""
         held = self._tool_pending if self._tool_pending is not None and self._tool_pending[1] == src else None
         self._tool_pending = None if held else self._tool_pending
         self._flush_after()
+        self._line(text, src)
+        return held
+
+    def tool_select(self, tool, src):
+        """A T word without M6, written as programmed; on the 840D, whose T selects the tool its D is an
+        edge of, it names the tool the header lists the edge under until an M6 loads one."""
+        if self.t.edge_of_tool and not self._tool:
+            self._tool = tool
+            self._frame_unrecorded = True
+        held = self._tool_word(f"T{tool}", src)
+        if held is not None:
+            self._tool_pending = held
+            self._tool_length()
+
+    def tool_change(self, tool, src):
+        held = self._tool_word(f"T{tool} M6", src)
         self._tool = tool
         self._frame_unrecorded = True  # the header names the length for the new tool too (an 840D D is its edge)
-        self._line(f"T{tool} M6", src)
         if held is not None:  # the block's own tool length: for the tool just loaded
             self._tool_pending = held
             self._tool_length()
+        elif self.t.edge_of_tool:  # the 840D activates the new tool's default edge: the D the run used
+            self._edge_after_change(src)
         if self._turning is not None:  # M6 stops the spindle on the new control; it turned on in the run
-            self._line(self._turning, src)
+            self._restart = (self._turning, src)  # written before what follows, unless the program restarts it
+
+    def _edge_after_change(self, src: Src) -> None:
+        """After an 840D tool change: the tool length in force as an edge of the new tool, D0 where none is
+        (or under --frame machine, whose positions hold every length already)."""
+        if self.work and self._tool_written[1] and self._tool_frame is not None:
+            self._tool_pending = (self._tool_frame, src)
+            self._tool_length()
+        else:
+            self._line(self.t.tool_length_off, src)
 
     def _speed(self, speed: float, src: Src) -> str:
         """The S word's value: a target of integer S (ISO) gets it rounded, with a comment where it changed."""
@@ -516,6 +605,7 @@ class Translation(CanonSink):
         return str(round(speed))
 
     def spindle(self, speed, direction, src):
+        self._restart = None  # the program's own spindle word after a tool change: written once
         if direction == 0:
             self._turning = None
             if src == self._moved_in:  # a stop between the moves of one block (a boring cycle): here
@@ -525,8 +615,12 @@ class Translation(CanonSink):
                 self._after.append(("M5", src))
             return
         self._flush_after()
-        self._turning = f"{'M3' if direction > 0 else 'M4'} S{self._speed(speed, src)}"
-        self._line(self._turning, src)
+        turning = f"{'M3' if direction > 0 else 'M4'} S{self._speed(speed, src)}"
+        if turning == self._turning and self.lines == self._turning_line:
+            return  # the run says it again (its S word, then its M3): written once
+        self._turning = turning
+        self._line(turning, src)
+        self._turning_line = self.lines
 
     def coolant(self, mode, src):
         if mode == "off":
@@ -555,6 +649,7 @@ class Translation(CanonSink):
 
     def finish_moves(self) -> None:
         """The run ended normally: the last M5/M9 out (a probe move with no move after it is refused)."""
+        self._restart = None  # no spindle restart after the last tool change: nothing moves any more
         self._flush_after()
         if self._unsaid is not None:
             self._line("")  # the refusal of an input no scenario gave, at the end of the program too
@@ -577,8 +672,8 @@ class Translation(CanonSink):
                 values = " then ".join(" ".join(f"{n}{number(v)}" for n, v in zip(self.names, zero) if n in t.axes)
                                        for zero in zeros)
                 out.append(note(f"zero offset {name} -> {t.work_offsets[name]}: simulated as {values} ({machine})"))
-            for (tool, n), lengths in sorted(s.tools.items()):
-                out.append(note(f"{f'tool T{tool} edge ' if tool else 'tool offset '}{t.tool_length_on.format(n=n)}: length "
+            for (tool, n, form), lengths in sorted(s.tools.items()):
+                out.append(note(f"{f'tool T{tool} edge ' if tool else 'tool offset '}{form.format(n=n)}: length "
                                 f"{' then '.join(number(v) for v in lengths)} mm in the simulation"))
             if not s.tools:
                 out.append(note("no tool length compensation was used"))

@@ -517,7 +517,7 @@ class UnitCodegen:
 
     def _write(self, at: "_Site") -> str:
         args = ", ".join(self.val(o) for o in at.it.operands)
-        return f"_rt.write({at.it.code!r}, ({args}{',' if args else ''}))"
+        return f"_rt.write({at.it.code!r}, ({args}{',' if args else ''}), {at.blk.line})"
 
     def lower_setpoint(self, at: "_Site") -> bool:
         at.rec.setpoint(at.out, at.it.code, at.it.operands)
@@ -754,7 +754,7 @@ class _Record:
             self.angle = True
             self.words.append(("_rt.angle_key()", tmp, False))
         else:
-            out.emit(f"_rt.write({code!r}, ({', '.join(cg.val(o) for o in ops)},))", line)
+            out.emit(f"_rt.write({code!r}, ({', '.join(cg.val(o) for o in ops)},), {line})", line)
 
     def _emit_int_sec(self, out: PySource, g: list, words: list) -> None:
         line = self.blk.line

@@ -160,4 +160,4 @@ class Offsets:
         p[i] = value if code == "420" else p[i] + value
         self.data.dirty.add("to")
         if self.tool_d and _i(where[1]) == self.tool_d:
-            self.select_d(self.tool_d, 0)
+            self.select_d(self.tool_d, self.channel.write_line)

@@ -12,6 +12,7 @@ from __future__ import annotations
 import math
 import re
 import sys
+from functools import partial
 from operator import attrgetter
 
 from ...diagnostics import Frame, RuntimeFault, Span, UsageError
@@ -27,7 +28,7 @@ from ...machine.scenario import (
     refuse,
 )
 from ...nc.block import Block
-from ...nc.canon import CanonSink, Src
+from ...nc.canon import NOBODY, CanonSink, Src
 from ...nc.kernel import INCH
 from ...nc.planner import STOP_END
 from ...nc.profiles.sinumerik8xx import SINUMERIK8XX
@@ -109,6 +110,13 @@ SINUMERIK_PATH_CODES = {9: "block", 60: "exact", 64: "continuous"}
 SINUMERIK_EVENTS = (ExternalInput, PlcChange, PlcTimer, PlcCounter, Alarm, ProbeSwitch)
 
 
+
+def _told_linear(linear, k, motion: int, words: dict, src) -> None:
+    """The generated G0/G1 fast path under a translation: the canon first hears the block's axis words
+    (``programmed``, as the kernel's block path says them), so that an axis standing where it is is written."""
+    k.canon.programmed(tuple(a for a in words if a in k.axis_of), src)
+    linear(k, motion, words, src)
+
 class PlcAnswers(CanonSink):
     """The PLC's answer to an M function it is handed (canon ``aux``), after the sinks have recorded it."""
 
@@ -141,6 +149,7 @@ class Channel:
         # decode-ahead (ncvm's reading; the CL 800 manual is silent): 0 = lockstep; N = up to N decoded blocks wait for execution
         self.decode_ahead = sec.decode_ahead
         self.strict = sec.strict_nc  # R stores rounded to 8 digits (ncvm's reading; the CL 800 manual is silent)
+        self.write_line = 0  # the block of the @ write running now (write)
         self.buffer = BlockBuffer(self.decode_ahead, self.execute)  # route() keeps its step on the current path
         self.pending_r: dict[int, float] = {}  # PLC answers and measured values not yet seen by decoding
         self.R = [0.0] * 1000
@@ -226,6 +235,8 @@ class Channel:
         if self.rounding.used:  # the corner rounding sees every block first
             self.rounding.inner, self.rounding.inner_linear = self.execute_now, self.linear
             self.execute_now, self.linear = self.rounding.execute, self.rounding.linear
+        if k.canon.programmed is not NOBODY:  # a translation writes the block's axis words, not only those that move
+            self.linear = partial(_told_linear, self.linear)
         self.execute = self.decode_into_buffer if self.decode_ahead > 0 else self.execute_now
         self.buffer.execute = self.execute_now
 
@@ -318,8 +329,10 @@ class Channel:
         fix = nc8 if self.strict else held
         self.R[first:first + len(values)] = [fix(v) for v in values]
 
-    def write(self, code: str, args: tuple) -> None:
-        """A write, the value last."""
+    def write(self, code: str, args: tuple, line: int = 0) -> None:
+        """A write, the value last; ``line``: the block that writes (:attr:`write_line`, the source of what
+        the write changes, e.g. the active tool length)."""
+        self.write_line = line
         if AT_CODES[code].lower != "write_rotation":
             # data written by decoding serves the blocks decoded after it; rotation angles act at once,
             # even on blocks already decoded (L4325-4334)

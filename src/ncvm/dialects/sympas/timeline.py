@@ -56,17 +56,27 @@ class Timeline:
                 # a horizon held back (a move held by TROVR = 0) must not make every add a report
                 self.hold = max(HOLD, 2 * len(self.pending))
 
-    def direct(self, start, end, feed: float, src, t1: float, length: float) -> None:
-        """A straight move of idle axes while no other move runs (the fast path of MLAW/MLRW)."""
+    def direct(self, start, end, feed: float, src, t1: float, length: float, items=()) -> None:
+        """A straight move of idle axes while no other move runs (the fast path of MLAW/MLRW); ``items``: the
+        (axis, value) pairs it programs."""
         if self.pending:
             self.report(math.inf)
         self._channel(src)
         if self.canon.frame is not NOBODY:
             self._frame(self.card.work_shift(), src)
+        if self.canon.programmed is not NOBODY:  # a translation: nothing per move otherwise
+            self._programmed([ax for ax, _ in items], src)
         self.canon.feed(start, end, feed, src)
         self.profile_length += length
         self.last_end = self.t = t1  # every axis was idle: nothing ends later
         self.rest = end  # the state of all axes now (made the list ``pos`` when a report needs it)
+
+    def _programmed(self, axes, src) -> None:
+        """Tell a translation the axes a straight move programs: each is written, also one that stands where
+        it is (MLAW with A2 := 0 where A2 stands at 0)."""
+        if self.canon.programmed is not NOBODY:
+            names = self.card.session.machine.axes  # the canon's axis names
+            self.canon.programmed(tuple(names[ax].name for ax in axes), src)
 
     # -- reporting ----------------------------------------------------------------------------------
     def report(self, horizon: float) -> None:
@@ -138,6 +148,7 @@ class Timeline:
             canon.rapid(start, end, m.src)
             return
         if m.kind == "line":
+            self._programmed(m.axes, m.src)
             canon.feed(start, end, m.feed, m.src)
             return
         L = m.prof.length

@@ -95,7 +95,7 @@ def tool_length(k, g, words, src):
     the block is refused before, as rs274 refuses it: nc/profiles/blockrules.py)."""
     number = int(words.get("H", k.tool))
     length = k._tool(number, src).length if number else 0.0
-    k.set_tool_length(length if g == 43 else -length, src)
+    k.set_tool_length(length if g == 43 else -length, src, number, subtracted=g == 44)
 
 
 def tool_length_off(k, g, words, src):

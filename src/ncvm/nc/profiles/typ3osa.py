@@ -88,7 +88,7 @@ def length_comp(k, value, words, src):
     n = int(value)
     k.modal["H"] = n
     source = k.length_compensation or machine_tools
-    k.set_tool_length(source(k, k.modal.get("G22", 4), n, src) if n else 0.0, src)
+    k.set_tool_length(source(k, k.modal.get("G22", 4), n, src) if n else 0.0, src, n)
 
 
 def machine_tools(k, table: int, group: int, src) -> float:

@@ -64,7 +64,7 @@ def fast_line(card, tk, items, loc, relative: bool) -> bool:
         if a.flags:
             a.flags &= ~card.refused_mask
     tk.time = end_t
-    card.timeline.direct(start, tuple(pos), v * 60.0, source_of(tk, loc), end_t, length)
+    card.timeline.direct(start, tuple(pos), v * 60.0, source_of(tk, loc), end_t, length, items)
     return True
 
 
