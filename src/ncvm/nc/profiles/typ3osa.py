@@ -125,6 +125,22 @@ def length_comp(k, value, words, src):
     k.set_tool_length((source(k, table, n, src) if n else 0.0) + k.modal.get(EXTERNAL_LENGTH, 0.0), src)
 
 
+def literal_fault(g, words: dict, axes, complete: bool) -> tuple | None:
+    """``ncvm check``: (code, message, address, value) of what the run refuses in a block from its text alone,
+    by the handlers' own rules (G20's axes, G22's K, H's group), or None. ``words``: address -> value of the
+    block's words, None for a computed one; ``complete``: every address of the block is written (no
+    standalone [expr] word). The table an H reads is the run's to know (a G22 K may be computed)."""
+    if 20 in g and complete and (fault := g20_fault([a for a in words if a in axes])) is not None:
+        return (*fault, "G", 20)
+    k = words.get("K")
+    if 22 in g and (k is not None or (complete and "K" not in words)) and (fault := table_fault(k)) is not None:
+        return ("NC009", fault, "G", 22)
+    h = words.get("H")
+    if h is not None and (fault := length_fault(h, 4)) is not None:
+        return ("NC009", fault, "H", h)
+    return None
+
+
 def machine_tools(k, table: int, group: int, src) -> float:
     """The length of compensation group ``group`` of table K<table> when the dialect keeps no tables: K4 is
     the machine's tool table, another table has no values."""
