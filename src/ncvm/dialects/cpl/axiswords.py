@@ -16,6 +16,7 @@ from ...nc.block import row_line
 from ...nc.profiles.blockrules import dwell_time, g_conflict
 from ...nc.profiles.check import g_column, refused_g_warnings
 from ...nc.profiles.typ3osa import TYP3OSA, literal_fault
+from ...nc.toolcheck import tool_change_warnings
 from . import ast as A
 from .errors import CplError, diag
 
@@ -101,6 +102,18 @@ def _block_diagnostic(found: tuple, path: str, s: A.NcBlock, column: int) -> Dia
     if found[0] == "NC004":
         return Diagnostic("NC004", f"{found[1]}: the run stops here", Span(path, s.line, column), severity="warning")
     return diag(found[0], found[1], path, s.line, column, s.cpl)
+
+
+def tool_diagnostics(prog: A.Program, tools, lines: list[str] | None) -> list[Diagnostic]:
+    """``ncvm check``: NC008 where a literal T word selects a tool the machine file lacks and M6 changes to
+    it (nc/toolcheck.py, the kernel's rule; a warning: TC may write table K4, the machine's tools, first)."""
+    blocks = []
+    for s in prog.stmts:
+        if isinstance(s, A.NcBlock):
+            t = next((w.value for w in s.words if w.address == "T"), None)
+            m6 = any(w.address == "M" and w.value == 6 for w in s.words)
+            blocks.append((s.line, _column(lines, s, "T"), t, m6))
+    return tool_change_warnings(prog.path, blocks, tools)
 
 
 def refused_blocks(prog: A.Program, axes) -> dict[int, tuple[str, int]]:

@@ -19,7 +19,7 @@ from ...nc.canon import Src
 from ...runtime.codegen import PySource
 from ...source import read_text
 from ..base import Dialect
-from .codegen import UnitCodegen, axis_diagnostics, refused_g_diagnostics
+from .codegen import UnitCodegen, axis_diagnostics, refused_g_diagnostics, tool_diagnostics
 from .drilling import missing_cycle_warnings
 from .lint import stop_dec_lint
 from .ncdata import NAMESPACE, NcData
@@ -109,7 +109,7 @@ class Sin800Dialect(Dialect):
         # the lint (§10.5) and what the run will refuse are warnings
         cycles = missing_cycle_warnings(prog, SubProgramLibrary(machine).find)
         return (axis_diagnostics(prog, machine.axis_names, radius) + refused_g_diagnostics(prog) + cycles
-                + stop_dec_lint(prog))
+                + stop_dec_lint(prog) + tool_diagnostics(prog, machine.tools))
 
     def run(self, path, text, session):
         """Run a main program or @ code object text (``%SPF<n>`` / ``%MPF<n>``)."""
