@@ -39,6 +39,7 @@ from .fastmove import make_linear
 from .planner import LOOKAHEAD, POSITIONING, STOP_END, Planner, arc_tangents
 from .profiles import AFTER_TOOL_CHANGE, CYCLE, DWELL, LATE, MACHINE, MOTION, POSITION, SET, Profile, unknown_g
 from .profiles import INCH as INCH  # the unit of G70, read by the dialects
+from .toolcheck import missing_tool
 
 #: plane G number -> (first axis, second axis, normal axis, first centre word, second centre word)
 PLANES = {17: ("X", "Y", "Z", "I", "J"), 18: ("Z", "X", "Y", "K", "I"), 19: ("Y", "Z", "X", "J", "K")}
@@ -542,8 +543,9 @@ class NcKernel:
     def _m_before(self, mc: int, src: Src) -> None:
         canon = self.canon
         if mc == 6:
-            if self.next_tool and self.next_tool not in self.machine.tools:
-                self.fault("NC008", f"tool {self.next_tool} is not in the tool table", src)
+            fault = missing_tool(self.next_tool, self.machine.tools)
+            if fault is not None:
+                self.fault("NC008", fault, src)
             self.tool = self.next_tool
             canon.tool_change(self.tool, src)
             self.machine.clock.advance(self.tool_change_time)

@@ -54,12 +54,12 @@ def test_axis_potentiometers_50(run):
 
 
 def test_external_and_general_compensation_51_54(run):
-    text = ("1 TC(1,245,0)=12.5\n2 TC(2,245,0)=4\n3 TC(1,347,0)=30\n4 TC(2,347,0)=6\n5 TC(3,347,0)=7\n"
+    text = ("1 TC(1,245,0)=12.5\n2 TC(2,245,0)=4\n3 TC(1,347,0)=30\n4 TC(2,347,0)=6\n"
             "N6 G245 G347\n7 WAIT\n8 DIM X(2):V=0:E%=MCODS(51,1,V,X,2)\n9 DIM G(6):V=0:E%=MCODS(54,1,V,G,6)\n"
             "N10 G146\n11 WAIT\n12 DIM Y(2):V=0:E%=MCODS(51,1,V,Y,2)\nM30\n")
     v = run(text)["variables"]
     assert v["X"][1:] == [4.0, 12.5]  # radius, length (TC 1 = L3, 2 = R)
-    assert v["G"][1:] == [6.0, 30.0, 7.0, 0.0, 0.0, 0.0]  # R, L3, L1, L2, TO, type
+    assert v["G"][1:] == [6.0, 30.0, 0.0, 0.0, 0.0, 0.0]  # R, L3, L1, L2, TO, type (an L1 is NC005)
     assert v["Y"][1:] == [0.0, 0.0]  # G146 deselected it
 
 

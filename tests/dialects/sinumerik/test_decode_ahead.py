@@ -78,6 +78,7 @@ def test_lint_warns_for_actual_value_read_after_motion(tmp_path):
 
 
 def test_lint_input_read_and_sub_program_call(tmp_path):
+    (tmp_path / "L5.spf").write_text("%SPF5\nN10 G0 X0\nN20 M17\n")  # a missing one is RUN002 at its call
     diags = _lint(tmp_path, "%MPF1\nL5\nN10 @187 K1 K2 K10\n")
     assert [(d.code, d.span.line) for d in diags] == [("SIN010", 3)]
     assert "IF INT" in diags[0].message

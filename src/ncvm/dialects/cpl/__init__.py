@@ -12,7 +12,7 @@ import re
 from ...diagnostics import CompileFailed, read_lines
 from ...source import lines as program_lines
 from ..base import Dialect
-from .axiswords import axis_diagnostics, block_rule_diagnostics, refused_diagnostics
+from .axiswords import axis_diagnostics, block_rule_diagnostics, refused_diagnostics, tool_diagnostics
 from .checker import check
 from .codegen import generate
 from .lexer import ETX
@@ -63,6 +63,7 @@ class CplDialect(Dialect):
             diags += axis_diagnostics(ln.prog, machine.axis_names, lines)
             diags += refused_diagnostics(ln.prog, machine.axis_names, lines)
             diags += block_rule_diagnostics(ln.prog, machine.axis_names, lines)
+            diags += tool_diagnostics(ln.prog, machine.tools, lines)
         return diags + din_call_warnings(res, machine)
 
     def run(self, path, text, session):

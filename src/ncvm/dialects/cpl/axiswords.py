@@ -15,7 +15,8 @@ from ...nc.axiswords import AXIS_LETTERS, is_dwell, is_missing_axis, names_axis
 from ...nc.block import row_line
 from ...nc.profiles.blockrules import dwell_time, g_conflict
 from ...nc.profiles.check import g_column, refused_g_warnings
-from ...nc.profiles.typ3osa import TYP3OSA
+from ...nc.profiles.typ3osa import TYP3OSA, literal_fault
+from ...nc.toolcheck import tool_change_warnings
 from . import ast as A
 from .errors import CplError, diag
 
@@ -80,15 +81,39 @@ def block_rule_diagnostics(prog: A.Program, axes, lines: list[str] | None) -> li
         if not isinstance(s, A.NcBlock):
             continue
         g = [w.value for w in s.words if w.address == "G" and w.value is not None]
-        if not g:
+        if not g and not any(w.address == "H" for w in s.words):
             continue
         text = lines[s.line - 1] if lines and s.line <= len(lines) else ""
         both = g_conflict(TYP3OSA, g)
         words = {w.address: (w.value if w.value is not None else 0.0) for w in s.words if w.address not in "GM"}
-        found = ("CPL040", both[0], "G", both[1]) if both else dwell_time(TYP3OSA, g, words, axes)
+        found = ("CPL040", both[0], "G", both[1]) if both else dwell_time(TYP3OSA, g, words, axes) if g else None
+        if found is None:
+            literal = {w.address: w.value for w in s.words if w.address not in "GM"}
+            found = literal_fault(g, literal, axes, not s.loose)
         if found is not None:
-            out.append(diag(found[0], found[1], prog.path, s.line, g_column(text, found[3]) or s.col or 1, s.cpl))
+            column = g_column(text, found[3]) if found[2] == "G" else _word_column(text, found[2])
+            out.append(_block_diagnostic(found, prog.path, s, column or s.col or 1))
     return out
+
+
+def _block_diagnostic(found: tuple, path: str, s: A.NcBlock, column: int) -> Diagnostic:
+    """A refused block's diagnostic: "not supported by ncvm" (NC004) is a warning of its own category, as
+    nc/profiles/check.py gives it; the control's errors are errors."""
+    if found[0] == "NC004":
+        return Diagnostic("NC004", f"{found[1]}: the run stops here", Span(path, s.line, column), severity="warning")
+    return diag(found[0], found[1], path, s.line, column, s.cpl)
+
+
+def tool_diagnostics(prog: A.Program, tools, lines: list[str] | None) -> list[Diagnostic]:
+    """``ncvm check``: NC008 where a literal T word selects a tool the machine file lacks and M6 changes to
+    it (nc/toolcheck.py, the kernel's rule; a warning: TC may write table K4, the machine's tools, first)."""
+    blocks = []
+    for s in prog.stmts:
+        if isinstance(s, A.NcBlock):
+            t = next((w.value for w in s.words if w.address == "T"), None)
+            m6 = any(w.address == "M" and w.value == 6 for w in s.words)
+            blocks.append((s.line, _column(lines, s, "T"), t, m6))
+    return tool_change_warnings(prog.path, blocks, tools)
 
 
 def refused_blocks(prog: A.Program, axes) -> dict[int, tuple[str, int]]:

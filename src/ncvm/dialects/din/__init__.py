@@ -23,7 +23,7 @@ from ...source import open_program
 from ..base import Dialect
 from .ngc import fold_extensions
 from .options import arc_tolerance, options
-from .support import address_refusal, block_error, block_errors, refused_address, unsupported
+from .support import address_refusal, block_error, block_errors, refused_address, tool_warnings, unsupported
 
 #: a run holds a program of up to this many characters (about 250,000 lines of CAM output) as it reads it; a
 #: longer one is read a second time, from its file, as it runs
@@ -61,6 +61,7 @@ class DinDialect(Dialect):
         profile = PROFILES[options(machine).profile]
         diags += unsupported(path, segments, lines, machine.axis_names, profile)
         diags += block_errors(path, segments, lines, machine.axis_names, profile)
+        diags += tool_warnings(path, segments, lines, machine.tools)
         return sorted(diags, key=lambda d: (d.span.line, d.span.column or 0))
 
     def run(self, path, text, session):

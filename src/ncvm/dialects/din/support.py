@@ -19,6 +19,7 @@ from ...nc.profiles import Profile
 from ...nc.profiles.blockrules import block_refusal
 from ...nc.profiles.check import g_column, refused_g_warnings
 from ...nc.profiles.iso import ISO
+from ...nc.toolcheck import tool_change_warnings
 
 #: the G functions the profile runs (its rows, nc/profiles/iso.py)
 G_FUNCTIONS = frozenset(g for g, row in ISO.by_g.items() if not row.code)
@@ -103,6 +104,20 @@ def unsupported(path: str, segments: list, lines: list[str], axes, profile: Prof
             d.severity, d.message = "warning", d.message + f": the run stops here{more}"
         out.append(d)
     return out + refused_g_warnings(profile, path, uses, dialect_runs=False) if uses else out
+
+
+def tool_warnings(path: str, segments: list, lines: list[str], tools) -> list[Diagnostic]:
+    """``ncvm check``: NC008 where a T word selects a tool the machine lacks and M6 changes to it
+    (nc/toolcheck.py, the kernel's rule)."""
+    blocks = []
+    for seg in segments:
+        if isinstance(seg, PlainRun):
+            continue  # no T, no M
+        blk = seg[0]
+        t = blk.words.get("T")
+        text = lines[blk.src.line - 1] if blk.src.line <= len(lines) else ""
+        blocks.append((blk.src.line, _column(text, "T", t) if t is not None else None, t, 6 in blk.m))
+    return tool_change_warnings(path, blocks, tools)
 
 
 def _column(text: str, letter: str, value) -> int | None:

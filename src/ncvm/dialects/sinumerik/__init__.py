@@ -13,18 +13,19 @@ import re
 from dataclasses import dataclass
 from pathlib import Path
 
-from ...diagnostics import CompileFailed
+from ...diagnostics import CompileFailed, Diagnostic, Span
 from ...machine.files import heads
 from ...nc.canon import Src
 from ...runtime.codegen import PySource
 from ...source import read_text
 from ..base import Dialect
-from .codegen import UnitCodegen, axis_diagnostics, refused_g_diagnostics
+from .codegen import UnitCodegen, axis_diagnostics, refused_g_diagnostics, tool_diagnostics
 from .drilling import missing_cycle_warnings
 from .lint import stop_dec_lint
 from .ncdata import NAMESPACE, NcData
 from .options import options
-from .reader import PartProgram, read_program
+from .reader import PartProgram, Word, read_program
+from .rounding import rounding_diagnostics
 from .runtime import NAMESPACE_GLOBALS, Channel
 from .v24 import PROGRAM_SUFFIXES
 
@@ -55,6 +56,12 @@ def compile_unit(path: str, text: str, axis_names: tuple[str, ...], name: str, d
     namespace.update(consts)
     exec(source.compile(), namespace)
     return Unit(path, prog, source, namespace["_unit"], frozenset(gen.written))
+
+
+def sub_program_calls(prog: PartProgram) -> list[tuple[int, int, int]]:
+    """(number, line, column) of each literal ``L<n>`` call of a program (an ``L=R..`` call is the run's)."""
+    return [(int(it.value), blk.line, it.col) for blk in prog.blocks for it in blk.items
+            if isinstance(it, Word) and it.address == "L" and it.value is not None]
 
 
 class SubProgramLibrary:
@@ -102,14 +109,35 @@ class Sin800Dialect(Dialect):
         return 70 if _AT.search(text) else 0
 
     def check(self, path, text, machine, all_errors=False):
-        prog, diags = read_program(path, text)
-        if diags:
-            return diags if all_errors else diags[:1]
+        """Every program the run enters by a literal ``L<n>`` is checked too (as the CPL check follows CALL); a
+        sub-program the run does not find is warned RUN002 at its call, as a missing drilling cycle L81 is."""
+        library = SubProgramLibrary(machine)
+        todo, seen, out = [(path, text)], {str(path)}, []
+        while todo:
+            at, body = todo.pop(0)
+            prog, diags = read_program(at, body)
+            if diags:
+                out += diags if all_errors else diags[:1]
+                continue
+            out += self._check_program(prog, machine, library)
+            for number, line, column in sub_program_calls(prog):
+                found = library.find(number)
+                if found is None:
+                    out.append(Diagnostic("RUN002", f"sub-program L{number} not found (looked for L{number}.spf and "
+                                          f"%SPF{number} files along the program path): the run stops here",
+                                          Span(prog.path, line, column), severity="warning"))
+                elif str(found) not in seen:
+                    seen.add(str(found))
+                    todo.append((str(found), read_text(found)))
+        return out
+
+    @staticmethod
+    def _check_program(prog: PartProgram, machine, library) -> list:
         radius = options(machine).radius_address
         # the lint (§10.5) and what the run will refuse are warnings
-        cycles = missing_cycle_warnings(prog, SubProgramLibrary(machine).find)
+        cycles = missing_cycle_warnings(prog, library.find)
         return (axis_diagnostics(prog, machine.axis_names, radius) + refused_g_diagnostics(prog) + cycles
-                + stop_dec_lint(prog))
+                + stop_dec_lint(prog) + tool_diagnostics(prog, machine.tools) + rounding_diagnostics(prog, radius, machine.axis_names))
 
     def run(self, path, text, session):
         """Run a main program or @ code object text (``%SPF<n>`` / ``%MPF<n>``)."""

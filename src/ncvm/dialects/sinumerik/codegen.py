@@ -22,6 +22,7 @@ from ...nc.canon import Src
 from ...nc.profiles.blockrules import dwell_time
 from ...nc.profiles.check import refused_g_warnings
 from ...nc.profiles.sinumerik8xx import SINUMERIK8XX
+from ...nc.toolcheck import tool_change_warnings
 from ...runtime.codegen import PySource
 from .atcodes import AT_CODES, AtCode
 from .finite import may_underflow, stays_in_range
@@ -79,6 +80,17 @@ def refused_g_diagnostics(prog: PartProgram) -> list[Diagnostic]:
     """``ncvm check``: warnings for the G functions the SINUMERIK 810-880 profile refuses (nc/profiles/check.py)."""
     return refused_g_warnings(SINUMERIK8XX, prog.path, [(it.value, blk.line, it.col) for blk in prog.blocks
                                                          for it in blk.items if g_word(it)])
+
+
+def tool_diagnostics(prog: PartProgram, tools) -> list[Diagnostic]:
+    """``ncvm check``: NC008 where a literal T word selects a tool the machine file lacks and M6 changes to
+    it (nc/toolcheck.py, the kernel's rule)."""
+    blocks = []
+    for blk in prog.blocks:
+        t = next((it for it in blk.items if isinstance(it, Word) and it.address == "T"), None)
+        m6 = any(isinstance(it, Word) and it.address == "M" and it.value == 6 for it in blk.items)
+        blocks.append((blk.line, t.col if t else None, t.value if t else None, m6))
+    return tool_change_warnings(prog.path, blocks, tools)
 
 
 def g_word(it) -> bool:

@@ -17,14 +17,20 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from ...diagnostics import RuntimeFault, Span
+from ...diagnostics import Diagnostic, RuntimeFault, Span
 from ...nc.block import Block
 from ...nc.kernel import PLANES
 from .contour import corner_arc
 from .errors import Cl800Error
+from .reader import Word
 
 if TYPE_CHECKING:
     from .runtime import Channel
+
+#: why a rounding cannot be made, as the run and the check say it
+NOT_STRAIGHT = "the next block {} is not a straight move at feed (G1)"
+OFF_PLANE = "a rounding between moves that leave the plane is not supported by ncvm"
+_MOTION = (0, 1, 2, 3, 33, 34, 35)
 
 #: G functions a block that takes part in a rounding may carry besides G1
 _QUIET_G = frozenset((1, 90, 91, 94, 95, 60, 64))
@@ -67,7 +73,7 @@ class CornerRounding:
         """The motion of group 0 the block runs with (``before``: the mode it starts in, else the kernel's)."""
         motion = self.channel.kernel.motion if before is None else before
         for g in block.g:
-            if g in (0, 1, 2, 3, 33, 34, 35):
+            if g in _MOTION:
                 motion = g
         return motion
 
@@ -83,7 +89,7 @@ class CornerRounding:
         held, self.held = self.held, None
         k = self.channel.kernel
         if self._motion(nxt, self._motion(held)) != 1:
-            self._refuse(held, f"the next block {self._name(nxt)} is not a straight move at feed (G1)")
+            self._refuse(held, NOT_STRAIGHT.format(self._name(nxt)))
         self._check_quiet(held, nxt)
         if not any(w in k.axis_of for w in nxt.words):  # M8, F500 ...: not the second line of the corner
             self._refuse(held, f"block {self._name(nxt)} between the two lines does not move (a rounding joins "
@@ -101,7 +107,7 @@ class CornerRounding:
         end, after_next_absolute = list(shadow.prog), shadow.absolute
         if any(i not in (a, b) and (abs(corner[i] - start[i]) > 1e-9 or abs(end[i] - corner[i]) > 1e-9)
                for i in range(k.n_axes)):
-            self._refuse(held, "a rounding between moves that leave the plane is not supported by ncvm")
+            self._refuse(held, OFF_PLANE)
         try:
             arc = corner_arc((start[b], start[a]), (corner[b], corner[a]), (end[b], end[a]), held.words["R"] * k.scale,
                               self.channel.radius_address)
@@ -138,3 +144,33 @@ class CornerRounding:
         src = held.src
         raise RuntimeFault("NC009", f"{radius}{held.words['R'] / self.channel.kernel.scale:g} rounds the corner to the "
                                     f"next straight block: {why}", Span(src.file, src.line) if src else None)
+
+
+def rounding_diagnostics(prog, radius: str, axes) -> list[Diagnostic]:
+    """``ncvm check``: NC009 at a G1 block with the radius word whose rounding the run cannot make, read from
+    the text in the order it is written: the next block is no G1 move, or one of the two writes an axis off
+    the plane (G17 at the start, as the run's). ``radius``: the radius address (not when it is an axis)."""
+    if radius in axes:
+        return []
+    out = []
+    motion, plane, held = 0, 17, None  # held: (block, its radius word)
+    for blk in prog.blocks:
+        words = [it for it in blk.items if isinstance(it, Word) and (it.value is not None or it.rref is not None)]
+        g = [w.value for w in words if w.address == "G" and w.value is not None]
+        named = [w.address for w in words if w.address in axes]
+        if not g and not named and not any(w.address == radius for w in words):
+            continue
+        motion = next((x for x in reversed(g) if x in _MOTION), motion)
+        plane = next((x for x in reversed(g) if x in (17, 18, 19)), plane)
+        off = [a for a in named if a not in PLANES[plane][:2]]
+        if held is not None:
+            why = NOT_STRAIGHT.format(f"at line {blk.line}") if motion != 1 else OFF_PLANE if off or held[2] else None
+            if why is not None:
+                out.append(Diagnostic("NC009", f"{radius} rounds the corner to the next straight block: {why}: "
+                                      "the run stops here", Span(prog.path, held[0].line, held[1].col),
+                                      severity="warning"))
+            held = None
+        word = next((w for w in words if w.address == radius), None)
+        if word is not None and motion == 1:
+            held = (blk, word, bool(off))
+    return out

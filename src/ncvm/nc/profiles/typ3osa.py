@@ -47,19 +47,27 @@ def plane(k, g, words, src):
     k.modal.pop("10", None)
 
 
+def g20_fault(named: list) -> tuple[str, str] | None:
+    """(code, message) of why ``G20`` with the axis words ``named`` (in the block's order) cannot run, None
+    when it can; the run and the check ask the same."""
+    if len(named) != 2:
+        return "NC009", (f"G20 (plane switchover) names the main and the secondary axis with the pole's "
+                         f"coordinates, e.g. G20 X0 Y0; this block names {len(named)} axes")
+    if tuple(named) not in PLANE_OF_AXES:
+        return "NC004", (f"G20 (plane switchover) to main axis {named[0]} and secondary axis {named[1]} is not "
+                         "supported by ncvm (it runs the planes of G17 (X Y), G18 (Z X) and G19 (Y Z))")
+    return None
+
+
 def g20(k, g, words, src) -> bool:
     """G20: plane switchover to the two axes of the block, main axis first; their values are the pole
     (L2371-2375: ``N40 G20 [AXP(A%,E)] [AXP(B%,E)]`` "plane switchover with G20; pole at 0,0"). ncvm
     runs the planes of G17, G18 and G19 this way; the pole is kept (no function ncvm runs reads it)."""
     named = [name for name in words if name in k.axis_of]
-    if len(named) != 2:
-        k.fault("NC009", f"G20 (plane switchover) names the main and the secondary axis with the pole's "
-                f"coordinates, e.g. G20 X0 Y0; this block names {len(named)} axes", src)
-    number = PLANE_OF_AXES.get(tuple(named))
-    if number is None:
-        k.fault("NC004", f"G20 (plane switchover) to main axis {named[0]} and secondary axis {named[1]} is not "
-                "supported by ncvm (it runs the planes of G17 (X Y), G18 (Z X) and G19 (Y Z))", src)
-    k.plane = number
+    fault = g20_fault(named)
+    if fault is not None:
+        k.fault(*fault, src)
+    k.plane = PLANE_OF_AXES[tuple(named)]
     k.modal["10"] = 20
     k.modal["G20 pole"] = tuple(words[n] * k.scale for n in named)
     return True
@@ -70,25 +78,67 @@ def zero_shift_off(k, g, words, src):
     k.set_work_offset(None)
 
 
+def table_fault(n) -> str | None:
+    """Why ``G22 K<n>`` (``n`` None: no K word) cannot run (None: it can); the run and the check ask the same."""
+    if n is None or n not in COMP_TABLES:
+        return (f"G22 selects a tool compensation table with K4 or K5 (K0: none); "
+                f"{'no K word' if n is None else f'K{n:g}'} is not one")
+    return None
+
+
 def comp_table(k, g, words, src) -> bool:
     """G22 K<n>: the tool compensation table H and D read (K4, K5; K0 none), see docs/decisions.md."""
     n = words.get("K")
-    if n is None or n not in COMP_TABLES:
-        k.fault("NC009", f"G22 selects a tool compensation table with K4 or K5 (K0: none); "
-                f"{'no K word' if n is None else f'K{n:g}'} is not one", src)
+    fault = table_fault(n)
+    if fault is not None:
+        k.fault("NC009", fault, src)
     k.modal["G22"] = int(n)
     return True
 
 
+#: ``kernel.modal`` key of the length (mm) the selected external and general tool compensations add to H's
+#: on the tool axis (dialects/cpl/system/gfuncs.py sets it; docs/decisions.md "Typ3 external compensation")
+EXTERNAL_LENGTH = "external tool length"
+
+
+def length_fault(value, table: int) -> str | None:
+    """Why ``H<value>`` cannot run under ``G22 K<table>`` (None: it can); the run and the check ask the same."""
+    if value != int(value) or not 0 <= value <= 48:
+        return f"H{value:g}: the length compensation is a compensation group 1..48 (H0: off)"
+    if value and not table:
+        return (f"H{value:g}: no tool compensation table is selected (G22 K0, L1146): the length of "
+                f"compensation group {value:g} has no table to come from; select K4 or K5 with G22 first")
+    return None
+
+
 def length_comp(k, value, words, src):
     """H<n>: tool length compensation of compensation group n of the selected table (TC selection 1,
-    L1854; "Hx", L1573) on the tool axis (SD(10), L2231); H0 ends it."""
-    if value != int(value) or not 0 <= value <= 48:
-        k.fault("NC009", f"H{value:g}: the length compensation is a compensation group 1..48 (H0: off)", src)
+    L1854; "Hx", L1573) on the tool axis (SD(10), L2231); H0 ends it. The selected external and general
+    compensations (G145..G845, G147..G847) add to it (``EXTERNAL_LENGTH``)."""
+    table = k.modal.get("G22", 4)
+    fault = length_fault(value, table)
+    if fault is not None:
+        k.fault("NC009", fault, src)
     n = int(value)
     k.modal["H"] = n
     source = k.length_compensation or machine_tools
-    k.set_tool_length(source(k, k.modal.get("G22", 4), n, src) if n else 0.0, src, n)
+    k.set_tool_length((source(k, table, n, src) if n else 0.0) + k.modal.get(EXTERNAL_LENGTH, 0.0), src, n)
+
+
+def literal_fault(g, words: dict, axes, complete: bool) -> tuple | None:
+    """``ncvm check``: (code, message, address, value) of what the run refuses in a block from its text alone,
+    by the handlers' own rules (G20's axes, G22's K, H's group), or None. ``words``: address -> value of the
+    block's words, None for a computed one; ``complete``: every address of the block is written (no
+    standalone [expr] word). The table an H reads is the run's to know (a G22 K may be computed)."""
+    if 20 in g and complete and (fault := g20_fault([a for a in words if a in axes])) is not None:
+        return (*fault, "G", 20)
+    k = words.get("K")
+    if 22 in g and (k is not None or (complete and "K" not in words)) and (fault := table_fault(k)) is not None:
+        return ("NC009", fault, "G", 22)
+    h = words.get("H")
+    if h is not None and (fault := length_fault(h, 4)) is not None:
+        return ("NC009", fault, "H", h)
+    return None
 
 
 def machine_tools(k, table: int, group: int, src) -> float:

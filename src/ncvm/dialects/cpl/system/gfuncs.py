@@ -16,7 +16,10 @@ the manuals this project follows; the forms below are recorded in docs/decisions
   a logical axis number of the channel); ``G580 [<slave axes>]`` removes the couplings of the named
   slaves, or all.
 * ``G145``..``G845`` select an external, ``G147``..``G847`` a general tool compensation (values: TC with
-  table 0); ``G146`` deselects both. Stored only (ncvm does not move by them); MCODS 51/54 read them.
+  table 0); ``G146`` deselects both. MCODS 51/54 read them. Their lengths on the tool axis (external L(1)3,
+  general L(2)3) add to the H length from the block that selects them on, as a tool compensation (PPOS
+  removes them with H, L1572-1574); a general compensation with L(2)1, L(2)2, an orientation or Euler
+  angles stops the run with NC005 (not supported by ncvm), see :func:`compensation_length`.
 * ``M40``..``M44``, ``M48``: the spindle gear range (MCODS 64-67); the M function also goes to the PLC.
 * ``G160``, ``G260``, ``G360`` select the external zero shift of that number (FXC with table 0 writes its
   values, L1759-1773), ``G167`` deselects it (G group 30 of the SD(1) table, L2305): one is active at a
@@ -38,7 +41,7 @@ from dataclasses import dataclass, replace
 
 from ....nc.block import Block
 from ....nc.profiles.blockrules import g_conflict
-from ....nc.profiles.typ3osa import TYP3OSA
+from ....nc.profiles.typ3osa import EXTERNAL_LENGTH, TYP3OSA
 from ....nc.spindle import CPL_GEARS
 from ..errors import CplError
 from .context import SystemContext
@@ -181,8 +184,33 @@ def activate(rt: SystemContext, kernel, blk: Typ3Block) -> None:
     if kernel is rt.kernel:
         rt.ctl.g_active = blk.state
     kernel.set_additive_offset(additive(rt, kernel, blk.state))
+    length = compensation_length(rt.ctl, blk.state, kernel, blk.src)
+    held = kernel.modal.get(EXTERNAL_LENGTH, 0.0)
+    if length != held:
+        kernel.modal[EXTERNAL_LENGTH] = length
+        kernel.set_tool_length(kernel.tool_length - held + length, blk.src, kernel.modal.get("H", 0))
     if blk.has_nc():
         kernel.execute(blk)
+
+
+#: the fields of a general compensation (TC selection 3..8 but 6, the type) ncvm cannot apply
+GENERAL_UNSUPPORTED = {2: "L(2)1", 3: "L(2)2", 4: "the orientation TO", 6: "Euler angle 1", 7: "Euler angle 2"}
+
+
+def compensation_length(c, state: NcFuncs, kernel, src) -> float:
+    """The length (mm) the selected external (L(1)3, TC selection 1) and general (L(2)3) tool compensations
+    add on the tool axis. The radii wait for G41/G42 (refused in CPL); a general compensation that also
+    holds lengths across the tool axis, an orientation or Euler angles is refused (NC005): ncvm's tool
+    length acts on the tool axis alone (docs/decisions.md, "Typ3 external and general tool compensation")."""
+    length = c.tc_external.get(state.external, (0.0, 0.0))[0] if state.external else 0.0
+    if state.general:
+        values = c.tc_general.get(state.general, (0.0,) * 8)
+        held = [name for i, name in GENERAL_UNSUPPORTED.items() if values[i]]
+        if held:
+            kernel.fault("NC005", f"G{state.general} (general tool compensation) with {', '.join(held)} is not "
+                         "supported by ncvm: it applies a compensation's length L(2)3 on the tool axis only", src)
+        length += values[0]
+    return length
 
 
 def additive(rt: SystemContext, kernel, state: NcFuncs) -> list[float]:
