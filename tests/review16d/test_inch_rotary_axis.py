@@ -2,7 +2,7 @@
 coordinates)"; "feed and spindle words as programmed").
 
 In inch (CPL/SINUMERIK `G70`, DIN `G20`) the linear axes are in inches, the rotary axes stay in degrees (CPL
-manual L1329-1337 "rotary axes use degrees" (digest cpl.md, Units); L1975 "When working with rotary axes ...
+manual L1329-1337 "rotary axes use degrees"; L1975 "When working with rotary axes ...
 the unit is always in degrees"; rs274/LinuxCNC likewise). ncvm multiplies a rotary axis word by 25.4 in inch:
 `A90` is run and translated as `A2286` on every target, a rotary table turned six times and a quarter instead
 of a quarter turn, with the fixture swinging through the spindle.
