@@ -68,6 +68,7 @@ def test_a_one_block_run_imports_neither_plot_nor_screen_libraries_nor_numpy(tmp
     assert code == 0
     assert top(modules, HEAVY) - {"sqlite3"} == set()  # the permanent store is opened when a program uses it
     assert top(modules, DIALECTS) == {"ncvm.dialects.din"}
+    assert "tomllib" not in modules  # the built-in machine file's precomputed form (machine/default_form.py)
 
 
 def test_a_run_with_moves_and_a_plot_loads_what_it_uses(tmp_path):
@@ -121,3 +122,11 @@ def test_a_run_with_a_trace_and_gcode_loads_and_writes_them(tmp_path):
     assert {"ncvm.sinks.trace", "ncvm.translate"} <= modules
     assert '"feed"' in (tmp_path / "t.jsonl").read_text()
     assert "G1" in (tmp_path / "g.ngc").read_text()
+
+
+def test_a_run_on_a_machine_file_parses_it(tmp_path):
+    (tmp_path / "p.ngc").write_text("M2\n")
+    (tmp_path / "m.toml").write_text('[machine]\nname = "m"\n[[axis]]\nname = "X"\n')
+    code, modules = loaded(["run", "--state", str(tmp_path / ".ncvm"), "--machine", "m.toml", "p.ngc"], tmp_path)
+    assert code == 0
+    assert "tomllib" in modules
