@@ -162,9 +162,10 @@ class RunResult:
         motion = recorder.summary()
         if session.work_bounds is not None:
             motion.bounds_program = session.work_bounds.bounds(motion.bounds)
-        if labels:
-            motion = dataclasses.replace(motion, **{key: {labels.get(a, a): b for a, b in getattr(motion, key).items()}
-                                                    for key in ("bounds", "bounds_program") if getattr(motion, key)})
+        if labels:  # the summary is this run's own, as bounds_program above
+            for key in ("bounds", "bounds_program"):
+                if getattr(motion, key):
+                    setattr(motion, key, {labels.get(a, a): b for a, b in getattr(motion, key).items()})
         return cls(
             dialect=session.dialect, error=error, output=session.output.lines(),
             output_dropped=session.output.dropped, variables=dict(session.variables),

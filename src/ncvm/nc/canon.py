@@ -16,7 +16,7 @@ import inspect
 from dataclasses import dataclass
 from typing import NamedTuple
 
-from ..records import Record
+from ..records import FrozenRecord, Record
 
 
 class Src(NamedTuple):
@@ -26,8 +26,7 @@ class Src(NamedTuple):
     line: int
 
 
-@dataclass(frozen=True, slots=True)
-class ArcSpec:
+class ArcSpec(FrozenRecord):
     """A circular (or helical) move in the plane spanned by axes ``a`` and ``b``.
 
     ``center`` is in machine coordinates of the plane axes; ``cw`` is the
@@ -36,12 +35,15 @@ class ArcSpec:
     ``b`` move linearly from start to end (helix).
     """
 
-    a: int
-    b: int
-    center: tuple[float, float]
-    cw: bool
-    radius: float
-    turns: int = 0
+    __slots__ = ("a", "b", "center", "cw", "radius", "turns")
+
+    def __init__(self, a: int, b: int, center: tuple[float, float], cw: bool, radius: float, turns: int = 0):
+        self.a = a
+        self.b = b
+        self.center = center
+        self.cw = cw
+        self.radius = radius
+        self.turns = turns
 
 
 @dataclass(frozen=True, slots=True)
