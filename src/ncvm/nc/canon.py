@@ -13,7 +13,6 @@ Positions are tuples with one float per machine axis, in axis order, in
 from __future__ import annotations
 
 import inspect
-from dataclasses import dataclass
 from typing import NamedTuple
 
 from ..records import FrozenRecord, Record
@@ -46,8 +45,7 @@ class ArcSpec(FrozenRecord):
         self.turns = turns
 
 
-@dataclass(frozen=True, slots=True)
-class Frame:
+class Frame(FrozenRecord):
     """What lies between the program's coordinates and the machine's, for the moves that follow (canon call
     :meth:`CanonSink.frame`, made when it changes, never per move).
 
@@ -60,14 +58,20 @@ class Frame:
     that keeps the tool length in force (SINUMERIK G53 / POS MSYS, CL 800 manual L4083; LinuxCNC's drops it).
     """
 
-    work_offset: str | None
-    zero: tuple[float, ...]
-    shift: tuple[float, ...]
-    tool_length: float = 0.0
-    tool_axis: int | None = None
-    tool_offset: int = 0
-    transformed: bool = False
-    tool_kept: bool = False
+    __slots__ = ("work_offset", "zero", "shift", "tool_length", "tool_axis", "tool_offset", "transformed",
+                 "tool_kept")
+
+    def __init__(self, work_offset: str | None, zero: tuple[float, ...], shift: tuple[float, ...],
+                 tool_length: float = 0.0, tool_axis: int | None = None, tool_offset: int = 0,
+                 transformed: bool = False, tool_kept: bool = False):
+        self.work_offset = work_offset
+        self.zero = zero
+        self.shift = shift
+        self.tool_length = tool_length
+        self.tool_axis = tool_axis
+        self.tool_offset = tool_offset
+        self.transformed = transformed
+        self.tool_kept = tool_kept
 
     def removed(self) -> tuple[float, ...]:
         """Per axis, what the work coordinates take off the machine's: the zero offset and the tool length
