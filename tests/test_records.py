@@ -70,3 +70,13 @@ def test_the_machine_records_keep_their_dataclass_semantics():
     table = Table((Field("a", Number(min=0), "doc"),))
     assert table == Table((Field("a", Number(min=0), "doc"),)) and hash(table) == hash(Table((Field(
         "a", Number(min=0), "doc"),)))
+
+
+def test_replace_gives_a_new_record_with_the_changes_as_dataclasses_replace_does():
+    from ncvm.records import replace
+    from ncvm.sinks.limits import LimitViolation
+
+    v = LimitViolation("X", 501.0, 500.0, "p.ngc", 3, point=(501.0, 0.0, 0.0), move=2)
+    moved = replace(v, axis="A1", frame="machine")
+    assert moved == LimitViolation("A1", 501.0, 500.0, "p.ngc", 3, "machine", (501.0, 0.0, 0.0), 2)
+    assert v.axis == "X" and v.frame == ""

@@ -5,7 +5,7 @@ Each command runs in a fresh interpreter, as a user starts it; the test reads wh
 
 from __future__ import annotations
 
-import json
+import ast
 import subprocess
 import sys
 
@@ -14,9 +14,10 @@ import pytest
 HEAVY = ("numpy", "matplotlib", "PIL", "sqlite3", "rich")
 DIALECTS = ("ncvm.dialects.din", "ncvm.dialects.cpl", "ncvm.dialects.sinumerik", "ncvm.dialects.sympas")
 
+#: imports nothing a run might not (no json): the arguments come as they are, the modules go out as a repr
 PROBE = """\
-import json, runpy, sys
-sys.argv = ["ncvm"] + json.loads(sys.argv[1])
+import runpy, sys
+sys.argv = ["ncvm"] + sys.argv[1:]
 try:
     runpy.run_module("ncvm", run_name="__main__")
 except SystemExit as e:
@@ -24,16 +25,16 @@ except SystemExit as e:
 else:
     code = 0
 sys.stdout.flush()
-sys.stderr.write("\\nMODULES " + json.dumps([code, sorted(sys.modules)]) + "\\n")
+sys.stderr.write("\\nMODULES " + repr([code, sorted(sys.modules)]) + "\\n")
 """
 
 
 def loaded(args: list[str], cwd) -> tuple[int, set[str]]:
     """(exit code, modules loaded) of ``ncvm <args>`` in a new interpreter."""
-    out = subprocess.run([sys.executable, "-c", PROBE, json.dumps(args)], capture_output=True, text=True,
+    out = subprocess.run([sys.executable, "-c", PROBE, *args], capture_output=True, text=True,
                          cwd=cwd, timeout=120)
     line = [ln for ln in out.stderr.splitlines() if ln.startswith("MODULES ")][-1]
-    code, modules = json.loads(line[len("MODULES "):])
+    code, modules = ast.literal_eval(line[len("MODULES "):])
     return code, set(modules)
 
 
@@ -68,6 +69,8 @@ def test_a_one_block_run_imports_neither_plot_nor_screen_libraries_nor_numpy(tmp
     assert code == 0
     assert top(modules, HEAVY) - {"sqlite3"} == set()  # the permanent store is opened when a program uses it
     assert top(modules, DIALECTS) == {"ncvm.dialects.din"}
+    assert "tomllib" not in modules  # the built-in machine file's precomputed form (machine/default_form.py)
+    assert {"json", "string"} & modules == set()  # json for --json and the store's values only
 
 
 def test_a_run_with_moves_and_a_plot_loads_what_it_uses(tmp_path):
@@ -121,3 +124,11 @@ def test_a_run_with_a_trace_and_gcode_loads_and_writes_them(tmp_path):
     assert {"ncvm.sinks.trace", "ncvm.translate"} <= modules
     assert '"feed"' in (tmp_path / "t.jsonl").read_text()
     assert "G1" in (tmp_path / "g.ngc").read_text()
+
+
+def test_a_run_on_a_machine_file_parses_it(tmp_path):
+    (tmp_path / "p.ngc").write_text("M2\n")
+    (tmp_path / "m.toml").write_text('[machine]\nname = "m"\n[[axis]]\nname = "X"\n')
+    code, modules = loaded(["run", "--state", str(tmp_path / ".ncvm"), "--machine", "m.toml", "p.ngc"], tmp_path)
+    assert code == 0
+    assert "tomllib" in modules

@@ -11,7 +11,6 @@ from __future__ import annotations
 import dataclasses
 import os
 import stat
-from dataclasses import dataclass, field
 from functools import partial
 from pathlib import Path
 from typing import Any
@@ -22,6 +21,7 @@ from .machine.config import load_machine, load_scenario
 from .machine.model import Machine
 from .machine.state import StateLock
 from .nc.canon import CanonSink
+from .records import Record
 from .runtime.checks import Checks
 from .runtime.memory import memory_limit
 from .runtime.session import RunOptions, RunSinks, Session, run_guarded, set_default_sinks
@@ -91,27 +91,40 @@ def check(path: str | Path, dialect: str | None = None, machine: Machine | str |
     return get_dialect(d).check(str(path), text, machine_for(path, machine), all_errors)
 
 
-@dataclass
-class RunResult:
+class RunResult(Record):
     """The outcome of one run; :meth:`to_json` is the document of ``ncvm run --json`` (README.md)."""
 
-    dialect: str
-    error: Diagnostic | None
-    output: list[str]
-    output_dropped: int  # operator output lines between the kept first and last half
-    variables: dict[str, Any]
-    position: dict[str, float]  # workpiece coordinates at the end
-    motion: MotionSummary
-    cycle_time_s: float
-    cycle_time_model: str  # "look-ahead", "rest-to-rest" or "card" (rw_SymPas): how moves were timed
-    steps: int
-    limit_violations: list[str]  # soft limits first, then the front end's checks (work areas ...)
-    extra: dict[str, Any]  # dialect-specific parts of the document (Session.extra)
-    #: its recorder, plot points, screen ... for the caller; None for a program run by a batch elsewhere
-    session: Session | None = field(default=None, repr=False, compare=False)
-    path: str | None = None  # the program file; None for program text
-    machine: str | None = None  # the machine file (a batch names it; "built-in": the default machine)
-    move_table: MoveTable | None = field(default=None, repr=False, compare=False)  # recorded on request only
+    __slots__ = ("dialect", "error", "output", "output_dropped", "variables", "position", "motion", "cycle_time_s",
+                 "cycle_time_model", "steps", "limit_violations", "extra", "session", "path", "machine",
+                 "move_table")
+    #: compared and shown: not the session and the move table (what the caller may use, not the outcome)
+    _SHOWN = tuple(f for f in __slots__ if f not in ("session", "move_table"))
+
+    def __init__(self, dialect: str, error: Diagnostic | None, output: list[str], output_dropped: int,
+                 variables: dict[str, Any], position: dict[str, float], motion: MotionSummary, cycle_time_s: float,
+                 cycle_time_model: str, steps: int, limit_violations: list[str], extra: dict[str, Any],
+                 session: Session | None = None, path: str | None = None, machine: str | None = None,
+                 move_table: MoveTable | None = None):
+        self.dialect = dialect
+        self.error = error
+        self.output = output
+        self.output_dropped = output_dropped  # operator output lines between the kept first and last half
+        self.variables = variables
+        self.position = position  # workpiece coordinates at the end
+        self.motion = motion
+        self.cycle_time_s = cycle_time_s
+        self.cycle_time_model = cycle_time_model  # "look-ahead", "rest-to-rest" or "card" (rw_SymPas): the model
+        self.steps = steps
+        self.limit_violations = limit_violations  # soft limits first, then the front end's checks (work areas ...)
+        self.extra = extra  # dialect-specific parts of the document (Session.extra)
+        #: its recorder, plot points, screen ... for the caller; None for a program run by a batch elsewhere
+        self.session = session
+        self.path = path  # the program file; None for program text
+        self.machine = machine  # the machine file (a batch names it; "built-in": the default machine)
+        self.move_table = move_table  # recorded on request only
+
+    def _fields(self) -> tuple[str, ...]:
+        return self._SHOWN
 
     @property
     def status(self) -> str:
@@ -162,9 +175,10 @@ class RunResult:
         motion = recorder.summary()
         if session.work_bounds is not None:
             motion.bounds_program = session.work_bounds.bounds(motion.bounds)
-        if labels:
-            motion = dataclasses.replace(motion, **{key: {labels.get(a, a): b for a, b in getattr(motion, key).items()}
-                                                    for key in ("bounds", "bounds_program") if getattr(motion, key)})
+        if labels:  # the summary is this run's own, as bounds_program above
+            for key in ("bounds", "bounds_program"):
+                if getattr(motion, key):
+                    setattr(motion, key, {labels.get(a, a): b for a, b in getattr(motion, key).items()})
         return cls(
             dialect=session.dialect, error=error, output=session.output.lines(),
             output_dropped=session.output.dropped, variables=dict(session.variables),

@@ -6,7 +6,6 @@ closed, as by ``| head``: the run stops there), 2 usage error, 70 internal error
 
 from __future__ import annotations
 
-import json
 import os
 import sys
 from collections import Counter
@@ -17,6 +16,7 @@ import click
 from . import __version__, termstyle
 from .diagnostics import CompileFailed, Diagnostic, Span, UsageError, render_all
 from .dialects import REGISTRY
+from .lazy import lazy
 from .outpaths import PLOT_SUFFIXES, SCREEN_PICTURE, Output, OutputError, check_outputs
 from .progress import Progress
 from .statecmd import state
@@ -24,7 +24,8 @@ from .termstyle import say
 from .timefmt import hms as _hms
 
 # The API, the machine and the sinks are imported by the commands that use them (issue 18, start-up):
-# ``ncvm --version`` loads click and this module only, ``ncvm check`` no numpy.
+# ``ncvm --version`` loads click and this module only, ``ncvm check`` no numpy; json only for --json output.
+json = lazy("json")
 
 EXIT_OK, EXIT_FAULT, EXIT_USAGE, EXIT_INTERNAL = 0, 1, 2, 70
 #: the end of each command's --help: what its exit codes mean

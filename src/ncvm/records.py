@@ -27,6 +27,12 @@ class Record:
         return f"{type(self).__qualname__}({', '.join(f'{f}={getattr(self, f)!r}' for f in self._fields())})"
 
 
+def replace(record: Record, **changes) -> Record:
+    """A new record of the same class with ``changes`` to its fields, as :func:`dataclasses.replace` (a
+    record's ``__init__`` takes its fields by their names)."""
+    return type(record)(**{**{f: getattr(record, f) for f in record._fields()}, **changes})
+
+
 class FrozenRecord(Record):
     """A record hashed by its fields, as a frozen dataclass (for values built once and never changed)."""
 

@@ -8,19 +8,20 @@ and superscript digits (¹²³), which no control reads as part of a name or a n
 
 from __future__ import annotations
 
-import string
 from pathlib import Path
 
 #: a UTF-8 byte-order mark as it reads in Latin-1; an editor may put it before the first line
 BOM = "\xef\xbb\xbf"
 
-DIGITS = frozenset(string.digits)
-LETTERS = frozenset(string.ascii_letters)
+# spelled out: the string module compiles string.Template's pattern when imported (issue 18)
+_LOWER = "abcdefghijklmnopqrstuvwxyz"
+DIGITS = frozenset("0123456789")
+LETTERS = frozenset(_LOWER + _LOWER.upper())
 ALNUM = DIGITS | LETTERS
 #: a character that may continue a name in every dialect (letters, digits, underscore)
 NAME_CHARS = ALNUM | {"_"}
 
-_UPPER = str.maketrans(string.ascii_lowercase, string.ascii_uppercase)
+_UPPER = str.maketrans(_LOWER, _LOWER.upper())
 
 #: the most decades a number in an NC block may have before its decimal point (the 8 decades of the
 #: SINUMERIK 800's R parameters and words, CL 800 manual L7061, L7077-7080; DIN word formats keep to it)

@@ -11,13 +11,15 @@ terminal and without --yes, a state directory in use, a store that cannot be rea
 
 from __future__ import annotations
 
-import json
 import sys
 from pathlib import Path
 
 import click
 
 from .diagnostics import UsageError
+from .lazy import lazy
+
+json = lazy("json")  # ncvm state show only
 
 STATE_OPT = click.option("--state", "state_dir", type=click.Path(file_okay=False), default=".ncvm", show_default=True,
                          help="State directory whose permanent store is meant.")

@@ -17,13 +17,14 @@ import click
 #: set by ``ncvm --color`` (True) / ``--no-color`` (False); None: decide by the stream
 forced: bool | None = None
 
-HEADER = re.compile(r"^(?P<place>\S+:\d+(?::\d+)?: )?(?P<kind>error|warning|note)(?P<code> [^:\s]+)?:", re.M)
-CARET = re.compile(r"^(\s*)(\^+)\s*$", re.M)
+#: the patterns are compiled by ``re`` when colour is first used (its cache), not by every start-up (issue 18)
+HEADER = r"(?m)^(?P<place>\S+:\d+(?::\d+)?: )?(?P<kind>error|warning|note)(?P<code> [^:\s]+)?:"
+CARET = r"(?m)^(\s*)(\^+)\s*$"
 KIND_COLOUR = {"error": "red", "warning": "yellow", "note": "cyan"}
 #: a summary line's verdict: good, bad
 VERDICTS = (
-    (re.compile(r"ended normally|(?<= )0 with errors"), "green"),
-    (re.compile(r"stopped with error \S+|\d+ with errors|\d+ with limit violations|\d+ failed"), "red"),
+    (r"ended normally|(?<= )0 with errors", "green"),
+    (r"stopped with error \S+|\d+ with errors|\d+ with limit violations|\d+ failed", "red"),
 )
 
 
@@ -42,10 +43,10 @@ def enabled(err: bool = True) -> bool:
 
 def styled(text: str) -> str:
     """``text`` with its diagnostic headers, carets and summary verdicts in colour."""
-    text = HEADER.sub(_header, text)
-    text = CARET.sub(lambda m: m.group(1) + click.style(m.group(2), fg="green", bold=True), text)
+    text = re.sub(HEADER, _header, text)
+    text = re.sub(CARET, lambda m: m.group(1) + click.style(m.group(2), fg="green", bold=True), text)
     for pattern, colour in VERDICTS:
-        text = pattern.sub(lambda m, c=colour: click.style(m.group(0), fg=c, bold=True), text)
+        text = re.sub(pattern, lambda m, c=colour: click.style(m.group(0), fg=c, bold=True), text)
     return text
 
 

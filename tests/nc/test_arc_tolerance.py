@@ -73,7 +73,7 @@ def test_block_by_block_and_column_wise_judge_alike(tmp_path):
 
 
 def test_the_din_options_are_its_section():
-    assert {f: getattr(Options(), f) for f in Options.__dataclass_fields__} == section_defaults("din")
+    assert {f: getattr(Options(), f) for f in Options.__slots__} == section_defaults("din")
     assert options(machine_from_dict({**XYZ, "din": {"arc_radius_relative": 0.01}})) == Options(
         arc_radius_relative=0.01)
     with pytest.raises(UsageError, match="din.arc_radius_tolerance = 0"):

@@ -14,7 +14,6 @@ full disk) becomes a :class:`StateError` naming the file and what to do.
 
 from __future__ import annotations
 
-import json
 from contextlib import contextmanager
 from pathlib import Path
 from typing import Any, Iterator
@@ -23,6 +22,7 @@ from ..lazy import lazy
 from .state import STORE_NAME, StateError, disk_full, not_a_file, store_files
 
 sqlite3 = lazy("sqlite3")  # a check opens no store
+json = lazy("json")  # for the values of a store a program opens
 
 SCHEMA = """
 CREATE TABLE IF NOT EXISTS permanent (

@@ -8,9 +8,9 @@ kernel's block-by-block path and column-wise (suffix ``_columns``, numpy) for
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
 from ..lazy import lazy
+from ..records import FrozenRecord
 
 np = lazy("numpy")
 
@@ -21,8 +21,7 @@ SAME_POINT = 1e-9
 INCH = 25.4
 
 
-@dataclass(frozen=True, slots=True)
-class RadiusTolerance:
+class RadiusTolerance(FrozenRecord):
     """How far an arc's end may lie off the circle through its start before the control refuses the block.
 
     An arc is refused when its end radius differs from its start radius by more than ``limit`` times the
@@ -32,12 +31,16 @@ class RadiusTolerance:
     half its chord; a centre closer than ``zero`` (mm) to the start or end is a zero-radius arc.
     """
 
-    absolute: float
-    absolute_inch: float
-    relative: float
-    limit: float = math.inf
-    reach: float = 0.002
-    zero: float = 1e-9
+    __slots__ = ("absolute", "absolute_inch", "relative", "limit", "reach", "zero")
+
+    def __init__(self, absolute: float, absolute_inch: float, relative: float, limit: float = math.inf,
+                 reach: float = 0.002, zero: float = 1e-9):
+        self.absolute = absolute
+        self.absolute_inch = absolute_inch
+        self.relative = relative
+        self.limit = limit
+        self.reach = reach
+        self.zero = zero
 
     def allowed(self, inch: bool) -> float:
         """The absolute tolerance in mm for a program in inch (G20/G70) or in mm."""

@@ -11,12 +11,12 @@ from __future__ import annotations
 
 import math
 import re
-from dataclasses import dataclass
 from operator import itemgetter
 from typing import NamedTuple
 
 from ..diagnostics import Diagnostic, Span
 from ..lazy import lazy
+from ..records import Record
 from ..source import lines as program_lines
 from ..source import stretches, too_many_decades, word_number
 from .canon import Src
@@ -213,8 +213,7 @@ def read_din_program(path: str, text: str) -> tuple[list[tuple[Block, bool]], li
     return blocks, diags
 
 
-@dataclass
-class PlainRun:
+class PlainRun(Record):
     """Consecutive plain blocks of one file (N, one motion G code, X Y Z I J K F words), held as columns.
 
     ``words`` maps each of :data:`PLAIN_WORDS` to a float column with NaN where
@@ -223,13 +222,17 @@ class PlainRun:
     any one of them as the line parser reads it.
     """
 
-    file: str
-    lines: np.ndarray  # int, physical line of each block
-    g: np.ndarray  # int, motion G code 0..3 or -1
-    words: dict  # address -> float column
-    source: list | None = None  # the lines of the stretch it was read from, when it was read from text
-    origin: list | None = None  # the plain rows (or Blocks) the run was made of, when it was made of them
-    source_first: int = 0  # the program lines before source[0]
+    __slots__ = ("file", "lines", "g", "words", "source", "origin", "source_first")
+
+    def __init__(self, file: str, lines: np.ndarray, g: np.ndarray, words: dict, source: list | None = None,
+                 origin: list | None = None, source_first: int = 0):
+        self.file = file
+        self.lines = lines  # int, physical line of each block
+        self.g = g  # int, motion G code 0..3 or -1
+        self.words = words  # address -> float column
+        self.source = source  # the lines of the stretch it was read from, when it was read from text
+        self.origin = origin  # the plain rows (or Blocks) the run was made of, when it was made of them
+        self.source_first = source_first  # the program lines before source[0]
 
     def __len__(self) -> int:
         return len(self.lines)

@@ -13,10 +13,9 @@ Positions are tuples with one float per machine axis, in axis order, in
 from __future__ import annotations
 
 import inspect
-from dataclasses import dataclass
 from typing import NamedTuple
 
-from ..records import Record
+from ..records import FrozenRecord, Record
 
 
 class Src(NamedTuple):
@@ -26,8 +25,7 @@ class Src(NamedTuple):
     line: int
 
 
-@dataclass(frozen=True, slots=True)
-class ArcSpec:
+class ArcSpec(FrozenRecord):
     """A circular (or helical) move in the plane spanned by axes ``a`` and ``b``.
 
     ``center`` is in machine coordinates of the plane axes; ``cw`` is the
@@ -36,16 +34,18 @@ class ArcSpec:
     ``b`` move linearly from start to end (helix).
     """
 
-    a: int
-    b: int
-    center: tuple[float, float]
-    cw: bool
-    radius: float
-    turns: int = 0
+    __slots__ = ("a", "b", "center", "cw", "radius", "turns")
+
+    def __init__(self, a: int, b: int, center: tuple[float, float], cw: bool, radius: float, turns: int = 0):
+        self.a = a
+        self.b = b
+        self.center = center
+        self.cw = cw
+        self.radius = radius
+        self.turns = turns
 
 
-@dataclass(frozen=True, slots=True)
-class Frame:
+class Frame(FrozenRecord):
     """What lies between the program's coordinates and the machine's, for the moves that follow (canon call
     :meth:`CanonSink.frame`, made when it changes, never per move).
 
@@ -58,15 +58,21 @@ class Frame:
     that keeps the tool length in force (SINUMERIK G53 / POS MSYS, CL 800 manual L4083; LinuxCNC's drops it).
     """
 
-    work_offset: str | None
-    zero: tuple[float, ...]
-    shift: tuple[float, ...]
-    tool_length: float = 0.0
-    tool_axis: int | None = None
-    tool_offset: int = 0
-    transformed: bool = False
-    tool_kept: bool = False
-    tool_subtracted: bool = False  # G44: the length of offset ``tool_offset`` taken off (tool_length its negative)
+    __slots__ = ("work_offset", "zero", "shift", "tool_length", "tool_axis", "tool_offset", "transformed",
+                 "tool_kept", "tool_subtracted")
+
+    def __init__(self, work_offset: str | None, zero: tuple[float, ...], shift: tuple[float, ...],
+                 tool_length: float = 0.0, tool_axis: int | None = None, tool_offset: int = 0,
+                 transformed: bool = False, tool_kept: bool = False, tool_subtracted: bool = False):
+        self.work_offset = work_offset
+        self.zero = zero
+        self.shift = shift
+        self.tool_length = tool_length
+        self.tool_axis = tool_axis
+        self.tool_offset = tool_offset
+        self.transformed = transformed
+        self.tool_kept = tool_kept
+        self.tool_subtracted = tool_subtracted  # G44: offset ``tool_offset``'s length taken off (tool_length < 0)
 
     def removed(self) -> tuple[float, ...]:
         """Per axis, what the work coordinates take off the machine's: the zero offset and the tool length

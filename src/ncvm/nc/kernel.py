@@ -27,11 +27,11 @@ from __future__ import annotations
 
 import copy
 import math
-from dataclasses import replace
 from operator import add, sub
 
 from ..diagnostics import RuntimeFault, Span
 from ..machine.model import Machine, PlcImage, SimClock
+from ..records import replace
 from . import arcs, cutter, threads
 from .canon import NOBODY, ArcSpec, Canon, Frame, Src
 from .dynamics import AxisDynamics, arc_limits, path_limits

@@ -12,7 +12,9 @@ from __future__ import annotations
 import dataclasses
 from typing import Any, Callable, NamedTuple, Protocol, Sequence
 
+from .. import records
 from ..nc.canon import Src
+from ..records import Record
 
 DEAD, WORK = "dead range", "work area"
 
@@ -82,12 +84,15 @@ class Checks:
 def _as_reported(v: Any, place: Callable[[Src], Src] | None, labels: dict[str, str] | None) -> Any:
     """Violation ``v`` at its place in the source and under the program's axis name; one that names an
     axis so says it is in machine coordinates, where limits are."""
-    if not dataclasses.is_dataclass(v) or not hasattr(v, "file"):
+    record = isinstance(v, Record)
+    if not (record or dataclasses.is_dataclass(v)) or not hasattr(v, "file"):
         return v  # a front end's own report that names no place
     changes: dict[str, Any] = {}
     if place is not None:
         src = place(Src(v.file, v.line))
         changes.update(file=src.file, line=src.line)
-    if labels and "axis" in {f.name for f in dataclasses.fields(v)}:
+    if labels and "axis" in (v._fields() if record else {f.name for f in dataclasses.fields(v)}):
         changes.update(axis=labels.get(v.axis, v.axis), frame="machine")
-    return dataclasses.replace(v, **changes) if changes else v
+    if not changes:
+        return v
+    return records.replace(v, **changes) if record else dataclasses.replace(v, **changes)

@@ -20,6 +20,7 @@ from ..machine.model import Machine
 from ..machine.store import Store
 from ..nc.canon import Canon, CanonSink, Src
 from ..nc.kernel import NcKernel, programmed_stop_line
+from ..records import Record
 from . import interrupt
 from .checks import Checks
 from .memory import default_max_memory, out_of_memory
@@ -68,18 +69,21 @@ class MoveLog(Protocol):
     def __len__(self) -> int: ...
 
 
-@dataclass
-class RunSinks:
+class RunSinks(Record):
     """The sinks of one run as the API chose them (api.run_sinks): the canon sinks, the one of them that
     records the moves, the checks of the recorded moves and the points of a toolpath plot (kept for the
     caller to draw). Empty: the kernel moves and nothing is recorded."""
 
-    canon: list[CanonSink] = field(default_factory=list)
-    recorder: MoveLog | None = None
-    checks: Checks = field(default_factory=Checks)
-    plot: Any = None
-    gcode: Any = None  # the --gcode translation file (translate.output.TranslationFile), completed by the API
-    work_bounds: Any = None  # the bounds in the program's work frame (sinks.workbounds.WorkBounds)
+    __slots__ = ("canon", "recorder", "checks", "plot", "gcode", "work_bounds")
+
+    def __init__(self, canon: list[CanonSink] | None = None, recorder: MoveLog | None = None,
+                 checks: Checks | None = None, plot: Any = None, gcode: Any = None, work_bounds: Any = None):
+        self.canon = [] if canon is None else canon
+        self.recorder = recorder
+        self.checks = Checks() if checks is None else checks
+        self.plot = plot
+        self.gcode = gcode  # the --gcode translation file (translate.output.TranslationFile), completed by the API
+        self.work_bounds = work_bounds  # the bounds in the program's work frame (sinks.workbounds.WorkBounds)
 
 
 #: the sinks of a session built without them: api.py installs its choice when it is imported (the ncvm

@@ -15,12 +15,11 @@ an arc in another plane is tested as its sampled polyline.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 from typing import Sequence
 
 from ..lazy import lazy
 from ..nc import arcs
-from ..records import FrozenRecord
+from ..records import FrozenRecord, Record
 from ..runtime.checks import DEAD, WORK, Area
 
 np = lazy("numpy")
@@ -43,12 +42,14 @@ class Zone(FrozenRecord):
         self.hi = hi  # highest corner (a, b)
 
 
-@dataclass
-class ZoneViolation:
-    zone: Zone
-    names: tuple[str, str]
-    file: str
-    line: int
+class ZoneViolation(Record):
+    __slots__ = ("zone", "names", "file", "line")
+
+    def __init__(self, zone: Zone, names: tuple[str, str], file: str, line: int):
+        self.zone = zone
+        self.names = names
+        self.file = file
+        self.line = line
 
     @property
     def axis(self) -> str:

@@ -8,23 +8,25 @@ window at a time and tests them with numpy, straight moves by their end points
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 from ..lazy import lazy
+from ..records import Record
 
 np = lazy("numpy")
 
 
-@dataclass
-class LimitViolation:
-    axis: str
-    value: float
-    limit: float
-    file: str
-    line: int
-    frame: str = ""  # said where the program's other figures are in another frame ("machine")
-    point: tuple | None = None  # machine position where the axis is beyond its limit (the plot marks it)
-    move: int = 0  # the move's number in the run (the plot takes off the offsets in force for it)
+class LimitViolation(Record):
+    __slots__ = ("axis", "value", "limit", "file", "line", "frame", "point", "move")
+
+    def __init__(self, axis: str, value: float, limit: float, file: str, line: int, frame: str = "",
+                 point: tuple | None = None, move: int = 0):
+        self.axis = axis
+        self.value = value
+        self.limit = limit
+        self.file = file
+        self.line = line
+        self.frame = frame  # said where the program's other figures are in another frame ("machine")
+        self.point = point  # machine position where the axis is beyond its limit (the plot marks it)
+        self.move = move  # the move's number in the run (the plot takes off the offsets in force for it)
 
     def message(self) -> str:
         side = "above" if self.value > self.limit else "below"

@@ -12,12 +12,12 @@ from __future__ import annotations
 
 import math
 from bisect import bisect_right
-from dataclasses import dataclass
 from itertools import chain
 
 from ..lazy import lazy
 from ..nc import arcs
 from ..nc.canon import ArcSpec, CanonSink, MoveBatch, Src
+from ..records import Record
 
 np = lazy("numpy")
 
@@ -29,15 +29,20 @@ WINDOW = 1 << 16
 MAX_CHUNKS = 1024
 
 
-@dataclass
-class MotionSummary:
-    rapid_moves: int
-    feed_moves: int
-    arc_moves: int
-    rapid_length: float
-    feed_length: float
-    bounds: dict[str, list[float]]  # the machine's
-    bounds_program: dict[str, list[float]] | None = None  # the program's work frame (sinks.workbounds)
+class MotionSummary(Record):
+    __slots__ = ("rapid_moves", "feed_moves", "arc_moves", "rapid_length", "feed_length", "bounds",
+                 "bounds_program")
+
+    def __init__(self, rapid_moves: int, feed_moves: int, arc_moves: int, rapid_length: float,
+                 feed_length: float, bounds: dict[str, list[float]],
+                 bounds_program: dict[str, list[float]] | None = None):
+        self.rapid_moves = rapid_moves
+        self.feed_moves = feed_moves
+        self.arc_moves = arc_moves
+        self.rapid_length = rapid_length
+        self.feed_length = feed_length
+        self.bounds = bounds  # the machine's
+        self.bounds_program = bounds_program  # the program's work frame (sinks.workbounds)
 
     def to_json(self) -> dict:
         return {"rapid_moves": self.rapid_moves, "feed_moves": self.feed_moves, "arc_moves": self.arc_moves,
