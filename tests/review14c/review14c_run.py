@@ -3,14 +3,14 @@ reduced to the machine position (slide) of every move, so the two can be compare
 
 from __future__ import annotations
 
-import json
 import re
 import shutil
 import subprocess
-import sys
 from pathlib import Path
 
 import pytest
+
+from tests.review14.review14_helpers import make_runner
 
 RS274 = shutil.which("rs274")
 needs_rs274 = pytest.mark.skipif(RS274 is None, reason="rs274 not installed (Debian package linuxcnc-uspace)")
@@ -25,17 +25,10 @@ CALL = re.compile(r"(STRAIGHT_TRAVERSE|STRAIGHT_FEED|ARC_FEED|SET_G5X_OFFSET|SET
 
 def ncvm(tmp_path: Path, text: str, name: str = "prog.ngc") -> tuple[dict, list[tuple]]:
     """(JSON result, [(kind, (X, Y, Z))] machine end point of each move) of ``ncvm run``."""
-    (tmp_path / "machine.toml").write_text(MACHINE)
-    (tmp_path / name).write_text(text)
-    trace = tmp_path / "trace.jsonl"
-    proc = subprocess.run([sys.executable, "-m", "ncvm", "run", "--json", "--trace", str(trace),
-                           "--machine", str(tmp_path / "machine.toml"), "--state", str(tmp_path / ".state"),
-                           str(tmp_path / name)], capture_output=True, text=True, timeout=120)
-    assert "Traceback" not in proc.stderr, proc.stderr
-    rows = [json.loads(line) for line in trace.read_text().splitlines()] if trace.exists() else []
+    result, rows, _stderr = make_runner(tmp_path)(name, text, machine=MACHINE)
     moves = [(r["call"], tuple(round(r["end"][a], 4) for a in AXES))
              for r in rows if r["call"] in ("rapid", "feed", "arc")]
-    return json.loads(proc.stdout), moves
+    return result, moves
 
 
 def reference(tmp_path: Path, text: str) -> list[tuple]:
