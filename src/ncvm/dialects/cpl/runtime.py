@@ -292,6 +292,8 @@ class CplRuntime:
         return out
 
     def to_fault(self, e: BaseException) -> RuntimeFault:
+        if _raised_by_ncvm_output(e):
+            raise e  # ncvm's own fault (an internal error), never shown as the program's RUNTIME ERROR
         if isinstance(e, CplError):
             code, detail = e.code, e.detail
         elif isinstance(e, CplRuntimeError):
@@ -724,3 +726,18 @@ def _interface_events(events: list) -> list:
     refuse(events, (InterfaceBit, ProbeSwitch, FixedStop, SercosLock), "CPL control")
     check_probe_events(events)
     return of_type(events, InterfaceBit)
+
+
+#: where a Python error can only be ncvm's: the output sinks and the translation writer take what the run
+#: reports and never evaluate the program's values, so a TypeError there is no NUL in the program (CPL020)
+_NCVM_OUTPUT = (str(Path(__file__).resolve().parents[2] / "sinks"), str(Path(__file__).resolve().parents[2] / "translate"))
+
+
+def _raised_by_ncvm_output(e: BaseException) -> bool:
+    """True when the innermost frame of ``e`` is in ncvm's output sinks or translation writer."""
+    tb = e.__traceback__
+    if tb is None:
+        return False
+    while tb.tb_next is not None:
+        tb = tb.tb_next
+    return tb.tb_frame.f_code.co_filename.startswith(_NCVM_OUTPUT)
