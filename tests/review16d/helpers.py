@@ -5,7 +5,7 @@ from __future__ import annotations
 import math
 import re
 
-from tests.review16c.helpers import code_lines
+from tests.review16c.helpers import code_lines, translate
 
 
 def full_circles(text: str) -> list[str]:
@@ -47,3 +47,12 @@ def machine(name: str, extra: str = "") -> str:
     """A machine file: three linear axes X Y Z from -500 to 500 mm, then ``extra`` (tools, offsets, sections)."""
     axes = "".join(f'[[axis]]\nname = "{a}"\nmin = -500.0\nmax = 500.0\n' for a in "XYZ")
     return f'[machine]\nname = "{name}"\n{axes}{extra}'
+
+
+def translated(tmp_path, machine_text: str, program: str, name: str, target: str) -> str:
+    """The text ``ncvm translate`` writes for ``program`` (file ``name``) on ``machine_text`` to ``target``."""
+    (tmp_path / "machine.toml").write_text(machine_text)
+    rc, out, err = translate(tmp_path, program, name, "--target", target, "-m", "machine.toml",
+                             out_name=f"out.{target}")
+    assert rc == 0, err
+    return out

@@ -14,8 +14,8 @@ from __future__ import annotations
 
 import pytest
 
-from tests.review16c.helpers import needs_rs274, rs274_canon, translate
-from tests.review16d.helpers import full_circles, machine, rs274_sweep
+from tests.review16c.helpers import needs_rs274, rs274_canon
+from tests.review16d.helpers import full_circles, machine, rs274_sweep, translated
 
 MACHINE = machine("mill")
 
@@ -30,11 +30,7 @@ N70 M30
 
 
 def _out(tmp_path, target):
-    (tmp_path / "machine.toml").write_text(MACHINE)
-    rc, out, err = translate(tmp_path, PROGRAM, "tiny.cpl", "--target", target, "-m", "machine.toml",
-                             out_name=f"out.{target}")
-    assert rc == 0, err
-    return out
+    return translated(tmp_path, MACHINE, PROGRAM, "tiny.cpl", target)
 
 
 @pytest.mark.parametrize("target", ["linuxcnc", "sinumerik840d", "iso"])
