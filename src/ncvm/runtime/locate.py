@@ -43,6 +43,17 @@ def generated_frames(tb: TracebackType | None, sources: Mapping[str, PySource]) 
     return out
 
 
+def raised_by_generated(tb: TracebackType | None, sources: Mapping[str, PySource]) -> bool:
+    """Whether the innermost frame of ``tb`` runs generated code: the exception came from the statement's own
+    operation (arithmetic, a subscript, a math function it calls directly), not from a function of ncvm's that
+    it called. A Python error raised inside ncvm is ncvm's fault, whatever the program did."""
+    if tb is None:
+        return False
+    while tb.tb_next is not None:
+        tb = tb.tb_next
+    return tb.tb_frame.f_code.co_filename in sources
+
+
 def fault_line(tb: TracebackType | None, source: PySource) -> int | None:
     """The program line where the innermost frame of ``source``'s code stopped; None when it is not in ``tb``."""
     frames = generated_frames(tb, {source.filename: source})

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import math
 
-from .errors import CplError
+from .errors import CplError, nul_used
 from .io import strings as S
 from .system import SYSTEM_FUNCTIONS
 from .table import Builtin
@@ -22,7 +22,7 @@ def _num(v, name: str):
     if v.__class__ is int or v.__class__ is float:
         return v
     if v is None:
-        raise TypeError("NUL")
+        raise nul_used()
     raise CplError("CPL032", f"{name} of {type_name(v)}")
 
 

@@ -71,6 +71,15 @@ class CplError(Exception):
         super().__init__(f"{code}: {message(code, detail)}")
 
 
+def nul_used() -> CplError:
+    """NUL where a value is needed: RUNTIME ERROR VARIABLE NOT ASSIGNED (CPL manual §2.5, L758-769)."""
+    return CplError("CPL020", NUL_USED)
+
+
+#: the detail of CPL020 where a NUL value is used in an expression
+NUL_USED = "NUL used in an expression"
+
+
 def message(code: str, detail: str = "") -> str:
     base = CODES[code][0] if code in CODES else NCVM_CODES.get(code, code)
     return f"{base}: {detail}" if detail else base

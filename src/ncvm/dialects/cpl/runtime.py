@@ -38,7 +38,7 @@ from .axiswords import check_words, refused_blocks, refusing
 from .builtins import FUNCTIONS
 from .checker import check
 from .codegen import HELPER_NAMES, generate
-from .errors import CplError, fault, message
+from .errors import CplError, fault, message, nul_used
 from .io import strings as S
 from .io.context import CplIO
 from .io.errors import CplRuntimeError
@@ -46,6 +46,7 @@ from .io.values import CplText, Double
 from .linker import MAX_SUB_NESTING, LinkResult, call_table, find_din_program, where_looked
 from .options import options
 from .perm import DeclError, Permanents
+from .pyfaults import program_error
 from .system import SYSTEM_PROCS
 from .system import setup as system_setup
 from .system.controller import load_controller
@@ -292,33 +293,25 @@ class CplRuntime:
         return out
 
     def to_fault(self, e: BaseException) -> RuntimeFault:
-        if _raised_by_ncvm_output(e):
-            raise e  # ncvm's own fault (an internal error), never shown as the program's RUNTIME ERROR
+        """The RUNTIME ERROR that stopped the program; any other Python error is ncvm's and is raised again
+        (an internal error, never shown as the program's error: pyfaults)."""
+        sources = {path: uc.src for path, uc in self._codes.items()}
         if isinstance(e, CplError):
             code, detail = e.code, e.detail
         elif isinstance(e, CplRuntimeError):
             code, detail = e.code, ""
-        elif isinstance(e, TypeError):
-            code, detail = "CPL020", "NUL used in an expression"
-        elif isinstance(e, ZeroDivisionError):
-            code, detail = "CPL028", ""
-        elif isinstance(e, AttributeError) or isinstance(e, KeyError):
-            code, detail = "CPL035", "a field is used before its DIM"
-        elif isinstance(e, IndexError):
-            code, detail = "CPL031", ""
-        elif isinstance(e, ValueError):
-            code, detail = "CPL029", "argument outside the domain of the function (SQRT of a negative number?)"
-        elif isinstance(e, OverflowError):
-            code, detail = "CPL042", "number too large"  # a float result beyond the DOUBLE range
         elif isinstance(e, RecursionError):
             code, detail = "CPL007", ""
         elif isinstance(e, MemoryError):  # the run's memory limit (runtime.memory), reported where it was reached
             code, detail = "RUN006", ""
         else:
-            raise e
+            found = program_error(e, sources)
+            if found is None:
+                raise e
+            code, detail = found
         codes = self._codes
         frames = [(g.filename, g.line, codes[g.filename].cpl_lines.get(g.line), g.col)
-                  for g in generated_frames(e.__traceback__, {path: uc.src for path, uc in codes.items()})]
+                  for g in generated_frames(e.__traceback__, sources)]
         text = e.message if isinstance(e, CplRuntimeError) else message(code, detail) if code != "RUN006" \
             else out_of_memory(self.session.options.max_memory).message
         if not frames:
@@ -525,7 +518,7 @@ class CplRuntime:
             val = V.sv(val)
             if val.__class__ is not str:
                 if val is None:
-                    raise TypeError("NUL")
+                    raise nul_used()
                 raise CplError("CPL032", "a standalone [ ] in an NC block must give NC text")
             ext = _EXTENDED.match(val)
             if ext:  # an extended address such as AXP's "X2=10.5" (manual §4.10)
@@ -603,7 +596,7 @@ class CplRuntime:
         """0: condition met at the call; 1: the duration ran out; 2: the condition became true while waiting."""
         if duration is not None and (duration.__class__ is not int or duration < 0):
             if duration is None:
-                raise TypeError("NUL")
+                raise nul_used()
             raise CplError("CPL023", f"WAIT duration {duration!r}: an INTEGER number of milliseconds")
         start = self.t_prep
         deadline = None if duration is None else start + duration / 1000.0
@@ -611,7 +604,7 @@ class CplRuntime:
             self.advance(deadline)
             return 1
         if state is None:
-            raise TypeError("NUL")
+            raise nul_used()
 
         def met() -> bool:
             v = self.ic(ic)
@@ -647,7 +640,7 @@ def _midw(field, start, count, value) -> None:
     if field is None:
         raise CplError("CPL035", "MID$ target")
     if value is None:
-        raise TypeError("NUL")
+        raise nul_used()
     S.mid_write(field, start, count, value)
 
 
@@ -712,7 +705,7 @@ def _caseval(v):
     if v.__class__ is int:
         return v
     if v is None:
-        raise TypeError("NUL")
+        raise nul_used()
     raise CplError("CPL032", f"CASE selector {v!r} is not INTEGER")
 
 
@@ -726,18 +719,3 @@ def _interface_events(events: list) -> list:
     refuse(events, (InterfaceBit, ProbeSwitch, FixedStop, SercosLock), "CPL control")
     check_probe_events(events)
     return of_type(events, InterfaceBit)
-
-
-#: where a Python error can only be ncvm's: the output sinks and the translation writer take what the run
-#: reports and never evaluate the program's values, so a TypeError there is no NUL in the program (CPL020)
-_NCVM_OUTPUT = (str(Path(__file__).resolve().parents[2] / "sinks"), str(Path(__file__).resolve().parents[2] / "translate"))
-
-
-def _raised_by_ncvm_output(e: BaseException) -> bool:
-    """True when the innermost frame of ``e`` is in ncvm's output sinks or translation writer."""
-    tb = e.__traceback__
-    if tb is None:
-        return False
-    while tb.tb_next is not None:
-        tb = tb.tb_next
-    return tb.tb_frame.f_code.co_filename.startswith(_NCVM_OUTPUT)

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import struct
 
-from .errors import CplError
+from .errors import CplError, nul_used
 from .io.strings import CharacterField, CharacterTable
 from .io.values import CplText
 
@@ -31,7 +31,7 @@ def f32(v):
         raise CplError("CPL042", "value outside the REAL range (+/-1e38)") from None
     except struct.error:
         if v is None:
-            raise TypeError("NUL") from None
+            raise nul_used() from None
         raise CplError("CPL021", f"{type_name(v)} value where a number is expected") from None
     if r - r != 0.0:  # infinity or NaN: a DOUBLE result beyond the REAL range packs without OverflowError
         raise CplError("CPL042", "value outside the REAL range (+/-1e38)")
@@ -105,14 +105,14 @@ def cond(v):
     if v is True or v is False:
         return v
     if v is None:
-        raise TypeError("NUL")
+        raise nul_used()
     raise CplError("CPL032", f"condition is {type_name(v)}, not BOOLEAN")
 
 
 def not_nul(v):
     """An operand of = or <> other than the NUL keyword: NUL is VARIABLE NOT ASSIGNED (CPL manual §2.5, L758-769)."""
     if v is None:
-        raise TypeError("NUL")
+        raise nul_used()
     return v
 
 
@@ -121,7 +121,7 @@ def word(v):
     if v.__class__ is float or v.__class__ is int:
         return v
     if v is None:
-        raise TypeError("NUL")
+        raise nul_used()
     raise CplError("CPL032", f"NC word value is {type_name(v)}, not a number")
 
 
@@ -131,14 +131,14 @@ def word_real(v):
         return float(v)
     r = to_real(v)
     if r is None:
-        raise TypeError("NUL")
+        raise nul_used()
     return r
 
 
 def logic(op: str, a, b):
     """AND/OR/XOR: logical on BOOLEAN, bitwise on INTEGER, an error when mixed (CPL manual §2.4.3, L650-737)."""
     if a is None or b is None:
-        raise TypeError("NUL")
+        raise nul_used()
     ta, tb = a.__class__, b.__class__
     if ta is not tb or ta not in (bool, int):
         raise CplError("CPL032", f"{op} of {type_name(a)} and {type_name(b)}")
@@ -155,7 +155,7 @@ def lnot(a):
     if a.__class__ is int:
         return ~a
     if a is None:
-        raise TypeError("NUL")
+        raise nul_used()
     raise CplError("CPL032", f"NOT of {type_name(a)}")
 
 
@@ -164,7 +164,7 @@ def index(i):
     if i.__class__ is int and i >= 0:
         return i
     if i is None:
-        raise TypeError("NUL")
+        raise nul_used()
     raise CplError("CPL031", f"index {i!r}")
 
 

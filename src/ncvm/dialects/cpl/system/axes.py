@@ -9,7 +9,7 @@ axes of other channels hold their configured position (nothing moves them in thi
 
 from __future__ import annotations
 
-from ..errors import CplError
+from ..errors import CplError, nul_used
 from .context import SystemContext
 from .controller import PhysAxis
 
@@ -20,7 +20,7 @@ def ctl(rt: SystemContext):
 
 def nul(v):
     if v is None:
-        raise TypeError("NUL")
+        raise nul_used()
     return v
 
 

@@ -19,7 +19,7 @@ import copy
 
 from ....diagnostics import UsageError
 from ....nc.probe import ProbeLatch, announce, programmed_end, stop_words
-from ..errors import CplError
+from ..errors import CplError, nul_used
 from .axes import kernel_index, resolve, to_unit
 from .context import SystemContext
 from .gfuncs import program_shift
@@ -82,7 +82,7 @@ def _physical(rt: SystemContext, sel):
     elif sel.__class__ is int:
         ax = c.axes.get(sel)
     elif sel is None:
-        raise TypeError("NUL")
+        raise nul_used()
     else:
         raise CplError("CPL032", f"axis selection {sel!r}")
     if ax is None:
