@@ -91,6 +91,16 @@ def test_a_value_beyond_its_range_is_an_error(run, text, code):
     assert e["code"] == code and e["line"] in (2, 3), e
 
 
+@pytest.mark.parametrize("text, detail", [
+    ('10 R = SD(1, "ABC", 1)', "G group 'ABC'"),  # SD(1,g,...): the G group is a number (manual L2196-2218)
+    ('10 FIL("ABC", 1, 1, 1)', "x = 'ABC'"),  # FIL(x,y,...): a coordinate is a number
+])
+def test_a_text_where_a_number_is_needed_is_invalid_parameter(run, text, detail):
+    """These used to fail inside ncvm's helpers with a Python TypeError/ValueError (read as CPL020/CPL029)."""
+    e = error_of(run, text + "\nN20 M30\n")
+    assert (e["code"], e["line"]) == ("CPL023", 1) and detail in e["message"], e
+
+
 # -- ncvm's own faults ----------------------------------------------------------------------------------
 PROGRAM = "10 X = 1.5\nN20 G1 X[X] Y0 F1000\n30 Y = TAN(X)\n40 WAIT\nN50 G1 X20 M3 S1000\nN60 M30\n"
 

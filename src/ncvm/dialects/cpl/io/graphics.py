@@ -348,7 +348,7 @@ class Graphics:
         fill_rgb = np.array(self.rgb(self._code(fill, "fill color")), dtype=np.uint8)
         border = np.array(self.rgb(self._code(fill if contour is None else contour, "contour color")),
                           dtype=np.uint8)
-        px, py = self.to_pixel(float(x), float(y))
+        px, py = self.to_pixel(_number(x, "x"), _number(y, "y"))
         sx, srow = int(round(px)), int(round(GRAPH_TOP - py))
         x0, top, x1, bottom = self._window_rows()
         if not (x0 <= sx <= x1 and top <= srow <= bottom):

@@ -81,10 +81,13 @@ def f_sd(rt: SystemContext, group, i1=None, i2=None, i3=None):
     if group == 1:
         if i2 not in (1, 2):
             raise CplError("CPL040" if i2 == 3 else "CPL023", "SD(1,g,1|2): 3 (power-on state) is not available")
+        g = nul(i1)
+        if g.__class__ is not int and g.__class__ is not float:
+            raise CplError("CPL023", f"G group {g!r}: 1..48")
         # 1 = active (executed), 2 = last programmed (prepared), L2218
         if i2 == 1:
-            return g_of_group(rt.kernel, nul(i1), c.g_active)
-        return g_of_group(rt.prepared_kernel(), nul(i1), c.g_programmed)
+            return g_of_group(rt.kernel, g, c.g_active)
+        return g_of_group(rt.prepared_kernel(), g, c.g_programmed)
     if group == 2 or group == 202:
         key = {1: "feed", 3: "spindle", 4: "spindle2"}.get(i1 if group == 2 else {1: 3, 2: 4}.get(i1))
         if key is None:
