@@ -147,6 +147,19 @@ def test_a_python_error_inside_ncvm_is_never_the_programs_error(tmp_path, monkey
     assert type(raised.value).__name__ == kind
 
 
+def test_recursion_inside_ncvm_is_not_the_programs_nesting(tmp_path, monkeypatch):
+    """CPL stops the program's own nesting at the CALL (CPL006/CPL007): Python's recursion limit reached
+    inside ncvm is an internal error, not CPL007 or RUN003 about the program."""
+    def endless(*args, **kwargs):
+        return endless(*args, **kwargs)
+
+    monkeypatch.setattr("ncvm.dialects.cpl.builtins._num", endless)
+    (tmp_path / "p.cpl").write_text(PROGRAM)
+    with pytest.raises(RuntimeError, match="recursion limit was reached inside ncvm"):
+        result, _ = run(tmp_path / "p.cpl", options=RunOptions(state_dir=tmp_path / ".ncvm"))
+        pytest.fail(f"reported as the program's error: {result.get('error')}")
+
+
 SITECUSTOMIZE = textwrap.dedent('''
     import importlib, math, os
     module, owner, name, kind = os.environ["NCVM_TEST_BUG"].split(":")

@@ -300,10 +300,10 @@ class CplRuntime:
             code, detail = e.code, e.detail
         elif isinstance(e, CplRuntimeError):
             code, detail = e.code, ""
-        elif isinstance(e, RecursionError):
-            code, detail = "CPL007", ""
         elif isinstance(e, MemoryError):  # the run's memory limit (runtime.memory), reported where it was reached
             code, detail = "RUN006", ""
+        elif isinstance(e, RecursionError):  # CPL006/CPL007 stop the program's own nesting at the CALL
+            raise RuntimeError(f"Python's recursion limit was reached inside ncvm ({e})") from e
         else:
             found = program_error(e, sources)
             if found is None:

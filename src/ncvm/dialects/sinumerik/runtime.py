@@ -34,7 +34,7 @@ from ...nc.planner import STOP_END
 from ...nc.profiles.sinumerik8xx import SINUMERIK8XX
 from ...nc.spindle import SINUMERIK_GEARS, Gearbox
 from ...runtime.buffer import BlockBuffer
-from ...runtime.locate import generated_frames
+from ...runtime.locate import generated_frames, raised_by_generated
 from . import feeds
 from .atcodes import AT_CODES
 from .cycles import Cycles
@@ -361,6 +361,8 @@ class Channel:
             self._locate(f, unit)
             raise f from None
         except (ZeroDivisionError, ValueError, OverflowError) as e:
+            if not raised_by_generated(e.__traceback__, {unit.source.filename: unit.source}):
+                raise  # raised inside ncvm (its helpers raise Cl800Error for the program's faults): an internal error
             text = "division by zero" if isinstance(e, ZeroDivisionError) else f"arithmetic error ({e})"
             f = RuntimeFault("CL800", f"CL 800 error: {text}")
             self._locate(f, unit)
