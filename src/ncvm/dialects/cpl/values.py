@@ -2,8 +2,8 @@
 
 Character fields and MID$ views are the chapter-5 holders of :mod:`.io.strings`.
 
-NUL is Python ``None``: arithmetic on it raises TypeError, which the runtime reports as VARIABLE NOT
-ASSIGNED. REAL values are Python floats rounded to binary32 when stored (CPL manual §2.4.3, L650-737).
+NUL is Python ``None``: generated arithmetic on it raises TypeError, which the runtime reports as VARIABLE
+NOT ASSIGNED (pyfaults); the helpers here raise that error themselves (errors.nul_used). REAL values are Python floats rounded to binary32 when stored (CPL manual §2.4.3, L650-737).
 """
 
 from __future__ import annotations
