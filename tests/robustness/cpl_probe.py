@@ -1,7 +1,8 @@
 """Run generated CPL programs and sort out faults that come from inside ncvm rather than from the program.
 
-CplRuntime.to_fault turns Python exceptions into CPL errors (TypeError into CPL020, IndexError into CPL031, ...).
-A fault is genuine when the exception was raised by the generated code itself or by a deliberate ``raise`` in
+CplRuntime.to_fault turns a Python exception into a CPL error (TypeError on a NUL into CPL020, IndexError into
+CPL031, ...) only when the generated code raised it itself (pyfaults); this probe checks that independently. A
+fault is genuine when the exception was raised by the generated code itself or by a deliberate ``raise`` in
 the dialect's library; an exception raised by any other library line is an internal error in disguise.
 """
 
@@ -30,7 +31,7 @@ def suspect_origin(rt, e: BaseException) -> str | None:
     if not tb:
         return None
     fs = tb[-1]
-    if isinstance(e, (TypeError, AttributeError)) and "NoneType" not in str(e) and str(e) != "NUL":
+    if isinstance(e, (TypeError, AttributeError)) and "NoneType" not in str(e):
         # not NUL in an operation: a call that does not fit its function (wrong argument count, ...)
         return f"{type(e).__name__}: {e} at {fs.filename}:{fs.lineno}"
     if fs.filename in rt._codes:
