@@ -101,6 +101,33 @@ def test_a_text_where_a_number_is_needed_is_invalid_parameter(run, text, detail)
     assert (e["code"], e["line"]) == ("CPL023", 1) and detail in e["message"], e
 
 
+@pytest.mark.parametrize("statement, code", [
+    ("r = z + 1", "CPL020"), ("r = z < 1", "CPL020"), ("r = -z", "CPL020"), ("r = abs(z)", "CPL020"),
+    ("r = int(z)", "CPL020"), ("r = math.sqrt(z)", "CPL020"), ("r = z[1]", "CPL035"), ("z[1] = 2", "CPL035"),
+    ("r = z.row(1)", "CPL035"), ("r = f[4]", "CPL031"), ("f[4] = 1", "CPL031"), ("r = 1 / 0.0", "CPL028"),
+    ("r = math.sqrt(-1.0)", "CPL029"),
+    # generated code that is itself wrong: ncvm's bug, whatever the program did
+    ("r = z()", None), ("r = 'A' + 1", None), ("r = (1,)[3]", None), ("r = {}['X']", None), ("r = f.row", None),
+    ("r = len(1)", None),
+])
+def test_only_the_generated_statements_own_operation_is_the_programs_error(statement, code):
+    """pyfaults.program_error on errors raised by code standing for a generated statement, and on the same
+    errors raised by code of ncvm's (always None: an internal error). A tuple index, a call, a KeyError in
+    generated code is a bug of the code generator, not the program's."""
+    from ncvm.dialects.cpl.pyfaults import program_error
+
+    def raised(filename: str) -> BaseException:
+        try:
+            exec(compile(statement, filename, "exec"), {"math": math, "z": None, "f": [0.0] * 4})
+        except Exception as e:  # noqa: BLE001 - the error to sort out
+            return e
+        pytest.fail("no error")
+
+    found = program_error(raised("<generated p.cpl>"), {"<generated p.cpl>": None})
+    assert (found[0] if found else None) == code
+    assert program_error(raised("ncvm/nc/kernel.py"), {"<generated p.cpl>": None}) is None
+
+
 # -- ncvm's own faults ----------------------------------------------------------------------------------
 PROGRAM = "10 X = 1.5\nN20 G1 X[X] Y0 F1000\n30 Y = TAN(X)\n40 WAIT\nN50 G1 X20 M3 S1000\nN60 M30\n"
 

@@ -27,7 +27,7 @@ def program_error(e: BaseException, sources: Mapping) -> tuple[str, str] | None:
         return None
     if isinstance(e, ZeroDivisionError):
         return "CPL028", ""
-    if isinstance(e, IndexError):  # a subscript of a DIMensioned field (a list) beyond its size
+    if isinstance(e, IndexError) and str(e).startswith("list "):  # a DIMensioned field (a list) beyond its size
         return "CPL031", ""
     if isinstance(e, OverflowError):
         return "CPL042", "number too large"  # a float result beyond the DOUBLE range
