@@ -9,10 +9,14 @@ ended normally and the writer could say all of it, else :class:`TranslationRefus
 from __future__ import annotations
 
 import dataclasses
+import shutil
+import tempfile
+from contextlib import contextmanager
 from dataclasses import dataclass
 from pathlib import Path
 
 from ..machine.model import Machine
+from ..machine.state import StateError
 from ..runtime.session import RunOptions
 from .output import TranslationFile, TranslationRefused
 from .targets import TARGETS, Target
@@ -42,6 +46,13 @@ def translate(program: str | Path, out: str | Path, target: str = "linuxcnc", fr
 
     options = dataclasses.replace(options or RunOptions(), keyboard=False, echo=False, gcode=None, scratch_state=True)
     m = _past_programmed_stops(api.machine_for(program, machine, options.state_dir))
+    with _scratch_files(m, options.state_dir) as m:
+        return _translate(program, out, target, frame, source_comments, dialect, m, options)
+
+
+def _translate(program, out, target, frame, source_comments, dialect, m: Machine, options: RunOptions) -> Translated:
+    from .. import api
+
     file = TranslationFile(out, TARGETS[target], Path(program).name, m.name, frame, source_comments,
                            scenario_given=bool(options.scenario or m.scenario))
     try:
@@ -66,3 +77,22 @@ def _past_programmed_stops(m: Machine) -> Machine:
     if not isinstance(sec, dict) or sec.get("m0") != "stop":
         return m
     return dataclasses.replace(m, sections={**m.sections, "sin800": {**sec, "m0": "continue"}})
+
+
+@contextmanager
+def _scratch_files(m: Machine, state_dir: Path):
+    """The machine with a scratch copy of its file root where that lies in the state directory (the built-in
+    machine keeps the controller's files there): files the program writes end with the translation, which
+    leaves the state directory as it found it (docs/translate.md)."""
+    root = Path(m.file_root)
+    if not root.resolve().is_relative_to(Path(state_dir).resolve()):
+        yield m
+        return
+    with tempfile.TemporaryDirectory(prefix="ncvm-files-") as folder:
+        copy = Path(folder) / root.name
+        try:
+            if root.is_dir():
+                shutil.copytree(root, copy, symlinks=True)
+        except (OSError, shutil.Error) as e:
+            raise StateError(f"cannot read the controller's files in {root} ({e}); give another --state") from None
+        yield dataclasses.replace(m, file_root=copy)
