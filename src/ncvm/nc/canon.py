@@ -186,10 +186,11 @@ class CanonSink:
         the moves that follow are in ``frame``; their positions stay machine coordinates. ``whole_run``: the
         frame holds for every move of the run, those before it too (a rw_SymPas card tells it at the end)."""
 
-    def frozen(self, what: str, src: Src | None, scenario: bool = False) -> None:
+    def frozen(self, what: str, src: Src | None, scenario: bool = False, warn: bool = False) -> None:
         """The run read an input from outside the program (``what`` names it: a key, a PLC input, a scenario
         event, a measured value, a random number): the path from here on may depend on it. ``scenario``: a
-        machine input that only a scenario (``--scenario``) says; without one the run took its rest value."""
+        machine input that only a scenario (``--scenario``) says; without one the run took its rest value.
+        ``warn``: the path left the program's there (a move the machine's limit cut short): said as a warning too."""
 
     def tapping(self, g: int, src: Src) -> None:
         """The moves that follow, in and out of one hole, are tapping cycle ``g`` (G74/G84): the tap is fed in

@@ -15,6 +15,7 @@ from contextlib import contextmanager
 from dataclasses import dataclass
 from pathlib import Path
 
+from ..diagnostics import Diagnostic
 from ..machine.model import Machine
 from ..machine.state import StateError
 from ..runtime.session import RunOptions
@@ -36,6 +37,8 @@ class Translated:
     probes: int
     tools: dict[int, float]  # tool offset number -> the (last) length the simulation used
     warnings: list[str] = dataclasses.field(default_factory=list)  # the run's limit violations, as run says them
+    #: TRN003 at its block: where the file does what the simulated control did not, or what its machine made of it
+    diagnostics: list[Diagnostic] = dataclasses.field(default_factory=list)
 
 
 def translate(program: str | Path, out: str | Path, target: str = "linuxcnc", frame: str = "work",
@@ -45,16 +48,19 @@ def translate(program: str | Path, out: str | Path, target: str = "linuxcnc", fr
     from .. import api  # the API puts runs together and writes ``run --gcode`` through this package
 
     options = dataclasses.replace(options or RunOptions(), keyboard=False, echo=False, gcode=None, scratch_state=True)
-    m = _past_programmed_stops(api.machine_for(program, machine, options.state_dir))
+    given = api.machine_for(program, machine, options.state_dir)
+    m = _past_programmed_stops(given)
+    stops_passed = m is not given
     with _scratch_files(m, options.state_dir) as m:
-        return _translate(program, out, target, frame, source_comments, dialect, m, options)
+        return _translate(program, out, target, frame, source_comments, dialect, m, options, stops_passed)
 
 
-def _translate(program, out, target, frame, source_comments, dialect, m: Machine, options: RunOptions) -> Translated:
+def _translate(program, out, target, frame, source_comments, dialect, m: Machine, options: RunOptions,
+               stops_passed: bool) -> Translated:
     from .. import api
 
     file = TranslationFile(out, TARGETS[target], Path(program).name, m.name, frame, source_comments,
-                           scenario_given=bool(options.scenario or m.scenario))
+                           scenario_given=bool(options.scenario or m.scenario), stops_passed=stops_passed)
     try:
         options.extra_sinks = [*options.extra_sinks, file.writer]
         result = api.run_program(program, dialect, m, options)
@@ -66,7 +72,8 @@ def _translate(program, out, target, frame, source_comments, dialect, m: Machine
         raise TranslationRefused(refusal)
     w = file.writer
     return Translated(Path(out), file.target, w.lines, w.moves, w.setup.frozen, w.setup.probes,
-                      {n: lengths[-1] for (_, n, _), lengths in w.setup.tools.items()}, list(result.limit_violations))
+                      {n: lengths[-1] for (_, n, _), lengths in w.setup.tools.items()}, list(result.limit_violations),
+                      list(w.warnings))
 
 
 def _past_programmed_stops(m: Machine) -> Machine:
