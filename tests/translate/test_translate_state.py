@@ -113,3 +113,27 @@ def test_a_translation_while_a_run_holds_the_state_is_refused(tmp_path):
         os.close(fd)
     assert r.returncode == 2 and "in use by another run" in r.stderr, r.stderr
     assert not (tmp_path / "out.ngc").exists()
+
+
+# Central R900-R999 left by an earlier run (R900 = 10 after one run of COUNTER) are input from outside the
+# program where the program reads them, and only there: the FROZEN mark names the block that read one.
+CENTRAL_READS = {
+    "count.mpf": (COUNTER, ["FROZEN: central R parameter R900=10 left by earlier runs at count.mpf:3"]),
+    "never.mpf": ("%MPF6\nN10 G17 G71 G90 G54 G94\nN20 G0 X10 Y0 Z50\nN30 M30\n", []),
+    "own.mpf": ("%MPF6\nN10 G17 G71 G90 G54 G94\nN20 R900=3\nN30 G0 X=R900 Y0 Z50\nN40 M30\n", []),
+    "pointer.mpf": ("%MPF6\nN10 G17 G71 G90 G54 G94\nN20 R5=900\nN30 @201 R6 P5\nN40 G0 X=R6 Y0 Z50\nN50 M30\n",
+                    ["FROZEN: central R parameter R900=10 left by earlier runs at pointer.mpf:4"]),
+}
+
+
+def test_central_r_is_marked_where_the_program_reads_it(tmp_path):
+    (tmp_path / "machine.toml").write_text(machine("mill"))
+    (tmp_path / "count.mpf").write_text(COUNTER)
+    assert ncvm(tmp_path, "run", "count.mpf", "-m", "machine.toml", "--state", "st").returncode == 0
+    for name, (text, marks) in CENTRAL_READS.items():
+        (tmp_path / name).write_text(text)
+        r = ncvm(tmp_path, "translate", name, "-m", "machine.toml", "--state", "st", "-o", "out.ngc")
+        assert r.returncode == 0, r.stderr
+        out = (tmp_path / "out.ngc").read_text()
+        found = [line[1:].split(";")[0] for line in out.splitlines() if line.startswith("(FROZEN")]
+        assert found == marks, f"{name}:\n{out}"
