@@ -231,6 +231,11 @@ class CanonSink:
     def spindle(self, speed: float, direction: int, src: Src) -> None:
         """Spindle: direction 1 clockwise (M3), -1 counter-clockwise (M4), 0 stopped (M5)."""
 
+    def css_speed(self, speed: float, wanted: float, limit: float, src: Src | None) -> None:
+        """G96 constant cutting speed gives the spindle a new ``speed`` (rev/min, told by :meth:`spindle` when it
+        turns): the cutting speed at the radius here asks for ``wanted``, the spindle speed limit in force (G96 D,
+        G92 S, the gear stage's maximum) is ``limit`` (inf: none), and ``speed`` is the smaller."""
+
     def coolant(self, mode: str, src: Src) -> None:
         """Coolant: "flood", "mist" or "off"."""
 
@@ -259,7 +264,7 @@ class CanonSink:
 
 _METHODS = ("begin", "rapid", "feed", "arc", "thread", "move_batch", "timing", "frame", "frozen", "channel", "programmed", "tapping", "dwell",
             "feed_per_rev", "radius_compensation", "homing",
-            "tool_change", "tool_select", "tool_offset", "spindle", "coolant", "aux", "probe", "message", "stop", "program_end", "end")
+            "tool_change", "tool_select", "tool_offset", "spindle", "css_speed", "coolant", "aux", "probe", "message", "stop", "program_end", "end")
 
 
 class Canon:

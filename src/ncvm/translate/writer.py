@@ -119,6 +119,7 @@ class Translation(CanonSink):
         self._per_rev: float | None = None  # G95: the F in mm per revolution
         self._homing: tuple[int, ...] | None = None  # the axes the next move homes
         self._programmed: tuple[set[int], Src] | None = None  # the axis words of the next move's block
+        self._css: tuple[float, float, float] | None = None  # G96's last speed: (speed, wanted, limit)
 
     # -- output ----------------------------------------------------------
     def refuse(self, src: Src | None, message: str) -> None:
@@ -621,6 +622,28 @@ class Translation(CanonSink):
         self._note(f"S{number(speed)} rounded to S{round(speed)}: this control's S is an integer", src)
         return str(round(speed))
 
+    def css_speed(self, speed, wanted, limit, src):
+        self._css = (speed, wanted, limit)
+
+    def _css_checked(self, speed: float, src: Src) -> bool:
+        """A G96 speed the spindle turns at: refused where no limit bounded it (the new control would get the
+        radius's speed, S63662 at 0.5 mm, where the old machine's maximum held it); marked where the limit cut
+        it (the S word is the speed the spindle turned, not the one the cutting speed asked for)."""
+        if self._css is None or self._css[0] != speed:
+            return True
+        _, wanted, limit = self._css
+        if math.isinf(limit):
+            self.refuse(src, f"G96 constant cutting speed with no spindle speed limit: the run's S{number(speed)} "
+                             "here follows the radius without bound (towards the centre the speed grows past any "
+                             "spindle's; the old machine's maximum, which held it there, is not in the machine file); "
+                             "program the limit (DIN: G96 D<max>; SINUMERIK: G92 S<max> or [sin800] gears)")
+            return False
+        if wanted > limit * (1 + 1e-9):
+            self._note(f"S{number(speed)}: the spindle speed limit of the simulated control (G96 D, G92 S or the "
+                       f"gear stage's maximum) held the spindle there; the cutting speed asked for "
+                       f"S{number(wanted)}", src)
+        return True
+
     def spindle(self, speed, direction, src):
         self._restart = None  # the program's own spindle word after a tool change: written once
         if direction == 0:
@@ -632,6 +655,8 @@ class Translation(CanonSink):
                 self._after.append(("M5", src))
             return
         self._flush_after()
+        if not self._css_checked(speed, src):
+            return
         turning = f"{'M3' if direction > 0 else 'M4'} S{self._speed(speed, src)}"
         if turning == self._turning and self.lines == self._turning_line:
             return  # the run says it again (its S word, then its M3): written once
