@@ -281,7 +281,8 @@ def run_program(path: str | Path, dialect: str | None = None, machine: Machine |
             # (a copy: a Machine the caller passes again for the next run keeps its own scenario)
             m = dataclasses.replace(m, scenario=sorted([*m.scenario, *load_scenario(options.scenario, m.axis_names)],
                                                        key=lambda e: e.time))
-        with StateLock(options.state_dir):  # the controller's memory: one run at a time, refused at once
+        # the controller's memory: one run at a time, refused at once (a translation reads it, writes nothing)
+        with StateLock(options.state_dir, reader=options.scratch_state):
             sinks = run_sinks(m, options, Path(path).name)
             session = Session(m, options, dialect=d, sinks=sinks)
             for sink in sinks.canon:  # the trace and the moves table name the user's source lines (a CL 800 .cl8)

@@ -529,6 +529,8 @@ def translate_cmd(program, out, target, frame, source_comments, dialect, machine
         sys.exit(EXIT_FAULT)
     for v in done.warnings:  # the run's soft limits: the translation makes the same moves
         say(f"warning: {v}")
+    for text in render_all(done.diagnostics):  # where the file differs from the simulated run (TRN003)
+        say(text)
     click.echo(f"ncvm: wrote {done.path} for {done.target.title}: {done.lines} lines, {done.moves} moves, "
                f"{done.probes} probe moves, {done.frozen} frozen decisions", err=True)
 

@@ -177,6 +177,9 @@ NCVM_CODES = {
               "plane, an axis, a zero offset); no output written",
     "TRN002": "translation refused: the run did not end normally, or needs input it was not given; no output "
               "written",
+    "TRN003": "translation written, with a warning: at this block the written program does what the simulated "
+              "control did not (it goes on past an M0 the simulated run stopped at), or what the simulated "
+              "machine made of the program (a move its limit cut short)",
     "IO001": "file access outside the controller's file root",
     "NEST001": "statements or expressions nested deeper than ncvm reads where the manual sets no limit "
                "(64 levels, 16 loops; docs/decisions.md)",

@@ -49,10 +49,17 @@ def machine(name: str, extra: str = "") -> str:
     return f'[machine]\nname = "{name}"\n{axes}{extra}'
 
 
-def translated(tmp_path, machine_text: str, program: str, name: str, target: str) -> str:
-    """The text ``ncvm translate`` writes for ``program`` (file ``name``) on ``machine_text`` to ``target``."""
+def translation(tmp_path, machine_text: str, program: str, name: str, target: str = "linuxcnc",
+                *args: str) -> tuple[int, str, str]:
+    """``ncvm translate`` of ``program`` (file ``name``) on ``machine_text`` to ``target`` (and ``args``):
+    (exit code, the text written or "", stderr)."""
     (tmp_path / "machine.toml").write_text(machine_text)
-    rc, out, err = translate(tmp_path, program, name, "--target", target, "-m", "machine.toml",
-                             out_name=f"out.{target}")
+    return translate(tmp_path, program, name, "--target", target, "-m", "machine.toml", *args,
+                     out_name=f"out.{target}")
+
+
+def translated(tmp_path, machine_text: str, program: str, name: str, target: str = "linuxcnc", *args: str) -> str:
+    """The text ``ncvm translate`` writes for ``program`` (file ``name``) on ``machine_text`` to ``target``."""
+    rc, out, err = translation(tmp_path, machine_text, program, name, target, *args)
     assert rc == 0, err
     return out

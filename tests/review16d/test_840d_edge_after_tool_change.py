@@ -18,8 +18,8 @@ from __future__ import annotations
 
 import re
 
-from tests.review16c.helpers import code_lines, translate
-from tests.review16d.helpers import machine
+from tests.review16c.helpers import code_lines
+from tests.review16d.helpers import machine, translated
 
 MILL = machine("mill", """
 [[tool]]
@@ -54,14 +54,6 @@ M30
 """
 
 
-def _840d(tmp_path, source, name):
-    (tmp_path / "machine.toml").write_text(MILL)
-    rc, out, err = translate(tmp_path, source, name, "--target", "sinumerik840d", "-m", "machine.toml",
-                             out_name="out.mpf")
-    assert rc == 0, err
-    return out
-
-
 def _d_before_first_move_after(lines, tool_change):
     i = lines.index(tool_change)
     for line in lines[i + 1:]:
@@ -74,14 +66,14 @@ def _d_before_first_move_after(lines, tool_change):
 
 def test_no_length_is_d0_after_the_tool_change(tmp_path):
     """No tool length in the run: `D0` after `T1 M6`, before the first move."""
-    lines = code_lines(_840d(tmp_path, NO_LENGTH, "nolen.din"))
+    lines = code_lines(translated(tmp_path, MILL, NO_LENGTH, "nolen.din", "sinumerik840d"))
     assert _d_before_first_move_after(lines, "T1 M6") == "0", (
         f"T1 M6 without D0: the 840D applies T1's default edge, the run applied no length:\n{lines}")
 
 
 def test_length_kept_through_the_tool_change_is_an_edge_of_the_new_tool(tmp_path):
     """The 40 mm the run kept through `T3 M6` is an edge of T3 in the output, listed in the header."""
-    out = _840d(tmp_path, H1_KEPT, "kept.din")
+    out = translated(tmp_path, MILL, H1_KEPT, "kept.din", "sinumerik840d")
     lines = code_lines(out)
     d = _d_before_first_move_after(lines, "T3 M6")
     assert d is not None and d != "0", f"T3 M6 and no D: the 840D moves T3 with its own default edge:\n{out}"
@@ -92,10 +84,7 @@ def test_frame_machine_keeps_d0_after_each_tool_change(tmp_path):
     """`--frame machine` includes every tool length in the positions and selects `G500 D0`; the `T1 M6` and
     `T3 M6` after it activate each tool's default edge on the 840D, adding the length a second time. A `D0`
     must follow each tool change before the next move."""
-    (tmp_path / "machine.toml").write_text(MILL)
-    rc, out, err = translate(tmp_path, H1_KEPT, "kept.din", "--target", "sinumerik840d", "--frame", "machine",
-                             "-m", "machine.toml", out_name="out.mpf")
-    assert rc == 0, err
+    out = translated(tmp_path, MILL, H1_KEPT, "kept.din", "sinumerik840d", "--frame", "machine")
     lines = code_lines(out)
     for change in ("T1 M6", "T3 M6"):
         assert _d_before_first_move_after(lines, change) == "0", f"no D0 after {change}:\n{out}"

@@ -15,8 +15,8 @@ import re
 
 import pytest
 
-from tests.review16c.helpers import code_lines, ncvm, translate
-from tests.review16d.helpers import machine
+from tests.review16c.helpers import code_lines, ncvm
+from tests.review16d.helpers import machine, translated
 
 MACHINE = machine("4-axis mill", """
 [[axis]]
@@ -50,9 +50,6 @@ def test_run_keeps_degrees(tmp_path, name):
 @pytest.mark.parametrize("name", sorted(PROGRAMS))
 def test_translation_keeps_degrees(tmp_path, name, target):
     """Every target: `A90` and `A180` as programmed, never `A2286`."""
-    (tmp_path / "machine.toml").write_text(MACHINE)
-    rc, out, err = translate(tmp_path, PROGRAMS[name], name, "--target", target, "-m", "machine.toml",
-                             out_name=f"out.{target}")
-    assert rc == 0, err
+    out = translated(tmp_path, MACHINE, PROGRAMS[name], name, target)
     a_words = [float(v) for line in code_lines(out) for v in re.findall(r"\bA(-?[\d.]+)", line)]
     assert a_words == [90.0, 180.0], f"rotary words {a_words}:\n{out}"

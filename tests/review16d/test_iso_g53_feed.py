@@ -12,8 +12,8 @@ from __future__ import annotations
 
 import re
 
-from tests.review16c.helpers import code_lines, translate
-from tests.review16d.helpers import machine
+from tests.review16c.helpers import code_lines
+from tests.review16d.helpers import machine, translation
 
 MACHINE = machine("mill", """
 [offsets]
@@ -29,9 +29,7 @@ M30
 
 
 def test_iso_g53_feed_is_not_a_rapid(tmp_path):
-    (tmp_path / "machine.toml").write_text(MACHINE)
-    rc, out, err = translate(tmp_path, PROGRAM, "g53.din", "--target", "iso", "-m", "machine.toml",
-                             out_name="out.iso")
+    rc, out, err = translation(tmp_path, MACHINE, PROGRAM, "g53.din", "iso")
     if rc == 1:
         assert "TRN001" in err and "g53.din:3" in err, err
         return

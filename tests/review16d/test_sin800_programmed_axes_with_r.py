@@ -13,8 +13,8 @@ from __future__ import annotations
 
 import pytest
 
-from tests.review16c.helpers import code_lines, translate
-from tests.review16d.helpers import machine
+from tests.review16c.helpers import code_lines
+from tests.review16d.helpers import machine, translated
 
 MACHINE = machine("mill")
 
@@ -28,10 +28,7 @@ BLOCKS = {
 @pytest.mark.parametrize("target", ["linuxcnc", "sinumerik840d", "iso"])
 @pytest.mark.parametrize("kind", sorted(BLOCKS))
 def test_programmed_y0_is_written(tmp_path, kind, target):
-    (tmp_path / "machine.toml").write_text(MACHINE)
     program = f"%MPF6\nN10 G17 G71 G90 G54 G94\nN20 R1=20\n{BLOCKS[kind]}\nN40 M30\n"
-    rc, out, err = translate(tmp_path, program, "p.mpf", "--target", target, "-m", "machine.toml",
-                             out_name=f"out.{target}")
-    assert rc == 0, err
+    out = translated(tmp_path, MACHINE, program, "p.mpf", target)
     moves = [line for line in code_lines(out) if line.startswith("G0")]
     assert len(moves) == 1 and " Y0" in moves[0], f"{kind}: the block's Y0 is not written: {moves}"

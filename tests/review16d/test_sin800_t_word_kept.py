@@ -14,8 +14,7 @@ import re
 
 import pytest
 
-from tests.review16c.helpers import translate
-from tests.review16d.helpers import machine
+from tests.review16d.helpers import machine, translated
 
 MACHINE = machine("mill", """
 [[tool]]
@@ -36,8 +35,5 @@ N60 M30
 
 @pytest.mark.parametrize("target", ["linuxcnc", "sinumerik840d", "iso"])
 def test_t1_is_in_the_output(tmp_path, target):
-    (tmp_path / "machine.toml").write_text(MACHINE)
-    rc, out, err = translate(tmp_path, PROGRAM, "t.mpf", "--target", target, "-m", "machine.toml",
-                             out_name=f"out.{target}")
-    assert rc == 0, err
+    out = translated(tmp_path, MACHINE, PROGRAM, "t.mpf", target)
     assert re.search(r"\bT1\b", out), f"the program's T1 is nowhere in the output:\n{out}"

@@ -11,8 +11,8 @@ pressed, the M0 written) or refuse; never write the part before the stop as the 
 
 from __future__ import annotations
 
-from tests.review16c.helpers import code_lines, translate
-from tests.review16d.helpers import machine
+from tests.review16c.helpers import code_lines
+from tests.review16d.helpers import machine, translation
 
 MACHINE = machine("mill", """
 [sin800]
@@ -31,8 +31,7 @@ N90 M30
 
 
 def test_stop_does_not_cut_the_program_short(tmp_path):
-    (tmp_path / "machine.toml").write_text(MACHINE)
-    rc, out, err = translate(tmp_path, PROGRAM, "m0.mpf", "-m", "machine.toml")
+    rc, out, err = translation(tmp_path, MACHINE, PROGRAM, "m0.mpf")
     if rc == 1:  # a refusal is safe: it must say why and leave no file
         assert "M0" in err and out == "", err
         return

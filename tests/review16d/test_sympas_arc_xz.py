@@ -11,8 +11,8 @@ from __future__ import annotations
 
 import re
 
-from tests.review16c.helpers import code_lines, needs_rs274, rs274_canon, trace_work, translate
-from tests.review16d.helpers import machine
+from tests.review16c.helpers import code_lines, needs_rs274, rs274_canon, trace_work
+from tests.review16d.helpers import machine, translated
 
 MACHINE = machine("gantry")
 
@@ -25,15 +25,8 @@ end.
 """
 
 
-def _translated(tmp_path):
-    (tmp_path / "machine.toml").write_text(MACHINE)
-    rc, out, err = translate(tmp_path, PROGRAM, "xz.sap", "-m", "machine.toml")
-    assert rc == 0, f"the X-Z circle is refused:\n{err}"
-    return out
-
-
 def test_xz_circle_is_a_g18_arc(tmp_path):
-    lines = code_lines(_translated(tmp_path))
+    lines = code_lines(translated(tmp_path, MACHINE, PROGRAM, "xz.sap"))
     arc = [i for i, line in enumerate(lines) if re.match(r"G[23]\b", line)]
     assert len(arc) == 1 and "G18" in lines[:arc[0]], lines
     assert lines[arc[0]].startswith("G2 "), f"counter-clockwise from X towards Z is G2 in G18: {lines[arc[0]]}"
@@ -41,7 +34,7 @@ def test_xz_circle_is_a_g18_arc(tmp_path):
 
 @needs_rs274
 def test_rs274_reads_the_same_quarter_circle(tmp_path):
-    out = _translated(tmp_path)
+    out = translated(tmp_path, MACHINE, PROGRAM, "xz.sap")
     rc, canon = rs274_canon(tmp_path, out)
     assert rc == 0, canon
     arcs = re.findall(r"ARC_FEED\(([^)]*)\)", canon)

@@ -37,21 +37,17 @@ end.
 """
 
 
-def _out(tmp_path, target):
-    return translated(tmp_path, MACHINE, PROGRAM, "two.sap", target)
-
-
 @pytest.mark.parametrize("target", ["linuxcnc", "sinumerik840d", "iso"])
 def test_no_arc_ends_where_it_starts(tmp_path, target):
     """No `G2`/`G3` of the output returns to its start point: the program made no full circle."""
-    full = full_circles(_out(tmp_path, target))
+    full = full_circles(translated(tmp_path, MACHINE, PROGRAM, "two.sap", target))
     assert not full, f"{target}: full circles the run never made: {full}"
 
 
 @needs_rs274
 def test_rs274_sweeps_no_more_than_the_quarter_circle(tmp_path):
     """rs274's reading of the LinuxCNC output: the arcs it makes sweep at most the programmed 90 degrees."""
-    rc, canon = rs274_canon(tmp_path, _out(tmp_path, "linuxcnc"))
+    rc, canon = rs274_canon(tmp_path, translated(tmp_path, MACHINE, PROGRAM, "two.sap", "linuxcnc"))
     assert rc == 0, canon
     sweep = rs274_sweep(canon)
     assert sweep <= 90.001, f"rs274 sweeps {sweep:.1f} degrees of arc; the program turned 90"

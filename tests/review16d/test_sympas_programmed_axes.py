@@ -11,8 +11,8 @@ from __future__ import annotations
 
 import re
 
-from tests.review16c.helpers import code_lines, translate
-from tests.review16d.helpers import machine
+from tests.review16c.helpers import code_lines
+from tests.review16d.helpers import machine, translated
 
 MACHINE = machine("gantry")
 
@@ -26,9 +26,7 @@ end.
 
 
 def test_all_three_programmed_axes_are_written(tmp_path):
-    (tmp_path / "machine.toml").write_text(MACHINE)
-    rc, out, err = translate(tmp_path, PROGRAM, "p.sap", "-m", "machine.toml")
-    assert rc == 0, err
+    out = translated(tmp_path, MACHINE, PROGRAM, "p.sap")
     first = next(line for line in code_lines(out) if re.match(r"G[01]\b", line))
     assert re.search(r"\bX20\b", first) and re.search(r"\bY0\b", first) and re.search(r"\bZ0\b", first), (
         f"the first move programs A1 A2 A3, written as {first!r}:\n{out}")

@@ -29,19 +29,15 @@ N70 M30
 """
 
 
-def _out(tmp_path, target):
-    return translated(tmp_path, MACHINE, PROGRAM, "tiny.cpl", target)
-
-
 @pytest.mark.parametrize("target", ["linuxcnc", "sinumerik840d", "iso"])
 def test_tiny_arc_is_no_full_circle(tmp_path, target):
-    full = full_circles(_out(tmp_path, target))
+    full = full_circles(translated(tmp_path, MACHINE, PROGRAM, "tiny.cpl", target))
     assert not full, f"{target}: a 0.0000175 mm arc written as a full circle: {full}"
 
 
 @needs_rs274
 def test_rs274_sweeps_no_circle(tmp_path):
-    rc, canon = rs274_canon(tmp_path, _out(tmp_path, "linuxcnc"))
+    rc, canon = rs274_canon(tmp_path, translated(tmp_path, MACHINE, PROGRAM, "tiny.cpl", "linuxcnc"))
     assert rc == 0, canon
     sweep = rs274_sweep(canon)
     assert sweep < 1.0, f"rs274 turns {sweep:.1f} degrees where the run turned 0.0001"

@@ -13,8 +13,8 @@ from __future__ import annotations
 import json
 import re
 
-from tests.review16c.helpers import ncvm, translate
-from tests.review16d.helpers import machine
+from tests.review16c.helpers import ncvm
+from tests.review16d.helpers import machine, translation
 
 MACHINE = machine("mill", """
 [[tool]]
@@ -36,12 +36,6 @@ N90 M30
 """
 
 
-def _translation(tmp_path, target):
-    (tmp_path / "machine.toml").write_text(MACHINE)
-    return translate(tmp_path, PROGRAM, "tos.mpf", "--target", target, "-m", str(tmp_path / "machine.toml"),
-                     out_name=f"out.{target}")
-
-
 def test_the_simulation_ran_two_lengths(tmp_path):
     """The run itself: the second plunge stands 10 mm higher in the machine (D1 is 95.1 mm then)."""
     (tmp_path / "machine.toml").write_text(MACHINE)
@@ -55,7 +49,7 @@ def test_the_simulation_ran_two_lengths(tmp_path):
 def test_linuxcnc_h1_cannot_hold_both_lengths(tmp_path):
     """Refused (TRN001 at N60) or written with a length the new control applies: never `G43 H1` twice under
     a header that asks the user to set H1 to 85.1 and 95.1 at once."""
-    rc, out, err = _translation(tmp_path, "linuxcnc")
+    rc, out, err = translation(tmp_path, MACHINE, PROGRAM, "tos.mpf", "linuxcnc")
     if rc == 1:
         assert "TRN001" in err and "N60" in err, err
         assert out == ""
@@ -68,7 +62,7 @@ def test_linuxcnc_h1_cannot_hold_both_lengths(tmp_path):
 
 def test_840d_d1_cannot_hold_both_lengths(tmp_path):
     """The same on the 840D: edge D1 of T1 holds one length."""
-    rc, out, err = _translation(tmp_path, "sinumerik840d")
+    rc, out, err = translation(tmp_path, MACHINE, PROGRAM, "tos.mpf", "sinumerik840d")
     if rc == 1:
         assert "TRN001" in err, err
         return

@@ -15,8 +15,8 @@ import re
 
 import pytest
 
-from tests.review16c.helpers import code_lines, translate
-from tests.review16d.helpers import machine
+from tests.review16c.helpers import code_lines
+from tests.review16d.helpers import machine, translated, translation
 
 MILL = machine("mill", """
 [[tool]]
@@ -51,18 +51,10 @@ N60 M30
 DIN_G44 = DIN_H3.replace("G43 H3", "G44 H1")
 
 
-def _out(tmp_path, source, name, target):
-    (tmp_path / "machine.toml").write_text(MILL)
-    rc, out, err = translate(tmp_path, source, name, "--target", target, "-m", str(tmp_path / "machine.toml"),
-                             out_name=f"out.{target}")
-    assert rc == 0, err
-    return out
-
-
 @pytest.mark.parametrize("target", ["linuxcnc", "iso"])
 def test_din_g43_h3_with_tool_1_stays_h3(tmp_path, target):
     """`T1 M6` then `G43 H3`: the output applies H3, as programmed (the length is tool 3's 65.5 mm)."""
-    out = _out(tmp_path, DIN_H3, "h3.din", target)
+    out = translated(tmp_path, MILL, DIN_H3, "h3.din", target)
     words = [w for line in code_lines(out) for w in re.findall(r"H\d+", line)]
     assert words == ["H3"], f"the program's H3 is written as {words}:\n{out}"
 
@@ -71,7 +63,7 @@ def test_din_g43_h3_with_tool_1_stays_h3(tmp_path, target):
 def test_cpl_h2_stays_h2(tmp_path, target):
     """CPL `T1 M6 H2` (compensation group 2, 75 mm): the output applies H2, not H1 with a header asking tool
     1's entry to hold 75 mm."""
-    out = _out(tmp_path, CPL_H2, "h2.cpl", target)
+    out = translated(tmp_path, MILL, CPL_H2, "h2.cpl", target)
     words = [w for line in code_lines(out) for w in re.findall(r"H\d+", line)]
     assert words == ["H2"], f"the program's H2 is written as {words}:\n{out}"
 
@@ -79,13 +71,12 @@ def test_cpl_h2_stays_h2(tmp_path, target):
 def test_din_g44_is_not_written_as_g43_with_a_negative_length(tmp_path):
     """ISO has `G44`: `G44 H1` stays `G44 H1`, and the header asks for tool 1's length as measured (40 mm),
     never for a negative length under a `G43`."""
-    out = _out(tmp_path, DIN_G44, "g44.din", "iso")
+    out = translated(tmp_path, MILL, DIN_G44, "g44.din", "iso")
     assert "length -" not in out, f"the header asks for a negative tool length:\n{out}"
     assert any(line.startswith("G44") or " G44" in line for line in code_lines(out)), out
 
 
 def test_din_g44_on_linuxcnc_is_refused(tmp_path):
     """LinuxCNC has no `G44`: the translation refuses it (TRN001) rather than ask for a negative tool length."""
-    (tmp_path / "machine.toml").write_text(MILL)
-    rc, out, err = translate(tmp_path, DIN_G44, "g44.din", "-m", str(tmp_path / "machine.toml"))
+    rc, out, err = translation(tmp_path, MILL, DIN_G44, "g44.din")
     assert rc == 1 and "TRN001" in err, f"written with a negative tool length in the header:\n{out}"

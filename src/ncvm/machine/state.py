@@ -31,15 +31,22 @@ class StateError(UsageError):
 
 
 class StateLock:
-    """Holds ``<state>/lock`` from :meth:`acquire` to :meth:`release` (or the process's end)."""
+    """Holds ``<state>/lock`` from :meth:`acquire` to :meth:`release` (or the process's end).
 
-    def __init__(self, state_dir: str | Path):
+    ``reader``: a run that only reads the state directory (``ncvm translate``, on a scratch copy of the store)
+    takes a shared lock on the lock file as it stands, writes nothing and creates nothing: a run holding the
+    directory refuses it, and it refuses a run that starts while it reads."""
+
+    def __init__(self, state_dir: str | Path, reader: bool = False):
         self.dir = Path(state_dir)
         self.path = self.dir / LOCK_NAME
+        self.reader = reader
         self._fd: int | None = None
 
     def acquire(self) -> "StateLock":
         """Take the directory, creating it if needed; refuse at once when another run holds it."""
+        if self.reader:
+            return self._share()
         try:
             self.dir.mkdir(parents=True, exist_ok=True)
             # never through a symlink, never blocking on a FIFO: the pid is written into what is opened
@@ -55,21 +62,7 @@ class StateLock:
                                  f"space or give another --state") from None
             raise StateError(f"state directory {self.dir} cannot be written ({e.strerror}); make it writable "
                              f"or give another --state") from None
-        if not stat.S_ISREG(os.fstat(fd).st_mode):
-            os.close(fd)
-            raise self._not_a_file()
-        try:
-            fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
-        except BlockingIOError:
-            holder = _read_pid(fd)
-            os.close(fd)
-            by = f" (pid {holder})" if holder else ""
-            raise StateError(f"state directory {self.dir} is in use by another run{by}; wait for it to end "
-                             f"or give another --state") from None
-        except OSError as e:  # a file system without locks
-            os.close(fd)
-            raise StateError(f"state directory {self.dir} cannot be locked ({e.strerror}); give a state "
-                             f"directory on a local disk with --state") from None
+        self._take(fd, fcntl.LOCK_EX)
         if not _holds_a_pid(fd):  # a hard link to another file, or a file of the user's: never emptied
             os.close(fd)
             raise StateError(f"{self.path} holds something other than the pid of a run; move it away (ncvm keeps "
@@ -82,16 +75,49 @@ class StateLock:
             pass  # a full disk: the store reports it when it is written
         return self
 
+    def _share(self) -> "StateLock":
+        """The reader's lock: shared, on the lock file if there is one (none: no run has held the directory)."""
+        try:
+            fd = os.open(self.path, os.O_RDONLY | os.O_CLOEXEC | os.O_NOFOLLOW | os.O_NONBLOCK)
+        except FileNotFoundError:
+            return self
+        except OSError as e:
+            if e.errno in (errno.ELOOP, errno.EISDIR):
+                raise self._not_a_file() from None
+            raise StateError(f"state directory {self.dir} cannot be read ({e.strerror}); give another --state") from None
+        self._take(fd, fcntl.LOCK_SH)
+        self._fd = fd
+        return self
+
+    def _take(self, fd: int, mode: int) -> None:
+        """Lock the open lock file ``fd`` (``mode``: exclusive or shared) at once, or close it and refuse."""
+        if not stat.S_ISREG(os.fstat(fd).st_mode):
+            os.close(fd)
+            raise self._not_a_file()
+        try:
+            fcntl.flock(fd, mode | fcntl.LOCK_NB)
+        except BlockingIOError:
+            holder = _read_pid(fd)
+            os.close(fd)
+            by = f" (pid {holder})" if holder else ""
+            raise StateError(f"state directory {self.dir} is in use by another run{by}; wait for it to end "
+                             f"or give another --state") from None
+        except OSError as e:  # a file system without locks
+            os.close(fd)
+            raise StateError(f"state directory {self.dir} cannot be locked ({e.strerror}); give a state "
+                             f"directory on a local disk with --state") from None
+
     def _not_a_file(self) -> StateError:
         return StateError(f"{self.path} is {not_a_file(self.path)}, not a file; remove it (ncvm keeps the pid "
                           f"of the run that holds the state directory there) and run again")
 
     def release(self) -> None:
         if self._fd is not None:
-            try:
-                os.ftruncate(self._fd, 0)  # no pid of a run that has ended
-            except OSError:
-                pass
+            if not self.reader:
+                try:
+                    os.ftruncate(self._fd, 0)  # no pid of a run that has ended
+                except OSError:
+                    pass
             os.close(self._fd)  # closing the descriptor drops the flock
             self._fd = None
 

@@ -38,6 +38,16 @@ APPLICATION_ID = 0x4E43564D
 BUSY_TIMEOUT_S = 2.0
 
 
+def _plain_files(state_dir: Path) -> None:
+    """Refuse a store or side file that is not a plain file: SQLite would call a FIFO, a directory or a
+    symlinked side file an open or disk error; through a symlink, two state directories (two locks) could
+    share one store and lose each other's writes."""
+    for path in store_files(state_dir):
+        kind = not_a_file(path)
+        if kind:
+            raise StateError(f"{path} is {kind}, not a file; move it away or give another --state")
+
+
 class Store:
     """A namespaced key/value store in ``<state_dir>/store.sqlite``.
 
@@ -57,12 +67,7 @@ class Store:
         except OSError as e:
             raise StateError(f"cannot create the state directory {self.path.parent} ({e.strerror}); "
                              f"give another --state") from None
-        # SQLite would call a FIFO, a directory or a symlinked side file an open or disk error; through a
-        # symlink, two state directories (two locks) could share one store and lose each other's writes
-        for path in store_files(self.path.parent):
-            kind = not_a_file(path)
-            if kind:
-                raise StateError(f"{path} is {kind}, not a file; move it away or give another --state")
+        _plain_files(self.path.parent)
         try:
             self._db = sqlite3.connect(self.path, isolation_level=None, timeout=BUSY_TIMEOUT_S)
             self._adopt()
@@ -76,15 +81,31 @@ class Store:
             raise
 
     def _open_copy(self) -> None:
-        """The scratch store: the state directory's store (if any) copied into memory, the file untouched."""
+        """The scratch store: the state directory's store (if any) copied into memory, the directory untouched.
+        SQLite opens even a read-only connection with side files (``-wal``, ``-shm``) beside the store and may
+        fold a left-over ``-wal`` into it, so the store and its ``-wal`` are opened from a copy elsewhere."""
+        import shutil  # here, not at the top: only a translation reads a store so
+        import tempfile
+
+        _plain_files(self.path.parent)
         try:
             copy = sqlite3.connect(":memory:", isolation_level=None)
             if self.path.is_file():
-                with Store(self.path.parent) as source:
-                    source._db.backup(copy)
+                with tempfile.TemporaryDirectory(prefix="ncvm-state-") as folder:
+                    for path in store_files(self.path.parent)[:2]:  # the store and its write-ahead log
+                        if path.is_file():
+                            shutil.copyfile(path, Path(folder) / path.name)
+                    try:
+                        with Store(folder) as source:
+                            source._db.backup(copy)
+                    except StateError as e:  # named as the user knows it
+                        raise StateError(str(e).replace(folder, str(self.path.parent))) from None
             copy.executescript(SCHEMA)
         except sqlite3.Error as e:
             raise self._error(e) from None
+        except OSError as e:
+            raise StateError(f"cannot read the permanent store {self.path} ({e.strerror}); give another "
+                             f"--state") from None
         self._db = copy
 
     def __enter__(self) -> "Store":

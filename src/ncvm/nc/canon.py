@@ -186,10 +186,11 @@ class CanonSink:
         the moves that follow are in ``frame``; their positions stay machine coordinates. ``whole_run``: the
         frame holds for every move of the run, those before it too (a rw_SymPas card tells it at the end)."""
 
-    def frozen(self, what: str, src: Src | None, scenario: bool = False) -> None:
+    def frozen(self, what: str, src: Src | None, scenario: bool = False, warn: bool = False) -> None:
         """The run read an input from outside the program (``what`` names it: a key, a PLC input, a scenario
         event, a measured value, a random number): the path from here on may depend on it. ``scenario``: a
-        machine input that only a scenario (``--scenario``) says; without one the run took its rest value."""
+        machine input that only a scenario (``--scenario``) says; without one the run took its rest value.
+        ``warn``: the path left the program's there (a move the machine's limit cut short): said as a warning too."""
 
     def tapping(self, g: int, src: Src) -> None:
         """The moves that follow, in and out of one hole, are tapping cycle ``g`` (G74/G84): the tap is fed in
@@ -230,6 +231,11 @@ class CanonSink:
     def spindle(self, speed: float, direction: int, src: Src) -> None:
         """Spindle: direction 1 clockwise (M3), -1 counter-clockwise (M4), 0 stopped (M5)."""
 
+    def css_speed(self, speed: float, wanted: float, limit: float, src: Src | None) -> None:
+        """G96 constant cutting speed gives the spindle a new ``speed`` (rev/min, told by :meth:`spindle` when it
+        turns): the cutting speed at the radius here asks for ``wanted``, the spindle speed limit in force (G96 D,
+        G92 S, the gear stage's maximum) is ``limit`` (inf: none), and ``speed`` is the smaller."""
+
     def coolant(self, mode: str, src: Src) -> None:
         """Coolant: "flood", "mist" or "off"."""
 
@@ -258,7 +264,7 @@ class CanonSink:
 
 _METHODS = ("begin", "rapid", "feed", "arc", "thread", "move_batch", "timing", "frame", "frozen", "channel", "programmed", "tapping", "dwell",
             "feed_per_rev", "radius_compensation", "homing",
-            "tool_change", "tool_select", "tool_offset", "spindle", "coolant", "aux", "probe", "message", "stop", "program_end", "end")
+            "tool_change", "tool_select", "tool_offset", "spindle", "css_speed", "coolant", "aux", "probe", "message", "stop", "program_end", "end")
 
 
 class Canon:

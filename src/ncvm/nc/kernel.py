@@ -509,10 +509,12 @@ class NcKernel:
             self.fault("NC004", "G96 needs a transverse axis X for the radius", src)
         r = abs(self.prog[self.css_axis]) / (2.0 if self.css_diameter else 1.0)
         surface = self.cutting_speed * (304.8 if self.scale != 1.0 else 1000.0)  # mm/min
+        wanted = math.inf
         if r > 1e-9:
-            rpm = min(self.max_speed, surface / (2.0 * math.pi * r))
+            wanted = surface / (2.0 * math.pi * r)
+            rpm = min(self.max_speed, wanted)
         elif surface == 0.0:
-            rpm = 0.0
+            rpm = wanted = 0.0
         elif not math.isinf(self.max_speed):
             rpm = self.max_speed
         elif self.spindle_dir:
@@ -523,6 +525,8 @@ class NcKernel:
         if rpm != self.css_speed:
             self._spindle_fold()
             self.css_speed = rpm
+            if self.canon.css_speed is not NOBODY:  # a translation writes no speed that no limit bounded
+                self.canon.css_speed(rpm, wanted, self.max_speed, src)
             if self.spindle_dir and announce:
                 self.canon.spindle(rpm, self.spindle_dir, src)
 

@@ -126,7 +126,7 @@ class JsonlTrace(CanonSink):
     def homing(self, axes, src):
         self._write("homing", src, axes=[self.names[i] for i in axes])
 
-    def frozen(self, what, src, scenario=False):
+    def frozen(self, what, src, scenario=False, warn=False):
         self._write("frozen", src, what=what)
 
     def message(self, text, src):

@@ -9,10 +9,15 @@ ended normally and the writer could say all of it, else :class:`TranslationRefus
 from __future__ import annotations
 
 import dataclasses
+import shutil
+import tempfile
+from contextlib import contextmanager
 from dataclasses import dataclass
 from pathlib import Path
 
+from ..diagnostics import Diagnostic
 from ..machine.model import Machine
+from ..machine.state import StateError
 from ..runtime.session import RunOptions
 from .output import TranslationFile, TranslationRefused
 from .targets import TARGETS, Target
@@ -32,6 +37,8 @@ class Translated:
     probes: int
     tools: dict[int, float]  # tool offset number -> the (last) length the simulation used
     warnings: list[str] = dataclasses.field(default_factory=list)  # the run's limit violations, as run says them
+    #: TRN003 at its block: where the file does what the simulated control did not, or what its machine made of it
+    diagnostics: list[Diagnostic] = dataclasses.field(default_factory=list)
 
 
 def translate(program: str | Path, out: str | Path, target: str = "linuxcnc", frame: str = "work",
@@ -41,9 +48,19 @@ def translate(program: str | Path, out: str | Path, target: str = "linuxcnc", fr
     from .. import api  # the API puts runs together and writes ``run --gcode`` through this package
 
     options = dataclasses.replace(options or RunOptions(), keyboard=False, echo=False, gcode=None, scratch_state=True)
-    m = _past_programmed_stops(api.machine_for(program, machine, options.state_dir))
+    given = api.machine_for(program, machine, options.state_dir)
+    m = _past_programmed_stops(given)
+    stops_passed = m is not given
+    with _scratch_files(m, options.state_dir) as m:
+        return _translate(program, out, target, frame, source_comments, dialect, m, options, stops_passed)
+
+
+def _translate(program, out, target, frame, source_comments, dialect, m: Machine, options: RunOptions,
+               stops_passed: bool) -> Translated:
+    from .. import api
+
     file = TranslationFile(out, TARGETS[target], Path(program).name, m.name, frame, source_comments,
-                           scenario_given=bool(options.scenario or m.scenario))
+                           scenario_given=bool(options.scenario or m.scenario), stops_passed=stops_passed)
     try:
         options.extra_sinks = [*options.extra_sinks, file.writer]
         result = api.run_program(program, dialect, m, options)
@@ -55,7 +72,8 @@ def translate(program: str | Path, out: str | Path, target: str = "linuxcnc", fr
         raise TranslationRefused(refusal)
     w = file.writer
     return Translated(Path(out), file.target, w.lines, w.moves, w.setup.frozen, w.setup.probes,
-                      {n: lengths[-1] for (_, n, _), lengths in w.setup.tools.items()}, list(result.limit_violations))
+                      {n: lengths[-1] for (_, n, _), lengths in w.setup.tools.items()}, list(result.limit_violations),
+                      list(w.warnings))
 
 
 def _past_programmed_stops(m: Machine) -> Machine:
@@ -66,3 +84,22 @@ def _past_programmed_stops(m: Machine) -> Machine:
     if not isinstance(sec, dict) or sec.get("m0") != "stop":
         return m
     return dataclasses.replace(m, sections={**m.sections, "sin800": {**sec, "m0": "continue"}})
+
+
+@contextmanager
+def _scratch_files(m: Machine, state_dir: Path):
+    """The machine with a scratch copy of its file root where that lies in the state directory (the built-in
+    machine keeps the controller's files there): files the program writes end with the translation, which
+    leaves the state directory as it found it (docs/translate.md)."""
+    root = Path(m.file_root)
+    if not root.resolve().is_relative_to(Path(state_dir).resolve()):
+        yield m
+        return
+    with tempfile.TemporaryDirectory(prefix="ncvm-files-") as folder:
+        copy = Path(folder) / root.name
+        try:
+            if root.is_dir():
+                shutil.copytree(root, copy, symlinks=True)
+        except (OSError, shutil.Error) as e:
+            raise StateError(f"cannot read the controller's files in {root} ({e}); give another --state") from None
+        yield dataclasses.replace(m, file_root=copy)

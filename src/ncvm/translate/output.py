@@ -66,7 +66,7 @@ class TranslationFile:
     """One output of a translation: ``writer`` is the canon sink, :meth:`complete` ends it."""
 
     def __init__(self, path: str | Path, target: Target, program: str, machine: str, frame: str = "work",
-                 source_comments: bool = False, scenario_given: bool = False):
+                 source_comments: bool = False, scenario_given: bool = False, stops_passed: bool = False):
         self.path = Path(path)
         #: the file replaced at the end: through symbolic links (a link stays a link)
         self.real = Path(os.path.realpath(self.path))
@@ -83,7 +83,7 @@ class TranslationFile:
                 self._f = os.fdopen(fd, "w", encoding=target.charset, errors="backslashreplace")
         except OSError as e:
             raise OutputError(self.path, e) from None
-        self.writer = Translation(self._f, target, frame, source_comments, scenario_given)
+        self.writer = Translation(self._f, target, frame, source_comments, scenario_given, stops_passed)
         self.writer.out_path = self.path
         if self.stream:
             self._write_lines(self._intro() + [target.note("the setup the simulation used is listed at the end")])

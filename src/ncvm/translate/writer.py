@@ -11,9 +11,11 @@ cannot say stops the translation (:attr:`Translation.refusal`) instead of being 
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from ..diagnostics import Diagnostic, Span, read_lines_at
 from ..nc import arcs
 from ..nc.canon import CanonSink, Frame, Src, plain_frame
 from ..outpaths import OutputError
@@ -71,7 +73,7 @@ class Translation(CanonSink):
     """
 
     def __init__(self, out, target: Target, frame: str = "work", source_comments: bool = False,
-                 scenario_given: bool = False):
+                 scenario_given: bool = False, stops_passed: bool = False):
         self.out = out
         self.out_path = getattr(out, "name", "the output")  # named in a write error
         self.t = target
@@ -79,6 +81,9 @@ class Translation(CanonSink):
         self.work = frame == "work"
         self.source_comments = source_comments
         self.scenario_given = scenario_given
+        self.stops_passed = stops_passed  # the simulated control stops at M0 ([sin800] m0 = "stop"); this goes on
+        #: what the translation says on the console beside the file (TRN003), at the block
+        self.warnings: list[Diagnostic] = []
         self.names: tuple[str, ...] = ()
         self.frame_now: Frame | None = None
         self.removed: tuple[float, ...] = ()
@@ -114,6 +119,7 @@ class Translation(CanonSink):
         self._per_rev: float | None = None  # G95: the F in mm per revolution
         self._homing: tuple[int, ...] | None = None  # the axes the next move homes
         self._programmed: tuple[set[int], Src] | None = None  # the axis words of the next move's block
+        self._css: tuple[float, float, float] | None = None  # G96's last speed: (speed, wanted, limit)
 
     # -- output ----------------------------------------------------------
     def refuse(self, src: Src | None, message: str) -> None:
@@ -310,7 +316,19 @@ class Translation(CanonSink):
     def _zero_text(self, zero) -> str:
         return " ".join(f"{n}{number(v)}" for n, v in zip(self.names, zero) if n in self.t.axes)
 
-    def frozen(self, what, src, scenario=False):
+    def _warn(self, src: Src | None, message: str, word: str = r"\S") -> None:
+        """A TRN003 warning at ``src``, its column that of the first match of ``word`` in the source line."""
+        if src is None:
+            self.warnings.append(Diagnostic("TRN003", message, None, "warning"))
+            return
+        text = read_lines_at(src.file, {src.line}).get(src.line, "")
+        found = re.search(word, text, re.IGNORECASE)
+        span = Span(src.file, src.line, found.start() + 1, found.end() + 1) if found else Span(src.file, src.line, 1)
+        self.warnings.append(Diagnostic("TRN003", message, span, "warning"))
+
+    def frozen(self, what, src, scenario=False, warn=False):
+        if warn:
+            self._warn(src, f"{what}; the translation writes the move as the run made it (marked FROZEN)")
         if scenario and not self.scenario_given:  # nothing said what the input is: the run took its rest value
             self._unsaid = self._unsaid or (what, src)
             return
@@ -604,6 +622,28 @@ class Translation(CanonSink):
         self._note(f"S{number(speed)} rounded to S{round(speed)}: this control's S is an integer", src)
         return str(round(speed))
 
+    def css_speed(self, speed, wanted, limit, src):
+        self._css = (speed, wanted, limit)
+
+    def _css_checked(self, speed: float, src: Src) -> bool:
+        """A G96 speed the spindle turns at: refused where no limit bounded it (the new control would get the
+        radius's speed, S63662 at 0.5 mm, where the old machine's maximum held it); marked where the limit cut
+        it (the S word is the speed the spindle turned, not the one the cutting speed asked for)."""
+        if self._css is None or self._css[0] != speed:
+            return True
+        _, wanted, limit = self._css
+        if math.isinf(limit):
+            self.refuse(src, f"G96 constant cutting speed with no spindle speed limit: the run's S{number(speed)} "
+                             "here follows the radius without bound (towards the centre the speed grows past any "
+                             "spindle's; the old machine's maximum, which held it there, is not in the machine file); "
+                             "program the limit (DIN: G96 D<max>; SINUMERIK: G92 S<max> or [sin800] gears)")
+            return False
+        if wanted > limit * (1 + 1e-9):
+            self._note(f"S{number(speed)}: the spindle speed limit of the simulated control (G96 D, G92 S or the "
+                       f"gear stage's maximum) held the spindle there; the cutting speed asked for "
+                       f"S{number(wanted)}", src)
+        return True
+
     def spindle(self, speed, direction, src):
         self._restart = None  # the program's own spindle word after a tool change: written once
         if direction == 0:
@@ -615,6 +655,8 @@ class Translation(CanonSink):
                 self._after.append(("M5", src))
             return
         self._flush_after()
+        if not self._css_checked(speed, src):
+            return
         turning = f"{'M3' if direction > 0 else 'M4'} S{self._speed(speed, src)}"
         if turning == self._turning and self.lines == self._turning_line:
             return  # the run says it again (its S word, then its M3): written once
@@ -641,6 +683,10 @@ class Translation(CanonSink):
 
     def stop(self, kind, src):
         """A program stop; DIN G88's stop (the operator retracts by hand) is the target's M0."""
+        if kind == "M0" and self.stops_passed:
+            self._warn(src, 'the simulated control ends the run at this M0 ([sin800] m0 = "stop"); the translation '
+                            "goes on past it, as the new control does after the operator's cycle start",
+                       r"(?<![A-Z])M0*0(?![\d.])")
         self._flush_after()
         self._line("M0" if kind == "G88" else kind, src)
 

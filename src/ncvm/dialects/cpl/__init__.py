@@ -67,7 +67,8 @@ class CplDialect(Dialect):
         return diags + din_call_warnings(res, machine)
 
     def run(self, path, text, session):
-        tables = LinkTables(session.options.state_dir / "link", session.machine.file_root)
+        tables = LinkTables(session.options.state_dir / "link", session.machine.file_root,
+                            read_only=session.options.scratch_state)
         res, diags = self.link(path, text, session.machine, tables)
         if diags:
             raise CompileFailed(diags)

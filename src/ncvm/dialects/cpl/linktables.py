@@ -36,8 +36,9 @@ def fingerprint() -> str:
 class LinkTables:
     """The folder of ``.I`` files of one state directory."""
 
-    def __init__(self, folder: Path, file_root: Path | None):
+    def __init__(self, folder: Path, file_root: Path | None, read_only: bool = False):
         self.folder = folder
+        self.read_only = read_only  # a translation reads the tables of earlier runs and writes none
         root = file_root.resolve() if file_root is not None else None
         here = folder.resolve()
         #: a folder a CPL program can write into is never read: its tables could hold any code
@@ -60,7 +61,7 @@ class LinkTables:
         """Write the table whole or not at all (a crash never leaves half a table)."""
         import tempfile  # here, not at the top: the runs that reuse a table never import it (start-up, issue 18)
 
-        if not self.usable:
+        if not self.usable or self.read_only:
             return
         try:
             self.folder.mkdir(parents=True, exist_ok=True)

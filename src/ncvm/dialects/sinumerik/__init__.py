@@ -15,14 +15,14 @@ from pathlib import Path
 
 from ...diagnostics import CompileFailed, Diagnostic, Span
 from ...machine.files import heads
-from ...nc.canon import Src
+from ...nc.canon import NOBODY, Src
 from ...runtime.codegen import PySource
 from ...source import read_text
 from ..base import Dialect
 from .codegen import UnitCodegen, axis_diagnostics, refused_g_diagnostics, tool_diagnostics
 from .drilling import missing_cycle_warnings
 from .lint import stop_dec_lint
-from .ncdata import NAMESPACE, NcData
+from .ncdata import CENTRAL_R, NAMESPACE, NcData
 from .options import options
 from .reader import PartProgram, Word, read_program
 from .rounding import rounding_diagnostics
@@ -151,15 +151,13 @@ class Sin800Dialect(Dialect):
         store = session.store
         stored = store.items(NAMESPACE)
         data.overlay(stored, session.options.state_dir)
-        left = {n: v for n, v in stored.get("central_r", {}).items() if v != 0.0}
-        if left:  # input from outside the program: a translation marks the path that follows FROZEN
-            values = ", ".join(f"R{n}={v:g}" for n, v in sorted(left.items(), key=lambda item: int(item[0])))
-            session.kernel.canon.frozen(f"central R parameters {values} left by earlier runs", None)
         for offset in data.carried_offsets(stored, machine.axis_names):  # never a silent shift
             session.say(f"NC state: {offset} kept from an earlier run (the NC keeps its offsets; "
                         f"delete {session.options.state_dir} to start from the machine file)")
         library = SubProgramLibrary(machine, debug, ahead, strict, sec.radius_address)
         channel = Channel(session, data, library)
+        if session.kernel.canon.frozen is not NOBODY:  # a sink marks input from outside the program (translate)
+            channel.left = {int(n): float(v) for n, v in stored.get("central_r", {}).items() if v != 0.0}
         name = f"%{unit.program.kind}{unit.program.number}" if unit.program.kind else Path(path).name
         initial = list(channel.R)
         try:
@@ -179,7 +177,7 @@ class Sin800Dialect(Dialect):
         """Persist what the NC keeps; report R parameters that are non-zero, changed or written."""
         data.preset_takes_effect()  # at program end or, after a fault, at the reset that follows (L3240)
         R = channel.R
-        central = {str(n): R[n] for n in range(900, 1000) if R[n] != 0.0 or str(n) in data.central_r}
+        central = {str(n): R[n] for n in CENTRAL_R if R[n] != 0.0 or str(n) in data.central_r}
         if central != data.central_r:
             data.central_r = central
             data.dirty.add("central_r")

@@ -26,7 +26,7 @@ from ...nc.toolcheck import tool_change_warnings
 from ...runtime.codegen import PySource
 from .atcodes import AT_CODES, AtCode
 from .finite import may_underflow, stays_in_range
-from .ncdata import R_LIMIT, R_SMALLEST
+from .ncdata import CENTRAL_R, R_LIMIT, R_SMALLEST
 from .reader import Arith, AtInstr, NcBlock, Note, Operand, PartProgram, Word
 
 #: M functions the kernel handles itself; any other goes to the PLC
@@ -145,6 +145,10 @@ class UnitCodegen:
         self.labels: dict[int, int] = {}  # block index -> label ordinal
         self.dynamic_jumps = False
         self.written: set[int] = set()  # R parameters the program writes by number
+        #: what the item being lowered reads of R900-R999 (central R, kept from earlier runs): by number,
+        #: and the pointer R parameters it reads through (any R, a central one too)
+        self.central_reads: set[int] = set()
+        self.pointer_reads: set[int] = set()
 
     # -- constants and R names -------------------------------------------
     def const(self, value: object, prefix: str = "_C") -> str:
@@ -161,8 +165,31 @@ class UnitCodegen:
         if op.kind == "K":
             return _num(op.value)
         if op.kind == "R":
-            return self.r(int(op.value))
+            return self.read_r(int(op.value))
+        self.pointer_reads.add(int(op.value))
         return f"_R[_ptr({self.r(int(op.value))})]"
+
+    def read_r(self, n: int) -> str:
+        """R parameter ``n`` read by name (a central one is noted for :meth:`central_check`)."""
+        if n in CENTRAL_R:
+            self.central_reads.add(n)
+        return self.r(n)
+
+    def central_check(self, out: PySource, start: int, line: int) -> None:
+        """Before the lines of an item (from ``start``) that read central R parameters: the channel marks the
+        first read of each left by an earlier run (a translation's FROZEN mark at this block). One test of an
+        empty dict where none was left; reads through a pointer see ``_R`` brought up to date first."""
+        if not self.central_reads and not self.pointer_reads:
+            return
+        reads = [f"({n}, r{n})" for n in sorted(self.central_reads)]
+        reads += [f"(_ptr(r{n}), _R[_ptr(r{n})])" for n in sorted(self.pointer_reads)]
+        self.central_reads, self.pointer_reads = set(), set()
+        pad = "    " * out._indent
+        lines = [f"{pad}if _left:"] + ([f"{pad}    @SYNC_OUT"] if "_ptr" in reads[-1] else [])
+        lines.append(f"{pad}    _rt.central_read({line}, ({', '.join(reads)},))")
+        out.lines[start:start] = lines
+        out.line_map[start:start] = [line] * len(lines)
+        out.col_map[start:start] = [None] * len(lines)
 
     def store(self, op: Operand, expr: str) -> list[str]:
         """Python lines storing ``expr`` into a <Var>."""
@@ -234,6 +261,7 @@ class UnitCodegen:
         src.emit("def _unit(_rt):", 0)
         src._indent = 1
         src.emit("_R = _rt.R; _ex = _rt.execute; _K = _rt.kernel; _ctr = _rt.counter; _lin = _rt.linear")
+        src.emit("_left = _rt.left  # central R left by earlier runs, not yet read (central_check)")
         src.emit("_cyc = _rt.drilling.armed  # the drilling cycle a block with an axis word calls (G81-G89)")
         src.emit("_lim = _ctr.limit - _ctr.steps; _st = 0; _blk = 0")
         used = sorted(self.used)
@@ -349,6 +377,7 @@ class UnitCodegen:
         for i, it in enumerate(items):
             start = len(out.col_map)
             self._item(out, idx, blk, rec, it, i, checks, writes_after)
+            self.central_check(out, start, line)
             out.col_map[start:] = [it.col if c is None else c for c in out.col_map[start:]]  # faults at the item
             if rec.jumped:
                 break  # an unconditional jump: the rest of the block is never read
@@ -688,7 +717,7 @@ class _Record:
             return
         if w.rref is not None:
             sign, n = w.rref
-            expr = cg.r(n) if sign > 0 else f"-{cg.r(n)}"
+            expr = cg.read_r(n) if sign > 0 else f"-{cg.read_r(n)}"
             const = False
         else:
             expr = _num(w.value)

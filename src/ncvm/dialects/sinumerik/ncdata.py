@@ -40,6 +40,8 @@ CHANNEL_ARG = {"cycle_md", "cycle_sd"}
 
 #: the smallest magnitude of an R value other than 0 (L7079): the NC holds 8 decimal places
 R_SMALLEST = 0.00000001
+#: the central R parameters, which the NC keeps across power-off (the state directory's ``central_r``)
+CENTRAL_R = range(900, 1000)
 
 
 def r_value(value: float) -> float:

@@ -158,6 +158,8 @@ class Channel:
             self.R[int(str(name).upper().lstrip("R"))] = float(v)
         for k, v in data.central_r.items():
             self.R[int(k)] = float(v)
+        #: central R non-zero in the state directory, not yet read: number -> the value an earlier run left
+        self.left: dict[int, float] = {}
         self._power_on_r(session.machine.source)
         self.push_stack: list[tuple[tuple[int, ...], list[float]]] = []
         self.frames: list[Frame] = []
@@ -396,6 +398,15 @@ class Channel:
             if self.run_unit(unit, f"L{number}", span):
                 self.halted = True
                 return
+
+    def central_read(self, line: int, reads: tuple) -> None:
+        """The program reads central R parameters ((number, value now) each): the first read of one an earlier
+        run left, while it still holds that value, is input from outside the program, marked FROZEN at this
+        block by a translation; one the program wrote before reading it is its own."""
+        for n, value in reads:
+            left = self.left.pop(n, None)
+            if left is not None and value == left:
+                self.kernel.canon.frozen(f"central R parameter R{n}={value:g} left by earlier runs", self.src(line))
 
     def _current_path(self) -> str:
         return self._paths[-1] if self._paths else ""

@@ -94,7 +94,9 @@ def _stop_action(card, owner, ax: int, seg, tick: float, reaction: str):
         names = ", ".join(card.names[x] for x in owner.axes)
         said = f"software limit {which} of {a.name} reached at {tick / TICKS_PER_S:.6f} s: {reaction} stops {names}"
         card.say(f"{seg.src.file}:{seg.src.line}: {said}", card.task_of(seg.src))
-        card.canon.frozen(f"{said}: the move ends where the card stopped it, not where it was programmed", seg.src)
+        # positional: a canon call takes no keywords (False: no scenario input; True: warn)
+        card.canon.frozen(f"{said}: the move ends where the card stopped it, not where it was programmed", seg.src,
+                          False, True)
     return act
 
 
