@@ -149,6 +149,7 @@ class UnitCodegen:
         #: block index -> (its place in its stretch, the stretch's length): see :meth:`_scan_stretches`
         self.stretch: dict[int, tuple[int, int]] = {}
         self.ahead = 0  # blocks of the current stretch counted into _st but not yet reached
+        self.loop: int | None = None  # the label whose stretch is being generated as a while loop (_loops)
         #: generated body line index -> the blocks counted ahead there, where not 0 (a fault takes them back)
         self.ahead_at: dict[int, int] = {}
 
@@ -234,19 +235,50 @@ class UnitCodegen:
                 self.stretch[k] = (k - idx, end - idx)
             idx = max(end, idx + 1)
 
+    def _loops(self) -> set[int]:
+        """The labelled blocks whose stretch up to the next label is a loop: some block in it jumps back to the
+        label, and none jumps to an earlier label. Such a stretch runs as a Python ``while True:`` inside its
+        ``if _blk <= k:`` (the jump back a ``continue`` of that loop, a jump forward ``_blk = j; break``),
+        not through the dispatch chain on every pass."""
+        if self.dynamic_jumps:
+            return set()
+        starts = sorted(self.labels)
+        loops = set()
+        for k, start in enumerate(starts):
+            end = starts[k + 1] if k + 1 < len(starts) else len(self.prog.blocks)
+            targets = {self.find_target(i, n) for i in range(start, end) for it in self.prog.blocks[i].items
+                       if isinstance(it, AtInstr) for n in _jump_numbers(it)}
+            targets.discard(None)
+            if start in targets and min(targets) >= start:
+                loops.add(start)
+        return loops
+
+    def _end_loop(self, out: PySource) -> None:
+        """The end of a loop's stretch (:meth:`_loops`): falling off it goes on with the next label."""
+        if self.loop is not None:
+            if out.lines[-1] != "    " * out._indent + "continue":  # (not after the jump back)
+                out.emit("break")
+            self.loop = None
+
     # -- the unit --------------------------------------------------------
     def build(self) -> tuple[PySource, dict]:
         self._scan_labels()
         self._scan_stretches()
+        loops = self._loops()
         body = PySource(self.src.filename)
         body._indent = 4
         run: list[Block] = []
         for idx, blk in enumerate(self.prog.blocks):
             if idx in self.labels:
                 self._flush_run(body, run)
+                self._end_loop(body)
                 body._indent = 3
                 body.emit(f"if _blk <= {self.labels[idx]}:", blk.line)
                 body._indent = 4
+                if idx in loops:
+                    body.emit("while True:", blk.line)
+                    body._indent = 5
+                    self.loop = self.labels[idx]
             plain = None if self.debug else self._plain_block(blk)
             if plain is not None:
                 run.append(plain)
@@ -254,6 +286,7 @@ class UnitCodegen:
             self._flush_run(body, run)
             self._block(body, idx, blk)
         self._flush_run(body, run)
+        self._end_loop(body)
         src = self.src
         src.emit("def _unit(_rt):", 0)
         src._indent = 1
@@ -440,10 +473,14 @@ class UnitCodegen:
         if target is None:
             out.emit(f"_rt.no_block({number}, {blk.line})")
             return
+        label = self.labels[target]
         with self.leaving(out):
             if target <= idx:
                 out.emit(f"if _st > _lim: _rt.runaway({blk.line})")
-            out.emit(f"_blk = {self.labels[target]}; continue")
+            if self.loop is None:
+                out.emit(f"_blk = {label}; continue")
+            else:  # inside a loop's stretch: to its head, or on after it (never to an earlier label: _loops)
+                out.emit("continue" if label == self.loop else f"_blk = {label}; break")
 
     @contextmanager
     def leaving(self, out: PySource):
