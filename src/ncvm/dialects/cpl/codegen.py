@@ -1154,7 +1154,8 @@ INLINE = {
     "ABS": "abs({0})",
     # INT: truncation with the 32-bit range check inline; infinity, NaN or a result out of range go to the
     # checked built-in, which names the error
-    "INT": "(_t if (_a := ({0})) - _a == 0.0 and -2147483648 <= (_t := int(_a)) <= 2147483647 else _F_INT(_a))",
+    # (a value strictly between -2147483649 and 2147483648 truncates into the range; NaN compares false)
+    "INT": "(int(_a) if -2147483649.0 < (_a := ({0})) < 2147483648.0 else _F_INT(_a))",
     "SIN": "_msin({0} * 0.017453292519943295)",
     "COS": "_mcos({0} * 0.017453292519943295)",
     "ATAN": "(_matan({0}) * 57.29577951308232)",

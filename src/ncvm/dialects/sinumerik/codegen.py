@@ -13,6 +13,7 @@ by number (pointers, push/pop, sub-program calls, multi-register results).
 
 from __future__ import annotations
 
+from contextlib import contextmanager
 from typing import NamedTuple
 
 from ...diagnostics import Diagnostic, Span
@@ -149,6 +150,12 @@ class UnitCodegen:
         #: and the pointer R parameters it reads through (any R, a central one too)
         self.central_reads: set[int] = set()
         self.pointer_reads: set[int] = set()
+        #: block index -> (its place in its stretch, the stretch's length): see :meth:`_scan_stretches`
+        self.stretch: dict[int, tuple[int, int]] = {}
+        self.ahead = 0  # blocks of the current stretch counted into _st but not yet reached
+        self.loop: int | None = None  # the label whose stretch is being generated as a while loop (_loops)
+        #: generated body line index -> the blocks counted ahead there, where not 0 (a fault takes them back)
+        self.ahead_at: dict[int, int] = {}
 
     # -- constants and R names -------------------------------------------
     def const(self, value: object, prefix: str = "_C") -> str:
@@ -190,6 +197,8 @@ class UnitCodegen:
         out.lines[start:start] = lines
         out.line_map[start:start] = [line] * len(lines)
         out.col_map[start:start] = [None] * len(lines)
+        if self.ahead_at:  # the item's own lines moved down: so do the blocks they count ahead (see leaving)
+            self.ahead_at = {k + len(lines) if k >= start else k: n for k, n in self.ahead_at.items()}
 
     def store(self, op: Operand, expr: str) -> list[str]:
         """Python lines storing ``expr`` into a <Var>."""
@@ -238,18 +247,67 @@ class UnitCodegen:
         ordered = sorted(self.labels)
         self.labels = {b: k for k, b in enumerate(ordered)}
 
+    def _scan_stretches(self) -> None:
+        """Stretches of consecutive blocks that only compute and branch (:func:`counts_ahead`), entered at
+        their first block: such a stretch counts its blocks with one ``_st += n`` at its start. A jump out of
+        it takes back the blocks it skips, a fault those not reached (``_AHEAD``), so the step count and the
+        step limit stay exact per block."""
+        if self.debug:
+            return  # the step hook sees the count before every block
+        blocks = self.prog.blocks
+        idx = 0
+        while idx < len(blocks):
+            end = idx
+            while end < len(blocks) and counts_ahead(blocks[end]) and (end == idx or end not in self.labels):
+                end += 1
+            for k in range(idx, end):
+                self.stretch[k] = (k - idx, end - idx)
+            idx = max(end, idx + 1)
+
+    def _loops(self) -> set[int]:
+        """The labelled blocks whose stretch up to the next label is a loop: some block in it jumps back to the
+        label, and none jumps to an earlier label. Such a stretch runs as a Python ``while True:`` inside its
+        ``if _blk <= k:`` (the jump back a ``continue`` of that loop, a jump forward ``_blk = j; break``),
+        not through the dispatch chain on every pass."""
+        if self.dynamic_jumps:
+            return set()
+        starts = sorted(self.labels)
+        loops = set()
+        for k, start in enumerate(starts):
+            end = starts[k + 1] if k + 1 < len(starts) else len(self.prog.blocks)
+            targets = {self.find_target(i, n) for i in range(start, end) for it in self.prog.blocks[i].items
+                       if isinstance(it, AtInstr) for n in _jump_numbers(it)}
+            targets.discard(None)
+            if start in targets and min(targets) >= start:
+                loops.add(start)
+        return loops
+
+    def _end_loop(self, out: PySource) -> None:
+        """The end of a loop's stretch (:meth:`_loops`): falling off it goes on with the next label."""
+        if self.loop is not None:
+            if out.lines[-1] != "    " * out._indent + "continue":  # (not after the jump back)
+                out.emit("break")
+            self.loop = None
+
     # -- the unit --------------------------------------------------------
     def build(self) -> tuple[PySource, dict]:
         self._scan_labels()
+        self._scan_stretches()
+        loops = self._loops()
         body = PySource(self.src.filename)
         body._indent = 4
         run: list[Block] = []
         for idx, blk in enumerate(self.prog.blocks):
             if idx in self.labels:
                 self._flush_run(body, run)
+                self._end_loop(body)
                 body._indent = 3
                 body.emit(f"if _blk <= {self.labels[idx]}:", blk.line)
                 body._indent = 4
+                if idx in loops:
+                    body.emit("while True:", blk.line)
+                    body._indent = 5
+                    self.loop = self.labels[idx]
             plain = None if self.debug else self._plain_block(blk)
             if plain is not None:
                 run.append(plain)
@@ -257,6 +315,7 @@ class UnitCodegen:
             self._flush_run(body, run)
             self._block(body, idx, blk)
         self._flush_run(body, run)
+        self._end_loop(body)
         src = self.src
         src.emit("def _unit(_rt):", 0)
         src._indent = 1
@@ -271,6 +330,9 @@ class UnitCodegen:
         src.emit("try:")
         src._indent = 2
         src.emit("while True:")
+        first = len(src.lines)  # the body's first line, less one (lines count from 1)
+        if self.ahead_at:
+            self.consts["_AHEAD"] = {first + i + 1: n for i, n in self.ahead_at.items()}
         for text, line, col in zip(body.lines, body.line_map, body.col_map):
             text = text.replace("@SYNC_IN", sync_in).replace("@SYNC_OUT", sync_out)
             src.lines.append(text)
@@ -279,6 +341,10 @@ class UnitCodegen:
         src._indent = 3
         src.emit("return 0", self.prog.blocks[-1].line if self.prog.blocks else 0)
         src._indent = 1
+        if self.ahead_at:  # a fault inside a stretch: the blocks after the faulting one did not run
+            src.emit("except BaseException as _e:")
+            src.emit("    _st -= _AHEAD.get(_e.__traceback__.tb_lineno, 0)")
+            src.emit("    raise")
         src.emit("finally:")
         src._indent = 2
         src.emit(sync_out)
@@ -363,7 +429,11 @@ class UnitCodegen:
         if blk.skip:
             out.emit("if not _rt.block_skip:", line)
             out._indent += 1
-        out.emit("_st += 1", line)
+        place, length = self.stretch.get(idx, (0, 1))
+        if place == 0:
+            out.emit(f"_st += {length}", line)
+        self.ahead = length - 1 - place
+        start = len(out.lines)
         if self.debug:
             out.emit("@SYNC_OUT", line)
             out.emit(f"_rt.debug_block({line})", line)
@@ -375,14 +445,17 @@ class UnitCodegen:
             writes_after[i] = writes_after[i + 1] or isinstance(items[i + 1], (Arith, AtInstr))
         checks = _arith_checks(items)
         for i, it in enumerate(items):
-            start = len(out.col_map)
+            item_start = len(out.col_map)
             self._item(out, idx, blk, rec, it, i, checks, writes_after)
-            self.central_check(out, start, line)
-            out.col_map[start:] = [it.col if c is None else c for c in out.col_map[start:]]  # faults at the item
+            self.central_check(out, item_start, line)
+            out.col_map[item_start:] = [it.col if c is None else c for c in out.col_map[item_start:]]  # faults at the item
             if rec.jumped:
                 break  # an unconditional jump: the rest of the block is never read
         else:
             rec.finish(out)
+        if self.ahead:
+            for i in range(start, len(out.lines)):
+                self.ahead_at.setdefault(i, self.ahead)
         if blk.skip:
             out._indent -= 1
 
@@ -395,11 +468,8 @@ class UnitCodegen:
         elif isinstance(it, Arith):
             rec.settle_int_sec(out)
             if i in checks and not self.strict:
-                # the value is stored only in range; the test is false for NaN too (its comparisons are);
-                # a value below the smallest magnitude is stored as the NC holds it (r_value)
                 out.emit(f"_v = {self._arith_expr(it)}", line)
-                out.emit(f"if not ({R_SMALLEST!r} <= _v <= {R_LIMIT!r} or -{R_LIMIT!r} <= _v <= -{R_SMALLEST!r}) "
-                         f"and _v != 0.0: _v = _r_value(_v)", line)
+                out.emit(_RANGE_CHECK, line)
                 out.emit(f"{self.r(it.target)} = _v", line)
             elif not self.strict and may_underflow(it.terms):  # (R*0.5: in range, but it may get too small)
                 target = self.r(it.target)
@@ -434,9 +504,25 @@ class UnitCodegen:
         if target is None:
             out.emit(f"_rt.no_block({number}, {blk.line})")
             return
-        if target <= idx:
-            out.emit(f"if _st > _lim: _rt.runaway({blk.line})")
-        out.emit(f"_blk = {self.labels[target]}; continue")
+        label = self.labels[target]
+        with self.leaving(out):
+            if target <= idx:
+                out.emit(f"if _st > _lim: _rt.runaway({blk.line})")
+            if self.loop is None:
+                out.emit(f"_blk = {label}; continue")
+            else:  # inside a loop's stretch: to its head, or on after it (never to an earlier label: _loops)
+                out.emit("continue" if label == self.loop else f"_blk = {label}; break")
+
+    @contextmanager
+    def leaving(self, out: PySource):
+        """The lines of a jump out of a stretch: first the blocks counted ahead are taken back (they are not
+        run), so the lines emitted inside count none ahead."""
+        if self.ahead:
+            out.emit(f"_st -= {self.ahead}")
+            self.ahead_at[len(out.lines) - 1] = self.ahead
+        start = len(out.lines)
+        yield
+        self.ahead_at.update(dict.fromkeys(range(start, len(out.lines)), 0))
 
     def _at(self, out: PySource, idx: int, blk: NcBlock, it: AtInstr, rec: "_Record") -> bool:
         """Lower one @ code by its row's ``lower``; False when the rest of the block is never read."""
@@ -481,8 +567,9 @@ class UnitCodegen:
             if b.n is not None:
                 self.consts[table][b.n].append((i, self.labels[i]))
         out.emit(f"_blk = _rt.dynamic_target({table}, {self.val(op)}, {idx}, {blk.line})")
-        out.emit(f"if _st > _lim: _rt.runaway({blk.line})")
-        out.emit("continue")
+        with self.leaving(out):
+            out.emit(f"if _st > _lim: _rt.runaway({blk.line})")
+            out.emit("continue")
         return False
 
     def lower_case(self, at: "_Site") -> bool:
@@ -571,8 +658,11 @@ class UnitCodegen:
         expr = row.expr.format(me=self.val(target), x=self.val(ops[1]) if len(ops) > 1 else None,
                                y=self.val(ops[2]) if len(ops) > 2 else None,
                                k=int(ops[1].value) if len(ops) > 1 else None)
-        if row.overflows and not self.strict:
-            expr = f"_r_value({expr})"  # (strict stores check the range themselves)
+        if row.overflows and not self.strict:  # (strict stores check the range themselves)
+            # checked inline as R arithmetic is (a hot path: @620 INC counts loops); _r_value names the error
+            at.out.emit(f"_v = {expr}", at.blk.line)
+            at.out.emit(_RANGE_CHECK, at.blk.line)
+            expr = "_v"
         elif row.underflows and not self.strict:  # SIN 180: 1.2e-16 (checked inline: a hot path)
             expr = f"(_v if not -{R_SMALLEST!r} < (_v := {expr}) < {R_SMALLEST!r} else _r_value(_v))"
         return self._lines(at, self.store(target, expr))
@@ -653,6 +743,35 @@ def _arith_checks(items: list) -> set[int]:
     """Indexes of the R assignments of a block whose result must be checked for the R parameter range
     (only arithmetic can leave it; :mod:`.finite` says which)."""
     return {i for i, it in enumerate(items) if isinstance(it, Arith) and not stays_in_range(it.terms)}
+
+
+#: ``_v`` stored only in the R parameter range; the test is false for NaN too (its comparisons are); a value
+#: below the smallest magnitude is stored as the NC holds it (r_value)
+_RANGE_CHECK = (f"if not ({R_SMALLEST!r} <= _v <= {R_LIMIT!r} or -{R_LIMIT!r} <= _v <= -{R_SMALLEST!r}) "
+                f"and _v != 0.0: _v = _r_value(_v)")
+
+#: the @ code lowerings that only compute, move R values or branch: nothing in them reads the step count
+_COMPUTING = frozenset(("math", "assign", "clear", "xchg", "branch", "goto", "case"))
+
+
+def counts_ahead(blk: NcBlock) -> bool:
+    """A block that only computes and branches (R arithmetic, the @ codes of :data:`_COMPUTING` but those that
+    read an input, notes without a message): nothing in it executes, calls, waits or ends, so its step may be
+    counted at the start of its stretch (:meth:`UnitCodegen._scan_stretches`)."""
+    if blk.skip:
+        return False
+    work = False
+    for it in blk.items:
+        if isinstance(it, Arith):
+            work = True
+        elif isinstance(it, AtInstr):
+            row = AT_CODES[it.code]
+            if row.lower not in _COMPUTING or (row.lower == "branch" and "_rt." in row.expr):
+                return False
+            work = True
+        elif not isinstance(it, Note) or it.text.upper().startswith("MSG"):
+            return False
+    return work
 
 
 def _positions(axes, words: dict, g) -> bool:

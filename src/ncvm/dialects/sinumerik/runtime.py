@@ -94,7 +94,7 @@ def _int(value: float) -> int:
 
 NAMESPACE_GLOBALS = {
     "_Block": Block, "_int": _int, "_ptr": _ptr, "_hypot": math.hypot, "_sin": math.sin,
-    "_cos": math.cos, "_trunc": math.trunc, "_DEG": DEG, "_bad_angle": _bad_angle,
+    "_cos": math.cos, "_sqrt": math.sqrt, "_trunc": math.trunc, "_DEG": DEG, "_bad_angle": _bad_angle,
     "_nc8": nc8, "_r_value": r_value, "_meas_m": meas_m,
 }
 

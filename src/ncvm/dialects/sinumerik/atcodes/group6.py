@@ -10,7 +10,7 @@ from .row import AtCode
 
 ROWS = (
     AtCode("610", "ABS", "VW", 6724, "math", expr="abs({x})", cl800="function"),
-    AtCode("613", "SQRT", "VW", 6725, "math", expr="_rt.sqrt({x})", cl800="function"),
+    AtCode("613", "SQRT", "VW", 6725, "math", expr="(_sqrt({x}) if {x} >= 0.0 else _rt.sqrt({x}))", cl800="function"),
     AtCode("614", "SQRTS", "VWW", 6726, "math", expr="_hypot({x}, {y})", overflows=True, cl800="function"),
     AtCode("620", "INC", "V", 6730, "math", expr="{me} + 1.0", overflows=True, cl800="procedure"),
     AtCode("621", "DEC", "V", 6731, "math", expr="{me} - 1.0", overflows=True, cl800="procedure"),
