@@ -71,6 +71,8 @@ def test_a_one_block_run_imports_neither_plot_nor_screen_libraries_nor_numpy(tmp
     assert top(modules, DIALECTS) == {"ncvm.dialects.din"}
     assert "tomllib" not in modules  # the built-in machine file's precomputed form (machine/default_form.py)
     assert {"json", "string"} & modules == set()  # json for --json and the store's values only
+    # the built-in machine's precomputed form and a machine without a [din] section need no schema check
+    assert {"ncvm.machine.schema", "ncvm.machine.sections", "ncvm.machine.spec"} & modules == set()
 
 
 def test_a_run_with_moves_and_a_plot_loads_what_it_uses(tmp_path):
@@ -131,4 +133,12 @@ def test_a_run_on_a_machine_file_parses_it(tmp_path):
     (tmp_path / "m.toml").write_text('[machine]\nname = "m"\n[[axis]]\nname = "X"\n')
     code, modules = loaded(["run", "--state", str(tmp_path / ".ncvm"), "--machine", "m.toml", "p.ngc"], tmp_path)
     assert code == 0
-    assert "tomllib" in modules
+    assert {"tomllib", "ncvm.machine.schema", "ncvm.machine.spec"} <= modules  # and checks it
+
+
+def test_a_machine_file_with_a_bad_din_section_is_refused_by_a_run(tmp_path):
+    (tmp_path / "p.ngc").write_text("M2\n")
+    (tmp_path / "m.toml").write_text('[machine]\nname = "m"\n[[axis]]\nname = "X"\n[din]\nprofile = "nope"\n')
+    out = subprocess.run([sys.executable, "-m", "ncvm", "run", "--state", str(tmp_path / ".ncvm"), "--machine",
+                          "m.toml", "p.ngc"], capture_output=True, text=True, cwd=tmp_path, timeout=120)
+    assert out.returncode == 2 and "din.profile" in out.stderr

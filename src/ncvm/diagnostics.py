@@ -9,19 +9,23 @@ followed by the source line and a caret.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
-
+from .records import FrozenRecord, Record
 from .source import lines, lines_at, read_text
 
 
-@dataclass(frozen=True, slots=True)
-class Span:
-    """A place in a source file: 1-based physical line, 1-based column (or None)."""
+class Span(FrozenRecord):
+    """A place in a source file: 1-based physical line, 1-based column (or None).
 
-    file: str
-    line: int
-    column: int | None = None
-    end_column: int | None = None
+    Span, Diagnostic and Frame are records rather than dataclasses: every start-up imports them
+    (ncvm/records.py)."""
+
+    __slots__ = ("file", "line", "column", "end_column")
+
+    def __init__(self, file: str, line: int, column: int | None = None, end_column: int | None = None):
+        self.file = file
+        self.line = line
+        self.column = column
+        self.end_column = end_column
 
     def __str__(self) -> str:
         if self.column is None:
@@ -29,15 +33,18 @@ class Span:
         return f"{self.file}:{self.line}:{self.column}"
 
 
-@dataclass(slots=True)
-class Diagnostic:
+class Diagnostic(Record):
     """One problem found while reading, checking or linking a program."""
 
-    code: str
-    message: str
-    span: Span | None
-    severity: str = "error"
-    notes: list[str] = field(default_factory=list)
+    __slots__ = ("code", "message", "span", "severity", "notes")
+
+    def __init__(self, code: str, message: str, span: Span | None, severity: str = "error",
+                 notes: list[str] | None = None):
+        self.code = code
+        self.message = message
+        self.span = span
+        self.severity = severity
+        self.notes = [] if notes is None else notes
 
     def render(self, source_lines: list[str] | dict[int, str] | None = None) -> str:
         """The diagnostic as ``ncvm`` prints it, with its source line: from ``source_lines`` (the file's lines,
@@ -109,12 +116,14 @@ class CompileFailed(NcvmError):
         super().__init__("; ".join(f"{d.code}: {d.message}" for d in diagnostics))
 
 
-@dataclass(slots=True)
-class Frame:
+class Frame(Record):
     """One entry of a run-time call stack, innermost last."""
 
-    unit: str
-    span: Span | None
+    __slots__ = ("unit", "span")
+
+    def __init__(self, unit: str, span: Span | None):
+        self.unit = unit
+        self.span = span
 
     def __str__(self) -> str:
         return f"{self.unit} at {self.span}" if self.span else self.unit

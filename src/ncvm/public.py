@@ -17,7 +17,7 @@ import tempfile
 from contextlib import contextmanager
 from pathlib import Path
 
-from . import api
+from . import api, records
 from .archive.batch import run_batch
 from .archive.report import write as write_report
 from .diagnostics import Diagnostic, UsageError
@@ -173,7 +173,7 @@ def _text_named(d: Diagnostic | None, path: Path) -> Diagnostic | None:
     """``d`` with the temporary file of program text named ``<text>``."""
     if d is None or d.span is None or d.span.file != str(path):
         return d
-    return dataclasses.replace(d, span=dataclasses.replace(d.span, file=TEXT_NAME))
+    return records.replace(d, span=records.replace(d.span, file=TEXT_NAME))
 
 
 __all__ = ["Batch", "Machine", "RunOptions", "batch", "check", "load_machine", "run"]
