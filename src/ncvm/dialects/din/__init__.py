@@ -17,7 +17,7 @@ from ...nc.cycles import CannedCycles
 from ...nc.plainrun import execute_columns
 from ...nc.profiles.blockrules import block_refusal
 from ...nc.profiles.iso import ISO
-from ...nc.profiles.named import PROFILES
+from ...nc.profiles.named import profile as named_profile
 from ...source import lines as program_lines
 from ...source import open_program
 from ..base import Dialect
@@ -58,7 +58,7 @@ class DinDialect(Dialect):
 
         diags = fold_extensions(diags, line_at) if diags else diags
         diags += [d for _i, _row, d in din_missing_axes(path, line_at, segments, machine.axis_names)]
-        profile = PROFILES[options(machine).profile]
+        profile = named_profile(options(machine).profile)
         diags += unsupported(path, segments, lines, machine.axis_names, profile)
         diags += block_errors(path, segments, lines, machine.axis_names, profile)
         diags += tool_warnings(path, segments, lines, machine.tools)
@@ -68,7 +68,7 @@ class DinDialect(Dialect):
         kernel = session.kernel
         opts = options(session.machine)
         kernel.arc_tolerance = arc_tolerance(opts)
-        profile = PROFILES[opts.profile]  # [din] profile: the control whose G table the blocks are read with
+        profile = named_profile(opts.profile)  # [din] profile: the control whose G table the blocks are read with
         kernel.use_profile(profile)
         if profile is ISO:
             setup_kernel(kernel)  # LinuxCNC's canned cycles and G33 belong to the iso rows
