@@ -75,6 +75,18 @@ def test_a_one_block_run_imports_neither_plot_nor_screen_libraries_nor_numpy(tmp
     assert {"ncvm.machine.schema", "ncvm.machine.sections", "ncvm.machine.spec"} & modules == set()
 
 
+def test_the_state_commands_are_built_when_named_or_listed(tmp_path):
+    """``ncvm state`` is a lazily loaded subcommand (cli.py, _Guarded.LAZY): a run does not build it."""
+    (tmp_path / "p.ngc").write_text("M2\n")
+    code, modules = loaded(["run", "--state", str(tmp_path / ".ncvm"), "p.ngc"], tmp_path)
+    assert code == 0 and "ncvm.statecmd" not in modules
+    code, modules = loaded(["state", "show", "--state", str(tmp_path / ".ncvm")], tmp_path)
+    assert code == 0 and "ncvm.statecmd" in modules
+    listed = subprocess.run([sys.executable, "-m", "ncvm", "--help"], capture_output=True, text=True, cwd=tmp_path,
+                            timeout=120)
+    assert listed.returncode == 0 and "\n  state " in listed.stdout
+
+
 def test_a_run_with_moves_and_a_plot_loads_what_it_uses(tmp_path):
     (tmp_path / "p.ngc").write_text("G1 X10 Y5 F1000\nM2\n")
     code, modules = loaded(["run", "--state", str(tmp_path / ".ncvm"), "--plot", "p.png", "p.ngc"], tmp_path)
