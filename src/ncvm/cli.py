@@ -14,7 +14,7 @@ from pathlib import Path
 import click
 
 from . import __version__, termstyle
-from .diagnostics import CompileFailed, Diagnostic, Span, UsageError, render_all
+from .diagnostics import CompileFailed, Diagnostic, Diagnostics, Span, UsageError, render_all
 from .dialects import REGISTRY
 from .lazy import lazy
 from .outpaths import PLOT_SUFFIXES, SCREEN_PICTURE, Output, OutputError, check_outputs
@@ -422,16 +422,20 @@ def check(programs, dialect, machine, as_json, all_errors, report_file):
         try:
             diags = api.check(program.path, program.dialect, machine_of(program), all_errors)
         except CompileFailed as e:
-            diags = e.diagnostics
-        errors = [d for d in diags if d.severity == "error"]
+            diags = Diagnostics.capped(e.diagnostics)
+        errors = diags.errors()
         failed |= bool(errors)
         report.append({"file": str(program.path), "ok": not errors, "machine": str(program.machine or "built-in"),
                        "diagnostics": [d.to_json() for d in diags]})
+        if diags.left_out:  # the counts of the diagnostics past the first MAX_KEPT (docs/decisions.md)
+            report[-1]["not_shown"] = dict(diags.left_out)
         records.append(reports.check_record(str(program.path), program.dialect, report[-1]["machine"],
                                             report[-1]["diagnostics"]))
         if not as_json:
             for text in render_all(diags):
                 say(text)
+            if diags.left_out:
+                say(f"{program.path}: {diags.not_shown()}")
     not_checked = [s for s in found.skipped if s.path not in found.checked]
     skipped = [{"file": str(s.path), "reason": s.reason} for s in not_checked]
     if report_file:
@@ -446,7 +450,7 @@ def check(programs, dialect, machine, as_json, all_errors, report_file):
         if len(report) > 1:  # an archive: which machine file the programs used
             for line in reports.machine_lines(Counter(r["machine"] for r in report)):
                 click.echo(line, err=True)
-        n = sum(len(r["diagnostics"]) for r in report)
+        n = sum(len(r["diagnostics"]) + sum(r.get("not_shown", {}).values()) for r in report)
         bad = sum(1 for r in report if not r["ok"])
         with_errors = f", {bad} with errors" if bad else ""
         not_programs = f", {len(skipped)} file(s) skipped" if skipped else ""

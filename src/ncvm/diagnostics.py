@@ -78,6 +78,51 @@ class Diagnostic(Record):
         }
 
 
+#: the diagnostics a check keeps of one program (the first, in line order); the others are counted, and the
+#: count is shown after them (docs/decisions.md, "Issue 18: a check in bounded memory")
+MAX_KEPT = 1000
+
+
+class Diagnostics(list):
+    """The diagnostics of one program: the first ``limit`` of them (:data:`MAX_KEPT`), and ``left_out``, how
+    many more of each severity there were (a file of millions of bad lines is checked in bounded memory)."""
+
+    def __init__(self, kept=(), left_out: dict[str, int] | None = None, limit: int = MAX_KEPT):
+        super().__init__(kept)
+        self.left_out = dict(left_out or {})
+        self.limit = limit
+
+    @classmethod
+    def capped(cls, diagnostics, limit: int = MAX_KEPT) -> "Diagnostics":
+        """The first ``limit`` of ``diagnostics``, the others counted."""
+        out = cls(diagnostics[:limit], getattr(diagnostics, "left_out", None), limit)
+        out.count_out(diagnostics[limit:])
+        return out
+
+    def keep(self, diagnostics) -> None:
+        """``diagnostics`` kept while there is room, counted after."""
+        room = max(0, self.limit - len(self))
+        self.extend(diagnostics[:room])
+        self.count_out(diagnostics[room:])
+
+    def count_out(self, diagnostics) -> None:
+        for d in diagnostics:
+            self.left_out[d.severity] = self.left_out.get(d.severity, 0) + 1
+
+    def errors(self) -> int:
+        """The errors among them, those left out too."""
+        return sum(1 for d in self if d.severity == "error") + self.left_out.get("error", 0)
+
+    def not_shown(self) -> str | None:
+        """What the line after the kept diagnostics says (None when none was left out)."""
+        if not self.left_out:
+            return None
+        errors, warnings = self.left_out.get("error", 0), sum(self.left_out.values()) - self.left_out.get("error", 0)
+        counts = " and ".join(f"{n} more {what}{'s' if n != 1 else ''}" for n, what in ((errors, "error"),
+                                                                                         (warnings, "warning")) if n)
+        return f"{counts} not shown (a check lists the first {self.limit} diagnostics of a program)"
+
+
 def render_all(diagnostics: list[Diagnostic]) -> list[str]:
     """Each diagnostic rendered, every file read once (a file with 100,000 errors was read 100,000 times), and
     only up to the last line a diagnostic shows."""

@@ -11,7 +11,7 @@ import re
 from ...diagnostics import CompileFailed, RuntimeFault, UsageError
 from ...nc import threads
 from ...nc.axiswords import din_missing_axes
-from ...nc.block import COLUMNS_FROM, PlainRun, din_stretches, file_stretches, read_din_segments, text_stretches
+from ...nc.block import COLUMNS_FROM, PlainRun, din_stretches, file_stretches, text_stretches
 from ...nc.canon import Src
 from ...nc.cycles import CannedCycles
 from ...nc.plainrun import execute_columns
@@ -21,9 +21,10 @@ from ...nc.profiles.named import profile as named_profile
 from ...source import lines as program_lines
 from ...source import open_program
 from ..base import Dialect
+from .check import check_stretches
 from .ngc import fold_extensions
 from .options import arc_tolerance, options
-from .support import address_refusal, block_error, block_errors, refused_address, tool_warnings, unsupported
+from .support import address_refusal, block_error, refused_address
 
 #: a run holds a program of up to this many characters (about 250,000 lines of CAM output) as it reads it; a
 #: longer one is read a second time, from its file, as it runs
@@ -50,19 +51,11 @@ class DinDialect(Dialect):
         return int(100 * hits / len(lines))
 
     def check(self, path, text, machine, all_errors=False):
-        segments, diags = read_din_segments(path, text, as_columns=text.count("\n") >= COLUMNS_FROM)
-        lines = program_lines(text)
-
-        def line_at(n: int) -> str | None:
-            return lines[n - 1] if n <= len(lines) else None
-
-        diags = fold_extensions(diags, line_at) if diags else diags
-        diags += [d for _i, _row, d in din_missing_axes(path, line_at, segments, machine.axis_names)]
+        """Every diagnostic of the program, read from its file a stretch at a time (``text`` None) or from
+        ``text`` (dialects/din/check.py)."""
         profile = named_profile(options(machine).profile)
-        diags += unsupported(path, segments, lines, machine.axis_names, profile)
-        diags += block_errors(path, segments, lines, machine.axis_names, profile)
-        diags += tool_warnings(path, segments, lines, machine.tools)
-        return sorted(diags, key=lambda d: (d.span.line, d.span.column or 0))
+        with ProgramStretches(path, text) as program:
+            return check_stretches(path, program(COLUMNS_FROM), machine, profile)
 
     def run(self, path, text, session):
         kernel = session.kernel
@@ -200,8 +193,10 @@ class ProgramStretches:
         except OSError as e:
             raise UsageError(f"cannot read {path}: {e.strerror}") from None
 
-    def __call__(self):
-        return din_stretches(self.path, text_stretches(self.flat) if self.file is None else file_stretches(self.file))
+    def __call__(self, columns_from: int = 0):
+        """The stretches from the program's start (``columns_from``: :func:`~ncvm.nc.block.din_stretches`)."""
+        pieces = text_stretches(self.flat) if self.file is None else file_stretches(self.file)
+        return din_stretches(self.path, pieces, columns_from)
 
     def __enter__(self) -> "ProgramStretches":
         return self
