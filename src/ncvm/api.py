@@ -54,6 +54,7 @@ def resolve_run(path: str | Path, dialect: str | None) -> tuple[str | None, str]
     for it: a dialect told from the file's content is told from its head (issue 18: bounded memory for a
     file of any size)."""
     named = dialect or dialect_of_name(path)
+    text = None
     if named is None:
         text, named = _told_by_content(path)
     elif _streams(named):
@@ -63,12 +64,9 @@ def resolve_run(path: str | Path, dialect: str | None) -> tuple[str | None, str]
                     pass
         except OSError as e:
             raise UsageError(f"cannot read {path}: {e.strerror}") from None
-        return None, named
-    else:
-        text = None
-    if _streams(named):
-        return text, named  # the text of a pipe, read once
-    return (read_source(path) if text is None else text), named
+    if text is None and not _streams(named):
+        text = read_source(path)
+    return text, named  # a streaming dialect's text: None, or the text of a pipe told by its content
 
 
 def _told_by_content(path: str | Path) -> tuple[str | None, str]:

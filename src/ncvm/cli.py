@@ -430,7 +430,8 @@ def check(programs, dialect, machine, as_json, all_errors, report_file):
         if diags.left_out:  # the counts of the diagnostics past the first MAX_KEPT (docs/decisions.md)
             report[-1]["not_shown"] = dict(diags.left_out)
         records.append(reports.check_record(str(program.path), program.dialect, report[-1]["machine"],
-                                            report[-1]["diagnostics"]))
+                                            report[-1]["diagnostics"], diags.not_shown(),
+                                            diags.left_out.get("error", 0)))
         if not as_json:
             for text in render_all(diags):
                 say(text)

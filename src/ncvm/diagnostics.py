@@ -94,16 +94,11 @@ class Diagnostics(list):
 
     @classmethod
     def capped(cls, diagnostics, limit: int = MAX_KEPT) -> "Diagnostics":
-        """The first ``limit`` of ``diagnostics``, the others counted."""
+        """The first ``limit`` of ``diagnostics``, the others counted (with those ``diagnostics`` left out already,
+        when they are :class:`Diagnostics` themselves)."""
         out = cls(diagnostics[:limit], getattr(diagnostics, "left_out", None), limit)
         out.count_out(diagnostics[limit:])
         return out
-
-    def keep(self, diagnostics) -> None:
-        """``diagnostics`` kept while there is room, counted after."""
-        room = max(0, self.limit - len(self))
-        self.extend(diagnostics[:room])
-        self.count_out(diagnostics[room:])
 
     def count_out(self, diagnostics) -> None:
         for d in diagnostics:

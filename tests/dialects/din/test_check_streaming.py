@@ -138,3 +138,14 @@ def test_the_command_shows_the_first_diagnostics_and_says_how_many_more(tmp_path
     doc = json.loads(js.stdout)["files"][0]
     assert js.returncode == 1 and not doc["ok"]
     assert len(doc["diagnostics"]) == MAX_KEPT and doc["not_shown"] == {"error": 234}
+
+
+def test_a_report_record_whose_errors_were_all_left_out_is_an_error():
+    """The first diagnostics kept may all be warnings: the record's status counts the errors left out too."""
+    from ncvm.archive.report import check_record
+
+    warning = Diagnostic("NC004", "w", Span("p.ngc", 1), severity="warning").to_json()
+    capped = Diagnostics([Diagnostic("NC004", "w", Span("p.ngc", 1), severity="warning")], {"error": 2})
+    record = check_record("p.ngc", "din", "built-in", [warning], capped.not_shown(), capped.left_out["error"])
+    assert record["status"] == "error" and record["error"]["message"].startswith("2 more errors not shown")
+    assert check_record("p.ngc", "din", "built-in", [warning])["status"] == "ok"
