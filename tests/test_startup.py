@@ -154,3 +154,16 @@ def test_a_machine_file_with_a_bad_din_section_is_refused_by_a_run(tmp_path):
     out = subprocess.run([sys.executable, "-m", "ncvm", "run", "--state", str(tmp_path / ".ncvm"), "--machine",
                           "m.toml", "p.ngc"], capture_output=True, text=True, cwd=tmp_path, timeout=120)
     assert out.returncode == 2 and "din.profile" in out.stderr
+
+
+def test_a_clean_din_run_compiles_neither_the_dialect_guess_nor_the_linuxcnc_patterns(tmp_path):
+    """The content guess (dialects/din _DIN_LINE) and the LinuxCNC extensions' patterns (din/ngc.py) are
+    compiled into re's cache when first used: a run of a named .ngc program without errors uses neither."""
+    (tmp_path / "p.ngc").write_text("G1 X1 F100\nM2\n")
+    probe = ("import re, runpy, sys\nsys.argv = ['ncvm', 'run', '--state', '.ncvm', 'p.ngc']\n"
+             "try:\n    runpy.run_module('ncvm', run_name='__main__')\nexcept SystemExit:\n    pass\n"
+             "from ncvm.dialects import din\nfrom ncvm.dialects.din import ngc\n"
+             "lazy = {din._DIN_LINE, *(p for _what, p in ngc.FEATURES)}\n"
+             "print('COMPILED', sorted(k[1] for k in re._cache if k[1] in lazy))\n")
+    out = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, cwd=tmp_path, timeout=120)
+    assert "COMPILED []" in out.stdout, out.stdout + out.stderr

@@ -13,13 +13,14 @@ import re
 
 from ...diagnostics import Diagnostic, Span
 
-_COMMENTS = re.compile(r"\([^)]*\)|;.*")
+# The patterns are compiled (into re's cache) when a program first has a syntax error, not at every start-up.
+_COMMENTS = r"\([^)]*\)|;.*"
 #: (what, how it shows in a line without its comments)
 FEATURES = (
-    ("named parameters (#<name>)", re.compile(r"#\s*<")),
-    ("# parameters", re.compile(r"#\s*[\d\[]")),
-    ("O-words (sub-programs, loops, conditions)", re.compile(r"^\s*(?:/\s*)?(?:N\d+\s*)?O\s*(?:<|\d+\s*[A-Z])", re.I)),
-    ("expressions in brackets", re.compile(r"\[")),
+    ("named parameters (#<name>)", r"#\s*<"),
+    ("# parameters", r"#\s*[\d\[]"),
+    ("O-words (sub-programs, loops, conditions)", r"(?i)^\s*(?:/\s*)?(?:N\d+\s*)?O\s*(?:<|\d+\s*[A-Z])"),
+    ("expressions in brackets", r"\["),
 )
 
 
@@ -47,7 +48,8 @@ class Extensions:
     def take(self, d: Diagnostic, line_at) -> bool:
         """True when ``d`` is the NC001 of a line that uses an extension (it goes into the NC013)."""
         line = line_at(d.span.line) if d.code == "NC001" and d.span else None
-        found = [what for what, pattern in FEATURES if line is not None and pattern.search(_COMMENTS.sub("", line))]
+        body = re.sub(_COMMENTS, "", line) if line is not None else None
+        found = [what for what, pattern in FEATURES if body is not None and re.search(pattern, body)]
         if not found:
             return False
         self.used.update(dict.fromkeys(found))
