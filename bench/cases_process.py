@@ -13,9 +13,10 @@ child process, alternating the two, and takes the child's own CPU time and peak 
   ``proc_startup_version`` / ``proc_startup_check``: ``ncvm --version`` and ``ncvm check`` of a small CPL program;
 - ``proc_<dialect>_2m_moves_memory``: 2,000,000 computed G1 moves in a loop of each dialect, no plot;
 - ``proc_din_flat_500k_memory``: a 500,000-line flat DIN file (bench/peers/gen_flat.py) and rs274 on it;
-- with ``run.py --large`` only: ``proc_<dialect>_10m_moves_memory`` (10,000,000 computed G1 moves) and
-  ``proc_din_flat_10m_memory`` (a 10,000,000-line flat DIN file, 340 MB, and rs274 on it): memory bounded
-  for a program of any length.
+  ``proc_din_check_500k_memory``: ``ncvm check`` of that file;
+- with ``run.py --large`` only: ``proc_<dialect>_10m_moves_memory`` (10,000,000 computed G1 moves),
+  ``proc_din_flat_10m_memory`` (a 10,000,000-line flat DIN file, 340 MB, and rs274 on it) and
+  ``proc_din_check_10m_memory`` (``ncvm check`` of that file): memory bounded for a program of any length.
 """
 
 from __future__ import annotations
@@ -175,9 +176,12 @@ def cases() -> dict[str, Case]:
            for d, ext in (("cpl", "cpl"), ("sin800", "mpf"), ("sympas", "sap"))},
         "proc_din_flat_500k_memory": case(paired(ncvm_run("flat_500k.ngc", "-d", "din"), WORK / "flat_500k.ngc"),
                                           FLAT_LINES, "lines/s", repeat=1),
+        "proc_din_check_500k_memory": case(paired(NCVM + ["check", str(WORK / "flat_500k.ngc")], None), FLAT_LINES,
+                                           "lines/s", repeat=1),
         **{f"proc_{d}_10m_moves_memory": large_case(paired(ncvm_run(f"moves_10m.{ext}", "-d", d), None,
                                                            expect_moves=LARGE), "G1/s")
            for d, ext in (("cpl", "cpl"), ("sin800", "mpf"), ("sympas", "sap"))},
         "proc_din_flat_10m_memory": large_case(paired(ncvm_run("flat_10m.ngc", "-d", "din"), WORK / "flat_10m.ngc"),
                                                "lines/s"),
+        "proc_din_check_10m_memory": large_case(paired(NCVM + ["check", str(WORK / "flat_10m.ngc")], None), "lines/s"),
     }

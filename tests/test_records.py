@@ -80,3 +80,20 @@ def test_replace_gives_a_new_record_with_the_changes_as_dataclasses_replace_does
     moved = replace(v, axis="A1", frame="machine")
     assert moved == LimitViolation("A1", 501.0, 500.0, "p.ngc", 3, "machine", (501.0, 0.0, 0.0), 2)
     assert v.axis == "X" and v.frame == ""
+
+
+def test_the_diagnostics_records_keep_the_dataclasses_fields_equality_hash_and_repr():
+    """Span, Diagnostic and the call stack's Frame are records (issue 18: no dataclass built at start-up)."""
+    from ncvm import diagnostics
+    from ncvm.records import replace as replace_record
+
+    for cls in (diagnostics.Span, diagnostics.Diagnostic, diagnostics.Frame):
+        assert not dataclasses.is_dataclass(cls)
+    span = diagnostics.Span("p.ngc", 3, 5)
+    assert repr(span) == "Span(file='p.ngc', line=3, column=5, end_column=None)" and str(span) == "p.ngc:3:5"
+    assert {span, diagnostics.Span("p.ngc", 3, 5)} == {span}
+    a, b = diagnostics.Diagnostic("NC001", "bad", span), diagnostics.Diagnostic("NC001", "bad", span)
+    assert a == b and a.notes == [] and a.notes is not b.notes and a.severity == "error"
+    assert replace_record(a, span=replace_record(span, file="<text>")).span == diagnostics.Span("<text>", 3, 5)
+    assert repr(diagnostics.Frame("MAIN", None)) == "Frame(unit='MAIN', span=None)"
+    assert pickle.loads(pickle.dumps(a)) == a

@@ -71,6 +71,20 @@ def test_a_one_block_run_imports_neither_plot_nor_screen_libraries_nor_numpy(tmp
     assert top(modules, DIALECTS) == {"ncvm.dialects.din"}
     assert "tomllib" not in modules  # the built-in machine file's precomputed form (machine/default_form.py)
     assert {"json", "string"} & modules == set()  # json for --json and the store's values only
+    # the built-in machine's precomputed form and a machine without a [din] section need no schema check
+    assert {"ncvm.machine.schema", "ncvm.machine.sections", "ncvm.machine.spec"} & modules == set()
+
+
+def test_the_state_commands_are_built_when_named_or_listed(tmp_path):
+    """``ncvm state`` is a lazily loaded subcommand (cli.py, _Guarded.LAZY): a run does not build it."""
+    (tmp_path / "p.ngc").write_text("M2\n")
+    code, modules = loaded(["run", "--state", str(tmp_path / ".ncvm"), "p.ngc"], tmp_path)
+    assert code == 0 and "ncvm.statecmd" not in modules
+    code, modules = loaded(["state", "show", "--state", str(tmp_path / ".ncvm")], tmp_path)
+    assert code == 0 and "ncvm.statecmd" in modules
+    listed = subprocess.run([sys.executable, "-m", "ncvm", "--help"], capture_output=True, text=True, cwd=tmp_path,
+                            timeout=120)
+    assert listed.returncode == 0 and "\n  state " in listed.stdout
 
 
 def test_a_run_with_moves_and_a_plot_loads_what_it_uses(tmp_path):
@@ -131,4 +145,25 @@ def test_a_run_on_a_machine_file_parses_it(tmp_path):
     (tmp_path / "m.toml").write_text('[machine]\nname = "m"\n[[axis]]\nname = "X"\n')
     code, modules = loaded(["run", "--state", str(tmp_path / ".ncvm"), "--machine", "m.toml", "p.ngc"], tmp_path)
     assert code == 0
-    assert "tomllib" in modules
+    assert {"tomllib", "ncvm.machine.schema", "ncvm.machine.spec"} <= modules  # and checks it
+
+
+def test_a_machine_file_with_a_bad_din_section_is_refused_by_a_run(tmp_path):
+    (tmp_path / "p.ngc").write_text("M2\n")
+    (tmp_path / "m.toml").write_text('[machine]\nname = "m"\n[[axis]]\nname = "X"\n[din]\nprofile = "nope"\n')
+    out = subprocess.run([sys.executable, "-m", "ncvm", "run", "--state", str(tmp_path / ".ncvm"), "--machine",
+                          "m.toml", "p.ngc"], capture_output=True, text=True, cwd=tmp_path, timeout=120)
+    assert out.returncode == 2 and "din.profile" in out.stderr
+
+
+def test_a_clean_din_run_compiles_neither_the_dialect_guess_nor_the_linuxcnc_patterns(tmp_path):
+    """The content guess (dialects/din _DIN_LINE) and the LinuxCNC extensions' patterns (din/ngc.py) are
+    compiled into re's cache when first used: a run of a named .ngc program without errors uses neither."""
+    (tmp_path / "p.ngc").write_text("G1 X1 F100\nM2\n")
+    probe = ("import re, runpy, sys\nsys.argv = ['ncvm', 'run', '--state', '.ncvm', 'p.ngc']\n"
+             "try:\n    runpy.run_module('ncvm', run_name='__main__')\nexcept SystemExit:\n    pass\n"
+             "from ncvm.dialects import din\nfrom ncvm.dialects.din import ngc\n"
+             "lazy = {din._DIN_LINE, *(p for _what, p in ngc.FEATURES)}\n"
+             "print('COMPILED', sorted(k[1] for k in re._cache if k[1] in lazy))\n")
+    out = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, cwd=tmp_path, timeout=120)
+    assert "COMPILED []" in out.stdout, out.stdout + out.stderr

@@ -15,7 +15,7 @@ from functools import partial
 from pathlib import Path
 from typing import Any
 
-from .diagnostics import CompileFailed, Diagnostic, Span, UsageError
+from .diagnostics import CompileFailed, Diagnostic, Diagnostics, Span, UsageError
 from .dialects import detect_dialect, dialect_of_name, get_dialect
 from .machine.config import load_machine, load_scenario
 from .machine.model import Machine
@@ -30,7 +30,7 @@ from .sinks.limits import LimitCheck
 from .sinks.moves import MoveTable
 from .sinks.toolpath import MotionSummary, ToolpathRecorder
 from .sinks.workbounds import WorkBounds
-from .source import read_text
+from .source import read_head, read_text
 
 # The trace, the G-code translation and the plot points are imported by the runs that ask for them (start-up).
 
@@ -43,25 +43,44 @@ def read_source(path: str | Path) -> str:
 
 
 def resolve(path: str | Path, dialect: str | None) -> tuple[str, str]:
-    text = read_source(path)
-    return text, dialect or detect_dialect(path, text)
+    """(the program's text, its dialect)."""
+    text, d = resolve_run(path, dialect)
+    return (read_source(path) if text is None else text), d
 
 
 def resolve_run(path: str | Path, dialect: str | None) -> tuple[str | None, str]:
-    """:func:`resolve` for a run: the text is None for a dialect that reads its program from the file a
-    stretch at a time (``Dialect.streams``), and is not read whole at all when the file's name or the caller
-    names that dialect (issue 18: bounded memory for a file of any size)."""
+    """(the program's text, its dialect) for a run or a check: the text is None for a dialect that reads its
+    program from the file a stretch at a time (``Dialect.streams``), and the file is not read whole at all
+    for it: a dialect told from the file's content is told from its head (issue 18: bounded memory for a
+    file of any size)."""
     named = dialect or dialect_of_name(path)
-    if named is not None and _streams(named):
+    text = None
+    if named is None:
+        text, named = _told_by_content(path)
+    elif _streams(named):
         try:
             if not stat.S_ISFIFO(os.stat(path).st_mode):  # opening a pipe would take its writer's data
                 with open(path, "rb"):
                     pass
         except OSError as e:
             raise UsageError(f"cannot read {path}: {e.strerror}") from None
-        return None, named
-    text, d = resolve(path, named)
-    return (None if _streams(d) else text), d
+    if text is None and not _streams(named):
+        text = read_source(path)
+    return text, named  # a streaming dialect's text: None, or the text of a pipe told by its content
+
+
+def _told_by_content(path: str | Path) -> tuple[str | None, str]:
+    """(None, the dialect) of a file from its head (source.read_head); (the whole text, the dialect) of a pipe
+    or a device, which can be read once only."""
+    try:
+        regular = stat.S_ISREG(os.stat(path).st_mode)
+        text = read_head(path) if regular else None
+    except OSError:
+        regular, text = False, None  # read_source says why
+    if regular:
+        return None, detect_dialect(path, text)
+    text = read_source(path)
+    return text, detect_dialect(path, text)
 
 
 def _streams(dialect: str) -> bool:
@@ -86,9 +105,11 @@ def machine_for(path: str | Path, machine: Machine | str | Path | None, state_di
 
 
 def check(path: str | Path, dialect: str | None = None, machine: Machine | str | Path | None = None,
-          all_errors: bool = False) -> list[Diagnostic]:
-    text, d = resolve(path, dialect)
-    return get_dialect(d).check(str(path), text, machine_for(path, machine), all_errors)
+          all_errors: bool = False) -> Diagnostics:
+    """The program's diagnostics: the first :data:`~ncvm.diagnostics.MAX_KEPT` of them, the others counted (a
+    DIN program is read a stretch at a time, as a run reads it)."""
+    text, d = resolve_run(path, dialect)
+    return Diagnostics.capped(get_dialect(d).check(str(path), text, machine_for(path, machine), all_errors))
 
 
 class RunResult(Record):

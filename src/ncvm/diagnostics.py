@@ -9,19 +9,23 @@ followed by the source line and a caret.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
-
+from .records import FrozenRecord, Record
 from .source import lines, lines_at, read_text
 
 
-@dataclass(frozen=True, slots=True)
-class Span:
-    """A place in a source file: 1-based physical line, 1-based column (or None)."""
+class Span(FrozenRecord):
+    """A place in a source file: 1-based physical line, 1-based column (or None).
 
-    file: str
-    line: int
-    column: int | None = None
-    end_column: int | None = None
+    Span, Diagnostic and Frame are records rather than dataclasses: every start-up imports them
+    (ncvm/records.py)."""
+
+    __slots__ = ("file", "line", "column", "end_column")
+
+    def __init__(self, file: str, line: int, column: int | None = None, end_column: int | None = None):
+        self.file = file
+        self.line = line
+        self.column = column
+        self.end_column = end_column
 
     def __str__(self) -> str:
         if self.column is None:
@@ -29,15 +33,18 @@ class Span:
         return f"{self.file}:{self.line}:{self.column}"
 
 
-@dataclass(slots=True)
-class Diagnostic:
+class Diagnostic(Record):
     """One problem found while reading, checking or linking a program."""
 
-    code: str
-    message: str
-    span: Span | None
-    severity: str = "error"
-    notes: list[str] = field(default_factory=list)
+    __slots__ = ("code", "message", "span", "severity", "notes")
+
+    def __init__(self, code: str, message: str, span: Span | None, severity: str = "error",
+                 notes: list[str] | None = None):
+        self.code = code
+        self.message = message
+        self.span = span
+        self.severity = severity
+        self.notes = [] if notes is None else notes
 
     def render(self, source_lines: list[str] | dict[int, str] | None = None) -> str:
         """The diagnostic as ``ncvm`` prints it, with its source line: from ``source_lines`` (the file's lines,
@@ -69,6 +76,46 @@ class Diagnostic:
             "column": self.span.column if self.span else None,
             "notes": list(self.notes),
         }
+
+
+#: the diagnostics a check keeps of one program (the first, in line order); the others are counted, and the
+#: count is shown after them (docs/decisions.md, "Issue 18: a check in bounded memory")
+MAX_KEPT = 1000
+
+
+class Diagnostics(list):
+    """The diagnostics of one program: the first ``limit`` of them (:data:`MAX_KEPT`), and ``left_out``, how
+    many more of each severity there were (a file of millions of bad lines is checked in bounded memory)."""
+
+    def __init__(self, kept=(), left_out: dict[str, int] | None = None, limit: int = MAX_KEPT):
+        super().__init__(kept)
+        self.left_out = dict(left_out or {})
+        self.limit = limit
+
+    @classmethod
+    def capped(cls, diagnostics, limit: int = MAX_KEPT) -> "Diagnostics":
+        """The first ``limit`` of ``diagnostics``, the others counted (with those ``diagnostics`` left out already,
+        when they are :class:`Diagnostics` themselves)."""
+        out = cls(diagnostics[:limit], getattr(diagnostics, "left_out", None), limit)
+        out.count_out(diagnostics[limit:])
+        return out
+
+    def count_out(self, diagnostics) -> None:
+        for d in diagnostics:
+            self.left_out[d.severity] = self.left_out.get(d.severity, 0) + 1
+
+    def errors(self) -> int:
+        """The errors among them, those left out too."""
+        return sum(1 for d in self if d.severity == "error") + self.left_out.get("error", 0)
+
+    def not_shown(self) -> str | None:
+        """What the line after the kept diagnostics says (None when none was left out)."""
+        if not self.left_out:
+            return None
+        errors, warnings = self.left_out.get("error", 0), sum(self.left_out.values()) - self.left_out.get("error", 0)
+        counts = " and ".join(f"{n} more {what}{'s' if n != 1 else ''}" for n, what in ((errors, "error"),
+                                                                                         (warnings, "warning")) if n)
+        return f"{counts} not shown (a check lists the first {self.limit} diagnostics of a program)"
 
 
 def render_all(diagnostics: list[Diagnostic]) -> list[str]:
@@ -109,12 +156,14 @@ class CompileFailed(NcvmError):
         super().__init__("; ".join(f"{d.code}: {d.message}" for d in diagnostics))
 
 
-@dataclass(slots=True)
-class Frame:
+class Frame(Record):
     """One entry of a run-time call stack, innermost last."""
 
-    unit: str
-    span: Span | None
+    __slots__ = ("unit", "span")
+
+    def __init__(self, unit: str, span: Span | None):
+        self.unit = unit
+        self.span = span
 
     def __str__(self) -> str:
         return f"{self.unit} at {self.span}" if self.span else self.unit

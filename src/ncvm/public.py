@@ -17,10 +17,10 @@ import tempfile
 from contextlib import contextmanager
 from pathlib import Path
 
-from . import api
+from . import api, records
 from .archive.batch import run_batch
 from .archive.report import write as write_report
-from .diagnostics import Diagnostic, UsageError
+from .diagnostics import Diagnostic, Diagnostics, UsageError
 from .dialects import REGISTRY, detect_dialect, get_dialect
 from .machine.config import load_machine
 from .machine.model import Machine
@@ -71,14 +71,15 @@ def run(program: str | Path, dialect: str | None = None, machine: MachineLike = 
 
 
 def check(program: str | Path, dialect: str | None = None, machine: MachineLike = None,
-          all_errors: bool = False) -> list[Diagnostic]:
+          all_errors: bool = False) -> Diagnostics:
     """The errors the control would report for a program (a file, or program text), without running it:
     :class:`Diagnostic` objects (``code``, ``message``, ``span`` with ``file``, ``line``, ``column``;
-    ``notes``). Empty: the program is fine. ``all_errors``: go on after the first error."""
+    ``notes``). Empty: the program is fine. ``all_errors``: go on after the first error. The first
+    :data:`~ncvm.diagnostics.MAX_KEPT` are listed; ``left_out`` counts the others by severity."""
     with _program_file(program, dialect) as (path, text_dialect):
         m = _machine(path, machine, Path(".ncvm"), is_text=text_dialect is not None)
         found = api.check(path, text_dialect or dialect, m, all_errors)
-        return [_text_named(d, path) for d in found] if text_dialect else found
+        return Diagnostics([_text_named(d, path) for d in found], found.left_out) if text_dialect else found
 
 
 class Batch(list):
@@ -173,7 +174,7 @@ def _text_named(d: Diagnostic | None, path: Path) -> Diagnostic | None:
     """``d`` with the temporary file of program text named ``<text>``."""
     if d is None or d.span is None or d.span.file != str(path):
         return d
-    return dataclasses.replace(d, span=dataclasses.replace(d.span, file=TEXT_NAME))
+    return records.replace(d, span=records.replace(d.span, file=TEXT_NAME))
 
 
 __all__ = ["Batch", "Machine", "RunOptions", "batch", "check", "load_machine", "run"]

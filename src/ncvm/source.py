@@ -49,6 +49,18 @@ def read_text(path: str | Path) -> str:
     return without_bom(Path(path).read_text(encoding="latin-1"))
 
 
+#: how much of a program file the dialect detector reads (a file without a known extension): its head only,
+#: however large the file (docs/decisions.md, "Issue 18: a check in bounded memory")
+HEAD_BYTES = 64 * 1024
+
+
+def read_head(path: str | Path) -> str:
+    """The first :data:`HEAD_BYTES` of a program file as :func:`read_text` reads it (line ends as LF).
+    Raises OSError as reading a file does."""
+    with open_program(path) as f:
+        return without_bom(f.read(HEAD_BYTES))
+
+
 def open_program(path: str | Path):
     """A program file opened for reading a stretch at a time (:func:`stretches`): Latin-1, every line end
     (LF, CR LF, a lone CR) read as LF, as :func:`lines` splits them. Raises OSError as opening a file does."""

@@ -38,3 +38,14 @@ def test_an_edited_built_in_file_is_checked(monkeypatch):
     monkeypatch.setattr(config, "default_machine_text", lambda: default_form.TEXT + "[machine\n")
     with pytest.raises(UsageError, match="<built-in default machine>: not valid TOML"):
         config.load_machine()
+
+
+def test_the_form_is_a_valid_machine_file_without_dialect_sections():
+    """load_machine builds the built-in machine from the form unchecked (issue 18): right only while it passes
+    the machine file's schema and has no section of a dialect."""
+    from ncvm.machine.sections import DIALECT_SECTIONS
+
+    form = default_form.data()
+    assert repr(config.machine_from_dict(form, "<built-in default machine>", config.Path("."))) \
+        == repr(config.load_machine())
+    assert {sec.name for sec in DIALECT_SECTIONS} & set(form) == set()

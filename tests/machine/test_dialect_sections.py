@@ -86,3 +86,21 @@ def test_the_sin800_options_are_checked_with_the_machine_axes():
     with pytest.raises(UsageError, match=re.escape("machine file error: sin800.zero_offsets.G54 = [1.0, 2.0, 3.0]: "
                                                    "must give 2 values, one per axis (X, Y)")):
         sin800_options(m)
+
+
+@pytest.mark.parametrize("dialect", sorted(SECTIONS))
+@pytest.mark.parametrize("axes", [(), ("X", "Y", "Z")])
+def test_a_section_left_out_is_valid_so_the_options_of_a_machine_without_it_need_no_check(dialect, axes):
+    """dialect_options takes the declared defaults for a machine without the dialect's section, unchecked
+    (issue 18: the schema is not imported at start-up): that is right only while a section left out is valid."""
+    from ncvm.machine.schema import Ctx, validate
+
+    validate(SECTIONS[dialect], {}, Ctx(axes, tuple((-1.0, 1.0) for _ in axes)), path=dialect)
+
+
+def test_the_options_of_a_machine_without_the_section_are_the_declared_defaults():
+    m = Machine()
+    m.axes = [Axis("X"), Axis("Y")]
+    assert options(m) == Options() and sin800_options(m) == Sin800Options()
+    assert dialect_options(CplOptions, {}, "cpl", m.axes) == CplOptions()
+    assert dialect_options(CplOptions, {"cpl": {}}, "cpl", m.axes) == CplOptions()

@@ -29,7 +29,7 @@ from ..diagnostics import UsageError
 from ..dialects import EXTENSIONS, detect_dialect
 from ..machine.config import load_machine
 from ..machine.model import Machine
-from ..source import read_text, without_bom
+from ..source import read_head, read_text
 
 MACHINE_FILE = "machine.toml"
 MAIN_LIST = "main.txt"
@@ -42,8 +42,6 @@ CALLS = {
 }
 #: how a program includes a file by its path relative to its own folder (the name with its extension)
 INCLUDES = {"sympas": re.compile(r"\{\s*!\s*([^}\s]+)\s*\}")}
-#: how much of an extensionless file is read to classify it: the dialect detector looks at the head only
-SNIFF_BYTES = 64 * 1024
 #: a CL 800 external list (EXTERNAL ... ENDEXTERN): the data a program's header names, not a program
 _EXTERNAL_LIST = re.compile(r"\A(?:\s|\(\*.*?\*\))*EXTERNAL\b", re.IGNORECASE | re.DOTALL)
 
@@ -113,7 +111,7 @@ def discover(args: list[str] | tuple[str, ...], dialect: str | None = None,
                 continue
             seen.add(path.resolve())
             # a file named on the command line is a program: one of unknown language is a usage error
-            kind = dialect or detect_dialect(path, _read(path))
+            kind = dialect or detect_dialect(path, _head_of(path))
             program = _program(path, kind, path.parent, machine)
             found.programs.append(program)
             found.all_programs.append(program)
@@ -266,9 +264,10 @@ def _file_root(machine: Path | None, cache: dict[Path, Path | None]) -> Path | N
     return cache[machine]
 
 
-def _read(path: Path) -> str:
+def _head_of(path: Path) -> str:
+    """The head of a program named on the command line, for the dialect detector (source.read_head)."""
     try:
-        return read_text(path)
+        return read_head(path)
     except OSError as e:
         raise UsageError(f"cannot read {path}: {e.strerror}") from None
 
@@ -280,7 +279,7 @@ def _classify(path: Path, dialect: str | None) -> str | Skipped:
     if path.suffix.lower() in EXTENSIONS:
         return EXTENSIONS[path.suffix.lower()]
     try:
-        text = _head(path)
+        text = read_head(path)
     except OSError as e:
         return Skipped(path, f"no extension and not readable ({e.strerror})")
     if "\0" in text:
@@ -290,12 +289,6 @@ def _classify(path: Path, dialect: str | None) -> str | Skipped:
     except UsageError as e:
         detail = str(e).split(": ", 1)[-1].split(";")[0]
         return Skipped(path, f"no extension and the content is no program of a known dialect ({detail})")
-
-
-def _head(path: Path) -> str:
-    """The first bytes of a file as a program's text: enough to classify it, however large the file."""
-    with open(path, "rb") as f:
-        return without_bom(f.read(SNIFF_BYTES).decode("latin-1"))
 
 
 def _subprograms(programs: list[Program]) -> dict[Path, str]:
@@ -343,7 +336,7 @@ def _decided(callee: Program | None, caller: Program, subs: dict, listed: dict) 
 
 def _text_head(path: Path) -> str:
     try:
-        return _head(path)
+        return read_head(path)
     except OSError:
         return ""
 

@@ -175,11 +175,16 @@ def machine_lines(machines: dict[str, int]) -> list[str]:
             for m, n in sorted(machines.items())]
 
 
-def check_record(path: str, dialect: str, machine: str, diagnostics: list[dict]) -> dict:
+def check_record(path: str, dialect: str, machine: str, diagnostics: list[dict],
+                 not_shown: str | None = None, errors_not_shown: int = 0) -> dict:
     """The report record of a program ``ncvm check`` checked: status ``error`` with its first error, or
-    ``ok``; the fields of a run (cycle time, steps, motion) are null, every diagnostic under ``diagnostics``."""
+    ``ok``; the fields of a run (cycle time, steps, motion) are null, every diagnostic kept under
+    ``diagnostics``. ``not_shown``: what the check says of the diagnostics it left out; when only they hold
+    errors (``errors_not_shown``), the record's error is that line."""
     error = next(({k: d[k] for k in ("code", "message", "file", "line", "column")}
                   for d in diagnostics if d["severity"] == "error"), None)
+    if error is None and errors_not_shown:
+        error = {"code": "", "message": not_shown, "file": path, "line": None, "column": None}
     return {"path": path, "dialect": dialect, "machine": machine, "status": "error" if error else "ok",
             "error": error, "cycle_time_s": None, "steps": None, "motion": None, "limit_violations": [],
             "output_lines": [], "diagnostics": diagnostics}

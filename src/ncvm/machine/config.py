@@ -13,9 +13,10 @@ from typing import Any, Mapping, Sequence, TypeVar
 
 from ..diagnostics import UsageError
 from .model import Axis, Machine, MotionData, PlcImage, SimClock, Tool
-from .schema import MISSING, NO_AXES, Ctx, SchemaError, validate
-from .sections import DIALECT_SECTIONS, SECTIONS
-from .spec import MACHINE_FILE, SCENARIO_FILE
+
+# The schema (schema.py, sections.py, spec.py) is imported where a file or a section is checked: the built-in
+# machine's precomputed form, checked by tests/machine/test_default_form.py, and a machine without a section for
+# the program's dialect need no check at start-up (issue 18).
 
 
 def default_machine_text() -> str:
@@ -31,8 +32,7 @@ def load_machine(path: str | Path | None = None, base_dir: Path | None = None) -
     (the program's folder) or the current directory.
     """
     if path is None:
-        where = "<built-in default machine>"
-        return machine_from_dict(_default_machine_data(where), where, base_dir or Path("."))
+        return _default_machine(base_dir or Path("."))
     p = Path(path)
     return machine_from_dict(_parse(p, "machine file"), str(p), p.parent)
 
@@ -58,12 +58,16 @@ def _parse(p: Path, what: str) -> dict:
     return _loads(text, str(p))
 
 
-def _default_machine_data(where: str) -> dict:
-    """The built-in file's parse: its precomputed form while the file reads as that form was made from."""
+def _default_machine(folder: Path) -> Machine:
+    """The built-in machine: from the file's precomputed form (a valid machine file without dialect sections,
+    tests/machine/test_default_form.py) while the file reads as that form was made from, else from the file
+    parsed and checked as any machine file."""
     from . import default_form
 
-    text = default_machine_text()
-    return default_form.data() if text == default_form.TEXT else _loads(text, where)
+    where, text = "<built-in default machine>", default_machine_text()
+    if text == default_form.TEXT:
+        return _build(default_form.data(), where, folder, sections={})
+    return machine_from_dict(_loads(text, where), where, folder)
 
 
 def _loads(text: str, where: str) -> dict:
@@ -89,15 +93,20 @@ def _quoted_line(text: str, message: str) -> str:
     return f": {line[:77] + '...' if len(line) > 80 else line}" if line else ""
 
 
-def _checked(node, data: dict, where: str, ctx: Ctx = NO_AXES, what: str = "machine file") -> None:
+def _checked(node, data: dict, where: str, ctx=None, what: str = "machine file") -> None:
+    from .schema import NO_AXES, SchemaError, validate
+
     try:
-        validate(node, data, ctx)
+        validate(node, data, NO_AXES if ctx is None else ctx)
     except SchemaError as e:
         raise UsageError(f"{where}: {what} error: {e}") from None
 
 
-def _context(data: dict, where: str) -> Ctx:
+def _context(data: dict, where: str):
     """The axes, checked first: other keys (offsets, start position, scenario axes) refer to them."""
+    from .schema import MISSING, Ctx
+    from .spec import MACHINE_FILE
+
     axes = data.get("axis", MISSING)
     _checked(MACHINE_FILE, {"axis": axes} if axes is not MISSING else {}, where)
     return Ctx(tuple(a["name"] for a in axes),
@@ -106,7 +115,15 @@ def _context(data: dict, where: str) -> Ctx:
 
 def machine_from_dict(data: dict, where: str = "<dict>", folder: Path = Path(".")) -> Machine:
     """A :class:`Machine` from a parsed machine file, checked against the schema (spec.py) first."""
+    from .sections import DIALECT_SECTIONS
+    from .spec import MACHINE_FILE
+
     _checked(MACHINE_FILE, data, where, _context(data, where))
+    return _build(data, where, folder, {sec.name: data[sec.name] for sec in DIALECT_SECTIONS if sec.name in data})
+
+
+def _build(data: dict, where: str, folder: Path, sections: dict[str, Any]) -> Machine:
+    """The machine a checked machine file describes; ``sections``: its dialect sections."""
     head = data.get("machine", {})
     m = Machine(name=head.get("name", "machine"), source=where)
     m.axes = [Axis(**{k: (float(v) if k in NUMERIC_AXIS_KEYS else v) for k, v in ax.items()}) for ax in data["axis"]]
@@ -129,7 +146,7 @@ def machine_from_dict(data: dict, where: str = "<dict>", folder: Path = Path("."
         from .scenario import from_tables
 
         m.scenario = from_tables(data["scenario"])
-    m.sections = {sec.name: data[sec.name] for sec in DIALECT_SECTIONS if sec.name in data}
+    m.sections = sections
     return m
 
 
@@ -145,6 +162,11 @@ def dialect_options(cls: type[Options], sections: Mapping[str, Any], dialect: st
     checked against its schema first: a Machine built in Python has not been through the loader.
     ``axes``: the machine's axes, for keys with a value per axis."""
     section = dict(sections.get(dialect) or {})
+    if not section:  # the declared defaults (tests/machine/test_dialect_sections.py): nothing to check
+        return cls()
+    from .schema import Ctx, SchemaError, validate
+    from .sections import SECTIONS
+
     ctx = Ctx(tuple(a.name for a in axes), tuple((a.min, a.max) for a in axes))
     try:
         validate(SECTIONS[dialect], section, ctx, path=dialect)
@@ -157,6 +179,9 @@ def load_scenario(path: str | Path, axis_names: tuple[str, ...] = ()) -> list:
     """A scenario file (``--scenario``): ``[[scenario]]`` tables as in a machine file, nothing else.
     Events that name axes (probe, fixed_stop) are checked against ``axis_names``."""
     p = Path(path)
+    from .schema import Ctx
+    from .spec import SCENARIO_FILE
+
     data = _parse(p, "scenario file")
     _checked(SCENARIO_FILE, data, str(p), Ctx(tuple(axis_names)), "scenario file")
     from .scenario import from_tables

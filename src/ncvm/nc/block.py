@@ -333,7 +333,7 @@ class DinStretch(NamedTuple):
         return self.lines[lineno - 1 - self.first]
 
 
-def din_stretches(path: str, pieces):
+def din_stretches(path: str, pieces, columns_from: int = 0):
     """:class:`DinStretch` after stretch of a program given as ``pieces`` of text with LF line ends, each
     ending at a line end (:func:`text_stretches`, or :func:`ncvm.source.stretches` over a file).
 
@@ -343,13 +343,21 @@ def din_stretches(path: str, pieces):
     errors) go through :func:`parse_din_line` one by one.
     A stretch at a time, the strings the pass finds never take more memory than one stretch's worth, and a
     run can execute a program of millions of lines without holding all of it (issue 18: a 500,000-line
-    file took 282 MB read in one pass).
+    file took 282 MB read in one pass). A stretch of fewer than ``columns_from`` lines (a check of a small
+    program) is read line by line: columns would cost more than they save (:data:`COLUMNS_FROM`).
     """
     first = 0  # lines before the stretch
     for chunk in pieces:
         lines = chunk.split("\n")
         if chunk.endswith("\n"):
             lines.pop()
+        if len(lines) < columns_from:
+            segments, diags = [], []
+            for k, line in enumerate(lines, first + 1):
+                _read_general(segments, diags, path, k, line)
+            yield DinStretch(segments, diags, lines, first, len(chunk))
+            first += len(lines)
+            continue
         columns = list(zip(*_PLAIN_LINE.findall(chunk if chunk.isupper() else chunk.upper())[:len(lines)]))
         segments, diags = [], []
         start = 0

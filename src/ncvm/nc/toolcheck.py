@@ -22,16 +22,30 @@ def missing_tool(number, tools) -> str | None:
 def tool_change_warnings(path: str, blocks, tools) -> list[Diagnostic]:
     """``blocks``: (line, column of the T word, literal T value or None, the block has a literal M6) in
     program order. NC008 at each T word whose tool an M6 then changes to and the machine lacks, once per tool."""
-    out = []
-    selected = None  # (value, line, column) of the last literal T word
-    warned = set()
-    for line, column, value, m6 in blocks:
-        if value is not None:
-            selected = (value, line, column)
-        if m6 and selected is not None and selected[0] not in warned:
-            fault = missing_tool(selected[0], tools)
-            if fault is not None:
-                warned.add(selected[0])
-                out.append(Diagnostic("NC008", f"{fault} of the machine file: the run stops at the tool change "
-                                      f"M6 (line {line})", Span(path, selected[1], selected[2]), severity="warning"))
-    return out
+    return ToolChanges(path, tools).warnings(blocks)
+
+
+class ToolChanges:
+    """:func:`tool_change_warnings` over a program given a stretch of blocks at a time (a DIN file of any
+    length is checked without holding it)."""
+
+    def __init__(self, path: str, tools):
+        self.path = path
+        self.tools = tools
+        self.selected = None  # (value, line, column) of the last literal T word
+        self.warned = set()
+
+    def warnings(self, blocks) -> list[Diagnostic]:
+        """The warnings of the next ``blocks`` of the program (as :func:`tool_change_warnings` takes them)."""
+        out = []
+        for line, column, value, m6 in blocks:
+            if value is not None:
+                self.selected = (value, line, column)
+            if m6 and self.selected is not None and self.selected[0] not in self.warned:
+                fault = missing_tool(self.selected[0], self.tools)
+                if fault is not None:
+                    self.warned.add(self.selected[0])
+                    out.append(Diagnostic("NC008", f"{fault} of the machine file: the run stops at the tool "
+                                          f"change M6 (line {line})", Span(self.path, self.selected[1],
+                                                                           self.selected[2]), severity="warning"))
+        return out

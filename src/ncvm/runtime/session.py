@@ -32,6 +32,10 @@ MAX_OUTPUT_LINES = 20_000
 
 @dataclass
 class RunOptions:
+    """How one run is made: its state directory, limits, sinks and operator input. A dataclass (ncvm.translate
+    gives it to ``dataclasses.replace``); with its docstring written, the decorator does not build one from
+    ``inspect.signature`` at every start-up."""
+
     state_dir: Path = Path(".ncvm")
     #: read the permanent data of ``state_dir`` and keep this run's changes in memory only (``ncvm translate``)
     scratch_state: bool = False

@@ -11,24 +11,26 @@ import re
 from ...diagnostics import CompileFailed, RuntimeFault, UsageError
 from ...nc import threads
 from ...nc.axiswords import din_missing_axes
-from ...nc.block import COLUMNS_FROM, PlainRun, din_stretches, file_stretches, read_din_segments, text_stretches
+from ...nc.block import COLUMNS_FROM, PlainRun, din_stretches, file_stretches, text_stretches
 from ...nc.canon import Src
 from ...nc.cycles import CannedCycles
 from ...nc.plainrun import execute_columns
 from ...nc.profiles.blockrules import block_refusal
 from ...nc.profiles.iso import ISO
-from ...nc.profiles.named import PROFILES
+from ...nc.profiles.named import profile as named_profile
 from ...source import lines as program_lines
 from ...source import open_program
 from ..base import Dialect
+from .check import check_stretches
 from .ngc import fold_extensions
 from .options import arc_tolerance, options
-from .support import address_refusal, block_error, block_errors, refused_address, tool_warnings, unsupported
+from .support import address_refusal, block_error, refused_address
 
 #: a run holds a program of up to this many characters (about 250,000 lines of CAM output) as it reads it; a
 #: longer one is read a second time, from its file, as it runs
 KEEP_CHARS = 8 << 20
-_DIN_LINE = re.compile(r"^\s*(N\d+\s*)?([GMXYZFST]-?\d|\(|%|/|$)", re.I)
+#: a line as DIN programs write them, for :meth:`DinDialect.sniff` (compiled into re's cache when first used)
+_DIN_LINE = r"(?i)^\s*(N\d+\s*)?([GMXYZFST]-?\d|\(|%|/|$)"
 
 
 def setup_kernel(kernel) -> None:
@@ -46,29 +48,21 @@ class DinDialect(Dialect):
         lines = [ln for ln in program_lines(text)[:200] if ln.strip()]
         if not lines:
             return 0
-        hits = sum(1 for ln in lines if _DIN_LINE.match(ln))
+        hits = sum(1 for ln in lines if re.match(_DIN_LINE, ln))
         return int(100 * hits / len(lines))
 
     def check(self, path, text, machine, all_errors=False):
-        segments, diags = read_din_segments(path, text, as_columns=text.count("\n") >= COLUMNS_FROM)
-        lines = program_lines(text)
-
-        def line_at(n: int) -> str | None:
-            return lines[n - 1] if n <= len(lines) else None
-
-        diags = fold_extensions(diags, line_at) if diags else diags
-        diags += [d for _i, _row, d in din_missing_axes(path, line_at, segments, machine.axis_names)]
-        profile = PROFILES[options(machine).profile]
-        diags += unsupported(path, segments, lines, machine.axis_names, profile)
-        diags += block_errors(path, segments, lines, machine.axis_names, profile)
-        diags += tool_warnings(path, segments, lines, machine.tools)
-        return sorted(diags, key=lambda d: (d.span.line, d.span.column or 0))
+        """Every diagnostic of the program, read from its file a stretch at a time (``text`` None) or from
+        ``text`` (dialects/din/check.py)."""
+        profile = named_profile(options(machine).profile)
+        with ProgramStretches(path, text) as program:
+            return check_stretches(path, program(COLUMNS_FROM), machine, profile)
 
     def run(self, path, text, session):
         kernel = session.kernel
         opts = options(session.machine)
         kernel.arc_tolerance = arc_tolerance(opts)
-        profile = PROFILES[opts.profile]  # [din] profile: the control whose G table the blocks are read with
+        profile = named_profile(opts.profile)  # [din] profile: the control whose G table the blocks are read with
         kernel.use_profile(profile)
         if profile is ISO:
             setup_kernel(kernel)  # LinuxCNC's canned cycles and G33 belong to the iso rows
@@ -200,8 +194,10 @@ class ProgramStretches:
         except OSError as e:
             raise UsageError(f"cannot read {path}: {e.strerror}") from None
 
-    def __call__(self):
-        return din_stretches(self.path, text_stretches(self.flat) if self.file is None else file_stretches(self.file))
+    def __call__(self, columns_from: int = 0):
+        """The stretches from the program's start (``columns_from``: :func:`~ncvm.nc.block.din_stretches`)."""
+        pieces = text_stretches(self.flat) if self.file is None else file_stretches(self.file)
+        return din_stretches(self.path, pieces, columns_from)
 
     def __enter__(self) -> "ProgramStretches":
         return self

@@ -13,13 +13,14 @@ import re
 
 from ...diagnostics import Diagnostic, Span
 
-_COMMENTS = re.compile(r"\([^)]*\)|;.*")
+# The patterns are compiled (into re's cache) when a program first has a syntax error, not at every start-up.
+_COMMENTS = r"\([^)]*\)|;.*"
 #: (what, how it shows in a line without its comments)
 FEATURES = (
-    ("named parameters (#<name>)", re.compile(r"#\s*<")),
-    ("# parameters", re.compile(r"#\s*[\d\[]")),
-    ("O-words (sub-programs, loops, conditions)", re.compile(r"^\s*(?:/\s*)?(?:N\d+\s*)?O\s*(?:<|\d+\s*[A-Z])", re.I)),
-    ("expressions in brackets", re.compile(r"\[")),
+    ("named parameters (#<name>)", r"#\s*<"),
+    ("# parameters", r"#\s*[\d\[]"),
+    ("O-words (sub-programs, loops, conditions)", r"(?i)^\s*(?:/\s*)?(?:N\d+\s*)?O\s*(?:<|\d+\s*[A-Z])"),
+    ("expressions in brackets", r"\["),
 )
 
 
@@ -27,24 +28,42 @@ def fold_extensions(diags: list[Diagnostic], line_at) -> list[Diagnostic]:
     """``diags`` with the NC001 of every line that uses a LinuxCNC extension replaced by one NC013 (at the
     first such line); the other diagnostics as they are. ``line_at(n)``: source line ``n`` of an NC001 (or
     None)."""
-    used: dict[str, None] = {}
-    first = None
-    count = 0
-    kept = []
-    for d in diags:
-        line = line_at(d.span.line) if d.code == "NC001" and d.span else None
-        found = [what for what, pattern in FEATURES if line is not None and pattern.search(_COMMENTS.sub("", line))]
-        if not found:
-            kept.append(d)
-            continue
-        used.update(dict.fromkeys(found))
-        count += 1
-        first = first or d
-    if first is None:
+    extensions = Extensions()
+    kept = [d for d in diags if not extensions.take(d, line_at)]
+    folded = extensions.folded()
+    if folded is None:
         return diags
-    what = ", ".join(used)
-    lines_text = "1 line" if count == 1 else f"{count} lines"
-    folded = Diagnostic("NC013", f"this is a LinuxCNC program, not DIN 66025: it uses LinuxCNC's extensions of "
-                                 f"G-code ({what}; {lines_text}, the first here), which ncvm does not run (README: "
-                                 f"which .ngc files run)", Span(first.span.file, first.span.line, first.span.column))
     return sorted([folded, *kept], key=lambda d: (d.span.line, d.span.column or 0) if d.span else (0, 0))
+
+
+class Extensions:
+    """The LinuxCNC extensions of a program, found in its NC001 diagnostics one at a time (a check reads a
+    DIN file a stretch at a time): :meth:`take` each, :meth:`folded` at the end."""
+
+    def __init__(self):
+        self.used: dict[str, None] = {}
+        self.first: Diagnostic | None = None
+        self.count = 0
+
+    def take(self, d: Diagnostic, line_at) -> bool:
+        """True when ``d`` is the NC001 of a line that uses an extension (it goes into the NC013)."""
+        line = line_at(d.span.line) if d.code == "NC001" and d.span else None
+        body = re.sub(_COMMENTS, "", line) if line is not None else None
+        found = [what for what, pattern in FEATURES if body is not None and re.search(pattern, body)]
+        if not found:
+            return False
+        self.used.update(dict.fromkeys(found))
+        self.count += 1
+        self.first = self.first or d
+        return True
+
+    def folded(self) -> Diagnostic | None:
+        """The one NC013 for every line taken (None: no line used an extension)."""
+        if self.first is None:
+            return None
+        what = ", ".join(self.used)
+        lines_text = "1 line" if self.count == 1 else f"{self.count} lines"
+        first = self.first.span
+        return Diagnostic("NC013", f"this is a LinuxCNC program, not DIN 66025: it uses LinuxCNC's extensions of "
+                                   f"G-code ({what}; {lines_text}, the first here), which ncvm does not run (README: "
+                                   f"which .ngc files run)", Span(first.file, first.line, first.column))

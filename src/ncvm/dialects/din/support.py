@@ -17,9 +17,8 @@ from ...nc.axiswords import AXIS_LETTERS
 from ...nc.block import WORD, PlainRun
 from ...nc.profiles import Profile
 from ...nc.profiles.blockrules import block_refusal
-from ...nc.profiles.check import g_column, refused_g_warnings
+from ...nc.profiles.check import count_g_use, g_column, grouped_g_warnings
 from ...nc.profiles.iso import ISO
-from ...nc.toolcheck import tool_change_warnings
 
 #: the G functions the profile runs (its rows, nc/profiles/iso.py)
 G_FUNCTIONS = frozenset(g for g, row in ISO.by_g.items() if not row.code)
@@ -50,17 +49,17 @@ def block_error(path: str, blk, line_text: str, found: tuple) -> Diagnostic:
     return Diagnostic(code, message, Span(path, blk.src.line, _column(line_text, letter, value)))
 
 
-def block_errors(path: str, segments: list, lines: list[str], axes, profile: Profile) -> list[Diagnostic]:
+def block_errors(path: str, segments: list, line_at, axes, profile: Profile) -> list[Diagnostic]:
     """``ncvm check``: the blocks that break a block rule of the control (two functions of one modal group,
-    rs274's rules: nc/profiles/blockrules.py); plain runs keep every rule (one motion code, no M, no D)."""
+    rs274's rules: nc/profiles/blockrules.py); plain runs keep every rule (one motion code, no M, no D).
+    ``line_at(n)``: source line ``n``."""
     out = []
     for seg in segments:
         if not isinstance(seg, PlainRun):
             blk = seg[0]
             found = block_refusal(profile, blk.g, blk.m, blk.words, axes)
             if found is not None:
-                out.append(block_error(path, blk, lines[blk.src.line - 1] if blk.src.line <= len(lines) else "",
-                                       found))
+                out.append(block_error(path, blk, line_at(blk.src.line), found))
     return out
 
 
@@ -69,55 +68,71 @@ def address_refusal(path: str, blk, line_text: str, address: str) -> Diagnostic:
                                "reads it)", Span(path, blk.src.line, _column(line_text, address, None)))
 
 
-def unsupported(path: str, segments: list, lines: list[str], axes, profile: Profile = ISO) -> list[Diagnostic]:
+class Unsupported:
     """Warnings for the G functions and addresses of a program the run would refuse: the first block of
-    each, with the number of blocks that use it. With another profile than iso ([din] profile) its G table
-    judges the G functions (nc/profiles/check.py); the rows its dialect runs are refused here."""
-    found: dict = {}  # (kind, what) -> [first block, count]
-    uses = []
-    for seg in segments:
-        if isinstance(seg, PlainRun):
-            continue  # G0-G3 and X Y Z I J K F only
-        blk = seg[0]
-        text = lines[blk.src.line - 1] if blk.src.line <= len(lines) else ""
-        for g in blk.g:
-            if profile is not ISO:
-                uses.append((g, blk.src.line, g_column(text, g)))
-            elif _refused_g(g, blk.words):
-                found.setdefault(("G", g), [blk, 0])[1] += 1
-        for a in blk.words:
-            if _refused_letter(a, axes):
-                found.setdefault(("A", a), [blk, 0])[1] += 1
-    out = []
-    for (kind, what), (blk, count) in found.items():
-        text = lines[blk.src.line - 1] if blk.src.line <= len(lines) else ""
-        more = f"; {count} blocks use it" if count > 1 else ""
-        if kind == "G":
-            row = ISO.refused(what)
-            name = f"G{what:g} ({row.meaning})" if row else f"G{what:g}"
-            d = Diagnostic("NC004", f"{name} is not supported by ncvm: the run stops here{more}",
-                           Span(path, blk.src.line, _column(text, "G", what)), severity="warning")
-            if what == 10:
-                d.message = f"G10 other than G10 L2 P1..P6 is not supported by ncvm: the run stops here{more}"
-        else:
-            d = address_refusal(path, blk, text, what)
-            d.severity, d.message = "warning", d.message + f": the run stops here{more}"
-        out.append(d)
-    return out + refused_g_warnings(profile, path, uses, dialect_runs=False) if uses else out
+    each, with the number of blocks that use it, gathered a stretch of the program at a time (:meth:`add`).
+    With another profile than iso ([din] profile) its G table judges the G functions (nc/profiles/check.py);
+    the rows its dialect runs are refused here."""
+
+    def __init__(self, path: str, axes, profile: Profile = ISO):
+        self.path = path
+        self.axes = axes
+        self.profile = profile
+        self.found: dict = {}  # (kind, what) -> [first block, count, its source line]
+        self.g_uses: dict = {}  # another profile's G functions: nc/profiles/check.py count_g_use
+
+    def add(self, segments: list, line_at) -> None:
+        """The next ``segments`` of the program; ``line_at(n)``: source line ``n``."""
+        for seg in segments:
+            if isinstance(seg, PlainRun):
+                continue  # G0-G3 and X Y Z I J K F only
+            blk = seg[0]
+            for g in blk.g:
+                if self.profile is not ISO:
+                    count_g_use(self.g_uses, g, blk.src.line, g_column(line_at(blk.src.line), g))
+                elif _refused_g(g, blk.words):
+                    self._count(("G", g), blk, line_at)
+            for a in blk.words:
+                if _refused_letter(a, self.axes):
+                    self._count(("A", a), blk, line_at)
+
+    def _count(self, key, blk, line_at) -> None:
+        if key not in self.found:
+            self.found[key] = [blk, 0, line_at(blk.src.line)]
+        self.found[key][1] += 1
+
+    def warnings(self) -> list[Diagnostic]:
+        out = []
+        for (kind, what), (blk, count, text) in self.found.items():
+            more = f"; {count} blocks use it" if count > 1 else ""
+            if kind == "G":
+                row = ISO.refused(what)
+                name = f"G{what:g} ({row.meaning})" if row else f"G{what:g}"
+                d = Diagnostic("NC004", f"{name} is not supported by ncvm: the run stops here{more}",
+                               Span(self.path, blk.src.line, _column(text, "G", what)), severity="warning")
+                if what == 10:
+                    d.message = f"G10 other than G10 L2 P1..P6 is not supported by ncvm: the run stops here{more}"
+            else:
+                d = address_refusal(self.path, blk, text, what)
+                d.severity, d.message = "warning", d.message + f": the run stops here{more}"
+            out.append(d)
+        if self.g_uses:
+            out += grouped_g_warnings(self.profile, self.path, self.g_uses, dialect_runs=False)
+        return out
 
 
-def tool_warnings(path: str, segments: list, lines: list[str], tools) -> list[Diagnostic]:
-    """``ncvm check``: NC008 where a T word selects a tool the machine lacks and M6 changes to it
-    (nc/toolcheck.py, the kernel's rule)."""
+def tool_blocks(segments: list, line_at) -> list:
+    """The blocks of ``segments`` as :class:`~ncvm.nc.toolcheck.ToolChanges` takes them (NC008 where a T word
+    selects a tool the machine lacks and M6 changes to it: the kernel's rule)."""
     blocks = []
     for seg in segments:
         if isinstance(seg, PlainRun):
             continue  # no T, no M
         blk = seg[0]
         t = blk.words.get("T")
-        text = lines[blk.src.line - 1] if blk.src.line <= len(lines) else ""
-        blocks.append((blk.src.line, _column(text, "T", t) if t is not None else None, t, 6 in blk.m))
-    return tool_change_warnings(path, blocks, tools)
+        blocks.append((blk.src.line, _column(line_at(blk.src.line), "T", t) if t is not None else None, t,
+                       6 in blk.m))
+    return blocks
 
 
 def _column(text: str, letter: str, value) -> int | None:

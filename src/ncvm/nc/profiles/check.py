@@ -19,15 +19,25 @@ def refused_g_warnings(profile: Profile, path: str, uses, dialect_runs: bool = T
     """``uses``: (G number, line, column or None) of every constant G word of a program, in program order.
     ``dialect_runs``: the profile's own dialect runs the rows it takes out of the block (a ``din`` program
     read with another control's profile has no such front end: those rows are refused too)."""
-    found: dict = {}  # g -> [line, column, count]
-    by_g = profile.by_g
+    grouped: dict = {}
     for g, line, column in uses:
-        row = by_g.get(g)
-        if row is None or row.code or (not dialect_runs and row.status == DIALECT):
-            found.setdefault(g, [line, column, 0])[2] += 1
+        count_g_use(grouped, g, line, column)
+    return grouped_g_warnings(profile, path, grouped, dialect_runs)
+
+
+def count_g_use(grouped: dict, g, line: int, column: int | None) -> None:
+    """One use of G ``g`` into ``grouped``: G number -> [first line, its column, blocks that use it]."""
+    grouped.setdefault(g, [line, column, 0])[2] += 1
+
+
+def grouped_g_warnings(profile: Profile, path: str, grouped: dict, dialect_runs: bool = True) -> list[Diagnostic]:
+    """:func:`refused_g_warnings` of the uses :func:`count_g_use` gathered (a program read a stretch at a time)."""
+    by_g = profile.by_g
     out = []
-    for g, (line, column, count) in found.items():
+    for g, (line, column, count) in grouped.items():
         row = by_g.get(g)
+        if not (row is None or row.code or (not dialect_runs and row.status == DIALECT)):
+            continue
         what = f"G{g:g} ({row.meaning})" if row else f"G{g:g} (not a G function of the {profile.name} profile)"
         more = f"; {count} blocks use it" if count > 1 else ""
         out.append(Diagnostic(row.code if row and row.code else "NC004", f"{what} is not supported by ncvm: the run stops here{more}",

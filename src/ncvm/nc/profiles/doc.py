@@ -9,9 +9,9 @@ import sys
 from pathlib import Path
 
 from . import Profile
-from .named import PROFILES as BY_NAME
+from .named import every_profile
 
-PROFILES = tuple(BY_NAME.values())
+PROFILES = every_profile()
 DIALECTS = {"iso": "`din` (and `[din] profile` of the machine file)", "typ3osa": "`cpl`",
             "sinumerik8xx": "`sin800`, `cl800`"}
 DOC = Path(__file__).resolve().parents[4] / "docs" / "profiles.md"

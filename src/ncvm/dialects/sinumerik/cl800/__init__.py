@@ -9,13 +9,14 @@ dialect, as the object program was loaded into the NC.
 from __future__ import annotations
 
 import re
-from dataclasses import asdict, dataclass, replace
+from dataclasses import asdict, dataclass
 from pathlib import Path
 
 from ....diagnostics import CompileFailed, RuntimeFault, Span, UsageError
 from ....machine.config import dialect_options
 from ....nc.canon import Src
 from ....outpaths import refuse_overwrite, write_output
+from ....records import replace
 from ... import get_dialect
 from ...base import Dialect
 from .. import SubProgramLibrary
