@@ -49,3 +49,13 @@ N60 M30
     rc, _out, err = translate(tmp_path, "log.cpl", "-m", "machine.toml")
     assert rc == 0, err
     assert log.read_text() == "REAL MEASUREMENTS FROM THE SHOP\n"
+
+
+def test_a_value_read_from_a_file_an_earlier_run_left_is_marked_frozen(tmp_path):
+    """The part number read from PCOUNT (left by the machine's earlier runs) decides where the part is cut:
+    the output marks it FROZEN, as it marks a CPL permanent variable an earlier run left."""
+    write(tmp_path, {"machine.toml": mill(), "count.cpl": COUNTER, "files/PCOUNT": "        41\n"})
+    rc, out, err = translate(tmp_path, "count.cpl", "-m", "machine.toml")
+    assert rc == 0, err
+    assert "G0 X42 Y0 Z5" in out
+    assert any("FROZEN" in line and "count.cpl:4" in line for line in out.splitlines()), out
