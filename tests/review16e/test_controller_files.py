@@ -6,7 +6,7 @@ must not erase or write them on the user's disk."""
 
 from __future__ import annotations
 
-from tests.review16e.helpers import mill, translate, write
+from tests.review16e.helpers import mill, ncvm, translate, write
 
 COUNTER = """(COUNT - the part number lives in the controller file PCOUNT; each part one mm further in X)
 10 N% = 0
@@ -59,3 +59,22 @@ def test_a_value_read_from_a_file_an_earlier_run_left_is_marked_frozen(tmp_path)
     assert rc == 0, err
     assert "G0 X42 Y0 Z5" in out
     assert any("FROZEN" in line and "count.cpl:4" in line for line in out.splitlines()), out
+
+
+def test_translation_leaves_an_axis_zero_shift_table_file_as_it_found_it(tmp_path):
+    """A ZS table named by a path is a file of the controller (manual §4.3, FXC L1724-1779): translating a
+    program that writes G54 into it must not rewrite the shop's table on disk."""
+    write(tmp_path, {"machine.toml": mill(), "files/.keep": "", "make.cpl": '10 FXCR(1,"ZS.NPV")\nM30\n',
+                     "zs.cpl": '10 FXC(1,54,"ZS.NPV") = 12.5\nN20 G90 G54 G0 X1 Y0 Z5\nN30 M30\n'})
+    made = subprocess_run_ok(tmp_path, "make.cpl")
+    table = tmp_path / "files" / "ZS.NPV"
+    before = table.read_text()
+    assert made and "G54" in before
+    rc, _out, err = translate(tmp_path, "zs.cpl", "-m", "machine.toml")
+    assert rc == 0, err
+    assert table.read_text() == before
+
+
+def subprocess_run_ok(folder, program: str) -> bool:
+    """``ncvm run PROGRAM`` on the folder's machine ended normally."""
+    return ncvm(folder, "run", program, "-m", "machine.toml").returncode == 0
