@@ -1,0 +1,31 @@
+"""Issue 16 item 4: comments `(file:line)` optional (`--source-comments`); the brief: "`--source-comments`
+lines pointing at the right source lines". A CL 800 program (.cl8) is compiled to an object program
+L<n>.spf that exists only inside ncvm; the run's trace and its errors name the .cl8 line, but the
+translation's comments name the object program's line: `(L80.spf:3)` points at no file the user has."""
+
+from __future__ import annotations
+
+import json
+
+from tests.review16e.helpers import ncvm, translate, write
+
+PROGRAM = """(* two moves written as DIN blocks *)
+PROGRAM 80;
+CHANNEL NC 0;
+BEGIN
+  LF; (: G90 G00 X40 Y30 Z50 :); LF;
+  (: G01 Z10 F100 :); LF;
+END.
+"""
+
+
+def test_source_comments_name_the_cl800_source_line(tmp_path):
+    write(tmp_path, {"drill.cl8": PROGRAM})
+    rc, out, err = translate(tmp_path, "drill.cl8", "--source-comments")
+    assert rc == 0, err
+    run = ncvm(tmp_path, "run", "drill.cl8", "--trace", "run.jsonl")
+    assert run.returncode == 0, run.stderr
+    moves = [r for r in map(json.loads, (tmp_path / "run.jsonl").read_text().splitlines()) if "work" in r]
+    assert [(m["file"], m["line"]) for m in moves] == [("drill.cl8", 5), ("drill.cl8", 6)]
+    assert "G0 X40 Y30 Z50 (drill.cl8:5)" in out, out
+    assert "G1 Z10 F100 (drill.cl8:6)" in out, out
