@@ -58,6 +58,6 @@ def test_frozen_mark_names_the_cl800_source_line(tmp_path):
     write(tmp_path, {"branch.cl8": BRANCH, "input.toml": INPUT_SET})
     rc, out, err = translate(tmp_path, "branch.cl8", "--scenario", "input.toml")
     assert rc == 0, err
-    marks = [line for line in out.splitlines() if "FROZEN" in line]
+    marks = [line for line in out.splitlines() if line.startswith("(FROZEN:")]
     assert marks, out
     assert all("branch.cl8:5" in mark for mark in marks), marks
