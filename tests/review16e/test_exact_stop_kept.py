@@ -42,3 +42,13 @@ def test_path_tolerance_reaches_the_linuxcnc_translation(tmp_path):
     assert rc == 0, err
     code = code_lines(out)
     assert any("G64 P0.01" in line for line in code[:code.index("G1 X0")]), out
+
+
+def test_sinumerik_exact_stop_reaches_the_linuxcnc_translation(tmp_path):
+    """SINUMERIK 8xx `G60` (exact stop, docs/sin800.md "G60/G64") is LinuxCNC's `G61`."""
+    program = "%MPF110\nN10 G17 G71 G90 G54 G94 G60\nN20 G0 X0 Y0 Z5\nN30 G1 X50 F500\nN40 Y50\nN50 M30\n"
+    write(tmp_path, {"corner.mpf": program})
+    rc, out, err = translate(tmp_path, "corner.mpf")
+    assert rc == 0, err
+    code = code_lines(out)
+    assert any("G61" in line.split() for line in code[:code.index("G1 X50 F500")]), out
