@@ -51,7 +51,7 @@ N60 M30
 @pytest.mark.parametrize(("name", "program", "machine", "lines"), [
     ("fx.cpl", CPL, mill(), (3, 4)),
     ("zoa.mpf", SIN, S880, (5, 6)),
-])
+], ids=["cpl-FXC", "sin800-ZOA"])
 def test_zero_offset_rewrite_refusal_names_the_block(tmp_path, name, program, machine, lines):
     write(tmp_path, {"machine.toml": machine, name: program})
     rc, out, err = translate(tmp_path, name, "-m", "machine.toml")
