@@ -17,7 +17,7 @@ from tests.review16e.helpers import mill, write
 RUNAWAY = "N10 G90 G17 G54 G0 X0 Y0 Z5\n10 WHILE TRUE DO\nN20 G1 X1 F1000\nN30 X0\n40 END\nN50 M30\n"
 
 
-@pytest.mark.parametrize("sig", [signal.SIGINT, signal.SIGTERM], ids=["SIGINT", "SIGTERM"])
+@pytest.mark.parametrize("sig", [signal.SIGINT, signal.SIGTERM, signal.SIGHUP], ids=["SIGINT", "SIGTERM", "SIGHUP"])
 def test_stopped_translation_leaves_nothing_beside_out(tmp_path, sig):
     write(tmp_path, {"machine.toml": mill(), "loop.cpl": RUNAWAY})
     out_dir = tmp_path / "nc_files"
