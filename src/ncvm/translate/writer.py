@@ -204,6 +204,8 @@ class Translation(CanonSink):
                              "with a negative length would ask the user for a wrong tool length")
             return
         self._line(form.format(n=n), src)
+        if self.t.edge_of_tool and self.work:  # every edge selected is listed, also one no move is made with
+            self.setup.tools.setdefault((self._tool, n, form), [frame.tool_length])
 
     def _axes(self, p, start=None, machine_frame: bool = False, always=()) -> str:
         """The axis words of end point ``p``: only the axes that move from ``start`` (and ``always``), as the
