@@ -111,8 +111,9 @@ class TranslationFile:
             w.finish_moves()
             if w.refusal is not None:
                 r = w.refusal
+                src = w.source(r.src) if r.src else None
                 refusal = Diagnostic("TRN001", f"translation to {self.target.title} refused: {r.message}"
-                                     + self._nothing_written(), Span(r.src.file, r.src.line) if r.src else None)
+                                     + self._nothing_written(), Span(src.file, src.line) if src else None)
         try:
             if refusal is not None:
                 if self.stream:

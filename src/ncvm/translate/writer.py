@@ -82,6 +82,9 @@ class Translation(CanonSink):
         self.source_comments = source_comments
         self.scenario_given = scenario_given
         self.stops_passed = stops_passed  # the simulated control stops at M0 ([sin800] m0 = "stop"); this goes on
+        #: where a place the NC ran stands in the user's source (the API gives it Session.source_place: a CL 800
+        #: program's .cl8 line, not its object program's block)
+        self.place = None
         #: what the translation says on the console beside the file (TRN003), at the block
         self.warnings: list[Diagnostic] = []
         self.names: tuple[str, ...] = ()
@@ -122,6 +125,10 @@ class Translation(CanonSink):
         self._css: tuple[float, float, float] | None = None  # G96's last speed: (speed, wanted, limit)
 
     # -- output ----------------------------------------------------------
+    def source(self, src: Src) -> Src:
+        """``src`` as the user's source names it (comments, marks, warnings and refusals)."""
+        return src if self.place is None else self.place(src)
+
     def refuse(self, src: Src | None, message: str) -> None:
         if self.refusal is None:
             self.refusal = Refusal(src, message)
@@ -148,11 +155,13 @@ class Translation(CanonSink):
                 if (what, where) in self._frozen_seen:
                     continue
                 self._frozen_seen.add((what, where))
-                at = f" at {Path(where.file).name}:{where.line}" if where else ""
+                placed = self.source(where) if where else None
+                at = f" at {Path(placed.file).name}:{placed.line}" if placed else ""
                 self._write(self.t.note(f"FROZEN: {what}{at}; the path below follows the simulated value"))
                 self.setup.frozen += 1
         if self.source_comments and src is not None:
-            ref = self.t.note(f"{Path(src.file).name}:{src.line}")
+            placed = self.source(src)
+            ref = self.t.note(f"{Path(placed.file).name}:{placed.line}")
             if remark:
                 self._write(ref)  # its own line: a second comment would hide LinuxCNC's (MSG, ...)
             else:
@@ -323,6 +332,7 @@ class Translation(CanonSink):
         if src is None:
             self.warnings.append(Diagnostic("TRN003", message, None, "warning"))
             return
+        src = self.source(src)
         text = read_lines_at(src.file, {src.line}).get(src.line, "")
         found = re.search(word, text, re.IGNORECASE)
         span = Span(src.file, src.line, found.start() + 1, found.end() + 1) if found else Span(src.file, src.line, 1)

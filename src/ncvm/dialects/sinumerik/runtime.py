@@ -573,14 +573,15 @@ class Channel:
         return d + 360.0 if d < 0.0 else d
 
     # -- external inputs and the scenario --------------------------------
-    def advance_scenario(self) -> None:
-        """Scripted events and PLC timers running out, in time order, up to the current simulated time."""
+    def advance_scenario(self, where: Src | None = None) -> None:
+        """Scripted events and PLC timers running out, in time order, up to the current simulated time;
+        ``where``: the statement that reads them (None: they are marked at the block they lead to)."""
         now = self.session.machine.clock.now
         expire = self.plc_clock.expire
         for ev in self.scenario.due(now):
             expire(ev.time)
             self._apply_event(ev)
-            self.kernel.canon.frozen(f"scenario event at {ev.time:g} s: {ev}", None)
+            self.kernel.canon.frozen(f"scenario event at {ev.time:g} s: {ev}", where)
         expire(now)
 
     def _apply_event(self, ev) -> None:
@@ -599,13 +600,16 @@ class Channel:
         elif kind is ProbeSwitch:
             self.probe.probes.append(ev)
 
-    def ext_input(self, byte: float, bit: float) -> bool:
+    def ext_input(self, byte: float, bit: float, line: int | None = None, column: int | None = None) -> bool:
+        """External input ``byte``.``bit``; ``line``, ``column``: the @ code whose decision reads it (IF INT,
+        WHILE INT), named by a translation's FROZEN mark (None: the block it leads to)."""
         b, k = _int(byte), _int(bit)
         if b not in (1, 2) or not 0 <= k <= 7:
             raise Cl800Error(f"external input {b}.{k} does not exist (byte 1/2, bit 0-7)")
-        self.advance_scenario()
+        where = None if line is None else self.session.source_place(self.src(line), column)
+        self.advance_scenario(where)
         value = bool((self.data.inputs[b] >> k) & 1)
-        self.kernel.canon.frozen(f"external input {b}.{k} read as {int(value)}", None, True)  # True: a scenario says it
+        self.kernel.canon.frozen(f"external input {b}.{k} read as {int(value)}", where, True)  # True: a scenario says it
         return value
 
     def wait_input(self, byte: int, bit: int, level: bool, what: str) -> None:
