@@ -361,6 +361,7 @@ class UnitCodegen:
     def _block(self, out: PySource, idx: int, blk: NcBlock) -> None:
         line = blk.line
         if blk.skip:
+            out.emit(f"_rt.block_skip_read({line})", line)
             out.emit("if not _rt.block_skip:", line)
             out._indent += 1
         out.emit("_st += 1", line)

@@ -27,6 +27,7 @@ from ...machine.scenario import (
     of_type,
     refuse,
 )
+from ...nc import blockskip
 from ...nc.block import Block
 from ...nc.canon import NOBODY, CanonSink, Src
 from ...nc.kernel import INCH
@@ -396,6 +397,10 @@ class Channel:
             if self.run_unit(unit, f"L{number}", span):
                 self.halted = True
                 return
+
+    def block_skip_read(self, line: int) -> None:
+        """A ``/`` block is met: the block skip switch decides whether it runs (a translation marks it)."""
+        blockskip.tell(self.kernel.canon, self.block_skip, self.src(line))
 
     def central_read(self, line: int, reads: tuple) -> None:
         """The program reads central R parameters ((number, value now) each): the first read of one an earlier
