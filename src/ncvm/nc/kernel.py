@@ -438,17 +438,19 @@ class NcKernel:
 
     def _path_mode(self, mode: str, words, src: Src) -> bool:
         """A G code of the path control (see ISO_PATH_CODES); True when the block ends in an exact stop."""
-        if mode == "block":
-            return True
+        tolerance = None
         if mode == "exact":
             self.exact = STOP_END
-        else:
+        elif mode != "block":
             self.exact = 0
             if mode == "blend" and "P" in words:
                 if words["P"] < 0.0:
                     self.fault("NC004", f"G64 P{words['P']:g}: the path tolerance cannot be negative", src)
-                self.planner.tolerance = words["P"] * self.scale
-        return False
+                self.planner.tolerance = tolerance = words["P"] * self.scale
+        if self.canon.path_control is not NOBODY:  # a translation writes it
+            self.canon.path_control("exact" if mode == "exact" else mode if mode == "block" else "continuous",
+                                    tolerance, src)
+        return mode == "block"
 
     def time_model(self) -> str:
         """The cycle-time model of this run, as the summary names it."""

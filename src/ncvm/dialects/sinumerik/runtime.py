@@ -176,6 +176,8 @@ class Channel:
         self.kernel.g_handlers.update(self.drilling.handlers())
         self.kernel.path_codes = SINUMERIK_PATH_CODES
         self.kernel.exact = STOP_END  # G60 until the program selects G64
+        if self.kernel.canon.path_control is not NOBODY:  # the power-on G60, for a translation to write
+            self.kernel.canon.path_control("exact", None, None)
         self.cycles = Cycles(self)
         self.rel_inta = RelInta(self)
         self.panel = Panel(self)
