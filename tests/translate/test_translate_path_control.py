@@ -13,7 +13,6 @@ from ncvm.runtime.session import RunOptions
 from ncvm.translate import translate
 
 
-
 def _code(text: str) -> list[str]:
     """The output's program lines, ISO's decimal point of whole numbers taken off."""
     lines = (re.sub(r"\b([XYZ]-?\d+)\.(?!\d)", r"\1", line.split("(")[0].split(";")[0].strip())
