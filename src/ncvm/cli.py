@@ -531,7 +531,7 @@ def translate_cmd(program, out, target, frame, source_comments, dialect, machine
     written as TARGET's program (docs/translate.md); a failed run writes nothing."""
     from . import api
     from .runtime.session import RunOptions
-    from .translate import TranslationRefused, translate
+    from .translate import Terminated, TranslationRefused, translate
 
     _check_program(program)
     inputs = {"program": program, **_machine_input(program, machine), "--scenario": scenario, "--keys": keys}
@@ -545,6 +545,9 @@ def translate_cmd(program, out, target, frame, source_comments, dialect, machine
     except TranslationRefused as e:
         say(e.diagnostic.render())
         sys.exit(EXIT_FAULT)
+    except Terminated as e:  # the shell's convention for a command ended by a signal
+        say(f"ncvm: {e}")
+        sys.exit(128 + e.signum)
     for v in done.warnings:  # the run's soft limits: the translation makes the same moves
         say(f"warning: {v}")
     for text in render_all(done.diagnostics):  # where the file differs from the simulated run (TRN003)

@@ -203,6 +203,11 @@ class CanonSink:
     def dwell(self, seconds: float, src: Src) -> None:
         """Wait with axes standing still."""
 
+    def path_control(self, mode: str, tolerance: float | None, src: Src | None) -> None:
+        """The path control the program selected (DIN G61/G64, SINUMERIK G60/G64/G9, CPL G61/G62): "exact"
+        (every move ends at rest), "continuous" (moves blend; ``tolerance`` the programmed corner tolerance in
+        mm, LinuxCNC's G64 P, None: none programmed) or "block" (the next move alone ends at rest: G09)."""
+
     def feed_per_rev(self, feed: float | None, src: Src | None) -> None:
         """Feed per revolution (G95): the F of the moves that follow is ``feed`` mm per spindle revolution (their
         ``feed`` is the path feed it gives, mm/min); None: feed per minute again (G94)."""
@@ -263,7 +268,7 @@ class CanonSink:
 
 
 _METHODS = ("begin", "rapid", "feed", "arc", "thread", "move_batch", "timing", "frame", "frozen", "channel", "programmed", "tapping", "dwell",
-            "feed_per_rev", "radius_compensation", "homing",
+            "path_control", "feed_per_rev", "radius_compensation", "homing",
             "tool_change", "tool_select", "tool_offset", "spindle", "css_speed", "coolant", "aux", "probe", "message", "stop", "program_end", "end")
 
 

@@ -85,6 +85,9 @@ def select(kernel, g: int, words, src: Src) -> None:
     if kernel.plane not in (17, 18):
         kernel.fault("NC012", f"G{g}: cutter radius compensation works in the G17 or G18 plane, not G{kernel.plane}",
                      src)
+    if kernel.plane_mirrored or kernel.plane_unknown:
+        kernel.fault("NC012", f"G{g}: cutter radius compensation in a G16 plane other than G17's or G18's is "
+                     "not supported by ncvm", src)
     if kernel.transform is not None:
         kernel.fault("NC005", f"G{g}: cutter radius compensation under a coordinate transformation is not "
                      "supported by ncvm", src)

@@ -107,6 +107,11 @@ class NcKernel:
         # modal state
         self.motion = 0
         self.plane = 17
+        #: SINUMERIK G16 with the plane's axes in the other order (G16 X Z: X horizontal, Z vertical, G18's
+        #: plane seen mirrored): G2 and G3 turn the other way round than in ``plane``
+        self.plane_mirrored = False
+        #: SINUMERIK G16 naming a plane that no G17-G19 is (G16 X A): an arc there is refused, naming it
+        self.plane_unknown: str | None = None
         self.absolute = True
         self.scale = 1.0  # 1.0 mm, 25.4 inch
         self.feed = 0.0  # mm/min
@@ -433,17 +438,19 @@ class NcKernel:
 
     def _path_mode(self, mode: str, words, src: Src) -> bool:
         """A G code of the path control (see ISO_PATH_CODES); True when the block ends in an exact stop."""
-        if mode == "block":
-            return True
+        tolerance = None
         if mode == "exact":
             self.exact = STOP_END
-        else:
+        elif mode != "block":
             self.exact = 0
             if mode == "blend" and "P" in words:
                 if words["P"] < 0.0:
                     self.fault("NC004", f"G64 P{words['P']:g}: the path tolerance cannot be negative", src)
-                self.planner.tolerance = words["P"] * self.scale
-        return False
+                self.planner.tolerance = tolerance = words["P"] * self.scale
+        if self.canon.path_control is not NOBODY:  # a translation writes it
+            self.canon.path_control("exact" if mode == "exact" else mode if mode == "block" else "continuous",
+                                    tolerance, src)
+        return mode == "block"
 
     def time_model(self) -> str:
         """The cycle-time model of this run, as the summary names it."""
@@ -714,6 +721,10 @@ class NcKernel:
     def _arc(self, cw: bool, start, end, words, src: Src, prog) -> None:
         if self.feed <= 0.0:
             self.fault("NC006", self.no_feed_message(2 if cw else 3), src)
+        if self.plane_unknown is not None:
+            self.fault("NC004", f"G{2 if cw else 3} in the plane of {self.plane_unknown}: ncvm draws circles in "
+                       "the planes of X, Y and Z only", src)
+        cw ^= self.plane_mirrored
         an, bn = PLANES[self.plane][:2]
         if an not in self.axis_of or bn not in self.axis_of:
             self.fault("NC004", f"plane G{self.plane} needs axes {an} and {bn}", src)

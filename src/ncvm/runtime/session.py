@@ -127,7 +127,9 @@ class Session:
             self.canon.add(self.work_bounds)
         #: where a place of the program the NC runs stands in the user's source: itself, except for a
         #: program compiled to another one first (a CL 800 run's object program, which is never on disk)
-        self.source_place: Callable[[Src], Src] = _same_place
+        #: (``column``: the statement at that column of the block, where one block holds several: a CL 800 IF INT
+        #: and the DIN words after it)
+        self.source_place: Callable[..., Src] = _same_place
         #: the program's names of machine axes it names otherwise (rw_SymPas A1 ...): the result reports
         #: positions, bounds and limit violations under them (api.RunResult)
         self.axis_labels: dict[str, str] = {}
@@ -168,7 +170,7 @@ class Session:
             self._store.close()
             self._store = None
 
-def _same_place(src: Src) -> Src:
+def _same_place(src: Src, column: int | None = None) -> Src:
     return src
 
 

@@ -106,13 +106,14 @@ class TranslationFile:
             hint = _NEEDS.get(error.code)
             refusal = Diagnostic("TRN002", "translation refused: the run did not end normally: "
                                  f"{error.code}: {error.message}" + (f" ({hint})" if hint else "") +
-                                 "; no output written", error.span, notes=list(error.notes))
+                                 self._nothing_written(), error.span, notes=list(error.notes))
         else:
             w.finish_moves()
             if w.refusal is not None:
                 r = w.refusal
-                refusal = Diagnostic("TRN001", f"translation to {self.target.title} refused: {r.message}; no "
-                                     "output written", Span(r.src.file, r.src.line) if r.src else None)
+                src = w.source(r.src) if r.src else None
+                refusal = Diagnostic("TRN001", f"translation to {self.target.title} refused: {r.message}"
+                                     + self._nothing_written(), Span(src.file, src.line) if src else None)
         try:
             if refusal is not None:
                 if self.stream:
@@ -134,6 +135,13 @@ class TranslationFile:
             raise OutputError(self.path, e) from None
         finally:
             self.close()
+
+    def _nothing_written(self) -> str:
+        """How a refusal ends: a file is left as it was; a stream has had the blocks before the fault."""
+        if self.stream:
+            return (f"; the output to {self.path} is INCOMPLETE: the blocks before this went out, the rest "
+                    "and the program end did not")
+        return "; no output written"
 
     def close(self) -> None:
         """Close and drop the temporary body (after :meth:`complete`, or when the run did not start)."""

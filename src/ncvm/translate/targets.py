@@ -47,6 +47,15 @@ class Target:
     #: an operator message
     message: str
     program_end: str
+    #: the path control: modal exact stop, continuous path, continuous path within a corner tolerance {tol}
+    #: (None: the control's continuous path takes no tolerance), exact stop of one block (None: the modal
+    #: exact stop around its move), and the mode the control is in after the preamble (nothing written while
+    #: it holds: the 840D's power-on mode is a machine datum, so its preamble selects G64)
+    path_exact: str = "G61"
+    path_continuous: str = "G64"
+    path_tolerance: str | None = None
+    exact_stop_block: str | None = None
+    path_power_on: str = "continuous"
     #: selected for ``--frame machine`` (the header says that it must be all zero), with no tool length where
     #: the preamble does not cancel it (840D: D0)
     machine_frame: str = "G54"
@@ -113,19 +122,20 @@ LINUXCNC = Target(
     machine_move="G53", machine_move_keeps_tool=False,
     dwell="G4 P{s}", probe="G38.2 {axes}{feed}", probe_no_contact="G38.3 {axes}{feed}", turns=" P{n}", message="(MSG, {})",
     thread="G33 {axes} K{lead}",
-    program_end="M2", comment_escapes=_PARENS, charset="utf-8")
+    program_end="M2", path_tolerance="G64 P{tol}", comment_escapes=_PARENS, charset="utf-8")
 
 #: SINUMERIK 840D: G54-G57 are settable zero offsets, G58/G59 programmable ones: the program's G58/G59
 #: selections go to the next settable ones, G505/G506; the tool length comes with the D number
 SINUMERIK_840D = Target(
     name="sinumerik840d", title="SINUMERIK 840D", comment="; {}",
-    preamble="G71 G90 G17 G94 G40", work_offsets={"G54": "G54", "G55": "G55", "G56": "G56", "G57": "G57",
+    preamble="G71 G90 G17 G94 G40 G64", work_offsets={"G54": "G54", "G55": "G55", "G56": "G56", "G57": "G57",
                                                  "G58": "G505", "G59": "G506"},
     tool_length_on="D{n}", tool_length_off="D0", tool_length_minus=None, edge_of_tool=True,
     machine_move="SUPA", machine_move_keeps_tool=True,
     dwell="G4 F{s}", probe="MEAS=1 G1 {axes}{feed}", probe_no_contact="MEAS=1 G1 {axes}{feed}", turns=" TURN={n}", message='MSG("{}")',
     thread=None,
-    program_end="M30", machine_frame="G500 D0", comment_escapes={'"': "'", "\n": " "})
+    program_end="M30", path_exact="G60", exact_stop_block="G9",
+    machine_frame="G500 D0", comment_escapes={'"': "'", "\n": " "})
 
 #: plain ISO / Fanuc style: the tape wrapper %, G43 H, dwell in seconds as X; no standard probe move
 ISO = Target(
@@ -134,6 +144,7 @@ ISO = Target(
     tool_length_on="G43 H{n}", tool_length_off="G49", tool_length_minus="G44 H{n}",
     machine_move="G53", machine_move_keeps_tool=False,
     dwell="G4 X{s}", probe=None, probe_no_contact=None, turns=None, message="({})", thread=None,
-    program_end="M30", wrapper="%", comment_escapes=_ISO_ESCAPES, decimal_point=True, machine_move_rapid=True)
+    program_end="M30", exact_stop_block="G09", wrapper="%", comment_escapes=_ISO_ESCAPES, decimal_point=True,
+    machine_move_rapid=True)
 
 TARGETS = {t.name: t for t in (LINUXCNC, SINUMERIK_840D, ISO)}

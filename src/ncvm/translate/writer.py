@@ -82,6 +82,9 @@ class Translation(CanonSink):
         self.source_comments = source_comments
         self.scenario_given = scenario_given
         self.stops_passed = stops_passed  # the simulated control stops at M0 ([sin800] m0 = "stop"); this goes on
+        #: where a place the NC ran stands in the user's source (the API gives it Session.source_place: a CL 800
+        #: program's .cl8 line, not its object program's block)
+        self.place = None
         #: what the translation says on the console beside the file (TRN003), at the block
         self.warnings: list[Diagnostic] = []
         self.names: tuple[str, ...] = ()
@@ -120,8 +123,18 @@ class Translation(CanonSink):
         self._homing: tuple[int, ...] | None = None  # the axes the next move homes
         self._programmed: tuple[set[int], Src] | None = None  # the axis words of the next move's block
         self._css: tuple[float, float, float] | None = None  # G96's last speed: (speed, wanted, limit)
+        #: the path control in force (mode, tolerance, block) and as the output has it (the target's power-on
+        #: mode until one is written); an exact stop of the next move alone (G09)
+        self._path: tuple[str, float | None, Src | None] = ("continuous", None, None)
+        self._path_written: tuple[str, float | None] = (target.path_power_on, None)
+        self._exact_block: Src | None = None
+        self._stop_word = ""  # the exact stop word of the next move's line
 
     # -- output ----------------------------------------------------------
+    def source(self, src: Src) -> Src:
+        """``src`` as the user's source names it (comments, marks, warnings and refusals)."""
+        return src if self.place is None else self.place(src)
+
     def refuse(self, src: Src | None, message: str) -> None:
         if self.refusal is None:
             self.refusal = Refusal(src, message)
@@ -148,17 +161,24 @@ class Translation(CanonSink):
                 if (what, where) in self._frozen_seen:
                     continue
                 self._frozen_seen.add((what, where))
-                at = f" at {Path(where.file).name}:{where.line}" if where else ""
+                placed = self.source(where) if where else None
+                at = f" at {Path(placed.file).name}:{placed.line}" if placed else ""
                 self._write(self.t.note(f"FROZEN: {what}{at}; the path below follows the simulated value"))
                 self.setup.frozen += 1
         if self.source_comments and src is not None:
-            ref = self.t.note(f"{Path(src.file).name}:{src.line}")
+            placed = self.source(src)
+            ref = self.t.note(f"{Path(placed.file).name}:{placed.line}")
             if remark:
                 self._write(ref)  # its own line: a second comment would hide LinuxCNC's (MSG, ...)
             else:
                 text += " " + ref
         self._write(text)
         self.lines += 1
+
+    def _move_line(self, text: str, src: Src) -> None:
+        """The line of a move: with the exact stop of this block alone in front where there is one (G9)."""
+        stop, self._stop_word = self._stop_word, ""
+        self._line(f"{stop} {text}" if stop else text, src)
 
     def _note(self, text: str, src: Src | None) -> None:
         """``text`` as a comment line of the target."""
@@ -204,6 +224,8 @@ class Translation(CanonSink):
                              "with a negative length would ask the user for a wrong tool length")
             return
         self._line(form.format(n=n), src)
+        if self.t.edge_of_tool and self.work:  # every edge selected is listed, also one no move is made with
+            self.setup.tools.setdefault((self._tool, n, form), [frame.tool_length])
 
     def _axes(self, p, start=None, machine_frame: bool = False, always=()) -> str:
         """The axis words of end point ``p``: only the axes that move from ``start`` (and ``always``), as the
@@ -321,6 +343,7 @@ class Translation(CanonSink):
         if src is None:
             self.warnings.append(Diagnostic("TRN003", message, None, "warning"))
             return
+        src = self.source(src)
         text = read_lines_at(src.file, {src.line}).get(src.line, "")
         found = re.search(word, text, re.IGNORECASE)
         span = Span(src.file, src.line, found.start() + 1, found.end() + 1) if found else Span(src.file, src.line, 1)
@@ -336,6 +359,39 @@ class Translation(CanonSink):
         if key not in self._frozen_pending:  # a polling loop reads the same input again and again
             self._frozen_pending.add(key)
             self._frozen.append(key)
+
+    def path_control(self, mode, tolerance, src):
+        if mode == "block":
+            self._exact_block = src
+        else:
+            self._path = (mode, tolerance, src)
+
+    def _path_words(self, src: Src) -> str:
+        """Before a move: the path control where the output's differs from the run's (a word of its own
+        line), and the exact stop of this move alone (returned: a word of the move's line, or "")."""
+        mode, tolerance, at = self._path
+        block = self._exact_block is not None and self._exact_block == src
+        self._exact_block = None
+        if block and self.t.exact_stop_block is None:  # the modal exact stop for this move, the mode after it
+            mode, tolerance, at = "exact", None, src
+        if (mode, tolerance) != self._path_written:
+            self._path_written = (mode, tolerance)
+            self._line(self._path_word(mode, tolerance, at or src), at or src)
+        return self.t.exact_stop_block if block and self.t.exact_stop_block and mode != "exact" else ""
+
+    def _path_word(self, mode: str, tolerance: float | None, src: Src) -> str:
+        if mode == "exact":
+            return self.t.path_exact
+        if tolerance is None:
+            return self.t.path_continuous
+        if self.t.path_tolerance is not None:
+            return self.t.path_tolerance.format(tol=self.num(tolerance))
+        self._warn(src, f"G64 P{number(tolerance)}: {self.t.title}'s continuous path ({self.t.path_continuous}) "
+                        "takes no corner tolerance; written without it: set the tolerance on the new control",
+                   r"(?<![A-Z\d.])P")
+        self._note(f"the program's corner tolerance P{number(tolerance)} is not written: {self.t.title}'s "
+                   f"{self.t.path_continuous} takes none; set it on the new control", src)
+        return self.t.path_continuous
 
     def programmed(self, axes, src):
         use = {self.names.index(n) for n in axes if n in self.names}
@@ -369,6 +425,7 @@ class Translation(CanonSink):
             self._programmed = None  # the block that programmed them made no move
         if self._tool_pending is not None:
             self._tool_length()
+        self._stop_word = self._path_words(src)
         self.moves += 1
         self._moved_in = src
         if self._frame_unrecorded:
@@ -399,7 +456,7 @@ class Translation(CanonSink):
             restore = self._tool_frame
             self._line(self.t.tool_length_off, src)
         feed_word = self._feed_word(feed) if feed is not None else ""
-        self._line(f"{prefix}{code} {self._axes(end, start, bool(prefix))}".rstrip() + feed_word, src)
+        self._move_line(f"{prefix}{code} {self._axes(end, start, bool(prefix))}".rstrip() + feed_word, src)
         if restore is not None:
             self._tool_pending = (restore, src)
 
@@ -420,7 +477,7 @@ class Translation(CanonSink):
         q = list(start)
         q[f.tool_axis] -= f.tool_length
         feed_word = self._feed_word(feed) if feed is not None else ""
-        self._line(f"{self.t.machine_move} {code} {self._axes(p, q, True)}".rstrip() + feed_word, src)
+        self._move_line(f"{self.t.machine_move} {code} {self._axes(p, q, True)}".rstrip() + feed_word, src)
 
     def _probe_move(self, start, end, feed, src) -> None:
         """The move after a canon ``probe`` call: the target's probe move to the programmed end point."""
@@ -454,7 +511,7 @@ class Translation(CanonSink):
             seen = ", ".join(f"{n}{number(v - self.removed[self.names.index(n)])}" for n, v in trip.items())
             self.frozen(f"measured value: the simulated probe switched at {seen}", psrc)
             word = self.t.probe
-        self._line(word.format(axes=self._axes(goal, start), feed=self._feed_word(feed)), src)
+        self._move_line(word.format(axes=self._axes(goal, start), feed=self._feed_word(feed)), src)
 
     def rapid(self, start, end, src):
         self._straight("G0", start, end, None, src)
@@ -472,7 +529,7 @@ class Translation(CanonSink):
         elif self._machine_prefix(src):
             self.refuse(src, "a thread in machine coordinates (G53)")
         else:
-            self._line(self.t.thread.format(axes=self._axes(end, start), lead=f"{lead:.6f}".rstrip("0").rstrip(".")), src)  # a lead error adds up turn by turn
+            self._move_line(self.t.thread.format(axes=self._axes(end, start), lead=f"{lead:.6f}".rstrip("0").rstrip(".")), src)  # a lead error adds up turn by turn
 
     def arc(self, start, end, spec, feed, src):
         if not self._move_starts(start, end, src):
@@ -504,7 +561,7 @@ class Translation(CanonSink):
         ci = self.num(centre[0] - start[a])
         cj = self.num(centre[1] - start[b])
         turns = self.t.turns.format(n=self._turns(spec.turns)) if spec.turns else ""
-        self._line(f"{'G2' if cw else 'G3'} {self._axes(end, start, always=(a, b))} {CENTRE_WORDS[an]}{ci} {CENTRE_WORDS[bn]}{cj}"
+        self._move_line(f"{'G2' if cw else 'G3'} {self._axes(end, start, always=(a, b))} {CENTRE_WORDS[an]}{ci} {CENTRE_WORDS[bn]}{cj}"
                    f"{turns}{self._feed_word(feed)}", src)
 
     def _below_resolution(self, start, end, spec) -> bool:
@@ -527,7 +584,7 @@ class Translation(CanonSink):
         if all(round(e - r, DECIMALS) == round(s - r, DECIMALS) for s, e, r in zip(start, end, self.removed)):
             self._programmed = None
             return
-        self._line(f"G1 {self._axes(end, start)}{self._feed_word(feed)}", src)
+        self._move_line(f"G1 {self._axes(end, start)}{self._feed_word(feed)}", src)
 
     def _turns(self, extra: int) -> int:
         """LinuxCNC's P counts the turns begun (1 + the full ones), SINUMERIK's TURN the full ones."""

@@ -602,6 +602,7 @@ class Gen:
         src = self.const(("src", line))  # every block has its constant, queued or not
         words = NcWords(s, self.word)
         if s.skip:
+            self.emit(f"_rt.block_skip_read({src})", line)
             self.emit("if not _rt.block_skip:", line)
             self.src._indent += 1
         if words.queued:

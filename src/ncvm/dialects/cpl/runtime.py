@@ -24,7 +24,7 @@ from pathlib import Path
 
 from ...diagnostics import CompileFailed, Frame, RuntimeFault, Span
 from ...machine.eventqueue import EventQueue, of_type, refuse
-from ...nc import cutter
+from ...nc import blockskip, cutter
 from ...nc.block import Block, DinSyntaxError, as_block, parse_din_line, plain_row
 from ...nc.canon import NOBODY, CanonSink, Src
 from ...nc.midmove import MotionRecorder, position_at
@@ -326,7 +326,15 @@ class CplRuntime:
         """The run read ``what`` from outside the program (a key, an input; ``scenario``: a machine input that
         only a scenario says): canon ``frozen`` at the CPL line running now."""
         where = running_line({path: uc.src for path, uc in self._codes.items()})
-        src = Src(*where) if where else None
+        self._frozen_at(what, Src(*where) if where else None, scenario)
+
+    def block_skip_read(self, src: Src) -> None:
+        """A ``/`` block is met: the block skip switch decides whether it runs (a translation marks it)."""
+        if self.kernel.canon.frozen is not NOBODY:
+            self._frozen_at(blockskip.decision(self.block_skip), src)
+
+    def _frozen_at(self, what: str, src: Src | None, scenario: bool = False) -> None:
+        """Canon ``frozen`` when execution reaches the blocks prepared after now."""
         if self.queue:  # the blocks prepared before the read execute first
             self._frozen_due.append((self.queue.executed + len(self.queue), what, src, scenario))
         else:

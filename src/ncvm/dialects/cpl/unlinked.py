@@ -33,8 +33,10 @@ def run_unlinked(rt, target: str, name: str) -> None:
         _excluded(rt, target, *found)
     refused = refused_blocks(ln.prog, rt.kernel.axis_of)
     for s in ln.prog.stmts:
-        if s.skip and rt.block_skip:
-            continue
+        if s.skip:
+            rt.block_skip_read(Src(target, s.line))
+            if rt.block_skip:
+                continue
         if s.line in refused:  # a word for an axis the machine lacks (1938), once the blocks before it ran
             rt.drain()
             address, column = refused[s.line]

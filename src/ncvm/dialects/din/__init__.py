@@ -9,7 +9,7 @@ import os
 import re
 
 from ...diagnostics import CompileFailed, RuntimeFault, UsageError
-from ...nc import threads
+from ...nc import blockskip, threads
 from ...nc.axiswords import din_missing_axes
 from ...nc.block import COLUMNS_FROM, PlainRun, din_stretches, file_stretches, text_stretches
 from ...nc.canon import Src
@@ -150,8 +150,10 @@ class DinDialect(Dialect):
                 blocks = (seg,)
                 last_src = seg[0].src
             for blk, skip in blocks:
-                if skip and skip_active:
-                    continue
+                if skip:
+                    blockskip.tell(kernel.canon, skip_active, blk.src)
+                    if skip_active:
+                        continue
                 if done >= limit:
                     counter.runaway(blk.src.file, blk.src.line)
                 done += 1

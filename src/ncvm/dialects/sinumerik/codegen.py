@@ -427,6 +427,7 @@ class UnitCodegen:
     def _block(self, out: PySource, idx: int, blk: NcBlock) -> None:
         line = blk.line
         if blk.skip:
+            out.emit(f"_rt.block_skip_read({line})", line)
             out.emit("if not _rt.block_skip:", line)
             out._indent += 1
         place, length = self.stretch.get(idx, (0, 1))
@@ -587,7 +588,8 @@ class UnitCodegen:
     def lower_branch(self, at: "_Site") -> bool:
         """Jump when the row's condition holds (ncvm's reading; the CL 800 manual is silent)."""
         ops, out = at.it.operands, at.out
-        out.emit(f"if {at.row.expr.format(a=self.val(ops[0]), b=self.val(ops[1]))}:", at.blk.line)
+        test = at.row.expr.format(a=self.val(ops[0]), b=self.val(ops[1]), line=at.blk.line, col=at.it.col)
+        out.emit(f"if {test}:", at.blk.line)
         out._indent += 1
         self._jump(out, at.idx, at.blk, int(ops[2].value), at.rec)
         out._indent -= 1

@@ -33,6 +33,10 @@ def axis_index(kernel, v: float) -> int:
     return _rng("axis number", v, 1, kernel.n_axes) - 1
 
 
+#: the axis numbers (1st, 2nd) of the planes G17-G19
+_PLANE_OF_AXES = {(1, 2): 17, (3, 1): 18, (2, 3): 19}
+
+
 class Positions:
     """The plane G16 selects and the reads of positions and G functions."""
 
@@ -69,9 +73,18 @@ class Positions:
             minus.append(False)
         self.g16_plane = tuple(axes[:3])
         self.g16_minus = tuple(minus[:3])
-        plane = {(1, 2): 17, (3, 1): 18, (2, 3): 19}.get((axes[0], axes[1]))
+        self._select_plane(axes[0], axes[1], [name for name, _ in letters[:2]])
+
+    def _select_plane(self, h: int, v: int, names: list[str]) -> None:
+        """The plane of G16's 1st (horizontal) and 2nd (vertical) axis (L2679-2680, L4146-4147): that of
+        G17-G19 with the same axes, seen mirrored where they come in the other order (G16 X Z is G18's Z-X
+        plane: its G2 turns as G18's G3); a plane of other axes has no circles in ncvm (refused at the arc)."""
+        k = self.kernel
+        plane = _PLANE_OF_AXES.get((h, v)) or _PLANE_OF_AXES.get((v, h))
+        k.plane_mirrored = plane is not None and (h, v) not in _PLANE_OF_AXES
+        k.plane_unknown = None if plane else "G16 " + " ".join(names)
         if plane:
-            self.kernel.plane = plane
+            k.plane = plane
 
     def plane_axes(self) -> tuple[str, str]:
         """The first and second axis of the active plane (G16 or G17-G19)."""

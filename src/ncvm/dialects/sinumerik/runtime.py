@@ -27,6 +27,7 @@ from ...machine.scenario import (
     of_type,
     refuse,
 )
+from ...nc import blockskip
 from ...nc.block import Block
 from ...nc.canon import NOBODY, CanonSink, Src
 from ...nc.kernel import INCH
@@ -175,6 +176,8 @@ class Channel:
         self.kernel.g_handlers.update(self.drilling.handlers())
         self.kernel.path_codes = SINUMERIK_PATH_CODES
         self.kernel.exact = STOP_END  # G60 until the program selects G64
+        if self.kernel.canon.path_control is not NOBODY:  # the power-on G60, for a translation to write
+            self.kernel.canon.path_control("exact", None, None)
         self.cycles = Cycles(self)
         self.rel_inta = RelInta(self)
         self.panel = Panel(self)
@@ -399,6 +402,10 @@ class Channel:
                 self.halted = True
                 return
 
+    def block_skip_read(self, line: int) -> None:
+        """A ``/`` block is met: the block skip switch decides whether it runs (a translation marks it)."""
+        blockskip.tell(self.kernel.canon, self.block_skip, self.src(line))
+
     def central_read(self, line: int, reads: tuple) -> None:
         """The program reads central R parameters ((number, value now) each): the first read of one an earlier
         run left, while it still holds that value, is input from outside the program, marked FROZEN at this
@@ -575,14 +582,15 @@ class Channel:
         return d + 360.0 if d < 0.0 else d
 
     # -- external inputs and the scenario --------------------------------
-    def advance_scenario(self) -> None:
-        """Scripted events and PLC timers running out, in time order, up to the current simulated time."""
+    def advance_scenario(self, where: Src | None = None) -> None:
+        """Scripted events and PLC timers running out, in time order, up to the current simulated time;
+        ``where``: the statement that reads them (None: they are marked at the block they lead to)."""
         now = self.session.machine.clock.now
         expire = self.plc_clock.expire
         for ev in self.scenario.due(now):
             expire(ev.time)
             self._apply_event(ev)
-            self.kernel.canon.frozen(f"scenario event at {ev.time:g} s: {ev}", None)
+            self.kernel.canon.frozen(f"scenario event at {ev.time:g} s: {ev}", where)
         expire(now)
 
     def _apply_event(self, ev) -> None:
@@ -601,13 +609,16 @@ class Channel:
         elif kind is ProbeSwitch:
             self.probe.probes.append(ev)
 
-    def ext_input(self, byte: float, bit: float) -> bool:
+    def ext_input(self, byte: float, bit: float, line: int | None = None, column: int | None = None) -> bool:
+        """External input ``byte``.``bit``; ``line``, ``column``: the @ code whose decision reads it (IF INT,
+        WHILE INT), named by a translation's FROZEN mark (None: the block it leads to)."""
         b, k = _int(byte), _int(bit)
         if b not in (1, 2) or not 0 <= k <= 7:
             raise Cl800Error(f"external input {b}.{k} does not exist (byte 1/2, bit 0-7)")
-        self.advance_scenario()
+        where = None if line is None else self.session.source_place(self.src(line), column)
+        self.advance_scenario(where)
         value = bool((self.data.inputs[b] >> k) & 1)
-        self.kernel.canon.frozen(f"external input {b}.{k} read as {int(value)}", None, True)  # True: a scenario says it
+        self.kernel.canon.frozen(f"external input {b}.{k} read as {int(value)}", where, True)  # True: a scenario says it
         return value
 
     def wait_input(self, byte: int, bit: int, level: bool, what: str) -> None:

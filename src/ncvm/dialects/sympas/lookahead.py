@@ -118,5 +118,5 @@ def retime(axes, segs: list, targets: list, moderegs: list, v_start: float = 0.0
             m.t0 = t
             m.warp = None if r == 1.0 else (t, 0.0, r, r, 0.0)
             m.t1 = t = t + prof.duration * TICKS_PER_S / r
-        m.feed = m.prof.v * 60.0
+        m.feed = m.vmax * 60.0  # as programmed: the joints and the card's limits are its planner's
         v_in = v_out

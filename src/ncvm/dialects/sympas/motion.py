@@ -175,7 +175,7 @@ class Move:
         self.prof = Profile(length, v, a, jerk=jerk)
         self.t0 = t0_ticks
         self.t1 = t0_ticks + self.prof.duration * TICKS_PER_S
-        self.feed = self.prof.v * 60.0
+        self.feed = v * 60.0  # the path speed programmed (TRVL), not the peak a short move's profile reaches
 
     # -- geometry -------------------------------------------------------------------------
     def point(self, s: float) -> tuple:

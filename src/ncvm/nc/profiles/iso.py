@@ -35,6 +35,8 @@ WORK_OFFSETS = {54: "G54", 55: "G55", 56: "G56", 57: "G57", 58: "G58", 59: "G59"
 
 def plane(k, g, words, src):
     k.plane = g
+    k.plane_mirrored = False
+    k.plane_unknown = None
 
 
 def absolute(k, g, words, src):

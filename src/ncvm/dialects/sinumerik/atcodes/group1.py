@@ -31,8 +31,8 @@ ROWS = (
     AtCode("146", "REPEAT UNTIL", "VWK", 6451, "branch", expr="not ({a} <= {b})"),
     AtCode("151", "FOR TO", "VWK", 6455, "branch", expr="{a} > {b}"),
     AtCode("161", "FOR DOWNTO", "VWK", 6459, "branch", expr="{a} < {b}"),
-    AtCode("187", "IF INT", "WWK", 6463, "branch", expr="not _rt.ext_input({a}, {b})"),
-    AtCode("188", "IF INT NOT", "WWK", 6465, "branch", expr="_rt.ext_input({a}, {b})"),
-    AtCode("197", "WHILE INT", "WWK", 6468, "branch", expr="not _rt.ext_input({a}, {b})"),
-    AtCode("198", "WHILE INT NOT", "WWK", 6469, "branch", expr="_rt.ext_input({a}, {b})"),
+    AtCode("187", "IF INT", "WWK", 6463, "branch", expr="not _rt.ext_input({a}, {b}, {line}, {col})"),
+    AtCode("188", "IF INT NOT", "WWK", 6465, "branch", expr="_rt.ext_input({a}, {b}, {line}, {col})"),
+    AtCode("197", "WHILE INT", "WWK", 6468, "branch", expr="not _rt.ext_input({a}, {b}, {line}, {col})"),
+    AtCode("198", "WHILE INT NOT", "WWK", 6469, "branch", expr="_rt.ext_input({a}, {b}, {line}, {col})"),
 )

@@ -185,11 +185,13 @@ class _ObjectPlaces:
             return span
         return Span(self.path, self.obj.source_line(span.line, span.column))
 
-    def source(self, src: Src) -> Src:
+    def source(self, src: Src, column: int | None = None) -> Src:
         """``src`` (a block the NC ran) as a place in the source: where M0 lines, limit messages and the
-        trace point."""
+        trace point; ``column``: the statement whose words stand there (an IF INT that reads an input)."""
         if src.file != self.obj_path:
             return src
+        if column is not None:
+            return Src(self.path, self.obj.source_line(src.line, column))
         return Src(self.path, self.obj.executed_line(src.line))
 
     def note(self, span: Span | None) -> list[str]:

@@ -53,9 +53,9 @@ def fast_line(card, tk, items, loc, relative: bool) -> bool:
     length = math.sqrt(l2)
     if length * acc >= v * v:
         end_t = tk.time + (length / v + v / acc) * 15625.0
-    else:
-        v = math.sqrt(length * acc)
-        end_t = tk.time + 2.0 * length / v * 15625.0
+    else:  # a triangle: the peak stays below TRVL, which is still the feed the move was programmed with
+        peak = math.sqrt(length * acc)
+        end_t = tk.time + 2.0 * length / peak * 15625.0
     if card.scheduler.next_timed() <= end_t or end_t == math.inf:  # a profile that never ends: refused there
         return False
     for ax, _ in items:
