@@ -331,7 +331,9 @@ class CplRuntime:
 
     def frozen(self, what: str, scenario: bool = False) -> None:
         """The run read ``what`` from outside the program (a key, an input; ``scenario``: a machine input that
-        only a scenario says): canon ``frozen`` at the CPL line running now."""
+        only a scenario says): canon ``frozen`` at the CPL line running now (nothing where no sink listens)."""
+        if self.kernel.canon.frozen is NOBODY:
+            return
         where = running_line({path: uc.src for path, uc in self._codes.items()})
         src = Src(*where) if where else None
         if self.queue:  # the blocks prepared before the read execute first
@@ -597,7 +599,7 @@ class CplRuntime:
     def _apply_events(self, t: float) -> None:
         for ev in self._events.due(t):
             self.machine.plc.inputs[ev.address] = ev.value
-            self.frozen(f"scenario event at {ev.time:g} s: input {ev.address} = {ev.value}")
+            self.frozen(f"scenario event at {ev.time:g} s: {ev.said()}")
 
     def wait(self, ic, neg: bool, state, duration):
         """0: condition met at the call; 1: the duration ran out; 2: the condition became true while waiting."""
