@@ -112,7 +112,7 @@ class CplRuntime:
         self.globals: dict = {}
         self.perm = Permanents(session)
         if self.kernel.canon.frozen is not NOBODY:  # a translation marks what earlier runs left behind
-            self.perm.on_outside = self.frozen
+            self.perm.on_outside = self.io.files.on_outside = self.frozen
         #: the motion queue: ``lookahead`` blocks, else the block buffer, whose older half executes when
         #: it is full; ``enqueue`` queues an NC block (or a plain row)
         if self.lookahead > 0:
@@ -136,7 +136,7 @@ class CplRuntime:
         #: and FILEACCESS sets bit 16 for them (§6 L4396, L4424)
         self.active: list[str] = [linked.main.prog.path]
         self.io.files.active = self.active
-        self.io.files.enter_directory_of(linked.main.prog.path)
+        self.io.files.enter_directory_of(linked.main.prog.path, self.machine.file_root_origin)
         self.hook = session.options.hook
         self._fns: dict = {}
         self._codes: dict = {}
