@@ -577,9 +577,10 @@ class CplRuntime:
         return True
 
     # -- WAIT with parameters (manual §4.1) ---------------------------------------------------
-    def advance(self, t_end: float) -> None:
+    def advance(self, t_end: float) -> float:
         """Let execution run until simulated time ``t_end``, then idle: the blocks that start before it are
-        executed (whole, by the kernel); the last of them may still be moving at ``t_end`` (see running)."""
+        executed (whole, by the kernel); the last of them may still be moving at ``t_end`` (see running).
+        Returns how long the machine stood idle (every block done) before ``t_end``."""
         clock = self.machine.clock
         queue, kernel = self.queue, self.kernel
         if queue and clock.now < t_end and not kernel.ended:
@@ -589,9 +590,21 @@ class CplRuntime:
                     rec.moves.clear()
                     self.queue.execute_one()
             self.running = (blk, before, list(rec.moves), self.executed)
+        idle = 0.0
         if clock.now < t_end:
+            idle = t_end - clock.now
             clock.now = t_end
         self.t_prep = t_end
+        return idle
+
+    def _stand(self, t_end: float) -> None:
+        """WAIT until ``t_end``: the time the machine stands after its blocks is a dwell of the canon at the WAIT
+        (a translation writes the target's G4 there: the next block waits for it, e.g. a spindle coming up to
+        speed before the plunge)."""
+        idle = self.advance(t_end)
+        if idle > 1e-9 and self.kernel.canon.dwell is not NOBODY:
+            where = running_line({path: uc.src for path, uc in self._codes.items()})
+            self.kernel.canon.dwell(idle, Src(*where) if where else None)
 
     def ic(self, args: tuple) -> bool:
         return f_ic(self, *args)
@@ -610,7 +623,7 @@ class CplRuntime:
         start = self.t_prep
         deadline = None if duration is None else start + duration / 1000.0
         if ic is None:
-            self.advance(deadline)
+            self._stand(deadline)
             return 1
         if state is None:
             raise TypeError("NUL")
@@ -623,11 +636,11 @@ class CplRuntime:
             return 0
         events = self._events
         while (te := events.next_time()) is not None and (deadline is None or te <= deadline):
-            self.advance(max(te, start))  # IC applies the event at its time
+            self._stand(max(te, start))  # IC applies the event at its time
             if met():
                 return 2
         if deadline is not None:
-            self.advance(deadline)
+            self._stand(deadline)
             return 1
         raise CplError("CPL039", "no scenario event sets the input")
 
