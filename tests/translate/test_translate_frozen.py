@@ -90,3 +90,19 @@ def test_a_probe_move_without_a_scenario_is_refused(tmp_path):
     assert d.code == "TRN001" and d.span.line == 13
     assert "the run has no scenario saying where the probe switches (give it with --scenario)" in d.message
     assert list(tmp_path.iterdir()) == []  # no output, and no state directory: a translation creates none
+
+
+def test_a_scenario_event_is_said_in_the_users_words(tmp_path):
+    """SINUMERIK: the input a scenario event sets is named as the user wrote it (external input 1.3 = 1),
+    not as the record the run keeps (``ExternalInput(time=0.0, byte=1, ...)``)."""
+    machine = tmp_path / "machine.toml"
+    machine.write_text('[machine]\nname = "880"\n' + "".join(f'[[axis]]\nname = "{a}"\n' for a in "XYZ")
+                       + '[sin800]\ncontrol = "880"\n'
+                       + '[[scenario]]\ntime = 0.0\nkind = "input"\nbyte = 1\nbit = 3\nvalue = 1\n')
+    program = tmp_path / "in.mpf"
+    program.write_text("%MPF1\nN10 G17 G71 G90 G54 G0 X0 Y0 Z0\nN20 @187 K1 K3 K40\nN30 G0 X10\n"
+                       "N40 G0 X20\nN50 M30\n")
+    translate(program, tmp_path / "in.ngc", machine=machine, options=RunOptions(state_dir=tmp_path / "st"))
+    text = (tmp_path / "in.ngc").read_text()
+    assert "(FROZEN: scenario event at 0 s: external input 1.3 = 1 at in.mpf:" in text, text
+    assert "ExternalInput" not in text

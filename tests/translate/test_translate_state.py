@@ -137,3 +137,18 @@ def test_central_r_is_marked_where_the_program_reads_it(tmp_path):
         out = (tmp_path / "out.ngc").read_text()
         found = [line[1:].split(";")[0] for line in out.splitlines() if line.startswith("(FROZEN")]
         assert found == marks, f"{name}:\n{out}"
+
+
+def test_a_program_in_the_file_root_reads_its_own_folder_in_a_translation(tmp_path):
+    """CPL manual L4381: a main program in the controller's file root reads names without a path in its own
+    folder. The translation runs on a scratch copy of the file root and still reads DEPTH beside the program,
+    not a DEPTH at the top of the root."""
+    from tests.review16e.helpers import mill, translate, write
+
+    program = '10 OPENR(1,"DEPTH") : INP#(1,D) : CLOSE(1)\nN20 G90 G17 G54 G0 X[D] Y0 Z5\nN30 M30\n'
+    write(tmp_path, {"machine.toml": mill(), "files/part/p.cpl": program, "files/part/DEPTH": "7\n",
+                     "files/DEPTH": "3\n"})
+    rc, out, err = translate(tmp_path, "files/part/p.cpl", "-m", "machine.toml")
+    assert rc == 0, err
+    assert "G0 X7 Y0 Z5" in code_lines(out), out
+    assert (tmp_path / "files" / "part" / "DEPTH").read_text() == "7\n"

@@ -137,6 +137,8 @@ class Machine:
     start_position: list[float] | None = None
     program_path: list[Path] = field(default_factory=lambda: [Path(".")])
     file_root: Path = Path("files")
+    #: the controller's file root that ``file_root`` is a scratch copy of (``ncvm translate``), else None
+    file_root_origin: Path | None = None
     scenario: list[Event] = field(default_factory=list)
     #: raw TOML tables of dialect-specific sections ([cpl], [sin800], [sympas], ...)
     sections: dict[str, Any] = field(default_factory=dict)

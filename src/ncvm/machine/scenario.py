@@ -25,6 +25,10 @@ class Event:
     #: the addressing in words, for a controller's refusal
     form: ClassVar[str] = ""
 
+    def said(self) -> str:
+        """The event in the user's words (a translation's FROZEN mark), its time left to the caller."""
+        return self.kind
+
 
 @dataclass(frozen=True)
 class InterfaceBit(Event):
@@ -34,6 +38,9 @@ class InterfaceBit(Event):
     value: bool = True
     kind: ClassVar[str] = "input"
     form: ClassVar[str] = "an input by address (CPL)"
+
+    def said(self) -> str:
+        return f"PLC input IC {self.address} = {int(self.value)}"
 
 
 @dataclass(frozen=True)
@@ -46,6 +53,9 @@ class ExternalInput(Event):
     kind: ClassVar[str] = "input"
     form: ClassVar[str] = "an input by byte and bit (SINUMERIK)"
 
+    def said(self) -> str:
+        return f"external input {self.byte}.{self.bit} = {int(self.value)}"
+
 
 @dataclass(frozen=True)
 class AxisInput(Event):
@@ -56,6 +66,9 @@ class AxisInput(Event):
     value: bool = True
     kind: ClassVar[str] = "input"
     form: ClassVar[str] = "an input by axis and bit (rw_SymPas)"
+
+    def said(self) -> str:
+        return f"digital input {self.axis}.{self.bit} = {int(self.value)}"
 
 
 @dataclass(frozen=True)
@@ -68,6 +81,9 @@ class ProbeSwitch(Event):
     kind: ClassVar[str] = "probe"
     form: ClassVar[str] = "a probe event"
 
+    def said(self) -> str:
+        return f"probe input {self.input} switches at {_position(self.position)}"
+
 
 @dataclass(frozen=True)
 class FixedStop(Event):
@@ -77,6 +93,9 @@ class FixedStop(Event):
     kind: ClassVar[str] = "fixed_stop"
     form: ClassVar[str] = "a fixed_stop event (CPL)"
 
+    def said(self) -> str:
+        return f"fixed stop at {_position(self.position)}"
+
 
 @dataclass(frozen=True)
 class SercosLock(Event):
@@ -85,6 +104,9 @@ class SercosLock(Event):
     locked: bool = True
     kind: ClassVar[str] = "sercos"
     form: ClassVar[str] = "a sercos event (CPL)"
+
+    def said(self) -> str:
+        return f"SERCOS service channel {'locked' if self.locked else 'free'}"
 
 
 @dataclass(frozen=True)
@@ -99,6 +121,11 @@ class PlcChange(Event):
     kind: ClassVar[str] = "plc"
     form: ClassVar[str] = "a plc event (SINUMERIK)"
 
+    def said(self) -> str:
+        where = f"{self.area}{self.byte}.{self.bit}" if self.bit is not None else f"{self.area}B{self.byte}"
+        value = int(self.value) if isinstance(self.value, bool) else self.value
+        return f"PLC {self.plc} {where} = {value}"
+
 
 @dataclass(frozen=True)
 class PlcTimer(Event):
@@ -112,6 +139,9 @@ class PlcTimer(Event):
     kind: ClassVar[str] = "timer"
     form: ClassVar[str] = "a timer event (SINUMERIK)"
 
+    def said(self) -> str:
+        return f"PLC {self.plc} timer T{self.number} {self.action}" + _value(self.value)
+
 
 @dataclass(frozen=True)
 class PlcCounter(Event):
@@ -124,6 +154,9 @@ class PlcCounter(Event):
     kind: ClassVar[str] = "counter"
     form: ClassVar[str] = "a counter event (SINUMERIK)"
 
+    def said(self) -> str:
+        return f"PLC {self.plc} counter C{self.number} {self.action}" + _value(self.value)
+
 
 @dataclass(frozen=True)
 class Alarm(Event):
@@ -132,6 +165,9 @@ class Alarm(Event):
     number: int = 0
     kind: ClassVar[str] = "alarm"
     form: ClassVar[str] = "an alarm event (SINUMERIK)"
+
+    def said(self) -> str:
+        return f"NC alarm {self.number} pending"
 
 
 @dataclass(frozen=True)
@@ -142,6 +178,9 @@ class PositionError(Event):
     value: float = 0.0
     kind: ClassVar[str] = "poserr"
     form: ClassVar[str] = "a poserr event (rw_SymPas)"
+
+    def said(self) -> str:
+        return f"following error of {self.axis} = {self.value:g}"
 
 
 @dataclass(frozen=True)
@@ -196,3 +235,11 @@ def from_table(entry: dict) -> Event:
 def from_tables(entries: list[dict]) -> list[Event]:
     """The events of a machine or scenario file, in time order (events at the same time as written)."""
     return sorted((from_table(e) for e in entries), key=lambda e: e.time)
+
+
+def _position(position: dict[str, float]) -> str:
+    return " ".join(f"{axis}{value:g}" for axis, value in position.items())
+
+
+def _value(value) -> str:
+    return "" if value is None else f" {value:g}"

@@ -47,14 +47,21 @@ def trip_on_path(given: dict[str, float], start: dict[str, float], end: dict[str
 
 
 def stop_words(kernel, words: dict, stop: dict[str, float]) -> None:
-    """End a block's move where the axes of ``stop`` stop (machine coordinates): their words in ``words``
-    become the program position of that point under the kernel's offsets and transformation (the other
-    axes keep their programmed end)."""
-    switch = [stop.get(name, p) for name, p in zip(kernel.axis_names, kernel.machine_pos)]
-    target = kernel.program_position(switch)
-    for name in stop:
-        if name in words:
-            i = kernel.axis_of[name]
+    """End a block's move where the axes of ``stop`` stop (machine coordinates): the block's axis words
+    become the program position of that point (the other machine axes on the block's straight path there)
+    under the kernel's offsets and transformation. Under a rotation a machine axis is another program axis:
+    under a transformation each program axis whose position at that point is not where it stands gets its
+    word, also one the block does not name (CPL G38 R90: a probe move in program X stops at a machine Y)."""
+    names = kernel.axis_names
+    start = dict(zip(names, kernel.machine_pos))
+    end = _machine_end(kernel, words)
+    try:
+        switch = trip_on_path(stop, start, end)
+    except OffPath:  # not on the path: the stopping axes where the event says, the others where they stand
+        switch = {name: stop.get(name, p) for name, p in start.items()}
+    target = kernel.program_position([switch[name] for name in names])
+    for name, i in kernel.axis_of.items():
+        if name in words or (kernel.transform is not None and abs(target[i] - kernel.prog[i]) > 1e-9):
             words[name] = (target[i] if kernel.absolute else target[i] - kernel.prog[i]) / kernel.unit_of(name)
 
 
@@ -67,6 +74,12 @@ def announce(canon, latch: ProbeLatch, src, target: dict[str, float] | None = No
 def programmed_end(kernel, words: dict) -> dict[str, float]:
     """The machine end point of a block's straight move as programmed (before :func:`stop_words` cuts it),
     for the axes the block names."""
+    end = _machine_end(kernel, words)
+    return {name: v for name, v in end.items() if name in words}
+
+
+def _machine_end(kernel, words: dict) -> dict[str, float]:
+    """The machine end point of a block's straight move as programmed, every axis."""
     prog, _ = kernel._target(words, False)
     base = prog if kernel.transform is None else kernel.transform.forward(prog)
-    return {name: base[i] + kernel.offset_vec[i] for name, i in kernel.axis_of.items() if name in words}
+    return {name: base[i] + kernel.offset_vec[i] for name, i in kernel.axis_of.items()}

@@ -62,7 +62,7 @@ def translate(program: str | Path, out: str | Path, target: str = "linuxcnc", fr
     given = api.machine_for(program, machine, options.state_dir)
     m = _past_programmed_stops(given)
     stops_passed = m is not given
-    with _scratch_files(m, options.state_dir) as m, _ended_by_termination():
+    with _scratch_files(m) as m, _ended_by_termination():
         return _translate(program, out, target, frame, source_comments, dialect, m, options, stops_passed)
 
 
@@ -121,19 +121,16 @@ def _past_programmed_stops(m: Machine) -> Machine:
 
 
 @contextmanager
-def _scratch_files(m: Machine, state_dir: Path):
-    """The machine with a scratch copy of its file root where that lies in the state directory (the built-in
-    machine keeps the controller's files there): files the program writes end with the translation, which
-    leaves the state directory as it found it (docs/translate.md)."""
+def _scratch_files(m: Machine):
+    """The machine with a scratch copy of its file root (the controller's files): what the program writes,
+    erases or reads back ends with the translation, which leaves the user's files as it found them, so
+    translating twice gives the same file (docs/translate.md)."""
     root = Path(m.file_root)
-    if not root.resolve().is_relative_to(Path(state_dir).resolve()):
-        yield m
-        return
     with tempfile.TemporaryDirectory(prefix="ncvm-files-") as folder:
         copy = Path(folder) / root.name
         try:
             if root.is_dir():
                 shutil.copytree(root, copy, symlinks=True)
         except (OSError, shutil.Error) as e:
-            raise StateError(f"cannot read the controller's files in {root} ({e}); give another --state") from None
-        yield dataclasses.replace(m, file_root=copy)
+            raise StateError(f"cannot read the controller's files in {root} ({e})") from None
+        yield dataclasses.replace(m, file_root=copy, file_root_origin=root)

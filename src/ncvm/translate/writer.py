@@ -330,8 +330,9 @@ class Translation(CanonSink):
 
     def _rewritten(self, what: str, before: str, now: str, entry: str) -> None:
         """One rule for zero offsets and tool lengths: an entry of the new control holds one value, so a
-        program that rewrites one after moves under it is refused."""
-        self.refuse(self._frame_src, f"the program rewrites {what} after moves with it ({before} before, {now} "
+        program that rewrites one after moves under it is refused, at the rewriting block or, for a rewrite
+        between blocks (CPL FXC, SINUMERIK @430), at the block that moves with the new value."""
+        self.refuse(self._frame_src or self._moved_in, f"the program rewrites {what} after moves with it ({before} before, {now} "
                                      f"now): {entry} of the new control holds one value (translate with "
                                      "--frame machine)")
 

@@ -113,7 +113,7 @@ class CplRuntime:
         self.globals: dict = {}
         self.perm = Permanents(session)
         if self.kernel.canon.frozen is not NOBODY:  # a translation marks what earlier runs left behind
-            self.perm.on_outside = self.frozen
+            self.perm.on_outside = self.io.files.on_outside = self.frozen
         #: the motion queue: ``lookahead`` blocks, else the block buffer, whose older half executes when
         #: it is full; ``enqueue`` queues an NC block (or a plain row)
         if self.lookahead > 0:
@@ -137,7 +137,7 @@ class CplRuntime:
         #: and FILEACCESS sets bit 16 for them (§6 L4396, L4424)
         self.active: list[str] = [linked.main.prog.path]
         self.io.files.active = self.active
-        self.io.files.enter_directory_of(linked.main.prog.path)
+        self.io.files.enter_directory_of(linked.main.prog.path, self.machine.file_root_origin)
         self.hook = session.options.hook
         self._fns: dict = {}
         self._codes: dict = {}
@@ -324,7 +324,9 @@ class CplRuntime:
 
     def frozen(self, what: str, scenario: bool = False) -> None:
         """The run read ``what`` from outside the program (a key, an input; ``scenario``: a machine input that
-        only a scenario says): canon ``frozen`` at the CPL line running now."""
+        only a scenario says): canon ``frozen`` at the CPL line running now (nothing where no sink listens)."""
+        if self.kernel.canon.frozen is NOBODY:
+            return
         where = running_line({path: uc.src for path, uc in self._codes.items()})
         self._frozen_at(what, Src(*where) if where else None, scenario)
 
@@ -576,9 +578,10 @@ class CplRuntime:
         return True
 
     # -- WAIT with parameters (manual §4.1) ---------------------------------------------------
-    def advance(self, t_end: float) -> None:
+    def advance(self, t_end: float) -> float:
         """Let execution run until simulated time ``t_end``, then idle: the blocks that start before it are
-        executed (whole, by the kernel); the last of them may still be moving at ``t_end`` (see running)."""
+        executed (whole, by the kernel); the last of them may still be moving at ``t_end`` (see running).
+        Returns how long the machine stood idle (every block done) before ``t_end``."""
         clock = self.machine.clock
         queue, kernel = self.queue, self.kernel
         if queue and clock.now < t_end and not kernel.ended:
@@ -588,9 +591,21 @@ class CplRuntime:
                     rec.moves.clear()
                     self.queue.execute_one()
             self.running = (blk, before, list(rec.moves), self.executed)
+        idle = 0.0
         if clock.now < t_end:
+            idle = t_end - clock.now
             clock.now = t_end
         self.t_prep = t_end
+        return idle
+
+    def _stand(self, t_end: float) -> None:
+        """WAIT until ``t_end``: the time the machine stands after its blocks is a dwell of the canon at the WAIT
+        (a translation writes the target's G4 there: the next block waits for it, e.g. a spindle coming up to
+        speed before the plunge)."""
+        idle = self.advance(t_end)
+        if idle > 1e-9 and self.kernel.canon.dwell is not NOBODY:
+            where = running_line({path: uc.src for path, uc in self._codes.items()})
+            self.kernel.canon.dwell(idle, Src(*where) if where else None)
 
     def ic(self, args: tuple) -> bool:
         return f_ic(self, *args)
@@ -598,7 +613,7 @@ class CplRuntime:
     def _apply_events(self, t: float) -> None:
         for ev in self._events.due(t):
             self.machine.plc.inputs[ev.address] = ev.value
-            self.frozen(f"scenario event at {ev.time:g} s: input {ev.address} = {ev.value}")
+            self.frozen(f"scenario event at {ev.time:g} s: {ev.said()}")
 
     def wait(self, ic, neg: bool, state, duration):
         """0: condition met at the call; 1: the duration ran out; 2: the condition became true while waiting."""
@@ -609,7 +624,7 @@ class CplRuntime:
         start = self.t_prep
         deadline = None if duration is None else start + duration / 1000.0
         if ic is None:
-            self.advance(deadline)
+            self._stand(deadline)
             return 1
         if state is None:
             raise nul_used()
@@ -622,11 +637,11 @@ class CplRuntime:
             return 0
         events = self._events
         while (te := events.next_time()) is not None and (deadline is None or te <= deadline):
-            self.advance(max(te, start))  # IC applies the event at its time
+            self._stand(max(te, start))  # IC applies the event at its time
             if met():
                 return 2
         if deadline is not None:
-            self.advance(deadline)
+            self._stand(deadline)
             return 1
         raise CplError("CPL039", "no scenario event sets the input")
 

@@ -319,6 +319,11 @@ class Channel:
     def read(self, code: str, target: int, args: tuple) -> None:
         """A read: the value goes to R<target> (and on, for multi-register results)."""
         value = _RUN[code](self)(code, args)
+        row = AT_CODES[code]
+        if row.run == "plc.read" and self.kernel.canon.frozen is not NOBODY:  # input from outside the program: a translation marks the block it leads to
+            got = " ".join(f"{v:g}" for v in value) if isinstance(value, list) else f"{value:g}"
+            self.kernel.canon.frozen(f"PLC read @{code} ({row.statement}) into R{target}: {got}, the simulated "
+                                     "PLC's ([sin800.plc])", None)
         R = self.R
         fix = nc8 if self.strict else held
         if isinstance(value, list):
@@ -464,6 +469,8 @@ class Channel:
                 if m is None:
                     raise Cl800Error(f"{code}: cannot read PLC data '{source}' (write DB<n>.DW<m> or PLC<k>.DB<n>.DW<m>)")
                 value = float(self.plc.data_word(float(m.group(1) or 1), float(m.group(2)), float(m.group(3))))
+                self.kernel.canon.frozen(f"the PLC's answer to {code}: R{n} = {value:g} from {source}, the "
+                                         "simulated PLC's ([sin800.plc])", None)
             else:
                 value = float(source)
             self.load_r(n, value)
@@ -590,7 +597,7 @@ class Channel:
         for ev in self.scenario.due(now):
             expire(ev.time)
             self._apply_event(ev)
-            self.kernel.canon.frozen(f"scenario event at {ev.time:g} s: {ev}", where)
+            self.kernel.canon.frozen(f"scenario event at {ev.time:g} s: {ev.said()}", where)
         expire(now)
 
     def _apply_event(self, ev) -> None:

@@ -115,6 +115,10 @@ class CplFiles:
     messages: list[str] = field(default_factory=list)
     warnings: list[CplWarning] = field(default_factory=list)
     _message_pending: str = ""
+    #: told of the first INP# from each file this run has not written: run-time input left by earlier runs
+    #: (``ncvm translate`` marks the path that follows it FROZEN); None: nobody asks
+    on_outside: Callable[[str], None] | None = None
+    _own: set = field(default_factory=set)  # identities of the files this run wrote from the start or read
 
     def __post_init__(self) -> None:
         self.root = Path(self.root)
@@ -155,11 +159,12 @@ class CplFiles:
         except OSError as e:
             raise fail("INVALID_FILE_NAME", f"{place.shown}: {e.strerror}") from None
 
-    def enter_directory_of(self, program: Path | str) -> None:
+    def enter_directory_of(self, program: Path | str, origin: Path | None = None) -> None:
         """The current directory of a run is the main program's, when it lies in the file root (CPL manual
-        L4381): names without a path are looked up there; elsewhere it stays the root."""
+        L4381): names without a path are looked up there; elsewhere it stays the root. ``origin``: the file
+        root this one is a scratch copy of (a translation), where the program lies."""
         try:
-            folder = Path(program).resolve().parent.relative_to(self.root.resolve())
+            folder = Path(program).resolve().parent.relative_to((origin or self.root).resolve())
         except ValueError:
             return
         self.cwd = folder.as_posix() if folder.parts else ""
@@ -248,6 +253,8 @@ class CplFiles:
             h = Handle(n, place.shown, place, ident, True, reclen, records, rec=len(records),
                        remark=text_of(remark) or "", reserved=length, fd=fd)
             h.data_size = sum(len(r) + 1 for r in records)
+            if not records:  # a new or empty file: what it holds, this run wrote
+                self._own.add(ident)
             if not canonical:
                 self._rewrite_all(h)
         except BaseException:
@@ -298,6 +305,7 @@ class CplFiles:
         if not h.writing:
             raise fail("WRONG_ACCESS", f"REWRITE needs OPENW ({h.name})")
         h.records, h.rec, h.off, h.pending, h.data_size = [], 0, 0, None, 0
+        self._own.add(h.ident)
         self._rewrite_all(h)
 
     # -- writing to disk (always through the descriptor OPENW opened) -----------------------
@@ -472,6 +480,10 @@ class CplFiles:
             values.append(value)
         if h.rec < len(h.records) and (not semicolon or h.off >= len(h.records[h.rec])):
             h.rec, h.off = h.rec + 1, 0  # with ';' the pointer stays until the record is used up
+        if self.on_outside is not None and h.ident not in self._own:
+            self._own.add(h.ident)
+            said = ", ".join("NUL" if v is None else repr(v) for v in values)
+            self.on_outside(f"controller file {h.name} read ({said}), left by earlier runs")
         return values
 
     @staticmethod

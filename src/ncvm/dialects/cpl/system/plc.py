@@ -84,14 +84,17 @@ def f_plc(rt: SystemContext, ptype, dm, addr, size):
     prefix = _plc_args(rt, ptype, dm, addr, size)
     mem = rt.ctl.plc
     if ptype == 7:
-        return max(0, mem.get(f"{prefix}{addr}", 0) - int(rt.t_prep * 1000))
-    if ptype == 8:
-        return mem.get(f"{prefix}{addr}", 0)
-    v = 0
-    for k in range(size):
-        v = (v << 8) | (mem.get(f"{prefix}{addr + k}", 0) & 0xFF)
-    if v >= 1 << (8 * size - 1) and size == 4:
-        v -= 1 << 32
+        v = max(0, mem.get(f"{prefix}{addr}", 0) - int(rt.t_prep * 1000))
+    elif ptype == 8:
+        v = mem.get(f"{prefix}{addr}", 0)
+    else:
+        v = 0
+        for k in range(size):
+            v = (v << 8) | (mem.get(f"{prefix}{addr + k}", 0) & 0xFF)
+        if v >= 1 << (8 * size - 1) and size == 4:
+            v -= 1 << 32
+    what = {7: "timer", 8: "counter"}.get(ptype, f"{size}-byte value at")
+    rt.frozen(f"PLC {what} {prefix}{addr} read as {v} (the simulated PLC: [cpl] plc)")
     return v
 
 
@@ -123,12 +126,16 @@ def _now(rt: SystemContext):
 def f_date(rt: SystemContext) -> str:
     t = _now(rt)
     text = f"{t.tm_mday:02d}.{t.tm_mon:02d}"
-    return text if rt.ctl.date_format == "DD.MM" else f"{text}.{t.tm_year % 100:02d}"
+    text = text if rt.ctl.date_format == "DD.MM" else f"{text}.{t.tm_year % 100:02d}"
+    rt.frozen(f"DATE read as {text} (the simulated clock, not the day the new control runs the program)")
+    return text
 
 
 def f_time(rt: SystemContext) -> str:
     t = _now(rt)
-    return f"{t.tm_hour:02d}.{t.tm_min:02d}.{t.tm_sec:02d}"
+    text = f"{t.tm_hour:02d}.{t.tm_min:02d}.{t.tm_sec:02d}"
+    rt.frozen(f"TIME read as {text} (the simulated clock, not the hour the new control runs the program)")
+    return text
 
 
 def f_geterr(rt: SystemContext, chan, cat, errarr, count=1):
