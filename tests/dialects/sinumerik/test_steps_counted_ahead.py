@@ -54,11 +54,12 @@ def test_computed_goto_out_of_a_stretch(tmp_path):
 
 
 def test_runaway_loop_stops_at_exactly_the_limit(tmp_path):
-    # N20-N40 one stretch of 3 blocks, looping: 1 + 333 passes = 1000 blocks, checked at the jump back
+    # N20-N40 one stretch of 3 blocks, looping: 1 + 333 passes = 1000 blocks; the 334th pass would pass the
+    # limit, so the run stops at its head (N20) with the variables of the 1000 blocks it reports
     (tmp_path / "p.mpf").write_text("%MPF1\nN10 R1=0\nN20 R1=R1+1\nN30 R2=R1*2\nN40 R3=R2-1 @100 K-20\n")
     result, _ = run(tmp_path / "p.mpf", options=RunOptions(state_dir=tmp_path / ".n", max_steps=1000))
-    assert result["error"]["code"] == "RUN001" and result["error"]["line"] == 5
-    assert result["steps"] == 1000 and result["variables"]["R1"] == 334.0
+    assert result["error"]["code"] == "RUN001" and result["error"]["line"] == 3
+    assert result["steps"] == 1000 and result["variables"]["R1"] == 333.0 and result["variables"]["R3"] == 665.0
 
 
 def test_a_pass_of_a_computing_loop_counts_its_blocks_at_once(tmp_path):
