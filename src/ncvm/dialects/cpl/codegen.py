@@ -379,18 +379,19 @@ class Gen:
 
     def real_store(self, name: str, e, code: str, line: int) -> None:
         """A computed value stored into a REAL local, rounded to binary32 inline (CPL manual §2.4.3, L650-737), no call: set
-        and read back a C float (``_c32``, ctypes), which rounds as ``values.f32`` does. What it refuses (NUL,
-        a string) goes to ``_f32``, which raises the error it always raised. A value beyond +/-3.4e38 comes
-        back infinite (so does infinity, NaN as NaN): unless :func:`magnitude` proves the expression within
-        the REAL range, the result is tested and ``_f32`` names the error. The variable keeps its old value
-        when the store fails."""
+        and read back the C float of a ``memoryview`` of format ``f`` (``_m32``), which rounds as ``values.f32``
+        does (a C cast, as ``ctypes.c_float``, and cheaper to set and read). What it refuses (NUL, a string)
+        goes to ``_f32``, which raises the error it always raised. A value beyond +/-3.4e38 comes back infinite
+        (so does infinity, NaN as NaN): unless :func:`magnitude` proves the expression within the REAL range,
+        the result is tested and ``_f32`` names the error. The variable keeps its old value when the store
+        fails."""
         self.emit(f"_r32 = {code}", line)
-        self.emit("try: _c32.value = _r32", line)
-        self.emit("except Exception: _c32.value = _f32(_r32)", line)
+        self.emit("try: _m32[0] = _r32", line)
+        self.emit("except Exception: _m32[0] = _f32(_r32)", line)
         if magnitude(e) < REAL_PROVEN:
-            self.emit(f"{name} = _c32.value", line)
+            self.emit(f"{name} = _m32[0]", line)
             return
-        self.emit("_t32 = _c32.value", line)
+        self.emit("_t32 = _m32[0]", line)
         self.emit("if _t32 - _t32: _t32 = _f32(_r32)", line)
         self.emit(f"{name} = _t32", line)
 
@@ -1167,7 +1168,7 @@ HELPER_NAMES = (
     "_logic", "_lnot", "_ix", "_sv", "_view", "_setf", "_midw", "_dim", "_pdim", "_pstr", "_gfield", "_gset_s", "_pint",
     "_call", "_q", "_q3", "_drain", "_wait", "_Block", "_loose", "_word", "_mval", "_modal", "_modal_call",
     "_runaway", "_hook", "_caseval", "_nocall", "_msin", "_mcos", "_matan", "_msqrt",
-    "_io", "_Dbl", "_SView", "_nn", "_c32",
+    "_io", "_Dbl", "_SView", "_nn", "_m32",
 ) + tuple(f"_F_{name.replace('$', '_S')}" for name in FUNCTIONS)
 
 
