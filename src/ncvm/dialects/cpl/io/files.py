@@ -30,6 +30,7 @@ from pathlib import Path
 from typing import Callable
 
 from ....machine.files import FileRoot, FileRootError, Place, identity, read_all
+from ....records import Record
 from .editor import call_parameters
 from .errors import CplRuntimeError, CplWarning, WarnFn, fail, warning
 from .format import OutputMode, format_items
@@ -44,24 +45,29 @@ REAL_MAX = 3.4028234663852886e38
 INT_MIN, INT_MAX = -(2**31), 2**31 - 1
 
 
-@dataclass
-class Handle:
+class Handle(Record):
     """One open logical file: its records in memory, the pointer, and (for writing) the disk file."""
 
-    number: int
-    name: str
-    place: Place
-    ident: tuple[int, int]  # device and inode: the same file under another name is the same file
-    writing: bool
-    reclen: int | None
-    records: list[str]
-    rec: int = 0  # 0-based record index; len(records) = on the EOF marker
-    off: int = 0  # 0-based offset inside the record
-    pending: str | None = None  # sequential: text of a record still open with ';'
-    remark: str = ""
-    reserved: int = MIN_RESERVED
-    data_size: int = 0  # bytes before the EOF marker
-    fd: int | None = None  # a file open for writing: its descriptor until CLOSE
+    __slots__ = ("number", "name", "place", "ident", "writing", "reclen", "records", "rec", "off", "pending", "remark",
+                 "reserved", "data_size", "fd")
+
+    def __init__(self, number: int, name: str, place: Place, ident: tuple[int, int], writing: bool,
+                 reclen: int | None, records: list[str], rec: int = 0, off: int = 0, pending: str | None = None,
+                 remark: str = "", reserved: int = MIN_RESERVED, data_size: int = 0, fd: int | None = None):
+        self.number = number
+        self.name = name
+        self.place = place
+        self.ident = ident  # device and inode: the same file under another name is the same file
+        self.writing = writing
+        self.reclen = reclen
+        self.records = records
+        self.rec = rec  # 0-based record index; len(records) = on the EOF marker
+        self.off = off  # 0-based offset inside the record
+        self.pending = pending  # sequential: text of a record still open with ';'
+        self.remark = remark
+        self.reserved = reserved
+        self.data_size = data_size  # bytes before the EOF marker
+        self.fd = fd  # a file open for writing: its descriptor until CLOSE
 
     @property
     def random(self) -> bool:
