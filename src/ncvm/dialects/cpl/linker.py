@@ -49,7 +49,8 @@ LINK_STATS = {"linked": 0}
 class Linked(Record):
     """A linked program: statements, structure pairs, resolved jumps, called programs."""
 
-    __slots__ = ("prog", "key", "pair", "jumps", "calls", "fields", "uses_goto", "modal_calls", "diagnostics", "unit", "prog_fors")
+    __slots__ = ("prog", "key", "pair", "jumps", "calls", "fields", "uses_goto", "modal_calls", "diagnostics", "unit",
+                 "prog_fors")
 
     def __init__(self, prog: A.Program, key: str, pair: dict | None = None, jumps: dict | None = None,
                  calls: list | None = None, fields: dict | None = None, uses_goto: bool = False,

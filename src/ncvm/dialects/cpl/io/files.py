@@ -25,7 +25,6 @@ from __future__ import annotations
 import os
 import stat
 import time
-from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Callable
 
@@ -84,8 +83,7 @@ class Handle(Record):
 FILE_SPACE = 1 << 30
 
 
-@dataclass
-class CplFiles:
+class CplFiles(Record):
     """The file table of one CPL program run.
 
     ``root``: the machine's file root; ``cwd``: the current directory inside it (names without a
@@ -96,35 +94,43 @@ class CplFiles:
     ``private``: folders no name may reach (the state directory).
     """
 
-    root: Path
-    private: tuple = ()
-    clock: object | None = None
-    message: Callable[[str], None] | None = None
-    warn: WarnFn | None = None
-    mode: OutputMode = field(default_factory=OutputMode)
-    cwd: str = ""
-    active: set[Path] = field(default_factory=set)
-    #: the NC block selected in the editor when the program runs as an editor dialog (PRN#(0)/INP#(0))
-    editor_block: str | None = None
-    #: told the new text each time PRN#(0) overwrites the editor block
-    on_editor_block: Callable[[str], None] | None = None
-    durable: bool = True
-    #: bytes the program's files may grow by in this run (``[cpl] file_space``; 0: no limit): the
-    #: controller's file memory, so that a runaway PRN# loop ends with FILE MEMORY FULL, not a full disk
-    space: int = 0
-    #: numbers written to files lose their trailing zeros (L4001); ``[cpl] file_zeros = "keep"`` keeps the
-    #: fixed decimals of STR$ and DSP
-    trim_zeros: bool = True
-    grown: int = 0  # what the run's writes added to its files, less what REWRITE and shorter files gave back
-    handles: dict[int, Handle] = field(default_factory=dict)
-    #: the PRN#(0) lines and warnings, kept only while no ``message`` / ``warn`` listener takes them
-    messages: list[str] = field(default_factory=list)
-    warnings: list[CplWarning] = field(default_factory=list)
-    _message_pending: str = ""
+    __slots__ = ("root", "private", "clock", "message", "warn", "mode", "cwd", "active", "editor_block",
+                 "on_editor_block", "durable", "space", "trim_zeros", "grown", "handles", "messages", "warnings",
+                 "_message_pending", "fileroot")
 
-    def __post_init__(self) -> None:
-        self.root = Path(self.root)
-        self.fileroot = FileRoot(self.root, self.private)
+    def __init__(self, root: Path, private: tuple = (), clock: object | None = None,
+                 message: Callable[[str], None] | None = None, warn: WarnFn | None = None,
+                 mode: OutputMode | None = None, cwd: str = "", active: set[Path] | None = None,
+                 editor_block: str | None = None, on_editor_block: Callable[[str], None] | None = None,
+                 durable: bool = True, space: int = 0, trim_zeros: bool = True, grown: int = 0,
+                 handles: dict[int, Handle] | None = None, messages: list[str] | None = None,
+                 warnings: list[CplWarning] | None = None, _message_pending: str = ""):
+        self.root = Path(root)
+        self.private = private
+        self.clock = clock
+        self.message = message
+        self.warn = warn
+        self.mode = OutputMode() if mode is None else mode
+        self.cwd = cwd
+        self.active = set() if active is None else active
+        #: the NC block selected in the editor when the program runs as an editor dialog (PRN#(0)/INP#(0))
+        self.editor_block = editor_block
+        #: told the new text each time PRN#(0) overwrites the editor block
+        self.on_editor_block = on_editor_block
+        self.durable = durable
+        #: bytes the program's files may grow by in this run (``[cpl] file_space``; 0: no limit): the
+        #: controller's file memory, so that a runaway PRN# loop ends with FILE MEMORY FULL, not a full disk
+        self.space = space
+        #: numbers written to files lose their trailing zeros (L4001); ``[cpl] file_zeros = "keep"`` keeps the
+        #: fixed decimals of STR$ and DSP
+        self.trim_zeros = trim_zeros
+        self.grown = grown  # what the run's writes added to its files, less what REWRITE and shorter files gave back
+        self.handles = {} if handles is None else handles
+        #: the PRN#(0) lines and warnings, kept only while no ``message`` / ``warn`` listener takes them
+        self.messages = [] if messages is None else messages
+        self.warnings = [] if warnings is None else warnings
+        self._message_pending = _message_pending
+        self.fileroot = FileRoot(self.root, self.private)  # where the program's names may reach
 
     # -- names ---------------------------------------------------------------------------
     def place_of(self, name) -> Place:
