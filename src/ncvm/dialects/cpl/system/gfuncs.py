@@ -41,7 +41,7 @@ from ....nc.block import Block
 from ....nc.profiles.blockrules import g_conflict
 from ....nc.profiles.typ3osa import EXTERNAL_LENGTH, TYP3OSA
 from ....nc.spindle import CPL_GEARS
-from ...records import FrozenRecord, replace
+from ....records import FrozenRecord, replace
 from ..errors import CplError
 from .context import SystemContext
 
