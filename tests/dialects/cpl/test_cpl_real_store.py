@@ -125,7 +125,7 @@ def test_a_real_store_rounds_inline_and_tests_for_infinity_only_when_unbounded(g
     assert stores == [
         "_r32 = (v_I_i * 0.001)", "try: _m32[0] = _r32", "except Exception: _m32[0] = _f32(_r32)",
         "_r32 = (((v_S_r * 0.999) + (_msin(v_X_r * 0.017453292519943295) * _mcos(v_X_r * 0.017453292519943295)))"
-        " + _msqrt((abs(v_S_r) + 1)))",
+        " + _msqrt((abs(v_S_r) + 1.0)))",
         "try: _m32[0] = _r32", "except Exception: _m32[0] = _f32(_r32)",
         "_r32 = (v_D_d * 2)", "try: _m32[0] = _r32", "except Exception: _m32[0] = _f32(_r32)",
         "if _t32 - _t32: _t32 = _f32(_r32)",
