@@ -73,6 +73,8 @@ def test_a_one_block_run_imports_neither_plot_nor_screen_libraries_nor_numpy(tmp
     assert {"json", "string"} & modules == set()  # json for --json and the store's values only
     # the built-in machine's precomputed form and a machine without a [din] section need no schema check
     assert {"ncvm.machine.schema", "ncvm.machine.sections", "ncvm.machine.spec"} & modules == set()
+    # Machine, RunOptions and the run's records are no dataclasses: the module is not imported at all
+    assert "dataclasses" not in modules
 
 
 def test_the_state_commands_are_built_when_named_or_listed(tmp_path):
@@ -103,6 +105,7 @@ def test_a_cpl_run_that_draws_and_shows_nothing_imports_no_numpy(tmp_path):
     assert code == 0
     assert top(modules, HEAVY) - {"sqlite3"} == set()
     assert top(modules, DIALECTS) == {"ncvm.dialects.cpl"}
+    assert "ctypes" not in modules  # a REAL store rounds through a memoryview's C float
 
 
 def test_a_cpl_run_on_a_machine_without_scenario_events_imports_no_event_type(tmp_path):

@@ -8,13 +8,13 @@ soft-limit check, trace, G-code, plot points), hands them to the :class:`Session
 
 from __future__ import annotations
 
-import dataclasses
 import os
 import stat
 from functools import partial
 from pathlib import Path
 from typing import Any
 
+from . import records
 from .diagnostics import CompileFailed, Diagnostic, Diagnostics, Span, UsageError
 from .dialects import detect_dialect, dialect_of_name, get_dialect
 from .machine.config import load_machine, load_scenario
@@ -300,7 +300,7 @@ def run_program(path: str | Path, dialect: str | None = None, machine: Machine |
         if options.scenario:
             # what happens over simulated time in this run, on top of the machine file's own scenario
             # (a copy: a Machine the caller passes again for the next run keeps its own scenario)
-            m = dataclasses.replace(m, scenario=sorted([*m.scenario, *load_scenario(options.scenario, m.axis_names)],
+            m = records.replace(m, scenario=sorted([*m.scenario, *load_scenario(options.scenario, m.axis_names)],
                                                        key=lambda e: e.time))
         # the controller's memory: one run at a time, refused at once (a translation reads it, writes nothing)
         with StateLock(options.state_dir, reader=options.scratch_state):

@@ -12,7 +12,6 @@ directory, or on the program path of the machine file given.
 
 from __future__ import annotations
 
-import dataclasses
 import tempfile
 from contextlib import contextmanager
 from pathlib import Path
@@ -26,6 +25,7 @@ from .machine.config import load_machine
 from .machine.model import Machine
 from .runtime.companions import KEYS_SUFFIX, SCENARIO_SUFFIX, beside
 from .runtime.session import RunOptions
+from .runtime.steps import DEFAULT_MAX_STEPS
 from .sinks.moves import MoveTable
 
 #: the name program text goes by in results and diagnostics
@@ -99,7 +99,7 @@ class Batch(list):
 
 def batch(paths, dialect: str | None = None, machine: str | Path | None = None, jobs: int | None = None,
           cluster: str | None = None, state: str | Path = ".ncvm", shared_state: bool = False,
-          max_steps: int = RunOptions.max_steps, max_memory: int | None = None) -> Batch:
+          max_steps: int = DEFAULT_MAX_STEPS, max_memory: int | None = None) -> Batch:
     """Run every main program of ``paths`` (files and folders) as ``ncvm run PATHS...`` does (docs/batch.md):
     the same programs, machine files, results. ``jobs``: local processes (default: the cores; 1: this
     process); ``cluster``: the address of a dask scheduler (``ncvm[cluster]``). ``state``: the permanent
@@ -116,11 +116,11 @@ def batch(paths, dialect: str | None = None, machine: str | Path | None = None, 
 
 
 def _options(options: RunOptions | None, fields: dict) -> RunOptions:
-    known = {f.name for f in dataclasses.fields(RunOptions)}
+    known = set(RunOptions.FIELDS)
     unknown = sorted(set(fields) - known)
     if unknown:
         raise TypeError(f"unknown run option(s) {', '.join(unknown)}; the options are {', '.join(sorted(known))}")
-    options = dataclasses.replace(options or RunOptions(), **fields)
+    options = records.replace(options or RunOptions(), **fields)
     for name in ("state_dir", "trace", "gcode", "keys", "scenario", "screen", "screen_dir"):
         value = getattr(options, name)
         if isinstance(value, str):

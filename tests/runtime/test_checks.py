@@ -86,3 +86,36 @@ def test_a_session_built_directly_gets_the_sinks_of_a_run(tmp_path):
     session = Session(load_machine(None), RunOptions(state_dir=tmp_path / ".s", keep_toolpath=True, plot=True))
     assert session.recorder is not None and session.recorder in session.sinks and session.plot is not None
     assert len(session.checks.violations()) == 0
+
+
+@dataclass
+class AxisSaid:
+    """A front end's own violation as a dataclass that names its place and an axis."""
+
+    file: str
+    line: int
+    axis: str
+    frame: str = "work"
+
+    def message(self) -> str:
+        return f"{self.axis} at {self.file}:{self.line}"
+
+
+class Reports:
+    def __init__(self, *found):
+        self.found = found
+
+    def first(self):
+        return list(self.found)
+
+
+def test_a_dataclass_violation_is_placed_and_named_as_a_record_is():
+    """Checks.violations maps a dataclass violation's place and axis (dataclasses.replace), as a record's."""
+    from ncvm.nc.canon import Src
+    from ncvm.runtime.checks import Checks
+
+    checks = Checks()
+    checks.add(Reports(AxisSaid("gen.py", 7, "X"), Said(3, "no place")))
+    got = checks.violations(place=lambda src: Src("p.cpl", src.line + 100), labels={"X": "X1"})
+    assert got == [AxisSaid("p.cpl", 107, "X1", "machine"), Said(3, "no place")]
+    assert checks.violations() == [AxisSaid("gen.py", 7, "X"), Said(3, "no place")]

@@ -9,7 +9,6 @@ Dialects read and write it through these objects only; the SQLite store
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -119,30 +118,42 @@ class PlcImage(Record):
         self.words = {} if words is None else words
 
 
-@dataclass
-class Machine:
-    """A simulated controller: the data a real control holds about its machine."""
+class Machine(Record):
+    """A simulated controller: the data a real control holds about its machine. A record (``records.replace``
+    makes a changed copy), not a dataclass: every run builds one at start-up."""
 
-    name: str = "machine"
-    axes: list[Axis] = field(default_factory=list)
-    #: zero offsets by name ("G54".."G59" and dialect-specific tables), one value per axis
-    offsets: dict[str, list[float]] = field(default_factory=dict)
-    tools: dict[int, Tool] = field(default_factory=dict)
-    machine_data: dict[str, Any] = field(default_factory=dict)
-    setting_data: dict[str, Any] = field(default_factory=dict)
-    plc: PlcImage = field(default_factory=PlcImage)
-    alarms: list[str] = field(default_factory=list)
-    clock: SimClock = field(default_factory=SimClock)
-    motion: MotionData = field(default_factory=MotionData)
-    start_position: list[float] | None = None
-    program_path: list[Path] = field(default_factory=lambda: [Path(".")])
-    file_root: Path = Path("files")
-    #: the controller's file root that ``file_root`` is a scratch copy of (``ncvm translate``), else None
-    file_root_origin: Path | None = None
-    scenario: list[Event] = field(default_factory=list)
-    #: raw TOML tables of dialect-specific sections ([cpl], [sin800], [sympas], ...)
-    sections: dict[str, Any] = field(default_factory=dict)
-    source: str = "<built-in>"
+    __slots__ = ("name", "axes", "offsets", "tools", "machine_data", "setting_data", "plc", "alarms", "clock",
+                 "motion", "start_position", "program_path", "file_root", "file_root_origin", "scenario", "sections", "source")
+
+    def __init__(self, name: str = "machine", axes: list[Axis] | None = None,
+                 offsets: dict[str, list[float]] | None = None, tools: dict[int, Tool] | None = None,
+                 machine_data: dict[str, Any] | None = None, setting_data: dict[str, Any] | None = None,
+                 plc: PlcImage | None = None, alarms: list[str] | None = None, clock: SimClock | None = None,
+                 motion: MotionData | None = None, start_position: list[float] | None = None,
+                 program_path: list[Path] | None = None, file_root: Path = Path("files"),
+                 file_root_origin: Path | None = None,
+                 scenario: list[Event] | None = None, sections: dict[str, Any] | None = None,
+                 source: str = "<built-in>"):
+        self.name = name
+        self.axes = [] if axes is None else axes
+        #: zero offsets by name ("G54".."G59" and dialect-specific tables), one value per axis
+        self.offsets = {} if offsets is None else offsets
+        self.tools = {} if tools is None else tools
+        self.machine_data = {} if machine_data is None else machine_data
+        self.setting_data = {} if setting_data is None else setting_data
+        self.plc = PlcImage() if plc is None else plc
+        self.alarms = [] if alarms is None else alarms
+        self.clock = SimClock() if clock is None else clock
+        self.motion = MotionData() if motion is None else motion
+        self.start_position = start_position
+        self.program_path = [Path(".")] if program_path is None else program_path
+        self.file_root = file_root
+        #: the controller's file root that ``file_root`` is a scratch copy of (``ncvm translate``), else None
+        self.file_root_origin = file_root_origin
+        self.scenario = [] if scenario is None else scenario
+        #: raw TOML tables of dialect-specific sections ([cpl], [sin800], [sympas], ...)
+        self.sections = {} if sections is None else sections
+        self.source = source
 
     # -- derived lookups -------------------------------------------------
     @property

@@ -9,17 +9,19 @@ the move (:func:`announce`). Used by CPL's measuring blocks G75/G275/G375 and SI
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from ..records import Record
 
 
-@dataclass
-class ProbeLatch:
+class ProbeLatch(Record):
     """What the last probe move measured: ``position`` holds the machine coordinates of the measured
     axes when the probe switched (by axis name), None when it did not switch; ``code`` is the measuring
     function that took it (the control's own number, e.g. CPL's G75)."""
 
-    code: int = 0
-    position: dict[str, float] | None = None
+    __slots__ = ("code", "position")
+
+    def __init__(self, code: int = 0, position: dict[str, float] | None = None):
+        self.code = code
+        self.position = position
 
 
 class OffPath(ValueError):

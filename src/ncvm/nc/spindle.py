@@ -10,17 +10,19 @@ function for MCODS 64/66 and sets no limit).
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from ..records import FrozenRecord
 
 #: stage numbers of a gear table beside 1, 2, ...: chosen from the speed (M40), neutral (CPL M48)
 AUTO, NEUTRAL = 0, -1
 
 
-@dataclass(frozen=True)
-class GearTable:
+class GearTable(FrozenRecord):
     """A control's gear M functions: M number -> stage (1.., :data:`AUTO` or :data:`NEUTRAL`)."""
 
-    stages: dict[int, int]
+    __slots__ = ("stages",)
+
+    def __init__(self, stages: dict[int, int]):
+        self.stages = stages
 
     @property
     def codes(self) -> frozenset[int]:

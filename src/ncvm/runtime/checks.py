@@ -9,7 +9,6 @@ reports its first violations at the end, in ``limit_violations``; the run goes o
 
 from __future__ import annotations
 
-import dataclasses
 from typing import Any, Callable, NamedTuple, Protocol, Sequence
 
 from .. import records
@@ -85,14 +84,18 @@ def _as_reported(v: Any, place: Callable[[Src], Src] | None, labels: dict[str, s
     """Violation ``v`` at its place in the source and under the program's axis name; one that names an
     axis so says it is in machine coordinates, where limits are."""
     record = isinstance(v, Record)
-    if not (record or dataclasses.is_dataclass(v)) or not hasattr(v, "file"):
+    if not (record or hasattr(type(v), "__dataclass_fields__")) or not hasattr(v, "file"):  # is_dataclass
         return v  # a front end's own report that names no place
     changes: dict[str, Any] = {}
     if place is not None:
         src = place(Src(v.file, v.line))
         changes.update(file=src.file, line=src.line)
-    if labels and "axis" in (v._fields() if record else {f.name for f in dataclasses.fields(v)}):
+    if labels and "axis" in (v._fields() if record else type(v).__dataclass_fields__):
         changes.update(axis=labels.get(v.axis, v.axis), frame="machine")
     if not changes:
         return v
-    return records.replace(v, **changes) if record else dataclasses.replace(v, **changes)
+    if record:
+        return records.replace(v, **changes)
+    import dataclasses  # a front end's dataclass violation: its module imported dataclasses (start-up)
+
+    return dataclasses.replace(v, **changes)

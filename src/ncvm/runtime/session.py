@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import sys
 from collections import deque
-from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Callable, Protocol
 
@@ -30,40 +29,59 @@ from .steps import DEFAULT_MAX_STEPS, StepCounter, StepHook
 MAX_OUTPUT_LINES = 20_000
 
 
-@dataclass
-class RunOptions:
-    """How one run is made: its state directory, limits, sinks and operator input. A dataclass (ncvm.translate
-    gives it to ``dataclasses.replace``); with its docstring written, the decorator does not build one from
-    ``inspect.signature`` at every start-up."""
+#: an option not given (where None is a value a caller may give)
+_DEFAULT: Any = object()
 
-    state_dir: Path = Path(".ncvm")
-    #: read the permanent data of ``state_dir`` and keep this run's changes in memory only (``ncvm translate``)
-    scratch_state: bool = False
-    max_steps: int = DEFAULT_MAX_STEPS
-    trace: Path | None = None
-    gcode: Path | None = None
-    plot: bool = False  # collect the (thinned) points of a toolpath plot while the program runs (session.plot)
-    plot_frame: str = "work"  # the plot's coordinates: "work" (the program's) or "machine"
-    keep_toolpath: bool = False  # keep every move (session.recorder.arrays()); else only totals and checks
-    max_output_lines: int = MAX_OUTPUT_LINES  # operator output lines kept for the result (first and last half)
-    max_memory: int = field(default_factory=default_max_memory)  # bytes the run may grow the process by; 0: no limit
-    echo: bool = False  # print operator output to stdout as it happens
-    hook: StepHook | None = None
-    extra_sinks: list[CanonSink] = field(default_factory=list)
-    #: operator key presses and typed values for dialog programs: a key script file, or one read already
-    keys: Path | Any | None = None
-    keyboard: bool = False  # without a key script: the operator types keys on stdin (a terminal)
-    editor_block: str | None = None  # the NC block selected in the editor, for a CPL editor dialog
-    scenario: Path | None = None  # scenario file: inputs, probe triggers, ... over simulated time
-    #: "lookahead" or "rest-to-rest": the cycle-time model instead of the machine file's ``[motion] model``
-    time_model: str | None = None
-    screen: Path | None = None  # save the operator screen as it stands at the end (PNG)
-    screen_dir: Path | None = None  # save one screen picture per wait for the operator (softkey, input)
-    on_session: Callable[["Session"], None] | None = None  # told of the session as soon as it exists
-    #: told when the run starts (True) and stops (False) waiting for the operator at the terminal (keyboard)
-    on_operator_wait: Callable[[bool], None] | None = None
-    #: CPL MMC (manual ch. 9): the client, ``client(names, values) -> (rc, {name: new value})``; None = no client
-    mmc_client: Callable[[list, list], tuple] | None = None
+
+class RunOptions(Record):
+    """How one run is made: its state directory, limits, sinks and operator input. A record (``records.replace``
+    makes a changed copy; ``RunOptions.FIELDS`` names what a caller may set), not a dataclass: every run builds
+    one at start-up."""
+
+    FIELDS = ("state_dir", "scratch_state", "max_steps", "trace", "gcode", "plot", "plot_frame", "keep_toolpath",
+              "max_output_lines", "max_memory", "echo", "hook", "extra_sinks", "keys", "keyboard", "editor_block",
+              "scenario", "time_model", "screen", "screen_dir", "on_session", "on_operator_wait", "mmc_client")
+    __slots__ = FIELDS
+
+    def __init__(self, state_dir: Path = Path(".ncvm"), scratch_state: bool = False,
+                 max_steps: int = DEFAULT_MAX_STEPS, trace: Path | None = None, gcode: Path | None = None,
+                 plot: bool = False, plot_frame: str = "work", keep_toolpath: bool = False,
+                 max_output_lines: int = MAX_OUTPUT_LINES, max_memory: Any = _DEFAULT, echo: bool = False,
+                 hook: StepHook | None = None, extra_sinks: list[CanonSink] | None = None,
+                 keys: Path | Any | None = None, keyboard: bool = False, editor_block: str | None = None,
+                 scenario: Path | None = None, time_model: str | None = None, screen: Path | None = None,
+                 screen_dir: Path | None = None, on_session: Callable[["Session"], None] | None = None,
+                 on_operator_wait: Callable[[bool], None] | None = None,
+                 mmc_client: Callable[[list, list], tuple] | None = None):
+        self.state_dir = state_dir
+        #: read the permanent data of ``state_dir`` and keep this run's changes in memory only (``ncvm translate``)
+        self.scratch_state = scratch_state
+        self.max_steps = max_steps
+        self.trace = trace
+        self.gcode = gcode
+        self.plot = plot  # collect the (thinned) points of a toolpath plot while the program runs (session.plot)
+        self.plot_frame = plot_frame  # the plot's coordinates: "work" (the program's) or "machine"
+        self.keep_toolpath = keep_toolpath  # keep every move (session.recorder.arrays()); else only totals and checks
+        self.max_output_lines = max_output_lines  # operator output lines kept for the result (first and last half)
+        #: bytes the run may grow the process by; 0: no limit (not given: runtime.memory's default)
+        self.max_memory = default_max_memory() if max_memory is _DEFAULT else max_memory
+        self.echo = echo  # print operator output to stdout as it happens
+        self.hook = hook
+        self.extra_sinks = [] if extra_sinks is None else extra_sinks
+        #: operator key presses and typed values for dialog programs: a key script file, or one read already
+        self.keys = keys
+        self.keyboard = keyboard  # without a key script: the operator types keys on stdin (a terminal)
+        self.editor_block = editor_block  # the NC block selected in the editor, for a CPL editor dialog
+        self.scenario = scenario  # scenario file: inputs, probe triggers, ... over simulated time
+        #: "lookahead" or "rest-to-rest": the cycle-time model instead of the machine file's ``[motion] model``
+        self.time_model = time_model
+        self.screen = screen  # save the operator screen as it stands at the end (PNG)
+        self.screen_dir = screen_dir  # save one screen picture per wait for the operator (softkey, input)
+        self.on_session = on_session  # told of the session as soon as it exists
+        #: told when the run starts (True) and stops (False) waiting for the operator at the terminal (keyboard)
+        self.on_operator_wait = on_operator_wait
+        #: CPL MMC (manual ch. 9): the client, ``client(names, values) -> (rc, {name: new value})``; None = no client
+        self.mmc_client = mmc_client
 
 
 class MoveLog(Protocol):

@@ -17,6 +17,7 @@ from contextlib import contextmanager
 from dataclasses import dataclass
 from pathlib import Path
 
+from .. import records
 from ..diagnostics import Diagnostic
 from ..machine.model import Machine
 from ..machine.state import StateError
@@ -58,7 +59,7 @@ def translate(program: str | Path, out: str | Path, target: str = "linuxcnc", fr
     """Run ``program`` and write it as ``target``'s program to ``out`` (replaced only when all went well)."""
     from .. import api  # the API puts runs together and writes ``run --gcode`` through this package
 
-    options = dataclasses.replace(options or RunOptions(), keyboard=False, echo=False, gcode=None, scratch_state=True)
+    options = records.replace(options or RunOptions(), keyboard=False, echo=False, gcode=None, scratch_state=True)
     given = api.machine_for(program, machine, options.state_dir)
     m = _past_programmed_stops(given)
     stops_passed = m is not given
@@ -117,7 +118,7 @@ def _past_programmed_stops(m: Machine) -> Machine:
     sec = m.sections.get("sin800")
     if not isinstance(sec, dict) or sec.get("m0") != "stop":
         return m
-    return dataclasses.replace(m, sections={**m.sections, "sin800": {**sec, "m0": "continue"}})
+    return records.replace(m, sections={**m.sections, "sin800": {**sec, "m0": "continue"}})
 
 
 @contextmanager
@@ -133,4 +134,4 @@ def _scratch_files(m: Machine):
                 shutil.copytree(root, copy, symlinks=True)
         except (OSError, shutil.Error) as e:
             raise StateError(f"cannot read the controller's files in {root} ({e})") from None
-        yield dataclasses.replace(m, file_root=copy, file_root_origin=root)
+        yield records.replace(m, file_root=copy, file_root_origin=root)

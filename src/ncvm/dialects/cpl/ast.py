@@ -6,8 +6,6 @@ parser emits them as flat markers (``If``, ``Else``, ``EndIf`` ...); the linker 
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
-
 from ...records import Record
 from .lexer import VarName
 
@@ -337,16 +335,20 @@ class NcBlock(Stmt):
         self.ends = ends  # M2 / M30
 
 
-@dataclass
-class Program:
+class Program(Record):
     """One parsed program: flat statements plus where each CPL line number, N number and label starts."""
 
-    path: str
-    stmts: list = field(default_factory=list)
-    lines: dict = field(default_factory=dict)  # CPL line number -> [stmt index]
-    nblocks: dict = field(default_factory=dict)  # N number -> [stmt index]
-    labels: dict = field(default_factory=dict)  # label -> [stmt index]
-    din_only: bool = False  # "(DIN)" in the first line
-    typ2: bool = False  # "(TYP2)" in the first line: an old CC 200/220 graphics program (manual §7 L4464-4468)
-    has_cpl: bool = False
-    diagnostics: list = field(default_factory=list)
+    __slots__ = ("path", "stmts", "lines", "nblocks", "labels", "din_only", "typ2", "has_cpl", "diagnostics")
+
+    def __init__(self, path: str, stmts: list | None = None, lines: dict | None = None, nblocks: dict | None = None,
+                 labels: dict | None = None, din_only: bool = False, typ2: bool = False, has_cpl: bool = False,
+                 diagnostics: list | None = None):
+        self.path = path
+        self.stmts = [] if stmts is None else stmts
+        self.lines = {} if lines is None else lines  # CPL line number -> [stmt index]
+        self.nblocks = {} if nblocks is None else nblocks  # N number -> [stmt index]
+        self.labels = {} if labels is None else labels  # label -> [stmt index]
+        self.din_only = din_only  # "(DIN)" in the first line
+        self.typ2 = typ2  # "(TYP2)" in the first line: an old CC 200/220 graphics program (manual §7 L4464-4468)
+        self.has_cpl = has_cpl
+        self.diagnostics = [] if diagnostics is None else diagnostics

@@ -8,8 +8,9 @@ Keywords and names are case-insensitive; a keyword with a type suffix (``STEP%``
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
+from ...records import Record
 from ...source import DIGITS, LETTERS, NAME_CHARS, int_literal, lines, upper
 
 #: reserved words (manual §2.4.1, L435-455, its OCR-damaged table cleaned up), plus TO, SCSL and the unused ones
@@ -45,13 +46,15 @@ class LexError(Exception):
         self.message = message
 
 
-@dataclass(slots=True)
-class Tok:
-    kind: str  # num str kw var label op name
-    val: object
-    line: int
-    col: int
-    text: str = ""
+class Tok(Record):
+    __slots__ = ("kind", "val", "line", "col", "text")
+
+    def __init__(self, kind: str, val: object, line: int, col: int, text: str = ""):
+        self.kind = kind  # num str kw var label op name
+        self.val = val
+        self.line = line
+        self.col = col
+        self.text = text
 
 
 @dataclass(frozen=True, slots=True)
@@ -85,27 +88,32 @@ class VarName:
         return f"{self.name}{self.suffix}"
 
 
-@dataclass(slots=True)
-class Line:
+class Line(Record):
     """One physical line of the program, classified."""
 
-    kind: str  # "cpl", "cont" (continuation of a CPL block), "nc", "blank"
-    number: int | None  # CPL line number
-    text: str  # the text after the line number (CPL) or the whole line (NC)
-    offset: int  # column offset of ``text`` in the physical line (0-based)
-    lineno: int  # physical line, 1-based
+    __slots__ = ("kind", "number", "text", "offset", "lineno")
+
+    def __init__(self, kind: str, number: int | None, text: str, offset: int, lineno: int):
+        self.kind = kind  # "cpl", "cont" (continuation of a CPL block), "nc", "blank"
+        self.number = number  # CPL line number
+        self.text = text  # the text after the line number (CPL) or the whole line (NC)
+        self.offset = offset  # column offset of ``text`` in the physical line (0-based)
+        self.lineno = lineno  # physical line, 1-based
 
 
-@dataclass(slots=True)
-class CplBlock:
+class CplBlock(Record):
     """One CPL block: its line number and tokens over one or more physical lines (continuations)."""
 
-    number: int
-    lineno: int
-    tokens: list[Tok] = field(default_factory=list)
-    lines: list[int] = field(default_factory=list)
-    has_colon: bool = False
-    error: LexError | None = None  # the first lexical error in one of its lines (the block is not parsed)
+    __slots__ = ("number", "lineno", "tokens", "lines", "has_colon", "error")
+
+    def __init__(self, number: int, lineno: int, tokens: list[Tok] | None = None, lines: list[int] | None = None,
+                 has_colon: bool = False, error: LexError | None = None):
+        self.number = number
+        self.lineno = lineno
+        self.tokens = [] if tokens is None else tokens
+        self.lines = [] if lines is None else lines
+        self.has_colon = has_colon
+        self.error = error  # the first lexical error in one of its lines (the block is not parsed)
 
 
 #: the control's end-of-file marker: every file it keeps ends with ETX LF after the last record (manual §6.1.2

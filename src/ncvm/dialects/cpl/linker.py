@@ -9,12 +9,12 @@ is not linked again.
 from __future__ import annotations
 
 import hashlib
-from dataclasses import dataclass, field
 from pathlib import Path
 
 from ...diagnostics import Diagnostic
 from ...machine.files import find_in
 from ...machine.model import Machine
+from ...records import Record
 from ...source import read_text
 from . import ast as A
 from .errors import diag
@@ -46,20 +46,27 @@ def where_looked(machine: Machine) -> str:
 LINK_STATS = {"linked": 0}
 
 
-@dataclass
-class Linked:
+class Linked(Record):
     """A linked program: statements, structure pairs, resolved jumps, called programs."""
 
-    prog: A.Program
-    key: str
-    pair: dict = field(default_factory=dict)  # stmt index -> dict of partner indices
-    jumps: dict = field(default_factory=dict)  # Goto stmt index -> target stmt index
-    calls: list = field(default_factory=list)  # (program name as written, din flag, stmt)
-    fields: dict = field(default_factory=dict)  # local VarName -> dims count, for every DIMed local
-    uses_goto: bool = False
-    modal_calls: bool = False  # the machine maps some address to a modal sub-program
-    diagnostics: list = field(default_factory=list)
-    unit: object = None  # the generated code (set by codegen, cached with the link table)
+    __slots__ = ("prog", "key", "pair", "jumps", "calls", "fields", "uses_goto", "modal_calls", "diagnostics", "unit",
+                 "prog_fors")
+
+    def __init__(self, prog: A.Program, key: str, pair: dict | None = None, jumps: dict | None = None,
+                 calls: list | None = None, fields: dict | None = None, uses_goto: bool = False,
+                 modal_calls: bool = False, diagnostics: list | None = None, unit: object = None,
+                 prog_fors: dict | None = None):
+        self.prog = prog
+        self.key = key
+        self.pair = {} if pair is None else pair  # stmt index -> dict of partner indices
+        self.jumps = {} if jumps is None else jumps  # Goto stmt index -> target stmt index
+        self.calls = [] if calls is None else calls  # (program name as written, din flag, stmt)
+        self.fields = {} if fields is None else fields  # local VarName -> dims count, for every DIMed local
+        self.uses_goto = uses_goto
+        self.modal_calls = modal_calls  # the machine maps some address to a modal sub-program
+        self.diagnostics = [] if diagnostics is None else diagnostics
+        self.unit = unit  # the generated code (set by codegen, cached with the link table)
+        self.prog_fors = {} if prog_fors is None else prog_fors  # stmt index -> the FOR loops open there (_pair)
 
 
 _CACHE: dict[str, Linked] = {}
@@ -243,12 +250,14 @@ def _collect(ln: Linked) -> None:
                     ln.fields[var] = len(sizes)
 
 
-@dataclass
-class LinkResult:
-    main: Linked
-    units: dict  # resolved path -> Linked
-    resolve: dict  # (caller path, name as written) -> resolved path; a CALL ... DIN is found when it runs
-    diagnostics: list
+class LinkResult(Record):
+    __slots__ = ("main", "units", "resolve", "diagnostics")
+
+    def __init__(self, main: Linked, units: dict, resolve: dict, diagnostics: list):
+        self.main = main
+        self.units = units  # resolved path -> Linked
+        self.resolve = resolve  # (caller path, name as written) -> resolved path; a CALL ... DIN is found when it runs
+        self.diagnostics = diagnostics
 
 
 def link(path: str, text: str, machine: Machine, tables=None) -> LinkResult:

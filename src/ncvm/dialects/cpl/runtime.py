@@ -19,7 +19,6 @@ import functools
 import itertools
 import math
 import re
-from ctypes import c_float  # the REAL store of generated code (values.py)
 from pathlib import Path
 
 from ...diagnostics import CompileFailed, Frame, RuntimeFault, Span
@@ -195,7 +194,7 @@ class CplRuntime:
     def helpers(self, path: str) -> dict:
         h = {
             "_rt": self, "_st": self.session.steps, "_G": self.globals, "_PM": self.perm, "_EP": EndProgram,
-            "_f32": V.f32, "_c32": c_float(), "_toi": V.to_int, "_tor": V.to_real, "_wtor": V.word_real, "_tod": V.to_double, "_tob": V.to_bool,
+            "_f32": V.f32, "_m32": memoryview(bytearray(4)).cast("f"), "_toi": V.to_int, "_tor": V.to_real, "_wtor": V.word_real, "_tod": V.to_double, "_tob": V.to_bool,
             "_tos": V.to_str, "_bad_assign": _bad_assign, "_cond": V.cond, "_logic": V.logic, "_lnot": V.lnot,
             "_ix": V.index, "_sv": V.sv, "_view": S.mid_for_variable, "_setf": _setf, "_midw": _midw, "_dim": _dim,
             "_pdim": _pdim, "_pstr": _pstr, "_gfield": self.gfield, "_gset_s": self.gset_s, "_pint": _pint,

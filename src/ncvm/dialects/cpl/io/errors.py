@@ -11,8 +11,9 @@ turns :class:`CplRuntimeError` into :class:`ncvm.diagnostics.RuntimeFault`
 
 from __future__ import annotations
 
-from dataclasses import dataclass
 from typing import Callable
+
+from ....records import FrozenRecord
 
 #: name -> (code, manual text, manual reference)
 ERRORS: dict[str, tuple[str, str, str]] = {
@@ -68,12 +69,14 @@ class CplRuntimeError(Exception):
         super().__init__(f"{code}: {message}")
 
 
-@dataclass(frozen=True, slots=True)
-class CplWarning:
+class CplWarning(FrozenRecord):
     """A warning the control shows while the program goes on (e.g. PRN FORMAT INCORRECT)."""
 
-    code: str
-    message: str
+    __slots__ = ("code", "message")
+
+    def __init__(self, code: str, message: str):
+        self.code = code
+        self.message = message
 
 
 WarnFn = Callable[[CplWarning], None]

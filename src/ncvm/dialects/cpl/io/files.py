@@ -25,11 +25,11 @@ from __future__ import annotations
 import os
 import stat
 import time
-from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Callable
 
 from ....machine.files import FileRoot, FileRootError, Place, identity, read_all
+from ....records import Record
 from .editor import call_parameters
 from .errors import CplRuntimeError, CplWarning, WarnFn, fail, warning
 from .format import OutputMode, format_items
@@ -44,24 +44,29 @@ REAL_MAX = 3.4028234663852886e38
 INT_MIN, INT_MAX = -(2**31), 2**31 - 1
 
 
-@dataclass
-class Handle:
+class Handle(Record):
     """One open logical file: its records in memory, the pointer, and (for writing) the disk file."""
 
-    number: int
-    name: str
-    place: Place
-    ident: tuple[int, int]  # device and inode: the same file under another name is the same file
-    writing: bool
-    reclen: int | None
-    records: list[str]
-    rec: int = 0  # 0-based record index; len(records) = on the EOF marker
-    off: int = 0  # 0-based offset inside the record
-    pending: str | None = None  # sequential: text of a record still open with ';'
-    remark: str = ""
-    reserved: int = MIN_RESERVED
-    data_size: int = 0  # bytes before the EOF marker
-    fd: int | None = None  # a file open for writing: its descriptor until CLOSE
+    __slots__ = ("number", "name", "place", "ident", "writing", "reclen", "records", "rec", "off", "pending", "remark",
+                 "reserved", "data_size", "fd")
+
+    def __init__(self, number: int, name: str, place: Place, ident: tuple[int, int], writing: bool,
+                 reclen: int | None, records: list[str], rec: int = 0, off: int = 0, pending: str | None = None,
+                 remark: str = "", reserved: int = MIN_RESERVED, data_size: int = 0, fd: int | None = None):
+        self.number = number
+        self.name = name
+        self.place = place
+        self.ident = ident  # device and inode: the same file under another name is the same file
+        self.writing = writing
+        self.reclen = reclen
+        self.records = records
+        self.rec = rec  # 0-based record index; len(records) = on the EOF marker
+        self.off = off  # 0-based offset inside the record
+        self.pending = pending  # sequential: text of a record still open with ';'
+        self.remark = remark
+        self.reserved = reserved
+        self.data_size = data_size  # bytes before the EOF marker
+        self.fd = fd  # a file open for writing: its descriptor until CLOSE
 
     @property
     def random(self) -> bool:
@@ -78,8 +83,7 @@ class Handle:
 FILE_SPACE = 1 << 30
 
 
-@dataclass
-class CplFiles:
+class CplFiles(Record):
     """The file table of one CPL program run.
 
     ``root``: the machine's file root; ``cwd``: the current directory inside it (names without a
@@ -90,39 +94,48 @@ class CplFiles:
     ``private``: folders no name may reach (the state directory).
     """
 
-    root: Path
-    private: tuple = ()
-    clock: object | None = None
-    message: Callable[[str], None] | None = None
-    warn: WarnFn | None = None
-    mode: OutputMode = field(default_factory=OutputMode)
-    cwd: str = ""
-    active: set[Path] = field(default_factory=set)
-    #: the NC block selected in the editor when the program runs as an editor dialog (PRN#(0)/INP#(0))
-    editor_block: str | None = None
-    #: told the new text each time PRN#(0) overwrites the editor block
-    on_editor_block: Callable[[str], None] | None = None
-    durable: bool = True
-    #: bytes the program's files may grow by in this run (``[cpl] file_space``; 0: no limit): the
-    #: controller's file memory, so that a runaway PRN# loop ends with FILE MEMORY FULL, not a full disk
-    space: int = 0
-    #: numbers written to files lose their trailing zeros (L4001); ``[cpl] file_zeros = "keep"`` keeps the
-    #: fixed decimals of STR$ and DSP
-    trim_zeros: bool = True
-    grown: int = 0  # what the run's writes added to its files, less what REWRITE and shorter files gave back
-    handles: dict[int, Handle] = field(default_factory=dict)
-    #: the PRN#(0) lines and warnings, kept only while no ``message`` / ``warn`` listener takes them
-    messages: list[str] = field(default_factory=list)
-    warnings: list[CplWarning] = field(default_factory=list)
-    _message_pending: str = ""
-    #: told of the first INP# from each file this run has not written: run-time input left by earlier runs
-    #: (``ncvm translate`` marks the path that follows it FROZEN); None: nobody asks
-    on_outside: Callable[[str], None] | None = None
-    _own: set = field(default_factory=set)  # identities of the files this run wrote from the start or read
+    __slots__ = ("root", "private", "clock", "message", "warn", "mode", "cwd", "active", "editor_block",
+                 "on_editor_block", "durable", "space", "trim_zeros", "grown", "handles", "messages", "warnings",
+                 "_message_pending", "on_outside", "_own", "fileroot")
 
-    def __post_init__(self) -> None:
-        self.root = Path(self.root)
-        self.fileroot = FileRoot(self.root, self.private)
+    def __init__(self, root: Path, private: tuple = (), clock: object | None = None,
+                 message: Callable[[str], None] | None = None, warn: WarnFn | None = None,
+                 mode: OutputMode | None = None, cwd: str = "", active: set[Path] | None = None,
+                 editor_block: str | None = None, on_editor_block: Callable[[str], None] | None = None,
+                 durable: bool = True, space: int = 0, trim_zeros: bool = True, grown: int = 0,
+                 handles: dict[int, Handle] | None = None, messages: list[str] | None = None,
+                 warnings: list[CplWarning] | None = None, _message_pending: str = "",
+                 on_outside: Callable[[str], None] | None = None):
+        self.root = Path(root)
+        self.private = private
+        self.clock = clock
+        self.message = message
+        self.warn = warn
+        self.mode = OutputMode() if mode is None else mode
+        self.cwd = cwd
+        self.active = set() if active is None else active
+        #: the NC block selected in the editor when the program runs as an editor dialog (PRN#(0)/INP#(0))
+        self.editor_block = editor_block
+        #: told the new text each time PRN#(0) overwrites the editor block
+        self.on_editor_block = on_editor_block
+        self.durable = durable
+        #: bytes the program's files may grow by in this run (``[cpl] file_space``; 0: no limit): the
+        #: controller's file memory, so that a runaway PRN# loop ends with FILE MEMORY FULL, not a full disk
+        self.space = space
+        #: numbers written to files lose their trailing zeros (L4001); ``[cpl] file_zeros = "keep"`` keeps the
+        #: fixed decimals of STR$ and DSP
+        self.trim_zeros = trim_zeros
+        self.grown = grown  # what the run's writes added to its files, less what REWRITE and shorter files gave back
+        self.handles = {} if handles is None else handles
+        #: the PRN#(0) lines and warnings, kept only while no ``message`` / ``warn`` listener takes them
+        self.messages = [] if messages is None else messages
+        self.warnings = [] if warnings is None else warnings
+        self._message_pending = _message_pending
+        #: told of the first INP# from each file this run has not written: run-time input left by earlier runs
+        #: (``ncvm translate`` marks the path that follows it FROZEN); None: nobody asks
+        self.on_outside = on_outside
+        self._own: set = set()  # identities of the files this run wrote from the start or read
+        self.fileroot = FileRoot(self.root, self.private)  # where the program's names may reach
 
     # -- names ---------------------------------------------------------------------------
     def place_of(self, name) -> Place:

@@ -18,10 +18,10 @@ from __future__ import annotations
 import re
 import struct
 from collections import deque
-from dataclasses import dataclass
 from decimal import ROUND_HALF_UP, Context, Decimal
 from typing import Iterable
 
+from ....records import Record
 from .errors import fail
 from .values import kind_of, text_of
 
@@ -99,10 +99,12 @@ def standard_text(value, kind: str, *, ljust: bool = False, trim: bool = False) 
     return text.lstrip() if ljust else text
 
 
-@dataclass(slots=True)
-class Formatted:
-    text: str
-    overflows: int  # templates that got '*' because the value did not fit
+class Formatted(Record):
+    __slots__ = ("text", "overflows")
+
+    def __init__(self, text: str, overflows: int):
+        self.text = text
+        self.overflows = overflows  # templates that got '*' because the value did not fit
 
 
 def format_items(items: Iterable, *, ljust: bool = False, on_overflow: str = "star", trim: bool = False) -> Formatted:
@@ -144,11 +146,13 @@ def format_items(items: Iterable, *, ljust: bool = False, on_overflow: str = "st
     return Formatted("".join(pieces), overflows)
 
 
-@dataclass(slots=True)
-class OutputMode:
+class OutputMode(Record):
     """Program-wide output state shared by PRN#, DSP and PRN: LJUST on/off (L3997-4003)."""
 
-    ljust: bool = False
+    __slots__ = ("ljust",)
+
+    def __init__(self, ljust: bool = False):
+        self.ljust = ljust
 
     def LJUST(self) -> None:  # noqa: N802 - the CPL statement
         self.ljust = True

@@ -14,11 +14,11 @@ from __future__ import annotations
 import io
 import math
 from collections import deque
-from dataclasses import dataclass
 from pathlib import Path
 
 from ....lazy import lazy
 from ....machine.files import FileRoot, FileRootError
+from ....records import Record
 from .errors import CplWarning, WarnFn, fail, warning
 from .values import text_of
 
@@ -48,12 +48,14 @@ TABLE_CODES = {1: 0, 2: 1, 3: 2, 7: 1, 10: 2}
 DASHES = {0: None, 1: None, 2: None, 3: (8, 3, 2, 3), 4: (6, 4)}
 
 
-@dataclass
-class Window:
-    xl: float
-    xr: float
-    yb: float
-    yt: float
+class Window(Record):
+    __slots__ = ("xl", "xr", "yb", "yt")
+
+    def __init__(self, xl: float, xr: float, yb: float, yt: float):
+        self.xl = xl
+        self.xr = xr
+        self.yb = yb
+        self.yt = yt
 
 
 def _number(value, name: str) -> float:

@@ -14,12 +14,12 @@ unless an ``on_output`` listener takes the lines (a run's session keeps a bounde
 from __future__ import annotations
 
 from collections import deque
-from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
 
 from ....lazy import lazy
 from ....machine.files import FileRoot
+from ....records import Record
 from .errors import CplRuntimeError, WarnFn, fail
 from .format import TEMPLATE, OutputMode, format_items, format_number, template_shape
 from .graphics import BAND, HEIGHT, WIDTH, Graphics, _int
@@ -129,10 +129,12 @@ def text_mask(text: str, style: tuple[int, int, int, int], scale: int = 1) -> tu
 
 # -- the key script -----------------------------------------------------------------------------
 
-@dataclass
-class KeyEvent:
-    kind: str  # "key", "type" or "idle"
-    value: object
+class KeyEvent(Record):
+    __slots__ = ("kind", "value")
+
+    def __init__(self, kind: str, value: object):
+        self.kind = kind  # "key", "type" or "idle"
+        self.value = value
 
 
 class KeyScript:
@@ -223,11 +225,13 @@ class KeyScript:
 
 # -- the screen ---------------------------------------------------------------------------------
 
-@dataclass
-class Field:
-    line: int
-    column: int
-    text: str
+class Field(Record):
+    __slots__ = ("line", "column", "text")
+
+    def __init__(self, line: int, column: int, text: str):
+        self.line = line
+        self.column = column
+        self.text = text
 
 
 class Screen(Graphics):

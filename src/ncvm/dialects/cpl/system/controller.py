@@ -9,11 +9,10 @@ the control keeps them. ZS tables named by a path are files under the file root 
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
-
 from ....diagnostics import UsageError
 from ....machine.eventqueue import EventQueue
 from ....nc.probe import ProbeLatch
+from ....records import Record
 from ..options import Options, options
 from .gfuncs import NcFuncs
 
@@ -22,60 +21,80 @@ EXTERNAL = ("G160", "G260", "G360")
 TDA_FIELDS = 49
 
 
-@dataclass(slots=True)
-class PhysAxis:
+class PhysAxis(Record):
     """A physical axis (MACODA 1003 00001 name, 1003 00002 channel, 1003 00012 probe enable)."""
 
-    index: int
-    name: str
-    channel: int  # 0 = asynchronous (no channel)
-    rotary: bool = False
-    probe: bool = True
-    position: float = 0.0  # command position of an axis the NC kernel does not drive (foreign channel)
-    lag: float = 0.0  # following error: APOS = SPOS - lag
-    jog: float = 1000.0  # jog speed, mm/min (rotary axes degrees/min)
+    __slots__ = ("index", "name", "channel", "rotary", "probe", "position", "lag", "jog")
+
+    def __init__(self, index: int, name: str, channel: int, rotary: bool = False, probe: bool = True,
+                 position: float = 0.0, lag: float = 0.0, jog: float = 1000.0):
+        self.index = index
+        self.name = name
+        self.channel = channel  # 0 = asynchronous (no channel)
+        self.rotary = rotary
+        self.probe = probe
+        self.position = position  # command position of an axis the NC kernel does not drive (foreign channel)
+        self.lag = lag  # following error: APOS = SPOS - lag
+        self.jog = jog  # jog speed, mm/min (rotary axes degrees/min)
 
 
-@dataclass
-class Controller:
-    channel: int = 1
-    axes: dict[int, PhysAxis] = field(default_factory=dict)
-    zs_unit: str = "mm"
-    zs_active: str = "V1"
-    #: table name -> {"columns": [axis names], "unit": "mm"|"inch", "strict": 0|1, "rows": {"G54": [...]},
-    #: "rotary": [axis names]}; at run time only V1..V3 and the active table (the others are files)
-    zs_tables: dict[str, dict] = field(default_factory=dict)
-    external: dict[str, list[float]] = field(default_factory=dict)  # G160/G260/G360, logical axes 1..8
-    tc_unit: str = "mm"
-    tc_last: str = "K4"
-    tc_tables: dict[str, dict[int, list[float]]] = field(default_factory=dict)  # group -> [H, D]
-    tc_external: dict[int, list[float]] = field(default_factory=dict)  # G145..G845 -> [L(1)3, R]
-    tc_general: dict[int, list[float]] = field(default_factory=dict)  # G147..G847 -> 8 values
-    tdb: dict[tuple[int, int], dict[int, object]] = field(default_factory=dict)
-    macoda: dict[int, list] = field(default_factory=dict)
-    plc: dict[str, int] = field(default_factory=dict)  # "type:dm:addr" -> byte
-    errors: list[dict] = field(default_factory=list)  # {number, channel, category}
-    sercos: dict[int, dict] = field(default_factory=dict)  # physical axis -> {"S-0-0030": value, ...}
-    sercos_last: dict = field(default_factory=dict)
-    override: dict[str, int] = field(default_factory=lambda: {"feed": 100, "spindle": 100, "spindle2": 0,
-                                                              "axis": 100})
-    #: the spindle's permissible speed range (rpm) and spindle group (MCODS 19, 20, 65)
-    spindle: dict[str, float] = field(default_factory=lambda: {"min": 0.0, "max": 8000.0, "group": 0})
-    message: str = ""  # the last message programmed with MSG and executed (MCODS 28)
-    language: int = 1
-    date_format: str = "DD.MM"
-    g_programmed: NcFuncs = field(default_factory=NcFuncs)  # Typ3 G functions at block preparation
-    g_active: NcFuncs = field(default_factory=NcFuncs)  # ... and as executed
-    areas: list[dict] = field(default_factory=list)  # work areas and dead ranges 1..10 (SD 200)
-    #: what MCOPS changed in the channels of a run: operating modes (MCOPS 7), selected programs,
-    #: return-to-path settings, jog recording, automatic re-selection (channel -> value)
-    ncs: dict[str, dict] = field(default_factory=lambda: {"mode": {}, "selected": {}, "return": {}, "recording": {},
-                                                          "reselect": {}})
-    store: object = None
-    #: what the last measuring block measured (PROBE, CPROBE read it); code 0: none has run
-    probe: ProbeLatch = field(default_factory=lambda: ProbeLatch(0))
-    #: the "probe" and "fixed_stop" scenario events no measuring block has used yet (one per block)
-    probe_events: EventQueue = field(default_factory=EventQueue)
+class Controller(Record):
+    """What the CPL control holds of its machine for one run: channels, tables, MACODA, PLC, errors."""
+
+    __slots__ = ("channel", "axes", "zs_unit", "zs_active", "zs_tables", "external", "tc_unit", "tc_last", "tc_tables",
+                 "tc_external", "tc_general", "tdb", "macoda", "plc", "errors", "sercos", "sercos_last", "override",
+                 "spindle", "message", "language", "date_format", "g_programmed", "g_active", "areas", "ncs", "store",
+                 "probe", "probe_events")
+
+    def __init__(self, channel: int = 1, axes: dict[int, PhysAxis] | None = None, zs_unit: str = "mm",
+                 zs_active: str = "V1", zs_tables: dict[str, dict] | None = None,
+                 external: dict[str, list[float]] | None = None, tc_unit: str = "mm", tc_last: str = "K4",
+                 tc_tables: dict[str, dict[int, list[float]]] | None = None,
+                 tc_external: dict[int, list[float]] | None = None, tc_general: dict[int, list[float]] | None = None,
+                 tdb: dict[tuple[int, int], dict[int, object]] | None = None, macoda: dict[int, list] | None = None,
+                 plc: dict[str, int] | None = None, errors: list[dict] | None = None,
+                 sercos: dict[int, dict] | None = None, sercos_last: dict | None = None,
+                 override: dict[str, int] | None = None, spindle: dict[str, float] | None = None, message: str = "",
+                 language: int = 1, date_format: str = "DD.MM", g_programmed: NcFuncs | None = None,
+                 g_active: NcFuncs | None = None, areas: list[dict] | None = None,
+                 ncs: dict[str, dict] | None = None, store: object = None, probe: ProbeLatch | None = None,
+                 probe_events: EventQueue | None = None):
+        self.channel = channel
+        self.axes = {} if axes is None else axes
+        self.zs_unit = zs_unit
+        self.zs_active = zs_active
+        #: table name -> {"columns": [axis names], "unit": "mm"|"inch", "strict": 0|1, "rows": {"G54": [...]},
+        #: "rotary": [axis names]}; at run time only V1..V3 and the active table (the others are files)
+        self.zs_tables = {} if zs_tables is None else zs_tables
+        self.external = {} if external is None else external  # G160/G260/G360, logical axes 1..8
+        self.tc_unit = tc_unit
+        self.tc_last = tc_last
+        self.tc_tables = {} if tc_tables is None else tc_tables  # group -> [H, D]
+        self.tc_external = {} if tc_external is None else tc_external  # G145..G845 -> [L(1)3, R]
+        self.tc_general = {} if tc_general is None else tc_general  # G147..G847 -> 8 values
+        self.tdb = {} if tdb is None else tdb
+        self.macoda = {} if macoda is None else macoda
+        self.plc = {} if plc is None else plc  # "type:dm:addr" -> byte
+        self.errors = [] if errors is None else errors  # {number, channel, category}
+        self.sercos = {} if sercos is None else sercos  # physical axis -> {"S-0-0030": value, ...}
+        self.sercos_last = {} if sercos_last is None else sercos_last
+        self.override = {"feed": 100, "spindle": 100, "spindle2": 0, "axis": 100} if override is None else override
+        #: the spindle's permissible speed range (rpm) and spindle group (MCODS 19, 20, 65)
+        self.spindle = {"min": 0.0, "max": 8000.0, "group": 0} if spindle is None else spindle
+        self.message = message  # the last message programmed with MSG and executed (MCODS 28)
+        self.language = language
+        self.date_format = date_format
+        self.g_programmed = NcFuncs() if g_programmed is None else g_programmed  # Typ3 G functions at block preparation
+        self.g_active = NcFuncs() if g_active is None else g_active  # ... and as executed
+        self.areas = [] if areas is None else areas  # work areas and dead ranges 1..10 (SD 200)
+        #: what MCOPS changed in the channels of a run: operating modes (MCOPS 7), selected programs,
+        #: return-to-path settings, jog recording, automatic re-selection (channel -> value)
+        self.ncs = {"mode": {}, "selected": {}, "return": {}, "recording": {}, "reselect": {}} if ncs is None else ncs
+        self.store = store
+        #: what the last measuring block measured (PROBE, CPROBE read it); code 0: none has run
+        self.probe = ProbeLatch(0) if probe is None else probe
+        #: the "probe" and "fixed_stop" scenario events no measuring block has used yet (one per block)
+        self.probe_events = EventQueue() if probe_events is None else probe_events
 
     # -- axes ----------------------------------------------------------------------------------
     def channel_axes(self, ch: int) -> list[PhysAxis]:

@@ -37,12 +37,11 @@ which becomes active when the block is executed (SD index 2).
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
-
 from ....nc.block import Block
 from ....nc.profiles.blockrules import g_conflict
 from ....nc.profiles.typ3osa import EXTERNAL_LENGTH, TYP3OSA
 from ....nc.spindle import CPL_GEARS
+from ....records import FrozenRecord, replace
 from ..errors import CplError
 from .context import SystemContext
 
@@ -60,24 +59,30 @@ INCH = 25.4
 N_LOGICAL = 8  # the shifts are kept for logical axes 1..8 (SD index range 1..8)
 
 
-@dataclass(frozen=True, slots=True)
-class NcFuncs:
+class NcFuncs(FrozenRecord):
     """The state of the Typ3 G functions; lengths in mm, angles in degrees."""
 
-    g168: tuple = (0.0,) * N_LOGICAL
-    g268: tuple = (0.0,) * N_LOGICAL
-    rotation_axis: int = 0  # G131: logical axis number, 0 = not selected
-    offset_angle: float = 0.0
-    adaptation_angle: float = 0.0
-    barrier: float = 0.0  # G328 precision barrier
-    corners: float = 0.0  # G328 distance between corners
-    coupling: tuple = ()  # ((slave, master, slave shift, factor, master shift), ...) by slave
-    external: int = 0  # selected external tool compensation G145..G845, 0 = none
-    general: int = 0  # selected general tool compensation G147..G847, 0 = none
-    gear: int = 40  # spindle gear range (M40 automatic at power-on)
-    external_zs: int = NO_EXTERNAL_ZS  # selected external zero shift G160/G260/G360, G167 = none
-    zs16: int = 153  # additive axis zero shift G154..G159, G153 = none
-    zs17: int = 253  # second additive axis zero shift G254..G259, G253 = none
+    __slots__ = ("g168", "g268", "rotation_axis", "offset_angle", "adaptation_angle", "barrier", "corners", "coupling",
+                 "external", "general", "gear", "external_zs", "zs16", "zs17")
+
+    def __init__(self, g168: tuple = (0.0,) * N_LOGICAL, g268: tuple = (0.0,) * N_LOGICAL, rotation_axis: int = 0,
+                 offset_angle: float = 0.0, adaptation_angle: float = 0.0, barrier: float = 0.0,
+                 corners: float = 0.0, coupling: tuple = (), external: int = 0, general: int = 0, gear: int = 40,
+                 external_zs: int = NO_EXTERNAL_ZS, zs16: int = 153, zs17: int = 253):
+        self.g168 = g168
+        self.g268 = g268
+        self.rotation_axis = rotation_axis  # G131: logical axis number, 0 = not selected
+        self.offset_angle = offset_angle
+        self.adaptation_angle = adaptation_angle
+        self.barrier = barrier  # G328 precision barrier
+        self.corners = corners  # G328 distance between corners
+        self.coupling = coupling  # ((slave, master, slave shift, factor, master shift), ...) by slave
+        self.external = external  # selected external tool compensation G145..G845, 0 = none
+        self.general = general  # selected general tool compensation G147..G847, 0 = none
+        self.gear = gear  # spindle gear range (M40 automatic at power-on)
+        self.external_zs = external_zs  # selected external zero shift G160/G260/G360, G167 = none
+        self.zs16 = zs16  # additive axis zero shift G154..G159, G153 = none
+        self.zs17 = zs17  # second additive axis zero shift G254..G259, G253 = none
 
 
 class Typ3Block(Block):
