@@ -14,7 +14,7 @@ from collections.abc import Callable
 from pathlib import Path
 
 
-def wait_until(ready: Callable[[], bool], what: str, timeout: float = 60.0) -> None:
+def wait_until(ready: Callable[[], bool], what: str, timeout: float = 180.0) -> None:
     """Poll ``ready`` until it holds; fail naming ``what`` after ``timeout`` seconds."""
     end = time.monotonic() + timeout
     while not ready():
