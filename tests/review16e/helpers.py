@@ -38,6 +38,12 @@ def mill(extra: str = "") -> str:
     return MILL.format(axes=axes) + extra
 
 
+def bare_machine(name: str, extra: str = "") -> str:
+    """A machine file of three axes X Y Z without limits, named ``name``, ``extra`` (TOML) after them."""
+    axes = "".join(f'[[axis]]\nname = "{a}"\n' for a in "XYZ")
+    return f'[machine]\nname = "{name}"\n{axes}{extra}'
+
+
 def ncvm(cwd: Path, *args: str) -> subprocess.CompletedProcess:
     """``ncvm ARGS`` run in ``cwd`` as a separate process."""
     return subprocess.run([sys.executable, "-m", "ncvm", *args], capture_output=True, text=True, timeout=600,

@@ -9,23 +9,16 @@ from __future__ import annotations
 
 import re
 
-from tests.review16e.helpers import code_lines, translate, write
+from tests.review16e.helpers import bare_machine, code_lines, translate, write
 
-MACHINE = """[machine]
-name = "two tools"
-[[axis]]
-name = "X"
-[[axis]]
-name = "Y"
-[[axis]]
-name = "Z"
+MACHINE = bare_machine("two tools", """\
 [[tool]]
 number = 1
 length = 50.0
 [[tool]]
 number = 2
 length = 75.0
-"""
+""")
 
 PROGRAM = """N10 G21 G90 G17 G54
 N20 T1 M6

@@ -9,19 +9,12 @@ from __future__ import annotations
 
 import pytest
 
-from tests.review16e.helpers import translate, write
+from tests.review16e.helpers import bare_machine, translate, write
 
-SKIP_ON = """[machine]
-name = "skip mill"
-[[axis]]
-name = "X"
-[[axis]]
-name = "Y"
-[[axis]]
-name = "Z"
+SKIP_ON = bare_machine("skip mill", """\
 [setting_data]
 block_skip = {flag}
-"""
+""")
 
 DIN = "N10 G21 G90 G17 G54\nN20 G0 X0 Y0 Z5\n/N30 G0 X100\nN40 G1 Z-1 F100\nN50 M30\n"
 CPL = "N10 G90 G17 G54\nN20 G0 X0 Y0 Z5\n/N30 G0 X100\nN40 G1 Z-1 F100\nN50 M30\n"

@@ -10,19 +10,12 @@ from __future__ import annotations
 
 import re
 
-from tests.review16e.helpers import code_lines, translate, write
+from tests.review16e.helpers import bare_machine, code_lines, translate, write
 
-MACHINE = """[machine]
-name = "880 mill"
-[[axis]]
-name = "X"
-[[axis]]
-name = "Y"
-[[axis]]
-name = "Z"
+MACHINE = bare_machine("880 mill", """\
 [sin800]
 control = "880"
-"""
+""")
 
 PROGRAM = """%MPF107
 N10 G17 G71 G90 G54 G94

@@ -8,16 +8,9 @@ from __future__ import annotations
 
 import pytest
 
-from tests.review16e.helpers import translate, write
+from tests.review16e.helpers import bare_machine, translate, write
 
-MACHINE = """[machine]
-name = "880 plc"
-[[axis]]
-name = "X"
-[[axis]]
-name = "Y"
-[[axis]]
-name = "Z"
+MACHINE = bare_machine("880 plc", """\
 [sin800]
 control = "880"
 m_functions = { 94 = { R60 = "DB20.DW1" } }
@@ -25,7 +18,7 @@ m_functions = { 94 = { R60 = "DB20.DW1" } }
 I = { "0" = "00000101" }
 DB = { "10" = [12, 0, 65535], "20" = [0, 33] }
 C = { "2" = 7 }
-"""
+""")
 
 HEAD = "%MPF108\nN10 G17 G71 G90 G54 G94 G0 X0 Y0 Z0\n"
 
