@@ -6,6 +6,7 @@ Each command runs in a fresh interpreter, as a user starts it; the test reads wh
 from __future__ import annotations
 
 import ast
+import json
 import subprocess
 import sys
 
@@ -170,3 +171,39 @@ def test_a_clean_din_run_compiles_neither_the_dialect_guess_nor_the_linuxcnc_pat
              "print('COMPILED', sorted(k[1] for k in re._cache if k[1] in lazy))\n")
     out = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, cwd=tmp_path, timeout=120)
     assert "COMPILED []" in out.stdout, out.stdout + out.stderr
+
+
+def test_a_run_of_a_short_program_reads_it_line_by_line_without_the_plain_line_pattern(tmp_path):
+    """A program of fewer than COLUMNS_FROM lines is read line by line by a run too, as by a check
+    (nc/block.py): the plain-line pattern (about 1.5 ms to compile, into re's cache at first use) is not
+    compiled, and the run's result is the one of the same program read in columns."""
+    (tmp_path / "p.ngc").write_text("G1 X10 Y5 F1000\nG1 X20\nG2 X30 Y15 I5 J5\nG0 Z5\nM2\n")
+    runs = {}
+    for how, columns_from in (("lines", None), ("columns", 0)):
+        out = subprocess.run([sys.executable, "-c", READ_AS, how, "" if columns_from is None else str(columns_from)],
+                             capture_output=True, text=True, cwd=tmp_path, timeout=120)
+        doc, compiled = out.stdout.rsplit("PLAIN_LINE ", 1)
+        runs[how] = json.loads(doc), compiled.strip()
+    assert runs["lines"][1] == "False" and runs["columns"][1] == "True"
+    doc = runs["lines"][0]
+    assert doc["status"] == "ok" and doc["motion"]["feed_moves"] == 2 and doc["motion"]["arc_moves"] == 1
+    assert doc["motion"] == runs["columns"][0]["motion"] and doc["position"] == runs["columns"][0]["position"]
+    assert doc["cycle_time_s"] == runs["columns"][0]["cycle_time_s"]
+
+
+#: a run of p.ngc with --json (state .ncvm-<argv 1>), every stretch read in columns when argv 2 says 0; then
+#: whether the plain-line pattern was compiled
+READ_AS = """\
+import re, runpy, sys
+how, columns_from = sys.argv[1:3]
+if columns_from:
+    from ncvm.dialects import din
+    din.COLUMNS_FROM = int(columns_from)
+sys.argv = ["ncvm", "run", "--json", "--state", ".ncvm-" + how, "p.ngc"]
+try:
+    runpy.run_module("ncvm", run_name="__main__")
+except SystemExit:
+    pass
+from ncvm.nc import block
+print("PLAIN_LINE", any(k[1] == block._PLAIN_LINE for k in re._cache))
+"""

@@ -109,7 +109,7 @@ class DinDialect(Dialect):
         held = [] if program.chars <= KEEP_CHARS else None
         diags, refused, index = [], None, 0
         error_lines = {}  # the source lines of the syntax errors (NC001), for fold_extensions
-        for stretch in program():
+        for stretch in program(COLUMNS_FROM):  # a short program line by line: no numpy (issue 18, start-up)
             segments = stretch.segments
             diags += stretch.diags
             error_lines.update((d.span.line, stretch.line(d.span.line)) for d in stretch.diags if d.code == "NC001")
@@ -125,7 +125,7 @@ class DinDialect(Dialect):
                 held.append(segments)
         if diags:
             raise CompileFailed(fold_extensions(diags, error_lines.get))
-        return (held if held is not None else (stretch.segments for stretch in program())), refused
+        return (held if held is not None else (stretch.segments for stretch in program(COLUMNS_FROM))), refused
 
     @staticmethod
     def _execute(path, segments, kernel, counter, limit, hook, skip_active, done, last_src):
