@@ -9,6 +9,8 @@ import ast
 import json
 import subprocess
 import sys
+import tomllib
+from pathlib import Path
 
 import pytest
 
@@ -207,3 +209,31 @@ except SystemExit:
 from ncvm.nc import block
 print("PLAIN_LINE", any(k[1] == block._PLAIN_LINE for k in re._cache))
 """
+
+
+def test_the_command_freezes_what_loading_made_and_runs_under_the_collector(tmp_path):
+    """ncvm.startup.main (the console script and ``python -m ncvm``) loads the CLI with the collector's first
+    threshold raised, freezes what loading made and puts the thresholds back before the command runs."""
+    (tmp_path / "p.ngc").write_text("M2\n")
+    probe = ("import gc, sys\ndefaults = gc.get_threshold()\nimport ncvm.cli\n"
+             "print('IMPORT', gc.get_freeze_count(), gc.get_threshold() == defaults)\n"
+             "seen = []\nimport ncvm.runtime.session as s\n_init = s.Session.__init__\n"
+             "def init(self, *a, **k):\n    seen.append((gc.get_threshold() == defaults, gc.get_freeze_count()))\n"
+             "    _init(self, *a, **k)\ns.Session.__init__ = init\n"
+             "from ncvm import startup\nsys.argv = ['ncvm', 'run', '--state', '.ncvm', 'p.ngc']\n"
+             "try:\n    startup.main()\nexcept SystemExit as e:\n    print('EXIT', e.code)\n"
+             "print('RUN', seen)\n")
+    out = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, cwd=tmp_path, timeout=120)
+    lines = dict(ln.split(" ", 1) for ln in out.stdout.splitlines() if ln.startswith(("IMPORT", "EXIT", "RUN")))
+    assert lines["IMPORT"] == "0 True", out.stdout + out.stderr  # importing the CLI (tests, the API) changes nothing
+    assert lines["EXIT"] == "0"
+    (restored, frozen), = ast.literal_eval(lines["RUN"])
+    assert restored and frozen > 1000  # the run's collector: default thresholds; start-up's objects frozen
+
+
+def test_python_m_ncvm_and_the_console_script_start_through_ncvm_startup():
+    root = Path(__file__).resolve().parents[1]
+    scripts = tomllib.loads((root / "pyproject.toml").read_text())["project"]["scripts"]
+    assert scripts == {"ncvm": "ncvm.startup:main"}
+    main_module = ast.parse((root / "src" / "ncvm" / "__main__.py").read_text())
+    assert any(isinstance(n, ast.ImportFrom) and n.module == "startup" for n in main_module.body)
