@@ -80,16 +80,49 @@ def test_a_one_block_run_imports_neither_plot_nor_screen_libraries_nor_numpy(tmp
     assert "dataclasses" not in modules
 
 
-def test_the_state_commands_are_built_when_named_or_listed(tmp_path):
-    """``ncvm state`` is a lazily loaded subcommand (cli.py, _Guarded.LAZY): a run does not build it."""
+#: the commands in modules of their own (cli.py, _Guarded.LAZY) and the start of their one-line help
+LAZY_COMMANDS = {"check": ("ncvm.checkcmd", "Check programs for every error"),
+                 "compile": ("ncvm.compilecmd", "Compile SOURCE (CL 800 to @ code)."),
+                 "machine-schema": ("ncvm.schemacmd", "Print the JSON Schema of machine files"),
+                 "state": ("ncvm.statecmd", "The permanent memory of the simulated"),
+                 "translate": ("ncvm.translatecmd", "Translate PROGRAM for a modern control")}
+
+
+def test_a_run_builds_no_other_command_and_each_command_is_built_when_named(tmp_path):
+    """Every command but ``run`` is a lazily loaded subcommand (cli.py, _Guarded.LAZY): a run imports none of
+    their modules; naming one builds it (and only it)."""
     (tmp_path / "p.ngc").write_text("M2\n")
     code, modules = loaded(["run", "--state", str(tmp_path / ".ncvm"), "p.ngc"], tmp_path)
-    assert code == 0 and "ncvm.statecmd" not in modules
+    assert code == 0 and {m for m, _help in LAZY_COMMANDS.values()} & modules == set()
     code, modules = loaded(["state", "show", "--state", str(tmp_path / ".ncvm")], tmp_path)
-    assert code == 0 and "ncvm.statecmd" in modules
+    assert code == 0 and {m for m, _help in LAZY_COMMANDS.values()} & modules == {"ncvm.statecmd"}
+    code, modules = loaded(["check", "p.ngc"], tmp_path)
+    assert code == 0 and {m for m, _help in LAZY_COMMANDS.values()} & modules == {"ncvm.checkcmd"}
+    for name, (module, _help) in LAZY_COMMANDS.items():
+        code, modules = loaded([name, "--help"], tmp_path)
+        assert code == 0 and module in modules
+
+
+def test_ncvm_help_lists_every_command_with_its_one_line_help(tmp_path):
     listed = subprocess.run([sys.executable, "-m", "ncvm", "--help"], capture_output=True, text=True, cwd=tmp_path,
                             timeout=120)
-    assert listed.returncode == 0 and "\n  state " in listed.stdout
+    assert listed.returncode == 0
+    commands = listed.stdout.split("\nCommands:\n", 1)[1].split("\n\n", 1)[0].splitlines()
+    assert [line.split()[0] for line in commands] == sorted([*LAZY_COMMANDS, "run"])
+    helps = {line.split()[0]: " ".join(line.split()[1:]) for line in commands}
+    for name, (_module, help_start) in LAZY_COMMANDS.items():
+        assert helps[name].startswith(help_start), helps[name]
+    assert helps["run"].startswith("Run PROGRAMS on the simulated controller")
+
+
+def test_a_mistyped_command_is_matched_against_the_lazily_built_ones_too(tmp_path):
+    out = subprocess.run([sys.executable, "-m", "ncvm", "translat", "p.ngc"], capture_output=True, text=True,
+                         cwd=tmp_path, timeout=120)
+    assert out.returncode == 2 and "No such command 'translat'" in out.stderr
+    import click
+
+    if hasattr(click.exceptions, "NoSuchCommand"):  # click 8.4 and later suggest the names that are close
+        assert "Did you mean 'translate'?" in out.stderr
 
 
 def test_a_run_with_moves_and_a_plot_loads_what_it_uses(tmp_path):
