@@ -167,6 +167,8 @@ def test_a_one_block_run_imports_no_sink_it_was_not_asked_for_and_no_scenario_ev
     unused = {"ncvm.sinks.trace", "ncvm.sinks.plot", "ncvm.sinks.plotview", "ncvm.translate",
               "ncvm.machine.scenario", "tempfile", "secrets"}
     assert unused & modules == set()
+    # the moves table only for a run asked for its moves (the API), the DIN check only for ncvm check
+    assert {"ncvm.sinks.moves", "ncvm.dialects.din.check"} & modules == set()
 
 
 def test_a_run_with_a_trace_and_gcode_loads_and_writes_them(tmp_path):

@@ -21,7 +21,6 @@ from ...nc.profiles.named import profile as named_profile
 from ...source import lines as program_lines
 from ...source import open_program
 from ..base import Dialect
-from .check import check_stretches
 from .ngc import fold_extensions
 from .options import arc_tolerance, options
 from .support import address_refusal, block_error, refused_address
@@ -54,6 +53,8 @@ class DinDialect(Dialect):
     def check(self, path, text, machine, all_errors=False):
         """Every diagnostic of the program, read from its file a stretch at a time (``text`` None) or from
         ``text`` (dialects/din/check.py)."""
+        from .check import check_stretches  # a run needs none of it (start-up)
+
         profile = named_profile(options(machine).profile)
         with ProgramStretches(path, text) as program:
             return check_stretches(path, program(COLUMNS_FROM), machine, profile)
