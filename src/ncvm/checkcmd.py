@@ -9,7 +9,7 @@ from pathlib import Path
 
 import click
 
-from .cli import DIALECT_OPT, EXIT_FAULT, EXIT_OK, MACHINE_OPT, _exits
+from .cli import DIALECT_OPT, EXIT_FAULT, EXIT_OK, MACHINE_OPT, exits_text
 from .diagnostics import CompileFailed, Diagnostics, UsageError, render_all
 from .lazy import lazy
 from .termstyle import say
@@ -17,7 +17,7 @@ from .termstyle import say
 json = lazy("json")  # --json output only
 
 
-@click.command(epilog=_exits("check"))
+@click.command(epilog=exits_text("check"))
 @click.argument("programs", nargs=-1, required=True, type=click.Path())
 @DIALECT_OPT
 @MACHINE_OPT

@@ -43,7 +43,7 @@ EXIT_TABLE = ("Exit codes: 0 the run ended normally, check found no error, compi
               "in use); 70 internal error (a bug in ncvm). Each command's --help names its own.")
 
 
-def _exits(name: str) -> str:
+def exits_text(name: str) -> str:
     return f"Exit codes: {EXITS[name]}."
 DEFAULT_STATE = ".ncvm"
 
@@ -182,7 +182,7 @@ def _batch_options(f):
                         help="Batch: programs run at once in local processes (default: the number of cores).")(f)
 
 
-@cli.command(epilog=_exits("run"))
+@cli.command(epilog=exits_text("run"))
 @click.argument("programs", nargs=-1, required=True, type=click.Path())
 @DIALECT_OPT
 @MACHINE_OPT
@@ -238,18 +238,18 @@ def run(programs, dialect, machine, state_dir, as_json, trace, gcode, plot, plot
     from .runtime.session import RunOptions
 
     program = programs[0]
-    _check_program(program)
+    check_program(program)
     if not state_dir.strip():  # an unset variable: the store would land in the current directory
         raise UsageError("--state is empty; give the state directory (default .ncvm)")
     scenario, keys = _own_inputs(program, scenario, keys)
-    inputs = {"program": program, **_machine_input(program, machine), "--scenario": scenario, "--keys": keys}
-    machine = api.machine_for(program, machine or _folder_machine(program, say=True), Path(state_dir))
+    inputs = {"program": program, **machine_input(program, machine), "--scenario": scenario, "--keys": keys}
+    machine = api.machine_for(program, machine or folder_machine(program, say=True), Path(state_dir))
     check_outputs([Output("--trace", trace), Output("--gcode", gcode), Output("--plot", plot, PLOT_SUFFIXES),
                    Output("--screen", screen, (".png",)),
                    Output("--screen-dir", screen_dir, folder=True, names=SCREEN_PICTURE)],
                   inputs, state=state_dir, json_stdout=as_json, program_path=machine.program_path,
                   file_root=str(machine.file_root))
-    key_script = _read_key_script(keys) if keys else None
+    key_script = read_key_script(keys) if keys else None
     as_path = lambda value: Path(value) if value else None  # noqa: E731
     keyboard = keys is None and not as_json and _stdin_is_terminal()
     options = RunOptions(state_dir=Path(state_dir), max_steps=max_steps, trace=as_path(trace),
@@ -292,7 +292,7 @@ def run(programs, dialect, machine, state_dir, as_json, trace, gcode, plot, plot
     sys.exit(EXIT_FAULT if result["error"] else EXIT_OK)
 
 
-def _read_key_script(path: str):
+def read_key_script(path: str):
     """The key script, read once (``--keys /dev/stdin`` is a pipe); one that does not read is a usage error
     before the run, not a fault at its first wait."""
     # CPL's key script: a dialect loads when a run needs it (the registry is lazy by design), not at start-up
@@ -365,7 +365,7 @@ def _short(value: float, digits: int = 2) -> str:
     return "0" if text == "-0" else text
 
 
-def _check_program(program: str) -> None:
+def check_program(program: str) -> None:
     path = Path(program)
     if not path.exists():
         raise UsageError(f"no such program: {program}")
@@ -373,12 +373,12 @@ def _check_program(program: str) -> None:
         raise UsageError(f"{program}: not a file (a program is read from a file)")
 
 
-def _machine_input(program: str, machine: str | None) -> dict[str, str | None]:
+def machine_input(program: str, machine: str | None) -> dict[str, str | None]:
     """The machine file among the inputs no output may overwrite: the given one or the folder's."""
-    return {"--machine": machine} if machine else {"machine file": _folder_machine(program)}
+    return {"--machine": machine} if machine else {"machine file": folder_machine(program)}
 
 
-def _folder_machine(program: str, say: bool = False) -> str | None:
+def folder_machine(program: str, say: bool = False) -> str | None:
     """The machine file of a program's own folder (``machine.toml``), if there is one; ``say``: name it on
     stderr (a run that is not told which machine says which one it took)."""
     path = Path(program).parent / "machine.toml"

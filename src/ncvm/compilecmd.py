@@ -7,22 +7,13 @@ from pathlib import Path
 
 import click
 
-from .cli import (
-    DEFAULT_STATE,
-    DIALECT_OPT,
-    EXIT_FAULT,
-    MACHINE_OPT,
-    _check_program,
-    _exits,
-    _folder_machine,
-    _machine_input,
-)
+from . import cli
 from .diagnostics import CompileFailed, render_all
 from .outpaths import Output, check_outputs
 from .termstyle import say
 
 
-@click.command(name="compile", epilog=_exits("compile"))
+@click.command(name="compile", epilog=cli.exits_text("compile"))
 @click.argument("source", type=click.Path(dir_okay=False))
 @click.option("-o", "out", type=click.Path(dir_okay=False), help="Object program to write.")
 @click.option("--xref", type=click.Path(dir_okay=False), is_flag=False, flag_value="",
@@ -30,8 +21,8 @@ from .termstyle import say
                    "program unless -o names one.")
 @click.option("--force", is_flag=True, help="Overwrite the object file (without -o) or listing (--xref alone) ncvm names even if ncvm did "
                    "not write it or it was edited since.")
-@DIALECT_OPT
-@MACHINE_OPT
+@cli.DIALECT_OPT
+@cli.MACHINE_OPT
 def compile_cmd(source, out, xref, force, dialect, machine):
     """Compile SOURCE (CL 800 to @ code).
 
@@ -39,18 +30,18 @@ def compile_cmd(source, out, xref, force, dialect, machine):
     """
     from . import api
 
-    _check_program(source)
+    cli.check_program(source)
     xref_named = xref != ""
     if xref == "":
         xref = str(Path(source).with_suffix(".lst"))  # the listing has the source's file name (CL 800 L361)
     # compile has no state directory of its own, but a run's default one is no place for its files either
-    check_outputs([Output("-o", out), Output("--xref", xref)], {"program": source, **_machine_input(source, machine)},
-                  state=DEFAULT_STATE)
-    machine = machine or _folder_machine(source, say=True)
+    check_outputs([Output("-o", out), Output("--xref", xref)], {"program": source, **cli.machine_input(source, machine)},
+                  state=cli.DEFAULT_STATE)
+    machine = machine or cli.folder_machine(source, say=True)
     try:
         path = api.compile_program(source, out, xref, dialect, machine, force=force, xref_named=xref_named)
     except CompileFailed as e:
         for text in render_all(e.diagnostics):
             say(text)
-        sys.exit(EXIT_FAULT)
+        sys.exit(cli.EXIT_FAULT)
     click.echo(f"ncvm: wrote {path}", err=True)

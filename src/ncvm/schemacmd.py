@@ -5,10 +5,10 @@ from __future__ import annotations
 
 import click
 
-from .cli import _exits
+from .cli import exits_text
 
 
-@click.command(name="machine-schema", epilog=_exits("machine-schema"))
+@click.command(name="machine-schema", epilog=exits_text("machine-schema"))
 @click.option("--markdown", is_flag=True, help="The reference tables of docs/machine-file.md instead.")
 def machine_schema(markdown):
     """Print the JSON Schema of machine files (for editors)."""

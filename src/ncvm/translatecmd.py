@@ -8,23 +8,13 @@ from pathlib import Path
 
 import click
 
-from .cli import (
-    DEFAULT_STATE,
-    DIALECT_OPT,
-    EXIT_FAULT,
-    MACHINE_OPT,
-    _check_program,
-    _exits,
-    _folder_machine,
-    _machine_input,
-    _read_key_script,
-)
+from . import cli
 from .diagnostics import render_all
 from .outpaths import Output, check_outputs
 from .termstyle import say
 
 
-@click.command(name="translate", epilog=_exits("translate"))
+@click.command(name="translate", epilog=cli.exits_text("translate"))
 @click.argument("program", type=click.Path(dir_okay=False))
 @click.option("-o", "out", type=click.Path(dir_okay=False), required=True, help="The program to write.")
 @click.option("--target", type=click.Choice(["linuxcnc", "sinumerik840d", "iso"]), default="linuxcnc",
@@ -33,9 +23,9 @@ from .termstyle import say
               help="work: the program's zero offsets and tool lengths; machine: the simulated machine's "
                    "coordinates with everything included.")
 @click.option("--source-comments", is_flag=True, help="End every line with a (file:line) comment.")
-@DIALECT_OPT
-@MACHINE_OPT
-@click.option("--state", "state_dir", type=click.Path(file_okay=False), default=DEFAULT_STATE, show_default=True,
+@cli.DIALECT_OPT
+@cli.MACHINE_OPT
+@click.option("--state", "state_dir", type=click.Path(file_okay=False), default=cli.DEFAULT_STATE, show_default=True,
               help="State directory (permanent store, controller files).")
 @click.option("--scenario", type=click.Path(dir_okay=False, exists=True),
               help="What happens over simulated time (probe trigger points, inputs), as for run.")
@@ -50,18 +40,18 @@ def translate_cmd(program, out, target, frame, source_comments, dialect, machine
     from .runtime.session import RunOptions
     from .translate import Terminated, TranslationRefused, translate
 
-    _check_program(program)
-    inputs = {"program": program, **_machine_input(program, machine), "--scenario": scenario, "--keys": keys}
-    machine = api.machine_for(program, machine or _folder_machine(program, say=True), Path(state_dir))
+    cli.check_program(program)
+    inputs = {"program": program, **cli.machine_input(program, machine), "--scenario": scenario, "--keys": keys}
+    machine = api.machine_for(program, machine or cli.folder_machine(program, say=True), Path(state_dir))
     check_outputs([Output("-o", out)], inputs, state=state_dir, program_path=machine.program_path,
                   file_root=str(machine.file_root))
     options = RunOptions(state_dir=Path(state_dir), max_steps=max_steps, scenario=Path(scenario) if scenario else None,
-                         keys=_read_key_script(keys) if keys else None)
+                         keys=cli.read_key_script(keys) if keys else None)
     try:
         done = translate(program, out, target, frame, source_comments, dialect, machine, options)
     except TranslationRefused as e:
         say(e.diagnostic.render())
-        sys.exit(EXIT_FAULT)
+        sys.exit(cli.EXIT_FAULT)
     except Terminated as e:  # the shell's convention for a command ended by a signal
         say(f"ncvm: {e}")
         sys.exit(128 + e.signum)
