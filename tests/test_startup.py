@@ -6,8 +6,11 @@ Each command runs in a fresh interpreter, as a user starts it; the test reads wh
 from __future__ import annotations
 
 import ast
+import json
 import subprocess
 import sys
+import tomllib
+from pathlib import Path
 
 import pytest
 
@@ -77,16 +80,49 @@ def test_a_one_block_run_imports_neither_plot_nor_screen_libraries_nor_numpy(tmp
     assert "dataclasses" not in modules
 
 
-def test_the_state_commands_are_built_when_named_or_listed(tmp_path):
-    """``ncvm state`` is a lazily loaded subcommand (cli.py, _Guarded.LAZY): a run does not build it."""
+#: the commands in modules of their own (cli.py, _Guarded.LAZY) and the start of their one-line help
+LAZY_COMMANDS = {"check": ("ncvm.checkcmd", "Check programs for every error"),
+                 "compile": ("ncvm.compilecmd", "Compile SOURCE (CL 800 to @ code)."),
+                 "machine-schema": ("ncvm.schemacmd", "Print the JSON Schema of machine files"),
+                 "state": ("ncvm.statecmd", "The permanent memory of the simulated"),
+                 "translate": ("ncvm.translatecmd", "Translate PROGRAM for a modern control")}
+
+
+def test_a_run_builds_no_other_command_and_each_command_is_built_when_named(tmp_path):
+    """Every command but ``run`` is a lazily loaded subcommand (cli.py, _Guarded.LAZY): a run imports none of
+    their modules; naming one builds it (and only it)."""
     (tmp_path / "p.ngc").write_text("M2\n")
     code, modules = loaded(["run", "--state", str(tmp_path / ".ncvm"), "p.ngc"], tmp_path)
-    assert code == 0 and "ncvm.statecmd" not in modules
+    assert code == 0 and {m for m, _help in LAZY_COMMANDS.values()} & modules == set()
     code, modules = loaded(["state", "show", "--state", str(tmp_path / ".ncvm")], tmp_path)
-    assert code == 0 and "ncvm.statecmd" in modules
+    assert code == 0 and {m for m, _help in LAZY_COMMANDS.values()} & modules == {"ncvm.statecmd"}
+    code, modules = loaded(["check", "p.ngc"], tmp_path)
+    assert code == 0 and {m for m, _help in LAZY_COMMANDS.values()} & modules == {"ncvm.checkcmd"}
+    for name, (module, _help) in LAZY_COMMANDS.items():
+        code, modules = loaded([name, "--help"], tmp_path)
+        assert code == 0 and module in modules
+
+
+def test_ncvm_help_lists_every_command_with_its_one_line_help(tmp_path):
     listed = subprocess.run([sys.executable, "-m", "ncvm", "--help"], capture_output=True, text=True, cwd=tmp_path,
                             timeout=120)
-    assert listed.returncode == 0 and "\n  state " in listed.stdout
+    assert listed.returncode == 0
+    commands = listed.stdout.split("\nCommands:\n", 1)[1].split("\n\n", 1)[0].splitlines()
+    assert [line.split()[0] for line in commands] == sorted([*LAZY_COMMANDS, "run"])
+    helps = {line.split()[0]: " ".join(line.split()[1:]) for line in commands}
+    for name, (_module, help_start) in LAZY_COMMANDS.items():
+        assert helps[name].startswith(help_start), helps[name]
+    assert helps["run"].startswith("Run PROGRAMS on the simulated controller")
+
+
+def test_a_mistyped_command_is_matched_against_the_lazily_built_ones_too(tmp_path):
+    out = subprocess.run([sys.executable, "-m", "ncvm", "translat", "p.ngc"], capture_output=True, text=True,
+                         cwd=tmp_path, timeout=120)
+    assert out.returncode == 2 and "No such command 'translat'" in out.stderr
+    import click
+
+    if hasattr(click.exceptions, "NoSuchCommand"):  # click 8.4 and later suggest the names that are close
+        assert "Did you mean 'translate'?" in out.stderr
 
 
 def test_a_run_with_moves_and_a_plot_loads_what_it_uses(tmp_path):
@@ -131,6 +167,8 @@ def test_a_one_block_run_imports_no_sink_it_was_not_asked_for_and_no_scenario_ev
     unused = {"ncvm.sinks.trace", "ncvm.sinks.plot", "ncvm.sinks.plotview", "ncvm.translate",
               "ncvm.machine.scenario", "tempfile", "secrets"}
     assert unused & modules == set()
+    # the moves table only for a run asked for its moves (the API), the DIN check only for ncvm check
+    assert {"ncvm.sinks.moves", "ncvm.dialects.din.check"} & modules == set()
 
 
 def test_a_run_with_a_trace_and_gcode_loads_and_writes_them(tmp_path):
@@ -170,3 +208,67 @@ def test_a_clean_din_run_compiles_neither_the_dialect_guess_nor_the_linuxcnc_pat
              "print('COMPILED', sorted(k[1] for k in re._cache if k[1] in lazy))\n")
     out = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, cwd=tmp_path, timeout=120)
     assert "COMPILED []" in out.stdout, out.stdout + out.stderr
+
+
+def test_a_run_of_a_short_program_reads_it_line_by_line_without_the_plain_line_pattern(tmp_path):
+    """A program of fewer than COLUMNS_FROM lines is read line by line by a run too, as by a check
+    (nc/block.py): the plain-line pattern (about 1.5 ms to compile, into re's cache at first use) is not
+    compiled, and the run's result is the one of the same program read in columns."""
+    (tmp_path / "p.ngc").write_text("G1 X10 Y5 F1000\nG1 X20\nG2 X30 Y15 I5 J5\nG0 Z5\nM2\n")
+    runs = {}
+    for how, columns_from in (("lines", None), ("columns", 0)):
+        out = subprocess.run([sys.executable, "-c", READ_AS, how, "" if columns_from is None else str(columns_from)],
+                             capture_output=True, text=True, cwd=tmp_path, timeout=120)
+        doc, compiled = out.stdout.rsplit("PLAIN_LINE ", 1)
+        runs[how] = json.loads(doc), compiled.strip()
+    assert runs["lines"][1] == "False" and runs["columns"][1] == "True"
+    doc = runs["lines"][0]
+    assert doc["status"] == "ok" and doc["motion"]["feed_moves"] == 2 and doc["motion"]["arc_moves"] == 1
+    assert doc["motion"] == runs["columns"][0]["motion"] and doc["position"] == runs["columns"][0]["position"]
+    assert doc["cycle_time_s"] == runs["columns"][0]["cycle_time_s"]
+
+
+#: a run of p.ngc with --json (state .ncvm-<argv 1>), every stretch read in columns when argv 2 says 0; then
+#: whether the plain-line pattern was compiled
+READ_AS = """\
+import re, runpy, sys
+how, columns_from = sys.argv[1:3]
+if columns_from:
+    from ncvm.dialects import din
+    din.COLUMNS_FROM = int(columns_from)
+sys.argv = ["ncvm", "run", "--json", "--state", ".ncvm-" + how, "p.ngc"]
+try:
+    runpy.run_module("ncvm", run_name="__main__")
+except SystemExit:
+    pass
+from ncvm.nc import block
+print("PLAIN_LINE", any(k[1] == block._PLAIN_LINE for k in re._cache))
+"""
+
+
+def test_the_command_freezes_what_loading_made_and_runs_under_the_collector(tmp_path):
+    """ncvm.startup.main (the console script and ``python -m ncvm``) loads the CLI with the collector's first
+    threshold raised, freezes what loading made and puts the thresholds back before the command runs."""
+    (tmp_path / "p.ngc").write_text("M2\n")
+    probe = ("import gc, sys\ndefaults = gc.get_threshold()\nimport ncvm.cli\n"
+             "print('IMPORT', gc.get_freeze_count(), gc.get_threshold() == defaults)\n"
+             "seen = []\nimport ncvm.runtime.session as s\n_init = s.Session.__init__\n"
+             "def init(self, *a, **k):\n    seen.append((gc.get_threshold() == defaults, gc.get_freeze_count()))\n"
+             "    _init(self, *a, **k)\ns.Session.__init__ = init\n"
+             "from ncvm import startup\nsys.argv = ['ncvm', 'run', '--state', '.ncvm', 'p.ngc']\n"
+             "try:\n    startup.main()\nexcept SystemExit as e:\n    print('EXIT', e.code)\n"
+             "print('RUN', seen)\n")
+    out = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, cwd=tmp_path, timeout=120)
+    lines = dict(ln.split(" ", 1) for ln in out.stdout.splitlines() if ln.startswith(("IMPORT", "EXIT", "RUN")))
+    assert lines["IMPORT"] == "0 True", out.stdout + out.stderr  # importing the CLI (tests, the API) changes nothing
+    assert lines["EXIT"] == "0"
+    (restored, frozen), = ast.literal_eval(lines["RUN"])
+    assert restored and frozen > 1000  # the run's collector: default thresholds; start-up's objects frozen
+
+
+def test_python_m_ncvm_and_the_console_script_start_through_ncvm_startup():
+    root = Path(__file__).resolve().parents[1]
+    scripts = tomllib.loads((root / "pyproject.toml").read_text())["project"]["scripts"]
+    assert scripts == {"ncvm": "ncvm.startup:main"}
+    main_module = ast.parse((root / "src" / "ncvm" / "__main__.py").read_text())
+    assert any(isinstance(n, ast.ImportFrom) and n.module == "startup" for n in main_module.body)

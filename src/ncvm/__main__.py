@@ -1,5 +1,5 @@
 """``python -m ncvm``: the same as the ``ncvm`` command."""
 
-from .cli import main
+from .startup import main
 
 main()

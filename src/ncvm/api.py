@@ -12,7 +12,7 @@ import os
 import stat
 from functools import partial
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from . import records
 from .diagnostics import CompileFailed, Diagnostic, Diagnostics, Span, UsageError
@@ -27,10 +27,12 @@ from .runtime.memory import memory_limit
 from .runtime.session import RunOptions, RunSinks, Session, run_guarded, set_default_sinks
 from .sinks.areas import zone_check
 from .sinks.limits import LimitCheck
-from .sinks.moves import MoveTable
 from .sinks.toolpath import MotionSummary, ToolpathRecorder
 from .sinks.workbounds import WorkBounds
 from .source import read_head, read_text
+
+if TYPE_CHECKING:  # a run asked for its moves imports it (public.py)
+    from .sinks.moves import MoveTable
 
 # The trace, the G-code translation and the plot points are imported by the runs that ask for them (start-up).
 

@@ -8,13 +8,12 @@ from __future__ import annotations
 
 import os
 import sys
-from collections import Counter
 from pathlib import Path
 
 import click
 
 from . import __version__, termstyle
-from .diagnostics import CompileFailed, Diagnostic, Diagnostics, Span, UsageError, render_all
+from .diagnostics import Diagnostic, Span, UsageError
 from .dialects import REGISTRY
 from .lazy import lazy
 from .outpaths import PLOT_SUFFIXES, SCREEN_PICTURE, Output, OutputError, check_outputs
@@ -44,7 +43,7 @@ EXIT_TABLE = ("Exit codes: 0 the run ended normally, check found no error, compi
               "in use); 70 internal error (a bug in ncvm). Each command's --help names its own.")
 
 
-def _exits(name: str) -> str:
+def exits_text(name: str) -> str:
     return f"Exit codes: {EXITS[name]}."
 DEFAULT_STATE = ".ncvm"
 
@@ -97,9 +96,12 @@ class _Guarded(click.Group):
     stdout too, so a script can always read stdout as JSON.
     """
 
-    #: commands of modules of their own, imported when named or listed (click's lazily loaded subcommands):
-    #: ``ncvm state`` builds its commands in about 1.3 ms every other start-up would pay (issue 18)
-    LAZY = {"state": "ncvm.statecmd"}
+    #: name -> (module, attribute) of the commands in modules of their own, imported when named or listed
+    #: (click's lazily loaded subcommands): building their options is start-up work a run would pay for
+    #: every other command (issue 18); ``run`` is built here, since it is what start-up is measured by
+    LAZY = {"check": ("ncvm.checkcmd", "check"), "compile": ("ncvm.compilecmd", "compile_cmd"),
+            "machine-schema": ("ncvm.schemacmd", "machine_schema"), "state": ("ncvm.statecmd", "state"),
+            "translate": ("ncvm.translatecmd", "translate_cmd")}
 
     def list_commands(self, ctx):
         return sorted({*super().list_commands(ctx), *self.LAZY})
@@ -108,8 +110,15 @@ class _Guarded(click.Group):
         if name in self.LAZY and name not in self.commands:
             from importlib import import_module
 
-            self.add_command(getattr(import_module(self.LAZY[name]), name))
+            module, attribute = self.LAZY[name]
+            self.add_command(getattr(import_module(module), attribute), name)
         return super().get_command(ctx, name)
+
+    def resolve_command(self, ctx, args):
+        if self.get_command(ctx, args[0]) is None:  # no such command: click's "Did you mean" looks at those built
+            for name in self.LAZY:
+                self.get_command(ctx, name)
+        return super().resolve_command(ctx, args)
 
     def parse_args(self, ctx, args):
         ctx.meta[_JSON] = "--json" in args[:args.index("--")] if "--" in args else "--json" in args
@@ -173,7 +182,7 @@ def _batch_options(f):
                         help="Batch: programs run at once in local processes (default: the number of cores).")(f)
 
 
-@cli.command(epilog=_exits("run"))
+@cli.command(epilog=exits_text("run"))
 @click.argument("programs", nargs=-1, required=True, type=click.Path())
 @DIALECT_OPT
 @MACHINE_OPT
@@ -229,18 +238,18 @@ def run(programs, dialect, machine, state_dir, as_json, trace, gcode, plot, plot
     from .runtime.session import RunOptions
 
     program = programs[0]
-    _check_program(program)
+    check_program(program)
     if not state_dir.strip():  # an unset variable: the store would land in the current directory
         raise UsageError("--state is empty; give the state directory (default .ncvm)")
     scenario, keys = _own_inputs(program, scenario, keys)
-    inputs = {"program": program, **_machine_input(program, machine), "--scenario": scenario, "--keys": keys}
-    machine = api.machine_for(program, machine or _folder_machine(program, say=True), Path(state_dir))
+    inputs = {"program": program, **machine_input(program, machine), "--scenario": scenario, "--keys": keys}
+    machine = api.machine_for(program, machine or folder_machine(program, say=True), Path(state_dir))
     check_outputs([Output("--trace", trace), Output("--gcode", gcode), Output("--plot", plot, PLOT_SUFFIXES),
                    Output("--screen", screen, (".png",)),
                    Output("--screen-dir", screen_dir, folder=True, names=SCREEN_PICTURE)],
                   inputs, state=state_dir, json_stdout=as_json, program_path=machine.program_path,
                   file_root=str(machine.file_root))
-    key_script = _read_key_script(keys) if keys else None
+    key_script = read_key_script(keys) if keys else None
     as_path = lambda value: Path(value) if value else None  # noqa: E731
     keyboard = keys is None and not as_json and _stdin_is_terminal()
     options = RunOptions(state_dir=Path(state_dir), max_steps=max_steps, trace=as_path(trace),
@@ -283,7 +292,7 @@ def run(programs, dialect, machine, state_dir, as_json, trace, gcode, plot, plot
     sys.exit(EXIT_FAULT if result["error"] else EXIT_OK)
 
 
-def _read_key_script(path: str):
+def read_key_script(path: str):
     """The key script, read once (``--keys /dev/stdin`` is a pipe); one that does not read is a usage error
     before the run, not a fault at its first wait."""
     # CPL's key script: a dialect loads when a run needs it (the registry is lazy by design), not at start-up
@@ -356,7 +365,7 @@ def _short(value: float, digits: int = 2) -> str:
     return "0" if text == "-0" else text
 
 
-def _check_program(program: str) -> None:
+def check_program(program: str) -> None:
     path = Path(program)
     if not path.exists():
         raise UsageError(f"no such program: {program}")
@@ -364,12 +373,12 @@ def _check_program(program: str) -> None:
         raise UsageError(f"{program}: not a file (a program is read from a file)")
 
 
-def _machine_input(program: str, machine: str | None) -> dict[str, str | None]:
+def machine_input(program: str, machine: str | None) -> dict[str, str | None]:
     """The machine file among the inputs no output may overwrite: the given one or the folder's."""
-    return {"--machine": machine} if machine else {"machine file": _folder_machine(program)}
+    return {"--machine": machine} if machine else {"machine file": folder_machine(program)}
 
 
-def _folder_machine(program: str, say: bool = False) -> str | None:
+def folder_machine(program: str, say: bool = False) -> str | None:
     """The machine file of a program's own folder (``machine.toml``), if there is one; ``say``: name it on
     stderr (a run that is not told which machine says which one it took)."""
     path = Path(program).parent / "machine.toml"
@@ -393,168 +402,6 @@ def _own_inputs(program: str, scenario: str | None, keys: str | None) -> tuple[s
         keys = str(own[KEYS_SUFFIX])
         click.echo(f"ncvm: key presses {keys} (beside the program)", err=True)
     return scenario, keys
-
-
-@cli.command(epilog=_exits("check"))
-@click.argument("programs", nargs=-1, required=True, type=click.Path())
-@DIALECT_OPT
-@MACHINE_OPT
-@click.option("--json", "as_json", is_flag=True, help="Diagnostics as one JSON document.")
-@click.option("--all", "all_errors", is_flag=True, help="Go on after the first error and list every one.")
-@click.option("--report", "report_file", type=click.Path(dir_okay=False),
-              help="Write the report as run --report does (.json, .csv or JUnit .xml), a program per entry.")
-def check(programs, dialect, machine, as_json, all_errors, report_file):
-    """Check programs for every error the control would report; exit 1 when any was found.
-
-    A folder stands for every program file below it (known extensions; a file without one when its content
-    is a program), so a whole archive is checked at once, sub-programs too; each program uses the nearest
-    machine.toml upwards (up to the folder named) unless --machine is given.
-    """
-    from . import api
-    from .archive import report as reports
-    from .archive.discover import discover, machine_of, nothing_found
-
-    if report_file and Path(report_file).suffix.lower() not in reports.FORMATS:
-        raise UsageError(f"--report {report_file}: give a .json, .csv or .xml file")
-    report, records, failed = [], [], False
-    found = discover(programs, dialect, machine)
-    for program in found.all_programs:
-        try:
-            diags = api.check(program.path, program.dialect, machine_of(program), all_errors)
-        except CompileFailed as e:
-            diags = Diagnostics.capped(e.diagnostics)
-        errors = diags.errors()
-        failed |= bool(errors)
-        report.append({"file": str(program.path), "ok": not errors, "machine": str(program.machine or "built-in"),
-                       "diagnostics": [d.to_json() for d in diags]})
-        if diags.left_out:  # the counts of the diagnostics past the first MAX_KEPT (docs/decisions.md)
-            report[-1]["not_shown"] = dict(diags.left_out)
-        records.append(reports.check_record(str(program.path), program.dialect, report[-1]["machine"],
-                                            report[-1]["diagnostics"], diags.not_shown(),
-                                            diags.left_out.get("error", 0)))
-        if not as_json:
-            for text in render_all(diags):
-                say(text)
-            if diags.left_out:
-                say(f"{program.path}: {diags.not_shown()}")
-    not_checked = [s for s in found.skipped if s.path not in found.checked]
-    skipped = [{"file": str(s.path), "reason": s.reason} for s in not_checked]
-    if report_file:
-        doc = reports.document(records, not_checked, {"command": "check"})
-        doc["summary"].update(cycle_time_s=None, steps=None)  # nothing ran
-        reports.write(doc, report_file)
-    if as_json:
-        click.echo(json.dumps({"files": report, "skipped": skipped}, indent=2))
-    else:
-        for s in skipped:
-            click.echo(f"{s['file']}: skipped: {s['reason']}", err=True)
-        if len(report) > 1:  # an archive: which machine file the programs used
-            for line in reports.machine_lines(Counter(r["machine"] for r in report)):
-                click.echo(line, err=True)
-        n = sum(len(r["diagnostics"]) + sum(r.get("not_shown", {}).values()) for r in report)
-        bad = sum(1 for r in report if not r["ok"])
-        with_errors = f", {bad} with errors" if bad else ""
-        not_programs = f", {len(skipped)} file(s) skipped" if skipped else ""
-        say(f"ncvm: {len(report)} program(s) checked{with_errors}, {n} diagnostic(s){not_programs}")
-        if nothing_found(found, programs):
-            say(nothing_found(found, programs))
-        if report_file:
-            say(f"ncvm: report written to {report_file}")
-    sys.exit(EXIT_FAULT if failed else EXIT_OK)
-
-
-@cli.command(name="compile", epilog=_exits("compile"))
-@click.argument("source", type=click.Path(dir_okay=False))
-@click.option("-o", "out", type=click.Path(dir_okay=False), help="Object program to write.")
-@click.option("--xref", type=click.Path(dir_okay=False), is_flag=False, flag_value="",
-              help="Write the cross-reference listing (default name: the source's, .lst) and no object "
-                   "program unless -o names one.")
-@click.option("--force", is_flag=True, help="Overwrite the object file (without -o) or listing (--xref alone) ncvm names even if ncvm did "
-                   "not write it or it was edited since.")
-@DIALECT_OPT
-@MACHINE_OPT
-def compile_cmd(source, out, xref, force, dialect, machine):
-    """Compile SOURCE (CL 800 to @ code).
-
-    Without --machine the machine.toml in the source's folder is used (named on stderr), as by check and run.
-    """
-    from . import api
-
-    _check_program(source)
-    xref_named = xref != ""
-    if xref == "":
-        xref = str(Path(source).with_suffix(".lst"))  # the listing has the source's file name (CL 800 L361)
-    # compile has no state directory of its own, but a run's default one is no place for its files either
-    check_outputs([Output("-o", out), Output("--xref", xref)], {"program": source, **_machine_input(source, machine)},
-                  state=DEFAULT_STATE)
-    machine = machine or _folder_machine(source, say=True)
-    try:
-        path = api.compile_program(source, out, xref, dialect, machine, force=force, xref_named=xref_named)
-    except CompileFailed as e:
-        for text in render_all(e.diagnostics):
-            say(text)
-        sys.exit(EXIT_FAULT)
-    click.echo(f"ncvm: wrote {path}", err=True)
-
-
-@cli.command(name="machine-schema", epilog=_exits("machine-schema"))
-@click.option("--markdown", is_flag=True, help="The reference tables of docs/machine-file.md instead.")
-def machine_schema(markdown):
-    """Print the JSON Schema of machine files (for editors)."""
-    from .machine.docgen import json_text
-    from .machine.docgen import markdown as tables
-
-    click.echo(tables() if markdown else json_text(), nl=False)
-
-
-@cli.command(name="translate", epilog=_exits("translate"))
-@click.argument("program", type=click.Path(dir_okay=False))
-@click.option("-o", "out", type=click.Path(dir_okay=False), required=True, help="The program to write.")
-@click.option("--target", type=click.Choice(["linuxcnc", "sinumerik840d", "iso"]), default="linuxcnc",
-              show_default=True, help="The control the translation is for.")
-@click.option("--frame", type=click.Choice(["work", "machine"]), default="work", show_default=True,
-              help="work: the program's zero offsets and tool lengths; machine: the simulated machine's "
-                   "coordinates with everything included.")
-@click.option("--source-comments", is_flag=True, help="End every line with a (file:line) comment.")
-@DIALECT_OPT
-@MACHINE_OPT
-@click.option("--state", "state_dir", type=click.Path(file_okay=False), default=DEFAULT_STATE, show_default=True,
-              help="State directory (permanent store, controller files).")
-@click.option("--scenario", type=click.Path(dir_okay=False, exists=True),
-              help="What happens over simulated time (probe trigger points, inputs), as for run.")
-@click.option("--keys", type=click.Path(dir_okay=False, exists=True), help="The operator's key presses, as for run.")
-@click.option("--max-steps", type=click.IntRange(min=1), default=100_000_000, show_default=True,
-              help="Stop a runaway program after this many statements and blocks.")
-def translate_cmd(program, out, target, frame, source_comments, dialect, machine, state_dir, scenario, keys,
-                  max_steps):
-    """Translate PROGRAM for a modern control: it runs on the simulated controller and its motion is
-    written as TARGET's program (docs/translate.md); a failed run writes nothing."""
-    from . import api
-    from .runtime.session import RunOptions
-    from .translate import Terminated, TranslationRefused, translate
-
-    _check_program(program)
-    inputs = {"program": program, **_machine_input(program, machine), "--scenario": scenario, "--keys": keys}
-    machine = api.machine_for(program, machine or _folder_machine(program, say=True), Path(state_dir))
-    check_outputs([Output("-o", out)], inputs, state=state_dir, program_path=machine.program_path,
-                  file_root=str(machine.file_root))
-    options = RunOptions(state_dir=Path(state_dir), max_steps=max_steps, scenario=Path(scenario) if scenario else None,
-                         keys=_read_key_script(keys) if keys else None)
-    try:
-        done = translate(program, out, target, frame, source_comments, dialect, machine, options)
-    except TranslationRefused as e:
-        say(e.diagnostic.render())
-        sys.exit(EXIT_FAULT)
-    except Terminated as e:  # the shell's convention for a command ended by a signal
-        say(f"ncvm: {e}")
-        sys.exit(128 + e.signum)
-    for v in done.warnings:  # the run's soft limits: the translation makes the same moves
-        say(f"warning: {v}")
-    for text in render_all(done.diagnostics):  # where the file differs from the simulated run (TRN003)
-        say(text)
-    click.echo(f"ncvm: wrote {done.path} for {done.target.title}: {done.lines} lines, {done.moves} moves, "
-               f"{done.probes} probe moves, {done.frozen} frozen decisions", err=True)
-
 
 
 def main() -> None:

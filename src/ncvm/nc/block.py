@@ -265,16 +265,17 @@ _PLAIN = frozenset(PLAIN_WORDS)
 #: (at most WORD_DECADES digits before the point: a longer number goes the general way and gets its error there)
 _NUM = r"([-+]?+(?:\d{1,8}+(?:\.\d*+)?+|\.\d++))"
 #: a plain line with at least one G code or word (groups: G, then PLAIN_WORDS), or any other line with its
-#: line break (last group: never empty, so blank lines and lines of nothing but N go the general way too)
-_PLAIN_LINE = re.compile(r"^[ \t]*+(?:N\d+[ \t]*+)?(?=[GXYZIJKF])(?:G0?([0-3])(?![\d.])[ \t]*+)?"
-                         + "".join(rf"(?:{a}{_NUM}[ \t]*+)?" for a in PLAIN_WORDS) + r"$|^(.*\n?)", re.M)
+#: line break (last group: never empty, so blank lines and lines of nothing but N go the general way too);
+#: multi-line (re.M). Compiled into re's cache at first use (about 1.5 ms): a short program is read line by line
+_PLAIN_LINE = (r"^[ \t]*+(?:N\d+[ \t]*+)?(?=[GXYZIJKF])(?:G0?([0-3])(?![\d.])[ \t]*+)?"
+               + "".join(rf"(?:{a}{_NUM}[ \t]*+)?" for a in PLAIN_WORDS) + r"$|^(.*\n?)")
 #: motion G code as the reader finds it -> its number (-1: the block has none)
 _MOTION = {"": -1, "0": 0, "1": 1, "2": 2, "3": 3}
 _NAN = math.nan
 #: characters of a program read in one regex pass (about 8,000 lines of CAM output)
 CHUNK_CHARS = 1 << 18
-#: a check reads programs of fewer lines line by line: columns would cost more than they save (numpy's
-#: import alone is ~0.1 s, issue 18)
+#: a check or a run reads programs (and a file's last stretch) of fewer lines line by line: columns would cost
+#: more than they save (numpy's import alone is ~0.1 s, issue 18)
 COLUMNS_FROM = 200
 
 
@@ -363,7 +364,8 @@ def din_stretches(path: str, pieces, columns_from: int = 0):
             yield DinStretch(segments, diags, lines, first, len(chunk))
             first += len(lines)
             continue
-        columns = list(zip(*_PLAIN_LINE.findall(chunk if chunk.isupper() else chunk.upper())[:len(lines)]))
+        columns = list(zip(*re.findall(_PLAIN_LINE, chunk if chunk.isupper() else chunk.upper(), re.M)
+                             [:len(lines)]))
         segments, diags = [], []
         start = 0
         for k in [k for k, rest in enumerate(columns[-1], 1) if rest]:

@@ -21,7 +21,6 @@ from ...nc.profiles.named import profile as named_profile
 from ...source import lines as program_lines
 from ...source import open_program
 from ..base import Dialect
-from .check import check_stretches
 from .ngc import fold_extensions
 from .options import arc_tolerance, options
 from .support import address_refusal, block_error, refused_address
@@ -54,6 +53,8 @@ class DinDialect(Dialect):
     def check(self, path, text, machine, all_errors=False):
         """Every diagnostic of the program, read from its file a stretch at a time (``text`` None) or from
         ``text`` (dialects/din/check.py)."""
+        from .check import check_stretches  # a run needs none of it (start-up)
+
         profile = named_profile(options(machine).profile)
         with ProgramStretches(path, text) as program:
             return check_stretches(path, program(COLUMNS_FROM), machine, profile)
@@ -109,7 +110,7 @@ class DinDialect(Dialect):
         held = [] if program.chars <= KEEP_CHARS else None
         diags, refused, index = [], None, 0
         error_lines = {}  # the source lines of the syntax errors (NC001), for fold_extensions
-        for stretch in program():
+        for stretch in program(COLUMNS_FROM):  # a short program line by line: no numpy (issue 18, start-up)
             segments = stretch.segments
             diags += stretch.diags
             error_lines.update((d.span.line, stretch.line(d.span.line)) for d in stretch.diags if d.code == "NC001")
@@ -125,7 +126,7 @@ class DinDialect(Dialect):
                 held.append(segments)
         if diags:
             raise CompileFailed(fold_extensions(diags, error_lines.get))
-        return (held if held is not None else (stretch.segments for stretch in program())), refused
+        return (held if held is not None else (stretch.segments for stretch in program(COLUMNS_FROM))), refused
 
     @staticmethod
     def _execute(path, segments, kernel, counter, limit, hook, skip_active, done, last_src):
