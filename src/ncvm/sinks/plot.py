@@ -40,8 +40,8 @@ class PlotPoints(CanonSink):
     comes, the machine's) or "machine".
     """
 
-    def __init__(self, recorder: ToolpathRecorder, max_points: int = MAX_POINTS, frame: str = "work"):
-        self.max_points = max_points
+    def __init__(self, recorder: ToolpathRecorder, max_points: int | None = None, frame: str = "work"):
+        self.max_points = MAX_POINTS if max_points is None else max_points
         self.frame_asked = frame
         self._rec = recorder
         #: (first move index, offsets) of each work frame, and (first move index, number) of each channel

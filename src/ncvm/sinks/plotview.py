@@ -74,8 +74,7 @@ def figure(points: PlotPoints, title: str = "", violations: Sequence = ()):
     frame = "work" if points.in_work_frame else "machine"
     label = {c: f"{names[i]} ({frame})" for c, i in zip("xyz", (x, y, z))}
     lines = points.drawn()
-    every = np.concatenate(list(lines.values())) if lines else np.zeros((0, 3))
-    lo, hi = _extent(every, points)
+    lo, hi = _extent(lines, points)
 
     fig = plt.figure(figsize=(15, 10))
     grid = fig.add_gridspec(2, 3, width_ratios=[1, 1, 0.5], left=0.05, right=0.99, top=0.9, bottom=0.06,
@@ -124,15 +123,21 @@ def figure(points: PlotPoints, title: str = "", violations: Sequence = ()):
     return fig
 
 
-def _extent(every: np.ndarray, points: PlotPoints) -> tuple[np.ndarray, np.ndarray]:
-    """Lowest and highest drawn x, y, z (start and end included); a single point: that point."""
-    pts = every[np.isfinite(every).all(axis=1)] if len(every) else every
+def _extent(lines: dict, points: PlotPoints) -> tuple[np.ndarray, np.ndarray]:
+    """Lowest and highest drawn x, y, z (start and end included); a single point: that point. Line by line:
+    no copy of all the drawn points (up to the plot's cap) is made for it."""
+    lows, highs = [], []
+    for pts in lines.values():
+        pts = pts[~np.isnan(pts).any(axis=1)]
+        if len(pts):
+            lows.append(pts.min(axis=0))
+            highs.append(pts.max(axis=0))
     extra = [p for p in (points.first, points.last) if p is not None]
-    if extra:
-        pts = np.vstack([pts, np.asarray(extra, dtype=float)]) if len(pts) else np.asarray(extra, dtype=float)
-    if not len(pts):
+    lows += [np.asarray(p, dtype=float) for p in extra]
+    highs += [np.asarray(p, dtype=float) for p in extra]
+    if not lows:
         return np.zeros(3), np.zeros(3)
-    return pts.min(axis=0), pts.max(axis=0)
+    return np.min(lows, axis=0), np.max(highs, axis=0)
 
 
 def _limits(lo: np.ndarray, hi: np.ndarray, longest: float) -> tuple[np.ndarray, np.ndarray]:
