@@ -14,7 +14,10 @@ child process, alternating the two, and takes the child's own CPU time and peak 
 - ``proc_<dialect>_2m_moves_memory``: 2,000,000 computed G1 moves in a loop of each dialect, no plot;
 - ``proc_din_flat_500k_memory``: a 500,000-line flat DIN file (bench/peers/gen_flat.py) and rs274 on it;
   ``proc_din_check_500k_memory``: ``ncvm check`` of that file;
+- ``proc_sympas_2m_moves_plot_memory``: the rw_SymPas 2,000,000 moves with ``--plot`` (a PNG): the plot's
+  points are thinned as the moves come and the drawing's cost is bounded by its cap of points;
 - with ``run.py --large`` only: ``proc_<dialect>_10m_moves_memory`` (10,000,000 computed G1 moves),
+  ``proc_sympas_10m_moves_plot_memory`` (the same with ``--plot``),
   ``proc_din_flat_10m_memory`` (a 10,000,000-line flat DIN file, 340 MB, and rs274 on it) and
   ``proc_din_check_10m_memory`` (``ncvm check`` of that file): memory bounded for a program of any length.
 """
@@ -135,12 +138,16 @@ def paired(ncvm_argv: list[str], peer: Path | None, *, expect_moves: int | None 
                 used = child(rs274_argv(peer))
             elif expect_moves is None:
                 used = child(ncvm_argv)
-            else:  # the JSON result says how many moves ran
+            else:  # the JSON result says how many moves ran (and the plot asked for was drawn)
                 at = ncvm_argv.index("run") + 1
                 out = WORK / "proc_result.json"
+                plot = Path(ncvm_argv[ncvm_argv.index("--plot") + 1]) if "--plot" in ncvm_argv else None
+                if plot is not None:
+                    plot.unlink(missing_ok=True)
                 used = child(ncvm_argv[:at] + ["--json"] + ncvm_argv[at:], stdout=out)
                 moves = json.loads(out.read_text())["motion"]["feed_moves"]
                 assert moves == expect_moves, f"{moves} feed moves, expected {expect_moves}"
+                assert plot is None or plot.stat().st_size > 0, f"no plot drawn in {plot}"
             figures[f"{who}_cpu_s"] = used.cpu_s
             figures[f"{who}_wall_s"] = used.wall_s
             figures[f"{who}_peak_rss_mb"] = used.peak_rss_mb
@@ -174,6 +181,9 @@ def cases() -> dict[str, Case]:
         **{f"proc_{d}_2m_moves_memory": case(paired(ncvm_run(f"moves_2m.{ext}", "-d", d), None,
                                                     expect_moves=MOVES), MOVES, "G1/s", repeat=1)
            for d, ext in (("cpl", "cpl"), ("sin800", "mpf"), ("sympas", "sap"))},
+        "proc_sympas_2m_moves_plot_memory": case(paired(ncvm_run("moves_2m.sap", "-d", "sympas", "--plot",
+                                                                  str(WORK / "moves_2m_sap.png")), None,
+                                                          expect_moves=MOVES), MOVES, "G1/s", repeat=1),
         "proc_din_flat_500k_memory": case(paired(ncvm_run("flat_500k.ngc", "-d", "din"), WORK / "flat_500k.ngc"),
                                           FLAT_LINES, "lines/s", repeat=1),
         "proc_din_check_500k_memory": case(paired(NCVM + ["check", str(WORK / "flat_500k.ngc")], None), FLAT_LINES,
@@ -181,6 +191,9 @@ def cases() -> dict[str, Case]:
         **{f"proc_{d}_10m_moves_memory": large_case(paired(ncvm_run(f"moves_10m.{ext}", "-d", d), None,
                                                            expect_moves=LARGE), "G1/s")
            for d, ext in (("cpl", "cpl"), ("sin800", "mpf"), ("sympas", "sap"))},
+        "proc_sympas_10m_moves_plot_memory": large_case(paired(ncvm_run("moves_10m.sap", "-d", "sympas", "--plot",
+                                                                         str(WORK / "moves_10m_sap.png")), None,
+                                                                 expect_moves=LARGE), "G1/s"),
         "proc_din_flat_10m_memory": large_case(paired(ncvm_run("flat_10m.ngc", "-d", "din"), WORK / "flat_10m.ngc"),
                                                "lines/s"),
         "proc_din_check_10m_memory": large_case(paired(NCVM + ["check", str(WORK / "flat_10m.ngc")], None), "lines/s"),

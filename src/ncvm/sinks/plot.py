@@ -27,7 +27,7 @@ from .workbounds import in_force
 
 np = lazy("numpy")
 
-MAX_POINTS = 200_000  # points drawn, all lines together (and as many plunge marks)
+MAX_POINTS = 100_000  # points drawn, all lines together (and as many plunge marks): see docs/decisions.md
 #: thinning keeps at most 8 of each BUCKET consecutive points of a line (first, last, the extremes of X, Y, Z): on
 #: a smooth curve only the two ends, so 16 (not more) keeps its chords close to it
 BUCKET = 16
@@ -40,8 +40,8 @@ class PlotPoints(CanonSink):
     comes, the machine's) or "machine".
     """
 
-    def __init__(self, recorder: ToolpathRecorder, max_points: int = MAX_POINTS, frame: str = "work"):
-        self.max_points = max_points
+    def __init__(self, recorder: ToolpathRecorder, max_points: int | None = None, frame: str = "work"):
+        self.max_points = MAX_POINTS if max_points is None else max_points
         self.frame_asked = frame
         self._rec = recorder
         #: (first move index, offsets) of each work frame, and (first move index, number) of each channel

@@ -74,8 +74,7 @@ def figure(points: PlotPoints, title: str = "", violations: Sequence = ()):
     frame = "work" if points.in_work_frame else "machine"
     label = {c: f"{names[i]} ({frame})" for c, i in zip("xyz", (x, y, z))}
     lines = points.drawn()
-    every = np.concatenate(list(lines.values())) if lines else np.zeros((0, 3))
-    lo, hi = _extent(every, points)
+    lo, hi = _extent(lines, points)
 
     fig = plt.figure(figsize=(15, 10))
     grid = fig.add_gridspec(2, 3, width_ratios=[1, 1, 0.5], left=0.05, right=0.99, top=0.9, bottom=0.06,
@@ -84,10 +83,8 @@ def figure(points: PlotPoints, title: str = "", violations: Sequence = ()):
              "XZ": fig.add_subplot(grid[1, 0]), "YZ": fig.add_subplot(grid[1, 1])}
     plane = {"XY": (0, 1), "XZ": (0, 2), "YZ": (1, 2)}
     handles = []
-    segs = _feed_segments(lines)
-    # depth colours when the feed moves seen from above (not the plunges: points there) lie at several depths
-    seen = segs[np.hypot(*(segs[:, 1, :2] - segs[:, 0, :2]).T) > 1e-9] if len(segs) else segs
-    depth = len(seen) > 0 and np.ptp(seen[:, :, 2].min(axis=1)) > 1e-9 * max(1.0, float(np.max(hi - lo)))
+    paths = []  # the toolpath's artists: left out of the drawings that only measure the axis titles
+    depth = _several_depths(lines, float(np.max(hi - lo)))
     who = "task" if points.by_channel else "T"
     for (rapid, owner), pts in lines.items():
         colour = TOOL_COLOURS[owner % len(TOOL_COLOURS)]
@@ -95,13 +92,13 @@ def figure(points: PlotPoints, title: str = "", violations: Sequence = ()):
         for name, (a, b) in plane.items():
             if name == "XY" and depth and not rapid:
                 continue
-            views[name].plot(pts[:, a], pts[:, b], style, color=colour, linewidth=width)
-        views["3-D"].plot(pts[:, 0], pts[:, 1], pts[:, 2], style, color=colour, linewidth=width)
+            paths += views[name].plot(pts[:, a], pts[:, b], style, color=colour, linewidth=width)
+        paths += views["3-D"].plot(pts[:, 0], pts[:, 1], pts[:, 2], style, color=colour, linewidth=width)
         name = f"task {owner}" if who == "task" else f"T{owner}"
         handles.append(Line2D([], [], linestyle=style, color=colour, linewidth=width,
                               label=f"{name} {'rapid' if rapid else 'feed'}"))
     if depth:
-        _depth_lines(fig, views["XY"], segs, label["z"])
+        paths.append(_depth_lines(fig, views["XY"], _feed_segments(lines), label["z"]))
     _marks(points, views, handles, violations)
     for name, (a, b) in plane.items():
         ax = views[name]
@@ -112,7 +109,7 @@ def figure(points: PlotPoints, title: str = "", violations: Sequence = ()):
         _equal_2d(ax, lo, hi, a, b)
     _equal_3d(views["3-D"], lo, hi, label)
     views["3-D"].set_title("3-D view")
-    _unclash_3d_titles(fig, views["3-D"])
+    _unclash_3d_titles(fig, views["3-D"], paths)
     notes = _notes(points, frame)
     if notes:
         handles += [Line2D([], [], linestyle="none", label=n) for n in notes]
@@ -126,15 +123,21 @@ def figure(points: PlotPoints, title: str = "", violations: Sequence = ()):
     return fig
 
 
-def _extent(every: np.ndarray, points: PlotPoints) -> tuple[np.ndarray, np.ndarray]:
-    """Lowest and highest drawn x, y, z (start and end included); a single point: that point."""
-    pts = every[np.isfinite(every).all(axis=1)] if len(every) else every
+def _extent(lines: dict, points: PlotPoints) -> tuple[np.ndarray, np.ndarray]:
+    """Lowest and highest drawn x, y, z (start and end included); a single point: that point. Line by line:
+    no copy of all the drawn points (up to the plot's cap) is made for it."""
+    lows, highs = [], []
+    for pts in lines.values():
+        pts = pts[~np.isnan(pts).any(axis=1)]
+        if len(pts):
+            lows.append(pts.min(axis=0))
+            highs.append(pts.max(axis=0))
     extra = [p for p in (points.first, points.last) if p is not None]
-    if extra:
-        pts = np.vstack([pts, np.asarray(extra, dtype=float)]) if len(pts) else np.asarray(extra, dtype=float)
-    if not len(pts):
+    lows += [np.asarray(p, dtype=float) for p in extra]
+    highs += [np.asarray(p, dtype=float) for p in extra]
+    if not lows:
         return np.zeros(3), np.zeros(3)
-    return pts.min(axis=0), pts.max(axis=0)
+    return np.min(lows, axis=0), np.max(highs, axis=0)
 
 
 def _limits(lo: np.ndarray, hi: np.ndarray, longest: float) -> tuple[np.ndarray, np.ndarray]:
@@ -185,10 +188,23 @@ def _equal_3d(ax, lo, hi, label) -> None:
     ax.set_zlabel(label["z"])
 
 
-def _unclash_3d_titles(fig, ax, tries: int = 6) -> None:
+def _unclash_3d_titles(fig, ax, paths: Sequence = (), tries: int = 6) -> None:
     """With equal scales a long, thin path makes a needle of the 3-D box, and its axis titles land on each
     other or on tick numbers: move such a title away from its axis until it is clear (one draw per try);
-    a tick number a title still covers is left out (the flat views carry every number)."""
+    a tick number a title still covers is left out (the flat views carry every number). The toolpath's
+    artists ``paths`` are hidden during these drawings: titles and ticks follow the axes' limits, set
+    before, not the lines, whose drawing (up to the plot's cap of points, in four views) would only cost
+    time and memory each try."""
+    for artist in paths:
+        artist.set_visible(False)
+    try:
+        _place_3d_titles(fig, ax, tries)
+    finally:
+        for artist in paths:
+            artist.set_visible(True)
+
+
+def _place_3d_titles(fig, ax, tries: int) -> None:
     axes = (ax.xaxis, ax.yaxis, ax.zaxis)
     for last in [False] * tries + [True]:
         fig.canvas.draw()
@@ -208,6 +224,25 @@ def _unclash_3d_titles(fig, ax, tries: int = 6) -> None:
             return
 
 
+def _several_depths(lines: dict, longest: float) -> bool:
+    """Do the feed moves seen from above (segments that move in X or Y; not the plunges, points there) lie
+    at several depths (the deeper end of each segment)? Worked out line by line on the points, without the
+    segments' array (:func:`_feed_segments`, built only to draw them by depth)."""
+    low = high = None
+    for (rapid, _), pts in lines.items():
+        if rapid or len(pts) < 2:
+            continue
+        a, b = pts[:-1], pts[1:]
+        seen = np.isfinite(a).all(axis=1) & np.isfinite(b).all(axis=1)
+        seen &= np.hypot(b[:, 0] - a[:, 0], b[:, 1] - a[:, 1]) > 1e-9
+        if not seen.any():
+            continue
+        deep = np.minimum(a[seen, 2], b[seen, 2])
+        low = deep.min() if low is None else min(low, deep.min())
+        high = deep.max() if high is None else max(high, deep.max())
+    return low is not None and high - low > 1e-9 * max(1.0, longest)
+
+
 def _feed_segments(lines: dict) -> np.ndarray:
     """The feed moves' drawn segments, (segments, 2 ends, xyz)."""
     segs = []
@@ -219,7 +254,7 @@ def _feed_segments(lines: dict) -> np.ndarray:
     return np.concatenate(segs) if segs else np.zeros((0, 2, 3))
 
 
-def _depth_lines(fig, ax, segs: np.ndarray, zlabel: str) -> None:
+def _depth_lines(fig, ax, segs: np.ndarray, zlabel: str):
     """Feed moves in the top view, each segment coloured by its depth (the deeper of its ends: a plunge shows
     the depth it reaches), the deepest drawn on top."""
     from matplotlib.collections import LineCollection
@@ -232,6 +267,7 @@ def _depth_lines(fig, ax, segs: np.ndarray, zlabel: str) -> None:
     ax.add_collection(coll)
     bar = fig.colorbar(coll, ax=ax, fraction=0.04, pad=0.02)
     bar.set_label(f"feed moves by depth: {zlabel}")
+    return coll
 
 
 def _marks(points: PlotPoints, views: dict, handles: list, violations: Sequence) -> None:
