@@ -26,6 +26,26 @@ settings.register_profile("dev")
 settings.load_profile("ci" if os.environ.get("CI") == "true" else "dev")
 
 
+def _memory_backed_temp_root(min_free: int = 2 * 2**30) -> None:
+    """Put the tests' tmp_path folders on /dev/shm where it is a tmpfs with room to spare.
+
+    A state directory commits every permanent write with ``synchronous=FULL`` (an fsync each): on a disk
+    shared with other work one commit can take several milliseconds, and the tests that count thousands of
+    writes spent most of their time waiting for the disk. On tmpfs the same writes, locks, renames, kills and
+    files happen; only the wait for the platter goes. A small /dev/shm (a container's 64 MB) or none at all
+    keeps the usual temporary folder; an explicit --basetemp or PYTEST_DEBUG_TEMPROOT wins.
+    """
+    shm = "/dev/shm"
+    if "PYTEST_DEBUG_TEMPROOT" in os.environ or not os.path.isdir(shm) or not os.access(shm, os.W_OK):
+        return
+    fs = os.statvfs(shm)
+    if fs.f_bavail * fs.f_frsize >= min_free:
+        os.environ["PYTEST_DEBUG_TEMPROOT"] = shm  # read by pytest when it makes its first tmp_path
+
+
+_memory_backed_temp_root()
+
+
 @pytest.fixture
 def run_text(tmp_path: Path):
     """run_text(text, name="prog.din", machine=None, **options) -> result dict."""

@@ -144,3 +144,12 @@ def test_outputs_through_links_and_stdout_are_never_replaced(tmp_path):
     assert "(written by ncvm from face_and_circle.din" in text and text.endswith("M2\n")
     assert (tmp_path / "out").is_symlink() and not list(tmp_path.glob(".*"))
     assert (tmp_path / "stdout.txt").stat().st_ino == inode  # the file stdout goes to, not a new one
+
+
+def test_a_file_in_dev_shm_is_a_file_and_dev_stdout_a_stream():
+    """/dev/shm holds ordinary files (a tmpfs): a translation there is written beside and moved into place,
+    so a failed one leaves nothing; /dev/stdout, /dev/fd/1 and /proc/self/fd/1 are streams."""
+    from ncvm.translate.output import _is_stream
+
+    assert not _is_stream(Path("/dev/shm/ncvm-no-such-dir/out.ngc"))
+    assert all(_is_stream(Path(p)) for p in ("/dev/stdout", "/dev/fd/1", "/proc/self/fd/1", "/dev/null"))

@@ -43,10 +43,12 @@ def written_by_ncvm(head: str) -> bool:
 
 def _is_stream(path: Path) -> bool:
     """Whether ``path`` must be written as it comes: not a regular file (a pipe, a device), a name under
-    /dev or /proc (``/dev/stdout`` redirected into a file is still stdout: never replaced), or a file
-    this process already writes through its stdout or stderr."""
-    if any(str(p).startswith(("/dev/", "/proc/")) for p in (path.absolute(), Path(os.path.realpath(path)))):
-        return True
+    /dev or /proc (``/dev/stdout`` redirected into a file is still stdout: never replaced) other than the
+    ordinary files of the /dev/shm file system, or a file this process already writes through its stdout or
+    stderr."""
+    for name in (str(path.absolute()), os.path.realpath(path)):
+        if name.startswith(("/dev/", "/proc/")) and not name.startswith("/dev/shm/"):
+            return True
     try:
         st = os.stat(path)
     except FileNotFoundError:
