@@ -5,7 +5,8 @@ be suspended at a wait and resumed by the scheduler (cooperative tasks, no
 threads). Calls are ``yield from``; statements count into a local ``_n`` that is
 handed to the task (``tk.flush``) before anything that needs the simulated time,
 and checked at loop back-edges against the task's budget, where the scheduler
-may switch tasks and event handlers are polled.
+may switch tasks and event handlers are polled. Each group counted at once is
+tested against the step limit at its head, before any of it runs (``count``).
 """
 
 from __future__ import annotations
@@ -146,7 +147,7 @@ class CodeGen:
                 j += 1
             if j - i > 1:
                 # a run of plain assignments: count them once
-                self.emit(f"_n += {j - i}", body[i])
+                self.count(j - i, body[i])
                 for s in body[i:j]:
                     self.assign_value(s)
                 self.event_point(body[j - 1])
@@ -159,24 +160,24 @@ class CodeGen:
 
     def stmt(self, s) -> None:
         if isinstance(s, A.Assign):
-            self.emit("_n += 1", s)
+            self.count(1, s)
             self.flush_if_needed(s.value, s)
             self.assign_value(s)
             self.event_point(s)
         elif isinstance(s, A.CallStmt):
-            self.emit("_n += 1", s)
+            self.count(1, s)
             self.call_stmt(s.call, s)
             self.event_point(s)
         elif isinstance(s, A.Goto):
             self.emit("_n += 1", s)
             target = self.labels[s.target]
             self.emit(f"_pc = {target}")
-            self.back_edge(s)
+            self.back_edge(s, s)
             self.emit("raise _GOTO" if s.in_loop else "continue")
         elif isinstance(s, A.Compound):
             self.stmts(s.body)
         elif isinstance(s, A.If):
-            self.emit("_n += 1", s)
+            self.count(1, s)
             self.flush_if_needed(s.cond, s)
             with self.src.block(f"if {self.expr(s.cond)}:", self.loc(s)):
                 self.stmt(s.then)
@@ -184,21 +185,21 @@ class CodeGen:
                 with self.src.block("else:"):
                     self.stmt(s.other)
         elif isinstance(s, A.While):
-            self.emit("_n += 1", s)
+            self.count(1, s)
             self.flush_if_needed(s.cond, s)
             with self.src.block(f"while {self.expr(s.cond)}:", self.loc(s)):
                 self.next_at = (s.file, s.line)  # after the body the loop head's line comes next
                 self.stmt(s.body)
                 self.emit("_n += 1", s)
-                self.back_edge(s)
+                self.back_edge(s, s)  # the head's test again
                 self.flush_if_needed(s.cond, s)
         elif isinstance(s, A.Repeat):
             with self.src.block("while True:", self.loc(s)):
                 self.stmts(s.body)
                 self.emit("_n += 1", s)
+                self.back_edge(s, s.cond)  # before the UNTIL test, as WHILE's before its head's
                 self.flush_if_needed(s.cond, s)
                 self.emit(f"if {self.expr(s.cond)}: break", s)
-                self.back_edge(s)
         elif isinstance(s, A.For):
             self.for_stmt(s)
         elif isinstance(s, A.Empty):
@@ -210,9 +211,21 @@ class CodeGen:
         if self.chk.events_used or (self.stepping and self.next_at != (node.file, node.line)):
             self.back_edge(node)
 
-    def back_edge(self, node) -> None:
+    def count(self, k: int, node) -> None:
+        """Count a group of ``k`` statements that starts at ``node``, and stop at its head if they do not fit
+        under the step limit. The budget never exceeds the room left under the limit by more than one
+        (``Task.set_budget``), so the limit costs a group one compare, and none where the budget is spent."""
+        self.emit(f"_n += {k}", node)
+        self.emit(f"if _n >= tk.budget: tk.fits(_n, {k}, {self.loc(node)})", node)
+
+    def back_edge(self, node, counted=None) -> None:
+        """A check point; ``counted``: the one statement just counted (a loop's test, a GOTO), which the
+        check point tests against the step limit before it runs, as ``count`` does."""
         self.emit("if _n >= tk.budget:", node)
-        self.emit("    yield from tk.checkin(_n)")
+        if counted is None:
+            self.emit("    yield from tk.checkin(_n)")
+        else:
+            self.emit(f"    yield from tk.checkin(_n, {self.loc(counted)})")
         self.emit("    _n = 0")
 
     def flush_if_needed(self, e, node) -> None:
@@ -220,7 +233,7 @@ class CodeGen:
             self.emit("tk.flush(_n); _n = 0", node)
 
     def for_stmt(self, s: A.For) -> None:
-        self.emit("_n += 1", s)
+        self.count(1, s)
         self.flush_if_needed(s.start, s)
         self.flush_if_needed(s.stop, s)
         start, stop = self.new_tmp("f"), self.new_tmp("e")
@@ -233,7 +246,7 @@ class CodeGen:
             self.next_at = (s.file, s.line)
             self.stmt(s.body)
             self.emit("_n += 1", s)
-            self.back_edge(s)
+            self.back_edge(s, s)
 
     def int_value(self, e) -> str:
         code = self.expr(e)
