@@ -99,12 +99,40 @@ end.
     (6, 6, 6, 1, 1),       # the WHILE test after the first pass
     (100, 8, 99, 24, 24),  # 3 + 24 passes of 4; the 25th pass's two assignments do not fit
     (101, 10, 101, 25, 24),  # they fit exactly: the limit falls at the group's end
+    (402, 6, 402, 100, 100),  # 3 + 100 passes less the last WHILE test
 ])
 def test_while_loop_stops_before_the_statement_that_does_not_fit(sap, limit, line, steps, passes, moves):
     r = sap(WHILE, max_steps=limit)
     assert _stop(r) == ("RUN001", line, steps)
     assert r["variables"] == {"a": passes, "b": passes}
     assert r["motion"]["feed_moves"] == moves
+
+
+def test_while_loop_that_ends_at_the_limit_ends_normally(sap):
+    r = sap(WHILE, max_steps=403)
+    assert r["status"] == "ok" and r["steps"] == 403 and r["variables"] == {"a": 100, "b": 100}
+
+
+SKIPPED = """\
+program Skipped;
+var a, b, c: integer;
+begin
+  a := 0;
+  while a > 0 do
+  begin
+    a := a + 1;
+    b := 1;
+  end;
+  c := 5;
+end.
+"""
+
+
+def test_a_loop_body_that_does_not_run_is_not_stopped(sap):
+    """The WHILE test is false at once: the body that would not fit is never due, the run ends with its
+    three statements (``a := 0``, the test, ``c := 5``)."""
+    r = sap(SKIPPED, max_steps=3)
+    assert r["status"] == "ok" and r["steps"] == 3 and r["variables"] == {"a": 0, "b": 0, "c": 5}
 
 
 FOR = """\
@@ -146,12 +174,19 @@ end.
 """
 
 
-def test_repeat_loop_stops_at_its_until_test(sap):
-    """``k := 0``, then passes of ``k := k + 1`` and the UNTIL test: under 4 the second pass's body runs,
-    its UNTIL test (line 7) does not."""
-    r = sap(REPEAT, max_steps=4)
-    assert _stop(r) == ("RUN001", 7, 4)
-    assert r["variables"] == {"k": 2}
+@pytest.mark.parametrize(("limit", "line", "k"), [
+    (3, 6, 1),   # k := 0, k := 1, the UNTIL test: the second pass's body is named
+    (4, 7, 2),   # ... k := 2: its UNTIL test (line 7) is named
+    (10, 7, 5),  # the last body runs, the last UNTIL test does not
+])
+def test_repeat_loop_stops_before_the_statement_that_does_not_fit(sap, limit, line, k):
+    """``k := 0``, then passes of ``k := k + 1`` and the UNTIL test (11 statements in all)."""
+    r = sap(REPEAT, max_steps=limit)
+    assert _stop(r) == ("RUN001", line, limit)
+    assert r["variables"] == {"k": k}
+
+
+def test_repeat_loop_that_ends_at_the_limit_ends_normally(sap):
     ok = sap(REPEAT, max_steps=11)
     assert ok["status"] == "ok" and ok["steps"] == 11 and ok["variables"] == {"k": 5}
 

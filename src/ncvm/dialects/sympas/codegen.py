@@ -136,16 +136,28 @@ class CodeGen:
             with self.src.block("except _Goto:"):
                 self.emit("pass")
 
-    def stmts(self, body: list) -> None:
+    def plain_run(self, body: list, i: int) -> int:
+        """The end of the run of plain assignments from ``body[i]`` (counted as one group)."""
+        j = i
+        # events are polled after every statement (L1548), so only programs without them merge
+        while not self.stepping and not self.chk.events_used and j < len(body) \
+                and isinstance(body[j], A.Assign) and body[j].label is None and not needs_time(body[j].value):
+            j += 1
+        return j
+
+    def stmts(self, body: list, ahead: bool = False) -> None:
+        """``ahead``: the run of plain assignments the sequence starts with is tested against the step
+        limit before it (a loop's ``lead``)."""
         outer = self.next_at  # what follows the last statement of this sequence
         i = 0
         while i < len(body):
-            j = i
-            # events are polled after every statement (L1548), so only programs without them merge
-            while not self.stepping and not self.chk.events_used and j < len(body) \
-                    and isinstance(body[j], A.Assign) and body[j].label is None and not needs_time(body[j].value):
-                j += 1
-            if j - i > 1:
+            j = self.plain_run(body, i)
+            if ahead and i == 0 and j > 0:
+                self.emit(f"_n += {j}", body[0])
+                for s in body[:j]:
+                    self.assign_value(s)
+                i = j
+            elif j - i > 1:
                 # a run of plain assignments: count them once
                 self.count(j - i, body[i])
                 for s in body[i:j]:
@@ -187,19 +199,30 @@ class CodeGen:
         elif isinstance(s, A.While):
             self.count(1, s)
             self.flush_if_needed(s.cond, s)
-            with self.src.block(f"while {self.expr(s.cond)}:", self.loc(s)):
+            cond = self.expr(s.cond)
+            body = s.body.body if isinstance(s.body, A.Compound) else [s.body]
+            lead = self.lead(body, s.cond)
+            if lead:
+                self.emit(f"if _n + {lead} >= tk.budget and {cond}: tk.fits(_n + {lead}, {lead}, "
+                          f"{self.loc(body[0])})", s)
+            with self.src.block(f"while {cond}:", self.loc(s)):
                 self.next_at = (s.file, s.line)  # after the body the loop head's line comes next
-                self.stmt(s.body)
+                self.stmts(body, bool(lead))
                 self.emit("_n += 1", s)
-                self.back_edge(s, s)  # the head's test again
+                self.back_edge(s, s, lead, body, cond)  # the head's test again
                 self.flush_if_needed(s.cond, s)
         elif isinstance(s, A.Repeat):
+            lead = self.lead(s.body, s.cond)
+            if lead:
+                self.emit(f"if _n + {lead} >= tk.budget: tk.fits(_n + {lead}, {lead}, {self.loc(s.body[0])})", s)
             with self.src.block("while True:", self.loc(s)):
-                self.stmts(s.body)
+                self.stmts(s.body, bool(lead))
                 self.emit("_n += 1", s)
-                self.back_edge(s, s.cond)  # before the UNTIL test, as WHILE's before its head's
+                cond = self.expr(s.cond)
+                # before the UNTIL test, as WHILE's before its head's
+                self.back_edge(s, s.cond, lead, s.body, f"not {cond}")
                 self.flush_if_needed(s.cond, s)
-                self.emit(f"if {self.expr(s.cond)}: break", s)
+                self.emit(f"if {cond}: break", s)
         elif isinstance(s, A.For):
             self.for_stmt(s)
         elif isinstance(s, A.Empty):
@@ -218,15 +241,26 @@ class CodeGen:
         self.emit(f"_n += {k}", node)
         self.emit(f"if _n >= tk.budget: tk.fits(_n, {k}, {self.loc(node)})", node)
 
-    def back_edge(self, node, counted=None) -> None:
+    def lead(self, body: list, cond) -> int:
+        """The statements of the run of plain assignments a loop's body starts with, where the loop's
+        test cannot change the card (no clock, axis, common buffer or routine): the loop's back-edge then
+        tests them against the step limit ahead, with the test itself, and they need no test of their own
+        (one compare a pass, as before the limit was tested at every group)."""
+        return 0 if needs_time(cond) else self.plain_run(body, 0)
+
+    def back_edge(self, node, counted=None, lead: int = 0, body=None, again: str = "") -> None:
         """A check point; ``counted``: the one statement just counted (a loop's test, a GOTO), which the
-        check point tests against the step limit before it runs, as ``count`` does."""
-        self.emit("if _n >= tk.budget:", node)
+        check point tests against the step limit before it runs, as ``count`` does; ``lead``: the
+        statements that run next when the loop goes on (``again``) are tested with it. Entering the check
+        point early changes nothing else: it lets other tasks run only once the task's time is due."""
+        self.emit(f"if _n + {lead} >= tk.budget:" if lead else "if _n >= tk.budget:", node)
         if counted is None:
             self.emit("    yield from tk.checkin(_n)")
         else:
             self.emit(f"    yield from tk.checkin(_n, {self.loc(counted)})")
         self.emit("    _n = 0")
+        if lead:
+            self.emit(f"    if {lead} >= tk.budget and {again}: tk.fits({lead}, {lead}, {self.loc(body[0])})")
 
     def flush_if_needed(self, e, node) -> None:
         if needs_time(e):
