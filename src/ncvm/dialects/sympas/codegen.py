@@ -237,7 +237,8 @@ class CodeGen:
     def count(self, k: int, node) -> None:
         """Count a group of ``k`` statements that starts at ``node``, and stop at its head if they do not fit
         under the step limit. The budget never exceeds the room left under the limit by more than one
-        (``Task.set_budget``), so the limit costs a group one compare, and none where the budget is spent."""
+        (``Task.set_budget``), so the limit costs a group one compare: only a group that finds the budget spent
+        asks the task whether it fits."""
         self.emit(f"_n += {k}", node)
         self.emit(f"if _n >= tk.budget: tk.fits(_n, {k}, {self.loc(node)})", node)
 
