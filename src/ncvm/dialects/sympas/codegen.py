@@ -5,7 +5,8 @@ be suspended at a wait and resumed by the scheduler (cooperative tasks, no
 threads). Calls are ``yield from``; statements count into a local ``_n`` that is
 handed to the task (``tk.flush``) before anything that needs the simulated time,
 and checked at loop back-edges against the task's budget, where the scheduler
-may switch tasks and event handlers are polled.
+may switch tasks and event handlers are polled. Each group counted at once is
+tested against the step limit at its head, before any of it runs (``count``).
 """
 
 from __future__ import annotations
@@ -135,18 +136,30 @@ class CodeGen:
             with self.src.block("except _Goto:"):
                 self.emit("pass")
 
-    def stmts(self, body: list) -> None:
+    def plain_run(self, body: list, i: int) -> int:
+        """The end of the run of plain assignments from ``body[i]`` (counted as one group)."""
+        j = i
+        # events are polled after every statement (L1548), so only programs without them merge
+        while not self.stepping and not self.chk.events_used and j < len(body) \
+                and isinstance(body[j], A.Assign) and body[j].label is None and not needs_time(body[j].value):
+            j += 1
+        return j
+
+    def stmts(self, body: list, ahead: bool = False) -> None:
+        """``ahead``: the run of plain assignments the sequence starts with is tested against the step
+        limit before it (a loop's ``lead``)."""
         outer = self.next_at  # what follows the last statement of this sequence
         i = 0
         while i < len(body):
-            j = i
-            # events are polled after every statement (L1548), so only programs without them merge
-            while not self.stepping and not self.chk.events_used and j < len(body) \
-                    and isinstance(body[j], A.Assign) and body[j].label is None and not needs_time(body[j].value):
-                j += 1
-            if j - i > 1:
+            j = self.plain_run(body, i)
+            if ahead and i == 0 and j > 0:
+                self.emit(f"_n += {j}", body[0])
+                for s in body[:j]:
+                    self.assign_value(s)
+                i = j
+            elif j - i > 1:
                 # a run of plain assignments: count them once
-                self.emit(f"_n += {j - i}", body[i])
+                self.count(j - i, body[i])
                 for s in body[i:j]:
                     self.assign_value(s)
                 self.event_point(body[j - 1])
@@ -159,24 +172,24 @@ class CodeGen:
 
     def stmt(self, s) -> None:
         if isinstance(s, A.Assign):
-            self.emit("_n += 1", s)
+            self.count(1, s)
             self.flush_if_needed(s.value, s)
             self.assign_value(s)
             self.event_point(s)
         elif isinstance(s, A.CallStmt):
-            self.emit("_n += 1", s)
+            self.count(1, s)
             self.call_stmt(s.call, s)
             self.event_point(s)
         elif isinstance(s, A.Goto):
             self.emit("_n += 1", s)
             target = self.labels[s.target]
             self.emit(f"_pc = {target}")
-            self.back_edge(s)
+            self.back_edge(s, s)
             self.emit("raise _GOTO" if s.in_loop else "continue")
         elif isinstance(s, A.Compound):
             self.stmts(s.body)
         elif isinstance(s, A.If):
-            self.emit("_n += 1", s)
+            self.count(1, s)
             self.flush_if_needed(s.cond, s)
             with self.src.block(f"if {self.expr(s.cond)}:", self.loc(s)):
                 self.stmt(s.then)
@@ -184,21 +197,32 @@ class CodeGen:
                 with self.src.block("else:"):
                     self.stmt(s.other)
         elif isinstance(s, A.While):
-            self.emit("_n += 1", s)
+            self.count(1, s)
             self.flush_if_needed(s.cond, s)
-            with self.src.block(f"while {self.expr(s.cond)}:", self.loc(s)):
+            cond = self.expr(s.cond)
+            body = s.body.body if isinstance(s.body, A.Compound) else [s.body]
+            lead = self.lead(body, s.cond)
+            if lead:
+                self.emit(f"if _n + {lead} >= tk.budget and {cond}: tk.fits(_n + {lead}, {lead}, "
+                          f"{self.loc(body[0])})", s)
+            with self.src.block(f"while {cond}:", self.loc(s)):
                 self.next_at = (s.file, s.line)  # after the body the loop head's line comes next
-                self.stmt(s.body)
+                self.stmts(body, bool(lead))
                 self.emit("_n += 1", s)
-                self.back_edge(s)
+                self.back_edge(s, s, lead, body, cond)  # the head's test again
                 self.flush_if_needed(s.cond, s)
         elif isinstance(s, A.Repeat):
+            lead = self.lead(s.body, s.cond)
+            if lead:
+                self.emit(f"if _n + {lead} >= tk.budget: tk.fits(_n + {lead}, {lead}, {self.loc(s.body[0])})", s)
             with self.src.block("while True:", self.loc(s)):
-                self.stmts(s.body)
+                self.stmts(s.body, bool(lead))
                 self.emit("_n += 1", s)
+                cond = self.expr(s.cond)
+                # before the UNTIL test, as WHILE's before its head's
+                self.back_edge(s, s.cond, lead, s.body, f"not {cond}")
                 self.flush_if_needed(s.cond, s)
-                self.emit(f"if {self.expr(s.cond)}: break", s)
-                self.back_edge(s)
+                self.emit(f"if {cond}: break", s)
         elif isinstance(s, A.For):
             self.for_stmt(s)
         elif isinstance(s, A.Empty):
@@ -210,17 +234,41 @@ class CodeGen:
         if self.chk.events_used or (self.stepping and self.next_at != (node.file, node.line)):
             self.back_edge(node)
 
-    def back_edge(self, node) -> None:
-        self.emit("if _n >= tk.budget:", node)
-        self.emit("    yield from tk.checkin(_n)")
+    def count(self, k: int, node) -> None:
+        """Count a group of ``k`` statements that starts at ``node``, and stop at its head if they do not fit
+        under the step limit. The budget never exceeds the room left under the limit by more than one
+        (``Task.set_budget``), so the limit costs a group one compare: only a group that finds the budget spent
+        asks the task whether it fits."""
+        self.emit(f"_n += {k}", node)
+        self.emit(f"if _n >= tk.budget: tk.fits(_n, {k}, {self.loc(node)})", node)
+
+    def lead(self, body: list, cond) -> int:
+        """The statements of the run of plain assignments a loop's body starts with, where the loop's
+        test cannot change the card (no clock, axis, common buffer or routine): the loop's back-edge then
+        tests them against the step limit ahead, with the test itself, and they need no test of their own
+        (one compare a pass, as before the limit was tested at every group)."""
+        return 0 if needs_time(cond) else self.plain_run(body, 0)
+
+    def back_edge(self, node, counted=None, lead: int = 0, body=None, again: str = "") -> None:
+        """A check point; ``counted``: the one statement just counted (a loop's test, a GOTO), which the
+        check point tests against the step limit before it runs, as ``count`` does; ``lead``: the
+        statements that run next when the loop goes on (``again``) are tested with it. Entering the check
+        point early changes nothing else: it lets other tasks run only once the task's time is due."""
+        self.emit(f"if _n + {lead} >= tk.budget:" if lead else "if _n >= tk.budget:", node)
+        if counted is None:
+            self.emit("    yield from tk.checkin(_n)")
+        else:
+            self.emit(f"    yield from tk.checkin(_n, {self.loc(counted)})")
         self.emit("    _n = 0")
+        if lead:
+            self.emit(f"    if {lead} >= tk.budget and {again}: tk.fits({lead}, {lead}, {self.loc(body[0])})")
 
     def flush_if_needed(self, e, node) -> None:
         if needs_time(e):
             self.emit("tk.flush(_n); _n = 0", node)
 
     def for_stmt(self, s: A.For) -> None:
-        self.emit("_n += 1", s)
+        self.count(1, s)
         self.flush_if_needed(s.start, s)
         self.flush_if_needed(s.stop, s)
         start, stop = self.new_tmp("f"), self.new_tmp("e")
@@ -233,7 +281,7 @@ class CodeGen:
             self.next_at = (s.file, s.line)
             self.stmt(s.body)
             self.emit("_n += 1", s)
-            self.back_edge(s)
+            self.back_edge(s, s)
 
     def int_value(self, e) -> str:
         code = self.expr(e)

@@ -326,8 +326,8 @@ class Scheduler:
             msg = f"{msg} (task {tk.number})"
         return RuntimeFault(e.code, msg, span, stack)
 
-    def runaway(self):
-        self.counter.steps += self.steps
-        self.steps = 0
+    def runaway(self, at: tuple[str, int]):
+        """RUN001 at ``at`` (file, line), the first statement that did not run; the steps that ran are
+        handed to the run's counter when the run ends (sympas.run)."""
         raise RuntimeFault("RUN001", f"step limit of {self.counter.limit:,} statements reached "
-                                     "(runaway program? raise it with --max-steps)")
+                                     "(runaway program? raise it with --max-steps)", Span(*at))

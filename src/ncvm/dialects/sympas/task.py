@@ -96,17 +96,29 @@ class Task:
             return
         sched = self.sched
         room = (self.check_at - self.time) * sched.q
+        # at most one more than the statements left under the step limit (which never runs short: the
+        # group that would pass it is not begun), so a group that does not fit always finds it spent (fits)
         left = sched.step_limit - sched.steps + 1
         # with events enabled a check point due now polls even with no statement counted since the last
         # (right after a WT, L2232); otherwise at least one statement runs between check points
         self.budget = max(0 if self.enabled else 1, min(int(room) if room < 1e15 else 1 << 60, left))
 
-    def checkin(self, n: int):
-        """A loop back-edge: account the statements, let other tasks run, poll events."""
-        self.flush(n)
+    def fits(self, n: int, k: int, at: int) -> None:
+        """The step limit, tested at the head of a group of ``k`` statements just counted (``n`` counted
+        since the last flush): a group that would pass it is not begun. RUN001 names its first statement
+        (``at``, an index of the unit's places), and the statements before it are the run's steps."""
         sched = self.sched
-        if sched.steps > sched.step_limit:
-            sched.runaway()
+        if sched.steps + n > sched.step_limit:
+            self.flush(n - k)
+            sched.runaway(self.unit.locs[at])
+
+    def checkin(self, n: int, at: int = 0):
+        """A check point (a loop back-edge): account the statements, let other tasks run, poll events.
+        ``at``: the statement just counted at a back-edge (the loop's test, a GOTO), tested against the
+        step limit before it runs."""
+        if at:
+            self.fits(n, 1, at)
+        self.flush(n)
         if self.time >= self.check_at or self.step_once:
             if self.step_once:
                 self.step_once = False
