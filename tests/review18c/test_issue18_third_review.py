@@ -50,10 +50,14 @@ def test_cpl_step_limit_stops_a_program_of_straight_blocks(tmp_path):
     """30 ``G1`` blocks after a setup block under ``--max-steps 10`` end normally reporting 32 steps,
     three times the limit. The CPL code tests the limit only where a loop jumps back, though
     docs/decisions.md ("The SINUMERIK step limit is never passed") says a program "that would pass it
-    without a loop is stopped too, as CPL is". DIN stops the same program after 10 blocks (RUN001)."""
+    without a loop is stopped too, as CPL is". DIN stops the same program after 10 blocks (RUN001).
+
+    The CPL rule (docs/decisions.md "The CPL step limit is never passed"): the 32 statements are one group,
+    counted and tested at its head; it does not fit, so it is not begun: 0 steps (not 10), no move, RUN001
+    at its first statement (line 1)."""
     r = _limited(tmp_path, "straight.cpl", CPL_STRAIGHT, 10)
     assert r["status"] == "error" and r["error"]["code"] == "RUN001", (r["status"], r["steps"], r["error"])
-    assert r["steps"] == 10
+    assert r["steps"] == 0 and r["motion"]["feed_moves"] == 0 and r["error"]["line"] == 1
 
 
 def test_cpl_step_limit_reports_the_variables_of_the_statements_it_counts(tmp_path):

@@ -46,6 +46,7 @@ SUFFIX_TAG = {"%": "i", "": "r", "!": "d", "?": "b", "$": "s"}
 AXIS_LETTERS = set("XYZABCUVW")
 #: the structured statements: the index after one is past its end marker
 STRUCTURES = (A.If, A.Case, A.For, A.While, A.Repeat)
+LOOPS = (A.For, A.While, A.Repeat)
 
 
 class UnitCode:
@@ -613,7 +614,8 @@ class Gen:
                 self.emit("_modal[0] = None", line)
             elif words.has_motion and self.ln.modal_calls and not (s.call is not None and s.call[2]):
                 # a block that selects a drilling cycle runs the new one only (its call follows)
-                self.emit(f"if _modal[0] is not None: _modal_call({line})", line)
+                self.emit("if _modal[0] is not None: _st.steps += _n; _n = 0; _modal_call("
+                          f"{line}); _lim = _st.limit - _st.steps", line)
         if s.wait:
             self.emit("_drain()", line)
         if s.call is not None:
@@ -704,9 +706,52 @@ class Gen:
         return n
 
     def structured(self, a: int, b: int, extra: int = 0) -> None:
+        """The stretch [a, b) (a loop's body with ``extra`` = 1 for its END, NEXT or UNTIL), in the groups
+        of :meth:`groups`."""
+        for ga, gb, k_extra in self.groups(a, b, extra):
+            self.group(ga, gb, k_extra)
+
+    def groups(self, a: int, b: int, extra: int) -> list[tuple[int, int, int]]:
+        """The groups of [a, b), each counted at its head: a structure that repeats (a loop, or one holding
+        a loop or a call) is a group of its own, and a call ends its group, so nothing is counted ahead of
+        a loop's passes or a called program and the step limit stops them exactly; ``extra`` (the loop's
+        END) goes with the last group."""
+        pair = self.ln.pair
+        out, start, i = [], a, a
+        while i < b:
+            s = self.stmts[i]
+            t = type(s)
+            nxt = self._next_index(i, t, pair)
+            if t in STRUCTURES and self.repeats(i, nxt):
+                if start < i:
+                    out.append((start, i, 0))
+                out.append((i, nxt, 0))
+                start = nxt
+            elif self.calls(s):
+                out.append((start, nxt, 0))
+                start = nxt
+            i = nxt
+        if start < b or extra:
+            out.append((start, b, extra))
+        return out
+
+    def repeats(self, i: int, nxt: int) -> bool:
+        """Whether the structure at ``i`` (ending before ``nxt``) is a loop or holds a loop or a call."""
+        return type(self.stmts[i]) in LOOPS or any(type(s) in LOOPS or self.calls(s) for s in self.stmts[i + 1:nxt])
+
+    def calls(self, s) -> bool:
+        """Whether a statement calls a program: CALL, an NC block's L or drilling cycle call. (A selected
+        cycle that runs after a traversing block is left inside its group: counted ahead, it stops early.)"""
+        return type(s) is A.CallStmt or (type(s) is A.NcBlock and s.call is not None)
+
+    def group(self, a: int, b: int, extra: int) -> None:
+        """A group counted at its head and tested there: a group that would pass the step limit is not
+        begun (the count, with the statements of enclosing groups counted ahead taken back on the way out,
+        stays the statements that ran; RUN001 names the group's first statement)."""
         k = self.count(a, b) + extra
         if k:
             self.emit(f"_n += {k}")
+            self.emit(f"if _n > _lim: _n -= {k}; _runaway({self.first_line(a, b)})")
         i = a
         pair = self.ln.pair
         outer, remaining = self._ahead, k
@@ -724,6 +769,14 @@ class Gen:
                     self.ahead_at.setdefault(j, ahead)
             i = self._next_index(i, t, pair)
         self._ahead = outer
+
+    def first_line(self, a: int, b: int) -> int:
+        """The line of the first statement a stretch runs: its first that is not a label, else the END,
+        NEXT or UNTIL that closes it."""
+        for s in self.stmts[a:b]:
+            if not isinstance(s, A.LabelDef):
+                return s.line
+        return self.stmts[b].line
 
     @staticmethod
     def _next_index(i: int, t, pair) -> int:
@@ -764,12 +817,10 @@ class Gen:
             cond = self.condition(s.cond)
             with self.block(f"while {cond}:", s.line):
                 self.structured(i + 1, end, extra=1)
-                self.emit(f"if _n > _lim: _runaway({s.line})", self.stmts[end].line)
         elif t is A.Repeat:
             end = pair[i]["end"]
             with self.block("while True:", s.line):
-                self.structured(i + 1, end)
-                self.emit(f"if _n > _lim: _runaway({s.line})", self.stmts[end].line)
+                self.structured(i + 1, end, extra=1)
                 self.emit(f"if {self.condition(self.stmts[end].cond)}: break", self.stmts[end].line)
         elif t not in (A.Else, A.EndIf, A.CaseLabel, A.Otherwise, A.EndCase, A.Next, A.WEnd, A.Until):
             self.simple(i, s)
@@ -817,7 +868,6 @@ class Gen:
                 self.emit(f"{counter} = {inc_code}", nxt.line)
             else:
                 self.store(v, inc_code, inc_ty, nxt.line)
-            self.emit(f"if _n > _lim: _runaway({s.line})", nxt.line)
         if ctype == "I" and inc_ty == "I" and v.var.cls == "L" and not v.index:  # exit value past INTEGER, once
             self.cur = nxt
             self.emit(f"if not -2147483648 <= {counter} <= 2147483647: {counter} = _toi({counter})", nxt.line)
@@ -887,12 +937,16 @@ class Gen:
         self.emit(f"_pc = {nxt}")
         self.src._indent -= 1
 
-    def jump(self, key, line: int) -> str:
-        return f"_pc = {self.pc[key]}; _n += 1\n" + f"if _n > _lim: _runaway({line})\ncontinue"
+    def count_one(self, line: int) -> None:
+        """Count one statement of the GOTO form and test the step limit before it runs."""
+        self.emit("_n += 1", line)
+        self.emit(f"if _n > _lim: _n -= 1; _runaway({line})", line)
 
     def emit_jump(self, key, line: int) -> None:
-        for part in self.jump(key, line).split("\n"):
-            self.emit(part, line)
+        """A jump counts one step (tested like a statement), then goes to the basic block ``key``."""
+        self.count_one(line)
+        self.emit(f"_pc = {self.pc[key]}", line)
+        self.emit("continue", line)
 
     def lower(self, i: int, s) -> None:
         """One statement in the GOTO form."""
@@ -905,7 +959,7 @@ class Gen:
         elif t is A.If:
             info = pair[i]
             target = info["else"] + 1 if info["else"] is not None else info["end"] + 1
-            self.emit("_n += 1", line)
+            self.count_one(line)
             with self.block(f"if not {self.condition(s.cond)}:", line):
                 self.emit_jump(target, line)
         elif t is A.Else:
@@ -913,7 +967,8 @@ class Gen:
         elif t is A.Case:
             info = pair[i]
             sel, select = self.case_selector(s)
-            self.emit(f"{select}; _n += 1", line)
+            self.count_one(line)
+            self.emit(select, line)
             for arm in info["arms"]:
                 vals = self.stmts[arm].values
                 with self.block(f"if {sel} in {tuple(vals)!r}:", line):
@@ -927,7 +982,7 @@ class Gen:
         elif t is A.Next:
             self.lower_next(i, s)
         elif t is A.While:
-            self.emit("_n += 1", line)
+            self.count_one(line)
             with self.block(f"if not {self.condition(s.cond)}:", line):
                 self.emit_jump(pair[i]["end"] + 1, line)
         elif t is A.WEnd:
@@ -935,13 +990,13 @@ class Gen:
         elif t is A.Repeat:
             pass
         elif t is A.Until:
-            self.emit("_n += 1", line)
+            self.count_one(line)
             with self.block(f"if not {self.condition(s.cond)}:", line):
                 self.emit_jump(pair[i]["repeat"] + 1, line)
         elif t in (A.EndIf, A.EndCase, A.LabelDef):
             pass
         else:
-            self.emit("_n += 1", line)
+            self.count_one(line)
             self.simple(i, s)
 
     def lower_for(self, i: int, s: A.For) -> None:
@@ -959,7 +1014,7 @@ class Gen:
         self._close(self.pc[("t", i)])
         self._open(self.pc[("t", i)])
         counter = self.read(v)
-        self.emit("_n += 1", line)
+        self.count_one(line)
         with self.block(f"if not ({counter} <= {fe} if {fs} >= 0 else {counter} >= {fe}):", line):
             self.emit_jump(pair[i]["end"] + 1, line)
 
