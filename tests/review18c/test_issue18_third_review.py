@@ -190,3 +190,27 @@ def test_din_memory_of_a_drilling_program_does_not_grow_with_its_length(tmp_path
     so the bench does not show it. Here 200,000 lines peak at 147 MB, 95 MB more than 25,000."""
     small, large = _peak_rss_kb(tmp_path, 5_000), _peak_rss_kb(tmp_path, 40_000)
     assert large - small < 40_000, f"peak {small / 1024:.0f} MB at 25,000 lines, {large / 1024:.0f} MB at 200,000"
+
+
+# -- the bench's rw_SymPas program of 2,000,000 / 10,000,000 moves ------------------------------------------------
+
+def test_bench_sympas_moves_program_is_the_raster_it_says(tmp_path):
+    """bench/cases_process.py ``SYMPAS_MOVES`` ("a zig-zag raster of N rows x 1000 moves") steps A2 by
+    ``0.0001`` a move, a tenth of the card's count (``counts_per_unit`` 1000: dp rounds to whole counts at
+    each profile end, docs/sympas.md): A2 never leaves 0, so the 2 M and 10 M rw_SymPas memory figures
+    (``proc_sympas_*_moves_memory``) come from moves back and forth on one line of A1, not from the raster
+    the CPL and SINUMERIK cases draw; a plot of it thins to a line. Run at 3 rows here."""
+    import importlib.util
+
+    bench = Path(__file__).resolve().parents[2] / "bench"
+    sys.path.insert(0, str(bench))
+    try:
+        spec = importlib.util.spec_from_file_location("bench_cases_process_r18c", bench / "cases_process.py")
+        module = importlib.util.module_from_spec(spec)
+        spec.loader.exec_module(module)
+    finally:
+        sys.path.remove(str(bench))
+    r = _run(tmp_path, "moves.sap", module.SYMPAS_MOVES.format(rows=3, last=2), "-d", "sympas")
+    assert r["status"] == "ok" and r["motion"]["feed_moves"] == 3000, (r["status"], r["motion"], r["error"])
+    low, high = r["motion"]["bounds"]["A2"]
+    assert high - low > 0.0, f"A2 stays within [{low}, {high}]: the program is not a raster"
