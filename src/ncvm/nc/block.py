@@ -41,6 +41,11 @@ class Block:
         return f"Block(g={self.g}, m={self.m}, words={self.words}, n={self.n})"
 
 
+def acts(block: Block) -> bool:
+    """Whether the block has anything for the kernel; else it only counts (a block number, a comment)."""
+    return bool(block.g or block.m or block.words or block.msg is not None)
+
+
 class PlainRow(NamedTuple):
     """The layout of a plain row: a plain block as a motion queue holds it -- at most a motion G code (G0-G3),
     no M code or message, words only for PLAIN_WORDS. Queues run stretches of rows column-wise

@@ -59,6 +59,17 @@ def test_a_refused_axis_late_in_a_streamed_program_runs_the_blocks_before_it(run
     assert whole["motion"]["feed_moves"] == streamed["motion"]["feed_moves"] == 50
 
 
+
+def test_a_fault_counts_the_blocks_run_up_to_it(run_text, monkeypatch):
+    """An arc the kernel refuses at line 21 after 20 blocks ran (G1 F100 and 19 moves): 21 steps, the
+    faulting block with them, held or streamed (the count was 0: the blocks of the stretch were lost)."""
+    text = "G1 F100\n" + "".join(f"X{i}\n" for i in range(1, 20)) + "G2 X100 Y0 R1\nM2\n"
+    whole, streamed = both(run_text, monkeypatch, text)
+    assert whole["error"]["code"] == streamed["error"]["code"] == "NC002"
+    assert whole["steps"] == streamed["steps"] == 21
+    assert whole["motion"]["feed_moves"] == 19
+
+
 # -- read from the file (issue 18: a 10,000,000-line file peaked at 680 MB, held whole as text) --------------
 
 

@@ -88,3 +88,67 @@ def test_fault_after_a_central_r_read_in_a_stretch(tmp_path):
     r = run_mpf(tmp_path, text)
     assert r["error"]["code"] == "CL800" and r["error"]["line"] == 3
     assert r["steps"] == 2
+
+
+def _limited(tmp_path: Path, text: str, limit: int, files: dict | None = None) -> dict:
+    for name, body in (files or {}).items():
+        (tmp_path / name).write_text(body)
+    (tmp_path / "p.mpf").write_text(text)
+    result, _ = run(tmp_path / "p.mpf", dialect="sin800",
+                    options=RunOptions(state_dir=tmp_path / ".n", max_steps=limit))
+    return result
+
+
+CONSTANT = "%MPF1\nN1 G90 G94 F1000\n" + "".join(f"N{i + 2} G1 X{i + 1}\n" for i in range(30)) + "N40 M30\n"
+
+
+def test_a_run_of_constant_blocks_stops_at_the_block_past_the_limit(tmp_path):
+    """30 constant G1 blocks (one generated run) under a limit of 10: N1 and nine moves run, the run stops
+    with RUN001 at N11 (line 12), the tenth move never made."""
+    result = _limited(tmp_path, CONSTANT, 10)
+    assert result["error"]["code"] == "RUN001" and result["error"]["line"] == 12
+    assert result["steps"] == 10 and result["motion"]["feed_moves"] == 9 and result["position"]["X"] == 9.0
+
+
+def test_a_run_of_constant_blocks_at_the_limits_edges(tmp_path):
+    """Limit 1: only N1 runs (stop at N2, line 3); 31: every move, stop at the M30 (line 33); 32: ends."""
+    first = _limited(tmp_path, CONSTANT, 1)
+    assert first["error"]["line"] == 3 and first["steps"] == 1 and first["motion"]["feed_moves"] == 0
+    last = _limited(tmp_path, CONSTANT, 31)
+    assert last["error"]["line"] == 33 and last["steps"] == 31 and last["motion"]["feed_moves"] == 30
+    whole = _limited(tmp_path, CONSTANT, 32)
+    assert whole["status"] == "ok" and whole["steps"] == 32
+
+
+def test_blocks_that_only_count_inside_a_run_count_toward_the_limit(tmp_path):
+    """N3 and N5 hold only a block number: they count as blocks but do nothing. Limit 4: N1, N2 (X1), N3,
+    N4 (X2); the stop is at N5 (line 6), X at 2."""
+    text = "%MPF1\nN1 G90 G94 F1000\nN2 G1 X1\nN3\nN4 X2\nN5\nN6 X3\nN7 M30\n"
+    result = _limited(tmp_path, text, 4)
+    assert result["error"]["line"] == 6 and result["steps"] == 4 and result["position"]["X"] == 2.0
+    assert result["motion"]["feed_moves"] == 2
+
+
+CYCLE = "%SPF81\nN1 G1 Z-1\nN2 G0 Z2\nN3 M17\n"  # L81: three blocks at each position
+DRILL = "%MPF1\nN10 G17 G90 G94 F100\nN20 G81 X10\nN30 X20\nN31\nN40 X30\nN50 X40\nN60 G80\nN70 M30\n"
+
+
+def test_a_run_under_a_drilling_cycle_counts_each_block_before_its_cycle(tmp_path):
+    """Blocks in order: N10, N20, L81 (3), N30, L81 (3), N31, N40, L81 (N1 = the 12th) ... 20 in all.
+    Each limit stops at the block after the last one it allows, in the main program or the cycle."""
+    assert _limited(tmp_path, DRILL, 100, {"L81.spf": CYCLE})["steps"] == 20
+    for limit, file, line, x, z in ((5, "p.mpf", 4, 10.0, 2.0), (6, "L81.spf", 2, 20.0, 2.0),
+                                    (9, "p.mpf", 5, 20.0, 2.0), (12, "L81.spf", 3, 30.0, -1.0)):
+        result = _limited(tmp_path, DRILL, limit, {"L81.spf": CYCLE})
+        assert result["error"]["code"] == "RUN001" and result["steps"] == limit
+        assert (Path(result["error"]["file"]).name, result["error"]["line"]) == (file, line), limit
+        assert (result["position"]["X"], result["position"]["Z"]) == (x, z), limit
+
+
+def test_a_computing_stretch_that_does_not_fit_reports_the_blocks_that_ran(tmp_path):
+    """The runaway loop of three blocks a pass under a limit of 1,001: the 334th pass does not fit and is not
+    begun, so 1,000 blocks ran and 1,000 are reported (not the limit)."""
+    (tmp_path / "p.mpf").write_text("%MPF1\nN10 R1=0\nN20 R1=R1+1\nN30 R2=R1*2\nN40 R3=R2-1 @100 K-20\n")
+    result, _ = run(tmp_path / "p.mpf", options=RunOptions(state_dir=tmp_path / ".n", max_steps=1001))
+    assert result["error"]["code"] == "RUN001" and result["error"]["line"] == 3
+    assert result["steps"] == 1000 and result["variables"]["R1"] == 333.0

@@ -129,40 +129,46 @@ class DinDialect(Dialect):
 
     @staticmethod
     def _execute(path, segments, kernel, counter, limit, hook, skip_active, done, last_src):
-        """Run ``segments`` (until the program ends); returns the blocks done so far and the last block's place."""
-        for seg in segments:
-            if isinstance(seg, PlainRun):
-                last_src = Src(path, int(seg.lines[-1]))
-                if hook is None:
-                    # a run of plain motion blocks, executed column-wise up to the step limit
-                    count = min(len(seg), limit - done)
-                    lo = 0
-                    while (bad := execute_columns(kernel, seg, lo, count)) is not None:
-                        done += bad - lo + 1
-                        kernel.execute(seg.block(bad))  # left to the kernel: it may fault
-                        lo = bad + 1
-                    done += count - lo
-                    if count < len(seg):
-                        counter.runaway(path, int(seg.lines[count]))
-                    continue
-                blocks = ((blk, False) for blk in seg.blocks())
-            else:
-                blocks = (seg,)
-                last_src = seg[0].src
-            for blk, skip in blocks:
-                if skip:
-                    blockskip.tell(kernel.canon, skip_active, blk.src)
-                    if skip_active:
+        """Run ``segments`` (until the program ends); returns the blocks done so far and the last block's place.
+        A fault counts the blocks done up to it (the faulting block with them)."""
+        start = done
+        try:
+            for seg in segments:
+                if isinstance(seg, PlainRun):
+                    last_src = Src(path, int(seg.lines[-1]))
+                    if hook is None:
+                        # a run of plain motion blocks, executed column-wise up to the step limit
+                        count = min(len(seg), limit - done)
+                        lo = 0
+                        while (bad := execute_columns(kernel, seg, lo, count)) is not None:
+                            done += bad - lo + 1
+                            kernel.execute(seg.block(bad))  # left to the kernel: it may fault
+                            lo = bad + 1
+                        done += count - lo
+                        if count < len(seg):
+                            counter.runaway(path, int(seg.lines[count]))
                         continue
-                if done >= limit:
-                    counter.runaway(blk.src.file, blk.src.line)
-                done += 1
-                if hook is not None:
-                    hook(blk.src.file, blk.src.line, kernel.workpiece_position())
-                kernel.execute(blk)
-                if kernel.ended:
-                    return done, last_src
-        return done, last_src
+                    blocks = ((blk, False) for blk in seg.blocks())
+                else:
+                    blocks = (seg,)
+                    last_src = seg[0].src
+                for blk, skip in blocks:
+                    if skip:
+                        blockskip.tell(kernel.canon, skip_active, blk.src)
+                        if skip_active:
+                            continue
+                    if done >= limit:
+                        counter.runaway(blk.src.file, blk.src.line)
+                    done += 1
+                    if hook is not None:
+                        hook(blk.src.file, blk.src.line, kernel.workpiece_position())
+                    kernel.execute(blk)
+                    if kernel.ended:
+                        return done, last_src
+            return done, last_src
+        except BaseException:  # a fault or the step limit: the caller's count has not seen these blocks
+            counter.steps += done - start
+            raise
 
 
 def _refused_blocks(path: str, stretch, axes, skip_active: bool, profile) -> list:

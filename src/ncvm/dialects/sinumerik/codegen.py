@@ -14,11 +14,12 @@ by number (pointers, push/pop, sub-program calls, multi-register results).
 from __future__ import annotations
 
 from contextlib import contextmanager
+from itertools import accumulate
 from typing import NamedTuple
 
 from ...diagnostics import Diagnostic, Span
 from ...nc.axiswords import AXIS_LETTERS, is_dwell, is_missing_axis, missing_axis_message, names_axis
-from ...nc.block import Block
+from ...nc.block import Block, acts
 from ...nc.canon import Src
 from ...nc.profiles.blockrules import dwell_time
 from ...nc.profiles.check import refused_g_warnings
@@ -391,27 +392,42 @@ class UnitCodegen:
         return Block(tuple(g), tuple(m), words, blk.n, msg, Src(self.prog.path, blk.line))
 
     def _flush_run(self, out: PySource, run: list[Block]) -> None:
-        """Consecutive constant blocks run from a tuple: one generated line instead of one per block."""
+        """Consecutive constant blocks run from a tuple: one generated line instead of one per block. Under a
+        selected drilling cycle the run goes block by block, each counted before the cycle it calls."""
         if not run:
             return
         line = run[0].src.line
-        todo = tuple(b for b in run if b.g or b.m or b.words or b.msg is not None)
-        out.emit(f"_st += {len(run)}", line)
-        positions = any(_positions(self.axes, b.words, b.g) for b in todo)
-        if positions:  # a selected drilling cycle runs after each block that travels
+        todo = tuple(b for b in run if acts(b))
+        if any(_positions(self.axes, b.words, b.g) for b in todo):  # a selected cycle runs after each that travels
             out.emit("if _cyc:", line)
             out._indent += 1
-            self.cycle_call(out, line, f"_rt.drilling.run_blocks({self.const(todo, '_RUN')}, {line})")
+            self.cycle_call(out, line, f"_rt.drilling.run_blocks({self.const(tuple(run), '_ALL')}, {line})")
             out._indent -= 1
             out.emit("else:", line)
             out._indent += 1
-        if len(todo) == 1:
-            out.emit(f"_ex({self.const(todo[0], '_B')})", line)
-        elif todo:
-            out.emit(f"for _b in {self.const(todo, '_RUN')}: _ex(_b)", line)
-        if positions:
+            self._count_run(out, line, run, todo)
             out._indent -= 1
+        else:
+            self._count_run(out, line, run, todo)
         run.clear()
+
+    def _count_run(self, out: PySource, line: int, run: list[Block], todo: tuple) -> None:
+        """The run counted at its head and executed; when it would pass the step limit, the blocks that fit
+        run and the run stops with RUN001 at the first that does not (exact, as a DIN run)."""
+        many = self.const(todo, "_RUN") if len(todo) > 1 else None
+        out.emit(f"_st += {len(run)}", line)
+        out.emit("if _st > _lim:", line)
+        out._indent += 1
+        out.emit(f"_st -= {len(run)}; _k = _lim - _st; _st = _lim", line)
+        if todo:  # the blocks of todo among the first k of the run, for every k
+            fit = self.const(tuple(accumulate(map(acts, run), initial=0)), "_FIT")
+            out.emit(f"for _b in {many or self.const(todo, '_RUN')}[:{fit}[_k]]: _ex(_b)", line)
+        out.emit(f"_rt.runaway({self.const(tuple(b.src.line for b in run), '_LN')}[_k])", line)
+        out._indent -= 1
+        if many:
+            out.emit(f"for _b in {many}: _ex(_b)", line)
+        elif todo:
+            out.emit(f"_ex({self.const(todo[0], '_B')})", line)
 
     def cycle_call(self, out: PySource, line: int, call: str) -> None:
         """Lines that run the selected drilling cycle (``call``), as an L call runs its sub-program."""
@@ -507,9 +523,7 @@ class UnitCodegen:
             out.emit(f"_rt.no_block({number}, {blk.line})")
             return
         label = self.labels[target]
-        with self.leaving(out):
-            if target <= idx:
-                out.emit(f"if _st > _lim: _rt.runaway({blk.line})")
+        with self.leaving(out):  # (a jump back lands on a label: the head of a stretch or run, which tests the limit)
             if self.loop is None:
                 out.emit(f"_blk = {label}; continue")
             else:  # inside a loop's stretch: to its head, or on after it (never to an earlier label: _loops)
@@ -570,7 +584,6 @@ class UnitCodegen:
                 self.consts[table][b.n].append((i, self.labels[i]))
         out.emit(f"_blk = _rt.dynamic_target({table}, {self.val(op)}, {idx}, {blk.line})")
         with self.leaving(out):
-            out.emit(f"if _st > _lim: _rt.runaway({blk.line})")
             out.emit("continue")
         return False
 

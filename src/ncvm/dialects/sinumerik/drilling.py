@@ -22,6 +22,7 @@ from typing import TYPE_CHECKING
 
 from ...diagnostics import Diagnostic, RuntimeFault, Span
 from ...nc.axiswords import is_dwell
+from ...nc.block import acts
 
 if TYPE_CHECKING:
     from .runtime import Channel
@@ -99,10 +100,17 @@ class Drilling:
             self.busy = False
 
     def run_blocks(self, blocks: tuple, line: int) -> None:
-        """A run of constant blocks while a cycle is selected: the cycle after each block that travels."""
+        """A run of constant blocks while a cycle is selected: each block counted (and the step limit tested)
+        before it runs, the cycle after each block that travels."""
         ch = self.channel
         axes = ch.kernel.axis_of
+        counter = ch.counter
         for b in blocks:
+            if counter.steps >= counter.limit:
+                ch.runaway(b.src.line)
+            counter.steps += 1
+            if not acts(b):
+                continue
             ch.execute(b)
             if ch.kernel.ended or ch.halted:
                 return
