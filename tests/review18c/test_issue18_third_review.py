@@ -131,10 +131,9 @@ N30 M30
 
 
 def test_sin800_step_limit_at_a_run_of_constant_blocks(tmp_path):
-    """30 constant ``G1`` blocks after a setup block under ``--max-steps 10``: all 30 moves are made, and
-    the run stops with RUN001 at the M30 (line 33) reporting 10 steps. docs/decisions.md records it as open;
-    DIN stops the same program after 10 blocks with 9 moves and names line 11 (here line 12, after
-    ``%MPF1``)."""
+    """30 constant ``G1`` blocks after a setup block under ``--max-steps 10`` stop as DIN does: 10 steps, 9
+    moves, RUN001 at line 12 (line 1 is ``%MPF1``). When reviewed all 30 moves were made and the run stopped at
+    the M30 (line 33) reporting 10 steps; main's dcef452 fixed it (this test passes since the merge)."""
     r = _limited(tmp_path, "constant.mpf", SIN_CONSTANT, 10)
     assert r["error"]["code"] == "RUN001" and r["steps"] == 10
     assert r["motion"]["feed_moves"] == 9, r["motion"]["feed_moves"]
@@ -144,10 +143,10 @@ def test_sin800_step_limit_at_a_run_of_constant_blocks(tmp_path):
 def test_sin800_step_limit_inside_a_stretch_reports_the_blocks_that_ran(tmp_path):
     """docs/decisions.md ("The SINUMERIK step limit is never passed"): the run stops at the head of the
     computing stretch that would pass the limit, "so the steps reported are the blocks that ran and the R
-    parameters are theirs". Under ``--max-steps 7`` the run stops at N20 of the second pass: N10 and one
-    pass ran (6 blocks, R1 = 1) but it reports 7 steps. Every limit that falls inside a stretch (2, 5, 7, 10,
-    12, ...) reports one block more than ran. Each block of the loop changes one counter, so the blocks
-    that ran are 1 + R1 + R2 + moves + R3 + R4."""
+    parameters are theirs". Each block of the loop changes one counter, so the blocks that ran are
+    1 + R1 + R2 + moves + R3 + R4. When reviewed, every limit that fell inside a stretch (2, 5, 7, 10, 12, ...)
+    reported one block more than ran (``--max-steps 7``: 7 steps, 6 blocks ran, R1 = 1); main's dcef452 fixed
+    it (this test passes since the merge)."""
     for limit in (2, 5, 7, 10, 12):
         r = _limited(tmp_path, "counters.mpf", SIN_COUNTERS, limit)
         v = r["variables"]
