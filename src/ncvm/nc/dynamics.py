@@ -104,15 +104,15 @@ def lengths_columns(d) -> np.ndarray:
 
 
 def straight_limits_columns(dyn: AxisDynamics, d, length, rapid, feed) -> tuple:
-    """:func:`path_limits` column-wise: path speed and acceleration of straight moves ``d`` (moves, axes), the
-    same float operations in the same order (the planner plans a few moves with the scalar form)."""
+    """:func:`path_limits` column-wise: path speed and acceleration of straight moves ``d`` (moves, axes)."""
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        inv = 1.0 / length
         v = np.where(rapid, math.inf, feed / 60.0)
         a = np.full(len(d), math.inf)
         for i in range(d.shape[1]):
             di = d[:, i]
             nz = di != 0.0
-            share = np.abs(di) / length  # divided as path_limits does: the same speeds to the last bit
+            share = np.abs(di) * inv
             vmax = np.where(rapid, dyn.rapid[i], dyn.max_feed[i])
             v = np.where(nz & (vmax < v * share), vmax / share, v)
             a = np.where(nz & (dyn.accel[i] < a * share), dyn.accel[i] / share, a)

@@ -199,8 +199,9 @@ class Planner:
                     ln += d * d
                 ln = math.sqrt(ln)
                 rapid = f == POSITIONING
-                vi, ai = path_limits(u, ln, math.inf if rapid else vi / 60.0, dyn.rapid if rapid else dyn.max_feed,
-                                     dyn.accel)
+                inv = 1.0 / ln  # the shares as straight_limits_columns makes them: |d| * (1 / length)
+                vi, ai = path_limits([d * inv for d in u], 1.0, math.inf if rapid else vi / 60.0,
+                                     dyn.rapid if rapid else dyn.max_feed, dyn.accel)
                 u = [d / ln for d in u]
             length.append(ln)
             v.append(vi)
