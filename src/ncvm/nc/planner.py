@@ -162,10 +162,13 @@ class Planner:
 
     def stop(self) -> None:
         """Exact stop: time every waiting move, the last ending at rest."""
-        if self.blocks or len(self.rows) >= SMALL * self.width:
+        if self.blocks:
             self._plan(None)
         elif self.rows:
-            self._plan_rows()
+            if len(self.rows) < SMALL * self.width:
+                self._plan_rows()
+            else:
+                self._plan(None)
         self.entry2 = 0.0
 
     def _plan_rows(self) -> None:
