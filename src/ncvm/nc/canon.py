@@ -175,8 +175,8 @@ class CanonSink:
                 self.arc(start, end, arcs[i], feed, src)
 
     def timing(self, times, entry, exit) -> None:
-        """The path planner (:mod:`ncvm.nc.planner`) has timed the next moves, oldest first: numpy columns of
-        their times (s) and entry and exit path speeds (mm/min). Moves are timed in the order of their
+        """The path planner (:mod:`ncvm.nc.planner`) has timed the next moves, oldest first: sequences of
+        their times (s) and entry and exit path speeds (mm/min), numpy columns or lists (:func:`floats`). Moves are timed in the order of their
         rapid, feed and arc calls (a straight move of length 0 is not timed: it takes no time), but a
         move may be timed before or after its call, as its look-ahead window completes. All three None:
         the moves from now on are timed by the front end's own model (the rw_SymPas card), not reported."""
@@ -265,6 +265,12 @@ class CanonSink:
 
     def end(self) -> None:
         """The run is over (normally or by a fault): flush files."""
+
+
+def floats(column) -> list[float]:
+    """A column of :meth:`CanonSink.timing` as a list of floats: the planner gives numpy columns for a large
+    plan and lists for a few moves (no numpy)."""
+    return column if isinstance(column, list) else column.tolist()
 
 
 _METHODS = ("begin", "rapid", "feed", "arc", "thread", "move_batch", "timing", "frame", "frozen", "channel", "programmed", "tapping", "dwell",

@@ -28,7 +28,10 @@ rest, as an exact stop, so what a program reads is never a time that a later blo
 
 Both passes are minimum-plus recurrences that become running minima of prefix sums, so a whole chunk
 is planned with a few numpy operations whether its moves came one by one (the kernel's ``rows``) or as
-columns (:mod:`ncvm.nc.plainrun`).
+columns (:mod:`ncvm.nc.plainrun`). A flush of fewer than :data:`SMALL` moves added one by one (a short
+program, the moves between two M functions) is planned in plain Python instead: the same formulas with
+the same float operations in the same order, so the same times to the last bit
+(``tests/nc/test_planner_small.py``), without numpy's import (~0.1 s of a short run's start-up).
 """
 
 from __future__ import annotations
@@ -37,7 +40,7 @@ import math
 from struct import pack as _pack
 
 from ..lazy import lazy
-from .dynamics import lengths_columns, straight_limits_columns, trapezoid_time_columns
+from .dynamics import lengths_columns, path_limits, straight_limits_columns, trapezoid_time, trapezoid_time_columns
 
 np = lazy("numpy")
 
@@ -48,6 +51,8 @@ MODELS = (LOOKAHEAD, REST)
 STOP_END, STOP_START, POSITIONING = 1, 2, 3
 #: moves planned at once beyond the window (the bound on what waits untimed)
 CHUNK = 4096
+#: fewer moves than this, added one by one and flushed, are planned in plain Python (no numpy)
+SMALL = 64
 _STRAIGHT, _REVERSAL = -0.999999, 0.999999  # cosines where a junction counts as straight on / as a reversal
 
 
@@ -157,9 +162,90 @@ class Planner:
 
     def stop(self) -> None:
         """Exact stop: time every waiting move, the last ending at rest."""
-        if self.rows or self.blocks:
+        if self.blocks:
             self._plan(None)
+        elif self.rows:
+            if len(self.rows) < SMALL * self.width:
+                self._plan_rows()
+            else:
+                self._plan(None)
         self.entry2 = 0.0
+
+    def _plan_rows(self) -> None:
+        """:meth:`_plan` of every waiting move, for a few moves in ``rows``: in plain Python, move by move."""
+        length, v, a, flags, u_in, u_out = self._row_moves()
+        self.rows.clear()
+        w = self._speeds_rows(length, v, a, flags, u_in, u_out)
+        times = list(map(blended_time, length, v, a, w, w[1:]))
+        clock = self.clock
+        t = clock.settled
+        for dt in times:  # in move order, as the chunk's cumulative sum
+            t += dt
+        clock.settle(t)
+        speeds = [math.sqrt(x) * 60.0 for x in w]
+        self.canon.timing(times, speeds[:-1], speeds[1:])
+
+    def _row_moves(self) -> tuple[list, ...]:
+        """The moves of ``rows`` as lists of fields (what :meth:`_materialise` makes an array of): an arc's end
+        tangent joined to it, the hot path's straight moves' length, limits and tangent worked out."""
+        rows, width, dyn = self.rows, self.width, self.dyn
+        length, v, a, flags, u_in, u_out = [], [], [], [], [], []
+        for i in range(0, len(rows), width):
+            ln, vi, ai, f = rows[i:i + 4]
+            u = rows[i + 4:i + width]
+            if f < 0.0:  # an arc's end tangent, in the row after its own
+                u_out[-1] = u
+                continue
+            if ln < 0.0:  # the hot path's straight move: deltas and the feed (mm/min; inf for a rapid move)
+                ln = 0.0
+                for d in u:  # summed in axis order, as lengths_columns
+                    ln += d * d
+                ln = math.sqrt(ln)
+                rapid = f == POSITIONING
+                inv = 1.0 / ln  # the shares as straight_limits_columns makes them: |d| * (1 / length)
+                vi, ai = path_limits([d * inv for d in u], 1.0, math.inf if rapid else vi / 60.0,
+                                     dyn.rapid if rapid else dyn.max_feed, dyn.accel)
+                u = [d / ln for d in u]
+            length.append(ln)
+            v.append(vi)
+            a.append(ai)
+            flags.append(int(f))
+            u_in.append(u)
+            u_out.append(u)
+        return length, v, a, flags, u_in, u_out
+
+    def _speeds_rows(self, length, v, a, flags, u_in, u_out) -> list[float]:
+        """:meth:`_speeds` of moves given as lists (:meth:`_row_moves`): the same passes, loop by loop."""
+        p = len(length)
+        j = [0.0] * (p + 1)
+        if self.model == LOOKAHEAD:
+            accel, tolerance = self.accel, self.tolerance
+            for i in range(1, p):
+                if not (flags[i - 1] & STOP_END or flags[i] & STOP_START):
+                    j[i] = junction_speed2(u_out[i - 1], u_in[i], v[i - 1], v[i], accel, tolerance)
+        j[0] = self.entry2
+        if not any(j):
+            return j
+        s = [0.0] * (p + 1)
+        total = 0.0
+        for i in range(p):
+            total += 2.0 * a[i] * length[i]
+            s[i + 1] = total
+        b = [0.0] * (p + 1)
+        least = math.inf
+        for i in range(p, -1, -1):  # backward, a running minimum from the end
+            least = min(least, j[i] + s[i])
+            b[i] = least - s[i]
+        win = self.window
+        for i in range(p + 1 - win):  # empty when the window holds every move
+            b[i] = min(b[i], s[i + win] - s[i])
+        b[0] = j[0]
+        w = b
+        least = math.inf
+        for i in range(p + 1):  # forward, a running minimum from the start
+            least = min(least, b[i] - s[i])
+            w[i] = max(least + s[i], 0.0)  # numpy's maximum: -0.0 and NaN stay
+        return w
 
     def _plan(self, k: int | None) -> None:
         self._materialise()
@@ -213,10 +299,10 @@ def junction_speeds2(u_prev, u_next, v_prev, v_next, stop, accel, tolerance: flo
     with ``u_next`` (unit vectors, arrays of axes by junctions), at most both moves' speeds; 0 where
     ``stop`` (either side stops) or the moves reverse."""
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-        cos = -np.einsum("ij,ij->j", u_prev, u_next)
+        cos = -_dot(u_prev, u_next)
         jv = u_next - u_prev  # the direction the velocity changes in: the axes' acceleration limits apply there
         # min over axes of accel_i / (|jv_i| / |jv|)
-        acc = np.sqrt(np.einsum("ij,ij->j", jv, jv)) / (np.abs(jv) / accel[:, None]).max(axis=0)
+        acc = np.sqrt(_dot(jv, jv)) / (np.abs(jv) / accel[:, None]).max(axis=0)
         sin_half = np.sqrt(np.maximum(0.5 * (1.0 - cos), 0.0))
         slower = np.minimum(v_prev, v_next)
         slower *= slower
@@ -225,6 +311,43 @@ def junction_speeds2(u_prev, u_next, v_prev, v_next, stop, accel, tolerance: flo
     j[straight] = slower[straight]
     j[(cos >= _REVERSAL) | stop] = 0.0
     return j
+
+
+def junction_speed2(u_prev, u_next, v_prev: float, v_next: float, accel, tolerance: float) -> float:
+    """:func:`junction_speeds2` of one junction that neither side stops at, in plain Python."""
+    cos = -_dot(u_prev, u_next)
+    slower = min(v_prev, v_next)
+    slower *= slower
+    if cos >= _REVERSAL:
+        return 0.0
+    if cos <= _STRAIGHT:
+        return slower
+    jv = [n - p for p, n in zip(u_prev, u_next)]
+    most = max([abs(d) / am for d, am in zip(jv, accel)])
+    norm = math.sqrt(_dot(jv, jv))
+    acc = norm / most if most else math.inf  # numpy's division by 0 (|jv| > 0 here)
+    sin_half = math.sqrt(max(0.5 * (1.0 - cos), 0.0))
+    return min(acc * (tolerance * sin_half / (1.0 - sin_half)), slower)
+
+
+def _dot(x, y):
+    """Scalar product of two tangents, summed in axis order; of arrays (axes by junctions) column by column,
+    the same operations (no fused multiply-add, unlike einsum may)."""
+    total = x[0] * y[0]
+    for i in range(1, len(x)):
+        total = total + x[i] * y[i]
+    return total
+
+
+def blended_time(length: float, v: float, a: float, w0: float, w1: float) -> float:
+    """:func:`move_times` of one move, in plain Python."""
+    if w0 == 0.0 and w1 == 0.0:
+        return trapezoid_time(length, v, a)
+    v0, v1 = math.sqrt(w0), math.sqrt(w1)
+    cruise = length - (2.0 * v * v - w0 - w1) / (2.0 * a)
+    peak = min(v, math.sqrt(a * length + 0.5 * (w0 + w1)))
+    peak = max(peak, max(v0, v1))
+    return (2.0 * peak - v0 - v1) / a + max(cruise, 0.0) / v
 
 
 def move_times(length, v, a, w0, w1) -> np.ndarray:

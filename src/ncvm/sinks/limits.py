@@ -54,7 +54,7 @@ class LimitCheck:
         low = rec.window()["end"][lo:hi].copy()
         high = low.copy()
         rec.arc_reach(low, high, lo)
-        for i, ax in enumerate(self.axes):
+        for i in range(len(self.axes)):
             if i in self._found:
                 continue
             below = low[:, i] < self._mins[i]
@@ -62,13 +62,27 @@ class LimitCheck:
             if not bad.any():
                 continue
             k = int(bad.argmax())
-            src = rec.src(lo + k)
-            value = float(low[k, i]) if below[k] else float(high[k, i])
-            limit = ax.min if below[k] else ax.max
-            point = rec.window()["end"][lo + k].copy()
-            point[i] = value
-            self._found[i] = (rec.base + lo + k, i, LimitViolation(ax.name, value, limit, src.file, src.line,
-                                                                  point=tuple(point.tolist()), move=rec.base + lo + k))
+            self._found_at(rec, lo + k, i, bool(below[k]), float(low[k, i]) if below[k] else float(high[k, i]),
+                           rec.window()["end"][lo + k].tolist())
+
+    def observe_rows(self, rec, lo: int, hi: int, low: list, high: list) -> None:
+        """:meth:`observe` of a few moves as rows (their lowest and highest points), in plain Python."""
+        for i in range(len(self.axes)):
+            if i in self._found:
+                continue
+            for k, (lw, hg) in enumerate(zip(low, high)):
+                below = lw[i] < self._mins[i]
+                if below or hg[i] > self._maxs[i]:
+                    self._found_at(rec, lo + k, i, below, lw[i] if below else hg[i], list(rec.end_of(lo + k)))
+                    break
+
+    def _found_at(self, rec, k: int, i: int, below: bool, value: float, point: list) -> None:
+        """Window move ``k`` is the first to take axis ``i`` to ``value``, past a limit; ``point`` its end."""
+        ax = self.axes[i]
+        src = rec.src(k)
+        point[i] = value
+        self._found[i] = (rec.base + k, i, LimitViolation(ax.name, value, ax.min if below else ax.max, src.file,
+                                                         src.line, point=tuple(point), move=rec.base + k))
 
     @property
     def violations(self) -> dict[str, LimitViolation]:

@@ -12,7 +12,7 @@ import math
 from collections import deque
 
 from ..lazy import lazy
-from ..nc.canon import CanonSink
+from ..nc.canon import CanonSink, floats
 
 np = lazy("numpy")
 
@@ -67,7 +67,7 @@ class MoveTable(CanonSink):
         if times is None:
             self._planned = False
             return
-        for t in times.tolist():
+        for t in floats(times):
             if self._untimed:
                 self._times[self._untimed.popleft()] = t
             else:

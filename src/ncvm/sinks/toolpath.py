@@ -6,6 +6,10 @@ holds a window of at most about ``WINDOW`` moves. When the window is full it
 is *settled*: its moves are added to the running totals and handed to the
 watchers (soft limits, work areas, the plot), which keep what they need (a
 first violation, thinned points), and then forgotten.
+
+A window of fewer than :data:`SMALL` single moves (a short program) is settled in plain Python when every
+watcher can be shown rows (``observe_rows``): the same totals, extents and first violations, without
+numpy's import (~0.1 s of a short run's start-up).
 """
 
 from __future__ import annotations
@@ -27,6 +31,9 @@ RAPID, FEED, ARC = 0, 1, 2
 WINDOW = 1 << 16
 #: batches held before the window is settled (many tiny batches: one move per WAIT in a CPL loop)
 MAX_CHUNKS = 1024
+#: a window of fewer single moves than this (and no batch) is settled in plain Python: numpy sums fewer
+#: than 8 numbers one after the other (more pairwise), so the lengths stay the same to the last bit
+SMALL = 8
 
 
 class MotionSummary(Record):
@@ -166,8 +173,8 @@ class ToolpathRecorder(CanonSink):
         n = len(lo)
         for index, (a, b, lo_a, hi_a, lo_b, hi_b) in self._arc_bounds.items():
             r = index - first
-            if 0 <= r < n:
-                lo[r, a], hi[r, a], lo[r, b], hi[r, b] = lo_a, hi_a, lo_b, hi_b
+            if 0 <= r < n:  # rows of arrays or of lists
+                lo[r][a], hi[r][a], lo[r][b], hi[r][b] = lo_a, hi_a, lo_b, hi_b
         for base, arc in self._arc_batches:
             rows = base + arc.rows - first
             inside = (rows >= 0) & (rows < n)
@@ -206,6 +213,9 @@ class ToolpathRecorder(CanonSink):
 
     def settle(self) -> None:
         """Add the moves not yet counted to the totals and show them to the watchers; without keep, forget them."""
+        if not self._chunks and len(self._rows) < SMALL and all(hasattr(w, "observe_rows") for w in self._watchers):
+            self._settle_rows()
+            return
         self._flush(settle=False)
         n = self._chunked
         if n > self._settled:
@@ -224,6 +234,44 @@ class ToolpathRecorder(CanonSink):
             self._arc_bounds.clear()
             self._arc_batches.clear()
             self._arrays = None
+
+    def _settle_rows(self) -> None:
+        """:meth:`settle` of a window held as single-move rows only, in plain Python: watchers are shown the
+        rows' lowest and highest points (``observe_rows(recorder, lo, hi, low, high)``)."""
+        rows = self._rows
+        lo, n = self._settled, len(rows)
+        if n > lo:
+            start = self._window_start if lo == 0 else rows[lo - 1][1]
+            counts, part = self._counts, [0.0, 0.0]  # the window's straight lengths, added as _total does
+            low_all = list(self._lo) if self._lo is not None else [math.inf] * len(start)
+            high_all = list(self._hi) if self._hi is not None else [-math.inf] * len(start)
+            for kind, end, _src, _tool in rows[lo:]:
+                counts[kind] += 1
+                if kind != ARC:
+                    sq = 0.0
+                    for s, e in zip(start, end):  # summed in axis order, as numpy sums fewer than 8
+                        sq += (e - s) * (e - s)
+                    part[kind] += math.sqrt(sq)
+                for i, (s, e) in enumerate(zip(start, end)):
+                    low_all[i] = min(low_all[i], s, e)
+                    high_all[i] = max(high_all[i], s, e)
+                start = end
+            self._lengths[RAPID] += part[RAPID]
+            self._lengths[FEED] += part[FEED]
+            self._lo, self._hi = low_all, high_all
+            low = [list(r[1]) for r in rows[lo:]]
+            high = [list(r[1]) for r in rows[lo:]]
+            self.arc_reach(low, high, lo)
+            self._settled = n
+            for w in self._watchers:
+                w.observe_rows(self, lo, n, low, high)
+        if not self.keep and n:
+            self._window_start = tuple(rows[-1][1])
+            self.base += n
+            rows.clear()
+            self._settled = 0
+            self._arcs.clear()
+            self._arc_bounds.clear()
 
     def _total(self, kind: np.ndarray, start: np.ndarray, end: np.ndarray) -> None:
         """Add moves to the running counts, straight lengths and extents."""
@@ -251,9 +299,16 @@ class ToolpathRecorder(CanonSink):
 
     def src(self, index: int) -> Src:
         """Where move ``index`` of the window came from."""
-        self._flush(settle=False)
+        if index >= self._chunked:  # a single move not yet in a chunk
+            return self._rows[index - self._chunked][2]
         first, columns, file, srcs = self._chunks[bisect_right(self._chunks, index, key=lambda c: c[0]) - 1]
         return srcs[index - first] if srcs is not None else Src(file, int(columns["line"][index - first]))
+
+    def end_of(self, index: int) -> tuple:
+        """Where move ``index`` of the window ends."""
+        if index >= self._chunked:  # a single move not yet in a chunk
+            return self._rows[index - self._chunked][1]
+        return tuple(self.window()["end"][index].tolist())
 
     def arrays(self) -> dict[str, np.ndarray]:
         """Every move as numpy columns: the whole toolpath, which only a recorder that keeps it has."""

@@ -15,7 +15,7 @@ from __future__ import annotations
 import json
 from collections import deque
 
-from ..nc.canon import CanonSink
+from ..nc.canon import CanonSink, floats
 from ..outpaths import OutputError
 
 _UNTIMED = object()  # a move's time before the planner has timed it
@@ -66,7 +66,7 @@ class JsonlTrace(CanonSink):
             self._planned = False
             return
         untimed, early = self._untimed, self._early
-        for t, v0, v1 in zip(times.tolist(), entry.tolist(), exit.tolist()):
+        for t, v0, v1 in zip(floats(times), floats(entry), floats(exit)):
             data = {"time": t, "v_entry": round(v0, 6), "v_exit": round(v1, 6)}
             if untimed:
                 untimed.popleft().update(data)

@@ -9,6 +9,9 @@ move: each settled window of moves widens two arrays, and only the frames still 
 
 from __future__ import annotations
 
+import math
+from bisect import bisect_right
+
 from ..lazy import lazy
 from ..nc.canon import CanonSink
 from .toolpath import ToolpathRecorder
@@ -61,8 +64,27 @@ class WorkBounds(CanonSink):
         low, high = (low - shift).min(axis=0), (high - shift).max(axis=0)
         self._lo = low if self._lo is None else np.minimum(self._lo, low)
         self._hi = high if self._hi is None else np.maximum(self._hi, high)
-        last = rec.base + hi  # frames before the one in force for the next move are done with
-        keep = max(0, int(np.searchsorted([f[0] for f in self._frames], last, side="right")) - 1)
+        self._done(rec.base + hi)
+
+    def observe_rows(self, rec: ToolpathRecorder, lo: int, hi: int, low: list, high: list) -> None:
+        """:meth:`observe` of a few moves as rows (their lowest and highest points), in plain Python."""
+        if not self._frames:
+            self._frames.append((0, (0.0,) * len(rec.axis_names)))
+        starts = [f[0] for f in self._frames]
+        n = len(rec.axis_names)
+        least = list(self._lo) if self._lo is not None else [math.inf] * n
+        most = list(self._hi) if self._hi is not None else [-math.inf] * n
+        for k, (lw, hg) in enumerate(zip(low, high)):
+            shift = self._frames[max(bisect_right(starts, rec.base + lo + k) - 1, 0)][1]  # as in_force
+            for i in range(n):
+                least[i] = min(least[i], lw[i] - shift[i])
+                most[i] = max(most[i], hg[i] - shift[i])
+        self._lo, self._hi = least, most
+        self._done(rec.base + hi)
+
+    def _done(self, last: int) -> None:
+        """Forget the frames before the one in force for move ``last`` (the next to come)."""
+        keep = max(0, bisect_right([f[0] for f in self._frames], last) - 1)
         del self._frames[:keep]
 
     def bounds(self, machine: dict[str, list[float]]) -> dict[str, list[float]]:
