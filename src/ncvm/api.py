@@ -208,7 +208,7 @@ class RunResult(Record):
             position={labels.get(a, a): v for a, v in session.kernel.workpiece_position().items()}, motion=motion,
             cycle_time_s=session.machine.clock.now,
             cycle_time_model=session.time_model or session.kernel.time_model(),
-            # a runaway is caught just past the limit; straight code (no loop, no jump back) may pass it
+            # every dialect counts the statements and blocks that ran, never past the limit (docs/decisions.md)
             steps=min(session.steps.steps, session.steps.limit) if error and error.code == "RUN001" else session.steps.steps,
             limit_violations=[v.message() for v in session.checks.violations(session.source_place, labels)],
             extra=dict(session.extra), session=session)
