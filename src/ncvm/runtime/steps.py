@@ -1,8 +1,9 @@
 """Step counting, the runaway limit, and the debug hook for single-block stepping.
 
-Generated code counts executed statements in a local variable and calls
-:meth:`StepCounter.check` only at loop back-edges, jumps and calls, so the
-limit costs almost nothing. A debug build of a unit calls :attr:`hook` before
+Generated code counts executed statements in a local variable, a group of
+straight statements at once, and tests the limit at the head of each group,
+before any of it runs: the limit is never passed and the count is the
+statements that ran. A debug build of a unit calls :attr:`hook` before
 every statement; the normal build has no hook calls at all.
 """
 
@@ -28,12 +29,6 @@ class StepCounter:
         self.limit = limit
         self.hook = hook
         self.breakpoints: set[tuple[str, int]] = set()
-
-    def add(self, n: int, file: str, line: int) -> None:
-        """Add ``n`` executed steps; fault when the limit is passed."""
-        self.steps += n
-        if self.steps > self.limit:
-            self.runaway(file, line)
 
     def runaway(self, file: str, line: int):
         raise RuntimeFault("RUN001", f"step limit of {self.limit:,} statements and blocks reached "
