@@ -18,7 +18,7 @@ def build_loop(filename: str) -> PySource:
         with src.block("while i < 10:", 3):
             src.emit("n += 1", 3)
             src.emit("i += 1", 4)
-            src.emit("steps.add(2, FILE, 4)", 4)
+            src.emit("steps.steps += 2", 4)
         src.emit("out.append(n)", 5)
         src.emit("out.append(10 // (i - 10))", 6)
     return src
