@@ -16,9 +16,10 @@ def build_loop(filename: str) -> PySource:
         src.emit("n = 0", 2)
         src.emit("i = 0", 2)
         with src.block("while i < 10:", 3):
+            src.emit("if steps.steps + 2 > steps.limit: steps.runaway(FILE, 3)", 3)  # a group tested at its head
+            src.emit("steps.steps += 2", 3)
             src.emit("n += 1", 3)
             src.emit("i += 1", 4)
-            src.emit("steps.steps += 2", 4)
         src.emit("out.append(n)", 5)
         src.emit("out.append(10 // (i - 10))", 6)
     return src
@@ -59,4 +60,4 @@ def test_step_limit_faults_with_position():
     with pytest.raises(RuntimeFault) as e:
         ns["main"](StepCounter(limit=7), [])
     assert e.value.code == "RUN001"
-    assert (e.value.span.file, e.value.span.line) == ("prog.x", 4)
+    assert (e.value.span.file, e.value.span.line) == ("prog.x", 3)
