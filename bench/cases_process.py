@@ -65,7 +65,7 @@ N30 M30
 """
 
 SYMPAS_MOVES = """\
-{{ 2,000,000 linear moves (MLRW): a zig-zag raster of {rows} rows x 1000 moves }}
+{{ linear moves (MLRW): a zig-zag raster of {rows} rows x 1000 moves, the last of each row one step of A2 }}
 program Moves;
 var row, k: integer; dir: double;
 begin
@@ -73,8 +73,9 @@ begin
   for row := 0 to {last} do
   begin
     dir := 1.0 - 2.0 * (row mod 2);
-    for k := 1 to 1000 do
-      MLRW(A1 := dir * 0.1, A2 := 0.0001);
+    for k := 1 to 999 do
+      MLRW(A1 := dir * 0.1);
+    MLRW(A1 := dir * 0.1, A2 := 0.01);
   end;
 end.
 """
