@@ -447,7 +447,7 @@ class UnitCodegen:
             out.emit("if not _rt.block_skip:", line)
             out._indent += 1
         place, length = self.stretch.get(idx, (0, 1))
-        if place == 0:  # the stretch is counted at its head, and never run past the step limit (exact, as CPL)
+        if place == 0:  # the stretch is counted at its head and not begun when it would pass the step limit (as CPL)
             out.emit(f"_st += {length}", line)
             out.emit(f"if _st > _lim: _st -= {length}; _rt.runaway({line})", line)
         self.ahead = length - 1 - place
