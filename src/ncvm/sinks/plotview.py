@@ -26,6 +26,8 @@ DEPTH_MAP = "viridis"
 #: the shortest side of a view or of the 3-D box, as a share of the longest (a flat program keeps a thin slab)
 MIN_SHARE = 0.04
 PAD = 0.04  # margin around the path, as a share of its longest extent
+#: points of a line drawn at once (one artist): bounds the renderer's memory (see :func:`_pieces`)
+PIECE = 4000
 
 
 def plot_title(program: str | Path, result: dict, machine_name: str = "") -> str:
@@ -92,8 +94,10 @@ def figure(points: PlotPoints, title: str = "", violations: Sequence = ()):
         for name, (a, b) in plane.items():
             if name == "XY" and depth and not rapid:
                 continue
-            paths += views[name].plot(pts[:, a], pts[:, b], style, color=colour, linewidth=width)
-        paths += views["3-D"].plot(pts[:, 0], pts[:, 1], pts[:, 2], style, color=colour, linewidth=width)
+            for piece in _pieces(pts):
+                paths += views[name].plot(piece[:, a], piece[:, b], style, color=colour, linewidth=width)
+        for piece in _pieces(pts):
+            paths += views["3-D"].plot(piece[:, 0], piece[:, 1], piece[:, 2], style, color=colour, linewidth=width)
         name = f"task {owner}" if who == "task" else f"T{owner}"
         handles.append(Line2D([], [], linestyle=style, color=colour, linewidth=width,
                               label=f"{name} {'rapid' if rapid else 'feed'}"))
@@ -121,6 +125,30 @@ def figure(points: PlotPoints, title: str = "", violations: Sequence = ()):
     fig.views = views
     fig.legend_box = legend_box
     return fig
+
+
+def _pieces(pts: np.ndarray) -> list[np.ndarray]:
+    """A style's points as lines of at most PIECE + 1 points each, drawn one by one: the renderer (Agg) keeps
+    the cells of one line's whole outline until it is drawn, so its memory grows with the length in pixels of
+    all the line's segments, gigabytes for the plot's cap of points scattered over a view; a piece's outline is
+    bounded. A piece ends where a line of the toolpath ends (a NaN row) when one does within PIECE points, so
+    dashes and joins stay as they are; a longer line is cut at a point both pieces share (no segment left out,
+    unlike the renderer's own ``agg.path.chunksize``, which leaves out the two segments around each cut)."""
+    n = len(pts)
+    if n <= PIECE + 1:
+        return [pts]
+    gaps = np.flatnonzero(np.isnan(pts[:, 0]))
+    out, i = [], 0
+    while n - i > PIECE + 1:
+        k = int(np.searchsorted(gaps, i + PIECE, side="right")) - 1
+        if k >= 0 and gaps[k] > i:  # the last line end within the piece: the next piece begins with it
+            out.append(pts[i:gaps[k]])
+            i = int(gaps[k])
+        else:
+            out.append(pts[i:i + PIECE + 1])
+            i += PIECE
+    out.append(pts[i:])
+    return out
 
 
 def _extent(lines: dict, points: PlotPoints) -> tuple[np.ndarray, np.ndarray]:

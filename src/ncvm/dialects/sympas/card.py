@@ -49,6 +49,7 @@ class Card:
         self.cd = [0.0] * 1000
         self.zo = {int(k): [float(x) for x in v] for k, v in cfg.zero_offsets.items()}
         self.active_zo = 0
+        self._work_shift: tuple[float, ...] | None = None  # work_shift() until the zero point moves
         self.spooler = Spooler(self.axes, int(cfg.spool_capacity))
         self.scheduler = Scheduler(self, cfg, session.steps)
         self.inputs = list(cfg.inputs)
@@ -150,8 +151,17 @@ class Card:
         return a.ref + a.zerooffset + (zo[a.number] if zo and a.number < len(zo) else 0.0)
 
     def work_shift(self) -> tuple[float, ...]:
-        """Per axis, machine position less user position now: the REF point of homing and the zero offsets."""
-        return tuple(self.user_shift(a) for a in self.axes)
+        """Per axis, machine position less user position now: the REF point of homing and the zero offsets.
+        Asked for every move when a sink takes frames (the plot): kept until :meth:`zero_moved`."""
+        shift = self._work_shift
+        if shift is None:
+            shift = self._work_shift = tuple(self.user_shift(a) for a in self.axes)
+        return shift
+
+    def zero_moved(self) -> None:
+        """An axis's REF point (``ref``) or zero offset (``zerooffset``), or the active zero offset (AZO)
+        changed: every statement that changes one calls this, so that :meth:`work_shift` is worked out anew."""
+        self._work_shift = None
 
     def busy(self, a: AxisState, t: float) -> bool:
         return a.move is not None and a.move.t1 > t

@@ -371,6 +371,7 @@ class Task:
         if not 0 <= n <= 4:
             fault(256, f"AZO({n}): zero offset set outside 0..4")
         self.card.active_zo = n
+        self.card.zero_moved()
         yield
 
     # -- events ---------------------------------------------------------------------------------------

@@ -63,7 +63,9 @@ class Timeline:
             self.report(math.inf)
         self._channel(src)
         if self.canon.frame is not NOBODY:
-            self._frame(self.card.work_shift(), src)
+            shift = self.card.work_shift()
+            if shift is not self.shift:  # the card keeps the one tuple until its zero point moves
+                self._frame(shift, src)
         if self.canon.programmed is not NOBODY:  # a translation: nothing per move otherwise
             self._programmed([ax for ax, _ in items], src)
         self.canon.feed(start, end, feed, src)
@@ -121,9 +123,11 @@ class Timeline:
         """Tell the sinks the user coordinates of the moves that follow, when they changed (homing makes the REF
         point the axis zero; zero offsets add to it): the trace's ``work`` and the translation are the
         program's positions (docs/translate.md). ``G54`` names the card's zero point for the translation."""
-        if shift is not None and shift != self.shift:  # (checked before the call on the hot path)
-            self.shift = shift
+        if shift is None:
+            return
+        if shift != self.shift:  # (checked before the call on the hot path)
             self.canon.frame(Frame("G54", shift, (0.0,) * len(shift)), src)
+        self.shift = shift  # also an equal one worked out anew: the next moves find it the same object
 
     def _place(self, m, t: float) -> None:
         p = m.pos(t)

@@ -78,6 +78,7 @@ def shp(card, tk, items, loc):
         card.settle((ax,), tk.time)
         m = card.mpos(a, tk.time)
         a.ref = m - v - a.zerooffset - (card.user_shift(a) - a.ref - a.zerooffset)
+        card.zero_moved()
         a.homed = True
     return None
 
@@ -90,6 +91,7 @@ def szpa(card, tk, items, loc):
             a.zerooffset = 0.0
         else:
             a.zerooffset = v
+        card.zero_moved()
     return None
 
 
@@ -100,6 +102,7 @@ def szpr(card, tk, items, loc):
             a.ref += v
         else:
             a.zerooffset += v
+        card.zero_moved()
     return None
 
 

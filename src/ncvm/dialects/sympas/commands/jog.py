@@ -175,7 +175,7 @@ def _home(card, tk, axes, loc, direction: int, wait: bool, limits=None):
         latch = "lp" if limits is None else "lpndx"
         end = ref + overrun
         if abs(ref - p0) == 0.0:  # already on REF: latched at once, nothing moves
-            _homed(a, ref, latch)
+            _homed(card, a, ref, latch)
             continue
         mv = Move((ax,), (p0,), (end,), "line", src, start)
         mv.jog = mv.homing = True
@@ -190,10 +190,11 @@ def _home(card, tk, axes, loc, direction: int, wait: bool, limits=None):
     return then_wait(card, tk, axes, wait)
 
 
-def _homed(a, ref: float, latch: str) -> None:
+def _homed(card, a, ref: float, latch: str) -> None:
     a.homed = True
     a.zerooffset = 0.0
     a.ref = ref
+    card.zero_moved()
     a.q[latch] = 0.0
 
 
@@ -204,7 +205,7 @@ def _latch_at(card, a, mv, dist: float, ref: float, latch: str) -> None:
         if a.move is not mv and not mv.retired and mv.stop_s is None:
             return  # replaced by another command before REF
         if mv.s_at(tick) >= dist - 1e-9:
-            _homed(a, ref, latch)
+            _homed(card, a, ref, latch)
         elif mv.t1 == math.inf or mv.s_at(mv.t1) >= dist - 1e-9:
             later = reach_tick(mv, dist, tick)  # held or slowed by the override: look again then
             card.scheduler.add_timed(later, lambda: when_there(later))
