@@ -254,13 +254,14 @@ def _sympas_plot_peak_kb(tmp_path: Path, moves: int) -> int:
     return int(out.stdout.split()[-1])
 
 
-@pytest.mark.xfail(strict=False, reason="open (issue 18): rw_SymPas --plot of a two-axis MLAW raster: the run stays at 76 MB "
-                   "(400,000 moves), drawing its 57,008 thinned points (plotview.draw) takes it to 158 MB")
 def test_sympas_plot_memory_does_not_grow_with_the_moves(tmp_path):
     """Issue 18 item 2: "a plot of millions of moves decimates" and ten-million-move programs run "in every
     dialect in bounded memory". ``ncvm run --plot`` of a CPL or SINUMERIK raster of 10,000,000 moves peaks
     at 127 / 122 MB; the same raster in rw_SymPas (MLAW, 100 moves a row) at 286 MB for 1,000,000 moves and
     406 MB for 2,000,000 (before and after the merge of main at 07:55): about 120 MB per million moves.
-    Here 140 MB at 100,000 moves, 208 MB at 600,000."""
+    Here 140 MB at 100,000 moves, 208 MB at 600,000. The run itself stayed flat; the renderer (Agg) kept
+    the outline cells of each drawn line whole, and the thinned raster's rows, six times over the same
+    area, made that grow with the moves. Fixed: long lines are drawn in pieces (plotview.PIECE); 96 and
+    109 MB (docs/performance.md "rw_SymPas plot: memory and CPU")."""
     small, large = _sympas_plot_peak_kb(tmp_path, 100_000), _sympas_plot_peak_kb(tmp_path, 600_000)
     assert large - small < 30_000, f"--plot peak {small / 1024:.0f} MB at 100,000 moves, {large / 1024:.0f} MB at 600,000"
