@@ -8,6 +8,8 @@ from __future__ import annotations
 
 import json
 
+import numpy as np
+
 from ncvm.api import run
 from ncvm.dialects.sympas import card as card_module
 from ncvm.runtime.session import RunOptions
@@ -93,3 +95,23 @@ def test_a_run_under_one_zero_point_works_the_shift_out_once(tmp_path, monkeypat
                            plot=True)
     assert result["motion"]["feed_moves"] == 2000 and session.plot.moves == 2000
     assert len(calls) <= 4 * 3, len(calls)  # once for the moves, and the run's end (three axes each)
+
+
+def test_the_plot_draws_a_long_run_in_the_cards_frame_at_the_end(tmp_path, monkeypatch):
+    """The plot of a rw_SymPas run is drawn in the card's zero point at the end (docs/decisions.md; the canon's
+    ``frame`` told for the whole run), also where the recorder showed the plot windows of moves while the
+    program ran (a run longer than toolpath.WINDOW): here windows of two moves. Each point is its machine
+    position less the final shift (A1: REF -5 and AZO 1's 5, so 0; A2: SZPR 50 and AZO 1's 7)."""
+    from ncvm.sinks import toolpath
+
+    def drawn(folder, window):
+        monkeypatch.setattr(toolpath, "WINDOW", window)
+        folder.mkdir()
+        _, session = _run(folder, ZERO_CHANGES, plot=True)
+        return session.plot.drawn()[(False, 0)]
+
+    short, long = drawn(tmp_path / "short", 1 << 16), drawn(tmp_path / "long", 2)
+    np.testing.assert_array_equal(short, long)
+    ends = [(x, y - 57.0) for _, x, y, _, _ in EXPECTED]
+    points = [tuple(p) for p in long[:, :2].tolist()]
+    assert all(end in points for end in ends), (ends, points)

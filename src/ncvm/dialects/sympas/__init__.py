@@ -144,6 +144,8 @@ class SympasDialect(Dialect):
             raise CompileFailed([e.diagnostic()]) from None
         if session.work_bounds is not None:  # the card's frame is told once, for the whole run, at the end: the
             session.canon.remove(session.work_bounds)  # bounds need no frame per move (the timeline's hot path)
+        if session.plot is not None:  # the plot draws the run in that frame too (it still takes each move's task)
+            session.plot.frame_told_at_end()
         card = Card(session, cfg)
         session.controller = card
         tasks = card.scheduler.tasks
