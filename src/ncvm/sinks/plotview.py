@@ -91,12 +91,13 @@ def figure(points: PlotPoints, title: str = "", violations: Sequence = ()):
     for (rapid, owner), pts in lines.items():
         colour = TOOL_COLOURS[owner % len(TOOL_COLOURS)]
         style, width = ("--", 0.7) if rapid else ("-", 1.1)
+        pieces = _pieces(pts)
         for name, (a, b) in plane.items():
             if name == "XY" and depth and not rapid:
                 continue
-            for piece in _pieces(pts):
+            for piece in pieces:
                 paths += views[name].plot(piece[:, a], piece[:, b], style, color=colour, linewidth=width)
-        for piece in _pieces(pts):
+        for piece in pieces:
             paths += views["3-D"].plot(piece[:, 0], piece[:, 1], piece[:, 2], style, color=colour, linewidth=width)
         name = f"task {owner}" if who == "task" else f"T{owner}"
         handles.append(Line2D([], [], linestyle=style, color=colour, linewidth=width,
