@@ -238,35 +238,56 @@ class CplRuntime:
         result: dict = {}
         try:
             try:
-                if self.linked.main.prog.din_only:  # "(DIN)" in its first line: started without linking (§3.3)
-                    run_unlinked(self, main, Path(main).name)
-                else:
-                    result = self.unit(main)((), True)
-            except ControlReset as reset:  # MCOPS(2) on the own channel: the main program is exited
-                self.session.say(str(reset))
-            finally:
                 try:
-                    self.session.variables = self.report(result or self.fault_locals)
-                except MemoryError as again:
-                    if not isinstance(again.__context__, MemoryError):
-                        raise
-                    # out of memory already: the run stops at the statement that reached the limit
+                    if self.linked.main.prog.din_only:  # "(DIN)" in its first line: started without linking (§3.3)
+                        run_unlinked(self, main, Path(main).name)
+                    else:
+                        result = self.unit(main)((), True)
+                except ControlReset as reset:  # MCOPS(2) on the own channel: the main program is exited
+                    self.session.say(str(reset))
+                finally:
+                    try:
+                        self.session.variables = self.report(result or self.fault_locals)
+                    except MemoryError as again:
+                        if not isinstance(again.__context__, MemoryError):
+                            raise
+                        # out of memory already: the run stops at the statement that reached the limit
+            except Exception as e:  # noqa: BLE001 - the program stopped: the blocks it prepared still run
+                raise self.execute_prepared(self.as_fault(e)) from None
             self.drain()
             self.io.end_program(png=self.session.options.screen)
             self.kernel.end_program(Src(main, max(1, len(self.linked.main.prog.stmts) and
                                                      self.linked.main.prog.stmts[-1].line)))
-        except RuntimeFault as f:
+        except Exception as e:  # noqa: BLE001 - every failure of generated code becomes a RUNTIME ERROR
+            f = self.as_fault(e)
             self.finish_io_at_fault()
             if f.span is None:
                 f.span = Span(main, 1, 1)
             elif f.span.column is None and f.span.file in self.linked.units:  # an NC block the kernel refused
                 f.span = Span(f.span.file, f.span.line, self.first_column(f.span.file, f.span.line))
-            raise
-        except DeclError as e:
-            raise RuntimeFault(e.code, message(e.code, e.message), Span(e.file, max(e.line, 1), 1)) from None
-        except Exception as e:  # noqa: BLE001 - every failure of generated code becomes a RUNTIME ERROR
-            self.finish_io_at_fault()
-            raise self.to_fault(e) from None
+            raise f from None
+
+    def as_fault(self, e: Exception) -> RuntimeFault:
+        """The RUNTIME ERROR that ``e`` is (a declaration error of the permanents included); ncvm's own
+        errors are raised again (:meth:`to_fault`)."""
+        if isinstance(e, RuntimeFault):
+            return e
+        if isinstance(e, DeclError):
+            return RuntimeFault(e.code, message(e.code, e.message), Span(e.file, max(e.line, 1), 1))
+        return self.to_fault(e)
+
+    def execute_prepared(self, stop: RuntimeFault) -> RuntimeFault:
+        """The program stopped with ``stop`` (a RUNTIME ERROR, the step limit): the NC blocks it prepared
+        before were already transferred to execution and run to their end, as they do when the program ends
+        (docs/decisions.md, "A CPL run that stops"). A fault of one of them is earlier in the program and is
+        the one reported; else ``stop``. Running out of memory again keeps ``stop``."""
+        try:
+            self.drain()
+        except MemoryError:
+            return stop
+        except Exception as e:  # noqa: BLE001 - a prepared block's own fault, reported in place of ``stop``
+            return self.as_fault(e)
+        return stop
 
     def finish_io_at_fault(self) -> None:
         """A run that faults still closes its files (what PRN# wrote stays) and saves --screen."""
