@@ -58,6 +58,8 @@ from .unlinked import link_late, run_unlinked
 _EXTENDED = re.compile(r"\s*([A-Za-z][A-Za-z0-9_]*[0-9_][A-Za-z0-9_]*)\s*=\s*([-+]?(?:\d+\.?\d*|\.\d+))\s*$")
 #: blocks prepared ahead of execution without ``[cpl] lookahead`` (the manual gives no size; docs/decisions.md)
 BLOCK_BUFFER = 20_000
+#: a drain of fewer blocks runs them one by one, not column-wise (bench: cpl_wait_motion; docs/performance.md)
+SMALL_DRAIN = 32
 #: the path control's G codes (nc.kernel.ISO_PATH_CODES): G61 exact stop, G62 continuous path (the
 #: power-on state), one group of the SD(1) table (L2302); G60 is the contour shift here (docs/decisions.md)
 CPL_PATH_CODES = {61: "exact", 62: "continuous"}
@@ -513,11 +515,23 @@ class CplRuntime:
         while self._frozen_due and self._frozen_due[0][0] < first + len(blocks):
             k = max(0, self._frozen_due[0][0] - first)  # an input read before block ``k`` of these was prepared
             if k:
-                execute_segments(self.kernel, plain_segments(blocks[:k], self.row_words), self.execute_block)
+                self.execute_blocks(blocks[:k])
             blocks, first = blocks[k:], first + k
             self._tell_frozen(first)
-        execute_segments(self.kernel, plain_segments(blocks, self.row_words), self.execute_block)
+        self.execute_blocks(blocks)
         self._t_follows = True  # preparation waited for these blocks (t_prep)
+
+    def execute_blocks(self, blocks: list) -> None:
+        """Execute ``blocks`` in order: a few (a WAIT after every block or two) one by one by the kernel, more
+        as runs of plain rows column-wise (the columns cost more to set up than a few blocks take)."""
+        if len(blocks) < SMALL_DRAIN:
+            kernel, execute = self.kernel, self.execute_block
+            for blk in blocks:
+                if kernel.ended:
+                    return
+                execute(blk)
+        else:
+            execute_segments(self.kernel, plain_segments(blocks, self.row_words), self.execute_block)
 
     def prepared_kernel(self):
         """The NC state after every *prepared* block: what CPOS and AXO read (manual §4.2.1, values at
