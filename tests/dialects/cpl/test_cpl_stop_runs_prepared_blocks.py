@@ -208,3 +208,14 @@ def test_a_long_random_loop_stopped_by_the_step_limit_matches_its_prefix(cpl):
     stopped(r_stop, "RUN001", len(moves) + 3)
     assert r_stop["steps"] == setup + 3 * k + 1 and r_stop["motion"]["feed_moves"] == k
     assert {key: r_stop[key] for key in SAME} == {key: r_end[key] for key in SAME}
+
+
+def test_a_sub_program_that_does_not_compile_when_first_called_keeps_the_moves_before(tmp_path, cpl):
+    """EXCL is excluded from linking (CALL ... DIN, §3.3) and calls SUBX by M66: SUBX is linked when first
+    called and does not compile (CPL004). N1 and EXCL's N10 ran before it."""
+    (tmp_path / "EXCL").write_text("N10 G1 X20\nN20 M66\nM30\n")
+    (tmp_path / "SUBX").write_text("10 IF X > 1 THEN\n")
+    r = cpl("N1 G1 X10 F600\n10 CALL EXCL DIN\nM30\n", {"calls": {"M66": "SUBX"}})
+    assert r["error"]["code"] == "CPL004" and r["error"]["file"].endswith("SUBX")
+    assert r["motion"]["feed_moves"] == 2 and r["position"]["X"] == 20.0
+    assert r["cycle_time_s"] == pytest.approx(2.01)

@@ -254,6 +254,8 @@ class CplRuntime:
                         if not isinstance(again.__context__, MemoryError):
                             raise
                         # out of memory already: the run stops at the statement that reached the limit
+            except CompileFailed as e:  # a sub-program linked when first called does not compile
+                raise self.execute_prepared(e) from None
             except Exception as e:  # noqa: BLE001 - the program stopped: the blocks it prepared still run
                 raise self.execute_prepared(self.as_fault(e)) from None
             self.drain()
@@ -261,8 +263,8 @@ class CplRuntime:
             self.kernel.end_program(Src(main, max(1, len(self.linked.main.prog.stmts) and
                                                      self.linked.main.prog.stmts[-1].line)))
         except Exception as e:  # noqa: BLE001 - every failure of generated code becomes a RUNTIME ERROR
-            f = self.as_fault(e)
             self.finish_io_at_fault()
+            f = self.as_fault(e)  # ncvm's own errors (and CompileFailed) are raised again here
             if f.span is None:
                 f.span = Span(main, 1, 1)
             elif f.span.column is None and f.span.file in self.linked.units:  # an NC block the kernel refused
@@ -278,11 +280,12 @@ class CplRuntime:
             return RuntimeFault(e.code, message(e.code, e.message), Span(e.file, max(e.line, 1), 1))
         return self.to_fault(e)
 
-    def execute_prepared(self, stop: RuntimeFault) -> RuntimeFault:
+    def execute_prepared(self, stop: Exception) -> Exception:
         """The program stopped with ``stop`` (a RUNTIME ERROR, the step limit): the NC blocks it prepared
         before were already transferred to execution and run to their end, as they do when the program ends
-        (docs/decisions.md, "A CPL run that stops"). A fault of one of them is earlier in the program and is
-        the one reported; else ``stop``. Running out of memory again keeps ``stop``."""
+        (docs/decisions.md, "A run that stops keeps the blocks it prepared"). A fault of one of them is
+        earlier in the program and is the one reported; else ``stop``. Running out of memory again keeps
+        ``stop``."""
         try:
             self.drain()
         except MemoryError:

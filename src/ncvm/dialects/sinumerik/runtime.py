@@ -289,9 +289,9 @@ class Channel:
 
     def execute_decoded(self, stop: Exception) -> Exception:
         """Decoding stopped with ``stop`` (an alarm, the step limit): the blocks decoded before it were handed
-        to execution and run to their end, as at the program end (docs/decisions.md, "A run that stops"); an
-        alarm of one of them is earlier in the program and is the one returned, else ``stop``. A block
-        waiting for the next one to round its corner stays undone: that block never came."""
+        to execution and run to their end, as at the program end (docs/decisions.md, "A run that stops keeps
+        the blocks it prepared"); an alarm of one of them is earlier in the program and is the one returned,
+        else ``stop``. A block waiting for the next one to round its corner stays undone: it never came."""
         try:
             self.run_buffer()
         except RuntimeFault as earlier:
