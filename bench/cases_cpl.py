@@ -1,4 +1,5 @@
-"""CPL cases: the peer programs loop_arith, loop_motion and subcalls written in CPL, and rs274 on the originals.
+"""CPL cases: the peer programs loop_arith, loop_motion and subcalls written in CPL, and rs274 on the originals;
+wait_motion (a G1 block and a WAIT a pass) has no peer: rs274 has no block buffer to wait for.
 
 Each CPL program does the work of its LinuxCNC peer in bench/peers: the same loop counts,
 the same arithmetic (MOD written as I% - INT(I%/7)*7, CPL has no MOD), the same moves and calls.
@@ -86,6 +87,18 @@ N3 G0 Z10
 M30
 """
 
+WAIT_MOTION = """\
+(wait_motion - 10,000 passes of one computed G1 block and a WAIT: the program reads the executed state each pass)
+N1 G71 G90 G17 G94 F1200
+10 I% = 0
+20 WHILE I% < 10000 DO
+G1 X[I% * 0.01] Y[0.5 * SIN(I% * 3.6)]
+30 WAIT
+40 I% = I% + 1
+50 END
+M30
+"""
+
 FOLDER = WORK / "cpl"
 
 
@@ -98,7 +111,7 @@ def write_programs() -> None:
     FOLDER.mkdir(parents=True, exist_ok=True)
     for name, text in (("loop_arith.cpl", LOOP_ARITH), ("loop_motion.cpl", LOOP_MOTION), ("DRILL", DRILL),
                        ("subcalls.cpl", SUBCALLS), ("loop_arith_real.cpl", real_twin(LOOP_ARITH)),
-                       ("loop_motion_real.cpl", real_twin(LOOP_MOTION))):
+                       ("loop_motion_real.cpl", real_twin(LOOP_MOTION)), ("wait_motion.cpl", WAIT_MOTION)):
         p = FOLDER / name
         if not p.exists() or p.read_text() != text:
             p.write_text(text)
@@ -119,6 +132,7 @@ def cases() -> dict[str, Case]:
         "cpl_loop_arith_real": Case(runner("loop_arith_real.cpl"), 100_000, "iterations/s", setup=write_programs),
         "cpl_loop_motion_real": Case(runner("loop_motion_real.cpl"), 100_000, "G1/s", setup=write_programs),
         "cpl_subcalls": Case(runner("subcalls.cpl"), 20_000, "calls/s", setup=write_programs),
+        "cpl_wait_motion": Case(runner("wait_motion.cpl"), 10_000, "passes/s", setup=write_programs),
         "rs274_loop_arith": rs274_case(PEERS / "loop_arith.ngc", 100_000, "iterations/s"),
         "rs274_loop_motion": rs274_case(PEERS / "loop_motion.ngc", 100_000, "G1/s"),
         "rs274_subcalls": rs274_case(PEERS / "subcalls.ngc", 20_000, "calls/s"),

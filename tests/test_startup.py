@@ -288,3 +288,13 @@ def test_a_run_with_a_few_moves_imports_no_numpy(tmp_path, name, text, options):
     code, modules = loaded(["run", "--state", str(tmp_path / ".ncvm"), *options, name], tmp_path)
     assert code == 0
     assert top(modules, HEAVY) - {"sqlite3"} == set()
+
+
+def test_a_cpl_run_whose_waits_drain_a_few_blocks_imports_no_numpy(tmp_path):
+    """A CPL drain of fewer than SMALL_DRAIN blocks (a WAIT after a few moves, the program end) runs them one by
+    one through the kernel, not as numpy columns (dialects.cpl.runtime.execute_blocks)."""
+    (tmp_path / "p.cpl").write_text("N1 G90 G1 X10 F1000\nN2 G2 X20 Y10 I10 J0\n10 WAIT\n20 P = MPOS(1)\n"
+                                    "N3 G0 Z5\nM30\n")
+    code, modules = loaded(["run", "--state", str(tmp_path / ".ncvm"), "p.cpl"], tmp_path)
+    assert code == 0
+    assert top(modules, HEAVY) - {"sqlite3"} == set()

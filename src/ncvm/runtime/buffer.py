@@ -4,7 +4,8 @@ A control prepares (decodes) blocks ahead of the one its axes execute. CPL calls
 queue, with a look-ahead depth or the block buffer (manual §4.2); the SINUMERIK 800 decodes up to
 N blocks ahead (CL 800 manual L4287-4334, STOP DEC). Either way preparation puts blocks in, and when more wait than the
 buffer holds the oldest execute; a WAIT, STOP DEC or the program end drains it, since what comes
-next needs the executed state.
+next needs the executed state. Execution that stops at a block (its fault, Ctrl-C) ends the buffer: the
+blocks after it never execute, also when the program's stop drains what it prepared.
 
 The buffer is the deque of the waiting blocks itself (the oldest first), so the readers of the
 prepared state (CPL's CPOS, SINUMERIK's programmed spindle speed) iterate it directly, and a put
@@ -58,7 +59,11 @@ class BlockBuffer(deque):
         """Execute the oldest block; the blocks after it still wait while it executes."""
         blk = self.popleft()
         self.executed += 1
-        self.execute(blk)
+        try:
+            self.execute(blk)
+        except BaseException:
+            self.clear()  # execution stopped at this block: the blocks after it never execute
+            raise
 
     def execute_oldest(self, n: int) -> None:
         """Execute the ``n`` oldest blocks (all of them when fewer wait)."""
@@ -73,8 +78,12 @@ class BlockBuffer(deque):
         else:
             blocks = [self.popleft() for _ in range(n)]
         self.executed += len(blocks)
-        with interrupt.block():  # Ctrl-C ends the run after these blocks, not amid their passes
-            run(blocks)
+        try:
+            with interrupt.block():  # Ctrl-C ends the run after these blocks, not amid their passes
+                run(blocks)
+        except BaseException:
+            self.clear()  # execution stopped in these blocks: the ones still waiting never execute
+            raise
 
     def drain(self) -> None:
         """Execute every waiting block (WAIT, STOP DEC, the program end)."""

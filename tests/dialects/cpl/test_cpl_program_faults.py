@@ -129,7 +129,10 @@ def test_only_the_generated_statements_own_operation_is_the_programs_error(state
 
 
 # -- ncvm's own faults ----------------------------------------------------------------------------------
-PROGRAM = "10 X = 1.5\nN20 G1 X[X] Y0 F1000\n30 Y = TAN(X)\n40 WAIT\nN50 G1 X20 M3 S1000\nN60 M30\n"
+#: the first WAIT drains 40 plain blocks (column-wise: planner.add_columns, move_batch), the second one block
+#: (one by one: the kernel, the planner's rows, the recorder's feed; runtime.SMALL_DRAIN)
+PROGRAM = ("10 X = 1.5\n15 FOR I% = 1 TO 40\nN20 G1 X[X] Y[I%] F1000\n25 NEXT I%\n30 Y = TAN(X)\n40 WAIT\n"
+           "N45 G1 X0.5\n46 WAIT\nN50 G1 X20 M3 S1000\nN60 M30\n")
 
 #: a bug of each kind, as ncvm's code would make it: the same operations that are the program's errors when a
 #: generated statement makes them
@@ -147,7 +150,9 @@ TARGETS = [
     ("ncvm.nc.kernel", "NcKernel", "execute"),
     ("ncvm.nc.kernel", "NcKernel", "end_program"),
     ("ncvm.nc.planner", "Planner", "add_columns"),
+    ("ncvm.nc.planner", "Planner", "_plan_rows"),
     ("ncvm.sinks.toolpath", "ToolpathRecorder", "move_batch"),
+    ("ncvm.sinks.toolpath", "ToolpathRecorder", "feed"),
     ("ncvm.dialects.cpl.values", None, "word"),
     ("ncvm.dialects.cpl.builtins", None, "_num"),
 ]

@@ -58,6 +58,8 @@ from .unlinked import link_late, run_unlinked
 _EXTENDED = re.compile(r"\s*([A-Za-z][A-Za-z0-9_]*[0-9_][A-Za-z0-9_]*)\s*=\s*([-+]?(?:\d+\.?\d*|\.\d+))\s*$")
 #: blocks prepared ahead of execution without ``[cpl] lookahead`` (the manual gives no size; docs/decisions.md)
 BLOCK_BUFFER = 20_000
+#: a drain of fewer blocks runs them one by one, not column-wise (bench: cpl_wait_motion; docs/performance.md)
+SMALL_DRAIN = 32
 #: the path control's G codes (nc.kernel.ISO_PATH_CODES): G61 exact stop, G62 continuous path (the
 #: power-on state), one group of the SD(1) table (L2302); G60 is the contour shift here (docs/decisions.md)
 CPL_PATH_CODES = {61: "exact", 62: "continuous"}
@@ -238,35 +240,59 @@ class CplRuntime:
         result: dict = {}
         try:
             try:
-                if self.linked.main.prog.din_only:  # "(DIN)" in its first line: started without linking (§3.3)
-                    run_unlinked(self, main, Path(main).name)
-                else:
-                    result = self.unit(main)((), True)
-            except ControlReset as reset:  # MCOPS(2) on the own channel: the main program is exited
-                self.session.say(str(reset))
-            finally:
                 try:
-                    self.session.variables = self.report(result or self.fault_locals)
-                except MemoryError as again:
-                    if not isinstance(again.__context__, MemoryError):
-                        raise
-                    # out of memory already: the run stops at the statement that reached the limit
+                    if self.linked.main.prog.din_only:  # "(DIN)" in its first line: started without linking (§3.3)
+                        run_unlinked(self, main, Path(main).name)
+                    else:
+                        result = self.unit(main)((), True)
+                except ControlReset as reset:  # MCOPS(2) on the own channel: the main program is exited
+                    self.session.say(str(reset))
+                finally:
+                    try:
+                        self.session.variables = self.report(result or self.fault_locals)
+                    except MemoryError as again:
+                        if not isinstance(again.__context__, MemoryError):
+                            raise
+                        # out of memory already: the run stops at the statement that reached the limit
+            except CompileFailed as e:  # a sub-program linked when first called does not compile
+                raise self.execute_prepared(e) from None
+            except Exception as e:  # noqa: BLE001 - the program stopped: the blocks it prepared still run
+                raise self.execute_prepared(self.as_fault(e)) from None
             self.drain()
             self.io.end_program(png=self.session.options.screen)
             self.kernel.end_program(Src(main, max(1, len(self.linked.main.prog.stmts) and
                                                      self.linked.main.prog.stmts[-1].line)))
-        except RuntimeFault as f:
+        except Exception as e:  # noqa: BLE001 - every failure of generated code becomes a RUNTIME ERROR
             self.finish_io_at_fault()
+            f = self.as_fault(e)  # ncvm's own errors (and CompileFailed) are raised again here
             if f.span is None:
                 f.span = Span(main, 1, 1)
             elif f.span.column is None and f.span.file in self.linked.units:  # an NC block the kernel refused
                 f.span = Span(f.span.file, f.span.line, self.first_column(f.span.file, f.span.line))
-            raise
-        except DeclError as e:
-            raise RuntimeFault(e.code, message(e.code, e.message), Span(e.file, max(e.line, 1), 1)) from None
-        except Exception as e:  # noqa: BLE001 - every failure of generated code becomes a RUNTIME ERROR
-            self.finish_io_at_fault()
-            raise self.to_fault(e) from None
+            raise f from None
+
+    def as_fault(self, e: Exception) -> RuntimeFault:
+        """The RUNTIME ERROR that ``e`` is (a declaration error of the permanents included); ncvm's own
+        errors are raised again (:meth:`to_fault`)."""
+        if isinstance(e, RuntimeFault):
+            return e
+        if isinstance(e, DeclError):
+            return RuntimeFault(e.code, message(e.code, e.message), Span(e.file, max(e.line, 1), 1))
+        return self.to_fault(e)
+
+    def execute_prepared(self, stop: Exception) -> Exception:
+        """The program stopped with ``stop`` (a RUNTIME ERROR, the step limit): the NC blocks it prepared
+        before were already transferred to execution and run to their end, as they do when the program ends
+        (docs/decisions.md, "A run that stops keeps the blocks it prepared"). A fault of one of them is
+        earlier in the program and is the one reported; else ``stop``. Running out of memory again keeps
+        ``stop``."""
+        try:
+            self.drain()
+        except MemoryError:
+            return stop
+        except Exception as e:  # noqa: BLE001 - a prepared block's own fault, reported in place of ``stop``
+            return self.as_fault(e)
+        return stop
 
     def finish_io_at_fault(self) -> None:
         """A run that faults still closes its files (what PRN# wrote stays) and saves --screen."""
@@ -492,11 +518,23 @@ class CplRuntime:
         while self._frozen_due and self._frozen_due[0][0] < first + len(blocks):
             k = max(0, self._frozen_due[0][0] - first)  # an input read before block ``k`` of these was prepared
             if k:
-                execute_segments(self.kernel, plain_segments(blocks[:k], self.row_words), self.execute_block)
+                self.execute_blocks(blocks[:k])
             blocks, first = blocks[k:], first + k
             self._tell_frozen(first)
-        execute_segments(self.kernel, plain_segments(blocks, self.row_words), self.execute_block)
+        self.execute_blocks(blocks)
         self._t_follows = True  # preparation waited for these blocks (t_prep)
+
+    def execute_blocks(self, blocks: list) -> None:
+        """Execute ``blocks`` in order: a few (a WAIT after every block or two) one by one by the kernel, more
+        as runs of plain rows column-wise (the columns cost more to set up than a few blocks take)."""
+        if len(blocks) < SMALL_DRAIN:
+            kernel, execute = self.kernel, self.execute_block
+            for blk in blocks:
+                if kernel.ended:
+                    return
+                execute(blk)
+        else:
+            execute_segments(self.kernel, plain_segments(blocks, self.row_words), self.execute_block)
 
     def prepared_kernel(self):
         """The NC state after every *prepared* block: what CPOS and AXO read (manual §4.2.1, values at

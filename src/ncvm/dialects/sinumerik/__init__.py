@@ -13,7 +13,7 @@ import re
 from dataclasses import dataclass
 from pathlib import Path
 
-from ...diagnostics import CompileFailed, Diagnostic, Span
+from ...diagnostics import CompileFailed, Diagnostic, RuntimeFault, Span
 from ...machine.files import heads
 from ...nc.canon import NOBODY, Src
 from ...runtime.codegen import PySource
@@ -161,7 +161,10 @@ class Sin800Dialect(Dialect):
         name = f"%{unit.program.kind}{unit.program.number}" if unit.program.kind else Path(path).name
         initial = list(channel.R)
         try:
-            channel.run_unit(unit, name, None)
+            try:
+                channel.run_unit(unit, name, None)
+            except (RuntimeFault, CompileFailed, MemoryError) as stop:
+                raise channel.execute_decoded(stop) from None
             channel.stop_dec()  # the end of the program: every decoded block executes
             if not session.kernel.ended and not channel.halted:
                 last = unit.program.blocks[-1].line if unit.program.blocks else 1

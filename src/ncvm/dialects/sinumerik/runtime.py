@@ -287,6 +287,21 @@ class Channel:
         """Execute every decoded block still waiting (decoding needs the executed state)."""
         self.buffer.drain()
 
+    def execute_decoded(self, stop: Exception) -> Exception:
+        """Decoding stopped with ``stop`` (an alarm, the step limit): the blocks decoded before it were handed
+        to execution and run to their end, as at the program end (docs/decisions.md, "A run that stops keeps
+        the blocks it prepared"); an alarm of one of them is earlier in the program and is the one returned,
+        else ``stop``. A block waiting for the next one to round its corner stays undone: it never came."""
+        try:
+            self.run_buffer()
+        except RuntimeFault as earlier:
+            return earlier
+        except Cl800Error as e:
+            return RuntimeFault("CL800", f"CL 800 error: {e}")
+        except MemoryError:
+            return stop
+        return stop
+
     def stop_dec(self) -> None:
         """@714 STOP DEC: decoding waits until the buffer is empty; R parameters loaded by the PLC or by
         MEAS M meanwhile become visible to the blocks that follow."""
