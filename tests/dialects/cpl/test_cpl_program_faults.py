@@ -146,8 +146,8 @@ BUGS = {
 TARGETS = [
     ("ncvm.nc.kernel", "NcKernel", "execute"),
     ("ncvm.nc.kernel", "NcKernel", "end_program"),
-    ("ncvm.nc.planner", "Planner", "add_columns"),
-    ("ncvm.sinks.toolpath", "ToolpathRecorder", "move_batch"),
+    ("ncvm.nc.planner", "Planner", "stop"),  # a short run's moves are planned at the exact stop (WAIT, M3)
+    ("ncvm.sinks.toolpath", "ToolpathRecorder", "feed"),  # a short run's moves come one by one
     ("ncvm.dialects.cpl.values", None, "word"),
     ("ncvm.dialects.cpl.builtins", None, "_num"),
 ]
@@ -202,8 +202,8 @@ SITECUSTOMIZE = textwrap.dedent('''
 
 @pytest.mark.parametrize("target, kind", [
     ("ncvm.nc.kernel:NcKernel:execute:TypeError", "TypeError"),
-    ("ncvm.nc.planner:Planner:add_columns:ValueError", "ValueError"),
-    ("ncvm.sinks.toolpath:ToolpathRecorder:move_batch:KeyError", "KeyError"),
+    ("ncvm.nc.planner:Planner:stop:ValueError", "ValueError"),
+    ("ncvm.sinks.toolpath:ToolpathRecorder:feed:KeyError", "KeyError"),
     ("ncvm.dialects.cpl.values::word:IndexError", "IndexError"),
     ("ncvm.dialects.cpl.builtins::_num:AttributeError", "AttributeError"),
 ])

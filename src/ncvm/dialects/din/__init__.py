@@ -11,7 +11,7 @@ import re
 from ...diagnostics import CompileFailed, RuntimeFault, UsageError
 from ...nc import blockskip, threads
 from ...nc.axiswords import din_missing_axes
-from ...nc.block import COLUMNS_FROM, PlainRun, din_stretches, file_stretches, text_stretches
+from ...nc.block import COLUMNS_FROM, PlainRun, columnar, din_stretches, file_stretches, text_stretches
 from ...nc.canon import Src
 from ...nc.cycles import CannedCycles
 from ...nc.plainrun import execute_columns
@@ -136,8 +136,8 @@ class DinDialect(Dialect):
         try:
             for seg in segments:
                 if isinstance(seg, PlainRun):
-                    last_src = Src(path, int(seg.lines[-1]))
-                    if hook is None:
+                    last_src = Src(path, seg.line(len(seg) - 1))
+                    if hook is None and columnar(len(seg)):
                         # a run of plain motion blocks, executed column-wise up to the step limit
                         count = min(len(seg), limit - done)
                         lo = 0
@@ -147,9 +147,9 @@ class DinDialect(Dialect):
                             lo = bad + 1
                         done += count - lo
                         if count < len(seg):
-                            counter.runaway(path, int(seg.lines[count]))
+                            counter.runaway(path, seg.line(count))
                         continue
-                    blocks = ((blk, False) for blk in seg.blocks())
+                    blocks = ((blk, False) for blk in seg.blocks())  # a short run, or stepped
                 else:
                     blocks = (seg,)
                     last_src = seg[0].src
