@@ -131,7 +131,7 @@ def test_drilling_program_holds_no_columns(tmp_path):
     is made for them (their columns are made only when asked for)."""
     segments, _ = read_din_segments("p.ngc", drilling(100))
     runs = [s for s in segments if isinstance(s, PlainRun)]
-    assert len(runs) == 102 and all(s._lines is None and s.origin is not None for s in runs)
+    assert len(runs) == 102 and all(s._g is None and s.matches is not None for s in runs)
 
 
 @pytest.mark.parametrize("bad, code", [("G1 X5 Y5 F0", "NC006"), ("G2 X5 Y5 I1 J0 F100", "NC002"),

@@ -226,26 +226,31 @@ class PlainRun(Record):
     executes a run column-wise (:mod:`ncvm.nc.plainrun`); :meth:`block` gives
     any one of them as the line parser reads it.
 
-    A short run (fewer than :data:`RUN_COLUMNS_FROM` blocks, :func:`columnar`) is kept as its ``origin`` alone
-    and executed block by block: its columns are made from it only when asked for (issue 18: numpy's fixed
-    cost per column operation made a drilling program's runs of four blocks 16 times slower than rs274).
+    A short run (fewer than :data:`RUN_COLUMNS_FROM` blocks, :func:`columnar`) is executed block by block and
+    kept as what it was made of: the ``matches`` of its lines (their groups of ``_PLAIN_LINE``) when it was
+    read from text, else its ``origin``; its columns are made only when asked for (issue 18: numpy's fixed
+    cost per column operation made a drilling program's runs of four blocks 16 times slower than rs274, and
+    Blocks held for a whole program kept the garbage collector busy: strings in tuples it leaves alone).
     """
 
-    __slots__ = ("file", "_lines", "_g", "_words", "source", "origin", "source_first")
+    __slots__ = ("file", "_lines", "_g", "_words", "source", "origin", "source_first", "matches")
 
-    def __init__(self, file: str, lines: np.ndarray | None, g: np.ndarray | None, words: dict | None,
-                 source: list | None = None, origin: list | None = None, source_first: int = 0):
+    def __init__(self, file: str, lines, g: np.ndarray | None, words: dict | None, source: list | None = None,
+                 origin: list | None = None, source_first: int = 0, matches: list | None = None):
         self.file = file
-        self._lines = lines  # int, physical line of each block (None: made from origin when asked for)
-        self._g = g  # int, motion G code 0..3 or -1
+        #: physical line of each block: an int column, a range (a short run read from text), or None (a
+        #: short run made of its origin)
+        self._lines = lines
+        self._g = g  # int, motion G code 0..3 or -1 (None: not made yet)
         self._words = words  # address -> float column
         self.source = source  # the lines of the stretch it was read from, when it was read from text
         self.origin = origin  # the plain rows (or Blocks) the run was made of, when it was made of them
         self.source_first = source_first  # the program lines before source[0]
+        self.matches = matches  # a short run read from text: the regex groups of its lines
 
     @property
     def lines(self) -> np.ndarray:
-        if self._lines is None:
+        if self._g is None:
             self._columns()
         return self._lines
 
@@ -257,13 +262,13 @@ class PlainRun(Record):
 
     @property
     def words(self) -> dict:
-        if self._words is None:
+        if self._g is None:
             self._columns()
         return self._words
 
     def _columns(self) -> None:
-        """The columns of a run kept as its ``origin`` (plain rows or Blocks)."""
-        rows = [o if o.__class__ is tuple else block_row(o) for o in self.origin]
+        """The columns of a short run, from what it was made of."""
+        rows = [o if o.__class__ is tuple else block_row(o) for o in (self.origin or self.blocks())]
         n = len(rows)
         self._lines = np.fromiter(map(row_line, rows), np.int64, n)
         self._g = np.fromiter(map(row_g, rows), np.int64, n)
@@ -284,20 +289,26 @@ class PlainRun(Record):
         if self.origin is not None:
             return as_block(self.origin[i])
         line = int(self._lines[i])
+        if self.matches is not None:
+            return next(_blocks(self.file, self.matches[i:i + 1], line))
         return parse_din_line(self.source[line - 1 - self.source_first], Src(self.file, line))
 
     def blocks(self):
         if self.origin is not None:
             return map(as_block, self.origin)
+        if self.matches is not None:
+            return _blocks(self.file, self.matches, self._lines[0])
         return (self.block(i) for i in range(len(self)))
 
     def head(self, n: int) -> "PlainRun":
         """The first ``n`` blocks as a run of their own."""
         origin = self.origin[:n] if self.origin is not None else None
-        if self._lines is None:
-            return PlainRun(self.file, None, None, None, self.source, origin, self.source_first)
-        return PlainRun(self.file, self._lines[:n], self._g[:n], {a: col[:n] for a, col in self._words.items()},
-                        self.source, origin, self.source_first)
+        lines = self._lines[:n] if self._lines is not None else None
+        if self._g is None:
+            return PlainRun(self.file, lines, None, None, self.source, origin, self.source_first,
+                            self.matches[:n] if self.matches is not None else None)
+        return PlainRun(self.file, lines, self._g[:n], {a: col[:n] for a, col in self._words.items()}, self.source,
+                        origin, self.source_first)
 
 
 #: a run of fewer plain blocks than this is kept as Blocks and executed block by block through the kernel
@@ -419,17 +430,17 @@ def din_stretches(path: str, pieces, columns_from: int = 0):
             yield DinStretch(segments, diags, lines, first, len(chunk))
             first += len(lines)
             continue
-        columns = list(zip(*re.findall(_PLAIN_LINE, chunk if chunk.isupper() else chunk.upper(), re.M)
-                             [:len(lines)]))
+        found = re.findall(_PLAIN_LINE, chunk if chunk.isupper() else chunk.upper(), re.M)[:len(lines)]
+        columns = list(zip(*found))
         segments, diags = [], []
         start = 0
         for k in [k for k, rest in enumerate(columns[-1], 1) if rest]:
             if k - 1 > start:
-                _add_run(segments, path, lines, columns, start, k - 1, first)
+                _add_run(segments, path, lines, found, columns, start, k - 1, first)
             start = k
             _read_general(segments, diags, path, first + k, lines[k - 1])
         if len(lines) > start:
-            _add_run(segments, path, lines, columns, start, len(lines), first)
+            _add_run(segments, path, lines, found, columns, start, len(lines), first)
         yield DinStretch(segments, diags, lines, first, len(chunk))
         first += len(lines)
 
@@ -447,11 +458,13 @@ def _read_general(segments, diags, path: str, lineno: int, line: str) -> None:
         segments.append((blk, skip))
 
 
-def _add_run(segments, path: str, lines: list, columns, lo: int, hi: int, first: int) -> None:
-    """Rows lo..hi-1 of a stretch's ``columns`` and ``lines`` (program lines first+lo+1..first+hi), all plain,
-    as a PlainRun: of columns, or of Blocks when it is short (:func:`columnar`)."""
+def _add_run(segments, path: str, lines: list, found: list, columns, lo: int, hi: int, first: int) -> None:
+    """Rows lo..hi-1 of a stretch's regex matches ``found`` (as ``columns``) and ``lines`` (program lines
+    first+lo+1..first+hi), all plain, as a PlainRun: of columns, or of Blocks when it is short
+    (:func:`columnar`)."""
     if not columnar(hi - lo):
-        segments.append(PlainRun(path, None, None, None, lines, _blocks(path, columns, lo, hi, first), first))
+        segments.append(PlainRun(path, range(first + lo + 1, first + hi + 1), None, None, lines, None, first,
+                                 found[lo:hi]))
         return
     words = {a: _floats(col[lo:hi]) for a, col in zip(PLAIN_WORDS, columns[2:])}
     g = np.array(list(map(_MOTION.__getitem__, columns[1][lo:hi])), dtype=np.int64)
@@ -459,14 +472,26 @@ def _add_run(segments, path: str, lines: list, columns, lo: int, hi: int, first:
                              source_first=first))
 
 
-def _blocks(path: str, columns, lo: int, hi: int, first: int) -> list[Block]:
-    """Rows lo..hi-1 of a stretch's ``columns`` as the Blocks :func:`parse_din_line` makes of their lines (the
-    words in the order the lines write them, PLAIN_WORDS)."""
-    out = []
-    for k, (n, g, *cells) in enumerate(zip(*(col[lo:hi] for col in columns[:9])), first + lo + 1):
-        out.append(Block((_MOTION[g],) if g else (), (), {a: float(v) for a, v in zip(PLAIN_WORDS, cells) if v},
-                         int(n) if n else None, None, Src(path, k)))
-    return out
+def _blocks(path: str, found: list, line: int):
+    """The regex matches ``found`` of plain lines from program line ``line`` on as the Blocks
+    :func:`parse_din_line` makes of them (the words in the order the lines write them, PLAIN_WORDS)."""
+    for k, (n, g, x, y, z, i, j, kk, f, _rest) in enumerate(found, line):
+        words = {}  # unrolled: a comprehension's call costs a third of a block
+        if x:
+            words["X"] = float(x)
+        if y:
+            words["Y"] = float(y)
+        if z:
+            words["Z"] = float(z)
+        if i:
+            words["I"] = float(i)
+        if j:
+            words["J"] = float(j)
+        if kk:
+            words["K"] = float(kk)
+        if f:
+            words["F"] = float(f)
+        yield Block((_MOTION[g],) if g else (), (), words, int(n) if n else None, None, Src(path, k))
 
 
 def _floats(cells: tuple) -> np.ndarray:
