@@ -40,7 +40,7 @@ import math
 from struct import pack as _pack
 
 from ..lazy import lazy
-from .dynamics import lengths_columns, path_limits, straight_limits_columns, trapezoid_time, trapezoid_time_columns
+from .dynamics import lengths_columns, straight_limits_columns, trapezoid_time, trapezoid_time_columns
 
 np = lazy("numpy")
 
@@ -191,7 +191,7 @@ class Planner:
         rows, width, dyn = self.rows, self.width, self.dyn
         length, v, a, flags, u_in, u_out = [], [], [], [], [], []
         for i in range(0, len(rows), width):
-            ln, vi, ai, f = rows[i:i + 4]
+            ln, vi, ai, f = rows[i], rows[i + 1], rows[i + 2], rows[i + 3]
             u = rows[i + 4:i + width]
             if f < 0.0:  # an arc's end tangent, in the row after its own
                 u_out[-1] = u
@@ -203,8 +203,15 @@ class Planner:
                 ln = math.sqrt(ln)
                 rapid = f == POSITIONING
                 inv = 1.0 / ln  # the shares as straight_limits_columns makes them: |d| * (1 / length)
-                vi, ai = path_limits([d * inv for d in u], 1.0, math.inf if rapid else vi / 60.0,
-                                     dyn.rapid if rapid else dyn.max_feed, dyn.accel)
+                # path_limits of the shares (length 1), written out
+                vi, ai = math.inf if rapid else vi / 60.0, math.inf
+                for d, vmax, amax in zip(u, dyn.rapid if rapid else dyn.max_feed, dyn.accel):
+                    share = abs(d * inv)
+                    if share:
+                        if vmax < vi * share:
+                            vi = vmax / share
+                        if amax < ai * share:
+                            ai = amax / share
                 u = [d / ln for d in u]
             length.append(ln)
             v.append(vi)
