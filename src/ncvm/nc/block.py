@@ -17,8 +17,8 @@ from typing import NamedTuple
 from ..diagnostics import Diagnostic, Span
 from ..lazy import lazy
 from ..records import Record
+from ..source import WORD_DECADES, stretches, too_many_decades, word_number
 from ..source import lines as program_lines
-from ..source import stretches, too_many_decades, word_number
 from .canon import Src
 
 np = lazy("numpy")
@@ -141,7 +141,7 @@ def parse_din_line(text: str, src: Src) -> Block | None:
     words: dict[str, float] = {}
     nno = None
     for letter, num in WORD.findall(s, i):
-        if word_number(num) is None:
+        if len(num) > WORD_DECADES and word_number(num) is None:  # a shorter number has fewer digits
             col = next(mt.start(1) for mt in WORD.finditer(s, i) if mt.group(2) == num) + 1
             raise DinSyntaxError(col_map[col - 1] + 1 if col_map else col, too_many_decades(letter))
         if letter == "G":

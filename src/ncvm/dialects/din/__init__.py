@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import os
 import re
+from itertools import islice
 
 from ...diagnostics import CompileFailed, RuntimeFault, UsageError
 from ...nc import blockskip, threads
@@ -137,19 +138,23 @@ class DinDialect(Dialect):
             for seg in segments:
                 if isinstance(seg, PlainRun):
                     last_src = Src(path, seg.line(len(seg) - 1))
-                    if hook is None and columnar(len(seg)):
-                        # a run of plain motion blocks, executed column-wise up to the step limit
+                    if hook is None:  # a run of plain motion blocks (none ends the program), up to the step limit
                         count = min(len(seg), limit - done)
-                        lo = 0
-                        while (bad := execute_columns(kernel, seg, lo, count)) is not None:
-                            done += bad - lo + 1
-                            kernel.execute(seg.block(bad))  # left to the kernel: it may fault
-                            lo = bad + 1
-                        done += count - lo
+                        if columnar(len(seg)):  # column-wise
+                            lo = 0
+                            while (bad := execute_columns(kernel, seg, lo, count)) is not None:
+                                done += bad - lo + 1
+                                kernel.execute(seg.block(bad))  # left to the kernel: it may fault
+                                lo = bad + 1
+                            done += count - lo
+                        else:  # a short run: block by block, each counted before it runs (it may fault)
+                            for blk in islice(seg.blocks(), count):
+                                done += 1
+                                kernel.execute(blk)
                         if count < len(seg):
                             counter.runaway(path, seg.line(count))
                         continue
-                    blocks = ((blk, False) for blk in seg.blocks())  # a short run, or stepped
+                    blocks = ((blk, False) for blk in seg.blocks())  # stepped
                 else:
                     blocks = (seg,)
                     last_src = seg[0].src
