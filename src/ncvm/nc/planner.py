@@ -165,7 +165,9 @@ class Planner:
         if self.blocks:
             self._plan(None)
         elif self.rows:
-            if len(self.rows) < SMALL * self.width:
+            if len(self.rows) == self.width and self.entry2 == 0.0:
+                self._plan_one()  # one move from rest to rest: a drilling cycle's plunge before its dwell
+            elif len(self.rows) < SMALL * self.width:
                 self._plan_rows()
             else:
                 self._plan(None)
@@ -184,6 +186,15 @@ class Planner:
         clock.settle(t)
         speeds = [math.sqrt(x) * 60.0 for x in w]
         self.canon.timing(times, speeds[:-1], speeds[1:])
+
+    def _plan_one(self) -> None:
+        """:meth:`_plan_rows` of a single straight move from rest (no junction: it ends at rest too)."""
+        length, v, a = self._row_moves()[:3]
+        self.rows.clear()
+        t = trapezoid_time(length[0], v[0], a[0])  # blended_time from rest to rest
+        clock = self.clock
+        clock.settle(clock.settled + t)
+        self.canon.timing([t], [0.0], [0.0])
 
     def _row_moves(self) -> tuple[list, ...]:
         """The moves of ``rows`` as lists of fields (what :meth:`_materialise` makes an array of): an arc's end
