@@ -16,6 +16,10 @@ move order); ``tests/nc/test_plain_run.py`` holds the two paths side by side.
 A block that would fault (G1 without feed, an arc whose end lies on another
 radius, an arc without centre words) is left to the caller, who hands it to
 :meth:`NcKernel.execute`, so the fault and its message are the kernel's own.
+
+A run shorter than :data:`~ncvm.nc.block.RUN_COLUMNS_FROM` blocks is not worth its columns (a few dozen
+numpy calls whatever its length): it is executed block by block (:func:`~ncvm.nc.block.columnar`), with the
+same results to the last bit (``tests/nc/test_short_runs.py``).
 """
 
 from __future__ import annotations
