@@ -16,6 +16,11 @@ child process, alternating the two, and takes the child's own CPU time and peak 
   ``proc_din_check_500k_memory``: ``ncvm check`` of that file;
 - ``proc_sympas_2m_moves_plot_memory``: the rw_SymPas 2,000,000 moves with ``--plot`` (a PNG): the plot's
   points are thinned as the moves come and the drawing's cost is bounded by its cap of points;
+- ``proc_din_drill_100k``: a 100,000-line DIN bolt circle as CAM writes it (20,000 holes: per hole a positioning,
+  a plunge, a dwell, a retract; runs of four plain blocks between two exact stops) and rs274 on it;
+- ``proc_sin800_drill_l81_20k``: 20,000 holes drilled by a SINUMERIK program with G81 (the manual's deep-hole
+  cycle L81, examples/cl800/L81.spf: 15 moves and 11 dwells a hole) and rs274 on the flat G-code ncvm writes
+  for it (``--gcode``, written once: the same moves and dwells);
 - with ``run.py --large`` only: ``proc_<dialect>_10m_moves_memory`` (10,000,000 computed G1 moves),
   ``proc_sympas_10m_moves_plot_memory`` (the same with ``--plot``),
   ``proc_din_flat_10m_memory`` (a 10,000,000-line flat DIN file, 340 MB, and rs274 on it) and
@@ -25,6 +30,7 @@ child process, alternating the two, and takes the child's own CPU time and peak 
 from __future__ import annotations
 
 import json
+import math
 import subprocess
 import sys
 from pathlib import Path
@@ -36,7 +42,9 @@ LOOP = 300_000
 MOVES = 2_000_000
 FLAT_LINES = 500_000
 LARGE = 10_000_000  # moves and lines of the opt-in cases (run.py --large)
+DRILL_HOLES = 20_000  # holes of the drilling cases (the DIN file: 5 lines a hole)
 STATE = WORK / ".ncvm-proc"
+EXAMPLES = PEERS.parent.parent / "examples"
 
 CPL_LOOP = """\
 (loop_arith - {n:,} WHILE iterations of parameter arithmetic, as peers/loop_arith.ngc, {kind} variables)
@@ -79,6 +87,40 @@ begin
   end;
 end.
 """
+
+
+def drilling_din(holes: int) -> str:
+    """A flat DIN bolt circle as a CAM system writes it: per hole a positioning, a plunge, a dwell, a retract."""
+    lines = ["G17 G21 G90 G94", "G0 X0 Y0 Z50"]
+    for i in range(holes):
+        a = math.radians(i * 360 / holes)
+        lines += [f"G0 X{40 * math.cos(a):.4f} Y{40 * math.sin(a):.4f}", "G0 Z2", "G1 Z-12 F150", "G4 P0.5", "G0 Z2"]
+    return "\n".join(lines + ["M2"]) + "\n"
+
+
+def drilling_sin800(holes: int) -> str:
+    """The same bolt circle drilled with G81 (L81: the manual's deep-hole cycle, its transfer parameters R22-R28
+    as tests/dialects/sinumerik/test_drilling_cycles.py sets them)."""
+    lines = ["%MPF9004", "N10 G17 G90 G94 S1000 M3 F100", "N20 G0 X0 Y0 Z50",
+             "N30 R22=2 R24=2 R25=5 R26=-14 R27=0.5 R28=0.25"]
+    for i in range(holes):
+        a = math.radians(i * 360 / holes)
+        lines.append(f"{'G81 ' if i == 0 else ''}X{40 * math.cos(a):.3f} Y{40 * math.sin(a):.3f}")
+    return "\n".join(lines + ["G80", "M30"]) + "\n"
+
+
+def write_drilling() -> None:
+    """The drilling programs, and the flat G-code of the SINUMERIK one for rs274 (written by ncvm once)."""
+    write_programs()
+    _write(f"drill_{DRILL_HOLES * 5 // 1000}k.ngc", drilling_din(DRILL_HOLES))
+    folder = WORK / "drill_l81"
+    folder.mkdir(exist_ok=True)
+    _write("drill_l81/L81.spf", (EXAMPLES / "cl800" / "L81.spf").read_text())
+    _write("drill_l81/drill.mpf", drilling_sin800(DRILL_HOLES))
+    flat = folder / "drill_flat.ngc"
+    if not flat.exists() or flat.stat().st_mtime < (folder / "drill.mpf").stat().st_mtime:
+        subprocess.run(ncvm_run("drill_l81/drill.mpf", "-d", "sin800", "--gcode", str(flat)), check=True,
+                       stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
 
 
 def _write(name: str, text: str) -> None:
@@ -187,6 +229,12 @@ def cases() -> dict[str, Case]:
                                                           expect_moves=MOVES), MOVES, "G1/s", repeat=1),
         "proc_din_flat_500k_memory": case(paired(ncvm_run("flat_500k.ngc", "-d", "din"), WORK / "flat_500k.ngc"),
                                           FLAT_LINES, "lines/s", repeat=1),
+        "proc_din_drill_100k": Case(paired(ncvm_run(f"drill_{DRILL_HOLES * 5 // 1000}k.ngc", "-d", "din"),
+                                           WORK / f"drill_{DRILL_HOLES * 5 // 1000}k.ngc"), DRILL_HOLES * 5, "lines/s",
+                                    setup=write_drilling),
+        "proc_sin800_drill_l81_20k": Case(paired(ncvm_run("drill_l81/drill.mpf", "-d", "sin800"),
+                                                 WORK / "drill_l81" / "drill_flat.ngc"), DRILL_HOLES, "holes/s",
+                                          setup=write_drilling),
         "proc_din_check_500k_memory": case(paired(NCVM + ["check", str(WORK / "flat_500k.ngc")], None), FLAT_LINES,
                                            "lines/s", repeat=1),
         **{f"proc_{d}_10m_moves_memory": large_case(paired(ncvm_run(f"moves_10m.{ext}", "-d", d), None,

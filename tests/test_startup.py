@@ -279,11 +279,13 @@ def test_python_m_ncvm_and_the_console_script_start_through_ncvm_startup():
     ("p.ngc", "G1 X10 F100\nM2\n", ["--json"]),
     ("p.ngc", "G90 G64 F2000\nG0 X5 Y5\nG1 X10\nG2 X20 Y5 I5 J0\nG1 Z-2\nM3 S500\nG1 X0\nM2\n", []),
     ("p.mpf", "%MPF1\nN10 G64 G1 G90 X10 F3000\nN20 X20 Y5\nN30 G2 X30 Y5 I5 J0\nM30\n", []),
+    ("p.cpl", "N1 G71 G90 G17 F1000\nN10 G1 X10 Y5\nN20 G1 X20\nN30 G0 Z5\nM30\n", []),
+    ("p.cpl", "10 A% = 0\n20 WHILE A% < 5 DO\nN30 G1 X[A%] Y[A% * 2] F1000\n40 A% = A% + 1\n50 END\nM30\n", []),
 ])
 def test_a_run_with_a_few_moves_imports_no_numpy(tmp_path, name, text, options):
     """A few moves are planned (nc.planner) and settled (sinks.toolpath: totals, soft limits, work bounds) in
-    plain Python: numpy's import would be most of such a run's start-up. (A CPL program's block buffer still
-    runs its plain blocks as columns, nc.plainrun: numpy.)"""
+    plain Python: numpy's import would be most of such a run's start-up. A CPL program's block buffer runs a
+    short run of plain blocks block by block (nc.block.columnar), so its few moves need no numpy either."""
     (tmp_path / name).write_text(text)
     code, modules = loaded(["run", "--state", str(tmp_path / ".ncvm"), *options, name], tmp_path)
     assert code == 0
@@ -291,7 +293,7 @@ def test_a_run_with_a_few_moves_imports_no_numpy(tmp_path, name, text, options):
 
 
 def test_a_cpl_run_whose_waits_drain_a_few_blocks_imports_no_numpy(tmp_path):
-    """A CPL drain of fewer than SMALL_DRAIN blocks (a WAIT after a few moves, the program end) runs them one by
+    """A CPL drain of fewer than RUN_COLUMNS_FROM blocks (nc.block.columnar) (a WAIT after a few moves, the program end) runs them one by
     one through the kernel, not as numpy columns (dialects.cpl.runtime.execute_blocks)."""
     (tmp_path / "p.cpl").write_text("N1 G90 G1 X10 F1000\nN2 G2 X20 Y10 I10 J0\n10 WAIT\n20 P = MPOS(1)\n"
                                     "N3 G0 Z5\nM30\n")

@@ -151,3 +151,34 @@ def test_a_few_moves_planned_in_a_fresh_interpreter_import_no_numpy():
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
     assert out.returncode == 0, out.stderr
     assert out.stdout.strip() == "False"
+
+
+@pytest.mark.parametrize("model", [LOOKAHEAD, REST])
+@pytest.mark.parametrize("seed", range(60))
+def test_a_single_move_flushed_from_rest_equals_the_numpy_plan(seed, model):
+    """A flush of one move (a drilling cycle's plunge before its dwell, issue 18) is timed by ``_plan_one``:
+    the numpy plan's time, speeds and clock to the last bit."""
+    out = []
+    for stop in (True, False):
+        rng = random.Random(seed)
+        timings, clock = Timings(), Clock(rng.uniform(0, 99))
+        planner = Planner(clock, timings, DYN, model=model)
+        add_random(planner, rng, 1)
+        if len(planner.rows) != planner.width:  # an arc (two rows): the general plan
+            continue
+        if stop:
+            planner.stop()  # _plan_one
+        else:
+            planner._plan(None)
+        out.append((timings.times, timings.entry, timings.exit, clock.settled))
+    assert len(out) in (0, 2) and (not out or out[0] == out[1])
+
+
+def test_a_single_move_flush_takes_the_short_path(monkeypatch):
+    timings = Timings()
+    planner = Planner(Clock(), timings, DYN)
+    planner.rows += (-1.0, 600.0, 0.0, 0, 0.0, 0.0, -14.0)
+    calls = []
+    monkeypatch.setattr(Planner, "_plan_rows", lambda self: calls.append("rows"))  # not reached
+    planner.stop()
+    assert calls == [] and timings.kinds == [list] and len(timings.times) == 1 and planner.rows == []

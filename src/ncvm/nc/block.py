@@ -17,8 +17,8 @@ from typing import NamedTuple
 from ..diagnostics import Diagnostic, Span
 from ..lazy import lazy
 from ..records import Record
+from ..source import WORD_DECADES, stretches, too_many_decades, word_number
 from ..source import lines as program_lines
-from ..source import stretches, too_many_decades, word_number
 from .canon import Src
 
 np = lazy("numpy")
@@ -141,7 +141,7 @@ def parse_din_line(text: str, src: Src) -> Block | None:
     words: dict[str, float] = {}
     nno = None
     for letter, num in WORD.findall(s, i):
-        if word_number(num) is None:
+        if len(num) > WORD_DECADES and word_number(num) is None:  # a shorter number has fewer digits
             col = next(mt.start(1) for mt in WORD.finditer(s, i) if mt.group(2) == num) + 1
             raise DinSyntaxError(col_map[col - 1] + 1 if col_map else col, too_many_decades(letter))
         if letter == "G":
@@ -225,37 +225,102 @@ class PlainRun(Record):
     a block has no such word; ``g`` is the motion G code or -1. The kernel
     executes a run column-wise (:mod:`ncvm.nc.plainrun`); :meth:`block` gives
     any one of them as the line parser reads it.
+
+    A short run (fewer than :data:`RUN_COLUMNS_FROM` blocks, :func:`columnar`) is executed block by block and
+    kept as what it was made of: the ``matches`` of its lines (their groups of ``_PLAIN_LINE``) when it was
+    read from text, else its ``origin``; its columns are made only when asked for (issue 18: numpy's fixed
+    cost per column operation made a drilling program's runs of four blocks 16 times slower than rs274, and
+    Blocks held for a whole program kept the garbage collector busy: strings in tuples it leaves alone).
     """
 
-    __slots__ = ("file", "lines", "g", "words", "source", "origin", "source_first")
+    __slots__ = ("file", "_lines", "_g", "_words", "source", "origin", "source_first", "matches")
 
-    def __init__(self, file: str, lines: np.ndarray, g: np.ndarray, words: dict, source: list | None = None,
-                 origin: list | None = None, source_first: int = 0):
+    def __init__(self, file: str, lines, g: np.ndarray | None, words: dict | None, source: list | None = None,
+                 origin: list | None = None, source_first: int = 0, matches: list | None = None):
         self.file = file
-        self.lines = lines  # int, physical line of each block
-        self.g = g  # int, motion G code 0..3 or -1
-        self.words = words  # address -> float column
+        #: physical line of each block: an int column, a range (a short run read from text), or None (a
+        #: short run made of its origin)
+        self._lines = lines
+        self._g = g  # int, motion G code 0..3 or -1 (None: not made yet)
+        self._words = words  # address -> float column
         self.source = source  # the lines of the stretch it was read from, when it was read from text
         self.origin = origin  # the plain rows (or Blocks) the run was made of, when it was made of them
         self.source_first = source_first  # the program lines before source[0]
+        self.matches = matches  # a short run read from text: the regex groups of its lines
+
+    @property
+    def lines(self) -> np.ndarray:
+        if self._g is None:
+            self._columns()
+        return self._lines
+
+    @property
+    def g(self) -> np.ndarray:
+        if self._g is None:
+            self._columns()
+        return self._g
+
+    @property
+    def words(self) -> dict:
+        if self._g is None:
+            self._columns()
+        return self._words
+
+    def _columns(self) -> None:
+        """The columns of a short run, from what it was made of."""
+        rows = [o if o.__class__ is tuple else block_row(o) for o in (self.origin or self.blocks())]
+        n = len(rows)
+        self._lines = np.fromiter(map(row_line, rows), np.int64, n)
+        self._g = np.fromiter(map(row_g, rows), np.int64, n)
+        self._words = {a: np.fromiter(map(get, rows), float, n) for a, get in ROW_WORD.items()}
 
     def __len__(self) -> int:
-        return len(self.lines)
+        return len(self.origin) if self._lines is None else len(self._lines)
+
+    def line(self, i: int) -> int:
+        """The physical line of block ``i``."""
+        if self._lines is not None:
+            return int(self._lines[i])
+        o = self.origin[i]
+        return row_line(o) if o.__class__ is tuple else o.src.line
 
     def block(self, i: int) -> Block:
         """Block ``i`` as the line parser reads it (or as it was built)."""
         if self.origin is not None:
             return as_block(self.origin[i])
-        line = int(self.lines[i])
+        line = int(self._lines[i])
+        if self.matches is not None:
+            return next(_blocks(self.file, self.matches[i:i + 1], line))
         return parse_din_line(self.source[line - 1 - self.source_first], Src(self.file, line))
 
     def blocks(self):
+        if self.origin is not None:
+            return map(as_block, self.origin)
+        if self.matches is not None:
+            return _blocks(self.file, self.matches, self._lines[0])
         return (self.block(i) for i in range(len(self)))
 
     def head(self, n: int) -> "PlainRun":
         """The first ``n`` blocks as a run of their own."""
-        return PlainRun(self.file, self.lines[:n], self.g[:n], {a: col[:n] for a, col in self.words.items()},
-                        self.source, self.origin[:n] if self.origin is not None else None, self.source_first)
+        origin = self.origin[:n] if self.origin is not None else None
+        lines = self._lines[:n] if self._lines is not None else None
+        if self._g is None:
+            return PlainRun(self.file, lines, None, None, self.source, origin, self.source_first,
+                            self.matches[:n] if self.matches is not None else None)
+        return PlainRun(self.file, lines, self._g[:n], {a: col[:n] for a, col in self._words.items()}, self.source,
+                        origin, self.source_first)
+
+
+#: a run of fewer plain blocks than this is kept as Blocks and executed block by block through the kernel
+#: (:func:`columnar`); the columns' fixed cost (a few dozen numpy calls a run, ~0.1 ms) is paid back from
+#: about this many blocks on (measured: docs/performance.md, thirteenth pass)
+RUN_COLUMNS_FROM = 32
+
+
+def columnar(blocks: int) -> bool:
+    """Whether a run of ``blocks`` plain blocks is held and executed as columns (read at each call, so a
+    test can set :data:`RUN_COLUMNS_FROM`)."""
+    return blocks >= RUN_COLUMNS_FROM
 
 
 #: the addresses of a plain block besides N and its motion G code, in the order CAM output writes them
@@ -264,10 +329,11 @@ _PLAIN = frozenset(PLAIN_WORDS)
 #: a number; possessive quantifiers (nothing a number gives back could start the next word) keep the scan fast
 #: (at most WORD_DECADES digits before the point: a longer number goes the general way and gets its error there)
 _NUM = r"([-+]?+(?:\d{1,8}+(?:\.\d*+)?+|\.\d++))"
-#: a plain line with at least one G code or word (groups: G, then PLAIN_WORDS), or any other line with its
+#: a plain line with at least one G code or word (groups: N, G, then PLAIN_WORDS; an N of at most WORD_DECADES
+#: digits, as any word), or any other line with its
 #: line break (last group: never empty, so blank lines and lines of nothing but N go the general way too);
 #: multi-line (re.M). Compiled into re's cache at first use (about 1.5 ms): a short program is read line by line
-_PLAIN_LINE = (r"^[ \t]*+(?:N\d+[ \t]*+)?(?=[GXYZIJKF])(?:G0?([0-3])(?![\d.])[ \t]*+)?"
+_PLAIN_LINE = (r"^[ \t]*+(?:N(\d{1,8}+)[ \t]*+)?(?=[GXYZIJKF])(?:G0?([0-3])(?![\d.])[ \t]*+)?"
                + "".join(rf"(?:{a}{_NUM}[ \t]*+)?" for a in PLAIN_WORDS) + r"$|^(.*\n?)")
 #: motion G code as the reader finds it -> its number (-1: the block has none)
 _MOTION = {"": -1, "0": 0, "1": 1, "2": 2, "3": 3}
@@ -364,17 +430,17 @@ def din_stretches(path: str, pieces, columns_from: int = 0):
             yield DinStretch(segments, diags, lines, first, len(chunk))
             first += len(lines)
             continue
-        columns = list(zip(*re.findall(_PLAIN_LINE, chunk if chunk.isupper() else chunk.upper(), re.M)
-                             [:len(lines)]))
+        found = re.findall(_PLAIN_LINE, chunk if chunk.isupper() else chunk.upper(), re.M)[:len(lines)]
+        columns = list(zip(*found))
         segments, diags = [], []
         start = 0
         for k in [k for k, rest in enumerate(columns[-1], 1) if rest]:
             if k - 1 > start:
-                _add_run(segments, path, lines, columns, start, k - 1, first)
+                _add_run(segments, path, lines, found, columns, start, k - 1, first)
             start = k
             _read_general(segments, diags, path, first + k, lines[k - 1])
         if len(lines) > start:
-            _add_run(segments, path, lines, columns, start, len(lines), first)
+            _add_run(segments, path, lines, found, columns, start, len(lines), first)
         yield DinStretch(segments, diags, lines, first, len(chunk))
         first += len(lines)
 
@@ -392,13 +458,40 @@ def _read_general(segments, diags, path: str, lineno: int, line: str) -> None:
         segments.append((blk, skip))
 
 
-def _add_run(segments, path: str, lines: list, columns, lo: int, hi: int, first: int) -> None:
-    """Rows lo..hi-1 of a stretch's ``columns`` and ``lines`` (program lines first+lo+1..first+hi), all plain,
-    as a PlainRun."""
-    words = {a: _floats(col[lo:hi]) for a, col in zip(PLAIN_WORDS, columns[1:])}
-    g = np.array(list(map(_MOTION.__getitem__, columns[0][lo:hi])), dtype=np.int64)
+def _add_run(segments, path: str, lines: list, found: list, columns, lo: int, hi: int, first: int) -> None:
+    """Rows lo..hi-1 of a stretch's regex matches ``found`` (as ``columns``) and ``lines`` (program lines
+    first+lo+1..first+hi), all plain, as a PlainRun: of columns, or of Blocks when it is short
+    (:func:`columnar`)."""
+    if not columnar(hi - lo):
+        segments.append(PlainRun(path, range(first + lo + 1, first + hi + 1), None, None, lines, None, first,
+                                 found[lo:hi]))
+        return
+    words = {a: _floats(col[lo:hi]) for a, col in zip(PLAIN_WORDS, columns[2:])}
+    g = np.array(list(map(_MOTION.__getitem__, columns[1][lo:hi])), dtype=np.int64)
     segments.append(PlainRun(path, np.arange(first + lo + 1, first + hi + 1), g, words, source=lines,
                              source_first=first))
+
+
+def _blocks(path: str, found: list, line: int):
+    """The regex matches ``found`` of plain lines from program line ``line`` on as the Blocks
+    :func:`parse_din_line` makes of them (the words in the order the lines write them, PLAIN_WORDS)."""
+    for k, (n, g, x, y, z, i, j, kk, f, _rest) in enumerate(found, line):
+        words = {}  # unrolled: a comprehension's call costs a third of a block
+        if x:
+            words["X"] = float(x)
+        if y:
+            words["Y"] = float(y)
+        if z:
+            words["Z"] = float(z)
+        if i:
+            words["I"] = float(i)
+        if j:
+            words["J"] = float(j)
+        if kk:
+            words["K"] = float(kk)
+        if f:
+            words["F"] = float(f)
+        yield Block((_MOTION[g],) if g else (), (), words, int(n) if n else None, None, Src(path, k))
 
 
 def _floats(cells: tuple) -> np.ndarray:

@@ -16,6 +16,10 @@ move order); ``tests/nc/test_plain_run.py`` holds the two paths side by side.
 A block that would fault (G1 without feed, an arc whose end lies on another
 radius, an arc without centre words) is left to the caller, who hands it to
 :meth:`NcKernel.execute`, so the fault and its message are the kernel's own.
+
+A run shorter than :data:`~ncvm.nc.block.RUN_COLUMNS_FROM` blocks is not worth its columns (a few dozen
+numpy calls whatever its length): it is executed block by block (:func:`~ncvm.nc.block.columnar`), with the
+same results to the last bit (``tests/nc/test_short_runs.py``).
 """
 
 from __future__ import annotations
@@ -26,7 +30,7 @@ from operator import attrgetter, is_not
 
 from ..lazy import lazy
 from . import arcs
-from .block import PLAIN_WORDS, ROW_WORD, Block, PlainRun, block_row, row_g, row_line, row_src
+from .block import PLAIN_WORDS, ROW_WORD, Block, PlainRun, block_row, columnar, row_g, row_line, row_src
 from .canon import BatchArcs, MoveBatch
 from .dynamics import arc_limits_columns, lengths_columns, straight_limits_columns
 from .kernel import PLANES
@@ -217,6 +221,8 @@ def _runs(rows: list, used: set, out: list) -> None:
 
 def _columns(file: str, rows: list, used: set) -> PlainRun:
     n = len(rows)
+    if not columnar(n):  # a short run stays rows (no numpy): it runs block by block
+        return PlainRun(file, None, None, None, origin=rows)
     words = {a: np.fromiter(map(get, rows), float, n) if a in used else np.full(n, math.nan)
              for a, get in _WORD_COLUMN.items()}
     return PlainRun(file, np.fromiter(map(_LINE_COLUMN, rows), np.int64, n),
@@ -224,7 +230,8 @@ def _columns(file: str, rows: list, used: set) -> PlainRun:
 
 
 def execute_segments(kernel, segments, execute=None) -> None:
-    """Execute what :func:`plain_segments` made until program end: runs column-wise, other blocks one by one.
+    """Execute what :func:`plain_segments` made until program end: runs column-wise, short runs
+    (:func:`~ncvm.nc.block.columnar`) and other blocks one by one.
 
     ``execute`` runs a single block (default: the kernel's own ``execute``).
     """
@@ -232,7 +239,12 @@ def execute_segments(kernel, segments, execute=None) -> None:
     for seg in segments:
         if kernel.ended:
             return
-        if isinstance(seg, PlainRun):
+        if isinstance(seg, PlainRun) and not columnar(len(seg)):
+            for blk in seg.blocks():
+                if kernel.ended:
+                    return
+                execute(blk)
+        elif isinstance(seg, PlainRun):
             lo, hi = 0, len(seg)
             while (bad := execute_columns(kernel, seg, lo, hi)) is not None:
                 kernel.execute(seg.block(bad))  # a block the columns leave to the kernel (one that faults, or any under G96 or a transformation)

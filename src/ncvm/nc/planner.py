@@ -40,7 +40,7 @@ import math
 from struct import pack as _pack
 
 from ..lazy import lazy
-from .dynamics import lengths_columns, path_limits, straight_limits_columns, trapezoid_time, trapezoid_time_columns
+from .dynamics import lengths_columns, straight_limits_columns, trapezoid_time, trapezoid_time_columns
 
 np = lazy("numpy")
 
@@ -165,7 +165,9 @@ class Planner:
         if self.blocks:
             self._plan(None)
         elif self.rows:
-            if len(self.rows) < SMALL * self.width:
+            if len(self.rows) == self.width and self.entry2 == 0.0:
+                self._plan_one()  # one move from rest to rest: a drilling cycle's plunge before its dwell
+            elif len(self.rows) < SMALL * self.width:
                 self._plan_rows()
             else:
                 self._plan(None)
@@ -185,13 +187,22 @@ class Planner:
         speeds = [math.sqrt(x) * 60.0 for x in w]
         self.canon.timing(times, speeds[:-1], speeds[1:])
 
+    def _plan_one(self) -> None:
+        """:meth:`_plan_rows` of a single straight move from rest (no junction: it ends at rest too)."""
+        length, v, a = self._row_moves()[:3]
+        self.rows.clear()
+        t = trapezoid_time(length[0], v[0], a[0])  # blended_time from rest to rest
+        clock = self.clock
+        clock.settle(clock.settled + t)
+        self.canon.timing([t], [0.0], [0.0])
+
     def _row_moves(self) -> tuple[list, ...]:
         """The moves of ``rows`` as lists of fields (what :meth:`_materialise` makes an array of): an arc's end
         tangent joined to it, the hot path's straight moves' length, limits and tangent worked out."""
         rows, width, dyn = self.rows, self.width, self.dyn
         length, v, a, flags, u_in, u_out = [], [], [], [], [], []
         for i in range(0, len(rows), width):
-            ln, vi, ai, f = rows[i:i + 4]
+            ln, vi, ai, f = rows[i], rows[i + 1], rows[i + 2], rows[i + 3]
             u = rows[i + 4:i + width]
             if f < 0.0:  # an arc's end tangent, in the row after its own
                 u_out[-1] = u
@@ -203,8 +214,15 @@ class Planner:
                 ln = math.sqrt(ln)
                 rapid = f == POSITIONING
                 inv = 1.0 / ln  # the shares as straight_limits_columns makes them: |d| * (1 / length)
-                vi, ai = path_limits([d * inv for d in u], 1.0, math.inf if rapid else vi / 60.0,
-                                     dyn.rapid if rapid else dyn.max_feed, dyn.accel)
+                # path_limits of the shares (length 1), written out
+                vi, ai = math.inf if rapid else vi / 60.0, math.inf
+                for d, vmax, amax in zip(u, dyn.rapid if rapid else dyn.max_feed, dyn.accel):
+                    share = abs(d * inv)
+                    if share:
+                        if vmax < vi * share:
+                            vi = vmax / share
+                        if amax < ai * share:
+                            ai = amax / share
                 u = [d / ln for d in u]
             length.append(ln)
             v.append(vi)

@@ -130,7 +130,7 @@ def test_only_the_generated_statements_own_operation_is_the_programs_error(state
 
 # -- ncvm's own faults ----------------------------------------------------------------------------------
 #: the first WAIT drains 40 plain blocks (column-wise: planner.add_columns, move_batch), the second one block
-#: (one by one: the kernel, the planner's rows, the recorder's feed; runtime.SMALL_DRAIN)
+#: (one by one: the kernel, the planner's rows, the recorder's feed; nc.block.columnar)
 PROGRAM = ("10 X = 1.5\n15 FOR I% = 1 TO 40\nN20 G1 X[X] Y[I%] F1000\n25 NEXT I%\n30 Y = TAN(X)\n40 WAIT\n"
            "N45 G1 X0.5\n46 WAIT\nN50 G1 X20 M3 S1000\nN60 M30\n")
 
@@ -153,6 +153,7 @@ TARGETS = [
     ("ncvm.nc.planner", "Planner", "_plan_rows"),
     ("ncvm.sinks.toolpath", "ToolpathRecorder", "move_batch"),
     ("ncvm.sinks.toolpath", "ToolpathRecorder", "feed"),
+    ("ncvm.nc.planner", "Planner", "stop"),  # a short run's moves are planned at the exact stop (WAIT, M3)
     ("ncvm.dialects.cpl.values", None, "word"),
     ("ncvm.dialects.cpl.builtins", None, "_num"),
 ]
@@ -207,8 +208,8 @@ SITECUSTOMIZE = textwrap.dedent('''
 
 @pytest.mark.parametrize("target, kind", [
     ("ncvm.nc.kernel:NcKernel:execute:TypeError", "TypeError"),
-    ("ncvm.nc.planner:Planner:add_columns:ValueError", "ValueError"),
-    ("ncvm.sinks.toolpath:ToolpathRecorder:move_batch:KeyError", "KeyError"),
+    ("ncvm.nc.planner:Planner:stop:ValueError", "ValueError"),
+    ("ncvm.sinks.toolpath:ToolpathRecorder:feed:KeyError", "KeyError"),
     ("ncvm.dialects.cpl.values::word:IndexError", "IndexError"),
     ("ncvm.dialects.cpl.builtins::_num:AttributeError", "AttributeError"),
 ])

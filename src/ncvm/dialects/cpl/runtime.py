@@ -24,7 +24,7 @@ from pathlib import Path
 from ...diagnostics import CompileFailed, Frame, RuntimeFault, Span
 from ...machine.eventqueue import EventQueue, of_type, refuse
 from ...nc import blockskip, cutter
-from ...nc.block import Block, DinSyntaxError, as_block, parse_din_line, plain_row
+from ...nc.block import Block, DinSyntaxError, as_block, columnar, parse_din_line, plain_row
 from ...nc.canon import NOBODY, CanonSink, Src
 from ...nc.midmove import MotionRecorder, position_at
 from ...nc.plainrun import execute_segments, plain_segments
@@ -58,8 +58,6 @@ from .unlinked import link_late, run_unlinked
 _EXTENDED = re.compile(r"\s*([A-Za-z][A-Za-z0-9_]*[0-9_][A-Za-z0-9_]*)\s*=\s*([-+]?(?:\d+\.?\d*|\.\d+))\s*$")
 #: blocks prepared ahead of execution without ``[cpl] lookahead`` (the manual gives no size; docs/decisions.md)
 BLOCK_BUFFER = 20_000
-#: a drain of fewer blocks runs them one by one, not column-wise (bench: cpl_wait_motion; docs/performance.md)
-SMALL_DRAIN = 32
 #: the path control's G codes (nc.kernel.ISO_PATH_CODES): G61 exact stop, G62 continuous path (the
 #: power-on state), one group of the SD(1) table (L2302); G60 is the contour shift here (docs/decisions.md)
 CPL_PATH_CODES = {61: "exact", 62: "continuous"}
@@ -527,7 +525,7 @@ class CplRuntime:
     def execute_blocks(self, blocks: list) -> None:
         """Execute ``blocks`` in order: a few (a WAIT after every block or two) one by one by the kernel, more
         as runs of plain rows column-wise (the columns cost more to set up than a few blocks take)."""
-        if len(blocks) < SMALL_DRAIN:
+        if not columnar(len(blocks)):
             kernel, execute = self.kernel, self.execute_block
             for blk in blocks:
                 if kernel.ended:

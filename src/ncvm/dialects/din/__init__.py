@@ -7,11 +7,12 @@ from __future__ import annotations
 
 import os
 import re
+from itertools import islice
 
 from ...diagnostics import CompileFailed, RuntimeFault, UsageError
 from ...nc import blockskip, threads
 from ...nc.axiswords import din_missing_axes
-from ...nc.block import COLUMNS_FROM, PlainRun, din_stretches, file_stretches, text_stretches
+from ...nc.block import COLUMNS_FROM, PlainRun, columnar, din_stretches, file_stretches, text_stretches
 from ...nc.canon import Src
 from ...nc.cycles import CannedCycles
 from ...nc.plainrun import execute_columns
@@ -136,20 +137,24 @@ class DinDialect(Dialect):
         try:
             for seg in segments:
                 if isinstance(seg, PlainRun):
-                    last_src = Src(path, int(seg.lines[-1]))
-                    if hook is None:
-                        # a run of plain motion blocks, executed column-wise up to the step limit
+                    last_src = Src(path, seg.line(len(seg) - 1))
+                    if hook is None:  # a run of plain motion blocks (none ends the program), up to the step limit
                         count = min(len(seg), limit - done)
-                        lo = 0
-                        while (bad := execute_columns(kernel, seg, lo, count)) is not None:
-                            done += bad - lo + 1
-                            kernel.execute(seg.block(bad))  # left to the kernel: it may fault
-                            lo = bad + 1
-                        done += count - lo
+                        if columnar(len(seg)):  # column-wise
+                            lo = 0
+                            while (bad := execute_columns(kernel, seg, lo, count)) is not None:
+                                done += bad - lo + 1
+                                kernel.execute(seg.block(bad))  # left to the kernel: it may fault
+                                lo = bad + 1
+                            done += count - lo
+                        else:  # a short run: block by block, each counted before it runs (it may fault)
+                            for blk in islice(seg.blocks(), count):
+                                done += 1
+                                kernel.execute(blk)
                         if count < len(seg):
-                            counter.runaway(path, int(seg.lines[count]))
+                            counter.runaway(path, seg.line(count))
                         continue
-                    blocks = ((blk, False) for blk in seg.blocks())
+                    blocks = ((blk, False) for blk in seg.blocks())  # stepped
                 else:
                     blocks = (seg,)
                     last_src = seg[0].src
