@@ -1,5 +1,6 @@
 """CPL cases: the peer programs loop_arith, loop_motion and subcalls written in CPL, and rs274 on the originals;
 wait_motion (a G1 block and a WAIT a pass) has no peer: rs274 has no block buffer to wait for.
+cpl_prn_file (no peer) writes records to a file with PRN#, the cost of a record and of making it durable.
 
 Each CPL program does the work of its LinuxCNC peer in bench/peers: the same loop counts,
 the same arithmetic (MOD written as I% - INT(I%/7)*7, CPL has no MOD), the same moves and calls.
@@ -99,6 +100,17 @@ G1 X[I% * 0.01] Y[0.5 * SIN(I% * 3.6)]
 M30
 """
 
+PRN_FILE = """\
+(prn_file - 5,000 records written to a file with PRN#, as a program logs its measurements)
+10 OPENW(1,"PRNLOG",130)
+20 REWRITE(1)
+30 FOR I%=1 TO 5000
+40 PRN#(1,"P",I%," X",I%*0.5," Y",I%*0.25)
+50 NEXT I%
+60 CLOSE(1)
+M30
+"""
+
 FOLDER = WORK / "cpl"
 
 
@@ -111,7 +123,8 @@ def write_programs() -> None:
     FOLDER.mkdir(parents=True, exist_ok=True)
     for name, text in (("loop_arith.cpl", LOOP_ARITH), ("loop_motion.cpl", LOOP_MOTION), ("DRILL", DRILL),
                        ("subcalls.cpl", SUBCALLS), ("loop_arith_real.cpl", real_twin(LOOP_ARITH)),
-                       ("loop_motion_real.cpl", real_twin(LOOP_MOTION)), ("wait_motion.cpl", WAIT_MOTION)):
+                       ("loop_motion_real.cpl", real_twin(LOOP_MOTION)), ("wait_motion.cpl", WAIT_MOTION),
+                       ("prn_file.cpl", PRN_FILE)):
         p = FOLDER / name
         if not p.exists() or p.read_text() != text:
             p.write_text(text)
@@ -131,6 +144,8 @@ def cases() -> dict[str, Case]:
         "cpl_loop_motion": Case(runner("loop_motion.cpl"), 100_000, "G1/s", setup=write_programs),
         "cpl_loop_arith_real": Case(runner("loop_arith_real.cpl"), 100_000, "iterations/s", setup=write_programs),
         "cpl_loop_motion_real": Case(runner("loop_motion_real.cpl"), 100_000, "G1/s", setup=write_programs),
+        # the file lies in the state directory's file root under bench/.work: on the disk, as a user's files do
+        "cpl_prn_file": Case(runner("prn_file.cpl"), 5_000, "records/s", setup=write_programs),
         "cpl_subcalls": Case(runner("subcalls.cpl"), 20_000, "calls/s", setup=write_programs),
         "cpl_wait_motion": Case(runner("wait_motion.cpl"), 10_000, "passes/s", setup=write_programs),
         "rs274_loop_arith": rs274_case(PEERS / "loop_arith.ngc", 100_000, "iterations/s"),

@@ -9,7 +9,7 @@ import tracemalloc
 
 import pytest
 
-from ncvm import api, source
+from ncvm import api
 from ncvm.diagnostics import MAX_KEPT, Diagnostic, Diagnostics, Span
 from ncvm.nc import block
 
@@ -69,12 +69,11 @@ def _no_whole_read(*_args):
 
 
 @pytest.mark.parametrize("name", ["p.ngc", "p"])
-def test_the_check_of_a_din_file_never_reads_it_whole(tmp_path, monkeypatch, name):
+def test_the_check_of_a_din_file_never_reads_it_whole(tmp_path, refuse_whole_reads, name):
     """A named .ngc file is read a stretch at a time; one without an extension is told by its head."""
     path = tmp_path / name
     path.write_text("".join(f"G1 X{i % 9} F100\n" for i in range(3000)) + "G1 X1 Y\nM2\n")
-    monkeypatch.setattr(api, "read_text", _no_whole_read)
-    monkeypatch.setattr(source, "read_text", _no_whole_read)
+    refuse_whole_reads(_no_whole_read)
     diags = api.check(path)
     assert [(d.code, d.span.line) for d in diags] == [("NC001", 3001)]
 

@@ -73,11 +73,9 @@ def test_a_fault_counts_the_blocks_run_up_to_it(run_text, monkeypatch):
 # -- read from the file (issue 18: a 10,000,000-line file peaked at 680 MB, held whole as text) --------------
 
 
-def test_a_run_never_reads_the_file_whole(run_text, monkeypatch, tmp_path):
+def test_a_run_never_reads_the_file_whole(run_text, monkeypatch, refuse_whole_reads, tmp_path):
     """The API does not read a .ngc file into one string (it did: text, then a copy without CR), and the
     dialect reads it in stretches of about CHUNK_CHARS characters, each ending at a line end."""
-    import ncvm.api as api
-    import ncvm.source as source
 
     def whole(path):
         raise AssertionError(f"{path} read whole")
@@ -90,8 +88,7 @@ def test_a_run_never_reads_the_file_whole(run_text, monkeypatch, tmp_path):
             pieces.append(piece)
             yield piece
 
-    monkeypatch.setattr(api, "read_text", whole)
-    monkeypatch.setattr(source, "read_text", whole)
+    refuse_whole_reads(whole)
     monkeypatch.setattr(block, "stretches", spy)
     monkeypatch.setattr(block, "CHUNK_CHARS", 64)
     text = random_program(3)

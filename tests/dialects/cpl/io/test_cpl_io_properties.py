@@ -8,7 +8,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from ncvm.dialects.cpl.io.files import CplFiles
-from ncvm.dialects.cpl.io.format import format_items
+from ncvm.dialects.cpl.io.format import format_items, format_number
 from ncvm.dialects.cpl.io.strings import val
 from ncvm.dialects.cpl.io.values import Double
 
@@ -27,6 +27,19 @@ def test_templates_round_half_away_from_zero_and_read_back(v, decimals):
     assert len(text) == len(template)
     assert Decimal(text.strip()) == expected
     assert val(text) == float(expected) or (expected == 0 and val(text) == 0)
+
+
+@given(st.integers(min_value=-(2**31), max_value=2**31 - 1), st.integers(1, 12), st.integers(0, 4),
+       st.booleans(), st.booleans())
+def test_an_integer_prints_as_the_same_number_as_a_double(v, before, decimals, ljust, trim):
+    """INTEGERs take a path of their own (no Decimal rounding: they are exact); in a template and in the
+    standard format they print as a DOUBLE of the same value does, overflow and LJUST alike."""
+    template = "#" * before + ("." + "#" * decimals if decimals else "")
+    as_int = format_items(["<", template, ">", v], ljust=ljust, trim=trim)
+    as_double = format_items(["<", template, ">", Double(float(v))], ljust=ljust, trim=trim)
+    assert as_int == as_double
+    assert format_items([v], ljust=ljust).text == format_number(float(v), "D", 9, 0, pad=not ljust) or (
+        len(str(v)) > 9 and format_items([v]).text == str(v))
 
 
 @settings(max_examples=30, deadline=None)

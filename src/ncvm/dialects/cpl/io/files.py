@@ -6,10 +6,13 @@ padded with blanks. Byte offsets, record numbers and record offsets are 1-based;
 data size + 1. Files written by other tools (no marker, CR LF line ends) are read as well and are put
 into this form when they are opened for writing.
 
-Durability (docs/decisions.md, "CPL files"): every completed record -- a PRN# without ``;``, a
-CHR$(13) inside the output, a random record written in place -- and every REWRITE and CLOSE is
-written, flushed and ``os.fsync`` ed before PRN# returns, so what a program wrote survives a crash of
-ncvm. The text of a record still open with ``;`` is kept in memory until the record is completed.
+Durability (docs/decisions.md, "CPL files: the durability point"): every completed record -- a PRN#
+without ``;``, a CHR$(13) inside the output, a random record written in place -- and every REWRITE is
+handed to the operating system (``pwrite``) before the statement returns, so what a program wrote
+survives ncvm being killed at any moment. A file is ``os.fsync`` ed at CLOSE (and so at the end of the
+run and when the run stops with an error, which close every file) and, while it is written, once
+:data:`SYNC_EVERY_S` has passed since its last fsync: a crash of the host loses at most that much. The
+text of a record still open with ``;`` is kept in memory until the record is completed.
 
 Every name goes through the machine's file root (:class:`ncvm.machine.files.FileRoot`): a name that
 leads out of it -- ``..`` past the root, a symbolic link pointing out, the state directory -- or that
@@ -42,17 +45,21 @@ MAX_NAME = 30
 MIN_RESERVED = 130
 REAL_MAX = 3.4028234663852886e38
 INT_MIN, INT_MAX = -(2**31), 2**31 - 1
+#: seconds of writing after which a file open for writing is fsynced again (docs/decisions.md): an fsync a
+#: record cost milliseconds on a disk, one a second costs a fraction of a percent
+SYNC_EVERY_S = 1.0
 
 
 class Handle(Record):
     """One open logical file: its records in memory, the pointer, and (for writing) the disk file."""
 
     __slots__ = ("number", "name", "place", "ident", "writing", "reclen", "records", "rec", "off", "pending", "remark",
-                 "reserved", "data_size", "fd")
+                 "reserved", "data_size", "fd", "size", "unsynced", "synced_at")
 
     def __init__(self, number: int, name: str, place: Place, ident: tuple[int, int], writing: bool,
                  reclen: int | None, records: list[str], rec: int = 0, off: int = 0, pending: str | None = None,
-                 remark: str = "", reserved: int = MIN_RESERVED, data_size: int = 0, fd: int | None = None):
+                 remark: str = "", reserved: int = MIN_RESERVED, data_size: int = 0, fd: int | None = None,
+                 size: int = 0, unsynced: bool = False, synced_at: float = 0.0):
         self.number = number
         self.name = name
         self.place = place
@@ -67,6 +74,9 @@ class Handle(Record):
         self.reserved = reserved
         self.data_size = data_size  # bytes before the EOF marker
         self.fd = fd  # a file open for writing: its descriptor until CLOSE
+        self.size = size  # bytes of the disk file (written through fd only, so no fstat a record)
+        self.unsynced = unsynced  # written since its last fsync
+        self.synced_at = synced_at  # time.monotonic() of its last fsync (or of OPENW)
 
     @property
     def random(self) -> bool:
@@ -264,7 +274,8 @@ class CplFiles(Record):
             records, canonical = self._parse(read_all(fd))
             self._check_reclen(records, reclen, place.shown)
             h = Handle(n, place.shown, place, ident, True, reclen, records, rec=len(records),
-                       remark=text_of(remark) or "", reserved=length, fd=fd)
+                       remark=text_of(remark) or "", reserved=length, fd=fd, size=st.st_size,
+                       synced_at=time.monotonic())
             h.data_size = sum(len(r) + 1 for r in records)
             if not records:  # a new or empty file: what it holds, this run wrote
                 self._own.add(ident)
@@ -293,7 +304,7 @@ class CplFiles(Record):
         self.handles[n] = h
 
     def CLOSE(self, n) -> None:  # noqa: N802
-        """``CLOSE(n)``: a record still open with ``;`` is ended, the file is synced (closing a closed number
+        """``CLOSE(n)``: a record still open with ``;`` is ended, the file is fsynced (closing a closed number
         does nothing)."""
         n = self._check_number(n)
         h = self.handles.pop(n, None)
@@ -304,13 +315,23 @@ class CplFiles(Record):
                 self._append_record(h, h.pending)
                 h.pending = None
         finally:
-            os.close(h.fd)
-            h.fd = None
+            try:
+                self._sync(h)  # also after a failed last record: what was written before it
+            finally:
+                os.close(h.fd)
+                h.fd = None
 
     def close_all(self) -> None:
-        """End of the program: every file still open is closed as by CLOSE."""
+        """End of the program (or of a run stopped by an error): every file still open is closed as by CLOSE,
+        each one even when closing another fails; then the first failure is raised."""
+        first = None
         for n in list(self.handles):
-            self.CLOSE(n)
+            try:
+                self.CLOSE(n)
+            except CplRuntimeError as e:
+                first = first or e
+        if first is not None:
+            raise first
 
     def REWRITE(self, n) -> None:  # noqa: N802
         """``REWRITE(n)``: the data of a file open for writing is overwritten from the start."""
@@ -323,8 +344,7 @@ class CplFiles(Record):
 
     # -- writing to disk (always through the descriptor OPENW opened) -----------------------
     def _stamp(self, fd: int) -> None:
-        if self.durable:
-            os.fsync(fd)
+        """The file dated at the program's time."""
         if self.clock is not None:
             t = float(getattr(self.clock, "start_epoch", 0.0)) + float(getattr(self.clock, "now", 0.0))
             try:
@@ -332,24 +352,51 @@ class CplFiles(Record):
             except (OverflowError, ValueError, OSError):
                 pass  # a simulated time beyond what the file system can stamp: the file keeps its real time
 
+    def _sync(self, h: Handle) -> None:
+        """The file's writes made durable (``os.fsync``) if it has any since the last time."""
+        if not h.unsynced:
+            return
+        if self.durable:
+            try:
+                os.fsync(h.fd)
+            except OSError as e:
+                raise fail("FILE_NOT_WRITTEN", f"{h.name}: {e.strerror}") from None
+        h.unsynced, h.synced_at = False, time.monotonic()
+
     def _write_at(self, h: Handle, offset: int, text: str, end: int | None = None) -> None:
-        """``text`` written at byte ``offset``; the file cut at ``end`` when given; synced and dated.
-        FILE MEMORY FULL before a write past the run's file space, FILE CANNOT BE WRITTEN when the host
-        refuses it (a full disk)."""
+        """``text`` written at byte ``offset``; the file cut at ``end`` when given; dated; fsynced when
+        :data:`SYNC_EVERY_S` has passed since the last fsync. FILE MEMORY FULL before a write past the run's
+        file space, FILE CANNOT BE WRITTEN when the host refuses it (a full disk)."""
         data = text.encode("latin-1", errors="replace")
+        size = end if end is not None else max(h.size, offset + len(data))
+        growth = size - h.size
+        self._check_space(h.name, growth)
         try:
-            size = os.fstat(h.fd).st_size
-            growth = (end if end is not None else max(size, offset + len(data))) - size
-            self._check_space(h.name, growth)
             while data:
                 done = os.pwrite(h.fd, data, offset)
                 data, offset = data[done:], offset + done
-            if end is not None:
-                os.ftruncate(h.fd, end)
+            if size < h.size:  # cut shorter: REWRITE, or a file that held more after its EOF marker
+                os.ftruncate(h.fd, size)
+            h.size, h.unsynced = size, True
             self._stamp(h.fd)
         except OSError as e:
+            self.grown += self._resize(h)
             raise fail("FILE_NOT_WRITTEN", f"{h.name}: {e.strerror}") from None
         self.grown += growth  # a file cut shorter (REWRITE) gives its space back
+        if time.monotonic() - h.synced_at >= SYNC_EVERY_S:
+            self._sync(h)
+
+    @staticmethod
+    def _resize(h: Handle) -> int:
+        """After a failed write: the size the disk file really has (a write may have ended part way); returns
+        what it grew by."""
+        h.unsynced = True
+        try:
+            size = os.fstat(h.fd).st_size
+        except OSError:
+            return 0
+        grown, h.size = size - h.size, size
+        return grown
 
     def _check_space(self, name: str, growth: int) -> None:
         if self.space and growth > 0 and self.grown + growth > self.space:
@@ -370,8 +417,14 @@ class CplFiles(Record):
         st = self.stat_of(place)
         growth = len(data) - (st.st_size if st is not None else 0)
         self._check_space(place.shown, growth)
-        self._confined(self.fileroot.replace, place, data, finish=self._stamp, durable=self.durable)
+        self._confined(self.fileroot.replace, place, data, finish=self._finish_whole, durable=self.durable)
         self.grown += growth
+
+    def _finish_whole(self, fd: int) -> None:
+        """A whole file written beside the old one, dated and fsynced before it is renamed over it."""
+        self._stamp(fd)
+        if self.durable:
+            os.fsync(fd)
 
     def _append_record(self, h: Handle, text: str) -> None:
         """A completed record at the EOF marker (sequential files): written over the old marker."""

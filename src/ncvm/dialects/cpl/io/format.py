@@ -57,7 +57,14 @@ def format_number(value, kind: str, int_digits: int, decimals: int, *, pad: bool
 
     Returns None when the integer part (with its minus sign, which takes a ``#``) does not fit.
     """
-    if kind != "I" and (value != value or value in (float("inf"), float("-inf"))):
+    if kind == "I":  # exact already: no rounding to do
+        text = str(int(value))
+        if len(text) > int_digits:
+            return None
+        if decimals:
+            text = f"{text}.{'0' * decimals}"
+        return text.rjust(int_digits + (decimals + 1 if decimals else 0)) if pad else text
+    if value != value or value in (float("inf"), float("-inf")):
         return None
     exact = decimal_of(value, kind)
     # room for every digit of the rounded value: a DOUBLE has up to 309 before the point
@@ -122,6 +129,10 @@ def format_items(items: Iterable, *, ljust: bool = False, on_overflow: str = "st
         kind = kind_of(item)
         if kind == "S":
             text = text_of(item) or ""
+            if "#" not in text:  # no template in it (most strings)
+                if text:
+                    pieces.append(text)
+                continue
             pos = 0
             for m in TEMPLATE.finditer(text):
                 if m.start() > pos:
