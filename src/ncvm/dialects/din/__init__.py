@@ -28,7 +28,7 @@ from .options import arc_tolerance, options
 from .support import address_refusal, block_error, refused_address
 
 #: a run holds the segments of a program it reads while they cost at most this much memory (in bytes, as
-#: :func:`held_bytes` estimates them): a flat CAM program of up to about 200,000 lines (6.5 MB), a drilling
+#: :func:`held_bytes` estimates them): a flat CAM program of up to about 190,000 lines (6 MB), a drilling
 #: program of up to about 60,000 lines. Past it, it drops them and reads the program a second time, a stretch at
 #: a time, as it runs (issue 18: memory bounded by design; docs/decisions.md "a DIN program's memory")
 HOLD_BYTES = 32 << 20
