@@ -46,20 +46,11 @@ def fitting_budget(path: Path) -> int:
 
 
 @pytest.fixture
-def reads(monkeypatch):
-    """The text pieces the runs read from their files (nc.block.stretches), in stretches of about 4,096
-    characters (about 370 lines: read as columns, nc.block.COLUMNS_FROM)."""
-    pieces = []
-    real = block.stretches
-
-    def spy(file, chars):
-        for piece in real(file, chars):
-            pieces.append(piece)
-            yield piece
-
-    monkeypatch.setattr(block, "stretches", spy)
+def stretched(monkeypatch, reads):
+    """The pieces read (``reads``), in stretches of about 4,096 characters (about 370 lines: read as columns,
+    nc.block.COLUMNS_FROM)."""
     monkeypatch.setattr(block, "CHUNK_CHARS", 4096)
-    return pieces
+    return reads
 
 
 def run_with_budget(monkeypatch, path: Path, budget: int) -> dict:
@@ -75,7 +66,7 @@ def run_with_budget(monkeypatch, path: Path, budget: int) -> dict:
     ("G1 X1 Y\n", ("error", "NC001", 2003)),  # a syntax error: stops the run before any move
 ])
 def test_a_program_that_fits_is_read_once_one_just_past_the_budget_twice_with_the_same_result(
-        tmp_path, monkeypatch, reads, tail, outcome):
+        tmp_path, monkeypatch, stretched, tail, outcome):
     """A bolt circle of 400 holes in stretches of about 4,096 characters, with a late refusal or error: at the
     budget that just holds it the file is read once, one byte under it twice if it runs (the first pass
     drops what it held when the budget is passed); the JSON summary (status, error and its line, steps, moves, position,
@@ -88,9 +79,9 @@ def test_a_program_that_fits_is_read_once_one_just_past_the_budget_twice_with_th
     results = {}
     runs = outcome[1] != "NC001"  # a program with errors does not run: it is not read again
     for budget, passes in ((fits, 1), (fits - 1, 1 + runs), (din.HOLD_BYTES, 1)):
-        reads.clear()
+        stretched.clear()
         results[budget] = run_with_budget(monkeypatch, path, budget)
-        assert "".join(reads) == text * passes, f"budget {budget}: read {len(''.join(reads)) / len(text)} times"
+        assert "".join(stretched) == text * passes, f"budget {budget}: read {len(''.join(stretched)) / len(text)} times"
     once = results[fits]
     assert results[fits - 1] == once == results[din.HOLD_BYTES]
     error = once["error"] or {}
@@ -98,7 +89,7 @@ def test_a_program_that_fits_is_read_once_one_just_past_the_budget_twice_with_th
     assert once["motion"]["feed_moves"] == (0 if outcome[1] == "NC001" else 400)
 
 
-def test_a_long_program_is_dropped_at_its_first_stretch(tmp_path, monkeypatch, reads):
+def test_a_long_program_is_dropped_at_its_first_stretch(tmp_path, monkeypatch, stretched):
     """A program bound to pass the budget at what its first stretch cost a character is not held past that
     stretch (what is held is costed while it is held: once), though the budget holds three such stretches;
     it is read twice and runs whole."""
@@ -110,10 +101,10 @@ def test_a_long_program_is_dropped_at_its_first_stretch(tmp_path, monkeypatch, r
     costed = []
     real = din.held_bytes
     monkeypatch.setattr(din, "held_bytes", lambda stretch: costed.append(stretch.first) or real(stretch))
-    reads.clear()
+    stretched.clear()
     r = run_with_budget(monkeypatch, path, 3 * first)
     assert r["status"] == "ok" and r["motion"]["feed_moves"] == 400, r["error"]
-    assert costed == [0] and "".join(reads) == text * 2
+    assert costed == [0] and "".join(stretched) == text * 2
 
 
 PIPE_RUN = ("import json, sys\nfrom pathlib import Path\nimport ncvm.dialects.din as din\nfrom ncvm.api import run\n"

@@ -73,7 +73,7 @@ def test_a_fault_counts_the_blocks_run_up_to_it(run_text, monkeypatch):
 # -- read from the file (issue 18: a 10,000,000-line file peaked at 680 MB, held whole as text) --------------
 
 
-def test_a_run_never_reads_the_file_whole(run_text, monkeypatch, tmp_path):
+def test_a_run_never_reads_the_file_whole(run_text, monkeypatch, tmp_path, reads):
     """The API does not read a .ngc file into one string (it did: text, then a copy without CR), and the
     dialect reads it in stretches of about CHUNK_CHARS characters, each ending at a line end."""
     import ncvm.api as api
@@ -82,17 +82,9 @@ def test_a_run_never_reads_the_file_whole(run_text, monkeypatch, tmp_path):
     def whole(path):
         raise AssertionError(f"{path} read whole")
 
-    pieces = []
-    real = block.stretches
-
-    def spy(file, chars):
-        for piece in real(file, chars):
-            pieces.append(piece)
-            yield piece
-
+    pieces = reads
     monkeypatch.setattr(api, "read_text", whole)
     monkeypatch.setattr(source, "read_text", whole)
-    monkeypatch.setattr(block, "stretches", spy)
     monkeypatch.setattr(block, "CHUNK_CHARS", 64)
     text = random_program(3)
     r = run_text(text, name="p.ngc")
