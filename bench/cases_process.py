@@ -13,6 +13,8 @@ child process, alternating the two, and takes the child's own CPU time and peak 
   ``proc_startup_version`` / ``proc_startup_check``: ``ncvm --version`` and ``ncvm check`` of a small CPL program;
 - ``proc_<dialect>_2m_moves_memory``: 2,000,000 computed G1 moves in a loop of each dialect, no plot;
 - ``proc_din_flat_500k_memory``: a 500,000-line flat DIN file (bench/peers/gen_flat.py) and rs274 on it;
+  ``proc_din_drill_500k_memory``: a 500,000-line DIN bolt circle (per hole a positioning, a plunge, a dwell, a
+  retract: the plain runs are a few blocks long) and rs274 on it;
   ``proc_din_check_500k_memory``: ``ncvm check`` of that file;
 - ``proc_sympas_2m_moves_plot_memory``: the rw_SymPas 2,000,000 moves with ``--plot`` (a PNG): the plot's
   points are thinned as the moves come and the drawing's cost is bounded by its cap of points;
@@ -147,6 +149,17 @@ def write_programs() -> None:
     _write("moves_2m.sap", SYMPAS_MOVES.format(rows=MOVES // 1000, last=MOVES // 1000 - 1))
     _write("small.cpl", CPL_LOOP.format(n=10, kind="REAL", s=""))
     _flat(WORK / "flat_500k.ngc", FLAT_LINES)
+    _write("drill_500k.ngc", drilling(FLAT_LINES // 5))
+
+
+def drilling(holes: int) -> str:
+    """A DIN bolt circle of ``holes`` holes as CAM output writes it, five lines a hole: ``G0 X.. Y..``,
+    ``G0 Z2``, ``G1 Z-12 F150``, ``G4 P0.5``, ``G0 Z2``."""
+    lines = ["G17 G21 G90 G94", "G0 X0 Y0 Z50"]
+    for i in range(holes):
+        a = math.radians(i * 360 / holes)
+        lines += [f"G0 X{40 * math.cos(a):.4f} Y{40 * math.sin(a):.4f}", "G0 Z2", "G1 Z-12 F150", "G4 P0.5", "G0 Z2"]
+    return "\n".join(lines + ["M2"]) + "\n"
 
 
 def _flat(path: Path, lines: int) -> None:
@@ -235,6 +248,8 @@ def cases() -> dict[str, Case]:
         "proc_sin800_drill_l81_20k": Case(paired(ncvm_run("drill_l81/drill.mpf", "-d", "sin800"),
                                                  WORK / "drill_l81" / "drill_flat.ngc"), DRILL_HOLES, "holes/s",
                                           setup=write_drilling),
+        "proc_din_drill_500k_memory": case(paired(ncvm_run("drill_500k.ngc", "-d", "din"), WORK / "drill_500k.ngc",
+                                                  expect_moves=FLAT_LINES // 5), FLAT_LINES, "lines/s", repeat=1),
         "proc_din_check_500k_memory": case(paired(NCVM + ["check", str(WORK / "flat_500k.ngc")], None), FLAT_LINES,
                                            "lines/s", repeat=1),
         **{f"proc_{d}_10m_moves_memory": large_case(paired(ncvm_run(f"moves_10m.{ext}", "-d", d), None,

@@ -7,6 +7,7 @@ import sys
 import pytest
 
 from ncvm import dialects, source
+from ncvm.nc import block
 
 
 @pytest.fixture
@@ -26,3 +27,20 @@ def refuse_whole_reads(monkeypatch):
                 monkeypatch.setattr(module, "read_text", replacement)
 
     return refuse
+
+
+
+@pytest.fixture
+def reads(monkeypatch):
+    """The text pieces runs and checks read from their program files (``nc.block.stretches``), in order: a file
+    read twice gives its text twice."""
+    pieces = []
+    real = block.stretches
+
+    def spy(file, chars):
+        for piece in real(file, chars):
+            pieces.append(piece)
+            yield piece
+
+    monkeypatch.setattr(block, "stretches", spy)
+    return pieces

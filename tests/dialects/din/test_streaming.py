@@ -9,7 +9,7 @@ import ncvm.dialects.din as din
 from ncvm.nc import block
 from tests.conftest import random_program
 
-SMALL = {"CHUNK_CHARS": 64, "KEEP_CHARS": 0}  # stretches of a few lines, nothing held: the streaming path
+SMALL = {"CHUNK_CHARS": 64, "HOLD_BYTES": 0}  # stretches of a few lines, nothing held: the streaming path
 
 
 def both(run_text, monkeypatch, text: str, **opts) -> tuple[dict, dict]:
@@ -17,7 +17,7 @@ def both(run_text, monkeypatch, text: str, **opts) -> tuple[dict, dict]:
     whole = run_text(text, **opts)
     with monkeypatch.context() as m:
         m.setattr(block, "CHUNK_CHARS", SMALL["CHUNK_CHARS"])
-        m.setattr(din, "KEEP_CHARS", SMALL["KEEP_CHARS"])
+        m.setattr(din, "HOLD_BYTES", SMALL["HOLD_BYTES"])
         streamed = run_text(text, **opts)
     return whole, streamed
 
@@ -73,30 +73,22 @@ def test_a_fault_counts_the_blocks_run_up_to_it(run_text, monkeypatch):
 # -- read from the file (issue 18: a 10,000,000-line file peaked at 680 MB, held whole as text) --------------
 
 
-def test_a_run_never_reads_the_file_whole(run_text, monkeypatch, refuse_whole_reads, tmp_path):
+def test_a_run_never_reads_the_file_whole(run_text, monkeypatch, refuse_whole_reads, tmp_path, reads):
     """The API does not read a .ngc file into one string (it did: text, then a copy without CR), and the
     dialect reads it in stretches of about CHUNK_CHARS characters, each ending at a line end."""
 
     def whole(path):
         raise AssertionError(f"{path} read whole")
 
-    pieces = []
-    real = block.stretches
-
-    def spy(file, chars):
-        for piece in real(file, chars):
-            pieces.append(piece)
-            yield piece
-
+    pieces = reads
     refuse_whole_reads(whole)
-    monkeypatch.setattr(block, "stretches", spy)
     monkeypatch.setattr(block, "CHUNK_CHARS", 64)
     text = random_program(3)
     r = run_text(text, name="p.ngc")
     assert r["status"] == "ok", r["error"]
     longest = max(len(line) for line in text.splitlines()) + 1
     assert "".join(pieces) == text and max(map(len, pieces)) <= 64 + longest
-    monkeypatch.setattr(din, "KEEP_CHARS", 0)  # too long to hold: read twice, the second time as it runs
+    monkeypatch.setattr(din, "HOLD_BYTES", 0)  # too long to hold: read twice, the second time as it runs
     pieces.clear()
     assert run_text(text, name="p.ngc") == r and "".join(pieces) == text * 2
 
@@ -115,7 +107,7 @@ def test_cr_lf_and_lone_cr_files_run_as_lf_files(run_text, monkeypatch, tmp_path
     for chunk in (64, block.CHUNK_CHARS):
         with monkeypatch.context() as m:
             m.setattr(block, "CHUNK_CHARS", chunk)
-            m.setattr(din, "KEEP_CHARS", 0)
+            m.setattr(din, "HOLD_BYTES", 0)
             r, _ = run(path, options=RunOptions(state_dir=tmp_path / ".ncvm", keep_toolpath=False))
         assert r == lf
     bad = text.replace("\n", ending, 30).split(ending)
@@ -140,7 +132,7 @@ def test_stepping_trace_and_plot_of_a_streamed_run_are_those_of_the_held_run(run
         with monkeypatch.context() as m:
             if not held:
                 m.setattr(block, "CHUNK_CHARS", SMALL["CHUNK_CHARS"])
-                m.setattr(din, "KEEP_CHARS", SMALL["KEEP_CHARS"])
+                m.setattr(din, "HOLD_BYTES", SMALL["HOLD_BYTES"])
             trace = tmp_path / f"t{held}.jsonl"
             r = run_text(text, name="p.ngc", trace=trace, plot=True,
                          hook=lambda file, line, pos, steps=steps: steps.append((line, tuple(pos))))

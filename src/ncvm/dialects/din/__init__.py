@@ -1,10 +1,12 @@
 """Plain DIN 66025 / ISO 6983 programs: read every block, then run them through the kernel.
 
 A run reads the program from its file a stretch at a time (issue 18: bounded memory for a file of any
-size): once for its errors and refusals, then again as it runs, unless it is small enough to hold."""
+size): once for its errors and refusals, then again as it runs, unless what it read is cheap enough to hold
+(:data:`HOLD_BYTES`)."""
 
 from __future__ import annotations
 
+import math
 import os
 import re
 from itertools import islice
@@ -26,9 +28,16 @@ from .ngc import fold_extensions
 from .options import arc_tolerance, options
 from .support import address_refusal, block_error, refused_address
 
-#: a run holds a program of up to this many characters (about 250,000 lines of CAM output) as it reads it; a
-#: longer one is read a second time, from its file, as it runs
-KEEP_CHARS = 8 << 20
+#: a run holds the segments of a program it reads while they cost at most this much memory (in bytes, as
+#: :func:`held_bytes` estimates them): a flat CAM program of up to about 190,000 lines (6 MB), a drilling
+#: program of up to about 60,000 lines. Past it, it drops them and reads the program a second time, a stretch at
+#: a time, as it runs (issue 18: memory bounded by design; docs/decisions.md "a DIN program's memory")
+HOLD_BYTES = 32 << 20
+#: the memory held segments take (tracemalloc, CPython 3.11, numpy 2): a PlainRun whatever its length (its
+#: object, word dict and nine arrays), a block read the general way (Block, G tuple, word dict, Src, skip pair),
+#: a line (its row of the columns, its source string besides its characters: a run parses a block's line
+#: again when the kernel needs it as a Block)
+RUN_BYTES, BLOCK_BYTES, LINE_BYTES = 1400, 600, 130
 #: a line as DIN programs write them, for :meth:`DinDialect.sniff` (compiled into re's cache when first used)
 _DIN_LINE = r"(?i)^\s*(N\d+\s*)?([GMXYZFST]-?\d|\(|%|/|$)"
 
@@ -105,10 +114,13 @@ class DinDialect(Dialect):
     @staticmethod
     def _read(path, program, axes, skip_active, profile):
         """(the program's stretches of segments, the first refused block as (segment index, row, Diagnostic) or
-        None); a program with errors fails to compile. A program of at most :data:`KEEP_CHARS` characters is
-        read once and held; a longer one is read twice, the first time for its errors and refusals only, so a
-        run holds one stretch of it at a time (issue 18: bounded memory)."""
-        held = [] if program.chars <= KEEP_CHARS else None
+        None); a program with errors fails to compile. The segments read are held while they cost at most
+        :data:`HOLD_BYTES` and the whole program would too, at what it has cost a character so far: a program
+        that fits is read once. Else they are dropped at once and the program is read a second time as it
+        runs, the first reading having been for its errors and refusals only (issue 18: bounded memory). A
+        program that cannot be read again (a pipe) is held."""
+        held, cost, read = [], 0, 0  # the segments held, what they cost, the characters they were read from
+        budget = HOLD_BYTES if program.again else math.inf
         diags, refused, index = [], None, 0
         error_lines = {}  # the source lines of the syntax errors (NC001), for fold_extensions
         for stretch in program(COLUMNS_FROM):  # a short program line by line: no numpy (issue 18, start-up)
@@ -124,7 +136,12 @@ class DinDialect(Dialect):
                 refused = (index + first[0][0], first[0][1], first[0][2]) if first else None
             index += len(segments)
             if held is not None:
-                held.append(segments)
+                cost, read = cost + held_bytes(stretch), read + stretch.chars
+                # past the budget, or bound to pass it at what the program has cost a character so far
+                if cost > budget or cost / read * program.size > budget:
+                    held = None  # dropped at once
+                else:
+                    held.append(segments)
         if diags:
             raise CompileFailed(fold_extensions(diags, error_lines.get))
         return (held if held is not None else (stretch.segments for stretch in program(COLUMNS_FROM))), refused
@@ -194,6 +211,15 @@ def _refused_blocks(path: str, stretch, axes, skip_active: bool, profile) -> lis
     return []
 
 
+def held_bytes(stretch) -> int:
+    """What holding a stretch's segments costs, in bytes (:data:`RUN_BYTES`...; within 10 % of what tracemalloc
+    measures for flat CAM output, drilling cycles and comments between blocks, a quarter over for M-code blocks)."""
+    segments = stretch.segments
+    runs = sum(1 for seg in segments if seg.__class__ is PlainRun)
+    return (runs * RUN_BYTES + (len(segments) - runs) * BLOCK_BYTES + len(stretch.lines) * LINE_BYTES
+            + stretch.chars)
+
+
 class ProgramStretches:
     """A program's :class:`~ncvm.nc.block.DinStretch` es from its start, as often as called: read from its file
     (``text`` None; one open file for every pass, so each pass reads the same file) or from a text."""
@@ -203,10 +229,13 @@ class ProgramStretches:
         self.flat = None if text is None else text.replace("\r\n", "\n").replace("\r", "\n")
         try:
             self.file = open_program(path) if text is None else None
-            #: its size (in bytes, for a file: a character each but for a CR of a CR LF)
-            self.chars = len(text) if text is not None else os.fstat(self.file.fileno()).st_size
         except OSError as e:
             raise UsageError(f"cannot read {path}: {e.strerror}") from None
+        #: whether it can be read again from its start (a pipe is read once)
+        self.again = self.file is None or self.file.seekable()
+        #: its size in characters (a file's in bytes: a character each, but for the CR of a CR LF; 0 for a pipe)
+        self.size = (len(self.flat) if self.file is None else
+                     os.fstat(self.file.fileno()).st_size if self.again else 0)
 
     def __call__(self, columns_from: int = 0):
         """The stretches from the program's start (``columns_from``: :func:`~ncvm.nc.block.din_stretches`)."""

@@ -1,0 +1,173 @@
+"""What a DIN run holds of the program it reads (issue 18, "memory bounded by design"): the segments read are
+held while they cost at most ``din.HOLD_BYTES`` (a program that fits is read once); past it they are dropped
+and the program is read again as it runs. Either way the run, its errors and its refusals are the same."""
+
+from __future__ import annotations
+
+import gc
+import json
+import math
+import os
+import subprocess
+import sys
+import threading
+import tracemalloc
+from pathlib import Path
+
+import pytest
+
+import ncvm.dialects.din as din
+from ncvm.api import run
+from ncvm.nc import block
+from ncvm.nc.block import COLUMNS_FROM
+from ncvm.runtime.session import RunOptions
+
+
+def bolt_circle(holes: int, tail: str = "") -> str:
+    """A drilling program as CAM output writes it: per hole a positioning, a plunge, a dwell and a retract
+    (every dwell cuts the plain runs short), then ``tail`` and M2."""
+    lines = ["G17 G21 G90 G94", "G0 X0 Y0 Z50"]
+    for i in range(holes):
+        a = 2 * math.pi * i / holes
+        lines += [f"G0 X{40 * math.cos(a):.4f} Y{40 * math.sin(a):.4f}", "G0 Z2", "G1 Z-12 F150", "G4 P0.5", "G0 Z2"]
+    return "\n".join(lines) + "\n" + tail + "M2\n"
+
+
+def fitting_budget(path: Path) -> int:
+    """The least budget that holds the program: what its segments cost (``din.held_bytes``), or more where a
+    stretch read costs more a character than the whole program (the run foresees the whole at that rate)."""
+    with din.ProgramStretches(str(path), None) as program:
+        cost = read = 0
+        worst = 0.0
+        for stretch in program(COLUMNS_FROM):
+            cost, read = cost + din.held_bytes(stretch), read + stretch.chars
+            worst = max(worst, cost / read * program.size)
+    return math.ceil(worst)
+
+
+@pytest.fixture
+def stretched(monkeypatch, reads):
+    """The pieces read (``reads``), in stretches of about 4,096 characters (about 370 lines: read as columns,
+    nc.block.COLUMNS_FROM)."""
+    monkeypatch.setattr(block, "CHUNK_CHARS", 4096)
+    return reads
+
+
+def run_with_budget(monkeypatch, path: Path, budget: int) -> dict:
+    with monkeypatch.context() as m:
+        m.setattr(din, "HOLD_BYTES", budget)
+        result, _ = run(path, dialect="din", options=RunOptions(state_dir=path.parent / ".ncvm"))
+    return result
+
+
+@pytest.mark.parametrize("tail, outcome", [
+    ("", ("ok", None, None)),
+    ("G1 X1 B5\n", ("error", "NC011", 2003)),  # an axis the machine lacks: the blocks before it run
+    ("G1 X1 Y\n", ("error", "NC001", 2003)),  # a syntax error: stops the run before any move
+])
+def test_a_program_that_fits_is_read_once_one_just_past_the_budget_twice_with_the_same_result(
+        tmp_path, monkeypatch, stretched, tail, outcome):
+    """A bolt circle of 400 holes in stretches of about 4,096 characters, with a late refusal or error: at the
+    budget that just holds it the file is read once, one byte under it twice if it runs (the first pass
+    drops what it held when the budget is passed); the JSON summary (status, error and its line, steps, moves, position,
+    cycle time) is the same either way, and that of the default budget."""
+    path = tmp_path / "drill.ngc"
+    text = bolt_circle(400, tail)
+    path.write_text(text)
+    fits = fitting_budget(path)
+    assert len(text) > 4 * block.CHUNK_CHARS  # read in several stretches
+    results = {}
+    runs = outcome[1] != "NC001"  # a program with errors does not run: it is not read again
+    for budget, passes in ((fits, 1), (fits - 1, 1 + runs), (din.HOLD_BYTES, 1)):
+        stretched.clear()
+        results[budget] = run_with_budget(monkeypatch, path, budget)
+        assert "".join(stretched) == text * passes, f"budget {budget}: read {len(''.join(stretched)) / len(text)} times"
+    once = results[fits]
+    assert results[fits - 1] == once == results[din.HOLD_BYTES]
+    error = once["error"] or {}
+    assert (once["status"], error.get("code"), error.get("line")) == outcome
+    assert once["motion"]["feed_moves"] == (0 if outcome[1] == "NC001" else 400)
+
+
+def test_a_long_program_is_dropped_at_its_first_stretch(tmp_path, monkeypatch, stretched):
+    """A program bound to pass the budget at what its first stretch cost a character is not held past that
+    stretch (what is held is costed while it is held: once), though the budget holds three such stretches;
+    it is read twice and runs whole."""
+    path = tmp_path / "drill.ngc"
+    text = bolt_circle(400)
+    path.write_text(text)
+    with din.ProgramStretches(str(path), None) as program:
+        first = din.held_bytes(next(iter(program(COLUMNS_FROM))))
+    costed = []
+    real = din.held_bytes
+    monkeypatch.setattr(din, "held_bytes", lambda stretch: costed.append(stretch.first) or real(stretch))
+    stretched.clear()
+    r = run_with_budget(monkeypatch, path, 3 * first)
+    assert r["status"] == "ok" and r["motion"]["feed_moves"] == 400, r["error"]
+    assert costed == [0] and "".join(stretched) == text * 2
+
+
+PIPE_RUN = ("import json, sys\nfrom pathlib import Path\nimport ncvm.dialects.din as din\nfrom ncvm.api import run\n"
+            "from ncvm.runtime.session import RunOptions\n"
+            "din.HOLD_BYTES = 0  # nothing fits: a file would be read twice\n"
+            "r, _ = run(sys.argv[1], options=RunOptions(state_dir=Path(sys.argv[2])))\n"
+            "print(json.dumps([r['status'], r['steps'], r['motion']['feed_moves'], r['position']]))\n")
+
+
+@pytest.mark.parametrize("name", ["p.ngc", "p"])
+def test_a_program_from_a_pipe_runs_whole_past_the_budget(tmp_path, name):
+    """A named pipe can be read once: opened as a .ngc file it is held whatever the budget (read again, it
+    would give nothing and the run would silently make no move); told by its content (no extension) its text
+    is read again. Either way every block runs, as from a regular file."""
+    text = bolt_circle(30)
+    fifo = tmp_path / name
+    os.mkfifo(fifo)
+
+    def write():
+        with open(fifo, "w") as pipe:
+            pipe.write(text)
+
+    threading.Thread(target=write, daemon=True).start()
+    done = subprocess.run([sys.executable, "-c", PIPE_RUN, str(fifo), str(tmp_path / "s")], capture_output=True,
+                          text=True, timeout=120)
+    assert done.returncode == 0, done.stderr
+    status, steps, moves, position = json.loads(done.stdout)
+    assert (status, steps, moves) == ("ok", 2 + 5 * 30 + 1, 30)
+    last = 2 * math.pi * 29 / 30  # the last hole, written to 4 decimals
+    assert position == {"X": round(40 * math.cos(last), 4), "Y": round(40 * math.sin(last), 4), "Z": 2.0}
+
+
+def held_measured(path: Path) -> tuple[int, int]:
+    """(what the program's segments take when held, as tracemalloc counts it; what din.held_bytes says)."""
+    with din.ProgramStretches(str(path), None) as program:
+        list(program(COLUMNS_FROM))  # numpy, the regexes and the reader's caches: not the segments' cost
+        gc.collect()
+        tracemalloc.start()
+        try:
+            stretches = list(program(COLUMNS_FROM))
+            for s in stretches:  # what a run holds: the segments (their PlainRuns keep the stretch's lines)
+                s.diags.clear()
+            gc.collect()
+            taken = tracemalloc.get_traced_memory()[0]
+        finally:
+            tracemalloc.stop()
+        return taken, sum(map(din.held_bytes, stretches))
+
+
+@pytest.mark.parametrize("shape", ["drilling", "flat", "comments"])
+def test_the_estimate_of_held_segments_is_what_they_take(tmp_path, shape):
+    """din.held_bytes (RUN_BYTES, BLOCK_BYTES, LINE_BYTES) against tracemalloc: within 15 % for a drilling
+    program (short runs cut by dwells), flat CAM output (long runs) and a comment between moves (runs of
+    one block), so the budget bounds what a run really holds."""
+    holes = 400
+    text = {
+        "drilling": bolt_circle(holes),
+        "flat": "G21 G90 F800\n" + "".join(f"N{10 * i} G1 X{i * 0.37 % 90:.4f} Y{i * 0.11 % 60:.4f} Z-1.0000\n"
+                                         for i in range(12_000)) + "M2\n",
+        "comments": "G21 G90 F500\n" + "".join(f"(pass {i}: finishing the outer contour)\nG1 X{i % 100}.5\n"
+                                             for i in range(3_000)) + "M2\n",
+    }[shape]
+    path = tmp_path / f"{shape}.ngc"
+    path.write_text(text)
+    taken, estimated = held_measured(path)
+    assert 0.85 * taken < estimated < 1.15 * taken, f"held {taken:,} B, estimated {estimated:,} B"
