@@ -17,8 +17,6 @@ import subprocess
 import sys
 from pathlib import Path
 
-import pytest
-
 
 def _run(tmp_path: Path, name: str, text: str, *extra: str) -> dict:
     program = tmp_path / name

@@ -30,14 +30,14 @@ from .support import address_refusal, block_error, refused_address
 
 #: a run holds the segments of a program it reads while they cost at most this much memory (in bytes, as
 #: :func:`held_bytes` estimates them): a flat CAM program of up to about 190,000 lines (6 MB), a drilling
-#: program of up to about 60,000 lines. Past it, it drops them and reads the program a second time, a stretch at
+#: program of up to about 90,000 lines. Past it, it drops them and reads the program a second time, a stretch at
 #: a time, as it runs (issue 18: memory bounded by design; docs/decisions.md "a DIN program's memory")
 HOLD_BYTES = 32 << 20
-#: the memory held segments take (tracemalloc, CPython 3.11, numpy 2): a PlainRun whatever its length (its
-#: object, word dict and nine arrays), a block read the general way (Block, G tuple, word dict, Src, skip pair),
-#: a line (its row of the columns, its source string besides its characters: a run parses a block's line
-#: again when the kernel needs it as a Block)
-RUN_BYTES, BLOCK_BYTES, LINE_BYTES = 1400, 600, 130
+#: the memory held segments take (tracemalloc, CPython 3.11, numpy 2): a PlainRun held as columns whatever its
+#: length (its object, word dict and nine arrays); a short run (nc.block.columnar: kept as its lines' matches)
+#: and each of its blocks; a block read the general way (Block, G tuple, word dict, Src, skip pair); a line (its
+#: row, its source string besides its characters: a run parses a block's line again when the kernel needs it)
+RUN_BYTES, SHORT_RUN_BYTES, SHORT_BLOCK_BYTES, BLOCK_BYTES, LINE_BYTES = 1400, 200, 105, 500, 130
 #: a line as DIN programs write them, for :meth:`DinDialect.sniff` (compiled into re's cache when first used)
 _DIN_LINE = r"(?i)^\s*(N\d+\s*)?([GMXYZFST]-?\d|\(|%|/|$)"
 
@@ -213,11 +213,12 @@ def _refused_blocks(path: str, stretch, axes, skip_active: bool, profile) -> lis
 
 def held_bytes(stretch) -> int:
     """What holding a stretch's segments costs, in bytes (:data:`RUN_BYTES`...; within 10 % of what tracemalloc
-    measures for flat CAM output, drilling cycles and comments between blocks, a quarter over for M-code blocks)."""
+    measures for flat CAM output, drilling cycles and comments between blocks, a sixth over for M-code blocks)."""
     segments = stretch.segments
-    runs = sum(1 for seg in segments if seg.__class__ is PlainRun)
-    return (runs * RUN_BYTES + (len(segments) - runs) * BLOCK_BYTES + len(stretch.lines) * LINE_BYTES
-            + stretch.chars)
+    runs = [len(seg) for seg in segments if seg.__class__ is PlainRun]
+    short = [n for n in runs if not columnar(n)]
+    return ((len(runs) - len(short)) * RUN_BYTES + len(short) * SHORT_RUN_BYTES + sum(short) * SHORT_BLOCK_BYTES
+            + (len(segments) - len(runs)) * BLOCK_BYTES + len(stretch.lines) * LINE_BYTES + stretch.chars)
 
 
 class ProgramStretches:
