@@ -84,3 +84,30 @@ def test_a_block_that_does_not_move_inside_a_contour_reports_the_speed_the_path_
     moves = _trace_moves(tmp_path, "p.ngc", "G90 G64 F3000\nG1 X10\nG1 X10\nG1 X20\nM2\n")
     assert [(m["v_entry"], m["v_exit"]) for m in moves][0::2] == [(0.0, 3000.0), (3000.0, 0.0)]
     assert (moves[1]["time"], moves[1]["v_entry"], moves[1]["v_exit"]) == (0.0, 3000.0, 3000.0)
+
+
+def _cycle_time(tmp_path: Path, text: str) -> float:
+    program = tmp_path / "corner.ngc"
+    program.write_text(text)
+    done = subprocess.run([sys.executable, "-m", "ncvm", "run", "--state", str(tmp_path / "st"), "--json", str(program)],
+                          capture_output=True, text=True, timeout=300)
+    result = json.loads(done.stdout)
+    assert result["status"] == "ok", result["error"]
+    return result["cycle_time_s"]
+
+
+def test_a_bare_g64_after_g64_p_blends_as_a_bare_g64_does(tmp_path):
+    """docs/planner.md: ``corner_tolerance`` (machine data, 0.02 mm) is the tolerance of continuous-path mode,
+    and "a DIN program's ``G64 P..`` sets it for the run". Two 10 mm moves at a right angle at F3000 under
+    ``G64`` take 0.4848 s (8.26 mm/s through the corner, tests/nc/test_planner.py). A program that selects
+    ``G64 P0.001`` for a finishing pass and later a bare ``G64`` (or ``G61`` and then ``G64``) runs the same
+    corner at the old P0.001 (0.4964 s): the same block ``G64`` means one tolerance or another depending on
+    what came before, and no block can give the power-on tolerance back. In LinuxCNC, the anchor of DIN's
+    G64 P, ``G64`` without P is a mode of its own ("keep the best speed possible"), never the last P; a
+    translation of the bare G64 (kernel ``path_control`` with no tolerance) is written as ``G64`` without P
+    too, so the translated program blends that corner otherwise than ncvm timed it. A bare G64 here gives
+    the tolerance it gives at the start of a program."""
+    corner = "G1 X10\nG1 Y10\nM2\n"
+    plain = _cycle_time(tmp_path, "G90 G64 F3000\n" + corner)
+    assert plain == _cycle_time(tmp_path, "G90 G64 P0.001 F3000\nG64\n" + corner)
+    assert plain == _cycle_time(tmp_path, "G90 G64 P0.001 F3000\nG61\nG64\n" + corner)
