@@ -30,7 +30,8 @@ EXIT_OK, EXIT_FAULT, EXIT_USAGE, EXIT_INTERNAL = 0, 1, 2, 70
 _BUG = "2 usage error, 70 internal error (a bug in ncvm)"
 EXITS = {
     "run": "0 the program ended normally (a batch: every program did), 1 a compile error, a run-time fault or "
-           "stdout closed (a batch: a program failed: error or limit violation), " + _BUG,
+           "stdout closed (a batch: a program failed: error or limit violation), 128 + the signal stopped by SIGTERM "
+           "or SIGHUP, " + _BUG,
     "check": "0 no errors, 1 a program has errors, " + _BUG,
     "compile": "0 written, 1 compile errors, " + _BUG,
     "translate": "0 written, 1 the run failed or the translation was refused, " + _BUG,
