@@ -102,8 +102,12 @@ def replacing(path: Path, suffix: str | None = None):
     """A temporary file beside ``path`` (through symbolic links: a link stays a link) for the caller to
     write, moved into place with the permissions of the file it replaces when the block ends normally, and
     removed when it does not (an error, Ctrl-C, a SIGTERM): ``path`` is whole, or as it was. The temporary
-    name ends in ``suffix`` (default ``.part`` and the extension of ``path``, which matplotlib reads)."""
+    name ends in ``suffix`` (default ``.part`` and the extension of ``path``, which matplotlib reads). A
+    path that is not a regular file (a FIFO, a device) is written as it is: it cannot be replaced."""
     real = Path(os.path.realpath(path))
+    if real.exists() and not real.is_file():
+        yield str(path)
+        return
     fd, name = tempfile.mkstemp(dir=real.parent, prefix=f".{real.name}.",
                                 suffix=f".part{real.suffix}" if suffix is None else suffix)
     os.close(fd)

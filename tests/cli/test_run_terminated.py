@@ -7,6 +7,7 @@ each of them whole JSON."""
 from __future__ import annotations
 
 import json
+import os
 import signal
 import subprocess
 import sys
@@ -82,3 +83,14 @@ def test_replacing_puts_a_whole_file_in_place_or_leaves_the_old_one(tmp_path):
         Path(name).write_text("new")
     assert link.is_symlink() and target.read_text() == "new" and target.stat().st_mode & 0o777 == 0o640
     assert sorted(p.name for p in tmp_path.iterdir()) == ["link.svg", "plot.svg"]
+
+
+def test_replacing_writes_a_fifo_as_it_is(tmp_path):
+    fifo = tmp_path / "plot.png"
+    os.mkfifo(fifo)
+    reader = subprocess.Popen(["cat", str(fifo)], stdout=subprocess.PIPE)
+    with replacing(fifo) as name:
+        assert name == str(fifo)
+        Path(name).write_bytes(b"drawn")
+    assert reader.communicate(timeout=30)[0] == b"drawn"
+    assert fifo.is_fifo() and [p.name for p in tmp_path.iterdir()] == ["plot.png"]
