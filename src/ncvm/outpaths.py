@@ -11,7 +11,6 @@ import errno
 import os
 import re
 import stat
-import tempfile
 from contextlib import contextmanager
 from pathlib import Path
 
@@ -104,6 +103,8 @@ def replacing(path: Path, suffix: str | None = None):
     removed when it does not (an error, Ctrl-C, a SIGTERM): ``path`` is whole, or as it was. The temporary
     name ends in ``suffix`` (default ``.part`` and the extension of ``path``, which matplotlib reads). A
     path that is not a regular file (a FIFO, a device) is written as it is: it cannot be replaced."""
+    import tempfile  # only for an output written so (start-up, issue 18)
+
     real = Path(os.path.realpath(path))
     if real.exists() and not real.is_file():
         yield str(path)
