@@ -16,7 +16,7 @@ from . import __version__, termstyle
 from .diagnostics import Diagnostic, Span, UsageError
 from .dialects import REGISTRY
 from .lazy import lazy
-from .outpaths import PLOT_SUFFIXES, SCREEN_PICTURE, Output, OutputError, check_outputs
+from .outpaths import PLOT_SUFFIXES, SCREEN_PICTURE, Output, OutputError, check_outputs, replacing
 from .progress import Progress
 from .termstyle import say
 from .timefmt import hms as _hms
@@ -30,7 +30,8 @@ EXIT_OK, EXIT_FAULT, EXIT_USAGE, EXIT_INTERNAL = 0, 1, 2, 70
 _BUG = "2 usage error, 70 internal error (a bug in ncvm)"
 EXITS = {
     "run": "0 the program ended normally (a batch: every program did), 1 a compile error, a run-time fault or "
-           "stdout closed (a batch: a program failed: error or limit violation), " + _BUG,
+           "stdout closed (a batch: a program failed: error or limit violation), 128 + the signal stopped by SIGTERM "
+           "or SIGHUP, " + _BUG,
     "check": "0 no errors, 1 a program has errors, " + _BUG,
     "compile": "0 written, 1 compile errors, " + _BUG,
     "translate": "0 written, 1 the run failed or the translation was refused, " + _BUG,
@@ -234,6 +235,7 @@ def run(programs, dialect, machine, state_dir, as_json, trace, gcode, plot, plot
         run_batch_command(programs, dialect, machine, state_dir, as_json, max_steps, max_memory, jobs, cluster,
                           report, shared_state, [k for k, v in single.items() if v is not None])
     from . import api
+    from .runtime.interrupt import Terminated, ended_by_termination
     from .runtime.memory import parse_size
     from .runtime.session import RunOptions
 
@@ -263,20 +265,19 @@ def run(programs, dialect, machine, state_dir, as_json, trace, gcode, plot, plot
     progress = Progress(enabled=sys.stderr.isatty() and not as_json)
     options.on_session = lambda s: setattr(progress, "session", s)
     options.on_operator_wait = progress.operator_waits
-    with progress:
-        result, session = api.run(program, dialect, machine, options)
+    try:
+        with ended_by_termination("run", _not_written(gcode, plot, trace)):
+            with progress:
+                result, session = api.run(program, dialect, machine, options)
+            if plot:
+                _plot(plot, program, result, session)
+    except Terminated as e:  # as translate ends: the shell's convention for a command ended by a signal
+        _stop(click.get_current_context(), f"ncvm: {e}", "error", "RUN004", str(e), 128 + e.signum)
     if (screen or screen_dir) and session.screen is None:
         click.echo(f"ncvm: warning: dialect '{result['dialect']}' has no operator screen; nothing saved", err=True)
     if editor_block is not None and result["dialect"] != "cpl":
         click.echo(f"ncvm: warning: dialect '{result['dialect']}' has no editor dialog; --editor-block ignored",
                    err=True)
-    if plot:
-        from .sinks.plotview import plot_run
-
-        try:
-            plot_run(plot, program, result, session)
-        except OSError as e:
-            raise OutputError(plot, e) from None
     if as_json:
         click.echo(json.dumps(result, indent=2))
     else:
@@ -290,6 +291,24 @@ def run(programs, dialect, machine, state_dir, as_json, trace, gcode, plot, plot
             click.echo(f"ncvm: editor block: {result['editor_block']}", err=True)
         say(_summary(result, plot_frame))
     sys.exit(EXIT_FAULT if result["error"] else EXIT_OK)
+
+
+def _not_written(gcode, plot, trace) -> str:
+    """What a run stopped by a signal leaves of its outputs (the trace streams: its lines up to the stop)."""
+    lost = [f"{option} {path}" for option, path in (("--gcode", gcode), ("--plot", plot)) if path]
+    said = [f"no {' or '.join(lost)} written"] if lost else []
+    return "; ".join(said + ([f"the trace {trace} ends where the run stopped"] if trace else []))
+
+
+def _plot(plot: str, program, result: dict, session) -> None:
+    """Draw the plot into a temporary file beside ``plot``, put in place only when it is whole."""
+    from .sinks.plotview import plot_run
+
+    try:
+        with replacing(Path(plot)) as drawn:
+            plot_run(drawn, program, result, session)
+    except OSError as e:
+        raise OutputError(plot, e) from None
 
 
 def read_key_script(path: str):

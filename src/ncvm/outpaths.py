@@ -10,6 +10,8 @@ from __future__ import annotations
 import errno
 import os
 import re
+import stat
+from contextlib import contextmanager
 from pathlib import Path
 
 from .diagnostics import UsageError
@@ -92,6 +94,41 @@ def write_output(path: Path, text: str) -> None:
         path.write_text(text, encoding="latin-1")
     except OSError as e:
         raise OutputError(path, e) from None
+
+
+@contextmanager
+def replacing(path: Path, suffix: str | None = None):
+    """A temporary file beside ``path`` (through symbolic links: a link stays a link) for the caller to
+    write, moved into place with the permissions of the file it replaces when the block ends normally, and
+    removed when it does not (an error, Ctrl-C, a SIGTERM): ``path`` is whole, or as it was. The temporary
+    name ends in ``suffix`` (default ``.part`` and the extension of ``path``, which matplotlib reads). A
+    path that is not a regular file (a FIFO, a device) is written as it is: it cannot be replaced."""
+    import tempfile  # only for an output written so (start-up, issue 18)
+
+    real = Path(os.path.realpath(path))
+    if real.exists() and not real.is_file():
+        yield str(path)
+        return
+    fd, name = tempfile.mkstemp(dir=real.parent, prefix=f".{real.name}.",
+                                suffix=f".part{real.suffix}" if suffix is None else suffix)
+    os.close(fd)
+    try:
+        yield name
+        os.chmod(name, _mode(real))
+        os.replace(name, real)
+    except BaseException:
+        Path(name).unlink(missing_ok=True)
+        raise
+
+
+def _mode(path: Path) -> int:
+    """The permissions of the file replaced, or those a new file gets (not the temporary file's 0600)."""
+    try:
+        return stat.S_IMODE(os.stat(path).st_mode)
+    except FileNotFoundError:
+        umask = os.umask(0)
+        os.umask(umask)
+        return 0o666 & ~umask
 
 
 def _input_name(what: str, path: str) -> str:

@@ -443,10 +443,12 @@ class NcKernel:
             self.exact = STOP_END
         elif mode != "block":
             self.exact = 0
-            if mode == "blend" and "P" in words:
-                if words["P"] < 0.0:
-                    self.fault("NC004", f"G64 P{words['P']:g}: the path tolerance cannot be negative", src)
-                self.planner.tolerance = tolerance = words["P"] * self.scale
+            if mode == "blend":  # G64 P sets the corner tolerance; a bare G64 gives back the machine's
+                if "P" in words:
+                    if words["P"] < 0.0:
+                        self.fault("NC004", f"G64 P{words['P']:g}: the path tolerance cannot be negative", src)
+                    tolerance = words["P"] * self.scale
+                self.planner.tolerance = float(self.machine.motion.corner_tolerance) if tolerance is None else tolerance
         if self.canon.path_control is not NOBODY:  # a translation writes it
             self.canon.path_control("exact" if mode == "exact" else mode if mode == "block" else "continuous",
                                     tolerance, src)

@@ -53,3 +53,40 @@ def block():
     if not _depth and _pending:
         _pending = False
         raise KeyboardInterrupt
+
+
+class Terminated(BaseException):
+    """The command was stopped from outside (SIGTERM: a ``kill``, a batch system, ``timeout``; SIGHUP: the
+    terminal closed): it ends as after Ctrl-C, its temporary files removed; ``str()`` says so."""
+
+    def __init__(self, signum: int, what: str = "run", outcome: str = ""):
+        self.signum = signum
+        super().__init__(f"{what} stopped by {signal.Signals(signum).name}" + (f"; {outcome}" if outcome else ""))
+
+
+_TERMINATING = (signal.SIGTERM, signal.SIGHUP)
+
+
+@contextmanager
+def ended_by_termination(what: str = "run", outcome: str = ""):
+    """SIGTERM and SIGHUP raise :class:`Terminated` meanwhile, so that the command ends as Ctrl-C ends it,
+    its temporary files removed (their default action would kill the process and leave them). Once one
+    came, more are ignored until the cleanup is done. Only where nobody else took the signals (an
+    embedding program's handlers stay), in the main thread."""
+    if threading.current_thread() is not threading.main_thread() or \
+            any(signal.getsignal(s) is not signal.SIG_DFL for s in _TERMINATING):
+        yield
+        return
+
+    def stop(signum, frame):
+        for s in _TERMINATING:
+            signal.signal(s, signal.SIG_IGN)
+        raise Terminated(signum, what, outcome)
+
+    for s in _TERMINATING:
+        signal.signal(s, stop)
+    try:
+        yield
+    finally:
+        for s in _TERMINATING:
+            signal.signal(s, signal.SIG_DFL)

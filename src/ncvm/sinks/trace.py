@@ -19,6 +19,9 @@ from ..nc.canon import CanonSink, floats
 from ..outpaths import OutputError
 
 _UNTIMED = object()  # a move's time before the planner has timed it
+#: the speeds of a block that does not move, until the move before it is timed: the path passes its point
+#: at that move's exit speed (the planner never sees it: nothing to time)
+_PASSING = object()
 
 
 class JsonlTrace(CanonSink):
@@ -29,6 +32,7 @@ class JsonlTrace(CanonSink):
         self._untimed: deque = deque()  # the move records among them still without a time, oldest first
         self._early: deque = deque()  # timings of moves whose call has not come yet
         self._planned = True  # the path planner times the moves (not a card of its own)
+        self._exit = 0.0  # the exit speed of the last move timed (mm/min): where a block that does not move stands
         #: where a place the NC ran stands in the user's source (the API gives it Session.source_place)
         self.place = None
         self.removed: tuple[float, ...] = ()  # what work coordinates take off the machine's (zero offset, tool)
@@ -45,10 +49,16 @@ class JsonlTrace(CanonSink):
     def _move(self, call: str, src, p0, p1, **data) -> None:
         if not self._planned:
             self._write(call, src, **data)
-        elif p0 == p1 and call != "arc":
-            self._write(call, src, **data, time=0.0, v_entry=0.0, v_exit=0.0)  # no time: not planned
+        elif p0 == p1 and call != "arc":  # not planned: no time, passed at the speed of the move before
+            if self._untimed:
+                self._write(call, src, **data, time=_UNTIMED, v_entry=_PASSING)
+                self._untimed.append(self._held[-1])
+            else:
+                self._write(call, src, **data, time=0.0, v_entry=self._exit, v_exit=self._exit)
         elif self._early:
-            self._write(call, src, **data, **self._early.popleft())
+            timed = self._early.popleft()
+            self._exit = timed["v_exit"]
+            self._write(call, src, **data, **timed)
         else:
             self._write(call, src, **data, time=_UNTIMED)
             self._untimed.append(self._held[-1])
@@ -70,6 +80,9 @@ class JsonlTrace(CanonSink):
             data = {"time": t, "v_entry": round(v0, 6), "v_exit": round(v1, 6)}
             if untimed:
                 untimed.popleft().update(data)
+                self._exit = passing = data["v_exit"]
+                while untimed and untimed[0].get("v_entry") is _PASSING:
+                    untimed.popleft().update(time=0.0, v_entry=passing, v_exit=passing)
             else:
                 early.append(data)
         self._release()
@@ -141,6 +154,8 @@ class JsonlTrace(CanonSink):
     def end(self):
         for rec in self._untimed:  # a run stopped by a fault before its last moves were timed
             rec["time"] = None
+            if rec.get("v_entry") is _PASSING:
+                del rec["v_entry"]
         self._untimed.clear()
         self._release()
         try:

@@ -10,9 +10,7 @@ from __future__ import annotations
 
 import dataclasses
 import shutil
-import signal
 import tempfile
-import threading
 from contextlib import contextmanager
 from dataclasses import dataclass
 from pathlib import Path
@@ -21,20 +19,12 @@ from .. import records
 from ..diagnostics import Diagnostic
 from ..machine.model import Machine
 from ..machine.state import StateError
+from ..runtime.interrupt import Terminated, ended_by_termination
 from ..runtime.session import RunOptions
 from .output import TranslationFile, TranslationRefused
 from .targets import TARGETS, Target
 
 __all__ = ["TARGETS", "Terminated", "Translated", "TranslationFile", "TranslationRefused", "translate"]
-
-
-class Terminated(BaseException):
-    """The translation was stopped from outside (SIGTERM: a ``kill``, a batch system; SIGHUP: the terminal
-    closed): the temporary file is gone and no output written, as after Ctrl-C."""
-
-    def __init__(self, signum: int):
-        self.signum = signum
-        super().__init__(f"translation stopped by {signal.Signals(signum).name}; no output written")
 
 
 @dataclass
@@ -63,7 +53,7 @@ def translate(program: str | Path, out: str | Path, target: str = "linuxcnc", fr
     given = api.machine_for(program, machine, options.state_dir)
     m = _past_programmed_stops(given)
     stops_passed = m is not given
-    with _scratch_files(m) as m, _ended_by_termination():
+    with _scratch_files(m) as m, ended_by_termination("translation", "no output written"):
         return _translate(program, out, target, frame, source_comments, dialect, m, options, stops_passed)
 
 
@@ -86,29 +76,6 @@ def _translate(program, out, target, frame, source_comments, dialect, m: Machine
     return Translated(Path(out), file.target, w.lines, w.moves, w.setup.frozen, w.setup.probes,
                       {n: lengths[-1] for (_, n, _), lengths in w.setup.tools.items()}, list(result.limit_violations),
                       list(w.warnings))
-
-
-@contextmanager
-def _ended_by_termination():
-    """SIGTERM and SIGHUP raise :class:`Terminated` while the translation runs, so that it ends as Ctrl-C
-    ends it: the temporary body beside OUT removed (their default action would kill the process and leave
-    it). Only where nobody else took the signals (an embedding program's handlers stay), in the main thread."""
-    signals = (signal.SIGTERM, signal.SIGHUP)
-    if threading.current_thread() is not threading.main_thread() or \
-            any(signal.getsignal(s) is not signal.SIG_DFL for s in signals):
-        yield
-        return
-
-    def stop(signum, frame):
-        raise Terminated(signum)
-
-    for s in signals:
-        signal.signal(s, stop)
-    try:
-        yield
-    finally:
-        for s in signals:
-            signal.signal(s, signal.SIG_DFL)
 
 
 def _past_programmed_stops(m: Machine) -> Machine:

@@ -15,7 +15,7 @@ import tempfile
 from pathlib import Path
 
 from ..diagnostics import Diagnostic, NcvmError, Span
-from ..outpaths import OutputError
+from ..outpaths import OutputError, replacing
 from .targets import Target
 from .writer import Translation
 
@@ -157,27 +157,11 @@ class TranslationFile:
     def _assemble(self) -> None:
         """Intro + header + body (+ the tape wrapper) into a temporary file beside the output, moved into place."""
         header = self._intro() + self.writer.header(self.program, self.machine)
-        fd, name = tempfile.mkstemp(dir=self.real.parent, prefix=f".{self.real.name}.", suffix=".part")
-        try:
-            with os.fdopen(fd, "w", encoding=self.target.charset, errors="backslashreplace") as f, \
-                    open(self._body, encoding=self.target.charset) as b:
-                f.write("".join(line + "\n" for line in header))
-                for line in b:
-                    f.write(line)
-                if self.target.wrapper:
-                    f.write(self.target.wrapper + "\n")
-            os.chmod(name, _mode(self.real))
-            os.replace(name, self.real)
-        except BaseException:
-            Path(name).unlink(missing_ok=True)
-            raise
-
-
-def _mode(path: Path) -> int:
-    """The permissions of the file replaced, or those a new file gets (not the temporary file's 0600)."""
-    try:
-        return stat.S_IMODE(os.stat(path).st_mode)
-    except FileNotFoundError:
-        umask = os.umask(0)
-        os.umask(umask)
-        return 0o666 & ~umask
+        with replacing(self.real, ".part") as name, \
+                open(name, "w", encoding=self.target.charset, errors="backslashreplace") as f, \
+                open(self._body, encoding=self.target.charset) as b:
+            f.write("".join(line + "\n" for line in header))
+            for line in b:
+                f.write(line)
+            if self.target.wrapper:
+                f.write(self.target.wrapper + "\n")
