@@ -222,6 +222,8 @@ NCVM_CODES = {
     "RUN005": "waiting for ever (motion held, or every task waiting, with no way to go on)",
     "RUN006": "memory limit reached (--max-memory)",
     "RUN007": "a program of a batch could not be set up (its machine file, the state directory; docs/batch.md)",
+    "RUN008": "program file changed while it ran: a long DIN program read a second time as it runs is not the "
+              "program its first reading checked (docs/decisions.md)",
     "TRN001": "translation refused: the target control has no way to say what the run did (a probe move, a "
               "plane, an axis, a zero offset); no output written",
     "TRN002": "translation refused: the run did not end normally, or needs input it was not given; no output "

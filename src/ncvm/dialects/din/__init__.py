@@ -11,7 +11,7 @@ import os
 import re
 from itertools import islice
 
-from ...diagnostics import CompileFailed, RuntimeFault, UsageError
+from ...diagnostics import CompileFailed, RuntimeFault, Span, UsageError
 from ...nc import blockskip, threads
 from ...nc.axiswords import din_missing_axes
 from ...nc.block import COLUMNS_FROM, PlainRun, columnar, din_stretches, file_stretches, text_stretches
@@ -223,7 +223,11 @@ def held_bytes(stretch) -> int:
 
 class ProgramStretches:
     """A program's :class:`~ncvm.nc.block.DinStretch` es from its start, as often as called: read from its file
-    (``text`` None; one open file for every pass, so each pass reads the same file) or from a text."""
+    (``text`` None; one open file for every pass, so each pass reads the same file) or from a text.
+
+    A file read again is the file its first whole pass read, or the pass stops with RUN008 before the first
+    stretch that differs: a run reads a long program a second time as it runs, and what it runs must be what
+    its first reading checked (an editor or a CAM post writing over the file in place)."""
 
     def __init__(self, path: str, text: str | None):
         self.path = path
@@ -237,11 +241,46 @@ class ProgramStretches:
         #: its size in characters (a file's in bytes: a character each, but for the CR of a CR LF; 0 for a pipe)
         self.size = (len(self.flat) if self.file is None else
                      os.fstat(self.file.fileno()).st_size if self.again else 0)
+        #: the file's pieces as its first whole pass read them: (first line, characters, hash) each, then
+        #: (the line after the last, None, None); None before that pass ends
+        self.read_as = None
 
     def __call__(self, columns_from: int = 0):
         """The stretches from the program's start (``columns_from``: :func:`~ncvm.nc.block.din_stretches`)."""
-        pieces = text_stretches(self.flat) if self.file is None else file_stretches(self.file)
+        if self.file is None:  # a text does not change
+            return din_stretches(self.path, text_stretches(self.flat), columns_from)
+        pieces = file_stretches(self.file)
+        if self.again:  # a pipe is read once
+            pieces = self._recorded(pieces) if self.read_as is None else self._verified(pieces)
         return din_stretches(self.path, pieces, columns_from)
+
+    def _recorded(self, pieces):
+        """``pieces``, each noted (:attr:`read_as`) for the passes after this one (a hash within the run's one
+        process: a few milliseconds for a 500,000-line program)."""
+        seen, line = [], 1
+        for piece in pieces:
+            seen.append((line, len(piece), hash(piece)))
+            line += piece.count("\n")
+            yield piece
+        seen.append((line, None, None))
+        self.read_as = seen
+
+    def _verified(self, pieces):
+        """``pieces``, each the one the first pass read (its length and hash), ending where that pass ended; else
+        run-time error RUN008 at the first line of the first piece that differs, before it is yielded (the
+        blocks before it run)."""
+        seen = self.read_as
+        k = -1
+        for k, piece in enumerate(pieces):
+            if seen[k][1] != len(piece) or seen[k][2] != hash(piece):  # past the end: (line, None, None)
+                self._changed(seen[k][0])
+            yield piece
+        if k + 2 != len(seen):  # it ends before the first pass's end
+            self._changed(seen[k + 1][0])
+
+    def _changed(self, line: int):
+        raise RuntimeFault("RUN008", f"program file {self.path} changed while it ran (line {line}): the run "
+                           "stops; what ran before is reported", Span(self.path, line))
 
     def __enter__(self) -> "ProgramStretches":
         return self
