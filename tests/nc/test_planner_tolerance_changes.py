@@ -9,9 +9,9 @@ import math
 import random
 
 import pytest
+from test_planner_small import DYN, Clock, Timings, add_random
 
 from ncvm.nc.planner import LOOKAHEAD, REST, SMALL, Planner, junction_speed2
-from test_planner_small import DYN, Clock, Timings, add_random
 
 X, Y = (1.0, 0.0, 0.0), (0.0, 1.0, 0.0)
 V, A = 50.0, 1000.0  # mm/s, mm/s^2: 100 mm moves reach every corner's speed
