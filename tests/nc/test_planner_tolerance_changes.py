@@ -5,8 +5,11 @@ Python) agree to the last bit with changes too."""
 
 from __future__ import annotations
 
+import json
 import math
 import random
+import subprocess
+import sys
 
 import pytest
 from test_planner_small import DYN, Clock, Timings, add_random
@@ -77,3 +80,24 @@ def test_plain_python_plan_equals_the_numpy_plan_with_tolerance_changes(seed, mo
             planner._plan(None)
         out.append((timings.times, timings.entry, timings.exit, clock.settled))
     assert out[0] == out[1]
+
+
+def _exit_speeds(tmp_path, name: str, text: str) -> list[float]:
+    program, trace = tmp_path / f"{name}.ngc", tmp_path / f"{name}.jsonl"
+    program.write_text(text)
+    done = subprocess.run([sys.executable, "-m", "ncvm", "run", "-d", "din", "--state", str(tmp_path / name),
+                           "--trace", str(trace), str(program)], capture_output=True, text=True, timeout=120)
+    assert done.returncode == 0, done.stderr
+    return [r["v_exit"] for r in map(json.loads, trace.read_text().splitlines()) if r["call"] == "feed"]
+
+
+def test_a_G64_P_in_a_moving_block_sets_the_corner_that_block_starts_at(tmp_path):
+    """``G64 P0.5 G1 X20 Y10`` after corners under ``G64 P0.01``: the corner at X10 Y10 (where that block
+    starts) is passed as under ``G64 P0.5`` throughout, the one before it as under ``G64 P0.01``."""
+    moves = "G1 X10 Y0\nG1 X10 Y10\n{g64}G1 X20 Y10\nG1 X20 Y20\nM30\n"
+    fine = _exit_speeds(tmp_path, "fine", "G21 G90 G17 F3000 G64 P0.01\n" + moves.format(g64=""))
+    coarse = _exit_speeds(tmp_path, "coarse", "G21 G90 G17 F3000 G64 P0.5\n" + moves.format(g64=""))
+    mixed = _exit_speeds(tmp_path, "mixed", "G21 G90 G17 F3000 G64 P0.01\n" + moves.format(g64="G64 P0.5 "))
+    assert fine[0] < coarse[0] < 3000.0
+    assert mixed[0] == pytest.approx(fine[0], rel=1e-9)
+    assert mixed[1:3] == pytest.approx(coarse[1:3], rel=1e-9)
