@@ -448,7 +448,7 @@ class NcKernel:
                     if words["P"] < 0.0:
                         self.fault("NC004", f"G64 P{words['P']:g}: the path tolerance cannot be negative", src)
                     tolerance = words["P"] * self.scale
-                self.planner.tolerance = float(self.machine.motion.corner_tolerance) if tolerance is None else tolerance
+                self.planner.set_tolerance(float(self.machine.motion.corner_tolerance) if tolerance is None else tolerance)
         if self.canon.path_control is not NOBODY:  # a translation writes it
             self.canon.path_control("exact" if mode == "exact" else mode if mode == "block" else "continuous",
                                     tolerance, src)

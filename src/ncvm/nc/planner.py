@@ -72,7 +72,7 @@ class Planner:
     """
 
     __slots__ = ("clock", "canon", "dyn", "accel", "n", "width", "model", "window", "tolerance", "rows",
-                 "blocks", "limit", "entry2")
+                 "blocks", "limit", "entry2", "changes")
 
     def __init__(self, clock, canon, dyn, model: str = LOOKAHEAD, window: int = 100, tolerance: float = 0.02):
         self.clock = clock
@@ -88,11 +88,32 @@ class Planner:
         self.blocks: list[np.ndarray] = []  # moves waiting as arrays (fields, moves), before ``rows``
         self.limit = (self.window + CHUNK) * self.width
         self.entry2 = 0.0  # squared speed (mm/s)^2 the first waiting move starts with
+        # (moves waiting, the tolerance before) at each change of the tolerance: junctions 1..moves-1 keep it
+        self.changes: list[tuple[int, float]] = []
         clock.pending = self.stop
 
     def fork(self, clock, canon) -> Planner:
         """An empty planner of the same machine data on another clock (a shadow kernel's)."""
         return Planner(clock, canon, self.dyn, self.model, self.window, self.tolerance)
+
+    def set_tolerance(self, tolerance: float) -> None:
+        """The corner tolerance (G64 P) of the junctions that start the moves added from now on; the junctions
+        between moves already waiting keep the tolerance they were programmed with."""
+        if tolerance == self.tolerance:
+            return
+        moves = sum(b.shape[1] for b in self.blocks) + sum(1 for f in self.rows[3::self.width] if f >= 0.0)
+        if moves > 1 and not (self.changes and self.changes[-1][0] == moves):
+            self.changes.append((moves, self.tolerance))
+        self.tolerance = float(tolerance)
+
+    def _tolerances(self, p: int) -> list[float]:
+        """The tolerance of each junction 0..p of the ``p`` waiting moves (``changes`` applied)."""
+        tolerances = [self.tolerance] * (p + 1)
+        start = 0
+        for end, tolerance in self.changes:  # ends increase
+            tolerances[start:end] = [tolerance] * (end - start)
+            start = end
+        return tolerances
 
     # -- adding moves ------------------------------------------------------------------------------
     def add(self, length: float, v: float, a: float, flags: int, u_in, u_out) -> None:
@@ -172,6 +193,7 @@ class Planner:
             else:
                 self._plan(None)
         self.entry2 = 0.0
+        self.changes.clear()
 
     def _plan_rows(self) -> None:
         """:meth:`_plan` of every waiting move, for a few moves in ``rows``: in plain Python, move by move."""
@@ -237,10 +259,10 @@ class Planner:
         p = len(length)
         j = [0.0] * (p + 1)
         if self.model == LOOKAHEAD:
-            accel, tolerance = self.accel, self.tolerance
+            accel, tolerances = self.accel, self._tolerances(p)
             for i in range(1, p):
                 if not (flags[i - 1] & STOP_END or flags[i] & STOP_START):
-                    j[i] = junction_speed2(u_out[i - 1], u_in[i], v[i - 1], v[i], accel, tolerance)
+                    j[i] = junction_speed2(u_out[i - 1], u_in[i], v[i - 1], v[i], accel, tolerances[i])
         j[0] = self.entry2
         if not any(j):
             return j
@@ -280,6 +302,8 @@ class Planner:
         clock.settle(float(np.cumsum(np.concatenate(([clock.settled], times)))[-1]))  # in move order
         self.entry2 = float(w[k])
         self.blocks = [m[:, k:]] if k < p else []
+        if self.changes:  # the junctions left keep theirs, counted from the first move left
+            self.changes = [(end - k, tolerance) for end, tolerance in self.changes if end - k > 1]
         self.canon.timing(times, np.sqrt(w[:k]) * 60.0, np.sqrt(w[1:k + 1]) * 60.0)
 
     def _speeds(self, m) -> np.ndarray:
@@ -293,8 +317,9 @@ class Planner:
             flags = m[3].astype(np.int64)
             stop = ((flags[:-1] & STOP_END) | (flags[1:] & STOP_START)) != 0
             if not stop.all():
+                tolerance = np.asarray(self._tolerances(p)[1:p]) if self.changes else self.tolerance
                 j[1:p] = junction_speeds2(m[4 + n:4 + 2 * n, :-1], m[4:4 + n, 1:], v[:-1], v[1:], stop,
-                                          np.asarray(self.accel), self.tolerance)
+                                          np.asarray(self.accel), tolerance)
         j[0] = self.entry2
         if not j.any():  # every move from rest to rest (exact stop, the rest-to-rest model)
             return j
@@ -312,10 +337,10 @@ class Planner:
         return np.maximum(w, 0.0, out=w)
 
 
-def junction_speeds2(u_prev, u_next, v_prev, v_next, stop, accel, tolerance: float) -> np.ndarray:
+def junction_speeds2(u_prev, u_next, v_prev, v_next, stop, accel, tolerance) -> np.ndarray:
     """Squared speeds (mm/s)^2 at the junctions from moves ending with tangent ``u_prev`` to moves starting
     with ``u_next`` (unit vectors, arrays of axes by junctions), at most both moves' speeds; 0 where
-    ``stop`` (either side stops) or the moves reverse."""
+    ``stop`` (either side stops) or the moves reverse. ``tolerance``: one for all, or one per junction."""
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         cos = -_dot(u_prev, u_next)
         jv = u_next - u_prev  # the direction the velocity changes in: the axes' acceleration limits apply there
