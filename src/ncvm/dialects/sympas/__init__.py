@@ -142,10 +142,8 @@ class SympasDialect(Dialect):
                 units = [u for f, t in texts for u in compile_units(f, t, session.machine, stepping=True)]
         except SympasError as e:
             raise CompileFailed([e.diagnostic()]) from None
-        if session.work_bounds is not None:  # the card's frame is told once, for the whole run, at the end: the
-            session.canon.remove(session.work_bounds)  # bounds need no frame per move (the timeline's hot path)
-        if session.plot is not None:  # the plot draws the run in that frame too (it still takes each move's task)
-            session.plot.frame_told_at_end()
+        if session.plot is not None:  # the plot draws the run in one frame, told at the end (it still takes each
+            session.plot.frame_told_at_end()  # move's task); the bounds take each move's frame, as the trace
         card = Card(session, cfg)
         session.controller = card
         tasks = card.scheduler.tasks
@@ -170,8 +168,6 @@ class SympasDialect(Dialect):
             end = card.finish()
             # the plot's work frame: the card's zero point at the end, as the figures of card.summary()
             shift = tuple(card.user_shift(a) for a in card.axes)  # for every move of the run
-            if session.work_bounds is not None:
-                session.canon.add(session.work_bounds)
             session.canon.frame(Frame(None, shift, (0.0,) * len(shift)), None, True)
             if card.recordings:
                 session.extra["recordings"] = {card.names[ax]: rec.to_json(card.names[ax])
