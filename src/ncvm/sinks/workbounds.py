@@ -38,9 +38,7 @@ class WorkBounds(CanonSink):
         self._hi: np.ndarray | None = None
         recorder.watch(self)
 
-    def frame(self, frame, src, whole_run: bool = False) -> None:
-        if whole_run:  # the plot's frame for a whole rw_SymPas run: each move was told its own before
-            return
+    def frame(self, frame, src) -> None:
         new = tuple(map(float, frame.removed()))
         at = len(self._rec)
         if not self._frames and at:  # the moves before the first frame: in the machine's

@@ -12,7 +12,7 @@ import re
 from pathlib import Path
 
 from ...diagnostics import CompileFailed, Diagnostic, Span, UsageError
-from ...nc.canon import Frame, Src
+from ...nc.canon import Src
 from ...source import read_text
 from ..base import Dialect
 from . import qualifiers
@@ -142,8 +142,6 @@ class SympasDialect(Dialect):
                 units = [u for f, t in texts for u in compile_units(f, t, session.machine, stepping=True)]
         except SympasError as e:
             raise CompileFailed([e.diagnostic()]) from None
-        if session.plot is not None:  # the plot draws the run in one frame, told at the end (it still takes each
-            session.plot.frame_told_at_end()  # move's task); the bounds take each move's frame, as the trace
         card = Card(session, cfg)
         session.controller = card
         tasks = card.scheduler.tasks
@@ -166,9 +164,6 @@ class SympasDialect(Dialect):
             session.steps.steps += card.scheduler.steps
             card.scheduler.steps = 0
             end = card.finish()
-            # the plot's work frame: the card's zero point at the end, as the figures of card.summary()
-            shift = tuple(card.user_shift(a) for a in card.axes)  # for every move of the run
-            session.canon.frame(Frame(None, shift, (0.0,) * len(shift)), None, True)
             if card.recordings:
                 session.extra["recordings"] = {card.names[ax]: rec.to_json(card.names[ax])
                                                for ax, rec in sorted(card.recordings.items())}
