@@ -162,6 +162,7 @@ class Card:
         """An axis's REF point (``ref``) or zero offset (``zerooffset``), or the active zero offset (AZO)
         changed: every statement that changes one calls this, so that :meth:`work_shift` is worked out anew."""
         self._work_shift = None
+        self.timeline.zero_moved = True
 
     def busy(self, a: AxisState, t: float) -> bool:
         return a.move is not None and a.move.t1 > t
