@@ -105,7 +105,8 @@ def _span(node):
 
 
 #: the frame of each figure of the result: the position as the program reads it (dp, with the zero
-#: offsets in force at the end), the toolpath and the limits as the machine's axes move
+#: offsets in force at the end), the program's bounds each move with the zero offsets it ran with, the
+#: toolpath and the limits as the machine's axes move
 FRAMES = {"position": "program", "bounds_program": "program", "motion.bounds": "machine",
           "motion.bounds_program": "program", "limit_violations": "machine"}
 
