@@ -107,6 +107,23 @@ def test_cpl_offset_written_in_the_run_moves_the_work_frame_from_there_on(tmp_pa
     assert m["bounds"]["X"] == [0.0, 260.0], m  # the axis moved with the offset written
 
 
+@pytest.mark.parametrize("name, text", [
+    ("p.din", "N10 G90 G54 G0 X10 Y20 Z5\nN20 G1 X-10 F500\nN30 G55 G0 X5\nN40 G92 X100\nN50 G1 X110\nN60 M30\n"),
+    ("p.cpl", "N10 G90 G54 G0 X10 Y20 Z5\nN20 G1 X-10 F500\nN30 G55 G0 X5\nN40 G1 X30\nN50 M30\n"),
+])
+def test_zero_offset_changed_mid_program_bounds_are_the_trace_work_of_each_move(tmp_path, name, text):
+    """G54 then G55 (and G92) part way: the program's bounds are the lowest and highest ``work`` coordinates
+    the trace gives the moves, each with the offsets it ran with (review18e; the rw_SymPas card's SZPA/SZPR in
+    tests/dialects/sympas/test_sympas_work_shift.py) -- not the machine's less the offsets at the end."""
+    program = written(tmp_path, name, text)
+    m = motion(program, "--machine", MILL3, "--trace", "t.jsonl")
+    moves = [r for r in map(json.loads, (tmp_path / "t.jsonl").read_text().splitlines()) if "work" in r]
+    for axis in "XYZ":
+        work = [r["work"][axis] for r in moves]
+        assert m["bounds_program"][axis] == pytest.approx([min(work), max(work)], abs=1e-6), (axis, m)
+    assert m["bounds_program"]["X"][0] == -10.0 and m["bounds"]["X"][1] >= 400.0, m  # the G55 moves: machine 400+
+
+
 def test_cl800_program_in_g54_with_a_tool_length(tmp_path):
     """CL 800 on the SINUMERIK 880 of the examples (G54 X 150.02 Y 99.99)."""
     shutil.copy(EXAMPLES / "sin800" / "machine.toml", tmp_path / "machine.toml")
@@ -120,8 +137,8 @@ def test_cl800_program_in_g54_with_a_tool_length(tmp_path):
 
 
 def test_sympas_bounds_program_in_motion_and_as_before(tmp_path):
-    """rw_SymPas: the card's zero point at the end (as before, top-level ``bounds_program``, kept for the
-    scripts that read it) now stands in ``motion.bounds_program`` too, under the program's axis names."""
+    """rw_SymPas: the top-level ``bounds_program`` (kept for the scripts that read it) stands in
+    ``motion.bounds_program`` too, under the program's axis names (each move less the zero point it ran with)."""
     program = copied(tmp_path, "sympas/pick_place.sap")
     assert "program A1[-0.03,290] A2[-0.03,190] A3[-60,0.01]" in summary(program)
     assert "machine A1[-5.03,285] A2[-5.03,185] A3[-55,5.01]" in summary(program, "--plot-frame", "machine")

@@ -181,10 +181,9 @@ class CanonSink:
         move may be timed before or after its call, as its look-ahead window completes. All three None:
         the moves from now on are timed by the front end's own model (the rw_SymPas card), not reported."""
 
-    def frame(self, frame: Frame, src: Src | None, whole_run: bool = False) -> None:
+    def frame(self, frame: Frame, src: Src | None) -> None:
         """The coordinate frame changed (zero offset selected or rewritten, tool length, shift, G53 move):
-        the moves that follow are in ``frame``; their positions stay machine coordinates. ``whole_run``: the
-        frame holds for every move of the run, those before it too (a rw_SymPas card tells it at the end)."""
+        the moves that follow are in ``frame``; their positions stay machine coordinates."""
 
     def frozen(self, what: str, src: Src | None, scenario: bool = False, warn: bool = False) -> None:
         """The run read an input from outside the program (``what`` names it: a key, a PLC input, a scenario

@@ -61,25 +61,13 @@ class PlotPoints(CanonSink):
         self.extremes: dict[tuple[bool, int], np.ndarray] = {}
         self._last_key = None
         self.moves = 0  # moves seen, drawn or thinned away
-        self._frame_at_end = False  # see frame_told_at_end
         recorder.watch(self)
 
     # -- canon calls --------------------------------------------------------
-    def frame_told_at_end(self) -> None:
-        """The run's frame comes once, for the whole run, at its end (the rw_SymPas card: docs/decisions.md): the
-        frames told for each move are the other sinks' (trace, translation); the points stay in the machine's
-        coordinates until then, so that every point is drawn in that one frame, also in a run whose earlier
-        moves were shown to the plot while it ran."""
-        self._frame_at_end = True
-
-    def frame(self, frame, src, whole_run: bool = False) -> None:
-        if self.frame_asked != "work" or (self._frame_at_end and not whole_run):
+    def frame(self, frame, src) -> None:
+        if self.frame_asked != "work":
             return
         new = np.asarray(frame.removed(), dtype=float)  # the zero offset and the tool length, as the trace's work
-        if whole_run:  # the points held so far move from the frame they were drawn in to this one
-            self._shift(new - self._frames[-1][1] if self._frames else new)
-            self._frames = [(0, new)]
-            return
         at = len(self._rec)
         if self._frames and self._frames[-1][0] == at:
             self._frames[-1] = (at, new)
@@ -108,19 +96,6 @@ class PlotPoints(CanonSink):
             return np.zeros(len(self.names) or 3)
         starts = [f[0] for f in self._frames]
         return self._frames[max(0, int(np.searchsorted(starts, move, side="right")) - 1)][1]
-
-    def _shift(self, delta: np.ndarray) -> None:
-        """Move every point held by ``-delta`` (machine axes; only the drawn ones are held)."""
-        d = delta[list(self.idx)] if len(delta) > max(self.idx) else np.zeros(3)
-        self.lines = {k: [v - d for v in parts] for k, parts in self.lines.items()}
-        self.extremes = {k: v - d for k, v in self.extremes.items()}
-        self.plunges = [m - d[:2] for m in self.plunges]
-        self._approach_lines = [a - d for a in self._approach_lines]
-        if self._start is not None:
-            self._start = self._start - d
-        if self.first is not None:
-            self.first = (np.asarray(self.first) - d).tolist()
-            self.last = (np.asarray(self.last) - d).tolist()
 
     @property
     def thinned(self) -> bool:

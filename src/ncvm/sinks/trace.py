@@ -98,9 +98,7 @@ class JsonlTrace(CanonSink):
         self.removed = (0.0,) * len(self.names)
         self._write("begin", None, position=self._pos(start))
 
-    def frame(self, frame, src, whole_run=False):
-        if whole_run:  # the plot's frame for a whole rw_SymPas run: the moves are written already
-            return
+    def frame(self, frame, src):
         self.removed = frame.removed()
 
     def rapid(self, start, end, src):

@@ -34,16 +34,12 @@ class WorkBounds(CanonSink):
         self._rec = recorder
         #: (first move, offsets removed), from the one in force on (tuples: a run without moves needs no numpy)
         self._frames: list[tuple[int, tuple[float, ...]]] = []
-        self._whole: tuple[float, ...] | None = None  # a frame for the whole run (rw_SymPas: told at the end)
         self._lo: np.ndarray | None = None
         self._hi: np.ndarray | None = None
         recorder.watch(self)
 
-    def frame(self, frame, src, whole_run: bool = False) -> None:
+    def frame(self, frame, src) -> None:
         new = tuple(map(float, frame.removed()))
-        if whole_run:
-            self._whole = new
-            return
         at = len(self._rec)
         if not self._frames and at:  # the moves before the first frame: in the machine's
             self._frames.append((0, (0.0,) * len(new)))
@@ -90,8 +86,6 @@ class WorkBounds(CanonSink):
     def bounds(self, machine: dict[str, list[float]]) -> dict[str, list[float]]:
         """Per axis [lowest, highest] work coordinate, given the run's ``machine`` bounds (the recorder's,
         settled); a run in no offset has the machine's."""
-        if self._whole is not None:
-            return {a: [lo - s, hi - s] for (a, (lo, hi)), s in zip(machine.items(), self._whole)}
         if self._lo is None:  # no move
             return {}
         names = self._rec.axis_names

@@ -266,9 +266,7 @@ class Translation(CanonSink):
         if not self.work:
             self._line(self.t.machine_frame)
 
-    def frame(self, frame, src, whole_run=False):
-        if whole_run:  # the plot's frame for a whole rw_SymPas run: the moves are written already
-            return
+    def frame(self, frame, src):
         self.frame_now = frame
         self._frame_src = src
         if not self.work:

@@ -29,7 +29,8 @@ def test_axes_under_program_names_in_both_frames_L2146(sap):
     a1 = r["sympas"]["axes"]["A1"]
     assert a1["machine_axis"] == "X"
     assert a1["position"] == 10.0 and a1["machine_position"] == 30.0
-    assert a1["bounds_machine"] == [0.0, 50.0] and a1["bounds_program"] == [-20.0, 30.0]
+    # the program's bounds: each move less the zero offset it ran with (A1 50 before SZPA, 10 after; review18e)
+    assert a1["bounds_machine"] == [0.0, 50.0] and a1["bounds_program"] == [10.0, 50.0]
     assert r["sympas"]["ci"] == {"7": 3} and r["sympas"]["cd"] == {"2": 1.5}
     assert r["sympas"]["output"] == [{"task": 1, "text": "other"}, {"task": 0, "text": "main"}]
 
@@ -42,7 +43,7 @@ def test_position_bounds_and_frames_under_the_program_axis_names_L2146(sap):
     assert r["error"] is None
     assert r["position"] == {"A1": 10.0, "A2": 5.0, "A3": 0.0}
     assert r["motion"]["bounds"] == {"A1": [0.0, 50.0], "A2": [0.0, 5.0], "A3": [0.0, 0.0]}
-    assert r["bounds_program"] == {"A1": [-20.0, 30.0], "A2": [0.0, 5.0], "A3": [0.0, 0.0]}
+    assert r["bounds_program"] == {"A1": [10.0, 50.0], "A2": [0.0, 5.0], "A3": [0.0, 0.0]}
     assert r["motion"]["bounds_program"] == r["bounds_program"]
     assert r["frames"] == {"position": "program", "bounds_program": "program", "motion.bounds": "machine",
                            "motion.bounds_program": "program", "limit_violations": "machine"}
@@ -78,7 +79,7 @@ def test_summary_line_names_the_program_axes_and_the_frames(tmp_path):
     r = CliRunner().invoke(cli.cli, ["run", str(prog), "--state", str(tmp_path / "st")], catch_exceptions=False)
     assert r.exit_code == 0
     summary = r.stderr.strip().splitlines()[-1]
-    assert summary.endswith(", program A1[-20,30] A2[0,5] A3[0,0]"), summary  # the machine frame's in --json
+    assert summary.endswith(", program A1[10,50] A2[0,5] A3[0,0]"), summary  # the machine frame's in --json
 
 
 def test_axes_the_machine_names_as_the_program_does_keep_the_plain_report(sap):

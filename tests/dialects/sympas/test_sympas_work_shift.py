@@ -1,6 +1,6 @@
 """The card's work shift (machine position less user position, per axis: the REF point of homing, SZPA/SZPR and
 the AZO table, manual Table 37 ``zerooffset``, L1422-1497) is kept between moves and worked out anew when a
-statement moves the zero point: the trace's ``work`` coordinates and the plot's points follow every change,
+statement moves the zero point: the trace's ``work`` coordinates, the plot's points and the program bounds follow every change,
 while a run of moves under one zero point does not work it out per move (issue 18: ``--plot`` must not
 double the run's CPU)."""
 
@@ -9,6 +9,7 @@ from __future__ import annotations
 import json
 
 import numpy as np
+import pytest
 
 from ncvm.api import run
 from ncvm.dialects.sympas import card as card_module
@@ -97,11 +98,11 @@ def test_a_run_under_one_zero_point_works_the_shift_out_once(tmp_path, monkeypat
     assert len(calls) <= 4 * 3, len(calls)  # once for the moves, and the run's end (three axes each)
 
 
-def test_the_plot_draws_a_long_run_in_the_cards_frame_at_the_end(tmp_path, monkeypatch):
-    """The plot of a rw_SymPas run is drawn in the card's zero point at the end (docs/decisions.md; the canon's
-    ``frame`` told for the whole run), also where the recorder showed the plot windows of moves while the
-    program ran (a run longer than toolpath.WINDOW): here windows of two moves. Each point is its machine
-    position less the final shift (A1: REF -5 and AZO 1's 5, so 0; A2: SZPR 50 and AZO 1's 7)."""
+def test_the_plot_draws_each_move_in_the_zero_point_it_ran_with(tmp_path, monkeypatch):
+    """The plot of a rw_SymPas run draws each move at its program coordinates, less the zero point in force for
+    it, as the trace's ``work`` (review18e; docs/decisions.md), also where the recorder showed the plot windows
+    of moves while the program ran (a run longer than toolpath.WINDOW): here windows of two moves. Before, every
+    point was its machine position less the zero point at the end of the run."""
     from ncvm.sinks import toolpath
 
     def drawn(folder, window):
@@ -112,6 +113,28 @@ def test_the_plot_draws_a_long_run_in_the_cards_frame_at_the_end(tmp_path, monke
 
     short, long = drawn(tmp_path / "short", 1 << 16), drawn(tmp_path / "long", 2)
     np.testing.assert_array_equal(short, long)
-    ends = [(x, y - 57.0) for _, x, y, _, _ in EXPECTED]
+    ends = [(x, y) for _, _, _, x, y in EXPECTED]
     points = [tuple(p) for p in long[:, :2].tolist()]
     assert all(end in points for end in ends), (ends, points)
+
+
+def test_program_bounds_are_the_trace_work_coordinates_of_the_moves(tmp_path, monkeypatch):
+    """``motion.bounds_program`` (and the ``sympas`` part's, and the summary line's) are the lowest and highest
+    ``work`` coordinates the trace gives the moves: each move less the zero point it ran with (review18e), also
+    in windows of two moves. Before, every move was taken less the zero point at the end of the run."""
+    from ncvm.sinks import toolpath
+
+    for window in (1 << 16, 2):
+        monkeypatch.setattr(toolpath, "WINDOW", window)
+        folder = tmp_path / str(window)
+        folder.mkdir()
+        trace = folder / "t.jsonl"
+        result, _ = _run(folder, ZERO_CHANGES, trace=trace)
+        moves = [r for r in map(json.loads, trace.read_text().splitlines()) if "work" in r]
+        for axis, program_axis in (("X", "A1"), ("Y", "A2")):
+            work = [m["work"][axis] for m in moves]
+            expected = pytest.approx([min(work), max(work)], abs=1e-6)  # the trace's figures: 6 decimals
+            assert result["motion"]["bounds_program"][program_axis] == expected, window
+            assert result["sympas"]["axes"][program_axis]["bounds_program"] == expected
+        # the machine's bounds less the zero point at the end (A2: 57) were [-57, 60]
+        assert result["motion"]["bounds_program"]["A2"] == [10.0, 60.0]

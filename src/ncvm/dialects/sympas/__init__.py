@@ -12,7 +12,7 @@ import re
 from pathlib import Path
 
 from ...diagnostics import CompileFailed, Diagnostic, Span, UsageError
-from ...nc.canon import Frame, Src
+from ...nc.canon import Src
 from ...source import read_text
 from ..base import Dialect
 from . import qualifiers
@@ -105,7 +105,8 @@ def _span(node):
 
 
 #: the frame of each figure of the result: the position as the program reads it (dp, with the zero
-#: offsets in force at the end), the toolpath and the limits as the machine's axes move
+#: offsets in force at the end), the program's bounds each move with the zero offsets it ran with, the
+#: toolpath and the limits as the machine's axes move
 FRAMES = {"position": "program", "bounds_program": "program", "motion.bounds": "machine",
           "motion.bounds_program": "program", "limit_violations": "machine"}
 
@@ -142,10 +143,6 @@ class SympasDialect(Dialect):
                 units = [u for f, t in texts for u in compile_units(f, t, session.machine, stepping=True)]
         except SympasError as e:
             raise CompileFailed([e.diagnostic()]) from None
-        if session.work_bounds is not None:  # the card's frame is told once, for the whole run, at the end: the
-            session.canon.remove(session.work_bounds)  # bounds need no frame per move (the timeline's hot path)
-        if session.plot is not None:  # the plot draws the run in that frame too (it still takes each move's task)
-            session.plot.frame_told_at_end()
         card = Card(session, cfg)
         session.controller = card
         tasks = card.scheduler.tasks
@@ -168,11 +165,6 @@ class SympasDialect(Dialect):
             session.steps.steps += card.scheduler.steps
             card.scheduler.steps = 0
             end = card.finish()
-            # the plot's work frame: the card's zero point at the end, as the figures of card.summary()
-            shift = tuple(card.user_shift(a) for a in card.axes)  # for every move of the run
-            if session.work_bounds is not None:
-                session.canon.add(session.work_bounds)
-            session.canon.frame(Frame(None, shift, (0.0,) * len(shift)), None, True)
             if card.recordings:
                 session.extra["recordings"] = {card.names[ax]: rec.to_json(card.names[ax])
                                                for ax, rec in sorted(card.recordings.items())}

@@ -162,6 +162,7 @@ class Card:
         """An axis's REF point (``ref``) or zero offset (``zerooffset``), or the active zero offset (AZO)
         changed: every statement that changes one calls this, so that :meth:`work_shift` is worked out anew."""
         self._work_shift = None
+        self.timeline.zero_moved = True
 
     def busy(self, a: AxisState, t: float) -> bool:
         return a.move is not None and a.move.t1 > t
@@ -395,19 +396,20 @@ class Card:
             tasks.append({"task": tk.number, "program": tk.unit.prog.name, "state": tk.state,
                           "file": where[0] if where else None, "line": where[1] if where else None,
                           "error": tk.error, "error_line": tk.error_line or None})
-        rec = self.session.recorder
+        rec, work = self.session.recorder, self.session.work_bounds
         bounds = rec.summary().bounds if rec is not None else {}
+        program = work.bounds(bounds) if work is not None else {}  # each move less the zero offsets it ran with
         machine = self.session.machine.axis_names
         axes = {}
         for a in self.axes:
             shift = self.user_shift(a)
-            b = bounds.get(machine[a.number])
-            axes[a.name] = {"machine_axis": machine[a.number], "position": a.m - shift, "machine_position": a.m,
-                            "bounds_machine": b, "bounds_program": [b[0] - shift, b[1] - shift] if b else None}
+            name = machine[a.number]
+            axes[a.name] = {"machine_axis": name, "position": a.m - shift, "machine_position": a.m,
+                            "bounds_machine": bounds.get(name), "bounds_program": program.get(name)}
         return {"profile_length": round(self.timeline.profile_length, 9), "tasks": tasks,
-                "axes": axes, "frames": "position and bounds_program: the program's coordinates (dp) with the "
-                                        "zero offsets in force at the end; machine_position, bounds_machine: "
-                                        "the machine's",
+                "axes": axes, "frames": "position: the program's coordinates (dp) with the zero offsets in force "
+                                        "at the end; bounds_program: each move's, with the zero offsets it ran "
+                                        "with; machine_position, bounds_machine: the machine's",
                 "ci": {str(i): v for i, v in enumerate(self.ci) if v},
                 "cd": {str(i): v for i, v in enumerate(self.cd) if v},
                 "output": self.output_log.lines()}

@@ -41,6 +41,7 @@ class Timeline:
         self.last_end = 0.0  # the latest end of a retired move: the axes stand still after it
         self.task: int | None = None  # the CNC task whose moves were reported last (canon ``channel``)
         self.shift: tuple[float, ...] = (0.0,) * len(start)  # the frame told to the canon last (canon ``frame``)
+        self.zero_moved = True  # the card's zero point may differ from ``shift`` (Card.zero_moved): look again
 
     def add(self, mv) -> None:
         """A move retired: it is final and is reported when the time it ran is reported."""
@@ -62,10 +63,10 @@ class Timeline:
         if self.pending:
             self.report(math.inf)
         self._channel(src)
-        if self.canon.frame is not NOBODY:
-            shift = self.card.work_shift()
-            if shift is not self.shift:  # the card keeps the one tuple until its zero point moves
-                self._frame(shift, src)
+        if self.zero_moved:  # one look per change of the zero point, not one per move
+            self.zero_moved = False
+            if self.canon.frame is not NOBODY:
+                self._frame(self.card.work_shift(), src)
         if self.canon.programmed is not NOBODY:  # a translation: nothing per move otherwise
             self._programmed([ax for ax, _ in items], src)
         self.canon.feed(start, end, feed, src)
