@@ -1,6 +1,6 @@
 """Fifth review of issue 18: an rw_SymPas program that changes its zero offsets part way (SZPA/SZPR).
 
-The manual (spec/sympas.md §10.6, L2144-2158): the user coordinate is ``u = m - zerooffset``; SZPA sets the zero
+The rw_SymPas manual (§10.6, L2144-2158): the user coordinate is ``u = m - zerooffset``; SZPA sets the zero
 offset, SZPR shifts it. ``ncvm run`` writes each move's user coordinates into the trace (``work``) right, but
 the summary's program bounds (``bounds_program``, the "program A1[..]" of the last line) and the work-frame plot
 take the machine positions less the zero offset in force at the END of the run: every move made before the
