@@ -525,14 +525,8 @@ class CplRuntime:
     def execute_blocks(self, blocks: list) -> None:
         """Execute ``blocks`` in order: a few (a WAIT after every block or two) one by one by the kernel, more
         as runs of plain rows column-wise (the columns cost more to set up than a few blocks take)."""
-        if not columnar(len(blocks)):
-            kernel, execute = self.kernel, self.execute_block
-            for blk in blocks:
-                if kernel.ended:
-                    return
-                execute(blk)
-        else:
-            execute_segments(self.kernel, plain_segments(blocks, self.row_words), self.execute_block)
+        segments = plain_segments(blocks, self.row_words) if columnar(len(blocks)) else blocks
+        execute_segments(self.kernel, segments, self.execute_block)
 
     def prepared_kernel(self):
         """The NC state after every *prepared* block: what CPOS and AXO read (manual §4.2.1, values at
