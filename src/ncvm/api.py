@@ -267,11 +267,12 @@ def run_sinks(machine: Machine, options: RunOptions, program: str = "the program
         canon.append(JsonlTrace(options.trace))
     gcode = None
     if options.gcode:
-        from .translate.output import TranslationFile
+        from .translate.output import TranslationFile, timed_motion
         from .translate.targets import LINUXCNC
 
         gcode = TranslationFile(options.gcode, LINUXCNC, program, machine.name,
-                                scenario_given=bool(options.scenario or machine.scenario))
+                                scenario_given=bool(options.scenario or machine.scenario),
+                                motion=timed_motion(machine, options.time_model))
         canon.append(gcode.writer)
     canon.extend(options.extra_sinks)
     plot = None

@@ -21,7 +21,7 @@ from ..machine.model import Machine
 from ..machine.state import StateError
 from ..runtime.interrupt import Terminated, ended_by_termination
 from ..runtime.session import RunOptions
-from .output import TranslationFile, TranslationRefused
+from .output import TranslationFile, TranslationRefused, timed_motion
 from .targets import TARGETS, Target
 
 __all__ = ["TARGETS", "Terminated", "Translated", "TranslationFile", "TranslationRefused", "translate"]
@@ -62,7 +62,8 @@ def _translate(program, out, target, frame, source_comments, dialect, m: Machine
     from .. import api
 
     file = TranslationFile(out, TARGETS[target], Path(program).name, m.name, frame, source_comments,
-                           scenario_given=bool(options.scenario or m.scenario), stops_passed=stops_passed)
+                           scenario_given=bool(options.scenario or m.scenario), stops_passed=stops_passed,
+                           motion=timed_motion(m, options.time_model))
     try:
         options.extra_sinks = [*options.extra_sinks, file.writer]
         result = api.run_program(program, dialect, m, options)

@@ -13,11 +13,16 @@ import os
 import stat
 import tempfile
 from pathlib import Path
+from typing import TYPE_CHECKING
 
+from .. import records
 from ..diagnostics import Diagnostic, NcvmError, Span
 from ..outpaths import OutputError, replacing
 from .targets import Target
 from .writer import Translation
+
+if TYPE_CHECKING:
+    from ..machine.model import MotionData
 
 #: every translation starts (after ISO's "%") with a comment that begins so; outpaths.py recognizes
 #: a file ncvm wrote by it (and may write it again)
@@ -64,11 +69,18 @@ def _is_stream(path: Path) -> bool:
     return False
 
 
+def timed_motion(machine, time_model: str | None) -> MotionData:
+    """``machine``'s path control data as the run times its moves (``ncvm run --time-model`` names another
+    model): the header says what the cycle time assumed."""
+    return records.replace(machine.motion, model=time_model) if time_model else machine.motion
+
+
 class TranslationFile:
     """One output of a translation: ``writer`` is the canon sink, :meth:`complete` ends it."""
 
     def __init__(self, path: str | Path, target: Target, program: str, machine: str, frame: str = "work",
-                 source_comments: bool = False, scenario_given: bool = False, stops_passed: bool = False):
+                 source_comments: bool = False, scenario_given: bool = False, stops_passed: bool = False,
+                 motion: MotionData | None = None):
         self.path = Path(path)
         #: the file replaced at the end: through symbolic links (a link stays a link)
         self.real = Path(os.path.realpath(self.path))
@@ -85,7 +97,7 @@ class TranslationFile:
                 self._f = os.fdopen(fd, "w", encoding=target.charset, errors="backslashreplace")
         except OSError as e:
             raise OutputError(self.path, e) from None
-        self.writer = Translation(self._f, target, frame, source_comments, scenario_given, stops_passed)
+        self.writer = Translation(self._f, target, frame, source_comments, scenario_given, stops_passed, motion)
         self.writer.out_path = self.path
         if self.stream:
             self._write_lines(self._intro() + [target.note("the setup the simulation used is listed at the end")])

@@ -56,6 +56,9 @@ class Target:
     path_tolerance: str | None = None
     exact_stop_block: str | None = None
     path_power_on: str = "continuous"
+    #: what the control's continuous path without a tolerance does (the header says it beside the tolerance the
+    #: simulation blended corners within: a bare G64 leaves the new control's own, as a zero offset is its own)
+    bare_continuous: str = "its own corner rounding, a setting of the control"
     #: selected for ``--frame machine`` (the header says that it must be all zero), with no tool length where
     #: the preamble does not cancel it (840D: D0)
     machine_frame: str = "G54"
@@ -122,7 +125,9 @@ LINUXCNC = Target(
     machine_move="G53", machine_move_keeps_tool=False,
     dwell="G4 P{s}", probe="G38.2 {axes}{feed}", probe_no_contact="G38.3 {axes}{feed}", turns=" P{n}", message="(MSG, {})",
     thread="G33 {axes} K{lead}",
-    program_end="M2", path_tolerance="G64 P{tol}", comment_escapes=_PARENS, charset="utf-8")
+    program_end="M2", path_tolerance="G64 P{tol}", comment_escapes=_PARENS, charset="utf-8",
+    bare_continuous="no tolerance at all (best possible speed); G64 P{tol} keeps corners within the simulated "
+                    "tolerance")
 
 #: SINUMERIK 840D: G54-G57 are settable zero offsets, G58/G59 programmable ones: the program's G58/G59
 #: selections go to the next settable ones, G505/G506; the tool length comes with the D number
@@ -135,6 +140,8 @@ SINUMERIK_840D = Target(
     dwell="G4 F{s}", probe="MEAS=1 G1 {axes}{feed}", probe_no_contact="MEAS=1 G1 {axes}{feed}", turns=" TURN={n}", message='MSG("{}")',
     thread=None,
     program_end="M30", path_exact="G60", exact_stop_block="G9",
+    bare_continuous="blending by the control's own machine data (its G641 ADIS is a rounding distance, not a "
+                    "deviation bound)",
     machine_frame="G500 D0", comment_escapes={'"': "'", "\n": " "})
 
 #: plain ISO / Fanuc style: the tape wrapper %, G43 H, dwell in seconds as X; no standard probe move

@@ -14,12 +14,16 @@ import math
 import re
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from ..diagnostics import Diagnostic, Span, read_lines_at
 from ..nc import arcs
 from ..nc.canon import CanonSink, Frame, Src, plain_frame
 from ..outpaths import OutputError
 from .targets import Target
+
+if TYPE_CHECKING:
+    from ..machine.model import MotionData
 
 PLANE_OF = {("X", "Y"): "G17", ("Z", "X"): "G18", ("Y", "Z"): "G19"}
 CENTRE_WORDS = {"X": "I", "Y": "J", "Z": "K"}
@@ -63,6 +67,7 @@ class Setup:
     probes: int = 0
     left_out: list[str] = field(default_factory=list)  # machine functions written as comments
     homed: list = field(default_factory=list)  # (axis names, block) of each home search, written as comments
+    blended: bool = False  # a move ran in continuous path at the machine's corner tolerance (a bare G64)
 
 
 class Translation(CanonSink):
@@ -73,7 +78,7 @@ class Translation(CanonSink):
     """
 
     def __init__(self, out, target: Target, frame: str = "work", source_comments: bool = False,
-                 scenario_given: bool = False, stops_passed: bool = False):
+                 scenario_given: bool = False, stops_passed: bool = False, motion: MotionData | None = None):
         self.out = out
         self.out_path = getattr(out, "name", "the output")  # named in a write error
         self.t = target
@@ -82,6 +87,7 @@ class Translation(CanonSink):
         self.source_comments = source_comments
         self.scenario_given = scenario_given
         self.stops_passed = stops_passed  # the simulated control stops at M0 ([sin800] m0 = "stop"); this goes on
+        self.motion = motion  # how the simulated machine timed the moves (the header names its corner tolerance)
         #: where a place the NC ran stands in the user's source (the API gives it Session.source_place: a CL 800
         #: program's .cl8 line, not its object program's block)
         self.place = None
@@ -373,6 +379,8 @@ class Translation(CanonSink):
         self._exact_block = None
         if block and self.t.exact_stop_block is None:  # the modal exact stop for this move, the mode after it
             mode, tolerance, at = "exact", None, src
+        if mode == "continuous" and tolerance is None and not block:
+            self.setup.blended = True
         if (mode, tolerance) != self._path_written:
             self._path_written = (mode, tolerance)
             self._line(self._path_word(mode, tolerance, at or src), at or src)
@@ -762,6 +770,19 @@ class Translation(CanonSink):
         """The program end: always, even where the program has none (an rw_SymPas program)."""
         self._line(self.t.program_end, self.ended)
 
+    def _blending(self, machine: str) -> str:
+        """The header's word on continuous path without a tolerance: what the cycle time assumed, and that the
+        bare G64 written leaves the new control's own corner rounding (on LinuxCNC none: docs/decisions.md)."""
+        t, m = self.t, self.motion
+        if m.model != "lookahead":
+            return (f"continuous path ({t.path_continuous}): the simulation timed every move from rest to rest "
+                    f"({machine}'s [motion] model); the new control blends corners and takes less time")
+        tol = m.corner_tolerance
+        own = t.bare_continuous.format(tol=self.num(tol))
+        return (f"continuous path ({t.path_continuous} without a tolerance): the cycle time assumed corners blended "
+                f"within {number(tol)} mm ({machine}'s [motion] corner_tolerance); on the new control "
+                f"{t.path_continuous} is {own}")
+
     def header(self, program: str, machine: str) -> list[str]:
         """The comment lines at the top: how the positions are meant, and what the new control must hold."""
         t, s = self.t, self.setup
@@ -792,6 +813,8 @@ class Translation(CanonSink):
                          "included in the positions !!!"),
                     note("!!! run only on a control whose active zero offset and tool length are all zero "
                          "!!!")]
+        if s.blended and self.motion is not None:
+            out.append(note(self._blending(machine)))
         if s.homed:
             names = sorted({n for axes, _ in s.homed for n in axes.split()})
             out.append(note(f"the program homes {' '.join(names)} (marked HOMING below): home them on the new "
