@@ -48,6 +48,11 @@ def test_the_machines_own_tolerance_is_the_one_named(tmp_path):
     assert "within 0.05 mm" in head and "G64 P0.05 keeps" in head and "0.02" not in head
 
 
+def test_a_corner_tolerance_of_zero_is_said_as_a_stop_at_every_corner(tmp_path):
+    head, _ = _header(tmp_path, CONTOUR, machine=AXES + "[motion]\ncorner_tolerance = 0\n")
+    assert "a stop at every corner" in head and "corner_tolerance 0 mm" in head and "blended within" not in head
+
+
 def test_a_bare_g64_after_g64_p_is_said_too(tmp_path):
     text = CONTOUR.replace("N40 X50", "N40 G64 P0.1 X50").replace("N60 X0", "N60 G64 X0")
     head, code = _header(tmp_path, text)

@@ -779,8 +779,10 @@ class Translation(CanonSink):
                     f"({machine}'s [motion] model); the new control blends corners and takes less time")
         tol = m.corner_tolerance
         own = t.bare_continuous.format(tol=self.num(tol))
-        return (f"continuous path ({t.path_continuous} without a tolerance): the cycle time assumed corners blended "
-                f"within {number(tol)} mm ({machine}'s [motion] corner_tolerance); on the new control "
+        assumed = (f"corners blended within {number(tol)} mm" if tol > 0 else
+                   "a stop at every corner (only moves in line blended)")
+        return (f"continuous path ({t.path_continuous} without a tolerance): the cycle time assumed {assumed} "
+                f"({machine}'s [motion] corner_tolerance {number(tol)} mm); on the new control "
                 f"{t.path_continuous} is {own}")
 
     def header(self, program: str, machine: str) -> list[str]:
