@@ -207,7 +207,7 @@ class RunResult(Record):
             output_dropped=session.output.dropped, variables=dict(session.variables),
             position={labels.get(a, a): v for a, v in session.kernel.workpiece_position().items()}, motion=motion,
             cycle_time_s=session.machine.clock.now,
-            cycle_time_model=session.time_model or session.kernel.time_model(),
+            cycle_time_model=session.cycle_time_model(),
             # every dialect counts the statements and blocks that ran, never past the limit (docs/decisions.md)
             steps=min(session.steps.steps, session.steps.limit) if error and error.code == "RUN001" else session.steps.steps,
             limit_violations=[v.message() for v in session.checks.violations(session.source_place, labels)],
@@ -267,12 +267,11 @@ def run_sinks(machine: Machine, options: RunOptions, program: str = "the program
         canon.append(JsonlTrace(options.trace))
     gcode = None
     if options.gcode:
-        from .translate.output import TranslationFile, timed_motion
+        from .translate.output import TranslationFile
         from .translate.targets import LINUXCNC
 
         gcode = TranslationFile(options.gcode, LINUXCNC, program, machine.name,
-                                scenario_given=bool(options.scenario or machine.scenario),
-                                motion=timed_motion(machine, options.time_model))
+                                scenario_given=bool(options.scenario or machine.scenario), motion=machine.motion)
         canon.append(gcode.writer)
     canon.extend(options.extra_sinks)
     plot = None
@@ -324,7 +323,7 @@ def run_program(path: str | Path, dialect: str | None = None, machine: Machine |
             finally:
                 session.close()
             if sinks.gcode is not None:  # in place, or nothing (a stream: marked incomplete)
-                refused = sinks.gcode.complete(error)
+                refused = sinks.gcode.complete(error, session.cycle_time_model())
                 error = error or refused
     return RunResult.of(session, sinks.recorder, error)
 

@@ -180,6 +180,11 @@ class Session:
                 print(line, flush=True)
 
     # -- the run ---------------------------------------------------------
+    def cycle_time_model(self) -> str:
+        """The run's cycle-time model as its summary names it: the kernel's, or "card" where the front end
+        timed its moves itself (rw_SymPas)."""
+        return self.time_model or self.kernel.time_model()
+
     def close(self) -> None:
         self.kernel.planner.stop()  # the moves still waiting are timed (they end at rest) before the sinks end
         for s in self.sinks:

@@ -21,7 +21,7 @@ from ..machine.model import Machine
 from ..machine.state import StateError
 from ..runtime.interrupt import Terminated, ended_by_termination
 from ..runtime.session import RunOptions
-from .output import TranslationFile, TranslationRefused, timed_motion
+from .output import TranslationFile, TranslationRefused
 from .targets import TARGETS, Target
 
 __all__ = ["TARGETS", "Terminated", "Translated", "TranslationFile", "TranslationRefused", "translate"]
@@ -63,14 +63,14 @@ def _translate(program, out, target, frame, source_comments, dialect, m: Machine
 
     file = TranslationFile(out, TARGETS[target], Path(program).name, m.name, frame, source_comments,
                            scenario_given=bool(options.scenario or m.scenario), stops_passed=stops_passed,
-                           motion=timed_motion(m, options.time_model))
+                           motion=m.motion)
     try:
         options.extra_sinks = [*options.extra_sinks, file.writer]
         result = api.run_program(program, dialect, m, options)
     except BaseException:
         file.close()
         raise
-    refusal = file.complete(result.error)
+    refusal = file.complete(result.error, result.cycle_time_model)
     if refusal is not None:
         raise TranslationRefused(refusal)
     w = file.writer

@@ -15,7 +15,6 @@ import tempfile
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from .. import records
 from ..diagnostics import Diagnostic, NcvmError, Span
 from ..outpaths import OutputError, replacing
 from .targets import Target
@@ -69,12 +68,6 @@ def _is_stream(path: Path) -> bool:
     return False
 
 
-def timed_motion(machine, time_model: str | None) -> MotionData:
-    """``machine``'s path control data as the run times its moves (``ncvm run --time-model`` names another
-    model): the header says what the cycle time assumed."""
-    return records.replace(machine.motion, model=time_model) if time_model else machine.motion
-
-
 class TranslationFile:
     """One output of a translation: ``writer`` is the canon sink, :meth:`complete` ends it."""
 
@@ -112,9 +105,11 @@ class TranslationFile:
         except OSError as e:
             raise OutputError(self.path, e) from None
 
-    def complete(self, error: Diagnostic | None) -> Diagnostic | None:
-        """The run is over (``error``: how it failed): put the file in place, or say why there is none."""
+    def complete(self, error: Diagnostic | None, time_model: str | None = None) -> Diagnostic | None:
+        """The run is over (``error``: how it failed; ``time_model``: its cycle-time model, as its summary names
+        it): put the file in place, or say why there is none."""
         w = self.writer
+        w.time_model = time_model
         refusal = None
         if error is not None:
             hint = _NEEDS.get(error.code)

@@ -50,7 +50,7 @@ class Target:
     #: the path control: modal exact stop, continuous path, continuous path within a corner tolerance {tol}
     #: (None: the control's continuous path takes no tolerance), exact stop of one block (None: the modal
     #: exact stop around its move), and the mode the control is in after the preamble (nothing written while
-    #: it holds: the 840D's power-on mode is a machine datum, so its preamble selects G64)
+    #: it holds: every preamble selects G64, since a control keeps the mode the last program left, M2 or not)
     path_exact: str = "G61"
     path_continuous: str = "G64"
     path_tolerance: str | None = None
@@ -58,7 +58,7 @@ class Target:
     path_power_on: str = "continuous"
     #: what the control's continuous path without a tolerance does (the header says it beside the tolerance the
     #: simulation blended corners within: a bare G64 leaves the new control's own, as a zero offset is its own)
-    bare_continuous: str = "its own corner rounding, a setting of the control"
+    bare_continuous: str = "the control's own corner rounding, a setting of that control"
     #: selected for ``--frame machine`` (the header says that it must be all zero), with no tool length where
     #: the preamble does not cancel it (840D: D0)
     machine_frame: str = "G54"
@@ -120,14 +120,13 @@ _ISO_OFFSETS = {f"G{n}": f"G{n}" for n in range(54, 60)}
 
 LINUXCNC = Target(
     name="linuxcnc", title="LinuxCNC (rs274ngc)", comment="({})",
-    preamble="G21 G90 G17 G94 G40 G49 G80", work_offsets=_ISO_OFFSETS,
+    preamble="G21 G90 G17 G94 G40 G49 G80 G64", work_offsets=_ISO_OFFSETS,
     tool_length_on="G43 H{n}", tool_length_off="G49", tool_length_minus=None,
     machine_move="G53", machine_move_keeps_tool=False,
     dwell="G4 P{s}", probe="G38.2 {axes}{feed}", probe_no_contact="G38.3 {axes}{feed}", turns=" P{n}", message="(MSG, {})",
     thread="G33 {axes} K{lead}",
     program_end="M2", path_tolerance="G64 P{tol}", comment_escapes=_PARENS, charset="utf-8",
-    bare_continuous="no tolerance at all (best possible speed); G64 P{tol} keeps corners within the simulated "
-                    "tolerance")
+    bare_continuous="no tolerance at all (best possible speed)")
 
 #: SINUMERIK 840D: G54-G57 are settable zero offsets, G58/G59 programmable ones: the program's G58/G59
 #: selections go to the next settable ones, G505/G506; the tool length comes with the D number
@@ -140,14 +139,13 @@ SINUMERIK_840D = Target(
     dwell="G4 F{s}", probe="MEAS=1 G1 {axes}{feed}", probe_no_contact="MEAS=1 G1 {axes}{feed}", turns=" TURN={n}", message='MSG("{}")',
     thread=None,
     program_end="M30", path_exact="G60", exact_stop_block="G9",
-    bare_continuous="blending by the control's own machine data (its G641 ADIS is a rounding distance, not a "
-                    "deviation bound)",
+    bare_continuous="the control's own continuous-path mode (how it slows at corners is its machine data)",
     machine_frame="G500 D0", comment_escapes={'"': "'", "\n": " "})
 
 #: plain ISO / Fanuc style: the tape wrapper %, G43 H, dwell in seconds as X; no standard probe move
 ISO = Target(
     name="iso", title="ISO / Fanuc style", comment="({})",
-    preamble="G21 G90 G17 G94 G40 G49 G80", work_offsets=_ISO_OFFSETS,
+    preamble="G21 G90 G17 G94 G40 G49 G80 G64", work_offsets=_ISO_OFFSETS,
     tool_length_on="G43 H{n}", tool_length_off="G49", tool_length_minus="G44 H{n}",
     machine_move="G53", machine_move_keeps_tool=False,
     dwell="G4 X{s}", probe=None, probe_no_contact=None, turns=None, message="({})", thread=None,

@@ -67,7 +67,9 @@ class Setup:
     probes: int = 0
     left_out: list[str] = field(default_factory=list)  # machine functions written as comments
     homed: list = field(default_factory=list)  # (axis names, block) of each home search, written as comments
-    blended: bool = False  # a move ran in continuous path at the machine's corner tolerance (a bare G64)
+    #: two feed moves in a row ran in continuous path at the machine's corner tolerance (a bare G64): the cycle
+    #: time blended the corner between them within it
+    blended: bool = False
 
 
 class Translation(CanonSink):
@@ -87,7 +89,9 @@ class Translation(CanonSink):
         self.source_comments = source_comments
         self.scenario_given = scenario_given
         self.stops_passed = stops_passed  # the simulated control stops at M0 ([sin800] m0 = "stop"); this goes on
-        self.motion = motion  # how the simulated machine timed the moves (the header names its corner tolerance)
+        self.motion = motion  # the simulated machine's path control data (the header names its corner tolerance)
+        #: the run's cycle-time model as its summary names it ("look-ahead", "rest-to-rest", "card"), known at its end
+        self.time_model: str | None = None
         #: where a place the NC ran stands in the user's source (the API gives it Session.source_place: a CL 800
         #: program's .cl8 line, not its object program's block)
         self.place = None
@@ -135,6 +139,8 @@ class Translation(CanonSink):
         self._path_written: tuple[str, float | None] = (target.path_power_on, None)
         self._exact_block: Src | None = None
         self._stop_word = ""  # the exact stop word of the next move's line
+        self._blends = False  # the last move was a feed move in continuous path: nothing has stopped the axes since
+        self._stands_in: Src | None = None  # the last block with an M function, dwell or tool change: it ends at rest
 
     # -- output ----------------------------------------------------------
     def source(self, src: Src) -> Src:
@@ -371,26 +377,37 @@ class Translation(CanonSink):
         else:
             self._path = (mode, tolerance, src)
 
-    def _path_words(self, src: Src) -> str:
-        """Before a move: the path control where the output's differs from the run's (a word of its own
-        line), and the exact stop of this move alone (returned: a word of the move's line, or "")."""
+    def _path_words(self, src: Src, fed: bool) -> str:
+        """Before a move (``fed``: not a rapid, which ends at rest): the path control where the output's differs
+        from the run's (a word of its own line), and the exact stop of this move alone (returned: a word of the
+        move's line, or "")."""
         mode, tolerance, at = self._path
         block = self._exact_block is not None and self._exact_block == src
         self._exact_block = None
         if block and self.t.exact_stop_block is None:  # the modal exact stop for this move, the mode after it
             mode, tolerance, at = "exact", None, src
-        if mode == "continuous" and tolerance is None and not block:
-            self.setup.blended = True
+        if fed and self._blends and mode == "continuous" and tolerance is None:
+            self.setup.blended = True  # the junction takes the tolerance of the block that starts at it
+        self._blends = fed and mode == "continuous" and not block and src != self._stands_in
         if (mode, tolerance) != self._path_written:
             self._path_written = (mode, tolerance)
             self._line(self._path_word(mode, tolerance, at or src), at or src)
         return self.t.exact_stop_block if block and self.t.exact_stop_block and mode != "exact" else ""
+
+    def _stand(self, src: Src) -> None:
+        """The axes stand at ``src`` (an M function, a dwell, a tool change: the kernel's exact stops), before
+        and after its block's move: no corner there blends."""
+        self._blends = False
+        self._stands_in = src
 
     def _path_word(self, mode: str, tolerance: float | None, src: Src) -> str:
         if mode == "exact":
             return self.t.path_exact
         if tolerance is None:
             return self.t.path_continuous
+        if tolerance <= 0:  # corners within 0 mm: the run stops at each; LinuxCNC's G64 P0 would be no bound at all
+            self._note(f"G64 P{number(tolerance)}: a stop at every corner, written as {self.t.path_exact}", src)
+            return self.t.path_exact
         if self.t.path_tolerance is not None:
             return self.t.path_tolerance.format(tol=self.num(tolerance))
         self._warn(src, f"G64 P{number(tolerance)}: {self.t.title}'s continuous path ({self.t.path_continuous}) "
@@ -422,7 +439,7 @@ class Translation(CanonSink):
                 return True
         return False
 
-    def _move_starts(self, start, end, src) -> bool:
+    def _move_starts(self, start, end, src, fed: bool = True) -> bool:
         """What every move does first (the block's M5/M9 wait, the setup is recorded); False: refused."""
         if self._placed and self.refusal is not None:
             self._placed = False
@@ -432,7 +449,7 @@ class Translation(CanonSink):
             self._programmed = None  # the block that programmed them made no move
         if self._tool_pending is not None:
             self._tool_length()
-        self._stop_word = self._path_words(src)
+        self._stop_word = self._path_words(src, fed)
         self.moves += 1
         self._moved_in = src
         if self._frame_unrecorded:
@@ -442,7 +459,7 @@ class Translation(CanonSink):
     def _straight(self, code: str, start, end, feed: float | None, src: Src) -> None:
         if self._homing is not None and self._home(start, end, src):
             return
-        if not self._move_starts(start, end, src):
+        if not self._move_starts(start, end, src, code != "G0"):
             return
         if self._probe is not None:
             self._probe_move(start, end, feed, src)
@@ -635,6 +652,7 @@ class Translation(CanonSink):
                          "G1 moves is not tied to the spindle (program the target's tapping cycle by hand)")
 
     def dwell(self, seconds, src):
+        self._stand(src)
         self._flush_after()
         self._line(self.t.dwell.format(s=self.num(seconds)), src)
 
@@ -659,6 +677,7 @@ class Translation(CanonSink):
             self._tool_length()
 
     def tool_change(self, tool, src):
+        self._stand(src)
         held = self._tool_word(f"T{tool} M6", src)
         self._tool = tool
         self._frame_unrecorded = True  # the header names the length for the new tool too (an 840D D is its edge)
@@ -709,6 +728,7 @@ class Translation(CanonSink):
         return True
 
     def spindle(self, speed, direction, src):
+        self._stand(src)
         self._restart = None  # the program's own spindle word after a tool change: written once
         if direction == 0:
             self._turning = None
@@ -729,6 +749,7 @@ class Translation(CanonSink):
         self._turning_line = self.lines
 
     def coolant(self, mode, src):
+        self._stand(src)
         if mode == "off":
             self._after.append(("M9", src))
             return
@@ -736,6 +757,7 @@ class Translation(CanonSink):
         self._line({"mist": "M7", "flood": "M8"}[mode], src)
 
     def aux(self, code, src):
+        self._stand(src)
         self._flush_after()
         self.setup.left_out.append(code)
         self._note(f"{code}: a machine function of the simulated control, not written", src)
@@ -747,6 +769,7 @@ class Translation(CanonSink):
 
     def stop(self, kind, src):
         """A program stop; DIN G88's stop (the operator retracts by hand) is the target's M0."""
+        self._stand(src)
         if kind == "M0" and self.stops_passed:
             self._warn(src, 'the simulated control ends the run at this M0 ([sin800] m0 = "stop"); the translation '
                             "goes on past it, as the new control does after the operator's cycle start",
@@ -770,20 +793,26 @@ class Translation(CanonSink):
         """The program end: always, even where the program has none (an rw_SymPas program)."""
         self._line(self.t.program_end, self.ended)
 
-    def _blending(self, machine: str) -> str:
-        """The header's word on continuous path without a tolerance: what the cycle time assumed, and that the
-        bare G64 written leaves the new control's own corner rounding (on LinuxCNC none: docs/decisions.md)."""
+    def _blending(self, machine: str) -> str | None:
+        """The header's word on continuous path without a tolerance, where the cycle time blended corners in it:
+        what it assumed, and what the bare G64 written does on the new control (LinuxCNC: no bound at all), since
+        its corner rounding is that control's setting (docs/decisions.md); None: nothing to say."""
         t, m = self.t, self.motion
-        if m.model != "lookahead":
-            return (f"continuous path ({t.path_continuous}): the simulation timed every move from rest to rest "
-                    f"({machine}'s [motion] model); the new control blends corners and takes less time")
+        if not self.setup.blended or m is None or self.time_model == "card":  # rw_SymPas: the card's own model
+            return None
+        what = f"continuous path ({t.path_continuous} without a tolerance): "
+        own = f"on the new control {t.path_continuous} is {t.bare_continuous}"
+        if self.time_model == "rest-to-rest":
+            why = f"{machine}'s [motion] model" if m.model == "rest-to-rest" else "the run's --time-model"
+            return f"{what}the run timed every move from rest to rest ({why}); {own}"
         tol = m.corner_tolerance
-        own = t.bare_continuous.format(tol=self.num(tol))
-        assumed = (f"corners blended within {number(tol)} mm" if tol > 0 else
-                   "a stop at every corner (only moves in line blended)")
-        return (f"continuous path ({t.path_continuous} without a tolerance): the cycle time assumed {assumed} "
-                f"({machine}'s [motion] corner_tolerance {number(tol)} mm); on the new control "
-                f"{t.path_continuous} is {own}")
+        if tol > 0:
+            assumed = f"corners blended within {number(tol)} mm"
+            keep = t.path_tolerance and f"; {t.path_tolerance.format(tol=self.num(tol))} keeps that bound"
+        else:
+            assumed, keep = "a stop at every corner (only moves in line blended)", f"; {t.path_exact} stops at each"
+        return (f"{what}the cycle time assumed {assumed} ({machine}'s [motion] corner_tolerance {number(tol)} mm); "
+                f"{own}{keep or ''}")
 
     def header(self, program: str, machine: str) -> list[str]:
         """The comment lines at the top: how the positions are meant, and what the new control must hold."""
@@ -815,8 +844,9 @@ class Translation(CanonSink):
                          "included in the positions !!!"),
                     note("!!! run only on a control whose active zero offset and tool length are all zero "
                          "!!!")]
-        if s.blended and self.motion is not None:
-            out.append(note(self._blending(machine)))
+        blending = self._blending(machine)
+        if blending:
+            out.append(note(blending))
         if s.homed:
             names = sorted({n for axes, _ in s.homed for n in axes.split()})
             out.append(note(f"the program homes {' '.join(names)} (marked HOMING below): home them on the new "
