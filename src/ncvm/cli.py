@@ -32,17 +32,19 @@ _BUG = "2 usage error, 70 internal error (a bug in ncvm)"
 EXITS = {
     "run": "0 the program ended normally (a batch: every program did), 1 a compile error, a run-time fault or "
            "stdout closed (a batch: a program failed: error or limit violation), 128 + the signal stopped by SIGTERM "
-           "or SIGHUP, " + _BUG,
+           "or SIGHUP (RUN009), " + _BUG,
     "check": "0 no errors, 1 a program has errors, " + _BUG,
     "compile": "0 written, 1 compile errors, " + _BUG,
-    "translate": "0 written, 1 the run failed or the translation was refused, " + _BUG,
+    "translate": "0 written, 1 the run failed or the translation was refused, 128 + the signal stopped by "
+                 "SIGTERM or SIGHUP (RUN009), " + _BUG,
     "machine-schema": "0 printed, " + _BUG,
 }
 #: the README's table of exit codes, the end of ``ncvm --help``
 EXIT_TABLE = ("Exit codes: 0 the run ended normally, check found no error, compile wrote its files; 1 an error "
               "in the program (compile error, run-time fault, check found one) or Ctrl-C (RUN004); 2 usage error "
               "(a bad option, a missing or unreadable file, an output that may not be written, a state directory "
-              "in use); 70 internal error (a bug in ncvm). Each command's --help names its own.")
+              "in use); 70 internal error (a bug in ncvm); 128 + the signal: run or translate stopped by SIGTERM or "
+              "SIGHUP (RUN009). Each command's --help names its own.")
 
 
 def exits_text(name: str) -> str:
@@ -280,7 +282,7 @@ def run(programs, dialect, machine, state_dir, as_json, trace, gcode, plot, plot
             if plot:
                 _plot(plot, program_name(program), result, session)
     except Terminated as e:  # as translate ends: the shell's convention for a command ended by a signal
-        _stop(click.get_current_context(), f"ncvm: {e}", "error", "RUN004", str(e), 128 + e.signum)
+        _stop(click.get_current_context(), f"ncvm: error {e.code}: {e}", "error", e.code, str(e), 128 + e.signum)
     if (screen or screen_dir) and session.screen is None:
         click.echo(f"ncvm: warning: dialect '{result['dialect']}' has no operator screen; nothing saved", err=True)
     if editor_block is not None and result["dialect"] != "cpl":
