@@ -49,8 +49,8 @@ def check(programs, dialect, machine, as_json, all_errors, report_file):
             diags = Diagnostics.capped(e.diagnostics)
         errors = diags.errors()
         failed |= bool(errors)
-        report.append({"file": program_name(program.path), "ok": not errors, "machine": str(program.machine or "built-in"),
-                       "diagnostics": [d.to_json() for d in diags]})
+        report.append({"file": program_name(program.path), "ok": not errors,
+                       "machine": str(program.machine or "built-in"), "diagnostics": [d.to_json() for d in diags]})
         if diags.left_out:  # the counts of the diagnostics past the first MAX_KEPT (docs/decisions.md)
             report[-1]["not_shown"] = dict(diags.left_out)
         records.append(reports.check_record(program_name(program.path), program.dialect, report[-1]["machine"],

@@ -121,7 +121,8 @@ def test_a_pipe_without_its_dialect_is_refused_before_it_is_read(tmp_path, comma
     for program in ("-", fifo.name):
         done = ncvm(tmp_path, command, program, "--json", stdin=PART)
         name = "<stdin>" if program == "-" else fifo.name
-        message = f"{name}: a program from a pipe needs its dialect named (-d din): nothing tells it before the pipe is read"
+        message = (f"{name}: a program from a pipe needs its dialect named (-d din): nothing tells it before the "
+                   "pipe is read")
         assert done.returncode == 2 and f"ncvm: error: {message}" in done.stderr
         assert json.loads(done.stdout)["error"]["message"] == message
 

@@ -244,7 +244,8 @@ class CplFiles(Record):
     def _open(self, place: Place, write: bool) -> int:
         """A descriptor of the file (OPENW creates a missing one); every refusal is a CPL file error."""
         try:
-            return self._confined(self.fileroot.open, place, write=write, create=write, durable=write and self.durable)
+            return self._confined(self.fileroot.open, place, write=write, create=write,
+                                  durable=write and self.durable)
         except OSError as e:
             if not write and isinstance(e, (FileNotFoundError, NotADirectoryError)):
                 raise fail("FILE_NOT_FOUND", place.shown) from None
