@@ -89,8 +89,9 @@ def stretches(file, chars: int):
 #: goes by in diagnostics, traces and results
 STDIN_ARG, STDIN = "-", "<stdin>"
 #: the text of the last program read from a pipe (stdin or a FIFO), by its name: a diagnostic shows its source
-#: line from here, since the pipe cannot be read again (opening a FIFO again waits for a writer that is gone)
-_piped: dict[str, str] = {}
+#: line from here, since the pipe cannot be read again (opening a FIFO again waits for a writer that is gone);
+#: split into its lines when the first diagnostic asks (a run without one never splits it)
+_piped: dict[str, str | list[str]] = {}
 
 
 def program_name(path: str | Path) -> str:
@@ -141,7 +142,9 @@ def lines_at(path: str | Path, wanted) -> dict[int, str]:
         return found
     piped = _piped.get(str(path))
     if piped is not None:
-        return {n: line for n, line in enumerate(lines(piped), 1) if n in wanted}
+        if isinstance(piped, str):
+            piped = _piped[str(path)] = lines(piped)
+        return {n: piped[n - 1] for n in wanted if 0 < n <= len(piped)}
     if not stat.S_ISREG(os.stat(path).st_mode):
         return found
     with open_program(path) as file:
