@@ -89,6 +89,25 @@ def sync_directory(fd: int) -> None:
             raise
 
 
+def _make_durable_folders(path: Path) -> None:
+    """``path`` and the folders above it that are missing, made, each one's entry synced in its parent (the
+    file root under a new state directory: a file made in it is not lost with the folder)."""
+    missing = []
+    while not os.path.lexists(path) and path != path.parent:
+        missing.append(path)
+        path = path.parent
+    for folder in reversed(missing):
+        try:
+            os.mkdir(folder)
+        except FileExistsError:
+            continue  # made meanwhile (or a link): opened as before
+        fd = os.open(folder.parent, os.O_RDONLY | os.O_DIRECTORY | os.O_CLOEXEC)
+        try:
+            sync_directory(fd)
+        finally:
+            os.close(fd)
+
+
 def identity(st: os.stat_result) -> tuple[int, int]:
     """What tells two names of the same file apart from two files: device and inode."""
     return st.st_dev, st.st_ino
@@ -163,8 +182,10 @@ class FileRoot:
                         pass
         return ids
 
-    def _open_root(self, create: bool) -> int:
-        if create:
+    def _open_root(self, create: bool, durable: bool = False) -> int:
+        if create and durable:
+            _make_durable_folders(self.path)
+        elif create:
             self.path.mkdir(parents=True, exist_ok=True)
         return os.open(self.path, os.O_RDONLY | os.O_DIRECTORY | os.O_CLOEXEC)
 
@@ -187,7 +208,7 @@ class FileRoot:
         ``follow=False``: a link as last component is refused."""
         shown = place.shown
         private = self._private_ids()
-        fds = [self._open_root(make_dirs)]
+        fds = [self._open_root(make_dirs, durable)]
         try:
             if identity(os.fstat(fds[0])) in private:
                 raise FileRootError(f"{shown}: the file root is the state directory")

@@ -182,6 +182,17 @@ def test_openw_syncs_the_entry_of_each_folder_it_makes(fs, fsyncs):
     assert (jobs / "DAY1" / "LOG").read_text() == ETX
 
 
+def test_openw_syncs_the_entries_of_a_file_root_it_makes(tmp_path, fsyncs):
+    """The file root under a state directory that does not exist yet (the built-in machine's .ncvm/files): the
+    state directory's entry, the root's and the file's are synced, each in its parent."""
+    state = tmp_path / ".ncvm"
+    fs = CplFiles(root=state / "files", clock=SimClock(now=0.0, start_epoch=1_700_000_000.0))
+    fs.OPENW(1, "LOG")
+    fs.CLOSE(1)
+    assert fsyncs.dirs == [tmp_path, state, state / "files"]
+    assert (state / "files" / "LOG").read_text() == ETX
+
+
 def test_a_directory_the_file_system_cannot_sync_is_skipped_quietly(fs, monkeypatch):
     """fsync of a directory fails with EINVAL on some file systems (and platforms): the file is written and
     fsynced all the same."""
