@@ -225,7 +225,11 @@ def test_messages_name_what_the_user_gave(work):
     r = invoke("run", "part.din", "--gcode", "dangling.ngc")
     assert r.exit_code == 2 and "--gcode dangling.ngc: folder" in r.stderr and "nowhere does not exist" in r.stderr
     os.mkfifo("pipe.din")
-    r = invoke("run", "pipe.din")
+    r = invoke("run", "pipe.din")  # refused before the pipe is opened: no writer, and nothing hangs
+    assert r.exit_code == 2 and "pipe.din: a program from a pipe needs its dialect named (-d din)" in r.stderr
+    r = invoke("run", "pipe.din", "-d", "cpl")
+    assert r.exit_code == 2 and "pipe.din: a program from a pipe is read by dialect din only; a cpl" in r.stderr
+    r = invoke("compile", "pipe.din")  # compile reads files only
     assert r.exit_code == 2 and "pipe.din: not a file" in r.stderr, r.stderr
     (work / "machine.toml").write_text(LATHE)
     r = invoke("run", "part.din", "--gcode", "machine.toml")

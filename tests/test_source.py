@@ -72,3 +72,28 @@ def test_int_literal_stops_at_its_ceiling(digits, ceiling, value):
 def test_an_nc_word_has_at_most_8_decades(text, places, value):
     assert decades(text) == places
     assert word_number(text) == value
+
+
+def test_the_lines_of_a_piped_program_are_kept_until_a_file_is_read(tmp_path):
+    """A diagnostic of a program from a FIFO shows its line from the text read once (opening the FIFO again
+    would wait for a writer that is gone); once a file is read, the FIFO's lines are gone and asking for them
+    returns none at once instead of waiting."""
+    import os
+    import threading
+
+    from ncvm.api import resolve_run
+    from ncvm.source import lines_at, read_piped
+
+    fifo = tmp_path / "p.ngc"
+    os.mkfifo(fifo)
+
+    def write():
+        with open(fifo, "wb") as pipe:
+            pipe.write(b"\xef\xbb\xbfG0 X1\r\nG1 Y2 (\xe9)\rM2\n")
+
+    threading.Thread(target=write, daemon=True).start()
+    assert read_piped(fifo) == "G0 X1\r\nG1 Y2 (é)\rM2\n"
+    assert lines_at(fifo, {2, 3}) == {2: "G1 Y2 (é)", 3: "M2"}
+    (tmp_path / "q.ngc").write_text("G0 X5\n")
+    resolve_run(tmp_path / "q.ngc", None)
+    assert lines_at(fifo, {2}) == {}  # no writer: it would block if it were opened

@@ -16,7 +16,7 @@ from typing import TYPE_CHECKING, Any
 
 from . import records
 from .diagnostics import CompileFailed, Diagnostic, Diagnostics, Span, UsageError
-from .dialects import detect_dialect, dialect_of_name, get_dialect
+from .dialects import REGISTRY, detect_dialect, dialect_of_name, get_dialect
 from .machine.config import load_machine, load_scenario
 from .machine.model import Machine
 from .machine.state import StateLock
@@ -29,7 +29,7 @@ from .sinks.areas import zone_check
 from .sinks.limits import LimitCheck
 from .sinks.toolpath import MotionSummary, ToolpathRecorder
 from .sinks.workbounds import WorkBounds
-from .source import read_head, read_text
+from .source import forget_piped, is_pipe, program_name, read_head, read_piped, read_text
 
 if TYPE_CHECKING:  # a run asked for its moves imports it (public.py)
     from .sinks.moves import MoveTable
@@ -56,19 +56,47 @@ def resolve_run(path: str | Path, dialect: str | None) -> tuple[str | None, str]
     for it: a dialect told from the file's content is told from its head (issue 18: bounded memory for a
     file of any size)."""
     named = dialect or dialect_of_name(path)
+    if is_pipe(path):
+        return _piped(path, named)
+    forget_piped()  # a file's diagnostics show its own lines, even under the name a pipe had
     text = None
     if named is None:
         text, named = _told_by_content(path)
-    elif _streams(named):
+    elif streams(named):
         try:
-            if not stat.S_ISFIFO(os.stat(path).st_mode):  # opening a pipe would take its writer's data
-                with open(path, "rb"):
-                    pass
+            with open(path, "rb"):
+                pass
         except OSError as e:
             raise UsageError(f"cannot read {path}: {e.strerror}") from None
-    if text is None and not _streams(named):
+    if text is None and not streams(named):
         text = read_source(path)
-    return text, named  # a streaming dialect's text: None, or the text of a pipe told by its content
+    return text, named  # a streaming dialect's text: None
+
+
+def _piped(path: str | Path, dialect: str | None) -> tuple[str, str]:
+    """(the text, the dialect) of a program from a pipe (stdin ``-`` or a FIFO): read once, whole (a DIN run
+    holds a piped program whole anyway: it cannot read it a second time), the dialect named or told by the
+    content; only a dialect that reads its program a stretch at a time takes one (the others read their
+    sub-programs and listings from the program's file and folder)."""
+    if dialect is not None:
+        get_dialect(dialect)  # an unknown one is said before the pipe is read
+        if not streams(dialect):
+            raise UsageError(pipe_refusal(path, dialect))
+    try:
+        text = read_piped(path)
+    except OSError as e:
+        raise UsageError(f"cannot read {program_name(path)}: {e.strerror}") from None
+    named = dialect or detect_dialect(program_name(path), text)
+    if not streams(named):
+        raise UsageError(pipe_refusal(path, named))
+    return text, named
+
+
+def pipe_refusal(path: str | Path, dialect: str) -> str:
+    """Why a program of ``dialect`` from a pipe is refused, and which dialects take one."""
+    takes = [name for name in REGISTRY if streams(name)]
+    return (f"{program_name(path)}: a program from a pipe is read by dialect {' and '.join(takes)} only; a "
+            f"{dialect} program is read from its file (give the file)")
 
 
 def _told_by_content(path: str | Path) -> tuple[str | None, str]:
@@ -85,7 +113,8 @@ def _told_by_content(path: str | Path) -> tuple[str | None, str]:
     return text, detect_dialect(path, text)
 
 
-def _streams(dialect: str) -> bool:
+def streams(dialect: str) -> bool:
+    """Whether ``dialect`` reads its program a stretch at a time (and so takes one from a pipe)."""
     try:
         return get_dialect(dialect).streams
     except UsageError:  # no such dialect: said where it is used
@@ -111,7 +140,7 @@ def check(path: str | Path, dialect: str | None = None, machine: Machine | str |
     """The program's diagnostics: the first :data:`~ncvm.diagnostics.MAX_KEPT` of them, the others counted (a
     DIN program is read a stretch at a time, as a run reads it)."""
     text, d = resolve_run(path, dialect)
-    return Diagnostics.capped(get_dialect(d).check(str(path), text, machine_for(path, machine), all_errors))
+    return Diagnostics.capped(get_dialect(d).check(program_name(path), text, machine_for(path, machine), all_errors))
 
 
 class RunResult(Record):
@@ -306,14 +335,14 @@ def run_program(path: str | Path, dialect: str | None = None, machine: Machine |
                                                        key=lambda e: e.time))
         # the controller's memory: one run at a time, refused at once (a translation reads it, writes nothing)
         with StateLock(options.state_dir, reader=options.scratch_state):
-            sinks = run_sinks(m, options, Path(path).name)
+            sinks = run_sinks(m, options, Path(program_name(path)).name)
             session = Session(m, options, dialect=d, sinks=sinks)
             for sink in sinks.canon:  # the trace and the moves table name the user's source lines (a CL 800 .cl8)
                 if hasattr(sink, "place"):
                     sink.place = lambda src: session.source_place(src)
             error: Diagnostic | None
             try:
-                error = run_guarded(session, lambda: front.run(str(path), text, session))
+                error = run_guarded(session, lambda: front.run(program_name(path), text, session))
             except CompileFailed as e:
                 error = e.diagnostics[0]
             except BaseException:

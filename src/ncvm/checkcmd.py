@@ -9,9 +9,11 @@ from pathlib import Path
 
 import click
 
+from . import cli
 from .cli import DIALECT_OPT, EXIT_FAULT, EXIT_OK, MACHINE_OPT, exits_text
 from .diagnostics import CompileFailed, Diagnostics, UsageError, render_all
 from .lazy import lazy
+from .source import program_name
 from .termstyle import say
 
 json = lazy("json")  # --json output only
@@ -39,7 +41,7 @@ def check(programs, dialect, machine, as_json, all_errors, report_file):
     if report_file and Path(report_file).suffix.lower() not in reports.FORMATS:
         raise UsageError(f"--report {report_file}: give a .json, .csv or .xml file")
     report, records, failed = [], [], False
-    found = discover(programs, dialect, machine)
+    found = _piped(programs, dialect, machine) or discover(programs, dialect, machine)
     for program in found.all_programs:
         try:
             diags = api.check(program.path, program.dialect, machine_of(program), all_errors)
@@ -47,18 +49,18 @@ def check(programs, dialect, machine, as_json, all_errors, report_file):
             diags = Diagnostics.capped(e.diagnostics)
         errors = diags.errors()
         failed |= bool(errors)
-        report.append({"file": str(program.path), "ok": not errors, "machine": str(program.machine or "built-in"),
-                       "diagnostics": [d.to_json() for d in diags]})
+        report.append({"file": program_name(program.path), "ok": not errors,
+                       "machine": str(program.machine or "built-in"), "diagnostics": [d.to_json() for d in diags]})
         if diags.left_out:  # the counts of the diagnostics past the first MAX_KEPT (docs/decisions.md)
             report[-1]["not_shown"] = dict(diags.left_out)
-        records.append(reports.check_record(str(program.path), program.dialect, report[-1]["machine"],
+        records.append(reports.check_record(program_name(program.path), program.dialect, report[-1]["machine"],
                                             report[-1]["diagnostics"], diags.not_shown(),
                                             diags.left_out.get("error", 0)))
         if not as_json:
             for text in render_all(diags):
                 say(text)
             if diags.left_out:
-                say(f"{program.path}: {diags.not_shown()}")
+                say(f"{program_name(program.path)}: {diags.not_shown()}")
     not_checked = [s for s in found.skipped if s.path not in found.checked]
     skipped = [{"file": str(s.path), "reason": s.reason} for s in not_checked]
     if report_file:
@@ -83,3 +85,18 @@ def check(programs, dialect, machine, as_json, all_errors, report_file):
         if report_file:
             say(f"ncvm: report written to {report_file}")
     sys.exit(EXIT_FAULT if failed else EXIT_OK)
+
+
+def _piped(programs, dialect: str | None, machine: str | None):
+    """The one program of a check that reads it from a pipe (``-``: stdin, or a FIFO; -d din), on the machine
+    given, else its folder's (the current folder for stdin) as ``ncvm run`` takes it; None for files."""
+    from .archive.discover import Found, Program
+
+    if not any(cli.piped_program(p, dialect) for p in programs):
+        return None
+    if len(programs) > 1:
+        cli.alone(programs, "is checked")
+    path = Path(programs[0])
+    own = machine or cli.folder_machine(programs[0])
+    program = Program(path, dialect, Path(own) if own else None, path.parent)
+    return Found([program], [], [program])

@@ -18,6 +18,7 @@ from .dialects import REGISTRY
 from .lazy import lazy
 from .outpaths import PLOT_SUFFIXES, SCREEN_PICTURE, Output, OutputError, check_outputs, replacing
 from .progress import Progress
+from .source import STDIN_ARG, is_pipe, program_name
 from .termstyle import say
 from .timefmt import hms as _hms
 
@@ -31,17 +32,19 @@ _BUG = "2 usage error, 70 internal error (a bug in ncvm)"
 EXITS = {
     "run": "0 the program ended normally (a batch: every program did), 1 a compile error, a run-time fault or "
            "stdout closed (a batch: a program failed: error or limit violation), 128 + the signal stopped by SIGTERM "
-           "or SIGHUP, " + _BUG,
+           "or SIGHUP (RUN009), " + _BUG,
     "check": "0 no errors, 1 a program has errors, " + _BUG,
     "compile": "0 written, 1 compile errors, " + _BUG,
-    "translate": "0 written, 1 the run failed or the translation was refused, " + _BUG,
+    "translate": "0 written, 1 the run failed or the translation was refused, 128 + the signal stopped by "
+                 "SIGTERM or SIGHUP (RUN009), " + _BUG,
     "machine-schema": "0 printed, " + _BUG,
 }
 #: the README's table of exit codes, the end of ``ncvm --help``
 EXIT_TABLE = ("Exit codes: 0 the run ended normally, check found no error, compile wrote its files; 1 an error "
               "in the program (compile error, run-time fault, check found one) or Ctrl-C (RUN004); 2 usage error "
               "(a bad option, a missing or unreadable file, an output that may not be written, a state directory "
-              "in use); 70 internal error (a bug in ncvm). Each command's --help names its own.")
+              "in use); 70 internal error (a bug in ncvm); 128 + the signal: run or translate stopped by SIGTERM or "
+              "SIGHUP (RUN009). Each command's --help names its own.")
 
 
 def exits_text(name: str) -> str:
@@ -230,6 +233,7 @@ def run(programs, dialect, machine, state_dir, as_json, trace, gcode, plot, plot
     single = {"--trace": trace, "--gcode": gcode, "--plot": plot, "--scenario": scenario, "--keys": keys,
               "--editor-block": editor_block, "--screen": screen, "--screen-dir": screen_dir, "--time-model": time_model}
     if len(programs) > 1 or Path(programs[0]).is_dir() or jobs or cluster or report or shared_state:
+        alone(programs, "runs")
         from .archive.command import run_batch_command
 
         run_batch_command(programs, dialect, machine, state_dir, as_json, max_steps, max_memory, jobs, cluster,
@@ -240,11 +244,17 @@ def run(programs, dialect, machine, state_dir, as_json, trace, gcode, plot, plot
     from .runtime.session import RunOptions
 
     program = programs[0]
-    check_program(program)
+    if piped_program(program, dialect):
+        not_from_stdin(program, {"--machine": machine, "--scenario": scenario, "--keys": keys})
+    else:
+        check_program(program)
     if not state_dir.strip():  # an unset variable: the store would land in the current directory
         raise UsageError("--state is empty; give the state directory (default .ncvm)")
-    scenario, keys = _own_inputs(program, scenario, keys)
-    inputs = {"program": program, **machine_input(program, machine), "--scenario": scenario, "--keys": keys}
+    from_stdin = program == STDIN_ARG
+    if not from_stdin:  # stdin has no name for companions
+        scenario, keys = _own_inputs(program, scenario, keys)
+    inputs = {"program": None if from_stdin else program, **machine_input(program, machine), "--scenario": scenario,
+              "--keys": keys}
     machine = api.machine_for(program, machine or folder_machine(program, say=True), Path(state_dir))
     check_outputs([Output("--trace", trace), Output("--gcode", gcode), Output("--plot", plot, PLOT_SUFFIXES),
                    Output("--screen", screen, (".png",)),
@@ -253,7 +263,7 @@ def run(programs, dialect, machine, state_dir, as_json, trace, gcode, plot, plot
                   file_root=str(machine.file_root))
     key_script = read_key_script(keys) if keys else None
     as_path = lambda value: Path(value) if value else None  # noqa: E731
-    keyboard = keys is None and not as_json and _stdin_is_terminal()
+    keyboard = keys is None and not as_json and not from_stdin and _stdin_is_terminal()
     options = RunOptions(state_dir=Path(state_dir), max_steps=max_steps, trace=as_path(trace),
                          gcode=as_path(gcode), echo=not as_json, scenario=as_path(scenario), keys=key_script,
                          keyboard=keyboard, editor_block=editor_block, screen=as_path(screen),
@@ -270,9 +280,9 @@ def run(programs, dialect, machine, state_dir, as_json, trace, gcode, plot, plot
             with progress:
                 result, session = api.run(program, dialect, machine, options)
             if plot:
-                _plot(plot, program, result, session)
+                _plot(plot, program_name(program), result, session)
     except Terminated as e:  # as translate ends: the shell's convention for a command ended by a signal
-        _stop(click.get_current_context(), f"ncvm: {e}", "error", "RUN004", str(e), 128 + e.signum)
+        _stop(click.get_current_context(), f"ncvm: error {e.code}: {e}", "error", e.code, str(e), 128 + e.signum)
     if (screen or screen_dir) and session.screen is None:
         click.echo(f"ncvm: warning: dialect '{result['dialect']}' has no operator screen; nothing saved", err=True)
     if editor_block is not None and result["dialect"] != "cpl":
@@ -384,6 +394,49 @@ def _short(value: float, digits: int = 2) -> str:
     return "0" if text == "-0" else text
 
 
+def piped_program(program: str, dialect: str | None) -> bool:
+    """Whether ``program`` is read from a pipe: ``-`` (stdin) or a FIFO. One is taken with its dialect named,
+    one that reads a pipe (-d din): nothing tells the dialect before the pipe is read, and the other dialects
+    read their programs from files (their sub-programs from the program's folder)."""
+    if not is_pipe(program):
+        return False
+    name = program_name(program)
+    if dialect is None:
+        raise UsageError(f"{name}: a program from a pipe needs its dialect named (-d din): nothing tells it before "
+                         "the pipe is read")
+    from .api import pipe_refusal, streams
+
+    if not streams(dialect):
+        raise UsageError(pipe_refusal(program, dialect))
+    return True
+
+
+def alone(programs, runs: str) -> None:
+    """A program from a pipe (``-``, a FIFO) is one command's only program: a batch ``runs`` files."""
+    for program in programs:
+        if is_pipe(program):
+            raise UsageError(f"{program_name(program)}: a program from a pipe {runs} alone, not in a batch "
+                             "(a batch reads files and folders)")
+
+
+def not_from_stdin(program: str, inputs: dict[str, str | None]) -> None:
+    """No other input of a run that reads its program from stdin is read from stdin too (``--keys -``,
+    ``--keys /dev/stdin``): the program takes all of it."""
+    if program != STDIN_ARG:
+        return
+    try:
+        stdin = os.fstat(0)
+    except OSError:
+        return  # no stdin: reading the program says so
+    for option, path in inputs.items():
+        try:
+            same = path is not None and (path == STDIN_ARG or os.path.samestat(os.stat(path), stdin))
+        except OSError:
+            same = False
+        if same:
+            raise UsageError(f"{option} {path}: is stdin, which carries the program; give a file")
+
+
 def check_program(program: str) -> None:
     path = Path(program)
     if not path.exists():
@@ -403,8 +456,9 @@ def folder_machine(program: str, say: bool = False) -> str | None:
     path = Path(program).parent / "machine.toml"
     if not path.is_file():
         return None
-    if say:
-        click.echo(f"ncvm: machine file {path} (the program's folder)", err=True)
+    if say:  # a program from stdin stands in the current folder
+        where = "the current folder: the program is read from stdin" if program == STDIN_ARG else "the program's folder"
+        click.echo(f"ncvm: machine file {path} ({where})", err=True)
     return str(path)
 
 

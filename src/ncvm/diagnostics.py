@@ -224,6 +224,8 @@ NCVM_CODES = {
     "RUN007": "a program of a batch could not be set up (its machine file, the state directory; docs/batch.md)",
     "RUN008": "program file changed while it ran: a long DIN program read a second time as it runs is not the "
               "program its first reading checked (docs/decisions.md)",
+    "RUN009": "run stopped by a signal from outside, not by the user: SIGTERM (kill, timeout, a batch system or "
+              "service manager) or SIGHUP (the terminal closed); exit 128 + the signal",
     "TRN001": "translation refused: the target control has no way to say what the run did (a probe move, a "
               "plane, an axis, a zero offset); no output written",
     "TRN002": "translation refused: the run did not end normally, or needs input it was not given; no output "

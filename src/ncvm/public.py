@@ -4,7 +4,8 @@
 ``ncvm run`` does (the same discovery, machine files, pool and cluster: :mod:`ncvm.archive`). They build
 on the engine of :mod:`ncvm.api`, which the command line uses too.
 
-A ``str`` with a line end is program text; any other ``str`` or a ``Path`` names a program file. Program
+A ``str`` with a line end is program text; any other ``str`` or a ``Path`` names a program file (or a FIFO
+a DIN program is written to, read once). Program
 text runs as a file of its own in a temporary folder (a dialect that reads or writes files next to its
 program does so there); errors name it ``<text>``; sub-programs it calls are found in the current
 directory, or on the program path of the machine file given.
@@ -27,6 +28,7 @@ from .runtime.companions import KEYS_SUFFIX, SCENARIO_SUFFIX, beside
 from .runtime.session import RunOptions
 from .runtime.steps import DEFAULT_MAX_STEPS
 from .sinks.moves import MoveTable
+from .source import STDIN_ARG, is_pipe
 
 #: the name program text goes by in results and diagnostics
 TEXT_NAME = "<text>"
@@ -145,9 +147,10 @@ def _program_file(program: str | Path, dialect: str | None):
             yield path, d
         return
     path = Path(program)
-    if not path.is_file():
+    fifo = str(path) != STDIN_ARG and is_pipe(path)  # a DIN program a writer gives (api.resolve_run)
+    if not path.is_file() and not fifo:
         raise UsageError(f"no such program file: {program} (program text is a str with a line end)")
-    yield path, None
+    yield (path.absolute() if str(path) == STDIN_ARG else path), None  # a file named "-" is a file, not stdin
 
 
 def _machine(path: Path, machine: MachineLike, state_dir: Path, is_text: bool) -> Machine:

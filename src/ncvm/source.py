@@ -8,6 +8,9 @@ and superscript digits (¹²³), which no control reads as part of a name or a n
 
 from __future__ import annotations
 
+import os
+import stat
+import sys
 from pathlib import Path
 
 #: a UTF-8 byte-order mark as it reads in Latin-1; an editor may put it before the first line
@@ -82,12 +85,67 @@ def stretches(file, chars: int):
         read = piece = file.read(chars)
 
 
+#: the program argument that stands for standard input (``ncvm run -d din -``), and the name the program
+#: goes by in diagnostics, traces and results
+STDIN_ARG, STDIN = "-", "<stdin>"
+#: the text of the last program read from a pipe (stdin or a FIFO), by its name: a diagnostic shows its source
+#: line from here, since the pipe cannot be read again (opening a FIFO again waits for a writer that is gone);
+#: split into its lines when the first diagnostic asks (a run without one never splits it)
+_piped: dict[str, str | list[str]] = {}
+
+
+def program_name(path: str | Path) -> str:
+    """The name a program goes by: :data:`STDIN` for :data:`STDIN_ARG`, else its path."""
+    return STDIN if str(path) == STDIN_ARG else str(path)
+
+
+def is_pipe(path: str | Path) -> bool:
+    """Whether the program ``path`` names is read from a pipe: standard input (:data:`STDIN_ARG`) or a FIFO."""
+    if str(path) == STDIN_ARG:
+        return True
+    try:
+        return stat.S_ISFIFO(os.stat(path).st_mode)
+    except (OSError, ValueError):  # no such file (said where it is read); ValueError: a NUL byte
+        return False
+
+
+def read_piped(path: str | Path) -> str:
+    """The whole text of a program from a pipe (standard input for :data:`STDIN_ARG`, else a FIFO), as
+    :func:`read_text` reads a file, kept for the source lines of its diagnostics (:func:`lines_at`, under
+    :func:`program_name`) until the next program is read. Raises OSError as reading a file does."""
+    if str(path) == STDIN_ARG:
+        if sys.stdin is None:
+            raise OSError(9, "standard input is closed")
+        data = sys.stdin.buffer.read()
+    else:
+        with open(path, "rb") as pipe:
+            data = pipe.read()
+    text = without_bom(data.decode("latin-1"))
+    _piped.clear()  # one pipe at a time: the last one's lines stay
+    _piped[program_name(path)] = text
+    return text
+
+
+def forget_piped() -> None:
+    """Drop the kept text of a pipe: a program is read from a file now, whatever its name."""
+    _piped.clear()
+
+
 def lines_at(path: str | Path, wanted) -> dict[int, str]:
     """The lines numbered ``wanted`` (1-based) of a program file, read up to the last of them and no further
-    (a diagnostic shows its source line without reading a file of millions of lines whole). Raises OSError."""
+    (a diagnostic shows its source line without reading a file of millions of lines whole); of a program read
+    from a pipe, from its kept text (:func:`read_piped`); none of another pipe or a device, which would wait
+    or be consumed. Raises OSError."""
     last = max(wanted, default=0)
     found: dict[int, str] = {}
     if last < 1:
+        return found
+    piped = _piped.get(str(path))
+    if piped is not None:
+        if isinstance(piped, str):
+            piped = _piped[str(path)] = lines(piped)
+        return {n: piped[n - 1] for n in wanted if 0 < n <= len(piped)}
+    if not stat.S_ISREG(os.stat(path).st_mode):
         return found
     with open_program(path) as file:
         for n, line in enumerate(file, 1):

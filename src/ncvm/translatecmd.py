@@ -53,7 +53,7 @@ def translate_cmd(program, out, target, frame, source_comments, dialect, machine
         say(e.diagnostic.render())
         sys.exit(cli.EXIT_FAULT)
     except Terminated as e:  # the shell's convention for a command ended by a signal
-        say(f"ncvm: {e}")
+        say(f"ncvm: error {e.code}: {e}")
         sys.exit(128 + e.signum)
     for v in done.warnings:  # the run's soft limits: the translation makes the same moves
         say(f"warning: {v}")

@@ -1,6 +1,7 @@
 """``ncvm run`` stopped by SIGTERM (``kill``, ``timeout``, a batch system) or SIGHUP (the terminal closed)
 ends as ``ncvm translate`` does (runtime/interrupt.py ``ended_by_termination``): exit 128 + the signal,
-one line on stderr (a JSON document on stdout with --json), no hidden temporary file beside an output,
+one line on stderr with error RUN009 naming the signal, not Ctrl-C's RUN004 (a JSON document on stdout with
+--json), no hidden temporary file beside an output,
 the G-code and the plot not written (an existing one left as it was), the trace's lines up to the stop,
 each of them whole JSON."""
 
@@ -49,7 +50,10 @@ def test_a_run_stopped_by_a_signal_leaves_whole_outputs_and_no_temporary_files(t
     done = _stopped(tmp_path, sig, "--gcode", "out.ngc", "--plot", "old.png")
     name = signal.Signals(sig).name
     assert done.returncode == 128 + sig, done.stderr
-    assert f"ncvm: run stopped by {name}; no --gcode out.ngc or --plot old.png written" in done.stderr
+    sender = "sent from outside: kill, timeout, a batch system" if sig == signal.SIGTERM else "the terminal closed"
+    assert f"ncvm: error RUN009: run stopped by {name} ({sender}); no --gcode out.ngc or --plot old.png written" \
+        in done.stderr
+    assert "RUN004" not in done.stderr and "by the user" not in done.stderr  # a supervisor, not Ctrl-C
     assert "Traceback" not in done.stderr
     assert sorted(p.name for p in tmp_path.iterdir()) == ["old.png", "p.cpl", "st", "t.jsonl"]
     assert (tmp_path / "old.png").read_bytes() == b"the plot of an earlier run"
@@ -63,8 +67,9 @@ def test_json_stdout_stays_json(tmp_path):
     done = _stopped(tmp_path, signal.SIGTERM, "--json")
     assert done.returncode == 128 + signal.SIGTERM
     doc = json.loads(done.stdout)
-    assert doc["status"] == "error" and doc["error"]["code"] == "RUN004"
-    assert doc["error"]["message"].startswith("run stopped by SIGTERM; the trace ")
+    assert doc["status"] == "error" and doc["error"]["code"] == "RUN009"
+    assert doc["error"]["message"].startswith("run stopped by SIGTERM (sent from outside: kill, timeout, a batch "
+                                              "system); the trace ")
 
 
 def test_replacing_puts_a_whole_file_in_place_or_leaves_the_old_one(tmp_path):

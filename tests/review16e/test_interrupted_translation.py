@@ -38,3 +38,7 @@ def test_stopped_translation_leaves_nothing_beside_out(tmp_path, sig):
             p.wait()
     assert p.returncode != 0
     assert sorted(f.name for f in out_dir.iterdir()) == []
+    if sig != signal.SIGINT:  # a supervisor's signal has its own code (RUN009), not Ctrl-C's RUN004
+        name = signal.Signals(sig).name
+        assert p.returncode == 128 + sig
+        assert f"ncvm: error RUN009: translation stopped by {name} (" in p.stderr.read().decode()

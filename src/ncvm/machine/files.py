@@ -75,6 +75,39 @@ def read_all(fd: int) -> bytes:
     return b"".join(chunks)
 
 
+#: what fsync of a directory says where the platform or file system cannot sync one (nothing to do there)
+_NO_DIRECTORY_SYNC = {errno.EINVAL, errno.EBADF, errno.ENOTSUP, errno.EOPNOTSUPP}
+
+
+def sync_directory(fd: int) -> None:
+    """Make the entries of the directory open as ``fd`` durable: a file or folder just made in it is found
+    after a power loss, as its synced data is. Quietly nothing where the directory cannot be synced."""
+    try:
+        os.fsync(fd)
+    except OSError as e:
+        if e.errno not in _NO_DIRECTORY_SYNC:
+            raise
+
+
+def _make_durable_folders(path: Path) -> None:
+    """``path`` and the folders above it that are missing, made, each one's entry synced in its parent (the
+    file root under a new state directory: a file made in it is not lost with the folder)."""
+    missing = []
+    while not os.path.lexists(path) and path != path.parent:
+        missing.append(path)
+        path = path.parent
+    for folder in reversed(missing):
+        try:
+            os.mkdir(folder)
+        except FileExistsError:
+            continue  # made meanwhile (or a link): opened as before
+        fd = os.open(folder.parent, os.O_RDONLY | os.O_DIRECTORY | os.O_CLOEXEC)
+        try:
+            sync_directory(fd)
+        finally:
+            os.close(fd)
+
+
 def identity(st: os.stat_result) -> tuple[int, int]:
     """What tells two names of the same file apart from two files: device and inode."""
     return st.st_dev, st.st_ino
@@ -149,8 +182,10 @@ class FileRoot:
                         pass
         return ids
 
-    def _open_root(self, create: bool) -> int:
-        if create:
+    def _open_root(self, create: bool, durable: bool = False) -> int:
+        if create and durable:
+            _make_durable_folders(self.path)
+        elif create:
             self.path.mkdir(parents=True, exist_ok=True)
         return os.open(self.path, os.O_RDONLY | os.O_DIRECTORY | os.O_CLOEXEC)
 
@@ -165,14 +200,15 @@ class FileRoot:
         return norm[len(real.rstrip("/")) + 1:].split("/")
 
     @contextmanager
-    def _entry(self, place: Place, make_dirs: bool = False, follow: bool = True
+    def _entry(self, place: Place, make_dirs: bool = False, follow: bool = True, durable: bool = False
                ) -> Iterator[tuple[int, str, os.stat_result | None]]:
         """(descriptor of the directory, name in it, its lstat or None when missing) of the place's
         last component, every link on the way resolved inside the root. ``make_dirs``: missing
-        directories (and the root) are made. ``follow=False``: a link as last component is refused."""
+        directories (and the root) are made; ``durable``: each one's entry synced in its parent.
+        ``follow=False``: a link as last component is refused."""
         shown = place.shown
         private = self._private_ids()
-        fds = [self._open_root(make_dirs)]
+        fds = [self._open_root(make_dirs, durable)]
         try:
             if identity(os.fstat(fds[0])) in private:
                 raise FileRootError(f"{shown}: the file root is the state directory")
@@ -216,6 +252,8 @@ class FileRoot:
                         raise FileNotFoundError(errno.ENOENT, "no such directory", shown)
                     try:
                         os.mkdir(part, 0o777, dir_fd=fds[-1])
+                        if durable:
+                            sync_directory(fds[-1])
                     except FileExistsError:
                         pass  # made meanwhile: opened below like any directory
                 try:
@@ -247,11 +285,14 @@ class FileRoot:
         except (FileNotFoundError, NotADirectoryError):
             return None
 
-    def open(self, place: Place, write: bool = False, create: bool = False, follow: bool = True) -> int:
+    def open(self, place: Place, write: bool = False, create: bool = False, follow: bool = True,
+             durable: bool = False) -> int:
         """A descriptor of the regular file at ``place``, at offset 0: read-only, or read-write with
-        ``write``; ``create`` makes a missing file (and its folders). ``follow=False`` refuses a
-        symbolic link as the last component even when it stays inside the root."""
-        with self._entry(place, make_dirs=create, follow=follow) as (dfd, name, st):
+        ``write``; ``create`` makes a missing file (and its folders), ``durable`` with its directory
+        entry synced (:func:`sync_directory`: the data a writer syncs later is not lost with the name
+        after a power loss). ``follow=False`` refuses a symbolic link as the last component even when it
+        stays inside the root."""
+        with self._entry(place, make_dirs=create, follow=follow, durable=durable) as (dfd, name, st):
             if st is None and not create:
                 raise FileNotFoundError(errno.ENOENT, "no such file", place.shown)
             if st is not None:
@@ -263,6 +304,12 @@ class FileRoot:
                 if e.errno in (errno.ELOOP, errno.ENXIO):  # swapped for a link or a FIFO since the lstat
                     raise FileRootError(f"{place.shown} changed while it was opened") from None
                 raise
+            if st is None and durable:  # made now (or meanwhile by another: one sync more, no harm)
+                try:
+                    sync_directory(dfd)
+                except BaseException:
+                    os.close(fd)
+                    raise
         try:
             st = os.fstat(fd)
             self.require_file(st, place.shown)
@@ -318,7 +365,7 @@ class FileRoot:
                     pass
                 raise
             if durable:
-                os.fsync(dfd)
+                sync_directory(dfd)
 
     def names(self) -> list[str]:
         """The names of the root's own entries, sorted (OSError when the root cannot be listed)."""

@@ -55,13 +55,23 @@ def block():
         raise KeyboardInterrupt
 
 
+#: who sends each terminating signal, as its message says
+_SENDERS = {signal.SIGTERM: "sent from outside: kill, timeout, a batch system", signal.SIGHUP: "the terminal closed"}
+
+
 class Terminated(BaseException):
     """The command was stopped from outside (SIGTERM: a ``kill``, a batch system, ``timeout``; SIGHUP: the
-    terminal closed): it ends as after Ctrl-C, its temporary files removed; ``str()`` says so."""
+    terminal closed): it ends as after Ctrl-C, its temporary files removed; ``str()`` says so. Its error code
+    is RUN009, not Ctrl-C's RUN004: a supervisor stopped it, not the user."""
+
+    code = "RUN009"
 
     def __init__(self, signum: int, what: str = "run", outcome: str = ""):
         self.signum = signum
-        super().__init__(f"{what} stopped by {signal.Signals(signum).name}" + (f"; {outcome}" if outcome else ""))
+        name = signal.Signals(signum).name
+        sender = _SENDERS.get(signum)
+        super().__init__(f"{what} stopped by {name}" + (f" ({sender})" if sender else "")
+                         + (f"; {outcome}" if outcome else ""))
 
 
 _TERMINATING = (signal.SIGTERM, signal.SIGHUP)

@@ -7,8 +7,10 @@ passed since its last fsync -- not once a record (that cost milliseconds a recor
 
 from __future__ import annotations
 
+import errno
 import os
 import signal
+import stat
 import subprocess
 import sys
 from pathlib import Path
@@ -23,16 +25,29 @@ from ncvm.machine.model import SimClock
 ETX = "\x03\n"
 
 
+class Fsyncs(list):
+    """The fsyncs of files, each as (name, content of the file at that moment); ``dirs``: the paths of the
+    directories fsynced; ``order``: the names of both, in the order they came."""
+
+    def __init__(self):
+        super().__init__()
+        self.dirs: list[Path] = []
+        self.order: list[str] = []
+
+
 @pytest.fixture
 def fsyncs(monkeypatch):
-    """The fsyncs of the test, each as (path, content of the file at that moment)."""
-    seen = []
+    seen = Fsyncs()
     real = os.fsync
 
     def fsync(fd):
-        path = os.readlink(f"/proc/self/fd/{fd}")
-        with open(f"/proc/self/fd/{fd}", "rb") as f:
-            seen.append((Path(path).name, f.read().decode("latin-1")))
+        path = Path(os.readlink(f"/proc/self/fd/{fd}"))
+        seen.order.append(path.name)
+        if stat.S_ISDIR(os.fstat(fd).st_mode):
+            seen.dirs.append(path)
+        else:
+            with open(f"/proc/self/fd/{fd}", "rb") as f:
+                seen.append((path.name, f.read().decode("latin-1")))
         real(fd)
 
     monkeypatch.setattr(os, "fsync", fsync)
@@ -133,7 +148,84 @@ def test_without_durability_nothing_is_fsynced(tmp_path, fsyncs):
     fs.OPENW(1, "LOG")
     fs.PRN(1, "ONE")
     fs.CLOSE(1)
-    assert fsyncs == [] and (tmp_path / "LOG").read_text() == "ONE\n" + ETX
+    assert fsyncs == [] and fsyncs.dirs == [] and (tmp_path / "LOG").read_text() == "ONE\n" + ETX
+
+
+# -- the directory entry of a new file ---------------------------------------------------------------------------
+
+
+def test_openw_of_a_new_file_syncs_its_directory_once_before_any_data(fs, fsyncs):
+    """A new file's name is in its directory only when the directory is synced: without it a power loss can
+    lose the file whose records were fsynced. OPENW syncs it once, at once; records and CLOSE sync the file."""
+    fs.OPENW(1, "LOG")
+    assert fsyncs.dirs == [fs.root]
+    for i in range(1, 4):
+        fs.PRN(1, f"REC {i}")
+    fs.CLOSE(1)
+    assert fsyncs.dirs == [fs.root] and fsyncs == [("LOG", records(3) + ETX)]
+    assert fsyncs.order == [fs.root.name, "LOG"]
+
+
+def test_openw_of_a_file_that_exists_does_not_sync_the_directory(fs, fsyncs):
+    (fs.root / "KEPT").write_text("K\n" + ETX)
+    fs.OPENW(1, "KEPT")
+    fs.PRN(1, "MORE")
+    fs.CLOSE(1)
+    assert fsyncs.dirs == [] and fsyncs == [("KEPT", "K\nMORE\n" + ETX)]
+
+
+def test_openw_syncs_the_entry_of_each_folder_it_makes(fs, fsyncs):
+    fs.OPENW(1, "/JOBS/DAY1/LOG")
+    fs.CLOSE(1)
+    jobs = fs.root / "JOBS"
+    assert fsyncs.dirs == [fs.root, jobs, jobs / "DAY1"]  # JOBS in the root, DAY1 in JOBS, LOG in DAY1
+    assert (jobs / "DAY1" / "LOG").read_text() == ETX
+
+
+def test_openw_syncs_the_entries_of_a_file_root_it_makes(tmp_path, fsyncs):
+    """The file root under a state directory that does not exist yet (the built-in machine's .ncvm/files): the
+    state directory's entry, the root's and the file's are synced, each in its parent."""
+    state = tmp_path / ".ncvm"
+    fs = CplFiles(root=state / "files", clock=SimClock(now=0.0, start_epoch=1_700_000_000.0))
+    fs.OPENW(1, "LOG")
+    fs.CLOSE(1)
+    assert fsyncs.dirs == [tmp_path, state, state / "files"]
+    assert (state / "files" / "LOG").read_text() == ETX
+
+
+def test_a_directory_the_file_system_cannot_sync_is_skipped_quietly(fs, monkeypatch):
+    """fsync of a directory fails with EINVAL on some file systems (and platforms): the file is written and
+    fsynced all the same."""
+    synced, real = [], os.fsync
+
+    def fsync(fd):
+        if stat.S_ISDIR(os.fstat(fd).st_mode):
+            raise OSError(errno.EINVAL, "Invalid argument")
+        synced.append(fd)
+        real(fd)
+
+    monkeypatch.setattr(os, "fsync", fsync)
+    fs.OPENW(1, "LOG")
+    fd = fs.handles[1].fd
+    fs.PRN(1, "ONE")
+    fs.CLOSE(1)
+    assert synced == [fd] and (fs.root / "LOG").read_text() == "ONE\n" + ETX
+
+
+def test_a_directory_sync_that_fails_refuses_openw_and_keeps_no_descriptor(fs, monkeypatch):
+    real = os.fsync
+
+    def fsync(fd):
+        if stat.S_ISDIR(os.fstat(fd).st_mode):
+            raise OSError(errno.EIO, "Input/output error")
+        real(fd)
+
+    monkeypatch.setattr(os, "fsync", fsync)
+    before = set(os.listdir("/proc/self/fd"))
+    with pytest.raises(CplRuntimeError) as err:
+        fs.OPENW(1, "LOG")
+    assert "LOG: Input/output error" in err.value.message and fs.handles == {}
+    assert set(os.listdir("/proc/self/fd")) <= before
 
 
 def prn_program(n: int, tail: str) -> str:

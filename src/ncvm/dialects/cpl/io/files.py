@@ -9,7 +9,9 @@ into this form when they are opened for writing.
 Durability (docs/decisions.md, "CPL files: the durability point"): every completed record -- a PRN#
 without ``;``, a CHR$(13) inside the output, a random record written in place -- and every REWRITE is
 handed to the operating system (``pwrite``) before the statement returns, so what a program wrote
-survives ncvm being killed at any moment. A file is ``os.fsync`` ed at CLOSE (and so at the end of the
+survives ncvm being killed at any moment. A file OPENW creates has its directory entry synced at once (and
+those of folders it makes), so a file whose data is synced is not lost with its name after a power loss.
+A file is ``os.fsync`` ed at CLOSE (and so at the end of the
 run and when the run stops with an error, which close every file) and, while it is written, once
 :data:`SYNC_EVERY_S` has passed since its last fsync: a crash of the host loses at most that much. The
 text of a record still open with ``;`` is kept in memory until the record is completed.
@@ -242,7 +244,8 @@ class CplFiles(Record):
     def _open(self, place: Place, write: bool) -> int:
         """A descriptor of the file (OPENW creates a missing one); every refusal is a CPL file error."""
         try:
-            return self._confined(self.fileroot.open, place, write=write, create=write)
+            return self._confined(self.fileroot.open, place, write=write, create=write,
+                                  durable=write and self.durable)
         except OSError as e:
             if not write and isinstance(e, (FileNotFoundError, NotADirectoryError)):
                 raise fail("FILE_NOT_FOUND", place.shown) from None
