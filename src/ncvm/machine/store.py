@@ -47,7 +47,7 @@ APPLICATION_ID = 0x4E43564D
 #: how long to wait for a program other than ncvm (an sqlite3 shell, a backup) to let go of the file
 BUSY_TIMEOUT_S = 2.0
 #: seconds of writing after which the write-ahead log is synced again (docs/decisions.md): a sync a write
-#: cost 0.1-7 ms a write on a disk (docs/performance.md), one a second costs nothing measurable
+#: cost 0.1-4.4 ms a write on the disk (docs/performance.md), one a second costs nothing measurable
 SYNC_EVERY_S = 1.0
 
 
