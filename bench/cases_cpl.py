@@ -1,6 +1,7 @@
 """CPL cases: the peer programs loop_arith, loop_motion and subcalls written in CPL, and rs274 on the originals;
 wait_motion (a G1 block and a WAIT a pass) has no peer: rs274 has no block buffer to wait for.
-cpl_prn_file (no peer) writes records to a file with PRN#, the cost of a record and of making it durable.
+cpl_prn_file (no peer) writes records to a file with PRN#, the cost of a record and of making it durable;
+cpl_perm_write (no peer) writes a permanent variable a pass, the cost of a write to the permanent store.
 
 Each CPL program does the work of its LinuxCNC peer in bench/peers: the same loop counts,
 the same arithmetic (MOD written as I% - INT(I%/7)*7, CPL has no MOD), the same moves and calls.
@@ -111,6 +112,15 @@ PRN_FILE = """\
 M30
 """
 
+PERM_WRITE = """\
+(perm_write - 10,000 passes, each writes the permanent variable @5, as a program counts its parts)
+10 @5 = 0
+20 FOR I%=1 TO 10000
+30 @5 = @5 + 1
+40 NEXT I%
+M30
+"""
+
 FOLDER = WORK / "cpl"
 
 
@@ -124,7 +134,7 @@ def write_programs() -> None:
     for name, text in (("loop_arith.cpl", LOOP_ARITH), ("loop_motion.cpl", LOOP_MOTION), ("DRILL", DRILL),
                        ("subcalls.cpl", SUBCALLS), ("loop_arith_real.cpl", real_twin(LOOP_ARITH)),
                        ("loop_motion_real.cpl", real_twin(LOOP_MOTION)), ("wait_motion.cpl", WAIT_MOTION),
-                       ("prn_file.cpl", PRN_FILE)):
+                       ("prn_file.cpl", PRN_FILE), ("perm_write.cpl", PERM_WRITE)):
         p = FOLDER / name
         if not p.exists() or p.read_text() != text:
             p.write_text(text)
@@ -146,6 +156,8 @@ def cases() -> dict[str, Case]:
         "cpl_loop_motion_real": Case(runner("loop_motion_real.cpl"), 100_000, "G1/s", setup=write_programs),
         # the file lies in the state directory's file root under bench/.work: on the disk, as a user's files do
         "cpl_prn_file": Case(runner("prn_file.cpl"), 5_000, "records/s", setup=write_programs),
+        # the store lies in the state directory under bench/.work: on the disk, as a user's state directory does
+        "cpl_perm_write": Case(runner("perm_write.cpl"), 10_000, "writes/s", setup=write_programs),
         "cpl_subcalls": Case(runner("subcalls.cpl"), 20_000, "calls/s", setup=write_programs),
         "cpl_wait_motion": Case(runner("wait_motion.cpl"), 10_000, "passes/s", setup=write_programs),
         "rs274_loop_arith": rs274_case(PEERS / "loop_arith.ngc", 100_000, "iterations/s"),

@@ -1,4 +1,5 @@
-"""SINUMERIK 800 cases: the peer loops (loop_arith.ngc, loop_motion.ngc) written as @ code programs."""
+"""SINUMERIK 800 cases: the peer loops (loop_arith.ngc, loop_motion.ngc) written as @ code programs, and a loop
+writing a central R parameter (no peer), the cost of the permanent store."""
 
 from __future__ import annotations
 
@@ -24,6 +25,8 @@ def cases() -> dict[str, Case]:
     return {
         "sin800_loop_arith": Case(_runner("loop_arith.mpf"), 100_000, "iterations/s"),
         "sin800_loop_motion": Case(_runner("loop_motion.mpf"), 100_000, "G1/s"),
+        # R900 is permanent: the NC data are written to the store in one batch at the end of the run
+        "sin800_perm_write": Case(_runner("perm_write.mpf"), 10_000, "writes/s"),
         "rs274_sin800_loop_arith": rs274_case(PEERS / "loop_arith.ngc", 100_000, "iterations/s"),
         "rs274_sin800_loop_motion": rs274_case(PEERS / "loop_motion.ngc", 100_000, "G1/s"),
     }

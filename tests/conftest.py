@@ -29,9 +29,10 @@ settings.load_profile("ci" if os.environ.get("CI") == "true" else "dev")
 def _memory_backed_temp_root(min_free: int = 2 * 2**30) -> None:
     """Put the tests' tmp_path folders on /dev/shm where it is a tmpfs with room to spare.
 
-    A state directory commits every permanent write with ``synchronous=FULL`` (an fsync each): on a disk
-    shared with other work one commit can take several milliseconds, and the tests that count thousands of
-    writes spent most of their time waiting for the disk. On tmpfs the same writes, locks, renames, kills and
+    A state directory used to commit every permanent write with ``synchronous=FULL`` (an fsync each; now the
+    store syncs its log once a second and at its close): on a disk shared with other work one fsync can take
+    several milliseconds, and the tests that count thousands of writes spent most of their time waiting for
+    the disk. On tmpfs the same writes, locks, renames, kills and
     files happen; only the wait for the platter goes. A small /dev/shm (a container's 64 MB) or none at all
     keeps the usual temporary folder; an explicit --basetemp or PYTEST_DEBUG_TEMPROOT wins.
     """

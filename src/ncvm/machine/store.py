@@ -2,9 +2,16 @@
 
 CPL permanent variables, central R parameters, offsets and machine data changed
 by programs all go here, as (namespace, key) -> JSON value. Every write is its
-own transaction unless the caller groups writes with :meth:`Store.batch`; with
-WAL and ``synchronous=FULL`` a process killed at any moment leaves the last
-committed value of every key, never a torn one.
+own transaction unless the caller groups writes with :meth:`Store.batch`.
+
+Durability (docs/decisions.md, "The permanent store: the durability point"), the
+point CPL files have: with WAL and ``synchronous=NORMAL`` a committed write is in
+the write-ahead log, handed to the operating system, before the statement
+returns, so a process killed at any moment leaves the last committed value of
+every key, never a torn one. The log is synced to the disk (``os.fsync``) at the
+first write once :data:`SYNC_EVERY_S` has passed since the last sync, and at
+:meth:`Store.close` (the end of the run, an error stop, Ctrl-C, SIGTERM): a crash
+of the host loses at most that last second, never the store's consistency.
 
 Only one run uses a store at a time (:mod:`ncvm.machine.state` locks the state
 directory), so a run may keep the values it read. Every SQLite failure (another
@@ -14,8 +21,11 @@ full disk) becomes a :class:`StateError` naming the file and what to do.
 
 from __future__ import annotations
 
+import errno
+import os
 from contextlib import contextmanager
 from pathlib import Path
+from time import monotonic
 from typing import Any, Iterator
 
 from ..lazy import lazy
@@ -36,6 +46,9 @@ CREATE TABLE IF NOT EXISTS permanent (
 APPLICATION_ID = 0x4E43564D
 #: how long to wait for a program other than ncvm (an sqlite3 shell, a backup) to let go of the file
 BUSY_TIMEOUT_S = 2.0
+#: seconds of writing after which the write-ahead log is synced again (docs/decisions.md): a sync a write
+#: cost 0.1-4.4 ms a write on the disk (docs/performance.md), one a second costs nothing measurable
+SYNC_EVERY_S = 1.0
 
 
 def _plain_files(state_dir: Path) -> None:
@@ -46,6 +59,14 @@ def _plain_files(state_dir: Path) -> None:
         kind = not_a_file(path)
         if kind:
             raise StateError(f"{path} is {kind}, not a file; move it away or give another --state")
+
+
+def _fsync(path: Path, flags: int) -> None:
+    fd = os.open(path, flags | os.O_CLOEXEC)
+    try:
+        os.fsync(fd)
+    finally:
+        os.close(fd)
 
 
 class Store:
@@ -59,6 +80,11 @@ class Store:
         self.path = Path(state_dir) / STORE_NAME
         self._db: sqlite3.Connection | None = None
         self._in_batch = False
+        #: the write-ahead log to sync, None when SQLite syncs every commit itself (no WAL) or nothing is on disk
+        self._log: Path | None = None
+        self._unsynced = False  # written since the last sync
+        self._synced_at = monotonic()
+        self._folder_synced = False  # the folder is synced once: the names of the store and its log last
         if scratch:
             self._open_copy()
             return
@@ -71,8 +97,7 @@ class Store:
         try:
             self._db = sqlite3.connect(self.path, isolation_level=None, timeout=BUSY_TIMEOUT_S)
             self._adopt()
-            self._db.execute("PRAGMA journal_mode=WAL")
-            self._db.execute("PRAGMA synchronous=FULL")
+            self._durability()
         except sqlite3.Error as e:
             self.close()
             raise self._error(e) from None
@@ -107,6 +132,17 @@ class Store:
             raise StateError(f"cannot read the permanent store {self.path} ({e.strerror}); give another "
                              f"--state") from None
         self._db = copy
+
+    def _durability(self) -> None:
+        """WAL with ``synchronous=NORMAL``: a commit writes the log, :meth:`sync` syncs it. Where SQLite cannot
+        keep a write-ahead log it stays in rollback mode, and there only ``FULL`` keeps every commit whole
+        through a power cut: every commit is synced as before."""
+        mode = self._db.execute("PRAGMA journal_mode=WAL").fetchone()[0]
+        if str(mode).lower() == "wal":
+            self._db.execute("PRAGMA synchronous=NORMAL")
+            self._log = store_files(self.path.parent)[1]
+        else:
+            self._db.execute("PRAGMA synchronous=FULL")
 
     def __enter__(self) -> "Store":
         return self
@@ -177,11 +213,37 @@ class Store:
             self._write("DELETE FROM permanent WHERE namespace=? AND key=?", (namespace, key))
 
     def _write(self, sql: str, args: tuple) -> None:
+        self._unsynced = True  # before: a Ctrl-C right after the commit still leaves it to close's sync
         try:
             self._db.execute(sql, args)
         except sqlite3.Error as e:
             self._rollback()
             raise self._error(e) from None
+        if not self._in_batch:
+            self._committed()
+
+    def _committed(self) -> None:
+        """A transaction was committed: the log is synced when :data:`SYNC_EVERY_S` has passed since the last
+        sync (checked here, at a write: no timer, no thread)."""
+        if monotonic() - self._synced_at >= SYNC_EVERY_S:
+            self.sync()
+
+    def sync(self) -> None:
+        """Every committed write made durable: the write-ahead log ``os.fsync`` ed (and, the first time, its
+        folder), if anything was committed since the last sync. The log is opened by name: SQLite keeps it
+        while a connection is open and gives no handle on it."""
+        if not self._unsynced or self._log is None:
+            return
+        try:
+            _fsync(self._log, os.O_RDONLY)
+            if not self._folder_synced:
+                _fsync(self._log.parent, os.O_RDONLY | os.O_DIRECTORY)
+                self._folder_synced = True
+        except FileNotFoundError:
+            pass  # no log: SQLite folded it into the store and removed it, syncing the store as it did
+        except OSError as e:
+            raise self._sync_error(e) from None
+        self._unsynced, self._synced_at = False, monotonic()
 
     @contextmanager
     def batch(self) -> Iterator[None]:
@@ -207,6 +269,7 @@ class Store:
                 raise self._error(e) from None
         finally:
             self._in_batch = False
+        self._committed()
 
     def _rollback(self) -> None:
         """Give up the open transaction, if SQLite has not already (it does on a full disk)."""
@@ -217,15 +280,27 @@ class Store:
             pass  # the connection is unusable; the committed values are still in the file
 
     def close(self) -> None:
+        """Sync what was committed, then close (the connection is closed even when the sync fails)."""
         if self._db is not None:
-            self._db.close()
-            self._db = None
+            try:
+                self.sync()
+            finally:
+                self._db.close()
+                self._db = None
 
     # -- what to tell the user --------------------------------------------------------------
     def _damaged(self, detail: str) -> str:
         detail = " ".join(detail.replace("*** in database main ***", "").split())
         return (f"the permanent store {self.path} is damaged ({detail}); move it away to start again from "
                 f"the machine file, or give another --state")
+
+    def _sync_error(self, e: OSError) -> StateError:
+        if e.errno == errno.ENOSPC:
+            return StateError(f"cannot write the permanent store {self.path}: the disk is full; free some space "
+                              f"and run again (the store keeps what was synced before)")
+        return StateError(f"the permanent store {self.path} cannot be synced to the disk ({e.strerror}); the "
+                          f"writes of the last second may be lost at a power cut; check the disk, or give "
+                          f"another --state")
 
     def _error(self, e: sqlite3.Error) -> StateError:
         name = getattr(e, "sqlite_errorname", "") or ""
