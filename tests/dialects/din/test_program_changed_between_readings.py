@@ -82,9 +82,9 @@ def test_a_run_stops_with_run008_and_reports_the_motion_before_it(program, monke
     runs its first stretch: the run ends in error RUN008, the blocks before the changed stretch moved."""
     real, passes = din.file_stretches, []
 
-    def written_over_while_running(file):
+    def written_over_while_running(file, at=None):
         passes.append(file)
-        for k, piece in enumerate(real(file)):
+        for k, piece in enumerate(real(file, at)):
             yield piece
             if len(passes) == 2 and k == 0:
                 program.write_text(TEXT.replace("X50.0 Y20.0", "X50.0 Y2?.0"))
