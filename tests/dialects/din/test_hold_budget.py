@@ -170,3 +170,42 @@ def test_the_estimate_of_held_segments_is_what_they_take(tmp_path, shape):
     path.write_text(text)
     taken, estimated = held_measured(path)
     assert 0.85 * taken < estimated < 1.15 * taken, f"held {taken:,} B, estimated {estimated:,} B"
+
+
+def run_partly_held(monkeypatch, path: Path, tmp_path: Path, **options) -> dict:
+    """The run of ``path`` with the whole program held, with nothing held and with its first three stretches
+    held (the rest read again): {budget: (JSON summary, the trace's lines)}; each from a fresh state."""
+    costs = stretch_costs(path)
+    out = {}
+    for budget in (math.inf, 0, sum(cost for _, _, cost in costs[:3])):
+        trace = tmp_path / f"trace-{len(out)}.jsonl"
+        with monkeypatch.context() as m:
+            m.setattr(din, "HOLD_BYTES", budget)
+            result, _ = run(path, dialect="din", options=RunOptions(state_dir=tmp_path / f"s{len(out)}", trace=trace,
+                                                                   **options))
+        out[budget] = (result, trace.read_text())
+    return out
+
+
+@pytest.mark.parametrize("case", ["fault", "step limit"])
+def test_a_stop_past_the_held_stretches_is_the_stop_of_a_program_held_whole(tmp_path, monkeypatch, stretched, case):
+    """An arc whose end lies off its circle (NC002, a fault the kernel finds as it runs the block) near the end of
+    a bolt circle, or the step limit reached there: with the first three stretches held and the rest read again
+    as it runs, and with nothing held, the run stops at the same block with the same summary and trace as a run
+    that holds the whole program."""
+    path = tmp_path / "drill.ngc"
+    lines = bolt_circle(400).splitlines()
+    options = {}
+    if case == "fault":
+        lines.insert(1800, "G2 X10 Y0 I1 J0")
+    else:
+        options["max_steps"] = 1800  # the blocks of lines 1..1800 (every line of a bolt circle is one)
+    line = 1801
+    path.write_text("\n".join(lines) + "\n")
+    assert sum(chars for _, chars, _ in stretch_costs(path)[:3]) < sum(map(len, lines[:1800]))  # past them
+    runs = run_partly_held(monkeypatch, path, tmp_path, **options)
+    whole = runs[math.inf]
+    assert whole[0]["status"] == "error" and whole[0]["error"]["line"] == line, whole[0]["error"]
+    assert whole[0]["error"]["code"] == ("NC002" if case == "fault" else "RUN001")
+    assert whole[1].count("\n") > 1000  # the moves up to the stop
+    assert all(other == whole for other in runs.values())

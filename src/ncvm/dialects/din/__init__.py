@@ -7,7 +7,6 @@ size): once for its errors and refusals, holding its leading stretches while the
 from __future__ import annotations
 
 import math
-import os
 import re
 from itertools import islice
 
