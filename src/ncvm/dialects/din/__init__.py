@@ -28,10 +28,11 @@ from .options import arc_tolerance, options
 from .support import address_refusal, block_error, refused_address
 
 #: a run holds the leading stretches of a program it reads while they cost at most this much memory (in bytes,
-#: as :func:`held_bytes` estimates them): a flat CAM program of up to about 190,000 lines (6 MB), a drilling
-#: program of up to about 90,000 lines, is read once. It reads the rest a second time, a stretch at a time,
-#: as it runs (issue 18: memory bounded by design; docs/decisions.md "a DIN program's memory")
-HOLD_BYTES = 32 << 20
+#: as :func:`held_bytes` estimates them): a flat CAM program of up to about 150,000 lines (4.8 MB), a drilling
+#: program of up to about 50,000 lines, is read once. It reads the rest a second time, a stretch at a time,
+#: as it runs (issue 18: memory bounded by design; docs/decisions.md "a DIN program's memory", "read again
+#: only past what it holds": 24 MB keeps a 500,000-line flat program's peak under those of other shapes)
+HOLD_BYTES = 24 << 20
 #: the memory held segments take (tracemalloc, CPython 3.11, numpy 2): a PlainRun held as columns whatever its
 #: length (its object, word dict and nine arrays); a short run (nc.block.columnar: kept as its lines' matches)
 #: and each of its blocks; a block read the general way (Block, G tuple, word dict, Src, skip pair); a line (its
