@@ -164,3 +164,30 @@ def test_a_file_changed_where_it_is_read_again_stops_with_run008(program, monkey
         at = next(line for line in reversed(firsts) if line <= where)
     assert (result["status"], result["error"]["code"], result["error"]["line"]) == ("error", "RUN008", at)
     assert result["steps"] == at - 1  # every block before it: one a line
+
+
+@pytest.mark.parametrize("cut", [None, 1, 2])
+def test_a_file_of_lone_cr_line_ends_is_read_again_from_where_it_stood(program, monkeypatch, cut):
+    """Lone CR line ends: where the file stands after a stretch is a position with the line-end decoder's state
+    in it (a pending CR). Read again from there the run is the one of the file held whole; cut inside the held
+    stretches, that position cannot be restored and the run stops with RUN008 at the fourth stretch's line."""
+    data = TEXT.replace("\n", "\r").encode("latin-1")
+    program.write_bytes(data)
+    ends = [len(TEXT[:end]) for end in stretch_ends()]  # a character a byte: the same offsets
+    result = run_edited_once_read(program, monkeypatch,
+                                  lambda: cut is not None and program.write_bytes(data[:ends[cut] - 5]))
+    if cut is None:
+        assert result["status"] == "ok" and result["steps"] == 3002, result["error"]
+    else:
+        assert (result["status"], result["error"]["code"], result["error"]["line"]) == ("error", "RUN008",
+                                                                                      first_lines()[3])
+        assert result["steps"] == first_lines()[3] - 1
+
+
+def test_a_file_is_read_from_a_later_stretch_only_after_a_whole_pass(program):
+    """Where a later stretch starts is known from the first whole reading only: asked before it, no guess."""
+    with din.ProgramStretches(str(program), None) as stretches:
+        with pytest.raises(ValueError, match="after a whole pass"):
+            stretches(COLUMNS_FROM, 3)
+        assert sum(len(s.lines) for s in stretches(COLUMNS_FROM)) == TEXT.count("\n")
+        assert next(iter(stretches(COLUMNS_FROM, 3))).first == first_lines()[3] - 1

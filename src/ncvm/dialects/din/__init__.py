@@ -266,6 +266,8 @@ class ProgramStretches:
             pieces = text_stretches(self.flat)
             first = sum(piece.count("\n") for piece in islice(pieces, start))
             return din_stretches(self.path, pieces, columns_from, first)
+        if start and self.read_as is None:
+            raise ValueError("a program file is read from a later stretch on only after a whole pass")
         if not self.again:  # a pipe is read once
             return din_stretches(self.path, file_stretches(self.file), columns_from)
         if self.read_as is None:
