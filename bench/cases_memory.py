@@ -6,8 +6,8 @@ Memory per million output lines: a CPL loop of 1,000,000 PRN#(0) lines (no moves
 Without bounds the CPL run held every queued block and every recorded move (~620 MB at 1 M moves,
 MemoryError at 10 M); the block buffer and the toolpath window keep it flat. The CPL screen and file table
 kept every output line besides the session's bounded output (1,000,000 lines: 122 MB peak); now (47 MB) only the session keeps
-its first and last 10,000. The DIN file is read a stretch at a time and, being over 8 MB, read again as it
-runs (issue 18): 81 MB. The children are started by benchlib.child, so their peak is their own (forked from
+its first and last 10,000. The DIN file is read a stretch at a time; past its leading stretches (what
+``HOLD_BYTES`` holds) it is read again as it runs (issue 18): 81 MB when it was read again whole. The children are started by benchlib.child, so their peak is their own (forked from
 the bench process they showed its peak, 162 MB each, after the in-process cases).
 """
 

@@ -70,14 +70,19 @@ def open_program(path: str | Path):
     return open(path, encoding="latin-1", newline=None)
 
 
-def stretches(file, chars: int):
+def stretches(file, chars: int, at=None):
     """The text of an open program file (:func:`open_program`) from its start, in stretches of about ``chars``
     characters that end at a line end (or at the end of the file), a leading byte-order mark dropped: a
-    program of any size, never held whole."""
-    if file.seekable():  # a pipe is read once, from where it stands
-        file.seek(0)
-    read = file.read(max(chars, len(BOM)))
-    piece = without_bom(read)
+    program of any size, never held whole. From ``at`` (where ``file.tell()`` stood after a stretch of an
+    earlier reading) on, the stretches that reading went on with: each ends where it ended."""
+    if at is not None:
+        file.seek(at)
+        read = piece = file.read(chars)
+    else:
+        if file.seekable():  # a pipe is read once, from where it stands
+            file.seek(0)
+        read = file.read(max(chars, len(BOM)))
+        piece = without_bom(read)
     while read:
         piece += file.readline()
         if piece:

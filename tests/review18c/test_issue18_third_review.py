@@ -192,9 +192,9 @@ def test_din_memory_of_a_drilling_program_does_not_grow_with_its_length(tmp_path
     95 MB, 25,000 at 54 MB. The bench's flat file (16 MB) is read a stretch at a time and stays at 60 MB,
     so the bench does not show it. Here 200,000 lines peaked at 147 MB, 95 MB more than 25,000.
 
-    Now a run holds what it reads while it costs at most ``din.HOLD_BYTES`` (32 MB as estimated), and drops
-    it as soon as the program is bound to cost more: 200,000 lines peak at about 70 MB (docs/performance.md,
-    "DIN programs of short stretches: memory")."""
+    Now a run holds the leading stretches it reads while they cost at most ``din.HOLD_BYTES`` (as estimated)
+    and reads the rest again as it runs: 200,000 lines peak at about 70-85 MB (docs/performance.md, "DIN
+    programs of short stretches: memory", "A DIN program read again only past what it holds")."""
     small, large = _peak_rss_kb(tmp_path, 5_000), _peak_rss_kb(tmp_path, 40_000)
     assert large - small < 40_000, f"peak {small / 1024:.0f} MB at 25,000 lines, {large / 1024:.0f} MB at 200,000"
 

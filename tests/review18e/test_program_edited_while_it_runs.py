@@ -24,7 +24,7 @@ import pytest
 
 pytestmark = pytest.mark.skipif(not Path("/proc/self/fdinfo").is_dir(), reason="needs Linux /proc")
 
-#: holes in the drilling program: 150,000 lines, past what a run holds (a drilling program of about 90,000 lines)
+#: holes in the drilling program: 150,000 lines, past what a run holds (a drilling program of about 50,000 lines)
 HOLES = 30_000
 
 

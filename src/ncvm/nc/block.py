@@ -383,10 +383,11 @@ def text_stretches(flat: str):
         pos = end
 
 
-def file_stretches(file):
+def file_stretches(file, at=None):
     """An open program file (:func:`ncvm.source.open_program`) in stretches of about :data:`CHUNK_CHARS`
-    characters, each ending at a line end."""
-    return stretches(file, CHUNK_CHARS)
+    characters, each ending at a line end: from its start, or from ``at`` (a position ``file.tell()`` gave
+    after a stretch) on."""
+    return stretches(file, CHUNK_CHARS, at)
 
 
 class DinStretch(NamedTuple):
@@ -405,9 +406,11 @@ class DinStretch(NamedTuple):
         return self.lines[lineno - 1 - self.first]
 
 
-def din_stretches(path: str, pieces, columns_from: int = 0):
+def din_stretches(path: str, pieces, columns_from: int = 0, first: int = 0):
     """:class:`DinStretch` after stretch of a program given as ``pieces`` of text with LF line ends, each
-    ending at a line end (:func:`text_stretches`, or :func:`ncvm.source.stretches` over a file).
+    ending at a line end (:func:`text_stretches`, or :func:`ncvm.source.stretches` over a file), the first
+    piece after the program's line ``first`` (a piece is read alone: no state crosses from one to the next
+    but the line count, so a program read again from a later piece on reads as it did).
 
     Per-line work dominates reading a large program, so one regex pass over a
     stretch sorts its lines: plain lines become columns of a
@@ -418,8 +421,7 @@ def din_stretches(path: str, pieces, columns_from: int = 0):
     file took 282 MB read in one pass). A stretch of fewer than ``columns_from`` lines (a check of a small
     program) is read line by line: columns would cost more than they save (:data:`COLUMNS_FROM`).
     """
-    first = 0  # lines before the stretch
-    for chunk in pieces:
+    for chunk in pieces:  # first: the lines before the stretch
         lines = chunk.split("\n")
         if chunk.endswith("\n"):
             lines.pop()
@@ -429,6 +431,7 @@ def din_stretches(path: str, pieces, columns_from: int = 0):
                 _read_general(segments, diags, path, k, line)
             yield DinStretch(segments, diags, lines, first, len(chunk))
             first += len(lines)
+            del segments, diags, lines  # not held here while the next stretch is read (the caller may let go)
             continue
         found = re.findall(_PLAIN_LINE, chunk if chunk.isupper() else chunk.upper(), re.M)[:len(lines)]
         columns = list(zip(*found))
@@ -443,6 +446,7 @@ def din_stretches(path: str, pieces, columns_from: int = 0):
             _add_run(segments, path, lines, found, columns, start, len(lines), first)
         yield DinStretch(segments, diags, lines, first, len(chunk))
         first += len(lines)
+        del segments, diags, lines, found, columns  # as above
 
 
 def _read_general(segments, diags, path: str, lineno: int, line: str) -> None:

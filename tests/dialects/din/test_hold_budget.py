@@ -1,6 +1,7 @@
-"""What a DIN run holds of the program it reads (issue 18, "memory bounded by design"): the segments read are
-held while they cost at most ``din.HOLD_BYTES`` (a program that fits is read once); past it they are dropped
-and the program is read again as it runs. Either way the run, its errors and its refusals are the same."""
+"""What a DIN run holds of the program it reads (issue 18, "memory bounded by design"): the leading stretches
+read are held while they cost at most ``din.HOLD_BYTES`` together (a program that fits is read once); the rest
+is read again as it runs, from the first stretch not held on. Either way the run, its errors and its refusals
+are the same."""
 
 from __future__ import annotations
 
@@ -33,16 +34,10 @@ def bolt_circle(holes: int, tail: str = "") -> str:
     return "\n".join(lines) + "\n" + tail + "M2\n"
 
 
-def fitting_budget(path: Path) -> int:
-    """The least budget that holds the program: what its segments cost (``din.held_bytes``), or more where a
-    stretch read costs more a character than the whole program (the run foresees the whole at that rate)."""
+def stretch_costs(path: Path) -> list[tuple[int, int, int]]:
+    """(first line, characters, what holding it costs: ``din.held_bytes``) of each stretch of the program."""
     with din.ProgramStretches(str(path), None) as program:
-        cost = read = 0
-        worst = 0.0
-        for stretch in program(COLUMNS_FROM):
-            cost, read = cost + din.held_bytes(stretch), read + stretch.chars
-            worst = max(worst, cost / read * program.size)
-    return math.ceil(worst)
+        return [(s.first, s.chars, din.held_bytes(s)) for s in program(COLUMNS_FROM)]
 
 
 @pytest.fixture
@@ -65,46 +60,50 @@ def run_with_budget(monkeypatch, path: Path, budget: int) -> dict:
     ("G1 X1 B5\n", ("error", "NC011", 2003)),  # an axis the machine lacks: the blocks before it run
     ("G1 X1 Y\n", ("error", "NC001", 2003)),  # a syntax error: stops the run before any move
 ])
-def test_a_program_that_fits_is_read_once_one_just_past_the_budget_twice_with_the_same_result(
+def test_a_program_that_fits_is_read_once_one_just_past_the_budget_again_from_its_last_stretch(
         tmp_path, monkeypatch, stretched, tail, outcome):
     """A bolt circle of 400 holes in stretches of about 4,096 characters, with a late refusal or error: at the
-    budget that just holds it the file is read once, one byte under it twice if it runs (the first pass
-    drops what it held when the budget is passed); the JSON summary (status, error and its line, steps, moves, position,
-    cycle time) is the same either way, and that of the default budget."""
+    budget that just holds it the file is read once; one byte under it its last stretch is read again if it
+    runs, and at nothing held the whole file; the JSON summary (status, error and its line, steps, moves,
+    position, cycle time) is the same each way, and that of the default budget."""
     path = tmp_path / "drill.ngc"
     text = bolt_circle(400, tail)
     path.write_text(text)
-    fits = fitting_budget(path)
-    assert len(text) > 4 * block.CHUNK_CHARS  # read in several stretches
+    costs = stretch_costs(path)
+    fits = sum(cost for _, _, cost in costs)
+    assert len(costs) > 4  # read in several stretches
+    last = text[len(text) - costs[-1][1]:]
     results = {}
     runs = outcome[1] != "NC001"  # a program with errors does not run: it is not read again
-    for budget, passes in ((fits, 1), (fits - 1, 1 + runs), (din.HOLD_BYTES, 1)):
+    for budget, again in ((fits, ""), (fits - 1, last * runs), (0, text * runs), (din.HOLD_BYTES, "")):
         stretched.clear()
         results[budget] = run_with_budget(monkeypatch, path, budget)
-        assert "".join(stretched) == text * passes, f"budget {budget}: read {len(''.join(stretched)) / len(text)} times"
+        assert "".join(stretched) == text + again, f"budget {budget}: read {len(''.join(stretched))} characters"
     once = results[fits]
-    assert results[fits - 1] == once == results[din.HOLD_BYTES]
+    assert results[fits - 1] == once == results[0] == results[din.HOLD_BYTES]
     error = once["error"] or {}
     assert (once["status"], error.get("code"), error.get("line")) == outcome
     assert once["motion"]["feed_moves"] == (0 if outcome[1] == "NC001" else 400)
 
 
-def test_a_long_program_is_dropped_at_its_first_stretch(tmp_path, monkeypatch, stretched):
-    """A program bound to pass the budget at what its first stretch cost a character is not held past that
-    stretch (what is held is costed while it is held: once), though the budget holds three such stretches;
-    it is read twice and runs whole."""
+def test_a_long_program_holds_its_leading_stretches_and_reads_the_rest_again(tmp_path, monkeypatch, stretched):
+    """A budget that holds three stretches of a longer program: the run holds those three (each costed once,
+    and the fourth, which passes the budget), reads the rest again from the fourth stretch's first character
+    as it runs, and runs every hole as when it holds the whole."""
     path = tmp_path / "drill.ngc"
     text = bolt_circle(400)
     path.write_text(text)
-    with din.ProgramStretches(str(path), None) as program:
-        first = din.held_bytes(next(iter(program(COLUMNS_FROM))))
+    costs = stretch_costs(path)
+    assert len(costs) > 5
     costed = []
     real = din.held_bytes
     monkeypatch.setattr(din, "held_bytes", lambda stretch: costed.append(stretch.first) or real(stretch))
     stretched.clear()
-    r = run_with_budget(monkeypatch, path, 3 * first)
+    r = run_with_budget(monkeypatch, path, sum(cost for _, _, cost in costs[:3]))
     assert r["status"] == "ok" and r["motion"]["feed_moves"] == 400, r["error"]
-    assert costed == [0] and "".join(stretched) == text * 2
+    assert costed == [first for first, _, _ in costs[:4]]
+    assert "".join(stretched) == text + text[sum(chars for _, chars, _ in costs[:3]):]
+    assert r == run_with_budget(monkeypatch, path, math.inf)
 
 
 PIPE_RUN = ("import json, sys\nfrom pathlib import Path\nimport ncvm.dialects.din as din\nfrom ncvm.api import run\n"
@@ -171,3 +170,42 @@ def test_the_estimate_of_held_segments_is_what_they_take(tmp_path, shape):
     path.write_text(text)
     taken, estimated = held_measured(path)
     assert 0.85 * taken < estimated < 1.15 * taken, f"held {taken:,} B, estimated {estimated:,} B"
+
+
+def run_partly_held(monkeypatch, path: Path, tmp_path: Path, **options) -> dict:
+    """The run of ``path`` with the whole program held, with nothing held and with its first three stretches
+    held (the rest read again): {budget: (JSON summary, the trace's lines)}; each from a fresh state."""
+    costs = stretch_costs(path)
+    out = {}
+    for budget in (math.inf, 0, sum(cost for _, _, cost in costs[:3])):
+        trace = tmp_path / f"trace-{len(out)}.jsonl"
+        with monkeypatch.context() as m:
+            m.setattr(din, "HOLD_BYTES", budget)
+            result, _ = run(path, dialect="din", options=RunOptions(state_dir=tmp_path / f"s{len(out)}", trace=trace,
+                                                                   **options))
+        out[budget] = (result, trace.read_text())
+    return out
+
+
+@pytest.mark.parametrize("case", ["fault", "step limit"])
+def test_a_stop_past_the_held_stretches_is_the_stop_of_a_program_held_whole(tmp_path, monkeypatch, stretched, case):
+    """An arc whose end lies off its circle (NC002, a fault the kernel finds as it runs the block) near the end of
+    a bolt circle, or the step limit reached there: with the first three stretches held and the rest read again
+    as it runs, and with nothing held, the run stops at the same block with the same summary and trace as a run
+    that holds the whole program."""
+    path = tmp_path / "drill.ngc"
+    lines = bolt_circle(400).splitlines()
+    options = {}
+    if case == "fault":
+        lines.insert(1800, "G2 X10 Y0 I1 J0")
+    else:
+        options["max_steps"] = 1800  # the blocks of lines 1..1800 (every line of a bolt circle is one)
+    line = 1801
+    path.write_text("\n".join(lines) + "\n")
+    assert sum(chars for _, chars, _ in stretch_costs(path)[:3]) < sum(map(len, lines[:1800]))  # past them
+    runs = run_partly_held(monkeypatch, path, tmp_path, **options)
+    whole = runs[math.inf]
+    assert whole[0]["status"] == "error" and whole[0]["error"]["line"] == line, whole[0]["error"]
+    assert whole[0]["error"]["code"] == ("NC002" if case == "fault" else "RUN001")
+    assert whole[1].count("\n") > 1000  # the moves up to the stop
+    assert all(other == whole for other in runs.values())

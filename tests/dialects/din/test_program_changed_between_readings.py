@@ -82,9 +82,9 @@ def test_a_run_stops_with_run008_and_reports_the_motion_before_it(program, monke
     runs its first stretch: the run ends in error RUN008, the blocks before the changed stretch moved."""
     real, passes = din.file_stretches, []
 
-    def written_over_while_running(file):
+    def written_over_while_running(file, at=None):
         passes.append(file)
-        for k, piece in enumerate(real(file)):
+        for k, piece in enumerate(real(file, at)):
             yield piece
             if len(passes) == 2 and k == 0:
                 program.write_text(TEXT.replace("X50.0 Y20.0", "X50.0 Y2?.0"))
@@ -97,3 +97,97 @@ def test_a_run_stops_with_run008_and_reports_the_motion_before_it(program, monke
     assert (result["error"]["code"], result["error"]["line"]) == ("RUN008", at)
     assert result["motion"]["feed_moves"] == at - 2  # lines 2 .. at-1
     assert result["steps"] == at - 1
+
+
+def stretch_ends() -> list[int]:
+    """Where each stretch of TEXT ends, in characters from its start."""
+    ends, at = [], 0
+    for piece in text_stretches(TEXT):
+        at += len(piece)
+        ends.append(at)
+    return ends
+
+
+def run_edited_once_read(program: Path, monkeypatch, edit) -> dict:
+    """A run of ``program`` holding its first three stretches, ``edit()`` applied to the file when its first
+    reading has ended (before the blocks run): the JSON summary."""
+    with din.ProgramStretches(str(program), None) as stretches:
+        costs = [din.held_bytes(stretch) for stretch in stretches(COLUMNS_FROM)]
+    real, passes = din.file_stretches, []
+
+    def edited_after_the_first_reading(file, at=None):
+        passes.append(at)
+        if len(passes) == 2:
+            edit()
+        yield from real(file, at)
+
+    monkeypatch.setattr(din, "file_stretches", edited_after_the_first_reading)
+    monkeypatch.setattr(din, "HOLD_BYTES", sum(costs[:3]))
+    result, _ = run(program, dialect="din", options=RunOptions(state_dir=program.parent / ".ncvm"))
+    assert len(passes) == 2 and passes[1] is not None  # read again from the fourth stretch on, not from the start
+    return result
+
+
+def test_a_run_holding_a_prefix_reads_the_rest_as_it_was_and_ends_as_a_run_held_whole(program, monkeypatch):
+    result = run_edited_once_read(program, monkeypatch, lambda: None)
+    assert result["status"] == "ok" and result["steps"] == 3002, result["error"]
+    assert result == run(program, dialect="din", options=RunOptions(state_dir=program.parent / ".ncvm"))[0]
+
+
+def test_a_held_stretch_rewritten_at_its_length_runs_what_was_checked(program, monkeypatch):
+    """A character of the second stretch changed (X50.0 Y4.0 -> Y4?0, line 452; a syntax error had it been
+    there when read): that stretch is held as its first reading read it, and the stretches read again are as
+    they were: the run is the checked program's."""
+    assert stretch_ends()[0] < TEXT.index("X50.0 Y4.0\n") < stretch_ends()[1]
+    result = run_edited_once_read(program, monkeypatch,
+                                  lambda: program.write_text(TEXT.replace("X50.0 Y4.0\n", "X50.0 Y4?0\n")))
+    assert result["status"] == "ok" and result["steps"] == 3002, result["error"]
+
+
+@pytest.mark.parametrize("edit, where", [
+    (lambda text: text.replace("X50.0 Y4.0\n", "X50.0 Y4.05\n"), "held"),  # a held stretch one character longer
+    (lambda text: text[:stretch_ends()[1]], "held"),  # cut inside what is held
+    (lambda text: text[:stretch_ends()[2]], "held"),  # cut exactly where the held stretches end
+    (lambda text: text.replace("X50.0 Y20.0", "X50.0 Y2?.0"), 2052),  # past them, at their length
+    (lambda text: text[:stretch_ends()[5]], "cut"),  # cut past them at a stretch end
+    (lambda text: text + "G0 Z50\n" * 2000, "last"),  # lines appended
+])
+def test_a_file_changed_where_it_is_read_again_stops_with_run008(program, monkeypatch, edit, where):
+    """The file changed after its first reading where the run reads it again (from the fourth stretch): a held
+    stretch grown or the file cut before the fourth stretch shifts or takes away what is read again (RUN008 at
+    the fourth stretch's first line, the held blocks having run); a change past the held stretches stops before
+    its own stretch, a file cut or grown at the stretch it ends in."""
+    result = run_edited_once_read(program, monkeypatch, lambda: program.write_text(edit(TEXT)))
+    firsts = first_lines()
+    at = {"held": firsts[3], "cut": firsts[6], "last": firsts[-1]}.get(where)
+    if at is None:
+        at = next(line for line in reversed(firsts) if line <= where)
+    assert (result["status"], result["error"]["code"], result["error"]["line"]) == ("error", "RUN008", at)
+    assert result["steps"] == at - 1  # every block before it: one a line
+
+
+@pytest.mark.parametrize("cut", [None, 1, 2])
+def test_a_file_of_lone_cr_line_ends_is_read_again_from_where_it_stood(program, monkeypatch, cut):
+    """Lone CR line ends: where the file stands after a stretch is a position with the line-end decoder's state
+    in it (a pending CR). Read again from there the run is the one of the file held whole; cut inside the held
+    stretches, that position cannot be restored and the run stops with RUN008 at the fourth stretch's line."""
+    data = TEXT.replace("\n", "\r").encode("latin-1")
+    program.write_bytes(data)
+    ends = [len(TEXT[:end]) for end in stretch_ends()]  # a character a byte: the same offsets
+    result = run_edited_once_read(program, monkeypatch,
+                                  lambda: cut is not None and program.write_bytes(data[:ends[cut] - 5]))
+    if cut is None:
+        assert result["status"] == "ok" and result["steps"] == 3002, result["error"]
+    else:
+        assert (result["status"], result["error"]["code"], result["error"]["line"]) == ("error", "RUN008",
+                                                                                      first_lines()[3])
+        assert result["steps"] == first_lines()[3] - 1
+
+
+def test_a_file_is_read_from_a_later_stretch_only_after_a_whole_pass(program):
+    """Where a later stretch starts is known from the first whole reading only: asked before it, no guess."""
+    with din.ProgramStretches(str(program), None) as stretches:
+        with pytest.raises(ValueError, match="after a whole pass"):
+            stretches(COLUMNS_FROM, 3)
+        assert sum(len(s.lines) for s in stretches(COLUMNS_FROM)) == TEXT.count("\n")
+        assert next(iter(stretches(COLUMNS_FROM, 3))).first == first_lines()[3] - 1

@@ -1,13 +1,12 @@
 """Plain DIN 66025 / ISO 6983 programs: read every block, then run them through the kernel.
 
 A run reads the program from its file a stretch at a time (issue 18: bounded memory for a file of any
-size): once for its errors and refusals, then again as it runs, unless what it read is cheap enough to hold
-(:data:`HOLD_BYTES`)."""
+size): once for its errors and refusals, holding its leading stretches while they are cheap enough
+(:data:`HOLD_BYTES`), then, as it runs, again from the first stretch it did not hold."""
 
 from __future__ import annotations
 
 import math
-import os
 import re
 from itertools import islice
 
@@ -28,11 +27,12 @@ from .ngc import fold_extensions
 from .options import arc_tolerance, options
 from .support import address_refusal, block_error, refused_address
 
-#: a run holds the segments of a program it reads while they cost at most this much memory (in bytes, as
-#: :func:`held_bytes` estimates them): a flat CAM program of up to about 190,000 lines (6 MB), a drilling
-#: program of up to about 90,000 lines. Past it, it drops them and reads the program a second time, a stretch at
-#: a time, as it runs (issue 18: memory bounded by design; docs/decisions.md "a DIN program's memory")
-HOLD_BYTES = 32 << 20
+#: a run holds the leading stretches of a program it reads while they cost at most this much memory (in bytes,
+#: as :func:`held_bytes` estimates them): a flat CAM program of up to about 150,000 lines (4.8 MB), a drilling
+#: program of up to about 50,000 lines, is read once. It reads the rest a second time, a stretch at a time,
+#: as it runs (issue 18: memory bounded by design; docs/decisions.md "a DIN program's memory", "read again
+#: only past what it holds": 24 MB keeps a 500,000-line flat program's peak under those of other shapes)
+HOLD_BYTES = 24 << 20
 #: the memory held segments take (tracemalloc, CPython 3.11, numpy 2): a PlainRun held as columns whatever its
 #: length (its object, word dict and nine arrays); a short run (nc.block.columnar: kept as its lines' matches)
 #: and each of its blocks; a block read the general way (Block, G tuple, word dict, Src, skip pair); a line (its
@@ -100,6 +100,7 @@ class DinDialect(Dialect):
                                                last_src)
                 if kernel.ended or (refused and refused[0] < index):
                     break
+                segments = None  # run: not held while the next stretch is read
             if refused and not kernel.ended:
                 refusal = refused[2]
                 if done >= limit:
@@ -114,12 +115,12 @@ class DinDialect(Dialect):
     @staticmethod
     def _read(path, program, axes, skip_active, profile):
         """(the program's stretches of segments, the first refused block as (segment index, row, Diagnostic) or
-        None); a program with errors fails to compile. The segments read are held while they cost at most
-        :data:`HOLD_BYTES` and the whole program would too, at what it has cost a character so far: a program
-        that fits is read once. Else they are dropped at once and the program is read a second time as it
-        runs, the first reading having been for its errors and refusals only (issue 18: bounded memory). A
-        program that cannot be read again (a pipe) is held."""
-        held, cost, read = [], 0, 0  # the segments held, what they cost, the characters they were read from
+        None); a program with errors fails to compile. The leading stretches read are held while they cost at
+        most :data:`HOLD_BYTES` together: a program that fits is read once. The rest is read a second time as
+        it runs, from the first stretch not held on, the first reading having been for its errors and refusals
+        only (issue 18: bounded memory). A program that cannot be read again (a pipe) is held."""
+        held, cost = [], 0  # the leading stretches' segments held, what they cost
+        again = None  # the first stretch not held
         budget = HOLD_BYTES if program.again else math.inf
         diags, refused, index = [], None, 0
         error_lines = {}  # the source lines of the syntax errors (NC001), for fold_extensions
@@ -135,16 +136,16 @@ class DinDialect(Dialect):
                                key=lambda r: (r[0], r[1] or 0))[:1]
                 refused = (index + first[0][0], first[0][1], first[0][2]) if first else None
             index += len(segments)
-            if held is not None:
-                cost, read = cost + held_bytes(stretch), read + stretch.chars
-                # past the budget, or bound to pass it at what the program has cost a character so far
-                if cost > budget or cost / read * program.size > budget:
-                    held = None  # dropped at once
+            if again is None:
+                cost += held_bytes(stretch)
+                if cost > budget:
+                    again = len(held)  # the stretches from this one on are read again
                 else:
                     held.append(segments)
+            del stretch, segments  # not held here while the next stretch is read
         if diags:
             raise CompileFailed(fold_extensions(diags, error_lines.get))
-        return (held if held is not None else (stretch.segments for stretch in program(COLUMNS_FROM))), refused
+        return _held_then_read(held, program, again), refused
 
     @staticmethod
     def _execute(path, segments, kernel, counter, limit, hook, skip_active, done, last_src):
@@ -194,6 +195,21 @@ class DinDialect(Dialect):
             raise
 
 
+def _held_then_read(held: list, program, again: int | None):
+    """The segments of each stretch ``held``, let go as they are handed on (a run's memory is not the held
+    stretches and the rest at once), then those of the program read again from stretch ``again`` on (None:
+    none)."""
+    held.reverse()
+    while held:
+        yield held.pop()
+    if again is not None:
+        for stretch in program(COLUMNS_FROM, again):
+            segments = stretch.segments
+            del stretch
+            yield segments
+            del segments  # not held here while the next stretch is read
+
+
 def _refused_blocks(path: str, stretch, axes, skip_active: bool, profile) -> list:
     """The first block of a stretch with an address the profile refuses (NC007) or that breaks one of the
     control's block rules (two functions of one modal group ...: nc/profiles/blockrules.py), as (segment index,
@@ -238,43 +254,54 @@ class ProgramStretches:
             raise UsageError(f"cannot read {path}: {e.strerror}") from None
         #: whether it can be read again from its start (a pipe is read once)
         self.again = self.file is None or self.file.seekable()
-        #: its size in characters (a file's in bytes: a character each, but for the CR of a CR LF; 0 for a pipe)
-        self.size = (len(self.flat) if self.file is None else
-                     os.fstat(self.file.fileno()).st_size if self.again else 0)
-        #: the file's pieces as its first whole pass read them: (first line, characters, hash) each, then
-        #: (the line after the last, None, None); None before that pass ends
+        #: the file's pieces as its first whole pass read them: (first line, characters, hash, where the file
+        #: stood before it) each, then (the line after the last, None, None, where the file stood at its end);
+        #: None before that pass ends
         self.read_as = None
 
-    def __call__(self, columns_from: int = 0):
-        """The stretches from the program's start (``columns_from``: :func:`~ncvm.nc.block.din_stretches`)."""
+    def __call__(self, columns_from: int = 0, start: int = 0):
+        """The stretches from the program's start, or from its ``start``-th stretch (0-based) on after a whole
+        pass (``columns_from``: :func:`~ncvm.nc.block.din_stretches`)."""
         if self.file is None:  # a text does not change
-            return din_stretches(self.path, text_stretches(self.flat), columns_from)
-        pieces = file_stretches(self.file)
-        if self.again:  # a pipe is read once
-            pieces = self._recorded(pieces) if self.read_as is None else self._verified(pieces)
-        return din_stretches(self.path, pieces, columns_from)
+            pieces = text_stretches(self.flat)
+            first = sum(piece.count("\n") for piece in islice(pieces, start))
+            return din_stretches(self.path, pieces, columns_from, first)
+        if start and self.read_as is None:
+            raise ValueError("a program file is read from a later stretch on only after a whole pass")
+        if not self.again:  # a pipe is read once
+            return din_stretches(self.path, file_stretches(self.file), columns_from)
+        if self.read_as is None:
+            return din_stretches(self.path, self._recorded(file_stretches(self.file)), columns_from)
+        line, _, _, at = self.read_as[start]
+        pieces = file_stretches(self.file, at if start else None)
+        return din_stretches(self.path, self._verified(pieces, start), columns_from, line - 1)
 
     def _recorded(self, pieces):
         """``pieces``, each noted (:attr:`read_as`) for the passes after this one (a hash within the run's one
         process: a few milliseconds for a 500,000-line program)."""
-        seen, line = [], 1
+        seen, line, at = [], 1, 0
         for piece in pieces:
-            seen.append((line, len(piece), hash(piece)))
+            seen.append((line, len(piece), hash(piece), at))
             line += piece.count("\n")
             yield piece
-        seen.append((line, None, None))
+            at = self.file.tell()  # the piece's end (a text file's position: an opaque number for seek)
+        seen.append((line, None, None, at))
         self.read_as = seen
 
-    def _verified(self, pieces):
-        """``pieces``, each the one the first pass read (its length and hash), ending where that pass ended; else
-        run-time error RUN008 at the first line of the first piece that differs, before it is yielded (the
-        blocks before it run)."""
+    def _verified(self, pieces, start: int):
+        """``pieces`` from the ``start``-th on, each the one the first pass read (its length and hash), ending
+        where that pass ended; else run-time error RUN008 at the first line of the first piece that differs,
+        before it is yielded (the blocks before it run). A file cut before where the pieces start (its position
+        cannot be restored) has changed too."""
         seen = self.read_as
-        k = -1
-        for k, piece in enumerate(pieces):
-            if seen[k][1] != len(piece) or seen[k][2] != hash(piece):  # past the end: (line, None, None)
-                self._changed(seen[k][0])
-            yield piece
+        k = start - 1
+        try:
+            for k, piece in enumerate(pieces, start):
+                if seen[k][1] != len(piece) or seen[k][2] != hash(piece):  # past the end: (line, None, None, at)
+                    self._changed(seen[k][0])
+                yield piece
+        except OSError:  # seek: "can't restore logical file position"
+            self._changed(seen[k + 1][0])
         if k + 2 != len(seen):  # it ends before the first pass's end
             self._changed(seen[k + 1][0])
 
