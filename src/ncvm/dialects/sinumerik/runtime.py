@@ -358,8 +358,6 @@ class Channel:
 
     def store(self, first: int, values: list[float]) -> None:
         """Results of an NC function into R<first>... (8 significant digits under strict_nc)."""
-        if first + len(values) > 1000:  # (a slice past R999 would lengthen the R array)
-            raise Cl800Error(f"result registers R{first}..R{first + len(values) - 1} do not exist")
         fix = nc8 if self.strict else held
         self.R[first:first + len(values)] = [fix(v) for v in values]
         self.central.check()
