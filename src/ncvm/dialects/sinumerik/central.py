@@ -24,6 +24,8 @@ class CentralR:
     def __init__(self, R: list[float], start: dict[str, float], stored: dict[str, Any], store):
         self.R = R
         self.start = dict(start)  # machine file and earlier runs: what the run starts from
+        self.names = [str(n) for n in CENTRAL_R]
+        self.started = [name in self.start for name in self.names]  # kept in the entry even when 0
         self.found = stored.get(KEY)  # the store's own entry as the run found it (None: none)
         self.store = store
         #: the values the store's entry stands for: those the run started from, then those last written (a value
@@ -45,7 +47,7 @@ class CentralR:
         """The store's entry as of now; ``kept`` follows only once it is written (a Ctrl-C in between leaves
         it to the end of the run's :meth:`check`)."""
         now = self.R[FIRST:]
-        central = {str(n): v for n, v in enumerate(now, FIRST) if v != 0.0 or str(n) in self.start}
+        central = {name: v for name, v, started in zip(self.names, now, self.started) if v != 0.0 or started}
         if central != self.start:
             self.store.put(NAMESPACE, KEY, central)
         elif self.found is None:
