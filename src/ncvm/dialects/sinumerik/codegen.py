@@ -638,8 +638,10 @@ class UnitCodegen:
         ops = at.it.operands
         if ops[0].kind == "R" and ops[1].kind == "R":
             a, b = self.val(ops[0]), self.val(ops[1])
-            return self._lines(at, [f"{a}, {b} = {b}, {a}", *self.kept(int(ops[0].value)),
-                                    *self.kept(int(ops[1].value))])
+            na, nb = int(ops[0].value), int(ops[1].value)
+            if na in CENTRAL_R and nb in CENTRAL_R:  # one write holds both (a kill never leaves half a swap)
+                return self._lines(at, [f"{a}, {b} = {b}, {a}", f"_R[{nb}] = {b}", *self.kept(na)])
+            return self._lines(at, [f"{a}, {b} = {b}, {a}", *self.kept(na), *self.kept(nb)])
         return self._lines(at, [f"_rt.xchg({self._ref(ops[0])}, {self._ref(ops[1])})", "@SYNC_IN"])
 
     def lower_bit(self, at: "_Site") -> bool:
