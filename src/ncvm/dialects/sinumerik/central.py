@@ -1,8 +1,8 @@
 """The central R parameters R900-R999 written through to the permanent store as the program writes them.
 
 The NC keeps them across power-off (the CL 800 manual's central R parameters, one set in the communication
-RAM, L425-431; docs/sin800.md "The NC state"), so a store into one is in the store before the next statement, as a CPL permanent variable is: a run
-killed at any moment keeps every value it wrote (docs/decisions.md, "SINUMERIK: NC data and central R written
+RAM, L425-431; docs/sin800.md "The NC state"), so a store into one is in the store before the next statement,
+as a CPL permanent variable is: a run killed at any moment keeps every value it wrote (docs/decisions.md, "SINUMERIK: NC data and central R written
 through"). What the store holds after each write is what the end of the run used to write then: the key
 ``central_r`` holds the central R that are not 0 or that the machine file or an earlier run set, unless that
 is exactly what the run started from, when the key is left as the run found it.
