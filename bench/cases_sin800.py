@@ -25,7 +25,7 @@ def cases() -> dict[str, Case]:
     return {
         "sin800_loop_arith": Case(_runner("loop_arith.mpf"), 100_000, "iterations/s"),
         "sin800_loop_motion": Case(_runner("loop_motion.mpf"), 100_000, "G1/s"),
-        # R900 is permanent: the NC data are written to the store in one batch at the end of the run
+        # R900 is permanent: each store into it is written through to the store before the next statement
         "sin800_perm_write": Case(_runner("perm_write.mpf"), 10_000, "writes/s"),
         "rs274_sin800_loop_arith": rs274_case(PEERS / "loop_arith.ngc", 100_000, "iterations/s"),
         "rs274_sin800_loop_motion": rs274_case(PEERS / "loop_motion.ngc", 100_000, "G1/s"),

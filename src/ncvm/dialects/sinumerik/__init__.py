@@ -22,7 +22,7 @@ from ..base import Dialect
 from .codegen import UnitCodegen, axis_diagnostics, refused_g_diagnostics, tool_diagnostics
 from .drilling import missing_cycle_warnings
 from .lint import stop_dec_lint
-from .ncdata import CENTRAL_R, NAMESPACE, NcData
+from .ncdata import NAMESPACE, NcData
 from .options import options
 from .reader import PartProgram, Word, read_program
 from .rounding import rounding_diagnostics
@@ -155,7 +155,8 @@ class Sin800Dialect(Dialect):
             session.say(f"NC state: {offset} kept from an earlier run (the NC keeps its offsets; "
                         f"delete {session.options.state_dir} to start from the machine file)")
         library = SubProgramLibrary(machine, debug, ahead, strict, sec.radius_address)
-        channel = Channel(session, data, library)
+        channel = Channel(session, data, library, stored)
+        data.store = store  # NC data the program changes are written through (NcData.changed)
         if session.kernel.canon.frozen is not NOBODY:  # a sink marks input from outside the program (translate)
             channel.left = {int(n): float(v) for n, v in stored.get("central_r", {}).items() if v != 0.0}
         name = f"%{unit.program.kind}{unit.program.number}" if unit.program.kind else Path(path).name
@@ -174,19 +175,16 @@ class Sin800Dialect(Dialect):
             for sub in library.units.values():
                 if sub is not None:
                     written |= sub.written
-            self._finish(session, channel, data, store, initial, written)
+            self._finish(session, channel, data, initial, written)
 
-    def _finish(self, session, channel: Channel, data: NcData, store, initial: list, written: set) -> None:
-        """Persist what the NC keeps; report R parameters that are non-zero, changed or written."""
+    def _finish(self, session, channel: Channel, data: NcData, initial: list, written: set) -> None:
+        """Persist what the NC keeps and the program's statements have not written through yet (the PRESET
+        offsets taking effect, what a fault or Ctrl-C stopped on its way); report R parameters that are
+        non-zero, changed or written."""
         data.preset_takes_effect()  # at program end or, after a fault, at the reset that follows (L3240)
+        channel.central.check()
+        data.changed()
         R = channel.R
-        central = {str(n): R[n] for n in CENTRAL_R if R[n] != 0.0 or str(n) in data.central_r}
-        if central != data.central_r:
-            data.central_r = central
-            data.dirty.add("central_r")
-        with store.batch():
-            for key, value in data.persisted().items():
-                store.put(NAMESPACE, key, value)
         session.variables = {f"R{n}": R[n] for n in range(1000)
                              if R[n] != 0.0 or R[n] != initial[n] or n in written}
         if channel.panel.v24:

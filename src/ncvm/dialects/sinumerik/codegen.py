@@ -147,6 +147,7 @@ class UnitCodegen:
         self.labels: dict[int, int] = {}  # block index -> label ordinal
         self.dynamic_jumps = False
         self.written: set[int] = set()  # R parameters the program writes by number
+        self.keeps_central = False  # a store into a central R by name or through a pointer (:meth:`kept`)
         #: what the item being lowered reads of R900-R999 (central R, kept from earlier runs): by number,
         #: and the pointer R parameters it reads through (any R, a central one too)
         self.central_reads: set[int] = set()
@@ -202,13 +203,25 @@ class UnitCodegen:
             self.ahead_at = {k + len(lines) if k >= start else k: n for k, n in self.ahead_at.items()}
 
     def store(self, op: Operand, expr: str) -> list[str]:
-        """Python lines storing ``expr`` into a <Var>."""
+        """Python lines storing ``expr`` into a <Var>; a central R (R900-R999) is then written through to the
+        store (:meth:`kept`), through a pointer only when the pointer names one (one comparison)."""
         if self.strict:
             expr = f"_nc8({expr})"
         if op.kind == "R":
-            self.written.add(int(op.value))
-            return [f"{self.r(int(op.value))} = {expr}"]
-        return [f"_R[_ptr({self.r(int(op.value))})] = {expr}", "@SYNC_IN"]
+            n = int(op.value)
+            self.written.add(n)
+            return [f"{self.r(n)} = {expr}", *self.kept(n)]
+        self.keeps_central = True
+        return [f"_R[(_p := _ptr({self.r(int(op.value))}))] = {expr}",
+                f"if _p >= {CENTRAL_R.start}: _kc(_p, _R[_p])", "@SYNC_IN"]
+
+    def kept(self, n: int) -> list[str]:
+        """The line that writes central R ``n`` through to the permanent store after a store into it by name
+        (``_kc``: the channel's ``central.put``, which writes only a changed value); none for a local R."""
+        if n not in CENTRAL_R:
+            return []
+        self.keeps_central = True
+        return [f"_kc({n}, r{n})"]
 
     # -- jump targets ----------------------------------------------------
     def find_target(self, index: int, number: int) -> int | None:
@@ -323,6 +336,8 @@ class UnitCodegen:
         src.emit("_R = _rt.R; _ex = _rt.execute; _K = _rt.kernel; _ctr = _rt.counter; _lin = _rt.linear")
         src.emit("_left = _rt.left  # central R left by earlier runs, not yet read (central_check)")
         src.emit("_cyc = _rt.drilling.armed  # the drilling cycle a block with an axis word calls (G81-G89)")
+        if self.keeps_central:
+            src.emit("_kc = _rt.central.put  # a store into a central R written through to the store")
         src.emit("_lim = _ctr.limit - _ctr.steps; _st = 0; _blk = 0")
         used = sorted(self.used)
         sync_in = "; ".join(f"r{n} = _R[{n}]" for n in used) or "pass"
@@ -495,6 +510,8 @@ class UnitCodegen:
                 out.emit(f"if -{R_SMALLEST!r} < {target} < {R_SMALLEST!r}: {target} = _r_value({target})", line)
             else:
                 out.emit(f"{self.r(it.target)} = {self._arith_expr(it)}", line)
+            for text in self.kept(it.target):
+                out.emit(text, line)
         elif isinstance(it, Note):
             rec.note(it)
         elif isinstance(it, AtInstr):
@@ -621,7 +638,10 @@ class UnitCodegen:
         ops = at.it.operands
         if ops[0].kind == "R" and ops[1].kind == "R":
             a, b = self.val(ops[0]), self.val(ops[1])
-            return self._lines(at, [f"{a}, {b} = {b}, {a}"])
+            na, nb = int(ops[0].value), int(ops[1].value)
+            if na in CENTRAL_R and nb in CENTRAL_R:  # one write holds both (a kill never leaves half a swap)
+                return self._lines(at, [f"{a}, {b} = {b}, {a}", f"_R[{nb}] = {b}", *self.kept(na)])
+            return self._lines(at, [f"{a}, {b} = {b}, {a}", *self.kept(na), *self.kept(nb)])
         return self._lines(at, [f"_rt.xchg({self._ref(ops[0])}, {self._ref(ops[1])})", "@SYNC_IN"])
 
     def lower_bit(self, at: "_Site") -> bool:

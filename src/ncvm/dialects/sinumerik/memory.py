@@ -188,7 +188,7 @@ class SystemMemory:
             bits = pattern_to_int(table.get(str(addr), 0.0))
             bits = bits | (1 << bit) if value else bits & ~(1 << bit)
             table[str(addr)] = int_to_pattern(bits)
-        d.dirty.add(area)
+        d.changed(area)
 
     def drive_write(self, code: str, where: tuple, value: float) -> None:
         """PCDA / PCDS (@44b/@44c): a programmed control bit of a digital drive."""

@@ -147,7 +147,9 @@ class NcData:
         self.gear = 1  # gear stage of the master spindle at power-on (AGS)
         self.gears: list[float] = []  # maximum speed of each gear stage (M40, limit under G96)
         self.v24_input = ""  # what INP reads from the V24 port (module v24's tape format)
-        self.dirty: set[str] = set()
+        self.dirty: set[str] = set()  # the keys of PERSISTED changed and not yet in the store
+        #: the permanent store the run writes the NC data through to (:meth:`changed`); None: kept in memory
+        self.store = None
 
     # -- loading ---------------------------------------------------------
     @classmethod
@@ -244,6 +246,17 @@ class NcData:
                 out.append(f"{kind} rotation {group} {angle:g} deg")
         return out
 
+    def changed(self, *keys: str) -> None:
+        """The statement running changed NC data ``keys`` (and whatever else is marked ``dirty``): the NC keeps
+        them, so they are in the store before the statement returns, in one transaction (docs/decisions.md,
+        "SINUMERIK: NC data and central R written through")."""
+        self.dirty.update(keys)
+        if self.store is not None and self.dirty:
+            with self.store.batch():
+                for key, value in self.persisted().items():
+                    self.store.put(NAMESPACE, key, value)
+            self.dirty.clear()
+
     def persisted(self) -> dict[str, Any]:
         out: dict[str, Any] = {}
         for key in self.dirty:
@@ -295,7 +308,7 @@ class NcData:
         if self.preset_loaded is not None:
             self.zo["PRESET"] = self.preset_loaded
             self.preset_loaded = None
-            self.dirty.add("zo")
+            self.changed("zo")
 
     def additive(self) -> list[float]:
         """Programmable (G58 + G59), external, DRF and PRESET offsets, summed per axis."""

@@ -43,8 +43,9 @@ class Offsets:
         self.kernel.set_additive_offset(d.additive())
 
     def _changed(self) -> None:
-        self.data.dirty.add("zo")
+        self.data.dirty.add("zo")  # (kept for the end of the run should a waiting block fault in apply)
         self.apply()
+        self.data.changed()
 
     def programmable_zo(self, group: int, words: list, line: int) -> None:
         vec = self.data.zo_vec(f"G{57 + group}")
@@ -150,6 +151,7 @@ class Offsets:
             d.rot[key] = value if code in ("437", "439") else d.rot.get(key, 0.0) + value
             d.dirty.add("rot")
             self.channel.route()  # a rotation now selected (or cleared) changes how blocks reach the kernel
+            d.changed()
             return
         self._changed()
 
@@ -158,6 +160,6 @@ class Offsets:
         p = self.channel.memory.to_entry(where)
         i = _rng("TO parameter P", where[2], 0, 15)
         p[i] = value if code == "420" else p[i] + value
-        self.data.dirty.add("to")
+        self.data.changed("to")
         if self.tool_d and _i(where[1]) == self.tool_d:
             self.select_d(self.tool_d, self.channel.write_line)

@@ -38,6 +38,7 @@ from ...runtime.buffer import BlockBuffer
 from ...runtime.locate import generated_frames, raised_by_generated
 from . import feeds
 from .atcodes import AT_CODES
+from .central import CentralR
 from .cycles import Cycles
 from .drilling import Drilling
 from .errors import Cl800Error
@@ -132,7 +133,7 @@ class Channel:
     """One NC channel running a main program and its sub-programs; its parts hold the NC data and the @ code
     functions (docs/architecture.md, SINUMERIK)."""
 
-    def __init__(self, session, data: NcData, loader):
+    def __init__(self, session, data: NcData, loader, stored: dict | None = None):
         self.session = session
         self.kernel = session.kernel
         self.execute = session.kernel.execute
@@ -162,6 +163,8 @@ class Channel:
         #: central R non-zero in the state directory, not yet read: number -> the value an earlier run left
         self.left: dict[int, float] = {}
         self._power_on_r(session.machine.source)
+        #: R900-R999 written through to the store (``stored``: what the store held at the start)
+        self.central = CentralR(self.R, data.central_r, stored or {}, session.store)
         self.push_stack: list[tuple[tuple[int, ...], list[float]]] = []
         self.frames: list[Frame] = []
         self._paths: list[str] = []  # the file of each running unit, as ``frames``
@@ -309,9 +312,11 @@ class Channel:
         self.rounding.finish()
         self.kernel.planner.stop()  # decoding waits for the axes: they stop
         R = self.R
-        for n, v in self.pending_r.items():
-            R[n] = v
-        self.pending_r.clear()
+        if self.pending_r:
+            for n, v in self.pending_r.items():
+                R[n] = v
+            self.pending_r.clear()
+            self.central.check()
 
     def stop_dec_now(self, args: tuple) -> None:
         """STOP DEC (@714)."""
@@ -329,6 +334,7 @@ class Channel:
             self.pending_r[n] = value
         else:
             self.R[n] = value
+            self.central.check()
 
     # -- the @ codes of main groups 3, 4, 7 and a (CL 800 manual §10.5, L6484-6604; §5.3.9, L4438-4590; §10.10, L6801-6824) ----------
     def read(self, code: str, target: int, args: tuple) -> None:
@@ -348,11 +354,13 @@ class Channel:
                 R[target + i] = fix(v)
         else:
             R[target] = fix(value)
+        self.central.check()
 
     def store(self, first: int, values: list[float]) -> None:
         """Results of an NC function into R<first>... (8 significant digits under strict_nc)."""
         fix = nc8 if self.strict else held
         self.R[first:first + len(values)] = [fix(v) for v in values]
+        self.central.check()
 
     def write(self, code: str, args: tuple, line: int = 0) -> None:
         """A write, the value last; ``line``: the block that writes (:attr:`write_line`, the source of what
@@ -513,6 +521,7 @@ class Channel:
         self.push_stack.append((regs, [R[n] for n in regs]))
         for n in regs:
             R[n] = 0.0
+        self.central.check()
 
     def pop(self, regs: tuple[int, ...], line: int) -> None:
         if not self.push_stack:
@@ -525,10 +534,12 @@ class Channel:
             raise RuntimeFault("SIN006", f"pop of {names(regs)} does not match the last push of {names(saved)}")
         for n, v in zip(regs, values):
             self.R[n] = v
+        self.central.check()
 
     def xchg(self, a: int, b: int) -> None:
         R = self.R
         R[a], R[b] = R[b], R[a]
+        self.central.check()
 
     def bit(self, pattern: float, k: int) -> float:
         if not 0 <= k <= 7:
@@ -558,14 +569,14 @@ class Channel:
         lo, hi = self._mib_index(a), self._mib_index(b)
         for i in range(lo, hi + 1):
             self.data.mib[i] = 0.0
-        self.data.dirty.add("mib")
+        self.data.changed("mib")
 
     def mib_read(self, a: float) -> float:
         return self.data.mib[self._mib_index(a)]
 
     def mib_write(self, a: float, v: float) -> None:
         self.data.mib[self._mib_index(a)] = v
-        self.data.dirty.add("mib")
+        self.data.changed("mib")
 
     # -- main group 6 helpers --------------------------------------------
     def tan(self, x: float) -> float:

@@ -113,7 +113,7 @@ def read_in(channel, kind: int, text: str) -> None:
             raise Cl800Error(f"INP({kind}): the V24 input holds {INPUT_TYPES[found]} ({line}), "
                              f"not {INPUT_TYPES[kind]}")
         apply()
-    data.dirty.update(("nc_md", "nc_sd", "plc_md", "to", "zo"))
+    data.changed("nc_md", "nc_sd", "plc_md", "to", "zo")
 
 
 def _parse(channel, line: str):
