@@ -186,14 +186,32 @@ class Planner:
         if self.blocks:
             self._plan(None)
         elif self.rows:
-            if len(self.rows) == self.width and self.entry2 == 0.0:
-                self._plan_one()  # one move from rest to rest: a drilling cycle's plunge before its dwell
-            elif len(self.rows) < SMALL * self.width:
-                self._plan_rows()
-            else:
+            if len(self.rows) >= SMALL * self.width:
                 self._plan(None)
+            elif self._rest_to_rest():
+                self._plan_rest()  # a drilling cycle's plunge before its dwell, the moves between two rapids
+            else:
+                self._plan_rows()
         self.entry2 = 0.0
         self.changes.clear()
+
+    def _rest_to_rest(self) -> bool:
+        """Whether every move in ``rows`` starts and ends at rest: the first from rest (``entry2`` 0), each
+        junction an exact stop (a rapid positioning on either side, G61/G09: the flags), or the rest-to-rest
+        model. Then no junction speed is worked out and each move takes :func:`trapezoid_time`."""
+        if self.entry2 != 0.0 or (math.copysign(1.0, self.entry2) < 0.0 and len(self.rows) > self.width):
+            return False  # a plan of several moves gives an entry2 of -0.0 as the first entry speed, -0.0
+        if self.model != LOOKAHEAD:
+            return True
+        before = STOP_END  # the first move: entry2 is 0
+        for f in self.rows[3::self.width]:
+            if f < 0.0:  # an arc's end tangent, in the row after its own
+                continue
+            f = int(f)
+            if not (before & STOP_END or f & STOP_START):
+                return False
+            before = f
+        return True
 
     def _plan_rows(self) -> None:
         """:meth:`_plan` of every waiting move, for a few moves in ``rows``: in plain Python, move by move."""
@@ -209,14 +227,28 @@ class Planner:
         speeds = [math.sqrt(x) * 60.0 for x in w]
         self.canon.timing(times, speeds[:-1], speeds[1:])
 
-    def _plan_one(self) -> None:
-        """:meth:`_plan_rows` of a single straight move from rest (no junction: it ends at rest too)."""
-        length, v, a = self._row_moves()[:3]
-        self.rows.clear()
-        t = trapezoid_time(length[0], v[0], a[0])  # blended_time from rest to rest
+    def _plan_rest(self) -> None:
+        """:meth:`_plan_rows` of moves that all start and end at rest (:meth:`_rest_to_rest`): every junction
+        speed 0, so each move's :func:`blended_time` is its :func:`trapezoid_time`; in one pass over
+        ``rows``, without the lists of fields and tangents."""
+        rows, width, dyn = self.rows, self.width, self.dyn
+        times = []
+        for i in range(0, len(rows), width):
+            ln, f = rows[i], rows[i + 3]
+            if f < 0.0:  # an arc's end tangent
+                continue
+            if ln < 0.0:  # the hot path's straight move
+                ln, vi, ai = straight_row_limits(rows[i + 4:i + width], rows[i + 1], f == POSITIONING, dyn)
+            else:
+                vi, ai = rows[i + 1], rows[i + 2]
+            times.append(trapezoid_time(ln, vi, ai))
+        rows.clear()
         clock = self.clock
-        clock.settle(clock.settled + t)
-        self.canon.timing([t], [0.0], [0.0])
+        t = clock.settled
+        for dt in times:  # in move order, as _plan_rows
+            t += dt
+        clock.settle(t)
+        self.canon.timing(times, [0.0] * len(times), [0.0] * len(times))
 
     def _row_moves(self) -> tuple[list, ...]:
         """The moves of ``rows`` as lists of fields (what :meth:`_materialise` makes an array of): an arc's end
@@ -230,21 +262,7 @@ class Planner:
                 u_out[-1] = u
                 continue
             if ln < 0.0:  # the hot path's straight move: deltas and the feed (mm/min; inf for a rapid move)
-                ln = 0.0
-                for d in u:  # summed in axis order, as lengths_columns
-                    ln += d * d
-                ln = math.sqrt(ln)
-                rapid = f == POSITIONING
-                inv = 1.0 / ln  # the shares as straight_limits_columns makes them: |d| * (1 / length)
-                # path_limits of the shares (length 1), written out
-                vi, ai = math.inf if rapid else vi / 60.0, math.inf
-                for d, vmax, amax in zip(u, dyn.rapid if rapid else dyn.max_feed, dyn.accel):
-                    share = abs(d * inv)
-                    if share:
-                        if vmax < vi * share:
-                            vi = vmax / share
-                        if amax < ai * share:
-                            ai = amax / share
+                ln, vi, ai = straight_row_limits(u, vi, f == POSITIONING, dyn)
                 u = [d / ln for d in u]
             length.append(ln)
             v.append(vi)
@@ -335,6 +353,27 @@ class Planner:
         # forward: w_i = min over k <= i of (b_k - s_k) + s_i
         w = np.minimum.accumulate(b - s) + s
         return np.maximum(w, 0.0, out=w)
+
+
+def straight_row_limits(deltas, feed: float, rapid: bool, dyn) -> tuple[float, float, float]:
+    """(length, path speed, path acceleration) of the kernel's hot-path row of a straight move (its ``deltas``,
+    ``feed`` in mm/min): what :meth:`Planner._materialise` works out column-wise, with the same float
+    operations (the length summed in axis order as lengths_columns, the shares |d| * (1 / length) as
+    straight_limits_columns, then path_limits of the shares written out)."""
+    ln = 0.0
+    for d in deltas:
+        ln += d * d
+    ln = math.sqrt(ln)
+    inv = 1.0 / ln
+    vi, ai = math.inf if rapid else feed / 60.0, math.inf
+    for d, vmax, amax in zip(deltas, dyn.rapid if rapid else dyn.max_feed, dyn.accel):
+        share = abs(d * inv)
+        if share:
+            if vmax < vi * share:
+                vi = vmax / share
+            if amax < ai * share:
+                ai = amax / share
+    return ln, vi, ai
 
 
 def junction_speeds2(u_prev, u_next, v_prev, v_next, stop, accel, tolerance) -> np.ndarray:
