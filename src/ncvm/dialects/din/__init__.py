@@ -9,7 +9,6 @@ from __future__ import annotations
 import math
 import os
 import re
-from itertools import islice
 
 from ...diagnostics import CompileFailed, RuntimeFault, Span, UsageError
 from ...nc import blockskip, threads
@@ -17,7 +16,7 @@ from ...nc.axiswords import din_missing_axes
 from ...nc.block import COLUMNS_FROM, PlainRun, columnar, din_stretches, file_stretches, text_stretches
 from ...nc.canon import Src
 from ...nc.cycles import CannedCycles
-from ...nc.plainrun import execute_columns
+from ...nc.plainrun import execute_columns, execute_rows
 from ...nc.profiles.blockrules import block_refusal
 from ...nc.profiles.iso import ISO
 from ...nc.profiles.named import profile as named_profile
@@ -165,9 +164,11 @@ class DinDialect(Dialect):
                                 lo = bad + 1
                             done += count - lo
                         else:  # a short run: block by block, each counted before it runs (it may fault)
-                            for blk in islice(seg.blocks(), count):
-                                done += 1
-                                kernel.execute(blk)
+                            counted = [0]
+                            try:
+                                execute_rows(kernel, seg, count, counted)
+                            finally:
+                                done += counted[0]
                         if count < len(seg):
                             counter.runaway(path, seg.line(count))
                         continue
