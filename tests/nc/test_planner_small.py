@@ -14,8 +14,18 @@ import sys
 import pytest
 
 from ncvm.machine.config import machine_from_dict
-from ncvm.nc.dynamics import AxisDynamics
-from ncvm.nc.planner import LOOKAHEAD, POSITIONING, REST, SMALL, STOP_END, STOP_START, Planner
+from ncvm.nc.dynamics import AxisDynamics, trapezoid_time
+from ncvm.nc.planner import (
+    LOOKAHEAD,
+    POSITIONING,
+    REST,
+    SMALL,
+    STOP_END,
+    STOP_START,
+    Planner,
+    rest_times_for,
+    straight_row_limits,
+)
 
 AXES = [{"name": "X", "accel": 1000.0, "max_feed": 5000.0, "rapid": 20000.0},
         {"name": "Y", "accel": 600.0, "max_feed": 4000.0, "rapid": 15000.0},
@@ -255,3 +265,31 @@ def test_a_drilling_flush_takes_the_rest_to_rest_path(monkeypatch):
     planner.rows += (-1.0, 150.0, 0.0, 0, 0.0, 0.0, -14.0, -1.0, 150.0, 0.0, 0, 0.0, 1.0, -14.0)  # these blend
     planner.stop()
     assert calls == ["rows"]
+
+
+@pytest.mark.parametrize("axes", [1, 2, 4, 6])
+def test_generated_rest_times_are_the_formulas_for_any_axes(axes):
+    """The rest-to-rest times generated per machine (one unrolled line per axis) are trapezoid_time of
+    straight_row_limits for hot-path rows and of the given limits for others, to the last bit, whatever the
+    machine's axes and limits (an axis that never moves, one of tiny acceleration)."""
+    rng = random.Random(axes)
+    dyn = AxisDynamics(machine_from_dict({"axis": [
+        {"name": "XYZABC"[i], "accel": rng.choice((0.5, 300.0, 1000.0, 25000.0)),
+         "max_feed": rng.uniform(100.0, 9000.0), "rapid": rng.uniform(5000.0, 40000.0)} for i in range(axes)]}).axes)
+    rows, want = [], []
+    for _ in range(400):
+        d = [rng.choice((0.0, rng.uniform(-80, 80), rng.uniform(-1e-6, 1e-6))) for _ in range(axes)]
+        if not any(d):
+            d[0] = 1e-9
+        flags = rng.choice((POSITIONING, 0, STOP_END, STOP_START))
+        if rng.random() < 0.7:
+            feed = math.inf if flags == POSITIONING else rng.uniform(1.0, 20000.0)
+            rows += (-1.0, feed, 0.0, flags, *d)
+            want.append(trapezoid_time(*straight_row_limits(d, feed, flags == POSITIONING, dyn)))
+        else:
+            length, v, a = rng.choice((0.0, rng.uniform(0.0, 50.0))), rng.uniform(0.0, 200.0), rng.uniform(0.0, 900.0)
+            rows += (length, v, a, flags, *d)
+            want.append(trapezoid_time(length, v, a))
+            if rng.random() < 0.3:  # an arc's end tangent row
+                rows += (0.0, 0.0, 0.0, -1.0, *d)
+    assert rest_times_for(dyn)(rows) == want

@@ -72,7 +72,7 @@ class Planner:
     """
 
     __slots__ = ("clock", "canon", "dyn", "accel", "n", "width", "model", "window", "tolerance", "rows",
-                 "blocks", "limit", "entry2", "changes")
+                 "blocks", "limit", "entry2", "changes", "rest_times")
 
     def __init__(self, clock, canon, dyn, model: str = LOOKAHEAD, window: int = 100, tolerance: float = 0.02):
         self.clock = clock
@@ -90,6 +90,8 @@ class Planner:
         self.entry2 = 0.0  # squared speed (mm/s)^2 the first waiting move starts with
         # (moves waiting, the tolerance before) at each change of the tolerance: junctions 1..moves-1 keep it
         self.changes: list[tuple[int, float]] = []
+        #: ``rest_times(rows)``: the time of each move in ``rows`` from rest to rest (:func:`rest_times_for`)
+        self.rest_times = rest_times_for(dyn)
         clock.pending = self.stop
 
     def fork(self, clock, canon) -> Planner:
@@ -186,9 +188,10 @@ class Planner:
         if self.blocks:
             self._plan(None)
         elif self.rows:
-            if len(self.rows) >= SMALL * self.width:
+            rows = self.rows
+            if len(rows) >= SMALL * self.width:
                 self._plan(None)
-            elif self._rest_to_rest():
+            elif (len(rows) == self.width and self.entry2 == 0.0) or self._rest_to_rest():
                 self._plan_rest()  # a drilling cycle's plunge before its dwell, the moves between two rapids
             else:
                 self._plan_rows()
@@ -229,20 +232,10 @@ class Planner:
 
     def _plan_rest(self) -> None:
         """:meth:`_plan_rows` of moves that all start and end at rest (:meth:`_rest_to_rest`): every junction
-        speed 0, so each move's :func:`blended_time` is its :func:`trapezoid_time`; in one pass over
-        ``rows``, without the lists of fields and tangents."""
-        rows, width, dyn = self.rows, self.width, self.dyn
-        times = []
-        for i in range(0, len(rows), width):
-            ln, f = rows[i], rows[i + 3]
-            if f < 0.0:  # an arc's end tangent
-                continue
-            if ln < 0.0:  # the hot path's straight move
-                ln, vi, ai = straight_row_limits(rows[i + 4:i + width], rows[i + 1], f == POSITIONING, dyn)
-            else:
-                vi, ai = rows[i + 1], rows[i + 2]
-            times.append(trapezoid_time(ln, vi, ai))
-        rows.clear()
+        speed 0, so each move's :func:`blended_time` is its :func:`trapezoid_time` (:func:`rest_times_for`),
+        without the lists of fields and tangents."""
+        times = self.rest_times(self.rows)
+        self.rows.clear()
         clock = self.clock
         t = clock.settled
         for dt in times:  # in move order, as _plan_rows
@@ -374,6 +367,64 @@ def straight_row_limits(deltas, feed: float, rapid: bool, dyn) -> tuple[float, f
             if amax < ai * share:
                 ai = amax / share
     return ln, vi, ai
+
+
+_REST_TIMES: dict = {}  # the generated functions, per machine's limits (a shadow kernel's planner shares them)
+
+
+def rest_times_for(dyn):
+    """``rest_times(rows)``: the time of each move in a planner's ``rows`` (an arc's end tangent row
+    skipped) from rest to rest, generated for the machine's axes and limits, one unrolled line per axis:
+    :func:`straight_row_limits` of a hot-path row, then :func:`trapezoid_time`, with the same float
+    operations (a drilling cycle's flush at each dwell, issue 18)."""
+    key = (tuple(dyn.rapid), tuple(dyn.max_feed), tuple(dyn.accel))
+    made = _REST_TIMES.get(key)
+    if made is not None:
+        return made
+    n = len(dyn.accel)
+    idx = range(n)
+    lines = ["def rest_times(rows):",
+             "    times = []",
+             "    for i in range(0, len(rows), %d):" % (4 + n),
+             "        f = rows[i + 3]",
+             "        if f < 0.0:",
+             "            continue  # an arc's end tangent",
+             "        ln = rows[i]",
+             "        if ln < 0.0:  # the hot path's straight move: deltas and the feed",
+             *(f"            d{j} = rows[i + {4 + j}]" for j in idx),
+             f"            ln = _sqrt({' + '.join(f'd{j} * d{j}' for j in idx) or '0.0'})",
+             "            inv = 1.0 / ln",
+             "            ai = _INF",
+             "            if f == %d:" % POSITIONING,
+             "                vi = _INF"]
+    for limits, indent in (("R", "                "), ("M", "                ")):
+        if limits == "M":
+            lines += ["            else:", "                vi = rows[i + 1] / 60.0"]
+        for j in idx:
+            lines += [f"{indent}share = abs(d{j} * inv)",
+                      f"{indent}if share:",
+                      f"{indent}    if {limits}{j} < vi * share:",
+                      f"{indent}        vi = {limits}{j} / share",
+                      f"{indent}    if A{j} < ai * share:",
+                      f"{indent}        ai = A{j} / share"]
+    lines += ["        else:",
+              "            vi, ai = rows[i + 1], rows[i + 2]",
+              "        if ln <= 0.0:  # trapezoid_time",
+              "            times.append(0.0)",
+              "        elif vi <= 0.0:",
+              "            times.append(_INF)",
+              "        elif ai <= 0.0 or ai == _INF:",
+              "            times.append(ln / vi)",
+              "        elif ln * ai >= vi * vi:",
+              "            times.append(ln / vi + vi / ai)",
+              "        else:",
+              "            times.append(2.0 * _sqrt(ln / ai))",
+              "    return times"]
+    namespace = {"_sqrt": math.sqrt, "_INF": math.inf}
+    for j in idx:
+        namespace[f"R{j}"], namespace[f"M{j}"], namespace[f"A{j}"] = dyn.rapid[j], dyn.max_feed[j], dyn.accel[j]
+    exec(compile("\n".join(lines) + "\n", f"<ncvm rest-to-rest times, {n} axes>", "exec"), namespace)
+    return _REST_TIMES.setdefault(key, namespace["rest_times"])
 
 
 def junction_speeds2(u_prev, u_next, v_prev, v_next, stop, accel, tolerance) -> np.ndarray:
