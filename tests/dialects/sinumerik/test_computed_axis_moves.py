@@ -1,11 +1,13 @@
-"""A G0/G1 block whose axis @440 names (PRAP: the drilling cycles' infeed, ``G1 @440 K3 R62``) goes straight
-to the kernel's straight-move path, as a block of constant axis words does (dialects/sinumerik/codegen.py
-``COMPUTED_AXIS_KEYS``; issue 18: the L81 cycle's 15 moves a hole went through the kernel's general
-dispatch). Each program here runs both ways -- that path, and every such block through ``NcKernel.execute``
--- and the JSON result, every trace record (each move's time, entry and exit speed) and the G-code must be
-equal, not close: random deep-hole drilling with the manual's L81, moves without their G code (G0/G1 modal,
-and a circle modal: the general path), two @440 words in one block, an axis number the machine lacks, and
-the step limit at every step of a hole."""
+"""A G0/G1 block of an axis @440 names (PRAP: the drilling cycles' infeed, ``G1 @440 K3 R62``) goes straight to
+the kernel's straight-move path, as a block of constant axis words does (issue 18: the L81 cycle's 15 moves
+a hole went through the kernel's general dispatch): a constant axis number names its axis when the program
+compiles (dialects/sinumerik/codegen.py ``constant_axis``), one read from an R parameter when it runs
+(``COMPUTED_AXIS_KEYS``). Each program here runs both ways -- that path, and every such block through
+``NcKernel.execute`` with the axis named at run time -- and the JSON result, every trace record (each
+move's time, entry and exit speed) and the G-code must be equal, not close: random deep-hole drilling with
+the manual's L81, moves without their G code (G0/G1 modal, and a circle modal: the general path), two @440
+words in one block, axis numbers in R parameters, an axis number the machine lacks, and the step limit
+at every third step of two holes."""
 
 from __future__ import annotations
 
@@ -23,17 +25,19 @@ from ncvm.runtime.session import RunOptions
 L81 = (Path(__file__).parents[3] / "examples" / "cl800" / "L81.spf").read_text()
 
 #: a sub-program of @440 moves: with G1, without a G code (modal G1, G0), two words (the last wins), after a
-#: circle
+#: circle, axis numbers in R parameters
 SPF90 = """%SPF90
 G1 @440 K1 R1
 @440 K2 R2
 G0 @440 K3 R3 @440 K1 R4
 @440 K2 R1
 G1 @440 K3 R2 F{f}
-R5=R4-2
+R5=R4-2 R6=2 R7=3
 G3 X=R5 I-1 J0
 G1 @440 K1 R4
 @440 K2 R3 @440 K2 R4
+@440 R6 R1 @440 R7 R3
+G0 @440 R7 R2
 M17
 """
 
@@ -74,7 +78,8 @@ def _run(tmp_path: Path, text: str, name: str, *, gcode: bool = False, **options
 
 def _both(tmp_path: Path, monkeypatch, text: str, **options):
     fast = _run(tmp_path, text, "fast", **options)
-    monkeypatch.setattr(codegen, "COMPUTED_AXIS_KEYS", ())  # every @440 block through NcKernel.execute
+    monkeypatch.setattr(codegen, "COMPUTED_AXIS_KEYS", ())  # every @440 block through NcKernel.execute,
+    monkeypatch.setattr(codegen, "constant_axis", lambda axes, op: None)  # its axis named at run time
     general = _run(tmp_path, text, "general", **options)
     return fast, general
 
@@ -84,10 +89,14 @@ def _same(fast, general) -> None:
 
 
 def test_the_fast_path_is_generated_for_computed_axes():
-    """L81's infeed blocks call the straight-move path (``_lin``), not the kernel's execute."""
+    """L81's infeed blocks call the straight-move path (``_lin``) with the axis @440 K3 names, Z; an axis number
+    in an R parameter is named at run time, and its block goes the same way."""
     source = compile_unit("L81.spf", L81, ("X", "Y", "Z"), "L81").source.text()
-    assert "_lin(_K, 1, {_rt.positions.axis_name(3.0" in source
-    assert "_ex(_Block((1,), (), {_rt.positions.axis_name" not in source
+    assert "_lin(_K, 1, {'Z': _w0}" in source and "axis_name" not in source
+    source = compile_unit("L90.spf", SPF90.format(f=100), ("X", "Y", "Z"), "L90").source.text()
+    assert "_lin(_K, 0, {_rt.positions.axis_name(r7, " in source
+    source = compile_unit("L90.spf", SPF90.format(f=100), ("X", "Y"), "L90").source.text()  # no third axis
+    assert "{_rt.positions.axis_name(3.0, " in source
 
 
 @pytest.mark.parametrize("seed", range(8))

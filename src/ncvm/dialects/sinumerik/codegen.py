@@ -41,6 +41,16 @@ _CYCLE_G = frozenset(range(80, 90))
 COMPUTED_AXIS_KEYS = ("_rt.positions.axis_name(",)
 
 
+def constant_axis(axes: tuple[str, ...], op: Operand) -> str | None:
+    """The axis a constant axis number of @440 names (``K3``: the third), known when the program compiles, as
+    Positions.axis_name gives it at run time; None for a number read from an R parameter, or one the machine
+    lacks (refused at run time, at its block, by axis_name)."""
+    if op.kind != "K":
+        return None
+    v = op.value
+    return axes[int(v) - 1] if v == int(v) and 1 <= v <= len(axes) else None
+
+
 def _num(v: float) -> str:
     return repr(float(v))
 
@@ -925,6 +935,8 @@ class _Record:
             key = f"_rt.positions.axis_name({axis}, {line})"
             if code == "448":
                 key = f"_rt.positions.centre_name({axis}, {line})"
+            elif (name := constant_axis(cg.axes, ops[0])) is not None:
+                key = repr(name)  # an axis word as any other (L81's infeed: @440 K3)
             self.words.append((key, tmp, False))
         elif code == "442":
             self.words.append((f"_rt.spindle.word({cg.val(ops[0])}, {line})", tmp, False))
