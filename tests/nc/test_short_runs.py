@@ -221,7 +221,7 @@ def test_cpl_short_runs_block_by_block_equal_columns(tmp_path, monkeypatch, mode
     assert got[0] == got[1]
 
 
-# -- the short runs' twin of the kernel (nc/plainrun.py execute_rows) against the kernel's general path ---------
+# -- the short runs' twin of the kernel (nc/plainrun.py execute_short_run) against the kernel's general path ---------
 
 #: lines a drilling-like program puts between its holes: modal changes, offsets, the tool, the spindle, a skip
 BETWEEN = ["G91", "G90", "G20", "G21", "G92 X{a} Y{b}", "G92.1", "G10 L2 P2 X{a} Y{b} Z-3", "G55", "G54",
@@ -264,20 +264,20 @@ def drilling_like(seed: int, holes: int = 70) -> str:
 def _general_path(monkeypatch) -> None:
     """Short runs block by block through NcKernel.execute (the twin refused)."""
     monkeypatch.setattr(block, "RUN_COLUMNS_FROM", 10 ** 9)
-    monkeypatch.setattr(plainrun, "rows_ok", lambda k: False)
+    monkeypatch.setattr(plainrun, "plain_moves_ok", lambda k: False)
 
 
 def _twin_runs(monkeypatch) -> list:
-    """Short runs through the twin; the list fills with rows_ok's answers."""
+    """Short runs through the twin; the list fills with plain_moves_ok's answers."""
     seen = []
-    rows_ok = plainrun.rows_ok
+    plain_moves_ok = plainrun.plain_moves_ok
 
     def told(k):
-        seen.append(rows_ok(k))
+        seen.append(plain_moves_ok(k))
         return seen[-1]
 
     monkeypatch.setattr(block, "RUN_COLUMNS_FROM", 10 ** 9)
-    monkeypatch.setattr(plainrun, "rows_ok", told)
+    monkeypatch.setattr(plainrun, "plain_moves_ok", told)
     return seen
 
 

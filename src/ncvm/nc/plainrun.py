@@ -20,7 +20,7 @@ radius, an arc without centre words) is left to the caller, who hands it to
 A run shorter than :data:`~ncvm.nc.block.RUN_COLUMNS_FROM` blocks is not worth its columns (a few dozen
 numpy calls whatever its length): it is executed block by block (:func:`~ncvm.nc.block.columnar`), with the
 same results to the last bit (``tests/nc/test_short_runs.py``). A short run read from text goes from its
-lines' regex matches straight to the kernel's moves (:func:`execute_rows`), without a Block or the kernel's
+lines' regex matches straight to the kernel's moves (:func:`execute_short_run`), without a Block or the kernel's
 general dispatch per line (issue 18: a drilling program's runs of four blocks between two dwells).
 """
 
@@ -260,7 +260,7 @@ _MOTION_CODES = (0, 1, 2, 3)
 _PLAIN = frozenset(PLAIN_WORDS)
 
 
-def rows_ok(k) -> bool:
+def plain_moves_ok(k) -> bool:
     """Whether a plain block may skip :meth:`NcKernel.execute`'s general dispatch now: what
     :meth:`NcKernel.columns_ok` asks, and G0-G3 the profile's motion functions (no path control, thread mode
     or handler of their own), no address handler for a plain word. Then the block's F and motion are all
@@ -272,16 +272,16 @@ def rows_ok(k) -> bool:
             and not _PLAIN.intersection(k.word_handlers))
 
 
-def execute_rows(k, run: PlainRun, count: int, counted: list) -> None:
+def execute_short_run(k, run: PlainRun, count: int, counted: list) -> None:
     """Execute the first ``count`` blocks of a short run read from text (its lines' regex matches, groups N, G,
     then :data:`PLAIN_WORDS`) with the results of :meth:`NcKernel.execute` on the Blocks the line parser makes
     of them (:func:`~ncvm.nc.block._blocks`): per block its F word, its motion, then the kernel's straight
     move (``k.linear``) or its arc (``k._move``), with their faults. ``counted[0]`` is left at the blocks
     counted, the one that faulted with them (a run counts each block before it runs). A run made of rows or
-    Blocks, or without :func:`rows_ok`: block by block through ``execute``."""
+    Blocks, or without :func:`plain_moves_ok`: block by block through ``execute``."""
     i = -1
     try:
-        if run.matches is None or not rows_ok(k):
+        if run.matches is None or not plain_moves_ok(k):
             for blk in islice(run.blocks(), count):
                 i += 1
                 k.execute(blk)

@@ -203,7 +203,7 @@ class Planner:
         junction an exact stop (a rapid positioning on either side, G61/G09: the flags), or the rest-to-rest
         model. Then no junction speed is worked out and each move takes :func:`trapezoid_time`."""
         if self.entry2 != 0.0 or (math.copysign(1.0, self.entry2) < 0.0 and len(self.rows) > self.width):
-            return False  # a plan of several moves gives an entry2 of -0.0 as the first entry speed, -0.0
+            return False  # -0.0 left by a plan: _plan_rows reports it as the first entry speed, a lone move 0.0
         if self.model != LOOKAHEAD:
             return True
         before = STOP_END  # the first move: entry2 is 0
@@ -383,9 +383,18 @@ def rest_times_for(dyn):
         return made
     n = len(dyn.accel)
     idx = range(n)
+
+    def shares(limits: str) -> list[str]:  # path_limits of the shares, per axis: its speed and acceleration
+        return [line for j in idx for line in (f"                share = abs(d{j} * inv)",
+                                               "                if share:",
+                                               f"                    if {limits}{j} < vi * share:",
+                                               f"                        vi = {limits}{j} / share",
+                                               f"                    if A{j} < ai * share:",
+                                               f"                        ai = A{j} / share")]
+
     lines = ["def rest_times(rows):",
              "    times = []",
-             "    for i in range(0, len(rows), %d):" % (4 + n),
+             f"    for i in range(0, len(rows), {4 + n}):",
              "        f = rows[i + 3]",
              "        if f < 0.0:",
              "            continue  # an arc's end tangent",
@@ -395,18 +404,12 @@ def rest_times_for(dyn):
              f"            ln = _sqrt({' + '.join(f'd{j} * d{j}' for j in idx) or '0.0'})",
              "            inv = 1.0 / ln",
              "            ai = _INF",
-             "            if f == %d:" % POSITIONING,
-             "                vi = _INF"]
-    for limits, indent in (("R", "                "), ("M", "                ")):
-        if limits == "M":
-            lines += ["            else:", "                vi = rows[i + 1] / 60.0"]
-        for j in idx:
-            lines += [f"{indent}share = abs(d{j} * inv)",
-                      f"{indent}if share:",
-                      f"{indent}    if {limits}{j} < vi * share:",
-                      f"{indent}        vi = {limits}{j} / share",
-                      f"{indent}    if A{j} < ai * share:",
-                      f"{indent}        ai = A{j} / share"]
+             f"            if f == {POSITIONING}:",
+             "                vi = _INF",
+             *shares("R"),
+             "            else:",
+             "                vi = rows[i + 1] / 60.0",
+             *shares("M")]
     lines += ["        else:",
               "            vi, ai = rows[i + 1], rows[i + 2]",
               "        if ln <= 0.0:  # trapezoid_time",

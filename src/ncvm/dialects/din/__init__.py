@@ -16,7 +16,7 @@ from ...nc.axiswords import din_missing_axes
 from ...nc.block import COLUMNS_FROM, PlainRun, columnar, din_stretches, file_stretches, text_stretches
 from ...nc.canon import Src
 from ...nc.cycles import CannedCycles
-from ...nc.plainrun import execute_columns, execute_rows
+from ...nc.plainrun import execute_columns, execute_short_run
 from ...nc.profiles.blockrules import block_refusal
 from ...nc.profiles.iso import ISO
 from ...nc.profiles.named import profile as named_profile
@@ -166,7 +166,7 @@ class DinDialect(Dialect):
                         else:  # a short run: block by block, each counted before it runs (it may fault)
                             counted = [0]
                             try:
-                                execute_rows(kernel, seg, count, counted)
+                                execute_short_run(kernel, seg, count, counted)
                             finally:
                                 done += counted[0]
                         if count < len(seg):
