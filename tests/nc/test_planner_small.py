@@ -14,8 +14,18 @@ import sys
 import pytest
 
 from ncvm.machine.config import machine_from_dict
-from ncvm.nc.dynamics import AxisDynamics
-from ncvm.nc.planner import LOOKAHEAD, POSITIONING, REST, SMALL, STOP_END, STOP_START, Planner
+from ncvm.nc.dynamics import AxisDynamics, trapezoid_time
+from ncvm.nc.planner import (
+    LOOKAHEAD,
+    POSITIONING,
+    REST,
+    SMALL,
+    STOP_END,
+    STOP_START,
+    Planner,
+    rest_times_for,
+    straight_row_limits,
+)
 
 AXES = [{"name": "X", "accel": 1000.0, "max_feed": 5000.0, "rapid": 20000.0},
         {"name": "Y", "accel": 600.0, "max_feed": 4000.0, "rapid": 15000.0},
@@ -156,7 +166,7 @@ def test_a_few_moves_planned_in_a_fresh_interpreter_import_no_numpy():
 @pytest.mark.parametrize("model", [LOOKAHEAD, REST])
 @pytest.mark.parametrize("seed", range(60))
 def test_a_single_move_flushed_from_rest_equals_the_numpy_plan(seed, model):
-    """A flush of one move (a drilling cycle's plunge before its dwell, issue 18) is timed by ``_plan_one``:
+    """A flush of one move (a drilling cycle's plunge before its dwell, issue 18) is timed by ``_plan_rest``:
     the numpy plan's time, speeds and clock to the last bit."""
     out = []
     for stop in (True, False):
@@ -167,7 +177,7 @@ def test_a_single_move_flushed_from_rest_equals_the_numpy_plan(seed, model):
         if len(planner.rows) != planner.width:  # an arc (two rows): the general plan
             continue
         if stop:
-            planner.stop()  # _plan_one
+            planner.stop()  # _plan_rest
         else:
             planner._plan(None)
         out.append((timings.times, timings.entry, timings.exit, clock.settled))
@@ -182,3 +192,104 @@ def test_a_single_move_flush_takes_the_short_path(monkeypatch):
     monkeypatch.setattr(Planner, "_plan_rows", lambda self: calls.append("rows"))  # not reached
     planner.stop()
     assert calls == [] and timings.kinds == [list] and len(timings.times) == 1 and planner.rows == []
+
+
+def add_stopping(planner: Planner, rng: random.Random, count: int) -> None:
+    """``count`` random moves most of whose junctions are exact stops (rapid positionings, G61/G09 flags),
+    as drilling programs flush them at each dwell; now and then one that blends with the move before."""
+    for _ in range(count):
+        kind = rng.random()
+        flags = rng.choice((POSITIONING, POSITIONING, STOP_END, STOP_START, STOP_END | STOP_START, 0))
+        if kind < 0.6:  # the hot path's row: a rapid move or a move at feed
+            d = tuple(x * rng.uniform(0.01, 60.0) for x in unit(rng))
+            rapid = flags == POSITIONING
+            planner.rows += (-1.0, math.inf if rapid else rng.uniform(10.0, 9000.0), 0.0, flags, *d)
+        elif kind < 0.85:
+            u = unit(rng)
+            planner.add(rng.uniform(0.0, 40.0), rng.uniform(1.0, 120.0), rng.uniform(50.0, 1200.0), flags, u, u)
+        else:  # an arc (two rows: its end tangent)
+            length = rng.uniform(0.0, 25.0)
+            planner.add(length, rng.uniform(1.0, 80.0), rng.uniform(50.0, 900.0), flags if length > 0.0 else POSITIONING,
+                        unit(rng), unit(rng))
+
+
+def signed(column) -> list[tuple[float, float]]:
+    """Speeds with the sign of each zero (a JSON trace writes -0.0 as such)."""
+    return [(x, math.copysign(1.0, x)) for x in column]
+
+
+@pytest.mark.parametrize("model", [LOOKAHEAD, REST])
+@pytest.mark.parametrize("seed", range(80))
+def test_a_flush_of_moves_from_rest_to_rest_equals_both_other_plans(seed, model):
+    """A flush whose moves all start and end at rest (every junction an exact stop: the moves of a drilling
+    program between two dwells) is timed by ``_plan_rest``: the times, speeds and clock of the plain-Python
+    plan and of the numpy plan, to the last bit and the sign of a zero. The flushes that blend are planned
+    as before (``_plan_rows``)."""
+    rng = random.Random(7000 + seed)
+    count = rng.choice((1, 2, 3, 4, 5, 9, SMALL - 1))
+    entry2 = rng.choice((0.0, 0.0, 0.0, -0.0, rng.uniform(0.0, 400.0)))
+    settled, window = rng.uniform(0, 99), rng.choice((1, 3, 100))
+    out, rows = [], 0
+    for how in ("stop", "rows", "numpy"):
+        timings, clock = Timings(), Clock(settled)
+        planner = Planner(clock, timings, DYN, model=model, window=window)
+        add_stopping(planner, random.Random(seed), count)
+        rows = len(planner.rows) // planner.width
+        planner.entry2 = entry2
+        if how == "numpy":
+            planner._plan(None)
+        else:
+            (planner.stop if how == "stop" else planner._plan_rows)()
+        assert planner.rows == [] and len(timings.times) == count
+        out.append((timings.times, signed(timings.entry), signed(timings.exit), clock.settled))
+    stop, plain, numpy = out
+    assert plain == numpy
+    if rows == 1 and entry2 == 0.0:  # one move from rest: entry and exit 0.0 (as before, whatever entry2's sign)
+        assert stop == (plain[0], [(0.0, 1.0)], [(0.0, 1.0)], plain[3])
+    else:
+        assert stop == plain
+
+
+def test_a_drilling_flush_takes_the_rest_to_rest_path(monkeypatch):
+    """Per hole, a retract, a positioning, a rapid approach and the plunge at feed, flushed at the dwell: every
+    junction has a rapid move on one side, so no junction speed is worked out."""
+    timings = Timings()
+    planner = Planner(Clock(), timings, DYN)
+    for row in ((-1.0, math.inf, 0.0, POSITIONING, 0.0, 0.0, 14.0), (-1.0, math.inf, 0.0, POSITIONING, 12.0, 5.0, 0.0),
+                (-1.0, math.inf, 0.0, POSITIONING, 0.0, 0.0, -48.0), (-1.0, 150.0, 0.0, 0, 0.0, 0.0, -14.0)):
+        planner.rows += row
+    calls = []
+    monkeypatch.setattr(Planner, "_plan_rows", lambda self: calls.append("rows"))  # not reached
+    planner.stop()
+    assert calls == [] and len(timings.times) == 4 and timings.entry == timings.exit == [0.0] * 4
+    planner.rows += (-1.0, 150.0, 0.0, 0, 0.0, 0.0, -14.0, -1.0, 150.0, 0.0, 0, 0.0, 1.0, -14.0)  # these blend
+    planner.stop()
+    assert calls == ["rows"]
+
+
+@pytest.mark.parametrize("axes", [1, 2, 4, 6])
+def test_generated_rest_times_are_the_formulas_for_any_axes(axes):
+    """The rest-to-rest times generated per machine (one unrolled line per axis) are trapezoid_time of
+    straight_row_limits for hot-path rows and of the given limits for others, to the last bit, whatever the
+    machine's axes and limits (an axis that never moves, one of tiny acceleration)."""
+    rng = random.Random(axes)
+    dyn = AxisDynamics(machine_from_dict({"axis": [
+        {"name": "XYZABC"[i], "accel": rng.choice((0.5, 300.0, 1000.0, 25000.0)),
+         "max_feed": rng.uniform(100.0, 9000.0), "rapid": rng.uniform(5000.0, 40000.0)} for i in range(axes)]}).axes)
+    rows, want = [], []
+    for _ in range(400):
+        d = [rng.choice((0.0, rng.uniform(-80, 80), rng.uniform(-1e-6, 1e-6))) for _ in range(axes)]
+        if not any(d):
+            d[0] = 1e-9
+        flags = rng.choice((POSITIONING, 0, STOP_END, STOP_START))
+        if rng.random() < 0.7:
+            feed = math.inf if flags == POSITIONING else rng.uniform(1.0, 20000.0)
+            rows += (-1.0, feed, 0.0, flags, *d)
+            want.append(trapezoid_time(*straight_row_limits(d, feed, flags == POSITIONING, dyn)))
+        else:
+            length, v, a = rng.choice((0.0, rng.uniform(0.0, 50.0))), rng.uniform(0.0, 200.0), rng.uniform(0.0, 900.0)
+            rows += (length, v, a, flags, *d)
+            want.append(trapezoid_time(length, v, a))
+            if rng.random() < 0.3:  # an arc's end tangent row
+                rows += (0.0, 0.0, 0.0, -1.0, *d)
+    assert rest_times_for(dyn)(rows) == want

@@ -17,7 +17,7 @@ import random
 import pytest
 
 from ncvm.api import run
-from ncvm.nc import block
+from ncvm.nc import block, plainrun
 from ncvm.nc.block import PlainRun, read_din_segments
 from ncvm.runtime.session import RunOptions
 
@@ -219,3 +219,146 @@ def test_cpl_short_runs_block_by_block_equal_columns(tmp_path, monkeypatch, mode
         got.append((result, trace.read_text()))
     assert got[0][0]["status"] == "ok" and got[0][0]["motion"]["arc_moves"] == 4, got[0][0]["error"]
     assert got[0] == got[1]
+
+
+# -- the short runs' twin of the kernel (nc/plainrun.py execute_short_run) against the kernel's general path ---------
+
+#: lines a drilling-like program puts between its holes: modal changes, offsets, the tool, the spindle, a skip
+BETWEEN = ["G91", "G90", "G20", "G21", "G92 X{a} Y{b}", "G92.1", "G10 L2 P2 X{a} Y{b} Z-3", "G55", "G54",
+           "G43 H1", "G49", "T2 M6", "M3 S1500", "M5", "G61", "G64", "G64 P0.05", "/G0 X{a} Y{b}", "M8", "M9",
+           "(MSG, hole)", "F{f}", "N{n} G4 P0.2", "G4 P0", "G17", "G18", "G19", "G9 G1 X{a} F700"]
+
+
+def drilling_like(seed: int, holes: int = 70) -> str:
+    """A drilling program as CAM writes it, varied: per hole a positioning, an approach, a plunge at feed, a
+    dwell and a retract (some without their G code, some numbered, some with a peck or an arc), and now and
+    then a line from :data:`BETWEEN` (inch, G91, G92, zero offsets, tool length, exact stop, block skip)."""
+    rnd = random.Random(seed)
+    out = ["G17 G21 G90 G94 F250", "G0 X0 Y0 Z50", "M3 S3000"]
+    for h in range(holes):
+        x, y = round(rnd.uniform(-40, 40), 4), round(rnd.uniform(-30, 30), 4)
+        n = f"N{h * 10} " if rnd.random() < 0.3 else ""
+        out.append(f"{n}G0 X{x} Y{y}" if rnd.random() < 0.8 else f"X{x} Y{y}")
+        out.append("G0 Z2" if rnd.random() < 0.9 else "Z2.5")
+        depth = round(rnd.uniform(-14, -2), 3)
+        if rnd.random() < 0.3:  # a peck: down, up, down again
+            out += [f"G1 Z{depth / 2:.3f} F{rnd.randint(80, 400)}", "G0 Z1", f"G1 Z{depth}"]
+        else:
+            out.append(f"G1 Z{depth}" + (f" F{rnd.randint(80, 400)}" if rnd.random() < 0.7 else ""))
+        if rnd.random() < 0.1:  # a circle at the bottom
+            out += ["G17", f"G1 X{x + 2:.4f}", f"G3 X{x + 2:.4f} Y{y} I-2 J0", f"G1 X{x}"]
+        if rnd.random() < 0.85:
+            out.append(f"G4 P{rnd.choice((0.5, 0.25, 1))}")
+        out.append("G0 Z2" if rnd.random() < 0.8 else "G00 Z5 F900")
+        if rnd.random() < 0.25:
+            line = rnd.choice(BETWEEN).format(a=round(rnd.uniform(-5, 5), 3), b=round(rnd.uniform(-5, 5), 3),
+                                              f=rnd.randint(100, 900), n=h)
+            out.append(line)
+            if line == "G91":  # a few incremental holes, then back
+                out += ["G0 X1.5 Y-2", "G1 Z-3 F200", "G0 Z3", "G90"]
+            if line == "G20":  # a few inch holes, then back
+                out += ["G0 X0.5 Y0.25", "G0 Z0.1", "G1 Z-0.2 F8", "G4 P0.5", "G0 Z0.1", "G21"]
+    return "\n".join(out + ["M5", "M30"]) + "\n"
+
+
+def _general_path(monkeypatch) -> None:
+    """Short runs block by block through NcKernel.execute (the twin refused)."""
+    monkeypatch.setattr(block, "RUN_COLUMNS_FROM", 10 ** 9)
+    monkeypatch.setattr(plainrun, "plain_moves_ok", lambda k: False)
+
+
+def _twin_runs(monkeypatch) -> list:
+    """Short runs through the twin; the list fills with plain_moves_ok's answers."""
+    seen = []
+    plain_moves_ok = plainrun.plain_moves_ok
+
+    def told(k):
+        seen.append(plain_moves_ok(k))
+        return seen[-1]
+
+    monkeypatch.setattr(block, "RUN_COLUMNS_FROM", 10 ** 9)
+    monkeypatch.setattr(plainrun, "plain_moves_ok", told)
+    return seen
+
+
+def _run_way(tmp_path, path, name: str, gcode: bool, **options):
+    trace, out = tmp_path / f"{name}.jsonl", tmp_path / f"{name}.ngc"
+    result, _ = run(path, dialect="din", options=RunOptions(state_dir=tmp_path / f".{name}", trace=trace,
+                                                            gcode=out if gcode else None, **options))
+    return result, trace.read_text(), out.read_text() if out.exists() else None
+
+
+def _twin_and_general(tmp_path, monkeypatch, text: str, gcode: bool = False, **options):
+    """(twin's answers, the general path's answers, how often the twin ran its own way)."""
+    path = tmp_path / "p.ngc"
+    path.write_text(text)
+    with monkeypatch.context() as m:
+        seen = _twin_runs(m)
+        twin = _run_way(tmp_path, path, "twin", gcode, **options)
+    with monkeypatch.context() as m:
+        _general_path(m)
+        general = _run_way(tmp_path, path, "general", gcode, **options)
+    return twin, general, sum(seen)
+
+
+@pytest.mark.parametrize("seed", range(14))
+@pytest.mark.parametrize("model", ["lookahead", "rest-to-rest"])
+def test_twin_equals_the_kernels_general_path(tmp_path, monkeypatch, seed, model):
+    """Random drilling-like programs: the summary, every trace record (each move's time, entry and exit speed)
+    and the limit violations of the twin are the general path's, bit for bit."""
+    text = drilling_like(seed)
+    twin, general, fast = _twin_and_general(tmp_path, monkeypatch, text, time_model=model)
+    assert twin[0]["status"] == "ok", twin[0].get("error")
+    assert twin == general
+    assert fast > 60  # the twin ran most short runs itself
+    if seed == 0:  # and the columns give the same (every run as columns)
+        monkeypatch.setattr(block, "RUN_COLUMNS_FROM", 0)
+        assert _run_way(tmp_path, tmp_path / "p.ngc", "columns", False, time_model=model) == twin
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_twin_with_a_gcode_translation_equals_the_general_path(tmp_path, monkeypatch, seed):
+    """With --gcode (a sink that takes each block's axis words) the short runs go through the kernel's
+    execute: the same G-code, trace and summary."""
+    text = "".join(ln for ln in drilling_like(100 + seed).splitlines(True) if not ln.startswith("G10"))
+    twin, general, fast = _twin_and_general(tmp_path, monkeypatch, text, gcode=True)  # G10: refused (TRN001)
+    assert twin[0]["status"] == "ok", twin[0].get("error")
+    assert twin[2] and twin == general and fast == 0
+
+
+def test_twin_sees_limit_violations(tmp_path, monkeypatch):
+    text = drilling_like(3).replace("G0 Z2\n", "G0 Z2\nG0 X700 Y20\nG0 X0\n", 2)
+    twin, general, fast = _twin_and_general(tmp_path, monkeypatch, text)
+    assert twin[0]["status"] == "limit_violation" or twin[0].get("limit_violations"), twin[0]
+    assert twin == general and fast
+
+
+@pytest.mark.parametrize("bad, code", [("G1 X5 Y5 F0", "NC006"), ("G2 X5 Y5 I1 J0 F100", "NC002"),
+                                       ("G3 X5 Y5 F100", "NC003"), ("G1 X3 F-5", "NC006")])
+@pytest.mark.parametrize("seed", range(5))
+def test_twin_fault_at_the_same_block(tmp_path, monkeypatch, bad, code, seed):
+    """A block that faults inside a short run (G1 without feed, an arc on another radius, an arc without
+    centre): the same error, line, steps, and the moves before it."""
+    rnd = random.Random(seed)
+    lines = drilling_like(seed).splitlines()
+    at = rnd.randrange(4, len(lines) - 3)
+    while lines[at].startswith(("G4", "M", "(", "/", "T", "G9", "G10", "G92", "G43", "G49", "G5", "G6", "F", "N")):
+        at += 1
+    lines.insert(at, bad)
+    twin, general, fast = _twin_and_general(tmp_path, monkeypatch, "\n".join(lines) + "\n")
+    assert twin[0]["status"] == "error" and twin[0]["error"]["code"] == code, twin[0]
+    assert twin[0]["error"]["line"] == at + 1
+    assert twin == general and fast
+
+
+def test_twin_step_limit_at_every_block(tmp_path, monkeypatch):
+    """--max-steps anywhere in a drilling program (inside short runs, at their first and last block, at a
+    dwell): the same steps, moves, trace and RUN001 line as the general path."""
+    text = drilling_like(7, holes=12)
+    (tmp_path / "p.ngc").write_text(text)
+    steps = _run_way(tmp_path, tmp_path / "p.ngc", "all", False)[0]["steps"]
+    assert steps > 60
+    for limit in range(1, steps + 2):
+        twin, general, _ = _twin_and_general(tmp_path, monkeypatch, text, max_steps=limit)
+        assert twin == general, limit
+        assert (twin[0]["status"] == "error") == (limit < steps), limit

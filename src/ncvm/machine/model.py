@@ -86,7 +86,9 @@ class SimClock:
 
     def advance(self, seconds: float) -> None:
         if seconds > 0.0:
-            self.now += seconds
+            if self.pending is not None:
+                self.pending()  # as ``now += seconds``, whose setter's second call finds nothing waiting
+            self.settled += seconds
 
     def __repr__(self) -> str:
         return f"SimClock(now={self.settled!r}, start_epoch={self.start_epoch!r})"

@@ -19,22 +19,25 @@ radius, an arc without centre words) is left to the caller, who hands it to
 
 A run shorter than :data:`~ncvm.nc.block.RUN_COLUMNS_FROM` blocks is not worth its columns (a few dozen
 numpy calls whatever its length): it is executed block by block (:func:`~ncvm.nc.block.columnar`), with the
-same results to the last bit (``tests/nc/test_short_runs.py``).
+same results to the last bit (``tests/nc/test_short_runs.py``). A short run read from text goes from its
+lines' regex matches straight to the kernel's moves (:func:`execute_short_run`), without a Block or the kernel's
+general dispatch per line (issue 18: a drilling program's runs of four blocks between two dwells).
 """
 
 from __future__ import annotations
 
 import math
-from itertools import compress, groupby, repeat
+from itertools import compress, groupby, islice, repeat
 from operator import attrgetter, is_not
 
 from ..lazy import lazy
 from . import arcs
 from .block import PLAIN_WORDS, ROW_WORD, Block, PlainRun, block_row, columnar, row_g, row_line, row_src
-from .canon import BatchArcs, MoveBatch
+from .canon import BatchArcs, MoveBatch, Src
 from .dynamics import arc_limits_columns, lengths_columns, straight_limits_columns
 from .kernel import PLANES
 from .planner import LOOKAHEAD, POSITIONING, arc_tangents_columns
+from .profiles import MOTION
 
 np = lazy("numpy")
 
@@ -251,3 +254,61 @@ def execute_segments(kernel, segments, execute=None) -> None:
                 lo = bad + 1
         else:
             execute(seg)
+
+
+_MOTION_CODES = (0, 1, 2, 3)
+_PLAIN = frozenset(PLAIN_WORDS)
+
+
+def plain_moves_ok(k) -> bool:
+    """Whether a plain block may skip :meth:`NcKernel.execute`'s general dispatch now: what
+    :meth:`NcKernel.columns_ok` asks, and G0-G3 the profile's motion functions (no path control, thread mode
+    or handler of their own), no address handler for a plain word. Then the block's F and motion are all
+    ``execute`` does before its move."""
+    table = k.g_table
+    return (k.columns_ok() and not k.css and not k.per_rev
+            and all(table.get(g, (None,))[0] == MOTION and g not in k.path_codes and g not in k.motion_modes
+                    and g not in k.g_handlers for g in _MOTION_CODES)
+            and not _PLAIN.intersection(k.word_handlers))
+
+
+def execute_short_run(k, run: PlainRun, count: int, counted: list) -> None:
+    """Execute the first ``count`` blocks of a short run read from text (its lines' regex matches, groups N, G,
+    then :data:`PLAIN_WORDS`) with the results of :meth:`NcKernel.execute` on the Blocks the line parser makes
+    of them (:func:`~ncvm.nc.block._blocks`): per block its F word, its motion, then the kernel's straight
+    move (``k.linear``) or its arc (``k._move``), with their faults. ``counted[0]`` is left at the blocks
+    counted, the one that faulted with them (a run counts each block before it runs). A run made of rows or
+    Blocks, or without :func:`plain_moves_ok`: block by block through ``execute``."""
+    i = -1
+    try:
+        if run.matches is None or not plain_moves_ok(k):
+            for blk in islice(run.blocks(), count):
+                i += 1
+                k.execute(blk)
+            return
+        file, scale, first = run.file, k.scale, run.line(0)
+        for i, (_n, g, x, y, z, ii, jj, kk, f, _rest) in enumerate(run.matches[:count]):
+            words = {}  # unrolled: a comprehension's call costs a third of a block
+            if x:
+                words["X"] = float(x)
+            if y:
+                words["Y"] = float(y)
+            if z:
+                words["Z"] = float(z)
+            if ii:
+                words["I"] = float(ii)
+            if jj:
+                words["J"] = float(jj)
+            if kk:
+                words["K"] = float(kk)
+            if f:
+                feed = words["F"] = float(f)
+                k.feed = feed * scale if scale != 1.0 else feed
+            motion = int(g) if g else k.motion
+            k.motion = motion
+            if motion < 2:
+                k.linear(k, motion, words, Src(file, first + i))
+            else:
+                k._move(motion, words, False, Src(file, first + i))
+    finally:
+        counted[0] = i + 1

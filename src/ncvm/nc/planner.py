@@ -72,7 +72,7 @@ class Planner:
     """
 
     __slots__ = ("clock", "canon", "dyn", "accel", "n", "width", "model", "window", "tolerance", "rows",
-                 "blocks", "limit", "entry2", "changes")
+                 "blocks", "limit", "entry2", "changes", "rest_times")
 
     def __init__(self, clock, canon, dyn, model: str = LOOKAHEAD, window: int = 100, tolerance: float = 0.02):
         self.clock = clock
@@ -90,6 +90,8 @@ class Planner:
         self.entry2 = 0.0  # squared speed (mm/s)^2 the first waiting move starts with
         # (moves waiting, the tolerance before) at each change of the tolerance: junctions 1..moves-1 keep it
         self.changes: list[tuple[int, float]] = []
+        #: ``rest_times(rows)``: the time of each move in ``rows`` from rest to rest (:func:`rest_times_for`)
+        self.rest_times = rest_times_for(dyn)
         clock.pending = self.stop
 
     def fork(self, clock, canon) -> Planner:
@@ -186,14 +188,33 @@ class Planner:
         if self.blocks:
             self._plan(None)
         elif self.rows:
-            if len(self.rows) == self.width and self.entry2 == 0.0:
-                self._plan_one()  # one move from rest to rest: a drilling cycle's plunge before its dwell
-            elif len(self.rows) < SMALL * self.width:
-                self._plan_rows()
-            else:
+            rows = self.rows
+            if len(rows) >= SMALL * self.width:
                 self._plan(None)
+            elif (len(rows) == self.width and self.entry2 == 0.0) or self._rest_to_rest():
+                self._plan_rest()  # a drilling cycle's plunge before its dwell, the moves between two rapids
+            else:
+                self._plan_rows()
         self.entry2 = 0.0
         self.changes.clear()
+
+    def _rest_to_rest(self) -> bool:
+        """Whether every move in ``rows`` starts and ends at rest: the first from rest (``entry2`` 0), each
+        junction an exact stop (a rapid positioning on either side, G61/G09: the flags), or the rest-to-rest
+        model. Then no junction speed is worked out and each move takes :func:`trapezoid_time`."""
+        if self.entry2 != 0.0 or (math.copysign(1.0, self.entry2) < 0.0 and len(self.rows) > self.width):
+            return False  # -0.0 left by a plan: _plan_rows reports it as the first entry speed, a lone move 0.0
+        if self.model != LOOKAHEAD:
+            return True
+        before = STOP_END  # the first move: entry2 is 0
+        for f in self.rows[3::self.width]:
+            if f < 0.0:  # an arc's end tangent, in the row after its own
+                continue
+            f = int(f)
+            if not (before & STOP_END or f & STOP_START):
+                return False
+            before = f
+        return True
 
     def _plan_rows(self) -> None:
         """:meth:`_plan` of every waiting move, for a few moves in ``rows``: in plain Python, move by move."""
@@ -209,14 +230,18 @@ class Planner:
         speeds = [math.sqrt(x) * 60.0 for x in w]
         self.canon.timing(times, speeds[:-1], speeds[1:])
 
-    def _plan_one(self) -> None:
-        """:meth:`_plan_rows` of a single straight move from rest (no junction: it ends at rest too)."""
-        length, v, a = self._row_moves()[:3]
+    def _plan_rest(self) -> None:
+        """:meth:`_plan_rows` of moves that all start and end at rest (:meth:`_rest_to_rest`): every junction
+        speed 0, so each move's :func:`blended_time` is its :func:`trapezoid_time` (:func:`rest_times_for`),
+        without the lists of fields and tangents."""
+        times = self.rest_times(self.rows)
         self.rows.clear()
-        t = trapezoid_time(length[0], v[0], a[0])  # blended_time from rest to rest
         clock = self.clock
-        clock.settle(clock.settled + t)
-        self.canon.timing([t], [0.0], [0.0])
+        t = clock.settled
+        for dt in times:  # in move order, as _plan_rows
+            t += dt
+        clock.settle(t)
+        self.canon.timing(times, [0.0] * len(times), [0.0] * len(times))
 
     def _row_moves(self) -> tuple[list, ...]:
         """The moves of ``rows`` as lists of fields (what :meth:`_materialise` makes an array of): an arc's end
@@ -230,21 +255,7 @@ class Planner:
                 u_out[-1] = u
                 continue
             if ln < 0.0:  # the hot path's straight move: deltas and the feed (mm/min; inf for a rapid move)
-                ln = 0.0
-                for d in u:  # summed in axis order, as lengths_columns
-                    ln += d * d
-                ln = math.sqrt(ln)
-                rapid = f == POSITIONING
-                inv = 1.0 / ln  # the shares as straight_limits_columns makes them: |d| * (1 / length)
-                # path_limits of the shares (length 1), written out
-                vi, ai = math.inf if rapid else vi / 60.0, math.inf
-                for d, vmax, amax in zip(u, dyn.rapid if rapid else dyn.max_feed, dyn.accel):
-                    share = abs(d * inv)
-                    if share:
-                        if vmax < vi * share:
-                            vi = vmax / share
-                        if amax < ai * share:
-                            ai = amax / share
+                ln, vi, ai = straight_row_limits(u, vi, f == POSITIONING, dyn)
                 u = [d / ln for d in u]
             length.append(ln)
             v.append(vi)
@@ -335,6 +346,88 @@ class Planner:
         # forward: w_i = min over k <= i of (b_k - s_k) + s_i
         w = np.minimum.accumulate(b - s) + s
         return np.maximum(w, 0.0, out=w)
+
+
+def straight_row_limits(deltas, feed: float, rapid: bool, dyn) -> tuple[float, float, float]:
+    """(length, path speed, path acceleration) of the kernel's hot-path row of a straight move (its ``deltas``,
+    ``feed`` in mm/min): what :meth:`Planner._materialise` works out column-wise, with the same float
+    operations (the length summed in axis order as lengths_columns, the shares |d| * (1 / length) as
+    straight_limits_columns, then path_limits of the shares written out)."""
+    ln = 0.0
+    for d in deltas:
+        ln += d * d
+    ln = math.sqrt(ln)
+    inv = 1.0 / ln
+    vi, ai = math.inf if rapid else feed / 60.0, math.inf
+    for d, vmax, amax in zip(deltas, dyn.rapid if rapid else dyn.max_feed, dyn.accel):
+        share = abs(d * inv)
+        if share:
+            if vmax < vi * share:
+                vi = vmax / share
+            if amax < ai * share:
+                ai = amax / share
+    return ln, vi, ai
+
+
+_REST_TIMES: dict = {}  # the generated functions, per machine's limits (a shadow kernel's planner shares them)
+
+
+def rest_times_for(dyn):
+    """``rest_times(rows)``: the time of each move in a planner's ``rows`` (an arc's end tangent row
+    skipped) from rest to rest, generated for the machine's axes and limits, one unrolled line per axis:
+    :func:`straight_row_limits` of a hot-path row, then :func:`trapezoid_time`, with the same float
+    operations (a drilling cycle's flush at each dwell, issue 18)."""
+    key = (tuple(dyn.rapid), tuple(dyn.max_feed), tuple(dyn.accel))
+    made = _REST_TIMES.get(key)
+    if made is not None:
+        return made
+    n = len(dyn.accel)
+    idx = range(n)
+
+    def shares(limits: str) -> list[str]:  # path_limits of the shares, per axis: its speed and acceleration
+        return [line for j in idx for line in (f"                share = abs(d{j} * inv)",
+                                               "                if share:",
+                                               f"                    if {limits}{j} < vi * share:",
+                                               f"                        vi = {limits}{j} / share",
+                                               f"                    if A{j} < ai * share:",
+                                               f"                        ai = A{j} / share")]
+
+    lines = ["def rest_times(rows):",
+             "    times = []",
+             f"    for i in range(0, len(rows), {4 + n}):",
+             "        f = rows[i + 3]",
+             "        if f < 0.0:",
+             "            continue  # an arc's end tangent",
+             "        ln = rows[i]",
+             "        if ln < 0.0:  # the hot path's straight move: deltas and the feed",
+             *(f"            d{j} = rows[i + {4 + j}]" for j in idx),
+             f"            ln = _sqrt({' + '.join(f'd{j} * d{j}' for j in idx) or '0.0'})",
+             "            inv = 1.0 / ln",
+             "            ai = _INF",
+             f"            if f == {POSITIONING}:",
+             "                vi = _INF",
+             *shares("R"),
+             "            else:",
+             "                vi = rows[i + 1] / 60.0",
+             *shares("M")]
+    lines += ["        else:",
+              "            vi, ai = rows[i + 1], rows[i + 2]",
+              "        if ln <= 0.0:  # trapezoid_time",
+              "            times.append(0.0)",
+              "        elif vi <= 0.0:",
+              "            times.append(_INF)",
+              "        elif ai <= 0.0 or ai == _INF:",
+              "            times.append(ln / vi)",
+              "        elif ln * ai >= vi * vi:",
+              "            times.append(ln / vi + vi / ai)",
+              "        else:",
+              "            times.append(2.0 * _sqrt(ln / ai))",
+              "    return times"]
+    namespace = {"_sqrt": math.sqrt, "_INF": math.inf}
+    for j in idx:
+        namespace[f"R{j}"], namespace[f"M{j}"], namespace[f"A{j}"] = dyn.rapid[j], dyn.max_feed[j], dyn.accel[j]
+    exec(compile("\n".join(lines) + "\n", f"<ncvm rest-to-rest times, {n} axes>", "exec"), namespace)
+    return _REST_TIMES.setdefault(key, namespace["rest_times"])
 
 
 def junction_speeds2(u_prev, u_next, v_prev, v_next, stop, accel, tolerance) -> np.ndarray:

@@ -73,10 +73,10 @@ class ToolpathRecorder(CanonSink):
         self.keep = keep
         self.axis_names: tuple[str, ...] = ()
         self.start_point: tuple = ()
-        #: single moves not yet in a chunk: (kind, end, src, tool) rows
+        #: single moves not yet in a chunk: (kind, end, file, line, tool) rows
         self._rows: list[tuple] = []
         self._add = self._rows.append
-        #: (first move index, columns, file of a batch or None, Src list of single moves or None)
+        #: (first move index, columns, file of a batch or None, the files of single moves or None)
         self._chunks: list[tuple] = []
         self._chunked = 0  # moves held in chunks
         #: single arcs: move index -> ArcSpec, and -> (a, b, lo_a, hi_a, lo_b, hi_b) where it reaches in its plane
@@ -112,18 +112,18 @@ class ToolpathRecorder(CanonSink):
             watcher.observe(self, 0, self._settled)
 
     def rapid(self, start, end, src: Src):
-        self._add((RAPID, end, src, self.tool))
+        self._add((RAPID, end, src.file, src.line, self.tool))
         if len(self._rows) >= WINDOW:
             self._flush()
 
     def feed(self, start, end, feed, src: Src):
-        self._add((FEED, end, src, self.tool))
+        self._add((FEED, end, src.file, src.line, self.tool))
         if len(self._rows) >= WINDOW:
             self._flush()
 
     def arc(self, start, end, spec: ArcSpec, feed, src: Src):
         index = self._held()
-        self._add((ARC, end, src, self.tool))
+        self._add((ARC, end, src.file, src.line, self.tool))
         a, b = spec.a, spec.b
         ca, cb = spec.center
         angle = arcs.sweep(start[a], start[b], end[a], end[b], ca, cb, spec.cw, spec.turns)
@@ -199,8 +199,8 @@ class ToolpathRecorder(CanonSink):
             ends = np.fromiter(chain.from_iterable(row[1] for row in rows), dtype=float, count=n * n_axes)
             columns = {"kind": np.fromiter((row[0] for row in rows), dtype=np.int8, count=n),
                        "end": ends.reshape(n, n_axes),
-                       "tool": np.fromiter((row[3] for row in rows), dtype=np.int32, count=n),
-                       "line": np.fromiter((row[2].line for row in rows), dtype=np.int32, count=n)}
+                       "tool": np.fromiter((row[4] for row in rows), dtype=np.int32, count=n),
+                       "line": np.fromiter((row[3] for row in rows), dtype=np.int32, count=n)}
             self._chunks.append((self._chunked, columns, None, [row[2] for row in rows]))
             self._chunked += n
             rows.clear()
@@ -245,7 +245,7 @@ class ToolpathRecorder(CanonSink):
             counts, part = self._counts, [0.0, 0.0]  # the window's straight lengths, added as _total does
             low_all = list(self._lo) if self._lo is not None else [math.inf] * len(start)
             high_all = list(self._hi) if self._hi is not None else [-math.inf] * len(start)
-            for kind, end, _src, _tool in rows[lo:]:
+            for kind, end, _file, _line, _tool in rows[lo:]:
                 counts[kind] += 1
                 if kind != ARC:
                     sq = 0.0
@@ -300,9 +300,10 @@ class ToolpathRecorder(CanonSink):
     def src(self, index: int) -> Src:
         """Where move ``index`` of the window came from."""
         if index >= self._chunked:  # a single move not yet in a chunk
-            return self._rows[index - self._chunked][2]
-        first, columns, file, srcs = self._chunks[bisect_right(self._chunks, index, key=lambda c: c[0]) - 1]
-        return srcs[index - first] if srcs is not None else Src(file, int(columns["line"][index - first]))
+            row = self._rows[index - self._chunked]
+            return Src(row[2], row[3])
+        first, columns, file, files = self._chunks[bisect_right(self._chunks, index, key=lambda c: c[0]) - 1]
+        return Src(files[index - first] if files is not None else file, int(columns["line"][index - first]))
 
     def end_of(self, index: int) -> tuple:
         """Where move ``index`` of the window ends."""

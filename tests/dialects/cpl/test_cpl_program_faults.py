@@ -150,7 +150,7 @@ TARGETS = [
     ("ncvm.nc.kernel", "NcKernel", "execute"),
     ("ncvm.nc.kernel", "NcKernel", "end_program"),
     ("ncvm.nc.planner", "Planner", "add_columns"),
-    ("ncvm.nc.planner", "Planner", "_plan_one"),  # a flush of one move from rest (the one-block WAIT)
+    ("ncvm.nc.planner", "Planner", "_plan_rest"),  # a flush of one move from rest (the one-block WAIT)
     ("ncvm.sinks.toolpath", "ToolpathRecorder", "move_batch"),
     ("ncvm.sinks.toolpath", "ToolpathRecorder", "feed"),
     ("ncvm.nc.planner", "Planner", "stop"),  # a short run's moves are planned at the exact stop (WAIT, M3)

@@ -8,7 +8,6 @@ from __future__ import annotations
 
 import math
 import re
-from itertools import islice
 
 from ...diagnostics import CompileFailed, RuntimeFault, Span, UsageError
 from ...nc import blockskip, threads
@@ -16,7 +15,7 @@ from ...nc.axiswords import din_missing_axes
 from ...nc.block import COLUMNS_FROM, PlainRun, columnar, din_stretches, file_stretches, text_stretches
 from ...nc.canon import Src
 from ...nc.cycles import CannedCycles
-from ...nc.plainrun import execute_columns
+from ...nc.plainrun import execute_columns, execute_short_run
 from ...nc.profiles.blockrules import block_refusal
 from ...nc.profiles.iso import ISO
 from ...nc.profiles.named import profile as named_profile
@@ -166,9 +165,11 @@ class DinDialect(Dialect):
                                 lo = bad + 1
                             done += count - lo
                         else:  # a short run: block by block, each counted before it runs (it may fault)
-                            for blk in islice(seg.blocks(), count):
-                                done += 1
-                                kernel.execute(blk)
+                            counted = [0]
+                            try:
+                                execute_short_run(kernel, seg, count, counted)
+                            finally:
+                                done += counted[0]
                         if count < len(seg):
                             counter.runaway(path, seg.line(count))
                         continue

@@ -35,6 +35,20 @@ from .reader import Arith, AtInstr, NcBlock, Note, Operand, PartProgram, Word
 _STANDARD_M = frozenset((0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 17, 30))
 #: G80-G89 (internal G group 9): select or end a drilling cycle (drilling.py)
 _CYCLE_G = frozenset(range(80, 90))
+#: the word keys computed at run time that are axis words all the same: @440 (PRAP, the drilling cycles'
+#: infeed) names an axis by its number, and axis_name gives a machine axis or refuses the block. A G0/G1
+#: block of axis words goes straight to the kernel's straight-move path (``_lin``), as with constant axes
+COMPUTED_AXIS_KEYS = ("_rt.positions.axis_name(",)
+
+
+def constant_axis(axes: tuple[str, ...], op: Operand) -> str | None:
+    """The axis a constant axis number of @440 names (``K3``: the third), known when the program compiles, as
+    Positions.axis_name gives it at run time; None for a number read from an R parameter, or one the machine
+    lacks (refused at run time, at its block, by axis_name)."""
+    if op.kind != "K":
+        return None
+    v = op.value
+    return axes[int(v) - 1] if v == int(v) and 1 <= v <= len(axes) else None
 
 
 def _num(v: float) -> str:
@@ -941,6 +955,8 @@ class _Record:
             key = f"_rt.positions.axis_name({axis}, {line})"
             if code == "448":
                 key = f"_rt.positions.centre_name({axis}, {line})"
+            elif (name := constant_axis(cg.axes, ops[0])) is not None:
+                key = repr(name)  # an axis word as any other (L81's infeed: @440 K3)
             self.words.append((key, tmp, False))
         elif code == "442":
             self.words.append((f"_rt.spindle.word({cg.val(ops[0])}, {line})", tmp, False))
@@ -1029,7 +1045,7 @@ class _Record:
                 out.emit("if (_K.ended or _K.stopped_at) and _rt.halt(): return 1", line)
             g, m, words = [], [], []
         fast = (not cg.decode_ahead and not m and self.msg is None and len(g) <= 1 and all(x in (0, 1) for x in g) and words
-                and all(k in axis_keys for k, _v, _c in words))
+                and all(k in axis_keys or k.startswith(COMPUTED_AXIS_KEYS) for k, _v, _c in words))
         if fast:
             # a plain G0/G1 block: straight to the kernel's move path, as execute() would do
             d = ", ".join(f"{k}: {v}" for k, v, _c in words)

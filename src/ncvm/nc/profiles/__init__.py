@@ -150,6 +150,10 @@ DWELL_TIME_WORDS = ("P", "X", "F")
 def dwell_alone(kernel, g, words, block_g, src, explicit_motion: bool = False, hint: str = ""):
     """G4 with its time as X or F (P read too): the block is the dwell alone, as the controls' manuals write it
     (CL 800 ``G4 F=R27``, L5465); what :func:`lone_dwell_fault` finds in it stops the block (NC009)."""
+    if len(words) == 1 and not explicit_motion:  # the usual block, its time alone: nothing to find
+        for address, seconds in words.items():
+            if address in DWELL_TIME_WORDS and seconds >= 0.0:
+                return seconds, True
     fault = lone_dwell_fault(kernel.profile, g, words, block_g, kernel.axis_of, explicit_motion, hint)
     if fault is not None:
         kernel.fault("NC009", fault, src)
