@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import math
 import re
+from itertools import islice
 
 from ...diagnostics import CompileFailed, RuntimeFault, Span, UsageError
 from ...nc import blockskip, threads
