@@ -90,7 +90,7 @@ def _usage_error(ctx, message: str) -> None:
 def _interrupted(ctx) -> None:
     """Exit 1 as an interrupted run does; with --json stdout is still a JSON document."""
     message = f"{ctx.invoked_subcommand or 'ncvm'} interrupted by the user"
-    _stop(ctx, f"ncvm: {message}", "error", "RUN004", message, EXIT_FAULT)
+    _stop(ctx, f"ncvm: error RUN004: {message}", "error", "RUN004", message, EXIT_FAULT)
 
 
 class _Guarded(click.Group):
@@ -439,6 +439,9 @@ def not_from_stdin(program: str, inputs: dict[str, str | None]) -> None:
 
 def check_program(program: str) -> None:
     path = Path(program)
+    if program == STDIN_ARG and not path.exists():
+        raise UsageError(f"{program}: this command reads its program from a file, not from standard input (a DIN "
+                         "program from a pipe: ncvm run or check -d din -)")
     if not path.exists():
         raise UsageError(f"no such program: {program}")
     if not path.is_file():

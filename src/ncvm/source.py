@@ -121,14 +121,37 @@ def read_piped(path: str | Path) -> str:
     if str(path) == STDIN_ARG:
         if sys.stdin is None:
             raise OSError(9, "standard input is closed")
+        if sys.stdin.isatty():  # a forgotten "< part.ngc": the run would wait for typing, saying nothing
+            raise OSError(25, "standard input is a terminal; pipe the program in (ncvm run -d din - < part.ngc) "
+                              "or give its file")
         data = sys.stdin.buffer.read()
     else:
-        with open(path, "rb") as pipe:
+        with _open_fifo(path) as pipe:
             data = pipe.read()
     text = without_bom(data.decode("latin-1"))
     _piped.clear()  # one pipe at a time: the last one's lines stay
     _piped[program_name(path)] = text
     return text
+
+
+def _open_fifo(path: str | Path):
+    """A FIFO opened for reading. Opening waits until a writer opens it: a wait of more than a second is said on
+    stderr, else a run with nothing writing its FIFO would hang without a word."""
+    import threading
+
+    said = threading.Timer(WAIT_SAID_AFTER_S, lambda: print(
+        f"ncvm: {path}: waiting for a program to be written into this FIFO (Ctrl-C stops)", file=sys.stderr,
+        flush=True))
+    said.daemon = True
+    said.start()
+    try:
+        return open(path, "rb")
+    finally:
+        said.cancel()
+
+
+#: how long opening a FIFO waits for its writer before it says so
+WAIT_SAID_AFTER_S = 1.0
 
 
 def forget_piped() -> None:

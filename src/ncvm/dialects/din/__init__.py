@@ -7,6 +7,7 @@ size): once for its errors and refusals, holding its leading stretches while the
 from __future__ import annotations
 
 import math
+import os
 import re
 from itertools import islice
 
@@ -260,6 +261,14 @@ class ProgramStretches:
         #: stood before it) each, then (the line after the last, None, None, where the file stood at its end);
         #: None before that pass ends
         self.read_as = None
+        self.opened = self._stamp()  # the file's size and times when its first pass began
+
+    def _stamp(self) -> tuple | None:
+        """The open file's size and modification times (None: a text or a pipe)."""
+        if self.file is None or not self.again:
+            return None
+        st = os.fstat(self.file.fileno())
+        return st.st_size, st.st_mtime_ns, st.st_ctime_ns
 
     def __call__(self, columns_from: int = 0, start: int = 0):
         """The stretches from the program's start, or from its ``start``-th stretch (0-based) on after a whole
@@ -289,6 +298,9 @@ class ProgramStretches:
             at = self.file.tell()  # the piece's end (a text file's position: an opaque number for seek)
         seen.append((line, None, None, at))
         self.read_as = seen
+        if self._stamp() != self.opened:  # written to while this pass read it: it may have read two versions
+            for _ in self._verified(file_stretches(self.file), 0):  # RUN008 unless the file reads as it did
+                pass
 
     def _verified(self, pieces, start: int):
         """``pieces`` from the ``start``-th on, each the one the first pass read (its length and hash), ending
