@@ -5,6 +5,7 @@ program changed while it runs")."""
 
 from __future__ import annotations
 
+import os
 from pathlib import Path
 
 import pytest
@@ -191,3 +192,34 @@ def test_a_file_is_read_from_a_later_stretch_only_after_a_whole_pass(program):
             stretches(COLUMNS_FROM, 3)
         assert sum(len(s.lines) for s in stretches(COLUMNS_FROM)) == TEXT.count("\n")
         assert next(iter(stretches(COLUMNS_FROM, 3))).first == first_lines()[3] - 1
+
+
+def first_pass_with(path: Path, edit) -> RuntimeFault | None:
+    """The fault of a first whole pass over ``path`` during which ``edit()`` runs after its second stretch."""
+    with din.ProgramStretches(str(path), None) as stretches:
+        try:
+            for k, _ in enumerate(stretches(COLUMNS_FROM)):
+                if k == 1:
+                    edit()
+        except RuntimeFault as e:
+            return e
+    return None
+
+
+def test_a_file_rewritten_during_the_first_reading_is_compared_again(program):
+    """The first reading went on in the new version: read once more, it differs from what was read at line 1
+    (the new version's first stretch): RUN008 before any block runs."""
+    fault = first_pass_with(program, lambda: program.write_text(TEXT.replace("Y0.0", "Y9.5")))
+    assert fault is not None and fault.code == "RUN008" and fault.span.line == 1
+
+
+@pytest.mark.parametrize("edit", ["touch", "same text"])
+def test_a_file_touched_during_the_first_reading_runs(program, edit):
+    """Its times changed, its text did not: the comparison finds every piece as read."""
+    def change():
+        if edit == "touch":
+            program.touch()
+        else:
+            program.write_text(TEXT)
+    os.utime(program, ns=(1, 1))  # the first reading begins at another modification time than the edit's
+    assert first_pass_with(program, change) is None
