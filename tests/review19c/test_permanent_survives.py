@@ -13,11 +13,13 @@ bytecode after the SQLite call that was running when it came. The tests put it e
 
 from __future__ import annotations
 
+import json
 import os
 import signal
 import sqlite3
 import subprocess
 import sys
+import time
 from pathlib import Path
 
 import ncvm.machine.store as store_module
@@ -223,3 +225,68 @@ def test_decode_ahead_g58_block_behind_a_faulting_block_is_not_stored(tmp_path):
     lockstep = _stored_after(tmp_path, 0)
     assert lockstep == ("NC014", {})
     assert _stored_after(tmp_path, 4) == lockstep
+
+
+# --- two runs at once: a batch on a state directory another run holds ---------------------------------------
+
+# counts in a permanent variable for a long time: another run holding the state directory, writing all along
+COUNTER = """(COUNTER - a permanent count, written 10,000 times a second)
+10 IF @1 = NUL THEN @1 = 0 ENDIF
+20 FOR I% = 1 TO 5000000
+30 @1 = @1 + 1
+40 NEXT I%
+M30
+"""
+
+QUIET = """(QUIET - writes nothing permanent)
+10 A% = 1
+M30
+"""
+
+
+def _stored_count(state: Path) -> int | None:
+    try:
+        db = sqlite3.connect(f"file:{state / 'store.sqlite'}?mode=ro", uri=True)
+        try:
+            row = db.execute("SELECT value FROM permanent WHERE key='@1'").fetchone()
+        finally:
+            db.close()
+    except sqlite3.Error:
+        return None
+    return None if row is None else int(row[0])
+
+
+def test_shared_state_batch_program_refused_by_another_run_reports_no_permanent_writes(tmp_path):
+    """docs/batch.md / `ncvm run --help` ("--shared-state: ... its permanent writes stay"; the summary: "the
+    report lists each write"): a program refused with RUN007 because another run holds the state directory
+    never ran (0 steps), so it wrote nothing. The batch compares the store before and after the program
+    outside the run's lock, and reports the other run's writes as this program's ("QUIET ... wrote cpl.perm
+    @1 = 95479"; the summary "2 program(s) wrote permanent data"): a report that is silently wrong about who
+    changed the permanent memory."""
+    state = tmp_path / "st"
+    (tmp_path / "counter.cpl").write_text(COUNTER)
+    batch = tmp_path / "batch"
+    batch.mkdir()
+    for n in range(5):
+        (batch / f"quiet{n}.cpl").write_text(QUIET)
+    writer = subprocess.Popen([sys.executable, "-m", "ncvm", "run", "counter.cpl", "--state", str(state)],
+                              cwd=tmp_path, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    try:
+        for _ in range(600):  # until it writes (at most a minute on a busy machine)
+            if (_stored_count(state) or 0) > 0:
+                break
+            if writer.poll() is not None:
+                break
+            time.sleep(0.1)
+        assert writer.poll() is None and (_stored_count(state) or 0) > 0, "the counting run did not start"
+        done = subprocess.run([sys.executable, "-m", "ncvm", "run", "batch", "--shared-state", "-j", "1",
+                               "--state", str(state), "--report", "report.json"],
+                              cwd=tmp_path, capture_output=True, text=True, timeout=300)
+        still_writing = writer.poll() is None
+    finally:
+        writer.kill()
+        writer.wait()
+    assert still_writing, "the counting run ended before the batch did"
+    programs = json.loads((tmp_path / "report.json").read_text())["programs"]
+    assert [p["error"]["code"] for p in programs] == ["RUN007"] * 5, done.stderr
+    assert [p["permanent_writes"]["store"] for p in programs] == [[]] * 5
