@@ -98,22 +98,31 @@ def _setup_error(task: Task, message: str) -> dict:
 
 
 def _run_and_compare(task: Task, inside, state: Path) -> tuple[dict, dict]:
+    """The run's document and what it wrote: the store and files as the run found them and as it left them,
+    both seen while it holds the state directory (a run refused because another holds it wrote nothing, and
+    another run's writes before or after it are not its own)."""
     file_root = inside(task.file_root)
     watched = {"state": state, "file root": file_root}
-    before = _snapshot(state, watched)
-    doc = _run(task, inside, state)
-    after = _snapshot(state, watched)
-    writes = _writes(before, after)
+    seen: dict[str, dict] = {}
+
+    def held(session) -> None:  # the session exists inside the run's hold, before the program runs
+        seen["before"] = _snapshot(state, watched)
+        session.when_closed(lambda: seen.setdefault("after", _snapshot(state, watched)))
+
+    doc = _run(task, inside, state, held)
+    if "after" not in seen:  # the run never began (refused, or its setup failed)
+        seen["before"] = seen["after"] = {"store": {}, "files": {}}
+    writes = _writes(seen["before"], seen["after"])
     for entry in writes["files"]:  # the files as the program's machine names them, not the copies
         folder, rel = entry.pop("where"), entry["path"]
         entry["path"] = str(Path(task.file_root) / rel) if folder == "file root" else f"<state>/files/{rel}"
     return doc, writes
 
 
-def _run(task: Task, inside, state: Path) -> dict:
+def _run(task: Task, inside, state: Path, on_session=None) -> dict:
     program = inside(str(Path(task.base) / task.path))
     options = RunOptions(state_dir=state, max_steps=task.settings.max_steps, keys=inside(task.keys),
-                         scenario=inside(task.scenario))
+                         scenario=inside(task.scenario), on_session=on_session)
     if task.settings.max_memory is not None:
         options.max_memory = task.settings.max_memory
     try:

@@ -253,14 +253,14 @@ class Store:
             return
         self._in_batch = True
         try:
-            try:
-                self._db.execute("BEGIN IMMEDIATE")
-            except sqlite3.Error as e:
-                raise self._error(e) from None
-            try:
+            try:  # one handler from BEGIN on: a Ctrl-C or SIGTERM as BEGIN returns must not leave it open
+                try:
+                    self._db.execute("BEGIN IMMEDIATE")
+                except sqlite3.Error as e:
+                    raise self._error(e) from None
                 yield
             except BaseException:
-                self._rollback()
+                self._rollback()  # only where a transaction is open
                 raise
             try:
                 self._db.execute("COMMIT")

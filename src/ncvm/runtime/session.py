@@ -161,6 +161,8 @@ class Session:
         self._store: Store | None = None
         #: the operator screen of dialects that have one (CPL dialogs); anything with ``save_png(path)``
         self.screen = None
+        #: told when the session has closed, while the run still holds its state directory (:meth:`when_closed`)
+        self._closed: list[Callable[[], None]] = []
         if self.options.on_session:
             self.options.on_session(self)
 
@@ -192,6 +194,13 @@ class Session:
         if self._store is not None:
             self._store.close()
             self._store = None
+        for told in self._closed:
+            told()
+
+    def when_closed(self, told: Callable[[], None]) -> None:
+        """Call ``told()`` once the session has closed (its store synced), still inside the run's hold of the
+        state directory: what the run left there is then its own, no other run's (a batch's comparison)."""
+        self._closed.append(told)
 
 def _same_place(src: Src, column: int | None = None) -> Src:
     return src

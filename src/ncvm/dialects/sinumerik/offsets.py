@@ -48,10 +48,13 @@ class Offsets:
         self.data.changed()
 
     def programmable_zo(self, group: int, words: list, line: int) -> None:
-        vec = self.data.zo_vec(f"G{57 + group}")
-        for name, value in words:
+        for name, _ in words:
             if name not in self.kernel.axis_of:
                 raise Cl800Error(f"G{57 + group}: {name} is not an axis")
+        # the blocks decoded before it execute first: where one faults, this offset is never written (nor kept)
+        self.channel.run_buffer()
+        vec = self.data.zo_vec(f"G{57 + group}")
+        for name, value in words:
             vec[self.kernel.axis_of[name]] = value * self.kernel.unit_of(name)
         self._changed()
 
