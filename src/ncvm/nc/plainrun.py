@@ -288,7 +288,8 @@ def execute_short_run(k, run: PlainRun, count: int, counted: list) -> None:
             return
         file, scale, first = run.file, k.scale, run.line(0)
         for i, (_n, g, x, y, z, ii, jj, kk, f, _rest) in enumerate(run.matches[:count]):
-            words = {}  # unrolled: a comprehension's call costs a third of a block
+            # unrolled as nc.block._blocks unrolls it (Blocks of the same matches): a call costs a third of a block
+            words = {}
             if x:
                 words["X"] = float(x)
             if y:
