@@ -214,6 +214,9 @@ NCVM_CODES = {
              "faster than its limit",
     "NC015": "a block with no one meaning: two functions of one modal group, or two that both take the axis "
              "words (rs274's \"Two G codes used from same modal group\"; nc/profiles/blockrules.py)",
+    "NC016": "a DIN program opened with a % line ends with neither a closing % line nor M2/M30: the file may be cut "
+             "short, nothing runs (rs274's \"File ended with no percent sign\"); a check warns of lines after the "
+             "closing %, which are not read",
     "LIM001": "travel limit exceeded",
     "RUN001": "step limit reached (runaway program?)",
     "RUN002": "sub-program not found",

@@ -27,6 +27,7 @@ from ..base import Dialect
 from .ngc import fold_extensions
 from .options import arc_tolerance, options
 from .support import address_refusal, block_error, refused_address
+from .tape import Tape, cut_at
 
 #: a run holds the leading stretches of a program it reads while they cost at most this much memory (in bytes,
 #: as :func:`held_bytes` estimates them): a flat CAM program of up to about 150,000 lines (4.8 MB), a drilling
@@ -67,8 +68,9 @@ class DinDialect(Dialect):
         from .check import check_stretches  # a run needs none of it (start-up)
 
         profile = named_profile(options(machine).profile)
+        tape = Tape(path, bool(machine.setting_data.get("block_skip", True)))
         with ProgramStretches(path, text) as program:
-            return check_stretches(path, program(COLUMNS_FROM), machine, profile)
+            return check_stretches(path, tape.through(program(COLUMNS_FROM)), machine, profile, tape)
 
     def run(self, path, text, session):
         kernel = session.kernel
@@ -119,13 +121,16 @@ class DinDialect(Dialect):
         None); a program with errors fails to compile. The leading stretches read are held while they cost at
         most :data:`HOLD_BYTES` together: a program that fits is read once. The rest is read a second time as
         it runs, from the first stretch not held on, the first reading having been for its errors and refusals
-        only (issue 18: bounded memory). A program that cannot be read again (a pipe) is held."""
+        only (issue 18: bounded memory). A program that cannot be read again (a pipe) is held. A program
+        opened with ``%`` ends at its closing ``%`` (nothing after it is read) or fails to compile when it has
+        neither that nor M2/M30: it was cut short (dialects/din/tape.py)."""
         held, cost = [], 0  # the leading stretches' segments held, what they cost
         again = None  # the first stretch not held
         budget = HOLD_BYTES if program.again else math.inf
         diags, refused, index = [], None, 0
         error_lines = {}  # the source lines of the syntax errors (NC001), for fold_extensions
-        for stretch in program(COLUMNS_FROM):  # a short program line by line: no numpy (issue 18, start-up)
+        tape = Tape(path, skip_active)
+        for stretch in tape.through(program(COLUMNS_FROM)):  # a short program line by line: no numpy (issue 18, start-up)
             segments = stretch.segments
             diags += stretch.diags
             error_lines.update((d.span.line, stretch.line(d.span.line)) for d in stretch.diags if d.code == "NC001")
@@ -144,9 +149,10 @@ class DinDialect(Dialect):
                 else:
                     held.append(segments)
             del stretch, segments  # not held here while the next stretch is read
-        if diags:
-            raise CompileFailed(fold_extensions(diags, error_lines.get))
-        return _held_then_read(held, program, again), refused
+        cut = tape.cut_short()
+        if diags or cut is not None:
+            raise CompileFailed(fold_extensions(diags, error_lines.get) + ([cut] if cut is not None else []))
+        return _held_then_read(held, program, again, tape.closing), refused
 
     @staticmethod
     def _execute(path, segments, kernel, counter, limit, hook, skip_active, done, last_src):
@@ -198,19 +204,22 @@ class DinDialect(Dialect):
             raise
 
 
-def _held_then_read(held: list, program, again: int | None):
+def _held_then_read(held: list, program, again: int | None, closing: int | None = None):
     """The segments of each stretch ``held``, let go as they are handed on (a run's memory is not the held
     stretches and the rest at once), then those of the program read again from stretch ``again`` on (None:
-    none)."""
+    none), up to its ``closing`` % line (None: to its end)."""
     held.reverse()
     while held:
         yield held.pop()
     if again is not None:
         for stretch in program(COLUMNS_FROM, again):
-            segments = stretch.segments
+            segments = cut_at(stretch.segments, closing)
+            past = closing is not None and stretch.first + len(stretch.lines) >= closing
             del stretch
             yield segments
             del segments  # not held here while the next stretch is read
+            if past:  # the program ends at its closing %: nothing after it is read
+                return
 
 
 def _refused_blocks(path: str, stretch, axes, skip_active: bool, profile) -> list:

@@ -17,9 +17,10 @@ from .support import Unsupported, block_errors, tool_blocks
 _NC013, _SYNTAX, _AXES, _REFUSED, _RULES, _TOOLS = range(6)
 
 
-def check_stretches(path: str, stretches, machine, profile) -> Diagnostics:
+def check_stretches(path: str, stretches, machine, profile, tape=None) -> Diagnostics:
     """The diagnostics of the program ``stretches`` (:class:`~ncvm.nc.block.DinStretch` es from its start), in
-    line order."""
+    line order; with what its ``tape`` marks say at the end (:class:`~ncvm.dialects.din.tape.Tape`, which the
+    stretches went through: a program cut short, lines after its closing %)."""
     axes = machine.axis_names
     extensions = Extensions()
     refused = Unsupported(path, axes, profile)
@@ -41,6 +42,7 @@ def check_stretches(path: str, stretches, machine, profile) -> Diagnostics:
     folded = extensions.folded()
     said_once += [(_NC013, folded)] if folded is not None else []
     said_once += [(_REFUSED, d) for d in refused.warnings()]
+    said_once += [(_SYNTAX, d) for d in (tape.diagnostics() if tape is not None else ())]
     merged = sorted(kept + said_once, key=_place)
     out.extend(d for _rank, d in merged[:out.limit])
     out.count_out(d for _rank, d in merged[out.limit:])
