@@ -15,6 +15,8 @@ import sys
 import time
 from pathlib import Path
 
+import pytest
+
 NCVM = [sys.executable, "-m", "ncvm"]
 DEADLINE_S = 60.0
 LINES = 100_000  # about 1.2 MB: held whole (under the run's HOLD_BYTES), read in several pieces
@@ -38,6 +40,9 @@ def _read_position(pid: int, path: Path) -> int | None:
     return None
 
 
+@pytest.mark.xfail(reason="known limit (docs/decisions.md, review19d): a writer that changes the file during the "
+                          "first reading but neither its size nor its times (pages of a memory map written again) is "
+                          "not seen; reading every held program a second time to see it was not chosen")
 def test_a_rewrite_that_leaves_size_and_times_alike_is_not_run_as_a_mixture(tmp_path):
     """The first reading decides whether the file changed by its size, mtime and ctime alone
     (``ProgramStretches.opened``); only then is it read once more and compared. A rewrite that changes the bytes

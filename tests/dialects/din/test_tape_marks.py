@@ -70,8 +70,19 @@ COMPLETE = [  # (program, newline, the X it ends at)
     ("%\n" + BODY + "X20\n%", "\n", 20.0),  # a closing % with no line end
     ("%\n%\n", "\n", 0.0),  # an empty program
     (BODY + "X20\n", "\n", 20.0),  # not opened with %: may end without M2/M30, as before
-    (BODY + "%\nX20\n", "\n", 20.0),  # a % line that does not open the program is no tape mark
 ]
+
+
+@pytest.mark.parametrize("text, line", [
+    (BODY + "%\nX20\n", 4),  # a % line in a program that does not open with one
+    ("(header)\n%\n" + BODY + "%\nG1 X99\n", 2),  # a tape after a comment: its trailer would run
+])
+def test_a_percent_line_where_no_tape_opens_is_refused(tmp_path, text, line):
+    """rs274 refuses a % line after the first (its parser reads it as a bad character): a tape opens and
+    closes with %, and what follows a closing % would run here if the mark were taken for nothing."""
+    r = ran(tmp_path, text, "\n")
+    assert (r["status"], r["error"]["code"], r["error"]["line"], r["steps"]) == ("error", "NC016", line, 0)
+    assert checked(tmp_path, text, "\n") == [("error", "NC016", line, 1)]
 
 
 @pytest.mark.parametrize("text, newline, x", COMPLETE)

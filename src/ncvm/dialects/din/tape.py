@@ -37,9 +37,10 @@ class Tape:
         self.skip_active = skip_active  # a block skipped (/) does not end the program
         self.opening: int | None = None  # the opening % line; 0: the program does not open with %
         self.closing: int | None = None  # the closing % line
-        self.ended = False  # a block with M2/M30 that runs, before the closing %
+        self.ended: int | None = None  # the line of the first block with M2/M30 that runs (before the closing %)
         self.last: tuple[int, str] | None = None  # the last non-blank line read up to the closing %
         self.after: tuple[int, str] | None = None  # the first non-blank line after the closing %
+        self.stray: int | None = None  # the first % line of a program that does not open with %
 
     def through(self, stretches):
         """``stretches`` (:class:`~ncvm.nc.block.DinStretch` es from the program's start) as the program has
@@ -59,29 +60,40 @@ class Tape:
             if found is None:  # blank so far
                 return stretch
             self.opening = found[0] if is_percent(found[1]) else 0
+        stray = None  # a % line of a program that does not open with one, before its program end
         if not self.opening:
-            return stretch
-        start = max(0, self.opening - first)  # not the opening % itself
-        closing = next((first + k + 1 for k in range(start, len(lines)) if "%" in lines[k] and is_percent(lines[k])),
-                       None)
-        segments, diags = stretch.segments, stretch.diags
-        if closing is not None:
-            self.closing = closing
-            self.after = _first_text(lines, first, closing - first)
-            segments = [seg for seg in segments if segment_line(seg) < closing]
-            diags = [d for d in diags if d.span is None or d.span.line < closing]
-            stretch = stretch._replace(segments=segments, diags=diags)
+            if self.stray is None and self.ended is None:
+                stray = next((first + k + 1 for k, line in enumerate(lines) if "%" in line and is_percent(line)), None)
         else:
-            self.last = _last_text(lines, first) or self.last
-        if not self.ended:
-            self.ended = any(seg.__class__ is not PlainRun and not (seg[1] and self.skip_active)
-                             and not PROGRAM_ENDS.isdisjoint(seg[0].m) for seg in segments)
+            start = max(0, self.opening - first)  # not the opening % itself
+            closing = next((first + k + 1 for k in range(start, len(lines))
+                            if "%" in lines[k] and is_percent(lines[k])), None)
+            if closing is not None:
+                self.closing = closing
+                self.after = _first_text(lines, first, closing - first)
+                stretch = stretch._replace(segments=[seg for seg in stretch.segments if segment_line(seg) < closing],
+                                           diags=[d for d in stretch.diags if d.span is None or d.span.line < closing])
+            else:
+                self.last = _last_text(lines, first) or self.last
+        if self.ended is None:
+            self.ended = next((segment_line(seg) for seg in stretch.segments if seg.__class__ is not PlainRun
+                               and not (seg[1] and self.skip_active) and not PROGRAM_ENDS.isdisjoint(seg[0].m)), None)
+        if stray is not None and (self.ended is None or stray < self.ended):  # after M30: never read (as rs274)
+            self.stray = stray
+        if self.ended is not None and stretch.diags:  # nothing after the program end is read (as rs274)
+            stretch = stretch._replace(diags=[d for d in stretch.diags if d.span is None or d.span.line <= self.ended])
         return stretch
 
     def cut_short(self) -> Diagnostic | None:
         """The error of a program opened with ``%`` that ends with neither a ``%`` line nor M2/M30 (at its last
-        line that is not blank, just past its text: where the file was cut); None when it ends as it should."""
-        if not self.opening or self.closing is not None or self.ended:
+        line that is not blank, just past its text: where the file was cut), or of a ``%`` line in a program
+        that does not open with one (rs274 refuses it: a tape mark stands first and last, and its lines after a
+        closing mark would run here); None when it ends as it should."""
+        if self.stray is not None:
+            return Diagnostic(CODE, f"a % tape mark at line {self.stray} in a program that does not open with %: "
+                                    "a tape opens and closes with %, nothing runs after its closing % (rs274 refuses "
+                                    "it too); put a % first or take this one out", Span(self.path, self.stray, 1))
+        if not self.opening or self.closing is not None or self.ended is not None:
             return None
         line, text = self.last
         return Diagnostic(CODE, f"program opened with % (line {self.opening}) ends at line {line} with no closing % "
