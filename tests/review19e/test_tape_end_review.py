@@ -7,6 +7,7 @@ The commands run ``python -m ncvm`` in a temporary folder.
 
 from __future__ import annotations
 
+import re
 import subprocess
 import sys
 
@@ -34,3 +35,32 @@ def test_check_does_not_refuse_lines_after_m30_that_the_run_never_reads(tmp_path
     assert ran.returncode == 0, ran.stderr
     checked = _ncvm(tmp_path, "check", text)
     assert checked.returncode == 0, checked.stdout + checked.stderr
+
+
+def _x_range(stderr: str) -> tuple[float, float] | None:
+    found = re.search(r"program X\[([-\d.,]+),([-\d.,]+)\]", stderr)
+    return None if found is None else (float(found[1].replace(",", "")), float(found[2].replace(",", "")))
+
+
+@pytest.mark.parametrize("start, end", [("% (START)", "% (END)"), ("%O1000", "%O1000")],
+                         ids=["tape-marks-with-comments", "tape-marks-with-a-program-number"])
+def test_a_tape_mark_with_text_after_it_does_not_let_the_trailer_run(tmp_path, start, end):
+    """The fix refuses a ``%`` line in a program that does not open with ``%`` (NC016), because the lines after a
+    closing mark would otherwise run: a tape after a comment header ran its trailer. The block reader drops
+    *every* line whose text begins with ``%`` (``% (END)``, ``%O1000``), but the tape marks are only the lines
+    that are ``%`` alone (``tape.is_percent``): so the same file with a comment or a program number after its
+    marks is neither refused nor cut, and the move to X99 after the closing mark runs, "ended normally". rs274
+    refuses both files ("Bad character '%' used": its tape mark is ``%`` alone, any other ``%`` is a bad
+    character). Expected: refused (exit != 0), or at the very least nothing after the closing mark runs."""
+    done = _ncvm(tmp_path, "run", f"(PART 4711)\n{start}\nG1 X10 F100\nG1 X20\n{end}\nG1 X99\n")
+    assert done.returncode != 0 or _x_range(done.stderr) == (10.0, 20.0), done.stderr
+
+
+def test_a_block_after_a_percent_sign_is_not_dropped_silently(tmp_path):
+    """A line ``%G1 X50`` (a tape mark and a block run together, as a hand edit or a bad join of two files
+    leaves it) is dropped whole by the block reader: the move to X50 silently does not happen and the run
+    "ended normally" at X20. rs274 refuses the line ("Bad character '%' used"); ncvm reads it neither as a tape
+    mark (it is not ``%`` alone) nor as a block. Expected: refused (exit != 0) or the move made; never a run
+    that skips a motion block and says it ended normally."""
+    done = _ncvm(tmp_path, "run", "G1 X10 F100\n%G1 X50\nG1 X20\nM30\n")
+    assert done.returncode != 0 or _x_range(done.stderr) == (10.0, 50.0), done.stderr
