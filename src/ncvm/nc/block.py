@@ -132,7 +132,11 @@ def parse_din_line(text: str, src: Src) -> Block | None:
     i, n = 0, len(s)
     while i < n and s[i] in " \t":
         i += 1
-    if i < n and s[i] == "%":
+    if i < n and s[i] == "%":  # the tape mark stands alone (a comment beside it); never a block's start
+        if s[i + 1:].strip():
+            col = i + 1
+            raise DinSyntaxError(col_map[col - 1] + 1 if col_map else col,
+                                 "% is the tape mark and stands alone on its line: the rest of it would be lost")
         return None
     if not CLEAN_BODY.fullmatch(s, i):
         _raise_at_bad_character(s, i, col_map)

@@ -45,7 +45,6 @@ CUT = [  # (program, newline, the line and column of the error: just past the la
     ("  % \n" + BODY, "\n", 4, 4),  # blanks around the opening %
     ("%\n", "\n", 1, 2),  # a lone %
     ("%\n" + BODY + "/M30\n", "\n", 5, 5),  # a program end under block skip, skip on: not an end
-    ("%\n" + BODY + "%O1000\n", "\n", 5, 7),  # not a closing %: % alone on its line
     ("%\n" + BODY + "M3 S1000\n(M30 in a comment)\n", "\n", 6, 19),
 ]
 
@@ -162,3 +161,15 @@ def test_the_json_of_a_cut_program(tmp_path):
                           timeout=120)
     doc = json.loads(done.stdout)
     assert done.returncode == 1 and doc["status"] == "error" and doc["error"]["code"] == "NC016"
+
+
+def test_a_percent_with_words_after_it_is_no_tape_mark_and_no_block(tmp_path):
+    """%O1000: the block reader would drop the line (a % line is nothing): refused at the %, and the program it
+    leaves unclosed is said too; a comment beside a % is a tape mark still."""
+    text = "%\n" + BODY + "%O1000\n"
+    r = ran(tmp_path, text, "\n")
+    assert (r["status"], r["error"]["code"], r["error"]["line"], r["error"]["column"], r["steps"]) == \
+        ("error", "NC001", 5, 1, 0)
+    assert checked(tmp_path, text, "\n") == [("error", "NC001", 5, 1), ("error", "NC016", 5, 7)]
+    r = ran(tmp_path, "% (START)\n" + BODY + "% (END)\nG1 X99\n", "\n")
+    assert r["status"] == "ok" and r["motion"]["bounds"]["X"][1] == 10.0

@@ -11,6 +11,8 @@ program opened with % and cut short").
 
 from __future__ import annotations
 
+import re
+
 from ...diagnostics import Diagnostic, Span
 from ...nc.block import PlainRun
 
@@ -19,9 +21,15 @@ PROGRAM_ENDS = frozenset((2, 30))
 CODE = "NC016"
 
 
+#: what a tape mark's line may hold besides the ``%``: comments (a CAM post's "% (START)")
+_COMMENTS = re.compile(r"\([^)]*\)|;.*")
+
+
 def is_percent(line: str) -> bool:
-    """Whether a program line is a tape mark: ``%`` alone, blanks (and a CR) around it."""
-    return line.strip() == "%"
+    """Whether a program line is a tape mark: ``%`` alone, blanks (and a CR) and comments around it (the block
+    reader refuses a ``%`` with words after it, NC001)."""
+    text = line.strip()
+    return text == "%" or (text[:1] == "%" and _COMMENTS.sub("", text).strip() == "%")
 
 
 def segment_line(seg) -> int:
@@ -80,8 +88,9 @@ class Tape:
                                and not (seg[1] and self.skip_active) and not PROGRAM_ENDS.isdisjoint(seg[0].m)), None)
         if stray is not None and (self.ended is None or stray < self.ended):  # after M30: never read (as rs274)
             self.stray = stray
-        if self.ended is not None and stretch.diags:  # nothing after the program end is read (as rs274)
-            stretch = stretch._replace(diags=[d for d in stretch.diags if d.span is None or d.span.line <= self.ended])
+        if self.ended is not None:  # nothing after the program end is read (as rs274), checked or run
+            stretch = stretch._replace(segments=cut_at(stretch.segments, self.ended + 1),
+                                       diags=[d for d in stretch.diags if d.span is None or d.span.line <= self.ended])
         return stretch
 
     def cut_short(self) -> Diagnostic | None:
