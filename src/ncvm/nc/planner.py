@@ -90,8 +90,9 @@ class Planner:
         self.entry2 = 0.0  # squared speed (mm/s)^2 the first waiting move starts with
         # (moves waiting, the tolerance before) at each change of the tolerance: junctions 1..moves-1 keep it
         self.changes: list[tuple[int, float]] = []
-        #: ``rest_times(rows)``: the time of each move in ``rows`` from rest to rest (:func:`rest_times_for`)
-        self.rest_times = rest_times_for(dyn)
+        #: ``rest_times(rows)``: the time of each move in ``rows`` from rest to rest (:func:`rest_times_for`),
+        #: generated at the first flush that needs it (a run that never has one compiles nothing at start-up)
+        self.rest_times = None
         clock.pending = self.stop
 
     def fork(self, clock, canon) -> Planner:
@@ -234,6 +235,8 @@ class Planner:
         """:meth:`_plan_rows` of moves that all start and end at rest (:meth:`_rest_to_rest`): every junction
         speed 0, so each move's :func:`blended_time` is its :func:`trapezoid_time` (:func:`rest_times_for`),
         without the lists of fields and tangents."""
+        if self.rest_times is None:
+            self.rest_times = rest_times_for(self.dyn)
         times = self.rest_times(self.rows)
         self.rows.clear()
         clock = self.clock
