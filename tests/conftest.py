@@ -10,6 +10,7 @@ import signal
 import socket
 import subprocess
 import sys
+import threading
 import time
 from pathlib import Path
 
@@ -199,3 +200,32 @@ def random_program(seed: int) -> str:
 def random_din():
     """random_din(seed) -> the text of a random plain DIN program (see random_program)."""
     return random_program
+
+
+def fifo_with(path: Path, text: str) -> Path:
+    """A FIFO at ``path`` that a thread writes ``text`` to once a reader opens it."""
+    os.mkfifo(path)
+
+    def write():
+        with open(path, "w") as pipe:
+            pipe.write(text)
+
+    threading.Thread(target=write, daemon=True).start()
+    return path
+
+
+def killed_after(p: subprocess.Popen, count: int, counted) -> tuple[int, str]:
+    """Reads the stdout of the run ``p`` until ``counted(line, so_far)`` reaches ``count`` (what the program said
+    it wrote), then SIGKILLs it: (the count reached, its stderr)."""
+    said = 0
+    try:
+        for line in p.stdout:
+            said = counted(line, said)
+            if said == count:
+                break
+        p.send_signal(signal.SIGKILL)
+    finally:
+        p.kill()
+        _, err = p.communicate(timeout=60)
+    return said, err
+

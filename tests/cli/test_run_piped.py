@@ -8,10 +8,11 @@ import json
 import os
 import subprocess
 import sys
-import threading
 from pathlib import Path
 
 import pytest
+
+from tests.conftest import fifo_with as fifo_at
 
 PART = "G0 X0 Y0 Z5\nG1 Z-1 F200\nG1 X40 F600\nG2 X60 Y20 R20\nG1 Y50\nG0 Z5\nM2\n"
 #: a syntax error on line 2 (check and run refuse the program before it moves)
@@ -26,16 +27,8 @@ def ncvm(cwd: Path, *args: str, stdin: str | None = None) -> subprocess.Complete
 
 
 def fifo_with(tmp_path: Path, text: str, name: str = "part.ngc") -> Path:
-    """A FIFO a thread writes ``text`` to once a reader opens it."""
-    fifo = tmp_path / name
-    os.mkfifo(fifo)
-
-    def write():
-        with open(fifo, "w") as pipe:
-            pipe.write(text)
-
-    threading.Thread(target=write, daemon=True).start()
-    return fifo
+    """A FIFO in ``tmp_path`` a thread writes ``text`` to once a reader opens it."""
+    return fifo_at(tmp_path / name, text)
 
 
 def test_a_program_from_stdin_runs_as_from_a_file_with_every_output(tmp_path):

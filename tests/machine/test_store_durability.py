@@ -22,6 +22,7 @@ from ncvm.machine.state import StateError
 from ncvm.machine.store import Store
 from ncvm.runtime.interrupt import Terminated
 from ncvm.runtime.session import RunOptions
+from tests.conftest import killed_after
 
 ENV = dict(os.environ, PYTHONPATH=os.pathsep.join(sys.path))
 
@@ -238,16 +239,7 @@ def test_a_run_killed_with_sigkill_keeps_every_write_it_said_it_made(tmp_path):
     (tmp_path / "prog.cpl").write_text(KILLED)
     p = subprocess.Popen([sys.executable, "-m", "ncvm", "run", "prog.cpl", "--state", "st"], cwd=tmp_path,
                          stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=ENV)
-    said = 0
-    try:
-        for line in p.stdout:
-            said = int(line.split()[-1])
-            if said == 300:
-                break
-        p.send_signal(signal.SIGKILL)
-    finally:
-        p.kill()
-        _, err = p.communicate(timeout=60)
+    said, err = killed_after(p, 300, lambda line, _: int(line.split()[-1]))
     assert said == 300 and p.returncode == -signal.SIGKILL, err
     db = sqlite3.connect(tmp_path / "st" / "store.sqlite")
     assert db.execute("PRAGMA integrity_check").fetchone()[0] == "ok"

@@ -8,10 +8,8 @@ from __future__ import annotations
 import gc
 import json
 import math
-import os
 import subprocess
 import sys
-import threading
 import tracemalloc
 from pathlib import Path
 
@@ -22,6 +20,7 @@ from ncvm.api import run
 from ncvm.nc import block
 from ncvm.nc.block import COLUMNS_FROM
 from ncvm.runtime.session import RunOptions
+from tests.conftest import fifo_with
 
 
 def bolt_circle(holes: int, tail: str = "") -> str:
@@ -119,14 +118,7 @@ def test_a_program_from_a_pipe_runs_whole_past_the_budget(tmp_path, name):
     would give nothing and the run would silently make no move); told by its content (no extension) its text
     is read again. Either way every block runs, as from a regular file."""
     text = bolt_circle(30)
-    fifo = tmp_path / name
-    os.mkfifo(fifo)
-
-    def write():
-        with open(fifo, "w") as pipe:
-            pipe.write(text)
-
-    threading.Thread(target=write, daemon=True).start()
+    fifo = fifo_with(tmp_path / name, text)
     done = subprocess.run([sys.executable, "-c", PIPE_RUN, str(fifo), str(tmp_path / "s")], capture_output=True,
                           text=True, timeout=120)
     assert done.returncode == 0, done.stderr

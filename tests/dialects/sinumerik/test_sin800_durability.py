@@ -16,6 +16,7 @@ import pytest
 from sin800_helpers import MACHINE, R, run_mpf
 
 from ncvm.machine.store import Store
+from tests.conftest import killed_after
 
 ENV = dict(os.environ, PYTHONPATH=os.pathsep.join(sys.path))
 
@@ -179,12 +180,7 @@ def test_a_run_killed_with_sigkill_keeps_every_write_it_said_it_made(tmp_path, e
     """``ncvm run`` as a process writes two central R, a tool offset and a zero offset a pass and says so in
     the next block; SIGKILL after the 300th message: the store holds every write it said, nothing torn."""
     p = start(tmp_path, extra)
-    try:
-        said = said_after(p, 300)
-        p.send_signal(signal.SIGKILL)
-    finally:
-        p.kill()
-        _, err = p.communicate(timeout=60)
+    said, err = killed_after(p, 300, lambda line, so_far: so_far + (line.strip() == "WROTE"))
     assert said == 300 and p.returncode == -signal.SIGKILL, err
     db = sqlite3.connect(tmp_path / "st" / "store.sqlite")
     assert db.execute("PRAGMA integrity_check").fetchone()[0] == "ok"

@@ -21,6 +21,7 @@ import ncvm.dialects.cpl.io.files as files_module
 from ncvm.dialects.cpl.io.errors import CplRuntimeError
 from ncvm.dialects.cpl.io.files import CplFiles
 from ncvm.machine.model import SimClock
+from tests.conftest import killed_after
 
 ETX = "\x03\n"
 
@@ -86,16 +87,7 @@ def test_a_run_killed_with_sigkill_loses_no_record_it_said_it_wrote(tmp_path):
     p = subprocess.Popen([sys.executable, "-m", "ncvm", "run", "prog.cpl", "--state", ".ncvm"], cwd=tmp_path,
                          stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
                          env=dict(os.environ, PYTHONPATH=os.pathsep.join(sys.path)))
-    said = 0
-    try:
-        for line in p.stdout:
-            said = int(line.split()[-1])
-            if said == 300:
-                break
-        p.send_signal(signal.SIGKILL)
-    finally:
-        p.kill()
-        _, err = p.communicate(timeout=60)
+    said, err = killed_after(p, 300, lambda line, _: int(line.split()[-1]))
     assert said == 300 and p.returncode == -signal.SIGKILL, err
     folder = tmp_path / ".ncvm" / "files"
     seq = (folder / "SEQ").read_bytes().decode("latin-1")
