@@ -262,7 +262,7 @@ class NcData:
         for key in self.dirty:
             if key in self.areas:
                 out[key] = self.areas[key]
-            elif key in ("to", "zo", "rot", "central_r", "mib"):
+            elif key in ("to", "zo", "rot", "mib"):  # central_r: written by central.CentralR as stores happen
                 out[key] = getattr(self, key)
         return out
 
